@@ -1,0 +1,1 @@
+# bin/local.mk - filled in as the area grows.

@@ -1,0 +1,252 @@
+/*
+ * zrcube.h - the public interface of libzrcube.
+ *
+ * libzrcube reads POV-Ray 3.7 scene files, ray traces them with POV-Ray's
+ * lighting model and writes images.  This is the only header a program
+ * linking the library needs.  Everything is reached through opaque types
+ * with the zr_ prefix; fallible calls return a zr_status (0 is success,
+ * failures are negative and never renumbered); the library keeps no global
+ * state, never prints and never exits: diagnostics go to a callback the
+ * caller sets on a zr_context.
+ *
+ * A parsed zr_scene is immutable, so any number of threads may render
+ * pixels of it at once.  Rendering is split in two passes so that a
+ * picture is the same bytes however its pixels are spread over processes
+ * and threads:
+ *   1. zr_render_pixels() with centres == NULL traces one ray through the
+ *      centre of each listed pixel;
+ *   2. when antialiasing is on, zr_render_pixels() with the complete image
+ *      of centres from pass 1 supersamples the pixels that differ from
+ *      their neighbours by more than the threshold.
+ * zr_render_image() does both passes for a whole image on the calling
+ * thread.
+ */
+#ifndef ZRCUBE_H
+#define ZRCUBE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#if defined(ZR_BUILDING_LIBRARY) && defined(__GNUC__)
+#define ZR_API __attribute__((visibility("default")))
+#else
+#define ZR_API
+#endif
+
+#define ZR_VERSION_MAJOR 0
+#define ZR_VERSION_MINOR 1
+#define ZR_VERSION_PATCH 0
+#define ZR_VERSION_STRING "0.1.0"
+
+/* Status codes: one list, values never renumbered, new ones appended. */
+#define ZR_STATUS_MAP(X)                                                   \
+  X(OK, 0, "success")                                                      \
+  X(ENOMEM, -1, "out of memory")                                           \
+  X(EIO, -2, "input/output error")                                         \
+  X(ESYNTAX, -3, "syntax error")                                           \
+  X(EUNDEFINED, -4, "undefined identifier")                                \
+  X(EUNSUPPORTED, -5, "unsupported feature")                               \
+  X(EINVAL, -6, "invalid argument")                                        \
+  X(EFORMAT, -7, "malformed or unsupported file format")                   \
+  X(ENOTFOUND, -8, "file not found")                                       \
+  X(ELIMIT, -9, "limit exceeded")                                          \
+  X(ESCENE, -10, "invalid scene")                                          \
+  X(EMPI, -11, "message passing error")                                    \
+  X(ETHREAD, -12, "thread error")                                          \
+  X(EEXIST, -13, "file exists")
+
+typedef enum zr_status {
+#define ZR_STATUS_ENUM_(name, value, text) ZR_##name = value,
+  ZR_STATUS_MAP(ZR_STATUS_ENUM_)
+#undef ZR_STATUS_ENUM_
+} zr_status;
+
+/* A static English text for a status code; never NULL. */
+ZR_API const char *zr_status_str(zr_status status);
+
+/* The library's version string, "MAJOR.MINOR.PATCH". */
+ZR_API const char *zr_version(void);
+
+/* ------------------------------------------------------------------ */
+/* Diagnostics and context                                            */
+/* ------------------------------------------------------------------ */
+
+typedef enum zr_diag_level {
+  ZR_DIAG_ERROR = 0,
+  ZR_DIAG_WARNING = 1,
+  ZR_DIAG_NOTE = 2,   /* "in file included from ...", context lines */
+  ZR_DIAG_DEBUG = 3   /* #debug output of a scene */
+} zr_diag_level;
+
+/*
+ * One diagnostic.  file is NULL and line/column are 0 when the message has
+ * no place in a scene file.  text is the complete message formatted like a
+ * compiler's: "scene.pov:12:7: error: message", the include chain, the
+ * source line and a caret under the column, ending in a newline.  All
+ * pointers are valid only during the callback.
+ */
+typedef struct zr_diag {
+  zr_diag_level level;
+  zr_status status;
+  const char *file;
+  int line;
+  int column;
+  const char *message;
+  const char *text;
+} zr_diag;
+
+typedef void (*zr_diag_fn)(const zr_diag *diag, void *user);
+
+/*
+ * How the parser reads a file: fill *bytes with malloc'ed contents (the
+ * library frees them) and *size.  Return ZR_ENOTFOUND when the file does
+ * not exist.  The default reader uses stdio; a parallel program swaps in a
+ * reader that serves files broadcast from rank 0.
+ */
+typedef zr_status (*zr_read_fn)(const char *path, char **bytes, size_t *size,
+                                void *user);
+
+typedef struct zr_context zr_context;
+
+ZR_API zr_status zr_context_new(zr_context **out);
+ZR_API void zr_context_free(zr_context *ctx);
+/* Without a callback diagnostics are dropped (the status still tells). */
+ZR_API void zr_context_set_diag(zr_context *ctx, zr_diag_fn fn, void *user);
+ZR_API void zr_context_set_reader(zr_context *ctx, zr_read_fn fn, void *user);
+/* Directories searched by #include after the including file's own. */
+ZR_API zr_status zr_context_add_include_path(zr_context *ctx, const char *dir);
+/* The message of the last error reported through ctx ("" when none). */
+ZR_API const char *zr_context_last_error(const zr_context *ctx);
+
+/* ------------------------------------------------------------------ */
+/* Scenes                                                             */
+/* ------------------------------------------------------------------ */
+
+typedef struct zr_scene zr_scene;
+
+ZR_API zr_status zr_scene_parse_file(zr_context *ctx, const char *path,
+                                     zr_scene **out);
+/* name is what messages call the text (for example "<string>"). */
+ZR_API zr_status zr_scene_parse_string(zr_context *ctx, const char *name,
+                                       const char *text, size_t size,
+                                       zr_scene **out);
+ZR_API void zr_scene_free(zr_scene *scene);
+
+/* What a scene holds, for --parse-only and for tests. */
+typedef struct zr_scene_info {
+  size_t objects;          /* top-level objects as written */
+  size_t primitives;       /* after unions are flattened */
+  size_t lights;
+  size_t finite_primitives;
+  size_t infinite_primitives; /* planes and the like, kept out of the BVH */
+  int has_camera;
+} zr_scene_info;
+
+ZR_API void zr_scene_get_info(const zr_scene *scene, zr_scene_info *info);
+
+/* ------------------------------------------------------------------ */
+/* Rendering                                                          */
+/* ------------------------------------------------------------------ */
+
+typedef struct zr_render_params {
+  int width;            /* pixels; default 320 */
+  int height;           /* pixels; default 240 */
+  int antialias;        /* POV-Ray +A: 0 off (default), 1 on */
+  double aa_threshold;  /* +A0.3: colour difference that triggers it */
+  int aa_depth;         /* +R3: supersampling grid is aa_depth^2 rays */
+  int jitter;           /* +J: deterministic jitter of supersamples */
+  double jitter_amount; /* default 1.0 */
+} zr_render_params;
+
+/* Fills p with POV-Ray's defaults. */
+ZR_API void zr_render_params_init(zr_render_params *p);
+
+typedef struct zr_render_stats {
+  uint64_t camera_rays;
+  uint64_t supersample_rays;
+  uint64_t reflected_rays;
+  uint64_t refracted_rays;
+  uint64_t shadow_rays;
+  uint64_t supersampled_pixels;
+} zr_render_stats;
+
+/* Adds b into a (for combining per-thread statistics). */
+ZR_API void zr_render_stats_add(zr_render_stats *a, const zr_render_stats *b);
+
+/*
+ * Renders count pixels, pixels[i] = y * width + x, into rgb[3 * i ..] as
+ * linear floats in the scene's working colour space.  With centres == NULL
+ * this is pass 1 (one ray per pixel centre).  With centres pointing at a
+ * complete width * height * 3 image of pass 1, this is the antialiasing
+ * pass: pixels whose centre differs from a neighbour's by more than the
+ * threshold are supersampled, the others copied.  stats may be NULL; it is
+ * added to, not reset.  Thread-safe on one scene.
+ */
+ZR_API zr_status zr_render_pixels(const zr_scene *scene,
+                                  const zr_render_params *params,
+                                  const uint32_t *pixels, size_t count,
+                                  const float *centres, float *rgb,
+                                  zr_render_stats *stats);
+
+/* Both passes over the whole image on the calling thread. */
+ZR_API zr_status zr_render_image(const zr_scene *scene,
+                                 const zr_render_params *params, float *rgb,
+                                 zr_render_stats *stats);
+
+/* ------------------------------------------------------------------ */
+/* Images                                                             */
+/* ------------------------------------------------------------------ */
+
+typedef enum zr_image_format {
+  ZR_FORMAT_AUTO = 0, /* from the file name's extension */
+  ZR_FORMAT_PNG8,
+  ZR_FORMAT_PNG16,
+  ZR_FORMAT_PPM,      /* binary P6, 8 bit */
+  ZR_FORMAT_PFM,      /* linear float, no gamma */
+  ZR_FORMAT_JPEG      /* read only */
+} zr_image_format;
+
+/* An RGB image of linear floats, rows top to bottom. */
+typedef struct zr_image zr_image;
+
+ZR_API zr_status zr_image_new(int width, int height, zr_image **out);
+ZR_API void zr_image_free(zr_image *image);
+ZR_API int zr_image_width(const zr_image *image);
+ZR_API int zr_image_height(const zr_image *image);
+/* width * height * 3 floats, owned by the image. */
+ZR_API float *zr_image_pixels(zr_image *image);
+ZR_API const float *zr_image_pixels_const(const zr_image *image);
+
+/*
+ * Reads a PNG, JPEG, PPM/PGM (P3/P5/P6) or PFM file; 8 and 16 bit files
+ * are decoded from their gamma (sRGB unless the file says otherwise) into
+ * linear floats.  Errors are reported through ctx (which may be NULL).
+ */
+ZR_API zr_status zr_image_read(zr_context *ctx, const char *path,
+                               zr_image **out);
+
+/*
+ * Writes the image.  8 and 16 bit formats are encoded with the sRGB
+ * transfer function after the working gamma is undone:
+ * stored = srgb(value ^ assumed_gamma); PFM stores linear values.
+ * Pass assumed_gamma 1.0 for linear input.
+ */
+ZR_API zr_status zr_image_write(zr_context *ctx, const zr_image *image,
+                                const char *path, zr_image_format format,
+                                double assumed_gamma);
+
+/* The format a file name asks for (ZR_FORMAT_AUTO when unknown). */
+ZR_API zr_image_format zr_image_format_from_name(const char *path);
+
+/* The scene's assumed_gamma (1.0 when the scene does not set it). */
+ZR_API double zr_scene_assumed_gamma(const zr_scene *scene);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* ZRCUBE_H */

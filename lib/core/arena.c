@@ -1,0 +1,70 @@
+/*
+ * arena.c - region allocation in chained blocks.
+ */
+#include "core/arena.h"
+
+#include <stdalign.h>
+#include <stdlib.h>
+#include <string.h>
+
+struct zr_arena_block {
+  zr_arena_block *next;
+  size_t size;
+  size_t used;
+  alignas(max_align_t) unsigned char data[];
+};
+
+enum { BLOCK_SIZE = 64 * 1024 };
+
+void zr__arena_init(zr_arena *a) { memset(a, 0, sizeof *a); }
+
+void zr__arena_free(zr_arena *a) {
+  zr_arena_block *b = a->head;
+  while (b) {
+    zr_arena_block *next = b->next;
+    free(b);
+    b = next;
+  }
+  zr__arena_init(a);
+}
+
+void *zr__arena_alloc(zr_arena *a, size_t size) {
+  const size_t align = alignof(max_align_t);
+  size = (size + align - 1) & ~(align - 1);
+  if (size == 0)
+    size = align;
+  zr_arena_block *b = a->head;
+  if (!b || b->size - b->used < size) {
+    size_t cap = size > BLOCK_SIZE / 4 ? size : BLOCK_SIZE;
+    b = malloc(sizeof *b + cap);
+    if (!b)
+      return NULL;
+    b->size = cap;
+    b->used = 0;
+    /* A large one-off block goes behind the head so the head keeps its
+       free space for the small allocations that follow. */
+    if (cap != BLOCK_SIZE && a->head) {
+      b->next = a->head->next;
+      a->head->next = b;
+    } else {
+      b->next = a->head;
+      a->head = b;
+    }
+  }
+  void *p = b->data + b->used;
+  b->used += size;
+  a->used += size;
+  memset(p, 0, size);
+  return p;
+}
+
+void *zr__arena_memdup(zr_arena *a, const void *p, size_t size) {
+  void *q = zr__arena_alloc(a, size);
+  if (q && size)
+    memcpy(q, p, size);
+  return q;
+}
+
+char *zr__arena_strdup(zr_arena *a, const char *s) {
+  return zr__arena_memdup(a, s, strlen(s) + 1);
+}

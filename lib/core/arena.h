@@ -1,0 +1,26 @@
+/*
+ * arena.h - a region allocator.  A scene's objects, textures and
+ * transforms live in one arena and are freed together, so the shared
+ * pointers that #declare creates (one texture used by many objects) need
+ * no reference counts.
+ */
+#ifndef ZR_CORE_ARENA_H
+#define ZR_CORE_ARENA_H
+
+#include <stddef.h>
+
+typedef struct zr_arena_block zr_arena_block;
+
+typedef struct zr_arena {
+  zr_arena_block *head;
+  size_t used; /* bytes handed out, for statistics */
+} zr_arena;
+
+void zr__arena_init(zr_arena *a);
+void zr__arena_free(zr_arena *a);
+/* Zeroed memory aligned for any type; NULL when out of memory. */
+void *zr__arena_alloc(zr_arena *a, size_t size);
+char *zr__arena_strdup(zr_arena *a, const char *s);
+void *zr__arena_memdup(zr_arena *a, const void *p, size_t size);
+
+#endif /* ZR_CORE_ARENA_H */

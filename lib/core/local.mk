@@ -1,0 +1,12 @@
+lib_libzrcube_la_SOURCES += \
+	lib/core/arena.c lib/core/arena.h \
+	lib/core/context.c lib/core/context.h \
+	lib/core/strbuf.c lib/core/strbuf.h \
+	lib/core/transform.c lib/core/transform.h \
+	lib/core/vec.h
+
+check_PROGRAMS += tests/test_core
+TESTS += tests/test_core
+tests_test_core_SOURCES = tests/test_core.c
+tests_test_core_CPPFLAGS = $(TEST_CPPFLAGS)
+tests_test_core_LDADD = $(TEST_LDADD)

@@ -1,0 +1,1 @@
+# lib/image/local.mk - filled in as the area grows.

@@ -1,0 +1,1 @@
+# lib/par/local.mk - filled in as the area grows.

@@ -1,0 +1,194 @@
+/*
+ * scene.c - building and finishing the scene model.
+ *
+ * The parser fills a zr_scene with objects as written; zr__scene_finish()
+ * then flattens unions (a plain union has no inside test, so its children
+ * are traced as independent primitives), gives every primitive a texture,
+ * and hands the list to the tracer to build its bounding volume hierarchy.
+ */
+#include "scene/scene.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/context.h"
+#include "trace/bvh.h"
+
+void zr__finish_init(zr_finish *f) {
+  memset(f, 0, sizeof *f);
+  f->ambient = zr_rgb3(0.1, 0.1, 0.1);
+  f->diffuse = 0.6;
+  f->brilliance = 1.0;
+  f->phong_size = 40.0;
+  f->roughness = 0.05;
+  f->reflection_falloff = 1.0;
+}
+
+void zr__pigment_init(zr_pigment *p) {
+  memset(p, 0, sizeof *p);
+  p->kind = ZR_PIGMENT_SOLID;
+  p->colour = zr_colour5(0, 0, 0, 0, 0);
+}
+
+void zr__interior_init(zr_interior *i) {
+  memset(i, 0, sizeof *i);
+  i->ior = 1.0;
+}
+
+void zr__camera_init(zr_camera *c) {
+  memset(c, 0, sizeof *c);
+  c->kind = ZR_CAMERA_PERSPECTIVE;
+  c->location = zr_v3(0, 0, 0);
+  c->direction = zr_v3(0, 0, 1);
+  c->up = zr_v3(0, 1, 0);
+  c->right = zr_v3(1.33, 0, 0);
+  c->sky = zr_v3(0, 1, 0);
+}
+
+void zr__settings_init(zr_settings *s) {
+  memset(s, 0, sizeof *s);
+  s->max_trace_level = 5;
+  s->adc_bailout = 1.0 / 255.0;
+  s->assumed_gamma = 1.0;
+  s->ambient_light = zr_rgb3(1, 1, 1);
+  s->background = zr_colour5(0, 0, 0, 0, 0);
+}
+
+zr_scene *zr__scene_new(void) {
+  zr_scene *scene = calloc(1, sizeof *scene);
+  if (!scene)
+    return NULL;
+  zr__arena_init(&scene->arena);
+  zr__camera_init(&scene->camera);
+  zr__settings_init(&scene->settings);
+  zr_pigment *pigment = zr__arena_alloc(&scene->arena, sizeof *pigment);
+  zr_finish *finish = zr__arena_alloc(&scene->arena, sizeof *finish);
+  zr_texture *texture = zr__arena_alloc(&scene->arena, sizeof *texture);
+  zr_interior *interior = zr__arena_alloc(&scene->arena, sizeof *interior);
+  if (!pigment || !finish || !texture || !interior) {
+    zr_scene_free(scene);
+    return NULL;
+  }
+  zr__pigment_init(pigment);
+  zr__finish_init(finish);
+  zr__interior_init(interior);
+  texture->pigment = pigment;
+  texture->finish = finish;
+  scene->default_texture = texture;
+  scene->default_interior = interior;
+  return scene;
+}
+
+/* Grows *items (of *cap elements of size elem) to hold one more. */
+static zr_status grow(void **items, size_t *cap, size_t n, size_t elem) {
+  if (n < *cap)
+    return ZR_OK;
+  size_t new_cap = *cap ? *cap * 2 : 16;
+  void *p = realloc(*items, new_cap * elem);
+  if (!p)
+    return ZR_ENOMEM;
+  *items = p;
+  *cap = new_cap;
+  return ZR_OK;
+}
+
+zr_status zr__scene_add_object(zr_scene *scene, zr_object *object) {
+  zr_status s = grow((void **)&scene->objects, &scene->cap_objects,
+                     scene->n_objects, sizeof *scene->objects);
+  if (s == ZR_OK)
+    scene->objects[scene->n_objects++] = object;
+  return s;
+}
+
+zr_status zr__scene_add_light(zr_scene *scene, const zr_light *light) {
+  zr_status s = grow((void **)&scene->lights, &scene->cap_lights,
+                     scene->n_lights, sizeof *scene->lights);
+  if (s == ZR_OK)
+    scene->lights[scene->n_lights++] = *light;
+  return s;
+}
+
+typedef struct flat_list {
+  const zr_object **items;
+  size_t n, cap;
+} flat_list;
+
+/*
+ * Appends the primitives under object.  Children without a texture take
+ * the nearest enclosing union's; the parser has already pushed transforms
+ * down, so each primitive carries its own complete transform.
+ */
+static zr_status flatten(zr_scene *scene, const zr_object *object,
+                         const zr_texture *inherited, flat_list *out) {
+  const zr_texture *texture = object->texture ? object->texture : inherited;
+  if (object->kind == ZR_OBJ_UNION) {
+    for (size_t i = 0; i < object->u.csg.n_children; i++) {
+      zr_status s = flatten(scene, object->u.csg.children[i], texture, out);
+      if (s != ZR_OK)
+        return s;
+    }
+    return ZR_OK;
+  }
+  zr_status s = grow((void **)&out->items, &out->cap, out->n,
+                     sizeof *out->items);
+  if (s != ZR_OK)
+    return s;
+  const zr_object *prim = object;
+  if (object->texture != texture || !object->interior) {
+    zr_object *copy = zr__arena_memdup(&scene->arena, object, sizeof *copy);
+    if (!copy)
+      return ZR_ENOMEM;
+    copy->texture = texture;
+    if (!copy->interior)
+      copy->interior = scene->default_interior;
+    prim = copy;
+  }
+  out->items[out->n++] = prim;
+  return ZR_OK;
+}
+
+zr_status zr__scene_finish(zr_scene *scene, zr_context *ctx) {
+  flat_list list = {0};
+  for (size_t i = 0; i < scene->n_objects; i++) {
+    zr_status s = flatten(scene, scene->objects[i], scene->default_texture,
+                          &list);
+    if (s != ZR_OK) {
+      free(list.items);
+      return zr__diag(ctx, ZR_DIAG_ERROR, s, NULL,
+                      "cannot finish the scene: %s", zr_status_str(s));
+    }
+  }
+  scene->primitives = list.items;
+  scene->n_primitives = list.n;
+  return zr__bvh_build(scene, ctx);
+}
+
+ZR_API void zr_scene_free(zr_scene *scene) {
+  if (!scene)
+    return;
+  zr__bvh_free(scene->bvh);
+  free(scene->primitives);
+  free(scene->objects);
+  free(scene->lights);
+  zr__arena_free(&scene->arena);
+  free(scene);
+}
+
+ZR_API void zr_scene_get_info(const zr_scene *scene, zr_scene_info *info) {
+  memset(info, 0, sizeof *info);
+  info->objects = scene->n_objects;
+  info->primitives = scene->n_primitives;
+  info->lights = scene->n_lights;
+  info->has_camera = scene->camera.given;
+  for (size_t i = 0; i < scene->n_primitives; i++) {
+    zr_vec3 lo, hi;
+    if (zr__object_bounds(scene->primitives[i], &lo, &hi))
+      info->finite_primitives++;
+    else
+      info->infinite_primitives++;
+  }
+}
+
+ZR_API double zr_scene_assumed_gamma(const zr_scene *scene) {
+  return scene->settings.assumed_gamma;
+}

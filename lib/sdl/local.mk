@@ -1,0 +1,1 @@
+# lib/sdl/local.mk - filled in as the area grows.

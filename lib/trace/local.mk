@@ -1,0 +1,1 @@
+# lib/trace/local.mk - filled in as the area grows.

@@ -1,0 +1,1 @@
+# scenes/local.mk - filled in as the area grows.

@@ -1,0 +1,155 @@
+/*
+ * test_core.c - vectors, transforms, strings, arena and diagnostics.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/arena.h"
+#include "core/context.h"
+#include "core/strbuf.h"
+#include "core/transform.h"
+#include "core/vec.h"
+
+/* Exact arithmetic on small integers and quarter turns: 1e-12 covers the
+   rounding of cos/sin products. */
+#define EPS 1e-12
+
+static void assert_vec(zr_vec3 v, double x, double y, double z) {
+  assert_true(fabs(v.x - x) < EPS);
+  assert_true(fabs(v.y - y) < EPS);
+  assert_true(fabs(v.z - z) < EPS);
+}
+
+static void test_core_vec_cross_left_handed(void **state) {
+  (void)state;
+  /* x cross y is z in any handedness; the handedness is in the meaning. */
+  assert_vec(zr_v3_cross(zr_v3(1, 0, 0), zr_v3(0, 1, 0)), 0, 0, 1);
+  assert_vec(zr_v3_norm(zr_v3(3, 0, 4)), 0.6, 0, 0.8);
+  assert_vec(zr_v3_norm(zr_v3(0, 0, 0)), 0, 0, 0);
+}
+
+static void test_core_rotate_matches_povray(void **state) {
+  (void)state;
+  zr_transform t;
+  zr__transform_identity(&t);
+  zr__transform_rotate(&t, zr_v3(0, 90, 0));
+  /* POV-Ray: rotate y*90 takes +x to -z. */
+  assert_vec(zr__xform_point(t.m, zr_v3(1, 0, 0)), 0, 0, -1);
+  zr__transform_identity(&t);
+  zr__transform_rotate(&t, zr_v3(90, 0, 0));
+  assert_vec(zr__xform_point(t.m, zr_v3(0, 1, 0)), 0, 0, 1);
+  zr__transform_identity(&t);
+  zr__transform_rotate(&t, zr_v3(0, 0, 90));
+  assert_vec(zr__xform_point(t.m, zr_v3(1, 0, 0)), 0, 1, 0);
+}
+
+static void test_core_transform_order_and_inverse(void **state) {
+  (void)state;
+  zr_transform t;
+  zr__transform_identity(&t);
+  zr__transform_scale(&t, zr_v3(2, 3, 4));
+  zr__transform_translate(&t, zr_v3(1, 0, 0));
+  zr__transform_rotate(&t, zr_v3(0, 0, 90));
+  zr_vec3 p = zr__xform_point(t.m, zr_v3(1, 1, 1));
+  /* scale -> (2,3,4), translate -> (3,3,4), rotate z 90 -> (-3,3,4) */
+  assert_vec(p, -3, 3, 4);
+  assert_vec(zr__xform_point(t.inv, p), 1, 1, 1);
+  /* A normal stays perpendicular to a transformed tangent. */
+  zr_vec3 n = zr__xform_normal(t.inv, zr_v3(1, 0, 0));
+  zr_vec3 tangent = zr__xform_dir(t.m, zr_v3(0, 1, 0));
+  assert_true(fabs(zr_v3_dot(n, tangent)) < EPS);
+}
+
+static void test_core_matrix_keyword(void **state) {
+  (void)state;
+  zr_transform t;
+  zr__transform_identity(&t);
+  /* matrix <1,0,0, 0,1,0, 0,0,1, 5,6,7> is translate <5,6,7>. */
+  const double v[12] = {1, 0, 0, 0, 1, 0, 0, 0, 1, 5, 6, 7};
+  assert_true(zr__transform_matrix(&t, v));
+  assert_vec(zr__xform_point(t.m, zr_v3(1, 1, 1)), 6, 7, 8);
+  assert_vec(zr__xform_point(t.inv, zr_v3(6, 7, 8)), 1, 1, 1);
+  /* A shear: x' = x + y. POV-Ray's second row is the image of y. */
+  const double shear[12] = {1, 0, 0, 1, 1, 0, 0, 0, 1, 0, 0, 0};
+  zr__transform_identity(&t);
+  assert_true(zr__transform_matrix(&t, shear));
+  assert_vec(zr__xform_point(t.m, zr_v3(0, 1, 0)), 1, 1, 0);
+  assert_vec(zr__xform_point(t.inv, zr_v3(1, 1, 0)), 0, 1, 0);
+  const double singular[12] = {0};
+  assert_false(zr__transform_matrix(&t, singular));
+}
+
+static void test_core_strbuf_and_arena(void **state) {
+  (void)state;
+  zr_strbuf sb;
+  zr__strbuf_init(&sb);
+  for (int i = 0; i < 1000; i++)
+    zr__strbuf_printf(&sb, "%d,", i);
+  assert_int_equal(strncmp(zr__strbuf_cstr(&sb), "0,1,2,", 6), 0);
+  char *s = zr__strbuf_take(&sb);
+  assert_non_null(s);
+  free(s);
+  zr_arena a;
+  zr__arena_init(&a);
+  for (int i = 0; i < 10000; i++) {
+    double *d = zr__arena_alloc(&a, sizeof(double) * (size_t)(i % 50 + 1));
+    assert_non_null(d);
+    assert_true(d[0] == 0.0);
+  }
+  char *big = zr__arena_alloc(&a, 1 << 20);
+  assert_non_null(big);
+  assert_string_equal(zr__arena_strdup(&a, "sphere"), "sphere");
+  zr__arena_free(&a);
+}
+
+typedef struct captured {
+  char text[512];
+  int count;
+} captured;
+
+static void capture(const zr_diag *d, void *user) {
+  captured *c = user;
+  snprintf(c->text, sizeof c->text, "%s", d->text);
+  c->count++;
+}
+
+static void test_core_diag_format(void **state) {
+  (void)state;
+  zr_context *ctx;
+  assert_int_equal(zr_context_new(&ctx), ZR_OK);
+  captured c = {{0}, 0};
+  zr_context_set_diag(ctx, capture, &c);
+  const char *line = "sphere { <0,0,0>, foo }";
+  zr_diag_place place = {"scene.pov", 3, 19, line, strlen(line), 3, NULL};
+  zr_status s = zr__diag(ctx, ZR_DIAG_ERROR, ZR_EUNDEFINED, &place,
+                         "undefined identifier '%s'", "foo");
+  assert_int_equal(s, ZR_EUNDEFINED);
+  assert_string_equal(c.text,
+                      "scene.pov:3:19: error: undefined identifier 'foo'\n"
+                      "    3 | sphere { <0,0,0>, foo }\n"
+                      "      |                   ^~~\n");
+  assert_string_equal(zr_context_last_error(ctx), c.text);
+  assert_string_equal(zr_status_str(ZR_ESYNTAX), "syntax error");
+  zr_context_free(ctx);
+  zr_context_free(NULL);
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test(test_core_vec_cross_left_handed),
+      cmocka_unit_test(test_core_rotate_matches_povray),
+      cmocka_unit_test(test_core_transform_order_and_inverse),
+      cmocka_unit_test(test_core_matrix_keyword),
+      cmocka_unit_test(test_core_strbuf_and_arena),
+      cmocka_unit_test(test_core_diag_format),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}
