@@ -1,1 +1,18 @@
-# bin/local.mk - filled in as the area grows.
+# bin/local.mk - the zrcube command and its tests.
+bin_PROGRAMS += bin/zrcube
+bin_zrcube_SOURCES = bin/zrcube.c bin/options.c bin/options.h
+bin_zrcube_CPPFLAGS = $(AM_CPPFLAGS) -I$(top_srcdir)/bin
+bin_zrcube_CFLAGS = $(AM_CFLAGS) $(PTHREAD_CFLAGS)
+bin_zrcube_LDADD = lib/par/libzrpar.la lib/libzrcube.la $(MPI_LIBS) \
+	$(PTHREAD_LIBS) -lm
+
+check_PROGRAMS += tests/test_cli_options
+TESTS += tests/test_cli_options
+tests_test_cli_options_SOURCES = tests/test_cli_options.c bin/options.c \
+	bin/options.h
+tests_test_cli_options_CPPFLAGS = $(TEST_CPPFLAGS) -I$(top_srcdir)/bin
+tests_test_cli_options_LDADD = $(TEST_LDADD)
+
+# End-to-end: mpirun with 1 to 3 ranks, bad input, option handling.
+TESTS += tests/test_cli.sh
+EXTRA_DIST += tests/test_cli.sh

@@ -1,1 +1,2 @@
-# man/local.mk - filled in as the area grows.
+# man/local.mk - manual pages.
+dist_man_MANS += man/zrcube.1

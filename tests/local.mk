@@ -1,1 +1,38 @@
-# tests/local.mk - filled in as the area grows.
+# tests/local.mk - image tests, the image comparison tool and the golden
+# scene suite.
+
+check_PROGRAMS += tests/test_image
+TESTS += tests/test_image
+tests_test_image_SOURCES = tests/test_image.c
+tests_test_image_CPPFLAGS = $(TEST_CPPFLAGS) $(PNG_CFLAGS)
+tests_test_image_LDADD = $(TEST_LDADD) $(PNG_LIBS) $(JPEG_LIBS)
+# The test calls zr__ functions, which the shared library hides
+# (-fvisibility=hidden): link the static archive, where they resolve.
+tests_test_image_LDFLAGS = -static
+
+# imgcmp compares two renders (SSIM or relative RMSE); golden.sh uses it.
+check_PROGRAMS += tests/imgcmp
+tests_imgcmp_SOURCES = tests/imgcmp.c
+tests_imgcmp_CPPFLAGS = $(AM_CPPFLAGS)
+tests_imgcmp_LDADD = lib/libzrcube.la -lm
+
+TESTS += tests/golden.sh
+EXTRA_DIST += tests/golden.sh tests/ref/README.md tests/ref/make-refs.sh \
+	tests/ref/camera.png \
+	tests/ref/csg_union.png \
+	tests/ref/default.png \
+	tests/ref/expressions.png \
+	tests/ref/gamma.png \
+	tests/ref/metallic.png \
+	tests/ref/phong.png \
+	tests/ref/primitives.png \
+	tests/ref/reflection.png \
+	tests/ref/refraction.png \
+	tests/ref/shadows.png \
+	tests/ref/specular.png \
+	tests/ref/tir.png \
+	tests/ref/transforms.png \
+	tests/ref/zfor.png
+
+# The benchmark against POV-Ray (run by `make bench` in the top Makefile).
+EXTRA_DIST += bench/run.sh bench/README.md

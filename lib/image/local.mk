@@ -1,1 +1,6 @@
-# lib/image/local.mk - filled in as the area grows.
+# lib/image/local.mk - PNG, JPEG, PPM and PFM files, gamma.
+lib_libzrcube_la_SOURCES += \
+	lib/image/image.c lib/image/image.h \
+	lib/image/png.c \
+	lib/image/jpeg.c \
+	lib/image/pnm.c

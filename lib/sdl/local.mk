@@ -1,1 +1,23 @@
-# lib/sdl/local.mk - filled in as the area grows.
+# lib/sdl/local.mk - the scene language at run time: token arrays,
+# keywords, the directive engine, values and symbol tables, and the
+# helpers that build the scene model (the grammar is in grammar/).
+lib_libzrcube_la_SOURCES += \
+	lib/sdl/sdl.h \
+	lib/sdl/build.c \
+	lib/sdl/directive.c \
+	lib/sdl/keywords.c \
+	lib/sdl/tokens.c \
+	lib/sdl/values.c
+
+# The tests call zr__ functions, which the shared library hides
+# (-fvisibility=hidden): they link the static archive.
+check_PROGRAMS += tests/test_lexer tests/test_parser
+TESTS += tests/test_lexer tests/test_parser
+tests_test_lexer_SOURCES = tests/test_lexer.c
+tests_test_lexer_CPPFLAGS = $(TEST_CPPFLAGS)
+tests_test_lexer_LDADD = $(TEST_LDADD)
+tests_test_lexer_LDFLAGS = -static
+tests_test_parser_SOURCES = tests/test_parser.c
+tests_test_parser_CPPFLAGS = $(TEST_CPPFLAGS)
+tests_test_parser_LDADD = $(TEST_LDADD)
+tests_test_parser_LDFLAGS = -static

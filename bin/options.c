@@ -1,0 +1,809 @@
+/*
+ * options.c - the zrcube command line: POV-Ray's switches, POV-Ray's INI
+ * options and GNU long options, parsed into a zr_cli_options.
+ *
+ * POV-Ray 3.7's reference, section 3.2 "Command-Line and INI-File
+ * Options", is followed for what users of POV-Ray will type: switches
+ * start with + (on) or - (off), their letters are case-insensitive, a value
+ * follows the letters without a space (+W640, +A0.3, +Lpath), a bare name
+ * is the scene and a name ending in .ini is a file of options.  Every
+ * spelling of an option (+W640, --width=640, Width=640) goes through the
+ * same setter, so they check values the same way.  Values are checked in
+ * full: "+W12x" and "+W0" are errors rather than 12 or a default, because
+ * a mistyped option silently ignored costs a whole render.  Options that
+ * zrcube does not implement are refused by name instead of ignored; only
+ * the display switches (+D, +P) are accepted and ignored, since zrcube
+ * never opens a window.
+ */
+#include "options.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <sys/stat.h>
+
+/* What an option does, whatever its spelling. */
+typedef enum opt_key {
+  K_INPUT,
+  K_OUTPUT,
+  K_WIDTH,
+  K_HEIGHT,
+  K_AA_ON,        /* optional threshold */
+  K_AA_OFF,       /* optional threshold, kept for later */
+  K_AA_THRESHOLD, /* threshold only */
+  K_AA_DEPTH,
+  K_SAMPLING,
+  K_JITTER_ON,    /* optional amount */
+  K_JITTER_OFF,   /* optional amount, kept for later */
+  K_JITTER_AMOUNT,
+  K_THREADS,
+  K_INCLUDE,
+  K_VERBOSE,
+  K_NOVERBOSE,
+  K_QUIET,
+  K_HELP,
+  K_VERSION,
+  K_IGNORED,      /* display options: zrcube opens no window */
+  K_OUTPUT_ON,    /* optional format */
+  K_OUTPUT_OFF,   /* optional format, kept for later */
+  K_FORMAT,
+  K_BITS
+} opt_key;
+
+/* Where the option being applied came from, for messages. */
+typedef struct arg_ctx {
+  zr_cli_options *o;
+  char *err;
+  size_t err_size;
+  const char *where; /* "file.ini:3: " or "" */
+  const char *what;  /* the option as written: "+Wabc", "--width=abc" */
+} arg_ctx;
+
+static int fail(const arg_ctx *c, const char *fmt, ...)
+    __attribute__((format(printf, 2, 3)));
+
+static int fail(const arg_ctx *c, const char *fmt, ...) {
+  int n = snprintf(c->err, c->err_size, "zrcube: %s", c->where);
+  if (n >= 0 && (size_t)n < c->err_size) {
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(c->err + n, c->err_size - (size_t)n, fmt, ap);
+    va_end(ap);
+  }
+  return -1;
+}
+
+void zr__cli_init(zr_cli_options *o, const zr_render_params *defaults) {
+  memset(o, 0, sizeof *o);
+  o->params = *defaults;
+  o->format = ZR_FORMAT_AUTO;
+  o->write_output = 1;
+}
+
+void zr__cli_free(zr_cli_options *o) {
+  if (!o)
+    return;
+  free(o->input);
+  free(o->output);
+  for (size_t i = 0; i < o->n_include_paths; i++)
+    free(o->include_paths[i]);
+  free(o->include_paths);
+  memset(o, 0, sizeof *o);
+}
+
+/* A whole number from lo to hi and nothing else (no sign games, no
+   trailing letters, no blanks). */
+static int parse_int(const char *s, long lo, long hi, long *out) {
+  if (!s || !*s || isspace((unsigned char)*s))
+    return 0;
+  errno = 0;
+  char *end;
+  long v = strtol(s, &end, 10);
+  if (errno || *end || v < lo || v > hi)
+    return 0;
+  *out = v;
+  return 1;
+}
+
+/* A finite real number and nothing else. */
+static int parse_real(const char *s, double *out) {
+  if (!s || !*s || isspace((unsigned char)*s))
+    return 0;
+  errno = 0;
+  char *end;
+  double v = strtod(s, &end);
+  if (errno || *end || !isfinite(v))
+    return 0;
+  *out = v;
+  return 1;
+}
+
+static int parse_bool(const char *s, int *out) {
+  static const char *const yes[] = {"on", "true", "yes", "1"};
+  static const char *const no[] = {"off", "false", "no", "0"};
+  for (size_t i = 0; i < 4; i++) {
+    if (!strcasecmp(s, yes[i])) {
+      *out = 1;
+      return 1;
+    }
+    if (!strcasecmp(s, no[i])) {
+      *out = 0;
+      return 1;
+    }
+  }
+  return 0;
+}
+
+static int set_string(const arg_ctx *c, char **dst, const char *value) {
+  char *copy = strdup(value);
+  if (!copy)
+    return fail(c, "out of memory");
+  free(*dst);
+  *dst = copy;
+  return 0;
+}
+
+static int set_input(const arg_ctx *c, const char *value) {
+  zr_cli_options *o = c->o;
+  if (o->input && strcmp(o->input, value) != 0)
+    return fail(c, "more than one scene file: '%s' and '%s'", o->input,
+                value);
+  return set_string(c, &o->input, value);
+}
+
+static int add_include(const arg_ctx *c, const char *dir) {
+  zr_cli_options *o = c->o;
+  /* POV-Ray counts a path given twice once. */
+  for (size_t i = 0; i < o->n_include_paths; i++)
+    if (!strcmp(o->include_paths[i], dir))
+      return 0;
+  char **paths = realloc(o->include_paths,
+                         (o->n_include_paths + 1) * sizeof *paths);
+  if (!paths)
+    return fail(c, "out of memory");
+  o->include_paths = paths;
+  paths[o->n_include_paths] = strdup(dir);
+  if (!paths[o->n_include_paths])
+    return fail(c, "out of memory");
+  o->n_include_paths++;
+  return 0;
+}
+
+static int set_side(const arg_ctx *c, const char *value, const char *name,
+                    int *dst) {
+  long v;
+  if (!parse_int(value, 1, ZR_CLI_MAX_SIDE, &v))
+    return fail(c, "'%s': %s must be a whole number from 1 to %d", c->what,
+                name, ZR_CLI_MAX_SIDE);
+  *dst = (int)v;
+  return 0;
+}
+
+static int set_threshold(const arg_ctx *c, const char *value) {
+  double v;
+  if (!parse_real(value, &v) || v < 0)
+    return fail(c, "'%s': the antialiasing threshold must be a number "
+                   "from 0 up", c->what);
+  c->o->params.aa_threshold = v;
+  return 0;
+}
+
+/* POV-Ray: a jitter amount of 0 or less turns jitter off. */
+static int set_jitter_amount(const arg_ctx *c, const char *value,
+                             int turn_on) {
+  double v;
+  if (!parse_real(value, &v))
+    return fail(c, "'%s': the jitter amount must be a number", c->what);
+  if (v <= 0) {
+    c->o->params.jitter = 0;
+  } else {
+    c->o->params.jitter_amount = v;
+    if (turn_on)
+      c->o->params.jitter = 1;
+  }
+  return 0;
+}
+
+static int set_bits(const arg_ctx *c, const char *value) {
+  zr_cli_options *o = c->o;
+  long bits;
+  if (!parse_int(value, 1, 64, &bits))
+    return fail(c, "'%s': bits per colour must be a whole number",
+                c->what);
+  if (bits != 8 && bits != 16)
+    return fail(c, "'%s': only 8 and 16 bits per colour are supported",
+                c->what);
+  if (o->format == ZR_FORMAT_PPM && bits != 8)
+    return fail(c, "'%s': PPM files are written with 8 bits per colour",
+                c->what);
+  if (o->format != ZR_FORMAT_PPM)
+    o->format = bits == 16 ? ZR_FORMAT_PNG16 : ZR_FORMAT_PNG8;
+  return 0;
+}
+
+/* The names of POV-Ray's other output types, to refuse them by name. */
+static const char *pov_type_name(char type) {
+  switch (toupper((unsigned char)type)) {
+  case 'B':
+    return "BMP";
+  case 'C':
+  case 'T':
+    return "Targa";
+  case 'E':
+    return "OpenEXR";
+  case 'H':
+    return "Radiance HDR";
+  case 'J':
+    return "JPEG";
+  case 'S':
+    return "system-specific";
+  default:
+    return NULL;
+  }
+}
+
+/* +F's value: a type letter, then optionally the bits per colour. */
+static int set_format(const arg_ctx *c, const char *value) {
+  zr_cli_options *o = c->o;
+  char type = (char)toupper((unsigned char)value[0]);
+  if (type == 'N') {
+    o->format = ZR_FORMAT_PNG8;
+  } else if (type == 'P') {
+    o->format = ZR_FORMAT_PPM;
+  } else if (pov_type_name(type)) {
+    return fail(c, "'%s': %s output is not supported (use N for PNG, P "
+                   "for PPM, or an output name ending in .pfm)",
+                c->what, pov_type_name(type));
+  } else {
+    return fail(c, "'%s': unknown output file type '%c' (use N for PNG "
+                   "or P for PPM)", c->what, value[0]);
+  }
+  return value[1] ? set_bits(c, value + 1) : 0;
+}
+
+static int set_sampling(const arg_ctx *c, const char *value) {
+  long method;
+  if (!parse_int(value, 1, 2, &method))
+    return fail(c, "'%s': the sampling method must be 1 or 2", c->what);
+  if (method == 2)
+    return fail(c, "'%s': recursive antialiasing (method 2) is not "
+                   "supported; method 1 is used", c->what);
+  return 0;
+}
+
+/* Applies one option; value is NULL when none was written. */
+static int apply(const arg_ctx *c, opt_key key, const char *value) {
+  zr_cli_options *o = c->o;
+  long v;
+  switch (key) {
+  case K_INPUT:
+    return set_input(c, value);
+  case K_OUTPUT:
+    if (!strcmp(value, "-"))
+      return fail(c, "'%s': writing the image to standard output is not "
+                     "supported", c->what);
+    return set_string(c, &o->output, value);
+  case K_WIDTH:
+    return set_side(c, value, "the width", &o->params.width);
+  case K_HEIGHT:
+    return set_side(c, value, "the height", &o->params.height);
+  case K_AA_ON:
+    o->params.antialias = 1;
+    return value ? set_threshold(c, value) : 0;
+  case K_AA_OFF:
+    o->params.antialias = 0;
+    return value ? set_threshold(c, value) : 0;
+  case K_AA_THRESHOLD:
+    return set_threshold(c, value);
+  case K_AA_DEPTH:
+    if (!parse_int(value, 1, ZR_CLI_MAX_AA_DEPTH, &v))
+      return fail(c, "'%s': the antialiasing depth must be a whole number "
+                     "from 1 to %d", c->what, ZR_CLI_MAX_AA_DEPTH);
+    o->params.aa_depth = (int)v;
+    return 0;
+  case K_SAMPLING:
+    return set_sampling(c, value);
+  case K_JITTER_ON:
+    o->params.jitter = 1;
+    return value ? set_jitter_amount(c, value, 1) : 0;
+  case K_JITTER_OFF:
+    o->params.jitter = 0;
+    return value ? set_jitter_amount(c, value, 0) : 0;
+  case K_JITTER_AMOUNT:
+    return set_jitter_amount(c, value, 0);
+  case K_THREADS:
+    if (!parse_int(value, 1, ZR_CLI_MAX_THREADS, &v))
+      return fail(c, "'%s': the number of threads must be a whole number "
+                     "from 1 to %d", c->what, ZR_CLI_MAX_THREADS);
+    o->threads = (int)v;
+    return 0;
+  case K_INCLUDE:
+    return add_include(c, value);
+  case K_VERBOSE:
+    o->verbose = 1;
+    o->quiet = 0;
+    return 0;
+  case K_NOVERBOSE:
+    o->verbose = 0;
+    return 0;
+  case K_QUIET:
+    o->quiet = 1;
+    o->verbose = 0;
+    return 0;
+  case K_HELP:
+    o->help = 1;
+    return 0;
+  case K_VERSION:
+    o->version = 1;
+    return 0;
+  case K_IGNORED:
+    return 0;
+  case K_OUTPUT_ON:
+    o->write_output = 1;
+    return value ? set_format(c, value) : 0;
+  case K_OUTPUT_OFF:
+    o->write_output = 0;
+    return value ? set_format(c, value) : 0;
+  case K_FORMAT:
+    return set_format(c, value);
+  case K_BITS:
+    return set_bits(c, value);
+  }
+  return fail(c, "'%s': internal error: unhandled option", c->what);
+}
+
+/* ---- POV-Ray switches: +X / -X ------------------------------------- */
+
+/* How a switch takes its value. */
+typedef enum value_rule {
+  V_NONE,     /* nothing may follow the letters */
+  V_OPTIONAL, /* +A or +A0.3 */
+  V_REQUIRED, /* +W640 */
+  V_ANY       /* anything follows and is ignored (+D0) */
+} value_rule;
+
+typedef struct pov_switch {
+  const char *letters; /* longest first where one is a prefix of another */
+  opt_key on;          /* after + */
+  opt_key off;         /* after - */
+  value_rule rule;
+  const char *needs; /* what a missing value should have been */
+} pov_switch;
+
+static const pov_switch pov_switches[] = {
+    {"WT", K_THREADS, K_THREADS, V_REQUIRED, "a number of threads, as in +WT4"},
+    {"W", K_WIDTH, K_WIDTH, V_REQUIRED, "a width, as in +W640"},
+    {"H", K_HEIGHT, K_HEIGHT, V_REQUIRED, "a height, as in +H480"},
+    {"I", K_INPUT, K_INPUT, V_REQUIRED, "a file name, as in +Iscene.pov"},
+    {"O", K_OUTPUT, K_OUTPUT, V_REQUIRED, "a file name, as in +Oimage.png"},
+    {"L", K_INCLUDE, K_INCLUDE, V_REQUIRED, "a directory, as in +Linclude"},
+    {"AM", K_SAMPLING, K_SAMPLING, V_REQUIRED, "a method, as in +AM1"},
+    {"A", K_AA_ON, K_AA_OFF, V_OPTIONAL, NULL},
+    {"R", K_AA_DEPTH, K_AA_DEPTH, V_REQUIRED, "a depth, as in +R3"},
+    {"J", K_JITTER_ON, K_JITTER_OFF, V_OPTIONAL, NULL},
+    {"F", K_OUTPUT_ON, K_OUTPUT_OFF, V_OPTIONAL, NULL},
+    {"V", K_VERBOSE, K_NOVERBOSE, V_NONE, NULL},
+    {"D", K_IGNORED, K_IGNORED, V_ANY, NULL},
+    {"P", K_IGNORED, K_IGNORED, V_NONE, NULL},
+};
+
+static int parse_switch(arg_ctx *c, const char *arg) {
+  int plus = arg[0] == '+';
+  const char *body = arg + 1;
+  /* GNU habits that do not clash with POV-Ray's letters. */
+  if (!strcmp(body, "?") || !strcmp(arg, "-h"))
+    return apply(c, K_HELP, NULL);
+  if (!strcmp(arg, "-v"))
+    return apply(c, K_VERBOSE, NULL);
+  if (!strcmp(arg, "-q"))
+    return apply(c, K_QUIET, NULL);
+  /* Before +A, which would take "G2.2" for its threshold. */
+  if (!strncasecmp(body, "AG", 2))
+    return fail(c, "'%s': the antialiasing gamma (+AG) is not supported",
+                arg);
+  for (size_t i = 0; i < sizeof pov_switches / sizeof *pov_switches; i++) {
+    const pov_switch *sw = &pov_switches[i];
+    size_t n = strlen(sw->letters);
+    if (strncasecmp(body, sw->letters, n) != 0)
+      continue;
+    const char *value = body + n;
+    opt_key key = plus ? sw->on : sw->off;
+    switch (sw->rule) {
+    case V_NONE:
+      if (*value)
+        break; /* +Vx: not this switch; an unknown one */
+      return apply(c, key, NULL);
+    case V_OPTIONAL:
+      return apply(c, key, *value ? value : NULL);
+    case V_REQUIRED:
+      if (!*value)
+        return fail(c, "'%s' needs %s", arg, sw->needs);
+      return apply(c, key, value);
+    case V_ANY:
+      return apply(c, key, NULL);
+    }
+    break;
+  }
+  return fail(c, "unknown option '%s' (try 'zrcube --help')", arg);
+}
+
+/* ---- GNU long options: --name, --name=value, --name value ---------- */
+
+typedef enum long_rule { L_NONE, L_OPTIONAL, L_REQUIRED } long_rule;
+
+typedef struct long_option {
+  const char *name;
+  opt_key key;
+  long_rule rule;
+} long_option;
+
+static const long_option long_options[] = {
+    {"input", K_INPUT, L_REQUIRED},
+    {"output", K_OUTPUT, L_REQUIRED},
+    {"width", K_WIDTH, L_REQUIRED},
+    {"height", K_HEIGHT, L_REQUIRED},
+    {"antialias", K_AA_ON, L_OPTIONAL},
+    {"no-antialias", K_AA_OFF, L_NONE},
+    {"aa-depth", K_AA_DEPTH, L_REQUIRED},
+    {"jitter", K_JITTER_ON, L_OPTIONAL},
+    {"no-jitter", K_JITTER_OFF, L_NONE},
+    {"threads", K_THREADS, L_REQUIRED},
+    {"include-path", K_INCLUDE, L_REQUIRED},
+    {"format", K_FORMAT, L_REQUIRED},
+    {"verbose", K_VERBOSE, L_NONE},
+    {"quiet", K_QUIET, L_NONE},
+    {"help", K_HELP, L_NONE},
+    {"version", K_VERSION, L_NONE},
+};
+
+/* Returns how many extra arguments it used (0 or 1), or -1 on failure. */
+static int parse_long(arg_ctx *c, const char *arg, const char *next) {
+  const char *name = arg + 2;
+  const char *eq = strchr(name, '=');
+  size_t len = eq ? (size_t)(eq - name) : strlen(name);
+  for (size_t i = 0; i < sizeof long_options / sizeof *long_options; i++) {
+    const long_option *lo = &long_options[i];
+    if (strlen(lo->name) != len || strncmp(name, lo->name, len) != 0)
+      continue;
+    switch (lo->rule) {
+    case L_NONE:
+      if (eq)
+        return fail(c, "'%s': --%s takes no value", arg, lo->name);
+      return apply(c, lo->key, NULL);
+    case L_OPTIONAL:
+      return apply(c, lo->key, eq ? eq + 1 : NULL);
+    case L_REQUIRED:
+      if (eq)
+        return apply(c, lo->key, eq + 1);
+      if (!next)
+        return fail(c, "'%s' needs a value", arg);
+      {
+        /* Messages quote "--width=abc" for "--width abc" too. */
+        size_t n = strlen(arg) + strlen(next) + 2;
+        char *what = malloc(n);
+        if (!what)
+          return fail(c, "out of memory");
+        snprintf(what, n, "%s=%s", arg, next);
+        arg_ctx sub = *c;
+        sub.what = what;
+        int rc = apply(&sub, lo->key, next);
+        free(what);
+        return rc < 0 ? -1 : 1;
+      }
+    }
+  }
+  return fail(c, "unknown option '%.*s' (try 'zrcube --help')",
+              (int)(len + 2), arg);
+}
+
+/* ---- INI options: Key=Value ---------------------------------------- */
+
+typedef struct ini_option {
+  const char *name;
+  opt_key key;   /* with a value */
+  int boolean;   /* 1: on/off selects between key and off */
+  opt_key off;
+} ini_option;
+
+static const ini_option ini_options[] = {
+    {"Input_File_Name", K_INPUT, 0, K_INPUT},
+    {"Output_File_Name", K_OUTPUT, 0, K_OUTPUT},
+    {"Width", K_WIDTH, 0, K_WIDTH},
+    {"Height", K_HEIGHT, 0, K_HEIGHT},
+    {"Antialias", K_AA_ON, 1, K_AA_OFF},
+    {"Antialias_Threshold", K_AA_THRESHOLD, 0, K_AA_THRESHOLD},
+    {"Antialias_Depth", K_AA_DEPTH, 0, K_AA_DEPTH},
+    {"Sampling_Method", K_SAMPLING, 0, K_SAMPLING},
+    {"Jitter", K_JITTER_ON, 1, K_JITTER_OFF},
+    {"Jitter_Amount", K_JITTER_AMOUNT, 0, K_JITTER_AMOUNT},
+    {"Work_Threads", K_THREADS, 0, K_THREADS},
+    {"Library_Path", K_INCLUDE, 0, K_INCLUDE},
+    {"Verbose", K_VERBOSE, 1, K_NOVERBOSE},
+    {"Display", K_IGNORED, 1, K_IGNORED},
+    {"Pause_When_Done", K_IGNORED, 1, K_IGNORED},
+    {"Output_To_File", K_OUTPUT_ON, 1, K_OUTPUT_OFF},
+    {"Output_File_Type", K_FORMAT, 0, K_FORMAT},
+    {"Bits_Per_Color", K_BITS, 0, K_BITS},
+};
+
+/* arg is "Key=Value"; POV-Ray's keys are case-insensitive. */
+static int parse_ini_option(arg_ctx *c, const char *arg) {
+  const char *eq = strchr(arg, '=');
+  size_t len = (size_t)(eq - arg);
+  while (len > 0 && isspace((unsigned char)arg[len - 1]))
+    len--;
+  const char *value = eq + 1;
+  while (isspace((unsigned char)*value))
+    value++;
+  for (size_t i = 0; i < sizeof ini_options / sizeof *ini_options; i++) {
+    const ini_option *io = &ini_options[i];
+    if (strlen(io->name) != len || strncasecmp(arg, io->name, len) != 0)
+      continue;
+    if (!*value)
+      return fail(c, "'%s' needs a value", arg);
+    if (io->boolean) {
+      int on;
+      if (!parse_bool(value, &on))
+        return fail(c, "'%s': expected on or off", arg);
+      return apply(c, on ? io->key : io->off, NULL);
+    }
+    return apply(c, io->key, value);
+  }
+  return fail(c, "unknown option '%.*s' (try 'zrcube --help')", (int)len,
+              arg);
+}
+
+static int parse_word(arg_ctx *c, const char *word, const char *next);
+
+static int has_suffix(const char *s, const char *suffix) {
+  size_t n = strlen(s), m = strlen(suffix);
+  return n >= m && !strcasecmp(s + n - m, suffix);
+}
+
+/*
+ * Reads an INI file: one option per line (Key=Value or switches), ';'
+ * starts a comment.  As POV-Ray does without a [section] request, only
+ * the lines before the first [section] header are read.
+ */
+static int parse_ini_file(arg_ctx *c, const char *path) {
+  FILE *f = fopen(path, "r");
+  if (!f)
+    return fail(c, "cannot open '%s': %s", path, strerror(errno));
+  char line[4096];
+  int lineno = 0, rc = 0;
+  while (rc == 0 && fgets(line, sizeof line, f)) {
+    lineno++;
+    char *semi = strchr(line, ';');
+    if (semi)
+      *semi = '\0';
+    char *s = line;
+    while (isspace((unsigned char)*s))
+      s++;
+    size_t n = strlen(s);
+    while (n > 0 && isspace((unsigned char)s[n - 1]))
+      s[--n] = '\0';
+    if (!*s)
+      continue;
+    if (*s == '[')
+      break;
+    size_t where_size = strlen(path) + 32;
+    char *where = malloc(where_size);
+    if (!where) {
+      rc = fail(c, "out of memory");
+      break;
+    }
+    snprintf(where, where_size, "%s:%d: ", path, lineno);
+    arg_ctx sub = *c;
+    sub.where = where;
+    sub.what = s;
+    if (*s == '+' || *s == '-') {
+      /* A line may hold several switches separated by blanks. */
+      for (char *tok = strtok(s, " \t"); tok && rc == 0;
+           tok = strtok(NULL, " \t")) {
+        sub.what = tok;
+        rc = parse_word(&sub, tok, NULL) < 0 ? -1 : 0;
+      }
+    } else {
+      rc = parse_word(&sub, s, NULL) < 0 ? -1 : 0;
+    }
+    free(where);
+  }
+  fclose(f);
+  return rc;
+}
+
+/* Key=Value with a key made of letters, digits and underscores (so a
+   file name holding '=' is still a file name). */
+static int is_ini_option(const char *word) {
+  const char *p = word;
+  while (isalnum((unsigned char)*p) || *p == '_')
+    p++;
+  while (p > word && (*p == ' ' || *p == '\t'))
+    p++;
+  return p > word && *p == '=';
+}
+
+/* One word of the command line; returns extra words used, or -1. */
+static int parse_word(arg_ctx *c, const char *word, const char *next) {
+  c->what = word;
+  if (word[0] == '-' && word[1] == '-' && word[2])
+    return parse_long(c, word, next);
+  if ((word[0] == '+' || word[0] == '-') && word[1])
+    return parse_switch(c, word);
+  if (is_ini_option(word))
+    return parse_ini_option(c, word);
+  if (has_suffix(word, ".ini"))
+    return parse_ini_file(c, word);
+  return set_input(c, word);
+}
+
+int zr__cli_parse(zr_cli_options *o, int argc, char **argv, char *err,
+                  size_t err_size) {
+  arg_ctx c = {o, err, err_size, "", ""};
+  if (err_size)
+    err[0] = '\0';
+  int only_files = 0;
+  for (int i = 1; i < argc; i++) {
+    if (only_files) {
+      c.what = argv[i];
+      if (set_input(&c, argv[i]) < 0)
+        return -1;
+      continue;
+    }
+    if (!strcmp(argv[i], "--")) {
+      only_files = 1;
+      continue;
+    }
+    int used = parse_word(&c, argv[i], i + 1 < argc ? argv[i + 1] : NULL);
+    if (used < 0)
+      return -1;
+    i += used;
+  }
+  return 0;
+}
+
+/* ---- the image file name ------------------------------------------- */
+
+static const char *format_extension(zr_image_format format) {
+  switch (format) {
+  case ZR_FORMAT_PPM:
+    return ".ppm";
+  case ZR_FORMAT_PFM:
+    return ".pfm";
+  default:
+    return ".png";
+  }
+}
+
+/* The extension of a file name's last component ("" when none). */
+static const char *extension_of(const char *path) {
+  const char *base = strrchr(path, '/');
+  base = base ? base + 1 : path;
+  const char *dot = strrchr(base, '.');
+  return dot && dot != base ? dot : "";
+}
+
+static zr_image_format format_of_extension(const char *ext) {
+  if (!strcasecmp(ext, ".png"))
+    return ZR_FORMAT_PNG8;
+  if (!strcasecmp(ext, ".ppm"))
+    return ZR_FORMAT_PPM;
+  if (!strcasecmp(ext, ".pfm"))
+    return ZR_FORMAT_PFM;
+  return ZR_FORMAT_AUTO;
+}
+
+/* dir (may be NULL or end in '/') + the scene's base name + ext. */
+static char *default_name(const char *dir, const char *input,
+                          const char *ext) {
+  const char *base = strrchr(input, '/');
+  base = base ? base + 1 : input;
+  size_t stem = strlen(base) - strlen(extension_of(base));
+  size_t dir_len = dir ? strlen(dir) : 0;
+  int slash = dir_len > 0 && dir[dir_len - 1] != '/';
+  size_t n = dir_len + (size_t)slash + stem + strlen(ext) + 1;
+  char *name = malloc(n);
+  if (name)
+    snprintf(name, n, "%s%s%.*s%s", dir ? dir : "", slash ? "/" : "",
+             (int)stem, base, ext);
+  return name;
+}
+
+static int same_file(const char *a, const char *b) {
+  if (!strcmp(a, b))
+    return 1;
+  struct stat sa, sb;
+  return stat(a, &sa) == 0 && stat(b, &sb) == 0 && sa.st_dev == sb.st_dev &&
+         sa.st_ino == sb.st_ino;
+}
+
+int zr__cli_output_path(const zr_cli_options *o, char **path,
+                        zr_image_format *format, char *err,
+                        size_t err_size) {
+  arg_ctx c = {(zr_cli_options *)o, err, err_size, "", ""};
+  *path = NULL;
+  if (!o->input)
+    return fail(&c, "no scene file given (try 'zrcube --help')");
+  zr_image_format fmt = o->format;
+  char *name;
+  struct stat st;
+  const char *out = o->output;
+  size_t out_len = out ? strlen(out) : 0;
+  if (!out || (out_len > 0 && out[out_len - 1] == '/') ||
+      (stat(out, &st) == 0 && S_ISDIR(st.st_mode))) {
+    /* POV-Ray: no name, or a directory, means the scene's base name. */
+    if (fmt == ZR_FORMAT_AUTO)
+      fmt = ZR_FORMAT_PNG8;
+    name = default_name(out, o->input, format_extension(fmt));
+  } else {
+    if (same_file(out, o->input))
+      return fail(&c, "refusing to overwrite the scene file '%s' with the "
+                      "image", o->input);
+    const char *ext = extension_of(out);
+    zr_image_format by_name = format_of_extension(ext);
+    if (fmt == ZR_FORMAT_AUTO && *ext && by_name == ZR_FORMAT_AUTO)
+      return fail(&c, "cannot write '%s': the output name must end in "
+                      ".png, .ppm or .pfm (or give the type with +FN or "
+                      "+FP)", out);
+    if (fmt == ZR_FORMAT_AUTO)
+      fmt = by_name == ZR_FORMAT_AUTO ? ZR_FORMAT_PNG8 : by_name;
+    /* As POV-Ray does, a name without an extension gets the type's. */
+    name = *ext ? strdup(out) : default_name(NULL, out, format_extension(fmt));
+  }
+  if (!name)
+    return fail(&c, "out of memory");
+  if (same_file(name, o->input)) {
+    fail(&c, "refusing to overwrite the scene file '%s' with the image",
+         o->input);
+    free(name);
+    return -1;
+  }
+  *path = name;
+  *format = fmt;
+  return 0;
+}
+
+const char *zr__cli_usage(void) {
+  return
+      "Usage: zrcube [OPTION]... SCENE.pov\n"
+      "       mpirun -n N zrcube [OPTION]... SCENE.pov\n"
+      "Render a POV-Ray 3.7 scene to an image, on one process or on all\n"
+      "processes of an MPI job.  Options take POV-Ray's form (+W640,\n"
+      "letters in any case), its INI form (Width=640) or GNU's\n"
+      "(--width=640); files ending in .ini hold more options.\n"
+      "\n"
+      "  +I<file>, --input=FILE       the scene (or give it as an argument)\n"
+      "  +O<file>, --output=FILE      the image: .png, .ppm or .pfm by its\n"
+      "                               extension (default: SCENE.png here);\n"
+      "                               a directory puts SCENE.png in it\n"
+      "  +FN, +FN16, +FP              PNG (8 or 16 bit) or PPM output\n"
+      "  -F                           render without writing an image\n"
+      "  +W<n>, --width=N             image width in pixels (default 320)\n"
+      "  +H<n>, --height=N            image height in pixels (default 240)\n"
+      "  +A[t], --antialias[=T]       antialias, threshold T (default 0.3)\n"
+      "  -A, --no-antialias           no antialiasing (default)\n"
+      "  +R<n>, --aa-depth=N          n*n samples per antialiased pixel\n"
+      "                               (1 to 9, default 3)\n"
+      "  +J[a], --jitter[=A]          jitter supersamples by A (default 1)\n"
+      "  -J, --no-jitter              no jitter\n"
+      "  +L<dir>, --include-path=DIR  search DIR for #include files\n"
+      "                               (repeatable, searched in order)\n"
+      "  +WT<n>, --threads=N          threads per process (default: the\n"
+      "                               processors of the host shared among\n"
+      "                               its processes)\n"
+      "  +V, -v, --verbose            print render statistics\n"
+      "  -V                           no statistics (default)\n"
+      "  -q, --quiet                  no progress line and no warnings\n"
+      "  +D, -D, +P, -P               accepted and ignored (no display)\n"
+      "  -h, --help                   show this help and exit\n"
+      "  --version                    show the version and exit\n"
+      "\n"
+      "Exit status: 0 on success, 1 when the scene cannot be read, parsed\n"
+      "or rendered or the image cannot be written, 2 for a command line\n"
+      "error.  See zrcube(1).\n";
+}

@@ -1,0 +1,65 @@
+/*
+ * options.h - the zrcube command line, parsed into plain data.
+ *
+ * Parsing is kept apart from main() so that the unit test can feed it
+ * argument vectors and check every message; it prints nothing and opens
+ * no file except INI files named on the command line.
+ */
+#ifndef ZR_BIN_OPTIONS_H
+#define ZR_BIN_OPTIONS_H
+
+#include <stddef.h>
+
+#include "zrcube.h"
+
+/* Limits: POV-Ray caps Work_Threads at 512 and Antialias_Depth at 9; the
+   image side is kept below 65536 so pixel numbers fit in 32 bits. */
+#define ZR_CLI_MAX_SIDE 65535
+#define ZR_CLI_MAX_THREADS 512
+#define ZR_CLI_MAX_AA_DEPTH 9
+
+typedef struct zr_cli_options {
+  char *input;            /* scene file, NULL until given */
+  char *output;           /* +O as given, NULL for the default name */
+  zr_image_format format; /* from +F, ZR_FORMAT_AUTO when not given */
+  int write_output;       /* 0 after -F */
+  char **include_paths;   /* +L, in the order given, duplicates dropped */
+  size_t n_include_paths;
+  zr_render_params params; /* the caller fills it with defaults first */
+  int threads;            /* +WT; 0 means one per processor */
+  int verbose;            /* statistics after the render */
+  int quiet;              /* no progress, no warnings */
+  int help;
+  int version;
+} zr_cli_options;
+
+/*
+ * Prepares o: zeroes it and copies the render defaults in.  Parsing may
+ * then run over several sources (command line, INI files) in order.
+ */
+void zr__cli_init(zr_cli_options *o, const zr_render_params *defaults);
+void zr__cli_free(zr_cli_options *o);
+
+/*
+ * Parses argv[1 .. argc-1].  On failure returns -1 and writes a one-line
+ * message, "zrcube: ...", without a newline, into err.
+ */
+int zr__cli_parse(zr_cli_options *o, int argc, char **argv, char *err,
+                  size_t err_size);
+
+/*
+ * Checks what must hold after all options are read (a scene was named)
+ * and works out the image file: the default name (the scene's base name
+ * with the format's extension, in the current directory), a directory
+ * given as +O, an extension for a name without one.  Refuses a name that
+ * is the scene file itself.  *path is malloc'ed.  Returns -1 with a
+ * message in err on failure.
+ */
+int zr__cli_output_path(const zr_cli_options *o, char **path,
+                        zr_image_format *format, char *err,
+                        size_t err_size);
+
+/* The --help text. */
+const char *zr__cli_usage(void);
+
+#endif /* ZR_BIN_OPTIONS_H */

@@ -1,0 +1,345 @@
+/*
+ * zrcube.c - the command line: render a POV-Ray scene, alone or under
+ * mpirun.
+ *
+ * The program is meant to replace `povray` in a user's command: the same
+ * switches (options.c follows POV-Ray 3.7's reference, section 3.2), the
+ * same default output name, diagnostics on stderr.  Its own work is the
+ * order of events across ranks, after ARCHITECTURE.md ("Parallelism"):
+ *   1. every rank reads the command line (so all agree on the options);
+ *   2. rank 0 parses the scene with a reader that records the files it
+ *      reads, and broadcasts them with its parse status (lib/par);
+ *   3. if rank 0's parse failed every rank stops: only rank 0 has printed
+ *      the library's diagnostics, once; otherwise every other rank parses
+ *      the same bytes from memory;
+ *   4. all ranks render their interleaved rows with threads, rank 0
+ *      gathers the picture and writes it.
+ * Every step that may fail on one rank is followed by an agreement on the
+ * status, so all ranks leave with the same exit status and none waits in
+ * a collective that another has abandoned.
+ *
+ * Exit status: 0 success, 1 the scene or image failed, 2 the command line
+ * was wrong.
+ */
+#include "config.h"
+
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "options.h"
+#include "par/bundle.h"
+#include "par/par.h"
+#include "zrcube.h"
+
+enum { EXIT_SCENE = 1, EXIT_USAGE = 2 };
+
+/* What the diagnostics callback needs: who prints, and what it printed. */
+typedef struct diag_state {
+  int rank;
+  int quiet;
+  unsigned errors_printed;
+} diag_state;
+
+/*
+ * Rank 0 prints everything the library says (warnings and #debug output
+ * unless --quiet).  The other ranks parse what rank 0 already parsed
+ * without error, so they stay silent except for an error, which would
+ * mean the ranks disagree and must not go unseen.
+ */
+static void print_diag(const zr_diag *d, void *user) {
+  diag_state *st = user;
+  if (st->rank != 0) {
+    if (d->level == ZR_DIAG_ERROR) {
+      fprintf(stderr, "zrcube: rank %d: %s", st->rank, d->text);
+      st->errors_printed++;
+    }
+    return;
+  }
+  if (st->quiet && d->level == ZR_DIAG_WARNING)
+    return;
+  fputs(d->text, stderr);
+  if (d->level == ZR_DIAG_ERROR)
+    st->errors_printed++;
+}
+
+/* The progress line: rank 0, on a terminal, when the percentage moves. */
+typedef struct progress_state {
+  int last_percent;
+} progress_state;
+
+static void print_progress(size_t done, size_t total, void *user) {
+  progress_state *p = user;
+  int percent = total ? (int)(100 * done / total) : 100;
+  if (percent == p->last_percent)
+    return;
+  p->last_percent = percent;
+  fprintf(stderr, "\rzrcube: rendering %3d%%", percent);
+  fflush(stderr);
+}
+
+/*
+ * POV-Ray accepts a scene name without its .pov; so does zrcube when the
+ * name as given does not exist.  Returns 0, or -1 after printing why the
+ * scene cannot be opened.
+ */
+static int find_scene(zr_cli_options *o) {
+  struct stat st;
+  if (stat(o->input, &st) == 0) {
+    if (S_ISDIR(st.st_mode)) {
+      fprintf(stderr, "zrcube: cannot read scene file '%s': it is a "
+                      "directory\n", o->input);
+      return -1;
+    }
+    return 0;
+  }
+  int err = errno;
+  size_t n = strlen(o->input) + 5;
+  char *with_pov = malloc(n);
+  if (with_pov) {
+    snprintf(with_pov, n, "%s.pov", o->input);
+    if (stat(with_pov, &st) == 0 && !S_ISDIR(st.st_mode)) {
+      free(o->input);
+      o->input = with_pov;
+      return 0;
+    }
+    free(with_pov);
+  }
+  fprintf(stderr, "zrcube: cannot open scene file '%s': %s\n", o->input,
+          strerror(err));
+  return -1;
+}
+
+typedef struct run {
+  zr_par *par;
+  int rank;
+  zr_cli_options opts;
+  char *output_path;
+  zr_image_format format;
+  int threads;
+  zr_context *ctx;
+  diag_state diag;
+  zr_bundle bundle;
+  zr_scene *scene;
+  zr_image *image;
+  double parse_seconds;
+  double write_seconds;
+  zr_par_render render;
+} run;
+
+/* Steps 1: the command line on every rank.  Returns an exit status or -1
+   to go on. */
+static int read_command_line(run *r, int argc, char **argv) {
+  zr_render_params defaults;
+  zr_render_params_init(&defaults);
+  zr__cli_init(&r->opts, &defaults);
+  char err[1024];
+  int rc = zr__cli_parse(&r->opts, argc, argv, err, sizeof err);
+  zr_status agreed = zr__par_agree(r->par, rc == 0 ? ZR_OK : ZR_EINVAL);
+  if (rc != 0 && r->rank == 0)
+    fprintf(stderr, "%s\n", err);
+  else if (agreed != ZR_OK && r->rank == 0)
+    fprintf(stderr, "zrcube: another rank could not read the command "
+                    "line (an INI file missing on its host?)\n");
+  if (agreed != ZR_OK)
+    return EXIT_USAGE;
+  if (r->opts.help || r->opts.version) {
+    if (r->rank == 0 && r->opts.help) {
+      fputs(zr__cli_usage(), stdout);
+    } else if (r->rank == 0) {
+      char mpi[256];
+      zr__par_mpi_version(mpi, sizeof mpi);
+      printf("zrcube %s (libzrcube %s, %s)\n", ZR_VERSION_STRING,
+             zr_version(), mpi);
+    }
+    return EXIT_SUCCESS;
+  }
+  /* The scene and the image name matter on rank 0 only. */
+  int usage = 0, missing = 0;
+  if (r->rank == 0) {
+    if (!r->opts.input) {
+      fprintf(stderr, "zrcube: no scene file given (try 'zrcube "
+                      "--help')\n");
+      usage = 1;
+    } else if (find_scene(&r->opts) < 0) {
+      missing = 1;
+    } else if (zr__cli_output_path(&r->opts, &r->output_path, &r->format,
+                                   err, sizeof err) < 0) {
+      fprintf(stderr, "%s\n", err);
+      usage = 1;
+    }
+  }
+  zr_status s = zr__par_agree(r->par, usage     ? ZR_EINVAL
+                                      : missing ? ZR_ENOTFOUND
+                                                : ZR_OK);
+  if (s == ZR_EINVAL)
+    return EXIT_USAGE;
+  if (s != ZR_OK)
+    return EXIT_SCENE;
+  r->threads = r->opts.threads ? r->opts.threads
+                               : zr__par_default_threads(r->par);
+  return -1;
+}
+
+static zr_status make_context(run *r) {
+  zr_status s = zr_context_new(&r->ctx);
+  if (s != ZR_OK)
+    return s;
+  r->diag.rank = r->rank;
+  r->diag.quiet = r->opts.quiet;
+  zr_context_set_diag(r->ctx, print_diag, &r->diag);
+  for (size_t i = 0; i < r->opts.n_include_paths && s == ZR_OK; i++)
+    s = zr_context_add_include_path(r->ctx, r->opts.include_paths[i]);
+  /* POV-Ray's own include files come after the user's paths.  Every
+     rank lists it, present on its host or not, so that all ranks search
+     the same paths in the same order and ask the bundle for the same
+     files as rank 0 asked the disk. */
+  if (s == ZR_OK)
+    s = zr_context_add_include_path(r->ctx, ZR_POVRAY_INCLUDE_DIR);
+  return s;
+}
+
+/* Steps 2 and 3: the scene, parsed on rank 0 first, then everywhere. */
+static int read_scene(run *r) {
+  zr_status local = make_context(r);
+  zr_status root = local;
+  zr__bundle_init(&r->bundle);
+  double start = zr__par_now();
+  if (r->rank == 0 && local == ZR_OK) {
+    zr_context_set_reader(r->ctx, zr__bundle_record_reader, &r->bundle);
+    root = zr_scene_parse_file(r->ctx, r->opts.input, &r->scene);
+    if (root != ZR_OK && r->diag.errors_printed == 0)
+      fprintf(stderr, "zrcube: cannot read scene '%s': %s\n",
+              r->opts.input, zr_status_str(root));
+  }
+  zr_status s = zr__par_share_bundle(r->par, &r->bundle, &root);
+  if (s != ZR_OK) {
+    if (r->rank == 0)
+      fprintf(stderr, "zrcube: cannot send the scene to the other ranks: "
+                      "%s\n", zr_status_str(s));
+    return EXIT_SCENE;
+  }
+  if (root != ZR_OK)
+    return EXIT_SCENE;
+  if (r->rank != 0 && local == ZR_OK) {
+    zr_context_set_reader(r->ctx, zr__bundle_serve_reader, &r->bundle);
+    local = zr_scene_parse_file(r->ctx, r->opts.input, &r->scene);
+    if (local != ZR_OK && r->diag.errors_printed == 0)
+      fprintf(stderr, "zrcube: rank %d: cannot read scene '%s': %s\n",
+              r->rank, r->opts.input, zr_status_str(local));
+  }
+  r->parse_seconds = zr__par_now() - start;
+  if (zr__par_agree(r->par, local) != ZR_OK) {
+    if (r->rank == 0)
+      fprintf(stderr, "zrcube: the scene parsed here failed on another "
+                      "rank\n");
+    return EXIT_SCENE;
+  }
+  /* The files are in the scene now; the copies are no longer needed. */
+  zr__bundle_free(&r->bundle);
+  return -1;
+}
+
+/* Step 4: render and write. */
+static int render_and_write(run *r) {
+  const zr_render_params *params = &r->opts.params;
+  zr_status s = ZR_OK;
+  if (r->rank == 0) {
+    s = zr_image_new(params->width, params->height, &r->image);
+    if (s != ZR_OK)
+      fprintf(stderr, "zrcube: cannot make a %dx%d image: %s\n",
+              params->width, params->height, zr_status_str(s));
+  }
+  if (zr__par_agree(r->par, s) != ZR_OK)
+    return EXIT_SCENE;
+  progress_state progress = {-1};
+  int show_progress = r->rank == 0 && !r->opts.quiet && isatty(2);
+  r->render.scene = r->scene;
+  r->render.params = params;
+  r->render.threads = r->threads;
+  r->render.progress = show_progress ? print_progress : NULL;
+  r->render.progress_user = &progress;
+  r->render.image = r->image;
+  s = zr__par_render(r->par, &r->render);
+  if (show_progress)
+    fputs(s == ZR_OK ? "\n" : "\r\033[K", stderr);
+  if (s != ZR_OK) {
+    if (r->rank == 0) {
+      const char *why = zr_context_last_error(r->ctx);
+      if (*why)
+        fputs(why, stderr);
+      else
+        fprintf(stderr, "zrcube: rendering failed: %s\n", zr_status_str(s));
+    }
+    return EXIT_SCENE;
+  }
+  s = ZR_OK;
+  if (r->rank == 0 && r->opts.write_output) {
+    double start = zr__par_now();
+    unsigned before = r->diag.errors_printed;
+    s = zr_image_write(r->ctx, r->image, r->output_path, r->format,
+                       zr_scene_assumed_gamma(r->scene));
+    if (s != ZR_OK && r->diag.errors_printed == before)
+      fprintf(stderr, "zrcube: cannot write '%s': %s\n", r->output_path,
+              zr_status_str(s));
+    r->write_seconds = zr__par_now() - start;
+  }
+  return zr__par_agree(r->par, s) == ZR_OK ? -1 : EXIT_SCENE;
+}
+
+static void print_statistics(const run *r) {
+  const zr_render_stats *st = &r->render.stats;
+  const zr_render_params *p = &r->opts.params;
+  zr_scene_info info;
+  zr_scene_get_info(r->scene, &info);
+  fprintf(stderr,
+          "zrcube: %s: %zu objects (%zu primitives), %zu lights\n"
+          "zrcube: image %dx%d, antialiasing %s, %d rank%s x %d thread%s\n"
+          "zrcube: time: parse %.3f s, render %.3f s, write %.3f s\n"
+          "zrcube: rays: camera %llu, supersample %llu, reflected %llu, "
+          "refracted %llu, shadow %llu\n"
+          "zrcube: supersampled pixels: %llu\n",
+          r->opts.input, info.objects, info.primitives, info.lights,
+          p->width, p->height, p->antialias ? "on" : "off",
+          zr__par_size(r->par), zr__par_size(r->par) == 1 ? "" : "s",
+          r->threads, r->threads == 1 ? "" : "s", r->parse_seconds,
+          r->render.render_seconds, r->write_seconds,
+          (unsigned long long)st->camera_rays,
+          (unsigned long long)st->supersample_rays,
+          (unsigned long long)st->reflected_rays,
+          (unsigned long long)st->refracted_rays,
+          (unsigned long long)st->shadow_rays,
+          (unsigned long long)st->supersampled_pixels);
+}
+
+int main(int argc, char **argv) {
+  run r;
+  memset(&r, 0, sizeof r);
+  zr_status s = zr__par_init(&argc, &argv, &r.par);
+  if (s != ZR_OK) {
+    fprintf(stderr, "zrcube: cannot start MPI: %s\n", zr_status_str(s));
+    return EXIT_SCENE;
+  }
+  r.rank = zr__par_rank(r.par);
+  int status = read_command_line(&r, argc, argv);
+  if (status < 0)
+    status = read_scene(&r);
+  if (status < 0)
+    status = render_and_write(&r);
+  if (status < 0) {
+    if (r.rank == 0 && r.opts.verbose)
+      print_statistics(&r);
+    status = EXIT_SUCCESS;
+  }
+  zr_image_free(r.image);
+  zr_scene_free(r.scene);
+  zr__bundle_free(&r.bundle);
+  zr_context_free(r.ctx);
+  free(r.output_path);
+  zr__cli_free(&r.opts);
+  zr__par_finalize(r.par);
+  return status;
+}

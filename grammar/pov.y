@@ -1,0 +1,867 @@
+/*
+ * pov.y - the grammar of the POV-Ray 3.7 scene language (the slice
+ * zRcube supports so far), a pure bison parser.
+ *
+ * The shape follows Bison's C examples (reccalc, bistromathic): a pure
+ * parser with locations, LAC and a custom syntax error report that lists
+ * exactly the tokens that could come next.  Tokens do not come from flex
+ * directly but from the directive engine (lib/sdl/directive.c), which
+ * runs #include, #version and #zfor and turns identifiers into typed
+ * tokens (float identifier, pigment identifier, ...), as POV-Ray's own
+ * parser does.  A leading pseudo-token picks the start symbol: a whole
+ * scene, or one expression for a directive, parsed by a nested parser.
+ *
+ * Syntax and defaults follow the reference manual (r3_4): "Camera",
+ * "Light Sources", "Finite/Infinite Solid Primitives", "CSG", "Texture",
+ * "Finish", "Float Expressions", "Vector Expressions", "Color
+ * Expressions".  Actions are one-liners that call lib/sdl/build.c and
+ * lib/sdl/values.c; a failed helper has already reported its error.
+ */
+%code top {
+#include "config.h"
+}
+
+%code requires {
+#include "sdl/sdl.h"
+}
+
+%code provides {
+int zr__pov_lex(ZR__POV_STYPE *lval, zr_sdl_loc *lloc, zr_sdl_parser *p);
+int zr__pov_parse(zr_sdl_parser *p);
+}
+
+%code {
+#include <stdio.h>
+#include <string.h>
+
+#include "core/strbuf.h"
+
+/* A construct's location is its first token's, underlined to the end
+   of its last token when both sit on the same line. */
+#define YYLLOC_DEFAULT(Cur, Rhs, N)                                        \
+  do {                                                                     \
+    if (N) {                                                               \
+      (Cur) = YYRHSLOC(Rhs, 1);                                            \
+      const zr_sdl_loc *last_ = &YYRHSLOC(Rhs, N);                         \
+      if (last_->file == (Cur).file && last_->line == (Cur).line &&        \
+          last_->column >= (Cur).column)                                   \
+        (Cur).length = last_->column + last_->length - (Cur).column;       \
+    } else {                                                               \
+      (Cur) = YYRHSLOC(Rhs, 0);                                            \
+      (Cur).length = 0;                                                    \
+    }                                                                      \
+  } while (0)
+
+/* Helpers report their own errors; the action only stops the parse. */
+#define TRY(cond)                                                          \
+  do {                                                                     \
+    if (!(cond))                                                           \
+      YYABORT;                                                             \
+  } while (0)
+
+static void zr__pov_error(const zr_sdl_loc *loc, zr_sdl_parser *p,
+                          const char *msg) {
+  zr__sdl_error(p, ZR_ESYNTAX, loc, "%s", msg);
+}
+
+static zr_sdl_value numeric_value(const zr_sdl_expr *e) {
+  zr_sdl_value v;
+  memset(&v, 0, sizeof v);
+  v.kind = e->dim == 1 ? ZR_SDL_FLOAT
+           : e->dim == 5 ? ZR_SDL_COLOUR : ZR_SDL_VECTOR;
+  v.num = *e;
+  return v;
+}
+
+static zr_sdl_value pointer_value(zr_sdl_kind kind, const void *ptr) {
+  zr_sdl_value v;
+  memset(&v, 0, sizeof v);
+  v.kind = kind;
+  v.ptr = ptr;
+  return v;
+}
+
+static zr_sdl_mod make_mod(zr_sdl_mod_kind kind, const void *ptr) {
+  zr_sdl_mod m = {kind, ptr};
+  return m;
+}
+
+/* The rest of the camera's, light's and settings' items act on the
+   scene directly: there is one of each being built at a time. */
+#define CAMERA (&p->scene->camera)
+#define SETTINGS (&p->scene->settings)
+}
+
+%define api.pure full
+%define api.prefix {zr__pov_}
+%define api.location.type {zr_sdl_loc}
+%define parse.error custom
+%define parse.lac full
+%locations
+%param {zr_sdl_parser *p}
+
+%union {
+  double num;
+  const char *str;
+  zr_sdl_decl_name decl;
+  zr_sdl_value value;
+  zr_sdl_expr expr;
+  zr_sdl_list list;
+  zr_sdl_colour_mod cmod;
+  zr_sdl_mod mod;
+  zr_sdl_reflection refl;
+  zr_transform *transform;
+  zr_pigment *pigment;
+  zr_finish *finish;
+  zr_texture *texture;
+  zr_interior *interior;
+  zr_object *object;
+  zr_light *light;
+  int token;
+}
+
+/* Pseudo-tokens: the engine hands one out first to pick the start. */
+%token T_START_SCENE "start of scene"
+%token T_START_FLOAT "start of expression"
+%token T_START_PAREN "start of parenthesized expression"
+
+%token <num> T_NUMBER "number"
+%token <str> T_STRING "string"
+%token <str> T_IDENTIFIER "undeclared identifier"
+%token <str> T_UNSUPPORTED "unsupported keyword"
+%token <decl> T_DECL_NAME "identifier"
+%token <value> T_FLOAT_ID "float identifier"
+%token <value> T_VECTOR_ID "vector identifier"
+%token <value> T_COLOUR_ID "colour identifier"
+%token <value> T_PIGMENT_ID "pigment identifier"
+%token <value> T_FINISH_ID "finish identifier"
+%token <value> T_TEXTURE_ID "texture identifier"
+%token <value> T_INTERIOR_ID "interior identifier"
+%token <value> T_OBJECT_ID "object identifier"
+
+%token T_DECLARE "#declare"
+%token T_LOCAL "#local"
+%token T_INCLUDE "#include"
+%token T_VERSION "#version"
+%token T_ZFOR "#zfor"
+%token T_ZEND "#zend"
+
+%token T_ABS "abs"
+%token T_ACOS "acos"
+%token T_ADC_BAILOUT "adc_bailout"
+%token T_AMBIENT "ambient"
+%token T_AMBIENT_LIGHT "ambient_light"
+%token T_ANGLE "angle"
+%token T_ASIN "asin"
+%token T_ASSUMED_GAMMA "assumed_gamma"
+%token T_ATAN "atan"
+%token T_ATAN2 "atan2"
+%token T_BACKGROUND "background"
+%token T_BLUE "blue"
+%token T_BOX "box"
+%token T_BRILLIANCE "brilliance"
+%token T_CAMERA "camera"
+%token T_CEIL "ceil"
+%token T_COLOUR "colour"
+%token T_CONE "cone"
+%token T_CONSERVE_ENERGY "conserve_energy"
+%token T_COS "cos"
+%token T_COSH "cosh"
+%token T_CYLINDER "cylinder"
+%token T_DEGREES "degrees"
+%token T_DIFFUSE "diffuse"
+%token T_DIRECTION "direction"
+%token T_DISC "disc"
+%token T_DIV "div"
+%token T_EMISSION "emission"
+%token T_EXP "exp"
+%token T_FALLOFF "falloff"
+%token T_FALSE "false"
+%token T_FILTER "filter"
+%token T_FINISH "finish"
+%token T_FLOOR "floor"
+%token T_FRESNEL "fresnel"
+%token T_GLOBAL_SETTINGS "global_settings"
+%token T_GRAY "gray"
+%token T_GREEN "green"
+%token T_INT "int"
+%token T_INTERIOR "interior"
+%token T_INVERSE "inverse"
+%token T_IOR "ior"
+%token T_LIGHT_SOURCE "light_source"
+%token T_LN "ln"
+%token T_LOCATION "location"
+%token T_LOG "log"
+%token T_LOOK_AT "look_at"
+%token T_MATRIX "matrix"
+%token T_MAX "max"
+%token T_MAX_TRACE_LEVEL "max_trace_level"
+%token T_METALLIC "metallic"
+%token T_MIN "min"
+%token T_MOD "mod"
+%token T_NO "no"
+%token T_NO_SHADOW "no_shadow"
+%token T_OBJECT "object"
+%token T_OFF "off"
+%token T_ON "on"
+%token T_OPEN "open"
+%token T_PERSPECTIVE "perspective"
+%token T_PHONG "phong"
+%token T_PHONG_SIZE "phong_size"
+%token T_PI "pi"
+%token T_PIGMENT "pigment"
+%token T_PLANE "plane"
+%token T_POW "pow"
+%token T_RADIANS "radians"
+%token T_RED "red"
+%token T_REFLECTION "reflection"
+%token T_RGB "rgb"
+%token T_RGBF "rgbf"
+%token T_RGBFT "rgbft"
+%token T_RGBT "rgbt"
+%token T_RIGHT "right"
+%token T_ROTATE "rotate"
+%token T_ROUGHNESS "roughness"
+%token T_SCALE "scale"
+%token T_SHADOWLESS "shadowless"
+%token T_SIN "sin"
+%token T_SINH "sinh"
+%token T_SKY "sky"
+%token T_SPECULAR "specular"
+%token T_SPHERE "sphere"
+%token T_SQRT "sqrt"
+%token T_T "t"
+%token T_TAN "tan"
+%token T_TANH "tanh"
+%token T_TEXTURE "texture"
+%token T_TRANSLATE "translate"
+%token T_TRANSMIT "transmit"
+%token T_TRIANGLE "triangle"
+%token T_TRUE "true"
+%token T_U "u"
+%token T_UNION "union"
+%token T_UP "up"
+%token T_V "v"
+%token T_VCROSS "vcross"
+%token T_VDOT "vdot"
+%token T_VLENGTH "vlength"
+%token T_VNORMALIZE "vnormalize"
+%token T_X "x"
+%token T_Y "y"
+%token T_YES "yes"
+%token T_Z "z"
+
+%type <expr> expr primary colour_value colour_spec
+%type <list> list
+%type <cmod> colour_item
+%type <token> func dot_item
+%type <value> rvalue
+%type <object> object object_body object_head union_head union_body
+%type <mod> object_mod
+%type <transform> transform
+%type <pigment> pigment pigment_head pigment_body
+%type <finish> finish finish_head finish_body
+%type <refl> reflection
+%type <texture> texture texture_head texture_body
+%type <interior> interior interior_head interior_body
+%type <light> light_body
+
+%left '+' '-'
+%left '*' '/'
+%precedence NEG
+
+%%
+
+start:
+  T_START_SCENE items
+| T_START_PAREN '(' expr ')'  { p->nested_value = $3; YYACCEPT; }
+| T_START_FLOAT expr
+    {
+      /* The expression ended where the lookahead began: hand that token
+         out again to whoever reads next. */
+      p->nested_value = $2;
+      p->has_pushback = yychar != ZR__POV_EMPTY;
+      YYACCEPT;
+    }
+;
+
+items:
+  %empty
+| items item
+;
+
+item:
+  object
+    {
+      if (zr__scene_add_object(p->scene, $1) != ZR_OK) {
+        zr__sdl_error(p, ZR_ENOMEM, &@1, "out of memory");
+        YYABORT;
+      }
+    }
+| camera
+| light
+| background
+| global_settings
+| declaration
+;
+
+/* ---- #declare and #local ---- */
+
+declaration:
+  T_DECLARE T_DECL_NAME '=' rvalue opt_semi
+    { TRY(zr__sdl_define(p, &$2, false, &$4, &@2)); }
+| T_LOCAL T_DECL_NAME '=' rvalue opt_semi
+    { TRY(zr__sdl_define(p, &$2, true, &$4, &@2)); }
+;
+
+/* POV-Ray wants the semicolon after floats, vectors and colours and
+   accepts it after the rest; both spellings are taken. */
+opt_semi:
+  %empty
+| ';'
+;
+
+rvalue:
+  colour_value  { $$ = numeric_value(&$1); }
+| pigment       { $$ = pointer_value(ZR_SDL_PIGMENT, $1); }
+| finish        { $$ = pointer_value(ZR_SDL_FINISH, $1); }
+| texture       { $$ = pointer_value(ZR_SDL_TEXTURE, $1); }
+| interior      { $$ = pointer_value(ZR_SDL_INTERIOR, $1); }
+| object        { $$ = pointer_value(ZR_SDL_OBJECT, $1); }
+;
+
+/* ---- expressions ---- */
+
+expr:
+  expr '+' expr        { TRY(zr__sdl_binop(p, '+', &$1, &$3, &@2, &$$)); }
+| expr '-' expr        { TRY(zr__sdl_binop(p, '-', &$1, &$3, &@2, &$$)); }
+| expr '*' expr        { TRY(zr__sdl_binop(p, '*', &$1, &$3, &@2, &$$)); }
+| expr '/' expr        { TRY(zr__sdl_binop(p, '/', &$1, &$3, &@2, &$$)); }
+| '-' expr %prec NEG   { $$ = $2; zr__sdl_negate(&$$); }
+| '+' expr %prec NEG   { $$ = $2; }
+| primary
+;
+
+primary:
+  T_NUMBER             { $$ = zr__sdl_float($1); }
+| T_FLOAT_ID           { $$ = $1.num; }
+| T_VECTOR_ID          { $$ = $1.num; }
+| T_COLOUR_ID          { $$ = $1.num; }
+| '(' expr ')'         { $$ = $2; }
+| '<' list '>'         { TRY(zr__sdl_from_list(p, &$2, &@$, &$$)); }
+| T_X                  { $$ = zr__sdl_vec(1, 0, 0); }
+| T_Y                  { $$ = zr__sdl_vec(0, 1, 0); }
+| T_Z                  { $$ = zr__sdl_vec(0, 0, 1); }
+| T_T
+    {
+      $$ = zr__sdl_vec(0, 0, 0);
+      $$.dim = 4;
+      $$.v[3] = 1;
+    }
+| T_U                  { $$ = zr__sdl_vec(1, 0, 0); $$.dim = 2; }
+| T_V                  { $$ = zr__sdl_vec(0, 1, 0); $$.dim = 2; }
+| T_PI                 { $$ = zr__sdl_float(3.14159265358979323846); }
+| T_TRUE               { $$ = zr__sdl_float(1); }
+| T_YES                { $$ = zr__sdl_float(1); }
+| T_ON                 { $$ = zr__sdl_float(1); }
+| T_FALSE              { $$ = zr__sdl_float(0); }
+| T_NO                 { $$ = zr__sdl_float(0); }
+| T_OFF                { $$ = zr__sdl_float(0); }
+| func '(' list ')'    { TRY(zr__sdl_call(p, $1, &$3, &@$, &$$)); }
+| T_VLENGTH '(' expr ')'
+    { TRY(zr__sdl_vcall(p, T_VLENGTH, &$3, NULL, &@$, &$$)); }
+| T_VNORMALIZE '(' expr ')'
+    { TRY(zr__sdl_vcall(p, T_VNORMALIZE, &$3, NULL, &@$, &$$)); }
+| T_VDOT '(' expr ',' expr ')'
+    { TRY(zr__sdl_vcall(p, T_VDOT, &$3, &$5, &@$, &$$)); }
+| T_VCROSS '(' expr ',' expr ')'
+    { TRY(zr__sdl_vcall(p, T_VCROSS, &$3, &$5, &@$, &$$)); }
+| primary '.' dot_item { TRY(zr__sdl_dot(p, &$1, $3, &@3, &$$)); }
+;
+
+list:
+  expr                 { $$.n = 0; TRY(zr__sdl_list_add(p, &$$, &$1, &@1)); }
+| list ',' expr        { $$ = $1; TRY(zr__sdl_list_add(p, &$$, &$3, &@3)); }
+;
+
+func:
+  T_SIN { $$ = T_SIN; }     | T_COS { $$ = T_COS; }
+| T_TAN { $$ = T_TAN; }     | T_ASIN { $$ = T_ASIN; }
+| T_ACOS { $$ = T_ACOS; }   | T_ATAN { $$ = T_ATAN; }
+| T_ATAN2 { $$ = T_ATAN2; } | T_SINH { $$ = T_SINH; }
+| T_COSH { $$ = T_COSH; }   | T_TANH { $$ = T_TANH; }
+| T_SQRT { $$ = T_SQRT; }   | T_POW { $$ = T_POW; }
+| T_ABS { $$ = T_ABS; }     | T_MIN { $$ = T_MIN; }
+| T_MAX { $$ = T_MAX; }     | T_EXP { $$ = T_EXP; }
+| T_LOG { $$ = T_LOG; }     | T_LN { $$ = T_LN; }
+| T_FLOOR { $$ = T_FLOOR; } | T_CEIL { $$ = T_CEIL; }
+| T_INT { $$ = T_INT; }     | T_MOD { $$ = T_MOD; }
+| T_DIV { $$ = T_DIV; }     | T_DEGREES { $$ = T_DEGREES; }
+| T_RADIANS { $$ = T_RADIANS; }
+;
+
+dot_item:
+  T_X { $$ = T_X; }               | T_Y { $$ = T_Y; }
+| T_Z { $$ = T_Z; }               | T_T { $$ = T_T; }
+| T_U { $$ = T_U; }               | T_V { $$ = T_V; }
+| T_RED { $$ = T_RED; }           | T_GREEN { $$ = T_GREEN; }
+| T_BLUE { $$ = T_BLUE; }         | T_FILTER { $$ = T_FILTER; }
+| T_TRANSMIT { $$ = T_TRANSMIT; } | T_GRAY { $$ = T_GRAY; }
+;
+
+/* ---- colours ---- */
+
+/* "colour" in front makes any value a colour; without it an expression
+   with no colour items keeps its own type (#declare A = 1; is a float). */
+colour_value:
+  T_COLOUR colour_spec
+    {
+      $$ = $2;
+      if ($$.dim != 5) {
+        zr_sdl_colour_mod none = {0, $$, @2};
+        TRY(zr__sdl_colour_apply(p, &$$, &none));
+      }
+    }
+| colour_spec
+;
+
+colour_spec:
+  expr
+| colour_item
+    {
+      $$ = zr__sdl_colour_expr(zr_colour5(0, 0, 0, 0, 0));
+      TRY(zr__sdl_colour_apply(p, &$$, &$1));
+    }
+| colour_spec colour_item
+    { $$ = $1; TRY(zr__sdl_colour_apply(p, &$$, &$2)); }
+;
+
+colour_item:
+  T_RGB expr      { $$.token = T_RGB; $$.value = $2; $$.loc = @2; }
+| T_RGBF expr     { $$.token = T_RGBF; $$.value = $2; $$.loc = @2; }
+| T_RGBT expr     { $$.token = T_RGBT; $$.value = $2; $$.loc = @2; }
+| T_RGBFT expr    { $$.token = T_RGBFT; $$.value = $2; $$.loc = @2; }
+| T_RED expr      { $$.token = T_RED; $$.value = $2; $$.loc = @2; }
+| T_GREEN expr    { $$.token = T_GREEN; $$.value = $2; $$.loc = @2; }
+| T_BLUE expr     { $$.token = T_BLUE; $$.value = $2; $$.loc = @2; }
+| T_FILTER expr   { $$.token = T_FILTER; $$.value = $2; $$.loc = @2; }
+| T_TRANSMIT expr { $$.token = T_TRANSMIT; $$.value = $2; $$.loc = @2; }
+;
+
+/* ---- objects ---- */
+
+object:
+  object_body '}'
+| union_body '}'
+;
+
+object_body:
+  object_head
+| object_body object_mod
+    { TRY(zr__sdl_object_mod(p, $1, &$2, &@2)); $$ = $1; }
+;
+
+object_head:
+  T_SPHERE '{' expr ',' expr
+    {
+      TRY($$ = zr__sdl_object_new(p, ZR_OBJ_SPHERE, &@1));
+      TRY(zr__sdl_want_vector(p, &$3, &@3, &$$->u.sphere.centre));
+      TRY(zr__sdl_want_float(p, &$5, &@5, &$$->u.sphere.radius));
+    }
+| T_BOX '{' expr ',' expr
+    {
+      TRY($$ = zr__sdl_object_new(p, ZR_OBJ_BOX, &@1));
+      TRY(zr__sdl_want_vector(p, &$3, &@3, &$$->u.box.corner1));
+      TRY(zr__sdl_want_vector(p, &$5, &@5, &$$->u.box.corner2));
+    }
+| T_PLANE '{' expr ',' expr
+    {
+      TRY($$ = zr__sdl_object_new(p, ZR_OBJ_PLANE, &@1));
+      TRY(zr__sdl_want_vector(p, &$3, &@3, &$$->u.plane.normal));
+      TRY(zr__sdl_want_float(p, &$5, &@5, &$$->u.plane.distance));
+      if (zr_v3_len($$->u.plane.normal) == 0) {
+        zr__sdl_error(p, ZR_ESCENE, &@3, "the plane's normal is zero");
+        YYABORT;
+      }
+      /* A x + B y + C z = D |<A,B,C>| (reference manual, "Plane"). */
+      $$->u.plane.normal = zr_v3_norm($$->u.plane.normal);
+    }
+| T_TRIANGLE '{' expr ',' expr ',' expr
+    {
+      TRY($$ = zr__sdl_object_new(p, ZR_OBJ_TRIANGLE, &@1));
+      TRY(zr__sdl_want_vector(p, &$3, &@3, &$$->u.triangle.p[0]));
+      TRY(zr__sdl_want_vector(p, &$5, &@5, &$$->u.triangle.p[1]));
+      TRY(zr__sdl_want_vector(p, &$7, &@7, &$$->u.triangle.p[2]));
+    }
+| T_CYLINDER '{' expr ',' expr ',' expr
+    {
+      TRY($$ = zr__sdl_object_new(p, ZR_OBJ_CYLINDER, &@1));
+      TRY(zr__sdl_want_vector(p, &$3, &@3, &$$->u.cylinder.base));
+      TRY(zr__sdl_want_vector(p, &$5, &@5, &$$->u.cylinder.cap));
+      TRY(zr__sdl_want_float(p, &$7, &@7, &$$->u.cylinder.radius));
+    }
+| T_CONE '{' expr ',' expr ',' expr ',' expr
+    {
+      TRY($$ = zr__sdl_object_new(p, ZR_OBJ_CONE, &@1));
+      TRY(zr__sdl_want_vector(p, &$3, &@3, &$$->u.cone.base));
+      TRY(zr__sdl_want_float(p, &$5, &@5, &$$->u.cone.base_radius));
+      TRY(zr__sdl_want_vector(p, &$7, &@7, &$$->u.cone.cap));
+      TRY(zr__sdl_want_float(p, &$9, &@9, &$$->u.cone.cap_radius));
+    }
+| T_DISC '{' expr ',' expr ',' expr
+    {
+      TRY($$ = zr__sdl_object_new(p, ZR_OBJ_DISC, &@1));
+      TRY(zr__sdl_want_vector(p, &$3, &@3, &$$->u.disc.centre));
+      TRY(zr__sdl_want_vector(p, &$5, &@5, &$$->u.disc.normal));
+      TRY(zr__sdl_want_float(p, &$7, &@7, &$$->u.disc.radius));
+      $$->u.disc.normal = zr_v3_norm($$->u.disc.normal);
+    }
+| T_DISC '{' expr ',' expr ',' expr ',' expr
+    {
+      TRY($$ = zr__sdl_object_new(p, ZR_OBJ_DISC, &@1));
+      TRY(zr__sdl_want_vector(p, &$3, &@3, &$$->u.disc.centre));
+      TRY(zr__sdl_want_vector(p, &$5, &@5, &$$->u.disc.normal));
+      TRY(zr__sdl_want_float(p, &$7, &@7, &$$->u.disc.radius));
+      TRY(zr__sdl_want_float(p, &$9, &@9, &$$->u.disc.hole_radius));
+      $$->u.disc.normal = zr_v3_norm($$->u.disc.normal);
+    }
+| T_OBJECT '{' T_OBJECT_ID
+    { TRY($$ = zr__sdl_object_copy(p, $3.ptr)); }
+;
+
+/* POV-Ray's CSG syntax puts the children first, then the modifiers,
+   which therefore reach every child. */
+union_head:
+  T_UNION '{'          { TRY($$ = zr__sdl_object_new(p, ZR_OBJ_UNION, &@1)); }
+| union_head object    { TRY(zr__sdl_union_add(p, $1, $2)); $$ = $1; }
+;
+
+union_body:
+  union_head
+| union_body object_mod
+    { TRY(zr__sdl_object_mod(p, $1, &$2, &@2)); $$ = $1; }
+;
+
+object_mod:
+  transform            { $$ = make_mod(ZR_SDL_MOD_TRANSFORM, $1); }
+| pigment              { $$ = make_mod(ZR_SDL_MOD_PIGMENT, $1); }
+| finish               { $$ = make_mod(ZR_SDL_MOD_FINISH, $1); }
+| texture              { $$ = make_mod(ZR_SDL_MOD_TEXTURE, $1); }
+| interior             { $$ = make_mod(ZR_SDL_MOD_INTERIOR, $1); }
+| T_NO_SHADOW          { $$ = make_mod(ZR_SDL_MOD_NO_SHADOW, NULL); }
+| T_INVERSE            { $$ = make_mod(ZR_SDL_MOD_INVERSE, NULL); }
+| T_OPEN               { $$ = make_mod(ZR_SDL_MOD_OPEN, NULL); }
+;
+
+transform:
+  T_SCALE expr         { TRY($$ = zr__sdl_transform(p, T_SCALE, &$2, &@2)); }
+| T_ROTATE expr        { TRY($$ = zr__sdl_transform(p, T_ROTATE, &$2, &@2)); }
+| T_TRANSLATE expr
+    { TRY($$ = zr__sdl_transform(p, T_TRANSLATE, &$2, &@2)); }
+| T_MATRIX '<' list '>'
+    { TRY($$ = zr__sdl_matrix(p, &$3, &@3)); }
+;
+
+/* ---- textures ---- */
+
+pigment:
+  pigment_body '}'
+;
+
+pigment_head:
+  T_PIGMENT '{'        { TRY($$ = zr__sdl_pigment_new(p, NULL)); }
+| T_PIGMENT '{' T_PIGMENT_ID
+    { TRY($$ = zr__sdl_pigment_new(p, $3.ptr)); }
+| T_PIGMENT '{' colour_value
+    {
+      TRY($$ = zr__sdl_pigment_new(p, NULL));
+      TRY(zr__sdl_want_colour(p, &$3, &@3, &$$->colour));
+    }
+;
+
+pigment_body:
+  pigment_head
+| pigment_body transform
+    { TRY(zr__sdl_pigment_transform(p, $1, $2)); $$ = $1; }
+;
+
+finish:
+  finish_body '}'
+;
+
+finish_head:
+  T_FINISH '{'         { TRY($$ = zr__sdl_finish_new(p, NULL)); }
+| T_FINISH '{' T_FINISH_ID
+    { TRY($$ = zr__sdl_finish_new(p, $3.ptr)); }
+;
+
+finish_body:
+  finish_head
+| finish_body T_AMBIENT colour_value
+    { TRY(zr__sdl_want_rgb(p, &$3, &@3, &$1->ambient)); $$ = $1; }
+| finish_body T_EMISSION colour_value
+    { TRY(zr__sdl_want_rgb(p, &$3, &@3, &$1->emission)); $$ = $1; }
+| finish_body T_DIFFUSE expr
+    { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->diffuse)); $$ = $1; }
+| finish_body T_BRILLIANCE expr
+    { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->brilliance)); $$ = $1; }
+| finish_body T_PHONG expr
+    { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->phong)); $$ = $1; }
+| finish_body T_PHONG_SIZE expr
+    { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->phong_size)); $$ = $1; }
+| finish_body T_SPECULAR expr
+    { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->specular)); $$ = $1; }
+| finish_body T_ROUGHNESS expr
+    { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->roughness)); $$ = $1; }
+| finish_body T_METALLIC
+    { $1->metallic = 1; $$ = $1; }
+| finish_body T_METALLIC expr
+    { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->metallic)); $$ = $1; }
+| finish_body T_CONSERVE_ENERGY
+    { $1->conserve_energy = true; $$ = $1; }
+| finish_body T_REFLECTION colour_value
+    {
+      TRY(zr__sdl_want_rgb(p, &$3, &@3, &$1->reflection));
+      $1->reflection_max = $1->reflection;
+      $$ = $1;
+    }
+| finish_body T_REFLECTION '{' reflection '}'
+    { zr__sdl_finish_reflection($1, &$4); $$ = $1; }
+;
+
+/* reflection { [min,] max [fresnel [on]] [falloff F] [metallic [M]] } */
+reflection:
+  colour_value
+    {
+      memset(&$$, 0, sizeof $$);
+      TRY(zr__sdl_want_rgb(p, &$1, &@1, &$$.max));
+      $$.min = $$.max;
+    }
+| colour_value ',' colour_value
+    {
+      memset(&$$, 0, sizeof $$);
+      TRY(zr__sdl_want_rgb(p, &$1, &@1, &$$.min));
+      TRY(zr__sdl_want_rgb(p, &$3, &@3, &$$.max));
+      $$.max_given = true;
+    }
+| reflection T_FALLOFF expr
+    {
+      $$ = $1;
+      TRY(zr__sdl_want_float(p, &$3, &@3, &$$.falloff));
+      $$.falloff_given = true;
+    }
+| reflection T_FRESNEL
+    { $$ = $1; $$.fresnel = true; $$.fresnel_given = true; }
+| reflection T_FRESNEL expr
+    {
+      double on;
+      $$ = $1;
+      TRY(zr__sdl_want_float(p, &$3, &@3, &on));
+      $$.fresnel = on != 0;
+      $$.fresnel_given = true;
+    }
+| reflection T_METALLIC
+    { $$ = $1; $$.metallic = true; $$.metallic_given = true; }
+| reflection T_METALLIC expr
+    {
+      double on;
+      $$ = $1;
+      TRY(zr__sdl_want_float(p, &$3, &@3, &on));
+      $$.metallic = on != 0;
+      $$.metallic_given = true;
+    }
+;
+
+texture:
+  texture_body '}'     { TRY(zr__sdl_texture_done(p, $1)); $$ = $1; }
+;
+
+texture_head:
+  T_TEXTURE '{'        { TRY($$ = zr__sdl_texture_new(p, NULL)); }
+| T_TEXTURE '{' T_TEXTURE_ID
+    { TRY($$ = zr__sdl_texture_new(p, $3.ptr)); }
+;
+
+texture_body:
+  texture_head
+| texture_body pigment { $1->pigment = $2; $$ = $1; }
+| texture_body finish  { $1->finish = $2; $$ = $1; }
+| texture_body transform
+    { TRY(zr__sdl_texture_transform(p, $1, $2)); $$ = $1; }
+;
+
+interior:
+  interior_body '}'
+;
+
+interior_head:
+  T_INTERIOR '{'       { TRY($$ = zr__sdl_interior_new(p, NULL)); }
+| T_INTERIOR '{' T_INTERIOR_ID
+    { TRY($$ = zr__sdl_interior_new(p, $3.ptr)); }
+;
+
+interior_body:
+  interior_head
+| interior_body T_IOR expr
+    { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->ior)); $$ = $1; }
+;
+
+/* ---- camera, lights, background, global settings ---- */
+
+camera:
+  camera_body '}'
+;
+
+camera_body:
+  T_CAMERA '{'         { zr__sdl_camera_begin(p, &@1); }
+| camera_body T_PERSPECTIVE
+| camera_body T_LOCATION expr
+    { TRY(zr__sdl_want_vector(p, &$3, &@3, &CAMERA->location)); }
+| camera_body T_DIRECTION expr
+    { TRY(zr__sdl_want_vector(p, &$3, &@3, &CAMERA->direction)); }
+| camera_body T_UP expr
+    { TRY(zr__sdl_want_vector(p, &$3, &@3, &CAMERA->up)); }
+| camera_body T_RIGHT expr
+    { TRY(zr__sdl_want_vector(p, &$3, &@3, &CAMERA->right)); }
+| camera_body T_SKY expr
+    { TRY(zr__sdl_want_vector(p, &$3, &@3, &CAMERA->sky)); }
+| camera_body T_ANGLE expr
+    {
+      double degrees;
+      TRY(zr__sdl_want_float(p, &$3, &@3, &degrees));
+      TRY(zr__sdl_camera_angle(p, CAMERA, degrees, &@3));
+    }
+| camera_body T_LOOK_AT expr
+    {
+      zr_vec3 target;
+      TRY(zr__sdl_want_vector(p, &$3, &@3, &target));
+      zr__sdl_camera_look_at(CAMERA, target);
+    }
+| camera_body transform
+    { zr__sdl_camera_transform(CAMERA, $2); }
+;
+
+light:
+  light_body '}'
+    {
+      if (zr__scene_add_light(p->scene, $1) != ZR_OK) {
+        zr__sdl_error(p, ZR_ENOMEM, &@1, "out of memory");
+        YYABORT;
+      }
+    }
+;
+
+light_body:
+  T_LIGHT_SOURCE '{' expr ',' colour_value
+    {
+      TRY($$ = zr__sdl_alloc(p, sizeof *$$));
+      TRY(zr__sdl_light(p, $$, &$3, &@1));
+      TRY(zr__sdl_want_rgb(p, &$5, &@5, &$$->colour));
+      TRY(zr__sdl_want_vector(p, &$3, &@3, &$$->location));
+    }
+| light_body T_SHADOWLESS  { $1->shadowless = true; $$ = $1; }
+| light_body transform
+    { $1->location = zr__xform_point($2->m, $1->location); $$ = $1; }
+;
+
+background:
+  T_BACKGROUND '{' colour_value '}'
+    { TRY(zr__sdl_want_colour(p, &$3, &@3, &SETTINGS->background)); }
+;
+
+global_settings:
+  global_body '}'
+;
+
+global_body:
+  T_GLOBAL_SETTINGS '{'
+| global_body T_MAX_TRACE_LEVEL expr
+    {
+      double level;
+      TRY(zr__sdl_want_float(p, &$3, &@3, &level));
+      if (level < 1 || level > 256) {
+        zr__sdl_error(p, ZR_ESCENE, &@3,
+                      "max_trace_level must be between 1 and 256");
+        YYABORT;
+      }
+      SETTINGS->max_trace_level = (int)level;
+    }
+| global_body T_ADC_BAILOUT expr
+    { TRY(zr__sdl_want_float(p, &$3, &@3, &SETTINGS->adc_bailout)); }
+| global_body T_ASSUMED_GAMMA expr
+    {
+      TRY(zr__sdl_want_float(p, &$3, &@3, &SETTINGS->assumed_gamma));
+      SETTINGS->assumed_gamma_given = true;
+    }
+| global_body T_AMBIENT_LIGHT colour_value
+    { TRY(zr__sdl_want_rgb(p, &$3, &@3, &SETTINGS->ambient_light)); }
+;
+
+%%
+
+/* How many expected tokens a message lists before it gives up. */
+#define MAX_EXPECTED 12
+
+static int yyreport_syntax_error(const yypcontext_t *yyctx,
+                                 zr_sdl_parser *p) {
+  yysymbol_kind_t expected[MAX_EXPECTED + 1];
+  int n = yypcontext_expected_tokens(yyctx, expected, MAX_EXPECTED + 1);
+  yysymbol_kind_t got = yypcontext_token(yyctx);
+  zr_strbuf sb;
+  zr__strbuf_init(&sb);
+  char buf[128];
+  if (got != YYSYMBOL_YYEMPTY) {
+    const char *name = zr__sdl_token_name(yysymbol_name(got), buf,
+                                          sizeof buf);
+    zr__strbuf_printf(&sb, "unexpected %s", name);
+    if (p->last_text && got != YYSYMBOL_T_STRING &&
+        (got == YYSYMBOL_T_DECL_NAME || (got >= YYSYMBOL_T_FLOAT_ID &&
+                                         got <= YYSYMBOL_T_OBJECT_ID)))
+      zr__strbuf_printf(&sb, " '%s'", p->last_text);
+  }
+  if (n > 0 && n <= MAX_EXPECTED) {
+    zr__strbuf_puts(&sb, got != YYSYMBOL_YYEMPTY ? ", expected " :
+                                                   "expected ");
+    for (int i = 0; i < n; i++) {
+      if (i > 0)
+        zr__strbuf_puts(&sb, i == n - 1 ? " or " : ", ");
+      zr__strbuf_puts(&sb, zr__sdl_token_name(yysymbol_name(expected[i]),
+                                              buf, sizeof buf));
+    }
+  }
+  zr__sdl_error(p, sb.failed ? ZR_ENOMEM : ZR_ESYNTAX,
+                yypcontext_location(yyctx), "%s", zr__strbuf_cstr(&sb));
+  zr__strbuf_free(&sb);
+  return 0;
+}
+
+int zr__pov_lex(ZR__POV_STYPE *lval, zr_sdl_loc *lloc, zr_sdl_parser *p) {
+  zr_sdl_lexval v;
+  int kind = zr__sdl_next(&v, lloc, p);
+  switch (kind) {
+  case T_NUMBER:
+    lval->num = v.num;
+    break;
+  case T_STRING:
+  case T_IDENTIFIER:
+  case T_UNSUPPORTED:
+    lval->str = v.str;
+    break;
+  case T_DECL_NAME:
+    lval->decl = v.decl;
+    break;
+  case T_FLOAT_ID:
+  case T_VECTOR_ID:
+  case T_COLOUR_ID:
+  case T_PIGMENT_ID:
+  case T_FINISH_ID:
+  case T_TEXTURE_ID:
+  case T_INTERIOR_ID:
+  case T_OBJECT_ID:
+    lval->value = v.value;
+    break;
+  default:
+    break;
+  }
+  return kind;
+}

@@ -1,0 +1,331 @@
+/*
+ * image.c - zr_image: creation, gamma, choosing a codec, atomic writes.
+ *
+ * Images are kept as linear floats.  Files with integer samples are
+ * decoded through their transfer function: a PNG's sRGB chunk, else its
+ * gAMA chunk, else sRGB (the PNG 1.2 specification, section 10.5, and the
+ * W3C's advice for untagged images); JPEG and PPM files are taken as sRGB.
+ * Writing follows POV-Ray 3.7's gamma model (scene description reference,
+ * "assumed_gamma"): scene colours live in a working space whose values,
+ * raised to assumed_gamma, are linear light; we undo that exponent and
+ * store the sRGB encoding, which is also what POV-Ray writes by default
+ * (its PNGs carry an sRGB chunk).  PFM stores linear values untouched.
+ *
+ * A file is read by its first bytes, not its name, so a misnamed file
+ * still loads; the name only makes the message for an unknown file more
+ * useful ("x.png: not a PNG file").
+ *
+ * Writing is atomic as far as POSIX rename() is: the codec writes a
+ * temporary file in the same directory and it replaces the target only
+ * once complete, so a failed or interrupted render never leaves half an
+ * image under the final name.  There is no fsync: the guarantee is
+ * against our own failures, not against a power cut.
+ */
+#include "image/image.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <unistd.h>
+
+#include "core/context.h"
+
+static zr_status check_size(int width, int height) {
+  if (width <= 0 || height <= 0)
+    return ZR_EINVAL;
+  if (width > ZR_IMAGE_MAX_SIDE || height > ZR_IMAGE_MAX_SIDE ||
+      (size_t)width * (size_t)height > ZR_IMAGE_MAX_PIXELS)
+    return ZR_ELIMIT;
+  return ZR_OK;
+}
+
+ZR_API zr_status zr_image_new(int width, int height, zr_image **out) {
+  zr_status s = check_size(width, height);
+  if (s != ZR_OK)
+    return s;
+  zr_image *image = malloc(sizeof *image);
+  if (!image)
+    return ZR_ENOMEM;
+  image->pixels = calloc((size_t)width * (size_t)height * 3, sizeof(float));
+  if (!image->pixels) {
+    free(image);
+    return ZR_ENOMEM;
+  }
+  image->width = width;
+  image->height = height;
+  *out = image;
+  return ZR_OK;
+}
+
+zr_status zr__image_new_named(zr_context *ctx, const char *name, int width,
+                              int height, zr_image **out) {
+  zr_status s = zr_image_new(width, height, out);
+  switch (s) {
+  case ZR_OK:
+    return ZR_OK;
+  case ZR_EINVAL:
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
+                    "%s: invalid image size %dx%d", name, width, height);
+  case ZR_ELIMIT:
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ELIMIT, NULL,
+                    "%s: image of %dx%d pixels is larger than the limit "
+                    "(%d per side, %zu pixels)",
+                    name, width, height, ZR_IMAGE_MAX_SIDE,
+                    ZR_IMAGE_MAX_PIXELS);
+  default:
+    return zr__diag(ctx, ZR_DIAG_ERROR, s, NULL, "%s: %s", name,
+                    zr_status_str(s));
+  }
+}
+
+ZR_API void zr_image_free(zr_image *image) {
+  if (!image)
+    return;
+  free(image->pixels);
+  free(image);
+}
+
+ZR_API int zr_image_width(const zr_image *image) { return image->width; }
+
+ZR_API int zr_image_height(const zr_image *image) { return image->height; }
+
+ZR_API float *zr_image_pixels(zr_image *image) { return image->pixels; }
+
+ZR_API const float *zr_image_pixels_const(const zr_image *image) {
+  return image->pixels;
+}
+
+/* ---- transfer functions ---- */
+
+double zr__srgb_encode(double linear) {
+  if (linear <= 0.0031308)
+    return 12.92 * linear;
+  return 1.055 * pow(linear, 1.0 / 2.4) - 0.055;
+}
+
+double zr__srgb_decode(double encoded) {
+  if (encoded <= 0.04045)
+    return encoded / 12.92;
+  return pow((encoded + 0.055) / 1.055, 2.4);
+}
+
+float *zr__decode_table(unsigned maxval, zr_transfer transfer,
+                        double exponent) {
+  float *table = malloc(((size_t)maxval + 1) * sizeof *table);
+  if (!table)
+    return NULL;
+  for (unsigned i = 0; i <= maxval; i++) {
+    double e = (double)i / maxval;
+    table[i] = (float)(transfer == ZR_TRANSFER_SRGB ? zr__srgb_decode(e)
+                                                     : pow(e, exponent));
+  }
+  return table;
+}
+
+unsigned zr__encode_sample(float value, double assumed_gamma,
+                           unsigned maxval) {
+  /* The negated test also sends NaN to black. */
+  double v = !(value > 0.0f) ? 0.0 : value >= 1.0f ? 1.0 : value;
+  if (assumed_gamma != 1.0)
+    v = pow(v, assumed_gamma);
+  return (unsigned)lround(zr__srgb_encode(v) * maxval);
+}
+
+/* ---- choosing a codec ---- */
+
+static const char *extension(const char *path) {
+  const char *slash = strrchr(path, '/');
+  const char *dot = strrchr(path, '.');
+  if (!dot || (slash && dot < slash))
+    return "";
+  return dot + 1;
+}
+
+ZR_API zr_image_format zr_image_format_from_name(const char *path) {
+  if (!path)
+    return ZR_FORMAT_AUTO;
+  const char *ext = extension(path);
+  if (!strcasecmp(ext, "png"))
+    return ZR_FORMAT_PNG8;
+  if (!strcasecmp(ext, "ppm"))
+    return ZR_FORMAT_PPM;
+  if (!strcasecmp(ext, "pfm"))
+    return ZR_FORMAT_PFM;
+  if (!strcasecmp(ext, "jpg") || !strcasecmp(ext, "jpeg"))
+    return ZR_FORMAT_JPEG;
+  return ZR_FORMAT_AUTO;
+}
+
+static zr_status not_an_image(zr_context *ctx, const char *path) {
+  switch (zr_image_format_from_name(path)) {
+  case ZR_FORMAT_PNG8:
+  case ZR_FORMAT_PNG16:
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
+                    "%s: not a PNG file", path);
+  case ZR_FORMAT_JPEG:
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
+                    "%s: not a JPEG file", path);
+  case ZR_FORMAT_PPM:
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
+                    "%s: not a PPM file", path);
+  case ZR_FORMAT_PFM:
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
+                    "%s: not a PFM file", path);
+  case ZR_FORMAT_AUTO:
+    break;
+  }
+  return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
+                  "%s: not a PNG, JPEG, PPM or PFM file", path);
+}
+
+static zr_status decode(zr_context *ctx, const char *path,
+                        const unsigned char *b, size_t n, zr_image **out) {
+  static const unsigned char png_sig[8] = {0x89, 'P', 'N', 'G',
+                                           '\r', '\n', 0x1a, '\n'};
+  if (n >= 8 && !memcmp(b, png_sig, 8))
+    return zr__png_decode(ctx, path, b, n, out);
+  if (n >= 3 && b[0] == 0xff && b[1] == 0xd8 && b[2] == 0xff)
+    return zr__jpeg_decode(ctx, path, b, n, out);
+  if (n >= 2 && b[0] == 'P' && (b[1] == 'F' || b[1] == 'f'))
+    return zr__pfm_decode(ctx, path, b, n, out);
+  if (n >= 2 && b[0] == 'P' && b[1] >= '1' && b[1] <= '7')
+    return zr__pnm_decode(ctx, path, b, n, out);
+  return not_an_image(ctx, path);
+}
+
+ZR_API zr_status zr_image_read(zr_context *ctx, const char *path,
+                               zr_image **out) {
+  if (!path || !out)
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, NULL,
+                    "zr_image_read: no path or no output");
+  *out = NULL;
+  char *bytes = NULL;
+  size_t size = 0;
+  zr_status s = zr__context_read(ctx, path, &bytes, &size);
+  if (s == ZR_ENOTFOUND)
+    return zr__diag(ctx, ZR_DIAG_ERROR, s, NULL, "%s: file not found",
+                    path);
+  if (s != ZR_OK)
+    return zr__diag(ctx, ZR_DIAG_ERROR, s, NULL, "%s: cannot read: %s",
+                    path, zr_status_str(s));
+  s = decode(ctx, path, (const unsigned char *)bytes, size, out);
+  free(bytes);
+  if (s != ZR_OK && *out) {
+    zr_image_free(*out);
+    *out = NULL;
+  }
+  return s;
+}
+
+/* ---- atomic writing ---- */
+
+/*
+ * Opens a new file beside path, named path.PID.N.tmp.  O_EXCL makes two
+ * threads or processes writing the same target pick different names, and
+ * open()'s mode lets the umask decide the permissions, as for any file.
+ */
+static FILE *open_temporary(const char *path, char *tmp, size_t tmp_size) {
+  for (int attempt = 0; attempt < 100; attempt++) {
+    int n = snprintf(tmp, tmp_size, "%s.%ld.%d.tmp", path, (long)getpid(),
+                     attempt);
+    if (n < 0 || (size_t)n >= tmp_size) {
+      errno = ENAMETOOLONG;
+      return NULL;
+    }
+    int fd = open(tmp, O_WRONLY | O_CREAT | O_EXCL, 0666);
+    if (fd < 0) {
+      if (errno == EEXIST)
+        continue;
+      return NULL;
+    }
+    FILE *f = fdopen(fd, "wb");
+    if (!f) {
+      int e = errno;
+      close(fd);
+      unlink(tmp);
+      errno = e;
+    }
+    return f;
+  }
+  return NULL;
+}
+
+static zr_status encode(zr_context *ctx, const zr_image *image,
+                        const char *path, zr_image_format format,
+                        double assumed_gamma, FILE *f) {
+  switch (format) {
+  case ZR_FORMAT_PNG8:
+    return zr__png_encode(ctx, path, image, 8, assumed_gamma, f);
+  case ZR_FORMAT_PNG16:
+    return zr__png_encode(ctx, path, image, 16, assumed_gamma, f);
+  case ZR_FORMAT_PPM:
+    return zr__ppm_encode(ctx, path, image, assumed_gamma, f);
+  case ZR_FORMAT_PFM:
+    return zr__pfm_encode(ctx, path, image, f);
+  case ZR_FORMAT_JPEG:
+  case ZR_FORMAT_AUTO:
+    break;
+  }
+  return ZR_EINVAL; /* excluded by zr_image_write */
+}
+
+ZR_API zr_status zr_image_write(zr_context *ctx, const zr_image *image,
+                                const char *path, zr_image_format format,
+                                double assumed_gamma) {
+  if (!image || !path)
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, NULL,
+                    "zr_image_write: no image or no path");
+  if (!(assumed_gamma > 0.0) || !isfinite(assumed_gamma))
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, NULL,
+                    "%s: assumed_gamma must be positive, not %g", path,
+                    assumed_gamma);
+  if (format == ZR_FORMAT_AUTO) {
+    format = zr_image_format_from_name(path);
+    if (format == ZR_FORMAT_AUTO)
+      return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, NULL,
+                      "%s: cannot tell the image format from the name "
+                      "(use .png, .ppm or .pfm)",
+                      path);
+  }
+  if (format == ZR_FORMAT_JPEG)
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EUNSUPPORTED, NULL,
+                    "%s: writing JPEG is not supported (use .png, .ppm or "
+                    ".pfm)",
+                    path);
+  if (format < ZR_FORMAT_AUTO || format > ZR_FORMAT_JPEG)
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, NULL,
+                    "%s: unknown image format %d", path, (int)format);
+
+  size_t tmp_size = strlen(path) + 64;
+  char *tmp = malloc(tmp_size);
+  if (!tmp)
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s", path,
+                    zr_status_str(ZR_ENOMEM));
+  FILE *f = open_temporary(path, tmp, tmp_size);
+  if (!f) {
+    zr_status s = zr__diag(ctx, ZR_DIAG_ERROR, ZR_EIO, NULL,
+                           "%s: cannot create %s: %s", path, tmp,
+                           strerror(errno));
+    free(tmp);
+    return s;
+  }
+  zr_status s = encode(ctx, image, path, format, assumed_gamma, f);
+  if (s == ZR_OK && (fflush(f) != 0 || ferror(f)))
+    s = zr__diag(ctx, ZR_DIAG_ERROR, ZR_EIO, NULL, "%s: write failed: %s",
+                 path, strerror(errno));
+  if (fclose(f) != 0 && s == ZR_OK)
+    s = zr__diag(ctx, ZR_DIAG_ERROR, ZR_EIO, NULL, "%s: write failed: %s",
+                 path, strerror(errno));
+  if (s == ZR_OK && rename(tmp, path) != 0)
+    s = zr__diag(ctx, ZR_DIAG_ERROR, ZR_EIO, NULL,
+                 "%s: cannot rename %s to it: %s", path, tmp,
+                 strerror(errno));
+  if (s != ZR_OK)
+    unlink(tmp);
+  free(tmp);
+  return s;
+}

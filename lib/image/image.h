@@ -1,0 +1,80 @@
+/*
+ * image.h - the private side of zr_image: its layout, the transfer
+ * functions shared by every codec and the codec entry points.
+ *
+ * A zr_image holds linear floats, three per pixel, rows top to bottom.
+ * Codecs decode from a byte array (so files served by the MPI reader work
+ * the same as local ones) and encode to an open stdio stream that
+ * image.c has created beside the final file.
+ */
+#ifndef ZR_IMAGE_IMAGE_H
+#define ZR_IMAGE_IMAGE_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+#include "zrcube.h"
+
+struct zr_image {
+  int width;
+  int height;
+  float *pixels; /* width * height * 3 linear floats */
+};
+
+/* Limits that keep a hostile header from asking for gigabytes. */
+#define ZR_IMAGE_MAX_SIDE 65536
+#define ZR_IMAGE_MAX_PIXELS ((size_t)1 << 27)
+
+/* How stored integer samples map to linear light. */
+typedef enum zr_transfer {
+  ZR_TRANSFER_SRGB,  /* IEC 61966-2-1 piecewise curve */
+  ZR_TRANSFER_POWER  /* linear = stored ^ exponent */
+} zr_transfer;
+
+/* The sRGB curve, both directions, on [0, 1]. */
+double zr__srgb_encode(double linear);
+double zr__srgb_decode(double encoded);
+
+/*
+ * Fills table[0 .. maxval] with the linear value of each stored code.
+ * exponent is used only by ZR_TRANSFER_POWER.  Returns NULL when out of
+ * memory; the caller frees the table.
+ */
+float *zr__decode_table(unsigned maxval, zr_transfer transfer,
+                        double exponent);
+
+/*
+ * The stored code of a working-space value: clamped to [0, 1], raised to
+ * assumed_gamma to reach linear light, sRGB-encoded and rounded to
+ * 0 .. maxval.
+ */
+unsigned zr__encode_sample(float value, double assumed_gamma,
+                           unsigned maxval);
+
+/* Codecs.  name is the file name that messages quote. */
+zr_status zr__png_decode(zr_context *ctx, const char *name,
+                         const unsigned char *bytes, size_t size,
+                         zr_image **out);
+zr_status zr__png_encode(zr_context *ctx, const char *name,
+                         const zr_image *image, int bits,
+                         double assumed_gamma, FILE *stream);
+zr_status zr__jpeg_decode(zr_context *ctx, const char *name,
+                          const unsigned char *bytes, size_t size,
+                          zr_image **out);
+zr_status zr__pnm_decode(zr_context *ctx, const char *name,
+                         const unsigned char *bytes, size_t size,
+                         zr_image **out);
+zr_status zr__pfm_decode(zr_context *ctx, const char *name,
+                         const unsigned char *bytes, size_t size,
+                         zr_image **out);
+zr_status zr__ppm_encode(zr_context *ctx, const char *name,
+                         const zr_image *image, double assumed_gamma,
+                         FILE *stream);
+zr_status zr__pfm_encode(zr_context *ctx, const char *name,
+                         const zr_image *image, FILE *stream);
+
+/* zr_image_new with a message through ctx on failure. */
+zr_status zr__image_new_named(zr_context *ctx, const char *name, int width,
+                              int height, zr_image **out);
+
+#endif /* ZR_IMAGE_IMAGE_H */

@@ -1,0 +1,146 @@
+/*
+ * jpeg.c - JPEG reading through libjpeg (the IJG API, libjpeg-turbo in
+ * practice), from memory.
+ *
+ * libjpeg's default error handler prints and calls exit(), which a
+ * library must never do.  We replace error_exit with a longjmp back to
+ * the decoder (the scheme of the IJG's example.c) and emit_message with
+ * one that passes the first warning of a file on through the context
+ * (corrupt data decodes to a damaged picture).  One warning is made an
+ * error: libjpeg treats a file that ends early as a warning and pads the
+ * picture with grey, which would hand the renderer a silently damaged
+ * texture, so "premature end of JPEG file" becomes "truncated JPEG
+ * file".
+ *
+ * Greyscale files are widened to RGB here rather than by libjpeg, because
+ * only newer libjpeg versions can convert grey to RGB.  CMYK/YCCK files
+ * are rejected by name.  JPEG pixels are taken as sRGB, as JFIF files are
+ * in practice.
+ */
+#include <setjmp.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <jerror.h>
+#include <jpeglib.h>
+
+#include "core/context.h"
+#include "image/image.h"
+
+/* The error manager extended with our jump buffer and message. */
+typedef struct jpeg_job {
+  struct jpeg_error_mgr mgr; /* first, so the two pointers coincide */
+  jmp_buf jump;
+  int truncated;
+  int warned;
+  char message[JMSG_LENGTH_MAX];
+  struct jpeg_decompress_struct cinfo;
+  int cinfo_ready;
+  unsigned char *row;
+  float *table;
+  zr_image *image;
+  zr_context *ctx;
+  const char *name;
+} jpeg_job;
+
+static void on_error_exit(j_common_ptr cinfo) {
+  jpeg_job *job = (jpeg_job *)cinfo->err;
+  cinfo->err->format_message(cinfo, job->message);
+  longjmp(job->jump, 1);
+}
+
+static void on_emit_message(j_common_ptr cinfo, int level) {
+  jpeg_job *job = (jpeg_job *)cinfo->err;
+  if (level >= 0)
+    return; /* trace messages */
+  if (cinfo->err->msg_code == JWRN_JPEG_EOF) {
+    job->truncated = 1;
+    longjmp(job->jump, 1);
+  }
+  /* Damaged data decodes to a damaged picture: say so once per file. */
+  if (!job->warned) {
+    char text[JMSG_LENGTH_MAX];
+    cinfo->err->format_message(cinfo, text);
+    zr__diag(job->ctx, ZR_DIAG_WARNING, ZR_EFORMAT, NULL, "%s: %s",
+             job->name, text);
+    job->warned = 1;
+  }
+}
+
+/* Decodes after the jump buffer is set; see zr__jpeg_decode. */
+static zr_status decode_rows(jpeg_job *job, const unsigned char *bytes,
+                             size_t size) {
+  struct jpeg_decompress_struct *ci = &job->cinfo;
+  if (setjmp(job->jump))
+    return ZR_EFORMAT;
+  jpeg_create_decompress(ci);
+  job->cinfo_ready = 1;
+  jpeg_mem_src(ci, bytes, (unsigned long)size);
+  jpeg_read_header(ci, TRUE);
+  if (ci->jpeg_color_space == JCS_CMYK || ci->jpeg_color_space == JCS_YCCK)
+    return zr__diag(job->ctx, ZR_DIAG_ERROR, ZR_EUNSUPPORTED, NULL,
+                    "%s: CMYK JPEG files are not supported", job->name);
+  if (ci->num_components != 1)
+    ci->out_color_space = JCS_RGB;
+  jpeg_start_decompress(ci);
+  int comps = ci->output_components;
+  if (comps != 1 && comps != 3)
+    return zr__diag(job->ctx, ZR_DIAG_ERROR, ZR_EUNSUPPORTED, NULL,
+                    "%s: JPEG with %d components is not supported",
+                    job->name, comps);
+  zr_status s = zr__image_new_named(job->ctx, job->name,
+                                    (int)ci->output_width,
+                                    (int)ci->output_height, &job->image);
+  if (s != ZR_OK)
+    return s;
+  job->table = zr__decode_table(255, ZR_TRANSFER_SRGB, 0.0);
+  job->row = malloc((size_t)ci->output_width * (size_t)comps);
+  if (!job->table || !job->row)
+    return zr__diag(job->ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s",
+                    job->name, zr_status_str(ZR_ENOMEM));
+  while (ci->output_scanline < ci->output_height) {
+    size_t y = ci->output_scanline;
+    JSAMPROW rows[1] = {job->row};
+    if (jpeg_read_scanlines(ci, rows, 1) != 1)
+      break;
+    float *dst = job->image->pixels + y * ci->output_width * 3;
+    for (size_t x = 0; x < ci->output_width; x++)
+      for (int c = 0; c < 3; c++)
+        dst[3 * x + c] =
+            job->table[job->row[x * comps + (comps == 3 ? c : 0)]];
+  }
+  jpeg_finish_decompress(ci);
+  return ZR_OK;
+}
+
+zr_status zr__jpeg_decode(zr_context *ctx, const char *name,
+                          const unsigned char *bytes, size_t size,
+                          zr_image **out) {
+  jpeg_job *job = calloc(1, sizeof *job);
+  if (!job)
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s", name,
+                    zr_status_str(ZR_ENOMEM));
+  job->ctx = ctx;
+  job->name = name;
+  job->cinfo.err = jpeg_std_error(&job->mgr);
+  job->mgr.error_exit = on_error_exit;
+  job->mgr.emit_message = on_emit_message;
+  zr_status s = decode_rows(job, bytes, size);
+  if (s != ZR_OK && job->truncated)
+    s = zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
+                 "%s: truncated JPEG file", name);
+  else if (s != ZR_OK && job->message[0])
+    s = zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
+                 "%s: invalid JPEG file: %s", name, job->message);
+  if (job->cinfo_ready)
+    jpeg_destroy_decompress(&job->cinfo);
+  free(job->row);
+  free(job->table);
+  if (s == ZR_OK)
+    *out = job->image;
+  else
+    zr_image_free(job->image);
+  free(job);
+  return s;
+}

@@ -1,0 +1,246 @@
+/*
+ * png.c - PNG reading and writing through libpng 1.6.
+ *
+ * Reading accepts every PNG colour type and depth (PNG specification,
+ * section 11.2.2): palettes and grey are expanded to RGB, 1/2/4-bit
+ * samples widened to 8, 16-bit samples kept at full precision.  Alpha,
+ * including a palette's tRNS transparency, is dropped, not composited:
+ * a zr_image has no alpha and the colour of a transparent pixel is still
+ * the colour its author stored; compositing over an arbitrary background
+ * would invent data.  Samples are decoded to linear light by the sRGB
+ * chunk if present, else the gAMA chunk, else the sRGB curve (section
+ * 10.5; iCCP and cHRM are ignored: everything is taken as sRGB
+ * primaries).
+ *
+ * Writing produces 8 or 16-bit RGB with sRGB, gAMA and cHRM chunks, as
+ * POV-Ray 3.7 does.
+ *
+ * libpng reports errors by longjmp.  Everything that must be released
+ * after a jump lives in a struct owned by the caller of the function that
+ * calls setjmp, so no automatic variable of that function is relied upon
+ * after the jump (C11 7.13.2.1).
+ */
+#include <png.h>
+#include <setjmp.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/context.h"
+#include "image/image.h"
+
+/* Where libpng's messages and our memory cursor meet. */
+typedef struct png_job {
+  zr_context *ctx;
+  const char *name;
+  const unsigned char *bytes;
+  size_t size;
+  size_t pos;
+  int truncated;
+  char message[256];
+  png_structp png;
+  png_infop info;
+  unsigned char *rows;
+  png_bytep *row_ptrs;
+  float *table;
+  zr_image *image;
+} png_job;
+
+static void on_error(png_structp png, png_const_charp msg) {
+  png_job *job = png_get_error_ptr(png);
+  snprintf(job->message, sizeof job->message, "%s", msg);
+  png_longjmp(png, 1);
+}
+
+static void on_warning(png_structp png, png_const_charp msg) {
+  /* Benign issues (an odd ancillary chunk) do not stop a render. */
+  (void)png;
+  (void)msg;
+}
+
+static void read_memory(png_structp png, png_bytep data, size_t length) {
+  png_job *job = png_get_io_ptr(png);
+  if (length > job->size - job->pos) {
+    job->truncated = 1;
+    png_error(png, "truncated");
+  }
+  memcpy(data, job->bytes + job->pos, length);
+  job->pos += length;
+}
+
+/* Sets libpng's transformations so that every row is RGB, 8 or 16 bit. */
+static void request_rgb(png_structp png, png_infop info) {
+  int color_type = png_get_color_type(png, info);
+  int depth = png_get_bit_depth(png, info);
+  if (color_type == PNG_COLOR_TYPE_PALETTE)
+    png_set_palette_to_rgb(png);
+  if (color_type == PNG_COLOR_TYPE_GRAY && depth < 8)
+    png_set_expand_gray_1_2_4_to_8(png);
+  if (color_type & PNG_COLOR_MASK_ALPHA)
+    png_set_strip_alpha(png);
+  if (color_type == PNG_COLOR_TYPE_GRAY ||
+      color_type == PNG_COLOR_TYPE_GRAY_ALPHA)
+    png_set_gray_to_rgb(png);
+  png_set_interlace_handling(png);
+}
+
+static float *transfer_table(png_structp png, png_infop info, int depth) {
+  unsigned maxval = depth == 16 ? 65535u : 255u;
+  double gamma = 0.0;
+  if (!png_get_valid(png, info, PNG_INFO_sRGB) &&
+      png_get_valid(png, info, PNG_INFO_gAMA) &&
+      png_get_gAMA(png, info, &gamma) && gamma > 0.0)
+    return zr__decode_table(maxval, ZR_TRANSFER_POWER, 1.0 / gamma);
+  return zr__decode_table(maxval, ZR_TRANSFER_SRGB, 0.0);
+}
+
+/* Runs libpng; returns ZR_OK or leaves a message in job and says so. */
+static zr_status decode_rows(png_job *job) {
+  if (setjmp(png_jmpbuf(job->png)))
+    return ZR_EFORMAT;
+  png_set_read_fn(job->png, job, read_memory);
+  png_set_user_limits(job->png, ZR_IMAGE_MAX_SIDE, ZR_IMAGE_MAX_SIDE);
+  png_read_info(job->png, job->info);
+  request_rgb(job->png, job->info);
+  png_read_update_info(job->png, job->info);
+  int width = (int)png_get_image_width(job->png, job->info);
+  int height = (int)png_get_image_height(job->png, job->info);
+  int depth = png_get_bit_depth(job->png, job->info);
+  size_t rowbytes = png_get_rowbytes(job->png, job->info);
+  if (png_get_channels(job->png, job->info) != 3 ||
+      rowbytes != (size_t)width * (depth == 16 ? 6 : 3)) {
+    snprintf(job->message, sizeof job->message,
+             "unexpected row layout after conversion");
+    return ZR_EFORMAT;
+  }
+  zr_status s = zr__image_new_named(job->ctx, job->name, width, height,
+                                    &job->image);
+  if (s != ZR_OK)
+    return s;
+  job->table = transfer_table(job->png, job->info, depth);
+  job->rows = malloc(rowbytes * (size_t)height);
+  job->row_ptrs = malloc((size_t)height * sizeof *job->row_ptrs);
+  if (!job->table || !job->rows || !job->row_ptrs)
+    return zr__diag(job->ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s",
+                    job->name, zr_status_str(ZR_ENOMEM));
+  for (int y = 0; y < height; y++)
+    job->row_ptrs[y] = job->rows + (size_t)y * rowbytes;
+  png_read_image(job->png, job->row_ptrs);
+  png_read_end(job->png, NULL);
+
+  size_t n = (size_t)width * (size_t)height * 3;
+  float *px = job->image->pixels;
+  if (depth == 16) {
+    for (size_t i = 0; i < n; i++)
+      px[i] = job->table[(job->rows[2 * i] << 8) | job->rows[2 * i + 1]];
+  } else {
+    for (size_t i = 0; i < n; i++)
+      px[i] = job->table[job->rows[i]];
+  }
+  return ZR_OK;
+}
+
+zr_status zr__png_decode(zr_context *ctx, const char *name,
+                         const unsigned char *bytes, size_t size,
+                         zr_image **out) {
+  png_job job;
+  memset(&job, 0, sizeof job);
+  job.ctx = ctx;
+  job.name = name;
+  job.bytes = bytes;
+  job.size = size;
+  job.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &job, on_error,
+                                   on_warning);
+  if (job.png)
+    job.info = png_create_info_struct(job.png);
+  zr_status s;
+  if (!job.png || !job.info)
+    s = zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s", name,
+                 zr_status_str(ZR_ENOMEM));
+  else
+    s = decode_rows(&job);
+  /* A message in job means libpng failed; other failures were reported. */
+  if (s != ZR_OK && job.truncated)
+    s = zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
+                 "%s: truncated PNG file", name);
+  else if (s != ZR_OK && job.message[0])
+    s = zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
+                 "%s: invalid PNG file: %s", name, job.message);
+  png_destroy_read_struct(job.png ? &job.png : NULL,
+                          job.info ? &job.info : NULL, NULL);
+  free(job.rows);
+  free(job.row_ptrs);
+  free(job.table);
+  if (s == ZR_OK)
+    *out = job.image;
+  else
+    zr_image_free(job.image);
+  return s;
+}
+
+/* ---- writing ---- */
+
+static zr_status encode_rows(png_job *job, const zr_image *image, int bits,
+                             double assumed_gamma, FILE *stream) {
+  if (setjmp(png_jmpbuf(job->png)))
+    return ZR_EIO;
+  png_init_io(job->png, stream);
+  png_set_IHDR(job->png, job->info, (png_uint_32)image->width,
+               (png_uint_32)image->height, bits, PNG_COLOR_TYPE_RGB,
+               PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
+               PNG_FILTER_TYPE_DEFAULT);
+  png_set_sRGB_gAMA_and_cHRM(job->png, job->info,
+                             PNG_sRGB_INTENT_PERCEPTUAL);
+  png_write_info(job->png, job->info);
+  size_t bytes_per_sample = bits == 16 ? 2 : 1;
+  size_t rowbytes = (size_t)image->width * 3 * bytes_per_sample;
+  job->rows = malloc(rowbytes);
+  if (!job->rows) {
+    snprintf(job->message, sizeof job->message, "%s",
+             zr_status_str(ZR_ENOMEM));
+    return ZR_ENOMEM;
+  }
+  unsigned maxval = bits == 16 ? 65535u : 255u;
+  for (int y = 0; y < image->height; y++) {
+    const float *src = image->pixels + (size_t)y * image->width * 3;
+    for (size_t i = 0; i < (size_t)image->width * 3; i++) {
+      unsigned code = zr__encode_sample(src[i], assumed_gamma, maxval);
+      if (bits == 16) {
+        job->rows[2 * i] = (unsigned char)(code >> 8);
+        job->rows[2 * i + 1] = (unsigned char)(code & 0xff);
+      } else {
+        job->rows[i] = (unsigned char)code;
+      }
+    }
+    png_write_row(job->png, job->rows);
+  }
+  png_write_end(job->png, NULL);
+  return ZR_OK;
+}
+
+zr_status zr__png_encode(zr_context *ctx, const char *name,
+                         const zr_image *image, int bits,
+                         double assumed_gamma, FILE *stream) {
+  png_job job;
+  memset(&job, 0, sizeof job);
+  job.ctx = ctx;
+  job.name = name;
+  job.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &job, on_error,
+                                    on_warning);
+  if (job.png)
+    job.info = png_create_info_struct(job.png);
+  zr_status s;
+  if (!job.png || !job.info) {
+    s = ZR_ENOMEM;
+    snprintf(job.message, sizeof job.message, "%s",
+             zr_status_str(ZR_ENOMEM));
+  } else {
+    s = encode_rows(&job, image, bits, assumed_gamma, stream);
+  }
+  if (s != ZR_OK)
+    s = zr__diag(ctx, ZR_DIAG_ERROR, s, NULL, "%s: cannot write PNG: %s",
+                 name, job.message);
+  png_destroy_write_struct(job.png ? &job.png : NULL,
+                           job.info ? &job.info : NULL);
+  free(job.rows);
+  return s;
+}

@@ -1,0 +1,64 @@
+/*
+ * bundle.h - the scene files rank 0 read, as one broadcastable blob.
+ *
+ * Rank 0 parses with a reader that reads from disk and records every file
+ * it serves; the recording is serialised, broadcast, and every other rank
+ * parses with a reader that serves the same bytes from memory.  So only
+ * rank 0 touches the file system, and every rank sees exactly the files
+ * rank 0 saw even when the other ranks run on hosts without them.
+ */
+#ifndef ZR_PAR_BUNDLE_H
+#define ZR_PAR_BUNDLE_H
+
+#include <stddef.h>
+
+#include "zrcube.h"
+
+typedef struct zr_bundle_file {
+  char *path;  /* exactly as the parser asked for it */
+  char *bytes; /* contents, not NUL-terminated */
+  size_t size;
+} zr_bundle_file;
+
+typedef struct zr_bundle {
+  zr_bundle_file *files;
+  size_t count;
+  size_t cap;
+} zr_bundle;
+
+void zr__bundle_init(zr_bundle *bundle);
+void zr__bundle_free(zr_bundle *bundle);
+
+/* Appends a copy of path and bytes. */
+zr_status zr__bundle_add(zr_bundle *bundle, const char *path,
+                         const char *bytes, size_t size);
+
+/* The file recorded under exactly this path, or NULL. */
+const zr_bundle_file *zr__bundle_find(const zr_bundle *bundle,
+                                      const char *path);
+
+/*
+ * The wire format: "ZRB1", a 64-bit little-endian file count, then per
+ * file a 64-bit path length, the path, a 64-bit size and the bytes.
+ * *out is malloc'ed.
+ */
+zr_status zr__bundle_serialise(const zr_bundle *bundle, char **out,
+                               size_t *size);
+
+/* Appends the files of a serialised bundle; ZR_EFORMAT when malformed. */
+zr_status zr__bundle_deserialise(zr_bundle *bundle, const char *bytes,
+                                 size_t size);
+
+/*
+ * A zr_read_fn (user: the zr_bundle) that reads from disk and records
+ * what it read.  A path read twice is served from the recording, so the
+ * parse sees one version of each file.
+ */
+zr_status zr__bundle_record_reader(const char *path, char **bytes,
+                                   size_t *size, void *user);
+
+/* A zr_read_fn (user: the zr_bundle) serving recorded files only. */
+zr_status zr__bundle_serve_reader(const char *path, char **bytes,
+                                  size_t *size, void *user);
+
+#endif /* ZR_PAR_BUNDLE_H */

@@ -1,0 +1,46 @@
+/*
+ * pool.h - POSIX threads rendering one rank's rows.
+ *
+ * Threads pull rows from a shared counter, so a slow row (a glass sphere)
+ * does not hold up a thread while another idles; each row is rendered by
+ * one zr_render_pixels() call, whose result depends only on the pixel, so
+ * the image does not depend on which thread took which row.
+ */
+#ifndef ZR_PAR_POOL_H
+#define ZR_PAR_POOL_H
+
+#include <stddef.h>
+
+#include "zrcube.h"
+
+/*
+ * Called after each finished row with the rows done so far (offset by
+ * progress_base) out of progress_total.  Calls are serialised by the pool
+ * and come from worker threads.
+ */
+typedef void (*zr_progress_fn)(size_t done, size_t total, void *user);
+
+typedef struct zr_pool_job {
+  const zr_scene *scene;
+  const zr_render_params *params;
+  int rank;              /* this rank takes rows rank, rank + nranks, ... */
+  int nranks;
+  const float *centres;  /* NULL for pass 1, else the whole centre image */
+  float *rows_rgb;       /* out: the rank's rows, in order, width * 3 each */
+  int threads;           /* at least 1 */
+  zr_render_stats *stats; /* added to; may be NULL */
+  zr_progress_fn progress; /* may be NULL */
+  void *progress_user;
+  size_t progress_base;
+  size_t progress_total;
+} zr_pool_job;
+
+/*
+ * Renders the job's rows with job->threads threads, the calling one
+ * included.  Returns the first failure of any row (the other threads stop
+ * at their next row).  When the system refuses to start a thread, the
+ * threads already running take its rows: fewer threads, same image.
+ */
+zr_status zr__pool_render(const zr_pool_job *job);
+
+#endif /* ZR_PAR_POOL_H */

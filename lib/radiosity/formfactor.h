@@ -1,0 +1,65 @@
+/*
+ * formfactor.h - form factors for hierarchical radiosity, without
+ * visibility (the solver multiplies by its visibility estimate).
+ *
+ * Sources are two-sided here: a polygon or patch transfers to a point
+ * whichever way it faces, and the solver decides whether a one-sided
+ * surface emits towards the receiver.  The receiver is one-sided: only
+ * the half-space in front of its normal is seen.
+ */
+#ifndef ZR_RADIOSITY_FORMFACTOR_H
+#define ZR_RADIOSITY_FORMFACTOR_H
+
+#include <stddef.h>
+
+#include "core/vec.h"
+#include "radiosity/quadrature.h"
+#include "radiosity/surface.h"
+
+/*
+ * The exact form factor from a differential area at p with unit normal n
+ * to the planar polygon verts[0..nv-1] (any orientation, convex or not,
+ * but simple), by Lambert's contour integral.  The part of the polygon
+ * behind the tangent plane at p is clipped away first; a point in the
+ * polygon's own plane gives 0.  Result in [0, 1]; 0 for nv < 3.
+ */
+double zr__ff_point_polygon(zr_vec3 p, zr_vec3 n, const zr_vec3 *verts,
+                            size_t nv);
+
+/*
+ * The form factor from a differential area at p, n to the parameter
+ * rectangle [u0,u1] x [v0,v1] of src by the product Gauss rule of the
+ * kernel cos_p cos_q / (pi r^2) dA_q: for curved patches, and valid when
+ * the patch is small against its distance (it is not an exact factor
+ * for near or touching patches, where the kernel is singular).
+ */
+double zr__ff_point_patch_quadrature(zr_vec3 p, zr_vec3 n,
+                                     const zr__surface *src, double u0,
+                                     double u1, double v0, double v1,
+                                     const zr__gauss_rule *rule);
+
+/*
+ * The form factor from the receiver patch [u0,u1] x [v0,v1] of recv to
+ * the polygon: the area average of the exact point-to-polygon factor,
+ * sampled at the product Gauss points of rule (n x n points) on cells x
+ * cells sub-rectangles.  F_recv->poly = (1/A) int F(dA -> poly) dA.
+ */
+double zr__ff_patch_polygon(const zr__surface *recv, double u0, double u1,
+                            double v0, double v1, const zr_vec3 *verts,
+                            size_t nv, int cells,
+                            const zr__gauss_rule *rule);
+
+/*
+ * Hanrahan, Salzman and Aupperle's cheap estimate of the form factor from
+ * a receiver point x (normal nx) to a source of area area_y centred at y
+ * (normal ny): the factor of a coaxial disc of that area, tilted by the
+ * two cosines,
+ *   F ~ area_y cos_x cos_y / (pi r^2 + area_y).
+ * It never exceeds 1 and stays finite as r -> 0.  Cosines behind either
+ * surface count as 0; the source is one-sided here, since the estimate
+ * decides where links go.
+ */
+double zr__ff_oracle(zr_vec3 x, zr_vec3 nx, zr_vec3 y, zr_vec3 ny,
+                     double area_y);
+
+#endif /* ZR_RADIOSITY_FORMFACTOR_H */

@@ -1,0 +1,428 @@
+/*
+ * surface.c - exact parametric surfaces of scene objects for radiosity.
+ *
+ * Hanrahan, Salzman and Aupperle's hierarchical radiosity (SIGGRAPH 1991)
+ * subdivides each input surface as a quadtree in its own parameter
+ * square, so every object with area must offer S(u,v) over [0,1]^2 with
+ * a normal and the area element dA = |S_u x S_v| du dv.  Modelling no
+ * more than a surface needs, planar faces stay planar patches:
+ *  - a parallelogram origin + u e1 + v e2 (box faces, clipped planes);
+ *  - a triangle as the collapsed square (1-u) p0 + u ((1-v) p1 + v p2),
+ *    whose area element u |(p1 - p0) x (p2 - p1)| vanishes at p0 and
+ *    whose sub-rectangles are straight-edged quadrilaterals, so exact
+ *    polygon form factors apply to every quadtree cell;
+ * and the quadrics of revolution are rational quadratic NURBS, exact
+ * conics (Piegl & Tiller, "The NURBS Book", 7.5 and 8.5): the sphere is
+ * the nine-point circle turned about a half circle, the cylinder and
+ * cone sides and the disc or annulus are the circle times a line in the
+ * radius.  Each is built in a frame where the axis is y, then mapped by
+ * an orthonormal frame onto the object's axis and by the object's
+ * transform; affine invariance keeps the result exact.  A mirroring
+ * transform reverses S_u x S_v, which orient records so normals stay
+ * outward.  Where S_u vanishes (a pole, an apex, a disc's centre) the
+ * normal is the limit along v, (S_uv x S_v) up to sign, which is exact
+ * rather than a nudge to a nearby parameter.
+ */
+#include "radiosity/surface.h"
+
+#include <math.h>
+#include <string.h>
+
+/* ---- checks and small helpers ---- */
+
+static bool vec_finite(zr_vec3 a) {
+  return isfinite(a.x) && isfinite(a.y) && isfinite(a.z);
+}
+
+static double det3(const double m[4][4]) {
+  return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+         m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+         m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+}
+
+/* Sets s->orient from the transform; fails on a singular one. */
+static zr_status set_orientation(zr__surface *s, const zr_transform *xf,
+                                 zr_context *ctx,
+                                 const zr_diag_place *where) {
+  double d = xf ? det3(xf->m) : 1.0;
+  if (!(d != 0.0) || !isfinite(d))
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, where,
+                    "radiosity surface: singular or non-finite transform");
+  s->orient = d > 0.0 ? 1.0 : -1.0;
+  return ZR_OK;
+}
+
+static zr_vec3 map_point(const zr_transform *xf, zr_vec3 p) {
+  return xf ? zr__xform_point(xf->m, p) : p;
+}
+
+static zr_vec3 map_dir(const zr_transform *xf, zr_vec3 d) {
+  return xf ? zr__xform_dir(xf->m, d) : d;
+}
+
+/*
+ * A right-handed orthonormal frame (a, axis, b) around a unit axis:
+ * det [a axis b] = a . (axis x (a x axis)) = 1, so the frame keeps the
+ * orientation of the y-axis models.
+ */
+static void frame_matrix(double m[4][4], zr_vec3 origin, zr_vec3 axis) {
+  zr_vec3 helper = fabs(axis.x) < 0.9 ? zr_v3(1, 0, 0) : zr_v3(0, 1, 0);
+  zr_vec3 a = zr_v3_norm(zr_v3_cross(helper, axis));
+  zr_vec3 b = zr_v3_cross(a, axis);
+  double cols[4][3] = {{a.x, a.y, a.z},
+                       {axis.x, axis.y, axis.z},
+                       {b.x, b.y, b.z},
+                       {origin.x, origin.y, origin.z}};
+  memset(m, 0, sizeof(double) * 16);
+  for (int c = 0; c < 4; c++)
+    for (int r = 0; r < 3; r++)
+      m[r][c] = cols[c][r];
+  m[3][3] = 1.0;
+}
+
+/* Turns profile about axis (unit) at origin, then applies xf. */
+static void build_revolution(zr__surface *s, const zr__nurbs_profile *prof,
+                             zr_vec3 origin, zr_vec3 axis,
+                             const zr_transform *xf) {
+  double frame[4][4];
+  zr__nurbs_revolve(&s->nurbs, prof);
+  frame_matrix(frame, origin, axis);
+  zr__nurbs_transform(&s->nurbs, frame);
+  if (xf)
+    zr__nurbs_transform(&s->nurbs, xf->m);
+}
+
+/* ---- constructors ---- */
+
+zr_status zr__surface_parallelogram(zr__surface *s, zr_vec3 origin,
+                                    zr_vec3 e1, zr_vec3 e2,
+                                    const zr_transform *xf, zr_context *ctx,
+                                    const zr_diag_place *where) {
+  memset(s, 0, sizeof *s);
+  if (!vec_finite(origin) || !vec_finite(e1) || !vec_finite(e2))
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, where,
+                    "parallelogram: non-finite corner or edge");
+  zr_status st = set_orientation(s, xf, ctx, where);
+  if (st != ZR_OK)
+    return st;
+  s->kind = ZR__SURFACE_PARALLELOGRAM;
+  s->planar = true;
+  s->p[0] = map_point(xf, origin);
+  s->p[1] = map_dir(xf, e1);
+  s->p[2] = map_dir(xf, e2);
+  zr_vec3 c = zr_v3_cross(s->p[1], s->p[2]);
+  if (!(zr_v3_len(c) > 0.0))
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, where,
+                    "parallelogram has zero area (parallel edges)");
+  s->plane_normal = zr_v3_scale(zr_v3_norm(c), s->orient);
+  return ZR_OK;
+}
+
+zr_status zr__surface_triangle(zr__surface *s, zr_vec3 p0, zr_vec3 p1,
+                               zr_vec3 p2, const zr_transform *xf,
+                               zr_context *ctx, const zr_diag_place *where) {
+  memset(s, 0, sizeof *s);
+  if (!vec_finite(p0) || !vec_finite(p1) || !vec_finite(p2))
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, where,
+                    "triangle: non-finite vertex");
+  zr_status st = set_orientation(s, xf, ctx, where);
+  if (st != ZR_OK)
+    return st;
+  s->kind = ZR__SURFACE_TRIANGLE;
+  s->planar = true;
+  s->p[0] = map_point(xf, p0);
+  s->p[1] = map_point(xf, p1);
+  s->p[2] = map_point(xf, p2);
+  zr_vec3 c = zr_v3_cross(zr_v3_sub(s->p[1], s->p[0]),
+                          zr_v3_sub(s->p[2], s->p[0]));
+  if (!(zr_v3_len(c) > 0.0))
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, where,
+                    "triangle has zero area (collinear vertices)");
+  s->plane_normal = zr_v3_scale(zr_v3_norm(c), s->orient);
+  return ZR_OK;
+}
+
+zr_status zr__surface_box_faces(zr__surface faces[6], zr_vec3 corner1,
+                                zr_vec3 corner2, const zr_transform *xf,
+                                zr_context *ctx, const zr_diag_place *where) {
+  zr_vec3 lo = zr_v3_min(corner1, corner2), hi = zr_v3_max(corner1, corner2);
+  zr_vec3 d = zr_v3_sub(hi, lo);
+  if (!vec_finite(lo) || !vec_finite(hi))
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, where,
+                    "box: non-finite corner");
+  if (!(zr_v3_min_comp(d) > 0.0))
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, where,
+                    "box has zero thickness (corners <%g, %g, %g> and "
+                    "<%g, %g, %g>)",
+                    corner1.x, corner1.y, corner1.z, corner2.x, corner2.y,
+                    corner2.z);
+  zr_vec3 dx = zr_v3(d.x, 0, 0), dy = zr_v3(0, d.y, 0), dz = zr_v3(0, 0, d.z);
+  /* Edge pairs chosen so that e1 x e2 points out of the box. */
+  const zr_vec3 origin[6] = {lo, zr_v3(hi.x, lo.y, lo.z), lo,
+                             zr_v3(lo.x, hi.y, lo.z), lo,
+                             zr_v3(lo.x, lo.y, hi.z)};
+  const zr_vec3 e1[6] = {dz, dy, dx, dz, dy, dx};
+  const zr_vec3 e2[6] = {dy, dz, dz, dx, dx, dy};
+  for (int f = 0; f < 6; f++) {
+    zr_status st = zr__surface_parallelogram(&faces[f], origin[f], e1[f],
+                                             e2[f], xf, ctx, where);
+    if (st != ZR_OK)
+      return st;
+  }
+  return ZR_OK;
+}
+
+zr_status zr__surface_disc(zr__surface *s, zr_vec3 centre, zr_vec3 normal,
+                           double radius, double hole_radius,
+                           const zr_transform *xf, zr_context *ctx,
+                           const zr_diag_place *where) {
+  memset(s, 0, sizeof *s);
+  if (!vec_finite(centre) || !vec_finite(normal))
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, where,
+                    "disc: non-finite centre or normal");
+  if (!(zr_v3_len(normal) > 0.0))
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, where,
+                    "disc normal is the zero vector");
+  if (!(radius > 0.0) || !isfinite(radius))
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, where,
+                    "disc radius must be positive and finite (got %g)",
+                    radius);
+  if (!(hole_radius >= 0.0 && hole_radius < radius))
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, where,
+                    "disc hole radius %g must be in [0, radius %g)",
+                    hole_radius, radius);
+  zr_status st = set_orientation(s, xf, ctx, where);
+  if (st != ZR_OK)
+    return st;
+  s->kind = ZR__SURFACE_DISC;
+  s->planar = true;
+  /* From the rim inwards: S_u x S_v then points along +y, the normal. */
+  zr__nurbs_profile prof;
+  zr__nurbs_profile_line(&prof, radius, 0.0, hole_radius, 0.0);
+  zr_vec3 axis = zr_v3_norm(normal);
+  build_revolution(s, &prof, centre, axis, xf);
+  zr_vec3 n = xf ? zr__xform_normal(xf->inv, axis) : axis;
+  s->plane_normal = zr_v3_norm(n);
+  return ZR_OK;
+}
+
+zr_status zr__surface_sphere(zr__surface *s, zr_vec3 centre, double radius,
+                             const zr_transform *xf, zr_context *ctx,
+                             const zr_diag_place *where) {
+  memset(s, 0, sizeof *s);
+  if (!vec_finite(centre))
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, where,
+                    "sphere: non-finite centre");
+  if (!(radius > 0.0) || !isfinite(radius))
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, where,
+                    "sphere radius must be positive and finite (got %g)",
+                    radius);
+  zr_status st = set_orientation(s, xf, ctx, where);
+  if (st != ZR_OK)
+    return st;
+  s->kind = ZR__SURFACE_SPHERE;
+  zr__nurbs_profile prof;
+  zr__nurbs_profile_half_circle(&prof, radius);
+  build_revolution(s, &prof, centre, zr_v3(0, 1, 0), xf);
+  return ZR_OK;
+}
+
+/* The axis of a cylinder or cone, with the checks both need. */
+static zr_status solid_axis(const char *what, zr_vec3 base, zr_vec3 cap,
+                            zr_vec3 *axis, double *length, zr_context *ctx,
+                            const zr_diag_place *where) {
+  if (!vec_finite(base) || !vec_finite(cap))
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, where,
+                    "%s: non-finite base or cap point", what);
+  zr_vec3 d = zr_v3_sub(cap, base);
+  *length = zr_v3_len(d);
+  if (!(*length > 0.0))
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, where,
+                    "%s base and cap points coincide", what);
+  *axis = zr_v3_scale(d, 1.0 / *length);
+  return ZR_OK;
+}
+
+zr_status zr__surface_cylinder(zr__surface *s, zr_vec3 base, zr_vec3 cap,
+                               double radius, const zr_transform *xf,
+                               zr_context *ctx, const zr_diag_place *where) {
+  memset(s, 0, sizeof *s);
+  zr_vec3 axis;
+  double length;
+  zr_status st = solid_axis("cylinder", base, cap, &axis, &length, ctx, where);
+  if (st != ZR_OK)
+    return st;
+  if (!(radius > 0.0) || !isfinite(radius))
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, where,
+                    "cylinder radius must be positive and finite (got %g)",
+                    radius);
+  st = set_orientation(s, xf, ctx, where);
+  if (st != ZR_OK)
+    return st;
+  s->kind = ZR__SURFACE_CYLINDER;
+  zr__nurbs_profile prof;
+  zr__nurbs_profile_line(&prof, radius, 0.0, radius, length);
+  build_revolution(s, &prof, base, axis, xf);
+  return ZR_OK;
+}
+
+zr_status zr__surface_cone(zr__surface *s, zr_vec3 base, double base_radius,
+                           zr_vec3 cap, double cap_radius,
+                           const zr_transform *xf, zr_context *ctx,
+                           const zr_diag_place *where) {
+  memset(s, 0, sizeof *s);
+  zr_vec3 axis;
+  double length;
+  zr_status st = solid_axis("cone", base, cap, &axis, &length, ctx, where);
+  if (st != ZR_OK)
+    return st;
+  if (!(base_radius >= 0.0 && cap_radius >= 0.0) || !isfinite(base_radius) ||
+      !isfinite(cap_radius) || !(base_radius + cap_radius > 0.0))
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, where,
+                    "cone radii must be finite, not negative and not both "
+                    "zero (got %g and %g)",
+                    base_radius, cap_radius);
+  st = set_orientation(s, xf, ctx, where);
+  if (st != ZR_OK)
+    return st;
+  s->kind = ZR__SURFACE_CONE;
+  zr__nurbs_profile prof;
+  zr__nurbs_profile_line(&prof, base_radius, 0.0, cap_radius, length);
+  build_revolution(s, &prof, base, axis, xf);
+  return ZR_OK;
+}
+
+/* ---- evaluation ---- */
+
+/*
+ * The unit normal of a NURBS point.  Where S_u (or S_v) vanishes, as on
+ * the row of control points that a pole or apex collapses to, S_u grows
+ * like (v - v_edge) S_uv away from that edge, so S_u x S_v has the
+ * direction of +-(S_uv x S_v): the limit of the normal along the v line.
+ */
+static zr_vec3 nurbs_normal(const zr__nurbs_derivs *d, double u, double v,
+                            double *da) {
+  zr_vec3 c = zr_v3_cross(d->su, d->sv);
+  double len = zr_v3_len(c);
+  double lu = zr_v3_len(d->su), lv = zr_v3_len(d->sv);
+  double scale = lu + lv;
+  *da = len;
+  /* A dimensionless test: sin of the angle between S_u and S_v, weighted
+     so a vanishing derivative counts as degenerate. */
+  if (len > 1e-10 * scale * scale)
+    return zr_v3_scale(c, 1.0 / len);
+  zr_vec3 limit;
+  if (lu <= lv)
+    limit = zr_v3_scale(zr_v3_cross(d->suv, d->sv), v < 0.5 ? 1.0 : -1.0);
+  else
+    limit = zr_v3_scale(zr_v3_cross(d->su, d->suv), u < 0.5 ? 1.0 : -1.0);
+  return zr_v3_norm(limit);
+}
+
+void zr__surface_eval(const zr__surface *s, double u, double v,
+                      zr__surface_point *out) {
+  switch (s->kind) {
+  case ZR__SURFACE_PARALLELOGRAM:
+    out->p = zr_v3_madd(zr_v3_madd(s->p[0], s->p[1], u), s->p[2], v);
+    out->n = s->plane_normal;
+    out->da = zr_v3_len(zr_v3_cross(s->p[1], s->p[2]));
+    return;
+  case ZR__SURFACE_TRIANGLE: {
+    zr_vec3 edge = zr_v3_add(zr_v3_scale(s->p[1], 1.0 - v),
+                             zr_v3_scale(s->p[2], v));
+    out->p = zr_v3_add(zr_v3_scale(s->p[0], 1.0 - u), zr_v3_scale(edge, u));
+    out->n = s->plane_normal;
+    out->da = u * zr_v3_len(zr_v3_cross(zr_v3_sub(s->p[1], s->p[0]),
+                                        zr_v3_sub(s->p[2], s->p[1])));
+    return;
+  }
+  default: {
+    zr__nurbs_derivs d;
+    zr__nurbs_eval(&s->nurbs, u, v, &d);
+    out->p = d.s;
+    zr_vec3 n = nurbs_normal(&d, u, v, &out->da);
+    out->n = s->planar ? s->plane_normal : zr_v3_scale(n, s->orient);
+    return;
+  }
+  }
+}
+
+double zr__surface_area(const zr__surface *s, double u0, double u1,
+                        double v0, double v1, int cells,
+                        const zr__gauss_rule *rule) {
+  double du = (u1 - u0) / cells, dv = (v1 - v0) / cells;
+  double sum = 0.0;
+  for (int a = 0; a < cells; a++) {
+    for (int b = 0; b < cells; b++) {
+      double cell = 0.0;
+      for (int i = 0; i < rule->n; i++) {
+        for (int j = 0; j < rule->n; j++) {
+          zr__surface_point pt;
+          zr__surface_eval(s, u0 + (a + rule->x[i]) * du,
+                           v0 + (b + rule->x[j]) * dv, &pt);
+          cell += rule->w[i] * rule->w[j] * pt.da;
+        }
+      }
+      sum += cell;
+    }
+  }
+  return sum * du * dv;
+}
+
+/* ---- patch boundaries ---- */
+
+/* Whether lines of constant v (edges along u) are curved on s. */
+static bool u_edges_curved(const zr__surface *s) {
+  return s->kind >= ZR__SURFACE_DISC;
+}
+
+static bool v_edges_curved(const zr__surface *s) {
+  return s->kind == ZR__SURFACE_SPHERE;
+}
+
+typedef struct polygon_out {
+  zr_vec3 *pts;
+  size_t n, max;
+  double tol; /* points closer than this are one point */
+} polygon_out;
+
+static void emit(polygon_out *o, zr_vec3 p) {
+  if (o->n > 0 && zr_v3_len(zr_v3_sub(p, o->pts[o->n - 1])) <= o->tol)
+    return;
+  if (o->n < o->max)
+    o->pts[o->n++] = p;
+}
+
+/* Emits the edge from (ua,va) to (ub,vb) without its end point. */
+static void emit_edge(polygon_out *o, const zr__surface *s, double ua,
+                      double va, double ub, double vb, bool curved, int segs) {
+  int steps = curved && segs > 1 ? segs : 1;
+  for (int k = 0; k < steps; k++) {
+    double t = (double)k / steps;
+    zr__surface_point pt;
+    zr__surface_eval(s, ua + (ub - ua) * t, va + (vb - va) * t, &pt);
+    emit(o, pt.p);
+  }
+}
+
+size_t zr__surface_patch_polygon(const zr__surface *s, double u0, double u1,
+                                 double v0, double v1, int segs,
+                                 zr_vec3 *out, size_t max) {
+  zr__surface_point a, b;
+  zr__surface_eval(s, u0, v0, &a);
+  zr__surface_eval(s, u1, v1, &b);
+  /* Coincidence is judged against the patch's own size, so collapsed
+     corners merge at any scene scale. */
+  double size = zr_v3_len(zr_v3_sub(a.p, b.p));
+  zr__surface_eval(s, u1, v0, &b);
+  size = fmax(size, zr_v3_len(zr_v3_sub(a.p, b.p)));
+  polygon_out o = {out, 0, max, 1e-12 * size};
+  bool cu = u_edges_curved(s), cv = v_edges_curved(s);
+  emit_edge(&o, s, u0, v0, u1, v0, cu, segs);
+  emit_edge(&o, s, u1, v0, u1, v1, cv, segs);
+  emit_edge(&o, s, u1, v1, u0, v1, cu, segs);
+  emit_edge(&o, s, u0, v1, u0, v0, cv, segs);
+  while (o.n > 1 && zr_v3_len(zr_v3_sub(o.pts[o.n - 1], o.pts[0])) <= o.tol)
+    o.n--;
+  return o.n;
+}

@@ -1,0 +1,112 @@
+/*
+ * surface.h - exact parametric surfaces S(u,v), (u,v) in [0,1]^2, for
+ * hierarchical radiosity: a point, the unit outward normal and the area
+ * element |S_u x S_v| of every object that has area, in world space.
+ *
+ * Planar faces are planar patches (parallelograms for box faces, a
+ * collapsed square for triangles); discs and annuli, spheres, open
+ * cylinder and cone sides are rational quadratic NURBS (see nurbs.h).
+ * An object's transform is applied when the surface is built, so
+ * evaluation never transforms.  A surface is plain data (no allocation)
+ * and read-only once built: threads may share it.
+ */
+#ifndef ZR_RADIOSITY_SURFACE_H
+#define ZR_RADIOSITY_SURFACE_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#include "core/context.h"
+#include "core/transform.h"
+#include "core/vec.h"
+#include "radiosity/nurbs.h"
+#include "radiosity/quadrature.h"
+
+typedef enum zr__surface_kind {
+  ZR__SURFACE_PARALLELOGRAM = 0, /* origin + u e1 + v e2 */
+  ZR__SURFACE_TRIANGLE,          /* (1-u) p0 + u ((1-v) p1 + v p2) */
+  ZR__SURFACE_DISC,              /* NURBS, planar; v = 0 on the rim */
+  ZR__SURFACE_SPHERE,            /* NURBS; v = 0 at the -y pole */
+  ZR__SURFACE_CYLINDER,          /* NURBS; v = 0 at the base */
+  ZR__SURFACE_CONE               /* NURBS; v = 0 at the base */
+} zr__surface_kind;
+
+typedef struct zr__surface {
+  zr__surface_kind kind;
+  bool planar;
+  /* +1 when S_u x S_v points outwards, -1 when a mirroring transform
+     turned it inwards. */
+  double orient;
+  zr_vec3 plane_normal; /* planar kinds: the unit outward normal */
+  zr_vec3 p[3];         /* parallelogram: origin, e1, e2; triangle: p0..p2 */
+  zr__nurbs nurbs;      /* curved kinds and discs */
+} zr__surface;
+
+/* One evaluated point. */
+typedef struct zr__surface_point {
+  zr_vec3 p;  /* world position */
+  zr_vec3 n;  /* unit outward normal (the limit where S_u x S_v is 0) */
+  double da;  /* area element |S_u x S_v| */
+} zr__surface_point;
+
+/*
+ * Constructors.  xf is the object's transform (NULL for none); ctx and
+ * where (both may be NULL) receive the message of a ZR_EINVAL for
+ * degenerate input: a zero radius or edge, coincident points, a singular
+ * transform.  Radii and points follow POV-Ray's object syntax.
+ */
+zr_status zr__surface_parallelogram(zr__surface *s, zr_vec3 origin,
+                                    zr_vec3 e1, zr_vec3 e2,
+                                    const zr_transform *xf, zr_context *ctx,
+                                    const zr_diag_place *where);
+zr_status zr__surface_triangle(zr__surface *s, zr_vec3 p0, zr_vec3 p1,
+                               zr_vec3 p2, const zr_transform *xf,
+                               zr_context *ctx, const zr_diag_place *where);
+/* The six faces -x, +x, -y, +y, -z, +z of a box, normals outwards. */
+zr_status zr__surface_box_faces(zr__surface faces[6], zr_vec3 corner1,
+                                zr_vec3 corner2, const zr_transform *xf,
+                                zr_context *ctx, const zr_diag_place *where);
+/* A disc (hole_radius 0) or annulus facing along normal. */
+zr_status zr__surface_disc(zr__surface *s, zr_vec3 centre, zr_vec3 normal,
+                           double radius, double hole_radius,
+                           const zr_transform *xf, zr_context *ctx,
+                           const zr_diag_place *where);
+zr_status zr__surface_sphere(zr__surface *s, zr_vec3 centre, double radius,
+                             const zr_transform *xf, zr_context *ctx,
+                             const zr_diag_place *where);
+/* The open side of a cylinder (caps are discs of their own). */
+zr_status zr__surface_cylinder(zr__surface *s, zr_vec3 base, zr_vec3 cap,
+                               double radius, const zr_transform *xf,
+                               zr_context *ctx, const zr_diag_place *where);
+/* The open side of a cone; either radius may be 0 (an apex). */
+zr_status zr__surface_cone(zr__surface *s, zr_vec3 base, double base_radius,
+                           zr_vec3 cap, double cap_radius,
+                           const zr_transform *xf, zr_context *ctx,
+                           const zr_diag_place *where);
+
+/* S(u,v), the normal and the area element at (u,v) in [0,1]^2. */
+void zr__surface_eval(const zr__surface *s, double u, double v,
+                      zr__surface_point *out);
+
+/*
+ * The area of the parameter rectangle [u0,u1] x [v0,v1]: cells x cells
+ * sub-rectangles, each integrated by the product Gauss rule.
+ */
+double zr__surface_area(const zr__surface *s, double u0, double u1,
+                        double v0, double v1, int cells,
+                        const zr__gauss_rule *rule);
+
+/*
+ * The boundary of the parameter rectangle as a world-space polygon, in
+ * the order (u0,v0), (u1,v0), (u1,v1), (u0,v1).  Edges that are straight
+ * on the surface give their two corners; curved edges are split into
+ * segs equal parameter steps.  Points repeated where an edge collapses
+ * (a triangle's apex, a pole) are dropped.  Returns the number of points
+ * written, at most max; it is exact for the planar straight-edged kinds
+ * and an inscribed polygon otherwise.
+ */
+size_t zr__surface_patch_polygon(const zr__surface *s, double u0, double u1,
+                                 double v0, double v1, int segs,
+                                 zr_vec3 *out, size_t max);
+
+#endif /* ZR_RADIOSITY_SURFACE_H */

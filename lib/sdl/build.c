@@ -1,0 +1,382 @@
+/*
+ * build.c - what the grammar's actions call to build the scene model.
+ *
+ * The semantics are the reference manual's (r3_4):
+ *   - Modifiers apply in the order written: "scale 2 translate x" scales,
+ *     then translates (lib/core/transform.c composes in that order).
+ *   - A transform moves the object's texture with it ("Transformations"
+ *     on textures): the pigment gets a new transform, so patterns will
+ *     stay glued to the surface.  Textures, pigments and finishes that may
+ *     be shared (declared, or on another object) are never changed in
+ *     place: each change makes a copy in the scene's arena.
+ *   - A union's modifiers reach every child ("CSG Union"): a transform is
+ *     pushed into each child; a texture is given to the union, and
+ *     children without one inherit it when the scene is flattened.
+ *   - object { Name } copies the declared object, children and all, so
+ *     later modifiers never change the declaration.
+ *   - The camera ("Placing the Camera"): items act in the order written;
+ *     angle sets the direction's length to 0.5 |right| / tan(angle / 2);
+ *     look_at turns direction, right and up toward the target about the
+ *     sky vector, keeping their lengths and the right vector's
+ *     handedness (right <-1,0,0> stays mirrored).
+ */
+#include "config.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "pov-parse.h"
+#include "sdl/sdl.h"
+
+static const char *kind_name(zr_object_kind kind) {
+  static const char *const names[] = {"a sphere",   "a box",   "a plane",
+                                      "a triangle", "a cylinder",
+                                      "a cone",     "a disc",  "a union"};
+  return names[kind];
+}
+
+zr_object *zr__sdl_object_new(zr_sdl_parser *p, zr_object_kind kind,
+                              const zr_sdl_loc *loc) {
+  zr_object *o = zr__sdl_alloc(p, sizeof *o);
+  if (!o)
+    return NULL;
+  o->kind = kind;
+  o->where.file = p->files[loc->file].scene_path;
+  o->where.line = loc->line;
+  o->where.column = loc->column;
+  return o;
+}
+
+/* The room a union's children array has for n children: arrays grow by
+   doubling, and the arena cannot resize, so the size tells the room. */
+static size_t children_room(size_t n) {
+  size_t room = 4;
+  while (room < n)
+    room *= 2;
+  return n ? room : 0;
+}
+
+zr_object *zr__sdl_object_copy(zr_sdl_parser *p, const zr_object *o) {
+  zr_object *copy = zr__sdl_alloc(p, sizeof *copy);
+  if (!copy)
+    return NULL;
+  *copy = *o;
+  if (o->kind != ZR_OBJ_UNION || o->u.csg.n_children == 0)
+    return copy;
+  size_t n = o->u.csg.n_children;
+  copy->u.csg.children =
+      zr__sdl_alloc(p, children_room(n) * sizeof *copy->u.csg.children);
+  if (!copy->u.csg.children)
+    return NULL;
+  for (size_t i = 0; i < n; i++) {
+    copy->u.csg.children[i] = zr__sdl_object_copy(p, o->u.csg.children[i]);
+    if (!copy->u.csg.children[i])
+      return NULL;
+  }
+  return copy;
+}
+
+bool zr__sdl_union_add(zr_sdl_parser *p, zr_object *u, zr_object *child) {
+  size_t n = u->u.csg.n_children;
+  if (n == children_room(n)) {
+    zr_object **grown =
+        zr__sdl_alloc(p, children_room(n + 1) * sizeof *grown);
+    if (!grown)
+      return false;
+    if (n)
+      memcpy(grown, u->u.csg.children, n * sizeof *grown);
+    u->u.csg.children = grown;
+  }
+  u->u.csg.children[n] = child;
+  u->u.csg.n_children = n + 1;
+  return true;
+}
+
+/* ---- transforms ---- */
+
+zr_transform *zr__sdl_transform(zr_sdl_parser *p, int token,
+                                const zr_sdl_expr *e, const zr_sdl_loc *loc) {
+  zr_vec3 v;
+  if (!zr__sdl_want_vector(p, e, loc, &v))
+    return NULL;
+  zr_transform *t = zr__sdl_alloc(p, sizeof *t);
+  if (!t)
+    return NULL;
+  zr__transform_identity(t);
+  if (token == T_SCALE) {
+    /* POV-Ray turns a zero scale into 1 with a warning ("Scale"). */
+    if (v.x == 0 || v.y == 0 || v.z == 0) {
+      zr__sdl_warning(p, loc, "scaling by zero; using 1 for that axis");
+      v = zr_v3(v.x == 0 ? 1 : v.x, v.y == 0 ? 1 : v.y, v.z == 0 ? 1 : v.z);
+    }
+    zr__transform_scale(t, v);
+  } else if (token == T_ROTATE) {
+    zr__transform_rotate(t, v);
+  } else {
+    zr__transform_translate(t, v);
+  }
+  return t;
+}
+
+zr_transform *zr__sdl_matrix(zr_sdl_parser *p, const zr_sdl_list *l,
+                             const zr_sdl_loc *loc) {
+  if (l->n != 12) {
+    zr__sdl_error(p, ZR_ESYNTAX, loc, "a matrix has 12 values, not %d",
+                  l->n);
+    return NULL;
+  }
+  zr_transform *t = zr__sdl_alloc(p, sizeof *t);
+  if (!t)
+    return NULL;
+  if (!zr__transform_matrix(t, l->v)) {
+    zr__sdl_error(p, ZR_ESCENE, loc, "the matrix is singular");
+    return NULL;
+  }
+  return t;
+}
+
+/* A new transform: 'before' (NULL: identity), then t. */
+static const zr_transform *composed(zr_sdl_parser *p,
+                                    const zr_transform *before,
+                                    const zr_transform *t) {
+  zr_transform *c = zr__sdl_alloc(p, sizeof *c);
+  if (!c)
+    return NULL;
+  if (before)
+    *c = *before;
+  else
+    zr__transform_identity(c);
+  zr__transform_compose(c, t);
+  return c;
+}
+
+/* ---- pigments, finishes, textures, interiors ---- */
+
+zr_pigment *zr__sdl_pigment_new(zr_sdl_parser *p, const zr_pigment *from) {
+  zr_pigment *pg = zr__sdl_alloc(p, sizeof *pg);
+  if (!pg)
+    return NULL;
+  if (from)
+    *pg = *from;
+  else
+    zr__pigment_init(pg);
+  return pg;
+}
+
+bool zr__sdl_pigment_transform(zr_sdl_parser *p, zr_pigment *pg,
+                               const zr_transform *t) {
+  pg->transform = composed(p, pg->transform, t);
+  return pg->transform != NULL;
+}
+
+zr_finish *zr__sdl_finish_new(zr_sdl_parser *p, const zr_finish *from) {
+  zr_finish *f = zr__sdl_alloc(p, sizeof *f);
+  if (!f)
+    return NULL;
+  if (from)
+    *f = *from;
+  else
+    zr__finish_init(f);
+  return f;
+}
+
+void zr__sdl_finish_reflection(zr_finish *f, const zr_sdl_reflection *r) {
+  f->reflection = r->min;
+  f->reflection_max = r->max;
+  if (r->falloff_given)
+    f->reflection_falloff = r->falloff;
+  if (r->fresnel_given)
+    f->reflection_fresnel = r->fresnel;
+  if (r->metallic_given)
+    f->reflection_metallic = r->metallic;
+}
+
+zr_texture *zr__sdl_texture_new(zr_sdl_parser *p, const zr_texture *from) {
+  zr_texture *tx = zr__sdl_alloc(p, sizeof *tx);
+  if (tx && from)
+    *tx = *from;
+  return tx;
+}
+
+bool zr__sdl_texture_done(zr_sdl_parser *p, zr_texture *tx) {
+  if (!tx->pigment)
+    tx->pigment = p->scene->default_texture->pigment;
+  if (!tx->finish)
+    tx->finish = p->scene->default_texture->finish;
+  return true;
+}
+
+bool zr__sdl_texture_transform(zr_sdl_parser *p, zr_texture *tx,
+                               const zr_transform *t) {
+  zr_pigment *pg = zr__sdl_pigment_new(
+      p, tx->pigment ? tx->pigment : p->scene->default_texture->pigment);
+  if (!pg || !zr__sdl_pigment_transform(p, pg, t))
+    return false;
+  tx->pigment = pg;
+  return true;
+}
+
+zr_interior *zr__sdl_interior_new(zr_sdl_parser *p, const zr_interior *from) {
+  zr_interior *in = zr__sdl_alloc(p, sizeof *in);
+  if (!in)
+    return NULL;
+  if (from)
+    *in = *from;
+  else
+    zr__interior_init(in);
+  return in;
+}
+
+/* ---- object modifiers ---- */
+
+static bool transform_object(zr_sdl_parser *p, zr_object *o,
+                             const zr_transform *t) {
+  if (!(o->transform = composed(p, o->transform, t)))
+    return false;
+  if (o->texture) {
+    zr_texture *tx = zr__sdl_texture_new(p, o->texture);
+    if (!tx || !zr__sdl_texture_transform(p, tx, t))
+      return false;
+    o->texture = tx;
+  }
+  if (o->kind == ZR_OBJ_UNION)
+    for (size_t i = 0; i < o->u.csg.n_children; i++)
+      if (!transform_object(p, o->u.csg.children[i], t))
+        return false;
+  return true;
+}
+
+/* A copy of the object's texture (or of the default one) to change. */
+static zr_texture *own_texture(zr_sdl_parser *p, zr_object *o) {
+  zr_texture *tx = zr__sdl_texture_new(
+      p, o->texture ? o->texture : p->scene->default_texture);
+  if (tx)
+    o->texture = tx;
+  return tx;
+}
+
+static void set_interior(zr_object *o, const zr_interior *in, bool force) {
+  if (force || !o->interior)
+    o->interior = in;
+  if (o->kind == ZR_OBJ_UNION)
+    for (size_t i = 0; i < o->u.csg.n_children; i++)
+      set_interior(o->u.csg.children[i], in, false);
+}
+
+static void set_flag(zr_object *o, zr_sdl_mod_kind kind) {
+  if (kind == ZR_SDL_MOD_NO_SHADOW)
+    o->no_shadow = true;
+  else
+    o->inverse = !o->inverse;
+  if (o->kind == ZR_OBJ_UNION)
+    for (size_t i = 0; i < o->u.csg.n_children; i++)
+      set_flag(o->u.csg.children[i], kind);
+}
+
+bool zr__sdl_object_mod(zr_sdl_parser *p, zr_object *o,
+                        const zr_sdl_mod *mod, const zr_sdl_loc *loc) {
+  zr_texture *tx;
+  switch (mod->kind) {
+  case ZR_SDL_MOD_TRANSFORM:
+    return transform_object(p, o, mod->ptr);
+  case ZR_SDL_MOD_PIGMENT:
+    if (!(tx = own_texture(p, o)))
+      return false;
+    tx->pigment = mod->ptr;
+    return true;
+  case ZR_SDL_MOD_FINISH:
+    if (!(tx = own_texture(p, o)))
+      return false;
+    tx->finish = mod->ptr;
+    return true;
+  case ZR_SDL_MOD_TEXTURE:
+    o->texture = mod->ptr;
+    return true;
+  case ZR_SDL_MOD_INTERIOR:
+    set_interior(o, mod->ptr, true);
+    return true;
+  case ZR_SDL_MOD_NO_SHADOW:
+  case ZR_SDL_MOD_INVERSE:
+    set_flag(o, mod->kind);
+    return true;
+  case ZR_SDL_MOD_OPEN:
+    if (o->kind == ZR_OBJ_CYLINDER) {
+      o->u.cylinder.open = true;
+      return true;
+    }
+    if (o->kind == ZR_OBJ_CONE) {
+      o->u.cone.open = true;
+      return true;
+    }
+    zr__sdl_error(p, ZR_ESYNTAX, loc,
+                  "'open' is for cylinders and cones, not for %s",
+                  kind_name(o->kind));
+    return false;
+  }
+  return true;
+}
+
+/* ---- lights and camera ---- */
+
+bool zr__sdl_light(zr_sdl_parser *p, zr_light *l, const zr_sdl_expr *at,
+                   const zr_sdl_loc *loc) {
+  (void)at;
+  memset(l, 0, sizeof *l);
+  l->kind = ZR_LIGHT_POINT;
+  l->where.file = p->files[loc->file].scene_path;
+  l->where.line = loc->line;
+  l->where.column = loc->column;
+  return true;
+}
+
+void zr__sdl_camera_begin(zr_sdl_parser *p, const zr_sdl_loc *loc) {
+  zr_camera *c = &p->scene->camera;
+  zr__camera_init(c);
+  c->given = true;
+  c->where.file = p->files[loc->file].scene_path;
+  c->where.line = loc->line;
+  c->where.column = loc->column;
+}
+
+bool zr__sdl_camera_angle(zr_sdl_parser *p, zr_camera *c, double degrees,
+                          const zr_sdl_loc *loc) {
+  if (!(degrees > 0 && degrees < 180)) {
+    zr__sdl_error(p, ZR_ESCENE, loc,
+                  "a perspective camera's angle must be between 0 and 180 "
+                  "degrees, not %g", degrees);
+    return false;
+  }
+  double half = degrees * 3.14159265358979323846 / 360.0;
+  double length = 0.5 * zr_v3_len(c->right) / tan(half);
+  c->direction = zr_v3_scale(zr_v3_norm(c->direction), length);
+  return true;
+}
+
+void zr__sdl_camera_look_at(zr_camera *c, zr_vec3 target) {
+  zr_vec3 d = zr_v3_sub(target, c->location);
+  if (zr_v3_len(d) == 0)
+    return; /* looking at itself: nothing to turn toward */
+  double dl = zr_v3_len(c->direction);
+  double rl = zr_v3_len(c->right);
+  double ul = zr_v3_len(c->up);
+  /* POV-Ray's space is left-handed: right = up x direction normally; a
+     right vector pointing the other way mirrors the image and stays so. */
+  double handed =
+      zr_v3_dot(zr_v3_cross(c->up, c->direction), c->right) < 0 ? -1 : 1;
+  zr_vec3 dn = zr_v3_norm(d);
+  zr_vec3 rn = zr_v3_norm(zr_v3_cross(c->sky, dn));
+  if (zr_v3_len(rn) == 0) /* looking along the sky: keep the old right */
+    rn = zr_v3_norm(zr_v3_scale(c->right, handed));
+  zr_vec3 un = zr_v3_cross(dn, rn);
+  c->direction = zr_v3_scale(dn, dl);
+  c->right = zr_v3_scale(rn, rl * handed);
+  c->up = zr_v3_scale(un, ul);
+}
+
+void zr__sdl_camera_transform(zr_camera *c, const zr_transform *t) {
+  c->location = zr__xform_point(t->m, c->location);
+  c->direction = zr__xform_dir(t->m, c->direction);
+  c->up = zr__xform_dir(t->m, c->up);
+  c->right = zr__xform_dir(t->m, c->right);
+  c->sky = zr__xform_dir(t->m, c->sky);
+}

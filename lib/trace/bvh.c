@@ -1,0 +1,445 @@
+/*
+ * bvh.c - a bounding volume hierarchy of axis-aligned boxes, built top
+ * down with the binned surface area heuristic (Wald, "On fast
+ * Construction of SAH-based Bounding Volume Hierarchies", 2007).
+ *
+ * Each node's primitives are sorted into BINS buckets by the centre of
+ * their boxes along the widest axis of those centres; the split between
+ * buckets that minimises  A_left * N_left + A_right * N_right  (areas of
+ * the child boxes, the expected number of intersection tests for a ray
+ * that hits the node) wins, unless a leaf is cheaper.  Nodes live in one
+ * array in depth-first order: an inner node's left child follows it and
+ * its right child's index is stored.
+ *
+ * Primitives with no finite box (planes, inverse objects) cannot be
+ * bounded, so they sit in a separate list that every ray tests.
+ * Traversal visits the nearer child first and skips boxes beyond the
+ * nearest crossing found so far.
+ */
+#include "trace/bvh.h"
+
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/context.h"
+
+enum {
+  BINS = 16,
+  LEAF_MAX = 4,     /* a node this small is always a leaf */
+  DEPTH_MAX = 60,   /* beyond this splits fall back to the median */
+  STACK_MAX = 128
+};
+
+typedef struct bvh_node {
+  double lo[3], hi[3];
+  uint32_t first; /* leaf: first primitive; inner: right child index */
+  uint32_t count; /* leaf: number of primitives; inner: 0 */
+} bvh_node;
+
+struct zr_bvh {
+  bvh_node *nodes;
+  size_t n_nodes;
+  const zr_object **prims; /* bounded primitives in leaf order */
+  size_t n_prims;
+  const zr_object **unbounded;
+  size_t n_unbounded;
+  int depth;
+};
+
+/* A primitive's box and centre while building. */
+typedef struct build_item {
+  double lo[3], hi[3], centre[3];
+  const zr_object *object;
+} build_item;
+
+typedef struct box3 {
+  double lo[3], hi[3];
+} box3;
+
+static void box_empty(box3 *b) {
+  for (int i = 0; i < 3; i++) {
+    b->lo[i] = INFINITY;
+    b->hi[i] = -INFINITY;
+  }
+}
+
+static void box_grow(box3 *b, const double lo[3], const double hi[3]) {
+  for (int i = 0; i < 3; i++) {
+    b->lo[i] = fmin(b->lo[i], lo[i]);
+    b->hi[i] = fmax(b->hi[i], hi[i]);
+  }
+}
+
+static double box_area(const box3 *b) {
+  double d[3];
+  for (int i = 0; i < 3; i++)
+    d[i] = b->hi[i] > b->lo[i] ? b->hi[i] - b->lo[i] : 0.0;
+  return 2.0 * (d[0] * d[1] + d[1] * d[2] + d[2] * d[0]);
+}
+
+typedef struct builder {
+  build_item *items;
+  bvh_node *nodes;
+  size_t n_nodes, cap_nodes;
+  int depth;
+} builder;
+
+/* qsort comparators by centre, one per axis, so no state is shared. */
+#define CMP_CENTRE(axis)                                                   \
+  static int cmp_centre_##axis(const void *pa, const void *pb) {           \
+    double a = ((const build_item *)pa)->centre[axis];                     \
+    double b = ((const build_item *)pb)->centre[axis];                     \
+    return (a > b) - (a < b);                                              \
+  }
+CMP_CENTRE(0)
+CMP_CENTRE(1)
+CMP_CENTRE(2)
+#undef CMP_CENTRE
+
+static void sort_by_axis(build_item *items, size_t n, int axis) {
+  static int (*const cmp[3])(const void *, const void *) = {
+      cmp_centre_0, cmp_centre_1, cmp_centre_2};
+  qsort(items, n, sizeof *items, cmp[axis]);
+}
+
+static zr_status new_node(builder *b, size_t *index) {
+  if (b->n_nodes == b->cap_nodes) {
+    size_t cap = b->cap_nodes ? b->cap_nodes * 2 : 64;
+    bvh_node *p = realloc(b->nodes, cap * sizeof *p);
+    if (!p)
+      return ZR_ENOMEM;
+    b->nodes = p;
+    b->cap_nodes = cap;
+  }
+  *index = b->n_nodes++;
+  return ZR_OK;
+}
+
+/*
+ * Chooses where to split items[0..n) by the binned SAH.  Returns the
+ * number that go left (0 when a leaf is cheaper or no split separates
+ * anything), reordering items so those come first.
+ */
+static size_t sah_split(build_item *items, size_t n, const box3 *bounds) {
+  box3 cb;
+  box_empty(&cb);
+  for (size_t i = 0; i < n; i++)
+    box_grow(&cb, items[i].centre, items[i].centre);
+  int axis = 0;
+  double ext = -1.0;
+  for (int a = 0; a < 3; a++)
+    if (cb.hi[a] - cb.lo[a] > ext) {
+      ext = cb.hi[a] - cb.lo[a];
+      axis = a;
+    }
+  if (!(ext > 0.0))
+    return 0;
+  size_t counts[BINS] = {0};
+  box3 bins[BINS];
+  for (int i = 0; i < BINS; i++)
+    box_empty(&bins[i]);
+  double scale = BINS / ext;
+  for (size_t i = 0; i < n; i++) {
+    int k = (int)((items[i].centre[axis] - cb.lo[axis]) * scale);
+    k = k < 0 ? 0 : k >= BINS ? BINS - 1 : k;
+    counts[k]++;
+    box_grow(&bins[k], items[i].lo, items[i].hi);
+  }
+  /* Sweep from the right to know the right side's cost of every split. */
+  double right_cost[BINS];
+  box3 acc;
+  box_empty(&acc);
+  size_t acc_n = 0;
+  for (int k = BINS - 1; k > 0; k--) {
+    if (counts[k])
+      box_grow(&acc, bins[k].lo, bins[k].hi);
+    acc_n += counts[k];
+    right_cost[k] = acc_n ? box_area(&acc) * (double)acc_n : 0.0;
+  }
+  double best = INFINITY;
+  int best_k = -1;
+  box_empty(&acc);
+  acc_n = 0;
+  for (int k = 1; k < BINS; k++) {
+    if (counts[k - 1])
+      box_grow(&acc, bins[k - 1].lo, bins[k - 1].hi);
+    acc_n += counts[k - 1];
+    if (acc_n == 0 || acc_n == n)
+      continue;
+    double cost = box_area(&acc) * (double)acc_n + right_cost[k];
+    if (cost < best) {
+      best = cost;
+      best_k = k;
+    }
+  }
+  if (best_k < 0)
+    return 0;
+  /* A traversal step costs about as much as one intersection test. */
+  double leaf_cost = box_area(bounds) * (double)n;
+  double split_cost = box_area(bounds) + best;
+  if (n <= 16 && split_cost >= leaf_cost)
+    return 0;
+  size_t left = 0;
+  for (size_t i = 0; i < n; i++) {
+    int k = (int)((items[i].centre[axis] - cb.lo[axis]) * scale);
+    k = k < 0 ? 0 : k >= BINS ? BINS - 1 : k;
+    if (k < best_k) {
+      build_item t = items[i];
+      items[i] = items[left];
+      items[left] = t;
+      left++;
+    }
+  }
+  return left;
+}
+
+/* Splits at the median centre along the widest axis. */
+static size_t median_split(build_item *items, size_t n) {
+  box3 cb;
+  box_empty(&cb);
+  for (size_t i = 0; i < n; i++)
+    box_grow(&cb, items[i].centre, items[i].centre);
+  int axis = 0;
+  for (int a = 1; a < 3; a++)
+    if (cb.hi[a] - cb.lo[a] > cb.hi[axis] - cb.lo[axis])
+      axis = a;
+  sort_by_axis(items, n, axis);
+  return n / 2;
+}
+
+static zr_status build_node(builder *b, size_t first, size_t n, int depth) {
+  size_t index;
+  zr_status s = new_node(b, &index);
+  if (s != ZR_OK)
+    return s;
+  if (depth > b->depth)
+    b->depth = depth;
+  box3 bounds;
+  box_empty(&bounds);
+  for (size_t i = first; i < first + n; i++)
+    box_grow(&bounds, b->items[i].lo, b->items[i].hi);
+  memcpy(b->nodes[index].lo, bounds.lo, sizeof bounds.lo);
+  memcpy(b->nodes[index].hi, bounds.hi, sizeof bounds.hi);
+  size_t left = 0;
+  if (n > LEAF_MAX) {
+    left = depth < DEPTH_MAX ? sah_split(b->items + first, n, &bounds)
+                             : median_split(b->items + first, n);
+    /* Too many primitives sharing one centre: force a split so leaves
+       stay small unless they are all truly coincident. */
+    if (left == 0 && n > 16)
+      left = median_split(b->items + first, n);
+  }
+  if (left == 0 || left == n) {
+    b->nodes[index].first = (uint32_t)first;
+    b->nodes[index].count = (uint32_t)n;
+    return ZR_OK;
+  }
+  b->nodes[index].count = 0;
+  s = build_node(b, first, left, depth + 1);
+  if (s != ZR_OK)
+    return s;
+  b->nodes[index].first = (uint32_t)b->n_nodes;
+  return build_node(b, first + left, n - left, depth + 1);
+}
+
+zr_status zr__bvh_build(zr_scene *scene, zr_context *ctx) {
+  zr__bvh_free(scene->bvh);
+  scene->bvh = NULL;
+  struct zr_bvh *bvh = calloc(1, sizeof *bvh);
+  size_t n = scene->n_primitives;
+  build_item *items = malloc((n ? n : 1) * sizeof *items);
+  bvh->prims = bvh ? malloc((n ? n : 1) * sizeof *bvh->prims) : NULL;
+  bvh->unbounded = bvh ? malloc((n ? n : 1) * sizeof *bvh->unbounded)
+                       : NULL;
+  builder b = {0};
+  b.items = items;
+  zr_status s = ZR_ENOMEM;
+  if (!bvh || !items || !bvh->prims || !bvh->unbounded)
+    goto fail;
+  if (n > UINT32_MAX / 2) {
+    s = ZR_ELIMIT;
+    goto fail;
+  }
+  size_t nb = 0;
+  for (size_t i = 0; i < n; i++) {
+    const zr_object *o = scene->primitives[i];
+    zr_vec3 lo, hi;
+    if (!zr__object_bounds(o, &lo, &hi)) {
+      bvh->unbounded[bvh->n_unbounded++] = o;
+      continue;
+    }
+    build_item *it = &items[nb++];
+    it->lo[0] = lo.x, it->lo[1] = lo.y, it->lo[2] = lo.z;
+    it->hi[0] = hi.x, it->hi[1] = hi.y, it->hi[2] = hi.z;
+    for (int a = 0; a < 3; a++)
+      it->centre[a] = 0.5 * (it->lo[a] + it->hi[a]);
+    it->object = o;
+  }
+  if (nb > 0) {
+    s = build_node(&b, 0, nb, 0);
+    if (s != ZR_OK)
+      goto fail;
+  }
+  for (size_t i = 0; i < nb; i++)
+    bvh->prims[i] = items[i].object;
+  bvh->n_prims = nb;
+  bvh->nodes = b.nodes;
+  bvh->n_nodes = b.n_nodes;
+  bvh->depth = b.depth;
+  free(items);
+  scene->bvh = bvh;
+  return ZR_OK;
+fail:
+  free(items);
+  free(b.nodes);
+  zr__bvh_free(bvh);
+  return zr__diag(ctx, ZR_DIAG_ERROR, s, NULL,
+                  "cannot build the bounding hierarchy: %s",
+                  zr_status_str(s));
+}
+
+void zr__bvh_free(struct zr_bvh *bvh) {
+  if (!bvh)
+    return;
+  free(bvh->nodes);
+  free(bvh->prims);
+  free(bvh->unbounded);
+  free(bvh);
+}
+
+void zr__bvh_get_info(const struct zr_bvh *bvh, zr_bvh_info *info) {
+  memset(info, 0, sizeof *info);
+  if (!bvh)
+    return;
+  info->nodes = bvh->n_nodes;
+  for (size_t i = 0; i < bvh->n_nodes; i++)
+    info->leaves += bvh->nodes[i].count > 0;
+  info->bounded = bvh->n_prims;
+  info->unbounded = bvh->n_unbounded;
+  info->depth = bvh->depth;
+}
+
+/* The ray in the form the slab test wants. */
+typedef struct slab_ray {
+  double org[3], inv[3];
+} slab_ray;
+
+static void make_slab_ray(const zr_ray *ray, slab_ray *s) {
+  s->org[0] = ray->origin.x;
+  s->org[1] = ray->origin.y;
+  s->org[2] = ray->origin.z;
+  double d[3] = {ray->dir.x, ray->dir.y, ray->dir.z};
+  for (int a = 0; a < 3; a++)
+    s->inv[a] = 1.0 / d[a]; /* +-inf for 0: the slab test copes */
+}
+
+/*
+ * The entry distance of the ray into the node's box within (tmin, tmax),
+ * or INFINITY when it misses.  A zero direction component gives
+ * infinities, and 0 * inf (origin on a slab plane) gives NaN, which fmax
+ * and fmin drop, so that case counts as inside the slab.
+ */
+static double slab_entry(const bvh_node *node, const slab_ray *r,
+                         double tmin, double tmax) {
+  double t0 = tmin, t1 = tmax;
+  for (int a = 0; a < 3; a++) {
+    double ta = (node->lo[a] - r->org[a]) * r->inv[a];
+    double tb = (node->hi[a] - r->org[a]) * r->inv[a];
+    t0 = fmax(t0, fmin(ta, tb));
+    t1 = fmin(t1, fmax(ta, tb));
+  }
+  return t0 <= t1 ? t0 : INFINITY;
+}
+
+bool zr__bvh_nearest(const struct zr_bvh *bvh, const zr_ray *ray,
+                     double tmin, double tmax, zr_hit *hit) {
+  if (!bvh)
+    return false;
+  bool found = false;
+  zr_hit h[ZR_MAX_CROSSINGS];
+  for (size_t i = 0; i < bvh->n_unbounded; i++)
+    if (zr__intersect(bvh->unbounded[i], ray, tmin, tmax, h) > 0) {
+      *hit = h[0];
+      tmax = h[0].t;
+      found = true;
+    }
+  if (bvh->n_nodes == 0)
+    return found;
+  slab_ray sr;
+  make_slab_ray(ray, &sr);
+  uint32_t stack[STACK_MAX];
+  int sp = 0;
+  if (slab_entry(&bvh->nodes[0], &sr, tmin, tmax) == INFINITY)
+    return found;
+  stack[sp++] = 0;
+  while (sp > 0) {
+    const bvh_node *node = &bvh->nodes[stack[--sp]];
+    if (node->count > 0) {
+      for (uint32_t i = node->first; i < node->first + node->count; i++)
+        if (zr__intersect(bvh->prims[i], ray, tmin, tmax, h) > 0) {
+          *hit = h[0];
+          tmax = h[0].t;
+          found = true;
+        }
+      continue;
+    }
+    uint32_t left = (uint32_t)(node - bvh->nodes) + 1, right = node->first;
+    double tl = slab_entry(&bvh->nodes[left], &sr, tmin, tmax);
+    double tr = slab_entry(&bvh->nodes[right], &sr, tmin, tmax);
+    /* Push the farther child first so the nearer one is searched first
+       and shrinks tmax for the other. */
+    if (tl > tr) {
+      uint32_t ti = left;
+      left = right;
+      right = ti;
+      double tt = tl;
+      tl = tr;
+      tr = tt;
+    }
+    if (tr != INFINITY && sp < STACK_MAX)
+      stack[sp++] = right;
+    if (tl != INFINITY && sp < STACK_MAX)
+      stack[sp++] = left;
+  }
+  return found;
+}
+
+bool zr__bvh_all(const struct zr_bvh *bvh, const zr_ray *ray, double tmin,
+                 double tmax, zr_crossing_fn visit, void *user) {
+  if (!bvh)
+    return true;
+  zr_hit h[ZR_MAX_CROSSINGS];
+  for (size_t i = 0; i < bvh->n_unbounded; i++) {
+    int n = zr__intersect(bvh->unbounded[i], ray, tmin, tmax, h);
+    for (int k = 0; k < n; k++)
+      if (!visit(&h[k], user))
+        return false;
+  }
+  if (bvh->n_nodes == 0)
+    return true;
+  slab_ray sr;
+  make_slab_ray(ray, &sr);
+  uint32_t stack[STACK_MAX];
+  int sp = 0;
+  stack[sp++] = 0;
+  while (sp > 0) {
+    const bvh_node *node = &bvh->nodes[stack[--sp]];
+    if (slab_entry(node, &sr, tmin, tmax) == INFINITY)
+      continue;
+    if (node->count > 0) {
+      for (uint32_t i = node->first; i < node->first + node->count; i++) {
+        int n = zr__intersect(bvh->prims[i], ray, tmin, tmax, h);
+        for (int k = 0; k < n; k++)
+          if (!visit(&h[k], user))
+            return false;
+      }
+      continue;
+    }
+    if (sp + 2 <= STACK_MAX) {
+      stack[sp++] = node->first;
+      stack[sp++] = (uint32_t)(node - bvh->nodes) + 1;
+    }
+  }
+  return true;
+}

@@ -1,0 +1,65 @@
+/*
+ * intersect.h - rays against the scene's primitives.
+ *
+ * Every primitive answers two questions: where does a ray cross its
+ * surface (all crossings in an interval, nearest first, with the outward
+ * geometric normal), and is a point inside it.  Both work in the
+ * object's own coordinates when it carries a transform.
+ */
+#ifndef ZR_TRACE_INTERSECT_H
+#define ZR_TRACE_INTERSECT_H
+
+#include <stdbool.h>
+
+#include "scene/scene.h"
+
+/* A ray: points origin + t * dir for t in some interval.  dir need not be
+   a unit vector; t is measured in units of |dir|. */
+typedef struct zr_ray {
+  zr_vec3 origin;
+  zr_vec3 dir;
+} zr_ray;
+
+/* One crossing of a ray with a surface. */
+typedef struct zr_hit {
+  double t;
+  /* World space, unit length, pointing out of the object (into it when the
+     object is inverse): it does not yet face the ray. */
+  zr_vec3 normal;
+  const zr_object *object;
+} zr_hit;
+
+/* The most crossings one primitive gives in an interval: every shape
+   here is convex, or flat, or a plane. */
+#define ZR_MAX_CROSSINGS 2
+
+/*
+ * Fills hits[] with the crossings of ray and object for tmin < t < tmax,
+ * nearest first, and returns how many there are (0..ZR_MAX_CROSSINGS).
+ * A ray that only grazes a surface (tangent) counts as a miss.
+ */
+int zr__intersect(const zr_object *object, const zr_ray *ray, double tmin,
+                  double tmax, zr_hit hits[ZR_MAX_CROSSINGS]);
+
+/* Whether the world point p lies inside the object (POV-Ray's inside, with
+   inverse applied).  Triangles have no inside; a disc's is its plane's. */
+bool zr__inside(const zr_object *object, zr_vec3 p);
+
+/* Whether the object encloses a volume (triangles and discs do not, so
+   rays crossing them stay in the medium they were in). */
+static inline bool zr__has_inside(const zr_object *object) {
+  return object->kind != ZR_OBJ_TRIANGLE && object->kind != ZR_OBJ_DISC;
+}
+
+/*
+ * The distance by which a secondary ray leaving point p is moved off the
+ * surface along the normal, so that rounding in the hit point cannot make
+ * the ray find its own surface again: relative to the size of the
+ * coordinates, as POV-Ray scenes range from 1e-3 to 1e5 units.
+ */
+static inline double zr__surface_offset(zr_vec3 p) {
+  double m = fmax(fabs(p.x), fmax(fabs(p.y), fabs(p.z)));
+  return 1e-8 * fmax(1.0, m);
+}
+
+#endif /* ZR_TRACE_INTERSECT_H */

@@ -1,0 +1,217 @@
+/*
+ * render.c - the public rendering calls: camera rays through pixels and
+ * POV-Ray's non-recursive adaptive antialiasing (reference, "Anti-Aliasing
+ * Options", sampling method 1).
+ *
+ * A pixel (x, y) of a W x H image looks along
+ *   direction + u * right + v * up,  u = (x + 0.5) / W - 0.5,
+ *                                    v = 0.5 - (y + 0.5) / H,
+ * from the camera's location.  POV-Ray 3.7 does not adapt `right` to the
+ * image's aspect ratio (a 200 x 100 render of the default camera stretches
+ * a sphere to twice its width), and neither does this.
+ *
+ * Antialiasing runs in two passes so that every pixel's result depends
+ * only on the scene and the complete image of pixel centres: pass 1 traces
+ * the centres; pass 2 compares each centre with its four neighbours
+ * (POV-Ray compares with the left and upper ones and supersamples both
+ * pixels of a pair that differ, which is the same as looking at all
+ * four) and, where the difference exceeds the threshold, averages an
+ * aa_depth x aa_depth grid of samples over the pixel.  Jitter moves each
+ * sample by a pseudo-random amount drawn from a hash of the pixel index
+ * and sample number, never from shared state, so the picture does not
+ * depend on how pixels are split among threads and processes.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "trace/render.h"
+#include "trace/shade.h"
+
+ZR_API void zr_render_params_init(zr_render_params *p) {
+  memset(p, 0, sizeof *p);
+  p->width = 320;
+  p->height = 240;
+  p->antialias = 0;
+  p->aa_threshold = 0.3;
+  p->aa_depth = 3;
+  p->jitter = 0;
+  p->jitter_amount = 1.0;
+}
+
+ZR_API void zr_render_stats_add(zr_render_stats *a,
+                                const zr_render_stats *b) {
+  a->camera_rays += b->camera_rays;
+  a->supersample_rays += b->supersample_rays;
+  a->reflected_rays += b->reflected_rays;
+  a->refracted_rays += b->refracted_rays;
+  a->shadow_rays += b->shadow_rays;
+  a->supersampled_pixels += b->supersampled_pixels;
+}
+
+zr_ray zr__camera_ray(const zr_camera *camera, int width, int height,
+                      double x, double y) {
+  double u = x / width - 0.5, v = 0.5 - y / height;
+  zr_vec3 dir = zr_v3_madd(zr_v3_madd(camera->direction, camera->right, u),
+                           camera->up, v);
+  zr_ray ray = {camera->location, dir};
+  return ray;
+}
+
+static double clip01(double v) { return v < 0.0 ? 0.0 : v > 1.0 ? 1.0 : v; }
+
+double zr__colour_difference(const float *a, const float *b) {
+  return fabs(clip01(a[0]) - clip01(b[0])) +
+         fabs(clip01(a[1]) - clip01(b[1])) +
+         fabs(clip01(a[2]) - clip01(b[2]));
+}
+
+/* A 32-bit integer mix (the "lowbias32" finaliser by Chris Wellons). */
+static uint32_t mix32(uint32_t x) {
+  x ^= x >> 16;
+  x *= 0x7feb352dU;
+  x ^= x >> 15;
+  x *= 0x846ca68bU;
+  x ^= x >> 16;
+  return x;
+}
+
+double zr__hash_uniform(uint32_t pixel, uint32_t sample, uint32_t axis) {
+  uint32_t h = mix32(pixel ^ 0x9e3779b9U);
+  h = mix32(h ^ (sample * 0x85ebca6bU));
+  h = mix32(h ^ (axis * 0xc2b2ae35U + 0x27d4eb2fU));
+  return (double)(h >> 8) * (1.0 / 16777216.0);
+}
+
+static void trace_point(const zr_tracer *tr, const zr_render_params *p,
+                        double x, double y, zr_rgb *out) {
+  zr_ray ray = zr__camera_ray(&tr->scene->camera, p->width, p->height, x, y);
+  *out = zr__trace_ray(tr, &ray, 1, 1.0, NULL);
+}
+
+static void store(float *dst, zr_rgb c) {
+  dst[0] = (float)c.r;
+  dst[1] = (float)c.g;
+  dst[2] = (float)c.b;
+}
+
+/* Whether the centre of pixel (x, y) differs from a neighbour's by more
+   than the threshold. */
+static bool needs_supersampling(const zr_render_params *p,
+                                const float *centres, int x, int y) {
+  static const int dx[4] = {-1, 1, 0, 0}, dy[4] = {0, 0, -1, 1};
+  const float *c = centres + 3 * ((size_t)y * p->width + x);
+  for (int k = 0; k < 4; k++) {
+    int nx = x + dx[k], ny = y + dy[k];
+    if (nx < 0 || ny < 0 || nx >= p->width || ny >= p->height)
+      continue;
+    const float *n = centres + 3 * ((size_t)ny * p->width + nx);
+    if (zr__colour_difference(c, n) > p->aa_threshold)
+      return true;
+  }
+  return false;
+}
+
+static zr_rgb supersample(const zr_tracer *tr, const zr_render_params *p,
+                          uint32_t pixel, int x, int y) {
+  int n = p->aa_depth;
+  zr_rgb sum = zr_rgb3(0, 0, 0);
+  for (int j = 0; j < n; j++)
+    for (int i = 0; i < n; i++) {
+      double sx = (i + 0.5) / n, sy = (j + 0.5) / n;
+      if (p->jitter) {
+        uint32_t k = (uint32_t)(j * n + i);
+        sx += (zr__hash_uniform(pixel, k, 0) - 0.5) * p->jitter_amount / n;
+        sy += (zr__hash_uniform(pixel, k, 1) - 0.5) * p->jitter_amount / n;
+      }
+      zr_rgb c;
+      trace_point(tr, p, x + sx, y + sy, &c);
+      sum = zr_rgb_add(sum, c);
+    }
+  tr->stats->supersample_rays += (uint64_t)n * (uint64_t)n;
+  tr->stats->supersampled_pixels++;
+  return zr_rgb_scale(sum, 1.0 / (n * n));
+}
+
+static zr_status check_params(const zr_scene *scene,
+                              const zr_render_params *p) {
+  if (!scene || !p)
+    return ZR_EINVAL;
+  if (p->width <= 0 || p->height <= 0 ||
+      (uint64_t)p->width * (uint64_t)p->height > UINT32_MAX)
+    return ZR_EINVAL;
+  if (p->antialias && (p->aa_depth < 1 || p->aa_depth > 9 ||
+                       !(p->aa_threshold >= 0.0)))
+    return ZR_EINVAL;
+  if (!scene->bvh && scene->n_primitives > 0)
+    return ZR_ESCENE; /* zr__scene_finish() was never called */
+  return ZR_OK;
+}
+
+ZR_API zr_status zr_render_pixels(const zr_scene *scene,
+                                  const zr_render_params *params,
+                                  const uint32_t *pixels, size_t count,
+                                  const float *centres, float *rgb,
+                                  zr_render_stats *stats) {
+  zr_status s = check_params(scene, params);
+  if (s != ZR_OK)
+    return s;
+  if (count > 0 && (!pixels || !rgb))
+    return ZR_EINVAL;
+  uint32_t total = (uint32_t)params->width * (uint32_t)params->height;
+  for (size_t i = 0; i < count; i++)
+    if (pixels[i] >= total)
+      return ZR_EINVAL;
+  zr_render_stats local = {0};
+  zr_tracer tracer = {scene, &local};
+  for (size_t i = 0; i < count; i++) {
+    uint32_t pixel = pixels[i];
+    int x = (int)(pixel % (uint32_t)params->width);
+    int y = (int)(pixel / (uint32_t)params->width);
+    float *out = rgb + 3 * i;
+    if (!centres) {
+      zr_rgb c;
+      trace_point(&tracer, params, x + 0.5, y + 0.5, &c);
+      local.camera_rays++;
+      store(out, c);
+    } else if (params->antialias &&
+               needs_supersampling(params, centres, x, y)) {
+      store(out, supersample(&tracer, params, pixel, x, y));
+    } else {
+      memcpy(out, centres + 3 * (size_t)pixel, 3 * sizeof *out);
+    }
+  }
+  if (stats)
+    zr_render_stats_add(stats, &local);
+  return ZR_OK;
+}
+
+ZR_API zr_status zr_render_image(const zr_scene *scene,
+                                 const zr_render_params *params, float *rgb,
+                                 zr_render_stats *stats) {
+  zr_status s = check_params(scene, params);
+  if (s != ZR_OK)
+    return s;
+  if (!rgb)
+    return ZR_EINVAL;
+  size_t n = (size_t)params->width * (size_t)params->height;
+  uint32_t *pixels = malloc(n * sizeof *pixels);
+  float *centres = params->antialias ? malloc(n * 3 * sizeof *centres)
+                                     : NULL;
+  if (!pixels || (params->antialias && !centres)) {
+    free(pixels);
+    free(centres);
+    return ZR_ENOMEM;
+  }
+  for (size_t i = 0; i < n; i++)
+    pixels[i] = (uint32_t)i;
+  if (!params->antialias) {
+    s = zr_render_pixels(scene, params, pixels, n, NULL, rgb, stats);
+  } else {
+    s = zr_render_pixels(scene, params, pixels, n, NULL, centres, stats);
+    if (s == ZR_OK)
+      s = zr_render_pixels(scene, params, pixels, n, centres, rgb, stats);
+  }
+  free(pixels);
+  free(centres);
+  return s;
+}

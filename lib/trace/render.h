@@ -1,0 +1,28 @@
+/*
+ * render.h - camera rays and antialiasing, the internal side of
+ * zr_render_pixels().
+ */
+#ifndef ZR_TRACE_RENDER_H
+#define ZR_TRACE_RENDER_H
+
+#include "scene/scene.h"
+#include "trace/intersect.h"
+
+/*
+ * The camera ray through image point (x, y), measured in pixels from the
+ * top left corner of a width x height image: (x + 0.5, y + 0.5) is the
+ * centre of pixel (x, y).  As in POV-Ray 3.7 the image spans exactly the
+ * camera's right and up vectors whatever its aspect ratio.
+ */
+zr_ray zr__camera_ray(const zr_camera *camera, int width, int height,
+                      double x, double y);
+
+/* POV-Ray's colour difference for antialiasing: the sum of the absolute
+   differences of the red, green and blue values clipped to [0, 1]. */
+double zr__colour_difference(const float *a, const float *b);
+
+/* A uniform number in [0, 1) that depends only on its three arguments,
+   for jitter that is the same however pixels are shared out. */
+double zr__hash_uniform(uint32_t pixel, uint32_t sample, uint32_t axis);
+
+#endif /* ZR_TRACE_RENDER_H */

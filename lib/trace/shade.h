@@ -1,0 +1,71 @@
+/*
+ * shade.h - following one ray through the scene and computing the colour
+ * it brings back, with POV-Ray 3.7's lighting model.
+ */
+#ifndef ZR_TRACE_SHADE_H
+#define ZR_TRACE_SHADE_H
+
+#include "scene/scene.h"
+#include "trace/intersect.h"
+
+/* How many nested interiors a ray keeps track of for their ior. */
+#define ZR_MEDIA_MAX 16
+
+/* The objects a ray is inside, innermost last: the ior of the medium it
+   travels through is the innermost one's. */
+typedef struct zr_media {
+  const zr_object *objects[ZR_MEDIA_MAX];
+  int n;
+} zr_media;
+
+/* What one thread needs to trace rays in a scene. */
+typedef struct zr_tracer {
+  const zr_scene *scene;
+  zr_render_stats *stats; /* never NULL */
+} zr_tracer;
+
+/*
+ * The colour seen along ray (whose direction need not be unit length).
+ * level is 1 for a camera ray and grows by one with each reflection or
+ * refraction; weight is the ray's contribution to the pixel, compared
+ * against adc_bailout before secondary rays are spawned.  media may be
+ * NULL for a ray in empty space.
+ */
+zr_rgb zr__trace_ray(const zr_tracer *tracer, const zr_ray *ray, int level,
+                     double weight, const zr_media *media);
+
+/* The pigment's colour at a world point (solid colours for now). */
+zr_colour zr__pigment_at(const zr_pigment *pigment, zr_vec3 p);
+
+/*
+ * The light that reaches point `to` from a light at `from` (both world
+ * points) through the scene: 1 when nothing is in the way, 0 behind an
+ * opaque object, and filter * colour + transmit for each transparent
+ * surface crossed.  Objects with no_shadow cast none.
+ */
+zr_rgb zr__shadow_transmission(const zr_tracer *tracer, zr_vec3 from,
+                               zr_vec3 to);
+
+/* The mirror direction of unit d about unit n. */
+static inline zr_vec3 zr__reflect(zr_vec3 d, zr_vec3 n) {
+  return zr_v3_madd(d, n, -2.0 * zr_v3_dot(d, n));
+}
+
+/*
+ * Refracts unit d at a surface with unit normal n facing against d
+ * (dot(d, n) < 0), with eta = n1 / n2 the ratio of the indices on the
+ * incoming and outgoing sides.  Returns false on total
+ * internal reflection.
+ */
+bool zr__refract(zr_vec3 d, zr_vec3 n, double eta, zr_vec3 *out);
+
+/* Unpolarised Fresnel reflectance for a ray meeting a surface at cos_i
+   (> 0) from a medium of index n1 into n2; 1 on total internal
+   reflection. */
+double zr__fresnel(double cos_i, double n1, double n2);
+
+/* The share of the light's own colour in a metallic highlight or
+   reflection at an angle with cosine cos_angle (0 facing, 1 grazing). */
+double zr__metallic_fresnel(double cos_angle);
+
+#endif /* ZR_TRACE_SHADE_H */

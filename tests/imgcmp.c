@@ -1,0 +1,284 @@
+/*
+ * imgcmp.c - compares a render with a reference image.
+ *
+ *   imgcmp IMAGE REFERENCE [--ssim-min 0.98]
+ *   imgcmp IMAGE REFERENCE --rmse [--rmse-max 0.05]
+ *
+ * Both files are read with zr_image_read (PNG, JPEG, PPM, PFM) and must
+ * have the same size.  Each is first reduced by a 2x2 box filter, which
+ * averages away the single-pixel differences two correct ray tracers show
+ * on silhouettes (a ray grazing an edge lands on either side), so that
+ * the score measures the picture, not the sampling.
+ *
+ * SSIM follows Wang, Bovik, Sheikh and Simoncelli, "Image quality
+ * assessment: from error visibility to structural similarity" (IEEE TIP
+ * 13(4), 2004): an 11x11 circular-symmetric Gaussian window with sigma
+ * 1.5, K1 = 0.01, K2 = 0.03, dynamic range L = 1, evaluated at every
+ * position where the window fits inside the image (as the authors'
+ * reference code does) and averaged.  It is computed on each of R, G and
+ * B in the encoded sRGB space [0, 1] (what a viewer sees) and the three
+ * means are averaged; a per-channel score catches colour errors that a
+ * luminance-only score would miss, such as red and green swapped.
+ *
+ * --rmse is for linear results (radiosity, Monte Carlo; usually PFM):
+ * both images are clipped to [0, 1] in linear light, box filtered, and
+ * the root mean square difference over all samples is divided by the
+ * reference's mean, so the figure is a relative error.
+ *
+ * Prints "ssim=0.9xxx" or "rmse=0.0xxx"; exits 0 when the threshold is
+ * met, 1 when it is not, 2 on a usage or file error.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "zrcube.h"
+
+#define WINDOW_RADIUS 5 /* 11x11 */
+#define WINDOW_SIGMA 1.5
+
+/* One channel of an image as doubles. */
+typedef struct plane {
+  int w, h;
+  double *v;
+} plane;
+
+static void print_diag(const zr_diag *d, void *user) {
+  (void)user;
+  fputs(d->text, stderr);
+}
+
+static void usage(void) {
+  fputs("usage: imgcmp IMAGE REFERENCE [--ssim-min MIN]\n"
+        "       imgcmp IMAGE REFERENCE --rmse [--rmse-max MAX]\n"
+        "  SSIM of the sRGB-encoded images after a 2x2 box filter\n"
+        "  (default minimum 0.98), or with --rmse the relative RMSE of\n"
+        "  the linear images clipped to [0,1] (no maximum by default).\n",
+        stderr);
+}
+
+static double srgb(double linear) {
+  if (linear <= 0.0031308)
+    return 12.92 * linear;
+  return 1.055 * pow(linear, 1.0 / 2.4) - 0.055;
+}
+
+static double clip01(double v) { return !(v > 0.0) ? 0.0 : v > 1.0 ? 1.0 : v; }
+
+/*
+ * Channel c of img, clipped to [0, 1], optionally sRGB-encoded, averaged
+ * over 2x2 blocks (an odd last row or column is dropped).
+ */
+static int box_plane(const zr_image *img, int c, int encode, plane *out) {
+  int w = zr_image_width(img) / 2, h = zr_image_height(img) / 2;
+  int stride = zr_image_width(img) * 3;
+  const float *px = zr_image_pixels_const(img);
+  out->w = w;
+  out->h = h;
+  out->v = malloc((size_t)w * (size_t)h * sizeof *out->v);
+  if (!out->v)
+    return -1;
+  for (int y = 0; y < h; y++)
+    for (int x = 0; x < w; x++) {
+      double sum = 0.0;
+      for (int dy = 0; dy < 2; dy++)
+        for (int dx = 0; dx < 2; dx++) {
+          double v = clip01(px[(size_t)(2 * y + dy) * (size_t)stride +
+                               (size_t)(2 * x + dx) * 3 + (size_t)c]);
+          sum += encode ? srgb(v) : v;
+        }
+      out->v[(size_t)y * (size_t)w + (size_t)x] = sum / 4.0;
+    }
+  return 0;
+}
+
+/* Mean SSIM of two planes of the same size (Wang et al. 2004, eq. 13). */
+static double ssim_plane(const plane *a, const plane *b) {
+  const double c1 = 0.01 * 0.01, c2 = 0.03 * 0.03;
+  int r = WINDOW_RADIUS;
+  /* Small images get the largest window that fits. */
+  while (r > 0 && (2 * r + 1 > a->w || 2 * r + 1 > a->h))
+    r--;
+  double weight[2 * WINDOW_RADIUS + 1][2 * WINDOW_RADIUS + 1];
+  double total = 0.0;
+  for (int j = -r; j <= r; j++)
+    for (int i = -r; i <= r; i++)
+      total += weight[j + r][i + r] =
+          exp(-(i * i + j * j) / (2.0 * WINDOW_SIGMA * WINDOW_SIGMA));
+  double sum = 0.0;
+  long count = 0;
+  for (int y = r; y < a->h - r; y++)
+    for (int x = r; x < a->w - r; x++) {
+      double ma = 0, mb = 0, saa = 0, sbb = 0, sab = 0;
+      for (int j = -r; j <= r; j++)
+        for (int i = -r; i <= r; i++) {
+          double wgt = weight[j + r][i + r] / total;
+          size_t k = (size_t)(y + j) * (size_t)a->w + (size_t)(x + i);
+          double va = a->v[k], vb = b->v[k];
+          ma += wgt * va;
+          mb += wgt * vb;
+          saa += wgt * va * va;
+          sbb += wgt * vb * vb;
+          sab += wgt * va * vb;
+        }
+      double var_a = saa - ma * ma, var_b = sbb - mb * mb;
+      double cov = sab - ma * mb;
+      sum += (2 * ma * mb + c1) * (2 * cov + c2) /
+             ((ma * ma + mb * mb + c1) * (var_a + var_b + c2));
+      count++;
+    }
+  return count ? sum / (double)count : 1.0;
+}
+
+/*
+ * The worst colour error of any BLOCK x BLOCK block of two planes: the
+ * mean absolute difference inside each block, maximised over blocks.
+ */
+#define BLOCK 8
+static double block_delta_plane(const plane *a, const plane *b) {
+  double worst = 0.0;
+  for (int by = 0; by + BLOCK <= a->h; by += BLOCK / 2)
+    for (int bx = 0; bx + BLOCK <= a->w; bx += BLOCK / 2) {
+      double sum = 0.0;
+      for (int y = by; y < by + BLOCK; y++)
+        for (int x = bx; x < bx + BLOCK; x++) {
+          size_t k = (size_t)y * (size_t)a->w + (size_t)x;
+          sum += fabs(a->v[k] - b->v[k]);
+        }
+      sum /= BLOCK * BLOCK;
+      if (sum > worst)
+        worst = sum;
+    }
+  return worst;
+}
+
+static double compare_delta(const zr_image *a, const zr_image *b) {
+  double worst = 0.0;
+  for (int c = 0; c < 3; c++) {
+    plane pa, pb;
+    if (box_plane(a, c, 1, &pa) || box_plane(b, c, 1, &pb)) {
+      fputs("imgcmp: out of memory\n", stderr);
+      exit(2);
+    }
+    double d = block_delta_plane(&pa, &pb);
+    if (d > worst)
+      worst = d;
+    free(pa.v);
+    free(pb.v);
+  }
+  return worst;
+}
+
+static double compare_ssim(const zr_image *a, const zr_image *b) {
+  double sum = 0.0;
+  for (int c = 0; c < 3; c++) {
+    plane pa, pb;
+    if (box_plane(a, c, 1, &pa) || box_plane(b, c, 1, &pb)) {
+      fputs("imgcmp: out of memory\n", stderr);
+      exit(2);
+    }
+    sum += ssim_plane(&pa, &pb);
+    free(pa.v);
+    free(pb.v);
+  }
+  return sum / 3.0;
+}
+
+static double compare_rmse(const zr_image *a, const zr_image *ref) {
+  double sq = 0.0, ref_sum = 0.0;
+  size_t n = 0;
+  for (int c = 0; c < 3; c++) {
+    plane pa, pr;
+    if (box_plane(a, c, 0, &pa) || box_plane(ref, c, 0, &pr)) {
+      fputs("imgcmp: out of memory\n", stderr);
+      exit(2);
+    }
+    for (size_t k = 0; k < (size_t)pa.w * (size_t)pa.h; k++) {
+      double d = pa.v[k] - pr.v[k];
+      sq += d * d;
+      ref_sum += pr.v[k];
+      n++;
+    }
+    free(pa.v);
+    free(pr.v);
+  }
+  double mean = ref_sum / (double)n;
+  double rmse = sqrt(sq / (double)n);
+  return mean > 0.0 ? rmse / mean : (rmse > 0.0 ? INFINITY : 0.0);
+}
+
+static int parse_number(const char *text, double *out) {
+  char *end;
+  *out = strtod(text, &end);
+  return *text && !*end && isfinite(*out);
+}
+
+int main(int argc, char **argv) {
+  const char *files[2] = {NULL, NULL};
+  int n_files = 0, rmse_mode = 0;
+  double ssim_min = 0.98, rmse_max = INFINITY, delta_max = INFINITY;
+  for (int i = 1; i < argc; i++) {
+    if (!strcmp(argv[i], "--rmse")) {
+      rmse_mode = 1;
+    } else if (!strcmp(argv[i], "--ssim-min") && i + 1 < argc) {
+      if (!parse_number(argv[++i], &ssim_min))
+        return usage(), 2;
+    } else if (!strcmp(argv[i], "--delta-max") && i + 1 < argc) {
+      if (!parse_number(argv[++i], &delta_max))
+        return usage(), 2;
+    } else if (!strcmp(argv[i], "--rmse-max") && i + 1 < argc) {
+      rmse_mode = 1;
+      if (!parse_number(argv[++i], &rmse_max))
+        return usage(), 2;
+    } else if (!strcmp(argv[i], "-h") || !strcmp(argv[i], "--help")) {
+      usage();
+      return 0;
+    } else if (argv[i][0] == '-' && argv[i][1]) {
+      fprintf(stderr, "imgcmp: unknown option '%s'\n", argv[i]);
+      return usage(), 2;
+    } else if (n_files < 2) {
+      files[n_files++] = argv[i];
+    } else {
+      return usage(), 2;
+    }
+  }
+  if (n_files != 2)
+    return usage(), 2;
+
+  zr_context *ctx;
+  if (zr_context_new(&ctx) != ZR_OK)
+    return 2;
+  zr_context_set_diag(ctx, print_diag, NULL);
+  zr_image *img[2] = {NULL, NULL};
+  int rc = 2;
+  if (zr_image_read(ctx, files[0], &img[0]) != ZR_OK ||
+      zr_image_read(ctx, files[1], &img[1]) != ZR_OK)
+    goto done;
+  if (zr_image_width(img[0]) != zr_image_width(img[1]) ||
+      zr_image_height(img[0]) != zr_image_height(img[1])) {
+    fprintf(stderr, "imgcmp: sizes differ: %s is %dx%d, %s is %dx%d\n",
+            files[0], zr_image_width(img[0]), zr_image_height(img[0]),
+            files[1], zr_image_width(img[1]), zr_image_height(img[1]));
+    goto done;
+  }
+  if (zr_image_width(img[0]) < 2 || zr_image_height(img[0]) < 2) {
+    fprintf(stderr, "imgcmp: images must be at least 2x2\n");
+    goto done;
+  }
+  if (rmse_mode) {
+    double e = compare_rmse(img[0], img[1]);
+    printf("rmse=%.4f\n", e);
+    rc = e <= rmse_max ? 0 : 1;
+  } else {
+    double s = compare_ssim(img[0], img[1]);
+    double d = compare_delta(img[0], img[1]);
+    printf("ssim=%.4f delta=%.4f\n", s, d);
+    rc = s >= ssim_min && d <= delta_max ? 0 : 1;
+  }
+done:
+  zr_image_free(img[0]);
+  zr_image_free(img[1]);
+  zr_context_free(ctx);
+  return rc;
+}

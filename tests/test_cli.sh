@@ -1,0 +1,215 @@
+#!/bin/sh
+# test_cli.sh - zrcube end to end: the same image bytes from 1, 2 and 3
+# MPI ranks and from 1 or 2 threads, with and without antialiasing; bad
+# input (syntax error, unknown identifier, unsupported keyword, missing
+# include, missing scene, bad option values) ends with a non-zero status,
+# the expected message once on stderr and no crash; --help, --version,
+# the default output name and the refusal to overwrite the scene.
+#
+# Environment: ZR_BUILDDIR (where bin/zrcube is), MPIRUN (mpirun).
+# OpenMPI leaks memory at exit, so LeakSanitizer is turned off for the
+# runs under mpirun only; the runs without mpirun never initialise MPI
+# and keep it on.  A sanitizer report on stderr fails the test in any
+# build.
+
+set -u
+ZRCUBE="${ZR_BUILDDIR:-$(pwd)}/bin/zrcube"
+MPIRUN="${MPIRUN:-mpirun}"
+: "${OMPI_ALLOW_RUN_AS_ROOT:=1}" "${OMPI_ALLOW_RUN_AS_ROOT_CONFIRM:=1}"
+: "${OMPI_MCA_rmaps_base_oversubscribe:=1}"
+export OMPI_ALLOW_RUN_AS_ROOT OMPI_ALLOW_RUN_AS_ROOT_CONFIRM \
+  OMPI_MCA_rmaps_base_oversubscribe
+MPI_ASAN="detect_leaks=0${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
+
+if [ ! -x "$ZRCUBE" ]; then
+  echo "test_cli.sh: no zrcube at $ZRCUBE" >&2
+  exit 99
+fi
+work=$(mktemp -d "${TMPDIR:-/tmp}/zr_test_cli.XXXXXX") || exit 99
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 99
+
+failures=0
+fail() {
+  echo "FAIL: $*" >&2
+  failures=$((failures + 1))
+}
+
+# run NAME WANT COMMAND...: runs COMMAND with its output in NAME.out and
+# NAME.err; WANT is an exit status, or "fail" for any failure status.
+run() {
+  r_name=$1 r_want=$2
+  shift 2
+  "$@" >"$r_name.out" 2>"$r_name.err"
+  got=$?
+  if [ "$got" -ge 128 ]; then
+    fail "$r_name: killed by a signal (status $got)"
+  elif [ "$r_want" = fail ] && [ "$got" -eq 0 ]; then
+    fail "$r_name: succeeded but should have failed"
+  elif [ "$r_want" != fail ] && [ "$got" -ne "$r_want" ]; then
+    fail "$r_name: exit status $got, expected $r_want"
+  fi
+  if grep -q -e 'Sanitizer' -e 'runtime error:' "$r_name.err"; then
+    fail "$r_name: sanitizer report"
+  fi
+  if [ "$r_want" = 0 ] && [ "$got" -ne 0 ]; then
+    sed "s/^/  $r_name: /" "$r_name.err" >&2
+  fi
+}
+
+serial() { run "$@"; }
+# mpi NAME WANT N ARGS...: zrcube under mpirun with N ranks.
+mpi() {
+  m_name=$1 m_want=$2 m_ranks=$3
+  shift 3
+  run "$m_name" "$m_want" env ASAN_OPTIONS="$MPI_ASAN" \
+    $MPIRUN -n "$m_ranks" "$ZRCUBE" "$@"
+}
+
+# expect NAME TEXT: NAME.err holds TEXT (a fixed string).
+expect() {
+  grep -q -F -e "$2" "$1.err" ||
+    { fail "$1: stderr lacks '$2'"; sed "s/^/  $1: /" "$1.err" >&2; }
+}
+
+# expect_once NAME TEXT: TEXT is on exactly one line of NAME.err, so only
+# rank 0 printed it.
+expect_once() {
+  count=$(grep -c -F -e "$2" "$1.err")
+  [ "$count" -eq 1 ] || fail "$1: '$2' printed $count times, expected once"
+}
+
+same() {
+  cmp -s "$1" "$2" || fail "$1 and $2 differ"
+}
+
+is_png() {
+  [ -s "$1" ] && [ "$(head -c 4 "$1" | od -An -c | tr -d ' ')" = '211PNG' ] ||
+    fail "$1 is not a PNG file"
+}
+
+# ---- a scene with edges, a shadow, a reflection and an include -----
+
+mkdir inc
+cat >inc/colours.inc <<'POV'
+#declare Ground = pigment { checker color rgb 1 color rgb 0.1 }
+POV
+cat >scene.pov <<'POV'
+#include "colours.inc"
+camera { location <0, 1.2, -4> look_at <0, 0.6, 0> }
+light_source { <4, 6, -5> color rgb 1 }
+plane { y, 0 pigment { Ground } }
+sphere { <0, 0.8, 0>, 0.8
+  pigment { color rgb <0.9, 0.3, 0.2> }
+  finish { reflection 0.3 phong 0.8 }
+}
+POV
+SIZE="+W64 +H48"
+
+serial ref_aa 0 "$ZRCUBE" scene.pov +Linc $SIZE +A0.1 +WT1 +Oref_aa.png
+is_png ref_aa.png
+serial ref 0 "$ZRCUBE" scene.pov +Linc $SIZE -A +WT1 +Oref.png
+is_png ref.png
+cmp -s ref.png ref_aa.png && fail "antialiasing changed nothing"
+for n in 1 2 3; do
+  mpi "aa_n$n" 0 "$n" scene.pov +Linc $SIZE +A0.1 +WT2 "+Oaa_n$n.png"
+  same ref_aa.png "aa_n$n.png"
+  mpi "plain_n$n" 0 "$n" scene.pov +Linc $SIZE +WT2 "+Oplain_n$n.png"
+  same ref.png "plain_n$n.png"
+done
+mpi aa_wt1 0 2 scene.pov +Linc $SIZE +A0.1 +WT1 +Oaa_wt1.png
+same ref_aa.png aa_wt1.png
+serial aa_wt3 0 "$ZRCUBE" scene.pov +Linc $SIZE +A0.1 +WT3 +Oaa_wt3.png
+same ref_aa.png aa_wt3.png
+# GNU spellings make the same picture.
+serial long 0 "$ZRCUBE" --input=scene.pov --include-path inc --width=64 \
+  --height=48 --antialias=0.1 --threads=2 --output=long.png
+same ref_aa.png long.png
+
+# ---- output names ---------------------------------------------------
+
+serial default_name 0 "$ZRCUBE" scene.pov +Linc $SIZE
+is_png scene.png
+same ref.png scene.png
+mkdir out
+serial into_dir 0 "$ZRCUBE" scene +Linc $SIZE +Oout
+is_png out/scene.png
+serial ppm 0 "$ZRCUBE" scene.pov +Linc $SIZE +FP +Oimage
+[ "$(head -c 2 image.ppm)" = P6 ] ||
+  fail "+FP +Oimage did not write a P6 image.ppm"
+cp scene.pov scene.keep
+serial overwrite 2 "$ZRCUBE" scene.pov +Linc $SIZE +Oscene.pov
+expect overwrite \
+  "zrcube: refusing to overwrite the scene file 'scene.pov' with the image"
+same scene.keep scene.pov
+serial verbose 0 "$ZRCUBE" scene.pov +Linc $SIZE +V -F
+expect verbose "zrcube: rays: camera 3072,"
+
+# ---- help and version -----------------------------------------------
+
+serial help 0 "$ZRCUBE" --help
+grep -q '^Usage: zrcube' help.out || fail "--help printed no usage"
+serial version 0 "$ZRCUBE" --version
+grep -q '^zrcube [0-9][0-9.]* (libzrcube' version.out ||
+  fail "--version printed '$(cat version.out)'"
+
+# ---- bad input --------------------------------------------------------
+
+cat >syntax.pov <<'POV'
+camera { location <0, 1, -4> look_at 0 }
+sphere { <0, 1, 0>, 1 pigment { color rgb 1 } }
+}
+POV
+cat >undefined.pov <<'POV'
+camera { location <0, 1, -4> look_at 0 }
+light_source { <4, 6, -5> color rgb 1 }
+sphere { <0, 1, 0>, Radius_typo pigment { color rgb 1 } }
+POV
+cat >unsupported.pov <<'POV'
+camera { location <0, 1, -4> look_at 0 }
+light_source { <4, 6, -5> color rgb 1 }
+isosurface { function { x } }
+POV
+cat >noinclude.pov <<'POV'
+#include "no_such_file.inc"
+camera { location <0, 1, -4> look_at 0 }
+POV
+
+# bad NAME PLACE TEXT FILE ARGS...: fails alone and on 2 ranks, printing
+# PLACE ("file:line:col: error:") and TEXT once.
+bad() {
+  b_name=$1 b_place=$2 b_text=$3
+  shift 3
+  serial "$b_name" 1 "$ZRCUBE" "$@"
+  expect "$b_name" "$b_place"
+  expect "$b_name" "$b_text"
+  mpi "${b_name}_mpi" 1 2 "$@"
+  expect_once "${b_name}_mpi" "$b_place"
+  expect "${b_name}_mpi" "$b_text"
+}
+bad syntax "syntax.pov:3:1: error:" "}" syntax.pov $SIZE
+bad undefined "undefined.pov:3:21: error:" "Radius_typo" undefined.pov $SIZE
+bad unsupported "unsupported.pov:3:1: error:" "isosurface" unsupported.pov $SIZE
+bad noinclude "noinclude.pov:1:" "no_such_file.inc" noinclude.pov $SIZE
+bad missing "zrcube: cannot open scene file 'nowhere.pov'" \
+  "No such file or directory" nowhere.pov $SIZE
+[ -e syntax.png ] && fail "a failed parse wrote an image"
+
+for args in "+Wabc" "+W0" "+W-5"; do
+  serial "badopt$args" 2 "$ZRCUBE" scene.pov "$args"
+  expect "badopt$args" \
+    "zrcube: '$args': the width must be a whole number from 1 to 65535"
+done
+mpi badopt_mpi 2 2 scene.pov +H12x
+expect_once badopt_mpi \
+  "zrcube: '+H12x': the height must be a whole number from 1 to 65535"
+serial unknown 2 "$ZRCUBE" scene.pov +Q9
+expect unknown "zrcube: unknown option '+Q9' (try 'zrcube --help')"
+serial noscene 2 "$ZRCUBE" +W10
+expect noscene "zrcube: no scene file given (try 'zrcube --help')"
+
+if [ "$failures" -ne 0 ]; then
+  echo "test_cli.sh: $failures failure(s)" >&2
+  exit 1
+fi
+echo "test_cli.sh: all checks passed"

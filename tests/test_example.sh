@@ -1,0 +1,38 @@
+#!/bin/sh
+# Builds the README's example program the way a user does, with
+# pkg-config (against the uninstalled library), and renders a scene.
+set -eu
+: "${ZR_SRCDIR:?}" "${ZR_BUILDDIR:?}"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+export PKG_CONFIG_PATH="$ZR_BUILDDIR${PKG_CONFIG_PATH:+:$PKG_CONFIG_PATH}"
+if [ -e "$ZR_BUILDDIR/lib/.libs/libzrcube.so" ]; then
+  libs=$(pkg-config --libs libzrcube)
+else
+  libs=$(pkg-config --static --libs libzrcube)
+fi
+# shellcheck disable=SC2086
+${CC:-cc} ${ZR_TEST_CFLAGS:-} $(pkg-config --cflags libzrcube) \
+  "$ZR_SRCDIR/examples/render.c" $libs ${ZR_TEST_LDFLAGS:-} -o "$tmp/render"
+cat > "$tmp/scene.pov" <<'POV'
+#version 3.7;
+global_settings { assumed_gamma 1.0 }
+camera { location <0, 1, -4> look_at <0, 0.5, 0> }
+light_source { <3, 5, -4>, rgb 1 }
+sphere { <0, 0.5, 0>, 0.5 pigment { rgb <1, 0.2, 0.1> } }
+plane { y, 0 pigment { rgb 0.8 } }
+POV
+LD_LIBRARY_PATH="$ZR_BUILDDIR/lib/.libs" "$tmp/render" "$tmp/scene.pov" \
+  "$tmp/out.png"
+# The picture must exist and hold the 8-byte PNG signature.
+test "$(head -c 8 "$tmp/out.png" | od -An -tx1 | tr -d ' \n')" = \
+  "89504e470d0a1a0a"
+# A bad scene must fail with a message that names the file and line.
+printf 'sphere { <0,0,0>, 1 pigment { rgb foo } }\n' > "$tmp/bad.pov"
+if LD_LIBRARY_PATH="$ZR_BUILDDIR/lib/.libs" "$tmp/render" "$tmp/bad.pov" \
+     "$tmp/bad.png" 2> "$tmp/err"; then
+  echo "bad scene rendered" >&2; exit 1
+fi
+grep -q "bad.pov:1:" "$tmp/err"
+test ! -e "$tmp/bad.png"
+echo "example: 1 passed, 0 failed"

@@ -1,0 +1,773 @@
+/*
+ * test_image.c - image files: round trips, gamma, every PNG colour type,
+ * JPEG, PPM/PGM, PFM, broken and truncated files, atomic writing.
+ *
+ * Test images are made here with libpng and libjpeg directly (not through
+ * the code under test), so a reader bug cannot hide behind a matching
+ * writer bug.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <dirent.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <jpeglib.h>
+#include <png.h>
+
+#include "core/context.h"
+#include "image/image.h"
+
+/* ---- fixture: a temporary directory and a diagnostics catcher ---- */
+
+typedef struct fixture {
+  char dir[256];
+  char path[512];
+  zr_context *ctx;
+  char message[1024];
+  char warning[1024];
+  int errors;
+} fixture;
+
+static void catch_diag(const zr_diag *d, void *user) {
+  fixture *fx = user;
+  if (d->level == ZR_DIAG_ERROR) {
+    fx->errors++;
+    snprintf(fx->message, sizeof fx->message, "%s", d->message);
+  } else if (d->level == ZR_DIAG_WARNING) {
+    snprintf(fx->warning, sizeof fx->warning, "%s", d->message);
+  }
+}
+
+static int setup(void **state) {
+  fixture *fx = calloc(1, sizeof *fx);
+  if (!fx)
+    return -1;
+  const char *tmp = getenv("TMPDIR");
+  snprintf(fx->dir, sizeof fx->dir, "%s/zr-image-XXXXXX",
+           tmp && *tmp ? tmp : "/tmp");
+  if (!mkdtemp(fx->dir) || zr_context_new(&fx->ctx) != ZR_OK) {
+    free(fx);
+    return -1;
+  }
+  zr_context_set_diag(fx->ctx, catch_diag, fx);
+  *state = fx;
+  return 0;
+}
+
+static int teardown(void **state) {
+  fixture *fx = *state;
+  DIR *d = opendir(fx->dir);
+  if (d) {
+    struct dirent *e;
+    char p[600];
+    while ((e = readdir(d))) {
+      if (e->d_name[0] == '.')
+        continue;
+      snprintf(p, sizeof p, "%s/%s", fx->dir, e->d_name);
+      if (remove(p) != 0) {
+        /* A directory made by a test: empty it one level down. */
+        DIR *sub = opendir(p);
+        struct dirent *f;
+        char q[900];
+        while (sub && (f = readdir(sub)))
+          if (f->d_name[0] != '.') {
+            snprintf(q, sizeof q, "%s/%s", p, f->d_name);
+            remove(q);
+          }
+        if (sub)
+          closedir(sub);
+        remove(p);
+      }
+    }
+    closedir(d);
+  }
+  rmdir(fx->dir);
+  zr_context_free(fx->ctx);
+  free(fx);
+  return 0;
+}
+
+/* Sets fx->path to a file of the temporary directory. */
+static const char *in_dir(fixture *fx, const char *name) {
+  snprintf(fx->path, sizeof fx->path, "%s/%s", fx->dir, name);
+  return fx->path;
+}
+
+static void write_bytes(const char *path, const void *bytes, size_t n) {
+  FILE *f = fopen(path, "wb");
+  assert_non_null(f);
+  assert_int_equal(fwrite(bytes, 1, n, f), n);
+  assert_int_equal(fclose(f), 0);
+}
+
+static size_t file_size(const char *path) {
+  struct stat st;
+  assert_int_equal(stat(path, &st), 0);
+  return (size_t)st.st_size;
+}
+
+/* Keeps the first n bytes of a file. */
+static void truncate_file(const char *path, size_t n) {
+  assert_int_equal(truncate(path, (off_t)n), 0);
+}
+
+/* Asserts that reading path fails with status and exactly this message. */
+static void assert_read_fails(fixture *fx, const char *path,
+                              zr_status status, const char *message) {
+  zr_image *img = (zr_image *)1;
+  fx->message[0] = '\0';
+  assert_int_equal(zr_image_read(fx->ctx, path, &img), status);
+  assert_string_equal(fx->message, message);
+}
+
+/* A deterministic pseudo-random value in [0, 1). */
+static float sample_value(size_t i) {
+  uint32_t x = (uint32_t)i * 2654435761u + 12345u;
+  x ^= x >> 15;
+  x *= 2246822519u;
+  x ^= x >> 13;
+  return (float)(x % 100000u) / 100000.0f;
+}
+
+static zr_image *make_test_image(int w, int h) {
+  zr_image *img;
+  assert_int_equal(zr_image_new(w, h, &img), ZR_OK);
+  float *px = zr_image_pixels(img);
+  for (size_t i = 0; i < (size_t)w * h * 3; i++)
+    px[i] = sample_value(i);
+  /* Exact ends of the range must survive too. */
+  px[0] = 0.0f;
+  px[1] = 1.0f;
+  return img;
+}
+
+/* ---- a small independent PNG writer (libpng directly) ---- */
+
+typedef struct png_spec {
+  int color_type;
+  int depth;
+  int width;
+  int height;
+  const unsigned char *rows; /* packed rows, libpng's layout */
+  double file_gamma;         /* > 0: write a gAMA chunk */
+  int srgb;                  /* write an sRGB chunk */
+  const png_color *palette;
+  int n_palette;
+  int interlace;
+} png_spec;
+
+static void write_png(const char *path, const png_spec *sp) {
+  FILE *f = fopen(path, "wb");
+  assert_non_null(f);
+  png_structp png =
+      png_create_write_struct(PNG_LIBPNG_VER_STRING, NULL, NULL, NULL);
+  png_infop info = png_create_info_struct(png);
+  assert_non_null(info);
+  assert_int_equal(setjmp(png_jmpbuf(png)), 0);
+  png_init_io(png, f);
+  png_set_IHDR(png, info, (png_uint_32)sp->width, (png_uint_32)sp->height,
+               sp->depth, sp->color_type,
+               sp->interlace ? PNG_INTERLACE_ADAM7 : PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  if (sp->palette)
+    png_set_PLTE(png, info, sp->palette, sp->n_palette);
+  if (sp->file_gamma > 0)
+    png_set_gAMA(png, info, sp->file_gamma);
+  if (sp->srgb)
+    png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+  png_write_info(png, info);
+  int channels = sp->color_type == PNG_COLOR_TYPE_RGB         ? 3
+                 : sp->color_type == PNG_COLOR_TYPE_RGB_ALPHA ? 4
+                 : sp->color_type == PNG_COLOR_TYPE_GRAY_ALPHA ? 2
+                                                               : 1;
+  size_t rowbytes =
+      ((size_t)sp->width * (size_t)channels * (size_t)sp->depth + 7) / 8;
+  png_bytep *ptrs = malloc((size_t)sp->height * sizeof *ptrs);
+  assert_non_null(ptrs);
+  for (int y = 0; y < sp->height; y++)
+    ptrs[y] = (png_bytep)sp->rows + (size_t)y * rowbytes;
+  png_write_image(png, ptrs);
+  png_write_end(png, NULL);
+  png_destroy_write_struct(&png, &info);
+  free(ptrs);
+  assert_int_equal(fclose(f), 0);
+}
+
+/* ---- a small JPEG writer (libjpeg directly) ---- */
+
+static void write_jpeg(const char *path, int w, int h, int components,
+                       const unsigned char *pixels) {
+  struct jpeg_compress_struct ci;
+  struct jpeg_error_mgr err;
+  ci.err = jpeg_std_error(&err);
+  jpeg_create_compress(&ci);
+  FILE *f = fopen(path, "wb");
+  assert_non_null(f);
+  jpeg_stdio_dest(&ci, f);
+  ci.image_width = (JDIMENSION)w;
+  ci.image_height = (JDIMENSION)h;
+  ci.input_components = components;
+  ci.in_color_space = components == 3 ? JCS_RGB : JCS_GRAYSCALE;
+  jpeg_set_defaults(&ci);
+  jpeg_set_quality(&ci, 100, TRUE);
+  jpeg_start_compress(&ci, TRUE);
+  while (ci.next_scanline < ci.image_height) {
+    JSAMPROW row = (JSAMPROW)pixels + ci.next_scanline * (size_t)w *
+                                          (size_t)components;
+    jpeg_write_scanlines(&ci, &row, 1);
+  }
+  jpeg_finish_compress(&ci);
+  jpeg_destroy_compress(&ci);
+  assert_int_equal(fclose(f), 0);
+}
+
+/* ---- tests ---- */
+
+static void test_image_new_checks_size(void **state) {
+  (void)state;
+  zr_image *img = NULL;
+  assert_int_equal(zr_image_new(0, 5, &img), ZR_EINVAL);
+  assert_int_equal(zr_image_new(5, -1, &img), ZR_EINVAL);
+  assert_int_equal(zr_image_new(ZR_IMAGE_MAX_SIDE + 1, 1, &img), ZR_ELIMIT);
+  assert_int_equal(zr_image_new(40000, 40000, &img), ZR_ELIMIT);
+  assert_int_equal(zr_image_new(3, 2, &img), ZR_OK);
+  assert_int_equal(zr_image_width(img), 3);
+  assert_int_equal(zr_image_height(img), 2);
+  for (int i = 0; i < 18; i++)
+    assert_true(zr_image_pixels_const(img)[i] == 0.0f);
+  zr_image_free(img);
+  zr_image_free(NULL);
+}
+
+static void test_image_format_from_name(void **state) {
+  (void)state;
+  assert_int_equal(zr_image_format_from_name("a/b.png"), ZR_FORMAT_PNG8);
+  assert_int_equal(zr_image_format_from_name("B.PNG"), ZR_FORMAT_PNG8);
+  assert_int_equal(zr_image_format_from_name("x.ppm"), ZR_FORMAT_PPM);
+  assert_int_equal(zr_image_format_from_name("x.pfm"), ZR_FORMAT_PFM);
+  assert_int_equal(zr_image_format_from_name("x.jpg"), ZR_FORMAT_JPEG);
+  assert_int_equal(zr_image_format_from_name("x.jpeg"), ZR_FORMAT_JPEG);
+  assert_int_equal(zr_image_format_from_name("x.tga"), ZR_FORMAT_AUTO);
+  assert_int_equal(zr_image_format_from_name("dir.png/x"), ZR_FORMAT_AUTO);
+  assert_int_equal(zr_image_format_from_name(NULL), ZR_FORMAT_AUTO);
+}
+
+static void test_image_srgb_known_values(void **state) {
+  (void)state;
+  /* Codes are exact integers: the analytic values are 187.52 (0.5 linear)
+     and 127.5 + 0.7 (0.5 in a gamma 2.2 working space, 0.2176 linear). */
+  assert_int_equal(zr__encode_sample(0.5f, 1.0, 255), 188);
+  assert_int_equal(zr__encode_sample(0.0f, 1.0, 255), 0);
+  assert_int_equal(zr__encode_sample(1.0f, 1.0, 255), 255);
+  assert_int_equal(zr__encode_sample(-3.0f, 1.0, 255), 0);
+  assert_int_equal(zr__encode_sample(7.0f, 1.0, 255), 255);
+  assert_int_equal(zr__encode_sample(NAN, 1.0, 255), 0);
+  assert_int_equal(zr__encode_sample(0.5f, 2.2, 255), 128);
+  assert_int_equal(zr__encode_sample(0.5f, 1.0, 65535), 48192);
+  /* The curve's two pieces meet: 1e-9 is far above rounding error. */
+  assert_true(fabs(zr__srgb_decode(zr__srgb_encode(0.0031308)) -
+                   0.0031308) < 1e-9);
+  assert_true(fabs(zr__srgb_decode(188.0 / 255) - 0.5029) < 1e-4);
+}
+
+/* Compares two images in sRGB-encoded space within tol. */
+static void assert_encoded_close(const zr_image *a, const zr_image *b,
+                                 double tol) {
+  assert_int_equal(zr_image_width(a), zr_image_width(b));
+  assert_int_equal(zr_image_height(a), zr_image_height(b));
+  const float *pa = zr_image_pixels_const(a);
+  const float *pb = zr_image_pixels_const(b);
+  size_t n = (size_t)zr_image_width(a) * zr_image_height(a) * 3;
+  for (size_t i = 0; i < n; i++) {
+    double d = fabs(zr__srgb_encode(pa[i]) - zr__srgb_encode(pb[i]));
+    if (d > tol)
+      fail_msg("sample %zu: %g vs %g", i, pa[i], pb[i]);
+  }
+}
+
+static void round_trip(fixture *fx, const char *name, zr_image_format fmt,
+                       double tol) {
+  zr_image *img = make_test_image(37, 23);
+  const char *path = in_dir(fx, name);
+  assert_int_equal(zr_image_write(fx->ctx, img, path, fmt, 1.0), ZR_OK);
+  zr_image *back = NULL;
+  assert_int_equal(zr_image_read(fx->ctx, path, &back), ZR_OK);
+  assert_encoded_close(img, back, tol);
+  zr_image_free(img);
+  zr_image_free(back);
+}
+
+static void test_image_png8_round_trip(void **state) {
+  /* Rounding to a code loses at most half a step, 0.5/255, in encoded
+     space; the tolerance is a whole step to allow float noise. */
+  round_trip(*state, "rt8.png", ZR_FORMAT_AUTO, 1.0 / 255);
+}
+
+static void test_image_png16_round_trip(void **state) {
+  /* Half a step of 1/65535 plus float error in the decode table (about
+     1e-7 relative, magnified at most 12.92 times by the sRGB slope). */
+  round_trip(*state, "rt16.png", ZR_FORMAT_PNG16, 1.0 / 65535 + 2e-6);
+}
+
+static void test_image_ppm_round_trip(void **state) {
+  round_trip(*state, "rt.ppm", ZR_FORMAT_AUTO, 1.0 / 255);
+}
+
+static void test_image_pfm_round_trip_exact(void **state) {
+  fixture *fx = *state;
+  zr_image *img = make_test_image(5, 3);
+  float *px = zr_image_pixels(img);
+  px[3] = -2.5f; /* PFM keeps values outside [0, 1] */
+  px[4] = 1e6f;
+  px[5] = 1.0f / 3.0f;
+  const char *path = in_dir(fx, "rt.pfm");
+  assert_int_equal(zr_image_write(fx->ctx, img, path, ZR_FORMAT_AUTO, 2.2),
+                   ZR_OK);
+  zr_image *back = NULL;
+  assert_int_equal(zr_image_read(fx->ctx, path, &back), ZR_OK);
+  assert_memory_equal(zr_image_pixels_const(back), px, 5 * 3 * 3 * 4);
+  zr_image_free(img);
+  zr_image_free(back);
+}
+
+static void test_image_write_undoes_assumed_gamma(void **state) {
+  fixture *fx = *state;
+  zr_image *img;
+  assert_int_equal(zr_image_new(1, 1, &img), ZR_OK);
+  zr_image_pixels(img)[0] = 0.5f;
+  const char *path = in_dir(fx, "g.ppm");
+  assert_int_equal(zr_image_write(fx->ctx, img, path, ZR_FORMAT_PPM, 2.2),
+                   ZR_OK);
+  FILE *f = fopen(path, "rb");
+  unsigned char buf[32];
+  size_t n = fread(buf, 1, sizeof buf, f);
+  fclose(f);
+  assert_int_equal(n, 14); /* "P6\n1 1\n255\n" and one pixel */
+  assert_memory_equal(buf, "P6\n1 1\n255\n", 11);
+  assert_int_equal(buf[11], 128);
+  assert_int_equal(buf[12], 0);
+  zr_image_free(img);
+}
+
+/* Reads path and returns the first pixel's red channel as an sRGB code. */
+static double first_code(fixture *fx, const char *path, zr_image **keep) {
+  zr_image *img = NULL;
+  assert_int_equal(zr_image_read(fx->ctx, path, &img), ZR_OK);
+  double code = zr__srgb_encode(zr_image_pixels_const(img)[0]) * 255;
+  if (keep)
+    *keep = img;
+  else
+    zr_image_free(img);
+  return code;
+}
+
+static void test_image_png_grey_palette_alpha(void **state) {
+  fixture *fx = *state;
+  /* 8-bit grey: one code maps to the same code on all three channels. */
+  unsigned char grey[2] = {10, 200};
+  png_spec sp = {PNG_COLOR_TYPE_GRAY, 8, 2, 1, grey, 0, 0, NULL, 0, 0};
+  const char *path = in_dir(fx, "grey.png");
+  write_png(path, &sp);
+  zr_image *img;
+  assert_true(fabs(first_code(fx, path, &img) - 10) < 1e-3);
+  const float *px = zr_image_pixels_const(img);
+  assert_true(px[0] == px[1] && px[1] == px[2]);
+  assert_true(fabs(zr__srgb_encode(px[3]) * 255 - 200) < 1e-3);
+  zr_image_free(img);
+
+  /* 2-bit grey: code 2 of 3 is 170 of 255. */
+  unsigned char grey2[1] = {0x80}; /* first pixel 10b */
+  png_spec sp2 = {PNG_COLOR_TYPE_GRAY, 2, 1, 1, grey2, 0, 0, NULL, 0, 0};
+  path = in_dir(fx, "grey2.png");
+  write_png(path, &sp2);
+  assert_true(fabs(first_code(fx, path, NULL) - 170) < 1e-3);
+
+  /* A palette: index 1 is (40, 50, 60). */
+  png_color pal[2] = {{0, 0, 0}, {40, 50, 60}};
+  unsigned char idx[1] = {1};
+  png_spec sp3 = {PNG_COLOR_TYPE_PALETTE, 8, 1, 1, idx, 0, 0, pal, 2, 0};
+  path = in_dir(fx, "pal.png");
+  write_png(path, &sp3);
+  assert_int_equal(zr_image_read(fx->ctx, path, &img), ZR_OK);
+  px = zr_image_pixels_const(img);
+  assert_true(fabs(zr__srgb_encode(px[1]) * 255 - 50) < 1e-3);
+  assert_true(fabs(zr__srgb_encode(px[2]) * 255 - 60) < 1e-3);
+  zr_image_free(img);
+
+  /* RGBA: alpha is dropped, the stored colour kept (not composited). */
+  unsigned char rgba[4] = {100, 150, 200, 0};
+  png_spec sp4 = {PNG_COLOR_TYPE_RGB_ALPHA, 8, 1, 1, rgba, 0, 0, NULL, 0, 0};
+  path = in_dir(fx, "rgba.png");
+  write_png(path, &sp4);
+  assert_true(fabs(first_code(fx, path, NULL) - 100) < 1e-3);
+
+  /* 16-bit grey with alpha, interlaced. */
+  unsigned char ga16[4 * 3] = {0x80, 0x00, 0xff, 0xff, 0, 0, 0, 0,
+                               0, 0, 0, 0};
+  png_spec sp5 = {PNG_COLOR_TYPE_GRAY_ALPHA, 16, 3, 1, ga16, 0, 0,
+                  NULL, 0, 1};
+  path = in_dir(fx, "ga16.png");
+  write_png(path, &sp5);
+  assert_true(fabs(first_code(fx, path, NULL) - 32768.0 / 65535 * 255) <
+              1e-3);
+}
+
+static void test_image_png_honours_gama(void **state) {
+  fixture *fx = *state;
+  /* gAMA 1.0 means the codes are linear: 128 is 128/255 of full light
+     (1e-6: float precision of the table). */
+  unsigned char v[1] = {128};
+  png_spec sp = {PNG_COLOR_TYPE_GRAY, 8, 1, 1, v, 1.0, 0, NULL, 0, 0};
+  const char *path = in_dir(fx, "lin.png");
+  write_png(path, &sp);
+  zr_image *img;
+  assert_int_equal(zr_image_read(fx->ctx, path, &img), ZR_OK);
+  assert_true(fabs(zr_image_pixels_const(img)[0] - 128.0 / 255) < 1e-6);
+  zr_image_free(img);
+  /* gAMA 1/2.2: a pure power law, not the sRGB curve. */
+  sp.file_gamma = 1.0 / 2.2;
+  path = in_dir(fx, "g22.png");
+  write_png(path, &sp);
+  assert_int_equal(zr_image_read(fx->ctx, path, &img), ZR_OK);
+  assert_true(fabs(zr_image_pixels_const(img)[0] -
+                   pow(128.0 / 255, 2.2)) < 1e-5);
+  zr_image_free(img);
+  /* An sRGB chunk means the sRGB curve, though libpng also reports the
+     gAMA of 1/2.2 that goes with it: the two differ by 4e-3 here. */
+  sp.file_gamma = 0;
+  sp.srgb = 1;
+  path = in_dir(fx, "srgb.png");
+  write_png(path, &sp);
+  assert_int_equal(zr_image_read(fx->ctx, path, &img), ZR_OK);
+  assert_true(fabs(zr_image_pixels_const(img)[0] -
+                   zr__srgb_decode(128.0 / 255)) < 1e-6);
+  zr_image_free(img);
+}
+
+static void test_image_jpeg_read(void **state) {
+  fixture *fx = *state;
+  enum { W = 16, H = 8 };
+  unsigned char rgb[W * H * 3], grey[W * H];
+  for (int i = 0; i < W * H; i++) {
+    rgb[3 * i] = 200;
+    rgb[3 * i + 1] = 100;
+    rgb[3 * i + 2] = 30;
+    grey[i] = 77;
+  }
+  const char *path = in_dir(fx, "flat.jpg");
+  write_jpeg(path, W, H, 3, rgb);
+  zr_image *img;
+  assert_int_equal(zr_image_read(fx->ctx, path, &img), ZR_OK);
+  assert_int_equal(zr_image_width(img), W);
+  assert_int_equal(zr_image_height(img), H);
+  /* A flat colour at quality 100 survives within the rounding of the
+     YCbCr conversion: 2 codes. */
+  const float *px = zr_image_pixels_const(img);
+  for (int i = 0; i < W * H * 3; i++)
+    assert_true(fabs(zr__srgb_encode(px[i]) * 255 - rgb[i]) <= 2.0);
+  zr_image_free(img);
+  path = in_dir(fx, "grey.jpg");
+  write_jpeg(path, W, H, 1, grey);
+  assert_int_equal(zr_image_read(fx->ctx, path, &img), ZR_OK);
+  px = zr_image_pixels_const(img);
+  assert_true(fabs(zr__srgb_encode(px[5]) * 255 - 77) <= 1.0);
+  assert_true(px[3] == px[4] && px[4] == px[5]);
+  zr_image_free(img);
+}
+
+static void test_image_ppm_variants(void **state) {
+  fixture *fx = *state;
+  /* P3 with comments and maxval 1000: 500/1000 is code 127.5. */
+  const char p3[] = "P3\n# a comment\n2 1 # size\n1000\n"
+                    "500 0 1000\n 0 0 0\n";
+  const char *path = in_dir(fx, "a.ppm");
+  write_bytes(path, p3, sizeof p3 - 1);
+  zr_image *img;
+  assert_int_equal(zr_image_read(fx->ctx, path, &img), ZR_OK);
+  const float *px = zr_image_pixels_const(img);
+  assert_true(fabs(px[0] - zr__srgb_decode(0.5)) < 1e-6);
+  assert_true(px[2] == 1.0f);
+  zr_image_free(img);
+  /* P5, 16 bit big endian: 0x8000 of 65535. */
+  const unsigned char p5[] = "P5 1 1 65535\n\x80\x00";
+  path = in_dir(fx, "b.pgm");
+  write_bytes(path, p5, sizeof p5 - 1);
+  assert_int_equal(zr_image_read(fx->ctx, path, &img), ZR_OK);
+  px = zr_image_pixels_const(img);
+  assert_true(fabs(px[0] - zr__srgb_decode(32768.0 / 65535)) < 1e-6);
+  assert_true(px[0] == px[2]);
+  zr_image_free(img);
+  /* P2 grey ASCII. */
+  const char p2[] = "P2 2 1 255 0 255\n";
+  path = in_dir(fx, "c.pgm");
+  write_bytes(path, p2, sizeof p2 - 1);
+  assert_int_equal(zr_image_read(fx->ctx, path, &img), ZR_OK);
+  assert_true(zr_image_pixels_const(img)[4] == 1.0f);
+  zr_image_free(img);
+}
+
+static void test_image_pfm_big_endian_bottom_up(void **state) {
+  fixture *fx = *state;
+  /* Grey, 1x2, big endian: the file's first row (2.0) is the bottom. */
+  const unsigned char pf[] = "Pf\n1 2\n1.0\n"
+                             "\x40\x00\x00\x00"  /* 2.0 */
+                             "\x3f\x80\x00\x00"; /* 1.0 */
+  const char *path = in_dir(fx, "be.pfm");
+  write_bytes(path, pf, sizeof pf - 1);
+  zr_image *img;
+  assert_int_equal(zr_image_read(fx->ctx, path, &img), ZR_OK);
+  const float *px = zr_image_pixels_const(img);
+  assert_true(px[0] == 1.0f && px[2] == 1.0f);
+  assert_true(px[3] == 2.0f && px[5] == 2.0f);
+  zr_image_free(img);
+}
+
+static void test_image_broken_files(void **state) {
+  fixture *fx = *state;
+  char expect[900];
+  const char *path = in_dir(fx, "broken.png");
+  write_bytes(path, "hello, world\n", 13);
+  snprintf(expect, sizeof expect, "%s: not a PNG file", path);
+  assert_read_fails(fx, path, ZR_EFORMAT, expect);
+
+  path = in_dir(fx, "empty.dat");
+  write_bytes(path, "", 0);
+  snprintf(expect, sizeof expect, "%s: not a PNG, JPEG, PPM or PFM file",
+           path);
+  assert_read_fails(fx, path, ZR_EFORMAT, expect);
+
+  path = in_dir(fx, "missing.png");
+  snprintf(expect, sizeof expect, "%s: file not found", path);
+  assert_read_fails(fx, path, ZR_ENOTFOUND, expect);
+
+  /* Truncated PNG: half of a valid file. */
+  zr_image *img = make_test_image(40, 30);
+  path = in_dir(fx, "trunc.png");
+  assert_int_equal(zr_image_write(fx->ctx, img, path, ZR_FORMAT_PNG8, 1.0),
+                   ZR_OK);
+  truncate_file(path, file_size(path) / 2);
+  snprintf(expect, sizeof expect, "%s: truncated PNG file", path);
+  assert_read_fails(fx, path, ZR_EFORMAT, expect);
+  /* Only the signature and part of IHDR. */
+  truncate_file(path, 20);
+  assert_read_fails(fx, path, ZR_EFORMAT, expect);
+
+  /* A damaged IHDR: libpng's own words follow ours. */
+  path = in_dir(fx, "crc.png");
+  assert_int_equal(zr_image_write(fx->ctx, img, path, ZR_FORMAT_PNG8, 1.0),
+                   ZR_OK);
+  FILE *f = fopen(path, "r+b");
+  assert_non_null(f);
+  fseek(f, 17, SEEK_SET); /* inside the width field */
+  fputc(0x55, f);
+  assert_int_equal(fclose(f), 0);
+  snprintf(expect, sizeof expect, "%s: invalid PNG file: IHDR: CRC error",
+           path);
+  assert_read_fails(fx, path, ZR_EFORMAT, expect);
+  zr_image_free(img);
+
+  /* Truncated JPEG, and one whose data after the markers is garbage. */
+  unsigned char rgb[32 * 32 * 3];
+  for (size_t i = 0; i < sizeof rgb; i++)
+    rgb[i] = (unsigned char)(i * 7);
+  path = in_dir(fx, "trunc.jpg");
+  write_jpeg(path, 32, 32, 3, rgb);
+  truncate_file(path, file_size(path) * 2 / 3);
+  snprintf(expect, sizeof expect, "%s: truncated JPEG file", path);
+  assert_read_fails(fx, path, ZR_EFORMAT, expect);
+  /* A frame header asking for 12-bit samples, which libjpeg refuses. */
+  path = in_dir(fx, "bad.jpg");
+  write_jpeg(path, 32, 32, 3, rgb);
+  f = fopen(path, "r+b");
+  assert_non_null(f);
+  unsigned char head[1024];
+  size_t n = fread(head, 1, sizeof head, f);
+  size_t sof = 0;
+  for (size_t i = 2; i + 4 < n && !sof; i++)
+    if (head[i] == 0xff && head[i + 1] == 0xc0)
+      sof = i;
+  assert_true(sof > 0);
+  fseek(f, (long)sof + 4, SEEK_SET); /* marker, length, then precision */
+  fputc(12, f);
+  fclose(f);
+  snprintf(expect, sizeof expect,
+           "%s: invalid JPEG file: Unsupported JPEG data precision 12",
+           path);
+  assert_read_fails(fx, path, ZR_EFORMAT, expect);
+
+  /* Damaged scan data still decodes, with one warning. */
+  path = in_dir(fx, "damaged.jpg");
+  write_jpeg(path, 32, 32, 3, rgb);
+  f = fopen(path, "r+b");
+  assert_non_null(f);
+  n = fread(head, 1, sizeof head, f);
+  size_t sos = 0;
+  for (size_t i = 2; i + 1 < n; i++)
+    if (head[i] == 0xff && head[i + 1] == 0xda)
+      sos = i;
+  assert_true(sos > 0 && sos + 40 < n);
+  fseek(f, (long)(sos + (n - sos) / 2), SEEK_SET);
+  fputc(0xff, f); /* a restart marker where none is due */
+  fputc(0xd5, f);
+  assert_int_equal(fclose(f), 0);
+  fx->warning[0] = '\0';
+  assert_int_equal(zr_image_read(fx->ctx, path, &img), ZR_OK);
+  zr_image_free(img);
+  snprintf(expect, sizeof expect,
+           "%s: Corrupt JPEG data: premature end of data segment", path);
+  assert_string_equal(fx->warning, expect);
+
+  /* Netpbm and PFM. */
+  path = in_dir(fx, "t.ppm");
+  write_bytes(path, "P6 4 4 255\nabc", 14);
+  snprintf(expect, sizeof expect, "%s: truncated PPM file", path);
+  assert_read_fails(fx, path, ZR_EFORMAT, expect);
+  path = in_dir(fx, "h.ppm");
+  write_bytes(path, "P6 4", 4);
+  snprintf(expect, sizeof expect, "%s: truncated PPM file", path);
+  assert_read_fails(fx, path, ZR_EFORMAT, expect);
+  path = in_dir(fx, "m.ppm");
+  write_bytes(path, "P3 1 1 10 11 0 0\n", 17);
+  snprintf(expect, sizeof expect,
+           "%s: invalid PPM file: sample larger than maxval", path);
+  assert_read_fails(fx, path, ZR_EFORMAT, expect);
+  path = in_dir(fx, "w.ppm");
+  write_bytes(path, "P6 x 1 255\n", 11);
+  snprintf(expect, sizeof expect, "%s: invalid PPM file: bad width", path);
+  assert_read_fails(fx, path, ZR_EFORMAT, expect);
+  path = in_dir(fx, "big.ppm");
+  write_bytes(path, "P6 60000 60000 255\n", 19);
+  snprintf(expect, sizeof expect,
+           "%s: image of 60000x60000 pixels is larger than the limit "
+           "(65536 per side, 134217728 pixels)",
+           path);
+  assert_read_fails(fx, path, ZR_ELIMIT, expect);
+  path = in_dir(fx, "bits.pbm");
+  write_bytes(path, "P4 8 1\n\xff", 8);
+  snprintf(expect, sizeof expect,
+           "%s: Netpbm type P4 is not supported (use P2, P3, P5 or P6)",
+           path);
+  assert_read_fails(fx, path, ZR_EUNSUPPORTED, expect);
+  path = in_dir(fx, "t.pfm");
+  write_bytes(path, "PF\n2 2\n-1.0\n\0\0\0\0", 16);
+  snprintf(expect, sizeof expect, "%s: truncated PFM file", path);
+  assert_read_fails(fx, path, ZR_EFORMAT, expect);
+  path = in_dir(fx, "s.pfm");
+  write_bytes(path, "PF\n2 2\n0\n", 9);
+  snprintf(expect, sizeof expect, "%s: invalid PFM file: bad scale", path);
+  assert_read_fails(fx, path, ZR_EFORMAT, expect);
+}
+
+/* Counts the directory's entries other than . and .. */
+static int count_entries(const char *dir) {
+  DIR *d = opendir(dir);
+  assert_non_null(d);
+  int n = 0;
+  struct dirent *e;
+  while ((e = readdir(d)))
+    if (strcmp(e->d_name, ".") && strcmp(e->d_name, ".."))
+      n++;
+  closedir(d);
+  return n;
+}
+
+static void test_image_write_is_atomic(void **state) {
+  fixture *fx = *state;
+  zr_image *img = make_test_image(4, 4);
+  char expect[900];
+  /* The target is a non-empty directory: rename fails, nothing is left
+     behind and the directory is untouched. */
+  const char *path = in_dir(fx, "out.png");
+  assert_int_equal(mkdir(path, 0777), 0);
+  char inner[600];
+  snprintf(inner, sizeof inner, "%s/keep", path);
+  write_bytes(inner, "x", 1);
+  fx->message[0] = '\0';
+  assert_int_equal(zr_image_write(fx->ctx, img, path, ZR_FORMAT_AUTO, 1.0),
+                   ZR_EIO);
+  assert_non_null(strstr(fx->message, ": cannot rename "));
+  assert_int_equal(count_entries(fx->dir), 1);
+  assert_int_equal(count_entries(path), 1);
+
+  /* A missing directory: no file appears. */
+  snprintf(inner, sizeof inner, "%s/no/such/x.png", fx->dir);
+  assert_int_equal(zr_image_write(fx->ctx, img, inner, ZR_FORMAT_AUTO, 1.0),
+                   ZR_EIO);
+  assert_int_equal(count_entries(fx->dir), 1);
+
+  /* An existing file is replaced whole, and no temporary remains. */
+  path = in_dir(fx, "o.ppm");
+  write_bytes(path, "old", 3);
+  assert_int_equal(zr_image_write(fx->ctx, img, path, ZR_FORMAT_AUTO, 1.0),
+                   ZR_OK);
+  assert_int_equal(file_size(path), 11 + 4 * 4 * 3);
+  assert_int_equal(count_entries(fx->dir), 2);
+
+  path = in_dir(fx, "o.jpg");
+  snprintf(expect, sizeof expect,
+           "%s: writing JPEG is not supported (use .png, .ppm or .pfm)",
+           path);
+  assert_int_equal(zr_image_write(fx->ctx, img, path, ZR_FORMAT_AUTO, 1.0),
+                   ZR_EUNSUPPORTED);
+  assert_string_equal(fx->message, expect);
+  path = in_dir(fx, "o.tga");
+  snprintf(expect, sizeof expect,
+           "%s: cannot tell the image format from the name (use .png, "
+           ".ppm or .pfm)",
+           path);
+  assert_int_equal(zr_image_write(fx->ctx, img, path, ZR_FORMAT_AUTO, 1.0),
+                   ZR_EINVAL);
+  assert_string_equal(fx->message, expect);
+  assert_int_equal(count_entries(fx->dir), 2);
+  zr_image_free(img);
+}
+
+static void test_image_null_context_is_silent(void **state) {
+  (void)state;
+  zr_image *img = NULL;
+  assert_int_equal(zr_image_read(NULL, "/nonexistent/zr.png", &img),
+                   ZR_ENOTFOUND);
+  assert_null(img);
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test(test_image_new_checks_size),
+      cmocka_unit_test(test_image_format_from_name),
+      cmocka_unit_test(test_image_srgb_known_values),
+      cmocka_unit_test_setup_teardown(test_image_png8_round_trip, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_image_png16_round_trip, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_image_ppm_round_trip, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_image_pfm_round_trip_exact, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_image_write_undoes_assumed_gamma,
+                                      setup, teardown),
+      cmocka_unit_test_setup_teardown(test_image_png_grey_palette_alpha,
+                                      setup, teardown),
+      cmocka_unit_test_setup_teardown(test_image_png_honours_gama, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_image_jpeg_read, setup, teardown),
+      cmocka_unit_test_setup_teardown(test_image_ppm_variants, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_image_pfm_big_endian_bottom_up,
+                                      setup, teardown),
+      cmocka_unit_test_setup_teardown(test_image_broken_files, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_image_write_is_atomic, setup,
+                                      teardown),
+      cmocka_unit_test(test_image_null_context_is_silent),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}

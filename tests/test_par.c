@@ -1,0 +1,416 @@
+/*
+ * test_par.c - lib/par without an MPI launcher: interleaved rows, the file
+ * bundle and its readers, the thread pool, and the one-rank world.
+ *
+ * The multi-rank paths (broadcast, Allgatherv, Gatherv) run under mpirun
+ * in tests/test_cli.sh, which compares images made with 1, 2 and 3 ranks.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "par/bundle.h"
+#include "par/par.h"
+#include "par/pool.h"
+#include "par/rows.h"
+#include "zrcube.h"
+
+/* ---- rows ---------------------------------------------------------- */
+
+static void test_par_rows_cover_each_row_once(void **state) {
+  (void)state;
+  for (int height = 0; height <= 17; height++) {
+    for (int nranks = 1; nranks <= 6; nranks++) {
+      int owner[17];
+      memset(owner, -1, sizeof owner);
+      int total = 0;
+      for (int rank = 0; rank < nranks; rank++) {
+        int count = zr__rows_count(height, rank, nranks);
+        total += count;
+        for (int i = 0; i < count; i++) {
+          int y = zr__rows_row(i, rank, nranks);
+          assert_in_range(y, 0, height - 1);
+          assert_int_equal(owner[y], -1);
+          owner[y] = rank;
+        }
+      }
+      assert_int_equal(total, height);
+    }
+  }
+  /* More ranks than rows: the extra ranks get nothing. */
+  assert_int_equal(zr__rows_count(2, 5, 8), 0);
+  assert_int_equal(zr__rows_count(10, 0, 0), 0);
+}
+
+static void test_par_rows_uninterleave_restores_order(void **state) {
+  (void)state;
+  enum { HEIGHT = 11, NRANKS = 3, ROW = 6 };
+  float rank_major[HEIGHT * ROW], image[HEIGHT * ROW];
+  float *p = rank_major;
+  for (int rank = 0; rank < NRANKS; rank++)
+    for (int i = 0; i < zr__rows_count(HEIGHT, rank, NRANKS); i++)
+      for (int k = 0; k < ROW; k++)
+        *p++ = (float)(100 * zr__rows_row(i, rank, NRANKS) + k);
+  assert_ptr_equal(p, rank_major + HEIGHT * ROW);
+  zr__rows_uninterleave(rank_major, image, HEIGHT, NRANKS, ROW);
+  for (int y = 0; y < HEIGHT; y++)
+    for (int k = 0; k < ROW; k++)
+      assert_true(image[y * ROW + k] == (float)(100 * y + k));
+}
+
+/* ---- bundle -------------------------------------------------------- */
+
+static void fill_bundle(zr_bundle *b) {
+  static const char binary[] = {'a', '\0', 'b', '\xff', '\n'};
+  zr__bundle_init(b);
+  assert_int_equal(zr__bundle_add(b, "scene.pov", "sphere {}", 9), ZR_OK);
+  assert_int_equal(zr__bundle_add(b, "empty.inc", "", 0), ZR_OK);
+  assert_int_equal(zr__bundle_add(b, "/abs/bin.dat", binary, sizeof binary),
+                   ZR_OK);
+}
+
+static void test_par_bundle_roundtrip(void **state) {
+  (void)state;
+  zr_bundle b, copy;
+  fill_bundle(&b);
+  char *blob;
+  size_t size;
+  assert_int_equal(zr__bundle_serialise(&b, &blob, &size), ZR_OK);
+  /* magic + count + per file (2 lengths + path + bytes) */
+  assert_int_equal(size, 12 + (16 + 9 + 9) + (16 + 9 + 0) + (16 + 12 + 5));
+  zr__bundle_init(&copy);
+  assert_int_equal(zr__bundle_deserialise(&copy, blob, size), ZR_OK);
+  assert_int_equal(copy.count, b.count);
+  for (size_t i = 0; i < b.count; i++) {
+    assert_string_equal(copy.files[i].path, b.files[i].path);
+    assert_int_equal(copy.files[i].size, b.files[i].size);
+    assert_memory_equal(copy.files[i].bytes, b.files[i].bytes,
+                        b.files[i].size ? b.files[i].size : 1);
+  }
+  assert_non_null(zr__bundle_find(&copy, "empty.inc"));
+  assert_null(zr__bundle_find(&copy, "missing.inc"));
+  free(blob);
+  zr__bundle_free(&b);
+  zr__bundle_free(&copy);
+  zr__bundle_free(NULL);
+}
+
+static void test_par_bundle_rejects_malformed(void **state) {
+  (void)state;
+  zr_bundle b, copy;
+  fill_bundle(&b);
+  char *blob;
+  size_t size;
+  assert_int_equal(zr__bundle_serialise(&b, &blob, &size), ZR_OK);
+  zr__bundle_init(&copy);
+  /* Every truncation is caught, and leaves the target untouched. */
+  for (size_t n = 0; n < size; n++) {
+    assert_int_equal(zr__bundle_deserialise(&copy, blob, n), ZR_EFORMAT);
+    assert_int_equal(copy.count, 0);
+  }
+  char *longer = malloc(size + 1);
+  memcpy(longer, blob, size);
+  longer[size] = 'x';
+  assert_int_equal(zr__bundle_deserialise(&copy, longer, size + 1),
+                   ZR_EFORMAT);
+  /* A length larger than the blob. */
+  memcpy(longer, blob, size);
+  longer[12 + 7] = '\x7f';
+  assert_int_equal(zr__bundle_deserialise(&copy, longer, size), ZR_EFORMAT);
+  /* A NUL inside a path. */
+  memcpy(longer, blob, size);
+  longer[12 + 8 + 2] = '\0';
+  assert_int_equal(zr__bundle_deserialise(&copy, longer, size), ZR_EFORMAT);
+  /* Another magic. */
+  memcpy(longer, blob, size);
+  longer[3] = '2';
+  assert_int_equal(zr__bundle_deserialise(&copy, longer, size), ZR_EFORMAT);
+  assert_int_equal(copy.count, 0);
+  free(longer);
+  free(blob);
+  zr__bundle_free(&b);
+}
+
+static void write_file(const char *path, const char *text) {
+  FILE *f = fopen(path, "wb");
+  assert_non_null(f);
+  fputs(text, f);
+  fclose(f);
+}
+
+static void test_par_bundle_records_and_serves(void **state) {
+  (void)state;
+  char dir[] = "/tmp/zr_test_par_XXXXXX";
+  assert_non_null(mkdtemp(dir));
+  char scene[64], missing[64];
+  snprintf(scene, sizeof scene, "%s/a.pov", dir);
+  snprintf(missing, sizeof missing, "%s/none.inc", dir);
+  write_file(scene, "#include \"none.inc\"\n");
+
+  zr_bundle recorded;
+  zr__bundle_init(&recorded);
+  char *bytes;
+  size_t size;
+  assert_int_equal(zr__bundle_record_reader(scene, &bytes, &size, &recorded),
+                   ZR_OK);
+  assert_int_equal(size, 20);
+  assert_memory_equal(bytes, "#include \"none.inc\"\n", 20);
+  free(bytes);
+  assert_int_equal(
+      zr__bundle_record_reader(missing, &bytes, &size, &recorded),
+      ZR_ENOTFOUND);
+  assert_int_equal(zr__bundle_record_reader(dir, &bytes, &size, &recorded),
+                   ZR_EIO);
+  assert_int_equal(recorded.count, 1);
+
+  /* A second read of a path gives what the first one recorded. */
+  write_file(scene, "changed");
+  assert_int_equal(zr__bundle_record_reader(scene, &bytes, &size, &recorded),
+                   ZR_OK);
+  assert_int_equal(size, 20);
+  free(bytes);
+
+  /* The other side: what was recorded is served, the rest is missing. */
+  char *blob;
+  size_t blob_size;
+  assert_int_equal(zr__bundle_serialise(&recorded, &blob, &blob_size),
+                   ZR_OK);
+  zr_bundle received;
+  zr__bundle_init(&received);
+  assert_int_equal(zr__bundle_deserialise(&received, blob, blob_size), ZR_OK);
+  unlink(scene);
+  rmdir(dir);
+  assert_int_equal(zr__bundle_serve_reader(scene, &bytes, &size, &received),
+                   ZR_OK);
+  assert_int_equal(size, 20);
+  assert_memory_equal(bytes, "#include \"none.inc\"\n", 20);
+  free(bytes);
+  assert_int_equal(zr__bundle_serve_reader(missing, &bytes, &size, &received),
+                   ZR_ENOTFOUND);
+  free(blob);
+  zr__bundle_free(&recorded);
+  zr__bundle_free(&received);
+}
+
+/* ---- rendering ----------------------------------------------------- */
+
+/* Small, but with an edge for antialiasing, a reflection and a shadow. */
+static const char scene_text[] =
+    "camera { location <0, 1, -4> look_at <0, 0.5, 0> }\n"
+    "light_source { <3, 5, -4> color rgb 1 }\n"
+    "plane { y, 0 pigment { checker color rgb 1 color rgb 0.2 } }\n"
+    "sphere { <0, 0.7, 0>, 0.7 pigment { color rgb <1, 0.3, 0.2> }\n"
+    "  finish { reflection 0.3 } }\n";
+
+typedef struct render_fixture {
+  zr_context *ctx;
+  zr_scene *scene;
+  zr_render_params params;
+} render_fixture;
+
+static int setup_render(void **state) {
+  render_fixture *f = calloc(1, sizeof *f);
+  if (!f || zr_context_new(&f->ctx) != ZR_OK ||
+      zr_scene_parse_string(f->ctx, "<test>", scene_text,
+                            sizeof scene_text - 1, &f->scene) != ZR_OK)
+    return -1;
+  zr_render_params_init(&f->params);
+  f->params.width = 37; /* odd sizes: rows do not split evenly */
+  f->params.height = 23;
+  *state = f;
+  return 0;
+}
+
+static int teardown_render(void **state) {
+  render_fixture *f = *state;
+  zr_scene_free(f->scene);
+  zr_context_free(f->ctx);
+  free(f);
+  return 0;
+}
+
+static float *reference(render_fixture *f) {
+  size_t n = (size_t)f->params.width * f->params.height * 3;
+  float *rgb = malloc(n * sizeof *rgb);
+  assert_int_equal(zr_render_image(f->scene, &f->params, rgb, NULL), ZR_OK);
+  return rgb;
+}
+
+/* Renders with the pool as nranks ranks of threads threads would, one
+   rank after another, and puts the rows back in order. */
+static float *pooled(render_fixture *f, int nranks, int threads,
+                     zr_render_stats *stats) {
+  int w = f->params.width, h = f->params.height;
+  size_t row = (size_t)w * 3;
+  float *centres = malloc((size_t)h * row * sizeof(float));
+  float *rank_major = malloc((size_t)h * row * sizeof(float));
+  for (int pass = 0; pass < (f->params.antialias ? 2 : 1); pass++) {
+    float *p = rank_major;
+    for (int rank = 0; rank < nranks; rank++) {
+      zr_pool_job job = {.scene = f->scene,
+                         .params = &f->params,
+                         .rank = rank,
+                         .nranks = nranks,
+                         .centres = pass ? centres : NULL,
+                         .rows_rgb = p,
+                         .threads = threads,
+                         .stats = stats};
+      assert_int_equal(zr__pool_render(&job), ZR_OK);
+      p += (size_t)zr__rows_count(h, rank, nranks) * row;
+    }
+    zr__rows_uninterleave(rank_major, centres, h, nranks, row);
+  }
+  free(rank_major);
+  return centres;
+}
+
+static void check_pool_matches_reference(render_fixture *f) {
+  float *want = reference(f);
+  size_t bytes = (size_t)f->params.width * f->params.height * 3 *
+                 sizeof(float);
+  static const int layouts[][2] = {{1, 1}, {1, 3}, {2, 2}, {3, 1}, {5, 4}};
+  zr_render_stats first = {0};
+  for (size_t i = 0; i < sizeof layouts / sizeof *layouts; i++) {
+    zr_render_stats stats = {0};
+    float *got = pooled(f, layouts[i][0], layouts[i][1], &stats);
+    /* Same bytes: the library traces each pixel the same way wherever. */
+    assert_memory_equal(got, want, bytes);
+    if (i == 0)
+      first = stats;
+    assert_memory_equal(&stats, &first, sizeof stats);
+    free(got);
+  }
+  assert_int_equal(first.camera_rays,
+                   (uint64_t)f->params.width * f->params.height);
+  free(want);
+}
+
+static void test_par_pool_matches_serial_render(void **state) {
+  check_pool_matches_reference(*state);
+}
+
+static void test_par_pool_matches_serial_render_antialiased(void **state) {
+  render_fixture *f = *state;
+  f->params.antialias = 1;
+  f->params.aa_threshold = 0.1;
+  check_pool_matches_reference(f);
+  f->params.antialias = 0;
+}
+
+typedef struct progress_log {
+  size_t calls;
+  size_t last_done;
+  size_t total;
+  int out_of_order;
+} progress_log;
+
+/* Runs on worker threads, where cmocka cannot fail a test: it notes. */
+static void log_progress(size_t done, size_t total, void *user) {
+  progress_log *log = user;
+  /* Calls are serialised and counted in order. */
+  if (done != log->last_done + 1)
+    log->out_of_order = 1;
+  log->calls++;
+  log->last_done = done;
+  log->total = total;
+}
+
+static void test_par_pool_reports_progress(void **state) {
+  render_fixture *f = *state;
+  size_t row = (size_t)f->params.width * 3;
+  float *rgb = malloc((size_t)f->params.height * row * sizeof(float));
+  progress_log log = {0, 4, 0, 0};
+  zr_pool_job job = {.scene = f->scene,
+                     .params = &f->params,
+                     .rank = 1,
+                     .nranks = 2,
+                     .rows_rgb = rgb,
+                     .threads = 3,
+                     .progress = log_progress,
+                     .progress_user = &log,
+                     .progress_base = 4,
+                     .progress_total = 99};
+  assert_int_equal(zr__pool_render(&job), ZR_OK);
+  assert_int_equal(log.calls, 11); /* rows 1, 3, ..., 21 of 23 */
+  assert_false(log.out_of_order);
+  assert_int_equal(log.last_done, 15);
+  assert_int_equal(log.total, 99);
+  free(rgb);
+}
+
+static void test_par_world_of_one_renders_image(void **state) {
+  render_fixture *f = *state;
+  /* make check runs without mpirun: a world of one, MPI untouched. */
+  zr_par *par;
+  assert_int_equal(zr__par_init(NULL, NULL, &par), ZR_OK);
+  assert_int_equal(zr__par_rank(par), 0);
+  assert_int_equal(zr__par_size(par), 1);
+  assert_int_equal(zr__par_uses_mpi(par), 0);
+  assert_true(zr__par_default_threads(par) >= 1);
+  assert_int_equal(zr__par_agree(par, ZR_ESYNTAX), ZR_ESYNTAX);
+  zr_status root = ZR_EUNDEFINED;
+  zr_bundle b;
+  zr__bundle_init(&b);
+  assert_int_equal(zr__par_share_bundle(par, &b, &root), ZR_OK);
+  assert_int_equal(root, ZR_EUNDEFINED);
+
+  f->params.antialias = 1;
+  f->params.aa_threshold = 0.1;
+  float *want = reference(f);
+  zr_image *image;
+  assert_int_equal(zr_image_new(f->params.width, f->params.height, &image),
+                   ZR_OK);
+  zr_par_render job = {.scene = f->scene,
+                       .params = &f->params,
+                       .threads = 2,
+                       .image = image};
+  assert_int_equal(zr__par_render(par, &job), ZR_OK);
+  assert_memory_equal(zr_image_pixels(image), want,
+                      (size_t)f->params.width * f->params.height * 3 *
+                          sizeof(float));
+  assert_int_equal(job.stats.camera_rays,
+                   (uint64_t)f->params.width * f->params.height);
+  assert_true(job.render_seconds >= 0);
+
+  /* An image of the wrong size is refused before any work. */
+  f->params.width++;
+  assert_int_equal(zr__par_render(par, &job), ZR_EINVAL);
+  f->params.width--;
+  f->params.antialias = 0;
+  zr_image_free(image);
+  free(want);
+  zr__par_finalize(par);
+  zr__par_finalize(NULL);
+}
+
+int main(void) {
+  /* The world-of-one test must not think mpirun started it. */
+  unsetenv("OMPI_COMM_WORLD_SIZE");
+  unsetenv("PMIX_RANK");
+  unsetenv("PMI_RANK");
+  unsetenv("PMI_SIZE");
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test(test_par_rows_cover_each_row_once),
+      cmocka_unit_test(test_par_rows_uninterleave_restores_order),
+      cmocka_unit_test(test_par_bundle_roundtrip),
+      cmocka_unit_test(test_par_bundle_rejects_malformed),
+      cmocka_unit_test(test_par_bundle_records_and_serves),
+      cmocka_unit_test_setup_teardown(test_par_pool_matches_serial_render,
+                                      setup_render, teardown_render),
+      cmocka_unit_test_setup_teardown(
+          test_par_pool_matches_serial_render_antialiased, setup_render,
+          teardown_render),
+      cmocka_unit_test_setup_teardown(test_par_pool_reports_progress,
+                                      setup_render, teardown_render),
+      cmocka_unit_test_setup_teardown(test_par_world_of_one_renders_image,
+                                      setup_render, teardown_render),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}
