@@ -92,6 +92,12 @@ for scene in "$top"/scenes/*.pov; do
                    printf "%.6f", $1 + log(z / p) }')
   count=$((count + 1))
 done
+# For scale: POV-Ray's cost for a scene with nothing in it, mostly its
+# start-up, which every row above includes.
+printf '#version 3.7;\ncamera { location -z look_at 0 }\n' >"$work/empty.pov"
+te=$(best_of "$povray" +I"$work/empty.pov" +O"$work/empty.png" \
+     +W"$width" +H"$height" -A +FN -D -V +WT1)
+echo "POV-Ray on an empty scene: $te s"
 if [ $count -gt 0 ]; then
   echo "$log_sum $count" |
     awk '{ printf "geometric mean of ratios: %.3f over %d scenes\n",

@@ -113,6 +113,29 @@ static int find_scene(zr_cli_options *o) {
   return -1;
 }
 
+/*
+ * Fails early, before a long render, when the image could not be written
+ * for want of its directory.  Returns 0, or -1 after printing why.
+ */
+static int check_output_dir(const char *path) {
+  const char *slash = strrchr(path, '/');
+  char *dir = !slash         ? strdup(".")
+              : slash == path ? strdup("/")
+                              : strndup(path, (size_t)(slash - path));
+  if (!dir) {
+    fprintf(stderr, "zrcube: out of memory\n");
+    return -1;
+  }
+  int rc = 0;
+  if (access(dir, W_OK) != 0) {
+    fprintf(stderr, "zrcube: cannot write '%s': directory '%s': %s\n", path,
+            dir, strerror(errno));
+    rc = -1;
+  }
+  free(dir);
+  return rc;
+}
+
 typedef struct run {
   zr_par *par;
   int rank;
@@ -158,29 +181,38 @@ static int read_command_line(run *r, int argc, char **argv) {
     return EXIT_SUCCESS;
   }
   /* The scene and the image name matter on rank 0 only. */
-  int usage = 0, missing = 0;
+  int usage = 0, unusable = 0;
   if (r->rank == 0) {
     if (!r->opts.input) {
       fprintf(stderr, "zrcube: no scene file given (try 'zrcube "
                       "--help')\n");
       usage = 1;
     } else if (find_scene(&r->opts) < 0) {
-      missing = 1;
+      unusable = 1;
     } else if (zr__cli_output_path(&r->opts, &r->output_path, &r->format,
                                    err, sizeof err) < 0) {
       fprintf(stderr, "%s\n", err);
       usage = 1;
+    } else if (r->opts.write_output && check_output_dir(r->output_path)) {
+      unusable = 1;
     }
   }
-  zr_status s = zr__par_agree(r->par, usage     ? ZR_EINVAL
-                                      : missing ? ZR_ENOTFOUND
-                                                : ZR_OK);
+  zr_status s = zr__par_agree(r->par, usage      ? ZR_EINVAL
+                                      : unusable ? ZR_ENOTFOUND
+                                                 : ZR_OK);
   if (s == ZR_EINVAL)
     return EXIT_USAGE;
   if (s != ZR_OK)
     return EXIT_SCENE;
-  r->threads = r->opts.threads ? r->opts.threads
-                               : zr__par_default_threads(r->par);
+  /* Rank 0 may have found "scene" as "scene.pov": the other ranks must
+     ask their bundle for the name rank 0 parsed. */
+  if (zr__par_share_string(r->par, &r->opts.input) != ZR_OK) {
+    if (r->rank == 0)
+      fprintf(stderr, "zrcube: cannot send the scene name to the other "
+                      "ranks\n");
+    return EXIT_SCENE;
+  }
+  r->threads = zr__par_threads(r->par, r->opts.threads);
   return -1;
 }
 

@@ -9,7 +9,9 @@
  * runs #include, #version and #zfor and turns identifiers into typed
  * tokens (float identifier, pigment identifier, ...), as POV-Ray's own
  * parser does.  A leading pseudo-token picks the start symbol: a whole
- * scene, or one expression for a directive, parsed by a nested parser.
+ * scene, or the expression of a directive, parsed by a nested parser.
+ * Each directive's rule ends in a token of its own (')' or ';') so the
+ * nested parser accepts without reading a token past it.
  *
  * Syntax and defaults follow the reference manual (r3_4): "Camera",
  * "Light Sources", "Finite/Infinite Solid Primitives", "CSG", "Texture",
@@ -59,9 +61,11 @@ int zr__pov_parse(zr_sdl_parser *p);
       YYABORT;                                                             \
   } while (0)
 
+/* With a custom syntax error report, bison calls this only when its
+   stack is full (YYMAXDEPTH): the input nests too deeply. */
 static void zr__pov_error(const zr_sdl_loc *loc, zr_sdl_parser *p,
                           const char *msg) {
-  zr__sdl_error(p, ZR_ESYNTAX, loc, "%s", msg);
+  zr__sdl_error(p, ZR_ELIMIT, loc, "the scene nests too deeply (%s)", msg);
 }
 
 static zr_sdl_value numeric_value(const zr_sdl_expr *e) {
@@ -122,7 +126,7 @@ static zr_sdl_mod make_mod(zr_sdl_mod_kind kind, const void *ptr) {
 
 /* Pseudo-tokens: the engine hands one out first to pick the start. */
 %token T_START_SCENE "start of scene"
-%token T_START_FLOAT "start of expression"
+%token T_START_VERSION "start of #version"
 %token T_START_PAREN "start of parenthesized expression"
 
 %token <num> T_NUMBER "number"
@@ -266,6 +270,9 @@ static zr_sdl_mod make_mod(zr_sdl_mod_kind kind, const void *ptr) {
 %type <interior> interior interior_head interior_body
 %type <light> light_body
 
+/* OPTIONAL_COMMA ranks below the operators, so "<0,0,0> -1" reads as a
+   subtraction, as in POV-Ray, rather than as a missing comma. */
+%precedence OPTIONAL_COMMA
 %left '+' '-'
 %left '*' '/'
 %precedence NEG
@@ -275,14 +282,7 @@ static zr_sdl_mod make_mod(zr_sdl_mod_kind kind, const void *ptr) {
 start:
   T_START_SCENE items
 | T_START_PAREN '(' expr ')'  { p->nested_value = $3; YYACCEPT; }
-| T_START_FLOAT expr
-    {
-      /* The expression ended where the lookahead began: hand that token
-         out again to whoever reads next. */
-      p->nested_value = $2;
-      p->has_pushback = yychar != ZR__POV_EMPTY;
-      YYACCEPT;
-    }
+| T_START_VERSION expr ';'   { p->nested_value = $2; YYACCEPT; }
 ;
 
 items:
@@ -323,11 +323,23 @@ opt_semi:
 
 rvalue:
   colour_value  { $$ = numeric_value(&$1); }
+| T_PIGMENT_ID  { $$ = $1; }
+| T_FINISH_ID   { $$ = $1; }
+| T_TEXTURE_ID  { $$ = $1; }
+| T_INTERIOR_ID { $$ = $1; }
+| T_OBJECT_ID   { $$ = $1; }
 | pigment       { $$ = pointer_value(ZR_SDL_PIGMENT, $1); }
 | finish        { $$ = pointer_value(ZR_SDL_FINISH, $1); }
 | texture       { $$ = pointer_value(ZR_SDL_TEXTURE, $1); }
 | interior      { $$ = pointer_value(ZR_SDL_INTERIOR, $1); }
 | object        { $$ = pointer_value(ZR_SDL_OBJECT, $1); }
+;
+
+/* POV-Ray lets the comma between the items of an object or light be
+   left out ("sphere { <0,0,0> 1 }"); the vectors' commas stay. */
+comma:
+  %empty %prec OPTIONAL_COMMA
+| ','
 ;
 
 /* ---- expressions ---- */
@@ -462,19 +474,19 @@ object_body:
 ;
 
 object_head:
-  T_SPHERE '{' expr ',' expr
+  T_SPHERE '{' expr comma expr
     {
       TRY($$ = zr__sdl_object_new(p, ZR_OBJ_SPHERE, &@1));
       TRY(zr__sdl_want_vector(p, &$3, &@3, &$$->u.sphere.centre));
       TRY(zr__sdl_want_float(p, &$5, &@5, &$$->u.sphere.radius));
     }
-| T_BOX '{' expr ',' expr
+| T_BOX '{' expr comma expr
     {
       TRY($$ = zr__sdl_object_new(p, ZR_OBJ_BOX, &@1));
       TRY(zr__sdl_want_vector(p, &$3, &@3, &$$->u.box.corner1));
       TRY(zr__sdl_want_vector(p, &$5, &@5, &$$->u.box.corner2));
     }
-| T_PLANE '{' expr ',' expr
+| T_PLANE '{' expr comma expr
     {
       TRY($$ = zr__sdl_object_new(p, ZR_OBJ_PLANE, &@1));
       TRY(zr__sdl_want_vector(p, &$3, &@3, &$$->u.plane.normal));
@@ -486,21 +498,21 @@ object_head:
       /* A x + B y + C z = D |<A,B,C>| (reference manual, "Plane"). */
       $$->u.plane.normal = zr_v3_norm($$->u.plane.normal);
     }
-| T_TRIANGLE '{' expr ',' expr ',' expr
+| T_TRIANGLE '{' expr comma expr comma expr
     {
       TRY($$ = zr__sdl_object_new(p, ZR_OBJ_TRIANGLE, &@1));
       TRY(zr__sdl_want_vector(p, &$3, &@3, &$$->u.triangle.p[0]));
       TRY(zr__sdl_want_vector(p, &$5, &@5, &$$->u.triangle.p[1]));
       TRY(zr__sdl_want_vector(p, &$7, &@7, &$$->u.triangle.p[2]));
     }
-| T_CYLINDER '{' expr ',' expr ',' expr
+| T_CYLINDER '{' expr comma expr comma expr
     {
       TRY($$ = zr__sdl_object_new(p, ZR_OBJ_CYLINDER, &@1));
       TRY(zr__sdl_want_vector(p, &$3, &@3, &$$->u.cylinder.base));
       TRY(zr__sdl_want_vector(p, &$5, &@5, &$$->u.cylinder.cap));
       TRY(zr__sdl_want_float(p, &$7, &@7, &$$->u.cylinder.radius));
     }
-| T_CONE '{' expr ',' expr ',' expr ',' expr
+| T_CONE '{' expr comma expr comma expr comma expr
     {
       TRY($$ = zr__sdl_object_new(p, ZR_OBJ_CONE, &@1));
       TRY(zr__sdl_want_vector(p, &$3, &@3, &$$->u.cone.base));
@@ -508,7 +520,7 @@ object_head:
       TRY(zr__sdl_want_vector(p, &$7, &@7, &$$->u.cone.cap));
       TRY(zr__sdl_want_float(p, &$9, &@9, &$$->u.cone.cap_radius));
     }
-| T_DISC '{' expr ',' expr ',' expr
+| T_DISC '{' expr comma expr comma expr
     {
       TRY($$ = zr__sdl_object_new(p, ZR_OBJ_DISC, &@1));
       TRY(zr__sdl_want_vector(p, &$3, &@3, &$$->u.disc.centre));
@@ -516,7 +528,7 @@ object_head:
       TRY(zr__sdl_want_float(p, &$7, &@7, &$$->u.disc.radius));
       $$->u.disc.normal = zr_v3_norm($$->u.disc.normal);
     }
-| T_DISC '{' expr ',' expr ',' expr ',' expr
+| T_DISC '{' expr comma expr comma expr comma expr
     {
       TRY($$ = zr__sdl_object_new(p, ZR_OBJ_DISC, &@1));
       TRY(zr__sdl_want_vector(p, &$3, &@3, &$$->u.disc.centre));
@@ -752,10 +764,10 @@ light:
 ;
 
 light_body:
-  T_LIGHT_SOURCE '{' expr ',' colour_value
+  T_LIGHT_SOURCE '{' expr comma colour_value
     {
       TRY($$ = zr__sdl_alloc(p, sizeof *$$));
-      TRY(zr__sdl_light(p, $$, &$3, &@1));
+      TRY(zr__sdl_light(p, $$, &@1));
       TRY(zr__sdl_want_rgb(p, &$5, &@5, &$$->colour));
       TRY(zr__sdl_want_vector(p, &$3, &@3, &$$->location));
     }
@@ -800,7 +812,7 @@ global_body:
 %%
 
 /* How many expected tokens a message lists before it gives up. */
-#define MAX_EXPECTED 12
+#define MAX_EXPECTED 20
 
 static int yyreport_syntax_error(const yypcontext_t *yyctx,
                                  zr_sdl_parser *p) {

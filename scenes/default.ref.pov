@@ -26,8 +26,8 @@ global_settings {
 #declare Matte = finish { ambient 0.05 diffuse 0.85 }
 
 camera {
-  location <0, 3.2, -10.5>
-  look_at <0, 0.9, 0>
+  location <0, 2.9, -9.5>
+  look_at <0, 0.8, 0.4>
   angle 48
 }
 

@@ -2,6 +2,7 @@
 # NAME.ref.pov is NAME.pov for POV-Ray when NAME.pov uses a zRcube
 # extension (see tests/ref/README.md).
 scenesdir = $(pkgdatadir)/scenes
+EXTRA_DIST += scenes/README.md
 dist_scenes_DATA = \
 	scenes/camera.pov \
 	scenes/csg_union.pov \

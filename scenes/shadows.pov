@@ -19,8 +19,11 @@ plane { y, 0 pigment { rgb 0.85 } }
 
 // An opaque ball: two shadows, one per shadowing light.
 sphere { <-2.5, 0.7, 0>, 0.7 pigment { rgb <0.8, 0.8, 0.8> } }
+// Transparent objects float 0.01 above the floor: a face lying in the
+// floor's plane would make the nearer of two equal hits a matter of
+// rounding, in any renderer.
 // Red filtering glass: a red shadow.
-box { <-0.6, 0, -0.6>, <0.6, 1.4, 0.6>
+box { <-0.6, 0.01, -0.6>, <0.6, 1.4, 0.6>
       pigment { rgbf <1, 0.2, 0.2, 0.9> } finish { ambient 0 diffuse 0.1 }
       interior { ior 1.5 } translate <0, 0, 0.5> }
 // Blue-tinted glass that transmits: a paler, untinted shadow.
@@ -28,7 +31,7 @@ sphere { <2.5, 0.8, 0>, 0.8
          pigment { rgbt <0.2, 0.3, 1, 0.7> } finish { ambient 0 diffuse 0.3 }
          interior { ior 1.0 } }
 // Both at once, rgbft.
-cylinder { <1, 0, 2.5>, <1, 1.5, 2.5>, 0.4
+cylinder { <1, 0.01, 2.5>, <1, 1.5, 2.5>, 0.4
            pigment { rgbft <0.2, 1, 0.2, 0.5, 0.3> }
            finish { ambient 0 diffuse 0.2 } }
 // Casts no shadow at all.

@@ -25,10 +25,10 @@ object { Unit pigment { rgb <0.2, 0.3, 0.9> }
          matrix < 1, 0, 0,
                   0.6, 1, 0,
                   0, 0, 1,
-                  0, 0.5, 2 > }
+                  -0.9, 0.5, 2.2 > }
 // Rotation about all three axes and a uniform scale.
 cylinder { <-0.5, 0, 0>, <0.5, 0, 0>, 0.3 pigment { rgb <0.9, 0.8, 0.1> }
-           rotate <20, 45, 60> scale 1.5 translate <0, 1.5, -1.5> }
+           rotate <20, 45, 60> scale 1.5 translate <0.6, 1.5, -1.8> }
 // A union moved as one.
 union {
   sphere { <-0.6, 0, 0>, 0.4 }

@@ -92,13 +92,14 @@ is_png() {
 
 mkdir inc
 cat >inc/colours.inc <<'POV'
-#declare Ground = pigment { checker color rgb 1 color rgb 0.1 }
+#declare Ground = pigment { color rgb <0.8, 0.8, 0.6> }
 POV
 cat >scene.pov <<'POV'
 #include "colours.inc"
 camera { location <0, 1.2, -4> look_at <0, 0.6, 0> }
-light_source { <4, 6, -5> color rgb 1 }
+light_source { <4, 6, -5>, color rgb 1 }
 plane { y, 0 pigment { Ground } }
+box { <-2, 0, 1>, <-1, 1.5, 2> pigment { color rgb <0.2, 0.4, 1> } }
 sphere { <0, 0.8, 0>, 0.8
   pigment { color rgb <0.9, 0.3, 0.2> }
   finish { reflection 0.3 phong 0.8 }
@@ -134,6 +135,9 @@ same ref.png scene.png
 mkdir out
 serial into_dir 0 "$ZRCUBE" scene +Linc $SIZE +Oout
 is_png out/scene.png
+# Rank 0 finds "scene" as scene.pov and tells the other ranks.
+mpi no_ext 0 2 scene +Linc $SIZE +Ono_ext.png
+same ref.png no_ext.png
 serial ppm 0 "$ZRCUBE" scene.pov +Linc $SIZE +FP +Oimage
 [ "$(head -c 2 image.ppm)" = P6 ] ||
   fail "+FP +Oimage did not write a P6 image.ppm"
@@ -142,6 +146,10 @@ serial overwrite 2 "$ZRCUBE" scene.pov +Linc $SIZE +Oscene.pov
 expect overwrite \
   "zrcube: refusing to overwrite the scene file 'scene.pov' with the image"
 same scene.keep scene.pov
+# A directory that is not there fails before the render, not after.
+serial nodir 1 "$ZRCUBE" scene.pov +Linc $SIZE +Ono_such_dir/x.png
+expect nodir "zrcube: cannot write 'no_such_dir/x.png': directory \
+'no_such_dir': No such file or directory"
 serial verbose 0 "$ZRCUBE" scene.pov +Linc $SIZE +V -F
 expect verbose "zrcube: rays: camera 3072,"
 
@@ -162,12 +170,12 @@ sphere { <0, 1, 0>, 1 pigment { color rgb 1 } }
 POV
 cat >undefined.pov <<'POV'
 camera { location <0, 1, -4> look_at 0 }
-light_source { <4, 6, -5> color rgb 1 }
+light_source { <4, 6, -5>, color rgb 1 }
 sphere { <0, 1, 0>, Radius_typo pigment { color rgb 1 } }
 POV
 cat >unsupported.pov <<'POV'
 camera { location <0, 1, -4> look_at 0 }
-light_source { <4, 6, -5> color rgb 1 }
+light_source { <4, 6, -5>, color rgb 1 }
 isosurface { function { x } }
 POV
 cat >noinclude.pov <<'POV'

@@ -360,6 +360,83 @@ static void test_nurbs_planar_patches(void **state) {
   }
 }
 
+static void test_nurbs_plane_in_box(void **state) {
+  (void)state;
+  zr__surface s;
+  zr__gauss_rule g;
+  bool more = true;
+  assert_int_equal(zr__gauss_rule_init(&g, 1), ZR_OK);
+  /* A floor in the bounds x in [-1, 2], z in [0, 3]: exactly 3 x 3. */
+  assert_int_equal(zr__surface_plane_in_box(&s, zr_v3(0, 1, 0), 0.0,
+                                            zr_v3(-1, -1, 0), zr_v3(2, 1, 3),
+                                            NULL, &more, NULL, NULL),
+                   ZR_OK);
+  assert_false(more);
+  assert_abs(zr__surface_area(&s, 0, 1, 0, 1, 1, &g), 9.0, 1e-14);
+  assert_vec_close(s.plane_normal, zr_v3(0, 1, 0), 0);
+  zr__surface_point pt;
+  zr__surface_eval(&s, 0, 0, &pt);
+  assert_vec_close(pt.p, zr_v3(-1, 0, 0), 1e-15);
+  zr__surface_eval(&s, 1, 1, &pt);
+  assert_vec_close(pt.p, zr_v3(2, 0, 3), 1e-15);
+  /* POV-Ray's plane { -y, -1 } is y = 1 facing down. */
+  assert_int_equal(zr__surface_plane_in_box(&s, zr_v3(0, -1, 0), -1.0,
+                                            zr_v3(-1, -1, -1),
+                                            zr_v3(1, 2, 1), NULL, &more,
+                                            NULL, NULL),
+                   ZR_OK);
+  assert_vec_close(s.plane_normal, zr_v3(0, -1, 0), 0);
+  zr__surface_eval(&s, 0.3, 0.3, &pt);
+  assert_abs(pt.p.y, 1.0, 1e-15);
+  /* Moved up by 0.5 and turned 90 degrees about x: z = 0.5, facing +z,
+     still exact although the rotation leaves 6e-17 in the normal. */
+  zr_transform t;
+  zr__transform_identity(&t);
+  zr__transform_translate(&t, zr_v3(0, 0.5, 0));
+  zr__transform_rotate(&t, zr_v3(90, 0, 0));
+  assert_int_equal(zr__surface_plane_in_box(&s, zr_v3(0, 1, 0), 0.0,
+                                            zr_v3(-1, -1, -1),
+                                            zr_v3(1, 1, 1), &t, &more, NULL,
+                                            NULL),
+                   ZR_OK);
+  assert_false(more);
+  assert_vec_close(s.plane_normal, zr_v3(0, 0, 1), 0);
+  assert_abs(zr__surface_area(&s, 0, 1, 0, 1, 1, &g), 4.0, 1e-14);
+  zr__surface_eval(&s, 0.7, 0.2, &pt);
+  assert_abs(pt.p.z, 0.5, 1e-15);
+  /* A tilted plane x + y = 0: its section of the cube, a 2 sqrt2 x 2
+     rectangle, lies inside the parallelogram, which says it covers
+     more. */
+  assert_int_equal(zr__surface_plane_in_box(&s, zr_v3(1, 1, 0), 0.0,
+                                            zr_v3(-1, -1, -1),
+                                            zr_v3(1, 1, 1), NULL, &more,
+                                            NULL, NULL),
+                   ZR_OK);
+  assert_true(more);
+  assert_vec_close(s.plane_normal, zr_v3(M_SQRT1_2, M_SQRT1_2, 0), 1e-15);
+  const zr_vec3 corners[4] = {
+      {1, -1, 1}, {1, -1, -1}, {-1, 1, 1}, {-1, 1, -1}};
+  for (int k = 0; k < 4; k++) {
+    double u, v;
+    zr__surface_locate(&s, corners[k], &u, &v);
+    zr__surface_eval(&s, u, v, &pt);
+    assert_vec_close(pt.p, corners[k], 1e-12);
+  }
+  assert_true(zr__surface_area(&s, 0, 1, 0, 1, 1, &g) >=
+              4 * M_SQRT2 - 1e-12);
+  /* Outside the bounds. */
+  zr_context *ctx;
+  assert_int_equal(zr_context_new(&ctx), ZR_OK);
+  assert_int_equal(zr__surface_plane_in_box(&s, zr_v3(0, 1, 0), 5.0,
+                                            zr_v3(-1, -1, -1),
+                                            zr_v3(1, 1, 1), NULL, NULL, ctx,
+                                            NULL),
+                   ZR_EINVAL);
+  assert_string_equal(zr_context_last_error(ctx),
+                      "error: plane does not cross the scene's bounds\n");
+  zr_context_free(ctx);
+}
+
 static void test_nurbs_patch_polygon_of_curved_patch(void **state) {
   (void)state;
   /* A sphere patch's polygon is inscribed: its points are on the
@@ -375,10 +452,81 @@ static void test_nurbs_patch_polygon_of_curved_patch(void **state) {
     assert_abs(zr_v3_len(poly[k]), 2.0, GEOM_EPS);
   /* A patch touching the pole loses its collapsed edge. */
   n = zr__surface_patch_polygon(&s, 0.1, 0.3, 0.0, 0.2, 5, poly, 32);
-  assert_int_equal(n, 16);
+  assert_int_equal(n, 15);
   /* The output is capped at max. */
   assert_int_equal(zr__surface_patch_polygon(&s, 0, 1, 0, 1, 50, poly, 32),
                    32);
+}
+
+/* ---- locating hits ---- */
+
+/* eval then locate gives back (u,v) where u is defined, and the point
+   always; 1e-12 relative to the surface's size is rounding only. */
+static void check_round_trip(const zr__surface *s, double size) {
+  for (int i = 0; i < GRID; i++) {
+    for (int j = 0; j < GRID; j++) {
+      double u = (double)i / (GRID - 1), v = (double)j / (GRID - 1);
+      zr__surface_point pt, back;
+      double lu, lv;
+      zr__surface_eval(s, u, v, &pt);
+      zr__surface_locate(s, pt.p, &lu, &lv);
+      zr__surface_eval(s, lu, lv, &back);
+      assert_vec_close(back.p, pt.p, 1e-12 * size);
+      bool u_defined = pt.da > 1e-9 * size * size;
+      if (u_defined && i > 0 && i < GRID - 1)
+        assert_abs(lu, u, 1e-12);
+      if (s->kind != ZR__SURFACE_TRIANGLE || u > 0.0)
+        assert_abs(lv, v, 1e-12);
+    }
+  }
+}
+
+static void test_nurbs_locate_round_trip(void **state) {
+  (void)state;
+  zr_transform t;
+  skew_transform(&t, zr_v3(2, 0.5, 1.25));
+  for (int k = 0; k < 2; k++) {
+    const zr_transform *xf = k ? &t : NULL;
+    zr__surface s, faces[6];
+    assert_int_equal(zr__surface_sphere(&s, zr_v3(1, 2, 3), 1.5, xf, NULL,
+                                        NULL),
+                     ZR_OK);
+    check_round_trip(&s, 4);
+    assert_int_equal(zr__surface_cylinder(&s, zr_v3(1, 2, 3), zr_v3(0, 0, 1),
+                                          0.5, xf, NULL, NULL),
+                     ZR_OK);
+    check_round_trip(&s, 4);
+    assert_int_equal(zr__surface_cone(&s, zr_v3(1, 2, 3), 1.0,
+                                      zr_v3(0, 0, 1), 0.0, xf, NULL, NULL),
+                     ZR_OK);
+    check_round_trip(&s, 4);
+    assert_int_equal(zr__surface_disc(&s, zr_v3(1, 2, 3), zr_v3(1, 1, 0),
+                                      2.0, 0.5, xf, NULL, NULL),
+                     ZR_OK);
+    check_round_trip(&s, 4);
+    assert_int_equal(zr__surface_triangle(&s, zr_v3(1, 2, 3),
+                                          zr_v3(0, 0, 1), zr_v3(2, -1, 0),
+                                          xf, NULL, NULL),
+                     ZR_OK);
+    check_round_trip(&s, 4);
+    assert_int_equal(zr__surface_box_faces(faces, zr_v3(1, 2, 3),
+                                           zr_v3(0, 0, 1), xf, NULL, NULL),
+                     ZR_OK);
+    for (int f = 0; f < 6; f++)
+      check_round_trip(&faces[f], 4);
+  }
+  /* Off the surface, a point maps to the parameters of a nearby one:
+     above a sphere point, along its normal, the same (u,v). */
+  zr__surface s;
+  assert_int_equal(zr__surface_sphere(&s, zr_v3(0, 0, 0), 1.0, NULL, NULL,
+                                      NULL),
+                   ZR_OK);
+  zr__surface_point pt;
+  double u, v;
+  zr__surface_eval(&s, 0.3, 0.6, &pt);
+  zr__surface_locate(&s, zr_v3_madd(pt.p, pt.n, 1e-3), &u, &v);
+  assert_abs(u, 0.3, 1e-12);
+  assert_abs(v, 0.6, 1e-12);
 }
 
 /* ---- bad input ---- */
@@ -450,7 +598,9 @@ int main(void) {
       cmocka_unit_test(test_nurbs_cone_on_implicit_surface),
       cmocka_unit_test(test_nurbs_disc_and_annulus),
       cmocka_unit_test(test_nurbs_planar_patches),
+      cmocka_unit_test(test_nurbs_plane_in_box),
       cmocka_unit_test(test_nurbs_patch_polygon_of_curved_patch),
+      cmocka_unit_test(test_nurbs_locate_round_trip),
       cmocka_unit_test(test_nurbs_bad_input_messages),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);

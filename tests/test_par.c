@@ -161,7 +161,8 @@ static void test_par_bundle_records_and_serves(void **state) {
   assert_int_equal(zr__bundle_record_reader(scene, &bytes, &size, &recorded),
                    ZR_OK);
   assert_int_equal(size, 20);
-  assert_memory_equal(bytes, "#include \"none.inc\"\n", 20);
+  /* 21 bytes: the text and the NUL a scanner may rely on. */
+  assert_memory_equal(bytes, "#include \"none.inc\"\n", 21);
   free(bytes);
   assert_int_equal(
       zr__bundle_record_reader(missing, &bytes, &size, &recorded),
@@ -190,7 +191,7 @@ static void test_par_bundle_records_and_serves(void **state) {
   assert_int_equal(zr__bundle_serve_reader(scene, &bytes, &size, &received),
                    ZR_OK);
   assert_int_equal(size, 20);
-  assert_memory_equal(bytes, "#include \"none.inc\"\n", 20);
+  assert_memory_equal(bytes, "#include \"none.inc\"\n", 21);
   free(bytes);
   assert_int_equal(zr__bundle_serve_reader(missing, &bytes, &size, &received),
                    ZR_ENOTFOUND);
@@ -204,8 +205,9 @@ static void test_par_bundle_records_and_serves(void **state) {
 /* Small, but with an edge for antialiasing, a reflection and a shadow. */
 static const char scene_text[] =
     "camera { location <0, 1, -4> look_at <0, 0.5, 0> }\n"
-    "light_source { <3, 5, -4> color rgb 1 }\n"
-    "plane { y, 0 pigment { checker color rgb 1 color rgb 0.2 } }\n"
+    "light_source { <3, 5, -4>, color rgb 1 }\n"
+    "plane { y, 0 pigment { color rgb <0.8, 0.8, 0.6> } }\n"
+    "box { <-2, 0, 1>, <-1, 1.5, 2> pigment { color rgb <0.2, 0.4, 1> } }\n"
     "sphere { <0, 0.7, 0>, 0.7 pigment { color rgb <1, 0.3, 0.2> }\n"
     "  finish { reflection 0.3 } }\n";
 
@@ -217,10 +219,13 @@ typedef struct render_fixture {
 
 static int setup_render(void **state) {
   render_fixture *f = calloc(1, sizeof *f);
-  if (!f || zr_context_new(&f->ctx) != ZR_OK ||
-      zr_scene_parse_string(f->ctx, "<test>", scene_text,
-                            sizeof scene_text - 1, &f->scene) != ZR_OK)
+  if (!f || zr_context_new(&f->ctx) != ZR_OK)
     return -1;
+  if (zr_scene_parse_string(f->ctx, "<test>", scene_text,
+                            sizeof scene_text - 1, &f->scene) != ZR_OK) {
+    print_error("%s", zr_context_last_error(f->ctx));
+    return -1;
+  }
   zr_render_params_init(&f->params);
   f->params.width = 37; /* odd sizes: rows do not split evenly */
   f->params.height = 23;
@@ -354,6 +359,8 @@ static void test_par_world_of_one_renders_image(void **state) {
   assert_int_equal(zr__par_size(par), 1);
   assert_int_equal(zr__par_uses_mpi(par), 0);
   assert_true(zr__par_default_threads(par) >= 1);
+  assert_int_equal(zr__par_threads(par, 3), 3);
+  assert_int_equal(zr__par_threads(par, 0), zr__par_default_threads(par));
   assert_int_equal(zr__par_agree(par, ZR_ESYNTAX), ZR_ESYNTAX);
   zr_status root = ZR_EUNDEFINED;
   zr_bundle b;

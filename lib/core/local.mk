@@ -10,3 +10,4 @@ TESTS += tests/test_core
 tests_test_core_SOURCES = tests/test_core.c
 tests_test_core_CPPFLAGS = $(TEST_CPPFLAGS)
 tests_test_core_LDADD = $(TEST_LDADD)
+tests_test_core_LDFLAGS = -static

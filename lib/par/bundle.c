@@ -188,13 +188,20 @@ zr_status zr__bundle_deserialise(zr_bundle *bundle, const char *bytes,
   return ZR_OK;
 }
 
-/* A malloc'ed copy for the library, which frees what a reader returns. */
+/*
+ * A malloc'ed copy for the library, which frees what a reader returns.
+ * Like the library's own stdio reader, it ends in a NUL that size does
+ * not count, so a scanner may treat the text as a C string.
+ */
 static zr_status serve(const zr_bundle_file *f, char **bytes, size_t *size) {
-  char *copy = malloc(f->size ? f->size : 1);
+  if (f->size == SIZE_MAX)
+    return ZR_ENOMEM;
+  char *copy = malloc(f->size + 1);
   if (!copy)
     return ZR_ENOMEM;
   if (f->size)
     memcpy(copy, f->bytes, f->size);
+  copy[f->size] = '\0';
   *bytes = copy;
   *size = f->size;
   return ZR_OK;
@@ -208,7 +215,8 @@ static zr_status read_disk(const char *path, char **bytes, size_t *size) {
   char *buf = malloc(cap);
   zr_status status = buf ? ZR_OK : ZR_ENOMEM;
   while (status == ZR_OK) {
-    if (len == cap) {
+    /* One byte is kept free for the terminating NUL. */
+    if (len + 1 >= cap) {
       char *grown = cap > SIZE_MAX / 2 ? NULL : realloc(buf, 2 * cap);
       if (!grown) {
         status = ZR_ENOMEM;
@@ -217,7 +225,7 @@ static zr_status read_disk(const char *path, char **bytes, size_t *size) {
       buf = grown;
       cap *= 2;
     }
-    size_t n = fread(buf + len, 1, cap - len, file);
+    size_t n = fread(buf + len, 1, cap - 1 - len, file);
     len += n;
     if (n == 0) {
       /* A directory opens on Linux and then fails to read: EIO. */
@@ -231,6 +239,7 @@ static zr_status read_disk(const char *path, char **bytes, size_t *size) {
     free(buf);
     return status;
   }
+  buf[len] = '\0';
   *bytes = buf;
   *size = len;
   return ZR_OK;

@@ -57,7 +57,9 @@ zr_status zr__bundle_deserialise(zr_bundle *bundle, const char *bytes,
 zr_status zr__bundle_record_reader(const char *path, char **bytes,
                                    size_t *size, void *user);
 
-/* A zr_read_fn (user: the zr_bundle) serving recorded files only. */
+/* A zr_read_fn (user: the zr_bundle) serving recorded files only.  Both
+   readers, like the library's default one, put a NUL after the bytes
+   (not counted in *size). */
 zr_status zr__bundle_serve_reader(const char *path, char **bytes,
                                   size_t *size, void *user);
 

@@ -36,6 +36,7 @@
 
 struct zr_par {
   int uses_mpi;
+  int threads_allowed; /* the MPI library allows threads beside MPI */
   int rank;
   int size;
   int local_size;
@@ -66,6 +67,7 @@ zr_status zr__par_init(int *argc, char ***argv, zr_par **out) {
   par->size = 1;
   par->local_size = 1;
   par->comm = MPI_COMM_NULL;
+  par->threads_allowed = 1;
   if (launched_by_mpi()) {
     int provided;
     /* Only the main thread calls MPI; workers only render. */
@@ -75,6 +77,9 @@ zr_status zr__par_init(int *argc, char ***argv, zr_par **out) {
       return ZR_EMPI;
     }
     par->uses_mpi = 1;
+    /* With MPI_THREAD_SINGLE even threads that never call MPI are not
+       allowed, so such an MPI gets one thread per rank. */
+    par->threads_allowed = provided >= MPI_THREAD_FUNNELED;
     MPI_Comm node = MPI_COMM_NULL;
     /* A private communicator, returning errors instead of aborting. */
     int rc = MPI_Comm_dup(MPI_COMM_WORLD, &par->comm);
@@ -115,6 +120,12 @@ int zr__par_rank(const zr_par *par) { return par->rank; }
 int zr__par_size(const zr_par *par) { return par->size; }
 int zr__par_uses_mpi(const zr_par *par) { return par->uses_mpi; }
 int zr__par_local_size(const zr_par *par) { return par->local_size; }
+
+int zr__par_threads(const zr_par *par, int wanted) {
+  if (!par->threads_allowed)
+    return 1;
+  return wanted > 0 ? wanted : zr__par_default_threads(par);
+}
 
 int zr__par_default_threads(const zr_par *par) {
   long online = sysconf(_SC_NPROCESSORS_ONLN);
@@ -201,6 +212,29 @@ zr_status zr__par_share_bundle(zr_par *par, zr_bundle *bundle,
   }
   free(blob);
   return s;
+}
+
+zr_status zr__par_share_string(zr_par *par, char **text) {
+  if (!par->uses_mpi || par->size == 1)
+    return ZR_OK;
+  /* The length, or -1 for NULL, then the bytes with their NUL. */
+  int64_t length = par->rank == 0 && *text ? (int64_t)strlen(*text) : -1;
+  if (MPI_Bcast(&length, 1, MPI_INT64_T, 0, par->comm) != MPI_SUCCESS)
+    return ZR_EMPI;
+  char *copy = NULL;
+  if (par->rank != 0 && length >= 0)
+    copy = malloc((size_t)length + 1);
+  zr_status s = zr__par_agree(
+      par, par->rank == 0 || length < 0 || copy ? ZR_OK : ZR_ENOMEM);
+  if (s == ZR_OK && length >= 0)
+    s = bcast_bytes(par, par->rank == 0 ? *text : copy, (size_t)length + 1);
+  if (s != ZR_OK || par->rank == 0) {
+    free(copy);
+    return s;
+  }
+  free(*text);
+  *text = copy;
+  return ZR_OK;
 }
 
 zr_status zr__par_agree(zr_par *par, zr_status local) {

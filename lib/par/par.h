@@ -41,6 +41,12 @@ int zr__par_default_threads(const zr_par *par);
    zr__par_init). */
 void zr__par_mpi_version(char *buf, size_t size);
 
+/*
+ * The threads a rank will use: wanted (or the default when wanted is 0),
+ * but 1 when the MPI library does not allow threads beside it.
+ */
+int zr__par_threads(const zr_par *par, int wanted);
+
 /* Seconds on a monotonic clock. */
 double zr__par_now(void);
 
@@ -50,6 +56,12 @@ double zr__par_now(void);
  */
 zr_status zr__par_share_bundle(zr_par *par, zr_bundle *bundle,
                                zr_status *root_status);
+
+/*
+ * Rank 0's string (which may be NULL) replaces *text on every other rank
+ * (a malloc'ed copy; the old one is freed).  Collective.
+ */
+zr_status zr__par_share_string(zr_par *par, char **text);
 
 /*
  * Every rank passes its status; every rank gets the same answer: ZR_OK

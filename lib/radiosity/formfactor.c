@@ -30,11 +30,19 @@
  * parameter rectangle, weighting by the area element (Hanrahan,
  * Salzman and Aupperle, "A rapid hierarchical radiosity algorithm",
  * SIGGRAPH 1991, use this inner exact factor with outer quadrature).
+ * The contour integral depends only on the boundary, so by Stokes'
+ * theorem it also gives the factor of a curved source cell from its
+ * boundary curve, provided the cell is seen one-to-one from the point
+ * (true inside a sphere, for instance); zr__ff_patch_patch samples that
+ * boundary with chords, losing O(segs^-2).  Clipping stays exact for
+ * curved cells too: the part of the boundary that the clip replaces lies
+ * in the tangent plane, where only the angle it subtends counts.
  *
  * The oracle.  Hanrahan et al. decide where to refine from a cheap upper
  * estimate.  A differential area facing a coaxial disc of area A at
- * distance r has F = A / (pi r^2 + A) exactly; tilting the disc and the
- * receiver multiplies by the two cosines.  Unlike A cos cos / (pi r^2),
+ * distance r has F = A / (pi r^2 + A) exactly; for tilted patches the
+ * estimate multiplies by the two cosines at the centres, which is the
+ * far-field limit.  Unlike A cos cos / (pi r^2),
  * the point-source factor, this never exceeds 1 and has no pole at r = 0,
  * so touching patches (a box on a floor, a lamp against a wall) give a
  * bounded estimate and refinement ends at the minimum area as it should.
@@ -51,7 +59,7 @@
  */
 typedef struct contour {
   zr_vec3 p, n;        /* the receiving point and its normal */
-  zr_vec3 first, prev; /* first and previous vertices, relative to p */
+  zr_vec3 first, prev; /* unit directions to the first and last vertex */
   int count;
   double sum;
 } contour;
@@ -68,7 +76,10 @@ static void contour_edge(contour *c, zr_vec3 ra, zr_vec3 rb) {
 }
 
 static void contour_vertex(contour *c, zr_vec3 v) {
-  zr_vec3 r = zr_v3_sub(v, c->p);
+  /* Unit directions: the terms depend only on directions, and products
+     of raw differences would overflow or underflow in scenes scaled by
+     1e+-100 long before the directions lose precision. */
+  zr_vec3 r = zr_v3_norm(zr_v3_sub(v, c->p));
   if (c->count == 0)
     c->first = r;
   else
@@ -84,31 +95,61 @@ static double contour_close(contour *c) {
 }
 
 /*
- * Whether p lies in the polygon's plane, judged against the polygon's
- * size so the test is the same at any scene scale.  Newell's method gives
- * the plane normal of any simple polygon, convex or not.
+ * A polygon's plane, found once per polygon and reused for every point
+ * that looks at it.  Newell's method gives the plane normal of any
+ * simple polygon, convex or not (for the curved boundary of a NURBS
+ * cell, its mean plane); it runs on coordinates relative to v[0] and
+ * divided by the polygon's size, so products of coordinates neither
+ * overflow nor underflow.
  */
-static bool in_polygon_plane(zr_vec3 p, const zr_vec3 *v, size_t nv) {
+typedef struct polygon_plane {
+  const zr_vec3 *verts;
+  size_t nv;
+  zr_vec3 normal; /* unit; zero for a degenerate polygon */
+  double size;    /* largest distance from verts[0] to another vertex */
+} polygon_plane;
+
+static void polygon_plane_init(polygon_plane *pl, const zr_vec3 *v,
+                               size_t nv) {
+  pl->verts = v;
+  pl->nv = nv;
+  pl->normal = zr_v3(0, 0, 0);
+  pl->size = 0.0;
+  if (nv < 3)
+    return;
+  for (size_t i = 1; i < nv; i++)
+    pl->size = fmax(pl->size, zr_v3_len(zr_v3_sub(v[i], v[0])));
+  if (!(pl->size > 0.0))
+    return;
   zr_vec3 m = zr_v3(0, 0, 0);
-  double size = 0.0;
   for (size_t i = 0; i < nv; i++) {
-    zr_vec3 a = v[i], b = v[(i + 1) % nv];
+    zr_vec3 a = zr_v3_scale(zr_v3_sub(v[i], v[0]), 1.0 / pl->size);
+    zr_vec3 b =
+        zr_v3_scale(zr_v3_sub(v[(i + 1) % nv], v[0]), 1.0 / pl->size);
     m.x += (a.y - b.y) * (a.z + b.z);
     m.y += (a.z - b.z) * (a.x + b.x);
     m.z += (a.x - b.x) * (a.y + b.y);
-    size = fmax(size, zr_v3_len(zr_v3_sub(a, v[0])));
   }
-  double ml = zr_v3_len(m);
-  if (!(ml > 0.0))
-    return true; /* a degenerate polygon has no area to see */
-  double dist = zr_v3_dot(m, zr_v3_sub(p, v[0])) / ml;
-  return fabs(dist) <= 1e-12 * size;
+  pl->normal = zr_v3_norm(m);
 }
 
-double zr__ff_point_polygon(zr_vec3 p, zr_vec3 n, const zr_vec3 *verts,
-                            size_t nv) {
-  if (nv < 3 || in_polygon_plane(p, verts, nv))
+/*
+ * Whether p lies in the polygon's plane, judged against the polygon's
+ * size so the test is the same at any scene scale.  A polygon without
+ * area counts as seen edge-on.
+ */
+static bool in_plane(const polygon_plane *pl, zr_vec3 p) {
+  if (zr_v3_dot(pl->normal, pl->normal) == 0.0)
+    return true;
+  zr_vec3 d = zr_v3_scale(zr_v3_sub(p, pl->verts[0]), 1.0 / pl->size);
+  return fabs(zr_v3_dot(pl->normal, d)) <= 1e-12;
+}
+
+static double point_polygon(zr_vec3 p, zr_vec3 n, const polygon_plane *pl) {
+  if (in_plane(pl, p))
     return 0.0;
+  const zr_vec3 *verts = pl->verts;
+  size_t nv = pl->nv;
   contour c = {p, n, zr_v3(0, 0, 0), zr_v3(0, 0, 0), 0, 0.0};
   /* Sutherland-Hodgman against the half-space h(x) = n . (x - p) >= 0:
      for each edge a -> b emit the crossing point, then b if in front. */
@@ -128,54 +169,96 @@ double zr__ff_point_polygon(zr_vec3 p, zr_vec3 n, const zr_vec3 *verts,
   return fmin(1.0, contour_close(&c));
 }
 
+double zr__ff_point_polygon(zr_vec3 p, zr_vec3 n, const zr_vec3 *verts,
+                            size_t nv) {
+  polygon_plane pl;
+  polygon_plane_init(&pl, verts, nv);
+  return point_polygon(p, n, &pl);
+}
+
 /* ---- quadrature over patches ---- */
+
+/* The kernel cos_p cos_q / (pi r^2) summed over quadrature points. */
+typedef struct kernel_sum {
+  zr_vec3 p, n;
+  double sum;
+} kernel_sum;
+
+static void add_kernel(const zr__surface_point *q, double weight,
+                       void *user) {
+  kernel_sum *k = user;
+  zr_vec3 d = zr_v3_sub(q->p, k->p);
+  double r2 = zr_v3_dot(d, d);
+  double cos_p = zr_v3_dot(k->n, d);
+  /* A Gauss point on p itself is the kernel's pole; behind p, nothing. */
+  if (!(r2 > 0.0) || cos_p <= 0.0)
+    return;
+  /* cos_p cos_q / r^2 with both cosines unnormalised: / r^4. */
+  double cos_q = fabs(zr_v3_dot(q->n, d));
+  k->sum += weight * cos_p * cos_q / (M_PI * r2 * r2);
+}
 
 double zr__ff_point_patch_quadrature(zr_vec3 p, zr_vec3 n,
                                      const zr__surface *src, double u0,
                                      double u1, double v0, double v1,
                                      const zr__gauss_rule *rule) {
-  double sum = 0.0;
-  for (int i = 0; i < rule->n; i++) {
-    for (int j = 0; j < rule->n; j++) {
-      zr__surface_point q;
-      zr__surface_eval(src, u0 + (u1 - u0) * rule->x[i],
-                       v0 + (v1 - v0) * rule->x[j], &q);
-      zr_vec3 d = zr_v3_sub(q.p, p);
-      double r2 = zr_v3_dot(d, d);
-      if (!(r2 > 0.0))
-        continue; /* a Gauss point on p itself: the kernel's pole */
-      double cos_p = zr_v3_dot(n, d);
-      if (cos_p <= 0.0)
-        continue;
-      /* cos_p cos_q / r^2 with both cosines unnormalised: / r^4. */
-      double cos_q = fabs(zr_v3_dot(q.n, d));
-      sum += rule->w[i] * rule->w[j] * q.da * cos_p * cos_q / (r2 * r2);
-    }
-  }
-  return sum * (u1 - u0) * (v1 - v0) / M_PI;
+  kernel_sum k = {p, n, 0.0};
+  zr__surface_quadrature(src, u0, u1, v0, v1, 1, rule, add_kernel, &k);
+  return k.sum;
+}
+
+/* The area-weighted point-to-polygon factor over a receiver. */
+typedef struct polygon_flux {
+  polygon_plane plane;
+  double flux, area;
+} polygon_flux;
+
+static void add_polygon_flux(const zr__surface_point *pt, double weight,
+                             void *user) {
+  polygon_flux *f = user;
+  f->area += weight;
+  f->flux += weight * point_polygon(pt->p, pt->n, &f->plane);
 }
 
 double zr__ff_patch_polygon(const zr__surface *recv, double u0, double u1,
                             double v0, double v1, const zr_vec3 *verts,
                             size_t nv, int cells,
                             const zr__gauss_rule *rule) {
-  double du = (u1 - u0) / cells, dv = (v1 - v0) / cells;
-  double flux = 0.0, area = 0.0;
-  for (int a = 0; a < cells; a++) {
-    for (int b = 0; b < cells; b++) {
-      for (int i = 0; i < rule->n; i++) {
-        for (int j = 0; j < rule->n; j++) {
-          zr__surface_point pt;
-          zr__surface_eval(recv, u0 + (a + rule->x[i]) * du,
-                           v0 + (b + rule->x[j]) * dv, &pt);
-          double w = rule->w[i] * rule->w[j] * pt.da;
-          area += w;
-          flux += w * zr__ff_point_polygon(pt.p, pt.n, verts, nv);
-        }
-      }
-    }
-  }
-  return area > 0.0 ? flux / area : 0.0;
+  polygon_flux f = {{0}, 0.0, 0.0};
+  polygon_plane_init(&f.plane, verts, nv);
+  zr__surface_quadrature(recv, u0, u1, v0, v1, cells, rule,
+                         add_polygon_flux, &f);
+  return f.area > 0.0 ? f.flux / f.area : 0.0;
+}
+
+/* Like polygon_flux, with the receiver's normals turned to one side. */
+typedef struct sided_flux {
+  polygon_flux f;
+  double side;
+} sided_flux;
+
+static void add_sided_flux(const zr__surface_point *pt, double weight,
+                           void *user) {
+  sided_flux *sf = user;
+  zr__surface_point q = *pt;
+  q.n = zr_v3_scale(q.n, sf->side);
+  add_polygon_flux(&q, weight, &sf->f);
+}
+
+double zr__ff_patch_patch(const zr__surface *recv, const double rcell[4],
+                          double side, const zr__surface *src,
+                          const double scell[4], int segs, int cells,
+                          const zr__gauss_rule *rule) {
+  zr_vec3 poly[4 * ZR__FF_MAX_SEGS];
+  segs = segs < 1 ? 1 : segs > ZR__FF_MAX_SEGS ? ZR__FF_MAX_SEGS : segs;
+  size_t nv = zr__surface_patch_polygon(src, scell[0], scell[1], scell[2],
+                                        scell[3], segs, poly,
+                                        4 * ZR__FF_MAX_SEGS);
+  sided_flux sf = {{{0}, 0.0, 0.0}, side < 0.0 ? -1.0 : 1.0};
+  polygon_plane_init(&sf.f.plane, poly, nv);
+  zr__surface_quadrature(recv, rcell[0], rcell[1], rcell[2], rcell[3], cells,
+                         rule, add_sided_flux, &sf);
+  return sf.f.area > 0.0 ? sf.f.flux / sf.f.area : 0.0;
 }
 
 /* ---- the refinement oracle ---- */

@@ -29,9 +29,10 @@ double zr__ff_point_polygon(zr_vec3 p, zr_vec3 n, const zr_vec3 *verts,
 /*
  * The form factor from a differential area at p, n to the parameter
  * rectangle [u0,u1] x [v0,v1] of src by the product Gauss rule of the
- * kernel cos_p cos_q / (pi r^2) dA_q: for curved patches, and valid when
- * the patch is small against its distance (it is not an exact factor
- * for near or touching patches, where the kernel is singular).
+ * kernel cos_p cos_q / (pi r^2) dA_q (split at knot lines, see
+ * zr__surface_quadrature): for curved patches, and valid when the patch
+ * is small against its distance (it is not an exact factor for near or
+ * touching patches, where the kernel is singular).
  */
 double zr__ff_point_patch_quadrature(zr_vec3 p, zr_vec3 n,
                                      const zr__surface *src, double u0,
@@ -42,12 +43,32 @@ double zr__ff_point_patch_quadrature(zr_vec3 p, zr_vec3 n,
  * The form factor from the receiver patch [u0,u1] x [v0,v1] of recv to
  * the polygon: the area average of the exact point-to-polygon factor,
  * sampled at the product Gauss points of rule (n x n points) on cells x
- * cells sub-rectangles.  F_recv->poly = (1/A) int F(dA -> poly) dA.
+ * cells sub-rectangles of every knot span (zr__surface_quadrature).
+ * F_recv->poly = (1/A) int F(dA -> poly) dA.
  */
 double zr__ff_patch_polygon(const zr__surface *recv, double u0, double u1,
                             double v0, double v1, const zr_vec3 *verts,
                             size_t nv, int cells,
                             const zr__gauss_rule *rule);
+
+/* The most points zr__ff_patch_patch takes on one curved edge. */
+#define ZR__FF_MAX_SEGS 64
+
+/*
+ * The form factor from the cell [ru0,ru1] x [rv0,rv1] of recv to the cell
+ * [su0,su1] x [sv0,sv1] of src, for a link.  The receiver's normals are
+ * flipped when side < 0 (the inside of a closed surface).  The receiver
+ * is integrated by zr__surface_quadrature (cells, rule); at each point
+ * the source cell's boundary (zr__surface_patch_polygon, segs points per
+ * curved edge, at most ZR__FF_MAX_SEGS) goes into the contour formula.
+ * That is exact for straight-edged planar cells and, by Stokes' theorem,
+ * exact up to the chords' O(segs^-2) for a curved cell that the receiver
+ * points see one-to-one (no silhouette inside the cell).
+ */
+double zr__ff_patch_patch(const zr__surface *recv, const double rcell[4],
+                          double side, const zr__surface *src,
+                          const double scell[4], int segs, int cells,
+                          const zr__gauss_rule *rule);
 
 /*
  * Hanrahan, Salzman and Aupperle's cheap estimate of the form factor from

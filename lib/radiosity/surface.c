@@ -22,6 +22,17 @@
  * outward.  Where S_u vanishes (a pole, an apex, a disc's centre) the
  * normal is the limit along v, (S_uv x S_v) up to sign, which is exact
  * rather than a nudge to a nearby parameter.
+ *
+ * Infinite planes become the parallelogram that covers their section of
+ * the scene's bounds.  Integrals over a parameter rectangle are split at
+ * the NURBS knots first: the rational circle's speed has a kink at each
+ * quarter, which costs a Gauss rule its geometric convergence (measured:
+ * 1e-3 relative error with 8 x 8 points over a cell straddling two
+ * knots, rounding level once split).  zr__surface_locate inverts S for a
+ * ray hit: planar kinds by solving in the plane, surfaces of revolution
+ * in their model frame, where the angle round the axis and along the
+ * profile give u and v through the closed-form inverse of the rational
+ * quarter arc.
  */
 #include "radiosity/surface.h"
 
@@ -80,16 +91,43 @@ static void frame_matrix(double m[4][4], zr_vec3 origin, zr_vec3 axis) {
   m[3][3] = 1.0;
 }
 
-/* Turns profile about axis (unit) at origin, then applies xf. */
+/* r = a * b for 4x4 matrices. */
+static void mat_mul(double r[4][4], const double a[4][4],
+                    const double b[4][4]) {
+  for (int i = 0; i < 4; i++)
+    for (int j = 0; j < 4; j++) {
+      double sum = 0.0;
+      for (int k = 0; k < 4; k++)
+        sum += a[i][k] * b[k][j];
+      r[i][j] = sum;
+    }
+}
+
+/*
+ * Turns profile about axis (unit) at origin, then applies xf; keeps the
+ * inverse map, world to model, for locating points.  The frame is
+ * orthonormal, so its inverse is its transpose and -R^T origin.
+ */
 static void build_revolution(zr__surface *s, const zr__nurbs_profile *prof,
                              zr_vec3 origin, zr_vec3 axis,
                              const zr_transform *xf) {
-  double frame[4][4];
+  double frame[4][4], inv[4][4] = {{0}};
   zr__nurbs_revolve(&s->nurbs, prof);
   frame_matrix(frame, origin, axis);
   zr__nurbs_transform(&s->nurbs, frame);
   if (xf)
     zr__nurbs_transform(&s->nurbs, xf->m);
+  for (int i = 0; i < 3; i++) {
+    for (int j = 0; j < 3; j++)
+      inv[i][j] = frame[j][i];
+    inv[i][3] = -(frame[0][i] * origin.x + frame[1][i] * origin.y +
+                  frame[2][i] * origin.z);
+  }
+  inv[3][3] = 1.0;
+  if (xf)
+    mat_mul(s->to_model, inv, xf->inv);
+  else
+    memcpy(s->to_model, inv, sizeof inv);
 }
 
 /* ---- constructors ---- */
@@ -172,6 +210,109 @@ zr_status zr__surface_box_faces(zr__surface faces[6], zr_vec3 corner1,
   return ZR_OK;
 }
 
+/*
+ * The points where the plane n . x = n . p0 cuts the twelve edges of the
+ * box; returns how many (at most 12, duplicates at corners included,
+ * which only the bounding rectangle sees).
+ */
+static int box_section(zr_vec3 n, zr_vec3 p0, zr_vec3 lo, zr_vec3 hi,
+                       zr_vec3 *out) {
+  int count = 0;
+  double level = zr_v3_dot(n, p0);
+  for (int axis = 0; axis < 3; axis++) {
+    for (int c = 0; c < 4; c++) {
+      /* The edge along axis through the corner picked by the bits of c
+         on the other two axes. */
+      double a[3], b[3];
+      for (int k = 0, bit = 0; k < 3; k++) {
+        double lok = zr_v3_get(lo, k), hik = zr_v3_get(hi, k);
+        if (k == axis) {
+          a[k] = lok;
+          b[k] = hik;
+        } else {
+          a[k] = b[k] = (c >> bit++) & 1 ? hik : lok;
+        }
+      }
+      zr_vec3 pa = zr_v3(a[0], a[1], a[2]), pb = zr_v3(b[0], b[1], b[2]);
+      double ha = zr_v3_dot(n, pa) - level, hb = zr_v3_dot(n, pb) - level;
+      if ((ha <= 0.0 && hb >= 0.0) || (ha >= 0.0 && hb <= 0.0)) {
+        double t = ha == hb ? 0.0 : ha / (ha - hb);
+        out[count++] = zr_v3_madd(pa, zr_v3_sub(pb, pa), t);
+      }
+    }
+  }
+  return count;
+}
+
+/* In-plane axes a, b with a x b = n; the box's own axes when n is one. */
+static void plane_axes(zr_vec3 *n, zr_vec3 *a, zr_vec3 *b, bool *aligned) {
+  int axis = -1;
+  for (int k = 0; k < 3; k++) {
+    double others = 0.0;
+    for (int j = 0; j < 3; j++)
+      if (j != k)
+        others += fabs(zr_v3_get(*n, j));
+    if (others <= 1e-12 * fabs(zr_v3_get(*n, k)))
+      axis = k;
+  }
+  *aligned = axis >= 0;
+  if (*aligned) {
+    /* Snap to the axis so the section is exactly a box face's shape. */
+    double sign = zr_v3_get(*n, axis) > 0.0 ? 1.0 : -1.0;
+    *n = zr_v3(axis == 0 ? sign : 0, axis == 1 ? sign : 0,
+               axis == 2 ? sign : 0);
+    zr_vec3 next = zr_v3(axis == 2 ? 1 : 0, axis == 0 ? 1 : 0,
+                         axis == 1 ? 1 : 0);
+    *a = next;
+    *b = zr_v3_cross(*n, *a);
+    return;
+  }
+  zr_vec3 helper = fabs(n->x) < 0.9 ? zr_v3(1, 0, 0) : zr_v3(0, 1, 0);
+  *a = zr_v3_norm(zr_v3_cross(helper, *n));
+  *b = zr_v3_cross(*n, *a);
+}
+
+zr_status zr__surface_plane_in_box(zr__surface *s, zr_vec3 normal,
+                                   double distance, zr_vec3 lo, zr_vec3 hi,
+                                   const zr_transform *xf, bool *covers_more,
+                                   zr_context *ctx,
+                                   const zr_diag_place *where) {
+  memset(s, 0, sizeof *s);
+  if (!vec_finite(normal) || !isfinite(distance) || !vec_finite(lo) ||
+      !vec_finite(hi) || !(zr_v3_len(normal) > 0.0))
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, where,
+                    "plane: zero or non-finite normal, distance or bounds");
+  zr_status st = set_orientation(s, xf, ctx, where);
+  if (st != ZR_OK)
+    return st;
+  double nl = zr_v3_len(normal);
+  zr_vec3 p0 = zr_v3_scale(normal, distance / (nl * nl));
+  zr_vec3 n = xf ? zr__xform_normal(xf->inv, normal) : normal;
+  n = zr_v3_norm(n);
+  p0 = map_point(xf, p0);
+  zr_vec3 pts[12], a, b;
+  bool aligned;
+  plane_axes(&n, &a, &b, &aligned);
+  int count = box_section(n, p0, zr_v3_min(lo, hi), zr_v3_max(lo, hi), pts);
+  double amin = INFINITY, amax = -INFINITY, bmin = INFINITY, bmax = -INFINITY;
+  for (int k = 0; k < count; k++) {
+    zr_vec3 d = zr_v3_sub(pts[k], p0);
+    amin = fmin(amin, zr_v3_dot(d, a));
+    amax = fmax(amax, zr_v3_dot(d, a));
+    bmin = fmin(bmin, zr_v3_dot(d, b));
+    bmax = fmax(bmax, zr_v3_dot(d, b));
+  }
+  if (count < 3 || !(amax > amin) || !(bmax > bmin))
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, where,
+                    "plane does not cross the scene's bounds");
+  if (covers_more)
+    *covers_more = !aligned;
+  zr_vec3 origin = zr_v3_madd(zr_v3_madd(p0, a, amin), b, bmin);
+  return zr__surface_parallelogram(s, origin, zr_v3_scale(a, amax - amin),
+                                   zr_v3_scale(b, bmax - bmin), NULL, ctx,
+                                   where);
+}
+
 zr_status zr__surface_disc(zr__surface *s, zr_vec3 centre, zr_vec3 normal,
                            double radius, double hole_radius,
                            const zr_transform *xf, zr_context *ctx,
@@ -199,6 +340,8 @@ zr_status zr__surface_disc(zr__surface *s, zr_vec3 centre, zr_vec3 normal,
   /* From the rim inwards: S_u x S_v then points along +y, the normal. */
   zr__nurbs_profile prof;
   zr__nurbs_profile_line(&prof, radius, 0.0, hole_radius, 0.0);
+  s->r0 = radius;
+  s->r1 = hole_radius;
   zr_vec3 axis = zr_v3_norm(normal);
   build_revolution(s, &prof, centre, axis, xf);
   zr_vec3 n = xf ? zr__xform_normal(xf->inv, axis) : axis;
@@ -223,6 +366,7 @@ zr_status zr__surface_sphere(zr__surface *s, zr_vec3 centre, double radius,
   s->kind = ZR__SURFACE_SPHERE;
   zr__nurbs_profile prof;
   zr__nurbs_profile_half_circle(&prof, radius);
+  s->r0 = s->r1 = radius;
   build_revolution(s, &prof, centre, zr_v3(0, 1, 0), xf);
   return ZR_OK;
 }
@@ -262,6 +406,8 @@ zr_status zr__surface_cylinder(zr__surface *s, zr_vec3 base, zr_vec3 cap,
   s->kind = ZR__SURFACE_CYLINDER;
   zr__nurbs_profile prof;
   zr__nurbs_profile_line(&prof, radius, 0.0, radius, length);
+  s->r0 = s->r1 = radius;
+  s->height = length;
   build_revolution(s, &prof, base, axis, xf);
   return ZR_OK;
 }
@@ -288,6 +434,9 @@ zr_status zr__surface_cone(zr__surface *s, zr_vec3 base, double base_radius,
   s->kind = ZR__SURFACE_CONE;
   zr__nurbs_profile prof;
   zr__nurbs_profile_line(&prof, base_radius, 0.0, cap_radius, length);
+  s->r0 = base_radius;
+  s->r1 = cap_radius;
+  s->height = length;
   build_revolution(s, &prof, base, axis, xf);
   return ZR_OK;
 }
@@ -347,26 +496,145 @@ void zr__surface_eval(const zr__surface *s, double u, double v,
   }
 }
 
+/*
+ * The pieces of [a, b] that lie in single knot spans: a, the distinct
+ * knots strictly inside, b.  The rational circle is only C1 across its
+ * knots (its speed has a kink there), so a Gauss rule spanning a knot
+ * converges algebraically; split at knots it converges geometrically.
+ */
+static int knot_breaks(const double *knots, int n_knots, double a, double b,
+                       double *out) {
+  int n = 0;
+  out[n++] = a;
+  for (int k = 0; k < n_knots; k++)
+    if (knots[k] > out[n - 1] && knots[k] < b)
+      out[n++] = knots[k];
+  out[n++] = b;
+  return n;
+}
+
+void zr__surface_quadrature(const zr__surface *s, double u0, double u1,
+                            double v0, double v1, int cells,
+                            const zr__gauss_rule *rule,
+                            zr__surface_visit_fn visit, void *user) {
+  double bu[ZR__NURBS_MAX_KNOTS + 2] = {u0, u1}, bv[ZR__NURBS_MAX_KNOTS + 2] =
+                                                     {v0, v1};
+  int nbu = 2, nbv = 2;
+  if (!s->planar || s->kind == ZR__SURFACE_DISC) {
+    const zr__nurbs *nb = &s->nurbs;
+    nbu = knot_breaks(nb->ku, nb->nu + nb->p + 1, u0, u1, bu);
+    nbv = knot_breaks(nb->kv, nb->nv + nb->q + 1, v0, v1, bv);
+  }
+  for (int pu = 0; pu + 1 < nbu; pu++) {
+    double du = (bu[pu + 1] - bu[pu]) / cells;
+    for (int pv = 0; pv + 1 < nbv; pv++) {
+      double dv = (bv[pv + 1] - bv[pv]) / cells;
+      for (int a = 0; a < cells * cells; a++) {
+        double cu = bu[pu] + (a % cells) * du, cv = bv[pv] + (a / cells) * dv;
+        for (int i = 0; i < rule->n; i++) {
+          for (int j = 0; j < rule->n; j++) {
+            zr__surface_point pt;
+            zr__surface_eval(s, cu + rule->x[i] * du, cv + rule->x[j] * dv,
+                             &pt);
+            visit(&pt, rule->w[i] * rule->w[j] * du * dv * pt.da, user);
+          }
+        }
+      }
+    }
+  }
+}
+
+static void add_weight(const zr__surface_point *pt, double weight,
+                       void *user) {
+  (void)pt;
+  *(double *)user += weight;
+}
+
 double zr__surface_area(const zr__surface *s, double u0, double u1,
                         double v0, double v1, int cells,
                         const zr__gauss_rule *rule) {
-  double du = (u1 - u0) / cells, dv = (v1 - v0) / cells;
   double sum = 0.0;
-  for (int a = 0; a < cells; a++) {
-    for (int b = 0; b < cells; b++) {
-      double cell = 0.0;
-      for (int i = 0; i < rule->n; i++) {
-        for (int j = 0; j < rule->n; j++) {
-          zr__surface_point pt;
-          zr__surface_eval(s, u0 + (a + rule->x[i]) * du,
-                           v0 + (b + rule->x[j]) * dv, &pt);
-          cell += rule->w[i] * rule->w[j] * pt.da;
-        }
-      }
-      sum += cell;
-    }
+  zr__surface_quadrature(s, u0, u1, v0, v1, cells, rule, add_weight, &sum);
+  return sum;
+}
+
+/* ---- locating points ---- */
+
+/*
+ * The parameter t of the rational quarter arc (weights 1, sqrt(2)/2, 1)
+ * at the angle phi in [0, pi/2] from its start.  With s = t / (1 - t)
+ * the arc's point is (1 + sqrt2 s, sqrt2 s + s^2) / (1 + sqrt2 s + s^2),
+ * so tan phi = (sqrt2 s + s^2) / (1 + sqrt2 s); its root is
+ * s = (1 - cos phi + sin phi) / (sqrt2 cos phi), rewritten for t so that
+ * no division by cos phi remains.
+ */
+static double quarter_arc_param(double phi) {
+  double num = 1.0 - cos(phi) + sin(phi);
+  return num / (num + M_SQRT2 * cos(phi));
+}
+
+/* The parameter of an arc made of quarters at the angle phi from its
+   start, in [0, quarters * pi/2]. */
+static double arc_param(double phi, int quarters) {
+  int k = (int)floor(phi / M_PI_2);
+  k = k < 0 ? 0 : k >= quarters ? quarters - 1 : k;
+  return (k + quarter_arc_param(phi - k * M_PI_2)) / quarters;
+}
+
+static double clamp01(double t) { return t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t; }
+
+/* Solves p - o = a e1 + b e2 in the least-squares sense (Gram matrix). */
+static void plane_coords(zr_vec3 d, zr_vec3 e1, zr_vec3 e2, double *a,
+                         double *b) {
+  double g11 = zr_v3_dot(e1, e1), g12 = zr_v3_dot(e1, e2);
+  double g22 = zr_v3_dot(e2, e2);
+  double r1 = zr_v3_dot(d, e1), r2 = zr_v3_dot(d, e2);
+  double det = g11 * g22 - g12 * g12;
+  *a = (r1 * g22 - r2 * g12) / det;
+  *b = (r2 * g11 - r1 * g12) / det;
+}
+
+static void locate_revolution(const zr__surface *s, zr_vec3 p, double *u,
+                              double *v) {
+  zr_vec3 q = zr__xform_point(s->to_model, p);
+  double rho = hypot(q.x, q.z);
+  double phi = atan2(-q.z, q.x);
+  if (phi < 0.0)
+    phi += 2.0 * M_PI;
+  *u = rho > 0.0 ? arc_param(phi, 4) : 0.0;
+  switch (s->kind) {
+  case ZR__SURFACE_SPHERE:
+    *v = arc_param(atan2(q.y, rho) + M_PI_2, 2);
+    break;
+  case ZR__SURFACE_DISC:
+    *v = (s->r0 - rho) / (s->r0 - s->r1);
+    break;
+  default:
+    *v = q.y / s->height;
+    break;
   }
-  return sum * du * dv;
+}
+
+void zr__surface_locate(const zr__surface *s, zr_vec3 p, double *u,
+                        double *v) {
+  double a, b;
+  switch (s->kind) {
+  case ZR__SURFACE_PARALLELOGRAM:
+    plane_coords(zr_v3_sub(p, s->p[0]), s->p[1], s->p[2], u, v);
+    break;
+  case ZR__SURFACE_TRIANGLE:
+    /* Barycentric weights b1, b2 of p1, p2: u = b1 + b2, v = b2 / u. */
+    plane_coords(zr_v3_sub(p, s->p[0]), zr_v3_sub(s->p[1], s->p[0]),
+                 zr_v3_sub(s->p[2], s->p[0]), &a, &b);
+    *u = a + b;
+    *v = *u > 0.0 ? b / *u : 0.0;
+    break;
+  default:
+    locate_revolution(s, p, u, v);
+    break;
+  }
+  *u = clamp01(*u);
+  *v = clamp01(*v);
 }
 
 /* ---- patch boundaries ---- */

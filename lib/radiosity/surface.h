@@ -40,6 +40,12 @@ typedef struct zr__surface {
   zr_vec3 plane_normal; /* planar kinds: the unit outward normal */
   zr_vec3 p[3];         /* parallelogram: origin, e1, e2; triangle: p0..p2 */
   zr__nurbs nurbs;      /* curved kinds and discs */
+  /* Surfaces of revolution, for zr__surface_locate: world to the model
+     frame (axis +y, the centre or base at the origin) and the profile's
+     radius at v = 0 (r0) and v = 1 (r1) and height at v = 1 (the
+     sphere's radius is r0). */
+  double to_model[4][4];
+  double r0, r1, height;
 } zr__surface;
 
 /* One evaluated point. */
@@ -66,6 +72,20 @@ zr_status zr__surface_triangle(zr__surface *s, zr_vec3 p0, zr_vec3 p1,
 zr_status zr__surface_box_faces(zr__surface faces[6], zr_vec3 corner1,
                                 zr_vec3 corner2, const zr_transform *xf,
                                 zr_context *ctx, const zr_diag_place *where);
+/*
+ * An infinite plane (POV-Ray's normal and distance, then the object's
+ * transform) clipped to the world box [lo, hi], the scene's bounds, as a
+ * parallelogram facing along the plane's normal.  It is exactly the
+ * plane's section of the box when the plane is perpendicular to an axis,
+ * the usual floor or wall; otherwise it is a rectangle in the plane
+ * that covers the section, and *covers_more (may be NULL) is set so
+ * the caller trims what lies outside the bounds.
+ */
+zr_status zr__surface_plane_in_box(zr__surface *s, zr_vec3 normal,
+                                   double distance, zr_vec3 lo, zr_vec3 hi,
+                                   const zr_transform *xf, bool *covers_more,
+                                   zr_context *ctx,
+                                   const zr_diag_place *where);
 /* A disc (hole_radius 0) or annulus facing along normal. */
 zr_status zr__surface_disc(zr__surface *s, zr_vec3 centre, zr_vec3 normal,
                            double radius, double hole_radius,
@@ -88,13 +108,35 @@ zr_status zr__surface_cone(zr__surface *s, zr_vec3 base, double base_radius,
 void zr__surface_eval(const zr__surface *s, double u, double v,
                       zr__surface_point *out);
 
+/* Receives one quadrature point and its weight (area it stands for). */
+typedef void (*zr__surface_visit_fn)(const zr__surface_point *pt,
+                                     double weight, void *user);
+
 /*
- * The area of the parameter rectangle [u0,u1] x [v0,v1]: cells x cells
- * sub-rectangles, each integrated by the product Gauss rule.
+ * Visits the Gauss points of the parameter rectangle [u0,u1] x [v0,v1]:
+ * split first at the knot lines of a NURBS (where the area element has a
+ * kink), then each piece into cells x cells sub-rectangles, each with
+ * the product rule.  The weights sum to the rectangle's area.
  */
+void zr__surface_quadrature(const zr__surface *s, double u0, double u1,
+                            double v0, double v1, int cells,
+                            const zr__gauss_rule *rule,
+                            zr__surface_visit_fn visit, void *user);
+
+/* The area of the parameter rectangle by zr__surface_quadrature. */
 double zr__surface_area(const zr__surface *s, double u0, double u1,
                         double v0, double v1, int cells,
                         const zr__gauss_rule *rule);
+
+/*
+ * The (u,v) of a world point p of the surface, as a ray hit reports it,
+ * so radiosity can be looked up in the quadtree cell that holds it.  For
+ * a point off the surface it is the parameter of a nearby surface point
+ * (the projection along the model's own coordinates); results lie in
+ * [0,1].  Where u is not defined (poles, apex, a disc's centre) u = 0.
+ */
+void zr__surface_locate(const zr__surface *s, zr_vec3 p, double *u,
+                        double *v);
 
 /*
  * The boundary of the parameter rectangle as a world-space polygon, in

@@ -171,6 +171,7 @@ typedef struct zr_settings {
   bool assumed_gamma_given;
   zr_rgb ambient_light; /* default 1 */
   zr_colour background; /* default black, transmit 0 */
+  double version;       /* the last #version; the parser sets 3.7 if none */
 } zr_settings;
 
 /* ---- the scene ---- */

@@ -128,6 +128,8 @@ zr_transform *zr__sdl_matrix(zr_sdl_parser *p, const zr_sdl_list *l,
   zr_transform *t = zr__sdl_alloc(p, sizeof *t);
   if (!t)
     return NULL;
+  /* zr__transform_matrix applies the matrix after what t holds. */
+  zr__transform_identity(t);
   if (!zr__transform_matrix(t, l->v)) {
     zr__sdl_error(p, ZR_ESCENE, loc, "the matrix is singular");
     return NULL;
@@ -318,9 +320,7 @@ bool zr__sdl_object_mod(zr_sdl_parser *p, zr_object *o,
 
 /* ---- lights and camera ---- */
 
-bool zr__sdl_light(zr_sdl_parser *p, zr_light *l, const zr_sdl_expr *at,
-                   const zr_sdl_loc *loc) {
-  (void)at;
+bool zr__sdl_light(zr_sdl_parser *p, zr_light *l, const zr_sdl_loc *loc) {
   memset(l, 0, sizeof *l);
   l->kind = ZR_LIGHT_POINT;
   l->where.file = p->files[loc->file].scene_path;

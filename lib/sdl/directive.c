@@ -233,7 +233,7 @@ static char *join_path(const char *dir, size_t dir_len, const char *name) {
  * -1 after reporting.  Already read files are taken from the cache.
  */
 static int open_include(zr_sdl_parser *p, const char *name,
-                        const zr_sdl_loc *at) {
+                        const zr_sdl_loc *at, const zr_sdl_loc *directive) {
   const char *including = p->files[top(p)->file].path;
   const char *slash = strrchr(including, '/');
   size_t n_dirs = p->ctx ? p->ctx->n_include_paths : 0;
@@ -282,7 +282,7 @@ static int open_include(zr_sdl_parser *p, const char *name,
     s = add_file(p, path, bytes, size, &index, &err_loc, err, sizeof err);
     if (s == ZR_ESYNTAX) {
       /* Point into the new file, with the chain through this #include. */
-      if (push_frame(p, index, at))
+      if (push_frame(p, index, directive))
         zr__sdl_error(p, s, &err_loc, "%s", err);
       return -1;
     }
@@ -313,7 +313,7 @@ static bool do_include(zr_sdl_parser *p, const zr_sdl_loc *directive) {
                   ZR_SDL_MAX_INCLUDE_DEPTH);
     return false;
   }
-  int file = open_include(p, t->v.str, &at);
+  int file = open_include(p, t->v.str, &at, directive);
   return file >= 0 && push_frame(p, file, directive);
 }
 
@@ -335,14 +335,8 @@ zr_status zr__sdl_parse_expr(zr_sdl_parser *p, int start_token,
 
 static bool do_version(zr_sdl_parser *p, const zr_sdl_loc *directive) {
   zr_sdl_expr e;
-  if (zr__sdl_parse_expr(p, T_START_FLOAT, &e) != ZR_OK ||
-      !zr__sdl_want_float(p, &e, directive, &p->version))
-    return false;
-  /* The token that ended the expression was handed back; a ';' there
-     belongs to the directive. */
-  if (p->has_pushback && p->last_kind == ';')
-    p->has_pushback = false;
-  return true;
+  return zr__sdl_parse_expr(p, T_START_VERSION, &e) == ZR_OK &&
+         zr__sdl_want_float(p, &e, directive, &p->version);
 }
 
 static bool set_zr(zr_sdl_parser *p, zr_sdl_symtab *scope, double value) {
@@ -387,9 +381,15 @@ static bool do_zfor(zr_sdl_parser *p, const zr_sdl_loc *directive) {
                   "the count of '#zfor' must be in the same file");
     return false;
   }
-  if (count < 0) {
+  if (!(count >= 0)) {
     zr__sdl_error(p, ZR_ESCENE, directive,
                   "the count of '#zfor' is negative (%g)", count);
+    return false;
+  }
+  if (count > ZR_SDL_MAX_ZFOR) {
+    zr__sdl_error(p, ZR_ELIMIT, directive,
+                  "the count of '#zfor' is more than %d (%g)",
+                  ZR_SDL_MAX_ZFOR, count);
     return false;
   }
   zr_sdl_frame *fr = top(p);
@@ -486,13 +486,6 @@ int zr__sdl_next(zr_sdl_lexval *val, zr_sdl_loc *loc, zr_sdl_parser *p) {
     *val = v;
     *loc = p->last_loc;
     return kind;
-  }
-  if (p->has_pushback) {
-    p->has_pushback = false;
-    p->want_decl_name = p->last_kind == T_DECLARE || p->last_kind == T_LOCAL;
-    *val = p->last_val;
-    *loc = p->last_loc;
-    return p->last_kind;
   }
   for (;;) {
     if (p->status != ZR_OK)
@@ -593,6 +586,7 @@ static zr_status parse(zr_context *ctx, char *path, char *bytes, size_t size,
       zr__sdl_error(&p, ZR_ENOMEM, NULL, "out of memory");
   }
   s = p.status;
+  p.scene->settings.version = p.version;
   parser_free(&p);
   if (s == ZR_OK)
     s = zr__scene_finish(p.scene, ctx);

@@ -33,6 +33,9 @@
 
 /* How deep #include may nest before we call it runaway recursion. */
 #define ZR_SDL_MAX_INCLUDE_DEPTH 64
+/* The most times one #zfor may repeat: beyond this a typing mistake is
+   likelier than a scene, and the count must fit a long anyway. */
+#define ZR_SDL_MAX_ZFOR 100000000
 
 /* A place in a scene file: file is an index into the parser's files. */
 typedef struct zr_sdl_loc {
@@ -247,12 +250,11 @@ typedef struct zr_sdl_parser {
   double version;
   int start_token; /* pseudo-token for the next yylex, 0 for none */
   bool want_decl_name;
-  /* The token last handed to bison, for messages and pushback. */
+  /* The token last handed to bison, for messages. */
   int last_kind;
   zr_sdl_loc last_loc;
   const char *last_text;
   zr_sdl_lexval last_val;
-  bool has_pushback; /* hand the last token out once more */
   /* Where a nested expression parse leaves its result. */
   zr_sdl_expr nested_value;
   /* The scene-level declarations need the textures' defaults. */
@@ -338,8 +340,8 @@ bool zr__sdl_texture_transform(zr_sdl_parser *p, zr_texture *tx,
                                const zr_transform *t);
 bool zr__sdl_texture_done(zr_sdl_parser *p, zr_texture *tx);
 zr_interior *zr__sdl_interior_new(zr_sdl_parser *p, const zr_interior *from);
-bool zr__sdl_light(zr_sdl_parser *p, zr_light *l, const zr_sdl_expr *at,
-                   const zr_sdl_loc *loc);
+/* A point light with its place set; the grammar fills the rest. */
+bool zr__sdl_light(zr_sdl_parser *p, zr_light *l, const zr_sdl_loc *loc);
 void zr__sdl_camera_begin(zr_sdl_parser *p, const zr_sdl_loc *loc);
 void zr__sdl_camera_look_at(zr_camera *c, zr_vec3 target);
 bool zr__sdl_camera_angle(zr_sdl_parser *p, zr_camera *c, double degrees,

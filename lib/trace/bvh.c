@@ -330,36 +330,43 @@ static void make_slab_ray(const zr_ray *ray, slab_ray *s) {
   s->org[1] = ray->origin.y;
   s->org[2] = ray->origin.z;
   double d[3] = {ray->dir.x, ray->dir.y, ray->dir.z};
+  /* A huge finite stand-in for 1/0 keeps the slab test free of NaN: an
+     origin exactly on a slab's plane gives 0 * 1e300 = 0, where 0 * inf
+     would give NaN. */
   for (int a = 0; a < 3; a++)
-    s->inv[a] = 1.0 / d[a]; /* +-inf for 0: the slab test copes */
+    s->inv[a] = fabs(d[a]) > 1e-300 ? 1.0 / d[a] : copysign(1e300, d[a]);
 }
 
 /*
  * The entry distance of the ray into the node's box within (tmin, tmax),
- * or INFINITY when it misses.  A zero direction component gives
- * infinities, and 0 * inf (origin on a slab plane) gives NaN, which fmax
- * and fmin drop, so that case counts as inside the slab.
+ * or INFINITY when it misses.  Plain comparisons rather than fmin/fmax,
+ * which the C library must call out of line for their NaN rules: this is
+ * the tracer's innermost loop.
  */
-static double slab_entry(const bvh_node *node, const slab_ray *r,
-                         double tmin, double tmax) {
+static inline double slab_entry(const bvh_node *node, const slab_ray *r,
+                                double tmin, double tmax) {
   double t0 = tmin, t1 = tmax;
   for (int a = 0; a < 3; a++) {
     double ta = (node->lo[a] - r->org[a]) * r->inv[a];
     double tb = (node->hi[a] - r->org[a]) * r->inv[a];
-    t0 = fmax(t0, fmin(ta, tb));
-    t1 = fmin(t1, fmax(ta, tb));
+    if (ta > tb) {
+      double t = ta;
+      ta = tb;
+      tb = t;
+    }
+    t0 = ta > t0 ? ta : t0;
+    t1 = tb < t1 ? tb : t1;
   }
   return t0 <= t1 ? t0 : INFINITY;
 }
 
-bool zr__bvh_nearest(const struct zr_bvh *bvh, const zr_ray *ray,
-                     double tmin, double tmax, zr_hit *hit) {
-  if (!bvh)
-    return false;
+/* The nearest crossing without its normal. */
+static bool nearest_t(const struct zr_bvh *bvh, const zr_ray *ray,
+                      double tmin, double tmax, zr_hit *hit) {
   bool found = false;
   zr_hit h[ZR_MAX_CROSSINGS];
   for (size_t i = 0; i < bvh->n_unbounded; i++)
-    if (zr__intersect(bvh->unbounded[i], ray, tmin, tmax, h) > 0) {
+    if (zr__intersect_t(bvh->unbounded[i], ray, tmin, tmax, h) > 0) {
       *hit = h[0];
       tmax = h[0].t;
       found = true;
@@ -368,16 +375,24 @@ bool zr__bvh_nearest(const struct zr_bvh *bvh, const zr_ray *ray,
     return found;
   slab_ray sr;
   make_slab_ray(ray, &sr);
+  /* Each stacked node with the distance at which the ray enters it, so
+     nodes beyond a crossing found meanwhile are skipped unopened. */
   uint32_t stack[STACK_MAX];
+  double entry[STACK_MAX];
   int sp = 0;
-  if (slab_entry(&bvh->nodes[0], &sr, tmin, tmax) == INFINITY)
+  double t_root = slab_entry(&bvh->nodes[0], &sr, tmin, tmax);
+  if (t_root == INFINITY)
     return found;
-  stack[sp++] = 0;
+  stack[sp] = 0;
+  entry[sp++] = t_root;
   while (sp > 0) {
-    const bvh_node *node = &bvh->nodes[stack[--sp]];
+    sp--;
+    if (entry[sp] >= tmax)
+      continue;
+    const bvh_node *node = &bvh->nodes[stack[sp]];
     if (node->count > 0) {
       for (uint32_t i = node->first; i < node->first + node->count; i++)
-        if (zr__intersect(bvh->prims[i], ray, tmin, tmax, h) > 0) {
+        if (zr__intersect_t(bvh->prims[i], ray, tmin, tmax, h) > 0) {
           *hit = h[0];
           tmax = h[0].t;
           found = true;
@@ -388,7 +403,8 @@ bool zr__bvh_nearest(const struct zr_bvh *bvh, const zr_ray *ray,
     double tl = slab_entry(&bvh->nodes[left], &sr, tmin, tmax);
     double tr = slab_entry(&bvh->nodes[right], &sr, tmin, tmax);
     /* Push the farther child first so the nearer one is searched first
-       and shrinks tmax for the other. */
+       and shrinks tmax for the other.  The depth limit of the build
+       keeps the stack far below STACK_MAX. */
     if (tl > tr) {
       uint32_t ti = left;
       left = right;
@@ -397,12 +413,36 @@ bool zr__bvh_nearest(const struct zr_bvh *bvh, const zr_ray *ray,
       tl = tr;
       tr = tt;
     }
-    if (tr != INFINITY && sp < STACK_MAX)
-      stack[sp++] = right;
-    if (tl != INFINITY && sp < STACK_MAX)
-      stack[sp++] = left;
+    if (tr != INFINITY && sp < STACK_MAX) {
+      stack[sp] = right;
+      entry[sp++] = tr;
+    }
+    if (tl != INFINITY && sp < STACK_MAX) {
+      stack[sp] = left;
+      entry[sp++] = tl;
+    }
   }
   return found;
+}
+
+bool zr__bvh_nearest(const struct zr_bvh *bvh, const zr_ray *ray,
+                     double tmin, double tmax, zr_hit *hit) {
+  if (!bvh)
+    return false;
+  double t0 = tmin;
+  bool found = nearest_t(bvh, ray, tmin, tmax, hit);
+  if (!found)
+    return false;
+  /* Only the winner's normal is needed: intersect it once more with
+     normals, over an interval that still contains its crossing. */
+  zr_hit h[ZR_MAX_CROSSINGS];
+  int n = zr__intersect(hit->object, ray, t0, INFINITY, h);
+  for (int i = 0; i < n; i++)
+    if (h[i].t == hit->t) {
+      *hit = h[i];
+      return true;
+    }
+  return true; /* unreachable: the same code found this t before */
 }
 
 bool zr__bvh_all(const struct zr_bvh *bvh, const zr_ray *ray, double tmin,
@@ -411,7 +451,7 @@ bool zr__bvh_all(const struct zr_bvh *bvh, const zr_ray *ray, double tmin,
     return true;
   zr_hit h[ZR_MAX_CROSSINGS];
   for (size_t i = 0; i < bvh->n_unbounded; i++) {
-    int n = zr__intersect(bvh->unbounded[i], ray, tmin, tmax, h);
+    int n = zr__intersect_t(bvh->unbounded[i], ray, tmin, tmax, h);
     for (int k = 0; k < n; k++)
       if (!visit(&h[k], user))
         return false;
@@ -429,7 +469,7 @@ bool zr__bvh_all(const struct zr_bvh *bvh, const zr_ray *ray, double tmin,
       continue;
     if (node->count > 0) {
       for (uint32_t i = node->first; i < node->first + node->count; i++) {
-        int n = zr__intersect(bvh->prims[i], ray, tmin, tmax, h);
+        int n = zr__intersect_t(bvh->prims[i], ray, tmin, tmax, h);
         for (int k = 0; k < n; k++)
           if (!visit(&h[k], user))
             return false;

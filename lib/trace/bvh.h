@@ -27,7 +27,8 @@ bool zr__bvh_nearest(const struct zr_bvh *bvh, const zr_ray *ray,
 
 /*
  * Calls visit for every crossing with tmin < t < tmax, in no particular
- * order, until visit returns false (then this returns false too).  Used
+ * order, until visit returns false (then this returns false too).  The
+ * crossings carry t and the object but no normal (it is left zero).  Used
  * by shadow rays, which must see every surface between a point and a
  * light to attenuate through transparent ones.
  */

@@ -271,26 +271,25 @@ static void shape_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
   }
 }
 
-int zr__intersect(const zr_object *object, const zr_ray *ray, double tmin,
-                  double tmax, zr_hit hits[ZR_MAX_CROSSINGS]) {
+/* The crossings in (tmin, tmax), sorted, with world normals only when
+   asked for: traversal needs t alone, and normals cost a matrix product
+   and a square root each. */
+static int crossings(const zr_object *object, const zr_ray *ray,
+                     double tmin, double tmax, bool want_normals,
+                     zr_hit hits[ZR_MAX_CROSSINGS]) {
   zr_vec3 org = ray->origin, dir = ray->dir;
   if (object->transform) {
     org = zr__xform_point(object->transform->inv, org);
     dir = zr__xform_dir(object->transform->inv, dir);
   }
-  crossing_list l = {0};
+  crossing_list l;
+  l.n = 0;
   shape_crossings(object, org, dir, &l);
   int n = 0;
   for (int i = 0; i < l.n; i++) {
     double t = l.t[i];
     if (!(t > tmin && t < tmax))
       continue;
-    zr_vec3 nrm = l.normal[i];
-    if (object->transform)
-      nrm = zr__xform_normal(object->transform->inv, nrm);
-    nrm = zr_v3_norm(nrm);
-    if (object->inverse)
-      nrm = zr_v3_neg(nrm);
     /* Insertion keeps the list sorted; a third crossing (only possible
        through rounding at a cap edge) replaces the farthest if nearer. */
     int j = n < ZR_MAX_CROSSINGS ? n++ : ZR_MAX_CROSSINGS;
@@ -303,11 +302,30 @@ int zr__intersect(const zr_object *object, const zr_ray *ray, double tmin,
       hits[j] = hits[j - 1];
       j--;
     }
+    zr_vec3 nrm = zr_v3(0, 0, 0);
+    if (want_normals) {
+      nrm = l.normal[i];
+      if (object->transform)
+        nrm = zr__xform_normal(object->transform->inv, nrm);
+      nrm = zr_v3_norm(nrm);
+      if (object->inverse)
+        nrm = zr_v3_neg(nrm);
+    }
     hits[j].t = t;
     hits[j].normal = nrm;
     hits[j].object = object;
   }
   return n;
+}
+
+int zr__intersect(const zr_object *object, const zr_ray *ray, double tmin,
+                  double tmax, zr_hit hits[ZR_MAX_CROSSINGS]) {
+  return crossings(object, ray, tmin, tmax, true, hits);
+}
+
+int zr__intersect_t(const zr_object *object, const zr_ray *ray, double tmin,
+                    double tmax, zr_hit hits[ZR_MAX_CROSSINGS]) {
+  return crossings(object, ray, tmin, tmax, false, hits);
 }
 
 /* Inside tests in object space. */

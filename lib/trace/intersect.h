@@ -41,6 +41,11 @@ typedef struct zr_hit {
 int zr__intersect(const zr_object *object, const zr_ray *ray, double tmin,
                   double tmax, zr_hit hits[ZR_MAX_CROSSINGS]);
 
+/* The same crossings without their normals (left zero), for searches
+   that need only t and the object. */
+int zr__intersect_t(const zr_object *object, const zr_ray *ray, double tmin,
+                    double tmax, zr_hit hits[ZR_MAX_CROSSINGS]);
+
 /* Whether the world point p lies inside the object (POV-Ray's inside, with
    inverse applied).  Triangles have no inside; a disc's is its plane's. */
 bool zr__inside(const zr_object *object, zr_vec3 p);

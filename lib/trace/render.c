@@ -15,8 +15,9 @@
  * the centres; pass 2 compares each centre with its four neighbours
  * (POV-Ray compares with the left and upper ones and supersamples both
  * pixels of a pair that differ, which is the same as looking at all
- * four) and, where the difference exceeds the threshold, averages an
- * aa_depth x aa_depth grid of samples over the pixel.  Jitter moves each
+ * four) after POV-Ray's antialiasing gamma, and where the difference
+ * exceeds the threshold averages the centre with an aa_depth x aa_depth
+ * grid of samples over the pixel.  Jitter moves each
  * sample by a pseudo-random amount drawn from a hash of the pixel index
  * and sample number, never from shared state, so the picture does not
  * depend on how pixels are split among threads and processes.
@@ -59,10 +60,12 @@ zr_ray zr__camera_ray(const zr_camera *camera, int width, int height,
 
 static double clip01(double v) { return v < 0.0 ? 0.0 : v > 1.0 ? 1.0 : v; }
 
-double zr__colour_difference(const float *a, const float *b) {
-  return fabs(clip01(a[0]) - clip01(b[0])) +
-         fabs(clip01(a[1]) - clip01(b[1])) +
-         fabs(clip01(a[2]) - clip01(b[2]));
+double zr__colour_difference(const float *a, const float *b,
+                             double exponent) {
+  double d = 0.0;
+  for (int k = 0; k < 3; k++)
+    d += fabs(pow(clip01(a[k]), exponent) - pow(clip01(b[k]), exponent));
+  return d;
 }
 
 /* A 32-bit integer mix (the "lowbias32" finaliser by Chris Wellons). */
@@ -97,7 +100,8 @@ static void store(float *dst, zr_rgb c) {
 /* Whether the centre of pixel (x, y) differs from a neighbour's by more
    than the threshold. */
 static bool needs_supersampling(const zr_render_params *p,
-                                const float *centres, int x, int y) {
+                                const float *centres, int x, int y,
+                                double exponent) {
   static const int dx[4] = {-1, 1, 0, 0}, dy[4] = {0, 0, -1, 1};
   const float *c = centres + 3 * ((size_t)y * p->width + x);
   for (int k = 0; k < 4; k++) {
@@ -105,16 +109,23 @@ static bool needs_supersampling(const zr_render_params *p,
     if (nx < 0 || ny < 0 || nx >= p->width || ny >= p->height)
       continue;
     const float *n = centres + 3 * ((size_t)ny * p->width + nx);
-    if (zr__colour_difference(c, n) > p->aa_threshold)
+    if (zr__colour_difference(c, n, exponent) > p->aa_threshold)
       return true;
   }
   return false;
 }
 
+/*
+ * The average of the pixel's centre sample and an n x n grid of samples
+ * at the centres of its sub-squares, which is what povray 3.7 +AM1 -J
+ * computes: renders of the same scene agree with it exactly, while grids
+ * through the pixel's corners or without the centre differ by up to 0.16.
+ */
 static zr_rgb supersample(const zr_tracer *tr, const zr_render_params *p,
-                          uint32_t pixel, int x, int y) {
+                          const float *centre, uint32_t pixel, int x,
+                          int y) {
   int n = p->aa_depth;
-  zr_rgb sum = zr_rgb3(0, 0, 0);
+  zr_rgb sum = zr_rgb3(centre[0], centre[1], centre[2]);
   for (int j = 0; j < n; j++)
     for (int i = 0; i < n; i++) {
       double sx = (i + 0.5) / n, sy = (j + 0.5) / n;
@@ -129,7 +140,7 @@ static zr_rgb supersample(const zr_tracer *tr, const zr_render_params *p,
     }
   tr->stats->supersample_rays += (uint64_t)n * (uint64_t)n;
   tr->stats->supersampled_pixels++;
-  return zr_rgb_scale(sum, 1.0 / (n * n));
+  return zr_rgb_scale(sum, 1.0 / (n * n + 1));
 }
 
 static zr_status check_params(const zr_scene *scene,
@@ -163,6 +174,11 @@ ZR_API zr_status zr_render_pixels(const zr_scene *scene,
       return ZR_EINVAL;
   zr_render_stats local = {0};
   zr_tracer tracer = {scene, &local};
+  /* POV-Ray compares colours after undoing the scene's working gamma and
+     applying its antialiasing gamma, 2.5 by default (reference,
+     "Anti-Aliasing Options"), so dark edges are refined as readily as
+     bright ones. */
+  double exponent = scene->settings.assumed_gamma / ZR_AA_GAMMA;
   for (size_t i = 0; i < count; i++) {
     uint32_t pixel = pixels[i];
     int x = (int)(pixel % (uint32_t)params->width);
@@ -174,8 +190,9 @@ ZR_API zr_status zr_render_pixels(const zr_scene *scene,
       local.camera_rays++;
       store(out, c);
     } else if (params->antialias &&
-               needs_supersampling(params, centres, x, y)) {
-      store(out, supersample(&tracer, params, pixel, x, y));
+               needs_supersampling(params, centres, x, y, exponent)) {
+      store(out, supersample(&tracer, params, centres + 3 * (size_t)pixel,
+                             pixel, x, y));
     } else {
       memcpy(out, centres + 3 * (size_t)pixel, 3 * sizeof *out);
     }

@@ -17,9 +17,14 @@
 zr_ray zr__camera_ray(const zr_camera *camera, int width, int height,
                       double x, double y);
 
+/* POV-Ray's Antialias_Gamma default. */
+#define ZR_AA_GAMMA 2.5
+
 /* POV-Ray's colour difference for antialiasing: the sum of the absolute
-   differences of the red, green and blue values clipped to [0, 1]. */
-double zr__colour_difference(const float *a, const float *b);
+   differences of the red, green and blue values, each clipped to [0, 1]
+   and raised to exponent (assumed_gamma / antialias gamma). */
+double zr__colour_difference(const float *a, const float *b,
+                             double exponent);
 
 /* A uniform number in [0, 1) that depends only on its three arguments,
    for jitter that is the same however pixels are shared out. */

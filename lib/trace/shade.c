@@ -218,7 +218,7 @@ static zr_rgb direct_light(const zr_tracer *tr, const surface *s,
  * falloff power of 1 - cos, or by Fresnel's law for the interior's ior
  * (reference, "Specular Reflection").
  */
-static zr_rgb reflection_amount(const surface *s, const zr_media *media) {
+static zr_rgb reflection_amount(const surface *s, double n1, double n2) {
   const zr_finish *f = s->finish;
   zr_rgb lo = f->reflection, hi = f->reflection_max;
   bool variable = f->reflection_fresnel || lo.r != hi.r || lo.g != hi.g ||
@@ -228,9 +228,7 @@ static zr_rgb reflection_amount(const surface *s, const zr_media *media) {
     double cos_i = fmin(1.0, fabs(zr_v3_dot(s->d, s->n)));
     double w;
     if (f->reflection_fresnel) {
-      double n_obj = s->object->interior->ior, n_out = media_ior(media);
-      w = s->entering ? zr__fresnel(cos_i, n_out, n_obj)
-                      : zr__fresnel(cos_i, n_obj, n_out);
+      w = zr__fresnel(cos_i, n1, n2);
     } else {
       w = pow(1.0 - cos_i, f->reflection_falloff);
     }
@@ -251,22 +249,15 @@ static zr_rgb trace_secondary(const zr_tracer *tr, zr_vec3 origin,
   return zr__trace_ray(tr, &ray, level + 1, weight, media);
 }
 
-/*
- * Where light coming through the surface comes from: the direction of
- * the refracted ray and the media it travels in.  Returns false on total
- * internal reflection.
- */
-static bool refraction(const surface *s, const zr_media *media,
-                       zr_vec3 *dir, zr_media *next) {
+/* The media a ray is in after crossing the surface. */
+static void media_beyond(const surface *s, const zr_media *media,
+                         zr_media *next) {
   if (zr__has_inside(s->object))
     media_change(media, s->object, s->entering, next);
   else if (media)
     *next = *media; /* a flat object has no interior to enter */
   else
     next->n = 0;
-  double n1 = media_ior(media), n2 = media_ior(next);
-  *dir = s->d;
-  return n1 == n2 || zr__refract(s->d, s->n, n1 / n2, dir);
 }
 
 static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
@@ -282,7 +273,11 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
   zr_rgb sum = zr_rgb_scale(zr_rgb_mul(own, c), opacity);
   sum = zr_rgb_add(sum, direct_light(tr, s, opacity));
 
-  zr_rgb refl = reflection_amount(s, media);
+  /* The indices of refraction on this side (n1) and beyond (n2). */
+  zr_media next;
+  media_beyond(s, media, &next);
+  double n1 = media_ior(media), n2 = media_ior(&next);
+  zr_rgb refl = reflection_amount(s, n1, n2);
   zr_rgb trans = see_through(col);
   if (f->conserve_energy)
     trans = zr_rgb3(trans.r * (1.0 - refl.r), trans.g * (1.0 - refl.g),
@@ -290,9 +285,9 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
   zr_vec3 mirror = zr__reflect(s->d, s->n);
   zr_vec3 above = zr_v3_madd(s->p, s->n, s->offset);
   zr_vec3 below = zr_v3_madd(s->p, s->n, -s->offset);
-  zr_vec3 refr_dir;
-  zr_media next;
-  if (rgb_max(trans) > 0.0 && !refraction(s, media, &refr_dir, &next)) {
+  zr_vec3 refr_dir = s->d;
+  if (rgb_max(trans) > 0.0 && n1 != n2 &&
+      !zr__refract(s->d, s->n, n1 / n2, &refr_dir)) {
     /* Total internal reflection.  POV-Ray 3.7 then returns the mirrored
        ray's colour at full strength in place of both the reflected and
        the transmitted light (measured: a surface with transmit 0.2 and

@@ -1,0 +1,197 @@
+/*
+ * test_lexer.c - the scanner and token arrays (grammar/pov.l,
+ * lib/sdl/tokens.c) and the keyword tables (lib/sdl/keywords.c).
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "config.h"
+#include "pov-parse.h"
+#include "sdl/sdl.h"
+
+typedef struct lexed {
+  zr_sdl_file file;
+  zr_status status;
+  zr_sdl_loc err_loc;
+  char err[200];
+} lexed;
+
+/* Lexes text as file "t.pov"; the caller frees with zr__sdl_file_free. */
+static void lex(lexed *l, const char *text) {
+  memset(l, 0, sizeof *l);
+  size_t n = strlen(text);
+  char *bytes = malloc(n + 1);
+  char *path = strdup("t.pov");
+  assert_non_null(bytes);
+  assert_non_null(path);
+  memcpy(bytes, text, n + 1);
+  l->status = zr__sdl_file_lex(&l->file, 0, path, bytes, n, &l->err_loc,
+                               l->err, sizeof l->err);
+}
+
+static void assert_token(const zr_sdl_token *t, int kind, int line,
+                         int column, int length) {
+  assert_int_equal(t->kind, kind);
+  assert_int_equal(t->line, line);
+  assert_int_equal(t->column, column);
+  assert_int_equal(t->length, length);
+}
+
+static void test_lexer_tokens_and_places(void **state) {
+  (void)state;
+  lexed l;
+  lex(&l, "sphere {\n  <1, 2.5e1, .5>, Radius\n}");
+  assert_int_equal(l.status, ZR_OK);
+  assert_int_equal(l.file.n_tokens, 13); /* 12 tokens and the end */
+  const zr_sdl_token *t = l.file.tokens;
+  assert_token(&t[0], T_SPHERE, 1, 1, 6);
+  assert_token(&t[1], '{', 1, 8, 1);
+  assert_token(&t[2], '<', 2, 3, 1);
+  assert_token(&t[3], T_NUMBER, 2, 4, 1);
+  assert_true(t[3].v.num == 1.0);
+  assert_token(&t[5], T_NUMBER, 2, 7, 5);
+  assert_true(t[5].v.num == 25.0);
+  assert_token(&t[7], T_NUMBER, 2, 14, 2);
+  assert_true(t[7].v.num == 0.5);
+  assert_token(&t[10], T_IDENTIFIER, 2, 19, 6);
+  assert_string_equal(t[10].v.str, "Radius");
+  assert_token(&t[11], '}', 3, 1, 1);
+  assert_int_equal(l.file.tokens[l.file.n_tokens - 1].kind, 0);
+  size_t len;
+  const char *line = zr__sdl_file_line(&l.file, 2, &len);
+  assert_int_equal(len, 24);
+  assert_memory_equal(line, "  <1, 2.5e1, .5>, Radius", len);
+  zr__sdl_file_free(&l.file);
+}
+
+static void test_lexer_comments_nest(void **state) {
+  (void)state;
+  lexed l;
+  lex(&l, "// line comment sphere\n/* a /* nested */ box\n*/ plane");
+  assert_int_equal(l.status, ZR_OK);
+  assert_int_equal(l.file.n_tokens, 2);
+  assert_token(&l.file.tokens[0], T_PLANE, 3, 4, 5);
+  zr__sdl_file_free(&l.file);
+}
+
+static void test_lexer_strings_unescape(void **state) {
+  (void)state;
+  lexed l;
+  lex(&l, "#include \"a\\\"b\\\\c.inc\"");
+  assert_int_equal(l.status, ZR_OK);
+  assert_int_equal(l.file.tokens[0].kind, T_INCLUDE);
+  assert_int_equal(l.file.tokens[1].kind, T_STRING);
+  assert_string_equal(l.file.tokens[1].v.str, "a\"b\\c.inc");
+  assert_int_equal(l.file.tokens[1].length, 13);
+  zr__sdl_file_free(&l.file);
+}
+
+static void test_lexer_directives(void **state) {
+  (void)state;
+  lexed l;
+  lex(&l, "#declare # local #zfor #zend #version #while");
+  assert_int_equal(l.status, ZR_OK);
+  assert_int_equal(l.file.tokens[0].kind, T_DECLARE);
+  assert_int_equal(l.file.tokens[1].kind, T_LOCAL);
+  assert_int_equal(l.file.tokens[1].length, 7);
+  assert_int_equal(l.file.tokens[2].kind, T_ZFOR);
+  assert_int_equal(l.file.tokens[3].kind, T_ZEND);
+  assert_int_equal(l.file.tokens[4].kind, T_VERSION);
+  assert_int_equal(l.file.tokens[5].kind, T_UNSUPPORTED);
+  assert_string_equal(l.file.tokens[5].v.str, "#while");
+  zr__sdl_file_free(&l.file);
+}
+
+static void test_lexer_unsupported_keyword_is_a_token(void **state) {
+  (void)state;
+  lexed l;
+  lex(&l, "isosurface Isosurface");
+  assert_int_equal(l.status, ZR_OK);
+  assert_int_equal(l.file.tokens[0].kind, T_UNSUPPORTED);
+  assert_string_equal(l.file.tokens[0].v.str, "isosurface");
+  /* Keywords are case sensitive: this one is an identifier. */
+  assert_int_equal(l.file.tokens[1].kind, T_IDENTIFIER);
+  zr__sdl_file_free(&l.file);
+}
+
+static void test_lexer_unterminated_comment(void **state) {
+  (void)state;
+  lexed l;
+  lex(&l, "box\n  /* one /* two */\n");
+  assert_int_equal(l.status, ZR_ESYNTAX);
+  assert_string_equal(l.err, "unterminated comment");
+  assert_int_equal(l.err_loc.line, 2);
+  assert_int_equal(l.err_loc.column, 3);
+  zr__sdl_file_free(&l.file);
+}
+
+static void test_lexer_unterminated_string(void **state) {
+  (void)state;
+  lexed l;
+  lex(&l, "#include \"abc\n\"");
+  assert_int_equal(l.status, ZR_ESYNTAX);
+  assert_string_equal(l.err, "unterminated string");
+  assert_int_equal(l.err_loc.line, 1);
+  assert_int_equal(l.err_loc.column, 10);
+  zr__sdl_file_free(&l.file);
+}
+
+static void test_lexer_bad_characters(void **state) {
+  (void)state;
+  lexed l;
+  lex(&l, "sphere $");
+  assert_int_equal(l.status, ZR_ESYNTAX);
+  assert_string_equal(l.err, "unexpected character '$'");
+  assert_int_equal(l.err_loc.column, 8);
+  zr__sdl_file_free(&l.file);
+  lex(&l, "#frobnicate");
+  assert_int_equal(l.status, ZR_ESYNTAX);
+  assert_string_equal(l.err, "unknown directive '#frobnicate'");
+  zr__sdl_file_free(&l.file);
+}
+
+static void test_lexer_keyword_table(void **state) {
+  (void)state;
+  size_t n;
+  const zr_sdl_keyword *k = zr__sdl_keywords(&n);
+  /* The manual's 498 reserved words and mesh_camera. */
+  assert_int_equal(n, 499);
+  size_t supported = 0;
+  for (size_t i = 0; i < n; i++) {
+    if (i > 0)
+      assert_true(strcmp(k[i - 1].name, k[i].name) < 0);
+    assert_ptr_equal(zr__sdl_keyword_find(k[i].name, strlen(k[i].name)),
+                     &k[i]);
+    supported += k[i].token != T_UNSUPPORTED;
+  }
+  assert_int_equal(supported, 105);
+  assert_int_equal(zr__sdl_keyword_find("color", 5)->token, T_COLOUR);
+  assert_int_equal(zr__sdl_keyword_find("colour", 6)->token, T_COLOUR);
+  assert_int_equal(zr__sdl_keyword_find("photons", 7)->token,
+                   T_UNSUPPORTED);
+  assert_null(zr__sdl_keyword_find("Sphere", 6));
+  assert_null(zr__sdl_keyword_find("sph", 3));
+  assert_int_equal(zr__sdl_directive_find("include", 7)->token, T_INCLUDE);
+  assert_null(zr__sdl_directive_find("includes", 8));
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test(test_lexer_tokens_and_places),
+      cmocka_unit_test(test_lexer_comments_nest),
+      cmocka_unit_test(test_lexer_strings_unescape),
+      cmocka_unit_test(test_lexer_directives),
+      cmocka_unit_test(test_lexer_unsupported_keyword_is_a_token),
+      cmocka_unit_test(test_lexer_unterminated_comment),
+      cmocka_unit_test(test_lexer_unterminated_string),
+      cmocka_unit_test(test_lexer_bad_characters),
+      cmocka_unit_test(test_lexer_keyword_table),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}

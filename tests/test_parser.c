@@ -1,0 +1,847 @@
+/*
+ * test_parser.c - the scene language front end: grammar/pov.y and
+ * lib/sdl (directives, values, building the scene model), through the
+ * public zr_scene_parse_file/_string calls.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "config.h"
+#include "core/context.h"
+#include "core/transform.h"
+#include "scene/scene.h"
+#include "zrcube.h"
+
+/* Values written in the scenes are small decimals combined by a few
+   operations, and transforms multiply a few 4x4 matrices: 1e-9 leaves
+   room for their rounding and catches any real mistake. */
+#define EPS 1e-9
+
+/* Everything the library reported during one parse. */
+typedef struct captured {
+  int errors;
+  zr_status status;
+  char message[512];
+  char text[4096];
+} captured;
+
+static void on_diag(const zr_diag *d, void *user) {
+  captured *c = user;
+  if (d->level != ZR_DIAG_ERROR)
+    return;
+  c->errors++;
+  c->status = d->status;
+  snprintf(c->message, sizeof c->message, "%s", d->message);
+  snprintf(c->text, sizeof c->text, "%s", d->text);
+}
+
+typedef struct fixture {
+  zr_context *ctx;
+  captured diag;
+  zr_scene *scene;
+} fixture;
+
+static int setup(void **state) {
+  fixture *f = calloc(1, sizeof *f);
+  assert_non_null(f);
+  assert_int_equal(zr_context_new(&f->ctx), ZR_OK);
+  zr_context_set_diag(f->ctx, on_diag, &f->diag);
+  *state = f;
+  return 0;
+}
+
+static int teardown(void **state) {
+  fixture *f = *state;
+  zr_scene_free(f->scene);
+  zr_context_free(f->ctx);
+  free(f);
+  return 0;
+}
+
+static zr_status parse(fixture *f, const char *text) {
+  zr_scene_free(f->scene);
+  f->scene = NULL;
+  memset(&f->diag, 0, sizeof f->diag);
+  return zr_scene_parse_string(f->ctx, "t.pov", text, strlen(text),
+                               &f->scene);
+}
+
+/* Parses text that must be good and returns the scene. */
+static zr_scene *good(fixture *f, const char *text) {
+  zr_status s = parse(f, text);
+  if (s != ZR_OK)
+    fprintf(stderr, "unexpected failure:\n%s", f->diag.text);
+  assert_int_equal(s, ZR_OK);
+  assert_non_null(f->scene);
+  return f->scene;
+}
+
+/* Parses text that must fail with status, message and full text. */
+static void bad(fixture *f, const char *text, zr_status status,
+                const char *message, const char *full) {
+  zr_status s = parse(f, text);
+  assert_int_equal(s, status);
+  assert_null(f->scene);
+  assert_int_equal(f->diag.errors, 1);
+  assert_int_equal(f->diag.status, status);
+  assert_string_equal(f->diag.message, message);
+  if (full)
+    assert_string_equal(f->diag.text, full);
+}
+
+static void assert_vec(zr_vec3 v, double x, double y, double z) {
+  if (fabs(v.x - x) > EPS || fabs(v.y - y) > EPS || fabs(v.z - z) > EPS)
+    fail_msg("<%g, %g, %g> != <%g, %g, %g>", v.x, v.y, v.z, x, y, z);
+}
+
+static void assert_num(double a, double b) {
+  if (fabs(a - b) > EPS)
+    fail_msg("%.12g != %.12g", a, b);
+}
+
+static void assert_colour(zr_colour c, double r, double g, double b,
+                          double fl, double t) {
+  assert_num(c.r, r);
+  assert_num(c.g, g);
+  assert_num(c.b, b);
+  assert_num(c.f, fl);
+  assert_num(c.t, t);
+}
+
+static void assert_rgb(zr_rgb c, double r, double g, double b) {
+  assert_num(c.r, r);
+  assert_num(c.g, g);
+  assert_num(c.b, b);
+}
+
+static zr_vec3 to_world(const zr_object *o, zr_vec3 p) {
+  return o->transform ? zr__xform_point(o->transform->m, p) : p;
+}
+
+/* ---- good input ---- */
+
+static void test_parser_primitives(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f,
+      "sphere { <1, 2, 3>, 0.5 }\n"
+      "box { <-1, -2, -3>, <1, 2, 3> }\n"
+      "plane { <0, 2, 0>, -1 }\n"
+      "triangle { <0,0,0>, <1,0,0>, <0,1,0> }\n"
+      "cylinder { 0, y*2, 0.25 open }\n"
+      "cone { <0,0,0>, 1, <0,3,0>, 0.5 }\n"
+      "disc { <0,1,0>, <0,0,3>, 2, 0.5 }\n"
+      "disc { 0, y, 1 }\n");
+  assert_int_equal(s->n_objects, 8);
+  zr_object **o = s->objects;
+  assert_int_equal(o[0]->kind, ZR_OBJ_SPHERE);
+  assert_vec(o[0]->u.sphere.centre, 1, 2, 3);
+  assert_num(o[0]->u.sphere.radius, 0.5);
+  assert_vec(o[1]->u.box.corner1, -1, -2, -3);
+  assert_vec(o[1]->u.box.corner2, 1, 2, 3);
+  /* A x + B y + C z = D |<A,B,C>|: the normal is made unit, D stays. */
+  assert_vec(o[2]->u.plane.normal, 0, 1, 0);
+  assert_num(o[2]->u.plane.distance, -1);
+  assert_vec(o[3]->u.triangle.p[1], 1, 0, 0);
+  assert_vec(o[3]->u.triangle.p[2], 0, 1, 0);
+  assert_vec(o[4]->u.cylinder.cap, 0, 2, 0);
+  assert_num(o[4]->u.cylinder.radius, 0.25);
+  assert_true(o[4]->u.cylinder.open);
+  assert_false(o[5]->u.cone.open);
+  assert_num(o[5]->u.cone.base_radius, 1);
+  assert_vec(o[5]->u.cone.cap, 0, 3, 0);
+  assert_num(o[5]->u.cone.cap_radius, 0.5);
+  assert_vec(o[6]->u.disc.normal, 0, 0, 1);
+  assert_num(o[6]->u.disc.radius, 2);
+  assert_num(o[6]->u.disc.hole_radius, 0.5);
+  assert_num(o[7]->u.disc.hole_radius, 0);
+  assert_string_equal(o[6]->where.file, "t.pov");
+  assert_int_equal(o[6]->where.line, 7);
+  zr_scene_info info;
+  zr_scene_get_info(s, &info);
+  assert_int_equal(info.primitives, 8);
+  assert_int_equal(info.infinite_primitives, 1);
+  assert_int_equal(info.has_camera, 0);
+}
+
+static void test_parser_optional_commas(void **state) {
+  fixture *f = *state;
+  /* POV-Ray 3.7 renders these without complaint. */
+  zr_scene *s = good(f,
+      "light_source { <0, 0, -5> color rgb 1 }\n"
+      "sphere { <0, 0, 0> 1 }\n"
+      "disc { 0 y 1 0.5 }\n"
+      "cone { 0 1 y 0 open }\n");
+  assert_int_equal(s->n_lights, 1);
+  assert_num(s->objects[0]->u.sphere.radius, 1);
+  assert_num(s->objects[1]->u.disc.hole_radius, 0.5);
+  assert_true(s->objects[2]->u.cone.open);
+}
+
+static void test_parser_expressions(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f,
+      "#declare A = 1 + 2 * 3 - -4 / 2;\n"            /* 9 */
+      "#declare V = (<1, 2, 3> + 1) * 2;\n"           /* <4, 6, 8> */
+      "sphere { V, A }\n"
+      "sphere { <V.x, V.y, V.z> / 2, V.y - (A - 1) }\n" /* <2,3,4>, -2 */
+      "sphere { x + y * 2 - z, sqrt(16) + pow(2, 3) }\n"
+      "sphere { <min(3, 1, 2), max(1, 5), abs(-2)>, sin(pi / 2) }\n"
+      "sphere { <floor(1.5), ceil(1.5), int(-1.5)>, mod(7, 4) }\n"
+      "sphere { <degrees(pi), radians(180), log(100)>, ln(exp(2)) }\n"
+      "sphere { <vlength(<3, 4, 0>), vdot(x, y), atan2(1, 1)>, 1 }\n");
+  zr_object **o = s->objects;
+  assert_vec(o[0]->u.sphere.centre, 4, 6, 8);
+  assert_num(o[0]->u.sphere.radius, 9);
+  assert_vec(o[1]->u.sphere.centre, 2, 3, 4);
+  assert_num(o[1]->u.sphere.radius, -2);
+  assert_vec(o[2]->u.sphere.centre, 1, 2, -1);
+  assert_num(o[2]->u.sphere.radius, 12);
+  assert_vec(o[3]->u.sphere.centre, 1, 5, 2);
+  assert_num(o[3]->u.sphere.radius, 1);
+  assert_vec(o[4]->u.sphere.centre, 1, 2, -1);
+  assert_num(o[4]->u.sphere.radius, 3);
+  assert_vec(o[5]->u.sphere.centre, 180, M_PI, 2);
+  assert_num(o[5]->u.sphere.radius, 2);
+  assert_vec(o[6]->u.sphere.centre, 5, 0, M_PI / 4);
+}
+
+static void test_parser_colours(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f,
+      "#declare Orange = color red 1 green 0.5;\n"
+      "#declare P = <0.1, 0.2, 0.3>;\n"
+      "sphere { 0, 1 pigment { rgb <0.1, 0.2, 0.3> } }\n"
+      "sphere { 0, 1 pigment { rgb 0.5 } }\n"
+      "sphere { 0, 1 pigment { rgbf <0.1, 0.2, 0.3, 0.4> } }\n"
+      "sphere { 0, 1 pigment { rgbt <0.1, 0.2, 0.3, 0.4> } }\n"
+      "sphere { 0, 1 pigment { color rgbft <0.1, 0.2, 0.3, 0.4, 0.5> } }\n"
+      "sphere { 0, 1 pigment { Orange } }\n"
+      "sphere { 0, 1 pigment { color Orange blue 0.25 transmit 0.5 } }\n"
+      "sphere { 0, 1 pigment { colour P filter 0.3 } }\n"
+      "sphere { 0, 1 pigment { color 0.5 } }\n"
+      "sphere { 0, 1 pigment { Orange * 0.5 } }\n");
+  zr_colour c[10];
+  for (int i = 0; i < 10; i++)
+    c[i] = s->objects[i]->texture->pigment->colour;
+  assert_colour(c[0], 0.1, 0.2, 0.3, 0, 0);
+  assert_colour(c[1], 0.5, 0.5, 0.5, 0, 0);
+  assert_colour(c[2], 0.1, 0.2, 0.3, 0.4, 0);
+  assert_colour(c[3], 0.1, 0.2, 0.3, 0, 0.4);
+  assert_colour(c[4], 0.1, 0.2, 0.3, 0.4, 0.5);
+  assert_colour(c[5], 1, 0.5, 0, 0, 0);
+  assert_colour(c[6], 1, 0.5, 0.25, 0, 0.5);
+  assert_colour(c[7], 0.1, 0.2, 0.3, 0.3, 0);
+  /* A float where a colour is wanted fills all five components
+     (reference manual, "Reflection"). */
+  assert_colour(c[8], 0.5, 0.5, 0.5, 0.5, 0.5);
+  assert_colour(c[9], 0.5, 0.25, 0, 0, 0);
+  /* A pigment alone takes the default finish. */
+  assert_num(s->objects[0]->texture->finish->diffuse, 0.6);
+}
+
+static void test_parser_finish(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f,
+      "#declare F = finish { ambient 0.2 diffuse 0.7 brilliance 2\n"
+      "  phong 0.5 phong_size 60 specular 0.3 roughness 0.01\n"
+      "  metallic reflection 0.25 emission rgb <1, 2, 3> }\n"
+      "sphere { 0, 1 finish { F } }\n"
+      "sphere { 0, 1 finish { F diffuse 0.1 metallic 0.5\n"
+      "  reflection { 0.1, <0.9, 0.8, 0.7> falloff 2 fresnel metallic }\n"
+      "  conserve_energy } }\n"
+      "sphere { 0, 1 finish { reflection { rgb <0.5, 0.4, 0.3> }"
+      " ambient <0.1, 0.2, 0.3> } }\n");
+  const zr_finish *a = s->objects[0]->texture->finish;
+  assert_rgb(a->ambient, 0.2, 0.2, 0.2);
+  assert_num(a->diffuse, 0.7);
+  assert_num(a->brilliance, 2);
+  assert_num(a->phong, 0.5);
+  assert_num(a->phong_size, 60);
+  assert_num(a->specular, 0.3);
+  assert_num(a->roughness, 0.01);
+  assert_num(a->metallic, 1);
+  assert_rgb(a->reflection, 0.25, 0.25, 0.25);
+  assert_rgb(a->reflection_max, 0.25, 0.25, 0.25);
+  assert_rgb(a->emission, 1, 2, 3);
+  const zr_finish *b = s->objects[1]->texture->finish;
+  assert_num(b->diffuse, 0.1);
+  assert_num(b->phong, 0.5); /* from F */
+  assert_num(b->metallic, 0.5);
+  assert_rgb(b->reflection, 0.1, 0.1, 0.1);
+  assert_rgb(b->reflection_max, 0.9, 0.8, 0.7);
+  assert_num(b->reflection_falloff, 2);
+  assert_true(b->reflection_fresnel);
+  assert_true(b->reflection_metallic);
+  assert_true(b->conserve_energy);
+  /* The declared finish did not change. */
+  assert_num(a->diffuse, 0.7);
+  assert_false(a->reflection_fresnel);
+  const zr_finish *c = s->objects[2]->texture->finish;
+  assert_rgb(c->reflection, 0.5, 0.4, 0.3);
+  assert_rgb(c->reflection_max, 0.5, 0.4, 0.3);
+  assert_rgb(c->ambient, 0.1, 0.2, 0.3);
+  assert_num(c->diffuse, 0.6); /* POV-Ray's default */
+}
+
+static void test_parser_transforms_in_order(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f,
+      "sphere { 0, 1 scale 2 translate <1, 0, 0> }\n"
+      "sphere { 0, 1 translate <1, 0, 0> scale 2 }\n"
+      "sphere { 0, 1 rotate <0, 90, 0> }\n"
+      "sphere { 0, 1 scale <1, 2, 3> }\n"
+      "box { 0, 1 matrix <1,0,0, 0,1,0, 0,0,1, 1,2,3> }\n"
+      "sphere { 0, 1 pigment { rgb 1 } scale 2 translate y }\n"
+      "sphere { 0, 1 texture { pigment { rgb 1 } scale 3 } }\n");
+  zr_object **o = s->objects;
+  assert_vec(to_world(o[0], zr_v3(1, 0, 0)), 3, 0, 0);
+  assert_vec(to_world(o[1], zr_v3(1, 0, 0)), 4, 0, 0);
+  /* rotate y 90 takes +x to -z in POV-Ray's left-handed space. */
+  assert_vec(to_world(o[2], zr_v3(1, 0, 0)), 0, 0, -1);
+  assert_vec(to_world(o[3], zr_v3(1, 1, 1)), 1, 2, 3);
+  assert_vec(to_world(o[4], zr_v3(0, 0, 0)), 1, 2, 3);
+  /* The texture moves with the object: its pigment's transform. */
+  const zr_transform *pt = o[5]->texture->pigment->transform;
+  assert_non_null(pt);
+  assert_vec(zr__xform_point(pt->m, zr_v3(1, 0, 0)), 2, 1, 0);
+  pt = o[6]->texture->pigment->transform;
+  assert_non_null(pt);
+  assert_vec(zr__xform_point(pt->m, zr_v3(1, 0, 0)), 3, 0, 0);
+  assert_null(o[6]->transform);
+}
+
+static void test_parser_union_pushes_modifiers(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f,
+      "union {\n"
+      "  sphere { 0, 1 pigment { rgb x } }\n"
+      "  union { box { 0, 1 } cylinder { 0, y, 1 } }\n"
+      "  translate <0, 5, 0>\n"
+      "  pigment { rgb y }\n"
+      "  no_shadow\n"
+      "}\n");
+  assert_int_equal(s->n_objects, 1);
+  zr_scene_info info;
+  zr_scene_get_info(s, &info);
+  assert_int_equal(info.objects, 1);
+  assert_int_equal(info.primitives, 3);
+  for (size_t i = 0; i < s->n_primitives; i++) {
+    const zr_object *p = s->primitives[i];
+    assert_vec(to_world(p, zr_v3(0, 0, 0)), 0, 5, 0);
+    assert_true(p->no_shadow);
+  }
+  /* The sphere keeps its own texture (moved with it); the others
+     inherit the union's. */
+  assert_colour(s->primitives[0]->texture->pigment->colour, 1, 0, 0, 0, 0);
+  assert_non_null(s->primitives[0]->texture->pigment->transform);
+  assert_colour(s->primitives[1]->texture->pigment->colour, 0, 1, 0, 0, 0);
+  assert_colour(s->primitives[2]->texture->pigment->colour, 0, 1, 0, 0, 0);
+}
+
+static void test_parser_declare_copies(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f,
+      "#declare P = pigment { rgb <1, 0, 0> }\n"
+      "#declare T = texture { pigment { P } finish { phong 1 } }\n"
+      "#declare O = union { sphere { 0, 1 } sphere { x, 1 } texture { T } }\n"
+      "object { O translate y }\n"
+      "object { O }\n"
+      "sphere { 0, 1 texture { T pigment { P scale 2 } } }\n"
+      "sphere { 0, 1 texture { T } }\n"
+      "#declare O2 = O;\n"
+      "#declare O = sphere { 0, 7 }\n"
+      "object { O2 }\n");
+  zr_object **o = s->objects;
+  /* O2 is the union O was when O2 was declared. */
+  assert_int_equal(o[4]->kind, ZR_OBJ_UNION);
+  assert_int_equal(o[0]->u.csg.n_children, 2);
+  assert_vec(to_world(o[0]->u.csg.children[1], zr_v3(0, 0, 0)), 0, 1, 0);
+  /* The declared union (and so the second copy) did not move. */
+  assert_null(o[1]->u.csg.children[1]->transform);
+  assert_null(o[1]->texture->pigment->transform);
+  assert_ptr_not_equal(o[0]->u.csg.children[0], o[1]->u.csg.children[0]);
+  assert_non_null(o[2]->texture->pigment->transform);
+  assert_null(o[3]->texture->pigment->transform);
+  assert_num(o[3]->texture->finish->phong, 1);
+  assert_colour(o[3]->texture->pigment->colour, 1, 0, 0, 0, 0);
+  zr_scene_info info;
+  zr_scene_get_info(s, &info);
+  assert_int_equal(info.primitives, 8);
+}
+
+static void test_parser_camera_look_at(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f,
+      "camera { location <0, 0, -10> look_at <0, 0, 0> angle 90 }\n");
+  zr_camera *c = &s->camera;
+  assert_true(c->given);
+  assert_vec(c->location, 0, 0, -10);
+  /* 0.5 * |right| / tan(45 degrees) = 0.665 with the default right. */
+  assert_vec(c->direction, 0, 0, 0.665);
+  assert_vec(c->right, 1.33, 0, 0);
+  assert_vec(c->up, 0, 1, 0);
+
+  s = good(f, "camera { location <5, 0, 0> look_at 0 }\n");
+  c = &s->camera;
+  assert_vec(c->direction, -1, 0, 0);
+  /* Looking down -x with y up is a -90 degree turn about y, which takes
+     the right vector +x to +z. */
+  assert_vec(c->right, 0, 0, 1.33);
+  assert_vec(c->up, 0, 1, 0);
+
+  /* The Cornell box's mirrored right vector stays mirrored. */
+  s = good(f, "camera { location <0, 1, -3> right <-1, 0, 0> up y\n"
+              "  look_at <0, 1, 0> angle 60 }\n");
+  c = &s->camera;
+  assert_vec(c->right, -1, 0, 0);
+  assert_vec(c->up, 0, 1, 0);
+  assert_vec(c->direction, 0, 0, 0.5 / tan(M_PI / 6));
+
+  s = good(f, "camera { perspective location 0 direction z * 2\n"
+              "  up y right x sky x look_at z translate <1, 2, 3> }\n");
+  c = &s->camera;
+  assert_vec(c->location, 1, 2, 3);
+  assert_vec(c->direction, 0, 0, 2);
+  /* With sky along +x the camera rolls: up turns to +x. */
+  assert_vec(c->up, 1, 0, 0);
+  assert_vec(c->right, 0, -1, 0);
+
+  s = good(f, "camera { location <0, 0, -1> rotate <0, 90, 0> }\n");
+  c = &s->camera;
+  assert_vec(c->location, -1, 0, 0);
+  assert_vec(c->direction, 1, 0, 0);
+}
+
+/* Where the camera puts point q on a width x height image: solves
+   q - location = s (direction + u right + v up). */
+static void project(const zr_camera *c, zr_vec3 q, int width, int height,
+                    double *px, double *py) {
+  zr_vec3 d = zr_v3_sub(q, c->location);
+  zr_vec3 ru = zr_v3_cross(c->right, c->up);
+  double det = zr_v3_dot(c->direction, ru);
+  double s = zr_v3_dot(d, ru) / det;
+  double u = zr_v3_dot(c->direction, zr_v3_cross(d, c->up)) / det / s;
+  double v = zr_v3_dot(c->direction, zr_v3_cross(c->right, d)) / det / s;
+  *px = (u + 0.5) * width;
+  *py = (0.5 - v) * height;
+}
+
+static void test_parser_camera_matches_povray(void **state) {
+  fixture *f = *state;
+  /* Reference: POV-Ray 3.7 rendered these cameras at 160x120 with a
+     small white sphere (radius 0.1 and 0.05) on black; the centroids of
+     its 12 lit pixels were (115.5, 56.0) and (57.0, 49.5).  A blob of a
+     dozen pixels locates its centre to within half a pixel. */
+  zr_scene *s = good(f,
+      "camera { location <3, 4, -7> sky <0.3, 1, 0> look_at <0, 1, 0>\n"
+      "  angle 50 }\n");
+  double x, y;
+  project(&s->camera, zr_v3(1.5, 0.5, 1), 160, 120, &x, &y);
+  assert_true(fabs(x - 115.5) < 0.5 && fabs(y - 56.0) < 0.5);
+  s = good(f, "camera { location <0, 1, -3> right <-1, 0, 0> up y\n"
+              "  look_at <0, 1, 0> angle 60 }\n");
+  project(&s->camera, zr_v3(0.5, 1.3, 0), 160, 120, &x, &y);
+  assert_true(fabs(x - 57.0) < 0.5 && fabs(y - 49.5) < 0.5);
+}
+
+static void test_parser_lights_background_settings(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f,
+      "#version 3.7;\n"
+      "global_settings { assumed_gamma 2.2 max_trace_level 10\n"
+      "  adc_bailout 0.01 ambient_light rgb <0.5, 0.6, 0.7> }\n"
+      "background { color rgb <0.1, 0.2, 0.3> }\n"
+      "light_source { <1, 2, 3>, color rgb <1, 0.5, 0.25> }\n"
+      "light_source { <0, 0, 0>, 1 shadowless translate <0, 10, 0> }\n");
+  assert_int_equal(s->n_lights, 2);
+  assert_vec(s->lights[0].location, 1, 2, 3);
+  assert_rgb(s->lights[0].colour, 1, 0.5, 0.25);
+  assert_false(s->lights[0].shadowless);
+  assert_vec(s->lights[1].location, 0, 10, 0);
+  assert_rgb(s->lights[1].colour, 1, 1, 1);
+  assert_true(s->lights[1].shadowless);
+  assert_colour(s->settings.background, 0.1, 0.2, 0.3, 0, 0);
+  assert_num(s->settings.assumed_gamma, 2.2);
+  assert_true(s->settings.assumed_gamma_given);
+  assert_int_equal(s->settings.max_trace_level, 10);
+  assert_num(s->settings.adc_bailout, 0.01);
+  assert_rgb(s->settings.ambient_light, 0.5, 0.6, 0.7);
+  assert_num(zr_scene_assumed_gamma(s), 2.2);
+  assert_num(s->settings.version, 3.7);
+  good(f, "#version 3.5; sphere { 0, 1 interior { ior 1.5 } inverse }\n");
+  assert_num(f->scene->objects[0]->interior->ior, 1.5);
+  assert_true(f->scene->objects[0]->inverse);
+  assert_num(f->scene->settings.version, 3.5);
+  good(f, "sphere { 0, 1 }");
+  assert_num(f->scene->settings.version, 3.7);
+}
+
+static void test_parser_zfor_replays(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f,
+      "#declare zr = 42;\n"
+      "#zfor (3)\n"
+      "  sphere { <zr, 0, 0>, 1 }\n"
+      "  #zfor (1 + 1) sphere { <zr, 1, 0>, 0.5 } #zend\n"
+      "  sphere { <zr, 2, 0>, 0.25 }\n"
+      "#zend\n"
+      "#zfor (0) sphere { 0, 1 } #zend\n"
+      "sphere { <zr, 0, 0>, 1 }\n");
+  /* 3 * (1 + 2 + 1) spheres and the last one. */
+  assert_int_equal(s->n_objects, 13);
+  zr_object **o = s->objects;
+  assert_vec(o[0]->u.sphere.centre, 0, 0, 0);
+  assert_vec(o[1]->u.sphere.centre, 0, 1, 0);
+  assert_vec(o[2]->u.sphere.centre, 1, 1, 0);
+  /* After the inner loop the outer zr is back. */
+  assert_vec(o[3]->u.sphere.centre, 0, 2, 0);
+  assert_vec(o[4]->u.sphere.centre, 1, 0, 0);
+  assert_vec(o[11]->u.sphere.centre, 2, 2, 0);
+  assert_vec(o[12]->u.sphere.centre, 42, 0, 0);
+}
+
+/* ---- files and includes ---- */
+
+static char tmpdir[64];
+
+static void write_file(const char *name, const char *text) {
+  char path[256];
+  snprintf(path, sizeof path, "%s/%s", tmpdir, name);
+  FILE *fp = fopen(path, "w");
+  assert_non_null(fp);
+  fputs(text, fp);
+  fclose(fp);
+}
+
+static int make_tmpdir(void **state) {
+  snprintf(tmpdir, sizeof tmpdir, "/tmp/zr_parser_XXXXXX");
+  assert_non_null(mkdtemp(tmpdir));
+  char sub[128];
+  snprintf(sub, sizeof sub, "%s/lib", tmpdir);
+  assert_int_equal(mkdir(sub, 0700), 0);
+  write_file("scene.pov",
+             "#include \"shapes.inc\"\n"
+             "#include \"libshapes.inc\"\n"
+             "object { Ball translate x }\n"
+             "object { Cube }\n");
+  write_file("shapes.inc",
+             "#local R = 2;\n"
+             "#declare Ball = sphere { 0, R }\n");
+  write_file("lib/libshapes.inc",
+             "#declare Cube = box { -1, 1 }\n");
+  write_file("uses_local.pov",
+             "#include \"shapes.inc\"\n"
+             "sphere { 0, R }\n");
+  write_file("outer.inc", "// outer\n#include \"inner.inc\"\n");
+  write_file("inner.inc", "\n  #include \"nowhere.inc\"\n");
+  write_file("nested.pov", "sphere { 0, 1 }\n#include \"outer.inc\"\n");
+  write_file("self.inc", "#include \"self.inc\"\n");
+  write_file("recursive.pov", "#include \"self.inc\"\n");
+  write_file("badinc.inc", "sphere { 0, 1 } /* open\n");
+  write_file("lexerror.pov", "#include \"badinc.inc\"\n");
+  (void)state;
+  return 0;
+}
+
+static int remove_tmpdir(void **state) {
+  (void)state;
+  static const char *const names[] = {
+      "scene.pov", "shapes.inc", "lib/libshapes.inc", "uses_local.pov",
+      "outer.inc", "inner.inc", "nested.pov", "self.inc", "recursive.pov",
+      "badinc.inc", "lexerror.pov", "lib"};
+  for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
+    char path[256];
+    snprintf(path, sizeof path, "%s/%s", tmpdir, names[i]);
+    remove(path);
+  }
+  rmdir(tmpdir);
+  return 0;
+}
+
+static zr_status parse_file(fixture *f, const char *name) {
+  char path[256];
+  snprintf(path, sizeof path, "%s/%s", tmpdir, name);
+  zr_scene_free(f->scene);
+  f->scene = NULL;
+  memset(&f->diag, 0, sizeof f->diag);
+  return zr_scene_parse_file(f->ctx, path, &f->scene);
+}
+
+static void test_parser_include_paths(void **state) {
+  fixture *f = *state;
+  /* libshapes.inc is only in lib/: not found until the path is added. */
+  assert_int_equal(parse_file(f, "scene.pov"), ZR_ENOTFOUND);
+  char expected[512];
+  snprintf(expected, sizeof expected,
+           "cannot find include file 'libshapes.inc'");
+  assert_string_equal(f->diag.message, expected);
+  char lib[128];
+  snprintf(lib, sizeof lib, "%s/lib", tmpdir);
+  assert_int_equal(zr_context_add_include_path(f->ctx, lib), ZR_OK);
+  assert_int_equal(parse_file(f, "scene.pov"), ZR_OK);
+  zr_scene *s = f->scene;
+  assert_int_equal(s->n_objects, 2);
+  assert_num(s->objects[0]->u.sphere.radius, 2);
+  assert_vec(to_world(s->objects[0], zr_v3(0, 0, 0)), 1, 0, 0);
+  assert_int_equal(s->objects[1]->kind, ZR_OBJ_BOX);
+  /* POV-Ray's own include directory is searched last: consts.inc is
+     found there (and stops at the first directive this slice lacks). */
+  assert_int_equal(parse(f, "#include \"consts.inc\"\n"), ZR_EUNSUPPORTED);
+  assert_string_equal(f->diag.message, "'#ifndef' is not supported yet");
+  assert_memory_equal(f->diag.text, ZR_POVRAY_INCLUDE_DIR "/consts.inc:",
+                      strlen(ZR_POVRAY_INCLUDE_DIR "/consts.inc:"));
+}
+
+static void test_parser_local_stays_in_its_file(void **state) {
+  fixture *f = *state;
+  assert_int_equal(parse_file(f, "uses_local.pov"), ZR_EUNDEFINED);
+  assert_string_equal(f->diag.message, "undefined identifier 'R'");
+}
+
+/* Serves one scene from memory, as an MPI rank would. */
+static zr_status memory_reader(const char *path, char **bytes, size_t *size,
+                               void *user) {
+  (void)user;
+  const char *text = strcmp(path, "mem.pov") == 0
+                         ? "#include \"m.inc\"\nobject { M }\n"
+                         : strcmp(path, "m.inc") == 0
+                               ? "#declare M = sphere { 0, 3 }\n"
+                               : NULL;
+  if (!text)
+    return ZR_ENOTFOUND;
+  *size = strlen(text);
+  *bytes = strdup(text);
+  return *bytes ? ZR_OK : ZR_ENOMEM;
+}
+
+static void test_parser_custom_reader(void **state) {
+  fixture *f = *state;
+  zr_context_set_reader(f->ctx, memory_reader, NULL);
+  assert_int_equal(zr_scene_parse_file(f->ctx, "mem.pov", &f->scene),
+                   ZR_OK);
+  assert_num(f->scene->objects[0]->u.sphere.radius, 3);
+}
+
+/* ---- bad input ---- */
+
+static void test_parser_syntax_error(void **state) {
+  fixture *f = *state;
+  bad(f, "sphere { <0, 0, 0>, 1, 2 }\n", ZR_ESYNTAX,
+      "unexpected ',', expected 'finish', 'interior', 'inverse', 'matrix', "
+      "'no_shadow', 'open', 'pigment', 'rotate', 'scale', 'texture', "
+      "'translate', '+', '-', '*', '/', '.' or '}'",
+      "t.pov:1:22: error: unexpected ',', expected 'finish', 'interior', "
+      "'inverse', 'matrix', 'no_shadow', 'open', 'pigment', 'rotate', "
+      "'scale', 'texture', 'translate', '+', '-', '*', '/', '.' or '}'\n"
+      "    1 | sphere { <0, 0, 0>, 1, 2 }\n"
+      "      |                      ^\n");
+  /* As in POV-Ray, "-1" after a vector subtracts: the radius is missing
+     and too many tokens could start it to list them. */
+  bad(f, "sphere { <0, 0, 0> -1 }", ZR_ESYNTAX, "unexpected '}'", NULL);
+  bad(f, "sphere { 0, 1 }\n}\n", ZR_ESYNTAX,
+      "unexpected '}', expected end of file, '#declare', '#local', "
+      "'background', 'box', 'camera', 'cone', 'cylinder', 'disc', "
+      "'global_settings', 'light_source', 'object', 'plane', 'sphere', "
+      "'triangle' or 'union'",
+      NULL);
+  bad(f, "box { 0, 1 shadowless }", ZR_ESYNTAX,
+      "unexpected 'shadowless', expected 'finish', 'interior', "
+      "'inverse', 'matrix', 'no_shadow', 'open', 'pigment', 'rotate', "
+      "'scale', 'texture', 'translate', '+', '-', '*', '/', '.' or '}'",
+      NULL);
+  bad(f, "#declare 3 = 1;", ZR_ESYNTAX,
+      "unexpected number, expected identifier", NULL);
+}
+
+static void test_parser_type_errors(void **state) {
+  fixture *f = *state;
+  bad(f, "sphere { 0, <1, 2, 3> }", ZR_ESYNTAX,
+      "expected a float, got a vector",
+      "t.pov:1:13: error: expected a float, got a vector\n"
+      "    1 | sphere { 0, <1, 2, 3> }\n"
+      "      |             ^~~~~~~~~\n");
+  bad(f, "sphere { 0, 1 open }", ZR_ESYNTAX,
+      "'open' is for cylinders and cones, not for a sphere", NULL);
+  bad(f, "#declare A = 1;\nsphere { 0, A.y }", ZR_ESYNTAX,
+      "a float has no component '.y'", NULL);
+  bad(f, "sphere { 0, 1 / 0 }", ZR_ESCENE, "division by zero", NULL);
+  bad(f, "box { 0, 1 matrix <1, 2, 3> }", ZR_ESYNTAX,
+      "a matrix has 12 values, not 3", NULL);
+}
+
+static void test_parser_undefined_identifier(void **state) {
+  fixture *f = *state;
+  bad(f, "#declare Ok = 1;\nsphere { Ok, Foo }\n", ZR_EUNDEFINED,
+      "undefined identifier 'Foo'",
+      "t.pov:2:14: error: undefined identifier 'Foo'\n"
+      "    2 | sphere { Ok, Foo }\n"
+      "      |              ^~~\n");
+}
+
+static void test_parser_unsupported_keyword(void **state) {
+  fixture *f = *state;
+  bad(f, "sphere { 0, 1 }\n  isosurface { }\n", ZR_EUNSUPPORTED,
+      "'isosurface' is not supported yet",
+      "t.pov:2:3: error: 'isosurface' is not supported yet\n"
+      "    2 |   isosurface { }\n"
+      "      |   ^~~~~~~~~~\n");
+  bad(f, "sphere { 0, 1 photons { } }", ZR_EUNSUPPORTED,
+      "'photons' is not supported yet", NULL);
+  bad(f, "#if (1) #end", ZR_EUNSUPPORTED, "'#if' is not supported yet",
+      NULL);
+}
+
+static void test_parser_missing_include_chain(void **state) {
+  fixture *f = *state;
+  assert_int_equal(parse_file(f, "nested.pov"), ZR_ENOTFOUND);
+  char expected[1024];
+  snprintf(expected, sizeof expected,
+           "%s/inner.inc:2:12: error: cannot find include file "
+           "'nowhere.inc'\n"
+           "in file included from %s/outer.inc:2:1\n"
+           "in file included from %s/nested.pov:2:1\n"
+           "    2 |   #include \"nowhere.inc\"\n"
+           "      |            ^~~~~~~~~~~~~\n",
+           tmpdir, tmpdir, tmpdir);
+  assert_string_equal(f->diag.text, expected);
+  assert_null(f->scene);
+}
+
+static void test_parser_missing_file(void **state) {
+  fixture *f = *state;
+  assert_int_equal(parse_file(f, "no-such-scene.pov"), ZR_ENOTFOUND);
+  char expected[512];
+  snprintf(expected, sizeof expected,
+           "cannot open scene file '%s/no-such-scene.pov': file not found",
+           tmpdir);
+  assert_string_equal(f->diag.message, expected);
+  assert_null(f->scene);
+}
+
+static void test_parser_unterminated(void **state) {
+  fixture *f = *state;
+  bad(f, "sphere { 0, 1 }\n/* a /* b */\nbox { 0, 1 }\n", ZR_ESYNTAX,
+      "unterminated comment",
+      "t.pov:2:1: error: unterminated comment\n"
+      "    2 | /* a /* b */\n"
+      "      | ^~\n");
+  bad(f, "#include \"x.inc\n", ZR_ESYNTAX, "unterminated string",
+      "t.pov:1:10: error: unterminated string\n"
+      "    1 | #include \"x.inc\n"
+      "      |          ^\n");
+  /* A lexical error in an included file shows the chain. */
+  assert_int_equal(parse_file(f, "lexerror.pov"), ZR_ESYNTAX);
+  char expected[512];
+  snprintf(expected, sizeof expected,
+           "%s/badinc.inc:1:17: error: unterminated comment\n"
+           "in file included from %s/lexerror.pov:1:1\n"
+           "    1 | sphere { 0, 1 } /* open\n"
+           "      |                 ^~\n",
+           tmpdir, tmpdir);
+  assert_string_equal(f->diag.text, expected);
+}
+
+static void test_parser_zfor_errors(void **state) {
+  fixture *f = *state;
+  bad(f, "sphere { 0, 1 }\n#zfor (2) sphere { 0, 1 }\n", ZR_ESYNTAX,
+      "'#zfor' without a matching '#zend'",
+      "t.pov:2:1: error: '#zfor' without a matching '#zend'\n"
+      "    2 | #zfor (2) sphere { 0, 1 }\n"
+      "      | ^~~~~\n");
+  bad(f, "#zend\n", ZR_ESYNTAX, "'#zend' without a matching '#zfor'", NULL);
+  bad(f, "#zfor (2 sphere { 0, 1 } #zend", ZR_ESYNTAX,
+      "unexpected 'sphere', expected '+', '-', '*', '/', ')' or '.'", NULL);
+  bad(f, "#zfor (-1) #zend", ZR_ESCENE,
+      "the count of '#zfor' is negative (-1)", NULL);
+  bad(f, "#zfor (1e300) #zend", ZR_ELIMIT,
+      "the count of '#zfor' is more than 100000000 (1e+300)", NULL);
+}
+
+static void test_parser_include_recursion_limit(void **state) {
+  fixture *f = *state;
+  assert_int_equal(parse_file(f, "recursive.pov"), ZR_ELIMIT);
+  assert_string_equal(f->diag.message,
+                      "#include nested more than 64 levels deep "
+                      "(does a file include itself?)");
+  assert_non_null(strstr(f->diag.text,
+                         "(and 58 more levels of inclusion)\n"));
+}
+
+static void test_parser_string_name_in_messages(void **state) {
+  fixture *f = *state;
+  zr_scene *scene = NULL;
+  const char *text = "sphere { 0, 1 } Bogus";
+  assert_int_equal(zr_scene_parse_string(f->ctx, "inline scene", text,
+                                         strlen(text), &scene),
+                   ZR_EUNDEFINED);
+  assert_null(scene);
+  assert_string_equal(zr_context_last_error(f->ctx),
+                      "inline scene:1:17: error: undefined identifier "
+                      "'Bogus'\n"
+                      "    1 | sphere { 0, 1 } Bogus\n"
+                      "      |                 ^~~~~\n");
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test_setup_teardown(test_parser_primitives, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_parser_optional_commas, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_parser_expressions, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_parser_colours, setup, teardown),
+      cmocka_unit_test_setup_teardown(test_parser_finish, setup, teardown),
+      cmocka_unit_test_setup_teardown(test_parser_transforms_in_order, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_parser_union_pushes_modifiers,
+                                      setup, teardown),
+      cmocka_unit_test_setup_teardown(test_parser_declare_copies, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_parser_camera_look_at, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_parser_camera_matches_povray,
+                                      setup, teardown),
+      cmocka_unit_test_setup_teardown(test_parser_lights_background_settings,
+                                      setup, teardown),
+      cmocka_unit_test_setup_teardown(test_parser_zfor_replays, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_parser_include_paths, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_parser_local_stays_in_its_file,
+                                      setup, teardown),
+      cmocka_unit_test_setup_teardown(test_parser_custom_reader, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_parser_syntax_error, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_parser_type_errors, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_parser_undefined_identifier,
+                                      setup, teardown),
+      cmocka_unit_test_setup_teardown(test_parser_unsupported_keyword, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_parser_missing_include_chain,
+                                      setup, teardown),
+      cmocka_unit_test_setup_teardown(test_parser_missing_file, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_parser_unterminated, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_parser_zfor_errors, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_parser_include_recursion_limit,
+                                      setup, teardown),
+      cmocka_unit_test_setup_teardown(test_parser_string_name_in_messages,
+                                      setup, teardown),
+  };
+  return cmocka_run_group_tests(tests, make_tmpdir, remove_tmpdir);
+}

@@ -1,0 +1,440 @@
+/*
+ * test_shade.c - POV-Ray 3.7's lighting model: hand-computed values for
+ * each finish term, shadows through transparent objects, refraction and
+ * Fresnel formulas, trace depth limits, and values measured from povray
+ * 3.7 renders of the same scenes (16-bit PPM, File_Gamma 1.0).
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <string.h>
+
+#include "core/arena.h"
+#include "core/transform.h"
+#include "scene/scene.h"
+#include "trace/render.h"
+#include "trace/shade.h"
+
+/* Hand values are closed forms evaluated in double precision. */
+#define EPS 1e-12
+/* povray's 16-bit output quantises to 1.5e-5 and its own single
+   precision colour arithmetic adds a little more. */
+#define POV_TOL 6e-5
+
+static void assert_near(double a, double b, double tol) {
+  if (!(fabs(a - b) <= tol))
+    fail_msg("%.17g differs from %.17g by more than %g", a, b, tol);
+}
+
+static void assert_rgb(zr_rgb c, double r, double g, double b, double tol) {
+  assert_near(c.r, r, tol);
+  assert_near(c.g, g, tol);
+  assert_near(c.b, b, tol);
+}
+
+/* A texture with its own pigment and finish (POV-Ray's defaults). */
+static zr_texture *texture(zr_scene *s, zr_colour c, zr_finish **fin) {
+  zr_pigment *p = zr__arena_alloc(&s->arena, sizeof *p);
+  zr__pigment_init(p);
+  p->colour = c;
+  zr_finish *f = zr__arena_alloc(&s->arena, sizeof *f);
+  zr__finish_init(f);
+  zr_texture *t = zr__arena_alloc(&s->arena, sizeof *t);
+  t->pigment = p;
+  t->finish = f;
+  *fin = f;
+  return t;
+}
+
+static zr_object *add_plane(zr_scene *s, zr_vec3 n, double d, zr_colour c,
+                            zr_finish **fin) {
+  zr_object *o = zr__arena_alloc(&s->arena, sizeof *o);
+  o->kind = ZR_OBJ_PLANE;
+  o->u.plane.normal = n;
+  o->u.plane.distance = d;
+  o->texture = texture(s, c, fin);
+  zr__scene_add_object(s, o);
+  return o;
+}
+
+static zr_object *add_sphere(zr_scene *s, zr_vec3 c, double r, zr_colour col,
+                             zr_finish **fin) {
+  zr_object *o = zr__arena_alloc(&s->arena, sizeof *o);
+  o->kind = ZR_OBJ_SPHERE;
+  o->u.sphere.centre = c;
+  o->u.sphere.radius = r;
+  o->texture = texture(s, col, fin);
+  zr__scene_add_object(s, o);
+  return o;
+}
+
+static zr_object *add_box(zr_scene *s, zr_vec3 a, zr_vec3 b, zr_colour col,
+                          zr_finish **fin) {
+  zr_object *o = zr__arena_alloc(&s->arena, sizeof *o);
+  o->kind = ZR_OBJ_BOX;
+  o->u.box.corner1 = a;
+  o->u.box.corner2 = b;
+  o->texture = texture(s, col, fin);
+  zr__scene_add_object(s, o);
+  return o;
+}
+
+static void add_light(zr_scene *s, zr_vec3 at, zr_rgb colour) {
+  zr_light l;
+  memset(&l, 0, sizeof l);
+  l.location = at;
+  l.colour = colour;
+  zr__scene_add_light(s, &l);
+}
+
+static void set_interior(zr_scene *s, zr_object *o, double ior) {
+  zr_interior *i = zr__arena_alloc(&s->arena, sizeof *i);
+  i->ior = ior;
+  o->interior = i;
+}
+
+/* Traces one ray and returns its colour. */
+static zr_rgb trace(zr_scene *s, zr_vec3 from, zr_vec3 dir) {
+  zr_render_stats stats = {0};
+  zr_tracer tr = {s, &stats};
+  zr_ray r = {from, dir};
+  return zr__trace_ray(&tr, &r, 1, 1.0, NULL);
+}
+
+/* The colour povray gives pixel (x, y) of a w x h render of s. */
+static zr_rgb pixel(zr_scene *s, int w, int h, int x, int y) {
+  zr_render_params p;
+  zr_render_params_init(&p);
+  p.width = w;
+  p.height = h;
+  uint32_t index = (uint32_t)(y * w + x);
+  float rgb[3];
+  assert_int_equal(zr_render_pixels(s, &p, &index, 1, NULL, rgb, NULL),
+                   ZR_OK);
+  return zr_rgb3(rgb[0], rgb[1], rgb[2]);
+}
+
+static const zr_colour ORANGE = {1, 0.5, 0.25, 0, 0};
+
+/* A plane z = 0 facing -z, seen head on from z = -1, lit from
+   (0, 3, -4): N.L = 0.8. */
+static zr_scene *facing_plane(zr_colour c, zr_finish **fin) {
+  zr_scene *s = zr__scene_new();
+  add_plane(s, zr_v3(0, 0, -1), 0, c, fin);
+  add_light(s, zr_v3(0, 3, -4), zr_rgb3(1, 1, 1));
+  return s;
+}
+
+static void test_shade_ambient_diffuse_brilliance(void **state) {
+  (void)state;
+  zr_finish *f;
+  zr_scene *s = facing_plane(ORANGE, &f);
+  f->brilliance = 2;
+  assert_int_equal(zr__scene_finish(s, NULL), ZR_OK);
+  double k = 0.1 + 0.6 * 0.8 * 0.8;
+  assert_rgb(trace(s, zr_v3(0, 0, -1), zr_v3(0, 0, 1)), k, 0.5 * k,
+             0.25 * k, EPS);
+  /* ambient_light scales ambient; emission is not scaled by it. */
+  s->settings.ambient_light = zr_rgb3(0.5, 0.5, 0.5);
+  f->emission = zr_rgb3(0.2, 0.2, 0.2);
+  f->diffuse = 0;
+  assert_rgb(trace(s, zr_v3(0, 0, -1), zr_v3(0, 0, 1)), 0.25, 0.125,
+             0.0625, EPS);
+  zr_scene_free(s);
+}
+
+static void test_shade_light_behind_surface_gives_no_direct_light(void **s_) {
+  (void)s_;
+  zr_finish *f;
+  zr_scene *s = zr__scene_new();
+  add_plane(s, zr_v3(0, 0, -1), 0, ORANGE, &f);
+  add_light(s, zr_v3(0, 3, 4), zr_rgb3(1, 1, 1)); /* on the far side */
+  f->phong = 1;
+  assert_int_equal(zr__scene_finish(s, NULL), ZR_OK);
+  assert_rgb(trace(s, zr_v3(0, 0, -1), zr_v3(0, 0, 1)), 0.1, 0.05, 0.025,
+             EPS);
+  zr_scene_free(s);
+}
+
+static void test_shade_phong_specular_metallic(void **state) {
+  (void)state;
+  zr_finish *f;
+  zr_scene *s = facing_plane(ORANGE, &f);
+  f->ambient = zr_rgb3(0, 0, 0);
+  f->diffuse = 0;
+  f->phong = 0.5;
+  f->phong_size = 10;
+  assert_int_equal(zr__scene_finish(s, NULL), ZR_OK);
+  /* The mirrored view direction is -z, so R.L = 0.8. */
+  double ph = 0.5 * pow(0.8, 10);
+  assert_rgb(trace(s, zr_v3(0, 0, -1), zr_v3(0, 0, 1)), ph, ph, ph, EPS);
+  /* Specular: N.H with H = unit(L + V) = unit(0, 0.6, -1.8). */
+  f->phong = 0;
+  f->specular = 0.7;
+  f->roughness = 0.1;
+  double sp = 0.7 * pow(1.8 / sqrt(0.36 + 3.24), 10);
+  assert_rgb(trace(s, zr_v3(0, 0, -1), zr_v3(0, 0, 1)), sp, sp, sp, EPS);
+  /* Metallic tints the highlight towards the pigment by 1 - F at the
+     light's angle of incidence. */
+  f->metallic = 1;
+  double w = zr__metallic_fresnel(0.8);
+  assert_rgb(trace(s, zr_v3(0, 0, -1), zr_v3(0, 0, 1)), sp,
+             sp * (w + (1 - w) * 0.5), sp * (w + (1 - w) * 0.25), EPS);
+  zr_scene_free(s);
+}
+
+/*
+ * The metallic curve against povray: G/R of a red metallic sphere's
+ * reflection of white at the angles below (the pixel's exact angle is
+ * known to 0.005 degrees, which at 80 degrees moves F by 2e-4).
+ */
+static void test_shade_metallic_curve_matches_povray(void **state) {
+  (void)state;
+  const double deg[] = {6.21, 23.95, 44.40, 63.07, 80.43};
+  const double measured[] = {0.00157, 0.00836, 0.02548, 0.07127, 0.27269};
+  for (int i = 0; i < 5; i++)
+    assert_near(zr__metallic_fresnel(cos(deg[i] * M_PI / 180.0)),
+                measured[i], 3e-4);
+  assert_near(zr__metallic_fresnel(1.0), 0.0, EPS);
+  assert_near(zr__metallic_fresnel(0.0), 1.0, EPS);
+}
+
+static void test_shade_reflection_of_background(void **state) {
+  (void)state;
+  zr_finish *f;
+  zr_scene *s = facing_plane(ORANGE, &f);
+  f->ambient = zr_rgb3(0, 0, 0);
+  f->diffuse = 0;
+  f->reflection = f->reflection_max = zr_rgb3(0.5, 0.5, 0.5);
+  s->settings.background = zr_colour5(0.2, 0.4, 0.8, 0, 0);
+  assert_int_equal(zr__scene_finish(s, NULL), ZR_OK);
+  assert_rgb(trace(s, zr_v3(0, 0, -1), zr_v3(0, 0, 1)), 0.1, 0.2, 0.4, EPS);
+  /* Variable reflection: 0.1 facing to 0.9 grazing with falloff 2, seen
+     at 60 degrees: 0.1 + 0.8 * (1 - cos 60)^2 = 0.3. */
+  f->reflection = zr_rgb3(0.1, 0.1, 0.1);
+  f->reflection_max = zr_rgb3(0.9, 0.9, 0.9);
+  f->reflection_falloff = 2;
+  zr_vec3 d = zr_v3(0, sin(M_PI / 3), cos(M_PI / 3));
+  assert_rgb(trace(s, zr_v3_neg(d), d), 0.06, 0.12, 0.24, 1e-12);
+  /* Fresnel at normal incidence on ior 1.5: ((1.5 - 1) / 2.5)^2. */
+  f->reflection = zr_rgb3(0, 0, 0);
+  f->reflection_max = zr_rgb3(1, 1, 1);
+  f->reflection_fresnel = true;
+  set_interior(s, (zr_object *)s->primitives[0], 1.5);
+  assert_rgb(trace(s, zr_v3(0, 0, -1), zr_v3(0, 0, 1)), 0.04 * 0.2,
+             0.04 * 0.4, 0.04 * 0.8, EPS);
+  zr_scene_free(s);
+}
+
+static void test_shade_shadows_through_filter_and_transmit(void **state) {
+  (void)state;
+  zr_finish *f;
+  zr_scene *s = zr__scene_new();
+  zr_object *b = add_box(s, zr_v3(-1, -1, -1), zr_v3(1, 1, 1),
+                         zr_colour5(1, 0.5, 0.25, 0, 0.5), &f);
+  assert_int_equal(zr__scene_finish(s, NULL), ZR_OK);
+  zr_render_stats stats = {0};
+  zr_tracer tr = {s, &stats};
+  zr_vec3 light = zr_v3(0, 0, -10), point = zr_v3(0, 0, 10);
+  /* Two crossings of transmit 0.5. */
+  assert_rgb(zr__shadow_transmission(&tr, light, point), 0.25, 0.25, 0.25,
+             EPS);
+  /* Filter 0.5 on orange: (0.5 * C)^2 per channel. */
+  ((zr_pigment *)b->texture->pigment)->colour =
+      zr_colour5(1, 0.5, 0.25, 0.5, 0);
+  assert_rgb(zr__shadow_transmission(&tr, light, point), 0.25, 0.0625,
+             0.015625, EPS);
+  /* Opaque blocks; no_shadow lets everything through. */
+  ((zr_pigment *)b->texture->pigment)->colour = ORANGE;
+  assert_rgb(zr__shadow_transmission(&tr, light, point), 0, 0, 0, 0);
+  ((zr_object *)s->primitives[0])->no_shadow = true;
+  assert_rgb(zr__shadow_transmission(&tr, light, point), 1, 1, 1, 0);
+  /* A point beside the box sees the light. */
+  ((zr_object *)s->primitives[0])->no_shadow = false;
+  assert_rgb(zr__shadow_transmission(&tr, light, zr_v3(3, 0, 10)), 1, 1, 1,
+             0);
+  assert_true(stats.shadow_rays == 5);
+  zr_scene_free(s);
+}
+
+static void test_shade_refraction_and_fresnel_formulas(void **state) {
+  (void)state;
+  zr_vec3 n = zr_v3(0, 1, 0);
+  zr_vec3 d = zr_v3_norm(zr_v3(1, -1, 0)); /* 45 degrees */
+  zr_vec3 t;
+  assert_true(zr__refract(d, n, 1.0 / 1.5, &t));
+  /* Snell: sin t = sin 45 / 1.5. */
+  assert_near(t.x, sqrt(0.5) / 1.5, EPS);
+  assert_near(t.y, -sqrt(1.0 - 0.5 / 2.25), EPS);
+  assert_near(zr_v3_len(t), 1.0, EPS);
+  /* Out of glass at 45 degrees: sin t = 1.06, total internal reflection. */
+  assert_false(zr__refract(d, n, 1.5, &t));
+  zr_vec3 r = zr__reflect(d, n);
+  assert_near(r.x, d.x, EPS);
+  assert_near(r.y, -d.y, EPS);
+  assert_near(zr__fresnel(1.0, 1.0, 1.5), 0.04, EPS);
+  assert_near(zr__fresnel(1.0, 1.5, 1.0), 0.04, EPS);
+  assert_near(zr__fresnel(cos(M_PI / 4), 1.5, 1.0), 1.0, 0);
+  /* Glass at 60 degrees from inside (povray: 0.05519 at 30 degrees). */
+  assert_near(zr__fresnel(cos(M_PI / 6), 1.5, 1.0), 0.05519, 1e-5);
+}
+
+/* Two facing mirrors: the ray bounces until max_trace_level, picking up
+   ambient 0.1 times 0.5^k on the k-th surface. */
+static zr_scene *mirror_pair(void) {
+  zr_finish *f1, *f2;
+  zr_scene *s = zr__scene_new();
+  add_plane(s, zr_v3(0, 0, -1), 0, zr_colour5(1, 1, 1, 0, 0), &f1);
+  add_plane(s, zr_v3(0, 0, 1), -2, zr_colour5(1, 1, 1, 0, 0), &f2);
+  zr_finish *fs[2] = {f1, f2};
+  for (int i = 0; i < 2; i++) {
+    fs[i]->diffuse = 0;
+    fs[i]->reflection = fs[i]->reflection_max = zr_rgb3(0.5, 0.5, 0.5);
+  }
+  assert_int_equal(zr__scene_finish(s, NULL), ZR_OK);
+  return s;
+}
+
+static void test_shade_max_trace_level_and_adc_bailout(void **state) {
+  (void)state;
+  zr_scene *s = mirror_pair();
+  s->settings.adc_bailout = 0;
+  s->settings.max_trace_level = 3;
+  assert_rgb(trace(s, zr_v3(0, 0, -1), zr_v3(0, 0, 1)), 0.175, 0.175, 0.175,
+             EPS);
+  s->settings.max_trace_level = 1;
+  assert_rgb(trace(s, zr_v3(0, 0, -1), zr_v3(0, 0, 1)), 0.1, 0.1, 0.1, EPS);
+  /* Weights 1, 0.5, 0.25: a bailout of 0.3 stops after one reflection. */
+  s->settings.max_trace_level = 10;
+  s->settings.adc_bailout = 0.3;
+  assert_rgb(trace(s, zr_v3(0, 0, -1), zr_v3(0, 0, 1)), 0.15, 0.15, 0.15,
+             EPS);
+  zr_scene_free(s);
+}
+
+/* The default camera 5 units back: POV-Ray's location <0,0,-5>
+   look_at 0 with right 1.33 and up 1. */
+static zr_scene *pov_camera_scene(void) {
+  zr_scene *s = zr__scene_new();
+  s->camera.location = zr_v3(0, 0, -5);
+  s->camera.given = true;
+  return s;
+}
+
+/*
+ * A transparent sphere lit from the camera: the surface's own light is
+ * scaled by 1 - filter - transmit, the back face is seen and lit through
+ * the front one.  Pixel (20, 20) of a 40 x 40 render by povray 3.7.
+ */
+static void test_shade_transparency_matches_povray(void **state) {
+  (void)state;
+  static const struct {
+    zr_colour c;
+    double ambient, diffuse;
+    double expect[3];
+  } cases[] = {
+      {{1, 0.5, 0.25, 0, 0}, 0, 1, {0.99571, 0.49786, 0.24894}},
+      {{1, 0.5, 0.25, 0, 0.5}, 0, 1, {0.62205, 0.31102, 0.15552}},
+      {{1, 0.5, 0.25, 0.5, 0}, 0, 1, {0.62205, 0.26445, 0.12641}},
+      {{1, 0.5, 0.25, 0.5, 0}, 1, 0, {0.75, 0.3125, 0.14063}},
+      {{1, 0.5, 0.25, 0.3, 0.2}, 1, 0, {0.75, 0.3375, 0.15938}},
+  };
+  for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+    zr_scene *s = pov_camera_scene();
+    zr_finish *f;
+    add_sphere(s, zr_v3(0, 0, 0), 1, cases[i].c, &f);
+    f->ambient = zr_rgb3(cases[i].ambient, cases[i].ambient,
+                         cases[i].ambient);
+    f->diffuse = cases[i].diffuse;
+    add_light(s, zr_v3(0, 0, -10), zr_rgb3(1, 1, 1));
+    assert_int_equal(zr__scene_finish(s, NULL), ZR_OK);
+    assert_rgb(pixel(s, 40, 40, 20, 20), cases[i].expect[0],
+               cases[i].expect[1], cases[i].expect[2], POV_TOL);
+    zr_scene_free(s);
+  }
+}
+
+/*
+ * conserve_energy and total internal reflection on a plane, against
+ * povray: the plane has ambient 1 (red), a green wall behind it is seen
+ * through it, a blue background in the mirror.
+ */
+static void test_shade_conserve_energy_matches_povray(void **state) {
+  (void)state;
+  zr_scene *s = pov_camera_scene();
+  zr_finish *f, *wall;
+  add_plane(s, zr_v3(0, 0, -1), 0, zr_colour5(1, 0, 0, 0, 0.9), &f);
+  f->ambient = zr_rgb3(1, 1, 1);
+  f->diffuse = 0;
+  f->reflection = f->reflection_max = zr_rgb3(0.2, 0.2, 0.2);
+  f->conserve_energy = true;
+  add_box(s, zr_v3(-100, -100, 1), zr_v3(100, 100, 2),
+          zr_colour5(0, 1, 0, 0, 0), &wall);
+  wall->ambient = zr_rgb3(1, 1, 1);
+  wall->diffuse = 0;
+  s->settings.background = zr_colour5(0, 0, 1, 0, 0);
+  assert_int_equal(zr__scene_finish(s, NULL), ZR_OK);
+  /* Transmit 0.9 * (1 - 0.2) of green. */
+  assert_rgb(pixel(s, 20, 20, 10, 10), 0.1, 0.72, 0.2, POV_TOL);
+  zr_scene_free(s);
+}
+
+static void test_shade_total_internal_reflection_matches_povray(void **st) {
+  (void)st;
+  /* The camera inside a glass half space (plane turned 50 degrees about
+     y) looks out: total internal reflection. povray returns the mirrored
+     grey wall at full strength, untinted, whatever the transmit, filter
+     and reflection: 0.3 for every case below. */
+  static const zr_colour pigments[] = {
+      {1, 1, 1, 0, 0.2}, {1, 1, 1, 0, 0.9}, {1, 0.5, 0.2, 0.5, 0}};
+  for (int i = 0; i < 3; i++) {
+    zr_scene *s = zr__scene_new();
+    s->camera.location = zr_v3(0, 0, 5);
+    s->camera.direction = zr_v3(0, 0, -1);
+    s->camera.right = zr_v3(-1.33, 0, 0);
+    zr_finish *f, *wall;
+    zr_object *p = add_plane(s, zr_v3(0, 0, -1), 0, pigments[i], &f);
+    f->ambient = zr_rgb3(0, 0, 0);
+    f->diffuse = 0;
+    f->reflection = f->reflection_max = zr_rgb3(0.3, 0.3, 0.3);
+    set_interior(s, p, 1.5);
+    zr_transform *t = zr__arena_alloc(&s->arena, sizeof *t);
+    zr__transform_identity(t);
+    zr__transform_rotate(t, zr_v3(0, 50, 0));
+    p->transform = t;
+    add_box(s, zr_v3(-1000, -1000, -100), zr_v3(1000, 1000, -99),
+            zr_colour5(0.3, 0.3, 0.3, 0, 0), &wall);
+    wall->ambient = zr_rgb3(1, 1, 1);
+    wall->diffuse = 0;
+    assert_int_equal(zr__scene_finish(s, NULL), ZR_OK);
+    /* The camera starts inside the plane's interior. */
+    zr_render_stats stats = {0};
+    zr_tracer tr = {s, &stats};
+    zr_media media = {{s->primitives[0]}, 1};
+    zr_ray r = zr__camera_ray(&s->camera, 21, 21, 10.5, 10.5);
+    zr_rgb c = zr__trace_ray(&tr, &r, 1, 1.0, &media);
+    assert_rgb(c, 0.3, 0.3, 0.3, POV_TOL);
+    zr_scene_free(s);
+  }
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test(test_shade_ambient_diffuse_brilliance),
+      cmocka_unit_test(test_shade_light_behind_surface_gives_no_direct_light),
+      cmocka_unit_test(test_shade_phong_specular_metallic),
+      cmocka_unit_test(test_shade_metallic_curve_matches_povray),
+      cmocka_unit_test(test_shade_reflection_of_background),
+      cmocka_unit_test(test_shade_shadows_through_filter_and_transmit),
+      cmocka_unit_test(test_shade_refraction_and_fresnel_formulas),
+      cmocka_unit_test(test_shade_max_trace_level_and_adc_bailout),
+      cmocka_unit_test(test_shade_transparency_matches_povray),
+      cmocka_unit_test(test_shade_conserve_energy_matches_povray),
+      cmocka_unit_test(test_shade_total_internal_reflection_matches_povray),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}
