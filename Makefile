@@ -23,7 +23,7 @@ endif
 export OMPI_ALLOW_RUN_AS_ROOT = 1
 export OMPI_ALLOW_RUN_AS_ROOT_CONFIRM = 1
 export OMPI_MCA_rmaps_base_oversubscribe = 1
-MPIRUN ?= mpirun --oversubscribe
+MPIRUN ?= mpirun --oversubscribe --bind-to none
 
 DEB_PACKAGES = build-essential autoconf automake libtool pkg-config flex \
 	bison libpng-dev libjpeg-dev libopenmpi-dev openmpi-bin libcmocka-dev \

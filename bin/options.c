@@ -454,7 +454,6 @@ static const long_option long_options[] = {
     {"no-jitter", K_JITTER_OFF, L_NONE},
     {"threads", K_THREADS, L_REQUIRED},
     {"include-path", K_INCLUDE, L_REQUIRED},
-    {"format", K_FORMAT, L_REQUIRED},
     {"verbose", K_VERBOSE, L_NONE},
     {"quiet", K_QUIET, L_NONE},
     {"help", K_HELP, L_NONE},
@@ -790,7 +789,7 @@ const char *zr__cli_usage(void) {
       "  +R<n>, --aa-depth=N          n*n samples per antialiased pixel\n"
       "                               (1 to 9, default 3)\n"
       "  +J[a], --jitter[=A]          jitter supersamples by A (default 1)\n"
-      "  -J, --no-jitter              no jitter\n"
+      "  -J, --no-jitter              no jitter (default)\n"
       "  +L<dir>, --include-path=DIR  search DIR for #include files\n"
       "                               (repeatable, searched in order)\n"
       "  +WT<n>, --threads=N          threads per process (default: the\n"

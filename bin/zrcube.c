@@ -213,6 +213,14 @@ static int read_command_line(run *r, int argc, char **argv) {
     return EXIT_SCENE;
   }
   r->threads = zr__par_threads(r->par, r->opts.threads);
+  /* mpirun binds each rank to one core unless told otherwise, and then
+     extra threads only take turns on it. */
+  int cpus = zr__par_cpus_allowed();
+  if (r->rank == 0 && !r->opts.quiet && r->threads > cpus)
+    fprintf(stderr, "zrcube: warning: %d threads per rank, but this rank "
+                    "may only run on %d processor%s (for mpirun, try "
+                    "--bind-to none)\n", r->threads, cpus,
+            cpus == 1 ? "" : "s");
   return -1;
 }
 

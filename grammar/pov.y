@@ -7,11 +7,13 @@
  * exactly the tokens that could come next.  Tokens do not come from flex
  * directly but from the directive engine (lib/sdl/directive.c), which
  * runs #include, #version and #zfor and turns identifiers into typed
- * tokens (float identifier, pigment identifier, ...), as POV-Ray's own
- * parser does.  A leading pseudo-token picks the start symbol: a whole
- * scene, or the expression of a directive, parsed by a nested parser.
- * Each directive's rule ends in a token of its own (')' or ';') so the
- * nested parser accepts without reading a token past it.
+ * tokens (float identifier, pigment identifier, ...), the distinction the
+ * manual's syntax makes (FLOAT_IDENTIFIER, PIGMENT_IDENTIFIER).  A
+ * leading pseudo-token picks the start symbol: a whole scene, or the
+ * expression of a directive, parsed by a nested parser.
+ * Each directive's rule ends in a token of its own (')' or ';', which
+ * the engine supplies after a #version that lacks it) so the nested
+ * parser accepts without reading a token past the directive.
  *
  * Syntax and defaults follow the reference manual (r3_4): "Camera",
  * "Light Sources", "Finite/Infinite Solid Primitives", "CSG", "Texture",
@@ -33,6 +35,7 @@ int zr__pov_parse(zr_sdl_parser *p);
 }
 
 %code {
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -258,7 +261,7 @@ static zr_sdl_mod make_mod(zr_sdl_mod_kind kind, const void *ptr) {
 %type <expr> expr primary colour_value colour_spec
 %type <list> list
 %type <cmod> colour_item
-%type <token> func dot_item
+%type <token> func dot_item opt_semi
 %type <value> rvalue
 %type <object> object object_body object_head union_head union_body
 %type <mod> object_mod
@@ -309,16 +312,26 @@ item:
 
 declaration:
   T_DECLARE T_DECL_NAME '=' rvalue opt_semi
-    { TRY(zr__sdl_define(p, &$2, false, &$4, &@2)); }
+    {
+      if (!$5 && $4.kind <= ZR_SDL_COLOUR)
+        zr__sdl_warning(p, &@4, "'#declare' of a float, vector or colour "
+                                "should end with ';'");
+      TRY(zr__sdl_define(p, &$2, false, &$4, &@2));
+    }
 | T_LOCAL T_DECL_NAME '=' rvalue opt_semi
-    { TRY(zr__sdl_define(p, &$2, true, &$4, &@2)); }
+    {
+      if (!$5 && $4.kind <= ZR_SDL_COLOUR)
+        zr__sdl_warning(p, &@4, "'#local' of a float, vector or colour "
+                                "should end with ';'");
+      TRY(zr__sdl_define(p, &$2, true, &$4, &@2));
+    }
 ;
 
-/* POV-Ray wants the semicolon after floats, vectors and colours and
-   accepts it after the rest; both spellings are taken. */
+/* POV-Ray wants the semicolon after floats, vectors and colours (it
+   warns without one) and accepts it after the rest. */
 opt_semi:
-  %empty
-| ';'
+  %empty               { $$ = 0; }
+| ';'                  { $$ = 1; }
 ;
 
 rvalue:
@@ -351,6 +364,14 @@ expr:
 | expr '/' expr        { TRY(zr__sdl_binop(p, '/', &$1, &$3, &@2, &$$)); }
 | '-' expr %prec NEG   { $$ = $2; zr__sdl_negate(&$$); }
 | '+' expr %prec NEG   { $$ = $2; }
+| '!' expr %prec NEG
+    {
+      /* POV-Ray calls values within 1e-10 of zero false ("Numeric
+         Expressions"). */
+      double v;
+      TRY(zr__sdl_want_float(p, &$2, &@2, &v));
+      $$ = zr__sdl_float(fabs(v) < 1e-10 ? 1 : 0);
+    }
 | primary
 ;
 
@@ -673,13 +694,11 @@ reflection:
       $$.fresnel_given = true;
     }
 | reflection T_METALLIC
-    { $$ = $1; $$.metallic = true; $$.metallic_given = true; }
+    { $$ = $1; $$.metallic = 1; $$.metallic_given = true; }
 | reflection T_METALLIC expr
     {
-      double on;
       $$ = $1;
-      TRY(zr__sdl_want_float(p, &$3, &@3, &on));
-      $$.metallic = on != 0;
+      TRY(zr__sdl_want_float(p, &$3, &@3, &$$.metallic));
       $$.metallic_given = true;
     }
 ;
@@ -721,7 +740,7 @@ interior_body:
 /* ---- camera, lights, background, global settings ---- */
 
 camera:
-  camera_body '}'
+  camera_body '}'      { zr__sdl_camera_end(p); }
 ;
 
 camera_body:
@@ -741,16 +760,16 @@ camera_body:
     {
       double degrees;
       TRY(zr__sdl_want_float(p, &$3, &@3, &degrees));
-      TRY(zr__sdl_camera_angle(p, CAMERA, degrees, &@3));
+      TRY(zr__sdl_camera_angle(p, degrees, &@3));
     }
 | camera_body T_LOOK_AT expr
     {
       zr_vec3 target;
       TRY(zr__sdl_want_vector(p, &$3, &@3, &target));
-      zr__sdl_camera_look_at(CAMERA, target);
+      zr__sdl_camera_look_at(p, target);
     }
 | camera_body transform
-    { zr__sdl_camera_transform(CAMERA, $2); }
+    { zr__sdl_camera_transform(p, $2); }
 ;
 
 light:

@@ -149,6 +149,79 @@ typedef struct zr_scene_info {
 ZR_API void zr_scene_get_info(const zr_scene *scene, zr_scene_info *info);
 
 /* ------------------------------------------------------------------ */
+/* Radiosity                                                          */
+/* ------------------------------------------------------------------ */
+
+/*
+ * A hierarchical radiosity solution of a scene (Hanrahan, Salzman and
+ * Aupperle 1991) on the exact surfaces of its primitives, computed once
+ * for every view.  It refers to the scene it was solved for, which must
+ * outlive it; it is read-only once built, so threads may share it.
+ */
+typedef struct zr_radiosity zr_radiosity;
+
+typedef struct zr_radiosity_params {
+  /* Refine a link while B_source * F * A_receiver exceeds bf_eps times
+     the scene's emitted power (largest channel): relative, so a scene
+     gives the same mesh at any scale or brightness.  Default 1e-4. */
+  double bf_eps;
+  /* Never split an element smaller than area_eps times the total area of
+     the scene's surfaces.  Default 1e-4. */
+  double area_eps;
+  int visibility_rays;  /* k: k x k rays estimate a link's visibility; 4 */
+  int max_iterations;   /* gathering sweeps or shots per solve; 1000 */
+  /* Stop when the radiosity changed in a sweep (or the unshot power)
+     is below residual times the emitted power.  Default 1e-6. */
+  double residual;
+  int refine_rounds;    /* refine-then-solve rounds; default 6 */
+  /* > 0: split every surface into 2^uniform x 2^uniform elements and
+     do no refinement (links stay at the elements); default 0. */
+  int uniform;
+  int shooting;         /* 1: progressive Southwell shooting; 0 gather */
+} zr_radiosity_params;
+
+/* Fills p with the defaults above (scene may be NULL; it has no
+   radiosity settings of its own yet). */
+ZR_API void zr_radiosity_params_init(zr_radiosity_params *p,
+                                     const zr_scene *scene);
+
+typedef struct zr_radiosity_stats {
+  size_t surfaces;    /* exact surfaces of the scene's primitives */
+  size_t nodes;       /* quadtree nodes */
+  size_t elements;    /* leaves */
+  size_t links;
+  size_t vertices;
+  int refine_rounds;  /* rounds done */
+  int iterations;     /* sweeps or shots of the last solve */
+  double residual;    /* last change (or unshot power) / emitted power */
+  uint64_t visibility_rays;
+  /* Energy (mean of the three channels, in scene units^2 * exitance):
+     power emitted by all sides, power absorbed by all sides (1 - rho
+     of the incident), so a closed scene absorbs what its inner sides
+     emit. */
+  double emitted_power;
+  double absorbed_power;
+  /* Sum of F * visibility over all links a leaf side gathers from
+     (itself and its ancestors): 1 for a side inside a closed scene.
+     Area-weighted mean, minimum and maximum over sides with links. */
+  double closure_mean, closure_min, closure_max;
+} zr_radiosity_stats;
+
+/* Builds the surfaces, links and solution; errors go through ctx. */
+ZR_API zr_status zr_radiosity_solve(zr_context *ctx, const zr_scene *scene,
+                                    const zr_radiosity_params *params,
+                                    zr_radiosity **out);
+ZR_API void zr_radiosity_free(zr_radiosity *rad);
+ZR_API void zr_radiosity_get_stats(const zr_radiosity *rad,
+                                   zr_radiosity_stats *stats);
+/* Writes the solution (header, scene fingerprint, quadtrees and values). */
+ZR_API zr_status zr_radiosity_save(zr_context *ctx, const zr_radiosity *rad,
+                                   const char *path);
+/* Reads a solution saved for this scene; another scene is an error. */
+ZR_API zr_status zr_radiosity_load(zr_context *ctx, const zr_scene *scene,
+                                   const char *path, zr_radiosity **out);
+
+/* ------------------------------------------------------------------ */
 /* Rendering                                                          */
 /* ------------------------------------------------------------------ */
 
@@ -160,6 +233,10 @@ typedef struct zr_render_params {
   int aa_depth;         /* +R3: supersampling grid is aa_depth^2 rays */
   int jitter;           /* +J: deterministic jitter of supersamples */
   double jitter_amount; /* default 1.0 */
+  /* A solution for this scene to take diffuse interreflection and
+     emission from (NULL: none, the default). */
+  const zr_radiosity *radiosity;
+  int radiosity_only; /* 1: show the radiosity solution alone */
 } zr_render_params;
 
 /* Fills p with POV-Ray's defaults. */

@@ -36,3 +36,12 @@ EXTRA_DIST += tests/golden.sh tests/ref/README.md tests/ref/make-refs.sh \
 
 # The benchmark against POV-Ray (run by `make bench` in the top Makefile).
 EXTRA_DIST += bench/run.sh bench/README.md
+
+# The radiosity benchmark's footing: imgcmp reads POV-Ray's Radiance HDR
+# output, and the Cornell box ground truth and scene are what they claim.
+TESTS += tests/test_cornell_truth.sh
+EXTRA_DIST += tests/test_cornell_truth.sh
+
+# The radiosity benchmark (bench/radiosity.sh; not run by `make check`).
+EXTRA_DIST += bench/radiosity.sh bench/radiosity/charts.gp \
+	bench/radiosity/cornell.pov bench/radiosity/check_truth.py

@@ -152,6 +152,24 @@ expect nodir "zrcube: cannot write 'no_such_dir/x.png': directory \
 'no_such_dir': No such file or directory"
 serial verbose 0 "$ZRCUBE" scene.pov +Linc $SIZE +V -F
 expect verbose "zrcube: rays: camera 3072,"
+# Statistics are summed over the ranks and printed by rank 0.
+mpi verbose_mpi 0 3 scene.pov +Linc $SIZE +V -F
+expect_once verbose_mpi "zrcube: rays: camera 3072,"
+expect verbose_mpi "3 ranks x "
+# No progress line when stderr is not a terminal.
+grep -q 'rendering' ref.err && fail "progress line printed to a file"
+
+# ---- warnings: printed once, by rank 0; --quiet drops them ---------
+
+cat >warn.pov <<'POV'
+camera { location <0, 1, -4> look_at 0 }
+light_source { <4, 6, -5>, color rgb 1 }
+sphere { <0, 1, 0>, 1 scale <1, 0, 1> pigment { color rgb 1 } }
+POV
+mpi warn 0 2 warn.pov $SIZE
+expect_once warn "warn.pov:3:29: warning:"
+serial warn_quiet 0 "$ZRCUBE" warn.pov $SIZE -q
+[ -s warn_quiet.err ] && fail "warn_quiet: --quiet still printed"
 
 # ---- help and version -----------------------------------------------
 

@@ -350,6 +350,36 @@ static void test_par_pool_reports_progress(void **state) {
   free(rgb);
 }
 
+static void test_par_pool_returns_failure(void **state) {
+  render_fixture *f = *state;
+  /* zr_render_pixels refuses an antialiasing depth of 0 on every row; the
+     pool must hand that status back whichever thread met it first. */
+  f->params.antialias = 1;
+  f->params.aa_depth = 0;
+  size_t row = (size_t)f->params.width * 3;
+  float *rgb = malloc((size_t)f->params.height * row * sizeof(float));
+  zr_pool_job job = {.scene = f->scene,
+                     .params = &f->params,
+                     .rank = 0,
+                     .nranks = 1,
+                     .rows_rgb = rgb,
+                     .threads = 4};
+  assert_int_equal(zr__pool_render(&job), ZR_EINVAL);
+  zr_par *par;
+  assert_int_equal(zr__par_init(NULL, NULL, &par), ZR_OK);
+  zr_image *image;
+  assert_int_equal(zr_image_new(f->params.width, f->params.height, &image),
+                   ZR_OK);
+  zr_par_render render = {.scene = f->scene,
+                          .params = &f->params,
+                          .threads = 2,
+                          .image = image};
+  assert_int_equal(zr__par_render(par, &render), ZR_EINVAL);
+  zr_image_free(image);
+  zr__par_finalize(par);
+  free(rgb);
+}
+
 static void test_par_world_of_one_renders_image(void **state) {
   render_fixture *f = *state;
   /* make check runs without mpirun: a world of one, MPI untouched. */
@@ -359,6 +389,7 @@ static void test_par_world_of_one_renders_image(void **state) {
   assert_int_equal(zr__par_size(par), 1);
   assert_int_equal(zr__par_uses_mpi(par), 0);
   assert_true(zr__par_default_threads(par) >= 1);
+  assert_true(zr__par_default_threads(par) <= zr__par_cpus_allowed());
   assert_int_equal(zr__par_threads(par, 3), 3);
   assert_int_equal(zr__par_threads(par, 0), zr__par_default_threads(par));
   assert_int_equal(zr__par_agree(par, ZR_ESYNTAX), ZR_ESYNTAX);
@@ -415,6 +446,8 @@ int main(void) {
           test_par_pool_matches_serial_render_antialiased, setup_render,
           teardown_render),
       cmocka_unit_test_setup_teardown(test_par_pool_reports_progress,
+                                      setup_render, teardown_render),
+      cmocka_unit_test_setup_teardown(test_par_pool_returns_failure,
                                       setup_render, teardown_render),
       cmocka_unit_test_setup_teardown(test_par_world_of_one_renders_image,
                                       setup_render, teardown_render),

@@ -29,6 +29,8 @@
 
 /* Everything the library reported during one parse. */
 typedef struct captured {
+  int warnings;
+  char warning[1024];
   int errors;
   zr_status status;
   char message[512];
@@ -37,6 +39,10 @@ typedef struct captured {
 
 static void on_diag(const zr_diag *d, void *user) {
   captured *c = user;
+  if (d->level == ZR_DIAG_WARNING) {
+    c->warnings++;
+    snprintf(c->warning, sizeof c->warning, "%s", d->text);
+  }
   if (d->level != ZR_DIAG_ERROR)
     return;
   c->errors++;
@@ -198,7 +204,8 @@ static void test_parser_expressions(void **state) {
       "sphere { <min(3, 1, 2), max(1, 5), abs(-2)>, sin(pi / 2) }\n"
       "sphere { <floor(1.5), ceil(1.5), int(-1.5)>, mod(7, 4) }\n"
       "sphere { <degrees(pi), radians(180), log(100)>, ln(exp(2)) }\n"
-      "sphere { <vlength(<3, 4, 0>), vdot(x, y), atan2(1, 1)>, 1 }\n");
+      "sphere { <vlength(<3, 4, 0>), vdot(x, y), atan2(1, 1)>, 1 }\n"
+      "sphere { <!0, !2, !!1e-11>, 1 }\n");
   zr_object **o = s->objects;
   assert_vec(o[0]->u.sphere.centre, 4, 6, 8);
   assert_num(o[0]->u.sphere.radius, 9);
@@ -213,6 +220,7 @@ static void test_parser_expressions(void **state) {
   assert_vec(o[5]->u.sphere.centre, 180, M_PI, 2);
   assert_num(o[5]->u.sphere.radius, 2);
   assert_vec(o[6]->u.sphere.centre, 5, 0, M_PI / 4);
+  assert_vec(o[7]->u.sphere.centre, 1, 0, 0);
 }
 
 static void test_parser_colours(void **state) {
@@ -259,8 +267,8 @@ static void test_parser_finish(void **state) {
       "sphere { 0, 1 finish { F diffuse 0.1 metallic 0.5\n"
       "  reflection { 0.1, <0.9, 0.8, 0.7> falloff 2 fresnel metallic }\n"
       "  conserve_energy } }\n"
-      "sphere { 0, 1 finish { reflection { rgb <0.5, 0.4, 0.3> }"
-      " ambient <0.1, 0.2, 0.3> } }\n");
+      "sphere { 0, 1 finish { reflection { rgb <0.5, 0.4, 0.3>"
+      " metallic 0.5 } ambient <0.1, 0.2, 0.3> } }\n");
   const zr_finish *a = s->objects[0]->texture->finish;
   assert_rgb(a->ambient, 0.2, 0.2, 0.2);
   assert_num(a->diffuse, 0.7);
@@ -281,7 +289,7 @@ static void test_parser_finish(void **state) {
   assert_rgb(b->reflection_max, 0.9, 0.8, 0.7);
   assert_num(b->reflection_falloff, 2);
   assert_true(b->reflection_fresnel);
-  assert_true(b->reflection_metallic);
+  assert_num(b->reflection_metallic, 1);
   assert_true(b->conserve_energy);
   /* The declared finish did not change. */
   assert_num(a->diffuse, 0.7);
@@ -290,6 +298,8 @@ static void test_parser_finish(void **state) {
   assert_rgb(c->reflection, 0.5, 0.4, 0.3);
   assert_rgb(c->reflection_max, 0.5, 0.4, 0.3);
   assert_rgb(c->ambient, 0.1, 0.2, 0.3);
+  assert_num(c->reflection_metallic, 0.5);
+  assert_num(a->reflection_metallic, 0);
   assert_num(c->diffuse, 0.6); /* POV-Ray's default */
 }
 
@@ -318,6 +328,15 @@ static void test_parser_transforms_in_order(void **state) {
   assert_non_null(pt);
   assert_vec(zr__xform_point(pt->m, zr_v3(1, 0, 0)), 3, 0, 0);
   assert_null(o[6]->transform);
+
+  /* POV-Ray: "Scale X by 0.0. Changed to 1.0." with a warning. */
+  s = good(f, "sphere { 0, 1 scale <0, 2, 0> }");
+  assert_int_equal(f->diag.warnings, 1);
+  assert_string_equal(f->diag.warning,
+                      "t.pov:1:21: warning: scale by 0 in xz changed to 1\n"
+                      "    1 | sphere { 0, 1 scale <0, 2, 0> }\n"
+                      "      |                     ^~~~~~~~~\n");
+  assert_vec(to_world(s->objects[0], zr_v3(1, 1, 1)), 1, 2, 1);
 }
 
 static void test_parser_union_pushes_modifiers(void **state) {
@@ -438,20 +457,44 @@ static void project(const zr_camera *c, zr_vec3 q, int width, int height,
 
 static void test_parser_camera_matches_povray(void **state) {
   fixture *f = *state;
-  /* Reference: POV-Ray 3.7 rendered these cameras at 160x120 with a
-     small white sphere (radius 0.1 and 0.05) on black; the centroids of
-     its 12 lit pixels were (115.5, 56.0) and (57.0, 49.5).  A blob of a
-     dozen pixels locates its centre to within half a pixel. */
-  zr_scene *s = good(f,
-      "camera { location <3, 4, -7> sky <0.3, 1, 0> look_at <0, 1, 0>\n"
-      "  angle 50 }\n");
-  double x, y;
-  project(&s->camera, zr_v3(1.5, 0.5, 1), 160, 120, &x, &y);
-  assert_true(fabs(x - 115.5) < 0.5 && fabs(y - 56.0) < 0.5);
-  s = good(f, "camera { location <0, 1, -3> right <-1, 0, 0> up y\n"
-              "  look_at <0, 1, 0> angle 60 }\n");
-  project(&s->camera, zr_v3(0.5, 1.3, 0), 160, 120, &x, &y);
-  assert_true(fabs(x - 57.0) < 0.5 && fabs(y - 49.5) < 0.5);
+  /* Reference: POV-Ray 3.7 rendered each camera at 160x120 with a white
+     sphere of radius 0.1 at <1.5, 0.5, 1> on black; (x, y) is the
+     centroid of its 10 to 32 lit pixels, which locates the centre to
+     within half a pixel.  The cases pin down POV-Ray's order: look_at,
+     sky and angle act after every other item, transforms after them. */
+  static const struct {
+    const char *camera;
+    double x, y;
+  } cases[] = {
+      {"location <3, 4, -7> sky <0.3, 1, 0> look_at <0, 1, 0> angle 50",
+       115.5, 56.0},
+      {"look_at <0, 1, 0> sky <0.3, 1, 0> location <3, 4, -7> angle 50",
+       115.5, 56.0},
+      {"location <3, 4, -7> translate <1, 0, 0> look_at <0, 1, 0> angle 50",
+       96.12, 63.88},
+      {"location <3, 4, -7> look_at <0, 1, 0> rotate <0, 10, 0> angle 50",
+       112.3, 64.5},
+      {"location <3, 4, -7> angle 50 right x look_at <0, 1, 0>", 115.0,
+       65.3},
+      {"location <3, 4, -7> angle 50 direction z look_at <0, 1, 0>", 115.12,
+       66.88},
+      {"location <3, 4, -7> rotate <0, 30, 0> look_at <2, 1, 0>\n"
+       "rotate <10, 0, 0> angle 40",
+       58.38, 51.91},
+      {"location <0, 1, -3> right <-1, 0, 0> up y look_at <0, 1, 0>\n"
+       "angle 60",
+       28.0, 73.0},
+  };
+  for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+    char text[512];
+    snprintf(text, sizeof text, "camera { %s }\n", cases[i].camera);
+    zr_scene *s = good(f, text);
+    double x, y;
+    project(&s->camera, zr_v3(1.5, 0.5, 1), 160, 120, &x, &y);
+    if (fabs(x - cases[i].x) > 0.5 || fabs(y - cases[i].y) > 0.5)
+      fail_msg("case %zu: (%g, %g) but POV-Ray (%g, %g)", i, x, y,
+               cases[i].x, cases[i].y);
+  }
 }
 
 static void test_parser_lights_background_settings(void **state) {
@@ -484,6 +527,20 @@ static void test_parser_lights_background_settings(void **state) {
   assert_num(f->scene->settings.version, 3.5);
   good(f, "sphere { 0, 1 }");
   assert_num(f->scene->settings.version, 3.7);
+  /* POV-Ray takes a #version without ';' and warns ("Possible Parse
+     Error"); the same for a float #declare. */
+  good(f, "#version max(3.1, 3.6)\n#declare A = 2 sphere { 0, A }\n");
+  assert_num(f->scene->settings.version, 3.6);
+  assert_num(f->scene->objects[0]->u.sphere.radius, 2);
+  assert_int_equal(f->diag.warnings, 2);
+  assert_string_equal(f->diag.warning,
+                      "t.pov:2:14: warning: '#declare' of a float, vector "
+                      "or colour should end with ';'\n"
+                      "    2 | #declare A = 2 sphere { 0, A }\n"
+                      "      |              ^\n");
+  good(f, "#version 3.5");
+  assert_num(f->scene->settings.version, 3.5);
+  assert_int_equal(f->diag.warnings, 1);
 }
 
 static void test_parser_zfor_replays(void **state) {

@@ -127,18 +127,23 @@ int zr__par_threads(const zr_par *par, int wanted) {
   return wanted > 0 ? wanted : zr__par_default_threads(par);
 }
 
+int zr__par_cpus_allowed(void) {
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  if (sched_getaffinity(0, sizeof set, &set) == 0 && CPU_COUNT(&set) >= 1)
+    return CPU_COUNT(&set);
+  long online = sysconf(_SC_NPROCESSORS_ONLN);
+  return online < 1 ? 1 : (int)online;
+}
+
 int zr__par_default_threads(const zr_par *par) {
   long online = sysconf(_SC_NPROCESSORS_ONLN);
   if (online < 1)
     online = 1;
   long share = online / (par->local_size > 0 ? par->local_size : 1);
-  cpu_set_t set;
-  CPU_ZERO(&set);
-  if (sched_getaffinity(0, sizeof set, &set) == 0) {
-    long allowed = CPU_COUNT(&set);
-    if (allowed >= 1 && allowed < share)
-      share = allowed;
-  }
+  int allowed = zr__par_cpus_allowed();
+  if (allowed < share)
+    share = allowed;
   return share < 1 ? 1 : (int)share;
 }
 

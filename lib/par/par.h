@@ -41,6 +41,9 @@ int zr__par_default_threads(const zr_par *par);
    zr__par_init). */
 void zr__par_mpi_version(char *buf, size_t size);
 
+/* The processors this process may run on (its CPU affinity). */
+int zr__par_cpus_allowed(void);
+
 /*
  * The threads a rank will use: wanted (or the default when wanted is 0),
  * but 1 when the MPI library does not allow threads beside it.

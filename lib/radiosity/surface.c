@@ -520,6 +520,7 @@ void zr__surface_quadrature(const zr__surface *s, double u0, double u1,
   double bu[ZR__NURBS_MAX_KNOTS + 2] = {u0, u1}, bv[ZR__NURBS_MAX_KNOTS + 2] =
                                                      {v0, v1};
   int nbu = 2, nbv = 2;
+  cells = cells < 1 ? 1 : cells;
   if (!s->planar || s->kind == ZR__SURFACE_DISC) {
     const zr__nurbs *nb = &s->nurbs;
     nbu = knot_breaks(nb->ku, nb->nu + nb->p + 1, u0, u1, bu);

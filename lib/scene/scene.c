@@ -52,6 +52,7 @@ void zr__settings_init(zr_settings *s) {
   s->assumed_gamma = 1.0;
   s->ambient_light = zr_rgb3(1, 1, 1);
   s->background = zr_colour5(0, 0, 0, 0, 0);
+  s->version = 3.7;
 }
 
 zr_scene *zr__scene_new(void) {

@@ -35,7 +35,8 @@ typedef enum zr_pigment_kind {
 typedef struct zr_pigment {
   zr_pigment_kind kind;
   zr_colour colour;
-  /* World to pattern space (NULL: identity); unused by solid colours but
+  /* Pattern to world space in m, world to pattern in inv (NULL:
+     identity), like an object's transform; unused by solid colours but
      kept current by the parser, as POV-Ray transforms textures with the
      objects they are on. */
   const zr_transform *transform;
@@ -55,7 +56,10 @@ typedef struct zr_finish {
   zr_rgb reflection_max; /* equal to reflection unless given */
   double reflection_falloff; /* default 1 */
   bool reflection_fresnel;
-  bool reflection_metallic;
+  /* reflection { metallic Amount }: 0 when absent, 1 when the keyword
+     stands alone; povray tints reflections by 1 + Amount * (1 - F) *
+     (pigment - 1), so the amount matters (0.5 gives half the tint). */
+  double reflection_metallic;
   bool conserve_energy;
 } zr_finish;
 

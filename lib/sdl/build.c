@@ -14,11 +14,13 @@
  *     children without one inherit it when the scene is flattened.
  *   - object { Name } copies the declared object, children and all, so
  *     later modifiers never change the declaration.
- *   - The camera ("Placing the Camera"): items act in the order written;
- *     angle sets the direction's length to 0.5 |right| / tan(angle / 2);
- *     look_at turns direction, right and up toward the target about the
- *     sky vector, keeping their lengths and the right vector's
- *     handedness (right <-1,0,0> stays mirrored).
+ *   - The camera ("Placing the Camera"): angle sets the direction's
+ *     length to 0.5 |right| / tan(angle / 2); look_at turns direction,
+ *     right and up toward the target about the sky vector, keeping their
+ *     lengths and the right vector's handedness (right <-1,0,0> stays
+ *     mirrored).  Both act at the end of the block, before the
+ *     transforms, whatever the order of the items: that is what POV-Ray
+ *     3.7 renders show.
  */
 #include "config.h"
 
@@ -106,7 +108,9 @@ zr_transform *zr__sdl_transform(zr_sdl_parser *p, int token,
   if (token == T_SCALE) {
     /* POV-Ray turns a zero scale into 1 with a warning ("Scale"). */
     if (v.x == 0 || v.y == 0 || v.z == 0) {
-      zr__sdl_warning(p, loc, "scaling by zero; using 1 for that axis");
+      zr__sdl_warning(p, loc, "scale by 0 in %s%s%s changed to 1",
+                      v.x == 0 ? "x" : "", v.y == 0 ? "y" : "",
+                      v.z == 0 ? "z" : "");
       v = zr_v3(v.x == 0 ? 1 : v.x, v.y == 0 ? 1 : v.y, v.z == 0 ? 1 : v.z);
     }
     zr__transform_scale(t, v);
@@ -336,9 +340,11 @@ void zr__sdl_camera_begin(zr_sdl_parser *p, const zr_sdl_loc *loc) {
   c->where.file = p->files[loc->file].scene_path;
   c->where.line = loc->line;
   c->where.column = loc->column;
+  memset(&p->camera, 0, sizeof p->camera);
+  zr__transform_identity(&p->camera.transform);
 }
 
-bool zr__sdl_camera_angle(zr_sdl_parser *p, zr_camera *c, double degrees,
+bool zr__sdl_camera_angle(zr_sdl_parser *p, double degrees,
                           const zr_sdl_loc *loc) {
   if (!(degrees > 0 && degrees < 180)) {
     zr__sdl_error(p, ZR_ESCENE, loc,
@@ -346,13 +352,22 @@ bool zr__sdl_camera_angle(zr_sdl_parser *p, zr_camera *c, double degrees,
                   "degrees, not %g", degrees);
     return false;
   }
-  double half = degrees * 3.14159265358979323846 / 360.0;
-  double length = 0.5 * zr_v3_len(c->right) / tan(half);
-  c->direction = zr_v3_scale(zr_v3_norm(c->direction), length);
+  p->camera.angle_given = true;
+  p->camera.angle = degrees;
   return true;
 }
 
-void zr__sdl_camera_look_at(zr_camera *c, zr_vec3 target) {
+void zr__sdl_camera_look_at(zr_sdl_parser *p, zr_vec3 target) {
+  p->camera.look_at_given = true;
+  p->camera.look_at = target;
+}
+
+void zr__sdl_camera_transform(zr_sdl_parser *p, const zr_transform *t) {
+  zr__transform_compose(&p->camera.transform, t);
+}
+
+/* Turns direction, right and up toward target about the sky vector. */
+static void look_at(zr_camera *c, zr_vec3 target) {
   zr_vec3 d = zr_v3_sub(target, c->location);
   if (zr_v3_len(d) == 0)
     return; /* looking at itself: nothing to turn toward */
@@ -373,7 +388,22 @@ void zr__sdl_camera_look_at(zr_camera *c, zr_vec3 target) {
   c->up = zr_v3_scale(un, ul);
 }
 
-void zr__sdl_camera_transform(zr_camera *c, const zr_transform *t) {
+/*
+ * POV-Ray 3.7 (measured with renders, see tests/test_parser.c) treats
+ * location, direction, up, right, sky, angle and look_at as settings
+ * whose last value counts wherever it is written, then aims the camera,
+ * then applies the transforms in the order written.
+ */
+void zr__sdl_camera_end(zr_sdl_parser *p) {
+  zr_camera *c = &p->scene->camera;
+  if (p->camera.angle_given) {
+    double half = p->camera.angle * 3.14159265358979323846 / 360.0;
+    double length = 0.5 * zr_v3_len(c->right) / tan(half);
+    c->direction = zr_v3_scale(zr_v3_norm(c->direction), length);
+  }
+  if (p->camera.look_at_given)
+    look_at(c, p->camera.look_at);
+  const zr_transform *t = &p->camera.transform;
   c->location = zr__xform_point(t->m, c->location);
   c->direction = zr__xform_dir(t->m, c->direction);
   c->up = zr__xform_dir(t->m, c->up);

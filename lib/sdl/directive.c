@@ -335,8 +335,47 @@ zr_status zr__sdl_parse_expr(zr_sdl_parser *p, int start_token,
 
 static bool do_version(zr_sdl_parser *p, const zr_sdl_loc *directive) {
   zr_sdl_expr e;
-  return zr__sdl_parse_expr(p, T_START_VERSION, &e) == ZR_OK &&
-         zr__sdl_want_float(p, &e, directive, &p->version);
+  p->in_version = true;
+  p->version_depth = 0;
+  p->version_operand = false;
+  zr_status s = zr__sdl_parse_expr(p, T_START_VERSION, &e);
+  p->in_version = false;
+  return s == ZR_OK && zr__sdl_want_float(p, &e, directive, &p->version);
+}
+
+/* Tokens after which an expression may be complete. */
+static bool ends_operand(int kind) {
+  switch (kind) {
+  case T_NUMBER: case T_FLOAT_ID: case T_VECTOR_ID: case T_COLOUR_ID:
+  case ')': case '>': case T_X: case T_Y: case T_Z: case T_T: case T_U:
+  case T_V: case T_PI: case T_TRUE: case T_FALSE: case T_YES: case T_NO:
+  case T_ON: case T_OFF: case T_RED: case T_GREEN: case T_BLUE:
+  case T_FILTER: case T_TRANSMIT: case T_GRAY:
+    return true;
+  default:
+    return false;
+  }
+}
+
+/*
+ * POV-Ray accepts "#version 3.7" without its ';' and warns.  The nested
+ * parser's rule ends in ';' (so it never reads past the directive); when
+ * the expression is complete and the next token cannot continue it, the
+ * engine supplies the ';'.
+ */
+static bool version_needs_semicolon(const zr_sdl_parser *p, int next) {
+  if (!p->in_version || p->version_depth > 0 || !p->version_operand)
+    return false;
+  return next != '+' && next != '-' && next != '*' && next != '/' &&
+         next != '.' && next != ';';
+}
+
+static void track_version(zr_sdl_parser *p, int kind) {
+  if (kind == '(' || kind == '<')
+    p->version_depth++;
+  else if (kind == ')' || kind == '>')
+    p->version_depth--;
+  p->version_operand = ends_operand(kind);
 }
 
 static bool set_zr(zr_sdl_parser *p, zr_sdl_symtab *scope, double value) {
@@ -467,11 +506,11 @@ static int identifier_token(zr_sdl_kind kind) {
 static int deliver(zr_sdl_parser *p, int kind, const zr_sdl_lexval *val,
                    const zr_sdl_loc *loc, const char *text,
                    zr_sdl_lexval *out_val, zr_sdl_loc *out_loc) {
-  p->last_kind = kind;
-  p->last_val = *val;
   p->last_loc = *loc;
   p->last_text = text;
   p->want_decl_name = kind == T_DECLARE || kind == T_LOCAL;
+  if (p->in_version)
+    track_version(p, kind);
   *out_val = *val;
   *out_loc = *loc;
   return kind;
@@ -493,6 +532,11 @@ int zr__sdl_next(zr_sdl_lexval *val, zr_sdl_loc *loc, zr_sdl_parser *p) {
     zr_sdl_frame *fr = top(p);
     const zr_sdl_token *t = &p->files[fr->file].tokens[fr->pos];
     zr_sdl_loc tl = token_loc(fr->file, t);
+    if (version_needs_semicolon(p, t->kind)) {
+      zr__sdl_warning(p, &p->last_loc, "'#version' should end with ';'");
+      p->in_version = false;
+      return deliver(p, ';', &v, &p->last_loc, NULL, val, loc);
+    }
     if (t->kind == 0) {
       if (p->n_frames > 1) {
         pop_frame(p);
@@ -572,7 +616,6 @@ static zr_status parse(zr_context *ctx, char *path, char *bytes, size_t size,
     free(bytes);
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "out of memory");
   }
-  p.default_finish = p.scene->default_texture->finish;
   int index;
   zr_sdl_loc err_loc;
   char err[200];

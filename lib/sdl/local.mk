@@ -21,3 +21,9 @@ tests_test_parser_SOURCES = tests/test_parser.c
 tests_test_parser_CPPFLAGS = $(TEST_CPPFLAGS)
 tests_test_parser_LDADD = $(TEST_LDADD)
 tests_test_parser_LDFLAGS = -static
+
+# These sources include the generated grammar headers: make them first
+# even when a single target is asked for (BUILT_SOURCES only covers
+# `make`, `make check` and `make install`).
+$(lib_libzrcube_la_OBJECTS) $(tests_test_lexer_OBJECTS) \
+	$(tests_test_parser_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h

@@ -116,7 +116,8 @@ typedef struct zr_sdl_mod {
 typedef struct zr_sdl_reflection {
   zr_rgb min, max;
   double falloff;
-  bool falloff_given, fresnel, fresnel_given, metallic, metallic_given;
+  double metallic; /* "metallic" alone means 1 */
+  bool falloff_given, fresnel, fresnel_given, metallic_given;
   bool max_given;
 } zr_sdl_reflection;
 
@@ -249,16 +250,24 @@ typedef struct zr_sdl_parser {
   zr_sdl_symtab globals;
   double version;
   int start_token; /* pseudo-token for the next yylex, 0 for none */
+  /* While the expression of #version is read: its bracket depth and
+     whether the last token ended an operand (see directive.c). */
+  bool in_version;
+  int version_depth;
+  bool version_operand;
   bool want_decl_name;
   /* The token last handed to bison, for messages. */
-  int last_kind;
   zr_sdl_loc last_loc;
   const char *last_text;
-  zr_sdl_lexval last_val;
   /* Where a nested expression parse leaves its result. */
   zr_sdl_expr nested_value;
-  /* The scene-level declarations need the textures' defaults. */
-  const zr_finish *default_finish;
+  /* What a camera block defers to its end (see build.c). */
+  struct {
+    bool look_at_given, angle_given;
+    zr_vec3 look_at;
+    double angle;
+    zr_transform transform;
+  } camera;
 } zr_sdl_parser;
 
 /* Reports an error at loc (NULL: no place) with the include chain;
@@ -276,7 +285,8 @@ zr_status zr__sdl_parse_expr(zr_sdl_parser *p, int start_token,
                              zr_sdl_expr *out);
 /* bison's yylex: the next token after directives ran (directive.c). */
 int zr__sdl_next(zr_sdl_lexval *val, zr_sdl_loc *loc, zr_sdl_parser *p);
-/* A short description of a token kind for messages ("'sphere'"). */
+/* A bison symbol name as messages show it: reserved words and directives
+   quoted ("'sphere'"), classes bare ("number"). */
 const char *zr__sdl_token_name(const char *name, char *buf, size_t size);
 /* Defines name in the global table (is_local false) or in frame's. */
 bool zr__sdl_define(zr_sdl_parser *p, const zr_sdl_decl_name *name,
@@ -343,9 +353,11 @@ zr_interior *zr__sdl_interior_new(zr_sdl_parser *p, const zr_interior *from);
 /* A point light with its place set; the grammar fills the rest. */
 bool zr__sdl_light(zr_sdl_parser *p, zr_light *l, const zr_sdl_loc *loc);
 void zr__sdl_camera_begin(zr_sdl_parser *p, const zr_sdl_loc *loc);
-void zr__sdl_camera_look_at(zr_camera *c, zr_vec3 target);
-bool zr__sdl_camera_angle(zr_sdl_parser *p, zr_camera *c, double degrees,
+bool zr__sdl_camera_angle(zr_sdl_parser *p, double degrees,
                           const zr_sdl_loc *loc);
-void zr__sdl_camera_transform(zr_camera *c, const zr_transform *t);
+void zr__sdl_camera_look_at(zr_sdl_parser *p, zr_vec3 target);
+void zr__sdl_camera_transform(zr_sdl_parser *p, const zr_transform *t);
+/* Applies what the block deferred: angle, look_at, then transforms. */
+void zr__sdl_camera_end(zr_sdl_parser *p);
 
 #endif /* ZR_SDL_SDL_H */

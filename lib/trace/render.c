@@ -37,6 +37,8 @@ ZR_API void zr_render_params_init(zr_render_params *p) {
   p->aa_depth = 3;
   p->jitter = 0;
   p->jitter_amount = 1.0;
+  p->radiosity = NULL;
+  p->radiosity_only = 0;
 }
 
 ZR_API void zr_render_stats_add(zr_render_stats *a,
@@ -85,10 +87,35 @@ double zr__hash_uniform(uint32_t pixel, uint32_t sample, uint32_t axis) {
   return (double)(h >> 8) * (1.0 / 16777216.0);
 }
 
-static void trace_point(const zr_tracer *tr, const zr_render_params *p,
+/* What one call renders with: the tracer and the media around the
+   camera. */
+typedef struct pixel_job {
+  zr_tracer tracer;
+  zr_media camera_media;
+} pixel_job;
+
+/*
+ * The objects the camera is inside, so that a camera under water or in
+ * glass sees out through the right index of refraction, as POV-Ray's
+ * does (a camera inside a glass sphere of ior 1.3 renders the same as in
+ * povray only with this).
+ */
+void zr__camera_media(const zr_scene *scene, zr_media *media) {
+  media->n = 0;
+  media->passes = 0;
+  for (size_t i = 0; i < scene->n_primitives; i++) {
+    const zr_object *o = scene->primitives[i];
+    if (media->n < ZR_MEDIA_MAX && zr__has_inside(o) &&
+        zr__inside(o, scene->camera.location))
+      media->objects[media->n++] = o;
+  }
+}
+
+static void trace_point(const pixel_job *job, const zr_render_params *p,
                         double x, double y, zr_rgb *out) {
+  const zr_tracer *tr = &job->tracer;
   zr_ray ray = zr__camera_ray(&tr->scene->camera, p->width, p->height, x, y);
-  *out = zr__trace_ray(tr, &ray, 1, 1.0, NULL);
+  *out = zr__trace_ray(tr, &ray, 1, 1.0, &job->camera_media);
 }
 
 static void store(float *dst, zr_rgb c) {
@@ -121,7 +148,7 @@ static bool needs_supersampling(const zr_render_params *p,
  * computes: renders of the same scene agree with it exactly, while grids
  * through the pixel's corners or without the centre differ by up to 0.16.
  */
-static zr_rgb supersample(const zr_tracer *tr, const zr_render_params *p,
+static zr_rgb supersample(const pixel_job *job, const zr_render_params *p,
                           const float *centre, uint32_t pixel, int x,
                           int y) {
   int n = p->aa_depth;
@@ -135,9 +162,10 @@ static zr_rgb supersample(const zr_tracer *tr, const zr_render_params *p,
         sy += (zr__hash_uniform(pixel, k, 1) - 0.5) * p->jitter_amount / n;
       }
       zr_rgb c;
-      trace_point(tr, p, x + sx, y + sy, &c);
+      trace_point(job, p, x + sx, y + sy, &c);
       sum = zr_rgb_add(sum, c);
     }
+  const zr_tracer *tr = &job->tracer;
   tr->stats->supersample_rays += (uint64_t)n * (uint64_t)n;
   tr->stats->supersampled_pixels++;
   return zr_rgb_scale(sum, 1.0 / (n * n + 1));
@@ -173,7 +201,10 @@ ZR_API zr_status zr_render_pixels(const zr_scene *scene,
     if (pixels[i] >= total)
       return ZR_EINVAL;
   zr_render_stats local = {0};
-  zr_tracer tracer = {scene, &local};
+  pixel_job job;
+  job.tracer.scene = scene;
+  job.tracer.stats = &local;
+  zr__camera_media(scene, &job.camera_media);
   /* POV-Ray compares colours after undoing the scene's working gamma and
      applying its antialiasing gamma, 2.5 by default (reference,
      "Anti-Aliasing Options"), so dark edges are refined as readily as
@@ -186,12 +217,12 @@ ZR_API zr_status zr_render_pixels(const zr_scene *scene,
     float *out = rgb + 3 * i;
     if (!centres) {
       zr_rgb c;
-      trace_point(&tracer, params, x + 0.5, y + 0.5, &c);
+      trace_point(&job, params, x + 0.5, y + 0.5, &c);
       local.camera_rays++;
       store(out, c);
     } else if (params->antialias &&
                needs_supersampling(params, centres, x, y, exponent)) {
-      store(out, supersample(&tracer, params, centres + 3 * (size_t)pixel,
+      store(out, supersample(&job, params, centres + 3 * (size_t)pixel,
                              pixel, x, y));
     } else {
       memcpy(out, centres + 3 * (size_t)pixel, 3 * sizeof *out);

@@ -7,6 +7,7 @@
 
 #include "scene/scene.h"
 #include "trace/intersect.h"
+#include "trace/shade.h"
 
 /*
  * The camera ray through image point (x, y), measured in pixels from the
@@ -16,6 +17,9 @@
  */
 zr_ray zr__camera_ray(const zr_camera *camera, int width, int height,
                       double x, double y);
+
+/* The objects that enclose the camera's location, outermost first. */
+void zr__camera_media(const zr_scene *scene, zr_media *media);
 
 /* POV-Ray's Antialias_Gamma default. */
 #define ZR_AA_GAMMA 2.5

@@ -17,8 +17,11 @@
  *     the amount may vary between reflection and reflection_max with the
  *     angle (falloff) or by Fresnel's law;
  *   - transmission, (f * C + t) * (the refracted ray's colour), refracted
- *     by Snell's law with the interiors' ior, or reflected when the
- *     refraction is total internal reflection.
+ *     by Snell's law with the interiors' ior (the media a ray is in are
+ *     tracked as it enters and leaves objects);
+ *   - on total internal reflection of a transparent surface, povray
+ *     replaces both of the last two by the mirrored ray's colour at full
+ *     strength, and so does this.
  * These rules were checked against renders of small scenes by povray
  * 3.7 (the tests in tests/test_shade.c state the measured values).
  *
@@ -26,7 +29,8 @@
  * so nothing lights an opaque surface through itself; shadow rays pass
  * through transparent surfaces, each crossing scaling the light by its
  * f * C + t.  Light is not attenuated with distance.  Rays are followed to
- * max_trace_level (deeper ones return black, as in POV-Ray), and a
+ * max_trace_level (deeper ones return black, as in POV-Ray; a ray that
+ * passes a surface unbent does not count), and a
  * secondary ray is spawned only if its weight, the product of the
  * reflection and transmission amounts along its path, exceeds
  * adc_bailout.
@@ -109,6 +113,7 @@ static double media_ior(const zr_media *media) {
 static void media_change(const zr_media *in, const zr_object *object,
                          bool entering, zr_media *out) {
   out->n = 0;
+  out->passes = 0;
   if (in)
     *out = *in;
   if (entering) {
@@ -235,9 +240,10 @@ static zr_rgb reflection_amount(const surface *s, double n1, double n2) {
     amount = zr_rgb3(lo.r + (hi.r - lo.r) * w, lo.g + (hi.g - lo.g) * w,
                      lo.b + (hi.b - lo.b) * w);
   }
-  if (f->reflection_metallic)
+  if (f->reflection_metallic != 0.0)
     amount = zr_rgb_mul(amount,
-                        metallic_tint(1.0, zr_colour_rgb(s->colour),
+                        metallic_tint(f->reflection_metallic,
+                                      zr_colour_rgb(s->colour),
                                       fabs(zr_v3_dot(s->d, s->n))));
   return amount;
 }
@@ -257,7 +263,7 @@ static void media_beyond(const surface *s, const zr_media *media,
   else if (media)
     *next = *media; /* a flat object has no interior to enter */
   else
-    next->n = 0;
+    next->n = next->passes = 0;
 }
 
 static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
@@ -306,9 +312,17 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
   }
   double tw = weight * rgb_max(trans);
   if (rgb_max(trans) > 0.0 && tw > gs->adc_bailout) {
+    /* A ray that goes on unbent is not a new trace level (ZR_PASS_MAX). */
+    int next_level = level;
+    if (n1 == n2) {
+      next_level = level - 1;
+      next.passes++;
+    }
     tr->stats->refracted_rays++;
-    zr_rgb t = trace_secondary(tr, below, refr_dir, level, tw, &next);
-    sum = zr_rgb_add(sum, zr_rgb_mul(trans, t));
+    if (next.passes <= ZR_PASS_MAX) {
+      zr_rgb t = trace_secondary(tr, below, refr_dir, next_level, tw, &next);
+      sum = zr_rgb_add(sum, zr_rgb_mul(trans, t));
+    }
   }
   return sum;
 }

@@ -11,11 +11,22 @@
 /* How many nested interiors a ray keeps track of for their ior. */
 #define ZR_MEDIA_MAX 16
 
+/*
+ * How many surfaces one ray path may pass straight through.  povray 3.7
+ * does not count a transmitted ray that is not bent (the same ior on
+ * both sides) as a trace level: behind two clear boxes without an ior it
+ * still sees the scene at max_trace_level 2, while with ior 1.5 it needs
+ * level 5.  This separate bound keeps such paths finite.
+ */
+#define ZR_PASS_MAX 256
+
 /* The objects a ray is inside, innermost last: the ior of the medium it
-   travels through is the innermost one's. */
+   travels through is the innermost one's.  Also the number of surfaces
+   the path went straight through. */
 typedef struct zr_media {
   const zr_object *objects[ZR_MEDIA_MAX];
   int n;
+  int passes;
 } zr_media;
 
 /* What one thread needs to trace rays in a scene. */

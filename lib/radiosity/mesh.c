@@ -1,0 +1,264 @@
+/*
+ * mesh.c - the exact surfaces of a finished scene's primitives, the input
+ * of hierarchical radiosity.
+ *
+ * Hanrahan, Salzman and Aupperle start from a handful of large input
+ * surfaces and let refinement decide where to split them; here those are
+ * the exact parametric surfaces of surface.c, one per face of every
+ * primitive that has area: a triangle, the six faces of a box, a disc or
+ * annulus, a sphere, the side of a cylinder or cone and, unless the
+ * object is open, its end caps as discs.  An infinite plane becomes the
+ * part of it inside the scene's bounds: the box around every finite
+ * object, stretched to reach every axis-aligned plane (so six planes
+ * forming a room bound themselves), then widened by a margin of 10% of
+ * its diagonal on every side so that light reaching past the objects
+ * still lands on the floor.  A tilted plane is covered by a rectangle
+ * that may stick out of those bounds (no trimming yet).
+ *
+ * The surface's light follows POV-Ray's finish (reference manual,
+ * "Finish"): emission is a radiance that POV-Ray multiplies by the
+ * pigment, so the emitted radiosity is pi * emission * pigment; diffuse
+ * is the fraction of light reflected diffusely, times the pigment, so
+ * the reflectance is rho = diffuse * pigment.  A reflectance above 1
+ * would create energy; it is clamped to 1 with a warning.  Objects with
+ * no area (a degenerate triangle, a flat box) get a warning and take no
+ * part, as POV-Ray itself renders nothing for them.
+ */
+#include "radiosity/radiosity.h"
+
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Where an object was written, for messages. */
+static zr_diag_place object_place(const zr_object *obj) {
+  zr_diag_place where;
+  memset(&where, 0, sizeof where);
+  where.file = obj->where.file;
+  where.line = obj->where.line;
+  where.column = obj->where.column;
+  return where;
+}
+
+static const char *kind_name(zr_object_kind kind) {
+  static const char *const names[] = {"sphere", "box",  "plane", "triangle",
+                                      "cylinder", "cone", "disc", "union"};
+  return (size_t)kind < sizeof names / sizeof names[0] ? names[kind]
+                                                       : "object";
+}
+
+/* The bounds that clip infinite planes; false when nothing bounds them. */
+static bool plane_bounds(const zr_scene *scene, zr_vec3 *lo, zr_vec3 *hi) {
+  bool any = false;
+  zr_vec3 l = zr_v3(INFINITY, INFINITY, INFINITY), h = zr_v3_neg(l);
+  for (size_t i = 0; i < scene->n_primitives; i++) {
+    zr_vec3 a, b;
+    if (zr__object_bounds(scene->primitives[i], &a, &b)) {
+      l = zr_v3_min(l, a);
+      h = zr_v3_max(h, b);
+      any = true;
+    }
+  }
+  if (!any)
+    return false;
+  /* Axis-aligned planes without a transform stretch the box to reach
+     them, so the walls of a room of planes meet. */
+  for (size_t i = 0; i < scene->n_primitives; i++) {
+    const zr_object *o = scene->primitives[i];
+    if (o->kind != ZR_OBJ_PLANE || o->transform != NULL)
+      continue;
+    zr_vec3 n = o->u.plane.normal;
+    for (int axis = 0; axis < 3; axis++) {
+      double c = zr_v3_get(n, axis);
+      if (fabs(c) != 1.0)
+        continue;
+      double at = o->u.plane.distance * c;
+      if (axis == 0) { l.x = fmin(l.x, at); h.x = fmax(h.x, at); }
+      if (axis == 1) { l.y = fmin(l.y, at); h.y = fmax(h.y, at); }
+      if (axis == 2) { l.z = fmin(l.z, at); h.z = fmax(h.z, at); }
+    }
+  }
+  double margin = 0.1 * zr_v3_len(zr_v3_sub(h, l));
+  zr_vec3 m = zr_v3(margin, margin, margin);
+  *lo = zr_v3_sub(l, m);
+  *hi = zr_v3_add(h, m);
+  return true;
+}
+
+/* The surfaces of one primitive into out[] (room for 6); the count, or
+   -1 when the object has no area. */
+static int primitive_surfaces(const zr_object *o, const zr_vec3 *lo,
+                              const zr_vec3 *hi, zr__surface out[6]) {
+  const zr_transform *xf = o->transform;
+  zr_status st = ZR_OK;
+  int n = 0;
+  switch (o->kind) {
+  case ZR_OBJ_TRIANGLE:
+    st = zr__surface_triangle(&out[n++], o->u.triangle.p[0],
+                              o->u.triangle.p[1], o->u.triangle.p[2], xf,
+                              NULL, NULL);
+    break;
+  case ZR_OBJ_BOX:
+    st = zr__surface_box_faces(out, o->u.box.corner1, o->u.box.corner2, xf,
+                               NULL, NULL);
+    n = 6;
+    break;
+  case ZR_OBJ_SPHERE:
+    st = zr__surface_sphere(&out[n++], o->u.sphere.centre,
+                            o->u.sphere.radius, xf, NULL, NULL);
+    break;
+  case ZR_OBJ_DISC:
+    st = zr__surface_disc(&out[n++], o->u.disc.centre, o->u.disc.normal,
+                          o->u.disc.radius, o->u.disc.hole_radius, xf, NULL,
+                          NULL);
+    break;
+  case ZR_OBJ_PLANE:
+    if (lo == NULL)
+      return -1;
+    st = zr__surface_plane_in_box(&out[n++], o->u.plane.normal,
+                                  o->u.plane.distance, *lo, *hi, xf, NULL,
+                                  NULL, NULL);
+    break;
+  case ZR_OBJ_CYLINDER: {
+    zr_vec3 b = o->u.cylinder.base, c = o->u.cylinder.cap;
+    double r = o->u.cylinder.radius;
+    st = zr__surface_cylinder(&out[n++], b, c, r, xf, NULL, NULL);
+    if (st == ZR_OK && !o->u.cylinder.open) {
+      zr_vec3 ax = zr_v3_sub(c, b);
+      st = zr__surface_disc(&out[n++], b, zr_v3_neg(ax), r, 0.0, xf, NULL,
+                            NULL);
+      if (st == ZR_OK)
+        st = zr__surface_disc(&out[n++], c, ax, r, 0.0, xf, NULL, NULL);
+    }
+    break;
+  }
+  case ZR_OBJ_CONE: {
+    zr_vec3 b = o->u.cone.base, c = o->u.cone.cap;
+    double rb = o->u.cone.base_radius, rc = o->u.cone.cap_radius;
+    st = zr__surface_cone(&out[n++], b, rb, c, rc, xf, NULL, NULL);
+    zr_vec3 ax = zr_v3_sub(c, b);
+    if (st == ZR_OK && !o->u.cone.open && rb > 0.0)
+      st = zr__surface_disc(&out[n++], b, zr_v3_neg(ax), rb, 0.0, xf, NULL,
+                            NULL);
+    if (st == ZR_OK && !o->u.cone.open && rc > 0.0)
+      st = zr__surface_disc(&out[n++], c, ax, rc, 0.0, xf, NULL, NULL);
+    break;
+  }
+  default:
+    return -1;
+  }
+  return st == ZR_OK ? n : -1;
+}
+
+/* Emission and reflectance from the object's texture. */
+static void surface_light(zr__rad_surface *s, const zr_object *o,
+                          bool *clamped) {
+  const zr_texture *tex = o->texture;
+  zr_rgb pig = zr_colour_rgb(tex->pigment->colour);
+  const zr_finish *fin = tex->finish;
+  double pc[3] = {pig.r, pig.g, pig.b};
+  double em[3] = {fin->emission.r, fin->emission.g, fin->emission.b};
+  for (int c = 0; c < 3; c++) {
+    double e = M_PI * em[c] * pc[c];
+    double r = fin->diffuse * pc[c];
+    s->emission[c] = isfinite(e) && e > 0.0 ? e : 0.0;
+    if (!(r >= 0.0))
+      r = 0.0;
+    if (r > 1.0) {
+      r = 1.0;
+      *clamped = true;
+    }
+    s->rho[c] = r;
+  }
+}
+
+static int entry_cmp(const void *a, const void *b) {
+  uintptr_t x = (uintptr_t)((const zr__rad_object_entry *)a)->object;
+  uintptr_t y = (uintptr_t)((const zr__rad_object_entry *)b)->object;
+  return x < y ? -1 : x > y;
+}
+
+/* Adds the surfaces of primitive o; ZR_ENOMEM on failure. */
+static zr_status add_primitive(zr_radiosity *rad, zr_context *ctx,
+                               const zr_object *o, const zr_vec3 *lo,
+                               const zr_vec3 *hi) {
+  zr__surface geo[6];
+  zr_diag_place where = object_place(o);
+  int n = primitive_surfaces(o, lo, hi, geo);
+  if (n < 0) {
+    zr__diag(ctx, ZR_DIAG_WARNING, ZR_OK, &where,
+             "radiosity: this %s has no area (or no bounds); it takes no "
+             "part in the radiosity solution",
+             kind_name(o->kind));
+    return ZR_OK;
+  }
+  zr__rad_object_entry *e = &rad->objects[rad->n_objects++];
+  e->object = o;
+  e->first = (uint32_t)rad->n_surfs;
+  e->count = (uint32_t)n;
+  bool clamped = false;
+  for (int i = 0; i < n; i++) {
+    zr__rad_surface *s = &rad->surfs[rad->n_surfs];
+    memset(s, 0, sizeof *s);
+    s->geom = geo[i];
+    s->object = o;
+    surface_light(s, o, &clamped);
+    s->area = zr__surface_area(&s->geom, 0, 1, 0, 1, 2, &rad->rule_src);
+    zr_status st = zr__rad_add_root(rad, (int32_t)rad->n_surfs);
+    if (st != ZR_OK)
+      return st;
+    rad->total_area += s->area;
+    double p[3];
+    for (int c = 0; c < 3; c++)
+      p[c] = 2.0 * s->area * s->emission[c];
+    rad->power_ref += zr__rad_max3(p);
+    rad->n_surfs++;
+  }
+  if (clamped)
+    zr__diag(ctx, ZR_DIAG_WARNING, ZR_OK, &where,
+             "radiosity: diffuse times pigment exceeds 1 and would create "
+             "energy; the reflectance is clamped to 1");
+  return ZR_OK;
+}
+
+zr_status zr__rad_mesh_build(zr_radiosity *rad, zr_context *ctx) {
+  const zr_scene *scene = rad->scene;
+  size_t np = scene->n_primitives;
+  rad->surfs = calloc(6 * np + 1, sizeof *rad->surfs);
+  rad->objects = calloc(np + 1, sizeof *rad->objects);
+  if (rad->surfs == NULL || rad->objects == NULL)
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL,
+                    "radiosity: out of memory for %zu surfaces", 6 * np);
+  zr_vec3 lo, hi;
+  bool bounded = plane_bounds(scene, &lo, &hi);
+  for (size_t i = 0; i < np; i++) {
+    zr_status st = add_primitive(rad, ctx, scene->primitives[i],
+                                 bounded ? &lo : NULL, bounded ? &hi : NULL);
+    if (st != ZR_OK)
+      return zr__diag(ctx, ZR_DIAG_ERROR, st, NULL,
+                      "radiosity: out of memory building surfaces");
+  }
+  if (rad->n_surfs == 0)
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ESCENE, NULL,
+                    "radiosity: the scene has no finite surface to solve "
+                    "on (an infinite plane alone has no bounds)");
+  qsort(rad->objects, rad->n_objects, sizeof *rad->objects, entry_cmp);
+  return ZR_OK;
+}
+
+const zr__rad_object_entry *zr__rad_object_find(const zr_radiosity *rad,
+                                                const zr_object *object) {
+  size_t lo = 0, hi = rad->n_objects;
+  uintptr_t key = (uintptr_t)object;
+  while (lo < hi) {
+    size_t mid = lo + (hi - lo) / 2;
+    uintptr_t at = (uintptr_t)rad->objects[mid].object;
+    if (at == key)
+      return &rad->objects[mid];
+    if (at < key)
+      lo = mid + 1;
+    else
+      hi = mid;
+  }
+  return NULL;
+}

@@ -1,0 +1,171 @@
+/*
+ * radiosity.h - the hierarchical radiosity solution of a scene (Hanrahan,
+ * Salzman and Aupperle, "A Rapid Hierarchical Radiosity Algorithm",
+ * SIGGRAPH 1991), shared by the modules of lib/radiosity:
+ *
+ *   mesh.c      the exact surfaces of the scene's primitives
+ *   quadtree.c  (u,v) quadtrees with shared corner vertices, smoothing
+ *   refine.c    links between nodes, oracle, visibility, transfer factors
+ *   solve.c     gathering with push-pull, Southwell shooting, energy
+ *   io.c        saving and loading a solution, the scene fingerprint
+ *   radiosity.c the public API and the lookup from a ray hit
+ *
+ * Every element has two sides, front (along the surface's outward normal)
+ * and back, each with its own radiosity: POV-Ray lights both sides of a
+ * surface, and a closed room is usually a box seen from inside.  Emission
+ * is two-sided too, as POV-Ray shows it from both sides.  Radiosity B is
+ * an exitance (W/m^2 in the scene's units): B = pi L for the radiance L
+ * that shading uses.
+ *
+ * Everything is in growable arrays addressed by index, so growing an
+ * array never invalidates a reference, and the solution is built by one
+ * thread in a fixed order: the same scene and parameters give the same
+ * bytes.
+ */
+#ifndef ZR_RADIOSITY_RADIOSITY_H
+#define ZR_RADIOSITY_RADIOSITY_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "core/context.h"
+#include "radiosity/quadrature.h"
+#include "radiosity/surface.h"
+#include "scene/scene.h"
+#include "zrcube.h"
+
+/* Quadtree cells live on a dyadic grid of 2^ZR__RAD_DEPTH steps per
+   parameter, deep enough for any A_eps a scene can ask for. */
+#define ZR__RAD_DEPTH 24
+#define ZR__RAD_GRID (1u << ZR__RAD_DEPTH)
+
+/* One quadtree node: a parameter rectangle of one surface. */
+typedef struct zr__rad_node {
+  int32_t child;  /* first of four consecutive children, -1 for a leaf */
+  int32_t parent; /* -1 for a root */
+  int32_t surf;   /* index of its surface */
+  int32_t depth;
+  uint32_t iu, iv;   /* lower corner on the dyadic grid */
+  uint32_t vert[4];  /* corners (u0,v0), (u1,v0), (u1,v1), (u0,v1) */
+  double area;
+  zr_vec3 centre, normal; /* S and the unit normal at the cell's centre */
+  double spread; /* largest angle (radians) between normal and others */
+  double b[2][3];  /* radiosity of each side, the subtree's area mean */
+  double bg[2][3]; /* reflected radiosity gathered at this level */
+  double hg[2][3]; /* incident radiosity (irradiance / pi), this level */
+  double un[2][3]; /* unshot radiosity (Southwell shooting) */
+  double closure[2]; /* sum of F * visibility gathered at this level */
+} zr__rad_node;
+
+/* A link: node recv (side rside) gathers from node src (side sside). */
+typedef struct zr__rad_link {
+  int32_t recv, src;
+  uint8_t rside, sside;
+  uint8_t dead;  /* replaced by finer links */
+  uint8_t final; /* transfer factor computed */
+  double ff;     /* form factor times visibility, recv <- src */
+} zr__rad_link;
+
+/* A corner vertex shared by the cells that meet at it. */
+typedef struct zr__rad_vertex {
+  int32_t surf;
+  uint32_t iu, iv;
+  double b[2][3]; /* smoothed radiosity */
+  double weight;  /* area summed while smoothing */
+} zr__rad_vertex;
+
+/* One exact surface of a primitive (a box has six). */
+typedef struct zr__rad_surface {
+  zr__surface geom;
+  const zr_object *object;
+  double emission[3]; /* emitted exitance pi * emission * pigment */
+  double rho[3];      /* reflectance diffuse * pigment */
+  int32_t root;
+  double area;
+} zr__rad_surface;
+
+/* Which surfaces belong to an object, sorted by object address. */
+typedef struct zr__rad_object_entry {
+  const zr_object *object;
+  uint32_t first, count;
+} zr__rad_object_entry;
+
+struct zr_radiosity {
+  const zr_scene *scene;
+  zr_radiosity_params params;
+  zr_radiosity_stats stats;
+  uint64_t fingerprint;
+
+  zr__rad_surface *surfs;
+  size_t n_surfs;
+  zr__rad_object_entry *objects;
+  size_t n_objects;
+
+  zr__rad_node *nodes;
+  size_t n_nodes, cap_nodes;
+  zr__rad_link *links;
+  size_t n_links, cap_links;
+  zr__rad_vertex *verts;
+  size_t n_verts, cap_verts;
+  uint32_t *vhash; /* open addressing, vertex index + 1, 0 = empty */
+  size_t hash_cap;
+
+  double total_area;   /* of every surface */
+  double power_ref;    /* emitted power (largest channel), BF_eps unit */
+  double area_eps_abs; /* params.area_eps * total_area */
+  zr__gauss_rule rule_recv, rule_src;
+};
+
+/* ---- mesh.c ---- */
+zr_status zr__rad_mesh_build(zr_radiosity *rad, zr_context *ctx);
+/* The surfaces of object (count 0 when it has none). */
+const zr__rad_object_entry *zr__rad_object_find(const zr_radiosity *rad,
+                                                const zr_object *object);
+
+/* ---- quadtree.c ---- */
+/* Adds the root node of surface s (and its vertices). */
+zr_status zr__rad_add_root(zr_radiosity *rad, int32_t s);
+/* Splits leaf n into four; false when out of memory. */
+bool zr__rad_subdivide(zr_radiosity *rad, int32_t n);
+/* The cell of node n as {u0, u1, v0, v1}. */
+void zr__rad_node_cell(const zr__rad_node *node, double cell[4]);
+/* The leaf of surface s holding (u,v). */
+int32_t zr__rad_leaf_at(const zr_radiosity *rad, int32_t s, double u,
+                        double v);
+/* Smoothed corner values from the leaves, with T-vertices made
+   continuous along the larger cells' edges. */
+void zr__rad_smooth(zr_radiosity *rad);
+/* Bilinear interpolation of side's smoothed values inside leaf n. */
+void zr__rad_interpolate(const zr_radiosity *rad, int32_t n, int side,
+                         double u, double v, double out[3]);
+void zr__rad_free_arrays(zr_radiosity *rad);
+
+/* ---- refine.c ---- */
+/* Links every pair of surfaces that see each other, then refines. */
+zr_status zr__rad_link_all(zr_radiosity *rad);
+/* Re-examines every link against BF_eps with the current radiosity;
+   *changed counts the links split. */
+zr_status zr__rad_refine_links(zr_radiosity *rad, size_t *changed);
+/* Computes the transfer factors of links not yet final. */
+void zr__rad_finish_links(zr_radiosity *rad);
+/* Drops dead links from the array. */
+void zr__rad_compact_links(zr_radiosity *rad);
+/* Splits every leaf until it is at depth n_levels (uniform mode). */
+zr_status zr__rad_uniform(zr_radiosity *rad, int n_levels);
+
+/* ---- solve.c ---- */
+/* Solves for B on the current links; fills iterations and residual. */
+zr_status zr__rad_solve(zr_radiosity *rad, zr_context *ctx);
+/* Emission, absorption and closure figures into rad->stats. */
+void zr__rad_energy(zr_radiosity *rad);
+/* The largest channel of a radiosity triple. */
+static inline double zr__rad_max3(const double c[3]) {
+  double m = c[0] > c[1] ? c[0] : c[1];
+  return m > c[2] ? m : c[2];
+}
+
+/* ---- io.c ---- */
+uint64_t zr__rad_fingerprint(const zr_scene *scene);
+
+#endif /* ZR_RADIOSITY_RADIOSITY_H */
