@@ -24,7 +24,8 @@
 #            else black.  The error a renderer without global
 #            illumination makes, for scale.
 #   zr-bf    zRcube's hierarchical radiosity at a ladder of BF_eps
-#            (--radiosity --bf-eps=X).
+#            (--radiosity --bf-eps=X; X is relative to the scene's
+#            emitted power, zr_radiosity_params.bf_eps, default 1e-4).
 #   zr-unif  zRcube with N x N elements on every input surface and no
 #            refinement (--radiosity --uniform=N).
 # The zRcube ladders run when `zrcube --help` mentions --radiosity; they
@@ -32,11 +33,15 @@
 # links, iterations, residual).
 #
 # Writes $RADBENCH_OUT (default bench/out) /radiosity.tsv with the columns
-# method, setting, seconds, rel_rmse, elements, links ("-" where a method
-# has no such figure), the renders under radiosity/, and with gnuplot the
+# method, setting, seconds, rel_rmse, elements, links, iterations,
+# residual ("-" where a method has no such figure), the renders under
+# radiosity/, and with gnuplot the
 # charts radiosity-error-time.png (log-log, every ladder) and
-# radiosity-elements.png (elements and links against BF_eps); then prints
-# the table.  --quick runs only the cheapest rungs of each ladder.
+# radiosity-elements.png (elements and links against BF_eps); it prints
+# the table as it goes, then the verdicts of bench/radiosity/summary.awk
+# (issue 4's speed and accuracy targets against POV-Ray's best rung, and
+# how many fewer elements hierarchical radiosity needs than uniform
+# subdivision).  --quick runs only the cheapest rungs of each ladder.
 #
 # Environment: POVRAY (default povray), RADBENCH_TRUTH (the ground truth
 # image), RADBENCH_SCENE, RADBENCH_OUT, RADBENCH_POV_LADDER (rungs
@@ -75,11 +80,11 @@ fi
 # to 0.005, nearest_count 20, ...) is kept.
 if [ $quick -eq 1 ]; then
   pov_ladder=${RADBENCH_POV_LADDER:-"50:2 100:3"}
-  bf_ladder=${RADBENCH_BF_EPS:-"0.1 0.03"}
+  bf_ladder=${RADBENCH_BF_EPS:-"0.01 0.001"}
   uniform_ladder=${RADBENCH_UNIFORM:-"2 4"}
 else
   pov_ladder=${RADBENCH_POV_LADDER:-"50:2 100:3 200:4 400:5 800:6 1600:8"}
-  bf_ladder=${RADBENCH_BF_EPS:-"0.1 0.03 0.01 0.003 0.001 0.0003"}
+  bf_ladder=${RADBENCH_BF_EPS:-"0.01 0.003 0.001 0.0003 0.0001 0.00003"}
   uniform_ladder=${RADBENCH_UNIFORM:-"2 4 8 16 32 64"}
 fi
 
@@ -103,7 +108,9 @@ work=$(mktemp -d "${TMPDIR:-/tmp}/zr-radbench.XXXXXX")
 trap 'rm -rf "$work"' EXIT INT TERM
 mkdir -p "$out/radiosity"
 tsv=$out/radiosity.tsv
-printf 'method\tsetting\tseconds\trel_rmse\telements\tlinks\n' >"$tsv.tmp"
+printf '%s\t' method setting seconds rel_rmse elements links iterations \
+  >"$tsv.tmp"
+printf 'residual\n' >>"$tsv.tmp"
 
 # Runs the command with the time limit when timeout(1) exists.
 limited() {
@@ -126,22 +133,28 @@ seconds() {
   fi
 }
 
-# The relative RMSE of an image against the ground truth, or "fail".
+# The relative RMSE of an image against the ground truth, or "fail"
+# after imgcmp's message.
 rel_rmse() {
   "$imgcmp" "$1" "$truth" --rmse 2>"$work/cmp.log" |
-    sed -n 's/^rmse=//p' | grep . || echo fail
+    sed -n 's/^rmse=//p' | grep . ||
+    { sed 's/^/    /' "$work/cmp.log" >&2; echo fail; }
 }
 
-# The value of key=value on stderr of the last zRcube run, or "-".
+# The value of the last key=value word in the output of the last run,
+# or "-".
 stat() {
-  v=$(sed -n "s/^$1=\\([^ ]*\\).*/\\1/p" "$work/log" | tail -n 1)
-  echo "${v:--}"
+  awk -v key="$1=" '{
+      for (i = 1; i <= NF; i++)
+        if (index($i, key) == 1) v = substr($i, length(key) + 1)
+    }
+    END { print v == "" ? "-" : v }' "$work/log"
 }
 
 # Appends a row to the table and shows it as it comes.
 row() {
-  printf '%s\t%s\t%s\t%s\t%s\t%s\n' "$@" >>"$tsv.tmp"
-  printf '%-8s %-10s %9s %9s %9s %10s\n' "$@"
+  printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$@" >>"$tsv.tmp"
+  printf '%-8s %-10s %9s %9s %9s %10s %6s %10s\n' "$@"
 }
 
 # The scene with its radiosity block replaced by the file $1 (an empty
@@ -157,7 +170,9 @@ with_block() {
       for (k = 1; k <= length(rest); k++) {
         c = substr(rest, k, 1)
         if (c == "{") depth++
-        if (c == "}" && --depth == 0) { print substr(rest, k + 1); skip = 0; break }
+        if (c == "}" && --depth == 0) {
+          print substr(rest, k + 1); skip = 0; break
+        }
       }
       next
     }
@@ -165,7 +180,9 @@ with_block() {
       for (k = 1; k <= length($0); k++) {
         c = substr($0, k, 1)
         if (c == "{") depth++
-        if (c == "}" && --depth == 0) { print substr($0, k + 1); skip = 0; break }
+        if (c == "}" && --depth == 0) {
+          print substr($0, k + 1); skip = 0; break
+        }
       }
       next
     }
@@ -186,14 +203,14 @@ pov_render() { # name, scene file
 echo "radiosity benchmark: $(basename "$scene"), ${size}x$size, +A0.05 +R3," \
   "one thread, against $(basename "$truth")"
 echo "POV-Ray: $("$povray" --version 2>&1 | grep -m1 POV-Ray)"
-printf '%-8s %-10s %9s %9s %9s %10s\n' method setting seconds rel_rmse \
-  elements links
+printf '%-8s %-10s %9s %9s %9s %10s %6s %10s\n' method setting seconds \
+  rel_rmse elements links iter residual
 
 # POV-Ray without radiosity: the scale of "no indirect light at all".
 : >"$work/empty.block"
 with_block "$work/empty.block" >"$work/none.pov"
 set -- $(pov_render none "$work/none.pov")
-row none - "$1" "$2" - -
+row none - "$1" "$2" - - - -
 
 for rung in $pov_ladder; do
   count=${rung%%:*}
@@ -209,7 +226,7 @@ EOF
   with_block "$work/block" >"$work/pov.pov"
   name=c${count}_r$depth
   set -- $(pov_render "pov_$name" "$work/pov.pov")
-  row povray "$name" "$1" "$2" - -
+  row povray "$name" "$1" "$2" - - - -
 done
 
 # zRcube, when it has radiosity.
@@ -220,10 +237,10 @@ zr_render() { # name, options...
       --radiosity --radiosity-stats "$@" +O"$out/radiosity/$name.pfm")
   if [ "$t" = fail ]; then
     sed 's/^/    /' "$work/log" | tail -n 5 >&2
-    echo "fail fail - -"
+    echo "fail fail - - - -"
   else
     echo "$t $(rel_rmse "$out/radiosity/$name.pfm") $(stat elements)" \
-      "$(stat links)"
+      "$(stat links) $(stat iterations) $(stat residual)"
   fi
 }
 if "$zrcube" --help 2>&1 | grep -q -- --radiosity; then
@@ -240,11 +257,19 @@ else
 fi
 mv "$tsv.tmp" "$tsv"
 echo "table: $tsv"
+awk -f "$here/radiosity/summary.awk" "$tsv"
 
 command -v gnuplot >/dev/null || exit 0
 # The charts.  Failed rungs ("fail") and missing figures ("-") are skipped.
+# gnuplot stops on a chart without a single point: count them first.
+if ! awk -F '\t' 'NR > 1 && $3 + 0 > 0 && $4 + 0 > 0 { n++ }
+                  END { exit !n }' "$tsv"; then
+  echo "radiosity.sh: no rung succeeded, no charts" >&2
+  exit 1
+fi
 has_zr=0
-grep -q '^zr-bf' "$tsv" && has_zr=1
+awk -F '\t' '$1 == "zr-bf" && $5 + 0 > 0 { n++ } END { exit !n }' "$tsv" &&
+  has_zr=1
 gnuplot -e "tsv='$tsv'; outdir='$out'; zr=$has_zr" \
   "$here/radiosity/charts.gp" ||
   { echo "radiosity.sh: gnuplot failed" >&2; exit 1; }

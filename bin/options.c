@@ -48,6 +48,7 @@ typedef enum opt_key {
   K_QUIET,
   K_HELP,
   K_VERSION,
+  K_PARSE_ONLY,
   K_IGNORED,      /* display options: zrcube opens no window */
   K_OUTPUT_ON,    /* optional format */
   K_OUTPUT_OFF,   /* optional format, kept for later */
@@ -341,6 +342,9 @@ static int apply(const arg_ctx *c, opt_key key, const char *value) {
   case K_VERSION:
     o->version = 1;
     return 0;
+  case K_PARSE_ONLY:
+    o->parse_only = 1;
+    return 0;
   case K_IGNORED:
     return 0;
   case K_OUTPUT_ON:
@@ -458,6 +462,7 @@ static const long_option long_options[] = {
     {"quiet", K_QUIET, L_NONE},
     {"help", K_HELP, L_NONE},
     {"version", K_VERSION, L_NONE},
+    {"parse-only", K_PARSE_ONLY, L_NONE},
 };
 
 /* Returns how many extra arguments it used (0 or 1), or -1 on failure. */
@@ -798,6 +803,8 @@ const char *zr__cli_usage(void) {
       "  +V, -v, --verbose            print render statistics\n"
       "  -V                           no statistics (default)\n"
       "  -q, --quiet                  no progress line and no warnings\n"
+      "  --parse-only                 parse the scene, print what it holds\n"
+      "                               and the parse time, render nothing\n"
       "  +D, -D, +P, -P               accepted and ignored (no display)\n"
       "  -h, --help                   show this help and exit\n"
       "  --version                    show the version and exit\n"

@@ -31,6 +31,7 @@ typedef struct zr_cli_options {
   int quiet;              /* no progress, no warnings */
   int help;
   int version;
+  int parse_only;         /* --parse-only: report what the scene holds */
 } zr_cli_options;
 
 /*

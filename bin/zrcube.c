@@ -193,7 +193,8 @@ static int read_command_line(run *r, int argc, char **argv) {
                                    err, sizeof err) < 0) {
       fprintf(stderr, "%s\n", err);
       usage = 1;
-    } else if (r->opts.write_output && check_output_dir(r->output_path)) {
+    } else if (r->opts.write_output && !r->opts.parse_only &&
+               check_output_dir(r->output_path)) {
       unusable = 1;
     }
   }
@@ -355,6 +356,24 @@ static void print_statistics(const run *r) {
           (unsigned long long)st->supersampled_pixels);
 }
 
+/* --parse-only: what the scene holds, on stdout, one "key: value" a
+   line so scripts (bench/parse.sh) can pick fields. */
+static void print_scene_info(const run *r) {
+  zr_scene_info info;
+  zr_scene_get_info(r->scene, &info);
+  printf("scene: %s\n"
+         "objects: %zu\n"
+         "primitives: %zu\n"
+         "finite primitives: %zu\n"
+         "infinite primitives: %zu\n"
+         "lights: %zu\n"
+         "camera: %s\n"
+         "parse seconds: %.3f\n",
+         r->opts.input, info.objects, info.primitives,
+         info.finite_primitives, info.infinite_primitives, info.lights,
+         info.has_camera ? "yes" : "no (the default)", r->parse_seconds);
+}
+
 int main(int argc, char **argv) {
   run r;
   memset(&r, 0, sizeof r);
@@ -367,6 +386,11 @@ int main(int argc, char **argv) {
   int status = read_command_line(&r, argc, argv);
   if (status < 0)
     status = read_scene(&r);
+  if (status < 0 && r.opts.parse_only) {
+    if (r.rank == 0)
+      print_scene_info(&r);
+    status = EXIT_SUCCESS;
+  }
   if (status < 0)
     status = render_and_write(&r);
   if (status < 0) {

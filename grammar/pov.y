@@ -40,6 +40,7 @@ int zr__pov_parse(zr_sdl_parser *p);
 #include <string.h>
 
 #include "core/strbuf.h"
+#include "sdl/function.h"
 
 /* A construct's location is its first token's, underlined to the end
    of its last token when both sit on the same line. */
@@ -56,6 +57,11 @@ int zr__pov_parse(zr_sdl_parser *p);
       (Cur).length = 0;                                                    \
     }                                                                      \
   } while (0)
+
+/* The engine nests parsers (ZR_SDL_MAX_NESTED_PARSE deep at most), each
+   a yyparse frame on the C stack: a small initial stack keeps the frame
+   small; bison moves deeper stacks to the heap. */
+#define YYINITDEPTH 24
 
 /* Helpers report their own errors; the action only stops the parse. */
 #define TRY(cond)                                                          \
@@ -145,6 +151,9 @@ static zr_sdl_mod make_mod(zr_sdl_mod_kind kind, const void *ptr) {
 %token <value> T_TEXTURE_ID "texture identifier"
 %token <value> T_INTERIOR_ID "interior identifier"
 %token <value> T_OBJECT_ID "object identifier"
+/* User-defined functions: lib/sdl/function.c compiles the body. */
+%token <value> T_FUNCTION_ID "function identifier"
+%token T_FUNCTION "function"
 
 %token T_DECLARE "#declare"
 %token T_LOCAL "#local"
@@ -152,6 +161,71 @@ static zr_sdl_mod make_mod(zr_sdl_mod_kind kind, const void *ptr) {
 %token T_VERSION "#version"
 %token T_ZFOR "#zfor"
 %token T_ZEND "#zend"
+%token T_IF "#if"
+%token T_IFDEF "#ifdef"
+%token T_IFNDEF "#ifndef"
+%token T_ELSE "#else"
+%token T_ELSEIF "#elseif"
+%token T_END "#end"
+%token T_WHILE "#while"
+%token T_FOR "#for"
+%token T_SWITCH "#switch"
+%token T_CASE "#case"
+%token T_RANGE "#range"
+%token T_BREAK "#break"
+%token T_MACRO "#macro"
+%token T_UNDEF "#undef"
+%token T_DEBUG "#debug"
+%token T_WARNING "#warning"
+%token T_ERROR "#error"
+%token T_FOPEN "#fopen"
+%token T_FCLOSE "#fclose"
+%token T_READ "#read"
+%token T_WRITE "#write"
+%token T_DEFAULT "#default"
+
+/* Directive values (lib/sdl/directive.c and builtins.c). */
+%token T_START_DECL "start of #declare"
+%token T_START_ARG "start of macro argument"
+%token T_START_STRING "start of string"
+%token T_START_RANGE "start of #range"
+%token T_START_FOR "start of #for"
+%token T_START_INDEX "start of array index"
+%token T_DECL_END "end of declaration"
+%token <value> T_STRING_ID "string identifier"
+%token <value> T_ARRAY_ID "array identifier"
+%token <value> T_SEED_ID "random stream identifier"
+%token T_CONSTANT "built-in constant"
+%token T_LE "<="
+%token T_GE ">="
+%token T_NE "!="
+%token T_ACOSH "acosh"
+%token T_ARRAY "array"
+%token T_ASC "asc"
+%token T_ASINH "asinh"
+%token T_ATANH "atanh"
+%token T_BITWISE_AND "bitwise_and"
+%token T_BITWISE_OR "bitwise_or"
+%token T_BITWISE_XOR "bitwise_xor"
+%token T_CHR "chr"
+%token T_CONCAT "concat"
+%token T_DEFINED "defined"
+%token T_DIMENSION_SIZE "dimension_size"
+%token T_DIMENSIONS "dimensions"
+%token T_FILE_EXISTS "file_exists"
+%token T_RAND "rand"
+%token T_SEED "seed"
+%token T_SELECT "select"
+%token T_STR "str"
+%token T_STRCMP "strcmp"
+%token T_STRLEN "strlen"
+%token T_STRLWR "strlwr"
+%token T_STRUPR "strupr"
+%token T_SUBSTR "substr"
+%token T_VAL "val"
+%token T_VAXIS_ROTATE "vaxis_rotate"
+%token T_VROTATE "vrotate"
+%token T_VSTR "vstr"
 
 %token T_ABS "abs"
 %token T_ACOS "acos"
@@ -261,8 +335,15 @@ static zr_sdl_mod make_mod(zr_sdl_mod_kind kind, const void *ptr) {
 %type <expr> expr primary colour_value colour_spec
 %type <list> list
 %type <cmod> colour_item
-%type <token> func dot_item opt_semi
+%type <token> func dot_item
 %type <value> rvalue
+/* Directive values and the expressions only they and parentheses hold
+   (comparisons, logic, '? :'), strings and arrays. */
+%type <expr> cexpr lor land rel
+%type <list> args dims
+%type <str> str_expr str_list
+%type <decl> decl_target
+%type <token> decl_end arg_end str_func init_begin
 %type <object> object object_body object_head union_head union_body
 %type <mod> object_mod
 %type <transform> transform
@@ -284,8 +365,44 @@ static zr_sdl_mod make_mod(zr_sdl_mod_kind kind, const void *ptr) {
 
 start:
   T_START_SCENE items
-| T_START_PAREN '(' expr ')'  { p->nested_value = $3; YYACCEPT; }
+| T_START_PAREN '(' cexpr ')'  { p->nested_value = $3; YYACCEPT; }
 | T_START_VERSION expr ';'   { p->nested_value = $2; YYACCEPT; }
+| T_START_DECL decl_target '=' rvalue decl_end
+    {
+      if (!$5 && $4.kind <= ZR_SDL_COLOUR)
+        zr__sdl_warning(p, &@4, "'%s' of a float, vector or colour "
+                                "should end with ';'",
+                        $2.local ? "#local" : "#declare");
+      TRY(zr__sdl_define(p, &$2, $2.local, &$4, &@2));
+      YYACCEPT;
+    }
+| T_START_ARG rvalue arg_end
+    { p->nested_rvalue = $2; p->nested_end = $3; YYACCEPT; }
+| T_START_STRING str_expr
+    { p->nested_rvalue = pointer_value(ZR_SDL_STRING, $2); YYACCEPT; }
+| T_START_RANGE '(' cexpr ',' cexpr ')'
+    {
+      p->nested_list.n = 0;
+      TRY(zr__sdl_list_add(p, &p->nested_list, &$3, &@3));
+      TRY(zr__sdl_list_add(p, &p->nested_list, &$5, &@5));
+      YYACCEPT;
+    }
+| T_START_FOR ',' cexpr ',' cexpr ')'
+    {
+      p->nested_list.n = 0;
+      TRY(zr__sdl_list_add(p, &p->nested_list, &$3, &@3));
+      TRY(zr__sdl_list_add(p, &p->nested_list, &$5, &@5));
+      YYACCEPT;
+    }
+| T_START_FOR ',' cexpr ',' cexpr ',' cexpr ')'
+    {
+      p->nested_list.n = 0;
+      TRY(zr__sdl_list_add(p, &p->nested_list, &$3, &@3));
+      TRY(zr__sdl_list_add(p, &p->nested_list, &$5, &@5));
+      TRY(zr__sdl_list_add(p, &p->nested_list, &$7, &@7));
+      YYACCEPT;
+    }
+| T_START_INDEX '[' cexpr ']'  { p->nested_value = $3; YYACCEPT; }
 ;
 
 items:
@@ -305,33 +422,38 @@ item:
 | light
 | background
 | global_settings
-| declaration
 ;
 
-/* ---- #declare and #local ---- */
+/* ---- #declare and #local (run by the engine through T_START_DECL) ---- */
 
-declaration:
-  T_DECLARE T_DECL_NAME '=' rvalue opt_semi
+/* An array element is assigned with "#declare A[i][j] = ...". */
+decl_target:
+  T_DECL_NAME          { $$ = $1; $$.n_index = 0; }
+| decl_target '[' cexpr ']'
     {
-      if (!$5 && $4.kind <= ZR_SDL_COLOUR)
-        zr__sdl_warning(p, &@4, "'#declare' of a float, vector or colour "
-                                "should end with ';'");
-      TRY(zr__sdl_define(p, &$2, false, &$4, &@2));
-    }
-| T_LOCAL T_DECL_NAME '=' rvalue opt_semi
-    {
-      if (!$5 && $4.kind <= ZR_SDL_COLOUR)
-        zr__sdl_warning(p, &@4, "'#local' of a float, vector or colour "
-                                "should end with ';'");
-      TRY(zr__sdl_define(p, &$2, true, &$4, &@2));
+      double index;
+      $$ = $1;
+      TRY(zr__sdl_want_float(p, &$3, &@3, &index));
+      if ($$.n_index == ZR_SDL_MAX_DIMS) {
+        zr__sdl_error(p, ZR_ESYNTAX, &@3, "an array has at most %d "
+                      "dimensions", ZR_SDL_MAX_DIMS);
+        YYABORT;
+      }
+      $$.index[$$.n_index++] = (int)index;
     }
 ;
 
 /* POV-Ray wants the semicolon after floats, vectors and colours (it
-   warns without one) and accepts it after the rest. */
-opt_semi:
-  %empty               { $$ = 0; }
-| ';'                  { $$ = 1; }
+   warns without one) and accepts it after the rest; without it the
+   engine ends the declaration with T_DECL_END. */
+decl_end:
+  ';'                  { $$ = 1; }
+| T_DECL_END           { $$ = 0; }
+;
+
+arg_end:
+  ','                  { $$ = ','; }
+| ')'                  { $$ = ')'; }
 ;
 
 rvalue:
@@ -341,11 +463,127 @@ rvalue:
 | T_TEXTURE_ID  { $$ = $1; }
 | T_INTERIOR_ID { $$ = $1; }
 | T_OBJECT_ID   { $$ = $1; }
+| T_FUNCTION_ID { $$ = $1; }
+| T_FUNCTION
+    {
+      /* The state after 'function' only reduces, so bison has read
+         nothing past it and the compiler can take the body straight
+         from the token array; the check keeps that promise honest. */
+      if (yychar != ZR__POV_EMPTY) {
+        zr__sdl_error(p, ZR_ESYNTAX, &@1, "internal error: the parser "
+                      "looked past 'function'");
+        YYABORT;
+      }
+      const zr_fn *fn = zr__sdl_function_parse(p, &@1);
+      TRY(fn);
+      $$ = pointer_value(ZR_SDL_FUNCTION, fn);
+    }
 | pigment       { $$ = pointer_value(ZR_SDL_PIGMENT, $1); }
 | finish        { $$ = pointer_value(ZR_SDL_FINISH, $1); }
 | texture       { $$ = pointer_value(ZR_SDL_TEXTURE, $1); }
 | interior      { $$ = pointer_value(ZR_SDL_INTERIOR, $1); }
 | object        { $$ = pointer_value(ZR_SDL_OBJECT, $1); }
+| str_expr      { $$ = pointer_value(ZR_SDL_STRING, $1); }
+| T_SEED_ID     { $$ = $1; }
+| T_SEED '(' cexpr ')'
+    {
+      double n;
+      const zr_sdl_rand *r;
+      TRY(zr__sdl_want_float(p, &$3, &@3, &n));
+      TRY(r = zr__sdl_seed(p, n));
+      $$ = pointer_value(ZR_SDL_SEED, r);
+    }
+| T_ARRAY_ID
+    {
+      zr_sdl_array *a;
+      TRY(a = zr__sdl_array_copy(p, $1.ptr));
+      $$ = pointer_value(ZR_SDL_ARRAY, a);
+    }
+| T_ARRAY dims
+    {
+      zr_sdl_array *a;
+      TRY(a = zr__sdl_array_new(p, &$2, &@2));
+      $$ = pointer_value(ZR_SDL_ARRAY, a);
+    }
+| T_ARRAY dims init_begin init_items '}'
+    {
+      zr_sdl_array *a;
+      TRY(a = zr__sdl_array_new(p, &$2, &@2));
+      TRY(zr__sdl_array_init(p, a, (size_t)$3, &@$));
+      $$ = pointer_value(ZR_SDL_ARRAY, a);
+    }
+;
+
+/* ---- arrays ---- */
+
+dims:
+  '[' cexpr ']'        { $$.n = 0; TRY(zr__sdl_list_add(p, &$$, &$2, &@2)); }
+| dims '[' cexpr ']'   { $$ = $1; TRY(zr__sdl_list_add(p, &$$, &$3, &@3)); }
+;
+
+/* The elements of every level go to p->init in row-major order; the
+   value is where this initialiser's elements start. */
+init_begin:
+  '{'                  { $$ = (int)p->n_init; }
+;
+
+init_items:
+  init_item
+| init_items ',' init_item
+;
+
+init_item:
+  rvalue               { TRY(zr__sdl_init_add(p, &$1, &@1)); }
+| '{' init_items '}'
+;
+
+/* ---- strings ---- */
+
+str_expr:
+  T_STRING
+| T_STRING_ID          { $$ = $1.ptr; }
+| T_CONCAT '(' str_list ')' { $$ = $3; }
+| T_STR '(' cexpr ',' cexpr ',' cexpr ')'
+    {
+      double v, w, prec;
+      TRY(zr__sdl_want_float(p, &$3, &@3, &v));
+      TRY(zr__sdl_want_float(p, &$5, &@5, &w));
+      TRY(zr__sdl_want_float(p, &$7, &@7, &prec));
+      TRY($$ = zr__sdl_str(p, v, w, prec, &@$));
+    }
+| T_VSTR '(' cexpr ',' cexpr ',' str_expr ',' cexpr ',' cexpr ')'
+    {
+      double n, w, prec;
+      TRY(zr__sdl_want_float(p, &$3, &@3, &n));
+      TRY(zr__sdl_want_float(p, &$9, &@9, &w));
+      TRY(zr__sdl_want_float(p, &$11, &@11, &prec));
+      TRY($$ = zr__sdl_vstr(p, n, &$5, $7, w, prec, &@$));
+    }
+| T_CHR '(' cexpr ')'
+    {
+      double code;
+      TRY(zr__sdl_want_float(p, &$3, &@3, &code));
+      TRY($$ = zr__sdl_chr(p, code, &@3));
+    }
+| T_SUBSTR '(' str_expr ',' cexpr ',' cexpr ')'
+    {
+      double start, len;
+      TRY(zr__sdl_want_float(p, &$5, &@5, &start));
+      TRY(zr__sdl_want_float(p, &$7, &@7, &len));
+      TRY($$ = zr__sdl_substr(p, $3, start, len, &@$));
+    }
+| T_STRUPR '(' str_expr ')' { TRY($$ = zr__sdl_strcase(p, $3, true)); }
+| T_STRLWR '(' str_expr ')' { TRY($$ = zr__sdl_strcase(p, $3, false)); }
+;
+
+str_list:
+  str_expr
+| str_list ',' str_expr { TRY($$ = zr__sdl_concat(p, $1, $3)); }
+;
+
+str_func:
+  T_ASC { $$ = T_ASC; }     | T_STRLEN { $$ = T_STRLEN; }
+| T_VAL { $$ = T_VAL; }     | T_FILE_EXISTS { $$ = T_FILE_EXISTS; }
 ;
 
 /* POV-Ray lets the comma between the items of an object or light be
@@ -356,6 +594,45 @@ comma:
 ;
 
 /* ---- expressions ---- */
+
+/* Conditions: '?:' below '|' below '&' below the comparisons, as in the
+   reference manual's "Float Operators".  They are written inside
+   parentheses, function arguments and directive values, where a '<'
+   after an operand cannot start a vector. */
+cexpr:
+  lor
+| lor '?' cexpr ':' cexpr
+    {
+      bool c;
+      TRY(zr__sdl_truth(p, &$1, &@1, &c));
+      $$ = c ? $3 : $5;
+    }
+;
+
+lor:
+  land
+| lor '|' land         { TRY(zr__sdl_compare(p, '|', &$1, &$3, &@2, &$$)); }
+;
+
+land:
+  rel
+| land '&' rel         { TRY(zr__sdl_compare(p, '&', &$1, &$3, &@2, &$$)); }
+;
+
+rel:
+  expr
+| expr '<' expr        { TRY(zr__sdl_compare(p, '<', &$1, &$3, &@2, &$$)); }
+| expr '>' expr        { TRY(zr__sdl_compare(p, '>', &$1, &$3, &@2, &$$)); }
+| expr '=' expr        { TRY(zr__sdl_compare(p, '=', &$1, &$3, &@2, &$$)); }
+| expr T_LE expr       { TRY(zr__sdl_compare(p, T_LE, &$1, &$3, &@2, &$$)); }
+| expr T_GE expr       { TRY(zr__sdl_compare(p, T_GE, &$1, &$3, &@2, &$$)); }
+| expr T_NE expr       { TRY(zr__sdl_compare(p, T_NE, &$1, &$3, &@2, &$$)); }
+;
+
+args:
+  cexpr                { $$.n = 0; TRY(zr__sdl_list_add(p, &$$, &$1, &@1)); }
+| args ',' cexpr       { $$ = $1; TRY(zr__sdl_list_add(p, &$$, &$3, &@3)); }
+;
 
 expr:
   expr '+' expr        { TRY(zr__sdl_binop(p, '+', &$1, &$3, &@2, &$$)); }
@@ -380,7 +657,7 @@ primary:
 | T_FLOAT_ID           { $$ = $1.num; }
 | T_VECTOR_ID          { $$ = $1.num; }
 | T_COLOUR_ID          { $$ = $1.num; }
-| '(' expr ')'         { $$ = $2; }
+| '(' cexpr ')'        { $$ = $2; }
 | '<' list '>'         { TRY(zr__sdl_from_list(p, &$2, &@$, &$$)); }
 | T_X                  { $$ = zr__sdl_vec(1, 0, 0); }
 | T_Y                  { $$ = zr__sdl_vec(0, 1, 0); }
@@ -400,7 +677,29 @@ primary:
 | T_FALSE              { $$ = zr__sdl_float(0); }
 | T_NO                 { $$ = zr__sdl_float(0); }
 | T_OFF                { $$ = zr__sdl_float(0); }
-| func '(' list ')'    { TRY(zr__sdl_call(p, $1, &$3, &@$, &$$)); }
+| func '(' args ')'    { TRY(zr__sdl_call(p, $1, &$3, &@$, &$$)); }
+| str_func '(' str_expr ')'
+    { TRY(zr__sdl_string_float(p, $1, $3, &@$, &$$)); }
+| T_STRCMP '(' str_expr ',' str_expr ')'
+    {
+      int c = strcmp($3, $5);
+      $$ = zr__sdl_float(c < 0 ? -1 : c > 0);
+    }
+| T_DIMENSIONS '(' T_ARRAY_ID ')'
+    { $$ = zr__sdl_float(((const zr_sdl_array *)$3.ptr)->n_dims); }
+| T_DIMENSION_SIZE '(' T_ARRAY_ID ',' cexpr ')'
+    {
+      double d;
+      TRY(zr__sdl_want_float(p, &$5, &@5, &d));
+      TRY(zr__sdl_dimension_size(p, $3.ptr, d, &@5, &$$));
+    }
+| T_RAND '(' T_SEED_ID ')' { $$ = zr__sdl_float(zr__sdl_rand($3.ptr)); }
+| T_VAXIS_ROTATE '(' expr ',' expr ',' expr ')'
+    { TRY(zr__sdl_vaxis_rotate(p, &$3, &$5, &$7, &@$, &$$)); }
+| T_VROTATE '(' expr ',' expr ')'
+    { TRY(zr__sdl_vrotate(p, &$3, &$5, &@$, &$$)); }
+| T_FUNCTION_ID '(' list ')'
+    { TRY(zr__sdl_function_call(p, $1.ptr, &$3, &@1, &@$, &$$)); }
 | T_VLENGTH '(' expr ')'
     { TRY(zr__sdl_vcall(p, T_VLENGTH, &$3, NULL, &@$, &$$)); }
 | T_VNORMALIZE '(' expr ')'
@@ -431,6 +730,11 @@ func:
 | T_INT { $$ = T_INT; }     | T_MOD { $$ = T_MOD; }
 | T_DIV { $$ = T_DIV; }     | T_DEGREES { $$ = T_DEGREES; }
 | T_RADIANS { $$ = T_RADIANS; }
+| T_ACOSH { $$ = T_ACOSH; } | T_ASINH { $$ = T_ASINH; }
+| T_ATANH { $$ = T_ATANH; } | T_SELECT { $$ = T_SELECT; }
+| T_BITWISE_AND { $$ = T_BITWISE_AND; }
+| T_BITWISE_OR { $$ = T_BITWISE_OR; }
+| T_BITWISE_XOR { $$ = T_BITWISE_XOR; }
 ;
 
 dot_item:
@@ -459,7 +763,7 @@ colour_value:
 ;
 
 colour_spec:
-  expr
+  cexpr
 | colour_item
     {
       $$ = zr__sdl_colour_expr(zr_colour5(0, 0, 0, 0, 0));
@@ -889,6 +1193,10 @@ int zr__pov_lex(ZR__POV_STYPE *lval, zr_sdl_loc *lloc, zr_sdl_parser *p) {
   case T_TEXTURE_ID:
   case T_INTERIOR_ID:
   case T_OBJECT_ID:
+  case T_FUNCTION_ID:
+  case T_STRING_ID:
+  case T_ARRAY_ID:
+  case T_SEED_ID:
     lval->value = v.value;
     break;
   default:

@@ -161,9 +161,10 @@ ZR_API void zr_scene_get_info(const zr_scene *scene, zr_scene_info *info);
 typedef struct zr_radiosity zr_radiosity;
 
 typedef struct zr_radiosity_params {
-  /* Refine a link while B_source * F * A_receiver exceeds bf_eps times
-     the scene's emitted power (largest channel): relative, so a scene
-     gives the same mesh at any scale or brightness.  Default 1e-4. */
+  /* Refine a link while the light it may misplace (see criterion)
+     exceeds bf_eps times the scene's emitted power (largest channel):
+     relative, so a scene gives the same mesh at any scale or
+     brightness.  Default 1e-4. */
   double bf_eps;
   /* Never split an element smaller than area_eps times the total area of
      the scene's surfaces.  Default 1e-4. */
@@ -178,6 +179,11 @@ typedef struct zr_radiosity_params {
      do no refinement (links stay at the elements); default 0. */
   int uniform;
   int shooting;         /* 1: progressive Southwell shooting; 0 gather */
+  /* 0 (default): refine where a link may misplace more than bf_eps of
+     the power: its factor varying over the receiver, partial visibility
+     or an uneven source (B_q dF A_p).  1: Hanrahan's BF criterion,
+     B_q F A_p with the oracle factor. */
+  int criterion;
 } zr_radiosity_params;
 
 /* Fills p with the defaults above (scene may be NULL; it has no

@@ -362,8 +362,9 @@ static int read_scanline(reader *r, unsigned char *rgbe, int width) {
     const unsigned char *px = r->p;
     r->p += 4;
     if (px[0] == 1 && px[1] == 1 && px[2] == 1) {
-      long run = (long)px[3] << shift;
-      if (x == 0 || run > width - x)
+      /* Widths fit in 15 bits: a third repeat code in a row is bad. */
+      long run = shift <= 16 ? (long)px[3] << shift : -1;
+      if (x == 0 || run < 0 || run > width - x)
         return -1;
       for (; run > 0; run--, x++)
         memcpy(rgbe + 4 * x, rgbe + 4 * (x - 1), 4);

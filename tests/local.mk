@@ -44,4 +44,5 @@ EXTRA_DIST += tests/test_cornell_truth.sh
 
 # The radiosity benchmark (bench/radiosity.sh; not run by `make check`).
 EXTRA_DIST += bench/radiosity.sh bench/radiosity/charts.gp \
-	bench/radiosity/cornell.pov bench/radiosity/check_truth.py
+	bench/radiosity/cornell.pov bench/radiosity/check_truth.py \
+	bench/radiosity/summary.awk bench/radiosity/error-time.png

@@ -116,6 +116,13 @@ expect xyz 2 '' 'imgcmp: xyz.hdr: only FORMAT=32-bit_rle_rgbe is supported' \
 printf "$header"'-Y 1 +X 8\n\2\2\0\10\211\0' >long.hdr
 expect long 2 '' 'imgcmp: long.hdr: malformed or truncated pixel data' \
   "$imgcmp" --info long.hdr
+# Old repeat codes of length 0, one after another: their shift grows by
+# 8 bits each time, which must stop before it overflows.
+repeat0='\1\1\1\0\1\1\1\0\1\1\1\0\1\1\1\0'
+printf "$header"'-Y 1 +X 4\n\200\100\040\201'"$repeat0$repeat0$repeat0" \
+  >zeros.hdr
+expect zeros 2 '' 'imgcmp: zeros.hdr: malformed or truncated pixel data' \
+  "$imgcmp" --info zeros.hdr
 expect usage 2 '' "$("$imgcmp" --help 2>&1)" "$imgcmp" --info a b
 
 # The ground truth and the scene, when the reference directory exists.

@@ -10,6 +10,7 @@
 #include <cmocka.h>
 
 #include <math.h>
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -175,6 +176,75 @@ static void test_render_split_invariance_with_jitter(void **state) {
   zr_scene_free(s);
 }
 
+typedef struct thread_part {
+  const zr_scene *scene;
+  const zr_render_params *params;
+  const uint32_t *pixels;
+  size_t count;
+  const float *centres;
+  float *rgb;
+  zr_status status;
+} thread_part;
+
+static void *render_part(void *arg) {
+  thread_part *t = arg;
+  t->status = zr_render_pixels(t->scene, t->params, t->pixels, t->count,
+                               t->centres, t->rgb, NULL);
+  return NULL;
+}
+
+/* Four threads rendering interleaved pixels of one scene at once give
+   the same floats as one thread: tracing shares no mutable state. */
+static void test_render_threads_share_the_scene(void **state) {
+  (void)state;
+  zr_scene *s = edge_scene();
+  zr_render_params p;
+  zr_render_params_init(&p);
+  p.width = 40;
+  p.height = 30;
+  p.antialias = 1;
+  p.jitter = 1;
+  size_t n = (size_t)p.width * p.height;
+  float *whole = malloc(n * 3 * sizeof *whole);
+  float *centres = malloc(n * 3 * sizeof *centres);
+  float *parts = malloc(n * 3 * sizeof *parts);
+  uint32_t *order = malloc(n * sizeof *order);
+  assert_int_equal(zr_render_image(s, &p, whole, NULL), ZR_OK);
+  /* Pixels k, k + 4, k + 8, ... go to thread k; each thread's output is
+     contiguous, so the pixel lists are laid out thread by thread. */
+  enum { THREADS = 4 };
+  size_t per = n / THREADS;
+  for (int k = 0; k < THREADS; k++)
+    for (size_t i = 0; i < per; i++)
+      order[k * per + i] = (uint32_t)(i * THREADS + k);
+  for (int pass = 0; pass < 2; pass++) {
+    pthread_t th[THREADS];
+    thread_part part[THREADS];
+    float *out = pass ? parts : centres;
+    float *tmp = malloc(n * 3 * sizeof *tmp);
+    for (int k = 0; k < THREADS; k++) {
+      part[k] = (thread_part){s,           &p, order + k * per, per,
+                              pass ? centres : NULL, tmp + 3 * k * per,
+                              ZR_OK};
+      assert_int_equal(pthread_create(&th[k], NULL, render_part, &part[k]),
+                       0);
+    }
+    for (int k = 0; k < THREADS; k++) {
+      pthread_join(th[k], NULL);
+      assert_int_equal(part[k].status, ZR_OK);
+    }
+    for (size_t i = 0; i < n; i++)
+      memcpy(out + 3 * (size_t)order[i], tmp + 3 * i, 3 * sizeof *tmp);
+    free(tmp);
+  }
+  assert_memory_equal(whole, parts, n * 3 * sizeof *whole);
+  free(whole);
+  free(centres);
+  free(parts);
+  free(order);
+  zr_scene_free(s);
+}
+
 static void test_render_threshold_controls_supersampling(void **state) {
   (void)state;
   zr_scene *s = edge_scene();
@@ -244,6 +314,7 @@ int main(void) {
       cmocka_unit_test(test_render_colour_difference_is_gamma_adjusted),
       cmocka_unit_test(test_render_hash_uniform_range_and_spread),
       cmocka_unit_test(test_render_split_invariance_with_jitter),
+      cmocka_unit_test(test_render_threads_share_the_scene),
       cmocka_unit_test(test_render_threshold_controls_supersampling),
       cmocka_unit_test(test_render_rejects_bad_arguments),
   };

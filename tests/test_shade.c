@@ -422,6 +422,81 @@ static void test_shade_total_internal_reflection_matches_povray(void **st) {
   }
 }
 
+/*
+ * The camera inside a glass box (ior 1.5, filter 0.3 on <0.8, 0.3, 0.6>,
+ * ambient 0.1) sees faces that all reflect totally: each adds its own
+ * 0.1 * 0.7 * C and mirrors the rest at full strength, until
+ * max_trace_level, or until adaptive depth control stops a ray whose
+ * weight, the product of the faces' largest f * C + t (0.24), falls
+ * below adc_bailout.  povray 3.7 gives pixel (40, 30) of 80 x 60 six
+ * faces' worth at level 6 without ADC, three with adc_bailout 0.05 and
+ * four with the default 1/255.
+ */
+static void test_shade_total_internal_reflection_depth(void **state) {
+  (void)state;
+  const struct {
+    int level;
+    double adc, faces;
+  } cases[] = {{6, 0, 6}, {8, 0.05, 3}, {8, 1.0 / 255, 4}};
+  for (int c = 0; c < 3; c++) {
+    zr_scene *s = zr__scene_new();
+    s->camera.location = zr_v3(0, 0, -0.5);
+    /* look_at <1, 0.2, 0.5> as POV-Ray sets up the camera. */
+    zr_vec3 d = zr_v3_norm(zr_v3(1, 0.2, 1));
+    zr_vec3 r = zr_v3_scale(zr_v3_norm(zr_v3_cross(zr_v3(0, 1, 0), d)),
+                            1.33);
+    s->camera.direction = d;
+    s->camera.right = r;
+    s->camera.up = zr_v3_norm(zr_v3_cross(d, r));
+    zr_finish *f;
+    zr_object *b = add_box(s, zr_v3(-1, -1, -1), zr_v3(1, 1, 1),
+                           zr_colour5(0.8, 0.3, 0.6, 0.3, 0), &f);
+    f->ambient = zr_rgb3(0.1, 0.1, 0.1);
+    f->diffuse = 0;
+    set_interior(s, b, 1.5);
+    s->settings.max_trace_level = cases[c].level;
+    s->settings.adc_bailout = cases[c].adc;
+    assert_int_equal(zr__scene_finish(s, NULL), ZR_OK);
+    double k = 0.1 * 0.7 * cases[c].faces;
+    assert_rgb(pixel(s, 80, 60, 40, 30), 0.8 * k, 0.3 * k, 0.6 * k,
+               POV_TOL);
+    zr_scene_free(s);
+  }
+}
+
+/*
+ * Behind two clear boxes (four surfaces) povray 3.7 sees a green wall at
+ * max_trace_level 2 when the boxes have no ior, since an unbent ray is
+ * not a new level, but needs level 5 when their ior is 1.5.
+ */
+static void test_shade_unbent_transmission_is_not_a_trace_level(void **st) {
+  (void)st;
+  const struct {
+    double ior;
+    int level;
+    double green;
+  } cases[] = {{1.0, 2, 1.0}, {1.5, 4, 0.0}, {1.5, 5, 1.0}};
+  for (int c = 0; c < 3; c++) {
+    zr_scene *s = pov_camera_scene();
+    zr_finish *f;
+    for (int i = 0; i < 2; i++) {
+      zr_object *b = add_box(s, zr_v3(-1, -1, i), zr_v3(1, 1, i + 0.5),
+                             zr_colour5(1, 1, 1, 0, 1), &f);
+      f->ambient = zr_rgb3(0, 0, 0);
+      f->diffuse = 0;
+      set_interior(s, b, cases[c].ior);
+    }
+    add_box(s, zr_v3(-100, -100, 10), zr_v3(100, 100, 11),
+            zr_colour5(0, 1, 0, 0, 0), &f);
+    f->ambient = zr_rgb3(1, 1, 1);
+    f->diffuse = 0;
+    s->settings.max_trace_level = cases[c].level;
+    assert_int_equal(zr__scene_finish(s, NULL), ZR_OK);
+    assert_rgb(pixel(s, 21, 21, 10, 10), 0, cases[c].green, 0, POV_TOL);
+    zr_scene_free(s);
+  }
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_shade_ambient_diffuse_brilliance),
@@ -435,6 +510,8 @@ int main(void) {
       cmocka_unit_test(test_shade_transparency_matches_povray),
       cmocka_unit_test(test_shade_conserve_energy_matches_povray),
       cmocka_unit_test(test_shade_total_internal_reflection_matches_povray),
+      cmocka_unit_test(test_shade_unbent_transmission_is_not_a_trace_level),
+      cmocka_unit_test(test_shade_total_internal_reflection_depth),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -4,10 +4,23 @@ lib_libzrcube_la_SOURCES += \
 	lib/radiosity/formfactor.c lib/radiosity/formfactor.h \
 	lib/radiosity/nurbs.c lib/radiosity/nurbs.h \
 	lib/radiosity/quadrature.c lib/radiosity/quadrature.h \
-	lib/radiosity/surface.c lib/radiosity/surface.h
+	lib/radiosity/surface.c lib/radiosity/surface.h \
+	lib/radiosity/radiosity.h lib/radiosity/radiosity.c \
+	lib/radiosity/mesh.c lib/radiosity/quadtree.c \
+	lib/radiosity/refine.c lib/radiosity/solve.c lib/radiosity/io.c
 
-check_PROGRAMS += tests/test_formfactor tests/test_nurbs
-TESTS += tests/test_formfactor tests/test_nurbs
+check_PROGRAMS += tests/test_formfactor tests/test_nurbs \
+	tests/test_quadtree tests/test_radiosity
+TESTS += tests/test_formfactor tests/test_nurbs tests/test_quadtree \
+	tests/test_radiosity
+tests_test_quadtree_SOURCES = tests/test_quadtree.c
+tests_test_quadtree_CPPFLAGS = $(TEST_CPPFLAGS)
+tests_test_quadtree_LDADD = $(TEST_LDADD)
+tests_test_quadtree_LDFLAGS = -static
+tests_test_radiosity_SOURCES = tests/test_radiosity.c
+tests_test_radiosity_CPPFLAGS = $(TEST_CPPFLAGS)
+tests_test_radiosity_LDADD = $(TEST_LDADD)
+tests_test_radiosity_LDFLAGS = -static
 tests_test_formfactor_SOURCES = tests/test_formfactor.c
 tests_test_formfactor_CPPFLAGS = $(TEST_CPPFLAGS)
 tests_test_formfactor_LDADD = $(TEST_LDADD)

@@ -65,6 +65,7 @@ typedef struct zr__rad_link {
   uint8_t dead;  /* replaced by finer links */
   uint8_t final; /* transfer factor computed */
   double ff;     /* form factor times visibility, recv <- src */
+  double vis;    /* the visible fraction */
 } zr__rad_link;
 
 /* A corner vertex shared by the cells that meet at it. */
@@ -167,5 +168,25 @@ static inline double zr__rad_max3(const double c[3]) {
 
 /* ---- io.c ---- */
 uint64_t zr__rad_fingerprint(const zr_scene *scene);
+
+/* ---- radiosity.c ---- */
+/* A solution object with the scene's surfaces and root nodes, no links. */
+zr_status zr__rad_create(zr_context *ctx, const zr_scene *scene,
+                         const zr_radiosity_params *params,
+                         zr_radiosity **out);
+/* Counts nodes, leaves, live links and vertices into rad->stats. */
+void zr__rad_count(zr_radiosity *rad);
+/*
+ * The outgoing diffuse radiance of the solution where a ray with
+ * direction dir hits object at point: (E + rho H) / pi of the side the
+ * ray comes from, smoothed (bilinear over the leaf's corner vertices).
+ * It holds the surface's emission (POV-Ray's emission * pigment) and
+ * the diffuse light of every bounce from emitting surfaces, first bounce
+ * included; it holds no light from POV-Ray light sources and no
+ * ambient.  Units: the scene's radiance units, as emission.  Returns
+ * false (out black) when the object has no surface in the solution.
+ */
+bool zr__radiosity_radiance(const zr_radiosity *rad, const zr_object *object,
+                            zr_vec3 point, zr_vec3 dir, zr_rgb *out);
 
 #endif /* ZR_RADIOSITY_RADIOSITY_H */

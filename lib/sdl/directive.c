@@ -12,6 +12,9 @@
  *     context's reader, so MPI ranks can serve files from memory) and
  *     lexed once, however often it is included; nesting is limited to
  *     ZR_SDL_MAX_INCLUDE_DEPTH levels;
+ *   - runs #declare and #local through a nested parser (T_START_DECL),
+ *     and hands the block directives (#if, #while, #for, #switch,
+ *     #macro, #undef, #debug ...) to control.c;
  *   - runs #version and zRcube's #zfor (n) ... #zend, whose body is
  *     replayed from the token array n times with the float zr = 0..n-1
  *     (an inner loop's zr shadows the outer's until its #zend).  Their
@@ -19,12 +22,21 @@
  *     parser and a second start symbol;
  *   - turns an identifier into a typed token after looking it up, the
  *     newest #local scope first, then the global #declare table, or into
- *     a declaration name right after #declare/#local;
+ *     a declaration name right after #declare/#local; a macro name
+ *     becomes a macro call, an array name followed by '[' its element;
+ *   - turns the built-in constants (clock, image_width, version ...) and
+ *     defined(Name) into numbers;
  *   - stops at a reserved word outside the supported slice, naming it.
- * Messages carry the source line, a caret and the include chain.
+ * A directive's expression that has no closing token of its own (the
+ * value of #version, an object after #declare) ends where the next token
+ * cannot continue it: the engine then hands the grammar an end token,
+ * as POV-Ray's parser stops there (see autoend_due below).
+ * Messages carry the source line, a caret and the include and macro
+ * call chain.
  */
 #include "config.h"
 
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -39,8 +51,9 @@
 /* Innermost include levels a message lists before it abbreviates. */
 #define MAX_CHAIN_NOTES 6
 
-/* The include chain of a place in file: "in file included from ..." for
-   each frame below the newest frame reading that file. */
+/* The include and call chain of a place in file: "in macro X called
+   from ..." or "in file included from ..." for each frame below the
+   newest frame reading that file. */
 static void chain_notes(const zr_sdl_parser *p, int file, zr_strbuf *sb) {
   size_t k = p->n_frames;
   while (k > 0 && p->frames[k - 1].file != file)
@@ -48,12 +61,18 @@ static void chain_notes(const zr_sdl_parser *p, int file, zr_strbuf *sb) {
   size_t listed = 0;
   for (size_t i = k; i-- > 1;) {
     if (listed == MAX_CHAIN_NOTES) {
-      zr__strbuf_printf(&*sb, "(and %zu more levels of inclusion)\n", i);
+      zr__strbuf_printf(&*sb, "(and %zu more levels of inclusion or "
+                        "macro calls)\n", i);
       break;
     }
     const zr_sdl_loc *at = &p->frames[i].included_at;
-    zr__strbuf_printf(sb, "in file included from %s:%d:%d\n",
-                      p->files[at->file].path, at->line, at->column);
+    if (p->frames[i].macro)
+      zr__strbuf_printf(sb, "in macro %s called from %s:%d:%d\n",
+                        p->frames[i].macro->name, p->files[at->file].path,
+                        at->line, at->column);
+    else
+      zr__strbuf_printf(sb, "in file included from %s:%d:%d\n",
+                        p->files[at->file].path, at->line, at->column);
     listed++;
   }
 }
@@ -123,9 +142,26 @@ static zr_sdl_frame *top(zr_sdl_parser *p) {
   return &p->frames[p->n_frames - 1];
 }
 
+zr_sdl_frame *zr__sdl_top(zr_sdl_parser *p) { return top(p); }
+
 static zr_sdl_loc token_loc(int file, const zr_sdl_token *t) {
   zr_sdl_loc l = {file, t->line, t->column, t->length};
   return l;
+}
+
+zr_sdl_loc zr__sdl_token_loc(int file, const zr_sdl_token *t) {
+  return token_loc(file, t);
+}
+
+const zr_sdl_token *zr__sdl_peek(zr_sdl_parser *p, size_t k) {
+  const zr_sdl_frame *fr = top(p);
+  const zr_sdl_file *f = &p->files[fr->file];
+  size_t i = fr->pos + k;
+  return &f->tokens[i < f->n_tokens ? i : f->n_tokens - 1];
+}
+
+zr_sdl_loc zr__sdl_peek_loc(zr_sdl_parser *p, size_t k) {
+  return token_loc(top(p)->file, zr__sdl_peek(p, k));
 }
 
 /* Takes path and bytes, lexes them and appends the file; on a lexical
@@ -159,7 +195,7 @@ static zr_status add_file(zr_sdl_parser *p, char *path, char *bytes,
   return s;
 }
 
-static bool push_frame(zr_sdl_parser *p, int file, const zr_sdl_loc *at) {
+bool zr__sdl_push_frame(zr_sdl_parser *p, int file, const zr_sdl_loc *at) {
   if (p->n_frames == p->cap_frames) {
     size_t cap = p->cap_frames ? p->cap_frames * 2 : 8;
     zr_sdl_frame *frames = realloc(p->frames, cap * sizeof *frames);
@@ -178,10 +214,15 @@ static bool push_frame(zr_sdl_parser *p, int file, const zr_sdl_loc *at) {
   return true;
 }
 
-static void pop_frame(zr_sdl_parser *p) {
+void zr__sdl_pop_frame(zr_sdl_parser *p) {
   zr_sdl_frame *fr = top(p);
+  if (fr->macro)
+    p->macro_depth--;
+  else if (p->n_frames > 1)
+    p->include_depth--;
   zr__sdl_symtab_free(&fr->locals);
   free(fr->loops);
+  free(fr->ctl);
   p->n_frames--;
 }
 
@@ -191,22 +232,112 @@ static zr_sdl_symtab *scope_of(zr_sdl_parser *p, size_t frame) {
   return frame == 0 ? &p->globals : &p->frames[frame].locals;
 }
 
-static const zr_sdl_symbol *lookup(zr_sdl_parser *p, const char *name) {
+zr_sdl_symtab *zr__sdl_scope(zr_sdl_parser *p, size_t frame) {
+  return scope_of(p, frame);
+}
+
+/* Follows a parameter passed by identifier to the caller's variable
+   (which may itself be such a parameter).  NULL when it was #undef'ed. */
+static zr_sdl_symbol *resolve(zr_sdl_parser *p, zr_sdl_symbol *s,
+                              size_t *frame) {
+  while (s && s->value.kind == ZR_SDL_ALIAS) {
+    const zr_sdl_alias *a = s->value.ptr;
+    if (a->frame >= p->n_frames)
+      return NULL;
+    if (frame)
+      *frame = a->frame;
+    s = zr__sdl_symtab_find(scope_of(p, a->frame), a->name);
+  }
+  return s;
+}
+
+zr_sdl_symbol *zr__sdl_lookup(zr_sdl_parser *p, const char *name,
+                              size_t *frame) {
   for (size_t i = p->n_frames; i-- > 1;) {
     zr_sdl_symbol *s = zr__sdl_symtab_find(&p->frames[i].locals, name);
-    if (s)
-      return s;
+    if (s) {
+      if (frame)
+        *frame = i;
+      return resolve(p, s, frame);
+    }
   }
+  if (frame)
+    *frame = 0;
   return zr__sdl_symtab_find(&p->globals, name);
+}
+
+/* Assigns value to element name[index...] of an existing array. */
+static bool define_element(zr_sdl_parser *p, const zr_sdl_decl_name *name,
+                           const zr_sdl_value *value,
+                           const zr_sdl_loc *loc) {
+  zr_sdl_symbol *s = zr__sdl_lookup(p, name->name, NULL);
+  if (!s) {
+    zr__sdl_error(p, ZR_EUNDEFINED, loc, "undefined identifier '%s'",
+                  name->name);
+    return false;
+  }
+  if (s->value.kind != ZR_SDL_ARRAY) {
+    zr__sdl_error(p, ZR_ESYNTAX, loc, "'%s' is not an array", name->name);
+    return false;
+  }
+  zr_sdl_array *a = (zr_sdl_array *)s->value.ptr;
+  zr_sdl_value *e = zr__sdl_array_at(p, name->name, a, name->index,
+                                     name->n_index, loc);
+  if (!e)
+    return false;
+  *e = *value;
+  a->set[e - a->elems] = true;
+  return true;
 }
 
 bool zr__sdl_define(zr_sdl_parser *p, const zr_sdl_decl_name *name,
                     bool is_local, const zr_sdl_value *value,
                     const zr_sdl_loc *loc) {
+  if (name->n_index > 0)
+    return define_element(p, name, value, loc);
   size_t frame = (size_t)name->frame;
   if (frame >= p->n_frames)
     frame = p->n_frames - 1;
-  zr_sdl_symtab *t = is_local ? scope_of(p, frame) : &p->globals;
+  zr_sdl_symtab *t = NULL;
+  zr_sdl_symbol *s = NULL;
+  if (is_local) {
+    t = scope_of(p, frame);
+    s = zr__sdl_symtab_find(t, name->name);
+  } else {
+    /* #declare changes the innermost existing name, else makes a global
+       one (reference manual, "Identifier Name Collisions"). */
+    for (size_t i = p->n_frames; i-- > 1 && !s;) {
+      t = &p->frames[i].locals;
+      s = zr__sdl_symtab_find(t, name->name);
+    }
+    if (!s) {
+      t = &p->globals;
+      s = zr__sdl_symtab_find(t, name->name);
+    }
+  }
+  if (s && s->value.kind == ZR_SDL_ALIAS) {
+    /* A parameter passed by identifier: the caller's variable changes
+       (and is made again if the macro #undef'ed it). */
+    const zr_sdl_alias *a = NULL;
+    while (s && s->value.kind == ZR_SDL_ALIAS) {
+      a = s->value.ptr;
+      if (a->frame >= p->n_frames)
+        break;
+      t = scope_of(p, a->frame);
+      s = zr__sdl_symtab_find(t, a->name);
+    }
+    if (!s && a) {
+      if (zr__sdl_symtab_set(t, a->name, value) != ZR_OK) {
+        zr__sdl_error(p, ZR_ENOMEM, loc, "out of memory");
+        return false;
+      }
+      return true;
+    }
+  }
+  if (s) {
+    s->value = *value;
+    return true;
+  }
   if (zr__sdl_symtab_set(t, name->name, value) != ZR_OK) {
     zr__sdl_error(p, ZR_ENOMEM, loc, "out of memory");
     return false;
@@ -282,7 +413,7 @@ static int open_include(zr_sdl_parser *p, const char *name,
     s = add_file(p, path, bytes, size, &index, &err_loc, err, sizeof err);
     if (s == ZR_ESYNTAX) {
       /* Point into the new file, with the chain through this #include. */
-      if (push_frame(p, index, directive))
+      if (zr__sdl_push_frame(p, index, directive))
         zr__sdl_error(p, s, &err_loc, "%s", err);
       return -1;
     }
@@ -297,49 +428,110 @@ static int open_include(zr_sdl_parser *p, const char *name,
 }
 
 static bool do_include(zr_sdl_parser *p, const zr_sdl_loc *directive) {
-  zr_sdl_frame *fr = top(p);
-  const zr_sdl_token *t = &p->files[fr->file].tokens[fr->pos];
-  zr_sdl_loc at = token_loc(fr->file, t);
-  if (t->kind != T_STRING) {
-    zr__sdl_error(p, ZR_ESYNTAX, &at,
-                  "expected a file name in quotes after '#include'");
-    return false;
+  zr_sdl_loc at = zr__sdl_peek_loc(p, 0);
+  const char *name;
+  if (zr__sdl_peek(p, 0)->kind == T_STRING) {
+    name = zr__sdl_peek(p, 0)->v.str;
+    top(p)->pos++;
+  } else {
+    /* "#include concat(Dir, Name)": any string expression. */
+    if (zr__sdl_parse_nested(p, T_START_STRING) != ZR_OK)
+      return false;
+    name = p->nested_rvalue.ptr;
   }
-  fr->pos++;
-  if (p->n_frames > ZR_SDL_MAX_INCLUDE_DEPTH) {
+  if (p->include_depth >= ZR_SDL_MAX_INCLUDE_DEPTH) {
     zr__sdl_error(p, ZR_ELIMIT, directive,
                   "#include nested more than %d levels deep "
                   "(does a file include itself?)",
                   ZR_SDL_MAX_INCLUDE_DEPTH);
     return false;
   }
-  int file = open_include(p, t->v.str, &at, directive);
-  return file >= 0 && push_frame(p, file, directive);
+  int file = open_include(p, name, &at, directive);
+  if (file < 0 || !zr__sdl_push_frame(p, file, directive))
+    return false;
+  p->include_depth++;
+  return true;
 }
 
-/* ---- #version, #zfor, #zend ---- */
+bool zr__sdl_file_exists(zr_sdl_parser *p, const char *name) {
+  /* The places #include searches, in its order. */
+  const char *including = p->files[top(p)->file].path;
+  const char *slash = strrchr(including, '/');
+  size_t n_dirs = p->ctx ? p->ctx->n_include_paths : 0;
+  for (size_t i = 0; i < n_dirs + 2; i++) {
+    char *path;
+    if (name[0] == '/')
+      path = i == 0 ? strdup(name) : NULL;
+    else if (i == 0)
+      path = join_path(including, slash ? (size_t)(slash - including) : 0,
+                       name);
+    else if (i <= n_dirs)
+      path = join_path(p->ctx->include_paths[i - 1],
+                       strlen(p->ctx->include_paths[i - 1]), name);
+    else
+      path = join_path(ZR_POVRAY_INCLUDE_DIR,
+                       strlen(ZR_POVRAY_INCLUDE_DIR), name);
+    if (!path)
+      continue;
+    char *bytes = NULL;
+    size_t size = 0;
+    zr_status s = zr__context_read(p->ctx, path, &bytes, &size);
+    free(path);
+    free(bytes);
+    if (s == ZR_OK)
+      return true;
+  }
+  return false;
+}
 
-zr_status zr__sdl_parse_expr(zr_sdl_parser *p, int start_token,
-                             zr_sdl_expr *out) {
+/* ---- nested parses, #declare, #version, #zfor, #zend ---- */
+
+zr_status zr__sdl_parse_nested(zr_sdl_parser *p, int start_token) {
+  if (p->nested_depth >= ZR_SDL_MAX_NESTED_PARSE) {
+    zr_sdl_loc at = zr__sdl_peek_loc(p, 0);
+    return zr__sdl_error(p, ZR_ELIMIT, &at,
+                         "directives and macro calls nest more than %d "
+                         "levels deep",
+                         ZR_SDL_MAX_NESTED_PARSE);
+  }
+  /* The enclosing parse's end detection waits while this one runs. */
+  zr_sdl_autoend saved = p->autoend;
+  memset(&p->autoend, 0, sizeof p->autoend);
+  if (start_token == T_START_DECL)
+    p->autoend.token = T_DECL_END;
+  else if (start_token == T_START_VERSION)
+    p->autoend.token = ';';
   p->start_token = start_token;
+  p->nested_depth++;
   int r = zr__pov_parse(p);
+  p->nested_depth--;
   p->start_token = 0;
+  p->autoend = saved;
   if (r != 0 || p->status != ZR_OK) {
     if (p->status == ZR_OK)
       zr__sdl_error(p, ZR_ENOMEM, NULL, "out of memory");
     return p->status;
   }
-  *out = p->nested_value;
   return ZR_OK;
+}
+
+zr_status zr__sdl_parse_expr(zr_sdl_parser *p, int start_token,
+                             zr_sdl_expr *out) {
+  zr_status s = zr__sdl_parse_nested(p, start_token);
+  if (s == ZR_OK)
+    *out = p->nested_value;
+  return s;
+}
+
+static bool do_declare(zr_sdl_parser *p, int kind) {
+  p->want_decl_name = true;
+  p->decl_local = kind == T_LOCAL;
+  return zr__sdl_parse_nested(p, T_START_DECL) == ZR_OK;
 }
 
 static bool do_version(zr_sdl_parser *p, const zr_sdl_loc *directive) {
   zr_sdl_expr e;
-  p->in_version = true;
-  p->version_depth = 0;
-  p->version_operand = false;
   zr_status s = zr__sdl_parse_expr(p, T_START_VERSION, &e);
-  p->in_version = false;
   return s == ZR_OK && zr__sdl_want_float(p, &e, directive, &p->version);
 }
 
@@ -347,7 +539,11 @@ static bool do_version(zr_sdl_parser *p, const zr_sdl_loc *directive) {
 static bool ends_operand(int kind) {
   switch (kind) {
   case T_NUMBER: case T_FLOAT_ID: case T_VECTOR_ID: case T_COLOUR_ID:
-  case ')': case '>': case T_X: case T_Y: case T_Z: case T_T: case T_U:
+  case T_PIGMENT_ID: case T_FINISH_ID: case T_TEXTURE_ID:
+  case T_INTERIOR_ID: case T_OBJECT_ID: case T_STRING_ID: case T_ARRAY_ID:
+  case T_SEED_ID: case T_FUNCTION_ID: case T_STRING:
+  case ')': case '>': case ']': case '}':
+  case T_X: case T_Y: case T_Z: case T_T: case T_U:
   case T_V: case T_PI: case T_TRUE: case T_FALSE: case T_YES: case T_NO:
   case T_ON: case T_OFF: case T_RED: case T_GREEN: case T_BLUE:
   case T_FILTER: case T_TRANSMIT: case T_GRAY:
@@ -357,25 +553,75 @@ static bool ends_operand(int kind) {
   }
 }
 
-/*
- * POV-Ray accepts "#version 3.7" without its ';' and warns.  The nested
- * parser's rule ends in ';' (so it never reads past the directive); when
- * the expression is complete and the next token cannot continue it, the
- * engine supplies the ';'.
- */
-static bool version_needs_semicolon(const zr_sdl_parser *p, int next) {
-  if (!p->in_version || p->version_depth > 0 || !p->version_operand)
+/* Tokens that may follow a complete operand inside an expression. */
+static bool continues(int kind) {
+  switch (kind) {
+  case '+': case '-': case '*': case '/': case '.': case ';': case '[':
+  case '{': case '?': case ':': case '<': case '>': case '=': case '&':
+  case '|': case T_LE: case T_GE: case T_NE:
+  case T_RGB: case T_RGBF: case T_RGBT: case T_RGBFT: case T_RED:
+  case T_GREEN: case T_BLUE: case T_FILTER: case T_TRANSMIT:
+    return true;
+  default:
     return false;
-  return next != '+' && next != '-' && next != '*' && next != '/' &&
-         next != '.' && next != ';';
+  }
 }
 
-static void track_version(zr_sdl_parser *p, int kind) {
-  if (kind == '(' || kind == '<')
-    p->version_depth++;
-  else if (kind == ')' || kind == '>')
-    p->version_depth--;
-  p->version_operand = ends_operand(kind);
+/* Directives that close or continue a block: running them never starts
+   anything new, so an expression may go on after them (a macro's value
+   continues in its caller after the macro's #end). */
+static bool closes_block(int kind) {
+  return kind == T_END || kind == T_ELSE || kind == T_ELSEIF ||
+         kind == T_BREAK || kind == T_CASE || kind == T_RANGE ||
+         kind == T_ZEND;
+}
+
+static bool is_directive(int kind) {
+  return (kind >= T_DECLARE && kind <= T_ZEND) ||
+         (kind >= T_IF && kind <= T_DEFAULT);
+}
+
+/*
+ * Whether the expression of the directive being parsed (the value of a
+ * #declare or of #version) is complete before the next token, next.  It
+ * is when no bracket is open, the last token could end an operand, and
+ * next cannot continue it or starts another directive: POV-Ray accepts
+ * "#version 3.7" without its ';' (and warns), and an object, texture or
+ * array after #declare needs none.
+ */
+static bool autoend_due(const zr_sdl_parser *p, int next) {
+  const zr_sdl_autoend *a = &p->autoend;
+  if (!a->token || a->depth > 0 || !a->operand || closes_block(next))
+    return false;
+  if (next == 0)
+    return p->n_frames == 1;
+  if (is_directive(next))
+    return true;
+  if (a->token == ';' && next == '{')
+    return true;
+  return !continues(next);
+}
+
+static void track(zr_sdl_parser *p, int kind) {
+  zr_sdl_autoend *a = &p->autoend;
+  bool vector = kind == '<' && !a->operand;
+  if (kind == '(' || kind == '[' || kind == '{' || vector) {
+    if (a->depth < 64) {
+      unsigned long long bit = 1ull << a->depth;
+      a->angles = vector ? a->angles | bit : a->angles & ~bit;
+    }
+    a->depth++;
+  } else if (kind == ')' || kind == ']' || kind == '}' ||
+             (kind == '>' && a->depth > 0 && a->depth <= 64 &&
+              (a->angles >> (a->depth - 1) & 1))) {
+    if (a->depth > 0)
+      a->depth--;
+  } else if (kind == '>') {
+    /* A comparison, not the end of a vector. */
+    a->operand = false;
+    return;
+  }
+  a->operand = ends_operand(kind);
 }
 
 static bool set_zr(zr_sdl_parser *p, zr_sdl_symtab *scope, double value) {
@@ -499,6 +745,10 @@ static int identifier_token(zr_sdl_kind kind) {
   case ZR_SDL_FINISH: return T_FINISH_ID;
   case ZR_SDL_TEXTURE: return T_TEXTURE_ID;
   case ZR_SDL_INTERIOR: return T_INTERIOR_ID;
+  case ZR_SDL_FUNCTION: return T_FUNCTION_ID;
+  case ZR_SDL_STRING: return T_STRING_ID;
+  case ZR_SDL_ARRAY: return T_ARRAY_ID;
+  case ZR_SDL_SEED: return T_SEED_ID;
   default: return T_OBJECT_ID;
   }
 }
@@ -508,12 +758,66 @@ static int deliver(zr_sdl_parser *p, int kind, const zr_sdl_lexval *val,
                    zr_sdl_lexval *out_val, zr_sdl_loc *out_loc) {
   p->last_loc = *loc;
   p->last_text = text;
-  p->want_decl_name = kind == T_DECLARE || kind == T_LOCAL;
-  if (p->in_version)
-    track_version(p, kind);
+  p->want_decl_name = false;
+  if (p->autoend.token)
+    track(p, kind);
   *out_val = *val;
   *out_loc = *loc;
   return kind;
+}
+
+/* The value of a built-in constant (reference manual, "Built-in Float
+   Identifiers"): the clock of a still image, the render size. */
+static double constant(const zr_sdl_parser *p, const char *name) {
+  if (strcmp(name, "clock") == 0)
+    return p->clock;
+  if (strcmp(name, "final_clock") == 0 || strcmp(name, "initial_frame") == 0
+      || strcmp(name, "final_frame") == 0)
+    return 1;
+  if (strcmp(name, "image_width") == 0)
+    return p->image_width;
+  if (strcmp(name, "image_height") == 0)
+    return p->image_height;
+  if (strcmp(name, "version") == 0)
+    return p->version;
+  if (strcmp(name, "tau") == 0)
+    return 2 * 3.14159265358979323846;
+  return 0; /* clock_delta, clock_on, frame_number, initial_clock */
+}
+
+/*
+ * An array name followed by '[': reads the indices (nested parses) and
+ * returns the element, or NULL after an error.
+ */
+static const zr_sdl_value *array_element(zr_sdl_parser *p, const char *name,
+                                         zr_sdl_array *a,
+                                         const zr_sdl_loc *at) {
+  int index[ZR_SDL_MAX_DIMS];
+  int n = 0;
+  size_t frames = p->n_frames;
+  while (zr__sdl_peek(p, 0)->kind == '[' && n < a->n_dims) {
+    zr_sdl_loc il = zr__sdl_peek_loc(p, 1);
+    double v;
+    if (zr__sdl_parse_nested(p, T_START_INDEX) != ZR_OK ||
+        !zr__sdl_want_float(p, &p->nested_value, &il, &v))
+      return NULL;
+    if (p->n_frames != frames) {
+      zr__sdl_error(p, ZR_ESYNTAX, at, "an array index must end in the "
+                    "file or macro where it begins");
+      return NULL;
+    }
+    index[n++] = (int)floor(v);
+  }
+  zr_sdl_value *e = zr__sdl_array_at(p, name, a, index, n, at);
+  if (!e)
+    return NULL;
+  if (!a->set[e - a->elems]) {
+    zr__sdl_error(p, ZR_EUNDEFINED, at,
+                  "element of array '%s' used before it was assigned",
+                  name);
+    return NULL;
+  }
+  return e;
 }
 
 int zr__sdl_next(zr_sdl_lexval *val, zr_sdl_loc *loc, zr_sdl_parser *p) {
@@ -532,14 +836,18 @@ int zr__sdl_next(zr_sdl_lexval *val, zr_sdl_loc *loc, zr_sdl_parser *p) {
     zr_sdl_frame *fr = top(p);
     const zr_sdl_token *t = &p->files[fr->file].tokens[fr->pos];
     zr_sdl_loc tl = token_loc(fr->file, t);
-    if (version_needs_semicolon(p, t->kind)) {
-      zr__sdl_warning(p, &p->last_loc, "'#version' should end with ';'");
-      p->in_version = false;
-      return deliver(p, ';', &v, &p->last_loc, NULL, val, loc);
+    if (autoend_due(p, t->kind)) {
+      int end = p->autoend.token;
+      if (end == ';')
+        zr__sdl_warning(p, &p->last_loc, "'#version' should end with ';'");
+      p->autoend.token = 0;
+      return deliver(p, end, &v, &p->last_loc, NULL, val, loc);
     }
     if (t->kind == 0) {
+      if (!zr__sdl_check_blocks(p))
+        return ZR__POV_error;
       if (p->n_frames > 1) {
-        pop_frame(p);
+        zr__sdl_pop_frame(p);
         continue;
       }
       return deliver(p, 0, &v, &tl, NULL, val, loc);
@@ -548,6 +856,11 @@ int zr__sdl_next(zr_sdl_lexval *val, zr_sdl_loc *loc, zr_sdl_parser *p) {
     switch (t->kind) {
     case T_INCLUDE:
       if (!do_include(p, &tl))
+        return ZR__POV_error;
+      continue;
+    case T_DECLARE:
+    case T_LOCAL:
+      if (!do_declare(p, t->kind))
         return ZR__POV_error;
       continue;
     case T_VERSION:
@@ -566,28 +879,61 @@ int zr__sdl_next(zr_sdl_lexval *val, zr_sdl_loc *loc, zr_sdl_parser *p) {
       zr__sdl_error(p, ZR_EUNSUPPORTED, &tl, "'%s' is not supported yet",
                     t->v.str);
       return ZR__POV_error;
+    case T_CONSTANT:
+      v.num = constant(p, t->v.str);
+      return deliver(p, T_NUMBER, &v, &tl, NULL, val, loc);
+    case T_DEFINED: {
+      bool defined;
+      if (!zr__sdl_read_defined(p, &tl, &defined))
+        return ZR__POV_error;
+      v.num = defined ? 1 : 0;
+      return deliver(p, T_NUMBER, &v, &tl, NULL, val, loc);
+    }
     case T_NUMBER:
       v.num = t->v.num;
       return deliver(p, t->kind, &v, &tl, NULL, val, loc);
     case T_IDENTIFIER:
       break;
     default:
+      if (is_directive(t->kind)) {
+        if (!zr__sdl_run_directive(p, t, &tl))
+          return ZR__POV_error;
+        continue;
+      }
       v.str = t->v.str;
       return deliver(p, t->kind, &v, &tl, NULL, val, loc);
     }
     if (p->want_decl_name) {
       v.decl.name = t->v.str;
       v.decl.frame = (int)(p->n_frames - 1);
+      v.decl.local = p->decl_local;
       return deliver(p, T_DECL_NAME, &v, &tl, t->v.str, val, loc);
     }
-    const zr_sdl_symbol *s = lookup(p, t->v.str);
+    const zr_sdl_symbol *s = zr__sdl_lookup(p, t->v.str, NULL);
     if (!s) {
       zr__sdl_error(p, ZR_EUNDEFINED, &tl, "undefined identifier '%s'",
                     t->v.str);
       return ZR__POV_error;
     }
+    if (s->value.kind == ZR_SDL_MACRO) {
+      if (!zr__sdl_call_macro(p, s->value.ptr, &tl))
+        return ZR__POV_error;
+      continue;
+    }
     v.value = s->value;
-    return deliver(p, identifier_token(s->value.kind), &v, &tl, t->v.str,
+    if (s->value.kind == ZR_SDL_ARRAY && zr__sdl_peek(p, 0)->kind == '[') {
+      const zr_sdl_value *e = array_element(
+          p, t->v.str, (zr_sdl_array *)s->value.ptr, &tl);
+      if (!e)
+        return ZR__POV_error;
+      v.value = *e;
+      if (v.value.kind == ZR_SDL_MACRO || v.value.kind == ZR_SDL_ALIAS) {
+        zr__sdl_error(p, ZR_ESYNTAX, &tl, "an array element cannot be a "
+                      "macro");
+        return ZR__POV_error;
+      }
+    }
+    return deliver(p, identifier_token(v.value.kind), &v, &tl, t->v.str,
                    val, loc);
   }
 }
@@ -596,11 +942,12 @@ int zr__sdl_next(zr_sdl_lexval *val, zr_sdl_loc *loc, zr_sdl_parser *p) {
 
 static void parser_free(zr_sdl_parser *p) {
   while (p->n_frames > 0)
-    pop_frame(p);
+    zr__sdl_pop_frame(p);
   free(p->frames);
   for (size_t i = 0; i < p->n_files; i++)
     zr__sdl_file_free(&p->files[i]);
   free(p->files);
+  free(p->init);
   zr__sdl_symtab_free(&p->globals);
 }
 
@@ -610,6 +957,8 @@ static zr_status parse(zr_context *ctx, char *path, char *bytes, size_t size,
   memset(&p, 0, sizeof p);
   p.ctx = ctx;
   p.version = 3.7;
+  p.image_width = 320;
+  p.image_height = 240;
   p.scene = zr__scene_new();
   if (!p.scene) {
     free(path);
@@ -623,7 +972,7 @@ static zr_status parse(zr_context *ctx, char *path, char *bytes, size_t size,
                          sizeof err);
   if (s != ZR_OK)
     zr__sdl_error(&p, s, s == ZR_ESYNTAX ? &err_loc : NULL, "%s", err);
-  else if (push_frame(&p, index, NULL)) {
+  else if (zr__sdl_push_frame(&p, index, NULL)) {
     p.start_token = T_START_SCENE;
     if (zr__pov_parse(&p) != 0 && p.status == ZR_OK)
       zr__sdl_error(&p, ZR_ENOMEM, NULL, "out of memory");

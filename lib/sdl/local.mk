@@ -4,8 +4,11 @@
 lib_libzrcube_la_SOURCES += \
 	lib/sdl/sdl.h \
 	lib/sdl/build.c \
+	lib/sdl/builtins.c \
+	lib/sdl/control.c \
 	lib/sdl/directive.c \
 	lib/sdl/keywords.c \
+	lib/sdl/symtab.c \
 	lib/sdl/tokens.c \
 	lib/sdl/values.c
 
@@ -27,3 +30,13 @@ tests_test_parser_LDFLAGS = -static
 # `make`, `make check` and `make install`).
 $(lib_libzrcube_la_OBJECTS) $(tests_test_lexer_OBJECTS) \
 	$(tests_test_parser_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
+
+# User-defined functions (lib/sdl/function.c) and their tests.
+lib_libzrcube_la_SOURCES += lib/sdl/function.h lib/sdl/function.c
+check_PROGRAMS += tests/test_function
+TESTS += tests/test_function
+tests_test_function_SOURCES = tests/test_function.c
+tests_test_function_CPPFLAGS = $(TEST_CPPFLAGS)
+tests_test_function_LDADD = $(TEST_LDADD)
+tests_test_function_LDFLAGS = -static
+$(tests_test_function_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h

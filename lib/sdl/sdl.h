@@ -36,6 +36,15 @@
 /* The most times one #zfor may repeat: beyond this a typing mistake is
    likelier than a scene, and the count must fit a long anyway. */
 #define ZR_SDL_MAX_ZFOR 100000000
+/* How deep macro calls may nest: beyond this a macro almost surely
+   recurses without end, and each level costs C stack in nested parses. */
+#define ZR_SDL_MAX_MACRO_DEPTH 128
+/* How deep the engine may nest parsers (a directive's expression inside
+   a macro argument inside a declaration ...): each level is a C stack
+   frame of yyparse, so this bounds the C stack the parse can use. */
+#define ZR_SDL_MAX_NESTED_PARSE 400
+/* The most dimensions an array may have, as in POV-Ray. */
+#define ZR_SDL_MAX_DIMS 5
 
 /* A place in a scene file: file is an index into the parser's files. */
 typedef struct zr_sdl_loc {
@@ -71,7 +80,13 @@ typedef enum zr_sdl_kind {
   ZR_SDL_FINISH,
   ZR_SDL_TEXTURE,
   ZR_SDL_INTERIOR,
-  ZR_SDL_OBJECT
+  ZR_SDL_OBJECT,
+  ZR_SDL_STRING, /* ptr: the NUL-terminated text */
+  ZR_SDL_ARRAY,  /* ptr: a zr_sdl_array (element assignment changes it) */
+  ZR_SDL_MACRO,  /* ptr: a zr_sdl_macro */
+  ZR_SDL_SEED,   /* ptr: a zr_sdl_rand stream that rand() advances */
+  ZR_SDL_ALIAS,  /* ptr: a zr_sdl_alias, a parameter passed by name */
+  ZR_SDL_FUNCTION /* ptr: a compiled zr_fn (function.h) */
 } zr_sdl_kind;
 
 /* What an identifier stands for.  Pointers are into the scene's arena
@@ -82,11 +97,47 @@ typedef struct zr_sdl_value {
   const void *ptr;
 } zr_sdl_value;
 
-/* A name after #declare or #local, with the frame it was written in. */
+/* A name after #declare or #local, with the frame it was written in,
+   whether it is #local, and the indices of an array element target. */
 typedef struct zr_sdl_decl_name {
   const char *name;
   int frame;
+  bool local;
+  int n_index;
+  int index[ZR_SDL_MAX_DIMS];
 } zr_sdl_decl_name;
+
+/* An array: dims[0] x dims[1] ... elements in row-major order; set[i]
+   tells whether element i was ever assigned. */
+typedef struct zr_sdl_array {
+  int n_dims;
+  int dims[ZR_SDL_MAX_DIMS];
+  size_t n;
+  struct zr_sdl_value *elems;
+  bool *set;
+} zr_sdl_array;
+
+/* A #macro: its body is tokens [body, end) of a file, end the #end. */
+typedef struct zr_sdl_macro {
+  const char *name;
+  int file;
+  size_t body, end;
+  int n_params;
+  const char **params;
+  bool *optional;
+} zr_sdl_macro;
+
+/* A parameter passed by identifier: the caller's variable, found by name
+   in the table of frame (0: the global table). */
+typedef struct zr_sdl_alias {
+  size_t frame;
+  const char *name;
+} zr_sdl_alias;
+
+/* A rand() stream made by seed() (see builtins.c for the generator). */
+typedef struct zr_sdl_rand {
+  unsigned long long state;
+} zr_sdl_rand;
 
 /* One modifier of a colour: rgb, rgbf, ..., red, green, ..., transmit. */
 typedef struct zr_sdl_colour_mod {
@@ -152,6 +203,10 @@ typedef struct zr_sdl_file {
   size_t n_lines;
   zr_sdl_token *tokens;
   size_t n_tokens;
+  /* For each block directive, the index of the next directive of its
+     block: #if -> #elseif/#else/#end, #switch -> #case..., #while,
+     #for and #macro -> #end; (size_t)-1 where there is none. */
+  size_t *links;
   zr_arena strings; /* identifier and string texts */
 } zr_sdl_file;
 
@@ -202,16 +257,20 @@ const zr_sdl_keyword *zr__sdl_keywords(size_t *count);
 
 /* ---- symbol tables ---- */
 
+/* Symbol tables are open-addressing hash tables (symtab.c). */
 typedef struct zr_sdl_symbol {
-  char *name;
+  char *name; /* NULL: an empty slot */
+  unsigned hash;
+  bool removed; /* a tombstone left by #undef */
   zr_sdl_value value;
 } zr_sdl_symbol;
 
 typedef struct zr_sdl_symtab {
-  zr_sdl_symbol *items;
-  size_t n, cap;
+  zr_sdl_symbol *slots;
+  size_t n, used, cap; /* live names, live + tombstones, slots */
 } zr_sdl_symtab;
 
+void zr__sdl_symtab_init(zr_sdl_symtab *t);
 void zr__sdl_symtab_free(zr_sdl_symtab *t);
 zr_sdl_symbol *zr__sdl_symtab_find(zr_sdl_symtab *t, const char *name);
 zr_status zr__sdl_symtab_set(zr_sdl_symtab *t, const char *name,
@@ -229,15 +288,46 @@ typedef struct zr_sdl_loop {
   zr_sdl_value outer;
 } zr_sdl_loop;
 
-/* A file being read: the top-level scene or an included file. */
+/* An #if, #while, #for or #switch being run in a frame. */
+typedef enum zr_sdl_ctl_kind {
+  ZR_SDL_CTL_IF = 0,
+  ZR_SDL_CTL_WHILE,
+  ZR_SDL_CTL_FOR,
+  ZR_SDL_CTL_SWITCH
+} zr_sdl_ctl_kind;
+
+typedef struct zr_sdl_ctl {
+  zr_sdl_ctl_kind kind;
+  size_t open;        /* index of the opening directive */
+  size_t body;        /* #for: index of the first token of the body */
+  const char *var;    /* #for: the counter */
+  double to, step;    /* #for */
+  double value;       /* #switch */
+} zr_sdl_ctl;
+
+/* A file being read (the top-level scene or an included file) or a
+   macro being run. */
 typedef struct zr_sdl_frame {
   int file;
   size_t pos;
   zr_sdl_symtab locals; /* #local names (unused in frame 0: global) */
-  zr_sdl_loc included_at;
+  zr_sdl_loc included_at; /* or, for a macro, where it was called */
+  const zr_sdl_macro *macro; /* NULL for a file */
   zr_sdl_loop *loops;
   size_t n_loops, cap_loops;
+  zr_sdl_ctl *ctl;
+  size_t n_ctl, cap_ctl;
 } zr_sdl_frame;
+
+/* What ends a directive's expression that has no token of its own: the
+   engine hands the grammar an end token when the expression is complete
+   and the next token cannot continue it (see directive.c). */
+typedef struct zr_sdl_autoend {
+  int token;   /* 0: none; ';' for #version, T_DECL_END for #declare */
+  int depth;   /* brackets open */
+  unsigned long long angles; /* bit i: bracket i is a vector's '<' */
+  bool operand; /* the last token may end an expression */
+} zr_sdl_autoend;
 
 typedef struct zr_sdl_parser {
   zr_context *ctx;
@@ -250,12 +340,22 @@ typedef struct zr_sdl_parser {
   zr_sdl_symtab globals;
   double version;
   int start_token; /* pseudo-token for the next yylex, 0 for none */
-  /* While the expression of #version is read: its bracket depth and
-     whether the last token ended an operand (see directive.c). */
-  bool in_version;
-  int version_depth;
-  bool version_operand;
+  zr_sdl_autoend autoend;
   bool want_decl_name;
+  bool decl_local; /* the name wanted follows #local */
+  int nested_depth; /* parsers running, for ZR_SDL_MAX_NESTED_PARSE */
+  int macro_depth;
+  int include_depth;
+  /* Render settings the language can read (image_width, clock...). */
+  int image_width, image_height;
+  double clock;
+  /* Where nested parses leave a value, a list or an argument's end. */
+  zr_sdl_value nested_rvalue;
+  zr_sdl_list nested_list;
+  int nested_end;
+  /* The elements of an array initialiser being parsed, in order. */
+  zr_sdl_value *init;
+  size_t n_init, cap_init;
   /* The token last handed to bison, for messages. */
   zr_sdl_loc last_loc;
   const char *last_text;
@@ -288,10 +388,45 @@ int zr__sdl_next(zr_sdl_lexval *val, zr_sdl_loc *loc, zr_sdl_parser *p);
 /* A bison symbol name as messages show it: reserved words and directives
    quoted ("'sphere'"), classes bare ("number"). */
 const char *zr__sdl_token_name(const char *name, char *buf, size_t size);
-/* Defines name in the global table (is_local false) or in frame's. */
+/* Runs #declare (is_local false: the innermost existing name, else a new
+   global) or #local (frame's table), also for an array element. */
 bool zr__sdl_define(zr_sdl_parser *p, const zr_sdl_decl_name *name,
                     bool is_local, const zr_sdl_value *value,
                     const zr_sdl_loc *loc);
+/* Parses a nested directive value starting with start_token: the result
+   is left in p->nested_value / nested_rvalue / nested_list. */
+zr_status zr__sdl_parse_nested(zr_sdl_parser *p, int start_token);
+
+/* ---- the engine's internals (directive.c, control.c) ---- */
+
+zr_sdl_frame *zr__sdl_top(zr_sdl_parser *p);
+zr_sdl_loc zr__sdl_token_loc(int file, const zr_sdl_token *t);
+/* The token k places ahead in the newest frame (the end of file token
+   when there are fewer). */
+const zr_sdl_token *zr__sdl_peek(zr_sdl_parser *p, size_t k);
+/* Where the token k places ahead is. */
+zr_sdl_loc zr__sdl_peek_loc(zr_sdl_parser *p, size_t k);
+bool zr__sdl_push_frame(zr_sdl_parser *p, int file, const zr_sdl_loc *at);
+void zr__sdl_pop_frame(zr_sdl_parser *p);
+/* The table #local writes to in frame (frame 0's is the global one). */
+zr_sdl_symtab *zr__sdl_scope(zr_sdl_parser *p, size_t frame);
+/* The innermost symbol called name, a parameter passed by identifier
+   resolved to the caller's variable; *frame (if not NULL) gets the
+   frame whose table holds it.  NULL when undefined. */
+zr_sdl_symbol *zr__sdl_lookup(zr_sdl_parser *p, const char *name,
+                              size_t *frame);
+/* Runs a block or message directive (#if ... #end, #while, #for,
+   #switch, #macro, #undef, #debug ...) whose token was just read. */
+bool zr__sdl_run_directive(zr_sdl_parser *p, const zr_sdl_token *t,
+                           const zr_sdl_loc *at);
+/* Reads "(Name)" or "(Name[i]...)" after #ifdef or defined. */
+bool zr__sdl_read_defined(zr_sdl_parser *p, const zr_sdl_loc *at,
+                          bool *out);
+/* Invokes a macro whose name was just read at 'at'. */
+bool zr__sdl_call_macro(zr_sdl_parser *p, const zr_sdl_macro *m,
+                        const zr_sdl_loc *at);
+/* Checks, at the end of a file, that its blocks were all closed. */
+bool zr__sdl_check_blocks(zr_sdl_parser *p);
 
 /* ---- expressions (values.c) ---- */
 
@@ -324,6 +459,60 @@ bool zr__sdl_want_rgb(zr_sdl_parser *p, const zr_sdl_expr *e,
 bool zr__sdl_colour_apply(zr_sdl_parser *p, zr_sdl_expr *colour,
                           const zr_sdl_colour_mod *mod);
 zr_sdl_expr zr__sdl_colour_expr(zr_colour c);
+
+/* ---- built-in functions, strings and arrays (builtins.c) ---- */
+
+/* Truth of a condition: POV-Ray calls |v| < 1e-10 false. */
+bool zr__sdl_truth(zr_sdl_parser *p, const zr_sdl_expr *e,
+                   const zr_sdl_loc *loc, bool *out);
+/* Comparisons and logic: op is '<', '>', '=', T_LE, T_GE, T_NE, '&',
+   '|'. */
+bool zr__sdl_compare(zr_sdl_parser *p, int op, const zr_sdl_expr *a,
+                     const zr_sdl_expr *b, const zr_sdl_loc *loc,
+                     zr_sdl_expr *out);
+bool zr__sdl_vaxis_rotate(zr_sdl_parser *p, const zr_sdl_expr *v,
+                          const zr_sdl_expr *axis, const zr_sdl_expr *deg,
+                          const zr_sdl_loc *loc, zr_sdl_expr *out);
+bool zr__sdl_vrotate(zr_sdl_parser *p, const zr_sdl_expr *v,
+                     const zr_sdl_expr *r, const zr_sdl_loc *loc,
+                     zr_sdl_expr *out);
+/* String functions: results are in the scene's arena, NULL after an
+   error was reported. */
+const char *zr__sdl_strdup(zr_sdl_parser *p, const char *s, size_t n);
+const char *zr__sdl_concat(zr_sdl_parser *p, const char *a, const char *b);
+const char *zr__sdl_str(zr_sdl_parser *p, double v, double width,
+                        double prec, const zr_sdl_loc *loc);
+const char *zr__sdl_vstr(zr_sdl_parser *p, double n, const zr_sdl_expr *v,
+                         const char *sep, double width, double prec,
+                         const zr_sdl_loc *loc);
+const char *zr__sdl_substr(zr_sdl_parser *p, const char *s, double start,
+                           double len, const zr_sdl_loc *loc);
+const char *zr__sdl_chr(zr_sdl_parser *p, double code,
+                        const zr_sdl_loc *loc);
+const char *zr__sdl_strcase(zr_sdl_parser *p, const char *s, bool upper);
+/* Float functions of strings: T_ASC, T_STRLEN, T_VAL, T_FILE_EXISTS. */
+bool zr__sdl_string_float(zr_sdl_parser *p, int func, const char *s,
+                          const zr_sdl_loc *loc, zr_sdl_expr *out);
+bool zr__sdl_file_exists(zr_sdl_parser *p, const char *name);
+/* seed(n) and rand(stream). */
+const zr_sdl_rand *zr__sdl_seed(zr_sdl_parser *p, double n);
+double zr__sdl_rand(const zr_sdl_rand *stream);
+/* Arrays: a new array of the given dimensions, its initialiser (the
+   p->init values), a copy, and dimension_size(). */
+zr_sdl_array *zr__sdl_array_new(zr_sdl_parser *p, const zr_sdl_list *dims,
+                                const zr_sdl_loc *loc);
+bool zr__sdl_array_init(zr_sdl_parser *p, zr_sdl_array *a, size_t start,
+                        const zr_sdl_loc *loc);
+bool zr__sdl_init_add(zr_sdl_parser *p, const zr_sdl_value *v,
+                      const zr_sdl_loc *loc);
+zr_sdl_array *zr__sdl_array_copy(zr_sdl_parser *p, const zr_sdl_array *a);
+bool zr__sdl_dimension_size(zr_sdl_parser *p, const zr_sdl_array *a,
+                            double dim, const zr_sdl_loc *loc,
+                            zr_sdl_expr *out);
+/* The element of a at the indices, checked; NULL after an error. */
+zr_sdl_value *zr__sdl_array_at(zr_sdl_parser *p, const char *name,
+                               zr_sdl_array *a, const int *index, int n,
+                               const zr_sdl_loc *loc);
 
 /* ---- building the scene (build.c) ---- */
 

@@ -7,7 +7,10 @@
  * scanning again.  Every token keeps its line and column, and the file
  * keeps its bytes and line starts, so any message can quote the source
  * line under its caret however the tokens were reached (the layout of
- * GCC and of Bison's bistromathic example).
+ * GCC and of Bison's bistromathic example).  The block directives (#if
+ * ... #else ... #end, #while ... #end, #macro ... #end) are linked to
+ * each other once here, so skipping and looping jump straight to their
+ * partner.
  */
 #include "config.h"
 
@@ -112,6 +115,47 @@ static zr_status push_token(zr_sdl_file *f, size_t *cap,
   return ZR_OK;
 }
 
+static bool opens_block(int kind) {
+  return kind == T_IF || kind == T_IFDEF || kind == T_IFNDEF ||
+         kind == T_WHILE || kind == T_FOR || kind == T_SWITCH ||
+         kind == T_MACRO;
+}
+
+static bool continues_block(int kind) {
+  return kind == T_ELSE || kind == T_ELSEIF || kind == T_CASE ||
+         kind == T_RANGE;
+}
+
+/*
+ * Links each block directive to the next one of its block (see links in
+ * sdl.h), so that skipping a false #if branch or leaving a loop is one
+ * step whatever the body holds.  Directives that do not pair up keep
+ * (size_t)-1; the engine reports them when it runs them.
+ */
+static zr_status link_blocks(zr_sdl_file *f) {
+  f->links = malloc((f->n_tokens ? f->n_tokens : 1) * sizeof *f->links);
+  size_t *open = malloc((f->n_tokens ? f->n_tokens : 1) * sizeof *open);
+  if (!f->links || !open) {
+    free(open);
+    return ZR_ENOMEM;
+  }
+  size_t depth = 0;
+  for (size_t i = 0; i < f->n_tokens; i++) {
+    int kind = f->tokens[i].kind;
+    f->links[i] = (size_t)-1;
+    if (opens_block(kind)) {
+      open[depth++] = i;
+    } else if (continues_block(kind) && depth > 0) {
+      f->links[open[depth - 1]] = i;
+      open[depth - 1] = i;
+    } else if (kind == T_END && depth > 0) {
+      f->links[open[--depth]] = i;
+    }
+  }
+  free(open);
+  return ZR_OK;
+}
+
 zr_status zr__sdl_file_lex(zr_sdl_file *f, int file_index, char *path,
                            char *bytes, size_t size, zr_sdl_loc *err_loc,
                            char *err, size_t err_size) {
@@ -170,6 +214,8 @@ zr_status zr__sdl_file_lex(zr_sdl_file *f, int file_index, char *path,
   if (buffer)
     zr__scan__delete_buffer(buffer, scanner);
   zr__scan_lex_destroy(scanner);
+  if (status == ZR_OK)
+    status = link_blocks(f);
   if (status == ZR_ESYNTAX) {
     *err_loc = lx.error_at;
     err_loc->file = file_index;
@@ -187,6 +233,7 @@ void zr__sdl_file_free(zr_sdl_file *f) {
   free(f->bytes);
   free(f->line_starts);
   free(f->tokens);
+  free(f->links);
   zr__arena_free(&f->strings);
   memset(f, 0, sizeof *f);
 }

@@ -9,10 +9,8 @@
  * components, as the "Reflection" section notes).  An expression here is
  * up to five doubles with a dimension; the grammar checks what each place
  * wants through the zr__sdl_want_*() calls, which name the mismatch.
- *
- * Symbol tables are small arrays searched from the newest entry: scenes
- * of this slice declare tens of names, and the table keeps declaration
- * order for free.
+ * Symbol tables are in symtab.c, the functions and strings in
+ * builtins.c.
  */
 #include "config.h"
 
@@ -175,7 +173,7 @@ bool zr__sdl_dot(zr_sdl_parser *p, const zr_sdl_expr *e, int item,
 typedef struct func_info {
   int token;
   const char *name;
-  int arity; /* -1: one or more */
+  int arity; /* -1: one or more; -2: two or more; -3: three or four */
 } func_info;
 
 static const func_info funcs[] = {
@@ -191,7 +189,11 @@ static const func_info funcs[] = {
     {T_FLOOR, "floor", 1},     {T_CEIL, "ceil", 1},
     {T_INT, "int", 1},         {T_MOD, "mod", 2},
     {T_DIV, "div", 2},         {T_DEGREES, "degrees", 1},
-    {T_RADIANS, "radians", 1},
+    {T_RADIANS, "radians", 1},   {T_ACOSH, "acosh", 1},
+    {T_ASINH, "asinh", 1},       {T_ATANH, "atanh", 1},
+    {T_SELECT, "select", -3},    {T_BITWISE_AND, "bitwise_and", -2},
+    {T_BITWISE_OR, "bitwise_or", -2},
+    {T_BITWISE_XOR, "bitwise_xor", -2},
 };
 
 static double evaluate(int token, const double *a, int n) {
@@ -220,6 +222,27 @@ static double evaluate(int token, const double *a, int n) {
   case T_DIV: return a[1] == 0.0 ? NAN : trunc(a[0] / a[1]);
   case T_DEGREES: return a[0] * 180.0 / 3.14159265358979323846;
   case T_RADIANS: return a[0] * 3.14159265358979323846 / 180.0;
+  case T_ACOSH: return acosh(a[0]);
+  case T_ASINH: return asinh(a[0]);
+  case T_ATANH: return atanh(a[0]);
+  case T_SELECT:
+    /* select(A, B, C [, D]): B when A < 0, else C; with D, C only when
+       A = 0 and D when A > 0 ("Float Functions"). */
+    if (a[0] < 0)
+      return a[1];
+    return n == 3 || a[0] == 0 ? a[2] : a[3];
+  case T_BITWISE_AND:
+  case T_BITWISE_OR:
+  case T_BITWISE_XOR: {
+    /* Each argument is first made an integer (the manual's note). */
+    long long b = (long long)a[0];
+    for (int i = 1; i < n; i++) {
+      long long c = (long long)a[i];
+      b = token == T_BITWISE_AND ? (b & c)
+          : token == T_BITWISE_OR ? (b | c) : (b ^ c);
+    }
+    return (double)b;
+  }
   case T_MIN:
   case T_MAX:
     r = a[0];
@@ -239,6 +262,13 @@ bool zr__sdl_call(zr_sdl_parser *p, int func, const zr_sdl_list *args,
       f = &funcs[i];
   if (!f)
     return zr__sdl_error(p, ZR_ESYNTAX, loc, "unknown function"), false;
+  if ((f->arity == -2 && args->n < 2) ||
+      (f->arity == -3 && (args->n < 3 || args->n > 4))) {
+    zr__sdl_error(p, ZR_ESYNTAX, loc, "'%s' takes %s arguments, not %d",
+                  f->name, f->arity == -2 ? "two or more" : "3 or 4",
+                  args->n);
+    return false;
+  }
   if (f->arity >= 0 && args->n != f->arity) {
     zr__sdl_error(p, ZR_ESYNTAX, loc, "'%s' takes %d argument%s, not %d",
                   f->name, f->arity, f->arity == 1 ? "" : "s", args->n);
@@ -384,54 +414,4 @@ bool zr__sdl_colour_apply(zr_sdl_parser *p, zr_sdl_expr *colour,
               : mod->token == T_FILTER ? 3 : 4;
   c[index] = mod->value.v[0];
   return true;
-}
-
-/* ---- symbol tables ---- */
-
-void zr__sdl_symtab_free(zr_sdl_symtab *t) {
-  for (size_t i = 0; i < t->n; i++)
-    free(t->items[i].name);
-  free(t->items);
-  memset(t, 0, sizeof *t);
-}
-
-zr_sdl_symbol *zr__sdl_symtab_find(zr_sdl_symtab *t, const char *name) {
-  for (size_t i = t->n; i-- > 0;)
-    if (strcmp(t->items[i].name, name) == 0)
-      return &t->items[i];
-  return NULL;
-}
-
-zr_status zr__sdl_symtab_set(zr_sdl_symtab *t, const char *name,
-                             const zr_sdl_value *value) {
-  zr_sdl_symbol *s = zr__sdl_symtab_find(t, name);
-  if (s) {
-    s->value = *value;
-    return ZR_OK;
-  }
-  if (t->n == t->cap) {
-    size_t cap = t->cap ? t->cap * 2 : 32;
-    zr_sdl_symbol *items = realloc(t->items, cap * sizeof *items);
-    if (!items)
-      return ZR_ENOMEM;
-    t->items = items;
-    t->cap = cap;
-  }
-  char *copy = strdup(name);
-  if (!copy)
-    return ZR_ENOMEM;
-  t->items[t->n].name = copy;
-  t->items[t->n].value = *value;
-  t->n++;
-  return ZR_OK;
-}
-
-void zr__sdl_symtab_remove(zr_sdl_symtab *t, const char *name) {
-  zr_sdl_symbol *s = zr__sdl_symtab_find(t, name);
-  if (!s)
-    return;
-  free(s->name);
-  size_t i = (size_t)(s - t->items);
-  memmove(&t->items[i], &t->items[i + 1], (t->n - i - 1) * sizeof *s);
-  t->n--;
 }

@@ -34,5 +34,6 @@ check_PROGRAMS += tests/test_render
 TESTS += tests/test_render
 tests_test_render_SOURCES = tests/test_render.c
 tests_test_render_CPPFLAGS = $(TEST_CPPFLAGS)
-tests_test_render_LDADD = $(TEST_LDADD)
+tests_test_render_CFLAGS = $(AM_CFLAGS) $(PTHREAD_CFLAGS)
+tests_test_render_LDADD = $(TEST_LDADD) $(PTHREAD_LIBS)
 tests_test_render_LDFLAGS = -static

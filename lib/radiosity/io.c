@@ -1,0 +1,280 @@
+/*
+ * io.c - saving a radiosity solution and loading it for another view of
+ * the same scene, so a solution is computed once for every camera.
+ *
+ * The file is little-endian binary, whatever the host:
+ *
+ *   "ZRRADSOL"           8 bytes, the magic
+ *   u32 version          1
+ *   u64 fingerprint      of the scene's geometry and light (below)
+ *   u32 surfaces         how many exact surfaces the scene gave
+ *   f64 bf_eps, area_eps; i32 visibility_rays, uniform, shooting
+ *   u64 links; i32 refine_rounds, iterations; f64 residual
+ *   then, per surface in scene order, its quadtree in preorder: a byte
+ *   (1 when the node has four children) and the node's radiosity, six
+ *   f64 (front r g b, back r g b).
+ *
+ * Links are not saved: rendering needs only the leaves' radiosity, and
+ * the vertices are smoothed again after loading (the same code, so the
+ * same values).  The fingerprint is FNV-1a over every primitive's kind,
+ * shape numbers, transform and the texture values radiosity reads
+ * (pigment colour, diffuse, emission); the camera, lights and other
+ * finish values are left out, since they do not change the solution.
+ * Loading a file whose fingerprint differs is an error: its quadtrees
+ * would belong to other surfaces.
+ */
+#include "radiosity/radiosity.h"
+
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define MAGIC "ZRRADSOL"
+#define VERSION 1u
+
+/* ---- fingerprint ---- */
+
+static uint64_t fnv(uint64_t h, const void *data, size_t n) {
+  const unsigned char *p = data;
+  for (size_t i = 0; i < n; i++) {
+    h ^= p[i];
+    h *= 0x100000001B3ull;
+  }
+  return h;
+}
+
+static uint64_t fnv_d(uint64_t h, double v) {
+  v = v == 0.0 ? 0.0 : v; /* -0 and 0 are the same geometry */
+  return fnv(h, &v, sizeof v);
+}
+
+static uint64_t fnv_v(uint64_t h, zr_vec3 v) {
+  return fnv_d(fnv_d(fnv_d(h, v.x), v.y), v.z);
+}
+
+static uint64_t hash_shape(uint64_t h, const zr_object *o) {
+  switch (o->kind) {
+  case ZR_OBJ_SPHERE:
+    return fnv_d(fnv_v(h, o->u.sphere.centre), o->u.sphere.radius);
+  case ZR_OBJ_BOX:
+    return fnv_v(fnv_v(h, o->u.box.corner1), o->u.box.corner2);
+  case ZR_OBJ_PLANE:
+    return fnv_d(fnv_v(h, o->u.plane.normal), o->u.plane.distance);
+  case ZR_OBJ_TRIANGLE:
+    for (int i = 0; i < 3; i++)
+      h = fnv_v(h, o->u.triangle.p[i]);
+    return h;
+  case ZR_OBJ_CYLINDER:
+    h = fnv_v(fnv_v(h, o->u.cylinder.base), o->u.cylinder.cap);
+    return fnv_d(fnv_d(h, o->u.cylinder.radius), o->u.cylinder.open);
+  case ZR_OBJ_CONE:
+    h = fnv_v(fnv_v(h, o->u.cone.base), o->u.cone.cap);
+    h = fnv_d(fnv_d(h, o->u.cone.base_radius), o->u.cone.cap_radius);
+    return fnv_d(h, o->u.cone.open);
+  case ZR_OBJ_DISC:
+    h = fnv_v(fnv_v(h, o->u.disc.centre), o->u.disc.normal);
+    return fnv_d(fnv_d(h, o->u.disc.radius), o->u.disc.hole_radius);
+  default:
+    return h;
+  }
+}
+
+uint64_t zr__rad_fingerprint(const zr_scene *scene) {
+  uint64_t h = 0xCBF29CE484222325ull;
+  h = fnv_d(h, (double)scene->n_primitives);
+  for (size_t i = 0; i < scene->n_primitives; i++) {
+    const zr_object *o = scene->primitives[i];
+    h = fnv_d(h, (double)o->kind);
+    h = hash_shape(h, o);
+    if (o->transform != NULL)
+      for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 4; c++)
+          h = fnv_d(h, o->transform->m[r][c]);
+    const zr_colour pc = o->texture->pigment->colour;
+    const zr_finish *f = o->texture->finish;
+    h = fnv_d(fnv_d(fnv_d(h, pc.r), pc.g), pc.b);
+    h = fnv_d(h, f->diffuse);
+    h = fnv_d(fnv_d(fnv_d(h, f->emission.r), f->emission.g),
+              f->emission.b);
+  }
+  return h;
+}
+
+/* ---- little-endian helpers ---- */
+
+static void put_u64(FILE *f, uint64_t v) {
+  unsigned char b[8];
+  for (int i = 0; i < 8; i++)
+    b[i] = (unsigned char)(v >> (8 * i));
+  fwrite(b, 1, 8, f);
+}
+static void put_u32(FILE *f, uint32_t v) {
+  unsigned char b[4];
+  for (int i = 0; i < 4; i++)
+    b[i] = (unsigned char)(v >> (8 * i));
+  fwrite(b, 1, 4, f);
+}
+static void put_f64(FILE *f, double d) {
+  uint64_t v;
+  memcpy(&v, &d, sizeof v);
+  put_u64(f, v);
+}
+
+static bool get_u64(FILE *f, uint64_t *v) {
+  unsigned char b[8];
+  if (fread(b, 1, 8, f) != 8)
+    return false;
+  *v = 0;
+  for (int i = 0; i < 8; i++)
+    *v |= (uint64_t)b[i] << (8 * i);
+  return true;
+}
+static bool get_u32(FILE *f, uint32_t *v) {
+  unsigned char b[4];
+  if (fread(b, 1, 4, f) != 4)
+    return false;
+  *v = (uint32_t)b[0] | (uint32_t)b[1] << 8 | (uint32_t)b[2] << 16 |
+       (uint32_t)b[3] << 24;
+  return true;
+}
+static bool get_f64(FILE *f, double *d) {
+  uint64_t v;
+  if (!get_u64(f, &v))
+    return false;
+  memcpy(d, &v, sizeof v);
+  return true;
+}
+
+/* ---- save ---- */
+
+static void save_tree(FILE *f, const zr_radiosity *rad, int32_t n) {
+  const zr__rad_node *node = &rad->nodes[n];
+  fputc(node->child >= 0, f);
+  for (int side = 0; side < 2; side++)
+    for (int c = 0; c < 3; c++)
+      put_f64(f, node->b[side][c]);
+  if (node->child >= 0)
+    for (int k = 0; k < 4; k++)
+      save_tree(f, rad, node->child + k);
+}
+
+ZR_API zr_status zr_radiosity_save(zr_context *ctx, const zr_radiosity *rad,
+                                   const char *path) {
+  FILE *f = fopen(path, "wb");
+  if (f == NULL)
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EIO, NULL,
+                    "radiosity: cannot write '%s': %s", path,
+                    strerror(errno));
+  fwrite(MAGIC, 1, 8, f);
+  put_u32(f, VERSION);
+  put_u64(f, rad->fingerprint);
+  put_u32(f, (uint32_t)rad->n_surfs);
+  put_f64(f, rad->params.bf_eps);
+  put_f64(f, rad->params.area_eps);
+  put_u32(f, (uint32_t)rad->params.visibility_rays);
+  put_u32(f, (uint32_t)rad->params.uniform);
+  put_u32(f, (uint32_t)rad->params.shooting);
+  put_u64(f, rad->stats.links);
+  put_u32(f, (uint32_t)rad->stats.refine_rounds);
+  put_u32(f, (uint32_t)rad->stats.iterations);
+  put_f64(f, rad->stats.residual);
+  for (size_t s = 0; s < rad->n_surfs; s++)
+    save_tree(f, rad, rad->surfs[s].root);
+  bool bad = ferror(f) != 0;
+  if (fclose(f) != 0 || bad)
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EIO, NULL,
+                    "radiosity: error writing '%s'", path);
+  return ZR_OK;
+}
+
+/* ---- load ---- */
+
+/* Reads node n's radiosity and subtree; false on a short or bad file. */
+static bool load_tree(FILE *f, zr_radiosity *rad, int32_t n, int depth) {
+  int flag = fgetc(f);
+  if (flag != 0 && flag != 1)
+    return false;
+  for (int side = 0; side < 2; side++)
+    for (int c = 0; c < 3; c++) {
+      double v;
+      if (!get_f64(f, &v) || !isfinite(v))
+        return false;
+      rad->nodes[n].b[side][c] = v;
+    }
+  if (flag == 0)
+    return true;
+  if (depth >= ZR__RAD_DEPTH || !zr__rad_subdivide(rad, n))
+    return false;
+  for (int k = 0; k < 4; k++)
+    if (!load_tree(f, rad, rad->nodes[n].child + k, depth + 1))
+      return false;
+  return true;
+}
+
+static zr_status read_header(zr_context *ctx, FILE *f, const char *path,
+                             zr_radiosity *rad) {
+  char magic[8];
+  uint32_t version, n_surfs, vis, uniform, shooting, rounds, its;
+  uint64_t fp, links;
+  if (fread(magic, 1, 8, f) != 8 || memcmp(magic, MAGIC, 8) != 0)
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
+                    "radiosity: '%s' is not a zRcube radiosity file", path);
+  if (!get_u32(f, &version) || version != VERSION)
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
+                    "radiosity: '%s' has an unknown version", path);
+  if (!get_u64(f, &fp) || !get_u32(f, &n_surfs))
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
+                    "radiosity: '%s' is truncated", path);
+  if (fp != rad->fingerprint || n_surfs != rad->n_surfs)
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, NULL,
+                    "radiosity: '%s' was solved for another scene "
+                    "(fingerprint %016llx, this scene %016llx)",
+                    path, (unsigned long long)fp,
+                    (unsigned long long)rad->fingerprint);
+  if (!get_f64(f, &rad->params.bf_eps) ||
+      !get_f64(f, &rad->params.area_eps) || !get_u32(f, &vis) ||
+      !get_u32(f, &uniform) || !get_u32(f, &shooting) ||
+      !get_u64(f, &links) || !get_u32(f, &rounds) || !get_u32(f, &its) ||
+      !get_f64(f, &rad->stats.residual))
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
+                    "radiosity: '%s' is truncated", path);
+  rad->params.visibility_rays = (int)vis;
+  rad->params.uniform = (int)uniform;
+  rad->params.shooting = (int)shooting;
+  rad->stats.links = (size_t)links;
+  rad->stats.refine_rounds = (int)rounds;
+  rad->stats.iterations = (int)its;
+  return ZR_OK;
+}
+
+ZR_API zr_status zr_radiosity_load(zr_context *ctx, const zr_scene *scene,
+                                   const char *path, zr_radiosity **out) {
+  *out = NULL;
+  FILE *f = fopen(path, "rb");
+  if (f == NULL)
+    return zr__diag(ctx, ZR_DIAG_ERROR,
+                    errno == ENOENT ? ZR_ENOTFOUND : ZR_EIO, NULL,
+                    "radiosity: cannot read '%s': %s", path,
+                    strerror(errno));
+  zr_radiosity *rad;
+  zr_status st = zr__rad_create(ctx, scene, NULL, &rad);
+  if (st == ZR_OK)
+    st = read_header(ctx, f, path, rad);
+  for (size_t s = 0; st == ZR_OK && s < rad->n_surfs; s++)
+    if (!load_tree(f, rad, rad->surfs[s].root, 0))
+      st = zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
+                    "radiosity: '%s' is truncated or corrupt", path);
+  if (st == ZR_OK && fgetc(f) != EOF)
+    st = zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
+                  "radiosity: '%s' has data after its last quadtree", path);
+  fclose(f);
+  if (st != ZR_OK) {
+    zr_radiosity_free(rad);
+    return st;
+  }
+  zr__rad_smooth(rad);
+  zr__rad_count(rad);
+  *out = rad;
+  return ZR_OK;
+}

@@ -1,0 +1,338 @@
+/*
+ * solve.c - solving the hierarchical radiosity system on its links, and
+ * the energy bookkeeping that checks it.
+ *
+ * Gathering with push-pull (Hanrahan, Salzman and Aupperle, SIGGRAPH
+ * 1991, section 4): every link carries rho_p F_pq V_pq B_q from its source
+ * node into the receiver node at whatever level it is attached; then one
+ * sweep down each quadtree pushes what a node gathered into its children
+ * (radiosity is per unit area, so a parent's share is simply added), and
+ * the way back up pulls the area mean of the children into the parent,
+ * so every node again holds the mean of its subtree, B = E + gathered.
+ * One gather plus push-pull is a Jacobi sweep; it is repeated until the
+ * radiosity moved in a sweep, summed as power over all leaves, falls
+ * below the residual threshold times the emitted power.
+ *
+ * Southwell shooting (the progressive refinement of Cohen, Chen, Wallace
+ * and Greenberg, SIGGRAPH 1988, on the hierarchy): each leaf keeps the
+ * radiosity it has received but not yet passed on.  A shot takes the
+ * surface side with the most unshot power, sends its unshot radiosity
+ * along every link leaving that surface side (as a pulled area mean at
+ * the node each link starts from), zeroes it, and pushes what receivers
+ * got down to their leaves, where it becomes both radiosity and new
+ * unshot radiosity.  It stops when the largest unshot power falls below
+ * the residual threshold; nothing is lost, since what remains unshot is
+ * what the threshold allows.
+ *
+ * Energy.  A final gather also collects the incident radiosity H (the
+ * irradiance over pi) and the sum of F * V per leaf side (its closure,
+ * 1 inside a closed scene); the absorbed power is the sum over leaf
+ * sides of A (1 - rho) H.  In a closed scene that equals the power its
+ * inner sides emit: a check that form factors, visibility and solution
+ * together conserve energy.
+ */
+#include "radiosity/radiosity.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+/* Clears what links deposit at every node. */
+static void clear_gathered(zr_radiosity *rad) {
+  for (size_t n = 0; n < rad->n_nodes; n++) {
+    zr__rad_node *node = &rad->nodes[n];
+    memset(node->bg, 0, sizeof node->bg);
+    memset(node->hg, 0, sizeof node->hg);
+    node->closure[0] = node->closure[1] = 0.0;
+  }
+}
+
+/* Adds link l's transfer of src_b (a radiosity triple) to its receiver. */
+static void transfer(zr_radiosity *rad, const zr__rad_link *l,
+                     const double src_b[3]) {
+  zr__rad_node *p = &rad->nodes[l->recv];
+  const double *rho = rad->surfs[p->surf].rho;
+  for (int c = 0; c < 3; c++) {
+    double h = l->ff * src_b[c];
+    p->hg[l->rside][c] += h;
+    p->bg[l->rside][c] += rho[c] * h;
+  }
+  p->closure[l->rside] += l->ff;
+}
+
+static void gather(zr_radiosity *rad) {
+  clear_gathered(rad);
+  for (size_t i = 0; i < rad->n_links; i++) {
+    const zr__rad_link *l = &rad->links[i];
+    if (!l->dead)
+      transfer(rad, l, rad->nodes[l->src].b[l->sside]);
+  }
+}
+
+/*
+ * Push-pull below node n for one side: down is what the ancestors
+ * gathered; the subtree's new area mean goes into b and out.  *change
+ * adds the area-weighted change of the leaves (largest channel).
+ */
+static void push_pull(zr_radiosity *rad, int32_t n, int side,
+                      const double down[3], double up[3], double *change) {
+  zr__rad_node *node = &rad->nodes[n];
+  double d[3];
+  for (int c = 0; c < 3; c++)
+    d[c] = down[c] + node->bg[side][c];
+  if (node->child < 0) {
+    const double *e = rad->surfs[node->surf].emission;
+    double diff = 0.0;
+    for (int c = 0; c < 3; c++) {
+      up[c] = e[c] + d[c];
+      diff = fmax(diff, fabs(up[c] - node->b[side][c]));
+      node->b[side][c] = up[c];
+    }
+    *change += node->area * diff;
+    return;
+  }
+  double sum[3] = {0, 0, 0}, area = 0.0;
+  int32_t first = node->child;
+  for (int k = 0; k < 4; k++) {
+    double cu[3];
+    push_pull(rad, first + k, side, d, cu, change);
+    double a = rad->nodes[first + k].area;
+    for (int c = 0; c < 3; c++)
+      sum[c] += a * cu[c];
+    area += a;
+  }
+  node = &rad->nodes[n];
+  for (int c = 0; c < 3; c++) {
+    up[c] = area > 0.0 ? sum[c] / area : 0.0;
+    node->b[side][c] = up[c];
+  }
+}
+
+static double push_pull_all(zr_radiosity *rad) {
+  double change = 0.0, zero[3] = {0, 0, 0}, up[3];
+  for (size_t s = 0; s < rad->n_surfs; s++)
+    for (int side = 0; side < 2; side++)
+      push_pull(rad, rad->surfs[s].root, side, zero, up, &change);
+  return change;
+}
+
+static void solve_gather(zr_radiosity *rad) {
+  int it = 0;
+  double residual = 0.0;
+  while (it < rad->params.max_iterations) {
+    gather(rad);
+    residual = push_pull_all(rad) / rad->power_ref;
+    it++;
+    if (!(residual > rad->params.residual))
+      break;
+  }
+  rad->stats.iterations = it;
+  rad->stats.residual = residual;
+}
+
+/* ---- Southwell shooting ---- */
+
+/* Pulls field (b or un) up: interior nodes get their children's mean. */
+static void pull(zr_radiosity *rad, int32_t n, bool unshot) {
+  zr__rad_node *node = &rad->nodes[n];
+  if (node->child < 0)
+    return;
+  double sum[2][3] = {{0}}, area = 0.0;
+  for (int k = 0; k < 4; k++) {
+    int32_t c = rad->nodes[n].child + k;
+    pull(rad, c, unshot);
+    const zr__rad_node *ch = &rad->nodes[c];
+    for (int side = 0; side < 2; side++)
+      for (int j = 0; j < 3; j++)
+        sum[side][j] += ch->area * (unshot ? ch->un : ch->b)[side][j];
+    area += ch->area;
+  }
+  node = &rad->nodes[n];
+  for (int side = 0; side < 2; side++)
+    for (int j = 0; j < 3; j++)
+      (unshot ? node->un : node->b)[side][j] =
+          area > 0.0 ? sum[side][j] / area : 0.0;
+}
+
+/* Pushes what a shot deposited down to the leaves of n's subtree. */
+static void push_shot(zr_radiosity *rad, int32_t n, int side,
+                      const double down[3]) {
+  zr__rad_node *node = &rad->nodes[n];
+  double d[3];
+  for (int c = 0; c < 3; c++) {
+    d[c] = down[c] + node->bg[side][c];
+    node->bg[side][c] = 0.0;
+  }
+  if (node->child < 0) {
+    for (int c = 0; c < 3; c++) {
+      node->b[side][c] += d[c];
+      node->un[side][c] += d[c];
+    }
+    return;
+  }
+  for (int k = 0; k < 4; k++)
+    push_shot(rad, rad->nodes[n].child + k, side, d);
+}
+
+static void zero_unshot(zr_radiosity *rad, int32_t n, int side) {
+  zr__rad_node *node = &rad->nodes[n];
+  memset(node->un[side], 0, sizeof node->un[side]);
+  if (node->child >= 0)
+    for (int k = 0; k < 4; k++)
+      zero_unshot(rad, node->child + k, side);
+}
+
+/* The surface side with the most unshot power; its power. */
+static double pick_shooter(zr_radiosity *rad, size_t *surf, int *side) {
+  double best = -1.0;
+  for (size_t s = 0; s < rad->n_surfs; s++) {
+    pull(rad, rad->surfs[s].root, true);
+    const zr__rad_node *root = &rad->nodes[rad->surfs[s].root];
+    for (int k = 0; k < 2; k++) {
+      double p = root->area * zr__rad_max3(root->un[k]);
+      if (p > best) {
+        best = p;
+        *surf = s;
+        *side = k;
+      }
+    }
+  }
+  return best;
+}
+
+/* Link indices grouped by source surface: order[start[s]..start[s+1]). */
+static zr_status links_by_source(const zr_radiosity *rad, size_t **order,
+                                 size_t **start) {
+  *start = calloc(rad->n_surfs + 2, sizeof **start);
+  *order = malloc((rad->n_links + 1) * sizeof **order);
+  if (*start == NULL || *order == NULL)
+    return ZR_ENOMEM;
+  for (size_t i = 0; i < rad->n_links; i++)
+    (*start)[rad->nodes[rad->links[i].src].surf + 2]++;
+  for (size_t s = 2; s < rad->n_surfs + 2; s++)
+    (*start)[s] += (*start)[s - 1];
+  for (size_t i = 0; i < rad->n_links; i++)
+    (*order)[(*start)[rad->nodes[rad->links[i].src].surf + 1]++] = i;
+  return ZR_OK;
+}
+
+static void shoot(zr_radiosity *rad, const size_t *order,
+                  const size_t *start, size_t s, int side) {
+  for (size_t k = start[s]; k < start[s + 1]; k++) {
+    const zr__rad_link *l = &rad->links[order[k]];
+    if (!l->dead && l->sside == side)
+      transfer(rad, l, rad->nodes[l->src].un[side]);
+  }
+  zero_unshot(rad, rad->surfs[s].root, side);
+  double zero[3] = {0, 0, 0};
+  for (size_t r = 0; r < rad->n_surfs; r++)
+    for (int k = 0; k < 2; k++)
+      push_shot(rad, rad->surfs[r].root, k, zero);
+}
+
+static zr_status solve_shooting(zr_radiosity *rad) {
+  size_t *order, *start;
+  zr_status st = links_by_source(rad, &order, &start);
+  if (st == ZR_OK) {
+    clear_gathered(rad);
+    for (size_t n = 0; n < rad->n_nodes; n++) {
+      zr__rad_node *node = &rad->nodes[n];
+      const double *e = rad->surfs[node->surf].emission;
+      for (int side = 0; side < 2; side++)
+        for (int c = 0; c < 3; c++)
+          node->b[side][c] = node->un[side][c] =
+              node->child < 0 ? e[c] : 0.0;
+    }
+    int it = 0;
+    double residual = 0.0;
+    while (it < rad->params.max_iterations) {
+      size_t s = 0;
+      int side = 0;
+      residual = pick_shooter(rad, &s, &side) / rad->power_ref;
+      if (!(residual > rad->params.residual))
+        break;
+      shoot(rad, order, start, s, side);
+      it++;
+    }
+    for (size_t s = 0; s < rad->n_surfs; s++)
+      pull(rad, rad->surfs[s].root, false);
+    rad->stats.iterations = it;
+    rad->stats.residual = residual;
+  }
+  free(order);
+  free(start);
+  return st;
+}
+
+zr_status zr__rad_solve(zr_radiosity *rad, zr_context *ctx) {
+  if (!(rad->power_ref > 0.0)) {
+    /* Nothing emits: the solution is dark everywhere, exactly. */
+    for (size_t n = 0; n < rad->n_nodes; n++)
+      memset(rad->nodes[n].b, 0, sizeof rad->nodes[n].b);
+    rad->stats.iterations = 0;
+    rad->stats.residual = 0.0;
+    return ZR_OK;
+  }
+  if (!rad->params.shooting) {
+    solve_gather(rad);
+    return ZR_OK;
+  }
+  zr_status st = solve_shooting(rad);
+  if (st != ZR_OK)
+    return zr__diag(ctx, ZR_DIAG_ERROR, st, NULL,
+                    "radiosity: out of memory while shooting");
+  return ZR_OK;
+}
+
+/* ---- energy ---- */
+
+typedef struct energy_sums {
+  double emitted, absorbed;
+  double closure_area, closure_sum, closure_min, closure_max;
+} energy_sums;
+
+static void energy_leaf(const zr_radiosity *rad, const zr__rad_node *node,
+                        const double h[3], double closure, energy_sums *e) {
+  const zr__rad_surface *s = &rad->surfs[node->surf];
+  for (int c = 0; c < 3; c++) {
+    e->emitted += node->area * s->emission[c] / 3.0;
+    e->absorbed += node->area * (1.0 - s->rho[c]) * h[c] / 3.0;
+  }
+  if (closure > 0.0) {
+    e->closure_area += node->area;
+    e->closure_sum += node->area * closure;
+    e->closure_min = fmin(e->closure_min, closure);
+    e->closure_max = fmax(e->closure_max, closure);
+  }
+}
+
+static void energy_walk(const zr_radiosity *rad, int32_t n, int side,
+                        const double down[3], double closure,
+                        energy_sums *e) {
+  const zr__rad_node *node = &rad->nodes[n];
+  double h[3];
+  for (int c = 0; c < 3; c++)
+    h[c] = down[c] + node->hg[side][c];
+  closure += node->closure[side];
+  if (node->child < 0) {
+    energy_leaf(rad, node, h, closure, e);
+    return;
+  }
+  for (int k = 0; k < 4; k++)
+    energy_walk(rad, node->child + k, side, h, closure, e);
+}
+
+void zr__rad_energy(zr_radiosity *rad) {
+  gather(rad);
+  energy_sums e = {0.0, 0.0, 0.0, 0.0, INFINITY, 0.0};
+  double zero[3] = {0, 0, 0};
+  for (size_t s = 0; s < rad->n_surfs; s++)
+    for (int side = 0; side < 2; side++)
+      energy_walk(rad, rad->surfs[s].root, side, zero, 0.0, &e);
+  rad->stats.emitted_power = e.emitted;
+  rad->stats.absorbed_power = e.absorbed;
+  rad->stats.closure_mean =
+      e.closure_area > 0.0 ? e.closure_sum / e.closure_area : 0.0;
+  rad->stats.closure_min = e.closure_area > 0.0 ? e.closure_min : 0.0;
+  rad->stats.closure_max = e.closure_max;
+  clear_gathered(rad);
+}

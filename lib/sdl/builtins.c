@@ -1,0 +1,382 @@
+/*
+ * builtins.c - the built-in functions of the scene language that go
+ * beyond arithmetic: comparisons and truth, rotations of vectors,
+ * strings, random streams and arrays.
+ *
+ * Semantics are the reference manual's (r3_3): "Float Operators" (two
+ * floats are equal when they differ by less than 1e-10, and a value
+ * within 1e-10 of zero is false), "Float Functions", "Vector Functions"
+ * (vrotate turns about x, then y, then z by degrees, left-handed, like
+ * the rotate modifier; vaxis_rotate turns about an arbitrary axis the
+ * same way), "String Functions" (str's width and precision, vstr's
+ * dimension clipping, substr's one-based positions) and "Array
+ * Identifiers" (up to five dimensions, row-major initialisers).
+ *
+ * rand() streams: seed(n) starts a splitmix64 generator (Steele, Lea and
+ * Flood, "Fast splittable pseudorandom number generators", OOPSLA 2014)
+ * at n; each rand() returns the top 53 bits of the next output as a float
+ * in [0, 1).  The stream is deterministic for a given seed, as POV-Ray's
+ * is, but it is not POV-Ray's sequence.
+ *
+ * Strings and arrays live in the scene's arena: they are values that
+ * identifiers keep until the scene is freed.
+ */
+#include "config.h"
+
+#include <ctype.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/strbuf.h"
+#include "pov-parse.h"
+#include "sdl/sdl.h"
+
+/* The reference manual's epsilon for truth and equality. */
+#define EPSILON 1e-10
+
+/* The largest array the language may make: more elements than this is a
+   typing mistake rather than a scene. */
+#define MAX_ARRAY_ELEMENTS 100000000u
+
+bool zr__sdl_truth(zr_sdl_parser *p, const zr_sdl_expr *e,
+                   const zr_sdl_loc *loc, bool *out) {
+  double v;
+  if (!zr__sdl_want_float(p, e, loc, &v))
+    return false;
+  *out = fabs(v) > EPSILON;
+  return true;
+}
+
+bool zr__sdl_compare(zr_sdl_parser *p, int op, const zr_sdl_expr *a,
+                     const zr_sdl_expr *b, const zr_sdl_loc *loc,
+                     zr_sdl_expr *out) {
+  double x, y;
+  if (!zr__sdl_want_float(p, a, loc, &x) ||
+      !zr__sdl_want_float(p, b, loc, &y))
+    return false;
+  bool r;
+  switch (op) {
+  case '<': r = x < y; break;
+  case '>': r = x > y; break;
+  case T_LE: r = x <= y; break;
+  case T_GE: r = x >= y; break;
+  case '=': r = fabs(x - y) < EPSILON; break;
+  case T_NE: r = fabs(x - y) >= EPSILON; break;
+  case '&': r = fabs(x) > EPSILON && fabs(y) > EPSILON; break;
+  default: r = fabs(x) > EPSILON || fabs(y) > EPSILON; break;
+  }
+  *out = zr__sdl_float(r ? 1 : 0);
+  return true;
+}
+
+static zr_sdl_expr from_vec3(zr_vec3 v) { return zr__sdl_vec(v.x, v.y, v.z); }
+
+bool zr__sdl_vrotate(zr_sdl_parser *p, const zr_sdl_expr *v,
+                     const zr_sdl_expr *r, const zr_sdl_loc *loc,
+                     zr_sdl_expr *out) {
+  zr_vec3 a, degrees;
+  if (!zr__sdl_want_vector(p, v, loc, &a) ||
+      !zr__sdl_want_vector(p, r, loc, &degrees))
+    return false;
+  zr_transform t;
+  zr__transform_identity(&t);
+  zr__transform_rotate(&t, degrees);
+  *out = from_vec3(zr__xform_point(t.m, a));
+  return true;
+}
+
+bool zr__sdl_vaxis_rotate(zr_sdl_parser *p, const zr_sdl_expr *v,
+                          const zr_sdl_expr *axis, const zr_sdl_expr *deg,
+                          const zr_sdl_loc *loc, zr_sdl_expr *out) {
+  zr_vec3 a, k;
+  double degrees;
+  if (!zr__sdl_want_vector(p, v, loc, &a) ||
+      !zr__sdl_want_vector(p, axis, loc, &k) ||
+      !zr__sdl_want_float(p, deg, loc, &degrees))
+    return false;
+  if (zr_v3_len(k) == 0) {
+    zr__sdl_error(p, ZR_ESCENE, loc, "vaxis_rotate: the axis is zero");
+    return false;
+  }
+  /* Rodrigues' formula; its sense agrees with rotate's (rotate z*90
+     takes x to y), so vaxis_rotate(A, y, F) = vrotate(A, y*F). */
+  k = zr_v3_norm(k);
+  double th = degrees * 3.14159265358979323846 / 180.0;
+  double c = cos(th), s = sin(th);
+  zr_vec3 r = zr_v3_add(zr_v3_add(zr_v3_scale(a, c),
+                                  zr_v3_scale(zr_v3_cross(k, a), s)),
+                        zr_v3_scale(k, zr_v3_dot(k, a) * (1 - c)));
+  *out = from_vec3(r);
+  return true;
+}
+
+/* ---- strings ---- */
+
+const char *zr__sdl_strdup(zr_sdl_parser *p, const char *s, size_t n) {
+  char *r = zr__sdl_alloc(p, n + 1);
+  if (!r)
+    return NULL;
+  memcpy(r, s, n);
+  r[n] = '\0';
+  return r;
+}
+
+const char *zr__sdl_concat(zr_sdl_parser *p, const char *a, const char *b) {
+  size_t na = strlen(a), nb = strlen(b);
+  char *r = zr__sdl_alloc(p, na + nb + 1);
+  if (!r)
+    return NULL;
+  memcpy(r, a, na);
+  memcpy(r + na, b, nb + 1);
+  return r;
+}
+
+/* Formats v as str(v, width, prec) does into sb. */
+static void format_float(zr_strbuf *sb, double v, double width,
+                         double prec) {
+  int w = (int)fabs(width);
+  int pr = prec < 0 ? 6 : (int)prec;
+  if (w > 255)
+    w = 255;
+  if (pr > 50)
+    pr = 50;
+  if (width < 0)
+    zr__strbuf_printf(sb, "%0*.*f", w, pr, v);
+  else
+    zr__strbuf_printf(sb, "%*.*f", w, pr, v);
+}
+
+static const char *take(zr_sdl_parser *p, zr_strbuf *sb) {
+  const char *r = sb->failed ? NULL
+                             : zr__sdl_strdup(p, zr__strbuf_cstr(sb), sb->len);
+  if (sb->failed)
+    zr__sdl_error(p, ZR_ENOMEM, NULL, "out of memory");
+  zr__strbuf_free(sb);
+  return r;
+}
+
+const char *zr__sdl_str(zr_sdl_parser *p, double v, double width,
+                        double prec, const zr_sdl_loc *loc) {
+  (void)loc;
+  zr_strbuf sb;
+  zr__strbuf_init(&sb);
+  format_float(&sb, v, width, prec);
+  return take(p, &sb);
+}
+
+const char *zr__sdl_vstr(zr_sdl_parser *p, double n, const zr_sdl_expr *v,
+                         const char *sep, double width, double prec,
+                         const zr_sdl_loc *loc) {
+  int dims = n < 2 ? 2 : n > 5 ? 5 : (int)n;
+  if (v->dim > dims) {
+    zr__sdl_error(p, ZR_ESCENE, loc,
+                  "vstr: the vector has %d components, more than %d",
+                  v->dim, dims);
+    return NULL;
+  }
+  zr_strbuf sb;
+  zr__strbuf_init(&sb);
+  for (int i = 0; i < dims; i++) {
+    double c = v->dim == 1 ? v->v[0] : i < v->dim ? v->v[i] : 0.0;
+    if (i > 0)
+      zr__strbuf_puts(&sb, sep);
+    format_float(&sb, c, width, prec);
+  }
+  return take(p, &sb);
+}
+
+const char *zr__sdl_substr(zr_sdl_parser *p, const char *s, double start,
+                           double len, const zr_sdl_loc *loc) {
+  size_t n = strlen(s);
+  if (start < 1 || len < 0 || start + len - 1 > (double)n) {
+    zr__sdl_error(p, ZR_ESCENE, loc,
+                  "substr: position %g and length %g are outside the "
+                  "string of %zu characters",
+                  start, len, n);
+    return NULL;
+  }
+  return zr__sdl_strdup(p, s + (size_t)start - 1, (size_t)len);
+}
+
+const char *zr__sdl_chr(zr_sdl_parser *p, double code,
+                        const zr_sdl_loc *loc) {
+  if (!(code >= 1 && code <= 255)) {
+    zr__sdl_error(p, ZR_ESCENE, loc,
+                  "chr: %g is not a character code from 1 to 255", code);
+    return NULL;
+  }
+  char c = (char)(unsigned char)code;
+  return zr__sdl_strdup(p, &c, 1);
+}
+
+const char *zr__sdl_strcase(zr_sdl_parser *p, const char *s, bool upper) {
+  size_t n = strlen(s);
+  char *r = zr__sdl_alloc(p, n + 1);
+  if (!r)
+    return NULL;
+  for (size_t i = 0; i <= n; i++)
+    r[i] = (char)(upper ? toupper((unsigned char)s[i])
+                        : tolower((unsigned char)s[i]));
+  return r;
+}
+
+bool zr__sdl_string_float(zr_sdl_parser *p, int func, const char *s,
+                          const zr_sdl_loc *loc, zr_sdl_expr *out) {
+  (void)loc;
+  switch (func) {
+  case T_ASC:
+    *out = zr__sdl_float((unsigned char)s[0]);
+    return true;
+  case T_STRLEN:
+    *out = zr__sdl_float((double)strlen(s));
+    return true;
+  case T_VAL:
+    *out = zr__sdl_float(strtod(s, NULL));
+    return true;
+  default:
+    *out = zr__sdl_float(zr__sdl_file_exists(p, s) ? 1 : 0);
+    return true;
+  }
+}
+
+/* ---- random streams ---- */
+
+const zr_sdl_rand *zr__sdl_seed(zr_sdl_parser *p, double n) {
+  zr_sdl_rand *r = zr__sdl_alloc(p, sizeof *r);
+  if (r)
+    r->state = (unsigned long long)(long long)n;
+  return r;
+}
+
+double zr__sdl_rand(const zr_sdl_rand *stream) {
+  /* The stream belongs to the identifier's value, which is the one
+     thing a rand() call is meant to change. */
+  zr_sdl_rand *r = (zr_sdl_rand *)stream;
+  uint64_t z = (r->state += 0x9E3779B97F4A7C15ull);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  z ^= z >> 31;
+  return (double)(z >> 11) * (1.0 / 9007199254740992.0);
+}
+
+/* ---- arrays ---- */
+
+static zr_sdl_array *array_alloc(zr_sdl_parser *p, int n_dims,
+                                 const int *dims, size_t n) {
+  zr_sdl_array *a = zr__sdl_alloc(p, sizeof *a);
+  if (!a)
+    return NULL;
+  memset(a, 0, sizeof *a);
+  a->n_dims = n_dims;
+  memcpy(a->dims, dims, (size_t)n_dims * sizeof *dims);
+  a->n = n;
+  a->elems = zr__sdl_alloc(p, n * sizeof *a->elems);
+  a->set = zr__sdl_alloc(p, n * sizeof *a->set);
+  if (!a->elems || !a->set)
+    return NULL;
+  memset(a->elems, 0, n * sizeof *a->elems);
+  memset(a->set, 0, n * sizeof *a->set);
+  return a;
+}
+
+zr_sdl_array *zr__sdl_array_new(zr_sdl_parser *p, const zr_sdl_list *dims,
+                                const zr_sdl_loc *loc) {
+  if (dims->n > ZR_SDL_MAX_DIMS) {
+    zr__sdl_error(p, ZR_ESYNTAX, loc, "an array has at most %d dimensions",
+                  ZR_SDL_MAX_DIMS);
+    return NULL;
+  }
+  int d[ZR_SDL_MAX_DIMS];
+  double n = 1;
+  for (int i = 0; i < dims->n; i++) {
+    if (!(dims->v[i] >= 1) || dims->v[i] > MAX_ARRAY_ELEMENTS) {
+      zr__sdl_error(p, ZR_ESCENE, loc, "an array dimension must be from 1 "
+                    "to %u, not %g", MAX_ARRAY_ELEMENTS, dims->v[i]);
+      return NULL;
+    }
+    d[i] = (int)dims->v[i];
+    n *= d[i];
+  }
+  if (n > MAX_ARRAY_ELEMENTS) {
+    zr__sdl_error(p, ZR_ELIMIT, loc, "an array of more than %u elements",
+                  MAX_ARRAY_ELEMENTS);
+    return NULL;
+  }
+  return array_alloc(p, dims->n, d, (size_t)n);
+}
+
+bool zr__sdl_init_add(zr_sdl_parser *p, const zr_sdl_value *v,
+                      const zr_sdl_loc *loc) {
+  if (p->n_init == p->cap_init) {
+    size_t cap = p->cap_init ? p->cap_init * 2 : 64;
+    zr_sdl_value *init = realloc(p->init, cap * sizeof *init);
+    if (!init) {
+      zr__sdl_error(p, ZR_ENOMEM, loc, "out of memory");
+      return false;
+    }
+    p->init = init;
+    p->cap_init = cap;
+  }
+  p->init[p->n_init++] = *v;
+  return true;
+}
+
+bool zr__sdl_array_init(zr_sdl_parser *p, zr_sdl_array *a, size_t start,
+                        const zr_sdl_loc *loc) {
+  size_t count = p->n_init - start;
+  if (count != a->n) {
+    zr__sdl_error(p, ZR_ESCENE, loc, "the array has %zu elements but its "
+                  "initialiser gives %zu", a->n, count);
+    return false;
+  }
+  memcpy(a->elems, p->init + start, count * sizeof *a->elems);
+  for (size_t i = 0; i < count; i++)
+    a->set[i] = true;
+  p->n_init = start;
+  return true;
+}
+
+zr_sdl_array *zr__sdl_array_copy(zr_sdl_parser *p, const zr_sdl_array *a) {
+  zr_sdl_array *c = array_alloc(p, a->n_dims, a->dims, a->n);
+  if (!c)
+    return NULL;
+  memcpy(c->elems, a->elems, a->n * sizeof *a->elems);
+  memcpy(c->set, a->set, a->n * sizeof *a->set);
+  return c;
+}
+
+bool zr__sdl_dimension_size(zr_sdl_parser *p, const zr_sdl_array *a,
+                            double dim, const zr_sdl_loc *loc,
+                            zr_sdl_expr *out) {
+  if (!(dim >= 1 && dim <= a->n_dims)) {
+    zr__sdl_error(p, ZR_ESCENE, loc, "dimension_size: the array has no "
+                  "dimension %g (it has %d)", dim, a->n_dims);
+    return false;
+  }
+  *out = zr__sdl_float(a->dims[(int)dim - 1]);
+  return true;
+}
+
+zr_sdl_value *zr__sdl_array_at(zr_sdl_parser *p, const char *name,
+                               zr_sdl_array *a, const int *index, int n,
+                               const zr_sdl_loc *loc) {
+  if (n != a->n_dims) {
+    zr__sdl_error(p, ZR_ESYNTAX, loc, "'%s' has %d dimension%s, not %d",
+                  name, a->n_dims, a->n_dims == 1 ? "" : "s", n);
+    return NULL;
+  }
+  size_t offset = 0;
+  for (int i = 0; i < n; i++) {
+    if (index[i] < 0 || index[i] >= a->dims[i]) {
+      zr__sdl_error(p, ZR_ESCENE, loc,
+                    "index %d of '%s' is out of range 0 to %d", index[i],
+                    name, a->dims[i] - 1);
+      return NULL;
+    }
+    offset = offset * (size_t)a->dims[i] + (size_t)index[i];
+  }
+  return &a->elems[offset];
+}

@@ -1,0 +1,1085 @@
+/*
+ * function.c - user-defined functions: compiler and evaluator.
+ *
+ * POV-Ray evaluates `function { ... }` bodies while rendering (patterns,
+ * isosurfaces) and while parsing (`#declare V = F(3);`), so a body is
+ * compiled once, when it is declared, into bytecode for a small stack
+ * machine over doubles, and evaluated many times.  The language is the
+ * one the reference manual gives in 3.3.1.8 "Function": | lowest, then &,
+ * one relational operator (< <= = != >= >), + -, * /, unary signs, and
+ * the float functions it lists (abs ... tanh, min and max with any number
+ * of arguments, select with 3 or 4, sum and prod with their iteration
+ * variable).  POV-Ray 3.7 itself rejects ^ and ?: inside functions (we
+ * checked with povray 3.7.0), and so do we, with a message saying so.
+ *
+ * What a name means is settled at compile time: a parameter (x y z, or
+ * u v, which the manual makes synonyms of x y; or the declared list), a
+ * sum/prod counter, a declared float (its value is captured now, as in
+ * POV-Ray), a declared vector's component (V.x), or a declared function,
+ * which becomes a call.  Functions cannot recurse (a name is declared
+ * after its body is compiled), but chains of calls are limited to
+ * ZR_FN_MAX_DEPTH, as POV-Ray documents, so runaway input cannot blow the
+ * C stack.  Each function records how many doubles an evaluation needs,
+ * callees included; the evaluator takes them from one array on its own C
+ * stack, so evaluating never allocates and threads share nothing.
+ *
+ * The body is read straight from the token array of the file being read
+ * (the grammar hands over right after the 'function' keyword, before it
+ * looks ahead), because parameter names must not be looked up as
+ * declared identifiers the way the directive engine does for bison.
+ *
+ * `internal(n)` bodies (functions.inc) map n to a routine.  The ones
+ * implemented here were matched against povray 3.7's own results (see
+ * tests/test_function.c); any other n, and pattern/pigment/transform/
+ * spline functions, still compile, so functions.inc parses, but a
+ * function that uses one reports it by name and number when called.
+ */
+#include "config.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "pov-parse.h"
+#include "sdl/function.h"
+
+/* ---- the machine ---- */
+
+typedef enum op {
+  OP_CONST, /* push consts[arg] */
+  OP_LOAD,  /* push slot[arg] */
+  OP_STORE, /* pop into slot[arg] */
+  OP_INC,   /* slot[arg] += 1 */
+  OP_JGT,   /* jump to n when slot[arg] > slot[arg + 1] */
+  OP_JUMP,  /* jump to n */
+  OP_ADD, OP_SUB, OP_MUL, OP_DIV,
+  OP_LT, OP_LE, OP_EQ, OP_NE, OP_GE, OP_GT, OP_AND, OP_OR,
+  OP_NEG, OP_NOT,
+  OP_SIN, OP_COS, OP_TAN, OP_ASIN, OP_ACOS, OP_ATAN, OP_SINH, OP_COSH,
+  OP_TANH, OP_ASINH, OP_ACOSH, OP_ATANH, OP_EXP, OP_LN, OP_LOG, OP_SQRT,
+  OP_ABS, OP_FLOOR, OP_CEIL, OP_INT, OP_DEGREES, OP_RADIANS,
+  OP_ATAN2, OP_POW, OP_MOD, OP_MIN, OP_MAX,
+  OP_SELECT3, OP_SELECT4,
+  OP_CALL,    /* callees[arg] on the top n values */
+  OP_INTERNAL /* internal function arg on the top n values */
+} op;
+
+typedef struct insn {
+  uint8_t op;
+  int32_t arg;
+  int32_t n;
+} insn;
+
+struct zr_fn {
+  int n_params;
+  int n_slots;  /* parameters, then sum/prod counters and limits */
+  int need;     /* doubles an evaluation uses, callees included */
+  int depth;    /* 1 + the deepest chain of calls below */
+  size_t n_code;
+  const insn *code;
+  const double *consts;
+  const zr_fn *const *callees;
+  const char *unsupported; /* NULL, or what is missing (see header) */
+};
+
+/* ---- internal functions (functions.inc) ---- */
+
+typedef struct internal_fn {
+  int number;
+  const char *name;
+  int params; /* x, y, z and the extra parameters functions.inc lists */
+  bool implemented;
+} internal_fn;
+
+/* Numbers, names and parameter counts as functions.inc declares them. */
+static const internal_fn internals[] = {
+    {0, "f_algbr_cyl1", 8, false},    {1, "f_algbr_cyl2", 8, false},
+    {2, "f_algbr_cyl3", 8, false},    {3, "f_algbr_cyl4", 8, false},
+    {4, "f_bicorn", 5, false},        {5, "f_bifolia", 5, false},
+    {6, "f_blob", 8, false},          {7, "f_blob2", 7, false},
+    {8, "f_boy_surface", 5, false},   {9, "f_comma", 4, false},
+    {10, "f_cross_ellipsoids", 7, false},
+    {11, "f_crossed_trough", 4, false},
+    {12, "f_cubic_saddle", 4, false}, {13, "f_cushion", 4, false},
+    {14, "f_devils_curve", 4, false}, {15, "f_devils_curve_2d", 9, false},
+    {16, "f_dupin_cyclid", 9, false}, {17, "f_ellipsoid", 6, true},
+    {18, "f_enneper", 4, false},      {19, "f_flange_cover", 7, false},
+    {20, "f_folium_surface", 6, false},
+    {21, "f_folium_surface_2d", 9, false},
+    {22, "f_glob", 4, false},         {23, "f_heart", 4, false},
+    {24, "f_helical_torus", 13, false},
+    {25, "f_helix1", 10, false},      {26, "f_helix2", 10, false},
+    {27, "f_hex_x", 4, false},        {28, "f_hex_y", 4, false},
+    {29, "f_hetero_mf", 9, false},    {30, "f_hunt_surface", 4, false},
+    {31, "f_hyperbolic_torus", 6, false},
+    {32, "f_isect_ellipsoids", 7, false},
+    {33, "f_kampyle_of_eudoxus", 6, false},
+    {34, "f_kampyle_of_eudoxus_2d", 9, false},
+    {35, "f_klein_bottle", 4, false},
+    {36, "f_kummer_surface_v1", 4, false},
+    {37, "f_kummer_surface_v2", 7, false},
+    {38, "f_lemniscate_of_gerono", 4, false},
+    {39, "f_lemniscate_of_gerono_2d", 9, false},
+    {40, "f_mesh1", 8, false},        {41, "f_mitre", 4, false},
+    {42, "f_nodal_cubic", 4, false},  {43, "f_odd", 4, false},
+    {44, "f_ovals_of_cassini", 7, false},
+    {45, "f_paraboloid", 4, true},    {46, "f_parabolic_torus", 6, false},
+    {47, "f_ph", 3, true},            {48, "f_pillow", 4, false},
+    {49, "f_piriform", 4, false},     {50, "f_piriform_2d", 10, false},
+    {51, "f_poly4", 8, false},        {52, "f_polytubes", 9, false},
+    {53, "f_quantum", 4, false},      {54, "f_quartic_paraboloid", 4, false},
+    {55, "f_quartic_saddle", 4, false},
+    {56, "f_quartic_cylinder", 6, false},
+    {57, "f_r", 3, true},             {58, "f_ridge", 9, false},
+    {59, "f_ridged_mf", 9, false},    {60, "f_rounded_box", 7, false},
+    {61, "f_sphere", 4, true},        {62, "f_spikes", 8, false},
+    {63, "f_spikes_2d", 7, false},    {64, "f_spiral", 9, false},
+    {65, "f_steiners_roman", 4, false},
+    {66, "f_strophoid", 7, false},    {67, "f_strophoid_2d", 10, false},
+    {68, "f_superellipsoid", 5, false},
+    {69, "f_th", 3, true},            {70, "f_torus", 5, true},
+    {71, "f_torus2", 6, false},       {72, "f_torus_gumdrop", 4, false},
+    {73, "f_umbrella", 4, false},     {74, "f_witch_of_agnesi", 5, false},
+    {75, "f_witch_of_agnesi_2d", 9, false},
+    {76, "f_noise3d", 3, false},      {78, "f_noise_generator", 4, false},
+};
+
+static const internal_fn *internal_find(int number) {
+  for (size_t i = 0; i < sizeof internals / sizeof internals[0]; i++)
+    if (internals[i].number == number)
+      return &internals[i];
+  return NULL;
+}
+
+/*
+ * The implemented internals.  Each formula was checked against povray
+ * 3.7's value at a point (tests/test_function.c quotes them): f_r, f_th
+ * and f_ph are spherical coordinates (theta measured from +z towards +x,
+ * phi from +y), the others the usual implicit surfaces, negative inside
+ * where the manual says "needs threshold 0".
+ */
+static double eval_internal(int number, const double *a) {
+  double x = a[0], y = a[1], z = a[2];
+  double r = sqrt(x * x + y * y + z * z);
+  switch (number) {
+  case 17: /* f_ellipsoid: inverse scales; threshold 1 */
+    return sqrt(x * x * a[3] * a[3] + y * y * a[4] * a[4] +
+                z * z * a[5] * a[5]);
+  case 45: /* f_paraboloid: field strength; about the y axis */
+    return a[3] * (y - x * x - z * z);
+  case 47: /* f_ph */
+    return r > 0 ? acos(y / r) : 0;
+  case 57: /* f_r */
+    return r;
+  case 61: /* f_sphere: radius */
+    return r - a[3];
+  case 69: /* f_th */
+    return atan2(x, z);
+  case 70: { /* f_torus: major and minor radius, about the y axis */
+    double ring = sqrt(x * x + z * z) - a[3];
+    return sqrt(ring * ring + y * y) - a[4];
+  }
+  default:
+    return NAN; /* never: unimplemented numbers are refused earlier */
+  }
+}
+
+/* ---- evaluation ---- */
+
+static double truth(bool b) { return b ? 1.0 : 0.0; }
+
+/* POV-Ray's select(): the sign of a picks the value (Float Functions). */
+static double select3(double a, double b, double c) { return a < 0 ? b : c; }
+static double select4(double a, double b, double c, double d) {
+  return a < 0 ? b : a == 0 ? c : d;
+}
+
+/*
+ * Runs f with its parameters at base[0 .. n_params); its counters follow
+ * and its operand stack is above them.  A call runs the callee with its
+ * arguments, already on the stack, as the callee's parameters: no copy,
+ * and f->need says the array is big enough.
+ */
+static double run(const zr_fn *f, double *base) {
+  double *sp = base + f->n_slots;
+  const insn *code = f->code;
+  for (size_t pc = 0; pc < f->n_code; pc++) {
+    const insn *i = &code[pc];
+    switch ((op)i->op) {
+    case OP_CONST: *sp++ = f->consts[i->arg]; break;
+    case OP_LOAD: *sp++ = base[i->arg]; break;
+    case OP_STORE: base[i->arg] = *--sp; break;
+    case OP_INC: base[i->arg] += 1; break;
+    case OP_JGT:
+      if (base[i->arg] > base[i->arg + 1])
+        pc = (size_t)i->n - 1;
+      break;
+    case OP_JUMP: pc = (size_t)i->n - 1; break;
+    case OP_ADD: sp--; sp[-1] += sp[0]; break;
+    case OP_SUB: sp--; sp[-1] -= sp[0]; break;
+    case OP_MUL: sp--; sp[-1] *= sp[0]; break;
+    case OP_DIV: sp--; sp[-1] /= sp[0]; break;
+    case OP_LT: sp--; sp[-1] = truth(sp[-1] < sp[0]); break;
+    case OP_LE: sp--; sp[-1] = truth(sp[-1] <= sp[0]); break;
+    case OP_EQ: sp--; sp[-1] = truth(sp[-1] == sp[0]); break;
+    case OP_NE: sp--; sp[-1] = truth(sp[-1] != sp[0]); break;
+    case OP_GE: sp--; sp[-1] = truth(sp[-1] >= sp[0]); break;
+    case OP_GT: sp--; sp[-1] = truth(sp[-1] > sp[0]); break;
+    /* povray 3.7 treats any non-zero value, however small, as true in
+       functions (1e-11 & 1 is 1), unlike #if's 1e-10 tolerance. */
+    case OP_AND: sp--; sp[-1] = truth(sp[-1] != 0 && sp[0] != 0); break;
+    case OP_OR: sp--; sp[-1] = truth(sp[-1] != 0 || sp[0] != 0); break;
+    case OP_NEG: sp[-1] = -sp[-1]; break;
+    case OP_NOT: sp[-1] = truth(sp[-1] == 0); break;
+    case OP_SIN: sp[-1] = sin(sp[-1]); break;
+    case OP_COS: sp[-1] = cos(sp[-1]); break;
+    case OP_TAN: sp[-1] = tan(sp[-1]); break;
+    case OP_ASIN: sp[-1] = asin(sp[-1]); break;
+    case OP_ACOS: sp[-1] = acos(sp[-1]); break;
+    case OP_ATAN: sp[-1] = atan(sp[-1]); break;
+    case OP_SINH: sp[-1] = sinh(sp[-1]); break;
+    case OP_COSH: sp[-1] = cosh(sp[-1]); break;
+    case OP_TANH: sp[-1] = tanh(sp[-1]); break;
+    case OP_ASINH: sp[-1] = asinh(sp[-1]); break;
+    case OP_ACOSH: sp[-1] = acosh(sp[-1]); break;
+    case OP_ATANH: sp[-1] = atanh(sp[-1]); break;
+    case OP_EXP: sp[-1] = exp(sp[-1]); break;
+    case OP_LN: sp[-1] = log(sp[-1]); break;
+    case OP_LOG: sp[-1] = log10(sp[-1]); break;
+    case OP_SQRT: sp[-1] = sqrt(sp[-1]); break;
+    case OP_ABS: sp[-1] = fabs(sp[-1]); break;
+    case OP_FLOOR: sp[-1] = floor(sp[-1]); break;
+    case OP_CEIL: sp[-1] = ceil(sp[-1]); break;
+    case OP_INT: sp[-1] = trunc(sp[-1]); break;
+    case OP_DEGREES: sp[-1] *= 180.0 / M_PI; break;
+    case OP_RADIANS: sp[-1] *= M_PI / 180.0; break;
+    case OP_ATAN2: sp--; sp[-1] = atan2(sp[-1], sp[0]); break;
+    case OP_POW: sp--; sp[-1] = pow(sp[-1], sp[0]); break;
+    case OP_MOD: sp--; sp[-1] = fmod(sp[-1], sp[0]); break;
+    case OP_MIN: sp--; sp[-1] = sp[0] < sp[-1] ? sp[0] : sp[-1]; break;
+    case OP_MAX: sp--; sp[-1] = sp[0] > sp[-1] ? sp[0] : sp[-1]; break;
+    case OP_SELECT3:
+      sp -= 2;
+      sp[-1] = select3(sp[-1], sp[0], sp[1]);
+      break;
+    case OP_SELECT4:
+      sp -= 3;
+      sp[-1] = select4(sp[-1], sp[0], sp[1], sp[2]);
+      break;
+    case OP_CALL:
+      sp -= i->n;
+      *sp = run(f->callees[i->arg], sp);
+      sp++;
+      break;
+    case OP_INTERNAL:
+      sp -= i->n;
+      *sp = eval_internal(i->arg, sp);
+      sp++;
+      break;
+    }
+  }
+  return sp[-1];
+}
+
+double zr__fn_eval(const zr_fn *fn, const double *args) {
+  double mem[ZR_FN_MAX_STACK];
+  memcpy(mem, args, (size_t)fn->n_params * sizeof *args);
+  return run(fn, mem);
+}
+
+int zr__fn_params(const zr_fn *fn) { return fn->n_params; }
+
+const char *zr__fn_unsupported(const zr_fn *fn) { return fn->unsupported; }
+
+/* ---- the compiler ---- */
+
+/* The most sum/prod loops one body may nest (POV-Ray documents 56). */
+#define MAX_COUNTERS 56
+
+typedef struct compiler {
+  zr_sdl_parser *p;
+  int file;
+  const zr_sdl_file *f;
+  size_t pos;
+  /* Names of the slots: parameters, then live sum/prod counters (a
+     counter's limit sits in the slot after it, unnamed). */
+  const char *names[ZR_FN_MAX_PARAMS + 2 * MAX_COUNTERS];
+  int n_params, n_live, n_slots;
+  insn *code;
+  size_t n_code, cap_code;
+  double *consts;
+  size_t n_consts, cap_consts;
+  const zr_fn **callees;
+  size_t n_callees, cap_callees;
+  int height, max_height; /* operand stack depth now and at most */
+  int need_calls;         /* the deepest a call reaches above base */
+  int depth;
+  int nesting; /* of unary(), which every operand goes through */
+  const char *unsupported;
+  bool failed;
+} compiler;
+
+static const zr_sdl_token *tok(const compiler *c) {
+  return &c->f->tokens[c->pos];
+}
+
+static zr_sdl_loc loc_of(const compiler *c, const zr_sdl_token *t) {
+  zr_sdl_loc l = {c->file, t->line, t->column, t->length};
+  return l;
+}
+
+static bool is_char(const zr_sdl_token *t, int ch) { return t->kind == ch; }
+
+/* A reserved word's spelling (keyword or directive), else NULL. */
+static const char *word_of(const zr_sdl_token *t) {
+  if (t->kind < 256 || t->kind == T_NUMBER || t->kind == T_STRING ||
+      t->kind == T_IDENTIFIER)
+    return NULL;
+  return t->v.str; /* NULL for "<=" and the like */
+}
+
+static bool is_word(const zr_sdl_token *t, const char *w) {
+  const char *s = word_of(t);
+  return s && strcmp(s, w) == 0;
+}
+
+/* Whether t is a directive (#declare ...) rather than a keyword. */
+static bool is_directive(const zr_sdl_token *t) {
+  const char *s = word_of(t);
+  if (!s)
+    return false;
+  const zr_sdl_keyword *k = zr__sdl_directive_find(s, strlen(s));
+  return k && k->token == t->kind;
+}
+
+/* What messages call a token. */
+static void describe(const zr_sdl_token *t, char *buf, size_t size) {
+  if (t->kind == 0)
+    snprintf(buf, size, "end of file");
+  else if (t->kind == T_NUMBER)
+    snprintf(buf, size, "number");
+  else if (t->kind == T_STRING)
+    snprintf(buf, size, "string");
+  else if (t->kind == T_IDENTIFIER)
+    snprintf(buf, size, "'%s'", t->v.str);
+  else if (is_directive(t))
+    snprintf(buf, size, "'#%s'", t->v.str);
+  else if (t->kind >= 256 && t->v.str)
+    snprintf(buf, size, "'%s'", t->v.str);
+  else if (t->kind >= 256)
+    snprintf(buf, size, "an operator");
+  else
+    snprintf(buf, size, "'%c'", t->kind);
+}
+
+static bool fail_at(compiler *c, const zr_sdl_token *t, zr_status s,
+                    const char *fmt, ...) __attribute__((format(printf, 4, 5)));
+
+static bool fail_at(compiler *c, const zr_sdl_token *t, zr_status s,
+                    const char *fmt, ...) {
+  char msg[256];
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(msg, sizeof msg, fmt, ap);
+  va_end(ap);
+  zr_sdl_loc l = loc_of(c, t);
+  zr__sdl_error(c->p, s, &l, "%s", msg);
+  c->failed = true;
+  return false;
+}
+
+/* "expected X in function, got Y" at the current token. */
+static bool expected(compiler *c, const char *what) {
+  char got[96];
+  describe(tok(c), got, sizeof got);
+  return fail_at(c, tok(c), ZR_ESYNTAX, "expected %s in function, got %s",
+                 what, got);
+}
+
+static bool accept(compiler *c, int ch) {
+  if (!is_char(tok(c), ch))
+    return false;
+  c->pos++;
+  return true;
+}
+
+static bool want(compiler *c, int ch, const char *what) {
+  return accept(c, ch) || expected(c, what);
+}
+
+static bool oom(compiler *c) {
+  zr__sdl_error(c->p, ZR_ENOMEM, NULL, "out of memory");
+  c->failed = true;
+  return false;
+}
+
+static bool grow(compiler *c, void **items, size_t *cap, size_t n,
+                 size_t size) {
+  if (n < *cap)
+    return true;
+  size_t new_cap = *cap ? *cap * 2 : 32;
+  void *m = realloc(*items, new_cap * size);
+  if (!m)
+    return oom(c);
+  *items = m;
+  *cap = new_cap;
+  return true;
+}
+
+/* Appends an instruction that moves the operand stack by delta. */
+static bool emit(compiler *c, op o, int32_t arg, int32_t n, int delta) {
+  if (!grow(c, (void **)&c->code, &c->cap_code, c->n_code, sizeof *c->code))
+    return false;
+  insn i = {(uint8_t)o, arg, n};
+  c->code[c->n_code++] = i;
+  c->height += delta;
+  if (c->height > c->max_height)
+    c->max_height = c->height;
+  return true;
+}
+
+static bool emit_const(compiler *c, double v) {
+  if (!grow(c, (void **)&c->consts, &c->cap_consts, c->n_consts,
+            sizeof *c->consts))
+    return false;
+  c->consts[c->n_consts] = v;
+  return emit(c, OP_CONST, (int32_t)c->n_consts++, 0, 1);
+}
+
+/* Folds an operator whose operands are the last constants emitted, so
+   "2*pi/360" costs one push at render time: the operator runs once now
+   on the machine itself, its operands loaded from slots. */
+static bool fold(compiler *c, op o, int arity, size_t first_pc) {
+  double mem[8];
+  insn prog[5];
+  for (int k = 0; k < arity; k++) {
+    mem[k] = c->consts[c->code[first_pc + (size_t)k].arg];
+    insn load = {OP_LOAD, k, 0};
+    prog[k] = load;
+  }
+  insn apply = {(uint8_t)o, 0, arity};
+  prog[arity] = apply;
+  zr_fn tmp;
+  memset(&tmp, 0, sizeof tmp);
+  tmp.n_slots = arity;
+  tmp.n_code = (size_t)arity + 1;
+  tmp.code = prog;
+  double v = run(&tmp, mem);
+  c->n_code = first_pc;
+  c->n_consts -= (size_t)arity;
+  c->height -= arity;
+  return emit_const(c, v);
+}
+
+/* Emits an operator taking arity operands pushed from first_pc on. */
+static bool emit_op(compiler *c, op o, int arity, size_t first_pc) {
+  if (c->n_code - first_pc == (size_t)arity && arity <= 4) {
+    bool all_const = true;
+    for (int k = 0; k < arity; k++)
+      all_const &= c->code[first_pc + (size_t)k].op == OP_CONST;
+    /* Constants are appended in order, so the folded ones are the last
+       'arity' of the pool and can be dropped. */
+    if (all_const && c->code[first_pc].arg ==
+                         (int32_t)(c->n_consts - (size_t)arity))
+      return fold(c, o, arity, first_pc);
+  }
+  return emit(c, o, 0, arity, 1 - arity);
+}
+
+static bool expr(compiler *c);
+
+/* ---- names ---- */
+
+/* The slot a name denotes: counters newest first, then parameters. */
+static int slot_of(const compiler *c, const char *name) {
+  for (int i = c->n_live; i-- > 0;) {
+    int s = c->n_params + 2 * i;
+    if (strcmp(c->names[s], name) == 0)
+      return s;
+  }
+  for (int i = 0; i < c->n_params; i++)
+    if (strcmp(c->names[i], name) == 0)
+      return i;
+  return -1;
+}
+
+/* x and u, y and v are the same parameter (manual, "Declaring
+   User-Defined Float Functions"). */
+static const char *canonical(const char *name) {
+  if (strcmp(name, "u") == 0)
+    return "x";
+  if (strcmp(name, "v") == 0)
+    return "y";
+  return name;
+}
+
+/* The identifier's declaration, newest #local scope first, as the
+   directive engine looks it up. */
+static const zr_sdl_symbol *lookup(zr_sdl_parser *p, const char *name) {
+  for (size_t i = p->n_frames; i-- > 1;) {
+    zr_sdl_symbol *s = zr__sdl_symtab_find(&p->frames[i].locals, name);
+    if (s)
+      return s;
+  }
+  return zr__sdl_symtab_find(&p->globals, name);
+}
+
+/* ---- built-in float functions ---- */
+
+typedef struct builtin {
+  const char *name;
+  op o;
+  int min_args, max_args; /* max 0: any number (min and max) */
+} builtin;
+
+static const builtin builtins[] = {
+    {"abs", OP_ABS, 1, 1},         {"acos", OP_ACOS, 1, 1},
+    {"acosh", OP_ACOSH, 1, 1},     {"asin", OP_ASIN, 1, 1},
+    {"asinh", OP_ASINH, 1, 1},     {"atan", OP_ATAN, 1, 1},
+    {"atan2", OP_ATAN2, 2, 2},     {"atanh", OP_ATANH, 1, 1},
+    {"ceil", OP_CEIL, 1, 1},       {"cos", OP_COS, 1, 1},
+    {"cosh", OP_COSH, 1, 1},       {"degrees", OP_DEGREES, 1, 1},
+    {"exp", OP_EXP, 1, 1},         {"floor", OP_FLOOR, 1, 1},
+    {"int", OP_INT, 1, 1},         {"ln", OP_LN, 1, 1},
+    {"log", OP_LOG, 1, 1},         {"max", OP_MAX, 2, 0},
+    {"min", OP_MIN, 2, 0},         {"mod", OP_MOD, 2, 2},
+    {"pow", OP_POW, 2, 2},         {"radians", OP_RADIANS, 1, 1},
+    {"select", OP_SELECT3, 3, 4},  {"sin", OP_SIN, 1, 1},
+    {"sinh", OP_SINH, 1, 1},       {"sqrt", OP_SQRT, 1, 1},
+    {"tan", OP_TAN, 1, 1},         {"tanh", OP_TANH, 1, 1},
+};
+
+static const builtin *builtin_find(const char *name) {
+  for (size_t i = 0; i < sizeof builtins / sizeof builtins[0]; i++)
+    if (strcmp(builtins[i].name, name) == 0)
+      return &builtins[i];
+  return NULL;
+}
+
+/* "(a, b, ...)": compiles the arguments, returns their count or -1. */
+static int arguments(compiler *c) {
+  if (!want(c, '(', "'('"))
+    return -1;
+  int n = 0;
+  do {
+    if (n == ZR_FN_MAX_PARAMS) {
+      fail_at(c, tok(c), ZR_ELIMIT, "more than 56 arguments in function");
+      return -1;
+    }
+    if (!expr(c))
+      return -1;
+    n++;
+  } while (accept(c, ','));
+  return want(c, ')', "',' or ')'") ? n : -1;
+}
+
+static bool call_builtin(compiler *c, const builtin *b,
+                         const zr_sdl_token *name) {
+  size_t first = c->n_code;
+  int n = arguments(c);
+  if (n < 0)
+    return false;
+  if (n < b->min_args || (b->max_args && n > b->max_args)) {
+    char counts[64];
+    if (b->max_args == 0)
+      snprintf(counts, sizeof counts, "at least %d arguments", b->min_args);
+    else if (b->min_args == b->max_args)
+      snprintf(counts, sizeof counts, "%d argument%s", b->min_args,
+               b->min_args == 1 ? "" : "s");
+    else
+      snprintf(counts, sizeof counts, "%d or %d arguments", b->min_args,
+               b->max_args);
+    return fail_at(c, name, ZR_ESYNTAX, "'%s' takes %s", b->name, counts);
+  }
+  if (b->max_args == 0) { /* min and max fold pairwise */
+    for (int k = 1; k < n; k++)
+      if (!emit(c, b->o, 0, 2, -1))
+        return false;
+    return true;
+  }
+  op o = b->o == OP_SELECT3 && n == 4 ? OP_SELECT4 : b->o;
+  return emit_op(c, o, n, first);
+}
+
+/* Adds the cost of calling 'callee' with n arguments now on the stack. */
+static bool note_call(compiler *c, const zr_fn *callee, int n,
+                      const zr_sdl_token *name) {
+  if (callee->depth + 1 > ZR_FN_MAX_DEPTH)
+    return fail_at(c, name, ZR_ELIMIT,
+                   "functions nested more than %d calls deep",
+                   ZR_FN_MAX_DEPTH);
+  if (callee->depth + 1 > c->depth)
+    c->depth = callee->depth + 1;
+  /* The callee's parameters start where its arguments are. */
+  int reach = c->height - n + callee->need;
+  if (reach > c->need_calls)
+    c->need_calls = reach;
+  if (callee->unsupported && !c->unsupported)
+    c->unsupported = callee->unsupported;
+  return true;
+}
+
+static bool call_function(compiler *c, const zr_fn *callee,
+                          const zr_sdl_token *name) {
+  int n = arguments(c);
+  if (n < 0)
+    return false;
+  if (n != callee->n_params) {
+    char msg[96];
+    snprintf(msg, sizeof msg, "takes %d argument%s, not %d",
+             callee->n_params, callee->n_params == 1 ? "" : "s", n);
+    return fail_at(c, name, ZR_ESYNTAX, "function '%s' %s", name->v.str,
+                   msg);
+  }
+  if (!note_call(c, callee, n, name))
+    return false;
+  if (!grow(c, (void **)&c->callees, &c->cap_callees, c->n_callees,
+            sizeof *c->callees))
+    return false;
+  c->callees[c->n_callees] = callee;
+  return emit(c, OP_CALL, (int32_t)c->n_callees++, n, 1 - n);
+}
+
+/* sum(i, b, n, a) and prod(...): a over i = b, b + 1, ... while i <= n. */
+static bool sum_or_prod(compiler *c, bool is_sum) {
+  const zr_sdl_token *kw = &c->f->tokens[c->pos - 1];
+  if (!want(c, '(', "'('"))
+    return false;
+  const zr_sdl_token *var = tok(c);
+  if (var->kind != T_IDENTIFIER && !word_of(var))
+    return expected(c, "an iteration variable");
+  c->pos++;
+  if (c->n_live == MAX_COUNTERS)
+    return fail_at(c, kw, ZR_ELIMIT,
+                   "sum and prod nested more than 56 deep");
+  int slot = c->n_params + 2 * c->n_live;
+  if (!want(c, ',', "','") || !expr(c) ||
+      !emit(c, OP_STORE, slot, 0, -1) || !want(c, ',', "','") ||
+      !expr(c) || !emit(c, OP_STORE, slot + 1, 0, -1) ||
+      !want(c, ',', "','"))
+    return false;
+  /* The counter is in scope only in the summed expression. */
+  c->names[slot] = canonical(var->v.str);
+  c->names[slot + 1] = "";
+  c->n_live++;
+  if (slot + 2 > c->n_slots)
+    c->n_slots = slot + 2;
+  if (!emit_const(c, is_sum ? 0 : 1))
+    return false;
+  size_t top = c->n_code;
+  if (!emit(c, OP_JGT, slot, 0, 0))
+    return false;
+  if (!expr(c) || !emit(c, is_sum ? OP_ADD : OP_MUL, 0, 2, -1) ||
+      !emit(c, OP_INC, slot, 0, 0) ||
+      !emit(c, OP_JUMP, 0, (int32_t)top, 0))
+    return false;
+  c->code[top].n = (int32_t)c->n_code;
+  c->n_live--;
+  return want(c, ')', "')'");
+}
+
+/* A declared identifier in a body. */
+static bool declared(compiler *c, const zr_sdl_token *name) {
+  const zr_sdl_symbol *s = lookup(c->p, name->v.str);
+  if (!s)
+    return fail_at(c, name, ZR_EUNDEFINED,
+                   "undefined identifier '%s' in function", name->v.str);
+  const zr_sdl_value *v = &s->value;
+  if (v->kind == ZR_SDL_FUNCTION)
+    return call_function(c, v->ptr, name);
+  if (v->kind == ZR_SDL_FLOAT)
+    return emit_const(c, v->num.v[0]);
+  if ((v->kind == ZR_SDL_VECTOR || v->kind == ZR_SDL_COLOUR) &&
+      is_char(tok(c), '.')) {
+    /* V.x and the like: a float fixed at definition time. */
+    static const char *const items[] = {"x", "y", "z", "t", "u", "v",
+                                        "red", "green", "blue", "filter",
+                                        "transmit"};
+    static const int index[] = {0, 1, 2, 3, 0, 1, 0, 1, 2, 3, 4};
+    c->pos++;
+    for (size_t k = 0; k < sizeof items / sizeof items[0]; k++) {
+      if (is_word(tok(c), items[k]) && index[k] < v->num.dim) {
+        c->pos++;
+        return emit_const(c, v->num.v[index[k]]);
+      }
+    }
+    return expected(c, "a component after '.'");
+  }
+  return fail_at(c, name, ZR_ESYNTAX,
+                 "'%s' is not a float or a function, so it cannot be used "
+                 "in a function", name->v.str);
+}
+
+static bool constant_word(compiler *c, const char *w) {
+  if (strcmp(w, "pi") == 0)
+    return emit_const(c, M_PI);
+  if (strcmp(w, "true") == 0 || strcmp(w, "yes") == 0 ||
+      strcmp(w, "on") == 0)
+    return emit_const(c, 1);
+  if (strcmp(w, "false") == 0 || strcmp(w, "no") == 0 ||
+      strcmp(w, "off") == 0)
+    return emit_const(c, 0);
+  return false;
+}
+
+static bool primary(compiler *c) {
+  const zr_sdl_token *t = tok(c);
+  if (t->kind == T_NUMBER) {
+    c->pos++;
+    return emit_const(c, t->v.num);
+  }
+  if (accept(c, '('))
+    return expr(c) && want(c, ')', "')'");
+  if (t->kind == T_IDENTIFIER) {
+    c->pos++;
+    int s = slot_of(c, t->v.str);
+    return s >= 0 ? emit(c, OP_LOAD, s, 0, 1) : declared(c, t);
+  }
+  const char *w = word_of(t);
+  if (w && !is_directive(t)) {
+    c->pos++;
+    int s = slot_of(c, canonical(w));
+    if (s >= 0)
+      return emit(c, OP_LOAD, s, 0, 1);
+    const builtin *b = builtin_find(w);
+    if (b)
+      return call_builtin(c, b, t);
+    if (strcmp(w, "sum") == 0 || strcmp(w, "prod") == 0)
+      return sum_or_prod(c, w[0] == 's');
+    if (constant_word(c, w))
+      return true;
+    if (strcmp(w, "x") == 0 || strcmp(w, "y") == 0 || strcmp(w, "z") == 0 ||
+        strcmp(w, "u") == 0 || strcmp(w, "v") == 0)
+      return fail_at(c, t, ZR_EUNDEFINED,
+                     "'%s' is not a parameter of this function", w);
+    if (strcmp(w, "internal") == 0)
+      return fail_at(c, t, ZR_ESYNTAX,
+                     "'internal' must be the whole body of a function");
+    return fail_at(c, t, ZR_ESYNTAX, "'%s' cannot be used in a function", w);
+  }
+  return expected(c, "a float expression");
+}
+
+static bool unary_inner(compiler *c);
+
+static bool unary(compiler *c) {
+  if (c->nesting == ZR_FN_MAX_NESTING)
+    return fail_at(c, tok(c), ZR_ELIMIT,
+                   "the function nests more than %d levels deep",
+                   ZR_FN_MAX_NESTING);
+  c->nesting++;
+  bool ok = unary_inner(c);
+  c->nesting--;
+  return ok;
+}
+
+static bool unary_inner(compiler *c) {
+  if (accept(c, '-')) {
+    size_t first = c->n_code;
+    return unary(c) && emit_op(c, OP_NEG, 1, first);
+  }
+  if (accept(c, '+'))
+    return unary(c);
+  if (accept(c, '!')) {
+    size_t first = c->n_code;
+    return unary(c) && emit_op(c, OP_NOT, 1, first);
+  }
+  return primary(c);
+}
+
+/* Left-associative levels: each lists its operators and what binds
+   tighter. */
+typedef bool (*level_fn)(compiler *c);
+
+static bool binary_level(compiler *c, level_fn next, const int *chars,
+                         const op *ops, int n_ops) {
+  size_t first = c->n_code;
+  if (!next(c))
+    return false;
+  for (;;) {
+    int k = 0;
+    while (k < n_ops && !is_char(tok(c), chars[k]))
+      k++;
+    if (k == n_ops)
+      return true;
+    c->pos++;
+    if (!next(c) || !emit_op(c, ops[k], 2, first))
+      return false;
+  }
+}
+
+static bool factor(compiler *c) {
+  static const int chars[] = {'*', '/'};
+  static const op ops[] = {OP_MUL, OP_DIV};
+  return binary_level(c, unary, chars, ops, 2);
+}
+
+static bool term(compiler *c) {
+  static const int chars[] = {'+', '-'};
+  static const op ops[] = {OP_ADD, OP_SUB};
+  return binary_level(c, factor, chars, ops, 2);
+}
+
+/* REL_TERM: TERM [REL_OPERATOR TERM], not chained (the manual's grammar).
+   The scanner makes "<=", ">=" and "!=" single tokens. */
+static bool relation(compiler *c) {
+  size_t first = c->n_code;
+  if (!term(c))
+    return false;
+  int kind = tok(c)->kind;
+  op o;
+  switch (kind) {
+  case '<': o = OP_LT; break;
+  case T_LE: o = OP_LE; break;
+  case '=': o = OP_EQ; break;
+  case T_NE: o = OP_NE; break;
+  case T_GE: o = OP_GE; break;
+  case '>': o = OP_GT; break;
+  default: return true;
+  }
+  c->pos++;
+  return term(c) && emit_op(c, o, 2, first);
+}
+
+static bool conjunction(compiler *c) {
+  static const int chars[] = {'&'};
+  static const op ops[] = {OP_AND};
+  return binary_level(c, relation, chars, ops, 1);
+}
+
+static bool expr(compiler *c) {
+  static const int chars[] = {'|'};
+  static const op ops[] = {OP_OR};
+  if (!binary_level(c, conjunction, chars, ops, 1))
+    return false;
+  const zr_sdl_token *t = tok(c);
+  if (is_char(t, '?'))
+    return fail_at(c, t, ZR_EUNSUPPORTED,
+                   "'?:' cannot be used in a function (POV-Ray 3.7 does not "
+                   "allow it either: use select())");
+  return true;
+}
+
+/* ---- definitions ---- */
+
+/* "(a, b, ...)" after 'function': the parameter names. */
+static bool parameter_list(compiler *c) {
+  do {
+    const zr_sdl_token *t = tok(c);
+    const char *name = t->kind == T_IDENTIFIER ? t->v.str : NULL;
+    const char *w = word_of(t);
+    if (w && (strcmp(w, "x") == 0 || strcmp(w, "y") == 0 ||
+              strcmp(w, "z") == 0 || strcmp(w, "u") == 0 ||
+              strcmp(w, "v") == 0))
+      name = canonical(w);
+    if (!name)
+      return expected(c, "a parameter name");
+    if (slot_of(c, name) >= 0)
+      return fail_at(c, t, ZR_ESYNTAX,
+                     "parameter '%s' is listed twice", name);
+    if (c->n_params == ZR_FN_MAX_PARAMS)
+      return fail_at(c, t, ZR_ELIMIT,
+                     "a function takes at most 56 parameters");
+    c->names[c->n_params++] = name;
+    c->pos++;
+  } while (accept(c, ','));
+  return want(c, ')', "',' or ')'");
+}
+
+/* Skips a balanced { ... } block whose '{' is the current token. */
+static bool skip_block(compiler *c) {
+  int depth = 0;
+  do {
+    const zr_sdl_token *t = tok(c);
+    if (t->kind == 0)
+      return expected(c, "'}'");
+    if (is_char(t, '{'))
+      depth++;
+    else if (is_char(t, '}'))
+      depth--;
+    c->pos++;
+  } while (depth > 0);
+  return true;
+}
+
+/* Bodies of the special kinds (pattern, pigment, transform, spline):
+   parsed over, usable once the texture code evaluates them. */
+static bool special_body(compiler *c, const char *w) {
+  static const char *const reasons[] = {
+      "pattern functions", "pigment functions", "transform functions",
+      "spline functions"};
+  static const char *const kinds[] = {"pattern", "pigment", "transform",
+                                      "spline"};
+  c->pos++;
+  for (int k = 0; k < 4; k++)
+    if (strcmp(w, kinds[k]) == 0)
+      c->unsupported = reasons[k];
+  if (!is_char(tok(c), '{'))
+    return expected(c, "'{'");
+  c->n_params = 3;
+  return skip_block(c) && emit_const(c, 0);
+}
+
+/* internal(n) as a whole body: the parameters are the routine's. */
+static bool internal_body(compiler *c, bool have_params) {
+  const zr_sdl_token *at = tok(c);
+  c->pos++;
+  if (!want(c, '(', "'('"))
+    return false;
+  const zr_sdl_token *num = tok(c);
+  if (num->kind != T_NUMBER)
+    return expected(c, "a number");
+  c->pos++;
+  if (!want(c, ')', "')'"))
+    return false;
+  const internal_fn *in = internal_find((int)num->v.num);
+  if (!in || num->v.num != in->number) {
+    char n[32];
+    snprintf(n, sizeof n, "%g", num->v.num);
+    return fail_at(c, num, ZR_ESCENE,
+                   "there is no internal function %s", n);
+  }
+  if (have_params && c->n_params != in->params) {
+    char n[64];
+    snprintf(n, sizeof n, "%d (%s) takes %d", in->number, in->name,
+             in->params);
+    return fail_at(c, at, ZR_ESYNTAX, "internal function %s parameters", n);
+  }
+  if (!in->implemented) {
+    char reason[64];
+    snprintf(reason, sizeof reason, "internal function %d (%s)", in->number,
+             in->name);
+    c->unsupported = zr__arena_strdup(&c->p->scene->arena, reason);
+    if (!c->unsupported)
+      return oom(c);
+  }
+  c->n_params = in->params;
+  for (int k = 0; k < in->params; k++)
+    if (!emit(c, OP_LOAD, k, 0, 1))
+      return false;
+  return emit(c, OP_INTERNAL, in->number, in->params, 1 - in->params);
+}
+
+static const zr_fn *finish(compiler *c) {
+  zr_sdl_parser *p = c->p;
+  zr_fn *fn = zr__sdl_alloc(p, sizeof *fn);
+  insn *code = zr__sdl_alloc(p, (c->n_code ? c->n_code : 1) * sizeof *code);
+  double *consts =
+      zr__sdl_alloc(p, (c->n_consts ? c->n_consts : 1) * sizeof *consts);
+  const zr_fn **callees = zr__sdl_alloc(
+      p, (c->n_callees ? c->n_callees : 1) * sizeof *callees);
+  if (!fn || !code || !consts || !callees)
+    return NULL;
+  memcpy(code, c->code, c->n_code * sizeof *code);
+  memcpy(consts, c->consts, c->n_consts * sizeof *consts);
+  memcpy(callees, c->callees, c->n_callees * sizeof *callees);
+  if (c->n_slots < c->n_params)
+    c->n_slots = c->n_params;
+  fn->n_params = c->n_params;
+  fn->n_slots = c->n_slots;
+  fn->need = c->n_slots + c->max_height;
+  if (c->n_slots + c->need_calls > fn->need)
+    fn->need = c->n_slots + c->need_calls;
+  fn->depth = c->depth;
+  fn->n_code = c->n_code;
+  fn->code = code;
+  fn->consts = consts;
+  fn->callees = (const zr_fn *const *)callees;
+  fn->unsupported = c->unsupported;
+  return fn;
+}
+
+static bool definition(compiler *c, const zr_sdl_loc *at) {
+  bool have_params = accept(c, '(');
+  if (have_params && !parameter_list(c))
+    return false;
+  if (!want(c, '{', have_params ? "'{'" : "'(' or '{'"))
+    return false;
+  if (!have_params) {
+    static const char *const xyz[] = {"x", "y", "z"};
+    for (int k = 0; k < 3; k++)
+      c->names[c->n_params++] = xyz[k];
+  }
+  c->n_slots = c->n_params;
+  const char *w = word_of(tok(c));
+  if (w && strcmp(w, "internal") == 0) {
+    if (!internal_body(c, have_params))
+      return false;
+  } else if (w && !have_params &&
+             (strcmp(w, "pattern") == 0 || strcmp(w, "pigment") == 0 ||
+              strcmp(w, "transform") == 0 || strcmp(w, "spline") == 0)) {
+    if (!special_body(c, w))
+      return false;
+  } else if (!expr(c)) {
+    return false;
+  }
+  if (!want(c, '}', "an operator or '}'"))
+    return false;
+  if (c->n_slots + c->max_height > ZR_FN_MAX_STACK ||
+      c->n_slots + c->need_calls > ZR_FN_MAX_STACK) {
+    zr__sdl_error(c->p, ZR_ELIMIT, at,
+                  "the function needs more than %d values to evaluate",
+                  ZR_FN_MAX_STACK);
+    return false;
+  }
+  return true;
+}
+
+const zr_fn *zr__sdl_function_parse(zr_sdl_parser *p, const zr_sdl_loc *at) {
+  zr_sdl_frame *fr = &p->frames[p->n_frames - 1];
+  compiler c;
+  memset(&c, 0, sizeof c);
+  c.p = p;
+  c.file = fr->file;
+  c.f = &p->files[fr->file];
+  c.pos = fr->pos;
+  c.depth = 1;
+  const zr_fn *fn = NULL;
+  if (definition(&c, at))
+    fn = finish(&c);
+  free(c.code);
+  free(c.consts);
+  free(c.callees);
+  fr->pos = c.pos;
+  return fn;
+}
+
+/* The identifier at loc, from its source line, for messages. */
+static void name_at(zr_sdl_parser *p, const zr_sdl_loc *loc, char *buf,
+                    size_t size) {
+  size_t len = 0;
+  const char *line = NULL;
+  if (loc->file >= 0 && (size_t)loc->file < p->n_files)
+    line = zr__sdl_file_line(&p->files[loc->file], loc->line, &len);
+  size_t col = loc->column > 0 ? (size_t)loc->column - 1 : 0;
+  size_t n = loc->length > 0 ? (size_t)loc->length : 0;
+  if (!line || col + n > len || n + 1 > size)
+    n = 0;
+  memcpy(buf, line ? line + col : "", n);
+  buf[n] = '\0';
+}
+
+bool zr__sdl_function_call(zr_sdl_parser *p, const zr_fn *fn,
+                           const zr_sdl_list *args,
+                           const zr_sdl_loc *name_loc, const zr_sdl_loc *loc,
+                           zr_sdl_expr *out) {
+  char name[128];
+  name_at(p, name_loc, name, sizeof name);
+  if (fn->unsupported) {
+    zr__sdl_error(p, ZR_EUNSUPPORTED, name_loc,
+                  "function '%s' uses %s, which is not supported yet", name,
+                  fn->unsupported);
+    return false;
+  }
+  if (args->n != fn->n_params) {
+    zr__sdl_error(p, ZR_ESYNTAX, loc, "function '%s' takes %d argument%s, "
+                  "not %d", name, fn->n_params,
+                  fn->n_params == 1 ? "" : "s", args->n);
+    return false;
+  }
+  *out = zr__sdl_float(zr__fn_eval(fn, args->v));
+  return true;
+}

@@ -1,0 +1,1 @@
+#declare F = function(a) { a + (

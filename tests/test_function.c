@@ -1,0 +1,509 @@
+/*
+ * test_function.c - user-defined functions (lib/sdl/function.c): the
+ * language of function bodies, calls from float expressions, the
+ * internal functions of functions.inc against povray 3.7's own values,
+ * the limits, the error messages, and a speed figure.
+ *
+ * A value is read back by placing it where the scene keeps it: the
+ * x of a sphere's centre.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "config.h"
+#include "core/context.h"
+#include "scene/scene.h"
+#include "sdl/function.h"
+#include "sdl/sdl.h"
+#include "zrcube.h"
+
+/* The functions below combine a few decimals with a few operations, so
+   they agree with the same C expression to the last bits; 1e-12 leaves
+   room for the order of rounding and nothing more. */
+#define EPS 1e-12
+/* povray's #debug str(v, 0, 9) shows 9 decimals: its values are known
+   to 5e-10, and a wrong formula misses by far more. */
+#define POV_EPS 1e-9
+
+typedef struct captured {
+  int errors;
+  zr_status status;
+  char message[512];
+  char text[4096];
+} captured;
+
+static void on_diag(const zr_diag *d, void *user) {
+  captured *c = user;
+  if (d->level != ZR_DIAG_ERROR)
+    return;
+  c->errors++;
+  c->status = d->status;
+  snprintf(c->message, sizeof c->message, "%s", d->message);
+  snprintf(c->text, sizeof c->text, "%s", d->text);
+}
+
+typedef struct fixture {
+  zr_context *ctx;
+  captured diag;
+  zr_scene *scene;
+} fixture;
+
+static int setup(void **state) {
+  fixture *f = calloc(1, sizeof *f);
+  assert_non_null(f);
+  assert_int_equal(zr_context_new(&f->ctx), ZR_OK);
+  zr_context_set_diag(f->ctx, on_diag, &f->diag);
+  *state = f;
+  return 0;
+}
+
+static int teardown(void **state) {
+  fixture *f = *state;
+  zr_scene_free(f->scene);
+  zr_context_free(f->ctx);
+  free(f);
+  return 0;
+}
+
+static zr_status parse(fixture *f, const char *text) {
+  zr_scene_free(f->scene);
+  f->scene = NULL;
+  memset(&f->diag, 0, sizeof f->diag);
+  return zr_scene_parse_string(f->ctx, "t.pov", text, strlen(text),
+                               &f->scene);
+}
+
+/* The value of expr after the declarations decls. */
+static double value(fixture *f, const char *decls, const char *expr) {
+  size_t size = strlen(decls) + strlen(expr) + 64;
+  char *text = malloc(size);
+  assert_non_null(text);
+  snprintf(text, size, "%s\nsphere { <%s, 0, 0>, 1 }\n", decls, expr);
+  zr_status s = parse(f, text);
+  free(text);
+  if (s != ZR_OK)
+    fprintf(stderr, "unexpected failure:\n%s", f->diag.text);
+  assert_int_equal(s, ZR_OK);
+  assert_int_equal(f->scene->n_objects, 1);
+  return f->scene->objects[0]->u.sphere.centre.x;
+}
+
+/* Parses text that must fail with status and exactly message. */
+static void bad(fixture *f, const char *text, zr_status status,
+                const char *message) {
+  zr_status s = parse(f, text);
+  assert_int_equal(s, status);
+  assert_int_equal(f->diag.errors, 1);
+  assert_string_equal(f->diag.message, message);
+}
+
+static void test_function_arithmetic(void **state) {
+  fixture *f = *state;
+  const char *d = "#declare F = function(a, b) { a + b * 2 - a / b }\n";
+  assert_true(fabs(value(f, d, "F(3, 4)") - (3 + 4 * 2 - 3.0 / 4)) < EPS);
+  d = "#declare F = function(a) { -a * -a - (1 - a) * 3 }\n";
+  assert_true(fabs(value(f, d, "F(2.5)") - (6.25 - (1 - 2.5) * 3)) < EPS);
+  /* Constants fold at compile time and still give the same value. */
+  d = "#declare F = function { 2 * pi / 360 + x }\n";
+  assert_true(fabs(value(f, d, "F(1, 0, 0)") - (1 + 2 * M_PI / 360)) <
+              EPS);
+}
+
+static void test_function_logic(void **state) {
+  fixture *f = *state;
+  /* The manual's precedence: & binds tighter than |. */
+  const char *d = "#declare F = function(a, b) { a | b & 0 }\n";
+  assert_true(value(f, d, "F(1, 1)") == 1);
+  assert_true(value(f, d, "F(0, 1)") == 0);
+  d = "#declare L = function(a, b) { (a < b) + 2 * (a <= b) + 4 * (a = b)"
+      " + 8 * (a != b) + 16 * (a >= b) + 32 * (a > b) }\n";
+  assert_true(value(f, d, "L(1, 2)") == 1 + 2 + 8);
+  assert_true(value(f, d, "L(2, 2)") == 2 + 4 + 16);
+  assert_true(value(f, d, "L(3, 2)") == 8 + 16 + 32);
+  /* povray 3.7: in functions any non-zero value is true (1e-11 & 1 is 1),
+     unlike #if, which treats values within 1e-10 of zero as false. */
+  d = "#declare F = function(a) { a & 1 }\n";
+  assert_true(value(f, d, "F(1e-11)") == 1);
+  assert_true(value(f, d, "F(0)") == 0);
+  d = "#declare F = function(a) { !a }\n";
+  assert_true(value(f, d, "F(0)") == 1);
+  assert_true(value(f, d, "F(3)") == 0);
+}
+
+static void test_function_builtins(void **state) {
+  fixture *f = *state;
+  struct {
+    const char *body;
+    double expected;
+  } cases[] = {
+      {"sin(0.3) + cos(0.4) + tan(0.5)", sin(0.3) + cos(0.4) + tan(0.5)},
+      {"asin(0.3) + acos(0.4) + atan(0.5)",
+       asin(0.3) + acos(0.4) + atan(0.5)},
+      {"atan2(1, 2)", atan2(1, 2)},
+      {"sinh(0.3) + cosh(0.4) + tanh(0.5)",
+       sinh(0.3) + cosh(0.4) + tanh(0.5)},
+      {"asinh(0.3) + acosh(1.4) + atanh(0.5)",
+       asinh(0.3) + acosh(1.4) + atanh(0.5)},
+      {"exp(1.5) + ln(3) + log(1000)", exp(1.5) + log(3.0) + 3},
+      {"sqrt(2) + pow(2, 0.5) + abs(-3)", 2 * sqrt(2.0) + 3},
+      {"floor(-1.5) + ceil(-1.5) + int(-1.5)", -2 - 1 - 1},
+      /* mod keeps the dividend's sign: povray gives -1.5 for mod(-7.5, 3). */
+      {"mod(-7.5, 3)", -1.5},
+      {"degrees(pi) + radians(180)", 180 + M_PI},
+      {"min(3, 1, 2) + 10 * max(3, 1, 2)", 1 + 30},
+      {"true + yes + on + false + no + off", 3},
+      /* select(a, b, c): a < 0 gives b, else c; with a fourth value
+         a = 0 gives c and a > 0 gives d (povray 3.7: 1 2 3, 1 2 2). */
+      {"select(-1, 1, 2, 3) + 10 * select(0, 1, 2, 3) + "
+       "100 * select(1, 1, 2, 3)",
+       321},
+      {"select(-1, 1, 2) + 10 * select(0, 1, 2) + 100 * select(1, 1, 2)",
+       221},
+  };
+  for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+    char d[512];
+    snprintf(d, sizeof d, "#declare F = function { %s + 0 * x }\n",
+             cases[i].body);
+    double v = value(f, d, "F(0, 0, 0)");
+    if (fabs(v - cases[i].expected) > EPS)
+      fail_msg("%s: %.17g, expected %.17g", cases[i].body, v,
+               cases[i].expected);
+  }
+}
+
+static void test_function_parameters(void **state) {
+  fixture *f = *state;
+  /* The manual's examples ("Declaring User-Defined Float Functions"). */
+  const char *d = "#declare foo = function { x + y * z }\n";
+  assert_true(value(f, d, "foo(1, 2, 3)") == 7);
+  d = "#declare foo4 = function(h) { h * h + h }\n";
+  assert_true(value(f, d, "foo4(3)") == 12);
+  d = "#declare foo4 = function(u, v) { x + y * v }\n"; /* = u + v*v */
+  assert_true(value(f, d, "foo4(2, 3)") == 11);
+  d = "#declare foo4 = function(x, v, z) { u + y * v + z }\n";
+  assert_true(value(f, d, "foo4(2, 3, 4)") == 2 + 9 + 4);
+  /* A parameter hides a declared identifier of the same name. */
+  d = "#declare h = 100;\n#declare F = function(h) { h + 1 }\n";
+  assert_true(value(f, d, "F(1)") == 2);
+}
+
+static void test_function_captures_floats(void **state) {
+  fixture *f = *state;
+  /* A declared float is captured when the function is declared. */
+  const char *d = "#declare K = 2;\n"
+                  "#declare F = function(a) { a * K }\n"
+                  "#declare K = 10;\n"
+                  "#declare V = <1, 2, 3>;\n"
+                  "#declare G = function { V.y + V.z * x }\n";
+  assert_true(value(f, d, "F(3)") == 6);
+  assert_true(value(f, d, "G(2, 0, 0)") == 8);
+  assert_true(value(f, d, "F(3) + K") == 16);
+}
+
+static void test_function_nested_calls(void **state) {
+  fixture *f = *state;
+  const char *d = "#declare F = function(a) { a * 2 }\n"
+                  "#declare G = function(a, b) { F(a) + F(b) + 1 }\n"
+                  "#declare H = function { G(x, F(y)) * G(z, z) }\n"
+                  "#declare J = H;\n";
+  assert_true(value(f, d, "F(3)") == 6);
+  assert_true(value(f, d, "G(1, 2)") == 7);
+  assert_true(value(f, d, "H(1, 2, 3)") == (2 + 8 + 1) * (6 + 6 + 1));
+  assert_true(value(f, d, "J(1, 2, 3)") == (2 + 8 + 1) * (6 + 6 + 1));
+  /* Calls inside an argument list of a float expression. */
+  assert_true(value(f, d, "max(F(1), G(1, 1)) + F(F(1))") == 5 + 4);
+}
+
+static void test_function_sum_prod(void **state) {
+  fixture *f = *state;
+  /* The manual's example: factorial(5) is 120. */
+  const char *d = "#declare factorial = function(C) { prod(i, 1, C, i) }\n"
+                  "#declare S = function(n) { sum(i, 1, n, "
+                  "sum(j, 1, i, j)) }\n"
+                  "#declare E = function { sum(i, 3, 2, 1) + prod(i, 3, 2,"
+                  " 5) }\n";
+  assert_true(value(f, d, "factorial(5)") == 120);
+  /* sum of triangular numbers 1..4: 1 + 3 + 6 + 10. */
+  assert_true(value(f, d, "S(4)") == 20);
+  /* Empty ranges give the neutral elements 0 and 1. */
+  assert_true(value(f, d, "E(0, 0, 0)") == 1);
+}
+
+/* The internal functions' values, each checked against povray 3.7.0:
+     #include "functions.inc"
+     #debug concat(str(f_sphere(1, 2, 3, 0.5), 0, 9), "\n") ...  */
+static void test_function_internals_match_povray(void **state) {
+  fixture *f = *state;
+  const char *d =
+      "#declare f_ellipsoid = function { internal(17) }\n"
+      "#declare f_paraboloid = function { internal(45) }\n"
+      "#declare f_ph = function { internal(47) }\n"
+      "#declare f_r = function { internal(57) }\n"
+      "#declare f_sphere = function { internal(61) }\n"
+      "#declare f_th = function { internal(69) }\n"
+      "#declare f_torus = function { internal(70) }\n";
+  struct {
+    const char *call;
+    double povray;
+  } cases[] = {
+      {"f_sphere(1, 2, 3, 0.5)", 3.241657387},
+      {"f_r(1, 2, 3)", 3.741657387},
+      {"f_th(1, 2, 3)", 0.321750554},
+      {"f_ph(1, 2, 3)", 1.006853685},
+      {"f_torus(1, 2, 3, 0.7, 0.2)", 2.972193449},
+      {"f_ellipsoid(1, 2, 3, 0.5, 0.25, 2)", 6.041522987},
+      {"f_paraboloid(1, 2, 3, 0.5)", -4},
+  };
+  for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+    double v = value(f, d, cases[i].call);
+    if (fabs(v - cases[i].povray) > POV_EPS)
+      fail_msg("%s: %.10f, povray %.9f", cases[i].call, v, cases[i].povray);
+  }
+  /* Used inside another function, with the parameters it declares. */
+  d = "#declare f_sphere = function { internal(61) }\n"
+      "#declare B = function { f_sphere(x, y, z, 1) - f_sphere(x, 0, 0,"
+      " 1) }\n";
+  assert_true(fabs(value(f, d, "B(3, 4, 0)") - (4 - 2)) < EPS);
+}
+
+static void test_function_unsupported_internal(void **state) {
+  fixture *f = *state;
+  /* Declaring is fine (functions.inc declares them all); using is not. */
+  const char *d = "#declare f_noise3d = function { internal(76) }\n"
+                  "#declare N = function { 2 * f_noise3d(x, y, z) - 1 }\n"
+                  "#declare P = function { pattern { checker } }\n";
+  char text[1024];
+  snprintf(text, sizeof text, "%s#declare V = N(1, 2, 3);\n", d);
+  bad(f, text, ZR_EUNSUPPORTED,
+      "function 'N' uses internal function 76 (f_noise3d), which is not "
+      "supported yet");
+  snprintf(text, sizeof text, "%s#declare V = P(1, 2, 3);\n", d);
+  bad(f, text, ZR_EUNSUPPORTED,
+      "function 'P' uses pattern functions, which is not supported yet");
+  bad(f, "#declare F = function { internal(77) }\n", ZR_ESCENE,
+      "there is no internal function 77");
+  bad(f, "#declare F = function(a) { internal(61) }\n", ZR_ESYNTAX,
+      "internal function 61 (f_sphere) takes 4 parameters");
+}
+
+static void test_function_errors(void **state) {
+  fixture *f = *state;
+  bad(f, "#declare F = function(a) { a + b }\n", ZR_EUNDEFINED,
+      "undefined identifier 'b' in function");
+  bad(f, "#declare F = function(a) { a + y }\n", ZR_EUNDEFINED,
+      "'y' is not a parameter of this function");
+  bad(f,
+      "#declare F = function(a, b) { a + b }\n"
+      "#declare G = function { F(x) }\n",
+      ZR_ESYNTAX, "function 'F' takes 2 arguments, not 1");
+  bad(f,
+      "#declare F = function(a, b) { a + b }\n"
+      "#declare V = F(1, 2, 3);\n",
+      ZR_ESYNTAX, "function 'F' takes 2 arguments, not 3");
+  bad(f, "#declare F = function { x < 0 ? 1 : 2 }\n", ZR_EUNSUPPORTED,
+      "'?:' cannot be used in a function (POV-Ray 3.7 does not allow it "
+      "either: use select())");
+  bad(f, "#declare F = function(a, a) { a }\n", ZR_ESYNTAX,
+      "parameter 'a' is listed twice");
+  bad(f, "#declare F = function { sin(x, y) }\n", ZR_ESYNTAX,
+      "'sin' takes 1 argument");
+  bad(f, "#declare F = function { select(x, y) }\n", ZR_ESYNTAX,
+      "'select' takes 3 or 4 arguments");
+  bad(f, "#declare F = function { x + }\n", ZR_ESYNTAX,
+      "expected a float expression in function, got '}'");
+  bad(f, "#declare F = function { x y }\n", ZR_ESYNTAX,
+      "expected an operator or '}' in function, got 'y'");
+  bad(f, "#declare F = function { box }\n", ZR_ESYNTAX,
+      "'box' cannot be used in a function");
+  bad(f, "#declare F = function { x", ZR_ESYNTAX,
+      "expected an operator or '}' in function, got end of file");
+  bad(f,
+      "#declare P = pigment { rgb 1 }\n"
+      "#declare F = function { P + x }\n",
+      ZR_ESYNTAX,
+      "'P' is not a float or a function, so it cannot be used in a "
+      "function");
+  /* The message points at the name, with the usual caret. */
+  parse(f, "#declare F = function(a) {\n  a + nope }\n");
+  assert_string_equal(f->diag.text,
+                      "t.pov:2:7: error: undefined identifier 'nope' in "
+                      "function\n"
+                      "    2 |   a + nope }\n"
+                      "      |       ^~~~\n");
+}
+
+/* A chain of n functions, each calling the one before. */
+static char *chain(int n) {
+  size_t cap = (size_t)n * 64 + 256;
+  char *text = malloc(cap);
+  assert_non_null(text);
+  size_t len = (size_t)snprintf(text, cap,
+                                "#declare F0 = function(a) { a + 1 }\n");
+  for (int i = 1; i < n; i++)
+    len += (size_t)snprintf(text + len, cap - len,
+                            "#declare F%d = function(a) { F%d(a) + 1 }\n",
+                            i, i - 1);
+  return text;
+}
+
+static void test_function_depth_limit(void **state) {
+  fixture *f = *state;
+  /* 1024 levels are allowed and evaluate (the manual's limit)... */
+  char *text = chain(ZR_FN_MAX_DEPTH);
+  char decl[64];
+  snprintf(decl, sizeof decl, "F%d(0)", ZR_FN_MAX_DEPTH - 1);
+  assert_true(value(f, text, decl) == ZR_FN_MAX_DEPTH);
+  free(text);
+  /* ...one more is refused, where it is declared. */
+  text = chain(ZR_FN_MAX_DEPTH + 1);
+  bad(f, text, ZR_ELIMIT, "functions nested more than 1024 calls deep");
+  free(text);
+}
+
+static void test_function_stack_limit(void **state) {
+  fixture *f = *state;
+  /* min() with 50 arguments keeps 49 of them on the stack while the
+     last is computed: nested 100 deep that is more than ZR_FN_MAX_STACK
+     values. */
+  size_t cap = 100 * 160 + 64;
+  char *text = malloc(cap);
+  assert_non_null(text);
+  size_t len = (size_t)snprintf(text, cap, "#declare F = function { ");
+  for (int i = 0; i < 100; i++) {
+    len += (size_t)snprintf(text + len, cap - len, "min(");
+    for (int k = 0; k < 49; k++)
+      len += (size_t)snprintf(text + len, cap - len, "x,");
+  }
+  len += (size_t)snprintf(text + len, cap - len, "x");
+  for (int i = 0; i < 100; i++)
+    len += (size_t)snprintf(text + len, cap - len, ")");
+  snprintf(text + len, cap - len, " }\n");
+  bad(f, text, ZR_ELIMIT, "the function needs more than 4096 values to "
+                          "evaluate");
+  free(text);
+  /* Parentheses nested past ZR_FN_MAX_NESTING stop the compiler before
+     its recursion could exhaust the C stack. */
+  cap = 3000 * 2 + 64;
+  text = malloc(cap);
+  assert_non_null(text);
+  len = (size_t)snprintf(text, cap, "#declare F = function { ");
+  for (int i = 0; i < 3000; i++)
+    text[len++] = '(';
+  snprintf(text + len, cap - len, "x }\n");
+  bad(f, text, ZR_ELIMIT, "the function nests more than 256 levels deep");
+  free(text);
+}
+
+/*
+ * Evaluates a 20-operation function directly, many times: the figure
+ * goes in the report (a benchmark, never a timed assertion), and the
+ * value is checked against the same expression in C.
+ */
+static void test_function_speed(void **state) {
+  fixture *f = *state;
+  const char *d =
+      "#declare F = function { x * y + y * z - z * x + sin(x) * cos(y) - "
+      "sqrt(x * x + y * y + z * z) + abs(x - y) * 0.5 + max(x, z) / 3 }\n";
+  /* Operations: 9 of * and /, 7 of + and -, sin cos sqrt abs max. */
+  assert_int_equal(parse(f, d), ZR_OK);
+  /* The function is not reachable from the scene: compile it again the
+     way the grammar does, through a parser reading the same text. */
+  zr_sdl_parser p;
+  memset(&p, 0, sizeof p);
+  p.ctx = f->ctx;
+  p.scene = f->scene;
+  zr_sdl_file file;
+  memset(&file, 0, sizeof file);
+  const char *body = strstr(d, "function") + strlen("function");
+  size_t size = strlen(body);
+  char *bytes = malloc(size + 1);
+  char *path = malloc(8);
+  assert_non_null(bytes);
+  assert_non_null(path);
+  memcpy(bytes, body, size + 1);
+  strcpy(path, "t.pov");
+  zr_sdl_loc err_loc;
+  char err[200];
+  assert_int_equal(zr__sdl_file_lex(&file, 0, path, bytes, size, &err_loc,
+                                    err, sizeof err),
+                   ZR_OK);
+  zr_sdl_frame frame;
+  memset(&frame, 0, sizeof frame);
+  p.files = &file;
+  p.n_files = 1;
+  p.frames = &frame;
+  p.n_frames = 1;
+  zr_sdl_loc at = {0, 1, 1, 8};
+  const zr_fn *fn = zr__sdl_function_parse(&p, &at);
+  assert_non_null(fn);
+  assert_int_equal(zr__fn_params(fn), 3);
+  assert_null(zr__fn_unsupported(fn));
+  long n = 2000000;
+  double sum = 0, args[3];
+  struct timespec t0, t1;
+  clock_gettime(CLOCK_MONOTONIC, &t0);
+  for (long i = 0; i < n; i++) {
+    args[0] = (double)(i % 1000) * 0.001;
+    args[1] = 0.5;
+    args[2] = -0.25;
+    sum += zr__fn_eval(fn, args);
+  }
+  clock_gettime(CLOCK_MONOTONIC, &t1);
+  double secs = (double)(t1.tv_sec - t0.tv_sec) +
+                (double)(t1.tv_nsec - t0.tv_nsec) * 1e-9;
+  double expect = 0;
+  for (long i = 0; i < n; i++) {
+    double x = (double)(i % 1000) * 0.001, y = 0.5, z = -0.25;
+    expect += x * y + y * z - z * x + sin(x) * cos(y) -
+              sqrt(x * x + y * y + z * z) + fabs(x - y) * 0.5 +
+              (x > z ? x : z) / 3;
+  }
+  /* Sums of two million terms of order one: the orders of rounding
+     differ, so compare relatively. */
+  assert_true(fabs(sum - expect) <= 1e-9 * fabs(expect));
+  printf("# function speed: %.3g evaluations/s of a 21-operation "
+         "function (%.1f ns each)\n",
+         (double)n / secs, secs / (double)n * 1e9);
+  zr__sdl_file_free(&file);
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test_setup_teardown(test_function_arithmetic, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_function_logic, setup, teardown),
+      cmocka_unit_test_setup_teardown(test_function_builtins, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_function_parameters, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_function_captures_floats, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_function_nested_calls, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_function_sum_prod, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_function_internals_match_povray,
+                                      setup, teardown),
+      cmocka_unit_test_setup_teardown(test_function_unsupported_internal,
+                                      setup, teardown),
+      cmocka_unit_test_setup_teardown(test_function_errors, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_function_depth_limit, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_function_stack_limit, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_function_speed, setup,
+                                      teardown),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}
