@@ -232,6 +232,9 @@ static zr_status make_context(run *r) {
   r->diag.rank = r->rank;
   r->diag.quiet = r->opts.quiet;
   zr_context_set_diag(r->ctx, print_diag, &r->diag);
+  /* Scenes read image_width and image_height while they are parsed. */
+  s = zr_context_set_render_size(r->ctx, r->opts.params.width,
+                                 r->opts.params.height);
   for (size_t i = 0; i < r->opts.n_include_paths && s == ZR_OK; i++)
     s = zr_context_add_include_path(r->ctx, r->opts.include_paths[i]);
   /* POV-Ray's own include files come after the user's paths.  Every
@@ -368,7 +371,7 @@ static void print_scene_info(const run *r) {
          "infinite primitives: %zu\n"
          "lights: %zu\n"
          "camera: %s\n"
-         "parse seconds: %.3f\n",
+         "parse seconds: %.4f\n",
          r->opts.input, info.objects, info.primitives,
          info.finite_primitives, info.infinite_primitives, info.lights,
          info.has_camera ? "yes" : "no (the default)", r->parse_seconds);

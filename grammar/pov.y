@@ -40,6 +40,7 @@ int zr__pov_parse(zr_sdl_parser *p);
 #include <string.h>
 
 #include "core/strbuf.h"
+#include "scene/pattern.h"
 #include "sdl/function.h"
 
 /* A construct's location is its first token's, underlined to the end
@@ -99,6 +100,18 @@ static zr_sdl_mod make_mod(zr_sdl_mod_kind kind, const void *ptr) {
   return m;
 }
 
+/* A pattern modifier; e NULL for the keywords without a value. */
+static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
+                             const zr_sdl_loc *loc) {
+  zr_sdl_pmod m;
+  memset(&m, 0, sizeof m);
+  m.token = token;
+  if (e)
+    m.value = *e;
+  m.loc = *loc;
+  return m;
+}
+
 /* The rest of the camera's, light's and settings' items act on the
    scene directly: there is one of each being built at a time. */
 #define CAMERA (&p->scene->camera)
@@ -125,6 +138,11 @@ static zr_sdl_mod make_mod(zr_sdl_mod_kind kind, const void *ptr) {
   zr_sdl_reflection refl;
   zr_transform *transform;
   zr_pigment *pigment;
+  zr_sdl_pmod pmod;
+  zr_sdl_clist clist;
+  zr_colour_map *cmap;
+  zr_normal *normal;
+  zr_image_map *imap;
   zr_finish *finish;
   zr_texture *texture;
   zr_interior *interior;
@@ -154,6 +172,60 @@ static zr_sdl_mod make_mod(zr_sdl_mod_kind kind, const void *ptr) {
 /* User-defined functions: lib/sdl/function.c compiles the body. */
 %token <value> T_FUNCTION_ID "function identifier"
 %token T_FUNCTION "function"
+
+/* Textures: patterns, colour maps, normals, image maps. */
+%token <value> T_COLOUR_MAP_ID "color_map identifier"
+%token <value> T_NORMAL_ID "normal identifier"
+%token T_AGATE "agate"
+%token T_AGATE_TURB "agate_turb"
+%token T_ALL "all"
+%token T_BOXED "boxed"
+%token T_BOZO "bozo"
+%token T_BRICK "brick"
+%token T_BRICK_SIZE "brick_size"
+%token T_BUMP_SIZE "bump_size"
+%token T_BUMPS "bumps"
+%token T_CHECKER "checker"
+%token T_COLOUR_MAP "color_map"
+%token T_CRACKLE "crackle"
+%token T_CUBIC_WAVE "cubic_wave"
+%token T_CYLINDRICAL "cylindrical"
+%token T_DENTS "dents"
+%token T_FREQUENCY "frequency"
+%token T_GRADIENT "gradient"
+%token T_GRANITE "granite"
+%token T_HEXAGON "hexagon"
+%token T_IMAGE_MAP "image_map"
+%token T_INTERPOLATE "interpolate"
+%token T_JPEG "jpeg"
+%token T_LAMBDA "lambda"
+%token T_LEOPARD "leopard"
+%token T_MAP_TYPE "map_type"
+%token T_MARBLE "marble"
+%token T_MORTAR "mortar"
+%token T_NORMAL "normal"
+%token T_OCTAVES "octaves"
+%token T_OMEGA "omega"
+%token T_ONION "onion"
+%token T_PHASE "phase"
+%token T_PLANAR "planar"
+%token T_PNG "png"
+%token T_POLY_WAVE "poly_wave"
+%token T_PPM "ppm"
+%token T_QUICK_COLOUR "quick_color"
+%token T_RADIAL "radial"
+%token T_RAMP_WAVE "ramp_wave"
+%token T_RIPPLES "ripples"
+%token T_SCALLOP_WAVE "scallop_wave"
+%token T_SINE_WAVE "sine_wave"
+%token T_SPHERICAL "spherical"
+%token T_SPOTTED "spotted"
+%token T_TRIANGLE_WAVE "triangle_wave"
+%token T_TURBULENCE "turbulence"
+%token T_WARP "warp"
+%token T_WAVES "waves"
+%token T_WOOD "wood"
+%token T_WRINKLES "wrinkles"
 
 %token T_DECLARE "#declare"
 %token T_LOCAL "#local"
@@ -191,6 +263,7 @@ static zr_sdl_mod make_mod(zr_sdl_mod_kind kind, const void *ptr) {
 %token T_START_RANGE "start of #range"
 %token T_START_FOR "start of #for"
 %token T_START_INDEX "start of array index"
+%token T_START_DEFAULT "start of #default"
 %token T_DECL_END "end of declaration"
 %token <value> T_STRING_ID "string identifier"
 %token <value> T_ARRAY_ID "array identifier"
@@ -199,6 +272,10 @@ static zr_sdl_mod make_mod(zr_sdl_mod_kind kind, const void *ptr) {
 %token T_LE "<="
 %token T_GE ">="
 %token T_NE "!="
+%token T_DEPRECATED "deprecated"
+%token T_INSIDE "inside"
+%token T_VTURBULENCE "vturbulence"
+%token T_ONCE "once"
 %token T_ACOSH "acosh"
 %token T_ARRAY "array"
 %token T_ASC "asc"
@@ -339,7 +416,7 @@ static zr_sdl_mod make_mod(zr_sdl_mod_kind kind, const void *ptr) {
 %type <value> rvalue
 /* Directive values and the expressions only they and parentheses hold
    (comparisons, logic, '? :'), strings and arrays. */
-%type <expr> cexpr lor land rel
+%type <expr> cexpr
 %type <list> args dims
 %type <str> str_expr str_list
 %type <decl> decl_target
@@ -348,6 +425,12 @@ static zr_sdl_mod make_mod(zr_sdl_mod_kind kind, const void *ptr) {
 %type <mod> object_mod
 %type <transform> transform
 %type <pigment> pigment pigment_head pigment_body
+%type <token> pattern_kw block_kw
+%type <clist> colour_list colour_list_items
+%type <pmod> pattern_mod warp_body
+%type <cmap> colour_map colour_map_head colour_map_body
+%type <normal> normal normal_head normal_body
+%type <imap> image_map_head image_map_body
 %type <finish> finish finish_head finish_body
 %type <refl> reflection
 %type <texture> texture texture_head texture_body
@@ -357,6 +440,10 @@ static zr_sdl_mod make_mod(zr_sdl_mod_kind kind, const void *ptr) {
 /* OPTIONAL_COMMA ranks below the operators, so "<0,0,0> -1" reads as a
    subtraction, as in POV-Ray, rather than as a missing comma. */
 %precedence OPTIONAL_COMMA
+%right '?'
+%left '|'
+%left '&'
+%left '<' '>' '=' T_LE T_GE T_NE
 %left '+' '-'
 %left '*' '/'
 %precedence NEG
@@ -403,6 +490,7 @@ start:
       YYACCEPT;
     }
 | T_START_INDEX '[' cexpr ']'  { p->nested_value = $3; YYACCEPT; }
+| T_START_DEFAULT '{' default_items '}'  { YYACCEPT; }
 ;
 
 items:
@@ -463,6 +551,10 @@ rvalue:
 | T_TEXTURE_ID  { $$ = $1; }
 | T_INTERIOR_ID { $$ = $1; }
 | T_OBJECT_ID   { $$ = $1; }
+| T_NORMAL_ID   { $$ = $1; }
+| T_COLOUR_MAP_ID { $$ = $1; }
+| normal        { $$ = pointer_value(ZR_SDL_NORMAL, $1); }
+| colour_map    { $$ = pointer_value(ZR_SDL_COLOUR_MAP, $1); }
 | T_FUNCTION_ID { $$ = $1; }
 | T_FUNCTION
     {
@@ -505,13 +597,26 @@ rvalue:
       TRY(a = zr__sdl_array_new(p, &$2, &@2));
       $$ = pointer_value(ZR_SDL_ARRAY, a);
     }
-| T_ARRAY dims init_begin init_items '}'
+| T_ARRAY dims init_begin init_items opt_comma '}'
     {
       zr_sdl_array *a;
       TRY(a = zr__sdl_array_new(p, &$2, &@2));
       TRY(zr__sdl_array_init(p, a, (size_t)$3, &@$));
       $$ = pointer_value(ZR_SDL_ARRAY, a);
     }
+;
+
+/* ---- #default ---- */
+
+default_items:
+  %empty
+| default_items default_item
+;
+
+default_item:
+  texture              { TRY(zr__sdl_set_default(p, $1, NULL, NULL)); }
+| pigment              { TRY(zr__sdl_set_default(p, NULL, $1, NULL)); }
+| finish               { TRY(zr__sdl_set_default(p, NULL, NULL, $1)); }
 ;
 
 /* ---- arrays ---- */
@@ -534,7 +639,13 @@ init_items:
 
 init_item:
   rvalue               { TRY(zr__sdl_init_add(p, &$1, &@1)); }
-| '{' init_items '}'
+| '{' init_items opt_comma '}'
+;
+
+/* POV-Ray accepts a comma after an initialiser's last element. */
+opt_comma:
+  %empty
+| ','
 ;
 
 /* ---- strings ---- */
@@ -596,37 +707,26 @@ comma:
 /* ---- expressions ---- */
 
 /* Conditions: '?:' below '|' below '&' below the comparisons, as in the
-   reference manual's "Float Operators".  They are written inside
+   reference manual's "Float Operators" (by precedence, which keeps
+   the chain of unit reductions per operand short).  They are written inside
    parentheses, function arguments and directive values, where a '<'
    after an operand cannot start a vector. */
 cexpr:
-  lor
-| lor '?' cexpr ':' cexpr
+  expr
+| cexpr '?' cexpr ':' cexpr %prec '?'
     {
       bool c;
       TRY(zr__sdl_truth(p, &$1, &@1, &c));
       $$ = c ? $3 : $5;
     }
-;
-
-lor:
-  land
-| lor '|' land         { TRY(zr__sdl_compare(p, '|', &$1, &$3, &@2, &$$)); }
-;
-
-land:
-  rel
-| land '&' rel         { TRY(zr__sdl_compare(p, '&', &$1, &$3, &@2, &$$)); }
-;
-
-rel:
-  expr
-| expr '<' expr        { TRY(zr__sdl_compare(p, '<', &$1, &$3, &@2, &$$)); }
-| expr '>' expr        { TRY(zr__sdl_compare(p, '>', &$1, &$3, &@2, &$$)); }
-| expr '=' expr        { TRY(zr__sdl_compare(p, '=', &$1, &$3, &@2, &$$)); }
-| expr T_LE expr       { TRY(zr__sdl_compare(p, T_LE, &$1, &$3, &@2, &$$)); }
-| expr T_GE expr       { TRY(zr__sdl_compare(p, T_GE, &$1, &$3, &@2, &$$)); }
-| expr T_NE expr       { TRY(zr__sdl_compare(p, T_NE, &$1, &$3, &@2, &$$)); }
+| cexpr '|' cexpr      { TRY(zr__sdl_compare(p, '|', &$1, &$3, &@2, &$$)); }
+| cexpr '&' cexpr      { TRY(zr__sdl_compare(p, '&', &$1, &$3, &@2, &$$)); }
+| cexpr '<' cexpr      { TRY(zr__sdl_compare(p, '<', &$1, &$3, &@2, &$$)); }
+| cexpr '>' cexpr      { TRY(zr__sdl_compare(p, '>', &$1, &$3, &@2, &$$)); }
+| cexpr '=' cexpr      { TRY(zr__sdl_compare(p, '=', &$1, &$3, &@2, &$$)); }
+| cexpr T_LE cexpr     { TRY(zr__sdl_compare(p, T_LE, &$1, &$3, &@2, &$$)); }
+| cexpr T_GE cexpr     { TRY(zr__sdl_compare(p, T_GE, &$1, &$3, &@2, &$$)); }
+| cexpr T_NE cexpr     { TRY(zr__sdl_compare(p, T_NE, &$1, &$3, &@2, &$$)); }
 ;
 
 args:
@@ -694,6 +794,10 @@ primary:
       TRY(zr__sdl_dimension_size(p, $3.ptr, d, &@5, &$$));
     }
 | T_RAND '(' T_SEED_ID ')' { $$ = zr__sdl_float(zr__sdl_rand($3.ptr)); }
+| T_INSIDE '(' T_OBJECT_ID ',' expr ')'
+    { TRY(zr__sdl_inside(p, $3.ptr, &$5, &@5, &$$)); }
+| T_VTURBULENCE '(' expr ',' expr ',' expr ',' expr ')'
+    { TRY(zr__sdl_vturbulence(p, &$3, &$5, &$7, &$9, &@$, &$$)); }
 | T_VAXIS_ROTATE '(' expr ',' expr ',' expr ')'
     { TRY(zr__sdl_vaxis_rotate(p, &$3, &$5, &$7, &@$, &$$)); }
 | T_VROTATE '(' expr ',' expr ')'
@@ -885,6 +989,7 @@ object_mod:
 | finish               { $$ = make_mod(ZR_SDL_MOD_FINISH, $1); }
 | texture              { $$ = make_mod(ZR_SDL_MOD_TEXTURE, $1); }
 | interior             { $$ = make_mod(ZR_SDL_MOD_INTERIOR, $1); }
+| normal               { $$ = make_mod(ZR_SDL_MOD_NORMAL, $1); }
 | T_NO_SHADOW          { $$ = make_mod(ZR_SDL_MOD_NO_SHADOW, NULL); }
 | T_INVERSE            { $$ = make_mod(ZR_SDL_MOD_INVERSE, NULL); }
 | T_OPEN               { $$ = make_mod(ZR_SDL_MOD_OPEN, NULL); }
@@ -914,12 +1019,192 @@ pigment_head:
       TRY($$ = zr__sdl_pigment_new(p, NULL));
       TRY(zr__sdl_want_colour(p, &$3, &@3, &$$->colour));
     }
+| T_PIGMENT '{' T_IMAGE_MAP '{' image_map_body '}'
+    {
+      TRY($$ = zr__sdl_pigment_new(p, NULL));
+      $$->kind = ZR_PIGMENT_IMAGE;
+      $$->image = $5;
+    }
 ;
 
 pigment_body:
   pigment_head
 | pigment_body transform
     { TRY(zr__sdl_pigment_transform(p, $1, $2)); $$ = $1; }
+| pigment_body pattern_kw
+    { TRY(zr__sdl_pigment_pattern(p, $1, $2, NULL)); $$ = $1; }
+| pigment_body block_kw colour_list
+    { TRY(zr__sdl_pigment_pattern(p, $1, $2, &$3)); $$ = $1; }
+| pigment_body T_GRADIENT expr
+    {
+      TRY(zr__sdl_pigment_pattern(p, $1, ZR_PAT_GRADIENT, NULL));
+      TRY(zr__sdl_gradient(p, &$1->pattern, &$3, &@3));
+      $$ = $1;
+    }
+| pigment_body pattern_mod
+    { TRY(zr__sdl_pattern_mod(p, &$1->pattern, &$2)); $$ = $1; }
+| pigment_body colour_map  { $1->colour_map = $2; $$ = $1; }
+/* quick_color only matters to POV-Ray's low quality previews. */
+| pigment_body T_QUICK_COLOUR colour_value  { $$ = $1; }
+;
+
+/* ---- patterns (reference manual, "Pattern") ---- */
+
+pattern_kw:
+  T_AGATE { $$ = ZR_PAT_AGATE; }         | T_BOXED { $$ = ZR_PAT_BOXED; }
+| T_BOZO { $$ = ZR_PAT_BOZO; }           | T_BUMPS { $$ = ZR_PAT_BUMPS; }
+| T_CRACKLE { $$ = ZR_PAT_CRACKLE; }     | T_DENTS { $$ = ZR_PAT_DENTS; }
+| T_CYLINDRICAL { $$ = ZR_PAT_CYLINDRICAL; }
+| T_GRANITE { $$ = ZR_PAT_GRANITE; }     | T_LEOPARD { $$ = ZR_PAT_LEOPARD; }
+| T_MARBLE { $$ = ZR_PAT_MARBLE; }       | T_ONION { $$ = ZR_PAT_ONION; }
+| T_PLANAR { $$ = ZR_PAT_PLANAR; }       | T_RADIAL { $$ = ZR_PAT_RADIAL; }
+| T_RIPPLES { $$ = ZR_PAT_RIPPLES; }     | T_SPOTTED { $$ = ZR_PAT_SPOTTED; }
+| T_SPHERICAL { $$ = ZR_PAT_SPHERICAL; } | T_WAVES { $$ = ZR_PAT_WAVES; }
+| T_WOOD { $$ = ZR_PAT_WOOD; }           | T_WRINKLES { $$ = ZR_PAT_WRINKLES; }
+;
+
+block_kw:
+  T_CHECKER { $$ = ZR_PAT_CHECKER; }     | T_HEXAGON { $$ = ZR_PAT_HEXAGON; }
+| T_BRICK { $$ = ZR_PAT_BRICK; }
+;
+
+/* "checker Red, Blue" or "checker color Red color Blue": a comma or the
+   colour keyword separates the colours ("Color List Pigments"). */
+colour_list:
+  %empty               { memset(&$$, 0, sizeof $$); }
+| colour_list_items
+;
+
+colour_list_items:
+  colour_value
+    { memset(&$$, 0, sizeof $$); TRY(zr__sdl_clist_add(p, &$$, &$1, &@1)); }
+| colour_list_items ',' colour_value
+    { $$ = $1; TRY(zr__sdl_clist_add(p, &$$, &$3, &@3)); }
+| colour_list_items T_COLOUR colour_spec
+    { $$ = $1; TRY(zr__sdl_clist_add(p, &$$, &$3, &@3)); }
+;
+
+pattern_mod:
+  T_TURBULENCE expr    { $$ = make_pmod(T_TURBULENCE, &$2, &@2); }
+| T_OCTAVES expr       { $$ = make_pmod(T_OCTAVES, &$2, &@2); }
+| T_OMEGA expr         { $$ = make_pmod(T_OMEGA, &$2, &@2); }
+| T_LAMBDA expr        { $$ = make_pmod(T_LAMBDA, &$2, &@2); }
+| T_FREQUENCY expr     { $$ = make_pmod(T_FREQUENCY, &$2, &@2); }
+| T_PHASE expr         { $$ = make_pmod(T_PHASE, &$2, &@2); }
+| T_AGATE_TURB expr    { $$ = make_pmod(T_AGATE_TURB, &$2, &@2); }
+| T_MORTAR expr        { $$ = make_pmod(T_MORTAR, &$2, &@2); }
+| T_BRICK_SIZE expr    { $$ = make_pmod(T_BRICK_SIZE, &$2, &@2); }
+| T_RAMP_WAVE          { $$ = make_pmod(T_RAMP_WAVE, NULL, &@1); }
+| T_TRIANGLE_WAVE      { $$ = make_pmod(T_TRIANGLE_WAVE, NULL, &@1); }
+| T_SINE_WAVE          { $$ = make_pmod(T_SINE_WAVE, NULL, &@1); }
+| T_SCALLOP_WAVE       { $$ = make_pmod(T_SCALLOP_WAVE, NULL, &@1); }
+| T_CUBIC_WAVE         { $$ = make_pmod(T_CUBIC_WAVE, NULL, &@1); }
+| T_POLY_WAVE          { $$ = make_pmod(T_POLY_WAVE, NULL, &@1); }
+| T_POLY_WAVE expr     { $$ = make_pmod(T_POLY_WAVE, &$2, &@2); }
+| warp_body '}'
+;
+
+/* warp { turbulence <t> [octaves n] [omega w] [lambda l] } */
+warp_body:
+  T_WARP '{' T_TURBULENCE expr
+    {
+      $$ = make_pmod(T_WARP, NULL, &@4);
+      zr__pattern_init(&$$.warp, ZR_PAT_NONE);
+      TRY(zr__sdl_want_vector(p, &$4, &@4, &$$.warp.turbulence));
+    }
+| warp_body T_OCTAVES expr
+    {
+      zr_sdl_pmod m = make_pmod(T_OCTAVES, &$3, &@3);
+      $$ = $1;
+      TRY(zr__sdl_pattern_mod(p, &$$.warp, &m));
+    }
+| warp_body T_OMEGA expr
+    { $$ = $1; TRY(zr__sdl_want_float(p, &$3, &@3, &$$.warp.omega)); }
+| warp_body T_LAMBDA expr
+    { $$ = $1; TRY(zr__sdl_want_float(p, &$3, &@3, &$$.warp.lambda)); }
+;
+
+/* color_map { [Value Colour] ... } (reference manual, "Color Maps"). */
+colour_map:
+  colour_map_body '}'
+    { TRY(zr__sdl_colour_map_done(p, $1, &@1)); $$ = $1; }
+;
+
+colour_map_head:
+  T_COLOUR_MAP '{'     { TRY($$ = zr__sdl_colour_map_new(p, NULL)); }
+| T_COLOUR_MAP '{' T_COLOUR_MAP_ID
+    { TRY($$ = zr__sdl_colour_map_new(p, $3.ptr)); }
+;
+
+colour_map_body:
+  colour_map_head
+| colour_map_body '[' expr comma colour_value ']'
+    { TRY(zr__sdl_colour_map_add(p, $1, &$3, &@3, &$5, &@5)); $$ = $1; }
+;
+
+/* ---- normals (reference manual, "Normal") ---- */
+
+normal:
+  normal_body '}'
+;
+
+normal_head:
+  T_NORMAL '{'         { TRY($$ = zr__sdl_normal_new(p, NULL)); }
+| T_NORMAL '{' T_NORMAL_ID
+    { TRY($$ = zr__sdl_normal_new(p, $3.ptr)); }
+;
+
+normal_body:
+  normal_head
+| normal_body pattern_kw
+    { TRY(zr__sdl_normal_pattern(p, $1, $2, NULL, &@2)); $$ = $1; }
+| normal_body pattern_kw expr
+    { TRY(zr__sdl_normal_pattern(p, $1, $2, &$3, &@3)); $$ = $1; }
+| normal_body block_kw
+    { TRY(zr__sdl_normal_pattern(p, $1, $2, NULL, &@2)); $$ = $1; }
+| normal_body block_kw expr
+    { TRY(zr__sdl_normal_pattern(p, $1, $2, &$3, &@3)); $$ = $1; }
+| normal_body T_GRADIENT expr
+    {
+      TRY(zr__sdl_normal_pattern(p, $1, ZR_PAT_GRADIENT, NULL, &@2));
+      TRY(zr__sdl_gradient(p, &$1->pattern, &$3, &@3));
+      $$ = $1;
+    }
+| normal_body T_GRADIENT expr ',' expr
+    {
+      TRY(zr__sdl_normal_pattern(p, $1, ZR_PAT_GRADIENT, &$5, &@5));
+      TRY(zr__sdl_gradient(p, &$1->pattern, &$3, &@3));
+      $$ = $1;
+    }
+| normal_body T_BUMP_SIZE expr
+    { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->amount)); $$ = $1; }
+| normal_body transform
+    { TRY(zr__sdl_normal_transform(p, $1, $2)); $$ = $1; }
+| normal_body pattern_mod
+    { TRY(zr__sdl_pattern_mod(p, &$1->pattern, &$2)); $$ = $1; }
+;
+
+/* ---- image maps (reference manual, "Image Map") ---- */
+
+image_map_head:
+  str_expr             { TRY($$ = zr__sdl_image_map_new(p, $1, &@1)); }
+| T_PNG str_expr       { TRY($$ = zr__sdl_image_map_new(p, $2, &@2)); }
+| T_JPEG str_expr      { TRY($$ = zr__sdl_image_map_new(p, $2, &@2)); }
+| T_PPM str_expr       { TRY($$ = zr__sdl_image_map_new(p, $2, &@2)); }
+;
+
+image_map_body:
+  image_map_head
+| image_map_body T_MAP_TYPE expr
+    { TRY(zr__sdl_image_map_mod(p, $1, T_MAP_TYPE, &$3, &@3)); $$ = $1; }
+| image_map_body T_ONCE
+    { TRY(zr__sdl_image_map_mod(p, $1, T_ONCE, NULL, &@2)); $$ = $1; }
+| image_map_body T_INTERPOLATE expr
+    { TRY(zr__sdl_image_map_mod(p, $1, T_INTERPOLATE, &$3, &@3)); $$ = $1; }
+| image_map_body T_FILTER T_ALL expr
+    { TRY(zr__sdl_image_map_mod(p, $1, T_FILTER, &$4, &@4)); $$ = $1; }
+| image_map_body T_TRANSMIT T_ALL expr
+    { TRY(zr__sdl_image_map_mod(p, $1, T_TRANSMIT, &$4, &@4)); $$ = $1; }
 ;
 
 finish:
@@ -1021,6 +1306,7 @@ texture_body:
   texture_head
 | texture_body pigment { $1->pigment = $2; $$ = $1; }
 | texture_body finish  { $1->finish = $2; $$ = $1; }
+| texture_body normal  { $1->normal = $2; $$ = $1; }
 | texture_body transform
     { TRY(zr__sdl_texture_transform(p, $1, $2)); $$ = $1; }
 ;
@@ -1194,6 +1480,8 @@ int zr__pov_lex(ZR__POV_STYPE *lval, zr_sdl_loc *lloc, zr_sdl_parser *p) {
   case T_INTERIOR_ID:
   case T_OBJECT_ID:
   case T_FUNCTION_ID:
+  case T_NORMAL_ID:
+  case T_COLOUR_MAP_ID:
   case T_STRING_ID:
   case T_ARRAY_ID:
   case T_SEED_ID:

@@ -119,6 +119,13 @@ ZR_API void zr_context_set_diag(zr_context *ctx, zr_diag_fn fn, void *user);
 ZR_API void zr_context_set_reader(zr_context *ctx, zr_read_fn fn, void *user);
 /* Directories searched by #include after the including file's own. */
 ZR_API zr_status zr_context_add_include_path(zr_context *ctx, const char *dir);
+/*
+ * The render size a scene reads as image_width and image_height (POV-Ray
+ * takes them from +W and +H): set it before parsing.  Default 320x240.
+ * ZR_EINVAL for a size below 1.
+ */
+ZR_API zr_status zr_context_set_render_size(zr_context *ctx, int width,
+                                            int height);
 /* The message of the last error reported through ctx ("" when none). */
 ZR_API const char *zr_context_last_error(const zr_context *ctx);
 

@@ -12,6 +12,7 @@ dist_scenes_DATA = \
 	scenes/gamma.pov \
 	scenes/metallic.pov \
 	scenes/phong.pov \
+	scenes/patterns.pov \
 	scenes/primitives.pov \
 	scenes/reflection.pov \
 	scenes/refraction.pov \

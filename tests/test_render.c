@@ -268,6 +268,44 @@ static void test_render_threshold_controls_supersampling(void **state) {
   zr_scene_free(s);
 }
 
+/* Which of the listed pixels pass 2 supersamples, given centres. */
+static uint64_t supersampled(const zr_scene *s, const zr_render_params *p,
+                             const float *centres, uint32_t pixel) {
+  zr_render_stats st = {0};
+  float rgb[3];
+  assert_int_equal(zr_render_pixels(s, p, &pixel, 1, centres, rgb, &st),
+                   ZR_OK);
+  return st.supersampled_pixels;
+}
+
+/*
+ * A black-to-white step between columns 31 and 32 lies on a border of
+ * povray's 32 x 32 render blocks: column 32 sees its left neighbour
+ * differ and is supersampled, column 31 is not (povray has finished its
+ * block).  The same step inside a block supersamples both sides.
+ */
+static void test_render_antialias_pairs_and_block_borders(void **state) {
+  (void)state;
+  zr_scene *s = edge_scene();
+  zr_render_params p;
+  zr_render_params_init(&p);
+  p.width = 64;
+  p.height = 2;
+  p.antialias = 1;
+  float centres[64 * 2 * 3];
+  for (int step = 32; step >= 20; step -= 12) {
+    for (int i = 0; i < 64 * 2; i++)
+      for (int k = 0; k < 3; k++)
+        centres[3 * i + k] = (i % 64) < step ? 0.0f : 1.0f;
+    assert_true(supersampled(s, &p, centres, (uint32_t)step) == 1);
+    assert_true(supersampled(s, &p, centres, (uint32_t)step - 1) ==
+                (step == 32 ? 0 : 1));
+    assert_true(supersampled(s, &p, centres, (uint32_t)step + 1) == 0);
+    assert_true(supersampled(s, &p, centres, (uint32_t)step - 2) == 0);
+  }
+  zr_scene_free(s);
+}
+
 static void test_render_rejects_bad_arguments(void **state) {
   (void)state;
   zr_scene *s = edge_scene();
@@ -316,6 +354,7 @@ int main(void) {
       cmocka_unit_test(test_render_split_invariance_with_jitter),
       cmocka_unit_test(test_render_threads_share_the_scene),
       cmocka_unit_test(test_render_threshold_controls_supersampling),
+      cmocka_unit_test(test_render_antialias_pairs_and_block_borders),
       cmocka_unit_test(test_render_rejects_bad_arguments),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);

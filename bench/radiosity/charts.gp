@@ -38,7 +38,8 @@ plot \
 if (zr) {
   set output outdir."/radiosity-elements.png"
   set title "zRcube hierarchical radiosity: mesh size against BF_eps"
-  set xlabel "BF_eps"
+  set xlabel "BF_eps (finer to the right)"
+  set xrange [*:*] reverse
   set ylabel "count"
   set logscale xy
   set key top right

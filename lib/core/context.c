@@ -56,6 +56,15 @@ ZR_API void zr_context_set_reader(zr_context *ctx, zr_read_fn fn,
   ctx->read_user = user;
 }
 
+ZR_API zr_status zr_context_set_render_size(zr_context *ctx, int width,
+                                            int height) {
+  if (!ctx || width < 1 || height < 1)
+    return ZR_EINVAL;
+  ctx->render_width = width;
+  ctx->render_height = height;
+  return ZR_OK;
+}
+
 ZR_API zr_status zr_context_add_include_path(zr_context *ctx,
                                              const char *dir) {
   if (!ctx || !dir)

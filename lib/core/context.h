@@ -18,6 +18,7 @@ struct zr_context {
   void *read_user;
   char **include_paths;
   size_t n_include_paths;
+  int render_width, render_height; /* 0 until set: the parser's defaults */
   char last_error[1024];
   unsigned errors;   /* errors reported so far */
   unsigned warnings; /* warnings reported so far */

@@ -33,9 +33,10 @@
  * curved source cells by their boundary with 16 chords per curved edge),
  * with 3 x 3 cells of Gauss points when the two cells are close, where the
  * integrand varies fast.  A curved cell that sees itself (inside a sphere)
- * is a link to itself at A_eps, integrated with the bounded kernel
+ * has a link to itself, integrated with the bounded kernel
  * cos cos / (pi r^2) on two different Gauss rules so no point meets
- * itself.  V is the fraction of k x k rays between stratified points of
+ * itself; it is split while B A F_self, with F_self estimated from the
+ * spread of the cell's normals, exceeds the threshold.  V is the fraction of k x k rays between stratified points of
  * the two cells that the tracer's BVH finds unobstructed (Hanrahan's
  * paper used a similar fixed set of rays; a fraction, not a yes/no).
  */
@@ -137,21 +138,34 @@ static zr_status split_and_link(zr_radiosity *rad, int32_t p, int32_t q,
   return ZR_OK;
 }
 
-/* A curved cell that sees itself: links between all pairs of its
-   children, or a self link when it cannot be split. */
+/* Links all pairs of the children of p (after a self link is split). */
+static zr_status link_children(zr_radiosity *rad, int32_t p) {
+  if (!zr__rad_subdivide(rad, p))
+    return ZR_ENOMEM;
+  int32_t c = rad->nodes[p].child;
+  for (int i = 0; i < 4; i++)
+    for (int j = 0; j < 4; j++) {
+      zr_status st = create_links(rad, c + i, c + j);
+      if (st != ZR_OK)
+        return st;
+    }
+  return ZR_OK;
+}
+
+static int self_choice(const zr_radiosity *rad, const zr__rad_link *l);
+
+/* A curved cell that sees itself gets a link to itself on each pair of
+   sides that face, unless the self transfer is large enough that its
+   children should be linked instead. */
 static zr_status self_links(zr_radiosity *rad, int32_t p, int counts[4]) {
-  if (can_split(rad, p)) {
-    if (!zr__rad_subdivide(rad, p))
-      return ZR_ENOMEM;
-    int32_t c = rad->nodes[p].child;
-    for (int i = 0; i < 4; i++)
-      for (int j = 0; j < 4; j++) {
-        zr_status st = create_links(rad, c + i, c + j);
-        if (st != ZR_OK)
-          return st;
-      }
-    return ZR_OK;
-  }
+  zr__rad_link probe;
+  memset(&probe, 0, sizeof probe);
+  probe.recv = probe.src = p;
+  for (int k = 0; k < 4; k++)
+    if (counts[k] > 0 && probe.sside < (k & 1))
+      probe.sside = (uint8_t)(k & 1);
+  if (self_choice(rad, &probe) == 3)
+    return link_children(rad, p);
   for (int k = 0; k < 4; k++)
     if (counts[k] > 0) {
       zr_status st = add_link(rad, p, k >> 1, p, k & 1);
@@ -273,13 +287,36 @@ static int error_choice(const zr_radiosity *rad, const zr__rad_link *l,
   bool partial = l->final && l->vis > 0.0 && l->vis < 1.0;
   if (partial && bq * p->area * f_pq > thr)
     return larger_end(rad, l, sp, sq);
-  if (sq && radiosity_spread(rad, l->src, l->sside) * f_pq * p->area > thr)
+  /* An uneven source errs by the same sign at every small receiver near
+     it, so this test is per unit area of the receiver: the irradiance
+     error against the threshold spread over the scene's area. */
+  double thr_area = thr / rad->total_area;
+  if (sq && radiosity_spread(rad, l->src, l->sside) * f_pq > thr_area)
     return 2;
   return 0;
 }
 
-/* Whether link l should be split, and which end: 1 receiver, 2 source. */
+/*
+ * A self link is split (3) while the light it keeps inside the cell may
+ * exceed the threshold: B A F_self, with F_self estimated as that of a
+ * spherical cap whose normals spread as much, (1 - cos spread) / 2.
+ */
+static int self_choice(const zr_radiosity *rad, const zr__rad_link *l) {
+  const zr__rad_node *p = &rad->nodes[l->recv];
+  if (!can_split(rad, l->recv))
+    return 0;
+  if (rad->params.uniform > 0)
+    return 3;
+  double f_self = 0.5 * (1.0 - cos(fmin(p->spread, M_PI)));
+  double e = zr__rad_max3(p->b[l->sside]) * p->area * f_self;
+  return e > rad->params.bf_eps * rad->power_ref ? 3 : 0;
+}
+
+/* Whether link l should be split, and which end: 1 receiver, 2 source,
+   3 both (a self link). */
 static int refine_choice(const zr_radiosity *rad, const zr__rad_link *l) {
+  if (l->recv == l->src)
+    return self_choice(rad, l);
   bool sp = can_split(rad, l->recv), sq = can_split(rad, l->src);
   if (!sp && !sq)
     return 0;
@@ -304,6 +341,14 @@ static zr_status refine_one(zr_radiosity *rad, size_t li, bool *split) {
   if (!*split)
     return ZR_OK;
   rad->links[li].dead = 1;
+  if (choice == 3) {
+    /* Every side pair of the cell is relinked through its children, so
+       its other self links go too. */
+    for (size_t k = 0; k < rad->n_links; k++)
+      if (rad->links[k].recv == l.recv && rad->links[k].src == l.recv)
+        rad->links[k].dead = 1;
+    return link_children(rad, l.recv);
+  }
   return split_and_link(rad, l.recv, l.src, choice == 1);
 }
 
@@ -325,8 +370,6 @@ static zr_status add_link(zr_radiosity *rad, int32_t p, int rs, int32_t q,
   l->src = q;
   l->rside = (uint8_t)rs;
   l->sside = (uint8_t)ss;
-  if (p == q)
-    return ZR_OK;
   bool split;
   return refine_one(rad, li, &split);
 }
@@ -348,7 +391,7 @@ zr_status zr__rad_refine_links(zr_radiosity *rad, size_t *changed) {
   size_t n = rad->n_links;
   *changed = 0;
   for (size_t i = 0; i < n; i++) {
-    if (rad->links[i].dead || rad->links[i].recv == rad->links[i].src)
+    if (rad->links[i].dead)
       continue;
     bool split;
     zr_status st = refine_one(rad, i, &split);

@@ -28,8 +28,93 @@ typedef struct zr_source_loc {
 
 /* ---- textures ---- */
 
+/*
+ * Patterns (reference manual, "Pattern"): a function from a point in
+ * pattern space to a value in [0, 1] (lib/scene/pattern.c).  Block
+ * patterns (checker, hexagon, brick) give instead the index of a colour
+ * of their list: 0, 1 or 2.
+ */
+typedef enum zr_pattern_kind {
+  ZR_PAT_NONE = 0, /* a solid colour */
+  ZR_PAT_AGATE,
+  ZR_PAT_BOXED,
+  ZR_PAT_BOZO,
+  ZR_PAT_BRICK,
+  ZR_PAT_BUMPS,
+  ZR_PAT_CHECKER,
+  ZR_PAT_CRACKLE,
+  ZR_PAT_CYLINDRICAL,
+  ZR_PAT_DENTS,
+  ZR_PAT_GRADIENT,
+  ZR_PAT_GRANITE,
+  ZR_PAT_HEXAGON,
+  ZR_PAT_LEOPARD,
+  ZR_PAT_MARBLE,
+  ZR_PAT_ONION,
+  ZR_PAT_PLANAR,
+  ZR_PAT_RADIAL,
+  ZR_PAT_RIPPLES,
+  ZR_PAT_SPHERICAL,
+  ZR_PAT_SPOTTED,
+  ZR_PAT_WAVES,
+  ZR_PAT_WOOD,
+  ZR_PAT_WRINKLES
+} zr_pattern_kind;
+
+/* The wave form applied after frequency and phase ("Waveforms"). */
+typedef enum zr_wave_kind {
+  ZR_WAVE_DEFAULT = 0, /* the pattern's own: triangle for marble, wood */
+  ZR_WAVE_RAMP,
+  ZR_WAVE_TRIANGLE,
+  ZR_WAVE_SINE,
+  ZR_WAVE_SCALLOP,
+  ZR_WAVE_CUBIC,
+  ZR_WAVE_POLY
+} zr_wave_kind;
+
+typedef struct zr_pattern {
+  zr_pattern_kind kind;
+  zr_vec3 vector;    /* gradient: unit direction; brick: brick_size */
+  double mortar;     /* brick: default 0.5 */
+  double agate_turb; /* agate: default 1 */
+  /* turbulence <t>: displaces the point by t times a fractal vector
+     noise of octaves terms, each omega times weaker and lambda times
+     finer than the last (defaults 6, 0.5, 2), before any transform. */
+  zr_vec3 turbulence; /* zero: none */
+  int octaves;
+  double omega, lambda;
+  double frequency, phase; /* defaults 1 and 0 */
+  zr_wave_kind wave;
+  double wave_exponent; /* poly_wave: default 1 */
+} zr_pattern;
+
+/* color_map: values ascending; the colour between two entries is
+   interpolated, outside them the nearest entry's. */
+typedef struct zr_colour_map_entry {
+  double value;
+  zr_colour colour;
+} zr_colour_map_entry;
+
+typedef struct zr_colour_map {
+  size_t n;
+  const zr_colour_map_entry *entries;
+} zr_colour_map;
+
+/* An image_map's picture, decoded once into the scene's arena. */
+typedef struct zr_image_map {
+  const char *path; /* as written, for messages */
+  int width, height;
+  const float *pixels; /* width * height * 3 linear floats, top row first */
+  int map_type;        /* 0 planar, 1 spherical, 2 cylindrical */
+  bool once;
+  int interpolate;     /* 0 none, 2 bilinear (others act as 2) */
+  double filter_all, transmit_all;
+} zr_image_map;
+
 typedef enum zr_pigment_kind {
-  ZR_PIGMENT_SOLID = 0 /* patterns, colour maps and image maps come later */
+  ZR_PIGMENT_SOLID = 0,
+  ZR_PIGMENT_PATTERN, /* pattern with colour_map or colour list */
+  ZR_PIGMENT_IMAGE    /* image_map */
 } zr_pigment_kind;
 
 typedef struct zr_pigment {
@@ -40,7 +125,21 @@ typedef struct zr_pigment {
      kept current by the parser, as POV-Ray transforms textures with the
      objects they are on. */
   const zr_transform *transform;
+  zr_pattern pattern;
+  const zr_colour_map *colour_map; /* NULL: the pattern's default */
+  /* Block patterns' colours (checker 2, hexagon 3, brick 2); entries
+     not given keep the pattern's defaults. */
+  zr_colour list[3];
+  const zr_image_map *image; /* ZR_PIGMENT_IMAGE */
 } zr_pigment;
+
+/* normal { Pattern [Bump_Size] ... }: the shading normal tilts against
+   the slope of the pattern's value, scaled by amount. */
+typedef struct zr_normal {
+  zr_pattern pattern;
+  double amount; /* bump_size */
+  const zr_transform *transform; /* as a pigment's */
+} zr_normal;
 
 typedef struct zr_finish {
   zr_rgb ambient;    /* default 0.1, times global ambient_light */
@@ -70,6 +169,7 @@ typedef struct zr_interior {
 typedef struct zr_texture {
   const zr_pigment *pigment; /* never NULL in a finished scene */
   const zr_finish *finish;   /* never NULL in a finished scene */
+  const zr_normal *normal;   /* NULL: the surface's own normal */
 } zr_texture;
 
 /* ---- objects ---- */

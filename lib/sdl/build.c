@@ -21,13 +21,27 @@
  *     mirrored).  Both act at the end of the block, before the
  *     transforms, whatever the order of the items: that is what POV-Ray
  *     3.7 renders show.
+ *   - Patterns ("Pattern Modifiers"): turbulence, octaves, omega, lambda,
+ *     frequency, phase and the wave types set the pattern's fields; a
+ *     turbulence warp acts as turbulence (applied before the
+ *     transforms, where POV-Ray would apply it in order).  A block
+ *     pattern takes up to 2 (checker, brick) or 3 (hexagon) colours.
+ *     color_map entries must not decrease.  A normal's transform, like
+ *     a pigment's, follows the object's transforms.  image_map pictures
+ *     are searched like #include files and decoded into the arena.
  */
 #include "config.h"
 
 #include <math.h>
 #include <string.h>
 
+#include <stdlib.h>
+
+#include "core/strbuf.h"
+#include "image/image.h"
 #include "pov-parse.h"
+#include "scene/pattern.h"
+#include "scene/texture.h"
 #include "sdl/sdl.h"
 
 static const char *kind_name(zr_object_kind kind) {
@@ -219,6 +233,12 @@ bool zr__sdl_texture_transform(zr_sdl_parser *p, zr_texture *tx,
   if (!pg || !zr__sdl_pigment_transform(p, pg, t))
     return false;
   tx->pigment = pg;
+  if (tx->normal) {
+    zr_normal *nm = zr__sdl_normal_new(p, tx->normal);
+    if (!nm || !zr__sdl_normal_transform(p, nm, t))
+      return false;
+    tx->normal = nm;
+  }
   return true;
 }
 
@@ -231,6 +251,317 @@ zr_interior *zr__sdl_interior_new(zr_sdl_parser *p, const zr_interior *from) {
   else
     zr__interior_init(in);
   return in;
+}
+
+/* ---- patterns, colour maps, normals, image maps ---- */
+
+bool zr__sdl_pigment_pattern(zr_sdl_parser *p, zr_pigment *pg, int kind,
+                             const zr_sdl_clist *list) {
+  zr__pigment_set_pattern(pg, (zr_pattern_kind)kind);
+  if (!list || list->n == 0)
+    return true;
+  int most = kind == ZR_PAT_HEXAGON ? 3 : 2;
+  if (!zr__pattern_is_block((zr_pattern_kind)kind) || list->n > most) {
+    zr__sdl_error(p, ZR_ESYNTAX, &list->loc,
+                  zr__pattern_is_block((zr_pattern_kind)kind)
+                      ? "too many colours for this pattern"
+                      : "only checker, hexagon and brick take colours");
+    return false;
+  }
+  for (int i = 0; i < list->n; i++)
+    pg->list[i] = list->c[i];
+  return true;
+}
+
+bool zr__sdl_clist_add(zr_sdl_parser *p, zr_sdl_clist *l,
+                       const zr_sdl_expr *e, const zr_sdl_loc *loc) {
+  l->loc = *loc;
+  if (l->n == 3) {
+    zr__sdl_error(p, ZR_ESYNTAX, loc, "too many colours for this pattern");
+    return false;
+  }
+  return zr__sdl_want_colour(p, e, loc, &l->c[l->n++]);
+}
+
+bool zr__sdl_gradient(zr_sdl_parser *p, zr_pattern *pt,
+                      const zr_sdl_expr *e, const zr_sdl_loc *loc) {
+  zr_vec3 v;
+  if (!zr__sdl_want_vector(p, e, loc, &v))
+    return false;
+  if (zr_v3_len(v) == 0) {
+    zr__sdl_error(p, ZR_ESCENE, loc, "the gradient's vector is zero");
+    return false;
+  }
+  /* POV-Ray renders gradient <2,0,0> like gradient x: the direction
+     only counts (measured). */
+  pt->vector = zr_v3_norm(v);
+  return true;
+}
+
+static bool want_positive(zr_sdl_parser *p, const zr_sdl_pmod *m,
+                          const char *what, double *out) {
+  if (!zr__sdl_want_float(p, &m->value, &m->loc, out))
+    return false;
+  if (!(*out > 0)) {
+    zr__sdl_error(p, ZR_ESCENE, &m->loc, "%s must be positive", what);
+    return false;
+  }
+  return true;
+}
+
+bool zr__sdl_pattern_mod(zr_sdl_parser *p, zr_pattern *pt,
+                         const zr_sdl_pmod *m) {
+  double v;
+  switch (m->token) {
+  case T_TURBULENCE:
+    return zr__sdl_want_vector(p, &m->value, &m->loc, &pt->turbulence);
+  case T_WARP:
+    pt->turbulence = m->warp.turbulence;
+    pt->octaves = m->warp.octaves;
+    pt->omega = m->warp.omega;
+    pt->lambda = m->warp.lambda;
+    return true;
+  case T_OCTAVES:
+    if (!zr__sdl_want_float(p, &m->value, &m->loc, &v))
+      return false;
+    /* POV-Ray limits octaves to 1 .. 10 ("Octaves"). */
+    if (v < 1 || v > 10) {
+      zr__sdl_error(p, ZR_ESCENE, &m->loc,
+                    "octaves must be between 1 and 10");
+      return false;
+    }
+    pt->octaves = (int)v;
+    return true;
+  case T_OMEGA:
+    return zr__sdl_want_float(p, &m->value, &m->loc, &pt->omega);
+  case T_LAMBDA:
+    return zr__sdl_want_float(p, &m->value, &m->loc, &pt->lambda);
+  case T_FREQUENCY:
+    return zr__sdl_want_float(p, &m->value, &m->loc, &pt->frequency);
+  case T_PHASE:
+    return zr__sdl_want_float(p, &m->value, &m->loc, &pt->phase);
+  case T_AGATE_TURB:
+    return zr__sdl_want_float(p, &m->value, &m->loc, &pt->agate_turb);
+  case T_MORTAR:
+    return zr__sdl_want_float(p, &m->value, &m->loc, &pt->mortar);
+  case T_BRICK_SIZE: {
+    zr_vec3 s;
+    if (!zr__sdl_want_vector(p, &m->value, &m->loc, &s))
+      return false;
+    if (!(s.x > 0 && s.y > 0 && s.z > 0)) {
+      zr__sdl_error(p, ZR_ESCENE, &m->loc, "brick_size must be positive");
+      return false;
+    }
+    pt->vector = s;
+    return true;
+  }
+  case T_RAMP_WAVE:
+    pt->wave = ZR_WAVE_RAMP;
+    return true;
+  case T_TRIANGLE_WAVE:
+    pt->wave = ZR_WAVE_TRIANGLE;
+    return true;
+  case T_SINE_WAVE:
+    pt->wave = ZR_WAVE_SINE;
+    return true;
+  case T_SCALLOP_WAVE:
+    pt->wave = ZR_WAVE_SCALLOP;
+    return true;
+  case T_CUBIC_WAVE:
+    pt->wave = ZR_WAVE_CUBIC;
+    return true;
+  case T_POLY_WAVE:
+    pt->wave = ZR_WAVE_POLY;
+    pt->wave_exponent = 1;
+    if (m->value.dim == 0)
+      return true;
+    return want_positive(p, m, "poly_wave's exponent", &pt->wave_exponent);
+  default:
+    return true;
+  }
+}
+
+/* Entry arrays grow by doubling in the arena, like union children. */
+static size_t entries_room(size_t n) { return children_room(n); }
+
+zr_colour_map *zr__sdl_colour_map_new(zr_sdl_parser *p,
+                                      const zr_colour_map *from) {
+  zr_colour_map *m = zr__sdl_alloc(p, sizeof *m);
+  if (!m || !from || from->n == 0)
+    return m;
+  zr_colour_map_entry *e =
+      zr__sdl_alloc(p, entries_room(from->n) * sizeof *e);
+  if (!e)
+    return NULL;
+  memcpy(e, from->entries, from->n * sizeof *e);
+  m->entries = e;
+  m->n = from->n;
+  return m;
+}
+
+bool zr__sdl_colour_map_add(zr_sdl_parser *p, zr_colour_map *m,
+                            const zr_sdl_expr *v, const zr_sdl_loc *vl,
+                            const zr_sdl_expr *c, const zr_sdl_loc *cl) {
+  zr_colour_map_entry entry;
+  if (!zr__sdl_want_float(p, v, vl, &entry.value) ||
+      !zr__sdl_want_colour(p, c, cl, &entry.colour))
+    return false;
+  if (m->n > 0 && entry.value < m->entries[m->n - 1].value) {
+    zr__sdl_error(p, ZR_ESCENE, vl,
+                  "color_map values must not decrease (%g after %g)",
+                  entry.value, m->entries[m->n - 1].value);
+    return false;
+  }
+  zr_colour_map_entry *e = (zr_colour_map_entry *)m->entries;
+  if (m->n == entries_room(m->n)) {
+    e = zr__sdl_alloc(p, entries_room(m->n + 1) * sizeof *e);
+    if (!e)
+      return false;
+    if (m->n)
+      memcpy(e, m->entries, m->n * sizeof *e);
+  }
+  e[m->n] = entry;
+  m->entries = e;
+  m->n++;
+  return true;
+}
+
+bool zr__sdl_colour_map_done(zr_sdl_parser *p, const zr_colour_map *m,
+                             const zr_sdl_loc *loc) {
+  if (m->n == 0) {
+    zr__sdl_error(p, ZR_ESYNTAX, loc, "a color_map needs an entry");
+    return false;
+  }
+  return true;
+}
+
+zr_normal *zr__sdl_normal_new(zr_sdl_parser *p, const zr_normal *from) {
+  zr_normal *nm = zr__sdl_alloc(p, sizeof *nm);
+  if (!nm)
+    return NULL;
+  if (from) {
+    *nm = *from;
+  } else {
+    zr__pattern_init(&nm->pattern, ZR_PAT_NONE);
+    nm->amount = 0.5;
+  }
+  return nm;
+}
+
+bool zr__sdl_normal_pattern(zr_sdl_parser *p, zr_normal *nm, int kind,
+                            const zr_sdl_expr *amount,
+                            const zr_sdl_loc *loc) {
+  zr__pattern_init(&nm->pattern, (zr_pattern_kind)kind);
+  /* POV-Ray's default bump size is 0.5 for every normal pattern. */
+  nm->amount = 0.5;
+  return !amount || zr__sdl_want_float(p, amount, loc, &nm->amount);
+}
+
+bool zr__sdl_normal_transform(zr_sdl_parser *p, zr_normal *nm,
+                              const zr_transform *t) {
+  nm->transform = composed(p, nm->transform, t);
+  return nm->transform != NULL;
+}
+
+/* dir/name, or name alone when dir is empty; NULL when out of memory. */
+static char *image_path(const char *dir, size_t n, const char *name) {
+  zr_strbuf sb;
+  zr__strbuf_init(&sb);
+  if (n) {
+    zr__strbuf_printf(&sb, "%.*s/", (int)n, dir);
+  }
+  zr__strbuf_puts(&sb, name);
+  if (sb.failed) {
+    zr__strbuf_free(&sb);
+    return NULL;
+  }
+  return zr__strbuf_take(&sb);
+}
+
+/* The first of the places #include searches where name can be read,
+   malloc'ed; NULL when none. */
+static char *find_image(zr_sdl_parser *p, const char *name) {
+  const char *scene = p->files[zr__sdl_top(p)->file].path;
+  const char *slash = strrchr(scene, '/');
+  size_t n_dirs = p->ctx ? p->ctx->n_include_paths : 0;
+  for (size_t i = 0; i <= n_dirs; i++) {
+    char *path;
+    if (name[0] == '/')
+      path = i == 0 ? image_path("", 0, name) : NULL;
+    else if (i == 0)
+      path = image_path(scene, slash ? (size_t)(slash - scene) : 0, name);
+    else
+      path = image_path(p->ctx->include_paths[i - 1],
+                        strlen(p->ctx->include_paths[i - 1]), name);
+    if (!path)
+      continue;
+    char *bytes = NULL;
+    size_t size = 0;
+    if (zr__context_read(p->ctx, path, &bytes, &size) == ZR_OK) {
+      free(bytes);
+      return path;
+    }
+    free(path);
+  }
+  return NULL;
+}
+
+zr_image_map *zr__sdl_image_map_new(zr_sdl_parser *p, const char *name,
+                                    const zr_sdl_loc *loc) {
+  char *path = find_image(p, name);
+  if (!path) {
+    zr__sdl_error(p, ZR_ENOTFOUND, loc, "image_map file '%s' not found",
+                  name);
+    return NULL;
+  }
+  zr_image *image = NULL;
+  zr_status s = zr_image_read(p->ctx, path, &image);
+  free(path);
+  if (s != ZR_OK) {
+    zr__sdl_error(p, s, loc, "cannot use '%s' as an image_map", name);
+    return NULL;
+  }
+  zr_image_map *im = zr__sdl_alloc(p, sizeof *im);
+  size_t n = (size_t)image->width * (size_t)image->height * 3;
+  float *pixels = im ? zr__sdl_alloc(p, n * sizeof *pixels) : NULL;
+  if (pixels) {
+    memcpy(pixels, image->pixels, n * sizeof *pixels);
+    im->path = zr__sdl_strdup(p, name, strlen(name));
+    im->width = image->width;
+    im->height = image->height;
+    im->pixels = pixels;
+  }
+  zr_image_free(image);
+  return pixels && im->path ? im : NULL;
+}
+
+bool zr__sdl_image_map_mod(zr_sdl_parser *p, zr_image_map *im, int token,
+                           const zr_sdl_expr *e, const zr_sdl_loc *loc) {
+  double v = 0;
+  if (e && !zr__sdl_want_float(p, e, loc, &v))
+    return false;
+  switch (token) {
+  case T_MAP_TYPE:
+    if (v != 0 && v != 1 && v != 2) {
+      zr__sdl_error(p, ZR_ESCENE, loc,
+                    "map_type %g is not supported (0, 1 or 2)", v);
+      return false;
+    }
+    im->map_type = (int)v;
+    return true;
+  case T_ONCE:
+    im->once = true;
+    return true;
+  case T_INTERPOLATE:
+    im->interpolate = (int)v;
+    return true;
+  case T_FILTER:
+    im->filter_all = v;
+    return true;
+  default:
+    im->transmit_all = v;
+    return true;
+  }
 }
 
 /* ---- object modifiers ---- */
@@ -297,6 +628,11 @@ bool zr__sdl_object_mod(zr_sdl_parser *p, zr_object *o,
     return true;
   case ZR_SDL_MOD_TEXTURE:
     o->texture = mod->ptr;
+    return true;
+  case ZR_SDL_MOD_NORMAL:
+    if (!(tx = own_texture(p, o)))
+      return false;
+    tx->normal = mod->ptr;
     return true;
   case ZR_SDL_MOD_INTERIOR:
     set_interior(o, mod->ptr, true);

@@ -11,6 +11,9 @@
  * same way), "String Functions" (str's width and precision, vstr's
  * dimension clipping, substr's one-based positions) and "Array
  * Identifiers" (up to five dimensions, row-major initialisers).
+ * inside() asks the tracer's inside test (trace/intersect.c), and
+ * vturbulence() the pattern code's turbulence (scene/pattern.c), whose
+ * noise is zRcube's own: its values are not POV-Ray's.
  *
  * rand() streams: seed(n) starts a splitmix64 generator (Steele, Lea and
  * Flood, "Fast splittable pseudorandom number generators", OOPSLA 2014)
@@ -33,6 +36,8 @@
 #include "core/strbuf.h"
 #include "pov-parse.h"
 #include "sdl/sdl.h"
+#include "scene/pattern.h"
+#include "trace/intersect.h"
 
 /* The reference manual's epsilon for truth and equality. */
 #define EPSILON 1e-10
@@ -73,6 +78,50 @@ bool zr__sdl_compare(zr_sdl_parser *p, int op, const zr_sdl_expr *a,
 }
 
 static zr_sdl_expr from_vec3(zr_vec3 v) { return zr__sdl_vec(v.x, v.y, v.z); }
+
+/* The tracer's inside test; a union is inside where any child is.  The
+   build pushes a union's inverse down into its children (build.c), so
+   each level undoes its own flip on the children's answers and applies
+   it once to the union's. */
+static bool object_inside(const zr_object *o, zr_vec3 p) {
+  if (o->kind != ZR_OBJ_UNION)
+    return zr__inside(o, p);
+  bool in = false;
+  for (size_t i = 0; i < o->u.csg.n_children && !in; i++)
+    in = object_inside(o->u.csg.children[i], p) != o->inverse;
+  return in != o->inverse;
+}
+
+bool zr__sdl_inside(zr_sdl_parser *p, const zr_object *o,
+                    const zr_sdl_expr *point, const zr_sdl_loc *loc,
+                    zr_sdl_expr *out) {
+  zr_vec3 v;
+  if (!zr__sdl_want_vector(p, point, loc, &v))
+    return false;
+  *out = zr__sdl_float(object_inside(o, v) ? 1 : 0);
+  return true;
+}
+
+bool zr__sdl_vturbulence(zr_sdl_parser *p, const zr_sdl_expr *lambda,
+                         const zr_sdl_expr *omega,
+                         const zr_sdl_expr *octaves,
+                         const zr_sdl_expr *point, const zr_sdl_loc *loc,
+                         zr_sdl_expr *out) {
+  double l, o, n;
+  zr_vec3 a;
+  if (!zr__sdl_want_float(p, lambda, loc, &l) ||
+      !zr__sdl_want_float(p, omega, loc, &o) ||
+      !zr__sdl_want_float(p, octaves, loc, &n) ||
+      !zr__sdl_want_vector(p, point, loc, &a))
+    return false;
+  if (!(n >= 1 && n <= 10)) {
+    zr__sdl_error(p, ZR_ESCENE, loc,
+                  "vturbulence: octaves must be from 1 to 10, not %g", n);
+    return false;
+  }
+  *out = from_vec3(zr__dturbulence(a, (int)n, o, l));
+  return true;
+}
 
 bool zr__sdl_vrotate(zr_sdl_parser *p, const zr_sdl_expr *v,
                      const zr_sdl_expr *r, const zr_sdl_loc *loc,

@@ -1,7 +1,8 @@
 /*
  * control.c - the block and message directives of the scene language:
  * #if #ifdef #ifndef #elseif #else #end, #while, #for, #switch #case
- * #range #break, #macro and macro calls, #undef, #debug #warning #error.
+ * #range #break, #macro and macro calls, #undef, #debug #warning #error,
+ * #default.
  *
  * They follow the reference manual's "Language Directives" (r3_3,
  * 3.3.2.6 to 3.3.2.8).  Each file's block directives were linked to their
@@ -15,8 +16,10 @@
  *
  * Semantics worth knowing:
  *   - #case compares within 1e-10; a true clause without #break falls
- *     through to the next #case or #range, whose condition is evaluated;
- *     #else runs only if the clause before it was false;
+ *     through into the next #case, #range or #else whatever their
+ *     conditions (what POV-Ray 3.7 does, measured: its manual says the
+ *     next condition is evaluated); #else also runs when no clause was
+ *     true;
  *   - #break leaves the innermost #switch, #while, #for or macro
  *     (POV-Ray 3.7), passing through any #if around it;
  *   - #for (I, Start, End [, Step]) keeps I in the current scope, runs
@@ -115,12 +118,19 @@ static bool leave_block(zr_sdl_parser *p, size_t end) {
 /* Parses "( expr )" at the current place as a float. */
 static bool paren_float(zr_sdl_parser *p, const zr_sdl_loc *at,
                         double *out) {
+  if (zr__sdl_fast_paren(p, out))
+    return true;
   zr_sdl_expr e;
   return zr__sdl_parse_expr(p, T_START_PAREN, &e) == ZR_OK &&
          zr__sdl_want_float(p, &e, at, out);
 }
 
 static bool paren_truth(zr_sdl_parser *p, const zr_sdl_loc *at, bool *out) {
+  double v;
+  if (zr__sdl_fast_paren(p, &v)) {
+    *out = fabs(v) > EPSILON;
+    return true;
+  }
   zr_sdl_expr e;
   return zr__sdl_parse_expr(p, T_START_PAREN, &e) == ZR_OK &&
          zr__sdl_truth(p, &e, at, out);
@@ -246,6 +256,9 @@ static bool do_else(zr_sdl_parser *p, const zr_sdl_token *t,
                   directive_name(t->kind));
     return false;
   }
+  /* In a #switch a true clause falls through #else too (POV-Ray). */
+  if (c->kind == ZR_SDL_CTL_SWITCH)
+    return true;
   size_t end = block_end(file_of(p), zr__sdl_top(p)->pos - 1);
   if (end == NONE)
     return unmatched(p, c->open);
@@ -307,8 +320,10 @@ static bool do_switch(zr_sdl_parser *p, const zr_sdl_loc *at) {
   return next_clause(p, file_of(p)->links[open]);
 }
 
-/* #case or #range reached while running a true clause: it falls
-   through to this clause, whose condition decides. */
+/* #case or #range reached while running a true clause: parsing falls
+   through into it whatever its condition, as POV-Ray 3.7 does (its
+   manual says the condition is evaluated; the program does not look at
+   it).  The condition is still read, to step over it. */
 static bool do_case(zr_sdl_parser *p, const zr_sdl_token *t,
                     const zr_sdl_loc *at) {
   zr_sdl_ctl *c = top_ctl(p);
@@ -317,7 +332,10 @@ static bool do_case(zr_sdl_parser *p, const zr_sdl_token *t,
                   directive_name(t->kind));
     return false;
   }
-  return next_clause(p, zr__sdl_top(p)->pos - 1);
+  double v;
+  if (t->kind == T_CASE)
+    return paren_float(p, at, &v);
+  return zr__sdl_parse_nested(p, T_START_RANGE) == ZR_OK;
 }
 
 /* ---- #while, #for, #break, #end ---- */
@@ -550,11 +568,12 @@ static bool read_argument(zr_sdl_parser *p, zr_sdl_value *value,
       return false;
     }
     if (s->value.kind != ZR_SDL_MACRO) {
+      /* The variable itself: a parameter passed on by identifier again
+         names its caller's variable, whose name may differ. */
       zr_sdl_alias *a = zr__sdl_alloc(p, sizeof *a);
-      if (!a)
+      if (!a || !(a->name = zr__sdl_strdup(p, s->name, strlen(s->name))))
         return false;
       a->frame = frame;
-      a->name = t->v.str;
       memset(value, 0, sizeof *value);
       value->kind = ZR_SDL_ALIAS;
       value->ptr = a;
@@ -563,6 +582,8 @@ static bool read_argument(zr_sdl_parser *p, zr_sdl_value *value,
       return true;
     }
   }
+  if (zr__sdl_fast_argument(p, value, end))
+    return true;
   size_t frames = p->n_frames;
   if (zr__sdl_parse_nested(p, T_START_ARG) != ZR_OK)
     return false;
@@ -685,6 +706,29 @@ static bool do_message(zr_sdl_parser *p, int kind, const zr_sdl_loc *at) {
   return false;
 }
 
+/* ---- #default ---- */
+
+bool zr__sdl_set_default(zr_sdl_parser *p, const zr_texture *texture,
+                         const zr_pigment *pigment,
+                         const zr_finish *finish) {
+  const zr_texture *old = p->scene->default_texture;
+  zr_texture *t = zr__sdl_texture_new(p, texture ? texture : old);
+  if (!t)
+    return false;
+  if (pigment)
+    t->pigment = pigment;
+  if (finish)
+    t->finish = finish;
+  /* The scene applies its default texture when it is finished; objects
+     made before this #default keep the one in force when they were made
+     ("The #default Directive": it affects what follows). */
+  for (size_t i = 0; i < p->scene->n_objects; i++)
+    if (!p->scene->objects[i]->texture)
+      p->scene->objects[i]->texture = old;
+  p->scene->default_texture = t;
+  return true;
+}
+
 bool zr__sdl_run_directive(zr_sdl_parser *p, const zr_sdl_token *t,
                            const zr_sdl_loc *at) {
   switch (t->kind) {
@@ -716,6 +760,13 @@ bool zr__sdl_run_directive(zr_sdl_parser *p, const zr_sdl_token *t,
   case T_WARNING:
   case T_ERROR:
     return do_message(p, t->kind, at);
+  case T_DEFAULT:
+    return zr__sdl_parse_nested(p, T_START_DEFAULT) == ZR_OK;
+  case T_FOPEN:
+  case T_FCLOSE:
+  case T_READ:
+  case T_WRITE:
+    return zr__sdl_run_file_directive(p, t->kind, at);
   default:
     zr__sdl_error(p, ZR_EUNSUPPORTED, at, "'%s' is not supported yet",
                   t->v.str);

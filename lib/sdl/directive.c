@@ -129,7 +129,9 @@ void *zr__sdl_alloc(zr_sdl_parser *p, size_t size) {
 }
 
 const char *zr__sdl_token_name(const char *name, char *buf, size_t size) {
-  if (name[0] == '#' || zr__sdl_keyword_find(name, strlen(name))) {
+  if (name[0] == '#' || zr__sdl_keyword_find(name, strlen(name)) ||
+      strcmp(name, "<=") == 0 || strcmp(name, ">=") == 0 ||
+      strcmp(name, "!=") == 0) {
     snprintf(buf, size, "'%s'", name);
     return buf;
   }
@@ -364,7 +366,8 @@ static char *join_path(const char *dir, size_t dir_len, const char *name) {
  * -1 after reporting.  Already read files are taken from the cache.
  */
 static int open_include(zr_sdl_parser *p, const char *name,
-                        const zr_sdl_loc *at, const zr_sdl_loc *directive) {
+                        const zr_sdl_loc *at, const zr_sdl_loc *directive,
+                        const char *what) {
   const char *including = p->files[top(p)->file].path;
   const char *slash = strrchr(including, '/');
   size_t n_dirs = p->ctx ? p->ctx->n_include_paths : 0;
@@ -402,7 +405,7 @@ static int open_include(zr_sdl_parser *p, const char *name,
       continue;
     }
     if (s != ZR_OK) {
-      zr__sdl_error(p, s, at, "cannot read include file '%s': %s", path,
+      zr__sdl_error(p, s, at, "cannot read %s '%s': %s", what, path,
                     zr_status_str(s));
       free(path);
       return -1;
@@ -423,8 +426,13 @@ static int open_include(zr_sdl_parser *p, const char *name,
     }
     return index;
   }
-  zr__sdl_error(p, ZR_ENOTFOUND, at, "cannot find include file '%s'", name);
+  zr__sdl_error(p, ZR_ENOTFOUND, at, "cannot find %s '%s'", what, name);
   return -1;
+}
+
+int zr__sdl_open_data(zr_sdl_parser *p, const char *name,
+                      const zr_sdl_loc *at) {
+  return open_include(p, name, at, at, "data file");
 }
 
 static bool do_include(zr_sdl_parser *p, const zr_sdl_loc *directive) {
@@ -446,7 +454,7 @@ static bool do_include(zr_sdl_parser *p, const zr_sdl_loc *directive) {
                   ZR_SDL_MAX_INCLUDE_DEPTH);
     return false;
   }
-  int file = open_include(p, name, &at, directive);
+  int file = open_include(p, name, &at, directive, "include file");
   if (file < 0 || !zr__sdl_push_frame(p, file, directive))
     return false;
   p->include_depth++;
@@ -523,10 +531,40 @@ zr_status zr__sdl_parse_expr(zr_sdl_parser *p, int start_token,
   return s;
 }
 
+/* Runs #declare or #local, with POV-Ray 3.7's "deprecated [once]
+   ["message"]" before the name ("Deprecation Support"). */
 static bool do_declare(zr_sdl_parser *p, int kind) {
+  bool deprecated = false, once = false;
+  const char *message = NULL;
+  if (zr__sdl_peek(p, 0)->kind == T_DEPRECATED) {
+    deprecated = true;
+    top(p)->pos++;
+    if (zr__sdl_peek(p, 0)->kind == T_ONCE) {
+      once = true;
+      top(p)->pos++;
+    }
+    if (zr__sdl_peek(p, 0)->kind == T_STRING) {
+      message = zr__sdl_peek(p, 0)->v.str;
+      top(p)->pos++;
+    }
+  }
+  if (!deprecated && zr__sdl_fast_declare(p, kind == T_LOCAL))
+    return p->status == ZR_OK;
+  const zr_sdl_token *name = zr__sdl_peek(p, 0);
   p->want_decl_name = true;
   p->decl_local = kind == T_LOCAL;
-  return zr__sdl_parse_nested(p, T_START_DECL) == ZR_OK;
+  if (zr__sdl_parse_nested(p, T_START_DECL) != ZR_OK)
+    return false;
+  if (deprecated && name->kind == T_IDENTIFIER) {
+    zr_sdl_symbol *s = zr__sdl_lookup(p, name->v.str, NULL);
+    if (s) {
+      s->deprecated = true;
+      s->deprecated_once = once;
+      s->warned = false;
+      s->deprecated_message = message;
+    }
+  }
+  return true;
 }
 
 static bool do_version(zr_sdl_parser *p, const zr_sdl_loc *directive) {
@@ -542,6 +580,10 @@ static bool ends_operand(int kind) {
   case T_PIGMENT_ID: case T_FINISH_ID: case T_TEXTURE_ID:
   case T_INTERIOR_ID: case T_OBJECT_ID: case T_STRING_ID: case T_ARRAY_ID:
   case T_SEED_ID: case T_FUNCTION_ID: case T_STRING:
+  case T_NORMAL_ID: case T_COLOUR_MAP_ID:
+  /* function.c reads a function's body straight from the token array:
+     the next token the engine hands out follows the whole function. */
+  case T_FUNCTION:
   case ')': case '>': case ']': case '}':
   case T_X: case T_Y: case T_Z: case T_T: case T_U:
   case T_V: case T_PI: case T_TRUE: case T_FALSE: case T_YES: case T_NO:
@@ -553,10 +595,12 @@ static bool ends_operand(int kind) {
   }
 }
 
-/* Tokens that may follow a complete operand inside an expression. */
+/* Tokens that may follow a complete operand inside an expression ('('
+   after a function identifier: "#declare V = F(1);"). */
 static bool continues(int kind) {
   switch (kind) {
   case '+': case '-': case '*': case '/': case '.': case ';': case '[':
+  case '(':
   case '{': case '?': case ':': case '<': case '>': case '=': case '&':
   case '|': case T_LE: case T_GE: case T_NE:
   case T_RGB: case T_RGBF: case T_RGBT: case T_RGBFT: case T_RED:
@@ -599,6 +643,9 @@ static bool autoend_due(const zr_sdl_parser *p, int next) {
     return true;
   if (a->token == ';' && next == '{')
     return true;
+  /* "#declare T = texture { ... } texture { ... }" layers textures. */
+  if (next == T_TEXTURE && a->last == '}')
+    return false;
   return !continues(next);
 }
 
@@ -619,9 +666,15 @@ static void track(zr_sdl_parser *p, int kind) {
   } else if (kind == '>') {
     /* A comparison, not the end of a vector. */
     a->operand = false;
+    a->last = kind;
     return;
   }
-  a->operand = ends_operand(kind);
+  /* red, filter ... end an operand only as ".red"; before a value they
+     are colour items ("color red 1 green 0.5"). */
+  bool item = kind == T_RED || kind == T_GREEN || kind == T_BLUE ||
+              kind == T_FILTER || kind == T_TRANSMIT || kind == T_GRAY;
+  a->operand = ends_operand(kind) && (!item || a->last == '.');
+  a->last = kind;
 }
 
 static bool set_zr(zr_sdl_parser *p, zr_sdl_symtab *scope, double value) {
@@ -746,6 +799,8 @@ static int identifier_token(zr_sdl_kind kind) {
   case ZR_SDL_TEXTURE: return T_TEXTURE_ID;
   case ZR_SDL_INTERIOR: return T_INTERIOR_ID;
   case ZR_SDL_FUNCTION: return T_FUNCTION_ID;
+  case ZR_SDL_NORMAL: return T_NORMAL_ID;
+  case ZR_SDL_COLOUR_MAP: return T_COLOUR_MAP_ID;
   case ZR_SDL_STRING: return T_STRING_ID;
   case ZR_SDL_ARRAY: return T_ARRAY_ID;
   case ZR_SDL_SEED: return T_SEED_ID;
@@ -767,13 +822,13 @@ static int deliver(zr_sdl_parser *p, int kind, const zr_sdl_lexval *val,
 }
 
 /* The value of a built-in constant (reference manual, "Built-in Float
-   Identifiers"): the clock of a still image, the render size. */
+   Identifiers"): the render size, and the clock of a still image, where
+   POV-Ray 3.7 gives 0 for all of clock, clock_delta, clock_on,
+   frame_number, initial_clock, final_clock, initial_frame and
+   final_frame (measured with povray 3.7.0). */
 static double constant(const zr_sdl_parser *p, const char *name) {
   if (strcmp(name, "clock") == 0)
     return p->clock;
-  if (strcmp(name, "final_clock") == 0 || strcmp(name, "initial_frame") == 0
-      || strcmp(name, "final_frame") == 0)
-    return 1;
   if (strcmp(name, "image_width") == 0)
     return p->image_width;
   if (strcmp(name, "image_height") == 0)
@@ -782,7 +837,7 @@ static double constant(const zr_sdl_parser *p, const char *name) {
     return p->version;
   if (strcmp(name, "tau") == 0)
     return 2 * 3.14159265358979323846;
-  return 0; /* clock_delta, clock_on, frame_number, initial_clock */
+  return 0;
 }
 
 /*
@@ -909,11 +964,19 @@ int zr__sdl_next(zr_sdl_lexval *val, zr_sdl_loc *loc, zr_sdl_parser *p) {
       v.decl.local = p->decl_local;
       return deliver(p, T_DECL_NAME, &v, &tl, t->v.str, val, loc);
     }
-    const zr_sdl_symbol *s = zr__sdl_lookup(p, t->v.str, NULL);
+    zr_sdl_symbol *s = zr__sdl_lookup(p, t->v.str, NULL);
     if (!s) {
       zr__sdl_error(p, ZR_EUNDEFINED, &tl, "undefined identifier '%s'",
                     t->v.str);
       return ZR__POV_error;
+    }
+    if (s->deprecated && !(s->deprecated_once && s->warned)) {
+      s->warned = true;
+      if (s->deprecated_message)
+        zr__sdl_warning(p, &tl, "%s", s->deprecated_message);
+      else
+        zr__sdl_warning(p, &tl, "identifier %s was declared deprecated",
+                        t->v.str);
     }
     if (s->value.kind == ZR_SDL_MACRO) {
       if (!zr__sdl_call_macro(p, s->value.ptr, &tl))
@@ -948,6 +1011,7 @@ static void parser_free(zr_sdl_parser *p) {
     zr__sdl_file_free(&p->files[i]);
   free(p->files);
   free(p->init);
+  zr__sdl_close_files(p);
   zr__sdl_symtab_free(&p->globals);
 }
 
@@ -957,8 +1021,8 @@ static zr_status parse(zr_context *ctx, char *path, char *bytes, size_t size,
   memset(&p, 0, sizeof p);
   p.ctx = ctx;
   p.version = 3.7;
-  p.image_width = 320;
-  p.image_height = 240;
+  p.image_width = ctx && ctx->render_width ? ctx->render_width : 320;
+  p.image_height = ctx && ctx->render_height ? ctx->render_height : 240;
   p.scene = zr__scene_new();
   if (!p.scene) {
     free(path);

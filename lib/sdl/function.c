@@ -48,24 +48,33 @@
 
 /* ---- the machine ---- */
 
-typedef enum op {
-  OP_CONST, /* push consts[arg] */
-  OP_LOAD,  /* push slot[arg] */
-  OP_STORE, /* pop into slot[arg] */
-  OP_INC,   /* slot[arg] += 1 */
-  OP_JGT,   /* jump to n when slot[arg] > slot[arg + 1] */
-  OP_JUMP,  /* jump to n */
-  OP_ADD, OP_SUB, OP_MUL, OP_DIV,
-  OP_LT, OP_LE, OP_EQ, OP_NE, OP_GE, OP_GT, OP_AND, OP_OR,
-  OP_NEG, OP_NOT,
-  OP_SIN, OP_COS, OP_TAN, OP_ASIN, OP_ACOS, OP_ATAN, OP_SINH, OP_COSH,
-  OP_TANH, OP_ASINH, OP_ACOSH, OP_ATANH, OP_EXP, OP_LN, OP_LOG, OP_SQRT,
-  OP_ABS, OP_FLOOR, OP_CEIL, OP_INT, OP_DEGREES, OP_RADIANS,
-  OP_ATAN2, OP_POW, OP_MOD, OP_MIN, OP_MAX,
-  OP_SELECT3, OP_SELECT4,
-  OP_CALL,    /* callees[arg] on the top n values */
-  OP_INTERNAL /* internal function arg on the top n values */
-} op;
+/*
+ * The instructions.  CONST pushes consts[arg], LOAD pushes slot[arg],
+ * STORE pops into slot[arg], INC adds 1 to slot[arg], JGT jumps to n
+ * when slot[arg] > slot[arg + 1], JUMP jumps to n.  The arithmetic takes
+ * its operands from the stack; the _S and _K forms take the right one
+ * from slot[arg] or consts[arg] instead (most right operands are one,
+ * and one dispatch instead of two is most of the speed).  CALL runs
+ * callees[arg] and INTERNAL internal function arg on the top n values;
+ * RETURN ends every program with the top value.
+ */
+#define OPS(X)                                                             \
+  X(OP_CONST) X(OP_LOAD) X(OP_STORE) X(OP_INC) X(OP_JGT) X(OP_JUMP)        \
+  X(OP_ADD) X(OP_SUB) X(OP_MUL) X(OP_DIV)                                  \
+  X(OP_ADD_S) X(OP_SUB_S) X(OP_MUL_S) X(OP_DIV_S)                          \
+  X(OP_ADD_K) X(OP_SUB_K) X(OP_MUL_K) X(OP_DIV_K)                          \
+  X(OP_LT) X(OP_LE) X(OP_EQ) X(OP_NE) X(OP_GE) X(OP_GT) X(OP_AND) X(OP_OR) \
+  X(OP_NEG) X(OP_NOT)                                                      \
+  X(OP_SIN) X(OP_COS) X(OP_TAN) X(OP_ASIN) X(OP_ACOS) X(OP_ATAN)           \
+  X(OP_SINH) X(OP_COSH) X(OP_TANH) X(OP_ASINH) X(OP_ACOSH) X(OP_ATANH)     \
+  X(OP_EXP) X(OP_LN) X(OP_LOG) X(OP_SQRT) X(OP_ABS) X(OP_FLOOR)            \
+  X(OP_CEIL) X(OP_INT) X(OP_DEGREES) X(OP_RADIANS)                         \
+  X(OP_ATAN2) X(OP_POW) X(OP_MOD) X(OP_MIN) X(OP_MAX)                      \
+  X(OP_SELECT3) X(OP_SELECT4) X(OP_CALL) X(OP_INTERNAL) X(OP_RETURN)
+
+#define AS_ENUM(o) o,
+typedef enum op { OPS(AS_ENUM) } op;
+#undef AS_ENUM
 
 typedef struct insn {
   uint8_t op;
@@ -134,14 +143,14 @@ static const internal_fn internals[] = {
     {55, "f_quartic_saddle", 4, false},
     {56, "f_quartic_cylinder", 6, false},
     {57, "f_r", 3, true},             {58, "f_ridge", 9, false},
-    {59, "f_ridged_mf", 9, false},    {60, "f_rounded_box", 7, false},
+    {59, "f_ridged_mf", 9, false},    {60, "f_rounded_box", 7, true},
     {61, "f_sphere", 4, true},        {62, "f_spikes", 8, false},
     {63, "f_spikes_2d", 7, false},    {64, "f_spiral", 9, false},
     {65, "f_steiners_roman", 4, false},
     {66, "f_strophoid", 7, false},    {67, "f_strophoid_2d", 10, false},
-    {68, "f_superellipsoid", 5, false},
+    {68, "f_superellipsoid", 5, true},
     {69, "f_th", 3, true},            {70, "f_torus", 5, true},
-    {71, "f_torus2", 6, false},       {72, "f_torus_gumdrop", 4, false},
+    {71, "f_torus2", 6, true},       {72, "f_torus_gumdrop", 4, false},
     {73, "f_umbrella", 4, false},     {74, "f_witch_of_agnesi", 5, false},
     {75, "f_witch_of_agnesi_2d", 9, false},
     {76, "f_noise3d", 3, false},      {78, "f_noise_generator", 4, false},
@@ -154,12 +163,17 @@ static const internal_fn *internal_find(int number) {
   return NULL;
 }
 
+/* The functions with a "field strength" parameter give values clipped to
+   [-10, 10] in povray 3.7 (f_paraboloid(0, 11, 0, 1) is 10); the plain
+   distances (f_sphere, f_torus ...) are not clipped. */
+static double field(double v) { return v < -10 ? -10 : v > 10 ? 10 : v; }
+
 /*
- * The implemented internals.  Each formula was checked against povray
- * 3.7's value at a point (tests/test_function.c quotes them): f_r, f_th
- * and f_ph are spherical coordinates (theta measured from +z towards +x,
- * phi from +y), the others the usual implicit surfaces, negative inside
- * where the manual says "needs threshold 0".
+ * The implemented internals.  Each formula was fitted to povray 3.7's
+ * values at several points, signs, clipping and edge cases included
+ * (tests/test_function.c quotes them): f_r, f_th and f_ph are spherical
+ * coordinates (theta from +z towards +x, phi from +y), the others
+ * implicit surfaces about the y axis.
  */
 static double eval_internal(int number, const double *a) {
   double x = a[0], y = a[1], z = a[2];
@@ -168,19 +182,36 @@ static double eval_internal(int number, const double *a) {
   case 17: /* f_ellipsoid: inverse scales; threshold 1 */
     return sqrt(x * x * a[3] * a[3] + y * y * a[4] * a[4] +
                 z * z * a[5] * a[5]);
-  case 45: /* f_paraboloid: field strength; about the y axis */
-    return a[3] * (y - x * x - z * z);
+  case 45: /* f_paraboloid: field strength */
+    return field(a[3] * (y - x * x - z * z));
   case 47: /* f_ph */
     return r > 0 ? acos(y / r) : 0;
   case 57: /* f_r */
     return r;
+  case 60: { /* f_rounded_box: corner radius, then half sizes */
+    /* The distance to a box shrunk by the radius, less the radius;
+       povray's values are 1e-6 below it at every point we measured. */
+    double dx = fmax(fabs(x) - (a[4] - a[3]), 0);
+    double dy = fmax(fabs(y) - (a[5] - a[3]), 0);
+    double dz = fmax(fabs(z) - (a[6] - a[3]), 0);
+    return sqrt(dx * dx + dy * dy + dz * dz) - a[3] - 1e-6;
+  }
   case 61: /* f_sphere: radius */
     return r - a[3];
+  case 68: { /* f_superellipsoid: east-west and north-south exponents */
+    double e = a[3], n = a[4];
+    double xy = pow(pow(fabs(x), 2 / e) + pow(fabs(y), 2 / e), e / n);
+    return 1 - pow(xy + pow(fabs(z), 2 / n), n / 2);
+  }
   case 69: /* f_th */
     return atan2(x, z);
   case 70: { /* f_torus: major and minor radius, about the y axis */
     double ring = sqrt(x * x + z * z) - a[3];
     return sqrt(ring * ring + y * y) - a[4];
+  }
+  case 71: { /* f_torus2: field strength, major and minor radius */
+    double big = a[4] * a[4], q = r * r + big - a[5] * a[5];
+    return field(-a[3] * (q * q - 4 * big * (x * x + z * z)));
   }
   default:
     return NAN; /* never: unimplemented numbers are refused earlier */
@@ -203,85 +234,124 @@ static double select4(double a, double b, double c, double d) {
  * arguments, already on the stack, as the callee's parameters: no copy,
  * and f->need says the array is big enough.
  */
+/*
+ * Dispatch.  With GCC and Clang each instruction jumps straight to the
+ * code of the next ("labels as values", a GNU C extension both share):
+ * no loop, no range check, and one indirect jump per instruction that
+ * the processor predicts from its own history.  Other compilers get the
+ * plain switch (as does -DZR_FN_SWITCH, to test it).  NEXT() and JUMP()
+ * end a case.
+ */
+#if defined(__GNUC__) && !defined(ZR_FN_SWITCH)
+#define VM_THREADED 1
+#define CASE(o) L_##o:
+#define NEXT() goto *dispatch[(++i)->op]
+#define JUMP(k) i = code + (k); goto *dispatch[i->op]
+#else
+#define CASE(o) case o:
+#define NEXT() i++; break
+#define JUMP(k) i = code + (k); break
+#endif
+
 static double run(const zr_fn *f, double *base) {
   double *sp = base + f->n_slots;
-  const insn *code = f->code;
-  for (size_t pc = 0; pc < f->n_code; pc++) {
-    const insn *i = &code[pc];
+  const insn *code = f->code, *i = code;
+  /* No bound on i: the program ends with OP_RETURN (the compiler adds
+     it). */
+#ifdef VM_THREADED
+#define AS_LABEL(o) [o] = &&L_##o,
+  static const void *const dispatch[] = {OPS(AS_LABEL)};
+#undef AS_LABEL
+  goto *dispatch[i->op];
+#else
+  for (;;) {
     switch ((op)i->op) {
-    case OP_CONST: *sp++ = f->consts[i->arg]; break;
-    case OP_LOAD: *sp++ = base[i->arg]; break;
-    case OP_STORE: base[i->arg] = *--sp; break;
-    case OP_INC: base[i->arg] += 1; break;
-    case OP_JGT:
-      if (base[i->arg] > base[i->arg + 1])
-        pc = (size_t)i->n - 1;
-      break;
-    case OP_JUMP: pc = (size_t)i->n - 1; break;
-    case OP_ADD: sp--; sp[-1] += sp[0]; break;
-    case OP_SUB: sp--; sp[-1] -= sp[0]; break;
-    case OP_MUL: sp--; sp[-1] *= sp[0]; break;
-    case OP_DIV: sp--; sp[-1] /= sp[0]; break;
-    case OP_LT: sp--; sp[-1] = truth(sp[-1] < sp[0]); break;
-    case OP_LE: sp--; sp[-1] = truth(sp[-1] <= sp[0]); break;
-    case OP_EQ: sp--; sp[-1] = truth(sp[-1] == sp[0]); break;
-    case OP_NE: sp--; sp[-1] = truth(sp[-1] != sp[0]); break;
-    case OP_GE: sp--; sp[-1] = truth(sp[-1] >= sp[0]); break;
-    case OP_GT: sp--; sp[-1] = truth(sp[-1] > sp[0]); break;
+#endif
+    CASE(OP_CONST) *sp++ = f->consts[i->arg]; NEXT();
+    CASE(OP_LOAD) *sp++ = base[i->arg]; NEXT();
+    CASE(OP_STORE) base[i->arg] = *--sp; NEXT();
+    CASE(OP_INC) base[i->arg] += 1; NEXT();
+    CASE(OP_JGT)
+      if (base[i->arg] > base[i->arg + 1]) {
+        JUMP(i->n);
+      }
+      NEXT();
+    CASE(OP_JUMP) JUMP(i->n);
+    CASE(OP_ADD) sp--; sp[-1] += sp[0]; NEXT();
+    CASE(OP_SUB) sp--; sp[-1] -= sp[0]; NEXT();
+    CASE(OP_MUL) sp--; sp[-1] *= sp[0]; NEXT();
+    CASE(OP_DIV) sp--; sp[-1] /= sp[0]; NEXT();
+    CASE(OP_ADD_S) sp[-1] += base[i->arg]; NEXT();
+    CASE(OP_SUB_S) sp[-1] -= base[i->arg]; NEXT();
+    CASE(OP_MUL_S) sp[-1] *= base[i->arg]; NEXT();
+    CASE(OP_DIV_S) sp[-1] /= base[i->arg]; NEXT();
+    CASE(OP_ADD_K) sp[-1] += f->consts[i->arg]; NEXT();
+    CASE(OP_SUB_K) sp[-1] -= f->consts[i->arg]; NEXT();
+    CASE(OP_MUL_K) sp[-1] *= f->consts[i->arg]; NEXT();
+    CASE(OP_DIV_K) sp[-1] /= f->consts[i->arg]; NEXT();
+    CASE(OP_LT) sp--; sp[-1] = truth(sp[-1] < sp[0]); NEXT();
+    CASE(OP_LE) sp--; sp[-1] = truth(sp[-1] <= sp[0]); NEXT();
+    CASE(OP_EQ) sp--; sp[-1] = truth(sp[-1] == sp[0]); NEXT();
+    CASE(OP_NE) sp--; sp[-1] = truth(sp[-1] != sp[0]); NEXT();
+    CASE(OP_GE) sp--; sp[-1] = truth(sp[-1] >= sp[0]); NEXT();
+    CASE(OP_GT) sp--; sp[-1] = truth(sp[-1] > sp[0]); NEXT();
     /* povray 3.7 treats any non-zero value, however small, as true in
        functions (1e-11 & 1 is 1), unlike #if's 1e-10 tolerance. */
-    case OP_AND: sp--; sp[-1] = truth(sp[-1] != 0 && sp[0] != 0); break;
-    case OP_OR: sp--; sp[-1] = truth(sp[-1] != 0 || sp[0] != 0); break;
-    case OP_NEG: sp[-1] = -sp[-1]; break;
-    case OP_NOT: sp[-1] = truth(sp[-1] == 0); break;
-    case OP_SIN: sp[-1] = sin(sp[-1]); break;
-    case OP_COS: sp[-1] = cos(sp[-1]); break;
-    case OP_TAN: sp[-1] = tan(sp[-1]); break;
-    case OP_ASIN: sp[-1] = asin(sp[-1]); break;
-    case OP_ACOS: sp[-1] = acos(sp[-1]); break;
-    case OP_ATAN: sp[-1] = atan(sp[-1]); break;
-    case OP_SINH: sp[-1] = sinh(sp[-1]); break;
-    case OP_COSH: sp[-1] = cosh(sp[-1]); break;
-    case OP_TANH: sp[-1] = tanh(sp[-1]); break;
-    case OP_ASINH: sp[-1] = asinh(sp[-1]); break;
-    case OP_ACOSH: sp[-1] = acosh(sp[-1]); break;
-    case OP_ATANH: sp[-1] = atanh(sp[-1]); break;
-    case OP_EXP: sp[-1] = exp(sp[-1]); break;
-    case OP_LN: sp[-1] = log(sp[-1]); break;
-    case OP_LOG: sp[-1] = log10(sp[-1]); break;
-    case OP_SQRT: sp[-1] = sqrt(sp[-1]); break;
-    case OP_ABS: sp[-1] = fabs(sp[-1]); break;
-    case OP_FLOOR: sp[-1] = floor(sp[-1]); break;
-    case OP_CEIL: sp[-1] = ceil(sp[-1]); break;
-    case OP_INT: sp[-1] = trunc(sp[-1]); break;
-    case OP_DEGREES: sp[-1] *= 180.0 / M_PI; break;
-    case OP_RADIANS: sp[-1] *= M_PI / 180.0; break;
-    case OP_ATAN2: sp--; sp[-1] = atan2(sp[-1], sp[0]); break;
-    case OP_POW: sp--; sp[-1] = pow(sp[-1], sp[0]); break;
-    case OP_MOD: sp--; sp[-1] = fmod(sp[-1], sp[0]); break;
-    case OP_MIN: sp--; sp[-1] = sp[0] < sp[-1] ? sp[0] : sp[-1]; break;
-    case OP_MAX: sp--; sp[-1] = sp[0] > sp[-1] ? sp[0] : sp[-1]; break;
-    case OP_SELECT3:
+    CASE(OP_AND) sp--; sp[-1] = truth(sp[-1] != 0 && sp[0] != 0); NEXT();
+    CASE(OP_OR) sp--; sp[-1] = truth(sp[-1] != 0 || sp[0] != 0); NEXT();
+    CASE(OP_NEG) sp[-1] = -sp[-1]; NEXT();
+    CASE(OP_NOT) sp[-1] = truth(sp[-1] == 0); NEXT();
+    CASE(OP_SIN) sp[-1] = sin(sp[-1]); NEXT();
+    CASE(OP_COS) sp[-1] = cos(sp[-1]); NEXT();
+    CASE(OP_TAN) sp[-1] = tan(sp[-1]); NEXT();
+    CASE(OP_ASIN) sp[-1] = asin(sp[-1]); NEXT();
+    CASE(OP_ACOS) sp[-1] = acos(sp[-1]); NEXT();
+    CASE(OP_ATAN) sp[-1] = atan(sp[-1]); NEXT();
+    CASE(OP_SINH) sp[-1] = sinh(sp[-1]); NEXT();
+    CASE(OP_COSH) sp[-1] = cosh(sp[-1]); NEXT();
+    CASE(OP_TANH) sp[-1] = tanh(sp[-1]); NEXT();
+    CASE(OP_ASINH) sp[-1] = asinh(sp[-1]); NEXT();
+    CASE(OP_ACOSH) sp[-1] = acosh(sp[-1]); NEXT();
+    CASE(OP_ATANH) sp[-1] = atanh(sp[-1]); NEXT();
+    CASE(OP_EXP) sp[-1] = exp(sp[-1]); NEXT();
+    CASE(OP_LN) sp[-1] = log(sp[-1]); NEXT();
+    CASE(OP_LOG) sp[-1] = log10(sp[-1]); NEXT();
+    CASE(OP_SQRT) sp[-1] = sqrt(sp[-1]); NEXT();
+    CASE(OP_ABS) sp[-1] = fabs(sp[-1]); NEXT();
+    CASE(OP_FLOOR) sp[-1] = floor(sp[-1]); NEXT();
+    CASE(OP_CEIL) sp[-1] = ceil(sp[-1]); NEXT();
+    CASE(OP_INT) sp[-1] = trunc(sp[-1]); NEXT();
+    CASE(OP_DEGREES) sp[-1] *= 180.0 / M_PI; NEXT();
+    CASE(OP_RADIANS) sp[-1] *= M_PI / 180.0; NEXT();
+    CASE(OP_ATAN2) sp--; sp[-1] = atan2(sp[-1], sp[0]); NEXT();
+    CASE(OP_POW) sp--; sp[-1] = pow(sp[-1], sp[0]); NEXT();
+    CASE(OP_MOD) sp--; sp[-1] = fmod(sp[-1], sp[0]); NEXT();
+    CASE(OP_MIN) sp--; sp[-1] = sp[0] < sp[-1] ? sp[0] : sp[-1]; NEXT();
+    CASE(OP_MAX) sp--; sp[-1] = sp[0] > sp[-1] ? sp[0] : sp[-1]; NEXT();
+    CASE(OP_SELECT3)
       sp -= 2;
       sp[-1] = select3(sp[-1], sp[0], sp[1]);
-      break;
-    case OP_SELECT4:
+      NEXT();
+    CASE(OP_SELECT4)
       sp -= 3;
       sp[-1] = select4(sp[-1], sp[0], sp[1], sp[2]);
-      break;
-    case OP_CALL:
+      NEXT();
+    CASE(OP_CALL)
       sp -= i->n;
       *sp = run(f->callees[i->arg], sp);
       sp++;
-      break;
-    case OP_INTERNAL:
+      NEXT();
+    CASE(OP_INTERNAL)
       sp -= i->n;
       *sp = eval_internal(i->arg, sp);
       sp++;
-      break;
+      NEXT();
+    CASE(OP_RETURN) return sp[-1];
+#ifndef VM_THREADED
+    default: return NAN; /* never: every opcode has its case */
     }
   }
-  return sp[-1];
+#endif
 }
 
 double zr__fn_eval(const zr_fn *fn, const double *args) {
@@ -346,13 +416,10 @@ static bool is_word(const zr_sdl_token *t, const char *w) {
   return s && strcmp(s, w) == 0;
 }
 
-/* Whether t is a directive (#declare ...) rather than a keyword. */
+/* Whether t is a directive (its spelling keeps the '#'). */
 static bool is_directive(const zr_sdl_token *t) {
   const char *s = word_of(t);
-  if (!s)
-    return false;
-  const zr_sdl_keyword *k = zr__sdl_directive_find(s, strlen(s));
-  return k && k->token == t->kind;
+  return s && s[0] == '#';
 }
 
 /* What messages call a token. */
@@ -365,8 +432,6 @@ static void describe(const zr_sdl_token *t, char *buf, size_t size) {
     snprintf(buf, size, "string");
   else if (t->kind == T_IDENTIFIER)
     snprintf(buf, size, "'%s'", t->v.str);
-  else if (is_directive(t))
-    snprintf(buf, size, "'#%s'", t->v.str);
   else if (t->kind >= 256 && t->v.str)
     snprintf(buf, size, "'%s'", t->v.str);
   else if (t->kind >= 256)
@@ -454,18 +519,19 @@ static bool emit_const(compiler *c, double v) {
    on the machine itself, its operands loaded from slots. */
 static bool fold(compiler *c, op o, int arity, size_t first_pc) {
   double mem[8];
-  insn prog[5];
+  insn prog[6];
   for (int k = 0; k < arity; k++) {
     mem[k] = c->consts[c->code[first_pc + (size_t)k].arg];
     insn load = {OP_LOAD, k, 0};
     prog[k] = load;
   }
-  insn apply = {(uint8_t)o, 0, arity};
+  insn apply = {(uint8_t)o, 0, arity}, ret = {OP_RETURN, 0, 0};
   prog[arity] = apply;
+  prog[arity + 1] = ret;
   zr_fn tmp;
   memset(&tmp, 0, sizeof tmp);
   tmp.n_slots = arity;
-  tmp.n_code = (size_t)arity + 1;
+  tmp.n_code = (size_t)arity + 2;
   tmp.code = prog;
   double v = run(&tmp, mem);
   c->n_code = first_pc;
@@ -487,6 +553,26 @@ static bool emit_op(compiler *c, op o, int arity, size_t first_pc) {
       return fold(c, o, arity, first_pc);
   }
   return emit(c, o, 0, arity, 1 - arity);
+}
+
+/* A binary operator whose right operand was compiled from right_pc on:
+   folded when both are constants, fused with a lone load of the right
+   operand, else the plain stack form. */
+static bool emit_binary(compiler *c, op o, size_t first_pc, size_t right_pc) {
+  if (c->n_code - first_pc == 2 && c->code[first_pc].op == OP_CONST &&
+      c->code[right_pc].op == OP_CONST)
+    return emit_op(c, o, 2, first_pc);
+  if (c->n_code - right_pc == 1 && (o == OP_ADD || o == OP_SUB ||
+                                    o == OP_MUL || o == OP_DIV)) {
+    insn *last = &c->code[right_pc];
+    int k = o - OP_ADD;
+    if (last->op == OP_LOAD || last->op == OP_CONST) {
+      last->op = (uint8_t)((last->op == OP_LOAD ? OP_ADD_S : OP_ADD_K) + k);
+      c->height--; /* the load no longer pushes */
+      return true;
+    }
+  }
+  return emit(c, o, 0, 2, -1);
 }
 
 static bool expr(compiler *c);
@@ -514,17 +600,6 @@ static const char *canonical(const char *name) {
   if (strcmp(name, "v") == 0)
     return "y";
   return name;
-}
-
-/* The identifier's declaration, newest #local scope first, as the
-   directive engine looks it up. */
-static const zr_sdl_symbol *lookup(zr_sdl_parser *p, const char *name) {
-  for (size_t i = p->n_frames; i-- > 1;) {
-    zr_sdl_symbol *s = zr__sdl_symtab_find(&p->frames[i].locals, name);
-    if (s)
-      return s;
-  }
-  return zr__sdl_symtab_find(&p->globals, name);
 }
 
 /* ---- built-in float functions ---- */
@@ -683,7 +758,7 @@ static bool sum_or_prod(compiler *c, bool is_sum) {
 
 /* A declared identifier in a body. */
 static bool declared(compiler *c, const zr_sdl_token *name) {
-  const zr_sdl_symbol *s = lookup(c->p, name->v.str);
+  const zr_sdl_symbol *s = zr__sdl_lookup(c->p, name->v.str, NULL);
   if (!s)
     return fail_at(c, name, ZR_EUNDEFINED,
                    "undefined identifier '%s' in function", name->v.str);
@@ -806,7 +881,8 @@ static bool binary_level(compiler *c, level_fn next, const int *chars,
     if (k == n_ops)
       return true;
     c->pos++;
-    if (!next(c) || !emit_op(c, ops[k], 2, first))
+    size_t right = c->n_code;
+    if (!next(c) || !emit_binary(c, ops[k], first, right))
       return false;
   }
 }
@@ -889,12 +965,14 @@ static bool parameter_list(compiler *c) {
   return want(c, ')', "',' or ')'");
 }
 
-/* Skips a balanced { ... } block whose '{' is the current token. */
+/* Skips a balanced { ... } block whose '{' is the current token.  A
+   directive stops it: skipping one could carry the reading past the
+   #end of the macro the function is written in. */
 static bool skip_block(compiler *c) {
   int depth = 0;
   do {
     const zr_sdl_token *t = tok(c);
-    if (t->kind == 0)
+    if (t->kind == 0 || is_directive(t))
       return expected(c, "'}'");
     if (is_char(t, '{'))
       depth++;
@@ -973,9 +1051,14 @@ static const zr_fn *finish(compiler *c) {
       p, (c->n_callees ? c->n_callees : 1) * sizeof *callees);
   if (!fn || !code || !consts || !callees)
     return NULL;
-  memcpy(code, c->code, c->n_code * sizeof *code);
-  memcpy(consts, c->consts, c->n_consts * sizeof *consts);
-  memcpy(callees, c->callees, c->n_callees * sizeof *callees);
+  /* An empty pool was never allocated, and memcpy from NULL is
+     undefined even for no bytes. */
+  if (c->n_code)
+    memcpy(code, c->code, c->n_code * sizeof *code);
+  if (c->n_consts)
+    memcpy(consts, c->consts, c->n_consts * sizeof *consts);
+  if (c->n_callees)
+    memcpy(callees, c->callees, c->n_callees * sizeof *callees);
   if (c->n_slots < c->n_params)
     c->n_slots = c->n_params;
   fn->n_params = c->n_params;
@@ -1016,7 +1099,7 @@ static bool definition(compiler *c, const zr_sdl_loc *at) {
   } else if (!expr(c)) {
     return false;
   }
-  if (!want(c, '}', "an operator or '}'"))
+  if (!want(c, '}', "an operator or '}'") || !emit(c, OP_RETURN, 0, 0, 0))
     return false;
   if (c->n_slots + c->max_height > ZR_FN_MAX_STACK ||
       c->n_slots + c->need_calls > ZR_FN_MAX_STACK) {
@@ -1044,6 +1127,11 @@ const zr_fn *zr__sdl_function_parse(zr_sdl_parser *p, const zr_sdl_loc *at) {
   free(c.consts);
   free(c.callees);
   fr->pos = c.pos;
+  /* The engine ends a #declare's value by watching the tokens it hands
+     out (directive.c, autoend_due); the body went past it, and ended
+     with a '}' at the depth where 'function' stood. */
+  if (fn && p->autoend.token)
+    p->autoend.operand = true;
   return fn;
 }
 

@@ -7,6 +7,8 @@ lib_libzrcube_la_SOURCES += \
 	lib/sdl/builtins.c \
 	lib/sdl/control.c \
 	lib/sdl/directive.c \
+	lib/sdl/fastexpr.c \
+	lib/sdl/fileio.c \
 	lib/sdl/keywords.c \
 	lib/sdl/symtab.c \
 	lib/sdl/tokens.c \
@@ -30,6 +32,15 @@ tests_test_parser_LDFLAGS = -static
 # `make`, `make check` and `make install`).
 $(lib_libzrcube_la_OBJECTS) $(tests_test_lexer_OBJECTS) \
 	$(tests_test_parser_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
+
+# The directive language and values (issue 3).
+check_PROGRAMS += tests/test_directives
+TESTS += tests/test_directives
+tests_test_directives_SOURCES = tests/test_directives.c
+tests_test_directives_CPPFLAGS = $(TEST_CPPFLAGS)
+tests_test_directives_LDADD = $(TEST_LDADD)
+tests_test_directives_LDFLAGS = -static
+$(tests_test_directives_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
 
 # User-defined functions (lib/sdl/function.c) and their tests.
 lib_libzrcube_la_SOURCES += lib/sdl/function.h lib/sdl/function.c

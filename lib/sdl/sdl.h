@@ -9,11 +9,16 @@
  *                becomes (a keyword outside the supported slice becomes
  *                T_UNSUPPORTED, reported when the parser asks for it);
  *   directive.c  the directive engine: bison's yylex.  It walks the token
- *                arrays, runs #include, #version, #zfor and #zend, turns
- *                identifiers into typed tokens, and formats diagnostics
- *                with the include chain;
- *   values.c     numeric expressions (float, vector, colour) and symbol
- *                tables;
+ *                arrays, runs #include, #declare, #version, #zfor and
+ *                #zend, turns identifiers into typed tokens (calling
+ *                macros, indexing arrays), and formats diagnostics with
+ *                the include and macro call chain;
+ *   control.c    #if, #while, #for, #switch, #macro, #undef, #debug ...;
+ *   fileio.c     #fopen, #fclose, #read, #write;
+ *   fastexpr.c   float directive values without a nested parse;
+ *   values.c     numeric expressions (float, vector, colour);
+ *   builtins.c   comparisons, strings, arrays, rand, vector rotations;
+ *   symtab.c     the symbol tables (hash tables);
  *   build.c      what the grammar actions call to build the scene model.
  * The grammar itself is grammar/pov.y, a pure bison parser with two entry
  * points chosen by a leading pseudo-token, so the engine can parse the
@@ -86,7 +91,10 @@ typedef enum zr_sdl_kind {
   ZR_SDL_MACRO,  /* ptr: a zr_sdl_macro */
   ZR_SDL_SEED,   /* ptr: a zr_sdl_rand stream that rand() advances */
   ZR_SDL_ALIAS,  /* ptr: a zr_sdl_alias, a parameter passed by name */
-  ZR_SDL_FUNCTION /* ptr: a compiled zr_fn (function.h) */
+  ZR_SDL_FILE,   /* ptr: a zr_sdl_fhandle made by #fopen */
+  ZR_SDL_FUNCTION, /* ptr: a compiled zr_fn (function.h) */
+  ZR_SDL_NORMAL,     /* ptr: a zr_normal */
+  ZR_SDL_COLOUR_MAP  /* ptr: a zr_colour_map */
 } zr_sdl_kind;
 
 /* What an identifier stands for.  Pointers are into the scene's arena
@@ -134,6 +142,15 @@ typedef struct zr_sdl_alias {
   const char *name;
 } zr_sdl_alias;
 
+/* A file opened by #fopen: read files are lexed like scenes and read
+   token by token; written ones are stdio streams (fileio.c). */
+typedef struct zr_sdl_fhandle {
+  int file;   /* read: index into the parser's files; write: -1 */
+  size_t pos; /* read: the next token */
+  void *out;  /* write: the FILE * */
+  struct zr_sdl_fhandle *next; /* the parser's open files */
+} zr_sdl_fhandle;
+
 /* A rand() stream made by seed() (see builtins.c for the generator). */
 typedef struct zr_sdl_rand {
   unsigned long long state;
@@ -155,7 +172,8 @@ typedef enum zr_sdl_mod_kind {
   ZR_SDL_MOD_INTERIOR,
   ZR_SDL_MOD_NO_SHADOW,
   ZR_SDL_MOD_INVERSE,
-  ZR_SDL_MOD_OPEN
+  ZR_SDL_MOD_OPEN,
+  ZR_SDL_MOD_NORMAL
 } zr_sdl_mod_kind;
 
 typedef struct zr_sdl_mod {
@@ -171,6 +189,22 @@ typedef struct zr_sdl_reflection {
   bool falloff_given, fresnel, fresnel_given, metallic_given;
   bool max_given;
 } zr_sdl_reflection;
+
+/* A pattern modifier (turbulence, octaves, frequency, ramp_wave,
+   warp { turbulence ... } ...) as the grammar hands it to build.c. */
+typedef struct zr_sdl_pmod {
+  int token; /* the keyword's token; T_WARP for a turbulence warp */
+  zr_sdl_expr value; /* its argument (dim 0: none) */
+  zr_sdl_loc loc;
+  zr_pattern warp; /* T_WARP: turbulence, octaves, omega, lambda */
+} zr_sdl_pmod;
+
+/* The colours after checker, hexagon or brick. */
+typedef struct zr_sdl_clist {
+  int n;
+  zr_colour c[3];
+  zr_sdl_loc loc; /* of the last colour, for "too many colours" */
+} zr_sdl_clist;
 
 /* The semantic value of a token as the engine hands it to bison. */
 typedef union zr_sdl_lexval {
@@ -262,6 +296,9 @@ typedef struct zr_sdl_symbol {
   char *name; /* NULL: an empty slot */
   unsigned hash;
   bool removed; /* a tombstone left by #undef */
+  /* "#declare deprecated [once] ["message"] Name": warn when used. */
+  bool deprecated, deprecated_once, warned;
+  const char *deprecated_message;
   zr_sdl_value value;
 } zr_sdl_symbol;
 
@@ -327,6 +364,7 @@ typedef struct zr_sdl_autoend {
   int depth;   /* brackets open */
   unsigned long long angles; /* bit i: bracket i is a vector's '<' */
   bool operand; /* the last token may end an expression */
+  int last;     /* the last token's kind */
 } zr_sdl_autoend;
 
 typedef struct zr_sdl_parser {
@@ -353,6 +391,7 @@ typedef struct zr_sdl_parser {
   zr_sdl_value nested_rvalue;
   zr_sdl_list nested_list;
   int nested_end;
+  zr_sdl_fhandle *handles; /* files #fopen opened, closed at the end */
   /* The elements of an array initialiser being parsed, in order. */
   zr_sdl_value *init;
   size_t n_init, cap_init;
@@ -425,6 +464,27 @@ bool zr__sdl_read_defined(zr_sdl_parser *p, const zr_sdl_loc *at,
 /* Invokes a macro whose name was just read at 'at'. */
 bool zr__sdl_call_macro(zr_sdl_parser *p, const zr_sdl_macro *m,
                         const zr_sdl_loc *at);
+/* The fast path for float values (fastexpr.c): "( expr )" at the current
+   place, and "Name = expr ;" after #declare or #local.  False when the
+   value needs the grammar: nothing was consumed or reported then. */
+bool zr__sdl_fast_paren(zr_sdl_parser *p, double *out);
+bool zr__sdl_fast_declare(zr_sdl_parser *p, bool is_local);
+/* A macro argument that is a float expression or a vector literal,
+   followed by ',' or ')' (left in *end). */
+bool zr__sdl_fast_argument(zr_sdl_parser *p, zr_sdl_value *value,
+                           int *end);
+/* #fopen, #fclose, #read and #write (fileio.c), and the data file
+   search they use (directive.c): like #include's, -1 after reporting. */
+bool zr__sdl_run_file_directive(zr_sdl_parser *p, int kind,
+                                const zr_sdl_loc *at);
+void zr__sdl_close_files(zr_sdl_parser *p);
+int zr__sdl_open_data(zr_sdl_parser *p, const char *name,
+                      const zr_sdl_loc *at);
+/* #default: the texture, pigment or finish of objects made from now on
+   (control.c). */
+bool zr__sdl_set_default(zr_sdl_parser *p, const zr_texture *texture,
+                         const zr_pigment *pigment,
+                         const zr_finish *finish);
 /* Checks, at the end of a file, that its blocks were all closed. */
 bool zr__sdl_check_blocks(zr_sdl_parser *p);
 
@@ -473,6 +533,17 @@ bool zr__sdl_compare(zr_sdl_parser *p, int op, const zr_sdl_expr *a,
 bool zr__sdl_vaxis_rotate(zr_sdl_parser *p, const zr_sdl_expr *v,
                           const zr_sdl_expr *axis, const zr_sdl_expr *deg,
                           const zr_sdl_loc *loc, zr_sdl_expr *out);
+/* inside(Object, Point): 1 when the point is inside the object. */
+bool zr__sdl_inside(zr_sdl_parser *p, const zr_object *o,
+                    const zr_sdl_expr *point, const zr_sdl_loc *loc,
+                    zr_sdl_expr *out);
+/* vturbulence(Lambda, Omega, Octaves, Point): the pattern code's
+   turbulence displacement (lib/scene/pattern.c) at the point. */
+bool zr__sdl_vturbulence(zr_sdl_parser *p, const zr_sdl_expr *lambda,
+                         const zr_sdl_expr *omega,
+                         const zr_sdl_expr *octaves,
+                         const zr_sdl_expr *point, const zr_sdl_loc *loc,
+                         zr_sdl_expr *out);
 bool zr__sdl_vrotate(zr_sdl_parser *p, const zr_sdl_expr *v,
                      const zr_sdl_expr *r, const zr_sdl_loc *loc,
                      zr_sdl_expr *out);
@@ -539,6 +610,33 @@ bool zr__sdl_texture_transform(zr_sdl_parser *p, zr_texture *tx,
                                const zr_transform *t);
 bool zr__sdl_texture_done(zr_sdl_parser *p, zr_texture *tx);
 zr_interior *zr__sdl_interior_new(zr_sdl_parser *p, const zr_interior *from);
+/* Patterns, colour maps, normals and image maps (build.c). */
+bool zr__sdl_pigment_pattern(zr_sdl_parser *p, zr_pigment *pg, int kind,
+                             const zr_sdl_clist *list);
+bool zr__sdl_gradient(zr_sdl_parser *p, zr_pattern *pt,
+                      const zr_sdl_expr *e, const zr_sdl_loc *loc);
+bool zr__sdl_pattern_mod(zr_sdl_parser *p, zr_pattern *pt,
+                         const zr_sdl_pmod *m);
+bool zr__sdl_clist_add(zr_sdl_parser *p, zr_sdl_clist *l,
+                       const zr_sdl_expr *e, const zr_sdl_loc *loc);
+zr_colour_map *zr__sdl_colour_map_new(zr_sdl_parser *p,
+                                      const zr_colour_map *from);
+bool zr__sdl_colour_map_add(zr_sdl_parser *p, zr_colour_map *m,
+                            const zr_sdl_expr *v, const zr_sdl_loc *vl,
+                            const zr_sdl_expr *c, const zr_sdl_loc *cl);
+bool zr__sdl_colour_map_done(zr_sdl_parser *p, const zr_colour_map *m,
+                             const zr_sdl_loc *loc);
+zr_normal *zr__sdl_normal_new(zr_sdl_parser *p, const zr_normal *from);
+bool zr__sdl_normal_pattern(zr_sdl_parser *p, zr_normal *nm, int kind,
+                            const zr_sdl_expr *amount,
+                            const zr_sdl_loc *loc);
+bool zr__sdl_normal_transform(zr_sdl_parser *p, zr_normal *nm,
+                              const zr_transform *t);
+/* Reads the picture of an image_map, searched like #include. */
+zr_image_map *zr__sdl_image_map_new(zr_sdl_parser *p, const char *name,
+                                    const zr_sdl_loc *loc);
+bool zr__sdl_image_map_mod(zr_sdl_parser *p, zr_image_map *im, int token,
+                           const zr_sdl_expr *e, const zr_sdl_loc *loc);
 /* A point light with its place set; the grammar fills the rest. */
 bool zr__sdl_light(zr_sdl_parser *p, zr_light *l, const zr_sdl_loc *loc);
 void zr__sdl_camera_begin(zr_sdl_parser *p, const zr_sdl_loc *loc);

@@ -103,6 +103,8 @@ zr_status zr__sdl_symtab_set(zr_sdl_symtab *t, const char *name,
   t->slots[i].name = copy;
   t->slots[i].hash = h;
   t->slots[i].removed = false;
+  t->slots[i].deprecated = false;
+  t->slots[i].warned = false;
   t->slots[i].value = *value;
   t->n++;
   t->used++;

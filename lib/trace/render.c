@@ -15,12 +15,19 @@
  * the centres; pass 2 compares each centre with its four neighbours
  * (POV-Ray compares with the left and upper ones and supersamples both
  * pixels of a pair that differ, which is the same as looking at all
- * four) after POV-Ray's antialiasing gamma, and where the difference
- * exceeds the threshold averages the centre with an aa_depth x aa_depth
- * grid of samples over the pixel.  Jitter moves each
- * sample by a pseudo-random amount drawn from a hash of the pixel index
- * and sample number, never from shared state, so the picture does not
- * depend on how pixels are split among threads and processes.
+ * four, except that it renders in 32 x 32 blocks and never returns to a
+ * finished block, so a right or lower neighbour across a block border
+ * does not count) after POV-Ray's antialiasing gamma, and where the
+ * difference exceeds the threshold averages the centre with an
+ * aa_depth x aa_depth grid of samples over the pixel.  povray also
+ * compares with neighbours already supersampled, which depends on the
+ * order pixels are traced in; this does not, and so picks a slightly
+ * different set: on the golden scenes at 160 x 120 the sets agree on
+ * 96-98% of the pixels either picks, and the supersampled values agree
+ * exactly.  Jitter moves each sample by a pseudo-random amount drawn from
+ * a hash of the pixel index and sample number, never from shared state,
+ * so the picture does not depend on how pixels are split among threads
+ * and processes.
  */
 #include <stdlib.h>
 #include <string.h>
@@ -134,6 +141,11 @@ static bool needs_supersampling(const zr_render_params *p,
   for (int k = 0; k < 4; k++) {
     int nx = x + dx[k], ny = y + dy[k];
     if (nx < 0 || ny < 0 || nx >= p->width || ny >= p->height)
+      continue;
+    /* A right or lower neighbour in the next render block was traced
+       after this pixel was finished, so povray never goes back to it. */
+    if ((dx[k] > 0 && nx % ZR_AA_BLOCK == 0) ||
+        (dy[k] > 0 && ny % ZR_AA_BLOCK == 0))
       continue;
     const float *n = centres + 3 * ((size_t)ny * p->width + nx);
     if (zr__colour_difference(c, n, exponent) > p->aa_threshold)

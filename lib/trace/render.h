@@ -23,6 +23,8 @@ void zr__camera_media(const zr_scene *scene, zr_media *media);
 
 /* POV-Ray's Antialias_Gamma default. */
 #define ZR_AA_GAMMA 2.5
+/* POV-Ray 3.7's render block size (Render_Block_Size default). */
+#define ZR_AA_BLOCK 32
 
 /* POV-Ray's colour difference for antialiasing: the sum of the absolute
    differences of the red, green and blue values, each clipped to [0, 1]

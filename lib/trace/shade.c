@@ -40,11 +40,11 @@
 #include <math.h>
 #include <stddef.h>
 
+#include "scene/texture.h"
 #include "trace/bvh.h"
 
 zr_colour zr__pigment_at(const zr_pigment *pigment, zr_vec3 p) {
-  (void)p; /* solid colours do not vary over the surface */
-  return pigment->colour;
+  return zr__pigment_eval(pigment, p); /* lib/scene/texture.c */
 }
 
 static double rgb_max(zr_rgb c) { return fmax(c.r, fmax(c.g, c.b)); }
@@ -347,7 +347,10 @@ zr_rgb zr__trace_ray(const zr_tracer *tracer, const zr_ray *ray, int level,
   s.p = zr_v3_madd(ray->origin, ray->dir, hit.t);
   s.d = zr_v3_norm(ray->dir);
   s.entering = zr_v3_dot(hit.normal, s.d) < 0.0;
-  s.n = s.entering ? hit.normal : zr_v3_neg(hit.normal);
+  zr_vec3 n = hit.normal;
+  if (hit.object->texture->normal) /* normal { }: lib/scene/texture.c */
+    n = zr__normal_perturb(hit.object->texture->normal, s.p, n);
+  s.n = s.entering ? n : zr_v3_neg(n);
   s.object = hit.object;
   s.finish = hit.object->texture->finish;
   s.colour = zr__pigment_at(hit.object->texture->pigment, s.p);

@@ -2,15 +2,17 @@
 #
 # Built only by `configure --enable-fuzz CC=clang` (without --enable-werror:
 # clang warns on flex's output): the target compiles the library's sources
-# itself with -fsanitize=fuzzer,address,undefined, so coverage reaches
-# every parser file while the ordinary library stays uninstrumented.
+# itself with -fsanitize=fuzzer,address,undefined (undefined behaviour
+# stops the run, as a crash would), so coverage reaches every parser file
+# while the ordinary library stays uninstrumented.
 #   make tests/fuzz/fuzz_parse
 #   tests/fuzz/fuzz_parse -max_len=4096 -timeout=10 -rss_limit_mb=2048 \
+#     -dict=$(srcdir)/tests/fuzz/pov.dict \
 #     CORPUS_DIR $(srcdir)/scenes $(srcdir)/tests/fuzz/regress
 # Inputs that once crashed, leaked or hung are kept in tests/fuzz/regress/
 # and replayed through the same entry point, without libFuzzer, by
 # tests/fuzz/replay in every `make check`.
-EXTRA_DIST += tests/fuzz/regress
+EXTRA_DIST += tests/fuzz/regress tests/fuzz/pov.dict
 check_PROGRAMS += tests/fuzz/replay
 TESTS += tests/fuzz/replay
 tests_fuzz_replay_SOURCES = tests/fuzz/replay.c tests/fuzz/fuzz_parse.c
@@ -25,7 +27,8 @@ nodist_tests_fuzz_fuzz_parse_SOURCES = $(GRAMMAR_GENERATED)
 tests_fuzz_fuzz_parse_CPPFLAGS = $(AM_CPPFLAGS) -DZR_BUILDING_LIBRARY \
 	$(PNG_CFLAGS) $(PTHREAD_CFLAGS)
 tests_fuzz_fuzz_parse_CFLAGS = $(AM_CFLAGS) $(PTHREAD_CFLAGS) \
-	-fsanitize=fuzzer,address,undefined -fno-omit-frame-pointer
+	-fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined \
+	-fno-omit-frame-pointer
 tests_fuzz_fuzz_parse_LDFLAGS = -fsanitize=fuzzer,address,undefined
 tests_fuzz_fuzz_parse_LDADD = $(PNG_LIBS) $(JPEG_LIBS) $(PTHREAD_LIBS) -lm
 $(tests_fuzz_fuzz_parse_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h

@@ -1,0 +1,40 @@
+/*
+ * pattern.h - POV-Ray's patterns: noise, turbulence, wave forms and the
+ * pattern functions themselves, evaluated in pattern space.
+ */
+#ifndef ZR_SCENE_PATTERN_H
+#define ZR_SCENE_PATTERN_H
+
+#include "core/vec.h"
+#include "scene/scene.h"
+
+/* POV-Ray's pattern defaults for kind: frequency 1, phase 0, octaves 6,
+   omega 0.5, lambda 2, brick_size <8,3,4.5>, mortar 0.5, agate_turb 1,
+   gradient along x. */
+void zr__pattern_init(zr_pattern *pt, zr_pattern_kind kind);
+
+/* Lattice gradient noise scaled to [0, 1] with mean 0.5. */
+double zr__noise(zr_vec3 p);
+/* A vector of three independent noises, each in [-1, 1], mean 0. */
+zr_vec3 zr__dnoise(zr_vec3 p);
+/* The fractal sum of dnoise over octaves (omega, lambda): turbulence's
+   displacement before it is scaled by the turbulence vector. */
+zr_vec3 zr__dturbulence(zr_vec3 p, int octaves, double omega,
+                        double lambda);
+
+/* Applies the wave form after frequency and phase ("Frequency and
+   Phase", "Waveforms"): the value a colour map is indexed with. */
+double zr__pattern_wave(const zr_pattern *pt, double value);
+
+/*
+ * The pattern's value at p (pattern space): turbulence, the pattern
+ * function, then frequency, phase and wave.  In [0, 1], except block
+ * patterns, which give their colour index (checker 0/1, hexagon 0/1/2,
+ * brick 0 for mortar, 1 for brick).
+ */
+double zr__pattern_eval(const zr_pattern *pt, zr_vec3 p);
+
+/* Whether kind is a block pattern (a colour list, no colour map). */
+bool zr__pattern_is_block(zr_pattern_kind kind);
+
+#endif /* ZR_SCENE_PATTERN_H */

@@ -1,0 +1,372 @@
+/*
+ * fileio.c - the file directives #fopen, #fclose, #read and #write
+ * (reference manual, "File I/O Directives").
+ *
+ * A file opened for reading is read through the context's reader and
+ * lexed by the scene scanner, like an include file, so #read takes its
+ * string, float and vector literals (with unary signs) from a token
+ * array, and a malformed datum is reported with the data file's line
+ * under a caret.  Reading the last datum closes the file and undefines
+ * its handle (as povray 3.7.0 does), so defined(F) tells the end.  #write
+ * prints floats as "%g", vectors as "<x,y,z> " (the format povray 3.7.0
+ * writes) and strings as they are.
+ *
+ * I/O restrictions, after POV-Ray's default security settings: a file is
+ * read only where #include looks (next to the including file, in the
+ * include paths, in POV-Ray's include directory), and an absolute name
+ * only inside the main scene's directory or an include path; a file is
+ * written only below the working directory, never through an absolute
+ * name or a ".." component.  The binary word types of #write (uint8 ...)
+ * are not supported yet.
+ */
+#include "config.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "pov-parse.h"
+#include "sdl/sdl.h"
+
+void zr__sdl_close_files(zr_sdl_parser *p) {
+  while (p->handles) {
+    zr_sdl_fhandle *h = p->handles;
+    p->handles = h->next;
+    if (h->out)
+      fclose(h->out);
+    free(h);
+  }
+}
+
+static void forget(zr_sdl_parser *p, zr_sdl_fhandle *h) {
+  for (zr_sdl_fhandle **k = &p->handles; *k; k = &(*k)->next) {
+    if (*k == h) {
+      *k = h->next;
+      break;
+    }
+  }
+  if (h->out)
+    fclose(h->out);
+  free(h);
+}
+
+static bool expect(zr_sdl_parser *p, int kind, const char *what) {
+  if (zr__sdl_peek(p, 0)->kind != kind) {
+    zr_sdl_loc at = zr__sdl_peek_loc(p, 0);
+    zr__sdl_error(p, ZR_ESYNTAX, &at, "expected %s", what);
+    return false;
+  }
+  zr__sdl_top(p)->pos++;
+  return true;
+}
+
+static const char *read_name(zr_sdl_parser *p, const char *after) {
+  const zr_sdl_token *t = zr__sdl_peek(p, 0);
+  if (t->kind != T_IDENTIFIER) {
+    zr_sdl_loc at = zr__sdl_peek_loc(p, 0);
+    zr__sdl_error(p, ZR_ESYNTAX, &at, "expected an identifier after '%s'",
+                  after);
+    return NULL;
+  }
+  zr__sdl_top(p)->pos++;
+  return t->v.str;
+}
+
+/* The open file called name, or NULL after reporting. */
+static zr_sdl_fhandle *handle(zr_sdl_parser *p, const char *name,
+                              const zr_sdl_loc *at) {
+  const zr_sdl_symbol *s = zr__sdl_lookup(p, name, NULL);
+  if (!s || s->value.kind != ZR_SDL_FILE) {
+    zr__sdl_error(p, ZR_ESYNTAX, at, "'%s' is not an open file", name);
+    return NULL;
+  }
+  return (zr_sdl_fhandle *)s->value.ptr;
+}
+
+static bool has_dotdot(const char *name) {
+  for (const char *s = name; (s = strstr(s, "..")); s += 2)
+    if ((s == name || s[-1] == '/') && (s[2] == '\0' || s[2] == '/'))
+      return true;
+  return false;
+}
+
+/* Whether path lies inside directory dir. */
+static bool inside(const char *path, const char *dir, size_t n) {
+  while (n > 1 && dir[n - 1] == '/')
+    n--;
+  return n > 0 && strncmp(path, dir, n) == 0 && path[n] == '/';
+}
+
+static bool may_read(zr_sdl_parser *p, const char *name) {
+  if (name[0] != '/')
+    return !has_dotdot(name);
+  const char *scene = p->files[0].path;
+  const char *slash = strrchr(scene, '/');
+  if (slash && inside(name, scene, (size_t)(slash - scene)))
+    return !has_dotdot(name);
+  for (size_t i = 0; p->ctx && i < p->ctx->n_include_paths; i++) {
+    const char *dir = p->ctx->include_paths[i];
+    if (inside(name, dir, strlen(dir)))
+      return !has_dotdot(name);
+  }
+  return false;
+}
+
+static bool do_fopen(zr_sdl_parser *p, const zr_sdl_loc *at) {
+  zr_sdl_loc nl = zr__sdl_peek_loc(p, 0);
+  const char *name = read_name(p, "'#fopen'");
+  if (!name)
+    return false;
+  zr_sdl_loc fl = zr__sdl_peek_loc(p, 0);
+  if (zr__sdl_parse_nested(p, T_START_STRING) != ZR_OK)
+    return false;
+  const char *path = p->nested_rvalue.ptr;
+  const zr_sdl_token *mode = zr__sdl_peek(p, 0);
+  const char *m = mode->kind == T_UNSUPPORTED || mode->kind == T_IDENTIFIER
+                      ? mode->v.str : "";
+  bool reading = strcmp(m, "read") == 0;
+  if (!reading && strcmp(m, "write") != 0 && strcmp(m, "append") != 0) {
+    zr_sdl_loc ml = zr__sdl_peek_loc(p, 0);
+    zr__sdl_error(p, ZR_ESYNTAX, &ml,
+                  "expected 'read', 'write' or 'append' after the file name");
+    return false;
+  }
+  zr__sdl_top(p)->pos++;
+  zr_sdl_fhandle *h = calloc(1, sizeof *h);
+  if (!h) {
+    zr__sdl_error(p, ZR_ENOMEM, at, "out of memory");
+    return false;
+  }
+  h->file = -1;
+  if (reading) {
+    if (!may_read(p, path)) {
+      free(h);
+      zr__sdl_error(p, ZR_EINVAL, &fl, "'#fopen' may read only next to the "
+                    "scene or in the include paths, not '%s'", path);
+      return false;
+    }
+    h->file = zr__sdl_open_data(p, path, &fl);
+    if (h->file < 0) {
+      free(h);
+      return false;
+    }
+  } else {
+    if (path[0] == '/' || has_dotdot(path) || path[0] == '\0') {
+      free(h);
+      zr__sdl_error(p, ZR_EINVAL, &fl, "'#fopen' may write only below the "
+                    "working directory, not '%s'", path);
+      return false;
+    }
+    h->out = fopen(path, m[0] == 'w' ? "w" : "a");
+    if (!h->out) {
+      free(h);
+      zr__sdl_error(p, ZR_EIO, &fl, "cannot open '%s' for writing", path);
+      return false;
+    }
+  }
+  h->next = p->handles;
+  p->handles = h;
+  zr_sdl_value v;
+  memset(&v, 0, sizeof v);
+  v.kind = ZR_SDL_FILE;
+  v.ptr = h;
+  /* File handles are always global ("The fopen Directive"). */
+  if (zr__sdl_symtab_set(&p->globals, name, &v) != ZR_OK) {
+    zr__sdl_error(p, ZR_ENOMEM, &nl, "out of memory");
+    return false;
+  }
+  return true;
+}
+
+static bool do_fclose(zr_sdl_parser *p) {
+  zr_sdl_loc nl = zr__sdl_peek_loc(p, 0);
+  const char *name = read_name(p, "'#fclose'");
+  if (!name)
+    return false;
+  /* A file that #read closed at its end may be closed again (the stock
+     fileio.pov does so). */
+  if (!zr__sdl_lookup(p, name, NULL))
+    return true;
+  zr_sdl_fhandle *h = handle(p, name, &nl);
+  if (!h)
+    return false;
+  forget(p, h);
+  zr__sdl_symtab_remove(&p->globals, name);
+  return true;
+}
+
+/* A signed number in a data file at tokens[*i]. */
+static bool datum_number(const zr_sdl_token *t, size_t *i, double *out) {
+  double sign = 1;
+  while (t[*i].kind == '-' || t[*i].kind == '+') {
+    if (t[*i].kind == '-')
+      sign = -sign;
+    (*i)++;
+  }
+  if (t[*i].kind != T_NUMBER)
+    return false;
+  *out = sign * t[(*i)++].v.num;
+  return true;
+}
+
+/* Reads the next datum of h into *v: 1, 0 at the end of the file, -1
+   after reporting a malformed one. */
+static int datum(zr_sdl_parser *p, zr_sdl_fhandle *h, zr_sdl_value *v) {
+  const zr_sdl_file *f = &p->files[h->file];
+  const zr_sdl_token *t = f->tokens;
+  size_t i = h->pos;
+  while (t[i].kind == ',')
+    i++;
+  if (t[i].kind == 0)
+    return 0;
+  size_t start = i;
+  memset(v, 0, sizeof *v);
+  if (t[i].kind == T_STRING) {
+    v->kind = ZR_SDL_STRING;
+    v->ptr = zr__sdl_strdup(p, t[i].v.str, strlen(t[i].v.str));
+    if (!v->ptr)
+      return -1;
+    i++;
+  } else if (t[i].kind == '<') {
+    i++;
+    v->num.dim = 0;
+    for (;;) {
+      if (v->num.dim == 5 || !datum_number(t, &i, &v->num.v[v->num.dim]))
+        goto malformed;
+      v->num.dim++;
+      if (t[i].kind != ',')
+        break;
+      i++;
+    }
+    if (t[i].kind != '>' || v->num.dim < 2)
+      goto malformed;
+    i++;
+    v->kind = v->num.dim == 5 ? ZR_SDL_COLOUR : ZR_SDL_VECTOR;
+  } else {
+    double x;
+    if (!datum_number(t, &i, &x))
+      goto malformed;
+    v->kind = ZR_SDL_FLOAT;
+    v->num = zr__sdl_float(x);
+  }
+  h->pos = i;
+  return 1;
+malformed:;
+  zr_sdl_loc at = zr__sdl_token_loc(h->file, &t[i > start ? i : start]);
+  zr__sdl_error(p, ZR_ESYNTAX, &at,
+                "expected a float, vector or string literal");
+  return -1;
+}
+
+static bool do_read(zr_sdl_parser *p) {
+  if (!expect(p, '(', "'(' after '#read'"))
+    return false;
+  zr_sdl_loc nl = zr__sdl_peek_loc(p, 0);
+  const char *name = read_name(p, "'#read ('");
+  zr_sdl_fhandle *h = name ? handle(p, name, &nl) : NULL;
+  if (!h)
+    return false;
+  if (h->file < 0) {
+    zr__sdl_error(p, ZR_ESYNTAX, &nl, "'%s' is open for writing", name);
+    return false;
+  }
+  bool open = true;
+  while (zr__sdl_peek(p, 0)->kind == ',') {
+    zr__sdl_top(p)->pos++;
+    zr_sdl_loc vl = zr__sdl_peek_loc(p, 0);
+    const char *var = read_name(p, "','");
+    if (!var)
+      return false;
+    if (!open)
+      continue;
+    zr_sdl_value v;
+    int r = datum(p, h, &v);
+    if (r < 0)
+      return false;
+    if (r == 0) {
+      /* Past the end: the file closes and its handle goes. */
+      forget(p, h);
+      zr__sdl_symtab_remove(&p->globals, name);
+      open = false;
+      continue;
+    }
+    zr_sdl_decl_name decl;
+    memset(&decl, 0, sizeof decl);
+    decl.name = var;
+    decl.frame = (int)(p->n_frames - 1);
+    if (!zr__sdl_define(p, &decl, false, &v, &vl))
+      return false;
+  }
+  if (open) {
+    /* Like povray 3.7.0, the file closes as soon as its last datum was
+       read, so "#while (defined(F)) #read (F, V) ... #end" stops right. */
+    const zr_sdl_token *t = p->files[h->file].tokens;
+    size_t i = h->pos;
+    while (t[i].kind == ',')
+      i++;
+    if (t[i].kind == 0) {
+      forget(p, h);
+      zr__sdl_symtab_remove(&p->globals, name);
+    }
+  }
+  return expect(p, ')', "',' or ')' in '#read'");
+}
+
+static bool do_write(zr_sdl_parser *p) {
+  if (!expect(p, '(', "'(' after '#write'"))
+    return false;
+  zr_sdl_loc nl = zr__sdl_peek_loc(p, 0);
+  const char *name = read_name(p, "'#write ('");
+  zr_sdl_fhandle *h = name ? handle(p, name, &nl) : NULL;
+  if (!h)
+    return false;
+  if (!h->out) {
+    zr__sdl_error(p, ZR_ESYNTAX, &nl, "'%s' is open for reading", name);
+    return false;
+  }
+  /* povray 3.7.0 reads "#write (F Text)" without the comma too (the
+     stock portfolio scene writes so). */
+  if (zr__sdl_peek(p, 0)->kind == ',')
+    zr__sdl_top(p)->pos++;
+  for (;;) {
+    zr_sdl_loc il = zr__sdl_peek_loc(p, 0);
+    if (zr__sdl_parse_nested(p, T_START_ARG) != ZR_OK)
+      return false;
+    const zr_sdl_value *v = &p->nested_rvalue;
+    switch (v->kind) {
+    case ZR_SDL_STRING:
+      fputs(v->ptr, h->out);
+      break;
+    case ZR_SDL_FLOAT:
+      fprintf(h->out, "%g", v->num.v[0]);
+      break;
+    case ZR_SDL_VECTOR:
+    case ZR_SDL_COLOUR:
+      fputc('<', h->out);
+      for (int i = 0; i < v->num.dim; i++)
+        fprintf(h->out, i ? ",%g" : "%g", v->num.v[i]);
+      fputs("> ", h->out);
+      break;
+    default:
+      zr__sdl_error(p, ZR_ESYNTAX, &il,
+                    "'#write' writes floats, vectors and strings only");
+      return false;
+    }
+    if (p->nested_end == ')')
+      return true;
+  }
+}
+
+bool zr__sdl_run_file_directive(zr_sdl_parser *p, int kind,
+                                const zr_sdl_loc *at) {
+  switch (kind) {
+  case T_FOPEN:
+    return do_fopen(p, at);
+  case T_FCLOSE:
+    return do_fclose(p);
+  case T_READ:
+    return do_read(p);
+  default:
+    return do_write(p);
+  }
+}
