@@ -168,7 +168,7 @@ ZR_API void zr_scene_get_info(const zr_scene *scene, zr_scene_info *info);
 typedef struct zr_radiosity zr_radiosity;
 
 typedef struct zr_radiosity_params {
-  /* Refine a link while the light it may misplace (see criterion)
+  /* Refine a link while B_source * F * A_receiver (see criterion)
      exceeds bf_eps times the scene's emitted power (largest channel):
      relative, so a scene gives the same mesh at any scale or
      brightness.  Default 1e-4. */
@@ -186,11 +186,17 @@ typedef struct zr_radiosity_params {
      do no refinement (links stay at the elements); default 0. */
   int uniform;
   int shooting;         /* 1: progressive Southwell shooting; 0 gather */
-  /* 0 (default): refine where a link may misplace more than bf_eps of
-     the power: its factor varying over the receiver, partial visibility
-     or an uneven source (B_q dF A_p).  1: Hanrahan's BF criterion,
-     B_q F A_p with the oracle factor. */
+  /* 0 (default): Hanrahan's BF criterion, B_q F A_p with the oracle
+     factor.  1: an error estimate: the light a link may misplace
+     because its factor varies over the receiver (B_q dF A_p), its
+     visibility is partial, or its source is uneven (per unit area);
+     tighter per element, but many more links. */
   int criterion;
+  /* 0 (default): emission leaves both sides of a surface, as POV-Ray
+     shows it from both; 1: only the front side, along the outward
+     normal (for a triangle (p1 - p0) x (p2 - p0)), so a lamp hung
+     just under a ceiling does not pour light into the gap. */
+  int one_sided_emission;
 } zr_radiosity_params;
 
 /* Fills p with the defaults above (scene may be NULL; it has no

@@ -19,7 +19,13 @@
  * "Finish"): emission is a radiance that POV-Ray multiplies by the
  * pigment, so the emitted radiosity is pi * emission * pigment; diffuse
  * is the fraction of light reflected diffusely, times the pigment, so
- * the reflectance is rho = diffuse * pigment.  A reflectance above 1
+ * the reflectance is rho = diffuse * pigment.  Emission leaves both
+ * sides, as POV-Ray shows an emitting triangle from both; with
+ * params.one_sided_emission only the front side (the outward normal, for
+ * a triangle (p1 - p0) x (p2 - p0)) emits, which suits a lamp hung a
+ * hair below a ceiling: two-sided, half its power would pour into that
+ * gap, and the ceiling cells at the lamp's rim, larger than the gap,
+ * would leak the trapped light into the room.  A reflectance above 1
  * would create energy; it is clamped to 1 with a warning.  Objects with
  * no area (a degenerate triangle, a flat box) get a warning and take no
  * part, as POV-Ray itself renders nothing for them.
@@ -152,7 +158,7 @@ static int primitive_surfaces(const zr_object *o, const zr_vec3 *lo,
 
 /* Emission and reflectance from the object's texture. */
 static void surface_light(zr__rad_surface *s, const zr_object *o,
-                          bool *clamped) {
+                          bool one_sided, bool *clamped) {
   const zr_texture *tex = o->texture;
   zr_rgb pig = zr_colour_rgb(tex->pigment->colour);
   const zr_finish *fin = tex->finish;
@@ -161,7 +167,8 @@ static void surface_light(zr__rad_surface *s, const zr_object *o,
   for (int c = 0; c < 3; c++) {
     double e = M_PI * em[c] * pc[c];
     double r = fin->diffuse * pc[c];
-    s->emission[c] = isfinite(e) && e > 0.0 ? e : 0.0;
+    s->emission[0][c] = isfinite(e) && e > 0.0 ? e : 0.0;
+    s->emission[1][c] = one_sided ? 0.0 : s->emission[0][c];
     if (!(r >= 0.0))
       r = 0.0;
     if (r > 1.0) {
@@ -202,7 +209,7 @@ static zr_status add_primitive(zr_radiosity *rad, zr_context *ctx,
     memset(s, 0, sizeof *s);
     s->geom = geo[i];
     s->object = o;
-    surface_light(s, o, &clamped);
+    surface_light(s, o, rad->params.one_sided_emission != 0, &clamped);
     s->area = zr__surface_area(&s->geom, 0, 1, 0, 1, 2, &rad->rule_src);
     zr_status st = zr__rad_add_root(rad, (int32_t)rad->n_surfs);
     if (st != ZR_OK)
@@ -210,7 +217,7 @@ static zr_status add_primitive(zr_radiosity *rad, zr_context *ctx,
     rad->total_area += s->area;
     double p[3];
     for (int c = 0; c < 3; c++)
-      p[c] = 2.0 * s->area * s->emission[c];
+      p[c] = s->area * (s->emission[0][c] + s->emission[1][c]);
     rad->power_ref += zr__rad_max3(p);
     rad->n_surfs++;
   }

@@ -178,7 +178,7 @@ static int32_t node_new(zr_radiosity *rad, int32_t surf, int32_t parent,
   const zr__rad_surface *s = &rad->surfs[surf];
   for (int side = 0; side < 2; side++)
     for (int c = 0; c < 3; c++)
-      node->b[side][c] = s->emission[c];
+      node->b[side][c] = s->emission[side][c];
   return (int32_t)rad->n_nodes++;
 }
 

@@ -59,7 +59,7 @@ static zr_status check_params(zr_context *ctx, const zr_radiosity_params *p) {
   else if (p->uniform < 0 || p->uniform > 10)
     what = "uniform must be 0 to 10";
   else if (p->criterion < 0 || p->criterion > 1)
-    what = "criterion must be 0 (error) or 1 (BF)";
+    what = "criterion must be 0 (BF) or 1 (error estimate)";
   if (what == NULL)
     return ZR_OK;
   return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, NULL, "radiosity: %s",

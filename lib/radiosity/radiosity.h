@@ -80,7 +80,9 @@ typedef struct zr__rad_vertex {
 typedef struct zr__rad_surface {
   zr__surface geom;
   const zr_object *object;
-  double emission[3]; /* emitted exitance pi * emission * pigment */
+  /* Emitted exitance pi * emission * pigment of the front and back
+     sides (the back is dark with params.one_sided_emission). */
+  double emission[2][3];
   double rho[3];      /* reflectance diffuse * pigment */
   int32_t root;
   double area;

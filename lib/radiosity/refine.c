@@ -11,7 +11,8 @@
  * and B_q the current radiosity of the source, exceeds BF_eps times the
  * scene's emitted power ("BF refinement", their section 5); the node that
  * looks larger from the other (the larger oracle factor) is split, unless
- * it is already smaller than A_eps.  Refinement alternates with solving
+ * it is already smaller than A_eps (criterion 1 replaces the oracle by
+ * an error estimate, see error_choice).  Refinement alternates with solving
  * (solve.c), so links that turn out to carry light get refined on the
  * next round.  The oracle's cosines are taken at the cell centres, loosened
  * by the spread of a curved cell's normals so a large curved cell is never
@@ -36,9 +37,10 @@
  * has a link to itself, integrated with the bounded kernel
  * cos cos / (pi r^2) on two different Gauss rules so no point meets
  * itself; it is split while B A F_self, with F_self estimated from the
- * spread of the cell's normals, exceeds the threshold.  V is the fraction of k x k rays between stratified points of
- * the two cells that the tracer's BVH finds unobstructed (Hanrahan's
- * paper used a similar fixed set of rays; a fraction, not a yes/no).
+ * spread of the cell's normals, exceeds the threshold.  V is the
+ * fraction of k x k rays between stratified points of the two cells
+ * that the tracer's BVH finds unobstructed (Hanrahan's paper used a
+ * similar fixed set of rays; a fraction, not a yes/no).
  */
 #include "radiosity/radiosity.h"
 
@@ -92,7 +94,24 @@ static void classify(const zr_radiosity *rad, int32_t p, int32_t q,
     }
 }
 
-/* The oracle factor from node x's side sx to node y's side sy. */
+/* The cosine between the sided normal n (loosened by spread) and the
+   direction from c to t, clamped to [0, 1]. */
+static double loose_cos(zr_vec3 n, double spread, zr_vec3 c, zr_vec3 t) {
+  zr_vec3 d = zr_v3_sub(t, c);
+  double len = zr_v3_len(d);
+  if (!(len > 0.0))
+    return 0.0;
+  double th = acos(fmax(-1.0, fmin(1.0, zr_v3_dot(n, d) / len))) - spread;
+  return th <= 0.0 ? 1.0 : th >= M_PI / 2 ? 0.0 : cos(th);
+}
+
+/*
+ * The oracle factor from node x's side sx to node y's side sy: Hanrahan's
+ * A cos cos / (pi r^2 + A) between the centres, where each cosine is the
+ * largest towards the other cell's 3 x 3 sample points, so a large cell
+ * whose centre lies behind the other (a floor under a box's face) is
+ * not judged invisible.
+ */
 static double oracle(const zr_radiosity *rad, int32_t x, int sx, int32_t y,
                      int sy) {
   const zr__rad_node *a = &rad->nodes[x], *b = &rad->nodes[y];
@@ -100,13 +119,16 @@ static double oracle(const zr_radiosity *rad, int32_t x, int sx, int32_t y,
   double r2 = zr_v3_dot(d, d);
   if (!(r2 > 0.0))
     return b->area > 0.0 ? 1.0 : 0.0;
-  zr_vec3 u = zr_v3_scale(d, 1.0 / sqrt(r2));
   zr_vec3 na = zr_v3_scale(a->normal, sx ? -1.0 : 1.0);
   zr_vec3 nb = zr_v3_scale(b->normal, sy ? -1.0 : 1.0);
-  double ta = acos(fmax(-1.0, fmin(1.0, zr_v3_dot(na, u)))) - a->spread;
-  double tb = acos(fmax(-1.0, fmin(1.0, -zr_v3_dot(nb, u)))) - b->spread;
-  double ca = ta <= 0.0 ? 1.0 : ta >= M_PI / 2 ? 0.0 : cos(ta);
-  double cb = tb <= 0.0 ? 1.0 : tb >= M_PI / 2 ? 0.0 : cos(tb);
+  cell_samples sa, sb;
+  node_samples(rad, x, &sa);
+  node_samples(rad, y, &sb);
+  double ca = 0.0, cb = 0.0;
+  for (int i = 0; i < 9; i++) {
+    ca = fmax(ca, loose_cos(na, a->spread, a->centre, sb.p[i]));
+    cb = fmax(cb, loose_cos(nb, b->spread, b->centre, sa.p[i]));
+  }
   return b->area * ca * cb / (M_PI * r2 + b->area);
 }
 
@@ -120,18 +142,22 @@ static bool can_split(const zr_radiosity *rad, int32_t n) {
 
 static zr_status add_link(zr_radiosity *rad, int32_t p, int rs, int32_t q,
                           int ss);
-static zr_status create_links(zr_radiosity *rad, int32_t p, int32_t q);
+static zr_status create_links(zr_radiosity *rad, int32_t p, int32_t q,
+                              int rs_only);
 
-/* Links every child of p to q (or p to every child of q). */
+/* Links every child of p to q (or p to every child of q); rs_only
+   (0, 1, or -1 for both) keeps the receiver side of the link split, so
+   a receiver linked on both sides does not get its children linked
+   twice. */
 static zr_status split_and_link(zr_radiosity *rad, int32_t p, int32_t q,
-                                bool split_p) {
+                                bool split_p, int rs_only) {
   int32_t n = split_p ? p : q;
   if (!zr__rad_subdivide(rad, n))
     return ZR_ENOMEM;
   int32_t first = rad->nodes[n].child;
   for (int k = 0; k < 4; k++) {
-    zr_status st = split_p ? create_links(rad, first + k, q)
-                           : create_links(rad, p, first + k);
+    zr_status st = split_p ? create_links(rad, first + k, q, rs_only)
+                           : create_links(rad, p, first + k, rs_only);
     if (st != ZR_OK)
       return st;
   }
@@ -145,7 +171,7 @@ static zr_status link_children(zr_radiosity *rad, int32_t p) {
   int32_t c = rad->nodes[p].child;
   for (int i = 0; i < 4; i++)
     for (int j = 0; j < 4; j++) {
-      zr_status st = create_links(rad, c + i, c + j);
+      zr_status st = create_links(rad, c + i, c + j, -1);
       if (st != ZR_OK)
         return st;
     }
@@ -157,7 +183,8 @@ static int self_choice(const zr_radiosity *rad, const zr__rad_link *l);
 /* A curved cell that sees itself gets a link to itself on each pair of
    sides that face, unless the self transfer is large enough that its
    children should be linked instead. */
-static zr_status self_links(zr_radiosity *rad, int32_t p, int counts[4]) {
+static zr_status self_links(zr_radiosity *rad, int32_t p, int counts[4],
+                            int rs_only) {
   zr__rad_link probe;
   memset(&probe, 0, sizeof probe);
   probe.recv = probe.src = p;
@@ -167,7 +194,7 @@ static zr_status self_links(zr_radiosity *rad, int32_t p, int counts[4]) {
   if (self_choice(rad, &probe) == 3)
     return link_children(rad, p);
   for (int k = 0; k < 4; k++)
-    if (counts[k] > 0) {
+    if (counts[k] > 0 && (rs_only < 0 || rs_only == k >> 1)) {
       zr_status st = add_link(rad, p, k >> 1, p, k & 1);
       if (st != ZR_OK)
         return st;
@@ -175,13 +202,15 @@ static zr_status self_links(zr_radiosity *rad, int32_t p, int counts[4]) {
   return ZR_OK;
 }
 
-/* Links receiver p to source q on the sides that face each other. */
-static zr_status create_links(zr_radiosity *rad, int32_t p, int32_t q) {
+/* Links receiver p to source q on the sides that face each other (only
+   receiver side rs_only unless it is -1). */
+static zr_status create_links(zr_radiosity *rad, int32_t p, int32_t q,
+                              int rs_only) {
   int counts[4];
   classify(rad, p, q, counts);
   if (p == q)
     return counts[0] + counts[1] + counts[2] + counts[3] > 0
-               ? self_links(rad, p, counts)
+               ? self_links(rad, p, counts, rs_only)
                : ZR_OK;
   int front = counts[0] + counts[2], back = counts[1] + counts[3];
   if (front == 0 && back == 0)
@@ -189,13 +218,13 @@ static zr_status create_links(zr_radiosity *rad, int32_t p, int32_t q) {
   if (front > 0 && back > 0) {
     /* The receiver straddles the source's plane: split it if it can. */
     if (can_split(rad, p))
-      return split_and_link(rad, p, q, true);
+      return split_and_link(rad, p, q, true, rs_only);
     if (!rad->surfs[rad->nodes[q].surf].geom.planar && can_split(rad, q))
-      return split_and_link(rad, p, q, false);
+      return split_and_link(rad, p, q, false, rs_only);
   }
   int ss = back > front;
   for (int rs = 0; rs < 2; rs++)
-    if (counts[2 * rs + ss] > 0) {
+    if (counts[2 * rs + ss] > 0 && (rs_only < 0 || rs == rs_only)) {
       zr_status st = add_link(rad, p, rs, q, ss);
       if (st != ZR_OK)
         return st;
@@ -263,13 +292,16 @@ static int larger_end(const zr_radiosity *rad, const zr__rad_link *l,
                       bool sp, bool sq) {
   double f_pq = oracle(rad, l->recv, l->rside, l->src, l->sside);
   double f_qp = oracle(rad, l->src, l->sside, l->recv, l->rside);
-  if (f_qp > f_pq)
+  /* Equal up to rounding (equal cells, common in symmetric scenes) is a
+     tie, settled for the receiver: rounding must not pick, or a scaled
+     scene would refine differently. */
+  if (f_qp >= f_pq * (1.0 - 1e-9))
     return sp ? 1 : 2;
   return sq ? 2 : 1;
 }
 
 /*
- * The error criterion (the default): a link is split when the light it
+ * The error criterion (criterion 1): a link is split when the light it
  * may misplace exceeds the threshold, from three causes: the factor
  * varying over the receiver (split the receiver), partial visibility
  * (known once the link was computed; split the larger end), and an
@@ -323,7 +355,7 @@ static int refine_choice(const zr_radiosity *rad, const zr__rad_link *l) {
   if (rad->params.uniform > 0)
     return sp ? 1 : 2;
   double thr = rad->params.bf_eps * rad->power_ref;
-  if (rad->params.criterion == 0)
+  if (rad->params.criterion == 1)
     return error_choice(rad, l, sp, sq, thr);
   /* Hanrahan's BF criterion: B_q F_pq A_p against the threshold. */
   const zr__rad_node *p = &rad->nodes[l->recv], *q = &rad->nodes[l->src];
@@ -349,7 +381,7 @@ static zr_status refine_one(zr_radiosity *rad, size_t li, bool *split) {
         rad->links[k].dead = 1;
     return link_children(rad, l.recv);
   }
-  return split_and_link(rad, l.recv, l.src, choice == 1);
+  return split_and_link(rad, l.recv, l.src, choice == 1, l.rside);
 }
 
 /* Appends the link and refines it at once (depth first). */
@@ -380,7 +412,7 @@ zr_status zr__rad_link_all(zr_radiosity *rad) {
       if (i == j && rad->surfs[i].geom.planar)
         continue;
       zr_status st =
-          create_links(rad, rad->surfs[i].root, rad->surfs[j].root);
+          create_links(rad, rad->surfs[i].root, rad->surfs[j].root, -1);
       if (st != ZR_OK)
         return st;
     }
@@ -404,9 +436,14 @@ zr_status zr__rad_refine_links(zr_radiosity *rad, size_t *changed) {
 
 void zr__rad_compact_links(zr_radiosity *rad) {
   size_t k = 0;
-  for (size_t i = 0; i < rad->n_links; i++)
-    if (!rad->links[i].dead)
-      rad->links[k++] = rad->links[i];
+  for (size_t i = 0; i < rad->n_links; i++) {
+    const zr__rad_link *l = &rad->links[i];
+    /* A link that carries nothing (every ray blocked, or a factor of
+       exactly 0) is dropped, as Hanrahan et al. do with occluded pairs:
+       it would only cost time in every sweep. */
+    if (!l->dead && !(l->final && l->ff == 0.0))
+      rad->links[k++] = *l;
+  }
   rad->n_links = k;
 }
 
@@ -458,37 +495,60 @@ static double link_factor(const zr_radiosity *rad, const zr__rad_link *l) {
                             &rad->rule_recv);
 }
 
-/* The point of node n at the centre of cell (i, j) of a k x k grid,
-   moved off the surface towards side by eps. */
-static zr_vec3 grid_point(const zr_radiosity *rad, const zr__rad_node *node,
-                          int i, int j, int k, int side, double eps) {
+/* The points of node n at the centres of a k x k grid of its cell,
+   moved off the surface towards side by eps, with that side's normal. */
+static void grid_points(const zr_radiosity *rad, const zr__rad_node *node,
+                        int k, int side, double eps, zr_vec3 *p,
+                        zr_vec3 *n) {
   double cell[4];
   zr__rad_node_cell(node, cell);
-  zr__surface_point pt;
-  zr__surface_eval(&rad->surfs[node->surf].geom,
-                   cell[0] + (i + 0.5) / k * (cell[1] - cell[0]),
-                   cell[2] + (j + 0.5) / k * (cell[3] - cell[2]), &pt);
-  return zr_v3_madd(pt.p, pt.n, side ? -eps : eps);
+  for (int i = 0; i < k * k; i++) {
+    zr__surface_point pt;
+    zr__surface_eval(&rad->surfs[node->surf].geom,
+                     cell[0] + (i % k + 0.5) / k * (cell[1] - cell[0]),
+                     cell[2] + (i / k + 0.5) / k * (cell[3] - cell[2]), &pt);
+    n[i] = side ? zr_v3_neg(pt.n) : pt.n;
+    p[i] = zr_v3_madd(pt.p, n[i], eps);
+  }
 }
 
+/* Whether x (normal nx) and y (normal ny) face each other. */
+static bool facing(zr_vec3 x, zr_vec3 nx, zr_vec3 y, zr_vec3 ny) {
+  zr_vec3 d = zr_v3_sub(y, x);
+  return zr_v3_dot(d, nx) > 0.0 && zr_v3_dot(d, ny) < 0.0;
+}
+
+/*
+ * The visible fraction of a link.  Only pairs of points that face each
+ * other count: the form factor already leaves out what lies behind
+ * either side (the contour formula clips it), so a ray to such a point
+ * would count the same loss twice.  Receiver point i is paired with a
+ * permuted source point (stride k + 1, coprime to k^2, so the rays do
+ * not run in parallel bundles), or the next one that faces it.
+ */
 static double link_visibility(zr_radiosity *rad, const zr__rad_link *l) {
   const struct zr_bvh *bvh = rad->scene->bvh;
-  int k = rad->params.visibility_rays, kk = k * k, open = 0;
+  int k = rad->params.visibility_rays, kk = k * k, open = 0, cast = 0;
   double eps = 1e-7 * sqrt(rad->total_area);
-  const zr__rad_node *p = &rad->nodes[l->recv], *q = &rad->nodes[l->src];
+  zr_vec3 xp[256], xn[256], yp[256], yn[256];
+  grid_points(rad, &rad->nodes[l->recv], k, l->rside, eps, xp, xn);
+  grid_points(rad, &rad->nodes[l->src], k, l->sside, eps, yp, yn);
   for (int i = 0; i < kk; i++) {
-    /* Pair point i with a permuted point of the source, stride k + 1
-       (coprime to k^2), so the rays do not run in parallel bundles. */
-    int j = (i * (k + 1)) % kk;
-    zr_vec3 x = grid_point(rad, p, i % k, i / k, k, l->rside, eps);
-    zr_vec3 y = grid_point(rad, q, j % k, j / k, k, l->sside, eps);
-    zr_ray ray = {x, zr_v3_sub(y, x)};
+    int j = (i * (k + 1)) % kk, tries = 0;
+    while (tries < kk && !facing(xp[i], xn[i], yp[j], yn[j])) {
+      j = (j + 1) % kk;
+      tries++;
+    }
+    if (tries == kk)
+      continue;
+    zr_ray ray = {xp[i], zr_v3_sub(yp[j], xp[i])};
     zr_hit hit;
+    cast++;
     if (!zr__bvh_nearest(bvh, &ray, 1e-9, 1.0 - 1e-9, &hit))
       open++;
   }
-  rad->stats.visibility_rays += (uint64_t)kk;
-  return (double)open / kk;
+  rad->stats.visibility_rays += (uint64_t)cast;
+  return cast > 0 ? (double)open / cast : 1.0;
 }
 
 void zr__rad_finish_links(zr_radiosity *rad) {

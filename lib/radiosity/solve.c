@@ -80,7 +80,7 @@ static void push_pull(zr_radiosity *rad, int32_t n, int side,
   for (int c = 0; c < 3; c++)
     d[c] = down[c] + node->bg[side][c];
   if (node->child < 0) {
-    const double *e = rad->surfs[node->surf].emission;
+    const double *e = rad->surfs[node->surf].emission[side];
     double diff = 0.0;
     for (int c = 0; c < 3; c++) {
       up[c] = e[c] + d[c];
@@ -236,11 +236,11 @@ static zr_status solve_shooting(zr_radiosity *rad) {
     clear_gathered(rad);
     for (size_t n = 0; n < rad->n_nodes; n++) {
       zr__rad_node *node = &rad->nodes[n];
-      const double *e = rad->surfs[node->surf].emission;
+      const zr__rad_surface *s = &rad->surfs[node->surf];
       for (int side = 0; side < 2; side++)
         for (int c = 0; c < 3; c++)
           node->b[side][c] = node->un[side][c] =
-              node->child < 0 ? e[c] : 0.0;
+              node->child < 0 ? s->emission[side][c] : 0.0;
     }
     int it = 0;
     double residual = 0.0;
@@ -291,10 +291,11 @@ typedef struct energy_sums {
 } energy_sums;
 
 static void energy_leaf(const zr_radiosity *rad, const zr__rad_node *node,
-                        const double h[3], double closure, energy_sums *e) {
+                        int side, const double h[3], double closure,
+                        energy_sums *e) {
   const zr__rad_surface *s = &rad->surfs[node->surf];
   for (int c = 0; c < 3; c++) {
-    e->emitted += node->area * s->emission[c] / 3.0;
+    e->emitted += node->area * s->emission[side][c] / 3.0;
     e->absorbed += node->area * (1.0 - s->rho[c]) * h[c] / 3.0;
   }
   if (closure > 0.0) {
@@ -314,7 +315,7 @@ static void energy_walk(const zr_radiosity *rad, int32_t n, int side,
     h[c] = down[c] + node->hg[side][c];
   closure += node->closure[side];
   if (node->child < 0) {
-    energy_leaf(rad, node, h, closure, e);
+    energy_leaf(rad, node, side, h, closure, e);
     return;
   }
   for (int k = 0; k < 4; k++)

@@ -28,11 +28,18 @@
  * looks ahead), because parameter names must not be looked up as
  * declared identifiers the way the directive engine does for bison.
  *
- * `internal(n)` bodies (functions.inc) map n to a routine.  The ones
- * implemented here were matched against povray 3.7's own results (see
- * tests/test_function.c); any other n, and pattern/pigment/transform/
- * spline functions, still compile, so functions.inc parses, but a
- * function that uses one reports it by name and number when called.
+ * The compiler folds operations on constants and fuses an operator with
+ * a lone right operand (x*y is two instructions, not three); the machine
+ * dispatches by direct threading where the compiler allows it.
+ *
+ * `internal(n)` bodies (functions.inc) map n to a routine: 17 f_ellipsoid,
+ * 45 f_paraboloid, 47 f_ph, 57 f_r, 60 f_rounded_box, 61 f_sphere, 68
+ * f_superellipsoid, 69 f_th, 70 f_torus and 71 f_torus2, each fitted to
+ * povray 3.7's own values at several points (see tests/test_function.c;
+ * its source was not consulted).  Any other n, and pattern/pigment/
+ * transform/spline functions, still compile, so functions.inc parses,
+ * but a function that uses one reports it by name and number when it is
+ * called (zr__fn_unsupported() tells later users the same).
  */
 #include "config.h"
 
@@ -1013,8 +1020,12 @@ static bool internal_body(compiler *c, bool have_params) {
   c->pos++;
   if (!want(c, ')', "')'"))
     return false;
-  const internal_fn *in = internal_find((int)num->v.num);
-  if (!in || num->v.num != in->number) {
+  /* A number far outside int's range must not reach the conversion
+     (undefined behaviour; the fuzzer found internal(6.8e96)). */
+  double number = num->v.num;
+  const internal_fn *in =
+      number >= 0 && number <= 1000 ? internal_find((int)number) : NULL;
+  if (!in || number != in->number) {
     char n[32];
     snprintf(n, sizeof n, "%g", num->v.num);
     return fail_at(c, num, ZR_ESCENE,
