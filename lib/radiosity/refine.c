@@ -357,9 +357,14 @@ static int refine_choice(const zr_radiosity *rad, const zr__rad_link *l) {
   double thr = rad->params.bf_eps * rad->power_ref;
   if (rad->params.criterion == 1)
     return error_choice(rad, l, sp, sq, thr);
-  /* Hanrahan's BF criterion: B_q F_pq A_p against the threshold. */
+  /* Hanrahan's BF criterion: B_q F_pq A_p against the threshold, ten
+     times tighter for a partially visible link (a shadow boundary runs
+     through it), which is what keeps light from leaking under objects
+     standing on a floor. */
   const zr__rad_node *p = &rad->nodes[l->recv], *q = &rad->nodes[l->src];
   double f_pq = oracle(rad, l->recv, l->rside, l->src, l->sside);
+  if (l->final && l->vis > 0.0 && l->vis < 1.0)
+    thr *= 0.1;
   if (!(zr__rad_max3(q->b[l->sside]) * f_pq * p->area > thr))
     return 0;
   return larger_end(rad, l, sp, sq);
