@@ -53,7 +53,20 @@ typedef enum opt_key {
   K_OUTPUT_ON,    /* optional format */
   K_OUTPUT_OFF,   /* optional format, kept for later */
   K_FORMAT,
-  K_BITS
+  K_BITS,
+  K_RADIOSITY,
+  K_BF_EPS,
+  K_AREA_EPS,
+  K_VIS_RAYS,
+  K_UNIFORM,
+  K_MAX_ITERATIONS,
+  K_RESIDUAL,
+  K_SHOOTING,
+  K_ONE_SIDED,    /* optional on/off */
+  K_RAD_ONLY,
+  K_RAD_STATS,
+  K_RAD_SAVE,
+  K_RAD_LOAD
 } opt_key;
 
 /* Where the option being applied came from, for messages. */
@@ -84,6 +97,11 @@ void zr__cli_init(zr_cli_options *o, const zr_render_params *defaults) {
   o->params = *defaults;
   o->format = ZR_FORMAT_AUTO;
   o->write_output = 1;
+  zr_radiosity_params_init(&o->rad, NULL);
+  /* A lamp emits from its front only: with two-sided emission the
+     Cornell box's lamp, hung 0.01 below the ceiling, pours half its
+     power into the gap above it (zrcube(1) explains the choice). */
+  o->rad.one_sided_emission = 1;
 }
 
 void zr__cli_free(zr_cli_options *o) {
@@ -91,6 +109,8 @@ void zr__cli_free(zr_cli_options *o) {
     return;
   free(o->input);
   free(o->output);
+  free(o->rad_save);
+  free(o->rad_load);
   for (size_t i = 0; i < o->n_include_paths; i++)
     free(o->include_paths[i]);
   free(o->include_paths);
@@ -278,6 +298,86 @@ static int set_sampling(const arg_ctx *c, const char *value) {
 }
 
 /* Applies one option; value is NULL when none was written. */
+/* --uniform=N: N x N elements on every surface, N a power of two (the
+   library counts levels of splitting, 2^levels per side). */
+static int set_uniform(const arg_ctx *c, const char *value) {
+  long v;
+  if (!parse_int(value, 2, 1024, &v) || (v & (v - 1)) != 0)
+    return fail(c, "'%s': --uniform takes N for N x N elements per "
+                   "surface, a power of two from 2 to 1024", c->what);
+  int levels = 0;
+  while ((1L << levels) < v)
+    levels++;
+  c->o->rad.uniform = levels;
+  return 0;
+}
+
+/* The radiosity options; any of them turns radiosity on. */
+static int apply_radiosity(const arg_ctx *c, opt_key key,
+                           const char *value) {
+  zr_cli_options *o = c->o;
+  zr_radiosity_params *rp = &o->rad;
+  double x;
+  long v;
+  o->radiosity = 1;
+  switch (key) {
+  case K_BF_EPS:
+    if (!parse_real(value, &x) || x < 0.0)
+      return fail(c, "'%s': --bf-eps must be a number >= 0", c->what);
+    rp->bf_eps = x;
+    return 0;
+  case K_AREA_EPS:
+    if (!parse_real(value, &x) || !(x > 0.0 && x < 1.0))
+      return fail(c, "'%s': --area-eps must be a number between 0 and 1 "
+                     "(a fraction of the scene's surface area)", c->what);
+    rp->area_eps = x;
+    return 0;
+  case K_VIS_RAYS:
+    if (!parse_int(value, 1, 16, &v))
+      return fail(c, "'%s': --vis-rays must be a whole number from 1 to "
+                     "16", c->what);
+    rp->visibility_rays = (int)v;
+    return 0;
+  case K_UNIFORM:
+    return set_uniform(c, value);
+  case K_MAX_ITERATIONS:
+    if (!parse_int(value, 1, 100000000, &v))
+      return fail(c, "'%s': --max-iterations must be a whole number from "
+                     "1 to 100000000", c->what);
+    rp->max_iterations = (int)v;
+    return 0;
+  case K_RESIDUAL:
+    if (!parse_real(value, &x) || !(x > 0.0))
+      return fail(c, "'%s': --residual must be a number > 0", c->what);
+    rp->residual = x;
+    return 0;
+  case K_SHOOTING:
+    rp->shooting = 1;
+    return 0;
+  case K_ONE_SIDED:
+    if (!value) {
+      rp->one_sided_emission = 1;
+      return 0;
+    }
+    if (!parse_bool(value, &rp->one_sided_emission))
+      return fail(c, "'%s': --one-sided-emission takes 0 or 1 (or on, "
+                     "off)", c->what);
+    return 0;
+  case K_RAD_ONLY:
+    o->params.radiosity_only = 1;
+    return 0;
+  case K_RAD_STATS:
+    o->rad_stats = 1;
+    return 0;
+  case K_RAD_SAVE:
+    return set_string(c, &o->rad_save, value);
+  case K_RAD_LOAD:
+    return set_string(c, &o->rad_load, value);
+  default:
+    return 0; /* K_RADIOSITY */
+  }
+}
+
 static int apply(const arg_ctx *c, opt_key key, const char *value) {
   zr_cli_options *o = c->o;
   long v;
@@ -357,6 +457,20 @@ static int apply(const arg_ctx *c, opt_key key, const char *value) {
     return set_format(c, value);
   case K_BITS:
     return set_bits(c, value);
+  case K_RADIOSITY:
+  case K_BF_EPS:
+  case K_AREA_EPS:
+  case K_VIS_RAYS:
+  case K_UNIFORM:
+  case K_MAX_ITERATIONS:
+  case K_RESIDUAL:
+  case K_SHOOTING:
+  case K_ONE_SIDED:
+  case K_RAD_ONLY:
+  case K_RAD_STATS:
+  case K_RAD_SAVE:
+  case K_RAD_LOAD:
+    return apply_radiosity(c, key, value);
   }
   return fail(c, "'%s': internal error: unhandled option", c->what);
 }
@@ -463,6 +577,19 @@ static const long_option long_options[] = {
     {"help", K_HELP, L_NONE},
     {"version", K_VERSION, L_NONE},
     {"parse-only", K_PARSE_ONLY, L_NONE},
+    {"radiosity", K_RADIOSITY, L_NONE},
+    {"bf-eps", K_BF_EPS, L_REQUIRED},
+    {"area-eps", K_AREA_EPS, L_REQUIRED},
+    {"vis-rays", K_VIS_RAYS, L_REQUIRED},
+    {"uniform", K_UNIFORM, L_REQUIRED},
+    {"max-iterations", K_MAX_ITERATIONS, L_REQUIRED},
+    {"residual", K_RESIDUAL, L_REQUIRED},
+    {"shooting", K_SHOOTING, L_NONE},
+    {"one-sided-emission", K_ONE_SIDED, L_OPTIONAL},
+    {"radiosity-only", K_RAD_ONLY, L_NONE},
+    {"radiosity-stats", K_RAD_STATS, L_NONE},
+    {"radiosity-save", K_RAD_SAVE, L_REQUIRED},
+    {"radiosity-load", K_RAD_LOAD, L_REQUIRED},
 };
 
 /* Returns how many extra arguments it used (0 or 1), or -1 on failure. */
@@ -806,6 +933,28 @@ const char *zr__cli_usage(void) {
       "  --parse-only                 parse the scene, print what it holds\n"
       "                               and the parse time, render nothing\n"
       "  +D, -D, +P, -P               accepted and ignored (no display)\n"
+      "\n"
+      "Radiosity (hierarchical, on the exact surfaces; any of these turns\n"
+      "it on):\n"
+      "  --radiosity                  solve diffuse interreflection from\n"
+      "                               emitting surfaces, then render with it\n"
+      "  --bf-eps=X                   refinement threshold, a fraction of\n"
+      "                               the emitted power (default 1e-4)\n"
+      "  --area-eps=X                 smallest element, a fraction of the\n"
+      "                               total area (default 1e-4)\n"
+      "  --vis-rays=K                 K x K rays per link's visibility (4)\n"
+      "  --uniform=N                  N x N elements per surface, no\n"
+      "                               refinement (N a power of two)\n"
+      "  --max-iterations=N           sweeps or shots at most (1000)\n"
+      "  --residual=X                 stop below this change (1e-6)\n"
+      "  --shooting                   progressive shooting, not gathering\n"
+      "  --one-sided-emission[=0|1]   emit from the front side only\n"
+      "                               (default 1; 0 as POV-Ray shows it)\n"
+      "  --radiosity-only             show the solution alone\n"
+      "  --radiosity-stats            key=value statistics on stderr\n"
+      "  --radiosity-save=FILE        save the solution\n"
+      "  --radiosity-load=FILE        render with a saved solution\n"
+      "\n"
       "  -h, --help                   show this help and exit\n"
       "  --version                    show the version and exit\n"
       "\n"

@@ -32,10 +32,18 @@ typedef struct zr_cli_options {
   int help;
   int version;
   int parse_only;         /* --parse-only: report what the scene holds */
+  /* Radiosity (issue 4): any radiosity option turns it on. */
+  int radiosity;          /* solve (or load) a solution, render with it */
+  zr_radiosity_params rad; /* the solver's settings */
+  int rad_stats;          /* --radiosity-stats: key=value lines */
+  char *rad_save;         /* --radiosity-save=FILE, NULL when not given */
+  char *rad_load;         /* --radiosity-load=FILE, NULL when not given */
 } zr_cli_options;
 
 /*
- * Prepares o: zeroes it and copies the render defaults in.  Parsing may
+ * Prepares o: zeroes it and copies the render defaults in, with the
+ * radiosity defaults of zr_radiosity_params_init() except that emission
+ * is one-sided (see zrcube(1), --one-sided-emission).  Parsing may
  * then run over several sources (command line, INI files) in order.
  */
 void zr__cli_init(zr_cli_options *o, const zr_render_params *defaults);

@@ -12,7 +12,12 @@
  *   3. if rank 0's parse failed every rank stops: only rank 0 has printed
  *      the library's diagnostics, once; otherwise every other rank parses
  *      the same bytes from memory;
- *   4. all ranks render their interleaved rows with threads, rank 0
+ *   4. with --radiosity every rank solves the same radiosity solution
+ *      (the solver is deterministic: the same scene and settings give
+ *      the same bytes, so no solution travels between ranks) or loads
+ *      it from --radiosity-load's file, which every rank must then see;
+ *      rank 0 saves it and prints its statistics;
+ *   5. all ranks render their interleaved rows with threads, rank 0
  *      gathers the picture and writes it.
  * Every step that may fail on one rank is followed by an agreement on the
  * status, so all ranks leave with the same exit status and none waits in
@@ -148,7 +153,9 @@ typedef struct run {
   zr_bundle bundle;
   zr_scene *scene;
   zr_image *image;
+  zr_radiosity *rad;
   double parse_seconds;
+  double radiosity_seconds;
   double write_seconds;
   zr_par_render render;
 } run;
@@ -287,7 +294,62 @@ static int read_scene(run *r) {
   return -1;
 }
 
-/* Step 4: render and write. */
+/* --radiosity-stats: key=value words on stderr, one group a line, for
+   scripts (bench/radiosity.sh reads elements, links, iterations and
+   residual). */
+static void print_radiosity_stats(const run *r) {
+  zr_radiosity_stats st;
+  zr_radiosity_get_stats(r->rad, &st);
+  fprintf(stderr,
+          "zrcube: radiosity: surfaces=%zu nodes=%zu elements=%zu "
+          "links=%zu vertices=%zu\n"
+          "zrcube: radiosity: rounds=%d iterations=%d residual=%.3g "
+          "visibility_rays=%llu seconds=%.3f\n"
+          "zrcube: radiosity: emitted=%.6g absorbed=%.6g "
+          "closure_mean=%.6f closure_min=%.6f closure_max=%.6f\n",
+          st.surfaces, st.nodes, st.elements, st.links, st.vertices,
+          st.refine_rounds, st.iterations, st.residual,
+          (unsigned long long)st.visibility_rays, r->radiosity_seconds,
+          st.emitted_power, st.absorbed_power, st.closure_mean,
+          st.closure_min, st.closure_max);
+}
+
+/* Step 4: the radiosity solution, on every rank. */
+static int solve_radiosity(run *r) {
+  if (!r->opts.radiosity)
+    return -1;
+  double start = zr__par_now();
+  zr_status s;
+  if (r->opts.rad_load)
+    s = zr_radiosity_load(r->ctx, r->scene, r->opts.rad_load, &r->rad);
+  else
+    s = zr_radiosity_solve(r->ctx, r->scene, &r->opts.rad, &r->rad);
+  r->radiosity_seconds = zr__par_now() - start;
+  if (s != ZR_OK && r->rank == 0 && !*zr_context_last_error(r->ctx))
+    fprintf(stderr, "zrcube: radiosity failed: %s\n", zr_status_str(s));
+  if (zr__par_agree(r->par, s) != ZR_OK) {
+    if (s == ZR_OK && r->rank == 0)
+      fprintf(stderr, "zrcube: the radiosity solution failed on another "
+                      "rank\n");
+    return EXIT_SCENE;
+  }
+  r->opts.params.radiosity = r->rad;
+  s = ZR_OK;
+  if (r->rank == 0) {
+    if (r->opts.rad_stats)
+      print_radiosity_stats(r);
+    if (r->opts.rad_save) {
+      unsigned before = r->diag.errors_printed;
+      s = zr_radiosity_save(r->ctx, r->rad, r->opts.rad_save);
+      if (s != ZR_OK && r->diag.errors_printed == before)
+        fprintf(stderr, "zrcube: cannot save the radiosity solution to "
+                        "'%s': %s\n", r->opts.rad_save, zr_status_str(s));
+    }
+  }
+  return zr__par_agree(r->par, s) == ZR_OK ? -1 : EXIT_SCENE;
+}
+
+/* Step 5: render and write. */
 static int render_and_write(run *r) {
   const zr_render_params *params = &r->opts.params;
   zr_status s = ZR_OK;
@@ -395,6 +457,8 @@ int main(int argc, char **argv) {
     status = EXIT_SUCCESS;
   }
   if (status < 0)
+    status = solve_radiosity(&r);
+  if (status < 0)
     status = render_and_write(&r);
   if (status < 0) {
     if (r.rank == 0 && r.opts.verbose)
@@ -402,6 +466,7 @@ int main(int argc, char **argv) {
     status = EXIT_SUCCESS;
   }
   zr_image_free(r.image);
+  zr_radiosity_free(r.rad);
   zr_scene_free(r.scene);
   zr__bundle_free(&r.bundle);
   zr_context_free(r.ctx);

@@ -25,9 +25,11 @@ plane { y, 0
 // Brick wall with its default colours, scaled down.
 box { <-6, 0, 3>, <6, 3.5, 3.5>
   pigment { brick scale 0.12 } finish { F } }
-// A gradient block, the pattern rotated with the object.
+// A gradient block, the pattern rotated with the object.  The scale
+// keeps the top face (y = 2, 2.86 periods) off the map's sharp step at
+// 0.5, where rounding alone would pick the colour.
 box { <-1, 0, -1>, <1, 2, 1>
-  pigment { gradient y color_map { Rainbow } scale 0.8 }
+  pigment { gradient y color_map { Rainbow } scale 0.7 }
   finish { F } rotate y * 30 translate <-3.6, 0, 0.5> }
 // Marble sphere (triangle wave) and a sine-wave onion sphere.
 sphere { <0, 1.1, 0.3>, 1.1

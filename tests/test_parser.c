@@ -694,11 +694,11 @@ static void test_parser_custom_reader(void **state) {
 static void test_parser_syntax_error(void **state) {
   fixture *f = *state;
   bad(f, "sphere { <0, 0, 0>, 1, 2 }\n", ZR_ESYNTAX,
-      "unexpected ',', expected 'finish', 'interior', 'inverse', 'matrix', "
-      "'no_shadow', 'open', 'pigment', 'rotate', 'scale', 'texture', "
+      "unexpected ',', expected 'normal', 'finish', 'interior', 'inverse', "
+      "'matrix', 'no_shadow', 'open', 'pigment', 'rotate', 'scale', 'texture', "
       "'translate', '+', '-', '*', '/', '}' or '.'",
-      "t.pov:1:22: error: unexpected ',', expected 'finish', 'interior', "
-      "'inverse', 'matrix', 'no_shadow', 'open', 'pigment', 'rotate', "
+      "t.pov:1:22: error: unexpected ',', expected 'normal', 'finish', "
+      "'interior', 'inverse', 'matrix', 'no_shadow', 'open', 'pigment', 'rotate', "
       "'scale', 'texture', 'translate', '+', '-', '*', '/', '}' or '.'\n"
       "    1 | sphere { <0, 0, 0>, 1, 2 }\n"
       "      |                      ^\n");
@@ -712,7 +712,7 @@ static void test_parser_syntax_error(void **state) {
       "'triangle' or 'union'",
       NULL);
   bad(f, "box { 0, 1 shadowless }", ZR_ESYNTAX,
-      "unexpected 'shadowless', expected 'finish', 'interior', "
+      "unexpected 'shadowless', expected 'normal', 'finish', 'interior', "
       "'inverse', 'matrix', 'no_shadow', 'open', 'pigment', 'rotate', "
       "'scale', 'texture', 'translate', '+', '-', '*', '/', '}' or '.'",
       NULL);

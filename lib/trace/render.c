@@ -32,6 +32,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "radiosity/radiosity.h"
 #include "trace/render.h"
 #include "trace/shade.h"
 
@@ -195,6 +196,11 @@ static zr_status check_params(const zr_scene *scene,
     return ZR_EINVAL;
   if (!scene->bvh && scene->n_primitives > 0)
     return ZR_ESCENE; /* zr__scene_finish() was never called */
+  /* A solution holds object addresses of the scene it was solved for. */
+  if (p->radiosity && p->radiosity->scene != scene)
+    return ZR_EINVAL;
+  if (p->radiosity_only && !p->radiosity)
+    return ZR_EINVAL;
   return ZR_OK;
 }
 
@@ -216,6 +222,8 @@ ZR_API zr_status zr_render_pixels(const zr_scene *scene,
   pixel_job job;
   job.tracer.scene = scene;
   job.tracer.stats = &local;
+  job.tracer.radiosity = params->radiosity;
+  job.tracer.radiosity_only = params->radiosity_only;
   zr__camera_media(scene, &job.camera_media);
   /* POV-Ray compares colours after undoing the scene's working gamma and
      applying its antialiasing gamma, 2.5 by default (reference,

@@ -34,12 +34,26 @@
  * secondary ray is spawned only if its weight, the product of the
  * reflection and transmission amounts along its path, exceeds
  * adc_bailout.
+ *
+ * With a radiosity solution (lib/radiosity, issue 4) the surface's own
+ * light k * C * (ambient * ambient_light + emission) is replaced by
+ * k * L, the solution's outgoing diffuse radiance at the hit, which
+ * already holds emission * C and every diffuse bounce of the emitters'
+ * light (Hanrahan, Salzman and Aupperle 1991): ambient is POV-Ray's
+ * stand-in for exactly that light, so adding it too would count it
+ * twice.  Direct light from light sources, highlights, reflection and
+ * refraction stay as above, and reflected or refracted rays see the
+ * radiosity-lit scene because they are shaded by the same rule.  An
+ * object the solution has no surface for (an infinite plane) keeps the
+ * classic rule.  In radiosity-only mode a ray returns L at its first
+ * hit and nothing else, to show the solution alone.
  */
 #include "trace/shade.h"
 
 #include <math.h>
 #include <stddef.h>
 
+#include "radiosity/radiosity.h"
 #include "scene/texture.h"
 #include "trace/bvh.h"
 
@@ -274,9 +288,18 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
   zr_rgb c = zr_colour_rgb(col);
   double opacity = fmax(0.0, 1.0 - col.f - col.t);
 
-  zr_rgb own = zr_rgb_add(zr_rgb_mul(f->ambient, gs->ambient_light),
-                          f->emission);
-  zr_rgb sum = zr_rgb_scale(zr_rgb_mul(own, c), opacity);
+  zr_rgb sum;
+  zr_rgb diffuse_in;
+  if (tr->radiosity &&
+      zr__radiosity_radiance(tr->radiosity, s->object, s->p, s->d,
+                             &diffuse_in)) {
+    /* The solution's radiance already includes the pigment. */
+    sum = zr_rgb_scale(diffuse_in, opacity);
+  } else {
+    zr_rgb own = zr_rgb_add(zr_rgb_mul(f->ambient, gs->ambient_light),
+                            f->emission);
+    sum = zr_rgb_scale(zr_rgb_mul(own, c), opacity);
+  }
   sum = zr_rgb_add(sum, direct_light(tr, s, opacity));
 
   /* The indices of refraction on this side (n1) and beyond (n2). */
@@ -355,5 +378,12 @@ zr_rgb zr__trace_ray(const zr_tracer *tracer, const zr_ray *ray, int level,
   s.finish = hit.object->texture->finish;
   s.colour = zr__pigment_at(hit.object->texture->pigment, s.p);
   s.offset = zr__surface_offset(s.p);
+  if (tracer->radiosity_only) {
+    zr_rgb l;
+    if (!tracer->radiosity ||
+        !zr__radiosity_radiance(tracer->radiosity, s.object, s.p, s.d, &l))
+      l = zr_rgb3(0, 0, 0); /* no surface in the solution: black */
+    return l;
+  }
   return shade(tracer, &s, level, weight, media);
 }

@@ -33,6 +33,10 @@ typedef struct zr_media {
 typedef struct zr_tracer {
   const zr_scene *scene;
   zr_render_stats *stats; /* never NULL */
+  /* A radiosity solution of scene (NULL: none): it replaces ambient and
+     emission with the diffuse light it carries (lib/radiosity). */
+  const zr_radiosity *radiosity;
+  int radiosity_only; /* 1: a ray sees the solution at its first hit */
 } zr_tracer;
 
 /*
