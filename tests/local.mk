@@ -24,6 +24,7 @@ EXTRA_DIST += tests/golden.sh tests/ref/README.md tests/ref/make-refs.sh \
 	tests/ref/expressions.png \
 	tests/ref/gamma.png \
 	tests/ref/metallic.png \
+	tests/ref/patterns.png \
 	tests/ref/phong.png \
 	tests/ref/primitives.png \
 	tests/ref/reflection.png \
