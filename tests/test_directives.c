@@ -27,110 +27,19 @@
 #include "config.h"
 #include "scene/scene.h"
 #include "zrcube.h"
-
-/* A file the reader serves. */
-typedef struct vfile {
-  const char *path;
-  const char *text;
-} vfile;
-
-typedef struct fixture {
-  zr_context *ctx;
-  zr_scene *scene;
-  const vfile *files;
-  char debug[8192];
-  int warnings;
-  char warning[2048];
-  int errors;
-  zr_status status;
-  char message[512];
-  char text[4096];
-} fixture;
-
-static void on_diag(const zr_diag *d, void *user) {
-  fixture *f = user;
-  if (d->level == ZR_DIAG_DEBUG) {
-    size_t n = strlen(f->debug);
-    snprintf(f->debug + n, sizeof f->debug - n, "%s", d->message);
-  } else if (d->level == ZR_DIAG_WARNING) {
-    f->warnings++;
-    snprintf(f->warning, sizeof f->warning, "%s", d->text);
-  } else if (d->level == ZR_DIAG_ERROR) {
-    f->errors++;
-    f->status = d->status;
-    snprintf(f->message, sizeof f->message, "%s", d->message);
-    snprintf(f->text, sizeof f->text, "%s", d->text);
-  }
-}
-
-static zr_status read_vfile(const char *path, char **bytes, size_t *size,
-                            void *user) {
-  fixture *f = user;
-  for (const vfile *v = f->files; v && v->path; v++) {
-    if (strcmp(v->path, path) == 0) {
-      *size = strlen(v->text);
-      *bytes = malloc(*size + 1);
-      if (!*bytes)
-        return ZR_ENOMEM;
-      memcpy(*bytes, v->text, *size + 1);
-      return ZR_OK;
-    }
-  }
-  return ZR_ENOTFOUND;
-}
+#include "parse_fixture.h"
 
 static void assert_near(double a, double b, double tolerance) {
   if (!(fabs(a - b) <= tolerance))
     fail_msg("%.17g != %.17g (tolerance %g)", a, b, tolerance);
 }
 
-static int setup(void **state) {
-  fixture *f = calloc(1, sizeof *f);
-  assert_non_null(f);
-  assert_int_equal(zr_context_new(&f->ctx), ZR_OK);
-  zr_context_set_diag(f->ctx, on_diag, f);
-  zr_context_set_reader(f->ctx, read_vfile, f);
-  *state = f;
-  return 0;
-}
-
-static int teardown(void **state) {
-  fixture *f = *state;
-  zr_scene_free(f->scene);
-  zr_context_free(f->ctx);
-  free(f);
-  return 0;
-}
-
-static zr_status parse(fixture *f, const char *text) {
-  zr_scene_free(f->scene);
-  f->scene = NULL;
-  f->debug[0] = '\0';
-  f->warnings = f->errors = 0;
-  f->warning[0] = f->message[0] = f->text[0] = '\0';
-  f->status = ZR_OK;
-  return zr_scene_parse_string(f->ctx, "t.pov", text, strlen(text),
-                               &f->scene);
-}
-
 /* Parses text, which must succeed, and checks what it printed. */
 static void prints(fixture *f, const char *text, const char *expected) {
   zr_status s = parse(f, text);
   if (s != ZR_OK)
-    fail_msg("unexpected failure:\n%s", f->text);
-  assert_string_equal(f->debug, expected);
-}
-
-/* Parses text that must fail with status and message (and full text). */
-static void bad(fixture *f, const char *text, zr_status status,
-                const char *message, const char *full) {
-  zr_status s = parse(f, text);
-  assert_int_equal(s, status);
-  assert_null(f->scene);
-  assert_int_equal(f->errors, 1);
-  assert_string_equal(f->message, message);
-  if (full)
-    assert_string_equal(f->text, full);
+    fail_msg("unexpected failure:\n%s", f->diag.text);
+  assert_string_equal(f->diag.debug, expected);
 }
 
 /* ---- declarations and scopes ---- */
@@ -169,8 +78,8 @@ static void test_directives_declare_and_local(void **state) {
          "object { S }\n"
          "#debug str(T, 0, 0)\n",
          "3");
-  assert_int_equal(f->warnings, 1);
-  assert_non_null(strstr(f->warning, "'#declare' of a float, vector or "
+  assert_int_equal(f->diag.warnings, 1);
+  assert_non_null(strstr(f->diag.warning, "'#declare' of a float, vector or "
                                      "colour should end with ';'"));
   assert_int_equal(f->scene->n_objects, 1);
 }
@@ -549,8 +458,8 @@ static void test_directives_messages(void **state) {
   fixture *f = *state;
   prints(f, "#debug \"hello\\n\" #warning concat(\"w\", \"1\")\n",
          "hello\n");
-  assert_int_equal(f->warnings, 1);
-  assert_string_equal(f->warning,
+  assert_int_equal(f->diag.warnings, 1);
+  assert_string_equal(f->diag.warning,
                       "t.pov:1:18: warning: w1\n"
                       "    1 | #debug \"hello\\n\" #warning concat(\"w\", "
                       "\"1\")\n"
@@ -561,8 +470,8 @@ static void test_directives_messages(void **state) {
       "    2 |   #error \"stop here\\n\"\n"
       "      |   ^~~~~~\n");
   prints(f, "#version 3.7\n#debug \"v\"\n", "v");
-  assert_int_equal(f->warnings, 1);
-  assert_non_null(strstr(f->warning, "'#version' should end with ';'"));
+  assert_int_equal(f->diag.warnings, 1);
+  assert_non_null(strstr(f->diag.warning, "'#version' should end with ';'"));
 }
 
 static void test_directives_file_io(void **state) {
@@ -718,8 +627,8 @@ static void test_directives_deprecated(void **state) {
          "#declare A = Old + Old + Older + Older;\n"
          "#debug str(A, 0, 0)\n",
          "6");
-  assert_int_equal(f->warnings, 3);
-  assert_non_null(strstr(f->warning, "warning: use New\n"));
+  assert_int_equal(f->diag.warnings, 3);
+  assert_non_null(strstr(f->diag.warning, "warning: use New\n"));
 }
 
 int main(void) {

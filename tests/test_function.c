@@ -27,6 +27,7 @@
 #include "sdl/function.h"
 #include "sdl/sdl.h"
 #include "zrcube.h"
+#include "parse_fixture.h"
 
 /* The functions below combine a few decimals with a few operations, so
    they agree with the same C expression to the last bits; 1e-12 leaves
@@ -35,54 +36,6 @@
 /* povray's #debug str(v, 0, 9) shows 9 decimals: its values are known
    to 5e-10, and a wrong formula misses by far more. */
 #define POV_EPS 1e-9
-
-typedef struct captured {
-  int errors;
-  zr_status status;
-  char message[512];
-  char text[4096];
-} captured;
-
-static void on_diag(const zr_diag *d, void *user) {
-  captured *c = user;
-  if (d->level != ZR_DIAG_ERROR)
-    return;
-  c->errors++;
-  c->status = d->status;
-  snprintf(c->message, sizeof c->message, "%s", d->message);
-  snprintf(c->text, sizeof c->text, "%s", d->text);
-}
-
-typedef struct fixture {
-  zr_context *ctx;
-  captured diag;
-  zr_scene *scene;
-} fixture;
-
-static int setup(void **state) {
-  fixture *f = calloc(1, sizeof *f);
-  assert_non_null(f);
-  assert_int_equal(zr_context_new(&f->ctx), ZR_OK);
-  zr_context_set_diag(f->ctx, on_diag, &f->diag);
-  *state = f;
-  return 0;
-}
-
-static int teardown(void **state) {
-  fixture *f = *state;
-  zr_scene_free(f->scene);
-  zr_context_free(f->ctx);
-  free(f);
-  return 0;
-}
-
-static zr_status parse(fixture *f, const char *text) {
-  zr_scene_free(f->scene);
-  f->scene = NULL;
-  memset(&f->diag, 0, sizeof f->diag);
-  return zr_scene_parse_string(f->ctx, "t.pov", text, strlen(text),
-                               &f->scene);
-}
 
 /* The value of expr after the declarations decls. */
 static double value(fixture *f, const char *decls, const char *expr) {
@@ -97,15 +50,6 @@ static double value(fixture *f, const char *decls, const char *expr) {
   assert_int_equal(s, ZR_OK);
   assert_int_equal(f->scene->n_objects, 1);
   return f->scene->objects[0]->u.sphere.centre.x;
-}
-
-/* Parses text that must fail with status and exactly message. */
-static void bad(fixture *f, const char *text, zr_status status,
-                const char *message) {
-  zr_status s = parse(f, text);
-  assert_int_equal(s, status);
-  assert_int_equal(f->diag.errors, 1);
-  assert_string_equal(f->diag.message, message);
 }
 
 static void test_function_arithmetic(void **state) {
@@ -368,59 +312,59 @@ static void test_function_unsupported_internal(void **state) {
   snprintf(text, sizeof text, "%s#declare V = N(1, 2, 3);\n", d);
   bad(f, text, ZR_EUNSUPPORTED,
       "function 'N' uses internal function 76 (f_noise3d), which is not "
-      "supported yet");
+      "supported yet", NULL);
   snprintf(text, sizeof text, "%s#declare V = P(1, 2, 3);\n", d);
   bad(f, text, ZR_EUNSUPPORTED,
-      "function 'P' uses pattern functions, which is not supported yet");
+      "function 'P' uses pattern functions, which is not supported yet", NULL);
   bad(f, "#declare F = function { internal(77) }\n", ZR_ESCENE,
-      "there is no internal function 77");
+      "there is no internal function 77", NULL);
   bad(f, "#declare F = function { internal(6.5) }\n", ZR_ESCENE,
-      "there is no internal function 6.5");
+      "there is no internal function 6.5", NULL);
   bad(f, "#declare F = function { internal(6e96) }\n", ZR_ESCENE,
-      "there is no internal function 6e+96");
+      "there is no internal function 6e+96", NULL);
   bad(f, "#declare F = function(a) { internal(61) }\n", ZR_ESYNTAX,
-      "internal function 61 (f_sphere) takes 4 parameters");
+      "internal function 61 (f_sphere) takes 4 parameters", NULL);
 }
 
 static void test_function_errors(void **state) {
   fixture *f = *state;
   bad(f, "#declare F = function(a) { a + b }\n", ZR_EUNDEFINED,
-      "undefined identifier 'b' in function");
+      "undefined identifier 'b' in function", NULL);
   bad(f, "#declare F = function(a) { a + y }\n", ZR_EUNDEFINED,
-      "'y' is not a parameter of this function");
+      "'y' is not a parameter of this function", NULL);
   bad(f,
       "#declare F = function(a, b) { a + b }\n"
       "#declare G = function { F(x) }\n",
-      ZR_ESYNTAX, "function 'F' takes 2 arguments, not 1");
+      ZR_ESYNTAX, "function 'F' takes 2 arguments, not 1", NULL);
   bad(f,
       "#declare F = function(a, b) { a + b }\n"
       "#declare V = F(1, 2, 3);\n",
-      ZR_ESYNTAX, "function 'F' takes 2 arguments, not 3");
+      ZR_ESYNTAX, "function 'F' takes 2 arguments, not 3", NULL);
   bad(f, "#declare F = function { x < 0 ? 1 : 2 }\n", ZR_EUNSUPPORTED,
       "'?:' cannot be used in a function (POV-Ray 3.7 does not allow it "
-      "either: use select())");
+      "either: use select())", NULL);
   bad(f, "#declare F = function(a, a) { a }\n", ZR_ESYNTAX,
-      "parameter 'a' is listed twice");
+      "parameter 'a' is listed twice", NULL);
   bad(f, "#declare F = function { sin(x, y) }\n", ZR_ESYNTAX,
-      "'sin' takes 1 argument");
+      "'sin' takes 1 argument", NULL);
   bad(f, "#declare F = function { select(x, y) }\n", ZR_ESYNTAX,
-      "'select' takes 3 or 4 arguments");
+      "'select' takes 3 or 4 arguments", NULL);
   bad(f, "#declare F = function { x + }\n", ZR_ESYNTAX,
-      "expected a float expression in function, got '}'");
+      "expected a float expression in function, got '}'", NULL);
   bad(f, "#declare F = function { x y }\n", ZR_ESYNTAX,
-      "expected an operator or '}' in function, got 'y'");
+      "expected an operator or '}' in function, got 'y'", NULL);
   bad(f, "#declare F = function { box }\n", ZR_ESYNTAX,
-      "'box' cannot be used in a function");
+      "'box' cannot be used in a function", NULL);
   bad(f, "#declare P = function { pattern { #if (1) checker #end } }\n",
-      ZR_ESYNTAX, "expected '}' in function, got '#if'");
+      ZR_ESYNTAX, "expected '}' in function, got '#if'", NULL);
   bad(f, "#declare F = function { x", ZR_ESYNTAX,
-      "expected an operator or '}' in function, got end of file");
+      "expected an operator or '}' in function, got end of file", NULL);
   bad(f,
       "#declare P = pigment { rgb 1 }\n"
       "#declare F = function { P + x }\n",
       ZR_ESYNTAX,
       "'P' is not a float or a function, so it cannot be used in a "
-      "function");
+      "function", NULL);
   /* The message points at the name, with the usual caret. */
   parse(f, "#declare F = function(a) {\n  a + nope }\n");
   assert_string_equal(f->diag.text,
@@ -454,7 +398,7 @@ static void test_function_depth_limit(void **state) {
   free(text);
   /* ...one more is refused, where it is declared. */
   text = chain(ZR_FN_MAX_DEPTH + 1);
-  bad(f, text, ZR_ELIMIT, "functions nested more than 1024 calls deep");
+  bad(f, text, ZR_ELIMIT, "functions nested more than 1024 calls deep", NULL);
   free(text);
 }
 
@@ -477,7 +421,7 @@ static void test_function_stack_limit(void **state) {
     len += (size_t)snprintf(text + len, cap - len, ")");
   snprintf(text + len, cap - len, " }\n");
   bad(f, text, ZR_ELIMIT, "the function needs more than 4096 values to "
-                          "evaluate");
+                          "evaluate", NULL);
   free(text);
   /* Parentheses nested past ZR_FN_MAX_NESTING stop the compiler before
      its recursion could exhaust the C stack. */
@@ -488,7 +432,7 @@ static void test_function_stack_limit(void **state) {
   for (int i = 0; i < 3000; i++)
     text[len++] = '(';
   snprintf(text + len, cap - len, "x }\n");
-  bad(f, text, ZR_ELIMIT, "the function nests more than 256 levels deep");
+  bad(f, text, ZR_ELIMIT, "the function nests more than 256 levels deep", NULL);
   free(text);
 }
 

@@ -21,89 +21,12 @@
 #include "core/transform.h"
 #include "scene/scene.h"
 #include "zrcube.h"
+#include "parse_fixture.h"
 
 /* Values written in the scenes are small decimals combined by a few
    operations, and transforms multiply a few 4x4 matrices: 1e-9 leaves
    room for their rounding and catches any real mistake. */
 #define EPS 1e-9
-
-/* Everything the library reported during one parse. */
-typedef struct captured {
-  int warnings;
-  char warning[1024];
-  int errors;
-  zr_status status;
-  char message[512];
-  char text[4096];
-} captured;
-
-static void on_diag(const zr_diag *d, void *user) {
-  captured *c = user;
-  if (d->level == ZR_DIAG_WARNING) {
-    c->warnings++;
-    snprintf(c->warning, sizeof c->warning, "%s", d->text);
-  }
-  if (d->level != ZR_DIAG_ERROR)
-    return;
-  c->errors++;
-  c->status = d->status;
-  snprintf(c->message, sizeof c->message, "%s", d->message);
-  snprintf(c->text, sizeof c->text, "%s", d->text);
-}
-
-typedef struct fixture {
-  zr_context *ctx;
-  captured diag;
-  zr_scene *scene;
-} fixture;
-
-static int setup(void **state) {
-  fixture *f = calloc(1, sizeof *f);
-  assert_non_null(f);
-  assert_int_equal(zr_context_new(&f->ctx), ZR_OK);
-  zr_context_set_diag(f->ctx, on_diag, &f->diag);
-  *state = f;
-  return 0;
-}
-
-static int teardown(void **state) {
-  fixture *f = *state;
-  zr_scene_free(f->scene);
-  zr_context_free(f->ctx);
-  free(f);
-  return 0;
-}
-
-static zr_status parse(fixture *f, const char *text) {
-  zr_scene_free(f->scene);
-  f->scene = NULL;
-  memset(&f->diag, 0, sizeof f->diag);
-  return zr_scene_parse_string(f->ctx, "t.pov", text, strlen(text),
-                               &f->scene);
-}
-
-/* Parses text that must be good and returns the scene. */
-static zr_scene *good(fixture *f, const char *text) {
-  zr_status s = parse(f, text);
-  if (s != ZR_OK)
-    fprintf(stderr, "unexpected failure:\n%s", f->diag.text);
-  assert_int_equal(s, ZR_OK);
-  assert_non_null(f->scene);
-  return f->scene;
-}
-
-/* Parses text that must fail with status, message and full text. */
-static void bad(fixture *f, const char *text, zr_status status,
-                const char *message, const char *full) {
-  zr_status s = parse(f, text);
-  assert_int_equal(s, status);
-  assert_null(f->scene);
-  assert_int_equal(f->diag.errors, 1);
-  assert_int_equal(f->diag.status, status);
-  assert_string_equal(f->diag.message, message);
-  if (full)
-    assert_string_equal(f->diag.text, full);
-}
 
 static void assert_vec(zr_vec3 v, double x, double y, double z) {
   if (fabs(v.x - x) > EPS || fabs(v.y - y) > EPS || fabs(v.z - z) > EPS)

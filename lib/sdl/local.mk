@@ -22,7 +22,8 @@ tests_test_lexer_SOURCES = tests/test_lexer.c
 tests_test_lexer_CPPFLAGS = $(TEST_CPPFLAGS)
 tests_test_lexer_LDADD = $(TEST_LDADD)
 tests_test_lexer_LDFLAGS = -static
-tests_test_parser_SOURCES = tests/test_parser.c
+tests_test_parser_SOURCES = tests/test_parser.c \
+	tests/parse_fixture.c tests/parse_fixture.h
 tests_test_parser_CPPFLAGS = $(TEST_CPPFLAGS)
 tests_test_parser_LDADD = $(TEST_LDADD)
 tests_test_parser_LDFLAGS = -static
@@ -36,7 +37,8 @@ $(lib_libzrcube_la_OBJECTS) $(tests_test_lexer_OBJECTS) \
 # The directive language and values (issue 3).
 check_PROGRAMS += tests/test_directives
 TESTS += tests/test_directives
-tests_test_directives_SOURCES = tests/test_directives.c
+tests_test_directives_SOURCES = tests/test_directives.c \
+	tests/parse_fixture.c tests/parse_fixture.h
 tests_test_directives_CPPFLAGS = $(TEST_CPPFLAGS)
 tests_test_directives_LDADD = $(TEST_LDADD)
 tests_test_directives_LDFLAGS = -static
@@ -46,7 +48,8 @@ $(tests_test_directives_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
 lib_libzrcube_la_SOURCES += lib/sdl/function.h lib/sdl/function.c
 check_PROGRAMS += tests/test_function
 TESTS += tests/test_function
-tests_test_function_SOURCES = tests/test_function.c
+tests_test_function_SOURCES = tests/test_function.c \
+	tests/parse_fixture.c tests/parse_fixture.h
 tests_test_function_CPPFLAGS = $(TEST_CPPFLAGS)
 tests_test_function_LDADD = $(TEST_LDADD)
 tests_test_function_LDFLAGS = -static
