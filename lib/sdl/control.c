@@ -195,16 +195,29 @@ bool zr__sdl_read_defined(zr_sdl_parser *p, const zr_sdl_loc *at,
 
 /* ---- #if, #ifdef, #ifndef, #elseif, #else ---- */
 
+/* Moves parsing to just after the linked directive at m of the block
+   opened at open and returns that directive's token (its location in
+   *tl); NULL, reported, when the chain ends without its #end. */
+static const zr_sdl_token *enter_link(zr_sdl_parser *p, size_t open,
+                                      size_t m, zr_sdl_loc *tl) {
+  if (m == NONE) {
+    unmatched(p, open);
+    return NULL;
+  }
+  const zr_sdl_token *t = &file_of(p)->tokens[m];
+  *tl = zr__sdl_token_loc(zr__sdl_top(p)->file, t);
+  zr__sdl_top(p)->pos = m + 1;
+  return t;
+}
+
 /* Goes on from the branch directive at m of an #if block whose
    condition (and any before m) was false. */
 static bool next_branch(zr_sdl_parser *p, size_t open, size_t m) {
   for (;;) {
-    if (m == NONE)
-      return unmatched(p, open);
-    const zr_sdl_file *f = file_of(p);
-    const zr_sdl_token *t = &f->tokens[m];
-    zr_sdl_loc tl = zr__sdl_token_loc(zr__sdl_top(p)->file, t);
-    zr__sdl_top(p)->pos = m + 1;
+    zr_sdl_loc tl;
+    const zr_sdl_token *t = enter_link(p, open, m, &tl);
+    if (!t)
+      return false;
     switch (t->kind) {
     case T_ELSEIF: {
       bool c;
@@ -274,12 +287,10 @@ static bool next_clause(zr_sdl_parser *p, size_t m) {
   size_t open = sw->open;
   double value = sw->value;
   for (;;) {
-    if (m == NONE)
-      return unmatched(p, open);
-    const zr_sdl_file *f = file_of(p);
-    const zr_sdl_token *t = &f->tokens[m];
-    zr_sdl_loc tl = zr__sdl_token_loc(zr__sdl_top(p)->file, t);
-    zr__sdl_top(p)->pos = m + 1;
+    zr_sdl_loc tl;
+    const zr_sdl_token *t = enter_link(p, open, m, &tl);
+    if (!t)
+      return false;
     switch (t->kind) {
     case T_CASE: {
       double v;
