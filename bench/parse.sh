@@ -8,8 +8,10 @@
 #   while   a #while of WHILE_N iterations (default 1,000,000), each making
 #           a sphere;
 #   macro   MACRO_N (default 100,000) calls of a macro that makes a sphere;
-#   mesh2   one mesh2 of a MESH_SIDE x MESH_SIDE grid (default 500: 250,000
-#           vertices, 498,002 triangles).
+#   mesh2   one mesh2 of a MESH_SIDE x MESH_SIDE grid (default 1000:
+#           1,000,000 vertices, 1,996,002 triangles, an 80 MB file that
+#           takes POV-Ray a few seconds).
+# CASES picks some of them (default "while macro mesh2").
 # Every object sits behind the camera, so POV-Ray's 1x1 render traces
 # nothing that hits.
 #
@@ -35,7 +37,8 @@ zrcube=$build/bin/zrcube
 povray=${POVRAY:-povray}
 while_n=${WHILE_N:-1000000}
 macro_n=${MACRO_N:-100000}
-mesh_side=${MESH_SIDE:-500}
+mesh_side=${MESH_SIDE:-1000}
+cases=${CASES:-while macro mesh2}
 [ -x "$zrcube" ] || { echo "parse.sh: $zrcube is not built" >&2; exit 1; }
 command -v "$povray" >/dev/null ||
   { echo "parse.sh: $povray not found" >&2; exit 1; }
@@ -147,7 +150,7 @@ run_povray() {
 
 printf '%-7s %10s %10s %12s %7s %8s %8s %8s\n' scene "zrcube s" \
   "povray s" "bounding s" ratio "ratio+b" "zr MiB" "pov MiB"
-for name in while macro mesh2; do
+for name in $cases; do
   scene=$work/$name.pov
   run_zrcube "$scene"
   run_povray "$scene"

@@ -5,8 +5,8 @@
 #
 #   bench/radiosity.sh BUILD_DIR [--quick]
 #
-# The scene is scenes/cornell.pov (bench/radiosity/cornell.pov until it
-# moves there), a copy of ../shared/reference/cbox_emissive.pov: the
+# The scene is scenes/cornell.pov (bench/radiosity/cornell.pov when it
+# is missing), a copy of ../shared/reference/cbox_emissive.pov: the
 # measured Cornell box lit only by an emitting ceiling quad, every surface
 # Lambertian.  The ground truth is cbox_emissive-256.pfm beside it, path
 # traced with 4096 samples a pixel.  Every render is 256x256 with
@@ -27,7 +27,8 @@
 #            (--radiosity --bf-eps=X; X is relative to the scene's
 #            emitted power, zr_radiosity_params.bf_eps, default 1e-4).
 #   zr-unif  zRcube with N x N elements on every input surface and no
-#            refinement (--radiosity --uniform=N).
+#            refinement (--radiosity --uniform=N; N a power of two
+#            from 2, as --uniform refuses 1).
 # The zRcube ladders run when `zrcube --help` mentions --radiosity; they
 # read the key=value lines --radiosity-stats prints on stderr (elements,
 # links, iterations, residual).
@@ -83,11 +84,11 @@ fi
 if [ $quick -eq 1 ]; then
   pov_ladder=${RADBENCH_POV_LADDER:-"50:2 100:3"}
   bf_ladder=${RADBENCH_BF_EPS:-"0.01 0.001"}
-  uniform_ladder=${RADBENCH_UNIFORM:-"1 2"}
+  uniform_ladder=${RADBENCH_UNIFORM:-"2 4"}
 else
   pov_ladder=${RADBENCH_POV_LADDER:-"50:2 100:3 200:4 400:5 800:6 1600:8"}
   bf_ladder=${RADBENCH_BF_EPS:-"0.01 0.003 0.001 0.0003 0.0001 0.00003"}
-  uniform_ladder=${RADBENCH_UNIFORM:-"1 2 4 8 16"}
+  uniform_ladder=${RADBENCH_UNIFORM:-"2 4 8 16 32"}
 fi
 
 [ -x "$zrcube" ] || { echo "radiosity.sh: $zrcube is not built" >&2; exit 1; }

@@ -49,6 +49,7 @@ typedef enum opt_key {
   K_HELP,
   K_VERSION,
   K_PARSE_ONLY,
+  K_LOOP_LIMIT,
   K_IGNORED,      /* display options: zrcube opens no window */
   K_OUTPUT_ON,    /* optional format */
   K_OUTPUT_OFF,   /* optional format, kept for later */
@@ -97,6 +98,7 @@ void zr__cli_init(zr_cli_options *o, const zr_render_params *defaults) {
   o->params = *defaults;
   o->format = ZR_FORMAT_AUTO;
   o->write_output = 1;
+  o->loop_limit = ZR_DEFAULT_LOOP_LIMIT;
   zr_radiosity_params_init(&o->rad, NULL);
   /* A lamp emits from its front only: with two-sided emission the
      Cornell box's lamp, hung 0.01 below the ceiling, pours half its
@@ -320,6 +322,13 @@ static int apply_radiosity(const arg_ctx *c, opt_key key,
   double x;
   long v;
   o->radiosity = 1;
+  /* Set before the value is checked: a bad value ends the run anyway. */
+  o->rad_given |= key == K_BF_EPS           ? ZR_CLI_RAD_BF_EPS
+                  : key == K_AREA_EPS       ? ZR_CLI_RAD_AREA_EPS
+                  : key == K_VIS_RAYS       ? ZR_CLI_RAD_VIS_RAYS
+                  : key == K_MAX_ITERATIONS ? ZR_CLI_RAD_MAX_ITERATIONS
+                  : key == K_RESIDUAL       ? ZR_CLI_RAD_RESIDUAL
+                                            : 0u;
   switch (key) {
   case K_BF_EPS:
     if (!parse_real(value, &x) || x < 0.0)
@@ -376,6 +385,25 @@ static int apply_radiosity(const arg_ctx *c, opt_key key,
   default:
     return 0; /* K_RADIOSITY */
   }
+}
+
+void zr__cli_radiosity_params(const zr_cli_options *o, const zr_scene *scene,
+                              zr_radiosity_params *out) {
+  zr_radiosity_params sp;
+  zr_radiosity_params_init(&sp, scene);
+  *out = o->rad;
+  unsigned g = o->rad_given;
+  if (!(g & ZR_CLI_RAD_BF_EPS))
+    out->bf_eps = sp.bf_eps;
+  if (!(g & ZR_CLI_RAD_AREA_EPS))
+    out->area_eps = sp.area_eps;
+  if (!(g & ZR_CLI_RAD_VIS_RAYS))
+    out->visibility_rays = sp.visibility_rays;
+  if (!(g & ZR_CLI_RAD_MAX_ITERATIONS))
+    out->max_iterations = sp.max_iterations;
+  if (!(g & ZR_CLI_RAD_RESIDUAL))
+    out->residual = sp.residual;
+  out->brightness = sp.brightness;
 }
 
 static int apply(const arg_ctx *c, opt_key key, const char *value) {
@@ -445,6 +473,18 @@ static int apply(const arg_ctx *c, opt_key key, const char *value) {
   case K_PARSE_ONLY:
     o->parse_only = 1;
     return 0;
+  case K_LOOP_LIMIT: {
+    /* strtoull would take "-1" as a huge number: digits only. */
+    char *end = NULL;
+    errno = 0;
+    unsigned long long n = value && isdigit((unsigned char)*value)
+                               ? strtoull(value, &end, 10) : 0;
+    if (!end || *end || errno)
+      return fail(c, "'%s': --max-loop-iterations must be a whole number "
+                     "(0: no limit)", c->what);
+    o->loop_limit = n;
+    return 0;
+  }
   case K_IGNORED:
     return 0;
   case K_OUTPUT_ON:
@@ -577,6 +617,7 @@ static const long_option long_options[] = {
     {"help", K_HELP, L_NONE},
     {"version", K_VERSION, L_NONE},
     {"parse-only", K_PARSE_ONLY, L_NONE},
+    {"max-loop-iterations", K_LOOP_LIMIT, L_REQUIRED},
     {"radiosity", K_RADIOSITY, L_NONE},
     {"bf-eps", K_BF_EPS, L_REQUIRED},
     {"area-eps", K_AREA_EPS, L_REQUIRED},
@@ -932,6 +973,9 @@ const char *zr__cli_usage(void) {
       "  -q, --quiet                  no progress line and no warnings\n"
       "  --parse-only                 parse the scene, print what it holds\n"
       "                               and the parse time, render nothing\n"
+      "  --max-loop-iterations=N      stop a parse whose #while and #for\n"
+      "                               loops repeat more than N times in\n"
+      "                               all (default 100000000; 0: no limit)\n"
       "  +D, -D, +P, -P               accepted and ignored (no display)\n"
       "\n"
       "Radiosity (hierarchical, on the exact surfaces; any of these turns\n"

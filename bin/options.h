@@ -32,9 +32,14 @@ typedef struct zr_cli_options {
   int help;
   int version;
   int parse_only;         /* --parse-only: report what the scene holds */
+  unsigned long long loop_limit; /* --max-loop-iterations; 0: none */
   /* Radiosity (issue 4): any radiosity option turns it on. */
   int radiosity;          /* solve (or load) a solution, render with it */
   zr_radiosity_params rad; /* the solver's settings */
+  /* Which of bf_eps, area_eps, visibility_rays, max_iterations and
+     residual the command line set (ZR_CLI_RAD_* bits): those override
+     the scene's radiosity block, the others come from it. */
+  unsigned rad_given;
   int rad_stats;          /* --radiosity-stats: key=value lines */
   char *rad_save;         /* --radiosity-save=FILE, NULL when not given */
   char *rad_load;         /* --radiosity-load=FILE, NULL when not given */
@@ -47,6 +52,22 @@ typedef struct zr_cli_options {
  * then run over several sources (command line, INI files) in order.
  */
 void zr__cli_init(zr_cli_options *o, const zr_render_params *defaults);
+
+enum {
+  ZR_CLI_RAD_BF_EPS = 1u << 0,
+  ZR_CLI_RAD_AREA_EPS = 1u << 1,
+  ZR_CLI_RAD_VIS_RAYS = 1u << 2,
+  ZR_CLI_RAD_MAX_ITERATIONS = 1u << 3,
+  ZR_CLI_RAD_RESIDUAL = 1u << 4
+};
+
+/*
+ * The solver's settings for scene: the command line's (o->rad), except
+ * that what it did not set comes from the scene's global_settings {
+ * radiosity { } } block (zr_radiosity_params_init), brightness always.
+ */
+void zr__cli_radiosity_params(const zr_cli_options *o, const zr_scene *scene,
+                              zr_radiosity_params *out);
 void zr__cli_free(zr_cli_options *o);
 
 /*

@@ -240,6 +240,7 @@ static zr_status make_context(run *r) {
   r->diag.quiet = r->opts.quiet;
   zr_context_set_diag(r->ctx, print_diag, &r->diag);
   /* Scenes read image_width and image_height while they are parsed. */
+  zr_context_set_loop_limit(r->ctx, r->opts.loop_limit);
   s = zr_context_set_render_size(r->ctx, r->opts.params.width,
                                  r->opts.params.height);
   for (size_t i = 0; i < r->opts.n_include_paths && s == ZR_OK; i++)
@@ -316,14 +317,19 @@ static void print_radiosity_stats(const run *r) {
 
 /* Step 4: the radiosity solution, on every rank. */
 static int solve_radiosity(run *r) {
-  if (!r->opts.radiosity)
+  /* A radiosity option or the scene's radiosity block turns it on. */
+  zr_scene_info info;
+  zr_scene_get_info(r->scene, &info);
+  if (!r->opts.radiosity && !info.has_radiosity)
     return -1;
+  zr_radiosity_params params;
+  zr__cli_radiosity_params(&r->opts, r->scene, &params);
   double start = zr__par_now();
   zr_status s;
   if (r->opts.rad_load)
     s = zr_radiosity_load(r->ctx, r->scene, r->opts.rad_load, &r->rad);
   else
-    s = zr_radiosity_solve(r->ctx, r->scene, &r->opts.rad, &r->rad);
+    s = zr_radiosity_solve(r->ctx, r->scene, &params, &r->rad);
   r->radiosity_seconds = zr__par_now() - start;
   if (s != ZR_OK && r->rank == 0 && !*zr_context_last_error(r->ctx))
     fprintf(stderr, "zrcube: radiosity failed: %s\n", zr_status_str(s));

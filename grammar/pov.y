@@ -41,6 +41,9 @@ int zr__pov_parse(zr_sdl_parser *p);
 
 #include "core/strbuf.h"
 #include "scene/pattern.h"
+#include "sdl/build_mesh.h"
+#include "sdl/build_shape.h"
+#include "sdl/build_camlight.h"
 #include "sdl/function.h"
 
 /* A construct's location is its first token's, underlined to the end
@@ -145,9 +148,14 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
   zr_image_map *imap;
   zr_finish *finish;
   zr_texture *texture;
+  zr_map *map;
+  zr_sdl_material *material;
   zr_interior *interior;
   zr_object *object;
   zr_light *light;
+  zr_fog *fog;
+  zr_sky_sphere *sky;
+  zr_rainbow *rainbow;
   int token;
 }
 
@@ -226,6 +234,26 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %token T_WAVES "waves"
 %token T_WOOD "wood"
 %token T_WRINKLES "wrinkles"
+/* Maps, layered and patterned textures, materials, more patterns
+   (lib/sdl/build_texture.c). */
+%token <value> T_MATERIAL_ID "material identifier"
+%token <value> T_SKY_SPHERE_ID "sky_sphere identifier"
+%token T_AVERAGE "average"
+%token T_CELLS "cells"
+%token T_CONTROL0 "control0"
+%token T_CONTROL1 "control1"
+%token T_MATERIAL "material"
+%token T_NOISE_GENERATOR "noise_generator"
+%token T_NORMAL_MAP "normal_map"
+%token T_NUMBER_OF_WAVES "number_of_waves"
+%token T_PIGMENT_MAP "pigment_map"
+%token T_PIGMENT_PATTERN "pigment_pattern"
+%token T_QUILTED "quilted"
+%token T_SLOPE_MAP "slope_map"
+%token T_SPIRAL1 "spiral1"
+%token T_SPIRAL2 "spiral2"
+%token T_TEXTURE_MAP "texture_map"
+%token T_CRAND "crand"
 
 %token T_DECLARE "#declare"
 %token T_LOCAL "#local"
@@ -408,6 +436,124 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %token T_Y "y"
 %token T_YES "yes"
 %token T_Z "z"
+/* Meshes and text (lib/sdl/build_mesh.c). */
+%token T_FACE_INDICES "face_indices"
+%token T_HIERARCHY "hierarchy"
+%token T_INSIDE_VECTOR "inside_vector"
+%token T_INTERNAL "internal"
+%token T_MESH "mesh"
+%token T_MESH2 "mesh2"
+%token T_NORMAL_INDICES "normal_indices"
+%token T_NORMAL_VECTORS "normal_vectors"
+%token T_SMOOTH_TRIANGLE "smooth_triangle"
+%token T_TEXT "text"
+%token T_TEXTURE_LIST "texture_list"
+%token T_TTF "ttf"
+%token T_UV_INDICES "uv_indices"
+%token T_UV_VECTORS "uv_vectors"
+%token T_VERTEX_VECTORS "vertex_vectors"
+/* CSG, quadrics and object modifiers (lib/sdl/build_object.c). */
+%token T_BOUNDED_BY "bounded_by"
+%token T_CLIPPED_BY "clipped_by"
+%token T_DIFFERENCE "difference"
+%token T_HOLLOW "hollow"
+%token T_INTERSECTION "intersection"
+%token T_MERGE "merge"
+%token T_QUADRIC "quadric"
+%token T_CUBIC "cubic"
+%token T_POLY "poly"
+%token T_QUARTIC "quartic"
+/* Finite shapes (lib/sdl/build_shape.c). */
+%token T_BEZIER_SPLINE "bezier_spline"
+%token T_BLOB "blob"
+%token T_COMPONENT "component"
+%token T_CONIC_SWEEP "conic_sweep"
+%token T_CUBIC_SPLINE "cubic_spline"
+%token T_LATHE "lathe"
+%token T_LINEAR_SPLINE "linear_spline"
+%token T_LINEAR_SWEEP "linear_sweep"
+%token T_POLYGON "polygon"
+%token T_PRISM "prism"
+%token T_QUADRATIC_SPLINE "quadratic_spline"
+%token T_SOR "sor"
+%token T_STRENGTH "strength"
+%token T_THRESHOLD "threshold"
+%token T_STURM "sturm"
+%token T_SUPERELLIPSOID "superellipsoid"
+%token T_TORUS "torus"
+/* Cameras, lights and atmosphere (lib/sdl/build_camlight.c). */
+%token T_ADAPTIVE "adaptive"
+%token T_APERTURE "aperture"
+%token T_ARC_ANGLE "arc_angle"
+%token T_AREA_ILLUMINATION "area_illumination"
+%token T_AREA_LIGHT "area_light"
+%token T_BLUR_SAMPLES "blur_samples"
+%token T_CIRCULAR "circular"
+%token T_CONFIDENCE "confidence"
+%token T_DISTANCE "distance"
+%token T_FADE_DISTANCE "fade_distance"
+%token T_FADE_POWER "fade_power"
+%token T_FADE_COLOUR "fade_color"
+%token T_DISPERSION "dispersion"
+%token T_DISPERSION_SAMPLES "dispersion_samples"
+%token T_CAUSTICS "caustics"
+%token T_FALLOFF_ANGLE "falloff_angle"
+%token T_FISHEYE "fisheye"
+%token T_FOCAL_POINT "focal_point"
+%token T_FOG "fog"
+%token T_FOG_ALT "fog_alt"
+%token T_FOG_OFFSET "fog_offset"
+%token T_FOG_TYPE "fog_type"
+%token T_JITTER "jitter"
+%token T_LOOKS_LIKE "looks_like"
+%token T_MEDIA_ATTENUATION "media_attenuation"
+%token T_MEDIA_INTERACTION "media_interaction"
+%token T_OMNIMAX "omnimax"
+%token T_ORIENT "orient"
+%token T_ORTHOGRAPHIC "orthographic"
+%token T_PANORAMIC "panoramic"
+%token T_PARALLEL "parallel"
+%token T_POINT_AT "point_at"
+%token T_RADIUS "radius"
+%token T_RAINBOW "rainbow"
+%token T_SKY_SPHERE "sky_sphere"
+%token T_SPOTLIGHT "spotlight"
+%token T_TIGHTNESS "tightness"
+%token T_TURB_DEPTH "turb_depth"
+%token T_ULTRA_WIDE_ANGLE "ultra_wide_angle"
+%token T_VARIANCE "variance"
+%token T_WIDTH "width"
+/* Radiosity (lib/sdl/build_radiosity.c): POV-Ray's items of
+   global_settings { radiosity { } } and of objects, then zRcube's own. */
+%token T_RADIOSITY "radiosity"
+%token T_NO_RADIOSITY "no_radiosity"
+%token T_IMPORTANCE "importance"
+%token T_ALWAYS_SAMPLE "always_sample"
+%token T_BRIGHTNESS "brightness"
+%token T_COUNT "count"
+%token T_ERROR_BOUND "error_bound"
+%token T_GRAY_THRESHOLD "gray_threshold"
+%token T_LOW_ERROR_FACTOR "low_error_factor"
+%token T_MAX_SAMPLE "max_sample"
+%token T_MAXIMUM_REUSE "maximum_reuse"
+%token T_MEDIA "media"
+%token T_MINIMUM_REUSE "minimum_reuse"
+%token T_NEAREST_COUNT "nearest_count"
+%token T_PRETRACE_END "pretrace_end"
+%token T_PRETRACE_START "pretrace_start"
+%token T_RECURSION_LIMIT "recursion_limit"
+%token T_SUBSURFACE "subsurface"
+%token T_SAVE_FILE "save_file"
+%token T_LOAD_FILE "load_file"
+%token T_ENERGY "energy"
+%token T_BF_BOUND "bf_bound"
+%token T_MINIMUM_AREA "minimum_area"
+%token T_VISIBILITY_COUNT "visibility_count"
+%token T_MAX_ITERATIONS "max_iterations"
+%token T_RESIDUAL_BOUND "residual_bound"
+%type <fog> fog_body
+%type <sky> sky_body
+%type <rainbow> rainbow_body
 
 %type <expr> expr primary colour_value colour_spec
 %type <list> list
@@ -422,20 +568,36 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %type <decl> decl_target
 %type <token> decl_end arg_end str_func init_begin
 %type <object> object object_body object_head union_head union_body
+%type <object> difference_head clip_objects polygon_head
+%type <object> poly_head poly_coefs
+%type <object> prism_start prism_head lathe_start lathe_head
+%type <object> blob_head blob_component sor_head
+%type <expr> blob_strength
+%type <token> prism_option
 %type <mod> object_mod
+%type <token> rad_kw
 %type <transform> transform
-%type <pigment> pigment pigment_head pigment_body
+%type <pigment> pigment pigment_start pigment_body
 %type <token> pattern_kw block_kw
 %type <clist> colour_list colour_list_items
 %type <pmod> pattern_mod warp_body
 %type <cmap> colour_map colour_map_head colour_map_body
-%type <normal> normal normal_head normal_body
+%type <normal> normal normal_start normal_body
 %type <imap> image_map_head image_map_body
 %type <finish> finish finish_head finish_body
 %type <refl> reflection
-%type <texture> texture texture_head texture_body
+%type <texture> texture texture_start texture_body layered_texture
+%type <map> pigment_map pigment_map_body normal_map normal_map_body
+%type <map> texture_map texture_map_body slope_map slope_map_body
+%type <map> pigment_blocks normal_blocks texture_blocks
+%type <material> material material_body
+%type <token> spiral_kw
+%type <expr> colour_kw_value
 %type <interior> interior interior_head interior_body
 %type <light> light_body
+%type <object> mesh_head mesh2_head mesh2_list texture_list
+%type <texture> mesh_texture
+%type <token> mesh2_keyword
 
 /* OPTIONAL_COMMA ranks below the operators, so "<0,0,0> -1" reads as a
    subtraction, as in POV-Ray, rather than as a missing comma. */
@@ -509,6 +671,9 @@ item:
 | camera
 | light
 | background
+| fog_body '}'         { zr__sdl_fog_end(p, $1); }
+| sky_body '}'         { TRY(zr__sdl_sky_end(p, $1, &@1)); }
+| rainbow_body '}'     { TRY(zr__sdl_rainbow_end(p, $1, &@1)); }
 | global_settings
 ;
 
@@ -553,6 +718,10 @@ rvalue:
 | T_OBJECT_ID   { $$ = $1; }
 | T_NORMAL_ID   { $$ = $1; }
 | T_COLOUR_MAP_ID { $$ = $1; }
+| T_MATERIAL_ID { $$ = $1; }
+| T_SKY_SPHERE_ID { $$ = $1; }
+| sky_body '}'  { $$ = pointer_value(ZR_SDL_SKY_SPHERE, $1); }
+| material      { $$ = pointer_value(ZR_SDL_MATERIAL, $1); }
 | normal        { $$ = pointer_value(ZR_SDL_NORMAL, $1); }
 | colour_map    { $$ = pointer_value(ZR_SDL_COLOUR_MAP, $1); }
 | T_FUNCTION_ID { $$ = $1; }
@@ -572,7 +741,7 @@ rvalue:
     }
 | pigment       { $$ = pointer_value(ZR_SDL_PIGMENT, $1); }
 | finish        { $$ = pointer_value(ZR_SDL_FINISH, $1); }
-| texture       { $$ = pointer_value(ZR_SDL_TEXTURE, $1); }
+| layered_texture { $$ = pointer_value(ZR_SDL_TEXTURE, $1); }
 | interior      { $$ = pointer_value(ZR_SDL_INTERIOR, $1); }
 | object        { $$ = pointer_value(ZR_SDL_OBJECT, $1); }
 | str_expr      { $$ = pointer_value(ZR_SDL_STRING, $1); }
@@ -617,6 +786,13 @@ default_item:
   texture              { TRY(zr__sdl_set_default(p, $1, NULL, NULL)); }
 | pigment              { TRY(zr__sdl_set_default(p, NULL, $1, NULL)); }
 | finish               { TRY(zr__sdl_set_default(p, NULL, NULL, $1)); }
+| normal
+    {
+      zr_texture *t;
+      TRY(t = zr__sdl_texture_new(p, p->scene->default_texture));
+      t->normal = $1;
+      TRY(zr__sdl_set_default(p, t, NULL, NULL));
+    }
 ;
 
 /* ---- arrays ---- */
@@ -855,6 +1031,11 @@ dot_item:
 /* "colour" in front makes any value a colour; without it an expression
    with no colour items keeps its own type (#declare A = 1; is a float). */
 colour_value:
+  colour_kw_value
+| colour_spec
+;
+
+colour_kw_value:
   T_COLOUR colour_spec
     {
       $$ = $2;
@@ -863,7 +1044,6 @@ colour_value:
         TRY(zr__sdl_colour_apply(p, &$$, &none));
       }
     }
-| colour_spec
 ;
 
 colour_spec:
@@ -900,6 +1080,7 @@ object_body:
   object_head
 | object_body object_mod
     { TRY(zr__sdl_object_mod(p, $1, &$2, &@2)); $$ = $1; }
+| object_body T_STURM  { TRY(zr__sdl_sturm(p, $1, &@2)); $$ = $1; }
 ;
 
 object_head:
@@ -968,17 +1149,289 @@ object_head:
     }
 | T_OBJECT '{' T_OBJECT_ID
     { TRY($$ = zr__sdl_object_copy(p, $3.ptr)); }
+| T_OBJECT '{' object  { $$ = $3; } /* "object { union { ... } ... }" */
+| poly_coefs '>'       { TRY(zr__sdl_poly_done(p, $1, &@2)); $$ = $1; }
+| T_QUADRIC '{' expr comma expr comma expr comma expr
+    {
+      zr_sdl_expr e[4] = {$3, $5, $7, $9};
+      zr_sdl_loc at[4] = {@3, @5, @7, @9};
+      TRY($$ = zr__sdl_quadric(p, e, &@1, at));
+    }
+| T_TORUS '{' expr comma expr
+    { TRY($$ = zr__sdl_torus(p, &@1, &$3, &@3, &$5, &@5)); }
+| T_SUPERELLIPSOID '{' expr
+    { TRY($$ = zr__sdl_superellipsoid(p, &@1, &$3, &@3)); }
+| polygon_head         { TRY(zr__sdl_polygon_done(p, $1, &@1)); $$ = $1; }
+| prism_head           { TRY(zr__sdl_prism_done(p, $1, &@1)); $$ = $1; }
+| lathe_head           { TRY(zr__sdl_lathe_done(p, $1, &@1)); $$ = $1; }
+| blob_head
+| sor_head             { TRY(zr__sdl_sor_done(p, $1, &@1)); $$ = $1; }
+| mesh_head            { TRY(zr__sdl_mesh_done(p, $1, &@1)); $$ = $1; }
+| mesh2_head           { TRY(zr__sdl_mesh_done(p, $1, &@1)); $$ = $1; }
+| T_SMOOTH_TRIANGLE '{' expr comma expr comma expr comma expr comma expr
+  comma expr
+    {
+      zr_sdl_expr e[6] = {$3, $5, $7, $9, $11, $13};
+      zr_sdl_loc l[6] = {@3, @5, @7, @9, @11, @13};
+      TRY($$ = zr__sdl_smooth_triangle(p, &@1, e, l));
+    }
+/* The commas between font, string and thickness are optional. */
+| T_TEXT '{' T_TTF str_expr comma str_expr comma expr comma expr
+    {
+      TRY($$ = zr__sdl_text(p, &@1, $4, 0, &@4, $6, &$8, &@8, &$10,
+                            &@10));
+    }
+| T_TEXT '{' T_INTERNAL expr comma str_expr comma expr comma expr
+    {
+      double font;
+      TRY(zr__sdl_want_float(p, &$4, &@4, &font));
+      TRY($$ = zr__sdl_text(p, &@1, NULL, font, &@4, $6, &$8, &@8, &$10,
+                            &@10));
+    }
+;
+
+/* polygon { Number_Of_Points, <Point_1> <Point_2> ... }: the commas
+   between points may be left out, as between an object's items. */
+polygon_head:
+  T_POLYGON '{' expr %prec OPTIONAL_COMMA
+    { TRY($$ = zr__sdl_polygon_new(p, &@1, &$3, &@3)); }
+| polygon_head ',' expr %prec OPTIONAL_COMMA
+    { TRY(zr__sdl_polygon_point(p, $1, &$3, &@3)); $$ = $1; }
+| polygon_head expr %prec OPTIONAL_COMMA
+    { TRY(zr__sdl_polygon_point(p, $1, &$2, &@2)); $$ = $1; }
+;
+
+/* prism { [spline and sweep keywords] Height_1, Height_2, N, <Point>... }
+   (reference manual, "Prism"). */
+prism_start:
+  T_PRISM '{'          { TRY($$ = zr__sdl_prism_new(p, &@1)); }
+| prism_start prism_option
+    { zr__sdl_prism_option($1, $2); $$ = $1; }
+;
+
+prism_option:
+  T_LINEAR_SPLINE      { $$ = 0; }
+| T_QUADRATIC_SPLINE   { $$ = 1; }
+| T_CUBIC_SPLINE       { $$ = 2; }
+| T_BEZIER_SPLINE      { $$ = 3; }
+| T_LINEAR_SWEEP       { $$ = 4; }
+| T_CONIC_SWEEP        { $$ = 5; }
+;
+
+prism_head:
+  prism_start expr comma expr comma expr %prec OPTIONAL_COMMA
+    {
+      zr_sdl_expr e[3] = {$2, $4, $6};
+      zr_sdl_loc at[3] = {@2, @4, @6};
+      TRY(zr__sdl_prism_size(p, $1, e, at));
+      $$ = $1;
+    }
+| prism_head ',' expr %prec OPTIONAL_COMMA
+    { TRY(zr__sdl_prism_point(p, $1, &$3, &@3)); $$ = $1; }
+| prism_head expr %prec OPTIONAL_COMMA
+    { TRY(zr__sdl_prism_point(p, $1, &$2, &@2)); $$ = $1; }
+;
+
+/* lathe { [spline keyword] N, <Point>... } (reference manual, "Lathe"). */
+lathe_start:
+  T_LATHE '{'          { TRY($$ = zr__sdl_lathe_new(p, &@1)); }
+| lathe_start prism_option
+    { TRY(zr__sdl_lathe_option(p, $1, $2, &@2)); $$ = $1; }
+;
+
+lathe_head:
+  lathe_start expr %prec OPTIONAL_COMMA
+    { TRY(zr__sdl_lathe_count(p, $1, &$2, &@2)); $$ = $1; }
+| lathe_head ',' expr %prec OPTIONAL_COMMA
+    { TRY(zr__sdl_lathe_point(p, $1, &$3, &@3)); $$ = $1; }
+| lathe_head expr %prec OPTIONAL_COMMA
+    { TRY(zr__sdl_lathe_point(p, $1, &$2, &@2)); $$ = $1; }
+;
+
+/* blob { threshold T  sphere { ... }  cylinder { ... }  component ... }
+   (reference manual, "Blob").  A component's rule carries the blob; its
+   modifiers go to the blob's last component. */
+blob_head:
+  T_BLOB '{'           { TRY($$ = zr__sdl_blob_new(p, &@1)); }
+| blob_head T_THRESHOLD expr
+    { TRY(zr__sdl_blob_threshold(p, $1, &$3, &@3)); $$ = $1; }
+| blob_component '}'   { $$ = $1; }
+| blob_head T_COMPONENT expr comma expr comma expr
+    {
+      zr_sdl_expr e[3] = {$3, $5, $7};
+      zr_sdl_loc at[3] = {@3, @5, @7};
+      TRY(zr__sdl_blob_component(p, $1, false, true, e, at));
+      $$ = $1;
+    }
+/* hierarchy only switches POV-Ray's inner bounding: no picture change. */
+| blob_head T_HIERARCHY expr  { $$ = $1; }
+| blob_head T_HIERARCHY       { $$ = $1; }
+;
+
+blob_component:
+  blob_head T_SPHERE '{' expr comma expr comma blob_strength
+    {
+      zr_sdl_expr e[3] = {$4, $6, $8};
+      zr_sdl_loc at[3] = {@4, @6, @8};
+      TRY(zr__sdl_blob_component(p, $1, false, false, e, at));
+      $$ = $1;
+    }
+| blob_head T_CYLINDER '{' expr comma expr comma expr comma blob_strength
+    {
+      zr_sdl_expr e[4] = {$4, $6, $8, $10};
+      zr_sdl_loc at[4] = {@4, @6, @8, @10};
+      TRY(zr__sdl_blob_component(p, $1, true, false, e, at));
+      $$ = $1;
+    }
+| blob_component object_mod
+    {
+      zr_blob_component *c =
+          &$1->u.blob.components[$1->u.blob.n_components - 1];
+      TRY(zr__sdl_blob_component_mod(p, c, &$2, &@2));
+      $$ = $1;
+    }
+;
+
+blob_strength:
+  expr
+| T_STRENGTH expr      { $$ = $2; }
+;
+
+/* sor { N, <Point>... } (reference manual, "Surface of Revolution"). */
+sor_head:
+  T_SOR '{' expr %prec OPTIONAL_COMMA
+    { TRY($$ = zr__sdl_sor_new(p, &@1, &$3, &@3)); }
+| sor_head ',' expr %prec OPTIONAL_COMMA
+    { TRY(zr__sdl_sor_point(p, $1, &$3, &@3)); $$ = $1; }
+| sor_head expr %prec OPTIONAL_COMMA
+    { TRY(zr__sdl_sor_point(p, $1, &$2, &@2)); $$ = $1; }
+;
+
+/* ---- meshes (reference manual, "Mesh" and "Mesh2") ---- */
+
+/* mesh { triangle { ... } smooth_triangle { ... } ... inside_vector }:
+   the triangles, then the mesh's own modifiers, then the object's. */
+mesh_head:
+  T_MESH '{'           { TRY($$ = zr__sdl_mesh_new(p, false, &@1)); }
+| mesh_head T_TRIANGLE '{' expr comma expr comma expr mesh_texture '}'
+    {
+      zr_sdl_expr v[3] = {$4, $6, $8};
+      zr_sdl_loc l[3] = {@4, @6, @8};
+      TRY(zr__sdl_mesh_triangle(p, $1, v, l, NULL, NULL, $9));
+      $$ = $1;
+    }
+| mesh_head T_SMOOTH_TRIANGLE '{' expr comma expr comma expr comma expr
+  comma expr comma expr mesh_texture '}'
+    {
+      zr_sdl_expr v[3] = {$4, $8, $12}, n[3] = {$6, $10, $14};
+      zr_sdl_loc vl[3] = {@4, @8, @12}, nl[3] = {@6, @10, @14};
+      TRY(zr__sdl_mesh_triangle(p, $1, v, vl, n, nl, $15));
+      $$ = $1;
+    }
+| mesh_head T_INSIDE_VECTOR expr
+    { TRY(zr__sdl_mesh_inside_vector(p, $1, &$3, &@3)); $$ = $1; }
+/* hierarchy only switches POV-Ray's inner bounding on or off: the
+   picture is the same either way, and zRcube always builds it. */
+| mesh_head T_HIERARCHY expr  { $$ = $1; }
+| mesh_head T_HIERARCHY       { $$ = $1; }
+;
+
+mesh_texture:
+  %empty               { $$ = NULL; }
+| texture
+;
+
+mesh2_head:
+  T_MESH2 '{'          { TRY($$ = zr__sdl_mesh_new(p, true, &@1)); }
+| mesh2_list '}'       { TRY(zr__sdl_mesh2_close(p, $1, &@2)); $$ = $1; }
+| texture_list '}'     { TRY(zr__sdl_mesh2_close(p, $1, &@2)); $$ = $1; }
+| mesh2_head T_INSIDE_VECTOR expr
+    { TRY(zr__sdl_mesh_inside_vector(p, $1, &$3, &@3)); $$ = $1; }
+| mesh2_head T_HIERARCHY expr  { $$ = $1; }
+| mesh2_head T_HIERARCHY       { $$ = $1; }
+;
+
+/* A list of numbers or vectors.  The state after its '{' only reduces,
+   so bison has read nothing past it and the plain items can be read
+   straight from the token array; the check keeps that promise honest
+   (a look-ahead already read just sends every item through here). */
+mesh2_list:
+  mesh2_head mesh2_keyword '{'
+    {
+      TRY(zr__sdl_mesh2_open(p, $1, (zr_sdl_mesh2_list)$2, &@2,
+                             yychar == ZR__POV_EMPTY));
+      $$ = $1;
+    }
+| mesh2_list expr %prec OPTIONAL_COMMA
+    { TRY(zr__sdl_mesh2_item(p, $1, &$2, &@2)); $$ = $1; }
+| mesh2_list ','       { $$ = $1; }
+;
+
+mesh2_keyword:
+  T_VERTEX_VECTORS     { $$ = ZR_SDL_M2_VERTICES; }
+| T_NORMAL_VECTORS     { $$ = ZR_SDL_M2_NORMALS; }
+| T_UV_VECTORS         { $$ = ZR_SDL_M2_UVS; }
+| T_FACE_INDICES       { $$ = ZR_SDL_M2_FACES; }
+| T_NORMAL_INDICES     { $$ = ZR_SDL_M2_NORMAL_INDICES; }
+| T_UV_INDICES         { $$ = ZR_SDL_M2_UV_INDICES; }
+;
+
+texture_list:
+  mesh2_head T_TEXTURE_LIST '{' expr
+    {
+      TRY(zr__sdl_mesh2_open(p, $1, ZR_SDL_M2_TEXTURES, &@2, false));
+      TRY(zr__sdl_mesh2_item(p, $1, &$4, &@4));
+      $$ = $1;
+    }
+| texture_list ','     { $$ = $1; }
+| texture_list texture
+    { TRY(zr__sdl_mesh2_texture(p, $1, $2, &@2)); $$ = $1; }
 ;
 
 /* POV-Ray's CSG syntax puts the children first, then the modifiers,
    which therefore reach every child. */
 union_head:
   T_UNION '{'          { TRY($$ = zr__sdl_object_new(p, ZR_OBJ_UNION, &@1)); }
+| T_INTERSECTION '{'
+    { TRY($$ = zr__sdl_object_new(p, ZR_OBJ_INTERSECTION, &@1)); }
+| T_MERGE '{'          { TRY($$ = zr__sdl_object_new(p, ZR_OBJ_MERGE, &@1)); }
 | union_head object    { TRY(zr__sdl_union_add(p, $1, $2)); $$ = $1; }
+;
+
+/* poly { Order, <A1, ..., An> }, cubic { <...> }, quartic { <...> }:
+   as many coefficients as the order asks, which may exceed a list's. */
+poly_head:
+  T_POLY '{' expr comma '<'
+    { TRY($$ = zr__sdl_poly_new(p, &$3, &@3, &@1)); }
+| T_CUBIC '{' '<'
+    {
+      zr_sdl_expr three = zr__sdl_float(3);
+      TRY($$ = zr__sdl_poly_new(p, &three, &@1, &@1));
+    }
+| T_QUARTIC '{' '<'
+    {
+      zr_sdl_expr four = zr__sdl_float(4);
+      TRY($$ = zr__sdl_poly_new(p, &four, &@1, &@1));
+    }
+;
+
+poly_coefs:
+  poly_head expr       { TRY(zr__sdl_poly_coef(p, $1, &$2, &@2)); $$ = $1; }
+| poly_coefs ',' expr  { TRY(zr__sdl_poly_coef(p, $1, &$3, &@3)); $$ = $1; }
+;
+
+/* A difference is an intersection with every child after the first
+   inverted. */
+difference_head:
+  T_DIFFERENCE '{'
+    { TRY($$ = zr__sdl_object_new(p, ZR_OBJ_INTERSECTION, &@1)); }
+| difference_head object
+    { TRY(zr__sdl_difference_add(p, $1, $2)); $$ = $1; }
 ;
 
 union_body:
   union_head
+| difference_head
 | union_body object_mod
     { TRY(zr__sdl_object_mod(p, $1, &$2, &@2)); $$ = $1; }
 ;
@@ -990,9 +1443,62 @@ object_mod:
 | texture              { $$ = make_mod(ZR_SDL_MOD_TEXTURE, $1); }
 | interior             { $$ = make_mod(ZR_SDL_MOD_INTERIOR, $1); }
 | normal               { $$ = make_mod(ZR_SDL_MOD_NORMAL, $1); }
+| material             { $$ = make_mod(ZR_SDL_MOD_MATERIAL, $1); }
 | T_NO_SHADOW          { $$ = make_mod(ZR_SDL_MOD_NO_SHADOW, NULL); }
+| T_NO_RADIOSITY
+    {
+      zr__sdl_radiosity_object(p, T_NO_RADIOSITY, &@1);
+      $$ = make_mod(ZR_SDL_MOD_IGNORED, NULL);
+    }
+| T_RADIOSITY '{' object_radiosity '}'
+    {
+      zr__sdl_radiosity_object(p, T_RADIOSITY, &@1);
+      $$ = make_mod(ZR_SDL_MOD_IGNORED, NULL);
+    }
 | T_INVERSE            { $$ = make_mod(ZR_SDL_MOD_INVERSE, NULL); }
 | T_OPEN               { $$ = make_mod(ZR_SDL_MOD_OPEN, NULL); }
+| T_HOLLOW             { $$ = make_mod(ZR_SDL_MOD_HOLLOW, NULL); }
+| T_HOLLOW expr
+    {
+      double on;
+      TRY(zr__sdl_want_float(p, &$2, &@2, &on));
+      /* Any non-NULL pointer says "off". */
+      $$ = make_mod(ZR_SDL_MOD_HOLLOW, on != 0.0 ? NULL : (const void *)p);
+    }
+| T_CLIPPED_BY '{' clip_objects '}'
+    { $$ = make_mod(ZR_SDL_MOD_CLIPPED_BY, $3); }
+| T_CLIPPED_BY '{' T_BOUNDED_BY '}'
+    { $$ = make_mod(ZR_SDL_MOD_CLIP_TO_BOUND, NULL); }
+| T_BOUNDED_BY '{' clip_objects '}'
+    { $$ = make_mod(ZR_SDL_MOD_BOUNDED_BY, $3); }
+| T_BOUNDED_BY '{' T_CLIPPED_BY '}'
+    { $$ = make_mod(ZR_SDL_MOD_BOUND_TO_CLIP, NULL); }
+;
+
+/* An object's radiosity { importance I }: read, checked, unused. */
+object_radiosity:
+  %empty
+| object_radiosity T_IMPORTANCE expr
+    {
+      double v;
+      TRY(zr__sdl_want_float(p, &$3, &@3, &v));
+      if (!(v > 0.0 && v <= 1.0)) {
+        zr__sdl_error(p, ZR_ESCENE, &@3,
+                      "importance must be greater than 0 and at most 1");
+        YYABORT;
+      }
+    }
+;
+
+/* The objects of clipped_by and bounded_by, kept as their
+   intersection. */
+clip_objects:
+  object
+    {
+      TRY($$ = zr__sdl_object_new(p, ZR_OBJ_INTERSECTION, &@1));
+      TRY(zr__sdl_union_add(p, $$, $1));
+    }
+| clip_objects object  { TRY(zr__sdl_union_add(p, $1, $2)); $$ = $1; }
 ;
 
 transform:
@@ -1007,34 +1513,55 @@ transform:
 /* ---- textures ---- */
 
 pigment:
-  pigment_body '}'
+  T_PIGMENT '{' pigment_body '}'  { $$ = $3; }
 ;
 
-pigment_head:
-  T_PIGMENT '{'        { TRY($$ = zr__sdl_pigment_new(p, NULL)); }
-| T_PIGMENT '{' T_PIGMENT_ID
-    { TRY($$ = zr__sdl_pigment_new(p, $3.ptr)); }
-| T_PIGMENT '{' colour_value
+/* A pigment's body also stands alone in pigment_pattern { } and in the
+   entries of a pigment_map. */
+pigment_start:
+  %empty               { TRY($$ = zr__sdl_pigment_new(p, NULL)); }
+| T_PIGMENT_ID         { TRY($$ = zr__sdl_pigment_new(p, $1.ptr)); }
+| colour_value
     {
       TRY($$ = zr__sdl_pigment_new(p, NULL));
-      TRY(zr__sdl_want_colour(p, &$3, &@3, &$$->colour));
+      TRY(zr__sdl_want_colour(p, &$1, &@1, &$$->colour));
     }
-| T_PIGMENT '{' T_IMAGE_MAP '{' image_map_body '}'
+| T_IMAGE_MAP '{' image_map_body '}'
     {
       TRY($$ = zr__sdl_pigment_new(p, NULL));
       $$->kind = ZR_PIGMENT_IMAGE;
-      $$->image = $5;
+      $$->image = $3;
     }
 ;
 
 pigment_body:
-  pigment_head
+  pigment_start
 | pigment_body transform
     { TRY(zr__sdl_pigment_transform(p, $1, $2)); $$ = $1; }
 | pigment_body pattern_kw
     { TRY(zr__sdl_pigment_pattern(p, $1, $2, NULL)); $$ = $1; }
 | pigment_body block_kw colour_list
     { TRY(zr__sdl_pigment_pattern(p, $1, $2, &$3)); $$ = $1; }
+| pigment_body block_kw pigment_blocks
+    {
+      TRY(zr__sdl_pigment_pattern(p, $1, $2, NULL));
+      TRY(zr__sdl_pigment_map_set(p, $1, $3, &@3));
+      $$ = $1;
+    }
+| pigment_body spiral_kw expr
+    {
+      TRY(zr__sdl_pigment_pattern(p, $1, $2, NULL));
+      TRY(zr__sdl_spiral_arms(p, &$1->pattern, &$3, &@3));
+      $$ = $1;
+    }
+| pigment_body T_PIGMENT_PATTERN '{' pigment_body '}'
+    {
+      TRY(zr__sdl_pigment_pattern(p, $1, ZR_PAT_PIGMENT_PATTERN, NULL));
+      zr__sdl_pigment_pattern_of(&$1->pattern, $4);
+      $$ = $1;
+    }
+| pigment_body pigment_map
+    { TRY(zr__sdl_pigment_map_set(p, $1, $2, &@2)); $$ = $1; }
 | pigment_body T_GRADIENT expr
     {
       TRY(zr__sdl_pigment_pattern(p, $1, ZR_PAT_GRADIENT, NULL));
@@ -1061,6 +1588,136 @@ pattern_kw:
 | T_RIPPLES { $$ = ZR_PAT_RIPPLES; }     | T_SPOTTED { $$ = ZR_PAT_SPOTTED; }
 | T_SPHERICAL { $$ = ZR_PAT_SPHERICAL; } | T_WAVES { $$ = ZR_PAT_WAVES; }
 | T_WOOD { $$ = ZR_PAT_WOOD; }           | T_WRINKLES { $$ = ZR_PAT_WRINKLES; }
+| T_AVERAGE { $$ = ZR_PAT_AVERAGE; }     | T_CELLS { $$ = ZR_PAT_CELLS; }
+| T_QUILTED { $$ = ZR_PAT_QUILTED; }
+;
+
+/* spiral1 and spiral2 take their number of arms. */
+spiral_kw:
+  T_SPIRAL1 { $$ = ZR_PAT_SPIRAL1; }     | T_SPIRAL2 { $$ = ZR_PAT_SPIRAL2; }
+;
+
+/* "checker pigment {A}, pigment {B}": a block pattern's items. */
+pigment_blocks:
+  pigment
+    {
+      zr_map_entry e = {.u.pigment = $1};
+      TRY($$ = zr__sdl_map_new(p));
+      TRY(zr__sdl_map_add_block(p, $$, &e, &@1));
+    }
+| pigment_blocks pigment
+    {
+      zr_map_entry e = {.u.pigment = $2};
+      TRY(zr__sdl_map_add_block(p, $1, &e, &@2));
+      $$ = $1;
+    }
+| pigment_blocks ','   { $$ = $1; }
+;
+
+normal_blocks:
+  normal
+    {
+      zr_map_entry e = {.u.normal = $1};
+      TRY($$ = zr__sdl_map_new(p));
+      TRY(zr__sdl_map_add_block(p, $$, &e, &@1));
+    }
+| normal_blocks normal
+    {
+      zr_map_entry e = {.u.normal = $2};
+      TRY(zr__sdl_map_add_block(p, $1, &e, &@2));
+      $$ = $1;
+    }
+| normal_blocks ','    { $$ = $1; }
+;
+
+texture_blocks:
+  texture
+    {
+      zr_map_entry e = {.u.texture = $1};
+      TRY($$ = zr__sdl_map_new(p));
+      TRY(zr__sdl_map_add_block(p, $$, &e, &@1));
+    }
+| texture_blocks texture
+    {
+      zr_map_entry e = {.u.texture = $2};
+      TRY(zr__sdl_map_add_block(p, $1, &e, &@2));
+      $$ = $1;
+    }
+| texture_blocks ','   { $$ = $1; }
+;
+
+/* pigment_map { [Value PIGMENT_BODY] ... } and the other maps
+   (reference manual, "Pigment Maps and Pigment Lists", "Normal Maps",
+   "Texture Maps", "Slope Maps"). */
+pigment_map:
+  T_PIGMENT_MAP '{' pigment_map_body '}'
+    { TRY(zr__sdl_map_done(p, $3, "pigment_map", &@1)); $$ = $3; }
+;
+
+pigment_map_body:
+  %empty               { TRY($$ = zr__sdl_map_new(p)); }
+| pigment_map_body '[' expr comma pigment_body ']'
+    {
+      zr_map_entry e = {.u.pigment = $5};
+      TRY(zr__sdl_map_add(p, $1, &$3, &@3, &e));
+      $$ = $1;
+    }
+;
+
+normal_map:
+  T_NORMAL_MAP '{' normal_map_body '}'
+    { TRY(zr__sdl_map_done(p, $3, "normal_map", &@1)); $$ = $3; }
+;
+
+normal_map_body:
+  %empty               { TRY($$ = zr__sdl_map_new(p)); }
+| normal_map_body '[' expr comma normal_body ']'
+    {
+      zr_map_entry e = {.u.normal = $5};
+      TRY(zr__sdl_map_add(p, $1, &$3, &@3, &e));
+      $$ = $1;
+    }
+/* An average's entries may leave out their weight, 1. */
+| normal_map_body '[' normal_body ']'
+    {
+      zr_map_entry e = {.u.normal = $3};
+      TRY(zr__sdl_map_add_weight1(p, $1, &e));
+      $$ = $1;
+    }
+;
+
+texture_map:
+  T_TEXTURE_MAP '{' texture_map_body '}'
+    { TRY(zr__sdl_map_done(p, $3, "texture_map", &@1)); $$ = $3; }
+;
+
+texture_map_body:
+  %empty               { TRY($$ = zr__sdl_map_new(p)); }
+| texture_map_body '[' expr comma texture_body ']'
+    {
+      TRY(zr__sdl_texture_done(p, $5));
+      zr_map_entry e = {.u.texture = $5};
+      TRY(zr__sdl_map_add(p, $1, &$3, &@3, &e));
+      $$ = $1;
+    }
+| texture_map_body '[' texture_body ']'
+    {
+      TRY(zr__sdl_texture_done(p, $3));
+      zr_map_entry e = {.u.texture = $3};
+      TRY(zr__sdl_map_add_weight1(p, $1, &e));
+      $$ = $1;
+    }
+;
+
+slope_map:
+  T_SLOPE_MAP '{' slope_map_body '}'
+    { TRY(zr__sdl_map_done(p, $3, "slope_map", &@1)); $$ = $3; }
+;
+
+slope_map_body:
+  %empty               { TRY($$ = zr__sdl_map_new(p)); }
+| slope_map_body '[' expr comma expr ']'
+    { TRY(zr__sdl_slope_add(p, $1, &$3, &@3, &$5, &@5)); $$ = $1; }
 ;
 
 block_kw:
@@ -1101,6 +1758,10 @@ pattern_mod:
 | T_CUBIC_WAVE         { $$ = make_pmod(T_CUBIC_WAVE, NULL, &@1); }
 | T_POLY_WAVE          { $$ = make_pmod(T_POLY_WAVE, NULL, &@1); }
 | T_POLY_WAVE expr     { $$ = make_pmod(T_POLY_WAVE, &$2, &@2); }
+| T_CONTROL0 expr      { $$ = make_pmod(T_CONTROL0, &$2, &@2); }
+| T_CONTROL1 expr      { $$ = make_pmod(T_CONTROL1, &$2, &@2); }
+| T_NOISE_GENERATOR expr { $$ = make_pmod(T_NOISE_GENERATOR, &$2, &@2); }
+| T_NUMBER_OF_WAVES expr { $$ = make_pmod(T_NUMBER_OF_WAVES, &$2, &@2); }
 | warp_body '}'
 ;
 
@@ -1140,22 +1801,28 @@ colour_map_body:
   colour_map_head
 | colour_map_body '[' expr comma colour_value ']'
     { TRY(zr__sdl_colour_map_add(p, $1, &$3, &@3, &$5, &@5)); $$ = $1; }
+/* The form before POV-Ray 3: [From, To color C1 color C2]. */
+| colour_map_body '[' expr comma expr colour_kw_value colour_kw_value ']'
+    {
+      TRY(zr__sdl_colour_map_add(p, $1, &$3, &@3, &$6, &@6));
+      TRY(zr__sdl_colour_map_add(p, $1, &$5, &@5, &$7, &@7));
+      $$ = $1;
+    }
 ;
 
 /* ---- normals (reference manual, "Normal") ---- */
 
 normal:
-  normal_body '}'
+  T_NORMAL '{' normal_body '}'  { $$ = $3; }
 ;
 
-normal_head:
-  T_NORMAL '{'         { TRY($$ = zr__sdl_normal_new(p, NULL)); }
-| T_NORMAL '{' T_NORMAL_ID
-    { TRY($$ = zr__sdl_normal_new(p, $3.ptr)); }
+normal_start:
+  %empty               { TRY($$ = zr__sdl_normal_new(p, NULL)); }
+| T_NORMAL_ID          { TRY($$ = zr__sdl_normal_new(p, $1.ptr)); }
 ;
 
 normal_body:
-  normal_head
+  normal_start
 | normal_body pattern_kw
     { TRY(zr__sdl_normal_pattern(p, $1, $2, NULL, &@2)); $$ = $1; }
 | normal_body pattern_kw expr
@@ -1164,6 +1831,39 @@ normal_body:
     { TRY(zr__sdl_normal_pattern(p, $1, $2, NULL, &@2)); $$ = $1; }
 | normal_body block_kw expr
     { TRY(zr__sdl_normal_pattern(p, $1, $2, &$3, &@3)); $$ = $1; }
+| normal_body block_kw normal_blocks
+    {
+      TRY(zr__sdl_normal_pattern(p, $1, $2, NULL, &@2));
+      TRY(zr__sdl_normal_map_set(p, $1, $3, &@3));
+      $$ = $1;
+    }
+| normal_body spiral_kw expr
+    {
+      TRY(zr__sdl_normal_pattern(p, $1, $2, NULL, &@2));
+      TRY(zr__sdl_spiral_arms(p, &$1->pattern, &$3, &@3));
+      $$ = $1;
+    }
+| normal_body spiral_kw expr ',' expr
+    {
+      TRY(zr__sdl_normal_pattern(p, $1, $2, &$5, &@5));
+      TRY(zr__sdl_spiral_arms(p, &$1->pattern, &$3, &@3));
+      $$ = $1;
+    }
+| normal_body T_PIGMENT_PATTERN '{' pigment_body '}'
+    {
+      TRY(zr__sdl_normal_pattern(p, $1, ZR_PAT_PIGMENT_PATTERN, NULL, &@2));
+      zr__sdl_pigment_pattern_of(&$1->pattern, $4);
+      $$ = $1;
+    }
+| normal_body T_PIGMENT_PATTERN '{' pigment_body '}' expr
+    {
+      TRY(zr__sdl_normal_pattern(p, $1, ZR_PAT_PIGMENT_PATTERN, &$6, &@6));
+      zr__sdl_pigment_pattern_of(&$1->pattern, $4);
+      $$ = $1;
+    }
+| normal_body normal_map
+    { TRY(zr__sdl_normal_map_set(p, $1, $2, &@2)); $$ = $1; }
+| normal_body slope_map  { $1->slope_map = $2; $$ = $1; }
 | normal_body T_GRADIENT expr
     {
       TRY(zr__sdl_normal_pattern(p, $1, ZR_PAT_GRADIENT, NULL, &@2));
@@ -1223,6 +1923,8 @@ finish_body:
     { TRY(zr__sdl_want_rgb(p, &$3, &@3, &$1->ambient)); $$ = $1; }
 | finish_body T_EMISSION colour_value
     { TRY(zr__sdl_want_rgb(p, &$3, &@3, &$1->emission)); $$ = $1; }
+| finish_body T_ENERGY colour_value
+    { TRY(zr__sdl_finish_energy(p, $1, &$3, &@3)); $$ = $1; }
 | finish_body T_DIFFUSE expr
     { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->diffuse)); $$ = $1; }
 | finish_body T_BRILLIANCE expr
@@ -1239,6 +1941,8 @@ finish_body:
     { $1->metallic = 1; $$ = $1; }
 | finish_body T_METALLIC expr
     { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->metallic)); $$ = $1; }
+| finish_body T_CRAND expr
+    { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->crand)); $$ = $1; }
 | finish_body T_CONSERVE_ENERGY
     { $1->conserve_energy = true; $$ = $1; }
 | finish_body T_REFLECTION colour_value
@@ -1293,26 +1997,99 @@ reflection:
 ;
 
 texture:
-  texture_body '}'     { TRY(zr__sdl_texture_done(p, $1)); $$ = $1; }
+  T_TEXTURE '{' texture_body '}'
+    { TRY(zr__sdl_texture_done(p, $3)); $$ = $3; }
 ;
 
-texture_head:
-  T_TEXTURE '{'        { TRY($$ = zr__sdl_texture_new(p, NULL)); }
-| T_TEXTURE '{' T_TEXTURE_ID
-    { TRY($$ = zr__sdl_texture_new(p, $3.ptr)); }
+/* "texture {T1} texture {T2}": T2 layered on T1 ("Layered Textures"). */
+layered_texture:
+  texture
+| layered_texture texture
+    { TRY($$ = zr__sdl_texture_layer(p, $1, $2)); }
 ;
 
+texture_start:
+  %empty               { TRY($$ = zr__sdl_texture_new(p, NULL)); }
+| T_TEXTURE_ID         { TRY($$ = zr__sdl_texture_new(p, $1.ptr)); }
+;
+
+/* A pattern with a texture_map or a block pattern's textures makes a
+   patterned texture ("Patterned Textures"). */
 texture_body:
-  texture_head
-| texture_body pigment { $1->pigment = $2; $$ = $1; }
-| texture_body finish  { $1->finish = $2; $$ = $1; }
-| texture_body normal  { $1->normal = $2; $$ = $1; }
+  texture_start
+| texture_body pattern_kw
+    { zr__sdl_texture_pattern($1, $2); $$ = $1; }
+| texture_body T_GRADIENT expr
+    {
+      zr__sdl_texture_pattern($1, ZR_PAT_GRADIENT);
+      TRY(zr__sdl_gradient(p, &$1->pattern, &$3, &@3));
+      $$ = $1;
+    }
+| texture_body spiral_kw expr
+    {
+      zr__sdl_texture_pattern($1, $2);
+      TRY(zr__sdl_spiral_arms(p, &$1->pattern, &$3, &@3));
+      $$ = $1;
+    }
+| texture_body block_kw texture_blocks
+    {
+      zr__sdl_texture_pattern($1, $2);
+      TRY(zr__sdl_texture_map_set(p, $1, $3, &@3));
+      $$ = $1;
+    }
+| texture_body T_PIGMENT_PATTERN '{' pigment_body '}'
+    {
+      zr__sdl_texture_pattern($1, ZR_PAT_PIGMENT_PATTERN);
+      zr__sdl_pigment_pattern_of(&$1->pattern, $4);
+      $$ = $1;
+    }
+| texture_body pattern_mod
+    { TRY(zr__sdl_pattern_mod(p, &$1->pattern, &$2)); $$ = $1; }
+| texture_body texture_map
+    { TRY(zr__sdl_texture_map_set(p, $1, $2, &@2)); $$ = $1; }
+/* In a layered texture these change the top layer (build_texture.c). */
+| texture_body pigment
+    {
+      zr_texture *top;
+      TRY(top = zr__sdl_texture_top(p, $1));
+      top->pigment = $2;
+      $$ = $1;
+    }
+| texture_body finish
+    {
+      zr_texture *top;
+      TRY(top = zr__sdl_texture_top(p, $1));
+      top->finish = $2;
+      $$ = $1;
+    }
+| texture_body normal
+    {
+      zr_texture *top;
+      TRY(top = zr__sdl_texture_top(p, $1));
+      top->normal = $2;
+      $$ = $1;
+    }
 | texture_body transform
     { TRY(zr__sdl_texture_transform(p, $1, $2)); $$ = $1; }
 ;
 
 interior:
   interior_body '}'
+;
+
+/* material { [MATERIAL_IDENTIFIER] texture {...} interior {...} } */
+material:
+  T_MATERIAL '{' material_body '}'  { $$ = $3; }
+;
+
+material_body:
+  %empty               { TRY($$ = zr__sdl_material_new(p, NULL)); }
+| T_MATERIAL_ID        { TRY($$ = zr__sdl_material_new(p, $1.ptr)); }
+| material_body texture
+    { TRY(zr__sdl_material_texture(p, $1, $2)); $$ = $1; }
+| material_body interior  { $1->interior = $2; $$ = $1; }
+| material_body transform
+    { TRY(zr__sdl_material_transform(p, $1, $2)); $$ = $1; }
 ;
 
 interior_head:
@@ -1325,6 +2102,29 @@ interior_body:
   interior_head
 | interior_body T_IOR expr
     { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->ior)); $$ = $1; }
+| interior_body T_FADE_DISTANCE expr
+    { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->fade_distance)); $$ = $1; }
+/* Dispersion splits refracted light into a spectrum; zRcube refracts
+   with the mean ior and says so (glass.inc declares such interiors even
+   in scenes that never use them). */
+| interior_body T_DISPERSION expr
+    {
+      zr__sdl_warning(p, &@2, "'dispersion' is not rendered yet: "
+                              "refraction uses the mean ior");
+      $$ = $1;
+    }
+| interior_body T_DISPERSION_SAMPLES expr  { $$ = $1; }
+| interior_body T_CAUSTICS expr
+    {
+      zr__sdl_warning(p, &@2, "'caustics' is not rendered yet: shadows "
+                              "through the object have no fake "
+                              "caustics");
+      $$ = $1;
+    }
+| interior_body T_FADE_POWER expr
+    { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->fade_power)); $$ = $1; }
+| interior_body T_FADE_COLOUR colour_value
+    { TRY(zr__sdl_want_rgb(p, &$3, &@3, &$1->fade_colour)); $$ = $1; }
 ;
 
 /* ---- camera, lights, background, global settings ---- */
@@ -1336,21 +2136,62 @@ camera:
 camera_body:
   T_CAMERA '{'         { zr__sdl_camera_begin(p, &@1); }
 | camera_body T_PERSPECTIVE
+    { TRY(zr__sdl_camera_type(p, ZR_CAMERA_PERSPECTIVE, NULL, &@2)); }
+| camera_body T_ORTHOGRAPHIC
+    { TRY(zr__sdl_camera_type(p, ZR_CAMERA_ORTHOGRAPHIC, NULL, &@2)); }
+| camera_body T_FISHEYE
+    { TRY(zr__sdl_camera_type(p, ZR_CAMERA_FISHEYE, NULL, &@2)); }
+| camera_body T_ULTRA_WIDE_ANGLE
+    { TRY(zr__sdl_camera_type(p, ZR_CAMERA_ULTRA_WIDE_ANGLE, NULL, &@2)); }
+| camera_body T_OMNIMAX
+    { TRY(zr__sdl_camera_type(p, ZR_CAMERA_OMNIMAX, NULL, &@2)); }
+| camera_body T_PANORAMIC
+    { TRY(zr__sdl_camera_type(p, ZR_CAMERA_PANORAMIC, NULL, &@2)); }
+| camera_body T_SPHERICAL
+    { TRY(zr__sdl_camera_type(p, ZR_CAMERA_SPHERICAL, NULL, &@2)); }
+| camera_body T_CYLINDER expr
+    { TRY(zr__sdl_camera_type(p, ZR_CAMERA_CYLINDER, &$3, &@3)); }
+| camera_body T_APERTURE expr
+    { TRY(zr__sdl_want_float(p, &$3, &@3, &CAMERA->aperture)); }
+| camera_body T_BLUR_SAMPLES expr
+    { TRY(zr__sdl_camera_blur_samples(p, NULL, &$3, &@3)); }
+| camera_body T_BLUR_SAMPLES expr ',' expr
+    { TRY(zr__sdl_camera_blur_samples(p, &$3, &$5, &@5)); }
+| camera_body T_FOCAL_POINT expr
+    { TRY(zr__sdl_want_vector(p, &$3, &@3, &CAMERA->focal_point)); }
+| camera_body T_CONFIDENCE expr
+    { TRY(zr__sdl_want_float(p, &$3, &@3, &CAMERA->confidence)); }
+| camera_body T_VARIANCE expr
+    { TRY(zr__sdl_want_float(p, &$3, &@3, &CAMERA->variance)); }
+| camera_body normal   { CAMERA->normal = $2; }
 | camera_body T_LOCATION expr
     { TRY(zr__sdl_want_vector(p, &$3, &@3, &CAMERA->location)); }
 | camera_body T_DIRECTION expr
     { TRY(zr__sdl_want_vector(p, &$3, &@3, &CAMERA->direction)); }
 | camera_body T_UP expr
-    { TRY(zr__sdl_want_vector(p, &$3, &@3, &CAMERA->up)); }
+    {
+      TRY(zr__sdl_want_vector(p, &$3, &@3, &CAMERA->up));
+      p->camera.up_given = true;
+    }
 | camera_body T_RIGHT expr
-    { TRY(zr__sdl_want_vector(p, &$3, &@3, &CAMERA->right)); }
+    {
+      TRY(zr__sdl_want_vector(p, &$3, &@3, &CAMERA->right));
+      p->camera.right_given = true;
+    }
 | camera_body T_SKY expr
     { TRY(zr__sdl_want_vector(p, &$3, &@3, &CAMERA->sky)); }
 | camera_body T_ANGLE expr
     {
       double degrees;
       TRY(zr__sdl_want_float(p, &$3, &@3, &degrees));
-      TRY(zr__sdl_camera_angle(p, degrees, &@3));
+      TRY(zr__sdl_camera_angle(p, degrees, NULL, &@3));
+    }
+| camera_body T_ANGLE expr ',' expr
+    {
+      double h, v;
+      TRY(zr__sdl_want_float(p, &$3, &@3, &h));
+      TRY(zr__sdl_want_float(p, &$5, &@5, &v));
+      TRY(zr__sdl_camera_angle(p, h, &v, &@3));
     }
 | camera_body T_LOOK_AT expr
     {
@@ -1363,13 +2204,7 @@ camera_body:
 ;
 
 light:
-  light_body '}'
-    {
-      if (zr__scene_add_light(p->scene, $1) != ZR_OK) {
-        zr__sdl_error(p, ZR_ENOMEM, &@1, "out of memory");
-        YYABORT;
-      }
-    }
+  light_body '}'       { TRY(zr__sdl_light_end(p, $1, &@1)); }
 ;
 
 light_body:
@@ -1382,12 +2217,130 @@ light_body:
     }
 | light_body T_SHADOWLESS  { $1->shadowless = true; $$ = $1; }
 | light_body transform
-    { $1->location = zr__xform_point($2->m, $1->location); $$ = $1; }
+    { zr__sdl_light_transform(p, $1, $2); $$ = $1; }
+| light_body T_SPOTLIGHT
+    { zr__sdl_light_kind(p, $1, ZR_LIGHT_SPOT); $$ = $1; }
+| light_body T_CYLINDER
+    { zr__sdl_light_kind(p, $1, ZR_LIGHT_CYLINDER); $$ = $1; }
+| light_body T_PARALLEL     { $1->parallel = true; $$ = $1; }
+| light_body T_POINT_AT expr
+    { TRY(zr__sdl_want_vector(p, &$3, &@3, &$1->point_at)); $$ = $1; }
+| light_body T_RADIUS expr
+    { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->radius)); $$ = $1; }
+| light_body T_FALLOFF expr
+    { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->falloff)); $$ = $1; }
+| light_body T_TIGHTNESS expr
+    { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->tightness)); $$ = $1; }
+| light_body T_FADE_DISTANCE expr
+    { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->fade_distance)); $$ = $1; }
+| light_body T_FADE_POWER expr
+    { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->fade_power)); $$ = $1; }
+| light_body T_AREA_LIGHT expr comma expr comma expr comma expr
+    {
+      zr_sdl_expr e[4] = {$3, $5, $7, $9};
+      zr_sdl_loc at[4] = {@3, @5, @7, @9};
+      TRY(zr__sdl_area_light(p, $1, e, at));
+      $$ = $1;
+    }
+| light_body T_ADAPTIVE expr
+    { TRY(zr__sdl_light_int(p, &$3, &@3, 0, &$1->adaptive)); $$ = $1; }
+| light_body T_JITTER       { $1->jitter = true; $$ = $1; }
+| light_body T_CIRCULAR     { $1->circular = true; $$ = $1; }
+| light_body T_ORIENT       { $1->orient = true; $$ = $1; }
+| light_body T_AREA_ILLUMINATION
+    { $1->area_illumination = true; $$ = $1; }
+| light_body T_AREA_ILLUMINATION expr
+    { TRY(zr__sdl_light_bool(p, &$3, &@3, &$1->area_illumination)); $$ = $1; }
+| light_body T_MEDIA_INTERACTION
+    { $1->media_interaction = true; $$ = $1; }
+| light_body T_MEDIA_INTERACTION expr
+    { TRY(zr__sdl_light_bool(p, &$3, &@3, &$1->media_interaction)); $$ = $1; }
+| light_body T_MEDIA_ATTENUATION
+    { $1->media_attenuation = true; $$ = $1; }
+| light_body T_MEDIA_ATTENUATION expr
+    { TRY(zr__sdl_light_bool(p, &$3, &@3, &$1->media_attenuation)); $$ = $1; }
+| light_body T_LOOKS_LIKE '{' object '}'
+    { TRY(zr__sdl_looks_like(p, $1, $4, &@4)); $$ = $1; }
 ;
 
 background:
   T_BACKGROUND '{' colour_value '}'
     { TRY(zr__sdl_want_colour(p, &$3, &@3, &SETTINGS->background)); }
+;
+
+/* fog { } ("Fog"): items in any order; the colour is any colour. */
+fog_body:
+  T_FOG '{'            { TRY($$ = zr__sdl_fog_new(p, &@1)); }
+| fog_body T_FOG_TYPE expr
+    { TRY(zr__sdl_fog_type(p, $1, &$3, &@3)); $$ = $1; }
+| fog_body T_DISTANCE expr
+    { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->distance)); $$ = $1; }
+/* The colour, item by item: "color" alone only marks it, so "color
+   Gray rgbt 0.5" and "rgb 1 transmit 0.2" read without ambiguity. */
+| fog_body T_COLOUR    { $$ = $1; }
+| fog_body T_COLOUR '<' list '>'
+    {
+      zr_sdl_expr e;
+      TRY(zr__sdl_from_list(p, &$4, &@4, &e));
+      TRY(zr__sdl_want_colour(p, &e, &@4, &$1->colour));
+      $$ = $1;
+    }
+| fog_body T_COLOUR_ID
+    { TRY(zr__sdl_want_colour(p, &$2.num, &@2, &$1->colour)); $$ = $1; }
+| fog_body colour_item
+    { TRY(zr__sdl_colour_item_to(p, &$2, &$1->colour)); $$ = $1; }
+| fog_body T_TURBULENCE expr
+    { TRY(zr__sdl_want_vector(p, &$3, &@3, &$1->turbulence)); $$ = $1; }
+| fog_body T_OCTAVES expr
+    { TRY(zr__sdl_light_int(p, &$3, &@3, 1, &$1->octaves)); $$ = $1; }
+| fog_body T_OMEGA expr
+    { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->omega)); $$ = $1; }
+| fog_body T_LAMBDA expr
+    { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->lambda)); $$ = $1; }
+| fog_body T_TURB_DEPTH expr
+    { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->turb_depth)); $$ = $1; }
+| fog_body T_FOG_OFFSET expr
+    { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->offset)); $$ = $1; }
+| fog_body T_FOG_ALT expr
+    { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->alt)); $$ = $1; }
+| fog_body T_UP expr
+    { TRY(zr__sdl_want_vector(p, &$3, &@3, &$1->up)); $$ = $1; }
+| fog_body transform
+    { TRY(zr__sdl_fog_transform(p, $1, $2)); $$ = $1; }
+;
+
+/* sky_sphere { pigment... [emission C] [transforms] } */
+sky_body:
+  T_SKY_SPHERE '{'     { TRY($$ = zr__sdl_sky_new(p, NULL)); }
+| T_SKY_SPHERE '{' T_SKY_SPHERE_ID
+    { TRY($$ = zr__sdl_sky_new(p, $3.ptr)); }
+| sky_body pigment     { TRY(zr__sdl_sky_pigment(p, $1, $2)); $$ = $1; }
+| sky_body T_EMISSION colour_value
+    { TRY(zr__sdl_want_rgb(p, &$3, &@3, &$1->emission)); $$ = $1; }
+| sky_body transform
+    { TRY(zr__sdl_sky_transform(p, $1, $2)); $$ = $1; }
+;
+
+/* rainbow { direction angle width distance color_map ... } */
+rainbow_body:
+  T_RAINBOW '{'        { TRY($$ = zr__sdl_rainbow_new(p)); }
+| rainbow_body T_DIRECTION expr
+    { TRY(zr__sdl_want_vector(p, &$3, &@3, &$1->direction)); $$ = $1; }
+| rainbow_body T_ANGLE expr
+    { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->angle)); $$ = $1; }
+| rainbow_body T_WIDTH expr
+    { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->width)); $$ = $1; }
+| rainbow_body T_DISTANCE expr
+    { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->distance)); $$ = $1; }
+| rainbow_body T_JITTER expr
+    { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->jitter)); $$ = $1; }
+| rainbow_body T_UP expr
+    { TRY(zr__sdl_want_vector(p, &$3, &@3, &$1->up)); $$ = $1; }
+| rainbow_body T_ARC_ANGLE expr
+    { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->arc_angle)); $$ = $1; }
+| rainbow_body T_FALLOFF_ANGLE expr
+    { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->falloff_angle)); $$ = $1; }
+| rainbow_body colour_map  { $1->colour_map = $2; $$ = $1; }
 ;
 
 global_settings:
@@ -1414,14 +2367,80 @@ global_body:
       TRY(zr__sdl_want_float(p, &$3, &@3, &SETTINGS->assumed_gamma));
       SETTINGS->assumed_gamma_given = true;
     }
+| global_body T_NUMBER_OF_WAVES expr
+    {
+      double n;
+      TRY(zr__sdl_want_float(p, &$3, &@3, &n));
+      if (n < 1) {
+        zr__sdl_error(p, ZR_ESCENE, &@3,
+                      "number_of_waves must be at least 1");
+        YYABORT;
+      }
+      SETTINGS->number_of_waves = (int)n;
+    }
+/* Every noise generator is our one noise (lib/scene/pattern.c). */
+| global_body T_NOISE_GENERATOR expr
+    {
+      double g;
+      TRY(zr__sdl_want_float(p, &$3, &@3, &g));
+      if (g != 1 && g != 2 && g != 3) {
+        zr__sdl_error(p, ZR_ESCENE, &@3,
+                      "noise_generator must be 1, 2 or 3");
+        YYABORT;
+      }
+    }
 | global_body T_AMBIENT_LIGHT colour_value
     { TRY(zr__sdl_want_rgb(p, &$3, &@3, &SETTINGS->ambient_light)); }
+| global_body radiosity_body '}'
+    { zr__sdl_radiosity_end(p, &@3); }
+;
+
+/* global_settings { radiosity { ... } }; the items' meaning here is in
+   lib/sdl/build_radiosity.c and zrcube(1). */
+radiosity_body:
+  T_RADIOSITY '{'
+    { zr__sdl_radiosity_begin(p); }
+| radiosity_body rad_kw
+    { TRY(zr__sdl_radiosity_item(p, $2, NULL, NULL, &@2)); }
+| radiosity_body rad_kw expr
+    { TRY(zr__sdl_radiosity_item(p, $2, &$3, NULL, &@3)); }
+| radiosity_body rad_kw expr ',' expr
+    { TRY(zr__sdl_radiosity_item(p, $2, &$3, &$5, &@5)); }
+| radiosity_body T_SAVE_FILE str_expr
+    { zr__sdl_radiosity_file(p, T_SAVE_FILE, &@2); }
+| radiosity_body T_LOAD_FILE str_expr
+    { zr__sdl_radiosity_file(p, T_LOAD_FILE, &@2); }
+;
+
+rad_kw:
+  T_ADC_BAILOUT         { $$ = T_ADC_BAILOUT; }
+| T_ALWAYS_SAMPLE       { $$ = T_ALWAYS_SAMPLE; }
+| T_BRIGHTNESS          { $$ = T_BRIGHTNESS; }
+| T_COUNT               { $$ = T_COUNT; }
+| T_ERROR_BOUND         { $$ = T_ERROR_BOUND; }
+| T_GRAY_THRESHOLD      { $$ = T_GRAY_THRESHOLD; }
+| T_LOW_ERROR_FACTOR    { $$ = T_LOW_ERROR_FACTOR; }
+| T_MAX_SAMPLE          { $$ = T_MAX_SAMPLE; }
+| T_MAXIMUM_REUSE       { $$ = T_MAXIMUM_REUSE; }
+| T_MEDIA               { $$ = T_MEDIA; }
+| T_MINIMUM_REUSE       { $$ = T_MINIMUM_REUSE; }
+| T_NEAREST_COUNT       { $$ = T_NEAREST_COUNT; }
+| T_NORMAL              { $$ = T_NORMAL; }
+| T_PRETRACE_END        { $$ = T_PRETRACE_END; }
+| T_PRETRACE_START      { $$ = T_PRETRACE_START; }
+| T_RECURSION_LIMIT     { $$ = T_RECURSION_LIMIT; }
+| T_SUBSURFACE          { $$ = T_SUBSURFACE; }
+| T_BF_BOUND            { $$ = T_BF_BOUND; }
+| T_MINIMUM_AREA        { $$ = T_MINIMUM_AREA; }
+| T_VISIBILITY_COUNT    { $$ = T_VISIBILITY_COUNT; }
+| T_MAX_ITERATIONS      { $$ = T_MAX_ITERATIONS; }
+| T_RESIDUAL_BOUND      { $$ = T_RESIDUAL_BOUND; }
 ;
 
 %%
 
 /* How many expected tokens a message lists before it gives up. */
-#define MAX_EXPECTED 20
+#define MAX_EXPECTED 32
 
 static int yyreport_syntax_error(const yypcontext_t *yyctx,
                                  zr_sdl_parser *p) {
@@ -1482,6 +2501,8 @@ int zr__pov_lex(ZR__POV_STYPE *lval, zr_sdl_loc *lloc, zr_sdl_parser *p) {
   case T_FUNCTION_ID:
   case T_NORMAL_ID:
   case T_COLOUR_MAP_ID:
+  case T_MATERIAL_ID:
+  case T_SKY_SPHERE_ID:
   case T_STRING_ID:
   case T_ARRAY_ID:
   case T_SEED_ID:

@@ -126,6 +126,16 @@ ZR_API zr_status zr_context_add_include_path(zr_context *ctx, const char *dir);
  */
 ZR_API zr_status zr_context_set_render_size(zr_context *ctx, int width,
                                             int height);
+/*
+ * The most times the #while and #for loops of one parse may repeat
+ * their bodies, all loops together, before the parse stops with
+ * ZR_ELIMIT: a loop whose condition never turns false ends with an
+ * error instead of running forever.  0: no limit.  Default
+ * ZR_DEFAULT_LOOP_LIMIT, about half a minute of the simplest loop.
+ */
+#define ZR_DEFAULT_LOOP_LIMIT 100000000ULL
+ZR_API void zr_context_set_loop_limit(zr_context *ctx,
+                                      unsigned long long iterations);
 /* The message of the last error reported through ctx ("" when none). */
 ZR_API const char *zr_context_last_error(const zr_context *ctx);
 
@@ -151,6 +161,8 @@ typedef struct zr_scene_info {
   size_t finite_primitives;
   size_t infinite_primitives; /* planes and the like, kept out of the BVH */
   int has_camera;
+  /* global_settings { radiosity { } }: the scene asks for radiosity */
+  int has_radiosity;
 } zr_scene_info;
 
 ZR_API void zr_scene_get_info(const zr_scene *scene, zr_scene_info *info);
@@ -197,10 +209,23 @@ typedef struct zr_radiosity_params {
      normal (for a triangle (p1 - p0) x (p2 - p0)), so a lamp hung
      just under a ceiling does not pour light into the gap. */
   int one_sided_emission;
+  /* How a ray hit reads the solution.  0 (default): a final gather at
+     the hit point over the links its element and the element's
+     ancestors gather from, each with the exact point-to-source form
+     factor, so the picture has no element seams; 1: the elements'
+     values smoothed over their corners (Gouraud), cheaper per pixel.
+     A saved solution keeps its links and its lookup. */
+  int lookup;
+  /* POV-Ray's radiosity { brightness }: scales the diffuse light the
+     solution carries between surfaces where a ray reads it (not the
+     surfaces' own emission, not the solve); default 1. */
+  double brightness;
 } zr_radiosity_params;
 
-/* Fills p with the defaults above (scene may be NULL; it has no
-   radiosity settings of its own yet). */
+/* Fills p with the defaults above, then takes the settings of the
+   scene's global_settings { radiosity { } } block (scene may be NULL):
+   brightness, bf_bound, minimum_area, visibility_count, max_iterations
+   and residual_bound (zrcube(1), "Radiosity settings"). */
 ZR_API void zr_radiosity_params_init(zr_radiosity_params *p,
                                      const zr_scene *scene);
 

@@ -4,21 +4,39 @@
 scenesdir = $(pkgdatadir)/scenes
 EXTRA_DIST += scenes/README.md
 dist_scenes_DATA = \
+	scenes/blob.pov \
 	scenes/camera.pov \
+	scenes/cornell.pov \
+	scenes/csg_difference.pov \
 	scenes/csg_union.pov \
 	scenes/default.pov \
 	scenes/default.ref.pov \
 	scenes/expressions.pov \
 	scenes/gamma.pov \
+	scenes/lathe.pov \
+	scenes/layered.pov \
+	scenes/maps.pov \
+	scenes/mesh.pov \
 	scenes/metallic.pov \
 	scenes/phong.pov \
+	scenes/polygon.pov \
 	scenes/patterns.pov \
 	scenes/primitives.pov \
+	scenes/quadric.pov \
+	scenes/prism.pov \
 	scenes/reflection.pov \
 	scenes/refraction.pov \
 	scenes/shadows.pov \
+	scenes/sor.pov \
 	scenes/specular.pov \
+	scenes/superellipsoid.pov \
+	scenes/text.pov \
 	scenes/tir.pov \
+	scenes/torus.pov \
 	scenes/transforms.pov \
 	scenes/zfor.pov \
+	scenes/lights.pov \
+	scenes/atmosphere.pov \
+	scenes/fisheye.pov \
+	scenes/ortho.pov \
 	scenes/zfor.ref.pov

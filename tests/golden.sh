@@ -14,6 +14,8 @@
 #   ZR_SRCDIR, ZR_BUILDDIR  source and build trees (default: this script's
 #                           tree and its build/)
 #   GOLDEN_SCENES           names to run instead of all ("phong tir")
+#   (a scene whose first line is "// golden: skip WHY" is left out of
+#   "all": it has a test of its own)
 #   GOLDEN_KEEP             a directory to keep zRcube's renders in
 #   GOLDEN_SSIM_MIN         threshold (default 0.98)
 #   GOLDEN_DELTA_MAX        threshold (default 0.05)
@@ -60,8 +62,13 @@ mkdir -p "$out_dir" || exit 99
 if [ -n "${GOLDEN_SCENES:-}" ]; then
   names=$GOLDEN_SCENES
 else
+  # A scene whose first line is "// golden: skip WHY" has its own test
+  # (scenes/cornell.pov: tests/test_cornell_truth.sh).
   names=$(cd "$srcdir/scenes" && ls *.pov | grep -v '\.ref\.pov$' |
-          sed 's/\.pov$//')
+          while read -r f; do
+            head -n 1 "$f" | grep -q '^// golden: skip' ||
+              echo "${f%.pov}"
+          done)
   # A reference without its scene is a leftover that tests nothing.
   for ref in "$srcdir"/tests/ref/*.png; do
     name=$(basename "$ref" .png)

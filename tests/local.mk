@@ -18,20 +18,37 @@ tests_imgcmp_LDADD = lib/libzrcube.la -lm
 
 TESTS += tests/golden.sh
 EXTRA_DIST += tests/golden.sh tests/ref/README.md tests/ref/make-refs.sh \
+	tests/ref/blob.png \
 	tests/ref/camera.png \
+	tests/ref/lights.png \
+	tests/ref/atmosphere.png \
+	tests/ref/fisheye.png \
+	tests/ref/ortho.png \
+	tests/ref/csg_difference.png \
 	tests/ref/csg_union.png \
 	tests/ref/default.png \
 	tests/ref/expressions.png \
 	tests/ref/gamma.png \
+	tests/ref/lathe.png \
+	tests/ref/layered.png \
+	tests/ref/maps.png \
+	tests/ref/mesh.png \
 	tests/ref/metallic.png \
 	tests/ref/patterns.png \
 	tests/ref/phong.png \
+	tests/ref/polygon.png \
 	tests/ref/primitives.png \
+	tests/ref/quadric.png \
+	tests/ref/prism.png \
 	tests/ref/reflection.png \
 	tests/ref/refraction.png \
 	tests/ref/shadows.png \
+	tests/ref/sor.png \
 	tests/ref/specular.png \
+	tests/ref/superellipsoid.png \
+	tests/ref/text.png \
 	tests/ref/tir.png \
+	tests/ref/torus.png \
 	tests/ref/transforms.png \
 	tests/ref/zfor.png
 

@@ -32,8 +32,14 @@ ZR_API zr_status zr_context_new(zr_context **out) {
   zr_context *ctx = calloc(1, sizeof *ctx);
   if (!ctx)
     return ZR_ENOMEM;
+  ctx->loop_limit = ZR_DEFAULT_LOOP_LIMIT;
   *out = ctx;
   return ZR_OK;
+}
+
+ZR_API void zr_context_set_loop_limit(zr_context *ctx,
+                                      unsigned long long iterations) {
+  ctx->loop_limit = iterations;
 }
 
 ZR_API void zr_context_free(zr_context *ctx) {

@@ -19,6 +19,7 @@ struct zr_context {
   char **include_paths;
   size_t n_include_paths;
   int render_width, render_height; /* 0 until set: the parser's defaults */
+  unsigned long long loop_limit;   /* 0: none */
   char last_error[1024];
   unsigned errors;   /* errors reported so far */
   unsigned warnings; /* warnings reported so far */

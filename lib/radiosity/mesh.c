@@ -179,6 +179,30 @@ static void surface_light(zr__rad_surface *s, const zr_object *o,
   }
 }
 
+/* finish { energy P } (lib/sdl/build_radiosity.c): the object emits P
+   in all from the sides that emit, so each such side of its surfaces
+   gets exitance P / (area * sides) on top of its emission. */
+static void add_energy(zr_radiosity *rad, const zr__rad_object_entry *e,
+                       bool one_sided) {
+  zr_rgb P = e->object->texture->finish->energy;
+  double pw[3] = {P.r, P.g, P.b};
+  if (!(zr__rad_max3(pw) > 0.0))
+    return;
+  double area = 0.0;
+  for (uint32_t i = 0; i < e->count; i++)
+    area += rad->surfs[e->first + i].area;
+  if (!(area > 0.0))
+    return;
+  int sides = one_sided ? 1 : 2;
+  for (uint32_t i = 0; i < e->count; i++) {
+    zr__rad_surface *s = &rad->surfs[e->first + i];
+    for (int c = 0; c < 3; c++)
+      for (int side = 0; side < sides; side++)
+        s->emission[side][c] += pw[c] / (area * sides);
+  }
+  rad->power_ref += zr__rad_max3(pw);
+}
+
 static int entry_cmp(const void *a, const void *b) {
   uintptr_t x = (uintptr_t)((const zr__rad_object_entry *)a)->object;
   uintptr_t y = (uintptr_t)((const zr__rad_object_entry *)b)->object;
@@ -221,6 +245,7 @@ static zr_status add_primitive(zr_radiosity *rad, zr_context *ctx,
     rad->power_ref += zr__rad_max3(p);
     rad->n_surfs++;
   }
+  add_energy(rad, e, rad->params.one_sided_emission != 0);
   if (clamped)
     zr__diag(ctx, ZR_DIAG_WARNING, ZR_OK, &where,
              "radiosity: diffuse times pigment exceeds 1 and would create "

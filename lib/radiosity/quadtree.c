@@ -326,6 +326,9 @@ void zr__rad_free_arrays(zr_radiosity *rad) {
   free(rad->vhash);
   free(rad->surfs);
   free(rad->objects);
+  free(rad->recv_start);
+  free(rad->recv_links);
+  rad->recv_start = rad->recv_links = NULL;
   rad->nodes = NULL;
   rad->links = NULL;
   rad->verts = NULL;

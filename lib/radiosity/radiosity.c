@@ -19,8 +19,15 @@
  * Lookup.  A hit gives the object and the world point; the object's
  * surfaces (a box has six) each invert the point to (u,v)
  * (zr__surface_locate) and the one whose S(u,v) lies closest holds it.
- * The leaf there interpolates its smoothed corner values bilinearly
- * (quadtree.c), from the side the ray arrives on.  The result is a
+ * By default the radiance there is a final gather (the "local pass" of
+ * hierarchical radiosity renderers, e.g. Lischinski, Tampieri and
+ * Greenberg 1993; Smits, Arvo and Greenberg 1994): the links that the
+ * leaf and its ancestors gather from are evaluated again from the point
+ * itself, with the exact point-to-polygon factor, the source's solved
+ * radiosity (its children's where the point is near it) and, for
+ * emitters and partly hidden sources, the point's own visibility.  On
+ * the Cornell box this halves the error of reading the elements'
+ * smoothed corner values (lookup 1, quadtree.c).  The result is a
  * radiance, B / pi.
  */
 #include "radiosity/radiosity.h"
@@ -28,9 +35,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "radiosity/formfactor.h"
+
 ZR_API void zr_radiosity_params_init(zr_radiosity_params *p,
                                      const zr_scene *scene) {
-  (void)scene; /* no radiosity block in the scene model yet */
   memset(p, 0, sizeof *p);
   p->bf_eps = 1e-4;
   p->area_eps = 1e-4;
@@ -40,6 +48,23 @@ ZR_API void zr_radiosity_params_init(zr_radiosity_params *p,
   p->refine_rounds = 6;
   p->uniform = 0;
   p->shooting = 0;
+  p->brightness = 1.0;
+  if (scene == NULL)
+    return;
+  /* The scene's radiosity block (lib/sdl/build_radiosity.c): zRcube's
+     items are 0 when not written, and the parser checked their range. */
+  const zr_radiosity_settings *r = &scene->settings.radiosity;
+  p->brightness = r->brightness;
+  if (r->bf_eps > 0.0)
+    p->bf_eps = r->bf_eps;
+  if (r->area_eps > 0.0)
+    p->area_eps = r->area_eps;
+  if (r->residual > 0.0)
+    p->residual = r->residual;
+  if (r->visibility_rays > 0)
+    p->visibility_rays = r->visibility_rays;
+  if (r->max_iterations > 0)
+    p->max_iterations = r->max_iterations;
 }
 
 static zr_status check_params(zr_context *ctx, const zr_radiosity_params *p) {
@@ -60,6 +85,10 @@ static zr_status check_params(zr_context *ctx, const zr_radiosity_params *p) {
     what = "uniform must be 0 to 10";
   else if (p->criterion < 0 || p->criterion > 1)
     what = "criterion must be 0 (BF) or 1 (error estimate)";
+  else if (p->lookup < 0 || p->lookup > 1)
+    what = "lookup must be 0 (final gather) or 1 (smoothed elements)";
+  else if (!(p->brightness >= 0.0) || !isfinite(p->brightness))
+    what = "brightness must be a finite number >= 0";
   if (what == NULL)
     return ZR_OK;
   return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, NULL, "radiosity: %s",
@@ -175,7 +204,35 @@ ZR_API zr_status zr_radiosity_solve(zr_context *ctx, const zr_scene *scene,
   zr__rad_smooth(rad);
   zr__rad_count(rad);
   rad->stats.links = rad->n_links;
+  if (rad->params.lookup == 0 && zr__rad_index_links(rad) != ZR_OK) {
+    zr_radiosity_free(rad);
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL,
+                    "radiosity: out of memory indexing links");
+  }
   *out = rad;
+  return ZR_OK;
+}
+
+zr_status zr__rad_index_links(zr_radiosity *rad) {
+  free(rad->recv_start);
+  free(rad->recv_links);
+  rad->recv_start = calloc(rad->n_nodes + 2, sizeof *rad->recv_start);
+  rad->recv_links = malloc((rad->n_links + 1) * sizeof *rad->recv_links);
+  if (rad->recv_start == NULL || rad->recv_links == NULL) {
+    free(rad->recv_start);
+    free(rad->recv_links);
+    rad->recv_start = rad->recv_links = NULL;
+    return ZR_ENOMEM;
+  }
+  /* A counting sort by receiver; links keep their order within one
+     receiver, so the sums of a gather are the same on every run. */
+  uint32_t *start = rad->recv_start;
+  for (size_t i = 0; i < rad->n_links; i++)
+    start[rad->links[i].recv + 2]++;
+  for (size_t n = 2; n < rad->n_nodes + 2; n++)
+    start[n] += start[n - 1];
+  for (size_t i = 0; i < rad->n_links; i++)
+    rad->recv_links[start[rad->links[i].recv + 1]++] = (uint32_t)i;
   return ZR_OK;
 }
 
@@ -216,6 +273,111 @@ static size_t nearest_surface(const zr_radiosity *rad,
   return found;
 }
 
+/*
+ * The final gather: the incident radiosity H (irradiance / pi) at point,
+ * normal n (the side's), over every link that the leaf and its
+ * ancestors gather from on that side.  Each link's source is taken at
+ * its mean radiosity, as the solution has it, but its form factor is the
+ * exact one from this point (Lambert's contour formula over the source
+ * cell's boundary), not the receiver's mean: the picture then follows
+ * the light's variation inside an element and across the edges of
+ * surfaces, where the elements' constant values show seams.  A link
+ * that is partly occluded (a shadow's edge runs through it) gets its
+ * visibility from this point too (point_visibility), so shadows are as
+ * sharp as the sources are small; a fully visible link keeps 1.  A self
+ * link (inside a curved surface) keeps its mean factor.
+ */
+/*
+ * The visible fraction of source node q's side sside from point (normal
+ * n, the receiving side's): k x k rays to the centres of a k x k grid
+ * of the source's cell, as the link's own estimate but from this point
+ * alone.  Points facing away on either end do not count, as in
+ * refine.c.  The grid is the same for every point, so a penumbra varies
+ * smoothly (in k^2 steps) instead of showing noise, which would also
+ * make adaptive antialiasing take more samples.
+ */
+static double point_visibility(const zr_radiosity *rad,
+                               const zr__rad_node *q, int sside,
+                               zr_vec3 point, zr_vec3 n) {
+  int k = rad->params.visibility_rays, open = 0, cast = 0;
+  double eps = 1e-7 * sqrt(rad->total_area);
+  double cell[4];
+  zr__rad_node_cell(q, cell);
+  zr_vec3 from = zr_v3_madd(point, n, eps);
+  for (int i = 0; i < k * k; i++) {
+    zr__surface_point pt;
+    zr__surface_eval(&rad->surfs[q->surf].geom,
+                     cell[0] + (i % k + 0.5) / k * (cell[1] - cell[0]),
+                     cell[2] + (i / k + 0.5) / k * (cell[3] - cell[2]), &pt);
+    zr_vec3 qn = sside ? zr_v3_neg(pt.n) : pt.n;
+    zr_vec3 to = zr_v3_madd(pt.p, qn, eps);
+    zr_vec3 d = zr_v3_sub(to, from);
+    if (!(zr_v3_dot(d, n) > 0.0 && zr_v3_dot(d, qn) < 0.0))
+      continue;
+    cast++;
+    if (!zr__rad_occluded(rad, from, to))
+      open++;
+  }
+  return cast > 0 ? (double)open / cast : 0.0;
+}
+
+/* Adds source node q's (side sside) light at point to h: the exact
+   factor from the point times the node's mean radiosity, or, when the
+   point is closer to q than twice q's size and q has children, the sum
+   over the children, whose values say how the light varies inside q (a
+   wall's radiosity falls towards the corner where it meets the wall
+   holding the point).  vis: the link's visible fraction; below 1, or
+   with per_point set, the point's own visibility replaces it. */
+static void gather_source(const zr_radiosity *rad, int32_t qi, int sside,
+                          zr_vec3 point, zr_vec3 n, double vis,
+                          bool per_point, double h[3]) {
+  const zr__rad_node *q = &rad->nodes[qi];
+  if (q->child >= 0) {
+    zr_vec3 d = zr_v3_sub(q->centre, point);
+    if (zr_v3_dot(d, d) < 4.0 * q->area) {
+      for (int k = 0; k < 4; k++)
+        gather_source(rad, q->child + k, sside, point, n, vis, per_point,
+                      h);
+      return;
+    }
+  }
+  zr_vec3 poly[4 * ZR__FF_MAX_SEGS];
+  double sc[4];
+  zr__rad_node_cell(q, sc);
+  size_t nv = zr__surface_patch_polygon(&rad->surfs[q->surf].geom, sc[0],
+                                        sc[1], sc[2], sc[3], 16, poly,
+                                        4 * ZR__FF_MAX_SEGS);
+  double f = zr__ff_point_polygon(point, n, poly, nv);
+  if (!(f > 0.0))
+    return;
+  f *= per_point || vis < 1.0 ? point_visibility(rad, q, sside, point, n)
+                              : vis;
+  for (int c = 0; c < 3; c++)
+    h[c] += f * q->b[sside][c];
+}
+
+static void final_gather(const zr_radiosity *rad, int32_t leaf, int side,
+                         zr_vec3 point, zr_vec3 n, double h[3]) {
+  h[0] = h[1] = h[2] = 0.0;
+  for (int32_t a = leaf; a >= 0; a = rad->nodes[a].parent)
+    for (uint32_t k = rad->recv_start[a]; k < rad->recv_start[a + 1]; k++) {
+      const zr__rad_link *l = &rad->links[rad->recv_links[k]];
+      if (l->rside != side)
+        continue;
+      const zr__rad_node *q = &rad->nodes[l->src];
+      if (l->src == l->recv) {
+        for (int c = 0; c < 3; c++)
+          h[c] += l->ff * q->b[l->sside][c];
+        continue;
+      }
+      /* Light straight from an emitter is where shadows are sharpest:
+         every point tests its own visibility. */
+      bool emitter = zr__rad_max3(rad->surfs[q->surf].emission[l->sside]) >
+                     0.0;
+      gather_source(rad, l->src, l->sside, point, n, l->vis, emitter, h);
+    }
+}
+
 bool zr__radiosity_radiance(const zr_radiosity *rad, const zr_object *object,
                             zr_vec3 point, zr_vec3 dir, zr_rgb *out) {
   *out = zr_rgb3(0.0, 0.0, 0.0);
@@ -228,7 +390,21 @@ bool zr__radiosity_radiance(const zr_radiosity *rad, const zr_object *object,
   int side = zr_v3_dot(dir, n) > 0.0; /* arriving from behind: back */
   int32_t leaf = zr__rad_leaf_at(rad, (int32_t)s, u, v);
   double b[3];
-  zr__rad_interpolate(rad, leaf, side, u, v, b);
+  if (rad->recv_start != NULL) {
+    const zr__rad_surface *surf = &rad->surfs[s];
+    double h[3];
+    final_gather(rad, leaf, side, point, side ? zr_v3_neg(n) : n, h);
+    for (int c = 0; c < 3; c++)
+      b[c] = surf->emission[side][c] +
+             rad->params.brightness * surf->rho[c] * h[c];
+  } else {
+    zr__rad_interpolate(rad, leaf, side, u, v, b);
+    /* brightness scales the reflected part only, as in POV-Ray: the
+       surface's own emission is constant over it. */
+    const double *e = rad->surfs[s].emission[side];
+    for (int c = 0; c < 3; c++)
+      b[c] = e[c] + rad->params.brightness * (b[c] - e[c]);
+  }
   *out = zr_rgb3(fmax(0.0, b[0]) / M_PI, fmax(0.0, b[1]) / M_PI,
                  fmax(0.0, b[2]) / M_PI);
   return true;

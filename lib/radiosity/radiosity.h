@@ -114,6 +114,11 @@ struct zr_radiosity {
   uint32_t *vhash; /* open addressing, vertex index + 1, 0 = empty */
   size_t hash_cap;
 
+  /* The live links by receiver node, for the final gather at a ray
+     hit: links recv_links[recv_start[n] .. recv_start[n + 1]) end at
+     node n.  NULL with lookup 1, which reads no links. */
+  uint32_t *recv_start, *recv_links;
+
   double total_area;   /* of every surface */
   double power_ref;    /* emitted power (largest channel), BF_eps unit */
   double area_eps_abs; /* params.area_eps * total_area */
@@ -152,6 +157,8 @@ zr_status zr__rad_link_all(zr_radiosity *rad);
 zr_status zr__rad_refine_links(zr_radiosity *rad, size_t *changed);
 /* Computes the transfer factors of links not yet final. */
 void zr__rad_finish_links(zr_radiosity *rad);
+/* Whether the segment from..to crosses any surface of the scene. */
+bool zr__rad_occluded(const zr_radiosity *rad, zr_vec3 from, zr_vec3 to);
 /* Drops dead links from the array. */
 void zr__rad_compact_links(zr_radiosity *rad);
 /* Splits every leaf until it is at depth n_levels (uniform mode). */
@@ -178,6 +185,8 @@ zr_status zr__rad_create(zr_context *ctx, const zr_scene *scene,
                          zr_radiosity **out);
 /* Counts nodes, leaves, live links and vertices into rad->stats. */
 void zr__rad_count(zr_radiosity *rad);
+/* Indexes the live links by receiver (recv_start, recv_links). */
+zr_status zr__rad_index_links(zr_radiosity *rad);
 /*
  * The outgoing diffuse radiance of the solution where a ray with
  * direction dir hits object at point: (E + rho H) / pi of the side the

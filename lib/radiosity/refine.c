@@ -517,6 +517,23 @@ static void grid_points(const zr_radiosity *rad, const zr__rad_node *node,
   }
 }
 
+/* Stops a crossing walk at the first crossing. */
+static bool stop_at_first(const zr_hit *hit, void *user) {
+  (void)hit;
+  *(bool *)user = true;
+  return false;
+}
+
+bool zr__rad_occluded(const zr_radiosity *rad, zr_vec3 from, zr_vec3 to) {
+  /* Any crossing will do, so the walk stops at the first one instead of
+     searching for the nearest: a shadow ray's question. */
+  zr_ray ray = {from, zr_v3_sub(to, from)};
+  bool blocked = false;
+  zr__bvh_all(rad->scene->bvh, &ray, 1e-9, 1.0 - 1e-9, stop_at_first,
+              &blocked);
+  return blocked;
+}
+
 /* Whether x (normal nx) and y (normal ny) face each other. */
 static bool facing(zr_vec3 x, zr_vec3 nx, zr_vec3 y, zr_vec3 ny) {
   zr_vec3 d = zr_v3_sub(y, x);
@@ -532,7 +549,6 @@ static bool facing(zr_vec3 x, zr_vec3 nx, zr_vec3 y, zr_vec3 ny) {
  * not run in parallel bundles), or the next one that faces it.
  */
 static double link_visibility(zr_radiosity *rad, const zr__rad_link *l) {
-  const struct zr_bvh *bvh = rad->scene->bvh;
   int k = rad->params.visibility_rays, kk = k * k, open = 0, cast = 0;
   double eps = 1e-7 * sqrt(rad->total_area);
   zr_vec3 xp[256], xn[256], yp[256], yn[256];
@@ -546,10 +562,8 @@ static double link_visibility(zr_radiosity *rad, const zr__rad_link *l) {
     }
     if (tries == kk)
       continue;
-    zr_ray ray = {xp[i], zr_v3_sub(yp[j], xp[i])};
-    zr_hit hit;
     cast++;
-    if (!zr__bvh_nearest(bvh, &ray, 1e-9, 1.0 - 1e-9, &hit))
+    if (!zr__rad_occluded(rad, xp[i], yp[j]))
       open++;
   }
   rad->stats.visibility_rays += (uint64_t)cast;

@@ -10,6 +10,8 @@
  * corners of that box are mapped to world space and boxed again, which is
  * conservative for any affine map.
  *
+ * Meshes and text keep the box of their own geometry (lib/trace), as
+ * do the shapes of lib/trace/obj_shapes.h.
  * Planes and anything marked `inverse` have no finite extent (POV-Ray
  * reference, "Plane" and "Inverse"), so they report false and the BVH
  * keeps them in its list of unbounded primitives.
@@ -17,6 +19,10 @@
 #include "scene/scene.h"
 
 #include <math.h>
+
+#include "trace/obj_mesh.h"
+#include "trace/obj_shapes.h"
+#include "trace/obj_text.h"
 
 /* The half extents along x, y and z of a circle of radius r about the
    unit axis a. */
@@ -73,17 +79,104 @@ static bool local_bounds(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi) {
     add_circle(o->u.disc.centre, zr_v3_norm(o->u.disc.normal),
                fabs(o->u.disc.radius), lo, hi);
     return true;
+  case ZR_OBJ_MESH:
+    /* The box of the mesh's vertices; an empty mesh has none. */
+    *lo = o->u.mesh.data->lo;
+    *hi = o->u.mesh.data->hi;
+    return o->u.mesh.data->n_faces > 0;
+  case ZR_OBJ_TEXT:
+    *lo = o->u.text.data->lo;
+    *hi = o->u.text.data->hi;
+    return o->u.text.data->n_glyphs > 0;
+  case ZR_OBJ_TORUS:
+    zr__torus_bounds(o, lo, hi);
+    return true;
+  case ZR_OBJ_POLYGON:
+    *lo = o->u.polygon.lo;
+    *hi = o->u.polygon.hi;
+    return o->u.polygon.n_edges > 0;
+  case ZR_OBJ_PRISM:
+    zr__prism_bounds(o, lo, hi);
+    return o->u.prism.n_seg > 0;
+  case ZR_OBJ_LATHE:
+    zr__lathe_bounds(o, lo, hi);
+    return o->u.lathe.n_seg > 0;
+  case ZR_OBJ_BLOB:
+    return zr__blob_bounds(o, lo, hi);
+  case ZR_OBJ_SOR:
+    zr__sor_bounds(o, lo, hi);
+    return true;
+  case ZR_OBJ_SUPERELLIPSOID:
+    *lo = zr_v3(-1, -1, -1);
+    *hi = zr_v3(1, 1, 1);
+    return true;
   case ZR_OBJ_PLANE:
+  case ZR_OBJ_QUADRIC: /* infinite unless clipped or intersected */
+  case ZR_OBJ_POLY:
   case ZR_OBJ_UNION:
+  case ZR_OBJ_INTERSECTION:
+  case ZR_OBJ_MERGE:
     return false;
   }
   return false;
 }
 
+/*
+ * An intersection lies in each of its children, so its box is the
+ * overlap of the bounded children's boxes; unbounded ones (inverted
+ * children of a difference, quadrics) add no limit.  A clip limits an
+ * object the same way.
+ */
+static bool overlap_bounds(const zr_object *const *parts, size_t n,
+                           zr_vec3 *lo, zr_vec3 *hi) {
+  bool any = false;
+  zr_vec3 l = zr_v3(-INFINITY, -INFINITY, -INFINITY), h = zr_v3_neg(l);
+  for (size_t i = 0; i < n; i++) {
+    zr_vec3 cl, ch;
+    if (!zr__object_bounds(parts[i], &cl, &ch))
+      continue;
+    l = zr_v3_max(l, cl);
+    h = zr_v3_min(h, ch);
+    any = true;
+  }
+  if (!any)
+    return false;
+  /* Disjoint children leave an empty box: keep it a point, so the BVH
+     still holds the object (it has no surface anyway). */
+  *lo = l;
+  *hi = zr_v3_max(l, h);
+  return true;
+}
+
+static bool unclipped_bounds(const zr_object *object, zr_vec3 *lo,
+                             zr_vec3 *hi);
+
 bool zr__object_bounds(const zr_object *object, zr_vec3 *lo, zr_vec3 *hi) {
+  zr_vec3 l, h, cl, ch;
+  bool bounded = unclipped_bounds(object, &l, &h);
+  if (!object->clip || !zr__object_bounds(object->clip, &cl, &ch)) {
+    *lo = l;
+    *hi = h;
+    return bounded;
+  }
+  if (!bounded) {
+    *lo = cl;
+    *hi = ch;
+    return true;
+  }
+  *lo = zr_v3_max(l, cl);
+  *hi = zr_v3_max(*lo, zr_v3_min(h, ch));
+  return true;
+}
+
+static bool unclipped_bounds(const zr_object *object, zr_vec3 *lo,
+                             zr_vec3 *hi) {
   if (object->inverse)
     return false;
-  if (object->kind == ZR_OBJ_UNION) {
+  if (object->kind == ZR_OBJ_INTERSECTION)
+    return overlap_bounds((const zr_object *const *)object->u.csg.children,
+                          object->u.csg.n_children, lo, hi);
+  if (object->kind == ZR_OBJ_UNION || object->kind == ZR_OBJ_MERGE) {
     /* Unions are flattened before the BVH is built; for completeness a
        union's box is the box of its children's boxes. */
     bool any = false;

@@ -12,3 +12,16 @@ tests_test_pattern_SOURCES = tests/test_pattern.c
 tests_test_pattern_CPPFLAGS = $(TEST_CPPFLAGS)
 tests_test_pattern_LDADD = $(TEST_LDADD)
 tests_test_pattern_LDFLAGS = -static
+
+# TrueType fonts for the text object.
+lib_libzrcube_la_SOURCES += lib/scene/ttf.c lib/scene/ttf.h
+
+# Maps, layered and patterned textures, materials (with lib/sdl/build_texture.c).
+check_PROGRAMS += tests/test_texture
+TESTS += tests/test_texture
+tests_test_texture_SOURCES = tests/test_texture.c \
+	tests/parse_fixture.c tests/parse_fixture.h
+tests_test_texture_CPPFLAGS = $(TEST_CPPFLAGS)
+tests_test_texture_LDADD = $(TEST_LDADD)
+tests_test_texture_LDFLAGS = -static
+$(tests_test_texture_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h

@@ -43,11 +43,31 @@
  * Turbulence displaces the point by the turbulence vector times the sum
  * over octaves of omega^i dnoise(p lambda^i), before the pattern's
  * transforms, as the manual's "Turbulence versus Turbulence Warp" says.
+ * noise_generator 1, 2 and 3 ("Noise Generator") all use this one noise:
+ * the number is accepted and stored, but the pictures of the three
+ * differ from POV-Ray's anyway since none of them is its noise.
+ *
+ * Patterns the manual describes only in words, with our definitions:
+ *   cells      one random value per unit cube ("Cells Pattern");
+ *   pigment_pattern  the grey 0.297 r + 0.589 g + 0.114 b of a pigment
+ *              evaluated at the point (the weights of POV-Ray's grey);
+ *   quilted    the mean over the three axes of a cubic Bezier profile
+ *              across each unit cube, 0 at the seam and 1 in the middle,
+ *              with control0 and control1 as its inner control points
+ *              (1, 1 by default: steep seams and a flat top);
+ *   spiral1    arms around the z axis whose phase grows with the angle
+ *              times the number of arms, with the distance from the axis
+ *              and with z (a screw), through a triangle wave by default;
+ *   spiral2    the mean of two such spirals turning opposite ways;
+ *   average    no value of its own: its map's entries are mixed by
+ *              weight (lib/scene/texture.c).
  */
 #include "scene/pattern.h"
 
 #include <math.h>
 #include <stdint.h>
+
+#include "scene/texture.h"
 
 #define PI 3.14159265358979323846
 
@@ -67,6 +87,12 @@ void zr__pattern_init(zr_pattern *pt, zr_pattern_kind kind) {
   pt->phase = 0.0;
   pt->wave = ZR_WAVE_DEFAULT;
   pt->wave_exponent = 1.0;
+  pt->arms = 0;
+  pt->waves = 10;
+  pt->control0 = 1.0;
+  pt->control1 = 1.0;
+  pt->noise_generator = 0;
+  pt->pigment = NULL;
 }
 
 bool zr__pattern_is_block(zr_pattern_kind kind) {
@@ -197,17 +223,45 @@ static double crackle(zr_vec3 p) {
   return clamp01(d2 - d1);
 }
 
-/* Ripples and waves: the mean over 10 centres in the unit cube. */
-#define N_WAVES 10
+/* Ripples and waves: the mean over number_of_waves (10) centres in the
+   unit cube. */
 static double wave_sum(const zr_pattern *pt, zr_vec3 p, bool cosine) {
   double sum = 0;
-  for (int k = 0; k < N_WAVES; k++) {
+  int n = pt->waves > 0 ? pt->waves : 1;
+  for (int k = 0; k < n; k++) {
     zr_vec3 c = hashed_point(k, 7, 13);
     double d = zr_v3_len(zr_v3_sub(p, c));
     double a = 2 * PI * (d * pt->frequency + pt->phase);
     sum += 0.5 + 0.5 * (cosine ? cos(a) : sin(a));
   }
-  return sum / N_WAVES;
+  return sum / n;
+}
+
+/* Quilted: a Bezier profile from the seam (0) to the middle (1) of each
+   unit cube along every axis, averaged over the axes. */
+static double quilt_profile(double c, double c0, double c1) {
+  double f = c - floor(c);
+  double t = 2 * (f < 0.5 ? f : 1 - f); /* 0 at the seam, 1 mid-cell */
+  double u = 1 - t;
+  return 3 * u * u * t * c0 + 3 * u * t * t * c1 + t * t * t;
+}
+
+static double quilted(const zr_pattern *pt, zr_vec3 p) {
+  double c0 = pt->control0, c1 = pt->control1;
+  return clamp01((quilt_profile(p.x, c0, c1) + quilt_profile(p.y, c0, c1) +
+                  quilt_profile(p.z, c0, c1)) / 3);
+}
+
+/* One spiral's phase: arms turns per revolution, one per unit of radius
+   and of z. */
+static double spiral_phase(zr_vec3 p, double arms) {
+  double a = atan2(p.y, p.x) / (2 * PI);
+  return arms * a + sqrt(p.x * p.x + p.y * p.y) + p.z;
+}
+
+/* The grey POV-Ray takes of a colour. */
+static double grey(zr_colour c) {
+  return 0.297 * c.r + 0.589 * c.g + 0.114 * c.b;
 }
 
 /* ---- block patterns ---- */
@@ -275,7 +329,8 @@ static int brick(const zr_pattern *pt, zr_vec3 p) {
 double zr__pattern_wave(const zr_pattern *pt, double v) {
   zr_wave_kind wave = pt->wave;
   if (wave == ZR_WAVE_DEFAULT)
-    wave = pt->kind == ZR_PAT_MARBLE || pt->kind == ZR_PAT_WOOD
+    wave = pt->kind == ZR_PAT_MARBLE || pt->kind == ZR_PAT_WOOD ||
+                   pt->kind == ZR_PAT_SPIRAL1
                ? ZR_WAVE_TRIANGLE
                : ZR_WAVE_RAMP;
   double f;
@@ -312,6 +367,16 @@ static double raw_value(const zr_pattern *pt, zr_vec3 p) {
   case ZR_PAT_BOXED:
     return 1 - fmin(1, zr_v3_max_comp(zr_v3(fabs(p.x), fabs(p.y),
                                             fabs(p.z))));
+  case ZR_PAT_CELLS:
+    return hash3((int64_t)floor(p.x), (int64_t)floor(p.y),
+                 (int64_t)floor(p.z)) / 4294967296.0;
+  case ZR_PAT_PIGMENT_PATTERN:
+    return pt->pigment ? clamp01(grey(zr__pigment_eval(pt->pigment, p)))
+                       : 0;
+  case ZR_PAT_QUILTED:
+    return quilted(pt, p);
+  case ZR_PAT_SPIRAL1:
+    return spiral_phase(p, pt->arms);
   case ZR_PAT_BOZO:
   case ZR_PAT_SPOTTED:
   case ZR_PAT_BUMPS:
@@ -366,6 +431,17 @@ double zr__pattern_eval(const zr_pattern *pt, zr_vec3 p) {
     return wave_sum(pt, p, false);
   case ZR_PAT_WAVES:
     return wave_sum(pt, p, true);
+  case ZR_PAT_SPIRAL2: {
+    /* Each spiral goes through the wave on its own, then they mix. */
+    zr_pattern one = *pt;
+    one.kind = ZR_PAT_SPIRAL1;
+    double a = zr__pattern_wave(&one, spiral_phase(p, pt->arms));
+    zr_vec3 mirrored = zr_v3(p.x, -p.y, p.z);
+    double b = zr__pattern_wave(&one, spiral_phase(mirrored, pt->arms));
+    return 0.5 * (a + b);
+  }
+  case ZR_PAT_AVERAGE:
+    return 0;
   default:
     return zr__pattern_wave(pt, raw_value(pt, p));
   }

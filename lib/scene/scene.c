@@ -48,11 +48,13 @@ void zr__camera_init(zr_camera *c) {
 void zr__settings_init(zr_settings *s) {
   memset(s, 0, sizeof *s);
   s->max_trace_level = 5;
+  s->number_of_waves = 10;
   s->adc_bailout = 1.0 / 255.0;
   s->assumed_gamma = 1.0;
   s->ambient_light = zr_rgb3(1, 1, 1);
   s->background = zr_colour5(0, 0, 0, 0, 0);
   s->version = 3.7;
+  s->radiosity.brightness = 1.0;
 }
 
 zr_scene *zr__scene_new(void) {
@@ -119,6 +121,37 @@ typedef struct flat_list {
  * the nearest enclosing union's; the parser has already pushed transforms
  * down, so each primitive carries its own complete transform.
  */
+/*
+ * A copy of a CSG primitive's part (lib/trace/csg.c) and of everything
+ * under it, with textures inherited as in a union and default interiors
+ * filled in; every part records the primitive it belongs to.
+ */
+static zr_object *resolve_part(zr_scene *scene, const zr_object *object,
+                               const zr_texture *inherited,
+                               const zr_object *solid) {
+  zr_object *copy = zr__arena_memdup(&scene->arena, object, sizeof *copy);
+  if (!copy)
+    return NULL;
+  copy->texture = object->texture ? object->texture : inherited;
+  if (!copy->interior)
+    copy->interior = scene->default_interior;
+  copy->solid = solid;
+  if (!zr__is_csg(object->kind) || object->u.csg.n_children == 0)
+    return copy;
+  size_t n = object->u.csg.n_children;
+  copy->u.csg.children =
+      zr__arena_alloc(&scene->arena, n * sizeof *copy->u.csg.children);
+  if (!copy->u.csg.children)
+    return NULL;
+  for (size_t i = 0; i < n; i++) {
+    copy->u.csg.children[i] = resolve_part(
+        scene, object->u.csg.children[i], copy->texture, solid ? solid : copy);
+    if (!copy->u.csg.children[i])
+      return NULL;
+  }
+  return copy;
+}
+
 static zr_status flatten(zr_scene *scene, const zr_object *object,
                          const zr_texture *inherited, flat_list *out) {
   const zr_texture *texture = object->texture ? object->texture : inherited;
@@ -135,7 +168,11 @@ static zr_status flatten(zr_scene *scene, const zr_object *object,
   if (s != ZR_OK)
     return s;
   const zr_object *prim = object;
-  if (object->texture != texture || !object->interior) {
+  if (zr__is_csg(object->kind)) {
+    /* Intersections and merges stay whole: one primitive. */
+    if (!(prim = resolve_part(scene, object, texture, NULL)))
+      return ZR_ENOMEM;
+  } else if (object->texture != texture || !object->interior) {
     zr_object *copy = zr__arena_memdup(&scene->arena, object, sizeof *copy);
     if (!copy)
       return ZR_ENOMEM;
@@ -144,6 +181,10 @@ static zr_status flatten(zr_scene *scene, const zr_object *object,
       copy->interior = scene->default_interior;
     prim = copy;
   }
+  /* A mesh with a texture list gets one copy per texture, each placed
+     and textured like this one (lib/trace/obj_mesh.c). */
+  if ((s = zr__mesh_instance(&scene->arena, &prim)) != ZR_OK)
+    return s;
   out->items[out->n++] = prim;
   return ZR_OK;
 }
@@ -181,6 +222,7 @@ ZR_API void zr_scene_get_info(const zr_scene *scene, zr_scene_info *info) {
   info->primitives = scene->n_primitives;
   info->lights = scene->n_lights;
   info->has_camera = scene->camera.given;
+  info->has_radiosity = scene->settings.radiosity.on;
   for (size_t i = 0; i < scene->n_primitives; i++) {
     zr_vec3 lo, hi;
     if (zr__object_bounds(scene->primitives[i], &lo, &hi))

@@ -37,10 +37,12 @@ typedef struct zr_source_loc {
 typedef enum zr_pattern_kind {
   ZR_PAT_NONE = 0, /* a solid colour */
   ZR_PAT_AGATE,
+  ZR_PAT_AVERAGE, /* pigment_map or normal_map entries mixed by weight */
   ZR_PAT_BOXED,
   ZR_PAT_BOZO,
   ZR_PAT_BRICK,
   ZR_PAT_BUMPS,
+  ZR_PAT_CELLS,
   ZR_PAT_CHECKER,
   ZR_PAT_CRACKLE,
   ZR_PAT_CYLINDRICAL,
@@ -51,10 +53,14 @@ typedef enum zr_pattern_kind {
   ZR_PAT_LEOPARD,
   ZR_PAT_MARBLE,
   ZR_PAT_ONION,
+  ZR_PAT_PIGMENT_PATTERN, /* the grey of a pigment (pattern.pigment) */
   ZR_PAT_PLANAR,
+  ZR_PAT_QUILTED,
   ZR_PAT_RADIAL,
   ZR_PAT_RIPPLES,
   ZR_PAT_SPHERICAL,
+  ZR_PAT_SPIRAL1,
+  ZR_PAT_SPIRAL2,
   ZR_PAT_SPOTTED,
   ZR_PAT_WAVES,
   ZR_PAT_WOOD,
@@ -86,6 +92,13 @@ typedef struct zr_pattern {
   double frequency, phase; /* defaults 1 and 0 */
   zr_wave_kind wave;
   double wave_exponent; /* poly_wave: default 1 */
+  int arms;                 /* spiral1, spiral2: number of arms */
+  int waves;                /* ripples, waves: number_of_waves, def. 10 */
+  double control0, control1; /* quilted: defaults 1 and 1 */
+  /* noise_generator 1, 2 or 3 (default: the global setting, 2).  Kept
+     for the record: our noise is one function (lib/scene/pattern.c). */
+  int noise_generator;
+  const struct zr_pigment *pigment; /* pigment_pattern */
 } zr_pattern;
 
 /* color_map: values ascending; the colour between two entries is
@@ -99,6 +112,31 @@ typedef struct zr_colour_map {
   size_t n;
   const zr_colour_map_entry *entries;
 } zr_colour_map;
+
+/*
+ * pigment_map, normal_map, texture_map, slope_map and the lists of block
+ * patterns ("checker pigment {..} pigment {..}") share one shape: values
+ * ascending (block lists: 0, 1, 2), each with what it selects.  Between
+ * two entries a pattern's value blends the two; outside the first and
+ * last entry their own holds (reference manual, "Pigment Maps and
+ * Pigment Lists", "Normal Maps", "Texture Maps", "Slope Maps").
+ */
+typedef struct zr_map_entry {
+  double value;
+  union {
+    const struct zr_pigment *pigment;
+    const struct zr_normal *normal;
+    const struct zr_texture *texture;
+    struct {
+      double height, slope;
+    } slope;
+  } u;
+} zr_map_entry;
+
+typedef struct zr_map {
+  size_t n;
+  const zr_map_entry *entries;
+} zr_map;
 
 /* An image_map's picture, decoded once into the scene's arena. */
 typedef struct zr_image_map {
@@ -131,6 +169,10 @@ typedef struct zr_pigment {
      not given keep the pattern's defaults. */
   zr_colour list[3];
   const zr_image_map *image; /* ZR_PIGMENT_IMAGE */
+  /* pigment_map or a block pattern's list of pigments: the pattern then
+     picks or blends these pigments, evaluated in this pigment's pattern
+     space, so transforming the outer pigment moves them all. */
+  const zr_map *pigment_map;
 } zr_pigment;
 
 /* normal { Pattern [Bump_Size] ... }: the shading normal tilts against
@@ -139,6 +181,12 @@ typedef struct zr_normal {
   zr_pattern pattern;
   double amount; /* bump_size */
   const zr_transform *transform; /* as a pigment's */
+  /* normal_map or a block pattern's normals: the pattern blends the
+     normals these give (their transforms already include this one's). */
+  const zr_map *normal_map;
+  /* slope_map: the surface's height as a function of the pattern's value,
+     a cubic through the entries' heights with their slopes. */
+  const zr_map *slope_map;
 } zr_normal;
 
 typedef struct zr_finish {
@@ -151,6 +199,9 @@ typedef struct zr_finish {
   double specular;   /* default 0 */
   double roughness;  /* default 0.05; specular exponent is 1/roughness */
   double metallic;   /* default 0; "metallic" alone means 1 */
+  /* crand: random darkening of the diffuse light from light sources by
+     up to this fraction (lib/trace/shade.c); default 0. */
+  double crand;
   zr_rgb reflection;     /* reflection (the minimum when max is set) */
   zr_rgb reflection_max; /* equal to reflection unless given */
   double reflection_falloff; /* default 1 */
@@ -160,16 +211,42 @@ typedef struct zr_finish {
      (pigment - 1), so the amount matters (0.5 gives half the tint). */
   double reflection_metallic;
   bool conserve_energy;
+  /* zRcube's finish { energy P } (issue 4): the power, per channel,
+     that each object wearing this finish emits into the radiosity
+     solution in all, spread evenly over its emitting sides, so its
+     exitance is P / area (lib/radiosity/mesh.c).  Added to emission;
+     default 0.  See zrcube(1), "Radiosity settings". */
+  zr_rgb energy;
 } zr_finish;
 
 typedef struct zr_interior {
   double ior; /* default 1 */
+  /* Attenuation of light travelling d inside ("Attenuation"): each
+     channel keeps fade_colour + (1 - fade_colour) / (1 + (d /
+     fade_distance)^fade_power), exp(-d / fade_distance) for powers
+     above 1000; off while either is 0 (lib/trace/shade.c). */
+  double fade_distance, fade_power;
+  zr_rgb fade_colour; /* default black */
 } zr_interior;
 
+/*
+ * A texture.  A layered one ("Layered Textures") is a chain from the
+ * bottom layer, the one an object points to, upward through over; each
+ * layer lets the ones below show through its pigment's filter and
+ * transmit.  A patterned one ("Patterned Textures": texture_map, block
+ * patterns of textures, material_map) has a map: its pattern picks or
+ * blends the map's textures, whose transforms already include this
+ * texture's; its pigment, finish and normal are then the first entry's,
+ * for code that wants one plain colour (radiosity, shadows).
+ */
 typedef struct zr_texture {
   const zr_pigment *pigment; /* never NULL in a finished scene */
   const zr_finish *finish;   /* never NULL in a finished scene */
   const zr_normal *normal;   /* NULL: the surface's own normal */
+  const struct zr_texture *over; /* the layer on top of this one */
+  const zr_map *map;             /* patterned texture: NULL if plain */
+  zr_pattern pattern;            /* the map's pattern */
+  const zr_transform *transform; /* the map pattern's, as a pigment's */
 } zr_texture;
 
 /* ---- objects ---- */
@@ -182,8 +259,43 @@ typedef enum zr_object_kind {
   ZR_OBJ_CYLINDER,
   ZR_OBJ_CONE,
   ZR_OBJ_DISC,
-  ZR_OBJ_UNION
+  ZR_OBJ_UNION,
+  ZR_OBJ_MESH, /* mesh, mesh2 and smooth_triangle (lib/trace/obj_mesh.c) */
+  ZR_OBJ_TEXT, /* text { ttf ... } (lib/trace/obj_text.c) */
+  /* CSG kept as one primitive (lib/trace/csg.c).  A difference is built
+     as an intersection whose later children are inverted, as POV-Ray's
+     manual defines it ("Difference"). */
+  ZR_OBJ_INTERSECTION,
+  ZR_OBJ_MERGE,
+  ZR_OBJ_QUADRIC, /* lib/trace/obj_quadric.c */
+  ZR_OBJ_TORUS,   /* lib/trace/obj_torus.c */
+  ZR_OBJ_POLYGON, /* lib/trace/obj_polygon.c */
+  ZR_OBJ_SUPERELLIPSOID, /* lib/trace/obj_superellipsoid.c */
+  ZR_OBJ_PRISM,          /* lib/trace/obj_prism.c */
+  ZR_OBJ_LATHE,          /* lib/trace/obj_lathe.c */
+  ZR_OBJ_BLOB,           /* lib/trace/obj_blob.c */
+  ZR_OBJ_POLY,           /* poly, cubic, quartic: lib/trace/obj_poly.c */
+  ZR_OBJ_SOR             /* lib/trace/obj_sor.c */
 } zr_object_kind;
+
+/* Whether the object is a CSG node with children in u.csg. */
+static inline bool zr__is_csg(zr_object_kind kind) {
+  return kind == ZR_OBJ_UNION || kind == ZR_OBJ_INTERSECTION ||
+         kind == ZR_OBJ_MERGE;
+}
+
+struct zr_mesh; /* triangles and their BVH, shared by every copy */
+
+/* One component of a blob ("Blob"): its field is
+   strength (1 - d^2 / radius^2)^2 within radius of its centre (sphere)
+   or of its axis from a to b with hemispherical ends (cylinder). */
+typedef struct zr_blob_component {
+  bool cylinder;
+  zr_vec3 a, b; /* a: the sphere's centre */
+  double radius, strength;
+  const zr_transform *transform; /* component to blob; NULL: identity */
+} zr_blob_component;
+struct zr_text; /* extruded glyph outlines, shared likewise */
 
 typedef struct zr_object zr_object;
 
@@ -222,6 +334,102 @@ struct zr_object {
       zr_object **children;
       size_t n_children;
     } csg;
+    struct {
+      const struct zr_mesh *data;
+      /* For a mesh with a texture list: one copy of this object per
+         listed texture, made when the scene is finished (NULL before),
+         so a hit on a textured triangle reports the copy that carries
+         its texture. */
+      const zr_object *textured;
+    } mesh;
+    struct {
+      const struct zr_text *data;
+    } text;
+    struct {
+      /* A x^2 + B y^2 + C z^2 + D xy + E xz + F yz + G x + H y + I z + J,
+         negative inside ("Quadric"). */
+      double coef[10];
+    } quadric;
+    struct {
+      int order;
+      /* The (order+1)(order+2)(order+3)/6 coefficients in POV-Ray's
+         order ("Poly, Cubic and Quartic"): x's power falling, then y's,
+         then z's; n_coef counts those given while parsing. */
+      double *coef;
+      int n_coef;
+    } poly;
+    struct {
+      /* About the y axis in the x-z plane ("Torus"); sturm is kept for
+         the record, as the root finder is always the careful one. */
+      double major, minor;
+      bool sturm;
+    } torus;
+    struct {
+      /* Flat, in the plane dot(p, normal) == distance; the points as
+         (u, v) = (dot(p, u_axis), dot(p, v_axis)).  Edges are given as
+         x0 y0 x1 y1 quadruples; a point is inside when a line from it
+         crosses an odd number of them ("Polygon").  points is the list
+         as written, kept while the parser reads it. */
+      zr_vec3 normal, u_axis, v_axis;
+      double distance;
+      const double *edges;
+      size_t n_edges;
+      zr_vec3 lo, hi; /* the box of the points */
+      zr_vec3 *points;
+      size_t n_points, n_expected;
+    } polygon;
+    struct {
+      /* (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n) < 1 inside
+         ("Superquadric Ellipsoid"). */
+      double e, n;
+    } superellipsoid;
+    struct {
+      /* Closed curves in the x-z plane swept along y from y0 to y1
+         ("Prism"); a conic sweep scales the curve by y, from the apex
+         at the origin.  Each curve segment is a cubic in s in [0, 1]:
+         x = seg[0] + seg[1] s + seg[2] s^2 + seg[3] s^3, z likewise
+         with seg[4..7].  lo and hi box the curve (x, z in .x, .z). */
+      int spline; /* 0 linear, 1 quadratic, 2 cubic, 3 bezier */
+      bool conic, open, sturm;
+      double y0, y1; /* y0 <= y1 */
+      const double *seg;
+      size_t n_seg;
+      zr_vec3 lo, hi;
+      zr_vec3 *points; /* as written, kept while the parser reads it */
+      size_t n_points, n_expected;
+    } prism;
+    struct {
+      /* A curve in the (r, y) plane turned about the y axis ("Lathe"),
+         stored as a prism's: seg[0..3] give r(s), seg[4..7] y(s).  lo
+         and hi box the curve (r in .x, y in .y). */
+      int spline; /* 0 linear, 1 quadratic, 2 cubic, 3 bezier */
+      bool sturm;
+      const double *seg;
+      size_t n_seg;
+      zr_vec3 lo, hi;
+      zr_vec3 *points;
+      size_t n_points, n_expected;
+    } lathe;
+    struct {
+      /* The surface where the components' fields add up to threshold,
+         inside where they exceed it. */
+      double threshold; /* default 1 */
+      bool sturm;
+      zr_blob_component *components;
+      size_t n_components, cap_components;
+    } blob;
+    struct {
+      /* A surface of revolution ("Surface of Revolution"): per segment
+         seg[6 i ..] = h0, h1, c0, c1, c2, c3 with
+         x^2 + z^2 = c0 + c1 u + c2 u^2 + c3 u^3, u = (y - h0) / (h1 - h0)
+         for h0 <= y <= h1; caps at the ends unless open. */
+      bool open, sturm;
+      const double *seg;
+      size_t n_seg;
+      double rmax;
+      zr_vec3 *points; /* as written, kept while the parser reads it */
+      size_t n_points, n_expected;
+    } sor;
   } u;
   /* Object to world (NULL: identity).  A union's modifiers are pushed down
      into its children as they are applied, as POV-Ray does, so a union's
@@ -231,25 +439,72 @@ struct zr_object {
   const zr_interior *interior; /* NULL: the default interior */
   bool no_shadow;
   bool inverse;
+  bool hollow; /* stored for media; it changes nothing else */
+  /* clipped_by: only the surface inside this object remains (an
+     intersection of the clipping objects); NULL when not clipped. */
+  const zr_object *clip;
+  /* bounded_by: kept only for clipped_by { bounded_by }; never used as a
+     bound, which POV-Ray allows since a bound never changes the
+     picture. */
+  const zr_object *bound;
+  /* In a finished scene, the CSG primitive this object is a part of
+     (NULL for a primitive itself): rays enter and leave its interior,
+     not the part's. */
+  const zr_object *solid;
   zr_source_loc where;
 };
 
 /* ---- lights, camera, settings ---- */
 
 typedef enum zr_light_kind {
-  ZR_LIGHT_POINT = 0
+  ZR_LIGHT_POINT = 0,
+  ZR_LIGHT_SPOT,    /* spotlight: a cone about location -> point_at */
+  ZR_LIGHT_CYLINDER /* cylinder: a tube about that line */
 } zr_light_kind;
 
+/*
+ * A light source ("Light Source"; lib/trace/lights.c shines it).  Every
+ * kind may also be parallel, an area light, faded and shadowless.
+ * Spot and cylinder lights keep radius and falloff in degrees and
+ * units respectively, as written; tightness is the exponent of the
+ * cosine (spot) or of the fraction of the radius (cylinder).
+ */
 typedef struct zr_light {
   zr_light_kind kind;
   zr_vec3 location;
   zr_rgb colour;
   bool shadowless;
+  bool parallel;     /* rays along location -> point_at everywhere */
+  zr_vec3 point_at;  /* default <0,0,0> */
+  double radius;     /* spot 30 (degrees), cylinder 0.75 (units) */
+  double falloff;    /* spot 45, cylinder 1 */
+  double tightness;  /* default 0 */
+  double fade_distance; /* 0: no fading */
+  double fade_power;    /* default 0: no fading */
+  /* area_light Axis1, Axis2, Size1, Size2: a grid of size1 x size2
+     point lights spanning axis1 x axis2 about location. */
+  bool area;
+  zr_vec3 axis1, axis2;
+  int size1, size2;
+  int adaptive;   /* -1: not adaptive (every point is sampled) */
+  bool jitter;    /* deterministic: from a hash of pixel and point */
+  bool circular, orient, area_illumination;
+  bool media_interaction, media_attenuation; /* parsed; no media yet */
+  /* looks_like { }: the object, moved to the light and given no_shadow,
+     is also one of the scene's objects; NULL: none. */
+  zr_object *looks_like;
   zr_source_loc where;
 } zr_light;
 
 typedef enum zr_camera_kind {
-  ZR_CAMERA_PERSPECTIVE = 0
+  ZR_CAMERA_PERSPECTIVE = 0,
+  ZR_CAMERA_ORTHOGRAPHIC,
+  ZR_CAMERA_FISHEYE,
+  ZR_CAMERA_ULTRA_WIDE_ANGLE,
+  ZR_CAMERA_OMNIMAX,
+  ZR_CAMERA_PANORAMIC,
+  ZR_CAMERA_CYLINDER, /* cylinder_type 1-4 */
+  ZR_CAMERA_SPHERICAL
 } zr_camera_kind;
 
 /*
@@ -265,17 +520,96 @@ typedef struct zr_camera {
   zr_vec3 right;     /* default <1.33,0,0> */
   zr_vec3 sky;       /* default <0,1,0> */
   bool given;        /* false when the scene has no camera block */
+  /* Other projections (lib/trace/render.c says how each maps (u, v)):
+     the horizontal and vertical angles in degrees (fisheye, ultra wide,
+     cylinder: 90 unless given; spherical 360 and half the horizontal). */
+  int cylinder_type; /* 1-4 */
+  double h_angle, v_angle;
+  /* Focal blur: aperture 0 is off.  blur_samples is the most samples a
+     pixel takes, blur_min the fewest before confidence and variance
+     may stop it. */
+  double aperture;
+  int blur_samples, blur_min;
+  zr_vec3 focal_point;
+  double confidence; /* default 0.9 */
+  double variance;   /* default 1/128 */
+  const zr_normal *normal; /* perturbs every camera ray; NULL: none */
   zr_source_loc where;
 } zr_camera;
+
+/*
+ * fog { } ("Fog"): type 1 constant, 2 ground fog (denser below offset
+ * along up, thinning as 1 / (1 + (h - offset) / alt)^2 above).  The
+ * colour's filter and transmit let some of what is behind through.
+ */
+typedef struct zr_fog zr_fog;
+struct zr_fog {
+  int type;
+  double distance;
+  zr_colour colour;
+  zr_vec3 turbulence; /* zero: none */
+  int octaves;
+  double omega, lambda, turb_depth;
+  double offset, alt;
+  zr_vec3 up;                    /* unit */
+  const zr_transform *transform; /* for turbulence; NULL: identity */
+  const zr_fog *next;
+};
+
+/* sky_sphere { pigment... } ("Sky Sphere"): pigments evaluated at the
+   ray's direction, the last on top; emission scales the result. */
+typedef struct zr_sky_sphere {
+  const zr_pigment *const *pigments;
+  size_t n_pigments;
+  const zr_transform *transform; /* NULL: identity */
+  zr_rgb emission;               /* default 1 */
+} zr_sky_sphere;
+
+/* rainbow { } ("Rainbow"): a fog-like arc at angle +- width / 2 from
+   direction, coloured by colour_map from the inside out. */
+typedef struct zr_rainbow zr_rainbow;
+struct zr_rainbow {
+  zr_vec3 direction; /* unit */
+  double angle, width, distance, jitter;
+  double arc_angle, falloff_angle; /* degrees, default 180 */
+  zr_vec3 up;                      /* unit */
+  const zr_colour_map *colour_map;
+  const zr_rainbow *next;
+};
+
+/*
+ * global_settings { radiosity { ... } } (lib/sdl/build_radiosity.c).
+ * POV-Ray's own items drive its irradiance cache, which zRcube does not
+ * have: the parser reads them all, keeps brightness, and warns about
+ * the rest.  zRcube's items (bf_bound, minimum_area, visibility_count,
+ * max_iterations, residual_bound) are 0 when not given, so the
+ * library's defaults and the command line decide.
+ */
+typedef struct zr_radiosity_settings {
+  bool on;            /* a radiosity block was read */
+  double brightness;  /* scales the diffuse interreflection; default 1 */
+  double bf_eps;      /* zr_radiosity_params.bf_eps when > 0 */
+  double area_eps;    /* .area_eps when > 0 */
+  double residual;    /* .residual when > 0 */
+  int visibility_rays; /* .visibility_rays when > 0 */
+  int max_iterations;  /* .max_iterations when > 0 */
+} zr_radiosity_settings;
 
 typedef struct zr_settings {
   int max_trace_level;  /* default 5 */
   double adc_bailout;   /* default 1/255 */
   double assumed_gamma; /* default 1.0 */
+  int number_of_waves;  /* waves and ripples made after it; default 10 */
   bool assumed_gamma_given;
   zr_rgb ambient_light; /* default 1 */
   zr_colour background; /* default black, transmit 0 */
   double version;       /* the last #version; the parser sets 3.7 if none */
+  zr_radiosity_settings radiosity;
+  /* Atmospheric effects (lib/trace/atmosphere.c): lists in the order
+     written, NULL when absent. */
+  const zr_fog *fogs;
+  const zr_sky_sphere *sky_sphere;
+  const zr_rainbow *rainbows;
 } zr_settings;
 
 /* ---- the scene ---- */
@@ -318,6 +652,11 @@ zr_status zr__scene_add_light(zr_scene *scene, const zr_light *light);
  * parser after the last statement.
  */
 zr_status zr__scene_finish(zr_scene *scene, zr_context *ctx);
+
+/* Makes *prim's per-texture copies when it is a mesh with a texture
+   list (lib/trace/obj_mesh.c); *prim then points to a new copy.  A no-op
+   for other objects. */
+zr_status zr__mesh_instance(zr_arena *arena, const zr_object **prim);
 
 /* The object's world-space bounding box; false for unbounded objects
    (planes, and anything inverse). */

@@ -27,6 +27,19 @@
  * apart (POV-Ray's default "accuracy") and carried to world space by the
  * inverse transpose of the transform.  dents uses the cube of the noise,
  * which leaves flat ground between sharp pits.
+ *
+ * Maps ("Pigment Maps and Pigment Lists", "Normal Maps", "Slope Maps",
+ * "Texture Maps", "Average"): the pattern's value v falls between two
+ * entries, whose items are evaluated and blended linearly (pigments by
+ * colour, normals by direction, textures by their lit colour in
+ * lib/trace/shade.c); block patterns pick the entry of their index.
+ * average mixes every entry by the weight written as its value.  The
+ * items of a pigment or normal map are evaluated in the outer one's
+ * pattern space (a pigment's normal carried there and back by the
+ * inverse transpose), so transforming the outer pigment or normal moves
+ * them too, as the manual says.  A slope_map makes the height a cubic
+ * Hermite curve of v through the entries' heights with their slopes
+ * (per unit of v), which the normal then tilts against.
  */
 #include "scene/texture.h"
 
@@ -154,12 +167,69 @@ static zr_vec3 to_pattern(const zr_transform *t, zr_vec3 world) {
   return t ? zr__xform_point(t->inv, world) : world;
 }
 
+void zr__map_find(const zr_map *m, double v, bool block, size_t *i,
+                  double *t) {
+  const zr_map_entry *e = m->entries;
+  size_t n = m->n;
+  *t = 0;
+  if (block) {
+    /* Block patterns give an index: entries are in list order. */
+    int k = (int)v;
+    *i = k < 0 ? 0 : (size_t)k >= n ? n - 1 : (size_t)k;
+    return;
+  }
+  if (v <= e[0].value) {
+    *i = 0;
+    return;
+  }
+  if (v >= e[n - 1].value) {
+    *i = n - 1;
+    return;
+  }
+  size_t k = 0;
+  while (k + 1 < n && e[k + 1].value <= v)
+    k++;
+  *i = k;
+  if (k + 1 < n)
+    *t = (v - e[k].value) / (e[k + 1].value - e[k].value);
+}
+
+/* A pigment_map's colour at p, pattern space of the outer pigment. */
+static zr_colour pigment_map_eval(const zr_pigment *pg, zr_vec3 p) {
+  const zr_map *m = pg->pigment_map;
+  if (pg->pattern.kind == ZR_PAT_AVERAGE) {
+    zr_colour sum = zr_colour5(0, 0, 0, 0, 0);
+    double total = 0;
+    for (size_t k = 0; k < m->n; k++) {
+      double w = m->entries[k].value;
+      zr_colour c = zr__pigment_eval(m->entries[k].u.pigment, p);
+      sum = zr_colour5(sum.r + w * c.r, sum.g + w * c.g, sum.b + w * c.b,
+                       sum.f + w * c.f, sum.t + w * c.t);
+      total += w;
+    }
+    if (total == 0)
+      return sum;
+    return zr_colour5(sum.r / total, sum.g / total, sum.b / total,
+                      sum.f / total, sum.t / total);
+  }
+  double v = zr__pattern_eval(&pg->pattern, p);
+  size_t i;
+  double t;
+  zr__map_find(m, v, zr__pattern_is_block(pg->pattern.kind), &i, &t);
+  zr_colour c = zr__pigment_eval(m->entries[i].u.pigment, p);
+  if (t > 0)
+    c = mix(c, zr__pigment_eval(m->entries[i + 1].u.pigment, p), t);
+  return c;
+}
+
 zr_colour zr__pigment_eval(const zr_pigment *pg, zr_vec3 world) {
   if (pg->kind == ZR_PIGMENT_SOLID)
     return pg->colour;
   zr_vec3 p = to_pattern(pg->transform, world);
   if (pg->kind == ZR_PIGMENT_IMAGE)
     return zr__image_map_eval(pg->image, p);
+  if (pg->pigment_map && pg->pigment_map->n > 0)
+    return pigment_map_eval(pg, p);
   double v = zr__pattern_eval(&pg->pattern, p);
   if (zr__pattern_is_block(pg->pattern.kind)) {
     int i = (int)v;
@@ -171,24 +241,86 @@ zr_colour zr__pigment_eval(const zr_pigment *pg, zr_vec3 world) {
 
 /* ---- normals ---- */
 
-static double height(const zr_pattern *pt, zr_vec3 p) {
+double zr__slope_map_eval(const zr_map *m, double v) {
+  size_t i;
+  double t;
+  zr__map_find(m, v, false, &i, &t);
+  const zr_map_entry *a = &m->entries[i];
+  if (t == 0)
+    return a->u.slope.height;
+  const zr_map_entry *b = &m->entries[i + 1];
+  double gap = b->value - a->value;
+  double t2 = t * t, t3 = t2 * t;
+  /* Cubic Hermite basis on [0, 1], slopes scaled to the interval. */
+  return (2 * t3 - 3 * t2 + 1) * a->u.slope.height +
+         (t3 - 2 * t2 + t) * gap * a->u.slope.slope +
+         (-2 * t3 + 3 * t2) * b->u.slope.height +
+         (t3 - t2) * gap * b->u.slope.slope;
+}
+
+static double height(const zr_normal *nm, zr_vec3 p) {
+  const zr_pattern *pt = &nm->pattern;
   double v = zr__pattern_eval(pt, p);
+  if (nm->slope_map && nm->slope_map->n > 0)
+    return zr__slope_map_eval(nm->slope_map, v);
   return pt->kind == ZR_PAT_DENTS ? v * v * v : v;
 }
 
+/* A normal_map's normal at p (this normal's pattern space) for the
+   unit normal n there. */
+static zr_vec3 normal_map_perturb(const zr_normal *nm, zr_vec3 p,
+                                  zr_vec3 n) {
+  const zr_map *m = nm->normal_map;
+  if (nm->pattern.kind == ZR_PAT_AVERAGE) {
+    zr_vec3 sum = zr_v3(0, 0, 0);
+    for (size_t k = 0; k < m->n; k++)
+      sum = zr_v3_madd(sum, zr__normal_perturb(m->entries[k].u.normal, p, n),
+                       m->entries[k].value);
+    double len = zr_v3_len(sum);
+    return len > 0 ? zr_v3_scale(sum, 1 / len) : n;
+  }
+  size_t i;
+  double t;
+  zr__map_find(m, zr__pattern_eval(&nm->pattern, p),
+               zr__pattern_is_block(nm->pattern.kind), &i, &t);
+  zr_vec3 r = zr__normal_perturb(m->entries[i].u.normal, p, n);
+  if (t > 0) {
+    zr_vec3 r2 = zr__normal_perturb(m->entries[i + 1].u.normal, p, n);
+    r = zr_v3_add(zr_v3_scale(r, 1 - t), zr_v3_scale(r2, t));
+    double len = zr_v3_len(r);
+    r = len > 0 ? zr_v3_scale(r, 1 / len) : n;
+  }
+  return r;
+}
+
 zr_vec3 zr__normal_perturb(const zr_normal *nm, zr_vec3 world, zr_vec3 n) {
+  if (nm->normal_map && nm->normal_map->n > 0) {
+    zr_vec3 p = to_pattern(nm->transform, world);
+    zr_vec3 np = n;
+    if (nm->transform) {
+      /* World normals go to pattern space by the transpose of m. */
+      np = zr__xform_normal(nm->transform->m, n);
+      double len = zr_v3_len(np);
+      np = len > 0 ? zr_v3_scale(np, 1 / len) : n;
+    }
+    zr_vec3 r = normal_map_perturb(nm, p, np);
+    if (!nm->transform)
+      return r;
+    r = zr__xform_normal(nm->transform->inv, r);
+    double len = zr_v3_len(r);
+    return len > 0 ? zr_v3_scale(r, 1 / len) : n;
+  }
   if (nm->amount == 0 || nm->pattern.kind == ZR_PAT_NONE)
     return n;
   zr_vec3 p = to_pattern(nm->transform, world);
   const double h = NORMAL_ACCURACY;
-  const zr_pattern *pt = &nm->pattern;
   zr_vec3 g = zr_v3(
-      height(pt, zr_v3(p.x + h, p.y, p.z)) -
-          height(pt, zr_v3(p.x - h, p.y, p.z)),
-      height(pt, zr_v3(p.x, p.y + h, p.z)) -
-          height(pt, zr_v3(p.x, p.y - h, p.z)),
-      height(pt, zr_v3(p.x, p.y, p.z + h)) -
-          height(pt, zr_v3(p.x, p.y, p.z - h)));
+      height(nm, zr_v3(p.x + h, p.y, p.z)) -
+          height(nm, zr_v3(p.x - h, p.y, p.z)),
+      height(nm, zr_v3(p.x, p.y + h, p.z)) -
+          height(nm, zr_v3(p.x, p.y - h, p.z)),
+      height(nm, zr_v3(p.x, p.y, p.z + h)) -
+          height(nm, zr_v3(p.x, p.y, p.z - h)));
   g = zr_v3_scale(g, 1 / (2 * h));
   if (nm->transform)
     g = zr__xform_normal(nm->transform->inv, g);
@@ -197,4 +329,60 @@ zr_vec3 zr__normal_perturb(const zr_normal *nm, zr_vec3 world, zr_vec3 n) {
   zr_vec3 tilted = zr_v3_madd(n, tangential, -nm->amount);
   double len = zr_v3_len(tilted);
   return len > 0 ? zr_v3_scale(tilted, 1 / len) : n;
+}
+
+/* ---- textures ---- */
+
+/* f * C + t: what a pigment colour lets through. */
+static zr_rgb see_through(zr_colour c) {
+  return zr_rgb3(c.f * c.r + c.t, c.f * c.g + c.t, c.f * c.b + c.t);
+}
+
+const zr_texture *zr__texture_pick(const zr_texture *tx, zr_vec3 world,
+                                   const zr_texture **second, double *t) {
+  *second = NULL;
+  *t = 0;
+  if (!tx->map || tx->map->n == 0)
+    return tx;
+  zr_vec3 p = to_pattern(tx->transform, world);
+  size_t i;
+  zr__map_find(tx->map, zr__pattern_eval(&tx->pattern, p),
+               zr__pattern_is_block(tx->pattern.kind), &i, t);
+  if (*t > 0)
+    *second = tx->map->entries[i + 1].u.texture;
+  return tx->map->entries[i].u.texture;
+}
+
+zr_rgb zr__texture_see_through_layer(const zr_texture *layer,
+                                     zr_vec3 world) {
+  if (!layer->map || layer->map->n == 0)
+    return see_through(zr__pigment_eval(layer->pigment, world));
+  if (layer->pattern.kind == ZR_PAT_AVERAGE) {
+    zr_rgb sum = zr_rgb3(0, 0, 0);
+    double total = 0;
+    for (size_t i = 0; i < layer->map->n; i++) {
+      const zr_map_entry *e = &layer->map->entries[i];
+      sum = zr_rgb_add(sum, zr_rgb_scale(zr__texture_see_through(
+                                             e->u.texture, world),
+                                         e->value));
+      total += e->value;
+    }
+    return total > 0 ? zr_rgb_scale(sum, 1 / total) : sum;
+  }
+  const zr_texture *b;
+  double t;
+  const zr_texture *a = zr__texture_pick(layer, world, &b, &t);
+  zr_rgb s = zr__texture_see_through(a, world);
+  if (b)
+    s = zr_rgb_add(zr_rgb_scale(s, 1 - t),
+                   zr_rgb_scale(zr__texture_see_through(b, world), t));
+  return s;
+}
+
+zr_rgb zr__texture_see_through(const zr_texture *tx, zr_vec3 world) {
+  zr_rgb through = zr_rgb3(1, 1, 1);
+  for (const zr_texture *layer = tx; layer; layer = layer->over)
+    through = zr_rgb_mul(through,
+                         zr__texture_see_through_layer(layer, world));
+  return through;
 }

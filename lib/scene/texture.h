@@ -32,4 +32,26 @@ zr_colour zr__pigment_eval(const zr_pigment *pg, zr_vec3 world);
  */
 zr_vec3 zr__normal_perturb(const zr_normal *nm, zr_vec3 world, zr_vec3 n);
 
+/* Where value v falls in map m (n >= 1): entry *i with weight 1 - *t and
+   entry *i + 1 with weight *t (*t is 0 at or beyond either end, and for
+   block patterns, whose value is the entry's index). */
+void zr__map_find(const zr_map *m, double v, bool block, size_t *i,
+                  double *t);
+
+/* A slope_map's height at pattern value v. */
+double zr__slope_map_eval(const zr_map *m, double v);
+
+/* For a patterned texture, the texture its pattern picks at a world
+   point and, when the point lies between two entries, the second one in
+   *second with weight *t (else NULL and 0); a plain texture itself. */
+const zr_texture *zr__texture_pick(const zr_texture *tx, zr_vec3 world,
+                                   const zr_texture **second, double *t);
+
+/* The light a texture, all its layers together, lets through at a
+   world point: the product of each layer's f * C + t. */
+zr_rgb zr__texture_see_through(const zr_texture *tx, zr_vec3 world);
+/* The same for one layer alone (a patterned layer blends its map's). */
+zr_rgb zr__texture_see_through_layer(const zr_texture *layer,
+                                     zr_vec3 world);
+
 #endif /* ZR_SCENE_TEXTURE_H */

@@ -14,13 +14,7 @@
  *     children without one inherit it when the scene is flattened.
  *   - object { Name } copies the declared object, children and all, so
  *     later modifiers never change the declaration.
- *   - The camera ("Placing the Camera"): angle sets the direction's
- *     length to 0.5 |right| / tan(angle / 2); look_at turns direction,
- *     right and up toward the target about the sky vector, keeping their
- *     lengths and the right vector's handedness (right <-1,0,0> stays
- *     mirrored).  Both act at the end of the block, before the
- *     transforms, whatever the order of the items: that is what POV-Ray
- *     3.7 renders show.
+ *   - The camera and lights are built in build_camlight.c.
  *   - Patterns ("Pattern Modifiers"): turbulence, octaves, omega, lambda,
  *     frequency, phase and the wave types set the pattern's fields; a
  *     turbulence warp acts as turbulence (applied before the
@@ -45,10 +39,51 @@
 #include "sdl/sdl.h"
 
 static const char *kind_name(zr_object_kind kind) {
-  static const char *const names[] = {"a sphere",   "a box",   "a plane",
-                                      "a triangle", "a cylinder",
-                                      "a cone",     "a disc",  "a union"};
-  return names[kind];
+  switch (kind) {
+  case ZR_OBJ_SPHERE:
+    return "a sphere";
+  case ZR_OBJ_BOX:
+    return "a box";
+  case ZR_OBJ_PLANE:
+    return "a plane";
+  case ZR_OBJ_TRIANGLE:
+    return "a triangle";
+  case ZR_OBJ_CYLINDER:
+    return "a cylinder";
+  case ZR_OBJ_CONE:
+    return "a cone";
+  case ZR_OBJ_DISC:
+    return "a disc";
+  case ZR_OBJ_UNION:
+    return "a union";
+  case ZR_OBJ_MESH:
+    return "a mesh";
+  case ZR_OBJ_TEXT:
+    return "a text";
+  case ZR_OBJ_INTERSECTION:
+    return "an intersection or difference";
+  case ZR_OBJ_MERGE:
+    return "a merge";
+  case ZR_OBJ_QUADRIC:
+    return "a quadric";
+  case ZR_OBJ_POLY:
+    return "a poly";
+  case ZR_OBJ_TORUS:
+    return "a torus";
+  case ZR_OBJ_POLYGON:
+    return "a polygon";
+  case ZR_OBJ_SUPERELLIPSOID:
+    return "a superellipsoid";
+  case ZR_OBJ_PRISM:
+    return "a prism";
+  case ZR_OBJ_LATHE:
+    return "a lathe";
+  case ZR_OBJ_BLOB:
+    return "a blob";
+  case ZR_OBJ_SOR:
+    return "a sor";
+  }
+  return "an object";
 }
 
 zr_object *zr__sdl_object_new(zr_sdl_parser *p, zr_object_kind kind,
@@ -77,7 +112,13 @@ zr_object *zr__sdl_object_copy(zr_sdl_parser *p, const zr_object *o) {
   if (!copy)
     return NULL;
   *copy = *o;
-  if (o->kind != ZR_OBJ_UNION || o->u.csg.n_children == 0)
+  /* Clipping and bounding objects follow the object's later transforms,
+     so each copy needs its own. */
+  if (o->clip && !(copy->clip = zr__sdl_object_copy(p, o->clip)))
+    return NULL;
+  if (o->bound && !(copy->bound = zr__sdl_object_copy(p, o->bound)))
+    return NULL;
+  if (!zr__is_csg(o->kind) || o->u.csg.n_children == 0)
     return copy;
   size_t n = o->u.csg.n_children;
   copy->u.csg.children =
@@ -219,6 +260,14 @@ zr_texture *zr__sdl_texture_new(zr_sdl_parser *p, const zr_texture *from) {
 }
 
 bool zr__sdl_texture_done(zr_sdl_parser *p, zr_texture *tx) {
+  if (tx->map && tx->map->n > 0) {
+    /* A patterned texture shows as its first entry wherever one plain
+       texture is wanted (radiosity, shadows): build_texture.c. */
+    const zr_texture *first = tx->map->entries[0].u.texture;
+    tx->pigment = first->pigment;
+    tx->finish = first->finish;
+    tx->normal = first->normal;
+  }
   if (!tx->pigment)
     tx->pigment = p->scene->default_texture->pigment;
   if (!tx->finish)
@@ -239,7 +288,7 @@ bool zr__sdl_texture_transform(zr_sdl_parser *p, zr_texture *tx,
       return false;
     tx->normal = nm;
   }
-  return true;
+  return zr__sdl_texture_transform_more(p, tx, t);
 }
 
 zr_interior *zr__sdl_interior_new(zr_sdl_parser *p, const zr_interior *from) {
@@ -258,6 +307,8 @@ zr_interior *zr__sdl_interior_new(zr_sdl_parser *p, const zr_interior *from) {
 bool zr__sdl_pigment_pattern(zr_sdl_parser *p, zr_pigment *pg, int kind,
                              const zr_sdl_clist *list) {
   zr__pigment_set_pattern(pg, (zr_pattern_kind)kind);
+  /* global_settings { number_of_waves } sets the default. */
+  pg->pattern.waves = p->scene->settings.number_of_waves;
   if (!list || list->n == 0)
     return true;
   int most = kind == ZR_PAT_HEXAGON ? 3 : 2;
@@ -344,6 +395,30 @@ bool zr__sdl_pattern_mod(zr_sdl_parser *p, zr_pattern *pt,
     return zr__sdl_want_float(p, &m->value, &m->loc, &pt->agate_turb);
   case T_MORTAR:
     return zr__sdl_want_float(p, &m->value, &m->loc, &pt->mortar);
+  case T_CONTROL0:
+    return zr__sdl_want_float(p, &m->value, &m->loc, &pt->control0);
+  case T_CONTROL1:
+    return zr__sdl_want_float(p, &m->value, &m->loc, &pt->control1);
+  case T_NUMBER_OF_WAVES:
+    if (!zr__sdl_want_float(p, &m->value, &m->loc, &v))
+      return false;
+    if (v < 1) {
+      zr__sdl_error(p, ZR_ESCENE, &m->loc,
+                    "number_of_waves must be at least 1");
+      return false;
+    }
+    pt->waves = (int)v;
+    return true;
+  case T_NOISE_GENERATOR:
+    if (!zr__sdl_want_float(p, &m->value, &m->loc, &v))
+      return false;
+    if (v != 1 && v != 2 && v != 3) {
+      zr__sdl_error(p, ZR_ESCENE, &m->loc,
+                    "noise_generator must be 1, 2 or 3");
+      return false;
+    }
+    pt->noise_generator = (int)v;
+    return true;
   case T_BRICK_SIZE: {
     zr_vec3 s;
     if (!zr__sdl_want_vector(p, &m->value, &m->loc, &s))
@@ -452,6 +527,7 @@ bool zr__sdl_normal_pattern(zr_sdl_parser *p, zr_normal *nm, int kind,
                             const zr_sdl_expr *amount,
                             const zr_sdl_loc *loc) {
   zr__pattern_init(&nm->pattern, (zr_pattern_kind)kind);
+  nm->pattern.waves = p->scene->settings.number_of_waves;
   /* POV-Ray's default bump size is 0.5 for every normal pattern. */
   nm->amount = 0.5;
   return !amount || zr__sdl_want_float(p, amount, loc, &nm->amount);
@@ -576,10 +652,16 @@ static bool transform_object(zr_sdl_parser *p, zr_object *o,
       return false;
     o->texture = tx;
   }
-  if (o->kind == ZR_OBJ_UNION)
+  if (zr__is_csg(o->kind))
     for (size_t i = 0; i < o->u.csg.n_children; i++)
       if (!transform_object(p, o->u.csg.children[i], t))
         return false;
+  /* The clip and the bound are the object's own copies (see
+     zr__sdl_object_copy), so they may be changed in place. */
+  if (o->clip && !transform_object(p, (zr_object *)o->clip, t))
+    return false;
+  if (o->bound && !transform_object(p, (zr_object *)o->bound, t))
+    return false;
   return true;
 }
 
@@ -587,25 +669,28 @@ static bool transform_object(zr_sdl_parser *p, zr_object *o,
 static zr_texture *own_texture(zr_sdl_parser *p, zr_object *o) {
   zr_texture *tx = zr__sdl_texture_new(
       p, o->texture ? o->texture : p->scene->default_texture);
-  if (tx)
-    o->texture = tx;
-  return tx;
+  if (!tx)
+    return NULL;
+  o->texture = tx;
+  /* A layered texture changes at its top (build_texture.c). */
+  return zr__sdl_texture_top(p, tx);
 }
 
 static void set_interior(zr_object *o, const zr_interior *in, bool force) {
   if (force || !o->interior)
     o->interior = in;
-  if (o->kind == ZR_OBJ_UNION)
+  if (zr__is_csg(o->kind))
     for (size_t i = 0; i < o->u.csg.n_children; i++)
       set_interior(o->u.csg.children[i], in, false);
 }
 
 static void set_flag(zr_object *o, zr_sdl_mod_kind kind) {
-  if (kind == ZR_SDL_MOD_NO_SHADOW)
-    o->no_shadow = true;
-  else
-    o->inverse = !o->inverse;
-  if (o->kind == ZR_OBJ_UNION)
+  if (kind == ZR_SDL_MOD_INVERSE) {
+    zr__sdl_object_invert(o); /* De Morgan for CSG: build_object.c */
+    return;
+  }
+  o->no_shadow = true;
+  if (zr__is_csg(o->kind))
     for (size_t i = 0; i < o->u.csg.n_children; i++)
       set_flag(o->u.csg.children[i], kind);
 }
@@ -627,8 +712,19 @@ bool zr__sdl_object_mod(zr_sdl_parser *p, zr_object *o,
     tx->finish = mod->ptr;
     return true;
   case ZR_SDL_MOD_TEXTURE:
-    o->texture = mod->ptr;
+    /* A texture on a textured object goes on top as a layer, as in
+       POV-Ray (build_texture.c). */
+    o->texture = zr__sdl_texture_layer(p, o->texture, mod->ptr);
+    return o->texture != NULL;
+  case ZR_SDL_MOD_MATERIAL: {
+    const zr_sdl_material *m = mod->ptr;
+    if (m->texture &&
+        !(o->texture = zr__sdl_texture_layer(p, o->texture, m->texture)))
+      return false;
+    if (m->interior)
+      set_interior(o, m->interior, true);
     return true;
+  }
   case ZR_SDL_MOD_NORMAL:
     if (!(tx = own_texture(p, o)))
       return false;
@@ -650,99 +746,24 @@ bool zr__sdl_object_mod(zr_sdl_parser *p, zr_object *o,
       o->u.cone.open = true;
       return true;
     }
+    if (o->kind == ZR_OBJ_PRISM) {
+      o->u.prism.open = true;
+      return true;
+    }
+    if (o->kind == ZR_OBJ_SOR) {
+      o->u.sor.open = true;
+      return true;
+    }
     zr__sdl_error(p, ZR_ESYNTAX, loc,
                   "'open' is for cylinders and cones, not for %s",
                   kind_name(o->kind));
     return false;
+  case ZR_SDL_MOD_IGNORED:
+    return true; /* warned about as it was read */
+  default:
+    return zr__sdl_object_mod_more(p, o, mod);
   }
   return true;
 }
 
-/* ---- lights and camera ---- */
-
-bool zr__sdl_light(zr_sdl_parser *p, zr_light *l, const zr_sdl_loc *loc) {
-  memset(l, 0, sizeof *l);
-  l->kind = ZR_LIGHT_POINT;
-  l->where.file = p->files[loc->file].scene_path;
-  l->where.line = loc->line;
-  l->where.column = loc->column;
-  return true;
-}
-
-void zr__sdl_camera_begin(zr_sdl_parser *p, const zr_sdl_loc *loc) {
-  zr_camera *c = &p->scene->camera;
-  zr__camera_init(c);
-  c->given = true;
-  c->where.file = p->files[loc->file].scene_path;
-  c->where.line = loc->line;
-  c->where.column = loc->column;
-  memset(&p->camera, 0, sizeof p->camera);
-  zr__transform_identity(&p->camera.transform);
-}
-
-bool zr__sdl_camera_angle(zr_sdl_parser *p, double degrees,
-                          const zr_sdl_loc *loc) {
-  if (!(degrees > 0 && degrees < 180)) {
-    zr__sdl_error(p, ZR_ESCENE, loc,
-                  "a perspective camera's angle must be between 0 and 180 "
-                  "degrees, not %g", degrees);
-    return false;
-  }
-  p->camera.angle_given = true;
-  p->camera.angle = degrees;
-  return true;
-}
-
-void zr__sdl_camera_look_at(zr_sdl_parser *p, zr_vec3 target) {
-  p->camera.look_at_given = true;
-  p->camera.look_at = target;
-}
-
-void zr__sdl_camera_transform(zr_sdl_parser *p, const zr_transform *t) {
-  zr__transform_compose(&p->camera.transform, t);
-}
-
-/* Turns direction, right and up toward target about the sky vector. */
-static void look_at(zr_camera *c, zr_vec3 target) {
-  zr_vec3 d = zr_v3_sub(target, c->location);
-  if (zr_v3_len(d) == 0)
-    return; /* looking at itself: nothing to turn toward */
-  double dl = zr_v3_len(c->direction);
-  double rl = zr_v3_len(c->right);
-  double ul = zr_v3_len(c->up);
-  /* POV-Ray's space is left-handed: right = up x direction normally; a
-     right vector pointing the other way mirrors the image and stays so. */
-  double handed =
-      zr_v3_dot(zr_v3_cross(c->up, c->direction), c->right) < 0 ? -1 : 1;
-  zr_vec3 dn = zr_v3_norm(d);
-  zr_vec3 rn = zr_v3_norm(zr_v3_cross(c->sky, dn));
-  if (zr_v3_len(rn) == 0) /* looking along the sky: keep the old right */
-    rn = zr_v3_norm(zr_v3_scale(c->right, handed));
-  zr_vec3 un = zr_v3_cross(dn, rn);
-  c->direction = zr_v3_scale(dn, dl);
-  c->right = zr_v3_scale(rn, rl * handed);
-  c->up = zr_v3_scale(un, ul);
-}
-
-/*
- * POV-Ray 3.7 (measured with renders, see tests/test_parser.c) treats
- * location, direction, up, right, sky, angle and look_at as settings
- * whose last value counts wherever it is written, then aims the camera,
- * then applies the transforms in the order written.
- */
-void zr__sdl_camera_end(zr_sdl_parser *p) {
-  zr_camera *c = &p->scene->camera;
-  if (p->camera.angle_given) {
-    double half = p->camera.angle * 3.14159265358979323846 / 360.0;
-    double length = 0.5 * zr_v3_len(c->right) / tan(half);
-    c->direction = zr_v3_scale(zr_v3_norm(c->direction), length);
-  }
-  if (p->camera.look_at_given)
-    look_at(c, p->camera.look_at);
-  const zr_transform *t = &p->camera.transform;
-  c->location = zr__xform_point(t->m, c->location);
-  c->direction = zr__xform_dir(t->m, c->direction);
-  c->up = zr__xform_dir(t->m, c->up);
-  c->right = zr__xform_dir(t->m, c->right);
-  c->sky = zr__xform_dir(t->m, c->sky);
-}
+/* Lights and the camera: lib/sdl/build_camlight.c. */

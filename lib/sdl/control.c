@@ -415,6 +415,23 @@ static bool do_for(zr_sdl_parser *p, const zr_sdl_loc *at) {
   return true;
 }
 
+/* Counts one more repetition of a loop body against the context's
+   limit, so that a loop whose condition never changes ends. */
+static bool count_iteration(zr_sdl_parser *p, size_t open) {
+  unsigned long long limit = p->ctx->loop_limit;
+  if (limit == 0 || ++p->loop_iterations <= limit)
+    return true;
+  const zr_sdl_file *f = file_of(p);
+  zr_sdl_loc at = zr__sdl_token_loc(zr__sdl_top(p)->file,
+                                    &f->tokens[open]);
+  zr__sdl_error(p, ZR_ELIMIT, &at,
+                "the scene's loops ran %llu times, the limit: is this "
+                "'%s' endless? (raise the limit with "
+                "--max-loop-iterations)", limit,
+                directive_name(f->tokens[open].kind));
+  return false;
+}
+
 /* The #end of a #for: the next value of the counter, or the way out. */
 static bool for_end(zr_sdl_parser *p, size_t end, const zr_sdl_loc *at) {
   zr_sdl_ctl *c = top_ctl(p);
@@ -434,7 +451,7 @@ static bool for_end(zr_sdl_parser *p, size_t end, const zr_sdl_loc *at) {
   if (!again)
     return leave_block(p, end);
   zr__sdl_top(p)->pos = body;
-  return true;
+  return count_iteration(p, c->open);
 }
 
 static bool do_end(zr_sdl_parser *p, const zr_sdl_loc *at) {
@@ -460,7 +477,9 @@ static bool do_end(zr_sdl_parser *p, const zr_sdl_loc *at) {
     zr_sdl_loc wl = zr__sdl_token_loc(fr->file, &file_of(p)->tokens[open]);
     if (!paren_truth(p, &wl, &again))
       return false;
-    return again || leave_block(p, end);
+    if (again)
+      return count_iteration(p, open);
+    return leave_block(p, end);
   }
   case ZR_SDL_CTL_FOR:
     return for_end(p, end, at);

@@ -580,7 +580,7 @@ static bool ends_operand(int kind) {
   case T_PIGMENT_ID: case T_FINISH_ID: case T_TEXTURE_ID:
   case T_INTERIOR_ID: case T_OBJECT_ID: case T_STRING_ID: case T_ARRAY_ID:
   case T_SEED_ID: case T_FUNCTION_ID: case T_STRING:
-  case T_NORMAL_ID: case T_COLOUR_MAP_ID:
+  case T_NORMAL_ID: case T_COLOUR_MAP_ID: case T_MATERIAL_ID:
   /* function.c reads a function's body straight from the token array:
      the next token the engine hands out follows the whole function. */
   case T_FUNCTION:
@@ -801,6 +801,8 @@ static int identifier_token(zr_sdl_kind kind) {
   case ZR_SDL_FUNCTION: return T_FUNCTION_ID;
   case ZR_SDL_NORMAL: return T_NORMAL_ID;
   case ZR_SDL_COLOUR_MAP: return T_COLOUR_MAP_ID;
+  case ZR_SDL_MATERIAL: return T_MATERIAL_ID;
+  case ZR_SDL_SKY_SPHERE: return T_SKY_SPHERE_ID;
   case ZR_SDL_STRING: return T_STRING_ID;
   case ZR_SDL_ARRAY: return T_ARRAY_ID;
   case ZR_SDL_SEED: return T_SEED_ID;

@@ -4,6 +4,7 @@
 lib_libzrcube_la_SOURCES += \
 	lib/sdl/sdl.h \
 	lib/sdl/build.c \
+	lib/sdl/build_object.c \
 	lib/sdl/builtins.c \
 	lib/sdl/control.c \
 	lib/sdl/directive.c \
@@ -54,3 +55,34 @@ tests_test_function_CPPFLAGS = $(TEST_CPPFLAGS)
 tests_test_function_LDADD = $(TEST_LDADD)
 tests_test_function_LDFLAGS = -static
 $(tests_test_function_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
+
+# Building meshes, mesh2 and text from the grammar.
+lib_libzrcube_la_SOURCES += lib/sdl/build_mesh.c lib/sdl/build_mesh.h
+lib_libzrcube_la_SOURCES += lib/sdl/build_texture.c
+
+# Cameras, lights and atmospheric effects (issue 3).
+lib_libzrcube_la_SOURCES += lib/sdl/build_camlight.c lib/sdl/build_camlight.h
+
+# Building tori, polygons and superellipsoids from the grammar.
+lib_libzrcube_la_SOURCES += lib/sdl/build_shape.c lib/sdl/build_shape.h
+
+# Radiosity settings: global_settings { radiosity { } }, an object's
+# radiosity keywords and finish { energy } (issue 4).
+lib_libzrcube_la_SOURCES += lib/sdl/build_radiosity.c
+check_PROGRAMS += tests/test_rad_settings
+TESTS += tests/test_rad_settings
+tests_test_rad_settings_SOURCES = tests/test_rad_settings.c \
+	tests/parse_fixture.c tests/parse_fixture.h bin/options.c bin/options.h
+tests_test_rad_settings_CPPFLAGS = $(TEST_CPPFLAGS) -I$(top_srcdir)/bin
+tests_test_rad_settings_LDADD = $(TEST_LDADD)
+tests_test_rad_settings_LDFLAGS = -static
+$(tests_test_rad_settings_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
+# Radiosity where the method is known to fail (issue 4), coarse settings.
+check_PROGRAMS += tests/test_rad_stability
+TESTS += tests/test_rad_stability
+tests_test_rad_stability_SOURCES = tests/test_rad_stability.c \
+	tests/parse_fixture.c tests/parse_fixture.h
+tests_test_rad_stability_CPPFLAGS = $(TEST_CPPFLAGS)
+tests_test_rad_stability_LDADD = $(TEST_LDADD)
+tests_test_rad_stability_LDFLAGS = -static
+$(tests_test_rad_stability_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h

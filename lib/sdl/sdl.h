@@ -94,7 +94,9 @@ typedef enum zr_sdl_kind {
   ZR_SDL_FILE,   /* ptr: a zr_sdl_fhandle made by #fopen */
   ZR_SDL_FUNCTION, /* ptr: a compiled zr_fn (function.h) */
   ZR_SDL_NORMAL,     /* ptr: a zr_normal */
-  ZR_SDL_COLOUR_MAP  /* ptr: a zr_colour_map */
+  ZR_SDL_COLOUR_MAP, /* ptr: a zr_colour_map */
+  ZR_SDL_MATERIAL,   /* ptr: a zr_sdl_material (build_texture.c) */
+  ZR_SDL_SKY_SPHERE  /* ptr: a zr_sky_sphere (build_camlight.c) */
 } zr_sdl_kind;
 
 /* What an identifier stands for.  Pointers are into the scene's arena
@@ -173,7 +175,17 @@ typedef enum zr_sdl_mod_kind {
   ZR_SDL_MOD_NO_SHADOW,
   ZR_SDL_MOD_INVERSE,
   ZR_SDL_MOD_OPEN,
-  ZR_SDL_MOD_NORMAL
+  ZR_SDL_MOD_NORMAL,
+  /* lib/sdl/build_object.c */
+  ZR_SDL_MOD_HOLLOW,        /* ptr: NULL for on, anything else off */
+  ZR_SDL_MOD_CLIPPED_BY,    /* ptr: an intersection of the objects */
+  ZR_SDL_MOD_BOUNDED_BY,    /* ptr: likewise */
+  ZR_SDL_MOD_CLIP_TO_BOUND, /* clipped_by { bounded_by } */
+  ZR_SDL_MOD_BOUND_TO_CLIP, /* bounded_by { clipped_by } */
+  ZR_SDL_MOD_MATERIAL,      /* ptr: a zr_sdl_material */
+  /* Read and warned about, no effect: radiosity { importance },
+     no_radiosity (lib/sdl/build_radiosity.c). */
+  ZR_SDL_MOD_IGNORED
 } zr_sdl_mod_kind;
 
 typedef struct zr_sdl_mod {
@@ -384,6 +396,12 @@ typedef struct zr_sdl_parser {
   int nested_depth; /* parsers running, for ZR_SDL_MAX_NESTED_PARSE */
   int macro_depth;
   int include_depth;
+  unsigned long long loop_iterations; /* bodies repeated, all loops */
+  /* POV-Ray radiosity items of the current block that mean nothing
+     here, one bit each (lib/sdl/build_radiosity.c); object radiosity
+     keywords already warned about, so a scene gets one warning. */
+  unsigned radiosity_ignored;
+  unsigned radiosity_object_warned;
   /* Render settings the language can read (image_width, clock...). */
   int image_width, image_height;
   double clock;
@@ -403,8 +421,9 @@ typedef struct zr_sdl_parser {
   /* What a camera block defers to its end (see build.c). */
   struct {
     bool look_at_given, angle_given;
+    bool right_given, up_given, v_angle_given, type_given;
     zr_vec3 look_at;
-    double angle;
+    double angle, v_angle;
     zr_transform transform;
   } camera;
 } zr_sdl_parser;
@@ -594,6 +613,21 @@ bool zr__sdl_sphere(zr_sdl_parser *p, zr_object *o, const zr_sdl_expr *c,
                     const zr_sdl_loc *cl, const zr_sdl_expr *r,
                     const zr_sdl_loc *rl);
 bool zr__sdl_union_add(zr_sdl_parser *p, zr_object *u, zr_object *child);
+/* CSG and the rarer object modifiers (lib/sdl/build_object.c). */
+void zr__sdl_object_invert(zr_object *o);
+bool zr__sdl_difference_add(zr_sdl_parser *p, zr_object *d,
+                            zr_object *child);
+bool zr__sdl_object_mod_more(zr_sdl_parser *p, zr_object *o,
+                             const zr_sdl_mod *mod);
+zr_object *zr__sdl_quadric(zr_sdl_parser *p, const zr_sdl_expr e[4],
+                           const zr_sdl_loc *loc, const zr_sdl_loc at[4]);
+zr_object *zr__sdl_poly_new(zr_sdl_parser *p, const zr_sdl_expr *order,
+                            const zr_sdl_loc *order_loc,
+                            const zr_sdl_loc *loc);
+bool zr__sdl_poly_coef(zr_sdl_parser *p, zr_object *o, const zr_sdl_expr *e,
+                       const zr_sdl_loc *loc);
+bool zr__sdl_poly_done(zr_sdl_parser *p, zr_object *o,
+                       const zr_sdl_loc *loc);
 bool zr__sdl_object_mod(zr_sdl_parser *p, zr_object *o,
                         const zr_sdl_mod *mod, const zr_sdl_loc *loc);
 zr_transform *zr__sdl_transform(zr_sdl_parser *p, int token,
@@ -632,19 +666,83 @@ bool zr__sdl_normal_pattern(zr_sdl_parser *p, zr_normal *nm, int kind,
                             const zr_sdl_loc *loc);
 bool zr__sdl_normal_transform(zr_sdl_parser *p, zr_normal *nm,
                               const zr_transform *t);
+
+/* Maps, layered and patterned textures, materials (build_texture.c). */
+typedef struct zr_sdl_material {
+  const zr_texture *texture;   /* NULL: none given */
+  const zr_interior *interior; /* NULL: none given */
+} zr_sdl_material;
+
+zr_map *zr__sdl_map_new(zr_sdl_parser *p);
+/* Appends an entry whose value is v (ascending), item in e->u. */
+bool zr__sdl_map_add(zr_sdl_parser *p, zr_map *m, const zr_sdl_expr *v,
+                     const zr_sdl_loc *vl, zr_map_entry *e);
+/* Appends an entry written without a value, which only average allows
+   ("Average": the weight is then 1). */
+bool zr__sdl_map_add_weight1(zr_sdl_parser *p, zr_map *m, zr_map_entry *e);
+/* Appends a block pattern's next item: its value is its index. */
+bool zr__sdl_map_add_block(zr_sdl_parser *p, zr_map *m, zr_map_entry *e,
+                           const zr_sdl_loc *loc);
+bool zr__sdl_slope_add(zr_sdl_parser *p, zr_map *m, const zr_sdl_expr *v,
+                       const zr_sdl_loc *vl, const zr_sdl_expr *hs,
+                       const zr_sdl_loc *hsl);
+bool zr__sdl_map_done(zr_sdl_parser *p, const zr_map *m, const char *what,
+                      const zr_sdl_loc *loc);
+bool zr__sdl_pigment_map_set(zr_sdl_parser *p, zr_pigment *pg,
+                             const zr_map *m, const zr_sdl_loc *loc);
+bool zr__sdl_normal_map_set(zr_sdl_parser *p, zr_normal *nm,
+                            const zr_map *m, const zr_sdl_loc *loc);
+bool zr__sdl_texture_map_set(zr_sdl_parser *p, zr_texture *tx,
+                             const zr_map *m, const zr_sdl_loc *loc);
+/* spiral1/spiral2 Number_of_Arms on a pattern already of that kind. */
+bool zr__sdl_spiral_arms(zr_sdl_parser *p, zr_pattern *pt,
+                         const zr_sdl_expr *arms, const zr_sdl_loc *loc);
+/* pigment_pattern { ... } makes pt that pattern of pg. */
+void zr__sdl_pigment_pattern_of(zr_pattern *pt, const zr_pigment *pg);
+/* A texture's own pattern (for its texture_map or block list). */
+void zr__sdl_texture_pattern(zr_texture *tx, int kind);
+/* above layered on top of below (NULL: above alone); below's chain is
+   copied, above's shared. */
+zr_texture *zr__sdl_texture_layer(zr_sdl_parser *p, const zr_texture *below,
+                                  const zr_texture *above);
+/* The top layer of tx, a private copy: the chain above tx is copied
+   (tx itself must be one already); NULL when out of memory. */
+zr_texture *zr__sdl_texture_top(zr_sdl_parser *p, zr_texture *tx);
+/* The parts of a texture transform zr__sdl_texture_transform leaves to
+   this file: the map's pattern and textures, and the layers above. */
+bool zr__sdl_texture_transform_more(zr_sdl_parser *p, zr_texture *tx,
+                                    const zr_transform *t);
+zr_sdl_material *zr__sdl_material_new(zr_sdl_parser *p,
+                                      const zr_sdl_material *from);
+bool zr__sdl_material_texture(zr_sdl_parser *p, zr_sdl_material *m,
+                              const zr_texture *tx);
+bool zr__sdl_material_transform(zr_sdl_parser *p, zr_sdl_material *m,
+                                const zr_transform *t);
 /* Reads the picture of an image_map, searched like #include. */
 zr_image_map *zr__sdl_image_map_new(zr_sdl_parser *p, const char *name,
                                     const zr_sdl_loc *loc);
 bool zr__sdl_image_map_mod(zr_sdl_parser *p, zr_image_map *im, int token,
                            const zr_sdl_expr *e, const zr_sdl_loc *loc);
-/* A point light with its place set; the grammar fills the rest. */
-bool zr__sdl_light(zr_sdl_parser *p, zr_light *l, const zr_sdl_loc *loc);
-void zr__sdl_camera_begin(zr_sdl_parser *p, const zr_sdl_loc *loc);
-bool zr__sdl_camera_angle(zr_sdl_parser *p, double degrees,
-                          const zr_sdl_loc *loc);
-void zr__sdl_camera_look_at(zr_sdl_parser *p, zr_vec3 target);
-void zr__sdl_camera_transform(zr_sdl_parser *p, const zr_transform *t);
-/* Applies what the block deferred: angle, look_at, then transforms. */
-void zr__sdl_camera_end(zr_sdl_parser *p);
+/* Cameras, lights and atmospheric effects: lib/sdl/build_camlight.h. */
+
+/* ---- radiosity settings (build_radiosity.c) ---- */
+
+/* global_settings { radiosity {: radiosity on, a new block's items. */
+void zr__sdl_radiosity_begin(zr_sdl_parser *p);
+/* One item: keyword token kw with its value a and second value b (NULL
+   when not written); loc is the last thing written. */
+bool zr__sdl_radiosity_item(zr_sdl_parser *p, int kw, const zr_sdl_expr *a,
+                            const zr_sdl_expr *b, const zr_sdl_loc *loc);
+/* save_file or load_file (POV-Ray 3.6), read and warned about. */
+void zr__sdl_radiosity_file(zr_sdl_parser *p, int kw,
+                            const zr_sdl_loc *loc);
+/* The block's closing brace: one warning naming the ignored items. */
+void zr__sdl_radiosity_end(zr_sdl_parser *p, const zr_sdl_loc *loc);
+/* An object's no_radiosity or radiosity { importance }: a warning. */
+void zr__sdl_radiosity_object(zr_sdl_parser *p, int kw,
+                              const zr_sdl_loc *loc);
+/* finish { energy P }: P a float or colour, every channel >= 0. */
+bool zr__sdl_finish_energy(zr_sdl_parser *p, zr_finish *f,
+                           const zr_sdl_expr *e, const zr_sdl_loc *loc);
 
 #endif /* ZR_SDL_SDL_H */

@@ -18,6 +18,7 @@
  */
 #include "trace/bvh.h"
 
+#include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -434,15 +435,27 @@ bool zr__bvh_nearest(const struct zr_bvh *bvh, const zr_ray *ray,
   if (!found)
     return false;
   /* Only the winner's normal is needed: intersect it once more with
-     normals, over an interval that still contains its crossing. */
+     normals, over an interval that still contains its crossing.  It
+     starts just before that crossing: the winner may be a part of a CSG
+     object whose first crossings the CSG rules removed (lib/trace/csg.c),
+     and a part reports only its nearest two. */
   zr_hit h[ZR_MAX_CROSSINGS];
-  int n = zr__intersect(hit->object, ray, t0, INFINITY, h);
+  double from = hit->t - 1e-9 * fmax(1.0, fabs(hit->t));
+  int n = zr__intersect(hit->object, ray, from > t0 ? from : t0, INFINITY,
+                        h);
+  /* The crossing nearest the one found: shapes whose roots are refined
+     inside the interval searched (lib/trace/roots.c) may place it a
+     rounding away from before. */
+  int best = -1;
   for (int i = 0; i < n; i++)
-    if (h[i].t == hit->t) {
-      *hit = h[i];
-      return true;
-    }
-  return true; /* unreachable: the same code found this t before */
+    if (best < 0 || fabs(h[i].t - hit->t) < fabs(h[best].t - hit->t))
+      best = i;
+  if (best >= 0) {
+    double t = hit->t;
+    *hit = h[best];
+    hit->t = t;
+  }
+  return true;
 }
 
 bool zr__bvh_all(const struct zr_bvh *bvh, const zr_ray *ray, double tmin,

@@ -22,19 +22,76 @@
 
 #include <math.h>
 
+#include "trace/obj_mesh.h"
+#include "trace/obj_poly.h"
+#include "trace/obj_quadric.h"
+#include "trace/obj_shapes.h"
+#include "trace/obj_text.h"
+
 /* Crossings gathered for one shape before clipping to the interval. */
 typedef struct crossing_list {
   int n;
   double t[4];
   zr_vec3 normal[4]; /* object space, any length */
+  int32_t texture[4]; /* a mesh's texture list index, -1 for none */
 } crossing_list;
 
 static void add_crossing(crossing_list *l, double t, zr_vec3 n) {
   if (l->n < 4 && isfinite(t)) {
     l->t[l->n] = t;
     l->normal[l->n] = n;
+    l->texture[l->n] = -1;
     l->n++;
   }
+}
+
+/* Meshes and text hold many surfaces, so they search the interval
+   themselves (lib/trace/obj_mesh.c, obj_text.c) and give the nearest
+   two crossings in it. */
+static void compound_crossings(const zr_object *o, zr_vec3 org,
+                               zr_vec3 dir, double tmin, double tmax,
+                               crossing_list *l) {
+  zr_mesh_crossing c[2];
+  int n = o->kind == ZR_OBJ_MESH
+              ? zr__mesh_crossings(o->u.mesh.data, org, dir, tmin, tmax, c)
+              : zr__text_crossings(o->u.text.data, org, dir, tmin, tmax, c);
+  for (int i = 0; i < n; i++) {
+    add_crossing(l, c[i].t, c[i].normal);
+    l->texture[l->n - 1] = c[i].texture;
+  }
+}
+
+/* Shapes whose crossings are searched for (lib/trace/obj_shapes.h) take
+   the interval, so that a ray leaving such a shape does not spend its
+   room on crossings behind it. */
+static bool is_searched(zr_object_kind kind) {
+  return kind == ZR_OBJ_TORUS || kind == ZR_OBJ_POLYGON ||
+         kind == ZR_OBJ_SUPERELLIPSOID || kind == ZR_OBJ_PRISM ||
+         kind == ZR_OBJ_LATHE || kind == ZR_OBJ_BLOB || kind == ZR_OBJ_SOR;
+}
+
+static void searched_crossings(const zr_object *o, zr_vec3 org,
+                               zr_vec3 dir, double tmin, double tmax,
+                               crossing_list *l) {
+  double t[ZR_SHAPE_MAX_CROSSINGS];
+  zr_vec3 n[ZR_SHAPE_MAX_CROSSINGS];
+  int k = 0;
+  if (o->kind == ZR_OBJ_TORUS)
+    k = zr__torus_crossings(o, org, dir, tmin, tmax, t, n);
+  else if (o->kind == ZR_OBJ_POLYGON)
+    k = zr__polygon_crossings(o, org, dir, tmin, tmax, t, n);
+  else if (o->kind == ZR_OBJ_PRISM)
+    k = zr__prism_crossings(o, org, dir, tmin, tmax, t, n);
+  else if (o->kind == ZR_OBJ_LATHE)
+    k = zr__lathe_crossings(o, org, dir, tmin, tmax, t, n);
+  else if (o->kind == ZR_OBJ_BLOB)
+    k = zr__blob_crossings(o, org, dir, tmin, tmax, t, n);
+  else if (o->kind == ZR_OBJ_SOR)
+    k = zr__sor_crossings(o, org, dir, tmin, tmax, t, n);
+  else
+    k = zr__superellipsoid_crossings(o, org, dir, tmin, tmax, t, n);
+  for (int i = 0; i < k; i++)
+    add_crossing(l, t[i], n[i]);
 }
 
 /*
@@ -267,8 +324,57 @@ static void shape_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
     disc_crossings(o, org, dir, l);
     break;
   case ZR_OBJ_UNION:
-    break; /* flattened before tracing */
+  case ZR_OBJ_MESH:
+  case ZR_OBJ_TEXT:
+    break; /* flattened before tracing; compound_crossings() */
+  case ZR_OBJ_QUADRIC: {
+    double t[2];
+    zr_vec3 n[2];
+    int k = zr__quadric_crossings(o->u.quadric.coef, org, dir, t, n);
+    for (int i = 0; i < k; i++)
+      add_crossing(l, t[i], n[i]);
+    break;
   }
+  case ZR_OBJ_INTERSECTION:
+  case ZR_OBJ_MERGE:
+    break; /* lib/trace/csg.c, called before the transform */
+  case ZR_OBJ_POLY:
+    break; /* poly_crossings() */
+  case ZR_OBJ_TORUS:
+  case ZR_OBJ_POLYGON:
+  case ZR_OBJ_SUPERELLIPSOID:
+  case ZR_OBJ_PRISM:
+  case ZR_OBJ_LATHE:
+  case ZR_OBJ_BLOB:
+  case ZR_OBJ_SOR:
+    break; /* searched_crossings() */
+  }
+}
+
+/* poly, cubic, quartic: the root finder needs the interval. */
+static void poly_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
+                           double tmin, double tmax, crossing_list *l) {
+  double t[4];
+  zr_vec3 n[4];
+  int k = zr__poly_crossings(o, org, dir, tmin, tmax, t, n);
+  for (int i = 0; i < k; i++)
+    add_crossing(l, t[i], n[i]);
+}
+
+/* clipped_by: drops the crossings outside the clipping object, which is
+   tested in world space (the ray's t is the same in both spaces). */
+static void clip_crossings(const zr_object *clip, const zr_ray *ray,
+                           crossing_list *l) {
+  int kept = 0;
+  for (int i = 0; i < l->n; i++) {
+    if (!zr__inside(clip, zr_v3_madd(ray->origin, ray->dir, l->t[i])))
+      continue;
+    l->t[kept] = l->t[i];
+    l->normal[kept] = l->normal[i];
+    l->texture[kept] = l->texture[i];
+    kept++;
+  }
+  l->n = kept;
 }
 
 /* The crossings in (tmin, tmax), sorted, with world normals only when
@@ -277,6 +383,8 @@ static void shape_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
 static int crossings(const zr_object *object, const zr_ray *ray,
                      double tmin, double tmax, bool want_normals,
                      zr_hit hits[ZR_MAX_CROSSINGS]) {
+  if (zr__is_csg(object->kind)) /* children carry their transforms */
+    return zr__csg_crossings(object, ray, tmin, tmax, want_normals, hits);
   zr_vec3 org = ray->origin, dir = ray->dir;
   if (object->transform) {
     org = zr__xform_point(object->transform->inv, org);
@@ -284,7 +392,16 @@ static int crossings(const zr_object *object, const zr_ray *ray,
   }
   crossing_list l;
   l.n = 0;
-  shape_crossings(object, org, dir, &l);
+  if (object->kind == ZR_OBJ_MESH || object->kind == ZR_OBJ_TEXT)
+    compound_crossings(object, org, dir, tmin, tmax, &l);
+  else if (is_searched(object->kind))
+    searched_crossings(object, org, dir, tmin, tmax, &l);
+  else if (object->kind == ZR_OBJ_POLY)
+    poly_crossings(object, org, dir, tmin, tmax, &l);
+  else
+    shape_crossings(object, org, dir, &l);
+  if (object->clip)
+    clip_crossings(object->clip, ray, &l);
   int n = 0;
   for (int i = 0; i < l.n; i++) {
     double t = l.t[i];
@@ -313,7 +430,9 @@ static int crossings(const zr_object *object, const zr_ray *ray,
     }
     hits[j].t = t;
     hits[j].normal = nrm;
-    hits[j].object = object;
+    hits[j].object = object->kind == ZR_OBJ_MESH
+                         ? zr__mesh_hit_object(object, l.texture[i])
+                         : object;
   }
   return n;
 }
@@ -362,17 +481,46 @@ static bool shape_inside(const zr_object *o, zr_vec3 p) {
   case ZR_OBJ_CONE:
     return round_inside(o->u.cone.base, o->u.cone.cap, o->u.cone.base_radius,
                         o->u.cone.cap_radius, p);
+  case ZR_OBJ_MESH:
+    return zr__mesh_inside(o->u.mesh.data, p);
+  case ZR_OBJ_TEXT:
+    return zr__text_inside(o->u.text.data, p);
+  case ZR_OBJ_QUADRIC:
+    return zr__quadric_inside(o->u.quadric.coef, p);
+  case ZR_OBJ_POLY:
+    return zr__poly_inside(o, p);
+  case ZR_OBJ_TORUS:
+    return zr__torus_inside(o, p);
+  case ZR_OBJ_SUPERELLIPSOID:
+    return zr__superellipsoid_inside(o, p);
+  case ZR_OBJ_PRISM:
+    return zr__prism_inside(o, p);
+  case ZR_OBJ_LATHE:
+    return zr__lathe_inside(o, p);
+  case ZR_OBJ_BLOB:
+    return zr__blob_inside(o, p);
+  case ZR_OBJ_SOR:
+    return zr__sor_inside(o, p);
   case ZR_OBJ_TRIANGLE:
+  case ZR_OBJ_POLYGON:
   case ZR_OBJ_UNION:
-    break;
+  case ZR_OBJ_INTERSECTION:
+  case ZR_OBJ_MERGE:
+    break; /* CSG: zr__csg_inside() */
   }
   return false;
 }
 
 bool zr__inside(const zr_object *object, zr_vec3 p) {
-  if (object->kind == ZR_OBJ_TRIANGLE)
+  if (object->kind == ZR_OBJ_TRIANGLE || object->kind == ZR_OBJ_POLYGON ||
+      (object->kind == ZR_OBJ_MESH && !zr__has_inside(object)))
     return false; /* no inside, inverse or not */
+  if (zr__is_csg(object->kind))
+    return zr__csg_inside(object, p);
+  zr_vec3 local = p;
   if (object->transform)
-    p = zr__xform_point(object->transform->inv, p);
-  return shape_inside(object, p) != object->inverse;
+    local = zr__xform_point(object->transform->inv, p);
+  bool in = shape_inside(object, local) != object->inverse;
+  /* A clipped object is inside where it and its clip both are. */
+  return in && (!object->clip || zr__inside(object->clip, p));
 }

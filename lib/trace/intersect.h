@@ -30,7 +30,8 @@ typedef struct zr_hit {
 } zr_hit;
 
 /* The most crossings one primitive gives in an interval: every shape
-   here is convex, or flat, or a plane. */
+   here is convex, or flat, or a plane; meshes, text, tori and
+   superellipsoids, which may have more, give their nearest two. */
 #define ZR_MAX_CROSSINGS 2
 
 /*
@@ -50,10 +51,21 @@ int zr__intersect_t(const zr_object *object, const zr_ray *ray, double tmin,
    inverse applied).  Triangles have no inside; a disc's is its plane's. */
 bool zr__inside(const zr_object *object, zr_vec3 p);
 
+/* CSG primitives (lib/trace/csg.c): the same contracts as
+   zr__intersect (normals only when want_normals) and zr__inside. */
+int zr__csg_crossings(const zr_object *object, const zr_ray *ray,
+                      double tmin, double tmax, bool want_normals,
+                      zr_hit hits[ZR_MAX_CROSSINGS]);
+bool zr__csg_inside(const zr_object *object, zr_vec3 p);
+
 /* Whether the object encloses a volume (triangles and discs do not, so
    rays crossing them stay in the medium they were in). */
+bool zr__mesh_has_inside(const zr_object *object); /* obj_mesh.c */
 static inline bool zr__has_inside(const zr_object *object) {
-  return object->kind != ZR_OBJ_TRIANGLE && object->kind != ZR_OBJ_DISC;
+  if (object->kind == ZR_OBJ_MESH)
+    return zr__mesh_has_inside(object);
+  return object->kind != ZR_OBJ_TRIANGLE && object->kind != ZR_OBJ_DISC &&
+         object->kind != ZR_OBJ_POLYGON;
 }
 
 /*

@@ -8,7 +8,10 @@
  *                                    v = 0.5 - (y + 0.5) / H,
  * from the camera's location.  POV-Ray 3.7 does not adapt `right` to the
  * image's aspect ratio (a 200 x 100 render of the default camera stretches
- * a sphere to twice its width), and neither does this.
+ * a sphere to twice its width), and neither does this.  Other
+ * projections map (u, v) to rays in lib/trace/camera.c; focal blur
+ * averages lens samples drawn from a hash of the pixel and sample
+ * number, stopping by the camera's confidence and variance.
  *
  * Antialiasing runs in two passes so that every pixel's result depends
  * only on the scene and the complete image of pixel centres: pass 1 traces
@@ -62,9 +65,9 @@ ZR_API void zr_render_stats_add(zr_render_stats *a,
 zr_ray zr__camera_ray(const zr_camera *camera, int width, int height,
                       double x, double y) {
   double u = x / width - 0.5, v = 0.5 - y / height;
-  zr_vec3 dir = zr_v3_madd(zr_v3_madd(camera->direction, camera->right, u),
-                           camera->up, v);
-  zr_ray ray = {camera->location, dir};
+  zr_ray ray = {camera->location, zr_v3(0, 0, 0)};
+  if (!zr__camera_project(camera, u, v, &ray))
+    ray.dir = zr_v3(0, 0, 0); /* no ray here: the caller renders black */
   return ray;
 }
 
@@ -119,10 +122,82 @@ void zr__camera_media(const zr_scene *scene, zr_media *media) {
   }
 }
 
+/* The normal quantile for a two-sided confidence c (0.9 -> 1.645), by
+   bisection on erf: focal blur stops when the mean is this many
+   standard errors within the variance asked for. */
+static double normal_quantile(double c) {
+  double lo = 0.0, hi = 10.0;
+  for (int i = 0; i < 60; i++) {
+    double mid = 0.5 * (lo + hi);
+    if (erf(mid / sqrt(2.0)) < c)
+      lo = mid;
+    else
+      hi = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+/*
+ * Focal blur: samples jittered over the pixel and the lens from hashes
+ * of (pixel, sample), at least blur_min and at most blur_samples, and
+ * stops once z^2 * (sample variance) / n < variance in every channel,
+ * z the normal quantile of the confidence (POV-Ray's adaptive rule in
+ * the manual's words; its exact statistic is not documented).
+ */
+static zr_rgb focal_blur(const pixel_job *job, const zr_render_params *p,
+                         double x, double y) {
+  const zr_tracer *tr = &job->tracer;
+  const zr_camera *c = &tr->scene->camera;
+  uint32_t pixel = (uint32_t)floor(y) * (uint32_t)p->width +
+                   (uint32_t)floor(x);
+  /* Supersamples of one pixel differ in their sub-pixel offset. */
+  uint32_t salt = (uint32_t)((x - floor(x)) * 65536.0) * 65537U ^
+                  (uint32_t)((y - floor(y)) * 65536.0);
+  double z = normal_quantile(c->confidence);
+  int max = c->blur_samples, min = c->blur_min > 0 ? c->blur_min : 1;
+  zr_rgb sum = zr_rgb3(0, 0, 0), sum2 = zr_rgb3(0, 0, 0);
+  int n = 0;
+  for (int k = 0; k < max; k++) {
+    uint32_t s = (uint32_t)k * 7919U + salt;
+    double jx = k == 0 ? 0.0 : zr__hash_uniform(pixel, s, 2) - 0.5;
+    double jy = k == 0 ? 0.0 : zr__hash_uniform(pixel, s, 3) - 0.5;
+    zr_ray ray = zr__camera_ray(c, p->width, p->height, x + jx, y + jy);
+    zr_rgb col = zr_rgb3(0, 0, 0);
+    if (zr_v3_len(ray.dir) > 0.0) {
+      zr__camera_focal_sample(c, &ray, zr__hash_uniform(pixel, s, 4),
+                              zr__hash_uniform(pixel, s, 5));
+      col = zr__trace_ray(tr, &ray, 1, 1.0, &job->camera_media);
+    }
+    sum = zr_rgb_add(sum, col);
+    sum2 = zr_rgb_add(sum2, zr_rgb_mul(col, col));
+    n++;
+    if (n >= min && n > 1) {
+      double worst = 0.0;
+      double m[3] = {sum.r / n, sum.g / n, sum.b / n};
+      double q[3] = {sum2.r / n, sum2.g / n, sum2.b / n};
+      for (int i = 0; i < 3; i++)
+        worst = fmax(worst, fmax(0.0, q[i] - m[i] * m[i]) * n / (n - 1));
+      if (z * z * worst / n < c->variance)
+        break;
+    }
+  }
+  tr->stats->supersample_rays += (uint64_t)(n > 0 ? n - 1 : 0);
+  return zr_rgb_scale(sum, 1.0 / n);
+}
+
 static void trace_point(const pixel_job *job, const zr_render_params *p,
                         double x, double y, zr_rgb *out) {
   const zr_tracer *tr = &job->tracer;
-  zr_ray ray = zr__camera_ray(&tr->scene->camera, p->width, p->height, x, y);
+  const zr_camera *c = &tr->scene->camera;
+  if (c->aperture > 0.0 && c->blur_samples > 0) {
+    *out = focal_blur(job, p, x, y);
+    return;
+  }
+  zr_ray ray = zr__camera_ray(c, p->width, p->height, x, y);
+  if (zr_v3_len(ray.dir) == 0.0) {
+    *out = zr_rgb3(0, 0, 0); /* outside a fisheye's circle */
+    return;
+  }
   *out = zr__trace_ray(tr, &ray, 1, 1.0, &job->camera_media);
 }
 

@@ -18,6 +18,20 @@
 zr_ray zr__camera_ray(const zr_camera *camera, int width, int height,
                       double x, double y);
 
+/*
+ * The camera ray through image point (u, v), u right and v up in
+ * [-0.5, 0.5], for any projection (lib/trace/camera.c); false where the
+ * projection has no ray (outside a fisheye's circle), which renders
+ * black.
+ */
+bool zr__camera_project(const zr_camera *camera, double u, double v,
+                        zr_ray *ray);
+
+/* Moves *ray (a pinhole camera ray) to a point of the lens chosen by a
+   and b in [0, 1), aimed at the focal plane: one focal blur sample. */
+bool zr__camera_focal_sample(const zr_camera *camera, zr_ray *ray,
+                             double a, double b);
+
 /* The objects that enclose the camera's location, outermost first. */
 void zr__camera_media(const zr_scene *scene, zr_media *media);
 

@@ -28,7 +28,10 @@
  * A light only shines on the side of the surface that faces the viewer,
  * so nothing lights an opaque surface through itself; shadow rays pass
  * through transparent surfaces, each crossing scaling the light by its
- * f * C + t.  Light is not attenuated with distance.  Rays are followed to
+ * f * C + t.  Light is not attenuated with distance unless the light
+ * fades; spotlights, cylinder, parallel and area lights are shaped in
+ * lib/trace/lights.c, and fog, rainbows and the sky_sphere act at the
+ * ray's end (lib/trace/atmosphere.c).  Rays are followed to
  * max_trace_level (deeper ones return black, as in POV-Ray; a ray that
  * passes a surface unbent does not count), and a
  * secondary ray is spawned only if its weight, the product of the
@@ -52,10 +55,14 @@
 
 #include <math.h>
 #include <stddef.h>
+#include <stdint.h>
+#include <string.h>
 
 #include "radiosity/radiosity.h"
 #include "scene/texture.h"
+#include "trace/atmosphere.h"
 #include "trace/bvh.h"
+#include "trace/lights.h"
 
 zr_colour zr__pigment_at(const zr_pigment *pigment, zr_vec3 p) {
   return zr__pigment_eval(pigment, p); /* lib/scene/texture.c */
@@ -79,8 +86,14 @@ static bool shadow_visit(const zr_hit *hit, void *user) {
   if (o->no_shadow)
     return true;
   zr_vec3 p = zr_v3_madd(w->ray->origin, w->ray->dir, hit->t);
-  zr_colour c = zr__pigment_at(o->texture->pigment, p);
-  w->light = zr_rgb_mul(w->light, see_through(c));
+  const zr_texture *tx = o->texture;
+  if (tx->over || tx->map) {
+    /* Layered or patterned: lib/scene/texture.c. */
+    w->light = zr_rgb_mul(w->light, zr__texture_see_through(tx, p));
+  } else {
+    zr_colour c = zr__pigment_at(tx->pigment, p);
+    w->light = zr_rgb_mul(w->light, see_through(c));
+  }
   return rgb_max(w->light) > 0.0;
 }
 
@@ -154,6 +167,7 @@ typedef struct surface {
   const zr_finish *finish;
   zr_colour colour;
   double offset;  /* distance to move secondary rays off the surface */
+  bool layer;     /* an upper layer: the layers below take transmission */
 } surface;
 
 /*
@@ -184,6 +198,26 @@ static zr_rgb metallic_tint(double m, zr_rgb c, double cos_angle) {
                  1.0 + k * (c.b - 1.0));
 }
 
+/*
+ * crand ("Crand Graininess"): POV-Ray darkens the diffuse light from
+ * light sources by a random fraction up to crand, anew at every sample.
+ * Here the fraction is a hash of the point's coordinates, uniform in
+ * [0, 1): as grainy, but the same in every render and on every rank.
+ */
+static double point_random(zr_vec3 p) {
+  double c[3] = {p.x, p.y, p.z};
+  uint64_t h = 0x9e3779b97f4a7c15u;
+  for (int i = 0; i < 3; i++) {
+    uint64_t bits;
+    memcpy(&bits, &c[i], sizeof bits);
+    h ^= bits + 0x9e3779b97f4a7c15u + (h << 6) + (h >> 2);
+    h ^= h >> 33;
+    h *= 0xff51afd7ed558ccdu;
+    h ^= h >> 33;
+  }
+  return (double)(h >> 11) / 9007199254740992.0;
+}
+
 /* Diffuse light and highlights from every light source. */
 static zr_rgb direct_light(const zr_tracer *tr, const surface *s,
                            double opacity) {
@@ -194,23 +228,28 @@ static zr_rgb direct_light(const zr_tracer *tr, const surface *s,
   zr_vec3 lit_from = zr_v3_madd(s->p, s->n, s->offset);
   for (size_t i = 0; i < scene->n_lights; i++) {
     const zr_light *light = &scene->lights[i];
-    zr_vec3 l = zr_v3_norm(zr_v3_sub(light->location, s->p));
+    zr_vec3 l;
+    zr_rgb lc;
+    if (!zr__light_arrive(light, s->p, &l, &lc))
+      continue; /* outside a spotlight's cone (lib/trace/lights.c) */
     double n_dot_l = zr_v3_dot(s->n, l);
     if (!(n_dot_l > 0.0))
       continue; /* the light is behind the surface */
-    zr_rgb lc = light->colour;
-    if (!light->shadowless)
-      lc = zr_rgb_mul(lc, zr__shadow_transmission(tr, light->location,
-                                                  lit_from));
+    lc = zr_rgb_mul(lc, zr__light_visibility(tr, light, s->p, lit_from));
     if (rgb_max(lc) <= 0.0)
       continue;
     if (f->diffuse != 0.0 && opacity > 0.0) {
       double d = f->diffuse * opacity *
                  (f->brilliance == 1.0 ? n_dot_l
                                        : pow(n_dot_l, f->brilliance));
+      if (f->crand > 0.0)
+        d *= 1.0 - f->crand * point_random(s->p);
       sum = zr_rgb_add(sum, zr_rgb_scale(zr_rgb_mul(lc, c), d));
     }
+    /* The manual: shadowless lights cause no highlights. */
     double h = 0.0;
+    if (light->shadowless)
+      continue;
     if (f->phong > 0.0) {
       double cos_r = zr_v3_dot(zr__reflect(s->d, s->n), l);
       if (cos_r > 0.0)
@@ -262,6 +301,30 @@ static zr_rgb reflection_amount(const surface *s, double n1, double n2) {
   return amount;
 }
 
+/*
+ * Light that travelled distance d inside the innermost object of media
+ * ("Attenuation" in the reference's Interior section): povray 3.7
+ * renders of a clear slab measure 1 / (1 + (d / fade_distance)^power)
+ * (0.8 at d = 0.5, power 2, fade_distance 1), fade_colour + (1 -
+ * fade_colour) times that per channel, and exp(-d / fade_distance) for
+ * powers above 1000.
+ */
+static zr_rgb interior_fade(const zr_media *media, double d, zr_rgb c) {
+  if (!media || media->n == 0)
+    return c;
+  const zr_interior *in = media->objects[media->n - 1]->interior;
+  if (!in || !(in->fade_distance > 0.0) || in->fade_power == 0.0)
+    return c;
+  double a = in->fade_power > 1000.0
+                 ? exp(-d / in->fade_distance)
+                 : 1.0 / (1.0 + pow(d / in->fade_distance, in->fade_power));
+  if (isinf(d))
+    a = 0.0;
+  zr_rgb f = in->fade_colour;
+  return zr_rgb3(c.r * (f.r + (1.0 - f.r) * a), c.g * (f.g + (1.0 - f.g) * a),
+                 c.b * (f.b + (1.0 - f.b) * a));
+}
+
 static zr_rgb trace_secondary(const zr_tracer *tr, zr_vec3 origin,
                               zr_vec3 dir, int level, double weight,
                               const zr_media *media) {
@@ -272,8 +335,11 @@ static zr_rgb trace_secondary(const zr_tracer *tr, zr_vec3 origin,
 /* The media a ray is in after crossing the surface. */
 static void media_beyond(const surface *s, const zr_media *media,
                          zr_media *next) {
-  if (zr__has_inside(s->object))
-    media_change(media, s->object, s->entering, next);
+  /* A part of a CSG object opens or closes the whole solid's interior
+     (its normal points out of the solid: lib/trace/csg.c). */
+  const zr_object *solid = s->object->solid ? s->object->solid : s->object;
+  if (zr__has_inside(solid))
+    media_change(media, solid, s->entering, next);
   else if (media)
     *next = *media; /* a flat object has no interior to enter */
   else
@@ -307,7 +373,7 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
   media_beyond(s, media, &next);
   double n1 = media_ior(media), n2 = media_ior(&next);
   zr_rgb refl = reflection_amount(s, n1, n2);
-  zr_rgb trans = see_through(col);
+  zr_rgb trans = s->layer ? zr_rgb3(0, 0, 0) : see_through(col);
   if (f->conserve_energy)
     trans = zr_rgb3(trans.r * (1.0 - refl.r), trans.g * (1.0 - refl.g),
                     trans.b * (1.0 - refl.b));
@@ -358,6 +424,98 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
   return sum;
 }
 
+#define MAX_LAYERS 64
+
+static zr_rgb shade_layers(const zr_tracer *tr, const surface *s,
+                           zr_vec3 n_geo, const zr_texture *tx, int level,
+                           double weight, const zr_media *media);
+
+/*
+ * One layer of a texture: a plain one shaded with its own pigment,
+ * finish and normal (an upper layer without transmission), a patterned
+ * one as the blend of its map's textures' lit colours ("Texture Maps").
+ */
+static zr_rgb shade_layer(const zr_tracer *tr, const surface *s,
+                          zr_vec3 n_geo, const zr_texture *tx, bool upper,
+                          int level, double weight, const zr_media *media) {
+  if (tx->map && tx->pattern.kind == ZR_PAT_AVERAGE) {
+    /* Every entry's lit colour, mixed by its weight ("Average"). */
+    surface ls = *s;
+    ls.layer = upper;
+    zr_rgb sum = zr_rgb3(0, 0, 0);
+    double total = 0;
+    for (size_t i = 0; i < tx->map->n; i++)
+      total += tx->map->entries[i].value;
+    if (total <= 0)
+      return sum;
+    for (size_t i = 0; i < tx->map->n; i++) {
+      double w = tx->map->entries[i].value / total;
+      sum = zr_rgb_add(sum, zr_rgb_scale(
+                                shade_layers(tr, &ls, n_geo,
+                                             tx->map->entries[i].u.texture,
+                                             level, weight * w, media),
+                                w));
+    }
+    return sum;
+  }
+  if (tx->map) {
+    const zr_texture *b;
+    double t;
+    const zr_texture *a = zr__texture_pick(tx, s->p, &b, &t);
+    surface ls = *s;
+    ls.layer = upper;
+    zr_rgb c = shade_layers(tr, &ls, n_geo, a, level, weight * (1 - t),
+                            media);
+    if (!b)
+      return c;
+    return zr_rgb_add(
+        zr_rgb_scale(c, 1 - t),
+        zr_rgb_scale(shade_layers(tr, &ls, n_geo, b, level, weight * t,
+                                  media),
+                     t));
+  }
+  surface ls = *s;
+  zr_vec3 n = n_geo;
+  if (tx->normal)
+    n = zr__normal_perturb(tx->normal, s->p, n);
+  ls.n = s->entering ? n : zr_v3_neg(n);
+  ls.finish = tx->finish;
+  ls.colour = zr__pigment_at(tx->pigment, s->p);
+  ls.layer = upper;
+  return shade(tr, &ls, level, weight, media);
+}
+
+/*
+ * A layered texture ("Layered Textures"): from the top layer down, each
+ * adds its own light, and the layers below show through its filter and
+ * transmit (f * C + t), which tint everything under them; only the
+ * bottom layer lets light through the surface.  A texture upper in the
+ * chain of a layer that is itself upper (s->layer) passes nothing.
+ */
+static zr_rgb shade_layers(const zr_tracer *tr, const surface *s,
+                           zr_vec3 n_geo, const zr_texture *tx, int level,
+                           double weight, const zr_media *media) {
+  const zr_texture *layers[MAX_LAYERS];
+  int n = 0;
+  for (const zr_texture *l = tx; l && n < MAX_LAYERS; l = l->over)
+    layers[n++] = l;
+  zr_rgb sum = zr_rgb3(0, 0, 0);
+  zr_rgb through = zr_rgb3(1, 1, 1);
+  for (int i = n - 1; i >= 0; i--) {
+    bool upper = i > 0 || s->layer;
+    zr_rgb c = shade_layer(tr, s, n_geo, layers[i], upper, level,
+                           weight * rgb_max(through), media);
+    sum = zr_rgb_add(sum, zr_rgb_mul(through, c));
+    if (i == 0)
+      break;
+    through = zr_rgb_mul(through, zr__texture_see_through_layer(
+                                      layers[i], s->p));
+    if (rgb_max(through) <= 0.0)
+      break;
+  }
+  return sum;
+}
+
 zr_rgb zr__trace_ray(const zr_tracer *tracer, const zr_ray *ray, int level,
                      double weight, const zr_media *media) {
   const zr_scene *scene = tracer->scene;
@@ -365,12 +523,25 @@ zr_rgb zr__trace_ray(const zr_tracer *tracer, const zr_ray *ray, int level,
     return zr_rgb3(0, 0, 0);
   zr_hit hit;
   if (!zr__bvh_nearest(scene->bvh, ray, 0.0, INFINITY, &hit))
-    return zr_colour_rgb(scene->settings.background);
+    return interior_fade(media, INFINITY,
+                         zr__atmosphere_apply(scene, ray->origin, ray->dir,
+                                              INFINITY,
+                                              zr__sky_colour(scene,
+                                                             ray->dir)));
   surface s;
   s.p = zr_v3_madd(ray->origin, ray->dir, hit.t);
   s.d = zr_v3_norm(ray->dir);
   s.entering = zr_v3_dot(hit.normal, s.d) < 0.0;
   zr_vec3 n = hit.normal;
+  const zr_texture *tx = hit.object->texture;
+  if ((tx->over || tx->map) && !tracer->radiosity_only) {
+    s.object = hit.object;
+    s.offset = zr__surface_offset(s.p);
+    s.layer = false;
+    return zr__atmosphere_apply(
+        scene, ray->origin, ray->dir, hit.t,
+        shade_layers(tracer, &s, n, tx, level, weight, media));
+  }
   if (hit.object->texture->normal) /* normal { }: lib/scene/texture.c */
     n = zr__normal_perturb(hit.object->texture->normal, s.p, n);
   s.n = s.entering ? n : zr_v3_neg(n);
@@ -378,6 +549,7 @@ zr_rgb zr__trace_ray(const zr_tracer *tracer, const zr_ray *ray, int level,
   s.finish = hit.object->texture->finish;
   s.colour = zr__pigment_at(hit.object->texture->pigment, s.p);
   s.offset = zr__surface_offset(s.p);
+  s.layer = false;
   if (tracer->radiosity_only) {
     zr_rgb l;
     if (!tracer->radiosity ||
@@ -385,5 +557,10 @@ zr_rgb zr__trace_ray(const zr_tracer *tracer, const zr_ray *ray, int level,
       l = zr_rgb3(0, 0, 0); /* no surface in the solution: black */
     return l;
   }
-  return shade(tracer, &s, level, weight, media);
+  /* Fog and rainbows between the ray's origin and the hit, and the
+     fading of the interior the ray crossed. */
+  return interior_fade(
+      media, hit.t * zr_v3_len(ray->dir),
+      zr__atmosphere_apply(scene, ray->origin, ray->dir, hit.t,
+                           shade(tracer, &s, level, weight, media)));
 }

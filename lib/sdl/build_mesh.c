@@ -1,0 +1,855 @@
+/*
+ * build_mesh.c - the parser's side of mesh, mesh2, smooth_triangle and
+ * text (POV-Ray 3.7 reference manual, "Mesh", "Mesh2", "Smooth
+ * Triangle", "Text").
+ *
+ * A mesh is filled as the grammar reads it and closed by
+ * zr__sdl_mesh_done(), which checks every index and builds the mesh's
+ * own BVH (lib/trace/obj_mesh.c).  mesh { } collects triangles one by
+ * one; mesh2 { } announces the size of each list, so its arrays are
+ * allocated once, exactly.
+ *
+ * mesh2 files are mostly numbers: a million-triangle mesh is tens of
+ * millions of tokens, and handing each to bison costs far more than the
+ * triangles themselves.  So after a list's '{', when bison has read
+ * nothing further, the plain items - a count, then vectors of signed
+ * numbers, and the texture indices after a face - are read straight from
+ * the token array (the way lib/sdl/fastexpr.c reads simple directive
+ * values).  The fast reader stops before the first token it does not
+ * know (an identifier, an operator, a directive) and leaves the rest of
+ * the list, item by item, to the grammar, which ends in the same
+ * helpers; an item is only taken when it is complete and followed by a
+ * comma, '}' or the next vector, so "<1,2,3>*2" goes to the grammar whole.
+ *
+ * The text object reads its TrueType font (lib/scene/ttf.c), searched
+ * like #include files, and lays the glyphs out on the x axis (one unit is
+ * the font's em height), each advanced by its advance width, its kerning
+ * with the previous glyph and the scene's offset vector, the first
+ * glyph's left edge at x = 0.
+ */
+#include "config.h"
+
+#include "sdl/build_mesh.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/context.h"
+#include "pov-parse.h"
+#include "scene/ttf.h"
+#include "trace/obj_mesh.h"
+#include "trace/obj_text.h"
+
+/* A mesh while it is read: the mesh first, so the object's pointer to
+   it leads back here. */
+typedef struct mesh_build {
+  struct zr_mesh mesh;
+  bool mesh2;
+  bool open;          /* a mesh2 list is being read */
+  zr_sdl_mesh2_list list;
+  bool have_count;
+  size_t announced, got;
+  int texture_indices; /* after a face: how many texture indices so far */
+  bool warned_blend;
+  bool lists_seen[ZR_SDL_M2_TEXTURES + 1];
+} mesh_build;
+
+static mesh_build *build_of(zr_object *o) {
+  /* The object's mesh is const for the tracer; the parser owns it until
+     zr__sdl_mesh_done(). */
+  return (mesh_build *)(void *)o->u.mesh.data;
+}
+
+static const char *const list_names[] = {
+    "vertex_vectors", "normal_vectors", "uv_vectors",  "face_indices",
+    "normal_indices", "uv_indices",     "texture_list"};
+
+zr_object *zr__sdl_mesh_new(zr_sdl_parser *p, bool mesh2,
+                            const zr_sdl_loc *loc) {
+  zr_object *o = zr__sdl_object_new(p, ZR_OBJ_MESH, loc);
+  mesh_build *b = o ? zr__sdl_alloc(p, sizeof *b) : NULL;
+  if (!b)
+    return NULL;
+  b->mesh2 = mesh2;
+  o->u.mesh.data = &b->mesh;
+  return o;
+}
+
+/* Room for one more row of size bytes in an arena array that grows by
+   doubling (the arena cannot resize: the old block is left behind). */
+static bool grow(zr_sdl_parser *p, void **rows, size_t *cap, size_t n,
+                 size_t size) {
+  if (n < *cap)
+    return true;
+  size_t c = *cap ? 2 * *cap : 16;
+  void *q = zr__sdl_alloc(p, c * size);
+  if (!q)
+    return false;
+  if (n)
+    memcpy(q, *rows, n * size);
+  *rows = q;
+  *cap = c;
+  return true;
+}
+
+static bool add_vertex(zr_sdl_parser *p, struct zr_mesh *m, zr_vec3 v,
+                       uint32_t *index) {
+  if (!grow(p, (void **)&m->vertices, &m->cap_vertices, m->n_vertices,
+            sizeof *m->vertices))
+    return false;
+  *index = (uint32_t)m->n_vertices;
+  m->vertices[m->n_vertices++] = v;
+  return true;
+}
+
+static bool add_normal(zr_sdl_parser *p, struct zr_mesh *m, zr_vec3 v,
+                       uint32_t *index) {
+  if (!grow(p, (void **)&m->normals, &m->cap_normals, m->n_normals,
+            sizeof *m->normals))
+    return false;
+  *index = (uint32_t)m->n_normals;
+  m->normals[m->n_normals++] = v;
+  return true;
+}
+
+/* The index of texture t in the mesh's list, adding it when new. */
+static bool texture_index(zr_sdl_parser *p, struct zr_mesh *m,
+                          const zr_texture *t, int32_t *index) {
+  for (size_t i = 0; i < m->n_textures; i++)
+    if (m->textures[i] == t) {
+      *index = (int32_t)i;
+      return true;
+    }
+  /* Few distinct textures: the list grows one at a time. */
+  const zr_texture **list =
+      zr__sdl_alloc(p, (m->n_textures + 1) * sizeof *list);
+  if (!list)
+    return false;
+  if (m->n_textures)
+    memcpy(list, m->textures, m->n_textures * sizeof *list);
+  list[m->n_textures] = t;
+  m->textures = list;
+  *index = (int32_t)m->n_textures++;
+  return true;
+}
+
+/* Makes the optional per-face arrays of mesh { } exist for faces
+   0..cap_faces, the faces before this one filled with "none". */
+static bool face_extra(zr_sdl_parser *p, uint32_t (**rows)[3], size_t old,
+                       size_t cap, size_t n, uint32_t none) {
+  if (*rows && old == cap)
+    return true;
+  uint32_t (*q)[3] = zr__sdl_alloc(p, cap * sizeof *q);
+  if (!q)
+    return false;
+  if (*rows)
+    memcpy(q, *rows, n * sizeof *q);
+  else
+    for (size_t f = 0; f < n; f++)
+      q[f][0] = q[f][1] = q[f][2] = none;
+  *rows = q;
+  return true;
+}
+
+bool zr__sdl_mesh_triangle(zr_sdl_parser *p, zr_object *o,
+                           const zr_sdl_expr vertices[3],
+                           const zr_sdl_loc vertex_locs[3],
+                           const zr_sdl_expr *normals,
+                           const zr_sdl_loc *normal_locs,
+                           const zr_texture *texture) {
+  struct zr_mesh *m = &build_of(o)->mesh;
+  zr_vec3 v[3], n[3];
+  for (int k = 0; k < 3; k++) {
+    if (!zr__sdl_want_vector(p, &vertices[k], &vertex_locs[k], &v[k]))
+      return false;
+    if (normals &&
+        !zr__sdl_want_vector(p, &normals[k], &normal_locs[k], &n[k]))
+      return false;
+  }
+  if (m->n_faces > UINT32_MAX / 4) {
+    zr__sdl_error(p, ZR_ELIMIT, &vertex_locs[0], "too many triangles");
+    return false;
+  }
+  size_t f = m->n_faces, old_cap = m->cap_faces;
+  if (!grow(p, (void **)&m->faces, &m->cap_faces, f, sizeof *m->faces))
+    return false;
+  /* The optional arrays follow the faces' capacity. */
+  bool first_smooth = normals && !m->face_normals;
+  if ((normals || m->face_normals) &&
+      !face_extra(p, &m->face_normals, old_cap, m->cap_faces, f, 0))
+    return false;
+  /* The flat faces before the first smooth one get their own normal at
+     each corner, so every face then has three normal indices. */
+  for (size_t g = 0; first_smooth && g < f; g++) {
+    const uint32_t *vi = m->faces[g];
+    zr_vec3 flat = zr_v3_cross(
+        zr_v3_sub(m->vertices[vi[1]], m->vertices[vi[0]]),
+        zr_v3_sub(m->vertices[vi[2]], m->vertices[vi[0]]));
+    for (int k = 0; k < 3; k++)
+      if (!add_normal(p, m, flat, &m->face_normals[g][k]))
+        return false;
+  }
+  if ((texture || m->face_textures) &&
+      !face_extra(p, (uint32_t(**)[3])&m->face_textures, old_cap,
+                  m->cap_faces, f, (uint32_t)-1))
+    return false;
+  for (int k = 0; k < 3; k++) {
+    if (!add_vertex(p, m, v[k], &m->faces[f][k]))
+      return false;
+    if (m->face_normals) {
+      /* A flat face among smooth ones gets its own normal thrice. */
+      zr_vec3 flat = zr_v3_cross(zr_v3_sub(v[1], v[0]),
+                                 zr_v3_sub(v[2], v[0]));
+      if (!add_normal(p, m, normals ? n[k] : flat, &m->face_normals[f][k]))
+        return false;
+    }
+  }
+  if (m->face_textures) {
+    int32_t t = -1;
+    if (texture && !texture_index(p, m, texture, &t))
+      return false;
+    m->face_textures[f][0] = m->face_textures[f][1] =
+        m->face_textures[f][2] = t;
+  }
+  m->n_faces++;
+  return true;
+}
+
+bool zr__sdl_mesh_inside_vector(zr_sdl_parser *p, zr_object *o,
+                                const zr_sdl_expr *e,
+                                const zr_sdl_loc *loc) {
+  struct zr_mesh *m = &build_of(o)->mesh;
+  zr_vec3 v;
+  if (!zr__sdl_want_vector(p, e, loc, &v))
+    return false;
+  if (!(zr_v3_len(v) > 0.0)) {
+    zr__sdl_error(p, ZR_ESCENE, loc, "the inside_vector is zero");
+    return false;
+  }
+  m->has_inside = true;
+  m->inside_vector = v;
+  return true;
+}
+
+bool zr__sdl_mesh_done(zr_sdl_parser *p, zr_object *o,
+                       const zr_sdl_loc *loc) {
+  mesh_build *b = build_of(o);
+  struct zr_mesh *m = &b->mesh;
+  const char *what = b->mesh2 ? "mesh2" : "mesh";
+  if (b->mesh2 && m->n_faces == 0) {
+    zr__sdl_error(p, ZR_ESYNTAX, loc, "a mesh2 needs vertex_vectors and "
+                  "face_indices");
+    return false;
+  }
+  if (m->n_faces == 0) {
+    zr__sdl_error(p, ZR_ESCENE, loc, "a %s needs at least one triangle",
+                  what);
+    return false;
+  }
+  /* normal_vectors without normal_indices: the faces' own indices pick
+     the normals ("Mesh2"), which then must be one per vertex. */
+  if (m->n_normals && !m->face_normals) {
+    if (m->n_normals != m->n_vertices) {
+      zr__sdl_error(p, ZR_ESCENE, loc, "mesh2 without normal_indices needs "
+                    "one normal per vertex (%zu normals, %zu vertices)",
+                    m->n_normals, m->n_vertices);
+      return false;
+    }
+    m->face_normals = zr__sdl_alloc(p, m->n_faces * sizeof *m->faces);
+    if (!m->face_normals)
+      return false;
+    memcpy(m->face_normals, m->faces, m->n_faces * sizeof *m->faces);
+  }
+  if (m->n_uvs && !m->face_uvs) {
+    m->face_uvs = zr__sdl_alloc(p, m->n_faces * sizeof *m->faces);
+    if (!m->face_uvs)
+      return false;
+    memcpy(m->face_uvs, m->faces, m->n_faces * sizeof *m->faces);
+  }
+  size_t bad = 0;
+  zr_status s = zr__mesh_build(m, &p->scene->arena, &bad);
+  if (s == ZR_ESCENE) {
+    zr__sdl_error(p, s, loc, "%s face %zu refers to a vertex, normal, uv "
+                  "or texture that is not in its lists", what, bad);
+    return false;
+  }
+  if (s != ZR_OK) {
+    zr__sdl_error(p, s, loc, "cannot build the %s: %s", what,
+                  zr_status_str(s));
+    return false;
+  }
+  return true;
+}
+
+/* ---- mesh2 lists ---- */
+
+static bool list_error(zr_sdl_parser *p, const zr_sdl_loc *loc,
+                       const mesh_build *b, const char *fmt_tail) {
+  zr__sdl_error(p, ZR_ESCENE, loc, "%s: %s", list_names[b->list],
+                fmt_tail);
+  return false;
+}
+
+/* Sets the list's count and allocates its arrays. */
+static bool take_count(zr_sdl_parser *p, mesh_build *b, double count,
+                       const zr_sdl_loc *loc) {
+  struct zr_mesh *m = &b->mesh;
+  if (!(count >= 0.0) || count != floor(count) || count > UINT32_MAX / 4)
+    return list_error(p, loc, b, "the count must be a whole number");
+  size_t n = (size_t)count, room = n ? n : 1;
+  b->have_count = true;
+  b->announced = n;
+  b->got = 0;
+  switch (b->list) {
+  case ZR_SDL_M2_VERTICES:
+    m->vertices = zr__sdl_alloc(p, room * sizeof *m->vertices);
+    m->cap_vertices = n;
+    return m->vertices != NULL;
+  case ZR_SDL_M2_NORMALS:
+    m->normals = zr__sdl_alloc(p, room * sizeof *m->normals);
+    m->cap_normals = n;
+    return m->normals != NULL;
+  case ZR_SDL_M2_UVS:
+    m->uvs = zr__sdl_alloc(p, room * sizeof *m->uvs);
+    m->cap_uvs = n;
+    return m->uvs != NULL;
+  case ZR_SDL_M2_FACES:
+    m->faces = zr__sdl_alloc(p, room * sizeof *m->faces);
+    m->cap_faces = n;
+    return m->faces != NULL;
+  case ZR_SDL_M2_NORMAL_INDICES:
+    m->face_normals = zr__sdl_alloc(p, room * sizeof *m->face_normals);
+    return m->face_normals != NULL;
+  case ZR_SDL_M2_UV_INDICES:
+    m->face_uvs = zr__sdl_alloc(p, room * sizeof *m->face_uvs);
+    return m->face_uvs != NULL;
+  case ZR_SDL_M2_TEXTURES:
+    m->textures = zr__sdl_alloc(p, room * sizeof *m->textures);
+    return m->textures != NULL;
+  }
+  return true;
+}
+
+static bool want_index(zr_sdl_parser *p, const mesh_build *b, double v,
+                       const zr_sdl_loc *loc, uint32_t *out) {
+  if (!(v >= 0.0) || v >= 4294967295.0) {
+    zr__sdl_error(p, ZR_ESCENE, loc, "%s: %g is not an index",
+                  list_names[b->list], v);
+    return false;
+  }
+  *out = (uint32_t)v;
+  return true;
+}
+
+/* One vector of a list (x, y, z as written; uvs use x and y). */
+static bool take_vector(zr_sdl_parser *p, mesh_build *b, zr_vec3 v,
+                        const zr_sdl_loc *loc) {
+  struct zr_mesh *m = &b->mesh;
+  if (b->list == ZR_SDL_M2_FACES && b->texture_indices == 2)
+    return list_error(p, loc, b, "a face has 1 or 3 texture indices, "
+                      "not 2");
+  if (b->got == b->announced) {
+    zr__sdl_error(p, ZR_ESCENE, loc, "%s: more items than the %zu "
+                  "announced", list_names[b->list], b->announced);
+    return false;
+  }
+  size_t i = b->got++;
+  uint32_t idx[3];
+  switch (b->list) {
+  case ZR_SDL_M2_VERTICES:
+    m->vertices[m->n_vertices++] = v;
+    return true;
+  case ZR_SDL_M2_NORMALS:
+    m->normals[m->n_normals++] = v;
+    return true;
+  case ZR_SDL_M2_UVS:
+    m->uvs[m->n_uvs][0] = v.x;
+    m->uvs[m->n_uvs++][1] = v.y;
+    return true;
+  default:
+    break;
+  }
+  if (!want_index(p, b, v.x, loc, &idx[0]) ||
+      !want_index(p, b, v.y, loc, &idx[1]) ||
+      !want_index(p, b, v.z, loc, &idx[2]))
+    return false;
+  uint32_t(*rows)[3] = b->list == ZR_SDL_M2_FACES ? m->faces
+                       : b->list == ZR_SDL_M2_NORMAL_INDICES
+                           ? m->face_normals
+                           : m->face_uvs;
+  memcpy(rows[i], idx, sizeof idx);
+  if (b->list == ZR_SDL_M2_FACES) {
+    m->n_faces++;
+    b->texture_indices = 0;
+    if (m->face_textures)
+      m->face_textures[i][0] = m->face_textures[i][1] =
+          m->face_textures[i][2] = -1;
+  }
+  return true;
+}
+
+/* A float after a face: one of its texture indices. */
+static bool take_texture_index(zr_sdl_parser *p, mesh_build *b, double v,
+                               const zr_sdl_loc *loc) {
+  struct zr_mesh *m = &b->mesh;
+  if (b->got == 0 || b->texture_indices == 3)
+    return list_error(p, loc, b, "expected a vector of three indices");
+  if (!m->face_textures) {
+    m->face_textures = zr__sdl_alloc(
+        p, (b->announced ? b->announced : 1) * sizeof *m->face_textures);
+    if (!m->face_textures)
+      return false;
+    for (size_t f = 0; f < b->announced; f++)
+      m->face_textures[f][0] = m->face_textures[f][1] =
+          m->face_textures[f][2] = -1;
+  }
+  uint32_t t;
+  if (!want_index(p, b, v, loc, &t))
+    return false;
+  if (t > INT32_MAX)
+    return list_error(p, loc, b, "texture index too large");
+  int32_t *row = m->face_textures[b->got - 1];
+  if (b->texture_indices == 0) {
+    row[0] = row[1] = row[2] = (int32_t)t;
+  } else {
+    row[b->texture_indices] = (int32_t)t;
+    if (b->texture_indices == 1 && !b->warned_blend) {
+      b->warned_blend = true;
+      zr__sdl_warning(p, loc, "three texture indices per face: zRcube "
+                      "gives each point the texture of its nearest corner "
+                      "instead of blending them");
+    }
+  }
+  b->texture_indices++;
+  return true;
+}
+
+bool zr__sdl_mesh2_item(zr_sdl_parser *p, zr_object *o,
+                        const zr_sdl_expr *e, const zr_sdl_loc *loc) {
+  mesh_build *b = build_of(o);
+  if (!b->have_count) {
+    double count;
+    return zr__sdl_want_float(p, e, loc, &count) &&
+           take_count(p, b, count, loc);
+  }
+  if (e->dim == 1 && b->list == ZR_SDL_M2_FACES)
+    return take_texture_index(p, b, e->v[0], loc);
+  if (b->list == ZR_SDL_M2_UVS) {
+    if (e->dim > 2) {
+      zr__sdl_error(p, ZR_ESYNTAX, loc, "uv_vectors: expected a 2-D "
+                    "vector");
+      return false;
+    }
+    double u = e->v[0], v = e->dim == 1 ? e->v[0] : e->v[1];
+    return take_vector(p, b, zr_v3(u, v, 0), loc);
+  }
+  zr_vec3 v;
+  return zr__sdl_want_vector(p, e, loc, &v) && take_vector(p, b, v, loc);
+}
+
+/* ---- the fast reader ---- */
+
+typedef struct cursor {
+  const zr_sdl_token *tokens;
+  size_t pos, n;
+} cursor;
+
+static int kind_at(const cursor *c, size_t i) {
+  return i < c->n ? c->tokens[i].kind : 0;
+}
+
+/* A number with optional signs at c->pos; advances past it. */
+static bool signed_number(cursor *c, double *out) {
+  double sign = 1.0;
+  size_t i = c->pos;
+  while (kind_at(c, i) == '-' || kind_at(c, i) == '+') {
+    if (kind_at(c, i) == '-')
+      sign = -sign;
+    i++;
+  }
+  if (kind_at(c, i) != T_NUMBER)
+    return false;
+  *out = sign * c->tokens[i].v.num;
+  c->pos = i + 1;
+  return true;
+}
+
+/* Whether the token at i may follow a complete item. */
+static bool item_end(const cursor *c, size_t i) {
+  int k = kind_at(c, i);
+  return k == ',' || k == '}' || k == '<';
+}
+
+/* "<a, b[, c]>" of signed numbers; dim gets 2 or 3. */
+static bool number_vector(cursor *c, double v[3], int *dim) {
+  if (kind_at(c, c->pos) != '<')
+    return false;
+  c->pos++;
+  int n = 0;
+  for (;;) {
+    if (n == 3 || !signed_number(c, &v[n]))
+      return false;
+    n++;
+    if (kind_at(c, c->pos) != ',')
+      break;
+    c->pos++;
+  }
+  if (kind_at(c, c->pos) != '>' || n < 2)
+    return false;
+  c->pos++;
+  if (n == 2)
+    v[2] = 0.0;
+  *dim = n;
+  return true;
+}
+
+/* Reads plain items from the newest frame until one needs the grammar.
+   False only after an error was reported. */
+static bool fast_items(zr_sdl_parser *p, mesh_build *b) {
+  zr_sdl_frame *fr = zr__sdl_top(p);
+  const zr_sdl_file *f = &p->files[fr->file];
+  cursor c = {f->tokens, fr->pos, f->n_tokens};
+  if (!b->have_count) {
+    double count;
+    size_t start = c.pos;
+    if (!signed_number(&c, &count) || !item_end(&c, c.pos))
+      return true;
+    zr_sdl_loc loc = zr__sdl_token_loc(fr->file, &c.tokens[start]);
+    if (!take_count(p, b, count, &loc))
+      return false;
+    if (kind_at(&c, c.pos) == ',')
+      c.pos++;
+    fr->pos = c.pos;
+  }
+  bool faces = b->list == ZR_SDL_M2_FACES;
+  for (;;) {
+    size_t start = c.pos;
+    double v[3];
+    int dim = 0;
+    bool ok;
+    if (kind_at(&c, c.pos) == '<') {
+      ok = number_vector(&c, v, &dim) && item_end(&c, c.pos) &&
+           (dim == 3 || b->list == ZR_SDL_M2_UVS);
+    } else {
+      ok = faces && signed_number(&c, &v[0]) && item_end(&c, c.pos);
+    }
+    if (!ok)
+      break;
+    zr_sdl_loc loc = zr__sdl_token_loc(fr->file, &c.tokens[start]);
+    if (!(dim ? take_vector(p, b, zr_v3(v[0], v[1], v[2]), &loc)
+              : take_texture_index(p, b, v[0], &loc)))
+      return false;
+    if (kind_at(&c, c.pos) == ',')
+      c.pos++;
+    fr->pos = c.pos;
+  }
+  return true;
+}
+
+bool zr__sdl_mesh2_open(zr_sdl_parser *p, zr_object *o,
+                        zr_sdl_mesh2_list list, const zr_sdl_loc *loc,
+                        bool fast) {
+  mesh_build *b = build_of(o);
+  if (b->lists_seen[list]) {
+    zr__sdl_error(p, ZR_ESYNTAX, loc, "mesh2 has two %s",
+                  list_names[list]);
+    return false;
+  }
+  bool needs_faces =
+      list == ZR_SDL_M2_NORMAL_INDICES || list == ZR_SDL_M2_UV_INDICES;
+  if (needs_faces && !b->lists_seen[ZR_SDL_M2_FACES]) {
+    zr__sdl_error(p, ZR_ESYNTAX, loc, "mesh2: %s must follow face_indices",
+                  list_names[list]);
+    return false;
+  }
+  b->lists_seen[list] = true;
+  b->open = true;
+  b->list = list;
+  b->have_count = false;
+  b->announced = b->got = 0;
+  b->texture_indices = 0;
+  if (fast && list != ZR_SDL_M2_TEXTURES)
+    return fast_items(p, b);
+  return true;
+}
+
+bool zr__sdl_mesh2_texture(zr_sdl_parser *p, zr_object *o,
+                           const zr_texture *t, const zr_sdl_loc *loc) {
+  mesh_build *b = build_of(o);
+  if (!b->have_count)
+    return list_error(p, loc, b, "expected the number of textures first");
+  if (b->got == b->announced) {
+    zr__sdl_error(p, ZR_ESCENE, loc, "texture_list: more items than the "
+                  "%zu announced", b->announced);
+    return false;
+  }
+  b->mesh.textures[b->got++] = t;
+  b->mesh.n_textures = b->got;
+  return true;
+}
+
+bool zr__sdl_mesh2_close(zr_sdl_parser *p, zr_object *o,
+                         const zr_sdl_loc *loc) {
+  mesh_build *b = build_of(o);
+  b->open = false;
+  if (!b->have_count)
+    return list_error(p, loc, b, "expected the number of items first");
+  if (b->got != b->announced) {
+    zr__sdl_error(p, ZR_ESCENE, loc, "%s: %zu items given, %zu announced",
+                  list_names[b->list], b->got, b->announced);
+    return false;
+  }
+  if (b->list == ZR_SDL_M2_FACES && b->texture_indices == 2)
+    return list_error(p, loc, b, "a face has 1 or 3 texture indices, "
+                      "not 2");
+  size_t faces = b->mesh.n_faces;
+  if ((b->list == ZR_SDL_M2_NORMAL_INDICES ||
+       b->list == ZR_SDL_M2_UV_INDICES) &&
+      b->got != faces) {
+    zr__sdl_error(p, ZR_ESCENE, loc, "%s: %zu given for %zu faces",
+                  list_names[b->list], b->got, faces);
+    return false;
+  }
+  return true;
+}
+
+zr_object *zr__sdl_smooth_triangle(zr_sdl_parser *p, const zr_sdl_loc *loc,
+                                   const zr_sdl_expr e[6],
+                                   const zr_sdl_loc locs[6]) {
+  zr_object *o = zr__sdl_mesh_new(p, false, loc);
+  if (!o)
+    return NULL;
+  zr_sdl_expr v[3] = {e[0], e[2], e[4]}, n[3] = {e[1], e[3], e[5]};
+  zr_sdl_loc vl[3] = {locs[0], locs[2], locs[4]};
+  zr_sdl_loc nl[3] = {locs[1], locs[3], locs[5]};
+  if (!zr__sdl_mesh_triangle(p, o, v, vl, n, nl, NULL) ||
+      !zr__sdl_mesh_done(p, o, loc))
+    return NULL;
+  return o;
+}
+
+/* ---- text ---- */
+
+/* The fonts POV-Ray 3.7 builds in, by their 'internal' number. */
+static const char *const internal_fonts[] = {"povlogo.ttf", "timrom.ttf",
+                                             "cyrvetic.ttf", "crystal.ttf"};
+
+/* Reads a font searched like an #include file: beside the including
+   file, along the include paths, then in POV-Ray's include directory,
+   where its fonts are installed.  False when none can be read. */
+static bool read_font(zr_sdl_parser *p, const char *name, char **bytes,
+                      size_t *size) {
+  const char *scene = p->files[zr__sdl_top(p)->file].path;
+  const char *slash = strrchr(scene, '/');
+  size_t n_dirs = p->ctx ? p->ctx->n_include_paths : 0;
+  for (size_t i = 0; i <= n_dirs + 1; i++) {
+    const char *dir = "";
+    size_t dir_len = 0;
+    if (name[0] == '/') {
+      if (i > 0)
+        break;
+    } else if (i == 0) {
+      dir = scene;
+      dir_len = slash ? (size_t)(slash - scene) : 0;
+    } else {
+      dir = i <= n_dirs ? p->ctx->include_paths[i - 1]
+                        : ZR_POVRAY_INCLUDE_DIR;
+      dir_len = strlen(dir);
+    }
+    size_t len = dir_len + 1 + strlen(name) + 1;
+    char *path = malloc(len);
+    if (!path)
+      return false;
+    if (dir_len)
+      snprintf(path, len, "%.*s/%s", (int)dir_len, dir, name);
+    else
+      snprintf(path, len, "%s", name);
+    zr_status s = zr__context_read(p->ctx, path, bytes, size);
+    free(path);
+    if (s == ZR_OK)
+      return true;
+  }
+  return false;
+}
+
+/* The outline pieces of the glyph being placed, collected by the font
+   reader's callback. */
+typedef struct text_build {
+  zr_text_segment *segments;
+  size_t n, cap;
+  double scale, x, y; /* font units to text units, and the pen */
+} text_build;
+
+static bool add_segment(void *user, const double p0[2], const double c[2],
+                        const double p1[2], bool line) {
+  text_build *tb = user;
+  if (tb->n == tb->cap) {
+    size_t cap = tb->cap ? 2 * tb->cap : 256;
+    zr_text_segment *q = realloc(tb->segments, cap * sizeof *q);
+    if (!q)
+      return false;
+    tb->segments = q;
+    tb->cap = cap;
+  }
+  zr_text_segment *sg = &tb->segments[tb->n++];
+  const double *src[3] = {p0, c, p1};
+  double *dst[3] = {sg->p0, sg->p1, sg->p2};
+  for (int k = 0; k < 3; k++) {
+    dst[k][0] = tb->x + src[k][0] * tb->scale;
+    dst[k][1] = tb->y + src[k][1] * tb->scale;
+  }
+  sg->line = line;
+  return true;
+}
+
+/* The next character of a UTF-8 string (a stray byte stands for
+   itself, as in Latin-1). */
+static uint32_t next_char(const unsigned char **s) {
+  const unsigned char *c = *s;
+  int extra = c[0] >= 0xF0 ? 3 : c[0] >= 0xE0 ? 2 : c[0] >= 0xC0 ? 1 : 0;
+  uint32_t code = extra ? c[0] & (0x3F >> extra) : c[0];
+  for (int i = 1; i <= extra; i++) {
+    if ((c[i] & 0xC0) != 0x80) {
+      *s = c + 1;
+      return c[0];
+    }
+    code = code << 6 | (c[i] & 0x3F);
+  }
+  *s = c + 1 + extra;
+  return code;
+}
+
+/* Lays the string out into tx (see the top of the file). */
+static const char *layout(zr_sdl_parser *p, const zr_ttf *font,
+                          const char *string, zr_vec3 offset,
+                          struct zr_text *tx) {
+  text_build tb = {NULL, 0, 0, 1.0 / font->units_per_em, 0.0, 0.0};
+  size_t n_chars = strlen(string);
+  zr_text_glyph *glyphs = malloc((n_chars ? n_chars : 1) * sizeof *glyphs);
+  const char *err = glyphs ? NULL : "out of memory";
+  size_t n_glyphs = 0;
+  unsigned previous = 0;
+  const unsigned char *s = (const unsigned char *)string;
+  while (!err && *s) {
+    unsigned g = zr__ttf_glyph(font, next_char(&s));
+    if (n_glyphs > 0)
+      tb.x += zr__ttf_kerning(font, previous, g) * tb.scale;
+    size_t first = tb.n;
+    err = zr__ttf_outline(font, g, add_segment, &tb);
+    if (err)
+      break;
+    if (tb.n > first) {
+      zr_text_glyph *gl = &glyphs[n_glyphs++];
+      gl->first = first;
+      gl->n = tb.n - first;
+      gl->lo[0] = gl->lo[1] = INFINITY;
+      gl->hi[0] = gl->hi[1] = -INFINITY;
+      /* The control points' hull holds each curve. */
+      for (size_t i = first; i < tb.n; i++) {
+        const double *pts[3] = {tb.segments[i].p0, tb.segments[i].p1,
+                                tb.segments[i].p2};
+        for (int k = 0; k < 3; k++)
+          for (int a = 0; a < 2; a++) {
+            gl->lo[a] = fmin(gl->lo[a], pts[k][a]);
+            gl->hi[a] = fmax(gl->hi[a], pts[k][a]);
+          }
+      }
+    }
+    tb.x += zr__ttf_advance(font, g) * tb.scale + offset.x;
+    tb.y += offset.y;
+    previous = g;
+  }
+  /* "The text will start with the origin at the lower left, front of
+     the first character": the first glyph's left edge goes to x = 0. */
+  if (!err && n_glyphs > 0) {
+    double dx = glyphs[0].lo[0];
+    for (size_t i = 0; i < tb.n; i++) {
+      tb.segments[i].p0[0] -= dx;
+      tb.segments[i].p1[0] -= dx;
+      tb.segments[i].p2[0] -= dx;
+    }
+    for (size_t i = 0; i < n_glyphs; i++) {
+      glyphs[i].lo[0] -= dx;
+      glyphs[i].hi[0] -= dx;
+    }
+  }
+  if (!err) {
+    tx->segments = zr__sdl_alloc(p, (tb.n ? tb.n : 1) * sizeof *tb.segments);
+    tx->glyphs = zr__sdl_alloc(p, (n_glyphs ? n_glyphs : 1) * sizeof *glyphs);
+    if (!tx->segments || !tx->glyphs) {
+      err = "out of memory";
+    } else {
+      if (tb.n)
+        memcpy(tx->segments, tb.segments, tb.n * sizeof *tb.segments);
+      if (n_glyphs)
+        memcpy(tx->glyphs, glyphs, n_glyphs * sizeof *glyphs);
+      tx->n_segments = tb.n;
+      tx->n_glyphs = n_glyphs;
+    }
+  }
+  free(tb.segments);
+  free(glyphs);
+  return err;
+}
+
+zr_object *zr__sdl_text(zr_sdl_parser *p, const zr_sdl_loc *loc,
+                        const char *font_name, double internal_font,
+                        const zr_sdl_loc *font_loc, const char *string,
+                        const zr_sdl_expr *thickness,
+                        const zr_sdl_loc *thickness_loc,
+                        const zr_sdl_expr *offset,
+                        const zr_sdl_loc *offset_loc) {
+  double depth;
+  zr_vec3 shift;
+  if (!zr__sdl_want_float(p, thickness, thickness_loc, &depth) ||
+      !zr__sdl_want_vector(p, offset, offset_loc, &shift))
+    return NULL;
+  if (shift.z != 0.0) {
+    zr__sdl_error(p, ZR_ESCENE, offset_loc, "a text offset with a z "
+                  "component is not supported yet");
+    return NULL;
+  }
+  if (!font_name) {
+    /* "An out of range Font_Number value will default to 0." */
+    int k = internal_font >= 0 && internal_font < 4 ? (int)internal_font : 0;
+    font_name = internal_fonts[k];
+  }
+  char *bytes = NULL;
+  size_t size = 0;
+  if (!read_font(p, font_name, &bytes, &size)) {
+    zr__sdl_error(p, ZR_ENOTFOUND, font_loc, "cannot find font '%s'",
+                  font_name);
+    return NULL;
+  }
+  zr_ttf font;
+  const char *err = zr__ttf_open(&font, (const uint8_t *)bytes, size);
+  zr_object *o = NULL;
+  struct zr_text *tx = NULL;
+  if (!err) {
+    o = zr__sdl_object_new(p, ZR_OBJ_TEXT, loc);
+    tx = o ? zr__sdl_alloc(p, sizeof *tx) : NULL;
+    err = tx ? layout(p, &font, string, shift, tx) : "out of memory";
+  }
+  free(bytes);
+  if (err) {
+    zr__sdl_error(p, ZR_ESCENE, font_loc, "cannot use font '%s': %s",
+                  font_name, err);
+    return NULL;
+  }
+  /* A thickness of zero still makes two caps; a negative one extrudes
+     towards -z, which is the same solid moved. */
+  tx->thickness = fabs(depth);
+  tx->lo = zr_v3(INFINITY, INFINITY, 0.0);
+  tx->hi = zr_v3(-INFINITY, -INFINITY, tx->thickness);
+  for (size_t i = 0; i < tx->n_glyphs; i++) {
+    tx->lo = zr_v3_min(tx->lo, zr_v3(tx->glyphs[i].lo[0],
+                                     tx->glyphs[i].lo[1], 0.0));
+    tx->hi = zr_v3_max(tx->hi, zr_v3(tx->glyphs[i].hi[0],
+                                     tx->glyphs[i].hi[1], tx->thickness));
+  }
+  o->u.text.data = tx;
+  return o;
+}

@@ -1,0 +1,277 @@
+/*
+ * build_texture.c - the parser's helpers for the texture constructs that
+ * hold other textures (reference manual r3_4: "Layered Textures",
+ * "Patterned Textures", "Texture Maps", "Pigment Maps and Pigment
+ * Lists", "Normal Maps and Normal Lists", "Slope Maps", "Average",
+ * "Pigment Pattern", "Material").
+ *
+ * Maps are built entry by entry into the scene's arena, doubling like
+ * colour maps (build.c), with values that must not decrease.  Block
+ * patterns' lists ("checker pigment {A} pigment {B}") become maps whose
+ * values are the entries' indices, so evaluation (lib/scene/texture.c)
+ * treats both alike.
+ *
+ * A layered texture is a chain from its bottom layer up through over;
+ * layering copies the lower chain, since declared textures are shared,
+ * and points its top at the upper one.  A pigment, finish or normal in
+ * "texture { Layered ... }" or on an object with a layered texture
+ * changes the top layer: the manual says the bottom one, but POV-Ray
+ * 3.7 renders the top one changed (measured: an opaque pigment there
+ * hides every layer below and takes the top layer's finish).  An object given a
+ * texture while it has one gets the new one as a layer on top (POV-Ray
+ * 3.7 renders object { S texture { T } } with T over S's texture).
+ *
+ * Transforms reach every part of a texture: its pigment and normal
+ * (build.c), and here the map's pattern, every texture of the map and
+ * every layer above, each copied before it changes.  Pigment and normal
+ * maps need nothing: their items are evaluated in the outer pattern's
+ * space (texture.c).
+ */
+#include "config.h"
+
+#include <string.h>
+
+#include "scene/pattern.h"
+#include "sdl/sdl.h"
+
+/* ---- maps ---- */
+
+/* Entry arrays grow by doubling: room for n entries is the next power
+   of two (at least 4). */
+static size_t room(size_t n) {
+  size_t r = 4;
+  while (r < n)
+    r *= 2;
+  return r;
+}
+
+zr_map *zr__sdl_map_new(zr_sdl_parser *p) {
+  return zr__sdl_alloc(p, sizeof(zr_map));
+}
+
+static bool append(zr_sdl_parser *p, zr_map *m, const zr_map_entry *e) {
+  zr_map_entry *entries = (zr_map_entry *)m->entries;
+  if (m->n == 0 || m->n == room(m->n)) {
+    entries = zr__sdl_alloc(p, room(m->n + 1) * sizeof *entries);
+    if (!entries)
+      return false;
+    if (m->n)
+      memcpy(entries, m->entries, m->n * sizeof *entries);
+  }
+  entries[m->n] = *e;
+  m->entries = entries;
+  m->n++;
+  return true;
+}
+
+bool zr__sdl_map_add(zr_sdl_parser *p, zr_map *m, const zr_sdl_expr *v,
+                     const zr_sdl_loc *vl, zr_map_entry *e) {
+  /* The order is checked when the map meets its pattern (block_fits):
+     average's values are weights, in any order. */
+  if (!zr__sdl_want_float(p, v, vl, &e->value))
+    return false;
+  return append(p, m, e);
+}
+
+bool zr__sdl_map_add_weight1(zr_sdl_parser *p, zr_map *m,
+                             zr_map_entry *e) {
+  e->value = 1;
+  return append(p, m, e);
+}
+
+bool zr__sdl_map_add_block(zr_sdl_parser *p, zr_map *m, zr_map_entry *e,
+                           const zr_sdl_loc *loc) {
+  if (m->n == 3) {
+    zr__sdl_error(p, ZR_ESYNTAX, loc, "too many items for this pattern");
+    return false;
+  }
+  e->value = (double)m->n;
+  return append(p, m, e);
+}
+
+bool zr__sdl_slope_add(zr_sdl_parser *p, zr_map *m, const zr_sdl_expr *v,
+                       const zr_sdl_loc *vl, const zr_sdl_expr *hs,
+                       const zr_sdl_loc *hsl) {
+  zr_map_entry e;
+  memset(&e, 0, sizeof e);
+  if (hs->dim != 2) {
+    zr__sdl_error(p, ZR_ESCENE, hsl,
+                  "a slope_map entry wants <height, slope>");
+    return false;
+  }
+  e.u.slope.height = hs->v[0];
+  e.u.slope.slope = hs->v[1];
+  return zr__sdl_map_add(p, m, v, vl, &e);
+}
+
+bool zr__sdl_map_done(zr_sdl_parser *p, const zr_map *m, const char *what,
+                      const zr_sdl_loc *loc) {
+  if (m->n == 0) {
+    zr__sdl_error(p, ZR_ESYNTAX, loc, "a %s needs an entry", what);
+    return false;
+  }
+  return true;
+}
+
+/* A block pattern takes at most as many items as it has blocks; the
+   values of other patterns' maps must not decrease. */
+static bool block_fits(zr_sdl_parser *p, zr_pattern_kind kind,
+                       const zr_map *m, const zr_sdl_loc *loc) {
+  if (kind == ZR_PAT_AVERAGE)
+    return true;
+  if (!zr__pattern_is_block(kind)) {
+    for (size_t i = 1; i < m->n; i++)
+      if (m->entries[i].value < m->entries[i - 1].value) {
+        zr__sdl_error(p, ZR_ESCENE, loc,
+                      "map values must not decrease (%g after %g)",
+                      m->entries[i].value, m->entries[i - 1].value);
+        return false;
+      }
+    return true;
+  }
+  size_t most = kind == ZR_PAT_HEXAGON ? 3 : 2;
+  if (m->n > most) {
+    zr__sdl_error(p, ZR_ESYNTAX, loc, "too many items for this pattern");
+    return false;
+  }
+  return true;
+}
+
+bool zr__sdl_pigment_map_set(zr_sdl_parser *p, zr_pigment *pg,
+                             const zr_map *m, const zr_sdl_loc *loc) {
+  if (pg->kind == ZR_PIGMENT_SOLID)
+    pg->kind = ZR_PIGMENT_PATTERN;
+  if (!block_fits(p, pg->pattern.kind, m, loc))
+    return false;
+  pg->pigment_map = m;
+  return true;
+}
+
+bool zr__sdl_normal_map_set(zr_sdl_parser *p, zr_normal *nm,
+                            const zr_map *m, const zr_sdl_loc *loc) {
+  if (!block_fits(p, nm->pattern.kind, m, loc))
+    return false;
+  nm->normal_map = m;
+  return true;
+}
+
+bool zr__sdl_texture_map_set(zr_sdl_parser *p, zr_texture *tx,
+                             const zr_map *m, const zr_sdl_loc *loc) {
+  if (!block_fits(p, tx->pattern.kind, m, loc))
+    return false;
+  tx->map = m;
+  return true;
+}
+
+/* ---- patterns ---- */
+
+bool zr__sdl_spiral_arms(zr_sdl_parser *p, zr_pattern *pt,
+                         const zr_sdl_expr *arms, const zr_sdl_loc *loc) {
+  double n;
+  if (!zr__sdl_want_float(p, arms, loc, &n))
+    return false;
+  pt->arms = (int)n;
+  return true;
+}
+
+void zr__sdl_pigment_pattern_of(zr_pattern *pt, const zr_pigment *pg) {
+  pt->pigment = pg;
+}
+
+void zr__sdl_texture_pattern(zr_texture *tx, int kind) {
+  zr__pattern_init(&tx->pattern, (zr_pattern_kind)kind);
+}
+
+/* ---- layers and transforms ---- */
+
+zr_texture *zr__sdl_texture_layer(zr_sdl_parser *p, const zr_texture *below,
+                                  const zr_texture *above) {
+  if (!below)
+    return zr__sdl_texture_new(p, above);
+  zr_texture *bottom = zr__sdl_texture_new(p, below);
+  if (!bottom)
+    return NULL;
+  zr_texture *last = bottom;
+  while (last->over) {
+    zr_texture *copy = zr__sdl_texture_new(p, last->over);
+    if (!copy)
+      return NULL;
+    last->over = copy;
+    last = copy;
+  }
+  last->over = above;
+  return bottom;
+}
+
+zr_texture *zr__sdl_texture_top(zr_sdl_parser *p, zr_texture *tx) {
+  zr_texture *last = tx;
+  while (last->over) {
+    zr_texture *copy = zr__sdl_texture_new(p, last->over);
+    if (!copy)
+      return NULL;
+    last->over = copy;
+    last = copy;
+  }
+  return last;
+}
+
+/* A transformed copy of a whole texture (layers and map included). */
+static const zr_texture *transformed(zr_sdl_parser *p, const zr_texture *tx,
+                                     const zr_transform *t) {
+  zr_texture *copy = zr__sdl_texture_new(p, tx);
+  if (!copy || !zr__sdl_texture_transform(p, copy, t))
+    return NULL;
+  return copy;
+}
+
+bool zr__sdl_texture_transform_more(zr_sdl_parser *p, zr_texture *tx,
+                                    const zr_transform *t) {
+  if (tx->map) {
+    zr_transform *c = zr__sdl_alloc(p, sizeof *c);
+    if (!c)
+      return false;
+    if (tx->transform)
+      *c = *tx->transform;
+    else
+      zr__transform_identity(c);
+    zr__transform_compose(c, t);
+    tx->transform = c;
+    zr_map *m = zr__sdl_map_new(p);
+    if (!m)
+      return false;
+    for (size_t i = 0; i < tx->map->n; i++) {
+      zr_map_entry e = tx->map->entries[i];
+      if (!(e.u.texture = transformed(p, e.u.texture, t)) ||
+          !append(p, m, &e))
+        return false;
+    }
+    tx->map = m;
+  }
+  if (tx->over && !(tx->over = transformed(p, tx->over, t)))
+    return false;
+  return true;
+}
+
+/* ---- materials ---- */
+
+zr_sdl_material *zr__sdl_material_new(zr_sdl_parser *p,
+                                      const zr_sdl_material *from) {
+  zr_sdl_material *m = zr__sdl_alloc(p, sizeof *m);
+  if (m && from)
+    *m = *from;
+  return m;
+}
+
+bool zr__sdl_material_texture(zr_sdl_parser *p, zr_sdl_material *m,
+                              const zr_texture *tx) {
+  m->texture = zr__sdl_texture_layer(p, m->texture, tx);
+  return m->texture != NULL;
+}
+
+bool zr__sdl_material_transform(zr_sdl_parser *p, zr_sdl_material *m,
+                                const zr_transform *t) {
+  if (!m->texture)
+    return true;
+  m->texture = transformed(p, m->texture, t);
+  return m->texture != NULL;
+}

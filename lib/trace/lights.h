@@ -1,0 +1,43 @@
+/*
+ * lights.h - how much of a light source reaches a surface point: the
+ * kinds of POV-Ray 3.7's light_source (lib/trace/lights.c).
+ */
+#ifndef ZR_TRACE_LIGHTS_H
+#define ZR_TRACE_LIGHTS_H
+
+#include <stdbool.h>
+
+#include "scene/scene.h"
+#include "trace/shade.h"
+
+/*
+ * The light arriving at point p before shadows: *l is the unit vector
+ * toward the light (the centre of an area light; along the axis for
+ * parallel and cylinder lights) and *colour the light's colour after
+ * the spotlight or cylinder cone and distance fading.  False when no
+ * light arrives (outside a cone).
+ */
+bool zr__light_arrive(const zr_light *light, zr_vec3 p, zr_vec3 *l,
+                      zr_rgb *colour);
+
+/* The spot or cylinder factor alone at p, in [0, 1] (1 for others). */
+double zr__light_cone(const zr_light *light, zr_vec3 p);
+
+/* The distance fading factor 2 / (1 + (d / fade_distance)^fade_power),
+   or 1 for a light that does not fade. */
+double zr__light_fade(const zr_light *light, double distance);
+
+/*
+ * The share of the light that gets past the scene to lit_from (a point
+ * just off the surface at p), per channel: 1 unblocked, 0 in full
+ * shadow, between for transparent blockers and the soft shadows of area
+ * lights (averaged over the light's grid of points).
+ */
+zr_rgb zr__light_visibility(const zr_tracer *tracer, const zr_light *light,
+                            zr_vec3 p, zr_vec3 lit_from);
+
+/* The grid point (i, j) of an area light seen from p, jitter included
+   (the hash is of p, so the picture does not depend on threads). */
+zr_vec3 zr__area_light_point(const zr_light *light, zr_vec3 p, int i, int j);
+
+#endif /* ZR_TRACE_LIGHTS_H */

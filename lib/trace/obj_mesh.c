@@ -1,0 +1,533 @@
+/*
+ * obj_mesh.c - triangle meshes: POV-Ray 3.7's mesh, mesh2 and
+ * smooth_triangle (reference manual, "Mesh", "Mesh2", "Smooth
+ * Triangle").
+ *
+ * A mesh is one primitive to the scene's BVH, with a hierarchy of its
+ * own over its triangles, so a mesh declared once and placed many times
+ * with object { M transform } costs its triangles once: every placed
+ * copy is a zr_object that points to the same struct zr_mesh and carries
+ * its own transform, and a ray is mapped into the mesh's coordinates
+ * before it meets the inner hierarchy.
+ *
+ * The inner hierarchy is built top down with the binned surface area
+ * heuristic (Wald, "On fast Construction of SAH-based Bounding Volume
+ * Hierarchies", 2007), like lib/trace/bvh.c's, but over an index array
+ * and with single-precision node boxes rounded outward, which halves the
+ * nodes' size for the million-triangle meshes it exists for.  The faces
+ * are then put in leaf order, so a leaf is a run of consecutive rows and
+ * needs no index table.  Triangles are tested in double precision
+ * (Moller and Trumbore, "Fast, minimum storage ray/triangle
+ * intersection", 1997).
+ *
+ * A smooth triangle's shading normal is its corner normals weighted by
+ * the barycentric coordinates of the hit (Phong interpolation, as the
+ * manual describes smooth_triangle).  A mesh has no inside unless it has
+ * an inside_vector; then a point is inside when a ray from it along that
+ * vector crosses the mesh an odd number of times ("Mesh": the mesh must
+ * be closed for this to mean anything).
+ */
+#include "trace/obj_mesh.h"
+
+#include "trace/intersect.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+enum {
+  BINS = 16,
+  LEAF_MAX = 4,    /* a node this small is always a leaf */
+  LEAF_SAH_MAX = 8, /* SAH may prefer a leaf up to this size */
+  DEPTH_MAX = 64,
+  STACK_MAX = 96
+};
+
+struct zr_mesh_node {
+  float lo[3], hi[3];
+  uint32_t first; /* leaf: first face; inner: right child index */
+  uint32_t count; /* leaf: number of faces; inner: 0 */
+};
+
+/* A face's box and centre while building.  The boxes themselves are
+   partitioned (not an index table into them), so every pass over a
+   node's faces reads memory in order. */
+typedef struct face_box {
+  float lo[3], hi[3], centre[3];
+  uint32_t face;
+} face_box;
+
+typedef struct builder {
+  face_box *boxes;
+  zr_mesh_node *nodes;
+  size_t n_nodes, cap_nodes;
+} builder;
+
+/* Single precision bounds that still contain the double value. */
+static float round_down(double x) {
+  float f = (float)x;
+  return (double)f > x ? nextafterf(f, -INFINITY) : f;
+}
+
+static float round_up(double x) {
+  float f = (float)x;
+  return (double)f < x ? nextafterf(f, INFINITY) : f;
+}
+
+typedef struct fbox {
+  float lo[3], hi[3];
+} fbox;
+
+static void fbox_empty(fbox *b) {
+  for (int i = 0; i < 3; i++) {
+    b->lo[i] = INFINITY;
+    b->hi[i] = -INFINITY;
+  }
+}
+
+/* Plain comparisons: fminf and fmaxf are calls at -O2, and this is the
+   builder's innermost loop. */
+static void fbox_grow(fbox *b, const float lo[3], const float hi[3]) {
+  for (int i = 0; i < 3; i++) {
+    b->lo[i] = lo[i] < b->lo[i] ? lo[i] : b->lo[i];
+    b->hi[i] = hi[i] > b->hi[i] ? hi[i] : b->hi[i];
+  }
+}
+
+static double fbox_area(const fbox *b) {
+  double d[3];
+  for (int i = 0; i < 3; i++)
+    d[i] = b->hi[i] > b->lo[i] ? (double)b->hi[i] - b->lo[i] : 0.0;
+  return 2.0 * (d[0] * d[1] + d[1] * d[2] + d[2] * d[0]);
+}
+
+static int bin_of(float c, float lo, float scale) {
+  int k = (int)((c - lo) * scale);
+  return k < 0 ? 0 : k >= BINS ? BINS - 1 : k;
+}
+
+/*
+ * The number of faces of order[0..n) that go left, reordered so they
+ * come first; 0 when a leaf is the better choice.
+ */
+static size_t split(face_box *boxes, size_t n, const fbox *bounds,
+                    const fbox *centres) {
+  const fbox cb = *centres;
+  int axis = 0;
+  for (int a = 1; a < 3; a++)
+    if (cb.hi[a] - cb.lo[a] > cb.hi[axis] - cb.lo[axis])
+      axis = a;
+  double ext = (double)cb.hi[axis] - cb.lo[axis];
+  if (!(ext > 0.0)) {
+    /* Every centre coincides: any halving is as good as another. */
+    return n > LEAF_SAH_MAX ? n / 2 : 0;
+  }
+  float scale = (float)(BINS / ext);
+  size_t counts[BINS] = {0};
+  fbox bins[BINS];
+  for (int i = 0; i < BINS; i++)
+    fbox_empty(&bins[i]);
+  for (size_t i = 0; i < n; i++) {
+    const face_box *fb = &boxes[i];
+    int k = bin_of(fb->centre[axis], cb.lo[axis], scale);
+    counts[k]++;
+    fbox_grow(&bins[k], fb->lo, fb->hi);
+  }
+  double right_cost[BINS];
+  fbox acc;
+  fbox_empty(&acc);
+  size_t acc_n = 0;
+  for (int k = BINS - 1; k > 0; k--) {
+    if (counts[k])
+      fbox_grow(&acc, bins[k].lo, bins[k].hi);
+    acc_n += counts[k];
+    right_cost[k] = acc_n ? fbox_area(&acc) * (double)acc_n : 0.0;
+  }
+  double best = INFINITY;
+  int best_k = -1;
+  fbox_empty(&acc);
+  acc_n = 0;
+  for (int k = 1; k < BINS; k++) {
+    if (counts[k - 1])
+      fbox_grow(&acc, bins[k - 1].lo, bins[k - 1].hi);
+    acc_n += counts[k - 1];
+    if (acc_n == 0 || acc_n == n)
+      continue;
+    double cost = fbox_area(&acc) * (double)acc_n + right_cost[k];
+    if (cost < best) {
+      best = cost;
+      best_k = k;
+    }
+  }
+  if (best_k < 0)
+    return n > LEAF_SAH_MAX ? n / 2 : 0;
+  /* A traversal step costs about as much as one triangle test. */
+  double area = fbox_area(bounds);
+  if (n <= LEAF_SAH_MAX && area + best >= area * (double)n)
+    return 0;
+  size_t left = 0;
+  for (size_t i = 0; i < n; i++) {
+    if (bin_of(boxes[i].centre[axis], cb.lo[axis], scale) < best_k) {
+      face_box t = boxes[i];
+      boxes[i] = boxes[left];
+      boxes[left] = t;
+      left++;
+    }
+  }
+  return left;
+}
+
+static zr_status new_node(builder *b, size_t *index) {
+  if (b->n_nodes == b->cap_nodes) {
+    size_t cap = b->cap_nodes ? b->cap_nodes * 2 : 64;
+    zr_mesh_node *p = realloc(b->nodes, cap * sizeof *p);
+    if (!p)
+      return ZR_ENOMEM;
+    b->nodes = p;
+    b->cap_nodes = cap;
+  }
+  *index = b->n_nodes++;
+  return ZR_OK;
+}
+
+static zr_status build_node(builder *b, size_t first, size_t n, int depth) {
+  size_t index;
+  zr_status s = new_node(b, &index);
+  if (s != ZR_OK)
+    return s;
+  /* The node's box and the box of its faces' centres, in one pass. */
+  fbox bounds, centres;
+  fbox_empty(&bounds);
+  fbox_empty(&centres);
+  for (size_t i = first; i < first + n; i++) {
+    const face_box *fb = &b->boxes[i];
+    fbox_grow(&bounds, fb->lo, fb->hi);
+    fbox_grow(&centres, fb->centre, fb->centre);
+  }
+  memcpy(b->nodes[index].lo, bounds.lo, sizeof bounds.lo);
+  memcpy(b->nodes[index].hi, bounds.hi, sizeof bounds.hi);
+  size_t left = 0;
+  if (n > LEAF_MAX)
+    left = depth < DEPTH_MAX ? split(b->boxes + first, n, &bounds, &centres)
+                             : n / 2;
+  if (left == 0 || left == n) {
+    b->nodes[index].first = (uint32_t)first;
+    b->nodes[index].count = (uint32_t)n;
+    return ZR_OK;
+  }
+  b->nodes[index].count = 0;
+  s = build_node(b, first, left, depth + 1);
+  if (s != ZR_OK)
+    return s;
+  b->nodes[index].first = (uint32_t)b->n_nodes;
+  return build_node(b, first + left, n - left, depth + 1);
+}
+
+/* Puts the rows of an n-row table of row-size bytes in the given order,
+   through one scratch copy. */
+static zr_status permute(void *rows, size_t row, const uint32_t *order,
+                         size_t n) {
+  if (!rows)
+    return ZR_OK;
+  unsigned char *tmp = malloc(n * row);
+  if (!tmp)
+    return ZR_ENOMEM;
+  const unsigned char *src = rows;
+  for (size_t i = 0; i < n; i++)
+    memcpy(tmp + i * row, src + (size_t)order[i] * row, row);
+  memcpy(rows, tmp, n * row);
+  free(tmp);
+  return ZR_OK;
+}
+
+static bool check_indices(const uint32_t (*rows)[3], size_t n, size_t limit,
+                          size_t *bad) {
+  if (!rows)
+    return true;
+  for (size_t f = 0; f < n; f++)
+    for (int k = 0; k < 3; k++)
+      if (rows[f][k] >= limit) {
+        *bad = f;
+        return false;
+      }
+  return true;
+}
+
+zr_status zr__mesh_build(struct zr_mesh *mesh, zr_arena *arena,
+                         size_t *bad_face) {
+  size_t n = mesh->n_faces;
+  *bad_face = 0;
+  if (!check_indices((const uint32_t(*)[3])mesh->faces, n,
+                     mesh->n_vertices, bad_face) ||
+      !check_indices((const uint32_t(*)[3])mesh->face_normals, n,
+                     mesh->n_normals, bad_face) ||
+      !check_indices((const uint32_t(*)[3])mesh->face_uvs, n, mesh->n_uvs,
+                     bad_face))
+    return ZR_ESCENE;
+  if (mesh->face_textures)
+    for (size_t f = 0; f < n; f++)
+      for (int k = 0; k < 3; k++)
+        if (mesh->face_textures[f][k] >= (int32_t)mesh->n_textures) {
+          *bad_face = f;
+          return ZR_ESCENE;
+        }
+  if (n > UINT32_MAX / 2)
+    return ZR_ENOMEM;
+  mesh->lo = zr_v3(INFINITY, INFINITY, INFINITY);
+  mesh->hi = zr_v3_neg(mesh->lo);
+  if (n == 0)
+    return ZR_OK;
+  face_box *boxes = malloc(n * sizeof *boxes);
+  uint32_t *order = malloc(n * sizeof *order);
+  builder b = {boxes, NULL, 0, 0};
+  zr_status s = ZR_ENOMEM;
+  if (!boxes || !order)
+    goto done;
+  for (size_t f = 0; f < n; f++) {
+    zr_vec3 lo = zr_v3(INFINITY, INFINITY, INFINITY), hi = zr_v3_neg(lo);
+    for (int k = 0; k < 3; k++) {
+      zr_vec3 p = mesh->vertices[mesh->faces[f][k]];
+      lo = zr_v3_min(lo, p);
+      hi = zr_v3_max(hi, p);
+    }
+    mesh->lo = zr_v3_min(mesh->lo, lo);
+    mesh->hi = zr_v3_max(mesh->hi, hi);
+    face_box *fb = &boxes[f];
+    double l[3] = {lo.x, lo.y, lo.z}, h[3] = {hi.x, hi.y, hi.z};
+    for (int a = 0; a < 3; a++) {
+      fb->lo[a] = round_down(l[a]);
+      fb->hi[a] = round_up(h[a]);
+      fb->centre[a] = (float)(0.5 * (l[a] + h[a]));
+    }
+    fb->face = (uint32_t)f;
+  }
+  s = build_node(&b, 0, n, 0);
+  if (s != ZR_OK)
+    goto done;
+  for (size_t i = 0; i < n; i++)
+    order[i] = boxes[i].face;
+  /* The boxes are done with: give their memory back before the
+     permutation's scratch copies are made. */
+  free(boxes);
+  boxes = NULL;
+  b.boxes = NULL;
+  if ((s = permute(mesh->faces, sizeof *mesh->faces, order, n)) != ZR_OK ||
+      (s = permute(mesh->face_normals, sizeof *mesh->face_normals, order,
+                   n)) != ZR_OK ||
+      (s = permute(mesh->face_uvs, sizeof *mesh->face_uvs, order, n)) !=
+          ZR_OK ||
+      (s = permute(mesh->face_textures, sizeof *mesh->face_textures, order,
+                   n)) != ZR_OK)
+    goto done;
+  mesh->nodes = zr__arena_memdup(arena, b.nodes,
+                                 b.n_nodes * sizeof *b.nodes);
+  if (!mesh->nodes) {
+    s = ZR_ENOMEM;
+    goto done;
+  }
+  mesh->n_nodes = b.n_nodes;
+done:
+  free(b.nodes);
+  free(order);
+  free(boxes);
+  return s;
+}
+
+/* ---- tracing ---- */
+
+typedef struct slab_ray {
+  double org[3], inv[3];
+} slab_ray;
+
+/* The entry distance of the ray into a node's box within [t0, t1], or
+   INFINITY when it misses. */
+static double node_entry(const zr_mesh_node *node, const slab_ray *r,
+                         double t0, double t1) {
+  for (int a = 0; a < 3; a++) {
+    double ta = (node->lo[a] - r->org[a]) * r->inv[a];
+    double tb = (node->hi[a] - r->org[a]) * r->inv[a];
+    if (ta > tb) {
+      double t = ta;
+      ta = tb;
+      tb = t;
+    }
+    /* 0 * inf (a ray in a slab's plane) is NaN: such a slab does not
+       limit the interval. */
+    if (ta > t0)
+      t0 = ta;
+    if (tb < t1)
+      t1 = tb;
+  }
+  return t0 <= t1 ? t0 : INFINITY;
+}
+
+/* Moller-Trumbore; true with t, u, v when the ray crosses face f. */
+static bool face_hit(const struct zr_mesh *m, size_t f, zr_vec3 org,
+                     zr_vec3 dir, double *t, double *u, double *v) {
+  const uint32_t *idx = m->faces[f];
+  zr_vec3 p0 = m->vertices[idx[0]];
+  zr_vec3 e1 = zr_v3_sub(m->vertices[idx[1]], p0);
+  zr_vec3 e2 = zr_v3_sub(m->vertices[idx[2]], p0);
+  zr_vec3 pv = zr_v3_cross(dir, e2);
+  double det = zr_v3_dot(e1, pv);
+  if (det == 0.0 || !isfinite(det))
+    return false;
+  double inv = 1.0 / det;
+  zr_vec3 tv = zr_v3_sub(org, p0);
+  double uu = zr_v3_dot(tv, pv) * inv;
+  if (uu < 0.0 || uu > 1.0)
+    return false;
+  zr_vec3 qv = zr_v3_cross(tv, e1);
+  double vv = zr_v3_dot(dir, qv) * inv;
+  if (vv < 0.0 || uu + vv > 1.0)
+    return false;
+  *t = zr_v3_dot(e2, qv) * inv;
+  *u = uu;
+  *v = vv;
+  return true;
+}
+
+static void make_slab(zr_vec3 org, zr_vec3 dir, slab_ray *r) {
+  r->org[0] = org.x;
+  r->org[1] = org.y;
+  r->org[2] = org.z;
+  r->inv[0] = 1.0 / dir.x;
+  r->inv[1] = 1.0 / dir.y;
+  r->inv[2] = 1.0 / dir.z;
+}
+
+/* A crossing found during traversal, before its normal is made. */
+typedef struct raw_hit {
+  double t, u, v;
+  size_t face;
+} raw_hit;
+
+static zr_mesh_crossing finish_hit(const struct zr_mesh *m,
+                                   const raw_hit *h) {
+  zr_mesh_crossing c;
+  c.t = h->t;
+  const uint32_t *idx = m->faces[h->face];
+  zr_vec3 p0 = m->vertices[idx[0]];
+  c.normal = zr_v3_cross(zr_v3_sub(m->vertices[idx[1]], p0),
+                         zr_v3_sub(m->vertices[idx[2]], p0));
+  double w[3] = {1.0 - h->u - h->v, h->u, h->v};
+  if (m->face_normals) {
+    const uint32_t *ni = m->face_normals[h->face];
+    zr_vec3 s = zr_v3(0, 0, 0);
+    for (int k = 0; k < 3; k++)
+      s = zr_v3_madd(s, m->normals[ni[k]], w[k]);
+    if (zr_v3_dot(s, s) > 0.0 && isfinite(zr_v3_dot(s, s)))
+      c.normal = s;
+  }
+  c.texture = -1;
+  if (m->face_textures) {
+    /* Three texture indices per face: POV-Ray blends the corners'
+       textures; zRcube takes the corner nearest the hit (the parser
+       warns about this). */
+    int k = w[1] > w[0] ? (w[2] > w[1] ? 2 : 1) : (w[2] > w[0] ? 2 : 0);
+    const int32_t *ti = m->face_textures[h->face];
+    c.texture = ti[1] == ti[0] && ti[2] == ti[0] ? ti[0] : ti[k];
+  }
+  return c;
+}
+
+int zr__mesh_crossings(const struct zr_mesh *m, zr_vec3 org, zr_vec3 dir,
+                       double tmin, double tmax, zr_mesh_crossing out[2]) {
+  if (m->n_nodes == 0)
+    return 0;
+  slab_ray sr;
+  make_slab(org, dir, &sr);
+  raw_hit best[2];
+  int n = 0;
+  /* With two crossings kept, nodes beyond the second are skipped. */
+  double limit = tmax;
+  uint32_t stack[STACK_MAX];
+  int sp = 0;
+  stack[sp++] = 0;
+  while (sp > 0) {
+    const zr_mesh_node *node = &m->nodes[stack[--sp]];
+    if (node_entry(node, &sr, tmin, limit) == INFINITY)
+      continue;
+    if (node->count > 0) {
+      for (uint32_t f = node->first; f < node->first + node->count; f++) {
+        raw_hit h;
+        if (!face_hit(m, f, org, dir, &h.t, &h.u, &h.v) ||
+            !(h.t > tmin && h.t < limit))
+          continue;
+        h.face = f;
+        if (n < 2) {
+          best[n++] = h;
+        } else {
+          best[1] = h;
+        }
+        if (n == 2 && best[1].t < best[0].t) {
+          raw_hit t = best[0];
+          best[0] = best[1];
+          best[1] = t;
+        }
+        if (n == 2)
+          limit = best[1].t;
+      }
+      continue;
+    }
+    if (sp + 2 <= STACK_MAX) {
+      stack[sp++] = node->first;
+      stack[sp++] = (uint32_t)(node - m->nodes) + 1;
+    }
+  }
+  for (int i = 0; i < n; i++)
+    out[i] = finish_hit(m, &best[i]);
+  return n;
+}
+
+bool zr__mesh_inside(const struct zr_mesh *m, zr_vec3 p) {
+  if (!m->has_inside || m->n_nodes == 0)
+    return false;
+  zr_vec3 dir = m->inside_vector;
+  slab_ray sr;
+  make_slab(p, dir, &sr);
+  size_t crossings = 0;
+  uint32_t stack[STACK_MAX];
+  int sp = 0;
+  stack[sp++] = 0;
+  while (sp > 0) {
+    const zr_mesh_node *node = &m->nodes[stack[--sp]];
+    if (node_entry(node, &sr, 0.0, INFINITY) == INFINITY)
+      continue;
+    if (node->count > 0) {
+      for (uint32_t f = node->first; f < node->first + node->count; f++) {
+        double t, u, v;
+        if (face_hit(m, f, p, dir, &t, &u, &v) && t > 0.0)
+          crossings++;
+      }
+      continue;
+    }
+    if (sp + 2 <= STACK_MAX) {
+      stack[sp++] = node->first;
+      stack[sp++] = (uint32_t)(node - m->nodes) + 1;
+    }
+  }
+  return crossings % 2 == 1;
+}
+
+zr_status zr__mesh_instance(zr_arena *arena, const zr_object **prim) {
+  const zr_object *o = *prim;
+  if (o->kind != ZR_OBJ_MESH || o->u.mesh.data->n_textures == 0)
+    return ZR_OK;
+  const struct zr_mesh *m = o->u.mesh.data;
+  zr_object *copy = zr__arena_memdup(arena, o, sizeof *copy);
+  zr_object *textured = zr__arena_alloc(arena, m->n_textures * sizeof *o);
+  if (!copy || !textured)
+    return ZR_ENOMEM;
+  copy->u.mesh.textured = textured;
+  for (size_t k = 0; k < m->n_textures; k++) {
+    textured[k] = *copy;
+    textured[k].texture = m->textures[k];
+  }
+  *prim = copy;
+  return ZR_OK;
+}
+
+bool zr__mesh_has_inside(const zr_object *object) {
+  return object->u.mesh.data->has_inside;
+}

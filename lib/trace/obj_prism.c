@@ -1,0 +1,228 @@
+/*
+ * obj_prism.c - the prism (POV-Ray 3.7 reference, "Prism"): closed
+ * curves in the x-z plane swept along y between two heights, with
+ * linear walls or, for conic_sweep, walls that shrink the curve towards
+ * the apex at the origin (the curve at height y is the given one scaled
+ * by y).  Overlaps of an even number of sub-prisms are holes.
+ *
+ * Whatever the spline, the parser (lib/sdl/build_shape.c) stores each
+ * piece of curve as a cubic c(s) = (x(s), z(s)), s in [0, 1], in the
+ * power basis.  A linear-sweep wall is met where the ray's shadow on the
+ * x-z plane crosses the curve: with the ray's origin o and direction d,
+ *   (x(s) - o.x) d.z - (z(s) - o.z) d.x = 0,
+ * a cubic in s.  A conic wall holds the points y (x(s), 1, z(s)); such a
+ * point is on the ray when it lies in the plane through the apex that
+ * holds the ray, whose normal is m = o x d:
+ *   m . (x(s), 1, z(s)) = 0,
+ * again a cubic.  Each root in [0, 1] gives the point, its t and its
+ * height, which must lie between the two heights.  The caps are the
+ * planes y = y0 and y = y1 where the hit's (x, z) (divided by y for a
+ * conic prism) is inside the curves, which the even-odd test decides by
+ * counting the crossings of the curves with the line z = const to the
+ * right of the point, again roots of cubics.
+ *
+ * Nothing in the geometry says which side of a wall is outside, since
+ * sub-prisms may be written clockwise or not and may nest, so a wall's
+ * normal is turned to point away from the region covered: a point a
+ * hair along it must be outside.
+ */
+#include "trace/obj_shapes.h"
+
+#include <math.h>
+
+#include "trace/roots.h"
+
+/* The value and derivative of one coordinate's cubic at s. */
+static double cubic_at(const double *c, double s) {
+  return ((c[3] * s + c[2]) * s + c[1]) * s + c[0];
+}
+
+static double cubic_slope(const double *c, double s) {
+  return (3.0 * c[3] * s + 2.0 * c[2]) * s + c[1];
+}
+
+/* The roots of c(s) = 0 for s in [0, 1): the open interval plus s = 0
+   itself, so two segments that meet count their joint once. */
+static int segment_roots(const double *c, double *roots) {
+  int n = 0;
+  if (c[0] == 0.0)
+    roots[n++] = 0.0;
+  return n + zr__poly_roots(c, 3, 0.0, 1.0, roots + n);
+}
+
+bool zr__curves_cover(const double *pieces, size_t n_pieces, double x,
+                      double z) {
+  bool in = false;
+  for (size_t i = 0; i < n_pieces; i++) {
+    const double *seg = pieces + 8 * i;
+    double zc[4] = {seg[4] - z, seg[5], seg[6], seg[7]};
+    double s[4];
+    int n = segment_roots(zc, s);
+    for (int k = 0; k < n; k++) {
+      /* A root where z(s) only touches the line does not cross it. */
+      if (zc[0] == 0.0 && s[k] == 0.0 && cubic_slope(zc, 0.0) == 0.0)
+        continue;
+      if (cubic_at(seg, s[k]) > x)
+        in = !in;
+    }
+  }
+  return in;
+}
+
+/* The 2-D point of the curves under (x, z) at height y. */
+static bool covers_at(const zr_object *o, zr_vec3 p) {
+  const double *seg = o->u.prism.seg;
+  size_t n = o->u.prism.n_seg;
+  if (!o->u.prism.conic)
+    return zr__curves_cover(seg, n, p.x, p.z);
+  if (p.y == 0.0)
+    return false;
+  return zr__curves_cover(seg, n, p.x / p.y, p.z / p.y);
+}
+
+bool zr__prism_inside(const zr_object *o, zr_vec3 p) {
+  return p.y > o->u.prism.y0 && p.y < o->u.prism.y1 && covers_at(o, p);
+}
+
+void zr__prism_bounds(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi) {
+  double y0 = o->u.prism.y0, y1 = o->u.prism.y1;
+  zr_vec3 l = o->u.prism.lo, h = o->u.prism.hi;
+  if (!o->u.prism.conic) {
+    *lo = zr_v3(l.x, y0, l.z);
+    *hi = zr_v3(h.x, y1, h.z);
+    return;
+  }
+  /* The curve scaled by y: its extremes are at the two heights. */
+  *lo = zr_v3(fmin(l.x * y0, l.x * y1), y0, fmin(l.z * y0, l.z * y1));
+  *lo = zr_v3_min(*lo, zr_v3(fmin(h.x * y0, h.x * y1), y0,
+                             fmin(h.z * y0, h.z * y1)));
+  *hi = zr_v3(fmax(l.x * y0, l.x * y1), y1, fmax(l.z * y0, l.z * y1));
+  *hi = zr_v3_max(*hi, zr_v3(fmax(h.x * y0, h.x * y1), y1,
+                             fmax(h.z * y0, h.z * y1)));
+}
+
+typedef struct hit_list {
+  int n;
+  double t[ZR_SHAPE_MAX_CROSSINGS];
+  zr_vec3 normal[ZR_SHAPE_MAX_CROSSINGS];
+} hit_list;
+
+/* Keeps the nearest crossings, sorted. */
+static void keep(hit_list *l, double t, zr_vec3 n) {
+  int j = l->n;
+  if (j == ZR_SHAPE_MAX_CROSSINGS) {
+    if (t >= l->t[j - 1])
+      return;
+    j--;
+  } else {
+    l->n++;
+  }
+  while (j > 0 && l->t[j - 1] > t) {
+    l->t[j] = l->t[j - 1];
+    l->normal[j] = l->normal[j - 1];
+    j--;
+  }
+  l->t[j] = t;
+  l->normal[j] = n;
+}
+
+/* Turns a wall normal at p away from the covered region. */
+static zr_vec3 outward(const zr_object *o, zr_vec3 p, zr_vec3 n) {
+  double len = zr_v3_len(n);
+  if (!(len > 0.0))
+    return n;
+  double size = fmax(zr_v3_max_comp(zr_v3_sub(o->u.prism.hi, o->u.prism.lo)),
+                     1e-300);
+  zr_vec3 q = zr_v3_madd(p, n, 1e-7 * size / len);
+  return covers_at(o, q) ? zr_v3_neg(n) : n;
+}
+
+static void wall_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
+                           double tmin, double tmax, hit_list *l) {
+  zr_vec3 m = zr_v3_cross(org, dir);
+  double dd = zr_v3_dot(dir, dir);
+  for (size_t i = 0; i < o->u.prism.n_seg; i++) {
+    const double *x = o->u.prism.seg + 8 * i, *z = x + 4;
+    double c[4];
+    for (int k = 0; k < 4; k++)
+      c[k] = o->u.prism.conic ? m.x * x[k] + m.z * z[k]
+                              : x[k] * dir.z - z[k] * dir.x;
+    if (o->u.prism.conic)
+      c[0] += m.y;
+    else
+      c[0] += org.z * dir.x - org.x * dir.z;
+    double s[4];
+    int n = segment_roots(c, s);
+    for (int k = 0; k < n; k++) {
+      double cx = cubic_at(x, s[k]), cz = cubic_at(z, s[k]);
+      double tx = cubic_slope(x, s[k]), tz = cubic_slope(z, s[k]);
+      double t;
+      zr_vec3 nrm;
+      if (!o->u.prism.conic) {
+        double dxz = dir.x * dir.x + dir.z * dir.z;
+        if (!(dxz > 0.0))
+          continue;
+        t = ((cx - org.x) * dir.x + (cz - org.z) * dir.z) / dxz;
+        nrm = zr_v3(tz, 0.0, -tx);
+      } else {
+        /* org + t dir = y q with q = (cx, 1, cz): y from the cross
+           products with dir, then t along it. */
+        zr_vec3 q = zr_v3(cx, 1.0, cz), qd = zr_v3_cross(q, dir);
+        double qq = zr_v3_dot(qd, qd);
+        if (!(qq > 0.0))
+          continue;
+        double y = zr_v3_dot(m, qd) / qq;
+        t = zr_v3_dot(zr_v3_sub(zr_v3_scale(q, y), org), dir) / dd;
+        /* The wall's tangents y (x', 0, z') and (x, 1, z). */
+        nrm = zr_v3_cross(zr_v3(tx, 0.0, tz), q);
+      }
+      if (!(t > tmin && t < tmax))
+        continue;
+      zr_vec3 p = zr_v3_madd(org, dir, t);
+      if (p.y < o->u.prism.y0 || p.y > o->u.prism.y1)
+        continue;
+      keep(l, t, outward(o, p, nrm));
+    }
+  }
+}
+
+static void cap_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
+                          double tmin, double tmax, hit_list *l) {
+  if (o->u.prism.open || dir.y == 0.0)
+    return;
+  double h[2] = {o->u.prism.y0, o->u.prism.y1};
+  for (int i = 0; i < 2; i++) {
+    double t = (h[i] - org.y) / dir.y;
+    if (!(t > tmin && t < tmax))
+      continue;
+    zr_vec3 p = zr_v3_madd(org, dir, t);
+    p.y = h[i];
+    if (covers_at(o, p))
+      keep(l, t, zr_v3(0.0, i == 0 ? -1.0 : 1.0, 0.0));
+  }
+}
+
+int zr__prism_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
+                        double tmin, double tmax, double t[4],
+                        zr_vec3 normal[4]) {
+  zr_vec3 lo, hi;
+  zr__prism_bounds(o, &lo, &hi);
+  double s0, s1, pad = 1e-9 * fmax(1.0, zr_v3_max_comp(zr_v3_max(
+                                              zr_v3_neg(lo), hi)));
+  if (!zr__ray_box_span(zr_v3_sub(lo, zr_v3(pad, pad, pad)),
+                        zr_v3_add(hi, zr_v3(pad, pad, pad)), org, dir, &s0,
+                        &s1))
+    return 0;
+  tmin = fmax(tmin, s0 - pad);
+  tmax = fmin(tmax, s1 + pad);
+  if (!(tmin < tmax))
+    return 0;
+  hit_list l = {0, {0}, {{0, 0, 0}}};
+  wall_crossings(o, org, dir, tmin, tmax, &l);
+  cap_crossings(o, org, dir, tmin, tmax, &l);
+  for (int i = 0; i < l.n; i++) {
+    t[i] = l.t[i];
+    normal[i] = l.normal[i];
+  }
+  return l.n;
+}

@@ -1,0 +1,73 @@
+/*
+ * obj_shapes.h - the finite shapes of issue 3 that are not quadrics:
+ * torus (obj_torus.c), polygon (obj_polygon.c), superellipsoid
+ * (obj_superellipsoid.c), prism (obj_prism.c), lathe (obj_lathe.c),
+ * blob (obj_blob.c) and sor (obj_sor.c).
+ *
+ * Each works in the object's own coordinates.  Crossings are those in
+ * (tmin, tmax) of the ray org + t dir, nearest first, at most
+ * ZR_SHAPE_MAX_CROSSINGS of them, with outward normals of any length;
+ * the caller (lib/trace/intersect.c) transforms and normalises them.
+ */
+#ifndef ZR_TRACE_OBJ_SHAPES_H
+#define ZR_TRACE_OBJ_SHAPES_H
+
+#include <stdbool.h>
+
+#include "scene/scene.h"
+
+#define ZR_SHAPE_MAX_CROSSINGS 4
+
+int zr__torus_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
+                        double tmin, double tmax, double t[4],
+                        zr_vec3 normal[4]);
+bool zr__torus_inside(const zr_object *o, zr_vec3 p);
+void zr__torus_bounds(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi);
+
+int zr__polygon_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
+                          double tmin, double tmax, double t[4],
+                          zr_vec3 normal[4]);
+
+int zr__superellipsoid_crossings(const zr_object *o, zr_vec3 org,
+                                 zr_vec3 dir, double tmin, double tmax,
+                                 double t[4], zr_vec3 normal[4]);
+bool zr__superellipsoid_inside(const zr_object *o, zr_vec3 p);
+/* The implicit function, negative inside, zero on the surface. */
+double zr__superellipsoid_value(double e, double n, zr_vec3 p);
+
+int zr__prism_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
+                        double tmin, double tmax, double t[4],
+                        zr_vec3 normal[4]);
+bool zr__prism_inside(const zr_object *o, zr_vec3 p);
+void zr__prism_bounds(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi);
+/* Whether (x, z) is inside the curves of n pieces (a prism's or a
+   lathe's seg) by the even-odd rule. */
+bool zr__curves_cover(const double *seg, size_t n, double x, double z);
+
+int zr__lathe_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
+                        double tmin, double tmax, double t[4],
+                        zr_vec3 normal[4]);
+bool zr__lathe_inside(const zr_object *o, zr_vec3 p);
+void zr__lathe_bounds(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi);
+
+int zr__blob_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
+                       double tmin, double tmax, double t[4],
+                       zr_vec3 normal[4]);
+bool zr__blob_inside(const zr_object *o, zr_vec3 p);
+bool zr__blob_bounds(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi);
+/* The sum of the components' fields at p (blob space). */
+double zr__blob_density(const zr_object *o, zr_vec3 p);
+
+int zr__sor_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
+                      double tmin, double tmax, double t[4],
+                      zr_vec3 normal[4]);
+bool zr__sor_inside(const zr_object *o, zr_vec3 p);
+void zr__sor_bounds(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi);
+
+/* The parameters (s0, s1) along org + s dir for which the point is in
+   the box [lo, hi]; false when the ray misses it.  Shared by the
+   shapes that clip their search to a box. */
+bool zr__ray_box_span(zr_vec3 lo, zr_vec3 hi, zr_vec3 org, zr_vec3 dir,
+                      double *s0, double *s1);
+
+#endif /* ZR_TRACE_OBJ_SHAPES_H */

@@ -1,0 +1,216 @@
+/*
+ * obj_superellipsoid.c - the superquadric ellipsoid (POV-Ray 3.7
+ * reference, "Superquadric Ellipsoid"):
+ *   F(x, y, z) = (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n) = 1
+ * in the box [-1, 1]^3, inside where F < 1.  e = n = 1 is the sphere,
+ * small values give rounded boxes and cylinders, values above 2 pinched
+ * stars.
+ *
+ * The ray equation is not a polynomial, so the crossings are searched.
+ * The search uses F^(n/2) - 1 instead of F - 1: it has the same zero set
+ * but grows linearly with the distance from the centre (F^(n/2) is
+ * homogeneous of degree one, a norm when e, n <= 2), so its values along
+ * a ray are well scaled however small e and n are, where F itself jumps
+ * from 0 to huge within a hair.  The ray is clipped to the box and cut
+ * where it crosses the planes x = 0, y = 0, z = 0 and x = +-y, on which
+ * the shape's pieces meet; between those cuts each piece is sampled at
+ * equal steps, a change of sign is refined by bisection, and a sample
+ * that is a local minimum is followed down by a golden-section search, so
+ * a ray that clips a corner between two samples is not lost.  The normal
+ * is the gradient of F, computed through logarithms so that the large
+ * powers of small values neither overflow nor underflow on their way to
+ * a finite product.
+ */
+#include "trace/obj_shapes.h"
+
+#include <math.h>
+
+/* The steps each piece of the ray is sampled in. */
+enum { SAMPLES = 8 };
+
+double zr__superellipsoid_value(double e, double n, zr_vec3 p) {
+  double ax = fabs(p.x), ay = fabs(p.y), az = fabs(p.z);
+  /* Factor out the largest coordinate so no power overflows: F^(n/2)
+     is homogeneous of degree one. */
+  double m = fmax(ax, fmax(ay, az));
+  if (m == 0.0)
+    return -1.0;
+  ax /= m;
+  ay /= m;
+  az /= m;
+  double xy = pow(ax, 2.0 / e) + pow(ay, 2.0 / e);
+  double f = pow(xy, e / n) + pow(az, 2.0 / n);
+  return m * pow(f, n / 2.0) - 1.0;
+}
+
+bool zr__superellipsoid_inside(const zr_object *o, zr_vec3 p) {
+  return zr__superellipsoid_value(o->u.superellipsoid.e,
+                                  o->u.superellipsoid.n, p) < 0.0;
+}
+
+/* log |v|, with zero taken as a tiny number so the products below
+   stay finite. */
+static double log_of(double v) { return log(fmax(fabs(v), 1e-300)); }
+
+static zr_vec3 gradient(double e, double n, zr_vec3 p) {
+  double a = 2.0 / e, b = e / n, c = 2.0 / n;
+  double lx = log_of(p.x), ly = log_of(p.y), lz = log_of(p.z);
+  double lxy = log(exp(a * lx) + exp(a * ly));
+  if (!isfinite(lxy))
+    lxy = -690.0;
+  /* dF/dx = b A^(b-1) a |x|^(a-1) sign(x), A = |x|^a + |y|^a. */
+  double gx = a * b * exp((b - 1.0) * lxy + (a - 1.0) * lx);
+  double gy = a * b * exp((b - 1.0) * lxy + (a - 1.0) * ly);
+  double gz = c * exp((c - 1.0) * lz);
+  return zr_v3(copysign(gx, p.x), copysign(gy, p.y), copysign(gz, p.z));
+}
+
+typedef struct search {
+  double e, n;
+  zr_vec3 org, dir; /* dir of unit length */
+} search;
+
+static double value_at(const search *s, double x) {
+  return zr__superellipsoid_value(s->e, s->n, zr_v3_madd(s->org, s->dir, x));
+}
+
+/* The root between a and b, whose values have opposite signs. */
+static double bisect(const search *s, double a, double b, double fa) {
+  for (int i = 0; i < 100 && b - a > 1e-15 * (1.0 + fabs(a)); i++) {
+    double m = 0.5 * (a + b), fm = value_at(s, m);
+    if ((fm < 0.0) == (fa < 0.0)) {
+      a = m;
+      fa = fm;
+    } else {
+      b = m;
+    }
+  }
+  return 0.5 * (a + b);
+}
+
+/* The smallest value in [a, b] by golden-section search, at *where. */
+static double dip(const search *s, double a, double b, double *where) {
+  const double g = 0.6180339887498949;
+  double x1 = b - g * (b - a), x2 = a + g * (b - a);
+  double f1 = value_at(s, x1), f2 = value_at(s, x2);
+  for (int i = 0; i < 60 && b - a > 1e-13; i++) {
+    if (f1 < f2) {
+      b = x2;
+      x2 = x1;
+      f2 = f1;
+      x1 = b - g * (b - a);
+      f1 = value_at(s, x1);
+    } else {
+      a = x1;
+      x1 = x2;
+      f1 = f2;
+      x2 = a + g * (b - a);
+      f2 = value_at(s, x2);
+    }
+  }
+  *where = f1 < f2 ? x1 : x2;
+  return fmin(f1, f2);
+}
+
+typedef struct root_list {
+  int n;
+  double s[8];
+} root_list;
+
+static void add_root(root_list *r, double s) {
+  if (r->n < 8)
+    r->s[r->n++] = s;
+}
+
+/* The roots in one piece [a, b] of the ray. */
+static void search_piece(const search *s, double a, double b,
+                         root_list *r) {
+  double x[SAMPLES + 1], f[SAMPLES + 1];
+  for (int i = 0; i <= SAMPLES; i++) {
+    x[i] = a + (b - a) * i / SAMPLES;
+    f[i] = value_at(s, x[i]);
+  }
+  for (int i = 0; i < SAMPLES; i++) {
+    if ((f[i] < 0.0) != (f[i + 1] < 0.0)) {
+      add_root(r, bisect(s, x[i], x[i + 1], f[i]));
+      continue;
+    }
+    if (f[i] < 0.0)
+      continue;
+    /* Both ends outside: a dip below zero needs the values to fall
+       into the step from the left and rise out of it to the right, and
+       it cannot happen when the ends are higher than the steepest slope
+       the function has (under 8 for these shapes near the surface) lets
+       it fall within half a step. */
+    bool falls_in = i == 0 || f[i - 1] >= f[i];
+    bool rises_out = i + 1 == SAMPLES || f[i + 2] >= f[i + 1];
+    if (!(falls_in && rises_out) ||
+        fmin(f[i], f[i + 1]) > 8.0 * (x[i + 1] - x[i]))
+      continue;
+    double lo = x[i], hi = x[i + 1];
+    double at, fmin_v = dip(s, lo, hi, &at);
+    if (fmin_v < 0.0) {
+      add_root(r, bisect(s, x[i], at, f[i]));
+      add_root(r, bisect(s, at, x[i + 1], fmin_v));
+    }
+  }
+}
+
+static void sort(double *v, int n) {
+  for (int i = 1; i < n; i++)
+    for (int j = i; j > 0 && v[j - 1] > v[j]; j--) {
+      double tt = v[j];
+      v[j] = v[j - 1];
+      v[j - 1] = tt;
+    }
+}
+
+int zr__superellipsoid_crossings(const zr_object *o, zr_vec3 org,
+                                 zr_vec3 dir, double tmin, double tmax,
+                                 double t[4], zr_vec3 normal[4]) {
+  double len = zr_v3_len(dir);
+  if (!(len > 0.0) || !isfinite(len))
+    return 0;
+  search s = {o->u.superellipsoid.e, o->u.superellipsoid.n, org,
+              zr_v3_scale(dir, 1.0 / len)};
+  double pad = 1.0 + 1e-9, s0, s1;
+  if (!zr__ray_box_span(zr_v3(-pad, -pad, -pad), zr_v3(pad, pad, pad),
+                        org, s.dir, &s0, &s1))
+    return 0;
+  /* The whole span in the box is searched whatever the interval, so a
+     crossing's t does not depend on it (the tracer finds a crossing
+     again by its exact t over a narrower interval). */
+  if (!(fmax(s0, tmin * len) < fmin(s1, tmax * len)))
+    return 0;
+  /* The cuts: where the ray crosses x = 0, y = 0, z = 0, x = y, x = -y. */
+  double cut[7];
+  int n_cut = 0;
+  cut[n_cut++] = s0;
+  double num[5] = {org.x, org.y, org.z, org.x - org.y, org.x + org.y};
+  double den[5] = {s.dir.x, s.dir.y, s.dir.z, s.dir.x - s.dir.y,
+                   s.dir.x + s.dir.y};
+  for (int i = 0; i < 5; i++) {
+    if (den[i] == 0.0)
+      continue;
+    double c = -num[i] / den[i];
+    if (c > s0 && c < s1)
+      cut[n_cut++] = c;
+  }
+  sort(cut + 1, n_cut - 1);
+  cut[n_cut++] = s1;
+  root_list r = {0, {0}};
+  for (int i = 0; i + 1 < n_cut; i++)
+    if (cut[i + 1] > cut[i])
+      search_piece(&s, cut[i], cut[i + 1], &r);
+  sort(r.s, r.n);
+  int n = 0;
+  for (int i = 0; i < r.n && n < ZR_SHAPE_MAX_CROSSINGS; i++) {
+    zr_vec3 p = zr_v3_madd(s.org, s.dir, r.s[i]);
+    t[n] = r.s[i] / len;
+    if (!(t[n] > tmin && t[n] < tmax))
+      continue;
+    normal[n] = gradient(s.e, s.n, p);
+    n++;
+  }
+  return n;
+}

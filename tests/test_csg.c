@@ -1,0 +1,330 @@
+/*
+ * test_csg.c - CSG (intersection, difference, merge, nested unions,
+ * inverse), quadrics, clipped_by, bounded_by and hollow, from scene text
+ * through the parser and the scene's flattening to the tracer's
+ * crossings and inside tests (lib/trace/csg.c, obj_quadric.c,
+ * lib/sdl/build_object.c).
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <string.h>
+
+#include "config.h"
+#include "scene/scene.h"
+#include "trace/intersect.h"
+#include "zrcube.h"
+#include "parse_fixture.h"
+
+/* Crossings here are roots of quadratics or of linear equations with
+   small integer coefficients: 1e-12 covers double rounding. */
+#define EPS 1e-12
+
+static void assert_near(double a, double b, double tol) {
+  if (!(fabs(a - b) <= tol))
+    fail_msg("%.17g differs from %.17g by more than %g", a, b, tol);
+}
+
+static void assert_vec(zr_vec3 v, double x, double y, double z) {
+  assert_near(v.x, x, EPS);
+  assert_near(v.y, y, EPS);
+  assert_near(v.z, z, EPS);
+}
+
+/* The only primitive of a scene made of one object. */
+static const zr_object *only(fixture *f, const char *text) {
+  zr_scene *s = good(f, text);
+  assert_int_equal(s->n_primitives, 1);
+  return s->primitives[0];
+}
+
+/* Crossings of the ray from o along d, t in (0, inf). */
+static int cross(const zr_object *obj, zr_vec3 o, zr_vec3 d,
+                 zr_hit h[ZR_MAX_CROSSINGS]) {
+  zr_ray r = {o, d};
+  return zr__intersect(obj, &r, 0.0, INFINITY, h);
+}
+
+static void test_csg_difference_cuts_with_inverted_normal(void **state) {
+  fixture *f = *state;
+  const zr_object *o = only(f, "difference { sphere { 0, 1 }\n"
+                               "  box { <0, -2, -2>, <2, 2, 2> } }\n");
+  assert_int_equal(o->kind, ZR_OBJ_INTERSECTION);
+  zr_hit h[2];
+  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), h), 2);
+  assert_near(h[0].t, 4.0, EPS);
+  assert_vec(h[0].normal, -1, 0, 0);
+  assert_int_equal(h[0].object->kind, ZR_OBJ_SPHERE);
+  /* The cut face: the inverted box's normal points out of the solid. */
+  assert_near(h[1].t, 5.0, EPS);
+  assert_vec(h[1].normal, 1, 0, 0);
+  assert_int_equal(h[1].object->kind, ZR_OBJ_BOX);
+  assert_true(h[1].object->inverse);
+  /* Both parts belong to the primitive, whose interior rays enter. */
+  assert_ptr_equal(h[0].object->solid, o);
+  assert_ptr_equal(h[1].object->solid, o);
+  /* The removed half has no surface: a ray through it meets nothing. */
+  assert_int_equal(cross(o, zr_v3(0.5, -5, 0), zr_v3(0, 1, 0), h), 0);
+  assert_true(zr__inside(o, zr_v3(-0.5, 0, 0)));
+  assert_false(zr__inside(o, zr_v3(0.5, 0, 0)));
+  assert_false(zr__inside(o, zr_v3(-2, 0, 0)));
+}
+
+static void test_csg_intersection_is_a_lens(void **state) {
+  fixture *f = *state;
+  const zr_object *o =
+      only(f, "intersection { sphere { 0, 1 } sphere { x, 1 } }\n");
+  zr_hit h[2];
+  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), h), 2);
+  assert_near(h[0].t, 5.0, EPS); /* enters the second sphere at x = 0 */
+  assert_vec(h[0].normal, -1, 0, 0);
+  assert_near(h[1].t, 6.0, EPS); /* leaves the first at x = 1 */
+  assert_vec(h[1].normal, 1, 0, 0);
+  assert_true(zr__inside(o, zr_v3(0.5, 0, 0)));
+  assert_false(zr__inside(o, zr_v3(-0.5, 0, 0)));
+}
+
+static void test_csg_merge_drops_inner_surfaces(void **state) {
+  fixture *f = *state;
+  const zr_object *m =
+      only(f, "merge { sphere { 0, 1 } sphere { x, 1 } }\n");
+  zr_hit h[2];
+  assert_int_equal(cross(m, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), h), 2);
+  assert_near(h[0].t, 4.0, EPS);
+  assert_near(h[1].t, 7.0, EPS);
+  /* A union inside an intersection keeps its inner surfaces. */
+  const zr_object *u = only(f, "intersection {\n"
+                               "  union { sphere { 0, 1 } sphere { x, 1 } }\n"
+                               "  box { -10, 10 } }\n");
+  assert_int_equal(cross(u, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), h), 2);
+  assert_near(h[0].t, 4.0, EPS);
+  assert_near(h[1].t, 5.0, EPS);
+  /* Crossings beyond the first two are found from a later start. */
+  zr_ray r = {zr_v3(-5, 0, 0), zr_v3(1, 0, 0)};
+  assert_int_equal(zr__intersect(u, &r, 5.5, INFINITY, h), 2);
+  assert_near(h[0].t, 6.0, EPS);
+  assert_near(h[1].t, 7.0, EPS);
+}
+
+static void test_csg_inverse_follows_de_morgan(void **state) {
+  fixture *f = *state;
+  const zr_object *o = only(f, "difference { sphere { 0, 1 }\n"
+                               "  box { <0, -2, -2>, <2, 2, 2> } inverse }\n");
+  /* The inverse of an intersection is a merge of inverted children. */
+  assert_int_equal(o->kind, ZR_OBJ_MERGE);
+  assert_false(zr__inside(o, zr_v3(-0.5, 0, 0)));
+  assert_true(zr__inside(o, zr_v3(0.5, 0, 0)));
+  assert_true(zr__inside(o, zr_v3(-5, 0, 0)));
+  zr_hit h[2];
+  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), h), 2);
+  assert_near(h[0].t, 4.0, EPS);
+  assert_vec(h[0].normal, 1, 0, 0); /* now pointing into the sphere */
+  assert_near(h[1].t, 5.0, EPS);
+  assert_vec(h[1].normal, -1, 0, 0);
+  /* Inverted twice is the object again. */
+  o = only(f, "difference { sphere { 0, 1 } box { <0, -2, -2>, 2 }\n"
+              "  inverse inverse }\n");
+  assert_int_equal(o->kind, ZR_OBJ_INTERSECTION);
+  assert_true(zr__inside(o, zr_v3(-0.5, 0, 0)));
+}
+
+static void test_csg_transforms_and_textures_reach_children(void **state) {
+  fixture *f = *state;
+  const zr_object *o = only(
+      f, "#declare D = difference {\n"
+         "  sphere { 0, 1 pigment { rgb <1, 0, 0> } }\n"
+         "  box { <0, -2, -2>, <2, 2, 2> }\n"
+         "  pigment { rgb <0, 0, 1> } }\n"
+         "object { D translate <10, 0, 0> }\n");
+  zr_hit h[2];
+  assert_int_equal(cross(o, zr_v3(5, 0, 0), zr_v3(1, 0, 0), h), 2);
+  assert_near(h[0].t, 4.0, EPS);
+  assert_near(h[1].t, 5.0, EPS);
+  /* The sphere keeps its red; the box takes the difference's blue. */
+  zr_colour red = h[0].object->texture->pigment->colour;
+  zr_colour blue = h[1].object->texture->pigment->colour;
+  assert_near(red.r, 1, 0);
+  assert_near(red.b, 0, 0);
+  assert_near(blue.r, 0, 0);
+  assert_near(blue.b, 1, 0);
+  assert_non_null(h[0].object->interior);
+  /* object { } also wraps an object written in place. */
+  o = only(f, "object { intersection { sphere { 0, 1 } sphere { x, 1 } }\n"
+              "  translate <0, 3, 0> }\n");
+  assert_true(zr__inside(o, zr_v3(0.5, 3, 0)));
+  /* The copy moved; the declaration did not. */
+  zr_scene *s = good(f, "#declare D = difference { sphere { 0, 1 }\n"
+                        "  box { <0, -2, -2>, <2, 2, 2> } }\n"
+                        "object { D translate <10, 0, 0> }\n"
+                        "object { D }\n");
+  assert_int_equal(s->n_primitives, 2);
+  assert_true(zr__inside(s->primitives[0], zr_v3(9.5, 0, 0)));
+  assert_true(zr__inside(s->primitives[1], zr_v3(-0.5, 0, 0)));
+  assert_false(zr__inside(s->primitives[1], zr_v3(9.5, 0, 0)));
+}
+
+static void test_csg_bounds_of_intersection(void **state) {
+  fixture *f = *state;
+  /* shapes.inc's way: an infinite quadric made finite by a box. */
+  const zr_object *o =
+      only(f, "intersection { quadric { <1, 0, 1>, 0, 0, -1 }\n"
+              "  box { <-2, -1, -2>, <2, 3, 2> } }\n");
+  zr_vec3 lo, hi;
+  assert_true(zr__object_bounds(o, &lo, &hi));
+  /* Box corners, widened by the bounds code's relative 1e-9 pad. */
+  assert_near(lo.y, -1, 1e-8);
+  assert_near(hi.y, 3, 1e-8);
+  /* A difference's inverted children add no limit. */
+  o = only(f, "difference { box { -1, 1 } sphere { 0, 5 } }\n");
+  assert_true(zr__object_bounds(o, &lo, &hi));
+  assert_near(hi.x, 1, 1e-8);
+  /* An inverted difference is unbounded. */
+  o = only(f, "difference { box { -1, 1 } sphere { 0, 5 } inverse }\n");
+  assert_false(zr__object_bounds(o, &lo, &hi));
+}
+
+static void test_csg_quadric_cylinder_and_paraboloid(void **state) {
+  fixture *f = *state;
+  /* x^2 + z^2 - 1: shapes.inc's Cylinder_Y. */
+  const zr_object *o = only(f, "quadric { <1, 0, 1>, <0, 0, 0>,\n"
+                               "  <0, 0, 0>, -1 }\n");
+  assert_int_equal(o->kind, ZR_OBJ_QUADRIC);
+  zr_vec3 lo, hi;
+  assert_false(zr__object_bounds(o, &lo, &hi));
+  zr_hit h[2];
+  assert_int_equal(cross(o, zr_v3(-5, 7, 0), zr_v3(1, 0, 0), h), 2);
+  assert_near(h[0].t, 4.0, EPS);
+  assert_vec(h[0].normal, -1, 0, 0);
+  assert_near(h[1].t, 6.0, EPS);
+  assert_vec(h[1].normal, 1, 0, 0);
+  /* Along the axis it is never crossed. */
+  assert_int_equal(cross(o, zr_v3(0, -5, 0), zr_v3(0, 1, 0), h), 0);
+  assert_true(zr__inside(o, zr_v3(0.5, 100, 0)));
+  assert_false(zr__inside(o, zr_v3(1.5, 0, 0)));
+  /* y = x^2 + z^2: along the axis the equation is linear. */
+  o = only(f, "quadric { <1, 0, 1>, <0, 0, 0>, <0, -1, 0>, 0 }\n");
+  assert_int_equal(cross(o, zr_v3(0, 5, 0), zr_v3(0, -1, 0), h), 1);
+  assert_near(h[0].t, 5.0, EPS);
+  assert_vec(h[0].normal, 0, -1, 0);
+  assert_true(zr__inside(o, zr_v3(0, 1, 0)));
+  /* Transformed: the unit cylinder scaled by 2 about its axis. */
+  o = only(f, "quadric { <1, 0, 1>, 0, 0, -1 scale 2 }\n");
+  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), h), 2);
+  assert_near(h[0].t, 3.0, EPS);
+  assert_near(h[1].t, 7.0, EPS);
+}
+
+static void test_csg_clipped_by_keeps_the_inside_part(void **state) {
+  fixture *f = *state;
+  const zr_object *o =
+      only(f, "sphere { 0, 1 clipped_by { plane { x, 0 } }\n"
+              "  translate <0, 0, 0> }\n");
+  zr_hit h[2];
+  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), h), 1);
+  assert_near(h[0].t, 4.0, EPS);
+  /* Nothing of the plane itself remains: the open half shell shows
+     its inside. */
+  assert_int_equal(cross(o, zr_v3(5, 0, 0), zr_v3(-1, 0, 0), h), 1);
+  assert_near(h[0].t, 6.0, EPS);
+  /* The clip follows later transforms. */
+  o = only(f, "sphere { 0, 1 clipped_by { plane { x, 0 } }\n"
+              "  translate <3, 0, 0> }\n");
+  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), h), 1);
+  assert_near(h[0].t, 7.0, EPS);
+  /* clipped_by { bounded_by } clips by the bound. */
+  o = only(f, "sphere { 0, 1 bounded_by { plane { x, 0 } }\n"
+              "  clipped_by { bounded_by } }\n");
+  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), h), 1);
+  /* A bound alone changes nothing. */
+  o = only(f, "sphere { 0, 1 bounded_by { plane { x, 0 } } }\n");
+  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), h), 2);
+  /* A clipped CSG object. */
+  o = only(f, "merge { sphere { 0, 1 } sphere { x, 1 }\n"
+              "  clipped_by { plane { -x, -0.5 } } }\n");
+  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), h), 1);
+  assert_near(h[0].t, 7.0, EPS);
+}
+
+static void test_csg_hollow_is_stored(void **state) {
+  fixture *f = *state;
+  assert_true(only(f, "sphere { 0, 1 hollow }\n")->hollow);
+  assert_true(only(f, "sphere { 0, 1 hollow on }\n")->hollow);
+  assert_false(only(f, "sphere { 0, 1 hollow off }\n")->hollow);
+  assert_false(only(f, "sphere { 0, 1 }\n")->hollow);
+}
+
+static void test_csg_quartic_torus(void **state) {
+  fixture *f = *state;
+  /* (x^2 + y^2 + z^2 + 3)^2 - 16 (x^2 + z^2): the torus of radii 2 and
+     1 about y, its 35 coefficients in the manual's order (x^4, x^3 y,
+     x^3 z, x^3, x^2 y^2, ...). */
+  const char *torus = "quartic { <1, 0, 0, 0, 2, 0, 0, 2, 0, -10,\n"
+                      "  0, 0, 0, 0, 0, 0, 0, 0, 0, 0,\n"
+                      "  1, 0, 0, 2, 0, 6, 0, 0, 0, 0,\n"
+                      "  1, 0, -10, 0, 9> sturm }\n";
+  const zr_object *o = only(f, torus);
+  assert_int_equal(o->kind, ZR_OBJ_POLY);
+  assert_int_equal(o->u.poly.order, 4);
+  zr_hit h[2];
+  /* Roots of a quartic refined by Newton's method: 1e-9 allows for the
+     conditioning of the expanded coefficients. */
+  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), h), 2);
+  assert_near(h[0].t, 2.0, 1e-9);
+  assert_near(h[1].t, 4.0, 1e-9);
+  assert_near(h[0].normal.x, -1, 1e-9);
+  assert_near(h[1].normal.x, 1, 1e-9);
+  zr_ray r = {zr_v3(-5, 0, 0), zr_v3(1, 0, 0)};
+  assert_int_equal(zr__intersect(o, &r, 4.5, INFINITY, h), 2);
+  assert_near(h[0].t, 6.0, 1e-9);
+  assert_near(h[1].t, 8.0, 1e-9);
+  /* Through the hole along the axis: no crossing. */
+  assert_int_equal(cross(o, zr_v3(0, -5, 0), zr_v3(0, 1, 0), h), 0);
+  assert_true(zr__inside(o, zr_v3(2, 0.5, 0)));
+  assert_false(zr__inside(o, zr_v3(0, 0, 0)));
+  /* poly { 2, ... } is a quadric: the unit sphere. */
+  o = only(f, "poly { 2, <1, 0, 0, 0, 1, 0, 0, 1, 0, -1> }\n");
+  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), h), 2);
+  assert_near(h[0].t, 4.0, 1e-9);
+  assert_near(h[1].t, 6.0, 1e-9);
+}
+
+static void test_csg_bad_poly(void **state) {
+  fixture *f = *state;
+  bad(f, "cubic { <1, 2, 3> }\n", ZR_ESYNTAX,
+      "a poly of order 3 has 20 coefficients, not 3", NULL);
+  bad(f, "poly { 9, <1> }\n", ZR_EUNSUPPORTED,
+      "a poly's order must be a whole number from 2 to 8, not 9", NULL);
+  bad(f, "poly { 2, <1, 0, 0, 0, 1, 0, 0, 1, 0, -1, 5> }\n", ZR_ESYNTAX,
+      "a poly of order 2 has 10 coefficients, not more", NULL);
+}
+
+static void test_csg_bad_quadric(void **state) {
+  fixture *f = *state;
+  bad(f, "quadric { <1, 0, 1>, 0, 0, <1, 2, 3> }\n", ZR_ESYNTAX,
+      "expected a float, got a vector", NULL);
+}
+
+/* Each test gets a fresh fixture. */
+#define TEST(fn) cmocka_unit_test_setup_teardown(fn, setup, teardown)
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+      TEST(test_csg_difference_cuts_with_inverted_normal),
+      TEST(test_csg_intersection_is_a_lens),
+      TEST(test_csg_merge_drops_inner_surfaces),
+      TEST(test_csg_inverse_follows_de_morgan),
+      TEST(test_csg_transforms_and_textures_reach_children),
+      TEST(test_csg_bounds_of_intersection),
+      TEST(test_csg_quadric_cylinder_and_paraboloid),
+      TEST(test_csg_clipped_by_keeps_the_inside_part),
+      TEST(test_csg_hollow_is_stored),
+      TEST(test_csg_quartic_torus),
+      TEST(test_csg_bad_poly),
+      TEST(test_csg_bad_quadric),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,282 @@
+/*
+ * test_mesh.c - mesh, mesh2 and smooth_triangle: parsing (the fast
+ * reader and the grammar giving the same mesh), the inner BVH against a
+ * brute-force search, smooth normals, texture lists, inside_vector,
+ * shared instances, and the messages for broken lists.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "config.h"
+#include "core/strbuf.h"
+#include "scene/scene.h"
+#include "trace/bvh.h"
+#include "trace/intersect.h"
+#include "trace/obj_mesh.h"
+#include "zrcube.h"
+#include "parse_fixture.h"
+
+/* Hits are computed from small whole-number vertices by a few products:
+   1e-9 leaves room for rounding and catches any real mistake. */
+#define EPS 1e-9
+
+static void assert_near(double a, double b) {
+  if (fabs(a - b) > EPS)
+    fail_msg("%.12g != %.12g", a, b);
+}
+
+static const struct zr_mesh *only_mesh(const zr_scene *s) {
+  assert_int_equal(s->n_primitives, 1);
+  assert_int_equal(s->primitives[0]->kind, ZR_OBJ_MESH);
+  return s->primitives[0]->u.mesh.data;
+}
+
+/* A unit square at z = 1 in two triangles. */
+#define SQUARE_MESH2                                                       \
+  "mesh2 {\n"                                                              \
+  "  vertex_vectors { 4, <0,0,1>, <1,0,1>, <1,1,1>, <0,1,1> }\n"           \
+  "  face_indices { 2, <0,1,2>, <0,2,3> }\n"                               \
+  "  pigment { rgb 1 }\n"                                                  \
+  "}\n"
+
+static void test_mesh_mesh2_hit(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f, SQUARE_MESH2);
+  const struct zr_mesh *m = only_mesh(s);
+  assert_int_equal(m->n_vertices, 4);
+  assert_int_equal(m->n_faces, 2);
+  zr_ray ray = {zr_v3(0.25, 0.5, 0), zr_v3(0, 0, 2)};
+  zr_hit hit;
+  assert_true(zr__bvh_nearest(s->bvh, &ray, 0, INFINITY, &hit));
+  assert_near(hit.t, 0.5);
+  assert_near(fabs(hit.normal.z), 1.0);
+  zr_ray miss = {zr_v3(1.5, 0.5, 0), zr_v3(0, 0, 1)};
+  assert_false(zr__bvh_nearest(s->bvh, &miss, 0, INFINITY, &hit));
+}
+
+/* The same vertices written so that the grammar must read some items
+   (an identifier, an expression, a directive between items) give the
+   same mesh as the plain numbers the fast reader takes. */
+static void test_mesh_fast_and_grammar_agree(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f, "#declare One = 1;\n"
+                        "mesh2 {\n"
+                        "  vertex_vectors { 2 + 2, <0,0,1>, <One,0,1>,\n"
+                        "#if (1)\n"
+                        "    <1,1,0.5*2>,\n"
+                        "#end\n"
+                        "    <0,1,1> }\n"
+                        "  face_indices { 2, <0,1,2> <0,2,3> }\n"
+                        "}\n");
+  const struct zr_mesh *m = only_mesh(s);
+  assert_int_equal(m->n_vertices, 4);
+  assert_near(m->vertices[1].x, 1);
+  assert_near(m->vertices[2].z, 1);
+  assert_int_equal(m->n_faces, 2);
+  zr_ray ray = {zr_v3(0.75, 0.5, 0), zr_v3(0, 0, 1)};
+  zr_hit hit;
+  assert_true(zr__bvh_nearest(s->bvh, &ray, 0, INFINITY, &hit));
+  assert_near(hit.t, 1.0);
+}
+
+/* A grid of many triangles: the BVH's nearest crossing must be the one
+   a test of every face finds. */
+static void test_mesh_bvh_matches_brute_force(void **state) {
+  fixture *f = *state;
+  const int n = 40;
+  zr_strbuf b;
+  zr__strbuf_init(&b);
+  zr__strbuf_printf(&b, "mesh2 { vertex_vectors { %d", n * n);
+  for (int j = 0; j < n; j++)
+    for (int i = 0; i < n; i++)
+      zr__strbuf_printf(&b, ", <%d, %g, %d>", i, sin(i * 0.7) * cos(j * 0.3),
+                        j);
+  zr__strbuf_printf(&b, " } face_indices { %d", 2 * (n - 1) * (n - 1));
+  for (int j = 0; j < n - 1; j++)
+    for (int i = 0; i < n - 1; i++) {
+      int a = j * n + i;
+      zr__strbuf_printf(&b, ", <%d,%d,%d>, <%d,%d,%d>", a, a + 1, a + n,
+                        a + 1, a + n + 1, a + n);
+    }
+  zr__strbuf_printf(&b, " } }\n");
+  zr_scene *s = good(f, zr__strbuf_cstr(&b));
+  zr__strbuf_free(&b);
+  const struct zr_mesh *m = only_mesh(s);
+  assert_int_equal(m->n_faces, 2 * (n - 1) * (n - 1));
+  unsigned seed = 12345;
+  for (int k = 0; k < 500; k++) {
+    seed = seed * 1103515245u + 12345u;
+    double x = (seed >> 8) % 10000 / 10000.0 * (n - 1);
+    seed = seed * 1103515245u + 12345u;
+    double z = (seed >> 8) % 10000 / 10000.0 * (n - 1);
+    zr_ray ray = {zr_v3(x, 5, z), zr_v3(0.1, -1, 0.05)};
+    double best = INFINITY;
+    for (size_t face = 0; face < m->n_faces; face++) {
+      zr_vec3 p0 = m->vertices[m->faces[face][0]];
+      zr_vec3 e1 = zr_v3_sub(m->vertices[m->faces[face][1]], p0);
+      zr_vec3 e2 = zr_v3_sub(m->vertices[m->faces[face][2]], p0);
+      zr_vec3 pv = zr_v3_cross(ray.dir, e2);
+      double det = zr_v3_dot(e1, pv);
+      zr_vec3 tv = zr_v3_sub(ray.origin, p0);
+      double u = zr_v3_dot(tv, pv) / det;
+      zr_vec3 qv = zr_v3_cross(tv, e1);
+      double v = zr_v3_dot(ray.dir, qv) / det;
+      double t = zr_v3_dot(e2, qv) / det;
+      if (u >= 0 && v >= 0 && u + v <= 1 && t > 0 && t < best)
+        best = t;
+    }
+    zr_hit hit;
+    bool found = zr__bvh_nearest(s->bvh, &ray, 0, INFINITY, &hit);
+    assert_int_equal(found, best < INFINITY);
+    if (found)
+      assert_near(hit.t, best);
+  }
+}
+
+static void test_mesh_smooth_normals(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f, "smooth_triangle { <0,0,0>, <0,0,-1>, <1,0,0>, "
+                        "<1,0,-1>, <0,1,0>, <0,1,-1> }\n");
+  zr_ray ray = {zr_v3(0.5, 0.25, -1), zr_v3(0, 0, 1)};
+  zr_hit hit;
+  assert_true(zr__bvh_nearest(s->bvh, &ray, 0, INFINITY, &hit));
+  assert_near(hit.t, 1);
+  /* Barycentric weights 0.25, 0.5, 0.25 of the corner normals. */
+  zr_vec3 want = zr_v3_norm(zr_v3(0.5, 0.25, -1));
+  assert_near(hit.normal.x, want.x);
+  assert_near(hit.normal.y, want.y);
+  assert_near(hit.normal.z, want.z);
+  /* mesh { smooth_triangle } gives the same normal. */
+  s = good(f, "mesh { triangle { <5,5,5>, <6,5,5>, <5,6,5> }\n"
+              "  smooth_triangle { <0,0,0>, <0,0,-1>, <1,0,0>, "
+              "<1,0,-1>, <0,1,0>, <0,1,-1> } }\n");
+  assert_true(zr__bvh_nearest(s->bvh, &ray, 0, INFINITY, &hit));
+  assert_near(hit.normal.x, want.x);
+  assert_near(hit.normal.y, want.y);
+}
+
+static void test_mesh_texture_list(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f, "mesh2 {\n"
+                        "  vertex_vectors { 4, <0,0,1>, <1,0,1>, <1,1,1>, "
+                        "<0,1,1> }\n"
+                        "  texture_list { 2, texture { pigment { rgb "
+                        "<1,0,0> } } texture { pigment { rgb <0,0,1> } } }\n"
+                        "  face_indices { 2, <0,1,2>, 1, <0,2,3>, 0 }\n"
+                        "  pigment { rgb <0,1,0> }\n"
+                        "}\n");
+  zr_hit hit;
+  zr_ray right = {zr_v3(0.75, 0.25, 0), zr_v3(0, 0, 1)};
+  assert_true(zr__bvh_nearest(s->bvh, &right, 0, INFINITY, &hit));
+  assert_near(hit.object->texture->pigment->colour.b, 1);
+  zr_ray left = {zr_v3(0.25, 0.75, 0), zr_v3(0, 0, 1)};
+  assert_true(zr__bvh_nearest(s->bvh, &left, 0, INFINITY, &hit));
+  assert_near(hit.object->texture->pigment->colour.r, 1);
+  /* mesh { } triangles with and without their own texture. */
+  s = good(f, "mesh { triangle { <0,0,1>, <1,0,1>, <1,1,1> texture { "
+              "pigment { rgb <1,0,0> } } }\n"
+              "  triangle { <0,0,1>, <1,1,1>, <0,1,1> }\n"
+              "  pigment { rgb <0,1,0> } }\n");
+  assert_true(zr__bvh_nearest(s->bvh, &right, 0, INFINITY, &hit));
+  assert_near(hit.object->texture->pigment->colour.r, 1);
+  assert_true(zr__bvh_nearest(s->bvh, &left, 0, INFINITY, &hit));
+  assert_near(hit.object->texture->pigment->colour.g, 1);
+}
+
+/* A tetrahedron: closed, so inside_vector makes it a solid. */
+#define TETRA                                                              \
+  "  vertex_vectors { 4, <0,0,0>, <1,0,0>, <0,1,0>, <0,0,1> }\n"          \
+  "  face_indices { 4, <0,2,1>, <0,1,3>, <0,3,2>, <1,2,3> }\n"
+
+static void test_mesh_inside_vector(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f, "mesh2 {\n" TETRA "  inside_vector <1, 2, 3>\n}\n");
+  const zr_object *o = s->primitives[0];
+  assert_true(zr__has_inside(o));
+  assert_true(zr__inside(o, zr_v3(0.1, 0.1, 0.1)));
+  assert_false(zr__inside(o, zr_v3(0.5, 0.5, 0.5)));
+  assert_false(zr__inside(o, zr_v3(-0.1, 0.1, 0.1)));
+  s = good(f, "mesh2 {\n" TETRA "}\n");
+  o = s->primitives[0];
+  assert_false(zr__has_inside(o));
+  assert_false(zr__inside(o, zr_v3(0.1, 0.1, 0.1)));
+}
+
+/* object { M translate } copies refer to the same triangles. */
+static void test_mesh_instances_share(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f, "#declare M = " SQUARE_MESH2
+                        "object { M }\n"
+                        "object { M translate <5, 0, 0> }\n"
+                        "object { M translate <0, 0, 3> }\n");
+  assert_int_equal(s->n_primitives, 3);
+  for (int i = 1; i < 3; i++)
+    assert_ptr_equal(s->primitives[i]->u.mesh.data,
+                     s->primitives[0]->u.mesh.data);
+  zr_ray ray = {zr_v3(5.25, 0.5, -1), zr_v3(0, 0, 1)};
+  zr_hit hit;
+  assert_true(zr__bvh_nearest(s->bvh, &ray, 0, INFINITY, &hit));
+  assert_near(hit.t, 2);
+  zr_ray behind = {zr_v3(0.25, 0.5, 2), zr_v3(0, 0, 1)};
+  assert_true(zr__bvh_nearest(s->bvh, &behind, 0, INFINITY, &hit));
+  assert_near(hit.t, 2);
+}
+
+static void test_mesh_bad_lists(void **state) {
+  fixture *f = *state;
+  bad(f, "mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0> }\n"
+         "  face_indices { 1, <0,1,2> } }\n",
+      ZR_ESCENE, "vertex_vectors: 2 items given, 3 announced", NULL);
+  bad(f, "mesh2 { vertex_vectors { 1, <0,0,0>, <1,0,0> } }\n", ZR_ESCENE,
+      "vertex_vectors: more items than the 1 announced", NULL);
+  bad(f, "mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> }\n"
+         "  face_indices { 1, <0,1,3> } }\n",
+      ZR_ESCENE,
+      "mesh2 face 0 refers to a vertex, normal, uv or texture that is not "
+      "in its lists",
+      NULL);
+  bad(f, "mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> }\n"
+         "  face_indices { 1, <0,-1,2> } }\n",
+      ZR_ESCENE, "face_indices: -1 is not an index", NULL);
+  bad(f, "mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> }\n"
+         "  texture_list { 1, texture { pigment { rgb 1 } } }\n"
+         "  face_indices { 1, <0,1,2>, 0, 0 } }\n",
+      ZR_ESCENE, "face_indices: a face has 1 or 3 texture indices, not 2",
+      NULL);
+  bad(f, "mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> } }\n",
+      ZR_ESYNTAX, "a mesh2 needs vertex_vectors and face_indices", NULL);
+  bad(f, "mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> }\n"
+         "  vertex_vectors { 0 } }\n",
+      ZR_ESYNTAX, "mesh2 has two vertex_vectors", NULL);
+  bad(f, "mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> }\n"
+         "  face_indices { 1, <0,1,2> } inside_vector 0 }\n",
+      ZR_ESCENE, "the inside_vector is zero", NULL);
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test_setup_teardown(test_mesh_mesh2_hit, setup, teardown),
+      cmocka_unit_test_setup_teardown(test_mesh_fast_and_grammar_agree,
+                                      setup, teardown),
+      cmocka_unit_test_setup_teardown(test_mesh_bvh_matches_brute_force,
+                                      setup, teardown),
+      cmocka_unit_test_setup_teardown(test_mesh_smooth_normals, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_mesh_texture_list, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_mesh_inside_vector, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_mesh_instances_share, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_mesh_bad_lists, setup, teardown),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}

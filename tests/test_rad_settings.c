@@ -1,0 +1,275 @@
+/*
+ * test_rad_settings.c - the radiosity settings of a scene (issue 4):
+ * global_settings { radiosity { } } read and checked with exact
+ * messages, its values reaching zr_radiosity_params, the command line
+ * overriding them (bin/options.c), an object's radiosity keywords, and
+ * finish { energy P } emitting P in all.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "options.h"
+#include "parse_fixture.h"
+#include "radiosity/radiosity.h"
+#include "scene/scene.h"
+#include "zrcube.h"
+
+/* A closed box seen from inside, its own emitter: small and quick. */
+#define BOX "box { <-1, -1, -1>, <1, 1, 1> pigment { rgb 1 } "
+
+static void test_rad_settings_block_turns_radiosity_on(void **state) {
+  fixture *f = *state;
+  zr_scene_info info;
+  zr_scene_get_info(good(f, BOX "}"), &info);
+  assert_int_equal(info.has_radiosity, 0);
+  zr_scene_get_info(good(f, "global_settings { radiosity { } }" BOX "}"),
+                    &info);
+  assert_int_equal(info.has_radiosity, 1);
+  assert_int_equal(f->diag.warnings, 0); /* nothing to ignore */
+  /* No zRcube item given: the library's defaults. */
+  zr_radiosity_params p, d;
+  zr_radiosity_params_init(&p, f->scene);
+  zr_radiosity_params_init(&d, NULL);
+  assert_memory_equal(&p, &d, sizeof p);
+}
+
+static void test_rad_settings_reach_the_params(void **state) {
+  fixture *f = *state;
+  good(f, "global_settings { radiosity {\n"
+          "  bf_bound 0.003 minimum_area 0.01 visibility_count 3\n"
+          "  max_iterations 50 residual_bound 1e-5 brightness 0.5\n"
+          "} }" BOX "}");
+  zr_radiosity_params p;
+  zr_radiosity_params_init(&p, f->scene);
+  assert_true(p.bf_eps == 0.003);
+  assert_true(p.area_eps == 0.01);
+  assert_int_equal(p.visibility_rays, 3);
+  assert_int_equal(p.max_iterations, 50);
+  assert_true(p.residual == 1e-5);
+  assert_true(p.brightness == 0.5);
+  assert_int_equal(f->diag.warnings, 0);
+}
+
+/* The command line wins where it speaks, the scene elsewhere. */
+static void test_rad_settings_command_line_overrides(void **state) {
+  fixture *f = *state;
+  good(f, "global_settings { radiosity { bf_bound 0.003 "
+          "visibility_count 3 brightness 2 } }" BOX "}");
+  zr_render_params rp;
+  zr_render_params_init(&rp);
+  zr_cli_options o;
+  zr__cli_init(&o, &rp);
+  char arg0[] = "zrcube", arg1[] = "--bf-eps=0.02", arg2[] = "t.pov";
+  char *argv[] = {arg0, arg1, arg2, NULL};
+  char err[512] = "";
+  assert_int_equal(zr__cli_parse(&o, 3, argv, err, sizeof err), 0);
+  zr_radiosity_params p;
+  zr__cli_radiosity_params(&o, f->scene, &p);
+  assert_true(p.bf_eps == 0.02);      /* the command line's */
+  assert_int_equal(p.visibility_rays, 3); /* the scene's */
+  assert_true(p.brightness == 2.0);
+  assert_true(p.area_eps == 1e-4);    /* neither: the default */
+  assert_int_equal(p.one_sided_emission, 1); /* the CLI's default */
+  zr__cli_free(&o);
+}
+
+/* POV-Ray's items are read, and one warning per block names them;
+   recursion_limit gets its own. */
+static void test_rad_settings_pov_items_warn(void **state) {
+  fixture *f = *state;
+  good(f, "global_settings { radiosity {\n"
+          "  pretrace_start 0.08 pretrace_end 0.04 count 35, 1000\n"
+          "  nearest_count 5, 3 error_bound 1.8 recursion_limit 2\n"
+          "  low_error_factor 0.5 gray_threshold 0 minimum_reuse 0.015\n"
+          "  maximum_reuse 0.2 adc_bailout 0.01 always_sample off\n"
+          "  max_sample -1 media on normal off subsurface off\n"
+          "} }" BOX "}");
+  assert_int_equal(f->diag.warnings, 2);
+  assert_non_null(strstr(
+      f->diag.warning,
+      "t.pov:7:1: warning: radiosity: adc_bailout, always_sample, count, "
+      "error_bound, gray_threshold, low_error_factor, max_sample, "
+      "maximum_reuse, minimum_reuse, nearest_count, pretrace_start, "
+      "pretrace_end, media, normal, subsurface ignored: they tune "
+      "POV-Ray's irradiance cache, and zRcube's hierarchical radiosity "
+      "has its own settings (bf_bound, minimum_area, visibility_count, "
+      "max_iterations, residual_bound)"));
+  good(f, "global_settings { radiosity { recursion_limit 3 } }" BOX "}");
+  assert_int_equal(f->diag.warnings, 1);
+  assert_non_null(strstr(f->diag.warning,
+                         "radiosity: recursion_limit is ignored; zRcube "
+                         "carries light over every bounce until "
+                         "residual_bound is met"));
+  good(f, "global_settings { radiosity { save_file \"a.rad\" } }" BOX "}");
+  assert_non_null(strstr(f->diag.warning,
+                         "radiosity: save_file is ignored; zRcube saves "
+                         "and loads its solution with --radiosity-save "
+                         "and --radiosity-load"));
+}
+
+static void test_rad_settings_bad_values(void **state) {
+  fixture *f = *state;
+  static const struct {
+    const char *item, *message;
+  } cases[] = {
+      {"bf_bound 0", "radiosity: bf_bound must be a number > 0 (a "
+                     "fraction of the scene's emitted power)"},
+      {"minimum_area 1", "radiosity: minimum_area must be between 0 and 1 "
+                         "(a fraction of the scene's surface area)"},
+      {"visibility_count 2.5",
+       "radiosity: visibility_count must be a whole number from 1 to 16"},
+      {"visibility_count 17",
+       "radiosity: visibility_count must be a whole number from 1 to 16"},
+      {"max_iterations 0", "radiosity: max_iterations must be a whole "
+                           "number from 1 to 100000000"},
+      {"residual_bound -1", "radiosity: residual_bound must be a number > "
+                            "0 (a fraction of the scene's emitted power)"},
+      {"brightness -0.5", "radiosity: brightness must be a number >= 0"},
+      {"brightness 1, 2", "radiosity: brightness takes one value"},
+      {"count }", "radiosity: count needs a value"},
+      {"count 0", "radiosity: count must be a whole number from 1 to "
+                  "1000000000"},
+      {"recursion_limit 1.5", "radiosity: recursion_limit must be a whole "
+                              "number from 1 to 1000000000"},
+  };
+  for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+    char text[256];
+    snprintf(text, sizeof text,
+             "global_settings { radiosity { %s %s" BOX "}", cases[i].item,
+             strchr(cases[i].item, '}') ? "}" : "} }");
+    bad(f, text, strstr(cases[i].message, "takes one") ||
+                         strstr(cases[i].message, "needs a")
+                     ? ZR_ESYNTAX
+                     : ZR_ESCENE,
+        cases[i].message, NULL);
+  }
+  bad(f, BOX "finish { energy -1 } }", ZR_ESCENE,
+      "energy must be a power >= 0 in every channel", NULL);
+  bad(f, BOX "radiosity { importance 0 } }", ZR_ESCENE,
+      "importance must be greater than 0 and at most 1", NULL);
+}
+
+/* An object's radiosity { importance } and no_radiosity: one warning
+   each per parse, no effect. */
+static void test_rad_settings_object_keywords_warn_once(void **state) {
+  fixture *f = *state;
+  good(f, BOX "radiosity { importance 0.5 } }\n"
+              "sphere { 0, 1 radiosity { importance 1 } no_radiosity }\n"
+              "sphere { 0, 2 no_radiosity }");
+  assert_int_equal(f->diag.warnings, 2);
+  assert_non_null(strstr(f->diag.warning,
+                         "t.pov:2:42: warning: no_radiosity is ignored "
+                         "(warned once): in zRcube's radiosity every "
+                         "surface takes part"));
+}
+
+/* finish { energy P }: the object emits P in all, whatever its size
+   (the closed box's inner and outer sides with two-sided emission),
+   per channel.  Emitted power is summed in doubles over six faces:
+   1e-12 relative. */
+static void test_rad_settings_energy_is_total_power(void **state) {
+  fixture *f = *state;
+  static const char *const scenes[] = {
+      "box { 0, <1, 2, 3> pigment { rgb 1 } finish { diffuse 0.5 "
+      "energy <12, 6, 3> } }",
+      "box { 0, <10, 20, 30> pigment { rgb 1 } finish { diffuse 0.5 "
+      "energy <12, 6, 3> } }",
+  };
+  for (int one_sided = 0; one_sided < 2; one_sided++)
+    for (int i = 0; i < 2; i++) {
+      good(f, scenes[i]);
+      zr_radiosity_params p;
+      zr_radiosity_params_init(&p, f->scene);
+      p.one_sided_emission = one_sided;
+      p.refine_rounds = 0;
+      zr_radiosity *rad = NULL;
+      assert_int_equal(zr_radiosity_solve(f->ctx, f->scene, &p, &rad),
+                       ZR_OK);
+      zr_radiosity_stats st;
+      zr_radiosity_get_stats(rad, &st);
+      /* The mean of the channels, (12 + 6 + 3) / 3. */
+      assert_true(fabs(st.emitted_power - 7.0) <= 7.0 * 1e-12);
+      zr_radiosity_free(rad);
+    }
+}
+
+/* brightness scales the reflected light where a ray reads it, not the
+   emission: in a furnace (emission e, reflectance rho) the radiance is
+   (e + brightness (B - e)) / pi.  1e-12: the same solution read twice. */
+static void test_rad_settings_brightness_scales_reflection(void **state) {
+  fixture *f = *state;
+  const char *text = BOX "finish { diffuse 0.5 emission 0.2 } }";
+  zr_rgb l[2];
+  double scale[2] = {1.0, 0.25};
+  for (int k = 0; k < 2; k++) {
+    good(f, text);
+    zr_radiosity_params p;
+    zr_radiosity_params_init(&p, f->scene);
+    p.bf_eps = 1e-2;
+    p.area_eps = 1e-2;
+    p.brightness = scale[k];
+    zr_radiosity *rad = NULL;
+    assert_int_equal(zr_radiosity_solve(f->ctx, f->scene, &p, &rad), ZR_OK);
+    const zr_scene *s = f->scene;
+    assert_true(zr__radiosity_radiance(rad, s->primitives[0],
+                                       zr_v3(0.2, 0.1, 1), zr_v3(0, 0, 1),
+                                       &l[k]));
+    zr_radiosity_free(rad);
+  }
+  double e = 0.2; /* emission * pigment, as radiance */
+  assert_true(l[0].r > 0.3); /* about 0.4 */
+  assert_true(fabs(l[1].r - (e + 0.25 * (l[0].r - e))) <= 1e-12);
+}
+
+/* Settings that would give NaN never reach the solver: the library's
+   own check names them. */
+static void test_rad_settings_nan_params_refused(void **state) {
+  fixture *f = *state;
+  good(f, BOX "finish { emission 1 } }");
+  zr_radiosity_params p;
+  zr_radiosity_params_init(&p, f->scene);
+  p.brightness = NAN;
+  zr_radiosity *rad = NULL;
+  assert_int_equal(zr_radiosity_solve(f->ctx, f->scene, &p, &rad),
+                   ZR_EINVAL);
+  assert_null(rad);
+  assert_string_equal(f->diag.message,
+                      "radiosity: brightness must be a finite number >= 0");
+  zr_radiosity_params_init(&p, f->scene);
+  p.bf_eps = NAN;
+  assert_int_equal(zr_radiosity_solve(f->ctx, f->scene, &p, &rad),
+                   ZR_EINVAL);
+  assert_string_equal(f->diag.message,
+                      "radiosity: bf_eps must be a finite number >= 0");
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test_setup_teardown(
+          test_rad_settings_block_turns_radiosity_on, setup, teardown),
+      cmocka_unit_test_setup_teardown(test_rad_settings_reach_the_params,
+                                      setup, teardown),
+      cmocka_unit_test_setup_teardown(
+          test_rad_settings_command_line_overrides, setup, teardown),
+      cmocka_unit_test_setup_teardown(test_rad_settings_pov_items_warn,
+                                      setup, teardown),
+      cmocka_unit_test_setup_teardown(test_rad_settings_bad_values, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(
+          test_rad_settings_object_keywords_warn_once, setup, teardown),
+      cmocka_unit_test_setup_teardown(
+          test_rad_settings_energy_is_total_power, setup, teardown),
+      cmocka_unit_test_setup_teardown(
+          test_rad_settings_brightness_scales_reflection, setup, teardown),
+      cmocka_unit_test_setup_teardown(test_rad_settings_nan_params_refused,
+                                      setup, teardown),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,610 @@
+/*
+ * test_shapes.c - the torus, the polygon and the superellipsoid, from
+ * scene text through the parser to the tracer's crossings, normals,
+ * inside tests and bounds (lib/trace/obj_torus.c, obj_polygon.c,
+ * obj_superellipsoid.c, obj_prism.c, obj_lathe.c, obj_blob.c,
+ * obj_sor.c, lib/sdl/build_shape.c), and the polynomial root
+ * finder they share (lib/trace/roots.c).
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <string.h>
+
+#include "config.h"
+#include "scene/scene.h"
+#include "trace/intersect.h"
+#include "trace/obj_shapes.h"
+#include "trace/roots.h"
+#include "zrcube.h"
+#include "parse_fixture.h"
+
+static void assert_near(double a, double b, double tol) {
+  if (!(fabs(a - b) <= tol))
+    fail_msg("%.17g differs from %.17g by more than %g", a, b, tol);
+}
+
+static void assert_vec(zr_vec3 v, double x, double y, double z,
+                       double tol) {
+  assert_near(v.x, x, tol);
+  assert_near(v.y, y, tol);
+  assert_near(v.z, z, tol);
+}
+
+/* The coefficients (c[i] of x^i) of the monic polynomial with these
+   roots. */
+static void from_roots(const double *r, int n, double *c) {
+  c[0] = 1.0;
+  for (int i = 1; i <= n; i++)
+    c[i] = 0.0;
+  for (int k = 0; k < n; k++) {
+    for (int i = k + 1; i > 0; i--)
+      c[i] = c[i - 1] - r[k] * c[i];
+    c[0] = -r[k] * c[0];
+  }
+}
+
+/* Simple roots 1e-3 apart: a root's error is about the rounding of p
+   (1e-15 relative to its terms) over |p'| there (about 2e-3 here), so
+   1e-10 leaves a wide margin. */
+static void test_shapes_roots_clustered_quartic(void **state) {
+  (void)state;
+  double r[4] = {1.0, 1.001, 2.0, 3.0}, c[5], out[4];
+  from_roots(r, 4, c);
+  assert_int_equal(zr__poly_roots(c, 4, -10.0, 10.0, out), 4);
+  for (int i = 0; i < 4; i++)
+    assert_near(out[i], r[i], 1e-10);
+  /* Only the interval's roots. */
+  assert_int_equal(zr__poly_roots(c, 4, 1.0005, 2.5, out), 2);
+  assert_near(out[0], 1.001, 1e-10);
+  assert_near(out[1], 2.0, 1e-10);
+}
+
+/* A ray that passes near a surface without touching it gives a
+   polynomial with a close pair of complex roots: no crossing.  A triple
+   root changes sign and is one. */
+static void test_shapes_roots_multiplicity(void **state) {
+  (void)state;
+  /* ((x - 1)^2 + 1e-6) (x - 2) (x - 3). */
+  double r[2] = {2.0, 3.0}, c[7], out[6], q[3];
+  from_roots(r, 2, q);
+  double near[3] = {1.0 + 1e-6, -2.0, 1.0};
+  for (int i = 0; i <= 4; i++)
+    c[i] = 0.0;
+  for (int i = 0; i <= 2; i++)
+    for (int j = 0; j <= 2; j++)
+      c[i + j] += near[i] * q[j];
+  assert_int_equal(zr__poly_roots(c, 4, -10.0, 10.0, out), 2);
+  assert_near(out[0], 2.0, 1e-12);
+  assert_near(out[1], 3.0, 1e-12);
+  double t[3] = {0.5, 0.5, 0.5};
+  from_roots(t, 3, c);
+  assert_int_equal(zr__poly_roots(c, 3, -1.0, 1.0, out), 1);
+  /* A triple root is found to the cube root of the rounding. */
+  assert_near(out[0], 0.5, 1e-5);
+  double six[6] = {-2.5, -1.0, 0.25, 0.5, 4.0, 7.0};
+  from_roots(six, 6, c);
+  assert_int_equal(zr__poly_roots(c, 6, -3.0, 8.0, out), 6);
+  for (int i = 0; i < 6; i++)
+    assert_near(out[i], six[i], 1e-9);
+  /* No real roots: x^4 + 1. */
+  double none[5] = {1, 0, 0, 0, 1};
+  assert_int_equal(zr__poly_roots(none, 4, -10.0, 10.0, out), 0);
+}
+
+/* The only primitive of a scene made of one object. */
+static const zr_object *only(fixture *f, const char *text) {
+  zr_scene *s = good(f, text);
+  assert_int_equal(s->n_primitives, 1);
+  return s->primitives[0];
+}
+
+static int cross(const zr_object *obj, zr_vec3 o, zr_vec3 d, double tmin,
+                 zr_hit h[ZR_MAX_CROSSINGS]) {
+  zr_ray r = {o, d};
+  return zr__intersect(obj, &r, tmin, INFINITY, h);
+}
+
+/* Torus crossings are roots of well-scaled quartics with simple roots:
+   1e-9 covers their refinement, which stops within a few ulps. */
+#define TORUS_EPS 1e-9
+
+static void test_shapes_torus_crossings_and_normals(void **state) {
+  fixture *f = *state;
+  const zr_object *o = only(f, "torus { 2, 0.5 sturm }\n");
+  assert_int_equal(o->kind, ZR_OBJ_TORUS);
+  assert_true(o->u.torus.sturm);
+  zr_hit h[2];
+  /* Along the x axis through the hole: rim, hole, rim. */
+  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), 0.0, h), 2);
+  assert_near(h[0].t, 2.5, TORUS_EPS);
+  assert_near(h[1].t, 3.5, TORUS_EPS);
+  assert_vec(h[0].normal, -1, 0, 0, TORUS_EPS);
+  assert_vec(h[1].normal, 1, 0, 0, TORUS_EPS);
+  /* From inside the hole the next two are the far rim. */
+  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), 4.0, h), 2);
+  assert_near(h[0].t, 6.5, TORUS_EPS);
+  assert_near(h[1].t, 7.5, TORUS_EPS);
+  /* Down through the rim at x = 2. */
+  assert_int_equal(cross(o, zr_v3(2, 5, 0), zr_v3(0, -2, 0), 0.0, h), 2);
+  assert_near(h[0].t, 2.25, TORUS_EPS);
+  assert_near(h[1].t, 2.75, TORUS_EPS);
+  assert_vec(h[0].normal, 0, 1, 0, TORUS_EPS);
+  assert_vec(h[1].normal, 0, -1, 0, TORUS_EPS);
+  /* Down the axis: through the hole. */
+  assert_int_equal(cross(o, zr_v3(0, 5, 0), zr_v3(0, -1, 0), 0.0, h), 0);
+  assert_true(zr__inside(o, zr_v3(2, 0.4, 0)));
+  assert_true(zr__inside(o, zr_v3(0, 0.2, -1.7)));
+  assert_false(zr__inside(o, zr_v3(0, 0, 0)));
+  assert_false(zr__inside(o, zr_v3(2, 0.6, 0)));
+  zr_vec3 lo, hi;
+  assert_true(zr__object_bounds(o, &lo, &hi));
+  assert_vec(lo, -2.5, -0.5, -2.5, 1e-6);
+  assert_vec(hi, 2.5, 0.5, 2.5, 1e-6);
+}
+
+/* A thin ring seen edge on: the roots 2e-3 apart must stay apart. */
+static void test_shapes_torus_thin_and_transformed(void **state) {
+  fixture *f = *state;
+  const zr_object *o =
+      only(f, "torus { 1, 0.001 rotate x*90 translate <0, 0, 3> }\n");
+  zr_hit h[2];
+  assert_int_equal(cross(o, zr_v3(-5, 0, 3), zr_v3(1, 0, 0), 0.0, h), 2);
+  assert_near(h[0].t, 3.999, TORUS_EPS);
+  assert_near(h[1].t, 4.001, TORUS_EPS);
+  /* Rotated about x, the ring lies in the x-y plane at z = 3. */
+  assert_int_equal(cross(o, zr_v3(0, 1, -5), zr_v3(0, 0, 1), 0.0, h), 2);
+  assert_near(h[0].t, 8.0 - 0.001, 1e-6);
+  assert_vec(h[0].normal, 0, 0, -1, 1e-6);
+  assert_true(zr__inside(o, zr_v3(0, -1, 3)));
+}
+
+static void test_shapes_torus_bad_minor(void **state) {
+  fixture *f = *state;
+  bad(f, "torus { 1, 0 }\n", ZR_ESCENE, "the torus's minor radius is zero",
+      NULL);
+  bad(f, "sphere { 0, 1 sturm }\n", ZR_ESYNTAX,
+      "'sturm' is for tori and the other polynomial shapes", NULL);
+}
+
+/* The letter P of the manual: an outline and a rectangular hole. */
+static void test_shapes_polygon_even_odd(void **state) {
+  fixture *f = *state;
+  const zr_object *o =
+      only(f, "polygon { 12, <0, 0>, <0, 6>, <4, 6>, <4, 3>, <1, 3>,\n"
+              "  <1,0>, <0, 0>, <1, 4>, <1, 5>, <3, 5>, <3, 4>, <1, 4>\n"
+              "  translate z }\n");
+  assert_int_equal(o->kind, ZR_OBJ_POLYGON);
+  assert_int_equal(f->diag.warnings, 0);
+  zr_hit h[2];
+  zr_vec3 dz = zr_v3(0, 0, 1);
+  assert_int_equal(cross(o, zr_v3(0.5, 1, -5), dz, 0.0, h), 1);
+  /* A plane meets the ray at a quotient of exact numbers. */
+  assert_near(h[0].t, 6.0, 1e-12);
+  assert_near(fabs(h[0].normal.z), 1.0, 1e-12);
+  assert_int_equal(cross(o, zr_v3(2, 4.5, -5), dz, 0.0, h), 0); /* hole */
+  assert_int_equal(cross(o, zr_v3(3.5, 4.5, -5), dz, 0.0, h), 1);
+  assert_int_equal(cross(o, zr_v3(2, 1.5, -5), dz, 0.0, h), 0);
+  assert_int_equal(cross(o, zr_v3(-0.5, 1, -5), dz, 0.0, h), 0);
+  assert_false(zr__inside(o, zr_v3(0.5, 1, 1)));
+  assert_false(zr__has_inside(o));
+  zr_vec3 lo, hi;
+  assert_true(zr__object_bounds(o, &lo, &hi));
+  assert_vec(lo, 0, 0, 1, 1e-6);
+  assert_vec(hi, 4, 6, 1, 1e-6);
+}
+
+static void test_shapes_polygon_tilted_and_open(void **state) {
+  fixture *f = *state;
+  /* A square in the plane x + y = 1, left open: closed with a warning
+     worded as POV-Ray's. */
+  const zr_object *o =
+      only(f, "polygon { 4, <1, 0, 0> <0, 1, 0> <0, 1, 1> <1, 0, 1> }\n");
+  assert_int_equal(f->diag.warnings, 1);
+  assert_non_null(strstr(f->diag.warning, "Polygon not closed. Closing it."));
+  zr_hit h[2];
+  assert_int_equal(
+      cross(o, zr_v3(0, 0, 0.5), zr_v3(1, 1, 0), 0.0, h), 1);
+  assert_near(h[0].t, 0.5, 1e-12);
+  double s = sqrt(0.5);
+  assert_near(fabs(h[0].normal.x), s, 1e-12);
+  assert_near(h[0].normal.x, h[0].normal.y, 1e-12);
+  assert_int_equal(
+      cross(o, zr_v3(0, 0, 1.5), zr_v3(1, 1, 0), 0.0, h), 0);
+}
+
+static void test_shapes_polygon_bad_counts(void **state) {
+  fixture *f = *state;
+  bad(f, "polygon { 2, <0, 0>, <1, 0> }\n", ZR_ESCENE,
+      "a polygon needs at least 3 points, not 2", NULL);
+  bad(f, "polygon { 3, <0, 0>, <1, 0>, <0, 1>, <0, 0> }\n", ZR_ESCENE,
+      "the polygon has more points than the 3 it announced", NULL);
+  bad(f, "polygon { 4, <0, 0>, <1, 0>, <0, 1> }\n", ZR_ESCENE,
+      "the polygon has 3 points, not the 4 it announced", NULL);
+  bad(f, "polygon { 3, <0, 0>, <1, 1>, <2, 2> }\n", ZR_ESCENE,
+      "the polygon's points are all on one line", NULL);
+}
+
+/* Superellipsoid crossings come from bisection down to 1e-15 relative
+   of a function with slope about 1: 1e-9 is far above that error and
+   far below any mistake in the shape. */
+#define SE_EPS 1e-9
+
+static void test_shapes_superellipsoid_sphere_and_box(void **state) {
+  fixture *f = *state;
+  /* e = n = 1 is the unit sphere. */
+  const zr_object *o = only(f, "superellipsoid { <1, 1> }\n");
+  assert_int_equal(o->kind, ZR_OBJ_SUPERELLIPSOID);
+  zr_hit h[2];
+  assert_int_equal(cross(o, zr_v3(-5, 0.6, 0), zr_v3(1, 0, 0), 0.0, h), 2);
+  assert_near(h[0].t, 4.2, SE_EPS);
+  assert_near(h[1].t, 5.8, SE_EPS);
+  assert_vec(h[0].normal, -0.8, 0.6, 0, 1e-7);
+  assert_vec(h[1].normal, 0.8, 0.6, 0, 1e-7);
+  /* A rounded box: flat faces at 1, corners on the diagonal where
+     3 s^(2/e) = 1 when e = n. */
+  o = only(f, "superellipsoid { <0.2, 0.2> scale 2 }\n");
+  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), 0.0, h), 2);
+  assert_near(h[0].t, 3.0, SE_EPS);
+  assert_near(h[1].t, 7.0, SE_EPS);
+  assert_vec(h[0].normal, -1, 0, 0, 1e-7);
+  double corner = 2.0 * pow(3.0, -0.1);
+  assert_int_equal(cross(o, zr_v3(-5, -5, -5), zr_v3(1, 1, 1), 0.0, h), 2);
+  assert_near(h[0].t, 5.0 - corner, SE_EPS);
+  assert_near(h[1].t, 5.0 + corner, SE_EPS);
+  double k = 1.0 / sqrt(3.0);
+  assert_vec(h[0].normal, -k, -k, -k, 1e-7);
+  assert_true(zr__inside(o, zr_v3(1.9, 1.5, -1.5)));
+  assert_false(zr__inside(o, zr_v3(1.9, 1.9, 1.9)));
+  zr_vec3 lo, hi;
+  assert_true(zr__object_bounds(o, &lo, &hi));
+  assert_vec(hi, 2, 2, 2, 1e-6);
+}
+
+/* e, n above 2 pinch the shape into a star, which a ray can cross four
+   times; a ray leaving one arm finds the next. */
+static void test_shapes_superellipsoid_star(void **state) {
+  fixture *f = *state;
+  const zr_object *o = only(f, "superellipsoid { <3, 3> }\n");
+  zr_hit h[2];
+  /* Along the x axis the surface is at x = +-1 whatever e and n are. */
+  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), 0.0, h), 2);
+  assert_near(h[0].t, 4.0, SE_EPS);
+  assert_near(h[1].t, 6.0, SE_EPS);
+  /* e = n = 3 gives |x|^(2/3) + |y|^(2/3) + |z|^(2/3) < 1, a star with
+     six arms.  The line x + y = 0.8 in z = 0 passes through the +x arm
+     and then the +y arm: four crossings, symmetric about x = y = 0.4,
+     which it reaches at t = 5.4. */
+  zr_vec3 from = zr_v3(5.8, -5, 0), along = zr_v3(-1, 1, 0);
+  assert_int_equal(cross(o, from, along, 0.0, h), 2);
+  double first = h[0].t, second = h[1].t;
+  assert_true(second < 5.4);
+  assert_int_equal(cross(o, from, along, second + 1e-9, h), 2);
+  assert_near(h[0].t, 10.8 - second, SE_EPS);
+  assert_near(h[1].t, 10.8 - first, SE_EPS);
+}
+
+static void test_shapes_superellipsoid_clamped(void **state) {
+  fixture *f = *state;
+  const zr_object *o = only(f, "superellipsoid { <0, 1> }\n");
+  assert_int_equal(f->diag.warnings, 1);
+  assert_non_null(strstr(f->diag.warning,
+                         "superellipsoid values below 0.001 are taken as "
+                         "0.001"));
+  assert_near(o->u.superellipsoid.e, 1e-3, 0.0);
+  zr_hit h[2];
+  assert_int_equal(cross(o, zr_v3(-5, 0.5, 0.5), zr_v3(1, 0, 0), 0.0, h),
+                   2);
+  /* With e -> 0 the shape is max(|x|, |y|)^2 + z^2 < 1 (for n = 1): a
+     square in x, y swept round in z.  At y = z = 0.5 its face is at
+     x = -sqrt(0.75); (1 + 1^2000)^0.001 - 1 = 7e-4 is the most e = 0.001
+     can differ from that in F, where y = |x|, which is not the case
+     here: 1e-9 holds. */
+  assert_near(h[0].t, 5.0 - sqrt(0.75), SE_EPS);
+}
+
+
+/* The manual's frame: two nested squares, the hole between them. */
+static void test_shapes_prism_linear_frame(void **state) {
+  fixture *f = *state;
+  const zr_object *o =
+      only(f, "prism { linear_spline 0, 1, 10,\n"
+              "  <0,0>, <6,0>, <6,8>, <0,8>, <0,0>,\n"
+              "  <1,1>, <5,1>, <5,7>, <1,7>, <1,1> }\n");
+  assert_int_equal(o->kind, ZR_OBJ_PRISM);
+  assert_int_equal(o->u.prism.n_seg, 8);
+  zr_hit h[2];
+  /* Along x at z = 4: wall at 0, inner walls at 1 and 5, wall at 6.
+     Lines meet lines at quotients of small integers: 1e-12. */
+  assert_int_equal(cross(o, zr_v3(-5, 0.5, 4), zr_v3(1, 0, 0), 0.0, h), 2);
+  assert_near(h[0].t, 5.0, 1e-12);
+  assert_near(h[1].t, 6.0, 1e-12);
+  assert_vec(h[0].normal, -1, 0, 0, 1e-12);
+  assert_vec(h[1].normal, 1, 0, 0, 1e-12);
+  assert_int_equal(cross(o, zr_v3(-5, 0.5, 4), zr_v3(1, 0, 0), 6.5, h), 2);
+  assert_near(h[0].t, 10.0, 1e-12);
+  assert_vec(h[0].normal, -1, 0, 0, 1e-12);
+  assert_near(h[1].t, 11.0, 1e-12);
+  /* Down through the rim: the caps; down through the hole: nothing. */
+  assert_int_equal(cross(o, zr_v3(0.5, 5, 4), zr_v3(0, -1, 0), 0.0, h), 2);
+  assert_near(h[0].t, 4.0, 1e-12);
+  assert_vec(h[0].normal, 0, 1, 0, 1e-12);
+  assert_vec(h[1].normal, 0, -1, 0, 1e-12);
+  assert_int_equal(cross(o, zr_v3(3, 5, 4), zr_v3(0, -1, 0), 0.0, h), 0);
+  assert_true(zr__inside(o, zr_v3(0.5, 0.5, 4)));
+  assert_false(zr__inside(o, zr_v3(3, 0.5, 4)));
+  assert_false(zr__inside(o, zr_v3(0.5, 1.5, 4)));
+  zr_vec3 lo, hi;
+  assert_true(zr__object_bounds(o, &lo, &hi));
+  assert_vec(lo, 0, 0, 0, 1e-6);
+  assert_vec(hi, 6, 1, 8, 1e-6);
+}
+
+/* Bezier quarter circles' standard handle 0.5523 make a near circle;
+   conic sweep scales it by y; open drops the caps. */
+static void test_shapes_prism_bezier_conic_open(void **state) {
+  fixture *f = *state;
+  const zr_object *o =
+      only(f, "prism { bezier_spline conic_sweep 0.5, 1, 16,\n"
+              "  <1, 0>, <1, 0.5523>, <0.5523, 1>, <0, 1>,\n"
+              "  <0, 1>, <-0.5523, 1>, <-1, 0.5523>, <-1, 0>,\n"
+              "  <-1, 0>, <-1, -0.5523>, <-0.5523, -1>, <0, -1>,\n"
+              "  <0, -1>, <0.5523, -1>, <1, -0.5523>, <1, 0> open }\n");
+  assert_true(o->u.prism.conic && o->u.prism.open);
+  zr_hit h[2];
+  /* At height 0.8 the curve has radius 0.8: the walls at x = -+0.8,
+     exact at the Bezier's end points (1e-12); the cone's normal leans
+     down, (1, -1, 0) / sqrt 2 on the far side. */
+  assert_int_equal(cross(o, zr_v3(-5, 0.8, 0), zr_v3(1, 0, 0), 0.0, h), 2);
+  assert_near(h[0].t, 4.2, 1e-12);
+  assert_near(h[1].t, 5.8, 1e-12);
+  double k = sqrt(0.5);
+  assert_vec(h[1].normal, k, -k, 0, 1e-9);
+  /* Open: straight down the axis meets nothing. */
+  assert_int_equal(cross(o, zr_v3(0, 5, 0), zr_v3(0, -1, 0), 0.0, h), 0);
+  assert_true(zr__inside(o, zr_v3(0.5, 0.8, 0)));
+  assert_false(zr__inside(o, zr_v3(0.7, 0.6, 0))); /* radius 0.6 there */
+  assert_false(zr__inside(o, zr_v3(0, 0.4, 0)));    /* below the base */
+}
+
+/* The quadratic and cubic splines as measured on POV-Ray: parabolas
+   through three points, Catmull-Rom pieces. */
+static void test_shapes_prism_spline_forms(void **state) {
+  fixture *f = *state;
+  const zr_object *o =
+      only(f, "prism { quadratic_spline 0, 1, 6,\n"
+              "  <-1,-1>, <0,0>, <4,0>, <4,4>, <0,4>, <0,0> }\n");
+  assert_int_equal(o->u.prism.n_seg, 4);
+  /* The first piece: (2.5 s + 1.5 s^2, 0.5 s - 0.5 s^2). */
+  const double *seg = o->u.prism.seg;
+  double want[8] = {0, 2.5, 1.5, 0, 0, 0.5, -0.5, 0};
+  for (int i = 0; i < 8; i++)
+    assert_near(seg[i], want[i], 1e-12);
+  zr_hit h[2];
+  /* Down at x = 1 (s = 1/3): the wall at z = 1/9 from below. */
+  assert_int_equal(cross(o, zr_v3(1, 0.5, -5), zr_v3(0, 0, 1), 0.0, h), 2);
+  assert_near(h[0].t, 5.0 + 1.0 / 9.0, 1e-12);
+  o = only(f, "prism { cubic_spline 0, 1, 7,\n"
+              "  <0,-1>, <0,0>, <4,0>, <4,4>, <0,4>, <0,0>, <4,0> }\n");
+  assert_int_equal(o->u.prism.n_seg, 4);
+  /* From a = (0,0) to b = (4,0), end slopes ta = (2, 0.5) and
+     tb = (2, 2): a + ta s + (3 (b - a) - 2 ta - tb) s^2
+     + (2 (a - b) + ta + tb) s^3. */
+  seg = o->u.prism.seg;
+  double cubic[8] = {0, 2, 6, -4, 0, 0.5, -3, 2.5};
+  for (int i = 0; i < 8; i++)
+    assert_near(seg[i], cubic[i], 1e-12);
+}
+
+static void test_shapes_prism_bad_input(void **state) {
+  fixture *f = *state;
+  bad(f, "prism { 0, 1, 2, <0, 0>, <1, 0> }\n", ZR_ESCENE,
+      "this prism needs at least 3 points, not 2", NULL);
+  bad(f, "prism { 0, 1, 3, <0, 0, 0>, <1, 0, 0>, <0, 0, 1> }\n", ZR_ESCENE,
+      "a prism's points are 2-D vectors <x, z>", NULL);
+  bad(f, "prism { bezier_spline 0, 1, 5, <0,0>, <1,0>, <1,1>, <0,1>,\n"
+         "  <0,0> }\n",
+      ZR_ESCENE, "a bezier_spline prism needs 4 points a piece, not 5 "
+                 "points", NULL);
+  bad(f, "prism { cubic_spline 0, 1, 5, <0,0>, <1,0>, <1,1>, <0,1>,\n"
+         "  <0,0> }\n",
+      ZR_ESCENE, "a sub-prism of this spline is not closed: its first "
+                 "curve point must come again", NULL);
+  good(f, "prism { 0, 1, 3, <0, 0>, <1, 0>, <0, 1> }\n");
+  assert_int_equal(f->diag.warnings, 1);
+  assert_non_null(
+      strstr(f->diag.warning, "Linear prism not closed. Closing it."));
+}
+
+/* The manual's thick tube: radii 2 and 3, height 5. */
+static void test_shapes_lathe_tube(void **state) {
+  fixture *f = *state;
+  const zr_object *o =
+      only(f, "lathe { linear_spline 5, <2, 0>, <3, 0>, <3, 5>, <2, 5>,\n"
+              "  <2, 0> }\n");
+  assert_int_equal(o->kind, ZR_OBJ_LATHE);
+  assert_int_equal(o->u.lathe.n_seg, 4);
+  zr_hit h[2];
+  /* A slanted ray, so the degree-six equation is used: across the
+     wall at x = -3 and -2 on its way.  Roots of a polynomial with small
+     integer coefficients: 1e-9. */
+  zr_vec3 d = zr_v3(1, 0.1, 0);
+  assert_int_equal(cross(o, zr_v3(-5, 1, 0), d, 0.0, h), 2);
+  assert_near(h[0].t, 2.0, 1e-9);
+  assert_near(h[1].t, 3.0, 1e-9);
+  assert_vec(h[0].normal, -1, 0, 0, 1e-9);
+  assert_vec(h[1].normal, 1, 0, 0, 1e-9);
+  assert_int_equal(cross(o, zr_v3(-5, 1, 0), d, 3.5, h), 2);
+  assert_near(h[0].t, 7.0, 1e-9);
+  assert_vec(h[0].normal, -1, 0, 0, 1e-9);
+  assert_near(h[1].t, 8.0, 1e-9);
+  /* Horizontal: the circles at the ray's height. */
+  assert_int_equal(cross(o, zr_v3(0, 2, -5), zr_v3(0, 0, 1), 0.0, h), 2);
+  assert_near(h[0].t, 2.0, 1e-12);
+  assert_near(h[1].t, 3.0, 1e-12);
+  assert_vec(h[0].normal, 0, 0, -1, 1e-9);
+  /* Down into the wall from above: the top ring. */
+  assert_int_equal(cross(o, zr_v3(0, 9, 2.5), zr_v3(0, -1, 0), 0.0, h), 2);
+  assert_near(h[0].t, 4.0, 1e-9);
+  assert_vec(h[0].normal, 0, 1, 0, 1e-9);
+  assert_near(h[1].t, 9.0, 1e-9);
+  assert_true(zr__inside(o, zr_v3(0, 1, 2.5)));
+  assert_true(zr__inside(o, zr_v3(-1.8, 4, 1.8)));
+  assert_false(zr__inside(o, zr_v3(0, 1, 1.5)));
+  assert_false(zr__inside(o, zr_v3(0, 6, 2.5)));
+  zr_vec3 lo, hi;
+  assert_true(zr__object_bounds(o, &lo, &hi));
+  assert_vec(lo, -3, 0, -3, 1e-6);
+  assert_vec(hi, 3, 5, 3, 1e-6);
+}
+
+static void test_shapes_lathe_bad_input(void **state) {
+  fixture *f = *state;
+  bad(f, "lathe { cubic_spline 3, <0, 0>, <1, 0>, <1, 1> }\n", ZR_ESCENE,
+      "this lathe needs at least 4 points, not 3", NULL);
+  bad(f, "lathe { conic_sweep 3, <0, 0>, <1, 0>, <1, 1> }\n", ZR_ESYNTAX,
+      "a lathe takes a spline type, not a sweep", NULL);
+  bad(f, "lathe { 2, <0, 0>, <1, 0>, <1, 1> }\n", ZR_ESCENE,
+      "the lathe has more points than the 2 it announced", NULL);
+  bad(f, "lathe { 2, <0, 0, 0>, <1, 0, 0> }\n", ZR_ESCENE,
+      "a lathe's points are 2-D vectors <r, y>", NULL);
+}
+
+/* One sphere component: the surface is the sphere where
+   s (1 - d^2 / r^2)^2 = threshold. */
+static void test_shapes_blob_sphere_and_cylinder(void **state) {
+  fixture *f = *state;
+  const zr_object *o =
+      only(f, "blob { threshold 0.25 sphere { <0, 0, 0>, 2, strength 1 }\n"
+              "  cylinder { <5, 0, 0>, <5, 4, 0>, 1, 1 } }\n");
+  assert_int_equal(o->kind, ZR_OBJ_BLOB);
+  assert_int_equal(o->u.blob.n_components, 2);
+  /* (1 - d^2 / 4)^2 = 1/4: d^2 = 2.  Quartic roots of a well-scaled
+     field: 1e-9. */
+  double d = sqrt(2.0);
+  zr_hit h[2];
+  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), 0.0, h), 2);
+  assert_near(h[0].t, 5.0 - d, 1e-9);
+  assert_near(h[1].t, 5.0 + d, 1e-9);
+  assert_vec(h[0].normal, -1, 0, 0, 1e-9);
+  /* The cylinder: radius sqrt(1/2) about its axis, round ends. */
+  double c = sqrt(0.5);
+  assert_int_equal(cross(o, zr_v3(5, 2, -5), zr_v3(0, 0, 1), 0.0, h), 2);
+  assert_near(h[0].t, 5.0 - c, 1e-9);
+  assert_vec(h[0].normal, 0, 0, -1, 1e-9);
+  assert_int_equal(cross(o, zr_v3(5, 9, 0), zr_v3(0, -1, 0), 0.0, h), 2);
+  assert_near(h[0].t, 5.0 - c, 1e-9);
+  assert_vec(h[0].normal, 0, 1, 0, 1e-9);
+  assert_near(h[1].t, 9.0 + c, 1e-9);
+  assert_true(zr__inside(o, zr_v3(1, 0, 0)));
+  assert_false(zr__inside(o, zr_v3(1.5, 0, 0)));
+  assert_near(zr__blob_density(o, zr_v3(0, 0, 0)), 1.0, 1e-15);
+  zr_vec3 lo, hi;
+  assert_true(zr__object_bounds(o, &lo, &hi));
+  assert_vec(lo, -2, -2, -2, 1e-6);
+  assert_vec(hi, 6, 5, 2, 1e-6);
+}
+
+/* Two spheres melt into one surface; a negative one dents it; a ray
+   leaving through the middle finds the far side, wherever it starts. */
+static void test_shapes_blob_fields_add(void **state) {
+  fixture *f = *state;
+  const zr_object *o =
+      only(f, "blob { threshold 0.5\n"
+              "  sphere { <-0.5, 0, 0>, 1, 1 }\n"
+              "  sphere { 0, 1, 1 scale <1, 1, 1> translate x * 0.5 }\n"
+              "  component -1, 0.5, <0, 0, -0.7> }\n");
+  zr_hit h[2];
+  /* At the middle both add (1 - 0.25)^2 = 0.5625 each. */
+  assert_true(zr__inside(o, zr_v3(0, 0, 0)));
+  assert_near(zr__blob_density(o, zr_v3(0, 0, 0)), 1.125, 1e-12);
+  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), 0.0, h), 2);
+  double first = h[0].t, second = h[1].t;
+  assert_near(first + second, 10.0, 1e-9); /* symmetric */
+  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), 5.0, h), 1);
+  assert_near(h[0].t, second, 0.0); /* the same t, bit for bit */
+  /* The dent: along z the surface is nearer the centre at -z. */
+  assert_int_equal(cross(o, zr_v3(0, 0, -5), zr_v3(0, 0, 1), 0.0, h), 2);
+  assert_true(5.0 - h[0].t < h[1].t - 5.0);
+  bad(f, "blob { sphere { 0, 1, 1 pigment { rgb 1 } } }\n", ZR_EUNSUPPORTED,
+      "blob components take transformations only; their own textures "
+      "are not supported yet", NULL);
+  bad(f, "blob { threshold 0 sphere { 0, 1, 1 } }\n", ZR_ESCENE,
+      "a blob's threshold must be positive", NULL);
+}
+
+/* Points on a line r = 1 + y / 2 give r^2 = (1 + y/2)^2 exactly: the
+   manual's slopes are then the true ones and the cubic is exact. */
+static void test_shapes_sor_cone(void **state) {
+  fixture *f = *state;
+  const zr_object *o =
+      only(f, "sor { 5, <0.5, -1>, <1, 0>, <1.5, 1>, <2, 2>, <2.5, 3> }\n");
+  assert_int_equal(o->kind, ZR_OBJ_SOR);
+  assert_int_equal(o->u.sor.n_seg, 2);
+  zr_hit h[2];
+  /* At y = 0.5 the radius is 1.25.  Cubic roots: 1e-9. */
+  assert_int_equal(cross(o, zr_v3(-5, 0.5, 0), zr_v3(1, 0, 0), 0.0, h), 2);
+  assert_near(h[0].t, 5.0 - 1.25, 1e-9);
+  assert_near(h[1].t, 5.0 + 1.25, 1e-9);
+  /* The normal of the cone r = 1 + y / 2: (1, -1/2, 0) normalised. */
+  double k = 1.0 / sqrt(1.25);
+  assert_vec(h[1].normal, k, -0.5 * k, 0, 1e-9);
+  /* A slanted ray, through the cubic in t. */
+  assert_int_equal(cross(o, zr_v3(-5, 1.5, 1), zr_v3(1, 0.01, 0), 0.0, h),
+                   2);
+  zr_vec3 p = zr_v3_madd(zr_v3(-5, 1.5, 1), zr_v3(1, 0.01, 0), h[0].t);
+  double r = 1.0 + p.y / 2.0;
+  assert_near(p.x * p.x + p.z * p.z, r * r, 1e-9);
+  /* Down the axis: the caps at y = 2 (radius 2) and y = 0. */
+  assert_int_equal(cross(o, zr_v3(0.5, 5, 0), zr_v3(0, -1, 0), 0.0, h), 2);
+  assert_near(h[0].t, 3.0, 1e-12);
+  assert_vec(h[0].normal, 0, 1, 0, 1e-12);
+  assert_near(h[1].t, 5.0, 1e-12);
+  assert_vec(h[1].normal, 0, -1, 0, 1e-12);
+  assert_true(zr__inside(o, zr_v3(1.2, 1, 0)));
+  assert_false(zr__inside(o, zr_v3(1.6, 1, 0)));
+  assert_false(zr__inside(o, zr_v3(0, 2.5, 0)));
+  zr_vec3 lo, hi;
+  assert_true(zr__object_bounds(o, &lo, &hi));
+  assert_vec(lo, -2, 0, -2, 1e-6);
+  assert_vec(hi, 2, 2, 2, 1e-6);
+  o = only(f, "sor { 5, <0.5, -1>, <1, 0>, <1.5, 1>, <2, 2>, <2.5, 3>\n"
+              "  open }\n");
+  assert_int_equal(cross(o, zr_v3(0.5, 5, 0), zr_v3(0, -1, 0), 0.0, h), 0);
+  bad(f, "sor { 4, <1, 0>, <1, 1>, <1, 0.5>, <1, 2> }\n", ZR_ESCENE,
+      "the heights of a sor's points must increase", NULL);
+  bad(f, "sor { 3, <1, 0>, <1, 1>, <1, 2> }\n", ZR_ESCENE,
+      "a sor needs at least 4 points, not 3", NULL);
+}
+
+#define TEST(fn) cmocka_unit_test_setup_teardown(fn, setup, teardown)
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test(test_shapes_roots_clustered_quartic),
+      cmocka_unit_test(test_shapes_roots_multiplicity),
+      TEST(test_shapes_torus_crossings_and_normals),
+      TEST(test_shapes_torus_thin_and_transformed),
+      TEST(test_shapes_torus_bad_minor),
+      TEST(test_shapes_polygon_even_odd),
+      TEST(test_shapes_polygon_tilted_and_open),
+      TEST(test_shapes_polygon_bad_counts),
+      TEST(test_shapes_superellipsoid_sphere_and_box),
+      TEST(test_shapes_superellipsoid_star),
+      TEST(test_shapes_superellipsoid_clamped),
+      TEST(test_shapes_prism_linear_frame),
+      TEST(test_shapes_prism_bezier_conic_open),
+      TEST(test_shapes_prism_spline_forms),
+      TEST(test_shapes_prism_bad_input),
+      TEST(test_shapes_lathe_tube),
+      TEST(test_shapes_lathe_bad_input),
+      TEST(test_shapes_blob_sphere_and_cylinder),
+      TEST(test_shapes_blob_fields_add),
+      TEST(test_shapes_sor_cone),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}

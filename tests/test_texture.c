@@ -1,0 +1,302 @@
+/*
+ * test_texture.c - maps, layered and patterned textures, materials and
+ * the patterns added with them (lib/scene/texture.c, lib/scene/pattern.c,
+ * lib/sdl/build_texture.c and their grammar), parsed from scene text and
+ * evaluated directly.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <string.h>
+
+#include "parse_fixture.h"
+#include "scene/pattern.h"
+#include "scene/scene.h"
+#include "scene/texture.h"
+
+/* Colours here are a few products and sums of exact decimals: 1e-9
+   covers their rounding. */
+#define EPS 1e-9
+
+/* The texture of the scene's first object. */
+static const zr_texture *first_texture(const zr_scene *s) {
+  assert_true(s->n_objects >= 1);
+  assert_non_null(s->objects[0]->texture);
+  return s->objects[0]->texture;
+}
+
+static void assert_colour(zr_colour c, double r, double g, double b,
+                          double f, double t) {
+  assert_true(fabs(c.r - r) < EPS);
+  assert_true(fabs(c.g - g) < EPS);
+  assert_true(fabs(c.b - b) < EPS);
+  assert_true(fabs(c.f - f) < EPS);
+  assert_true(fabs(c.t - t) < EPS);
+}
+
+static void test_texture_pigment_map_blends(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f, "sphere { 0, 1 pigment { gradient x pigment_map {"
+                        " [0.2 rgb <1, 0, 0>] [0.6 rgb <0, 0, 1>] } } }");
+  const zr_pigment *pg = first_texture(s)->pigment;
+  assert_non_null(pg->pigment_map);
+  assert_int_equal(pg->pigment_map->n, 2);
+  /* x = 0.3 is a quarter of the way from 0.2 to 0.6. */
+  assert_colour(zr__pigment_eval(pg, zr_v3(0.3, 0, 0)), 0.75, 0, 0.25, 0,
+                0);
+  /* Below the first entry its pigment holds. */
+  assert_colour(zr__pigment_eval(pg, zr_v3(0.1, 0, 0)), 1, 0, 0, 0, 0);
+}
+
+static void test_texture_block_pigments_and_transform(void **state) {
+  fixture *f = *state;
+  /* The outer scale moves the inner gradient too: inner pigments are
+     evaluated in the outer pigment's space. */
+  zr_scene *s = good(f, "plane { y, 0 pigment { checker"
+                        " pigment { rgb 1 }"
+                        " pigment { gradient x color_map { [0 rgb 0]"
+                        " [1 rgb <0, 1, 0>] } } scale 2 } }");
+  const zr_pigment *pg = first_texture(s)->pigment;
+  /* Point (0.5, 0.5, 0.5) * 2: cell (0,0,0) of the checker, entry 0. */
+  assert_colour(zr__pigment_eval(pg, zr_v3(1, 1, 1)), 1, 1, 1, 0, 0);
+  /* (3, 1, 1) is pattern point (1.5, .5, .5): entry 1, gradient 0.5. */
+  assert_colour(zr__pigment_eval(pg, zr_v3(3, 1, 1)), 0, 0.5, 0, 0, 0);
+}
+
+static void test_texture_average_weights(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f, "sphere { 0, 1 pigment { average pigment_map {"
+                        " [1 rgb <1, 0, 0>] [3 rgb <0, 0, 1>] } } }");
+  assert_colour(zr__pigment_eval(first_texture(s)->pigment,
+                                 zr_v3(0.3, 0.2, 0.1)),
+                0.25, 0, 0.75, 0, 0);
+}
+
+static void test_texture_pigment_pattern_grey(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f, "sphere { 0, 1 pigment {"
+                        " pigment_pattern { rgb <1, 0, 0> }"
+                        " color_map { [0 rgb 0] [1 rgb 1] } } }");
+  /* POV-Ray's grey of pure red is 0.297. */
+  assert_colour(zr__pigment_eval(first_texture(s)->pigment, zr_v3(0, 0, 0)),
+                0.297, 0.297, 0.297, 0, 0);
+}
+
+static void test_texture_legacy_colour_map(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f, "sphere { 0, 1 pigment { gradient x color_map {"
+                        " [0.0, 0.5 color rgb 0 color rgb <1, 0, 0>]"
+                        " [0.5, 1.0 color rgb <0, 0, 1> color rgb 1] } } }");
+  const zr_pigment *pg = first_texture(s)->pigment;
+  assert_int_equal(pg->colour_map->n, 4);
+  assert_colour(zr__pigment_eval(pg, zr_v3(0.25, 0, 0)), 0.5, 0, 0, 0, 0);
+  assert_colour(zr__pigment_eval(pg, zr_v3(0.75, 0, 0)), 0.5, 0.5, 1, 0, 0);
+}
+
+static void test_texture_layers_and_see_through(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f, "#declare L = texture { pigment {"
+                        " rgbt <1, 1, 1, 0.8> } }"
+                        " texture { pigment { rgbt <1, 0, 0, 0.5> } }\n"
+                        "sphere { 0, 1 texture { L } texture {"
+                        " pigment { rgbf <0, 1, 0, 0.5> } } }");
+  const zr_texture *tx = first_texture(s);
+  /* Bottom first: clear white, the red half-clear layer, the green
+     filter. */
+  assert_non_null(tx->over);
+  assert_non_null(tx->over->over);
+  assert_null(tx->over->over->over);
+  assert_colour(tx->pigment->colour, 1, 1, 1, 0, 0.8);
+  /* Through all three: 0.8 * 0.5 * (0.5 * green). */
+  zr_rgb t = zr__texture_see_through(tx, zr_v3(0, 0, 0));
+  assert_true(fabs(t.r) < EPS && fabs(t.g - 0.2) < EPS && fabs(t.b) < EPS);
+}
+
+static void test_texture_layered_pigment_changes_top(void **state) {
+  fixture *f = *state;
+  /* POV-Ray 3.7 changes the top layer (measured), whatever the manual
+     says; the declared texture itself stays as it was. */
+  zr_scene *s = good(f, "#declare L = texture { pigment { rgb 1 } }"
+                        " texture { pigment { rgbt 1 } }\n"
+                        "sphere { 0, 1 texture { L pigment { rgb 0.5 } } }\n"
+                        "sphere { 0, 1 texture { L } }");
+  const zr_texture *a = s->objects[0]->texture;
+  const zr_texture *b = s->objects[1]->texture;
+  assert_colour(a->pigment->colour, 1, 1, 1, 0, 0);
+  assert_colour(a->over->pigment->colour, 0.5, 0.5, 0.5, 0, 0);
+  assert_colour(b->over->pigment->colour, 1, 1, 1, 0, 1);
+}
+
+static void test_texture_texture_on_textured_object_layers(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f, "#declare S = sphere { 0, 1 texture {"
+                        " pigment { rgb <1, 0, 0> } } }\n"
+                        "object { S texture { pigment { rgbt <0, 0, 1, 0.5> }"
+                        " } }");
+  const zr_texture *tx = first_texture(s);
+  assert_colour(tx->pigment->colour, 1, 0, 0, 0, 0);
+  assert_non_null(tx->over);
+  assert_colour(tx->over->pigment->colour, 0, 0, 1, 0, 0.5);
+}
+
+static void test_texture_texture_map_picks(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f, "sphere { 0, 1 texture { gradient x texture_map {"
+                        " [0.2 pigment { rgb <1, 0, 0> }]"
+                        " [0.6 pigment { rgb <0, 0, 1> }] } scale 2 } }");
+  const zr_texture *tx = first_texture(s);
+  assert_non_null(tx->map);
+  /* The first entry stands in where one plain texture is wanted. */
+  assert_colour(tx->pigment->colour, 1, 0, 0, 0, 0);
+  const zr_texture *b;
+  double t;
+  /* World x 0.6 is pattern 0.3: a quarter of the way. */
+  const zr_texture *a = zr__texture_pick(tx, zr_v3(0.6, 0, 0), &b, &t);
+  assert_ptr_equal(a, tx->map->entries[0].u.texture);
+  assert_ptr_equal(b, tx->map->entries[1].u.texture);
+  assert_true(fabs(t - 0.25) < EPS);
+  a = zr__texture_pick(tx, zr_v3(1.5, 0, 0), &b, &t);
+  assert_ptr_equal(a, tx->map->entries[1].u.texture);
+  assert_null(b);
+}
+
+static void test_texture_block_textures_and_material(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f, "#declare M = material { texture { checker"
+                        " texture { pigment { rgb 1 } }"
+                        " texture { pigment { rgb 0 } } }"
+                        " interior { ior 1.5 } }\n"
+                        "sphere { 0, 1 material { M } }");
+  const zr_object *o = s->objects[0];
+  assert_non_null(o->interior);
+  assert_true(fabs(o->interior->ior - 1.5) < EPS);
+  const zr_texture *b;
+  double t;
+  const zr_texture *a =
+      zr__texture_pick(o->texture, zr_v3(1.5, 0.5, 0.5), &b, &t);
+  assert_null(b);
+  assert_colour(a->pigment->colour, 0, 0, 0, 0, 0);
+}
+
+static void test_texture_average_texture_map(void **state) {
+  fixture *f = *state;
+  /* Entries of an average may leave out their weight, which is 1. */
+  zr_scene *s = good(f, "sphere { 0, 1 texture { average texture_map {"
+                        " [pigment { rgbt <1, 0, 0, 1> }]"
+                        " [3 pigment { rgbt <0, 0, 1, 0.2> }] } } }");
+  const zr_texture *tx = first_texture(s);
+  assert_int_equal(tx->map->n, 2);
+  assert_true(fabs(tx->map->entries[0].value - 1) < EPS);
+  zr_rgb t = zr__texture_see_through(tx, zr_v3(0, 0, 0));
+  /* (1 * 1 + 3 * 0.2) / 4 in every channel. */
+  assert_true(fabs(t.r - 0.4) < EPS && fabs(t.g - 0.4) < EPS &&
+              fabs(t.b - 0.4) < EPS);
+}
+
+static void test_texture_slope_map_hermite(void **state) {
+  (void)state;
+  /* Heights 0 and 1 with zero slopes make the smoothstep 3t^2 - 2t^3. */
+  zr_map_entry e[2];
+  memset(e, 0, sizeof e);
+  e[0].value = 0;
+  e[1].value = 1;
+  e[1].u.slope.height = 1;
+  zr_map m = {2, e};
+  assert_true(fabs(zr__slope_map_eval(&m, 0.25) - 0.15625) < EPS);
+  assert_true(fabs(zr__slope_map_eval(&m, 1.0) - 1.0) < EPS);
+  /* A slope of 1 at both ends of a 0..1 rise is the straight line. */
+  e[0].u.slope.slope = 1;
+  e[1].u.slope.slope = 1;
+  assert_true(fabs(zr__slope_map_eval(&m, 0.3) - 0.3) < EPS);
+}
+
+static void test_texture_new_patterns(void **state) {
+  (void)state;
+  zr_pattern pt;
+  zr__pattern_init(&pt, ZR_PAT_CELLS);
+  /* One value per unit cube. */
+  assert_true(fabs(zr__pattern_eval(&pt, zr_v3(0.1, 0.2, 0.3)) -
+                   zr__pattern_eval(&pt, zr_v3(0.9, 0.8, 0.7))) < EPS);
+  zr__pattern_init(&pt, ZR_PAT_QUILTED);
+  /* The middle of a cube is the top of the quilt, its seams the bottom,
+     for the default controls. */
+  assert_true(fabs(zr__pattern_eval(&pt, zr_v3(0.5, 0.5, 0.5)) - 1) < EPS);
+  assert_true(zr__pattern_eval(&pt, zr_v3(0.01, 0.01, 0.01)) < 0.1);
+  zr__pattern_init(&pt, ZR_PAT_SPIRAL1);
+  pt.arms = 2;
+  for (int i = 0; i < 20; i++) {
+    double v = zr__pattern_eval(&pt, zr_v3(0.3 * i - 3, 0.7, 0.1 * i));
+    assert_true(v >= 0 && v <= 1);
+  }
+}
+
+static void test_texture_normal_forms_parse(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f, "sphere { 0, 1 normal { gradient x normal_map {"
+                        " [0 bumps 0.5] [1 dents 0.3] } } }\n"
+                        "sphere { 0, 1 normal { checker normal { bumps }"
+                        " normal { quilted 0.4 control0 0 control1 1 } } }\n"
+                        "sphere { 0, 1 normal { spiral1 3, 0.5"
+                        " slope_map { [0 <0, 1>] [1 <1, 0>] } } }\n"
+                        "#default { normal { bump_size 1.5 } }");
+  assert_non_null(s->objects[0]->texture->normal->normal_map);
+  assert_int_equal(s->objects[1]->texture->normal->normal_map->n, 2);
+  assert_int_equal(s->objects[2]->texture->normal->pattern.arms, 3);
+  assert_non_null(s->objects[2]->texture->normal->slope_map);
+  assert_non_null(s->default_texture->normal);
+}
+
+static void test_texture_noise_and_waves_settings(void **state) {
+  fixture *f = *state;
+  good(f, "global_settings { noise_generator 1 }\n"
+          "sphere { 0, 1 pigment { bozo noise_generator 3 } }");
+  bad(f, "global_settings { noise_generator 4 }", ZR_ESCENE,
+      "noise_generator must be 1, 2 or 3", NULL);
+  /* number_of_waves sets the default of the waves made after it. */
+  zr_scene *s = good(f, "global_settings { number_of_waves 3 }\n"
+                        "sphere { 0, 1 pigment { waves } }\n"
+                        "sphere { 0, 1 pigment { ripples"
+                        " number_of_waves 5 } }");
+  assert_int_equal(s->objects[0]->texture->pigment->pattern.waves, 3);
+  assert_int_equal(s->objects[1]->texture->pigment->pattern.waves, 5);
+}
+
+static void test_texture_bad_maps(void **state) {
+  fixture *f = *state;
+  bad(f, "sphere { 0, 1 pigment { gradient x pigment_map { } } }",
+      ZR_ESYNTAX, "a pigment_map needs an entry", NULL);
+  bad(f, "sphere { 0, 1 pigment { gradient x pigment_map {"
+         " [0.5 rgb 1] [0.2 rgb 0] } } }",
+      ZR_ESCENE, "map values must not decrease (0.2 after 0.5)", NULL);
+  bad(f, "sphere { 0, 1 pigment { checker pigment { rgb 1 }"
+         " pigment { rgb 0 } pigment { rgb 0.5 } } }",
+      ZR_ESYNTAX, "too many items for this pattern", NULL);
+  bad(f, "sphere { 0, 1 normal { bumps slope_map { [0 1] } } }", ZR_ESCENE,
+      "a slope_map entry wants <height, slope>", NULL);
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test(test_texture_pigment_map_blends),
+      cmocka_unit_test(test_texture_block_pigments_and_transform),
+      cmocka_unit_test(test_texture_average_weights),
+      cmocka_unit_test(test_texture_pigment_pattern_grey),
+      cmocka_unit_test(test_texture_legacy_colour_map),
+      cmocka_unit_test(test_texture_layers_and_see_through),
+      cmocka_unit_test(test_texture_layered_pigment_changes_top),
+      cmocka_unit_test(test_texture_texture_on_textured_object_layers),
+      cmocka_unit_test(test_texture_texture_map_picks),
+      cmocka_unit_test(test_texture_block_textures_and_material),
+      cmocka_unit_test(test_texture_average_texture_map),
+      cmocka_unit_test(test_texture_slope_map_hermite),
+      cmocka_unit_test(test_texture_new_patterns),
+      cmocka_unit_test(test_texture_normal_forms_parse),
+      cmocka_unit_test(test_texture_noise_and_waves_settings),
+      cmocka_unit_test(test_texture_bad_maps),
+  };
+  return cmocka_run_group_tests(tests, setup, teardown);
+}
