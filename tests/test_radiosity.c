@@ -388,6 +388,60 @@ static void test_radiosity_lookup_floor_centre(void **state) {
   zr_context_free(ctx);
 }
 
+/* The factor from a point to a rectangle a x b parallel to its plane
+   at height h, with one corner straight above the point (Howell's
+   catalogue, C-11). */
+static double corner_rect_factor(double a, double b, double h) {
+  double x = a / h, y = b / h;
+  double sx = sqrt(1 + x * x), sy = sqrt(1 + y * y);
+  return (x / sx * atan(y / sx) + y / sy * atan(x / sy)) / (2 * M_PI);
+}
+
+/*
+ * The final gather reads the exact point-to-source factor at the hit:
+ * a floor (rho 0.5) under an emitting unit square (exitance 1, no
+ * reflection) at height 1, no walls, so the floor's radiance is
+ * rho E F(point) / pi, one bounce, at every point however coarse the
+ * mesh.  Tolerance 1e-6: the contour formula is exact for a square and
+ * nothing occludes, so only rounding remains; the mesh-mean lookup
+ * (lookup 1) errs by several percent here.
+ */
+static void test_radiosity_final_gather_exact(void **state) {
+  (void)state;
+  static const char *const text =
+      "#declare F = texture { pigment { rgb 1 } finish { diffuse 0.5 "
+      "ambient 0 } }\n"
+      "#declare C = texture { pigment { rgb 1 } finish { diffuse 0 "
+      "ambient 0 emission " INV_PI " } }\n"
+      "triangle { <0,0,0>, <1,0,0>, <1,0,1> texture { F } }\n"
+      "triangle { <0,0,0>, <1,0,1>, <0,0,1> texture { F } }\n"
+      "triangle { <0,1,0>, <1,1,0>, <1,1,1> texture { C } }\n"
+      "triangle { <0,1,0>, <1,1,1>, <0,1,1> texture { C } }\n";
+  zr_context *ctx = new_context();
+  zr_scene *scene = parse(ctx, text);
+  zr_radiosity_params p;
+  zr_radiosity_params_init(&p, scene);
+  p.bf_eps = 1e-2; /* coarse on purpose */
+  zr_radiosity *rad = solve(ctx, scene, &p);
+  assert_no_nan(rad);
+  const double pts[3][2] = {{0.5, 0.5}, {0.2, 0.7}, {0.9, 0.05}};
+  for (int i = 0; i < 3; i++) {
+    double x = pts[i][0], z = pts[i][1];
+    double f = corner_rect_factor(x, z, 1) + corner_rect_factor(1 - x, z, 1) +
+               corner_rect_factor(x, 1 - z, 1) +
+               corner_rect_factor(1 - x, 1 - z, 1);
+    /* The point lies on one floor triangle or the other. */
+    const zr_object *tri = scene->primitives[x >= z ? 0 : 1];
+    zr_rgb l;
+    assert_true(zr__radiosity_radiance(rad, tri, zr_v3(x, 0, z),
+                                       zr_v3(0, -1, 0.1), &l));
+    assert_true(fabs(l.r * M_PI - 0.5 * f) < 1e-6);
+  }
+  zr_radiosity_free(rad);
+  zr_scene_free(scene);
+  zr_context_free(ctx);
+}
+
 /* ---- saving and loading ---- */
 
 static char *temp_path(const char *name) {
@@ -398,15 +452,16 @@ static char *temp_path(const char *name) {
   return path;
 }
 
-static void test_radiosity_save_load(void **state) {
-  (void)state;
-  zr_context *ctx = new_context();
-  zr_scene *scene = parse_cube(ctx, "");
+/* Solves the cube with the given lookup, saves, loads, and checks that
+   both read the same radiance anywhere; returns the path saved. */
+static const char *save_and_compare(zr_context *ctx, const zr_scene *scene,
+                                    int lookup) {
   zr_radiosity_params p;
   zr_radiosity_params_init(&p, scene);
   p.bf_eps = 1e-3;
+  p.lookup = lookup;
   zr_radiosity *rad = solve(ctx, scene, &p);
-  char path[512];
+  static char path[512];
   snprintf(path, sizeof path, "%s", temp_path("a.zrrad"));
   assert_int_equal(zr_radiosity_save(ctx, rad, path), ZR_OK);
   zr_radiosity *back = NULL;
@@ -416,8 +471,8 @@ static void test_radiosity_save_load(void **state) {
   zr_radiosity_get_stats(back, &b);
   assert_int_equal(a.elements, b.elements);
   assert_int_equal(a.links, b.links);
-  /* The same leaves and values, smoothed by the same code: identical
-     radiance anywhere. */
+  /* The same leaves, values and links (lookup 0 gathers over them),
+     smoothed by the same code: identical radiance anywhere. */
   for (int i = 0; i < 50; i++) {
     zr_vec3 pt = zr_v3(0.02 * i, 0, 0.99 - 0.019 * i);
     zr_rgb x, y;
@@ -425,8 +480,20 @@ static void test_radiosity_save_load(void **state) {
                            &x);
     zr__radiosity_radiance(back, scene->primitives[0], pt, zr_v3(0, -1, 0),
                            &y);
+    assert_true(x.r > 0.0);
     assert_true(x.r == y.r && x.g == y.g && x.b == y.b);
   }
+  zr_radiosity_free(back);
+  zr_radiosity_free(rad);
+  return path;
+}
+
+static void test_radiosity_save_load(void **state) {
+  (void)state;
+  zr_context *ctx = new_context();
+  zr_scene *scene = parse_cube(ctx, "");
+  save_and_compare(ctx, scene, 1);
+  const char *path = save_and_compare(ctx, scene, 0);
   /* Loading for another scene (the cube scaled) is an error. */
   zr_scene *other = parse_cube(ctx, "scale 2");
   zr_radiosity *wrong = NULL;
@@ -435,8 +502,6 @@ static void test_radiosity_save_load(void **state) {
   assert_non_null(strstr(zr_context_last_error(ctx),
                          "was solved for another scene (fingerprint "));
   remove(path);
-  zr_radiosity_free(back);
-  zr_radiosity_free(rad);
   zr_scene_free(other);
   zr_scene_free(scene);
   zr_context_free(ctx);
@@ -572,6 +637,7 @@ int main(void) {
       cmocka_unit_test(test_radiosity_touching_emitter),
       cmocka_unit_test(test_radiosity_box_on_floor_no_leak),
       cmocka_unit_test(test_radiosity_lookup_floor_centre),
+      cmocka_unit_test(test_radiosity_final_gather_exact),
       cmocka_unit_test(test_radiosity_save_load),
       cmocka_unit_test(test_radiosity_deterministic),
       cmocka_unit_test(test_radiosity_bad_params),

@@ -5,18 +5,23 @@
  * The file is little-endian binary, whatever the host:
  *
  *   "ZRRADSOL"           8 bytes, the magic
- *   u32 version          1
+ *   u32 version          2
  *   u64 fingerprint      of the scene's geometry and light (below)
  *   u32 surfaces         how many exact surfaces the scene gave
  *   f64 bf_eps, area_eps; i32 visibility_rays, uniform, shooting
  *   u64 links; i32 refine_rounds, iterations; f64 residual
+ *   u32 lookup           params.lookup of the solve
  *   then, per surface in scene order, its quadtree in preorder: a byte
  *   (1 when the node has four children) and the node's radiosity, six
- *   f64 (front r g b, back r g b).
+ *   f64 (front r g b, back r g b);
+ *   then u64 n and n links: i32 receiver, i32 source (nodes numbered in
+ *   the preorder of all the trees, surface after surface), u8 receiver
+ *   side, u8 source side, f64 factor, f64 visible fraction.
  *
- * Links are not saved: rendering needs only the leaves' radiosity, and
- * the vertices are smoothed again after loading (the same code, so the
- * same values).  The fingerprint is FNV-1a over every primitive's kind,
+ * The links are saved because the default lookup (a final gather at the
+ * ray hit, radiosity.c) reads them: a loaded solution then renders the
+ * same bytes as the solve it came from.  The vertices are smoothed again
+ * after loading (the same code, so the same values).  The fingerprint is FNV-1a over every primitive's kind,
  * shape numbers, transform and the texture values radiosity reads
  * (pigment colour, diffuse, emission); the camera, lights and other
  * finish values are left out, since they do not change the solution.
@@ -31,7 +36,7 @@
 #include <string.h>
 
 #define MAGIC "ZRRADSOL"
-#define VERSION 1u
+#define VERSION 2u
 
 /* ---- fingerprint ---- */
 
@@ -148,24 +153,53 @@ static bool get_f64(FILE *f, double *d) {
 
 /* ---- save ---- */
 
-static void save_tree(FILE *f, const zr_radiosity *rad, int32_t n) {
+/* Writes node n's subtree in preorder; order[node] gets its preorder
+   number, counted by *next. */
+static void save_tree(FILE *f, const zr_radiosity *rad, int32_t n,
+                      uint32_t *order, uint32_t *next) {
   const zr__rad_node *node = &rad->nodes[n];
+  order[n] = (*next)++;
   fputc(node->child >= 0, f);
   for (int side = 0; side < 2; side++)
     for (int c = 0; c < 3; c++)
       put_f64(f, node->b[side][c]);
   if (node->child >= 0)
     for (int k = 0; k < 4; k++)
-      save_tree(f, rad, node->child + k);
+      save_tree(f, rad, node->child + k, order, next);
+}
+
+static void save_links(FILE *f, const zr_radiosity *rad,
+                       const uint32_t *order) {
+  size_t n = 0;
+  for (size_t i = 0; i < rad->n_links; i++)
+    n += !rad->links[i].dead;
+  put_u64(f, n);
+  for (size_t i = 0; i < rad->n_links; i++) {
+    const zr__rad_link *l = &rad->links[i];
+    if (l->dead)
+      continue;
+    put_u32(f, order[l->recv]);
+    put_u32(f, order[l->src]);
+    fputc(l->rside, f);
+    fputc(l->sside, f);
+    put_f64(f, l->ff);
+    put_f64(f, l->vis);
+  }
 }
 
 ZR_API zr_status zr_radiosity_save(zr_context *ctx, const zr_radiosity *rad,
                                    const char *path) {
+  uint32_t *order = malloc((rad->n_nodes + 1) * sizeof *order);
+  if (order == NULL)
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL,
+                    "radiosity: out of memory saving '%s'", path);
   FILE *f = fopen(path, "wb");
-  if (f == NULL)
+  if (f == NULL) {
+    free(order);
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EIO, NULL,
                     "radiosity: cannot write '%s': %s", path,
                     strerror(errno));
+  }
   fwrite(MAGIC, 1, 8, f);
   put_u32(f, VERSION);
   put_u64(f, rad->fingerprint);
@@ -179,8 +213,12 @@ ZR_API zr_status zr_radiosity_save(zr_context *ctx, const zr_radiosity *rad,
   put_u32(f, (uint32_t)rad->stats.refine_rounds);
   put_u32(f, (uint32_t)rad->stats.iterations);
   put_f64(f, rad->stats.residual);
+  put_u32(f, (uint32_t)rad->params.lookup);
+  uint32_t next = 0;
   for (size_t s = 0; s < rad->n_surfs; s++)
-    save_tree(f, rad, rad->surfs[s].root);
+    save_tree(f, rad, rad->surfs[s].root, order, &next);
+  save_links(f, rad, order);
+  free(order);
   bool bad = ferror(f) != 0;
   if (fclose(f) != 0 || bad)
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EIO, NULL,
@@ -212,10 +250,68 @@ static bool load_tree(FILE *f, zr_radiosity *rad, int32_t n, int depth) {
   return true;
 }
 
+/* node[k] = the node whose preorder number (as save_tree counts) is k. */
+static void number_nodes(const zr_radiosity *rad, int32_t n, int32_t *node,
+                         uint32_t *next) {
+  node[(*next)++] = n;
+  if (rad->nodes[n].child >= 0)
+    for (int k = 0; k < 4; k++)
+      number_nodes(rad, rad->nodes[n].child + k, node, next);
+}
+
+/* Reads the links; false on a short file or one naming nodes or sides
+   the trees do not have. */
+static bool load_links(FILE *f, zr_radiosity *rad) {
+  /* The links are the rest of the file, 26 bytes each: a count that
+     does not match its length is corrupt (and is never allocated). */
+  enum { LINK_BYTES = 4 + 4 + 1 + 1 + 8 + 8 };
+  uint64_t n;
+  if (!get_u64(f, &n) || n > UINT32_MAX)
+    return false;
+  long here = ftell(f);
+  if (here < 0 || fseek(f, 0, SEEK_END) != 0)
+    return false;
+  long end = ftell(f);
+  if (end < here || fseek(f, here, SEEK_SET) != 0 ||
+      (uint64_t)(end - here) != n * LINK_BYTES)
+    return false;
+  int32_t *node = malloc((rad->n_nodes + 1) * sizeof *node);
+  zr__rad_link *links = calloc(n + 1, sizeof *links);
+  bool ok = node != NULL && links != NULL;
+  uint32_t next = 0;
+  for (size_t s = 0; ok && s < rad->n_surfs; s++)
+    number_nodes(rad, rad->surfs[s].root, node, &next);
+  for (uint64_t i = 0; ok && i < n; i++) {
+    uint32_t recv, src;
+    int rside, sside;
+    zr__rad_link *l = &links[i];
+    ok = get_u32(f, &recv) && get_u32(f, &src) &&
+         (rside = fgetc(f)) >= 0 && rside <= 1 && (sside = fgetc(f)) >= 0 &&
+         sside <= 1 && get_f64(f, &l->ff) && get_f64(f, &l->vis) &&
+         recv < next && src < next && isfinite(l->ff) && isfinite(l->vis);
+    if (ok) {
+      l->recv = node[recv];
+      l->src = node[src];
+      l->rside = (uint8_t)rside;
+      l->sside = (uint8_t)sside;
+      l->final = 1;
+    }
+  }
+  free(node);
+  if (!ok) {
+    free(links);
+    return false;
+  }
+  free(rad->links);
+  rad->links = links;
+  rad->n_links = rad->cap_links = (size_t)n;
+  return true;
+}
+
 static zr_status read_header(zr_context *ctx, FILE *f, const char *path,
                              zr_radiosity *rad) {
   char magic[8];
-  uint32_t version, n_surfs, vis, uniform, shooting, rounds, its;
+  uint32_t version, n_surfs, vis, uniform, shooting, rounds, its, lookup;
   uint64_t fp, links;
   if (fread(magic, 1, 8, f) != 8 || memcmp(magic, MAGIC, 8) != 0)
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
@@ -236,13 +332,15 @@ static zr_status read_header(zr_context *ctx, FILE *f, const char *path,
       !get_f64(f, &rad->params.area_eps) || !get_u32(f, &vis) ||
       !get_u32(f, &uniform) || !get_u32(f, &shooting) ||
       !get_u64(f, &links) || !get_u32(f, &rounds) || !get_u32(f, &its) ||
-      !get_f64(f, &rad->stats.residual))
+      !get_f64(f, &rad->stats.residual) || !get_u32(f, &lookup) ||
+      lookup > 1)
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
                     "radiosity: '%s' is truncated", path);
   rad->params.visibility_rays = (int)vis;
   rad->params.uniform = (int)uniform;
   rad->params.shooting = (int)shooting;
   rad->stats.links = (size_t)links;
+  rad->params.lookup = (int)lookup;
   rad->stats.refine_rounds = (int)rounds;
   rad->stats.iterations = (int)its;
   return ZR_OK;
@@ -265,9 +363,9 @@ ZR_API zr_status zr_radiosity_load(zr_context *ctx, const zr_scene *scene,
     if (!load_tree(f, rad, rad->surfs[s].root, 0))
       st = zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
                     "radiosity: '%s' is truncated or corrupt", path);
-  if (st == ZR_OK && fgetc(f) != EOF)
+  if (st == ZR_OK && !load_links(f, rad))
     st = zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
-                  "radiosity: '%s' has data after its last quadtree", path);
+                  "radiosity: '%s' has truncated or corrupt links", path);
   fclose(f);
   if (st != ZR_OK) {
     zr_radiosity_free(rad);
@@ -275,6 +373,11 @@ ZR_API zr_status zr_radiosity_load(zr_context *ctx, const zr_scene *scene,
   }
   zr__rad_smooth(rad);
   zr__rad_count(rad);
+  if (rad->params.lookup == 0 && zr__rad_index_links(rad) != ZR_OK) {
+    zr_radiosity_free(rad);
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL,
+                    "radiosity: out of memory indexing links");
+  }
   *out = rad;
   return ZR_OK;
 }
