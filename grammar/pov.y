@@ -991,9 +991,15 @@ primary:
 | primary '.' dot_item { TRY(zr__sdl_dot(p, &$1, $3, &@3, &$$)); }
 ;
 
+/* The commas between a vector's components may be left out, as
+   POV-Ray's own woods.inc does ("translate < -1 0 0 >"); an operator
+   after a component still continues it ("<1 -2>" is <-1>), since
+   OPTIONAL_COMMA ranks below the operators. */
 list:
-  expr                 { $$.n = 0; TRY(zr__sdl_list_add(p, &$$, &$1, &@1)); }
-| list ',' expr        { $$ = $1; TRY(zr__sdl_list_add(p, &$$, &$3, &@3)); }
+  expr %prec OPTIONAL_COMMA
+    { $$.n = 0; TRY(zr__sdl_list_add(p, &$$, &$1, &@1)); }
+| list comma expr %prec OPTIONAL_COMMA
+    { $$ = $1; TRY(zr__sdl_list_add(p, &$$, &$3, &@3)); }
 ;
 
 func:
@@ -1770,15 +1776,14 @@ warp_body:
   T_WARP '{' T_TURBULENCE expr
     {
       $$ = make_pmod(T_WARP, NULL, &@4);
-      zr__pattern_init(&$$.warp, ZR_PAT_NONE);
+      /* POV-Ray's defaults, as zr__pattern_init sets them. */
+      $$.warp.octaves = 6;
+      $$.warp.omega = 0.5;
+      $$.warp.lambda = 2.0;
       TRY(zr__sdl_want_vector(p, &$4, &@4, &$$.warp.turbulence));
     }
 | warp_body T_OCTAVES expr
-    {
-      zr_sdl_pmod m = make_pmod(T_OCTAVES, &$3, &@3);
-      $$ = $1;
-      TRY(zr__sdl_pattern_mod(p, &$$.warp, &m));
-    }
+    { $$ = $1; TRY(zr__sdl_octaves(p, &$3, &@3, &$$.warp.octaves)); }
 | warp_body T_OMEGA expr
     { $$ = $1; TRY(zr__sdl_want_float(p, &$3, &@3, &$$.warp.omega)); }
 | warp_body T_LAMBDA expr

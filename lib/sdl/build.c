@@ -360,6 +360,20 @@ static bool want_positive(zr_sdl_parser *p, const zr_sdl_pmod *m,
   return true;
 }
 
+bool zr__sdl_octaves(zr_sdl_parser *p, const zr_sdl_expr *e,
+                     const zr_sdl_loc *loc, int *octaves) {
+  double v;
+  if (!zr__sdl_want_float(p, e, loc, &v))
+    return false;
+  /* POV-Ray limits octaves to 1 .. 10 ("Octaves"). */
+  if (v < 1 || v > 10) {
+    zr__sdl_error(p, ZR_ESCENE, loc, "octaves must be between 1 and 10");
+    return false;
+  }
+  *octaves = (int)v;
+  return true;
+}
+
 bool zr__sdl_pattern_mod(zr_sdl_parser *p, zr_pattern *pt,
                          const zr_sdl_pmod *m) {
   double v;
@@ -373,16 +387,7 @@ bool zr__sdl_pattern_mod(zr_sdl_parser *p, zr_pattern *pt,
     pt->lambda = m->warp.lambda;
     return true;
   case T_OCTAVES:
-    if (!zr__sdl_want_float(p, &m->value, &m->loc, &v))
-      return false;
-    /* POV-Ray limits octaves to 1 .. 10 ("Octaves"). */
-    if (v < 1 || v > 10) {
-      zr__sdl_error(p, ZR_ESCENE, &m->loc,
-                    "octaves must be between 1 and 10");
-      return false;
-    }
-    pt->octaves = (int)v;
-    return true;
+    return zr__sdl_octaves(p, &m->value, &m->loc, &pt->octaves);
   case T_OMEGA:
     return zr__sdl_want_float(p, &m->value, &m->loc, &pt->omega);
   case T_LAMBDA:

@@ -204,11 +204,19 @@ typedef struct zr_sdl_reflection {
 
 /* A pattern modifier (turbulence, octaves, frequency, ramp_wave,
    warp { turbulence ... } ...) as the grammar hands it to build.c. */
+typedef struct zr_sdl_turb {
+  zr_vec3 turbulence;
+  int octaves;
+  double omega, lambda;
+} zr_sdl_turb;
+
+/* Kept small: it is a member of the grammar's semantic value, and every
+   nested parser holds a stack of those on the C stack. */
 typedef struct zr_sdl_pmod {
   int token; /* the keyword's token; T_WARP for a turbulence warp */
   zr_sdl_expr value; /* its argument (dim 0: none) */
   zr_sdl_loc loc;
-  zr_pattern warp; /* T_WARP: turbulence, octaves, omega, lambda */
+  zr_sdl_turb warp; /* T_WARP: turbulence, octaves, omega, lambda */
 } zr_sdl_pmod;
 
 /* The colours after checker, hexagon or brick. */
@@ -649,6 +657,9 @@ bool zr__sdl_pigment_pattern(zr_sdl_parser *p, zr_pigment *pg, int kind,
                              const zr_sdl_clist *list);
 bool zr__sdl_gradient(zr_sdl_parser *p, zr_pattern *pt,
                       const zr_sdl_expr *e, const zr_sdl_loc *loc);
+/* octaves' value, checked against POV-Ray's range 1 .. 10. */
+bool zr__sdl_octaves(zr_sdl_parser *p, const zr_sdl_expr *e,
+                     const zr_sdl_loc *loc, int *octaves);
 bool zr__sdl_pattern_mod(zr_sdl_parser *p, zr_pattern *pt,
                          const zr_sdl_pmod *m);
 bool zr__sdl_clist_add(zr_sdl_parser *p, zr_sdl_clist *l,
