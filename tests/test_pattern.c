@@ -62,6 +62,28 @@ static void test_pattern_colour_map_interpolates(void **state) {
   assert_true(fabs(c.r) < EPS);
 }
 
+static void test_pattern_colour_map_out_of_order(void **state) {
+  (void)state;
+  /* POV-Ray 3.7 (a gradient x render, 20 pixels) blends from red to
+     green up to 0.6, then from blue to white: the first entry above the
+     value ends the interval, and the one before it starts it, wherever
+     that one stands. */
+  const zr_colour_map_entry entries[] = {
+      {0.0, {1, 0, 0, 0, 0}},
+      {0.6, {0, 1, 0, 0, 0}},
+      {0.5, {0, 0, 1, 0, 0}},
+      {1.0, {1, 1, 1, 0, 0}},
+  };
+  zr_colour_map map = {4, entries};
+  zr_colour c = zr__colour_map_eval(&map, 0.55);
+  assert_true(fabs(c.r - 0.05 / 0.6) < EPS && fabs(c.g - 0.55 / 0.6) < EPS);
+  assert_true(fabs(c.b) < EPS);
+  c = zr__colour_map_eval(&map, 0.625);
+  assert_true(fabs(c.r - 0.25) < EPS && fabs(c.b - 1.0) < EPS);
+  c = zr__colour_map_eval(&map, 1.5);
+  assert_true(fabs(c.r - 1.0) < EPS && fabs(c.g - 1.0) < EPS);
+}
+
 static void test_pattern_noise_range_and_mean(void **state) {
   (void)state;
   /* 20000 points on an irrational lattice: a mean within 0.05 of 0.5
@@ -108,6 +130,7 @@ int main(void) {
       cmocka_unit_test(test_pattern_checker_cells),
       cmocka_unit_test(test_pattern_gradient_ramp_repeats),
       cmocka_unit_test(test_pattern_colour_map_interpolates),
+      cmocka_unit_test(test_pattern_colour_map_out_of_order),
       cmocka_unit_test(test_pattern_noise_range_and_mean),
       cmocka_unit_test(test_pattern_pigment_eval_uses_transform),
   };

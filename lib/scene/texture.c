@@ -67,19 +67,39 @@ static zr_colour mix(zr_colour a, zr_colour b, double t) {
                     a.t + (b.t - a.t) * t);
 }
 
+/*
+ * The entries a map value v falls between, as POV-Ray 3.7 picks them
+ * (measured with its renders): the first entry whose value exceeds v,
+ * blended from the entry before it.  On increasing values that is the
+ * usual interval; an entry out of order (woods.inc has "[0.95 ...]
+ * [0.90 ...] [1.00 ...]") only serves as the start of the next interval,
+ * so the blend weight t is always in [0, 1) and its gap never zero.
+ * *i = the lower entry; t = 0 at either end.
+ */
+static void find_interval(const double *values, size_t stride, size_t n,
+                          double v, size_t *i, double *t) {
+#define VALUE(k) (*(const double *)((const char *)values + (k) * stride))
+  size_t j = 0;
+  while (j < n && !(VALUE(j) > v))
+    j++;
+  *t = 0;
+  if (j == 0) {
+    *i = 0;
+  } else if (j == n) {
+    *i = n - 1;
+  } else {
+    *i = j - 1;
+    *t = (v - VALUE(j - 1)) / (VALUE(j) - VALUE(j - 1));
+  }
+#undef VALUE
+}
+
 zr_colour zr__colour_map_eval(const zr_colour_map *map, double v) {
   const zr_colour_map_entry *e = map->entries;
-  size_t n = map->n;
-  if (v <= e[0].value)
-    return e[0].colour;
-  if (v >= e[n - 1].value)
-    return e[n - 1].colour;
-  size_t i = 0;
-  while (i + 1 < n && e[i + 1].value <= v)
-    i++;
-  /* Now e[i].value <= v < e[i + 1].value, so the gap is not zero. */
-  double t = (v - e[i].value) / (e[i + 1].value - e[i].value);
-  return mix(e[i].colour, e[i + 1].colour, t);
+  size_t i;
+  double t;
+  find_interval(&e[0].value, sizeof *e, map->n, v, &i, &t);
+  return t > 0 ? mix(e[i].colour, e[i + 1].colour, t) : e[i].colour;
 }
 
 void zr__pigment_set_pattern(zr_pigment *pg, zr_pattern_kind kind) {
@@ -178,20 +198,7 @@ void zr__map_find(const zr_map *m, double v, bool block, size_t *i,
     *i = k < 0 ? 0 : (size_t)k >= n ? n - 1 : (size_t)k;
     return;
   }
-  if (v <= e[0].value) {
-    *i = 0;
-    return;
-  }
-  if (v >= e[n - 1].value) {
-    *i = n - 1;
-    return;
-  }
-  size_t k = 0;
-  while (k + 1 < n && e[k + 1].value <= v)
-    k++;
-  *i = k;
-  if (k + 1 < n)
-    *t = (v - e[k].value) / (e[k + 1].value - e[k].value);
+  find_interval(&e[0].value, sizeof *e, n, v, i, t);
 }
 
 /* A pigment_map's colour at p, pattern space of the outer pigment. */

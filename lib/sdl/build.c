@@ -20,7 +20,8 @@
  *     turbulence warp acts as turbulence (applied before the
  *     transforms, where POV-Ray would apply it in order).  A block
  *     pattern takes up to 2 (checker, brick) or 3 (hexagon) colours.
- *     color_map entries must not decrease.  A normal's transform, like
+ *     color_map entries may come out of order, as in POV-Ray
+ *     (lib/scene/texture.c says how they are read).  A normal's transform, like
  *     a pigment's, follows the object's transforms.  image_map pictures
  *     are searched like #include files and decoded into the arena.
  */
@@ -486,12 +487,6 @@ bool zr__sdl_colour_map_add(zr_sdl_parser *p, zr_colour_map *m,
   if (!zr__sdl_want_float(p, v, vl, &entry.value) ||
       !zr__sdl_want_colour(p, c, cl, &entry.colour))
     return false;
-  if (m->n > 0 && entry.value < m->entries[m->n - 1].value) {
-    zr__sdl_error(p, ZR_ESCENE, vl,
-                  "color_map values must not decrease (%g after %g)",
-                  entry.value, m->entries[m->n - 1].value);
-    return false;
-  }
   zr_colour_map_entry *e = (zr_colour_map_entry *)m->entries;
   if (m->n == entries_room(m->n)) {
     e = zr__sdl_alloc(p, entries_room(m->n + 1) * sizeof *e);

@@ -6,7 +6,8 @@
  * "Pigment Pattern", "Material").
  *
  * Maps are built entry by entry into the scene's arena, doubling like
- * colour maps (build.c), with values that must not decrease.  Block
+ * colour maps (build.c); values out of order are read as POV-Ray reads
+ * them (lib/scene/texture.c).  Block
  * patterns' lists ("checker pigment {A} pigment {B}") become maps whose
  * values are the entries' indices, so evaluation (lib/scene/texture.c)
  * treats both alike.
@@ -66,8 +67,6 @@ static bool append(zr_sdl_parser *p, zr_map *m, const zr_map_entry *e) {
 
 bool zr__sdl_map_add(zr_sdl_parser *p, zr_map *m, const zr_sdl_expr *v,
                      const zr_sdl_loc *vl, zr_map_entry *e) {
-  /* The order is checked when the map meets its pattern (block_fits):
-     average's values are weights, in any order. */
   if (!zr__sdl_want_float(p, v, vl, &e->value))
     return false;
   return append(p, m, e);
@@ -113,22 +112,13 @@ bool zr__sdl_map_done(zr_sdl_parser *p, const zr_map *m, const char *what,
   return true;
 }
 
-/* A block pattern takes at most as many items as it has blocks; the
-   values of other patterns' maps must not decrease. */
+/* A block pattern takes at most as many items as it has blocks. */
 static bool block_fits(zr_sdl_parser *p, zr_pattern_kind kind,
                        const zr_map *m, const zr_sdl_loc *loc) {
   if (kind == ZR_PAT_AVERAGE)
     return true;
-  if (!zr__pattern_is_block(kind)) {
-    for (size_t i = 1; i < m->n; i++)
-      if (m->entries[i].value < m->entries[i - 1].value) {
-        zr__sdl_error(p, ZR_ESCENE, loc,
-                      "map values must not decrease (%g after %g)",
-                      m->entries[i].value, m->entries[i - 1].value);
-        return false;
-      }
+  if (!zr__pattern_is_block(kind))
     return true;
-  }
   size_t most = kind == ZR_PAT_HEXAGON ? 3 : 2;
   if (m->n > most) {
     zr__sdl_error(p, ZR_ESYNTAX, loc, "too many items for this pattern");
