@@ -12,6 +12,7 @@
 # (OUTDIR/povray.txt) is reused unless STOCK_POVRAY_AGAIN=1.
 set -u
 zr=${1:-build/bin/zrcube}
+case $zr in /*) ;; *) zr=$(pwd)/$zr ;; esac
 out=${2:-bench/out/stock}
 ex=/usr/share/doc/povray/examples
 inc=/usr/share/povray-3.7/include
@@ -38,7 +39,7 @@ trap 'rm -rf "$tmp"' EXIT
 find "$ex" -name '*.pov' | sort | while read -r f; do
     dir=$(dirname "$f")
     rel=${f#$ex/}
-    err=$( cd "$dir" && timeout 20 "$OLDPWD/$zr" --parse-only -q \
+    err=$( cd "$dir" && timeout 20 "$zr" --parse-only -q \
         +L"$inc" +L"$dir" "$f" 2>&1 >/dev/null )
     rc=$?
     if [ $rc -eq 0 ]; then

@@ -67,7 +67,8 @@ typedef enum opt_key {
   K_RAD_ONLY,
   K_RAD_STATS,
   K_RAD_SAVE,
-  K_RAD_LOAD
+  K_RAD_LOAD,
+  K_RAD_MESH
 } opt_key;
 
 /* Where the option being applied came from, for messages. */
@@ -113,6 +114,7 @@ void zr__cli_free(zr_cli_options *o) {
   free(o->output);
   free(o->rad_save);
   free(o->rad_load);
+  free(o->rad_mesh);
   for (size_t i = 0; i < o->n_include_paths; i++)
     free(o->include_paths[i]);
   free(o->include_paths);
@@ -382,6 +384,8 @@ static int apply_radiosity(const arg_ctx *c, opt_key key,
     return set_string(c, &o->rad_save, value);
   case K_RAD_LOAD:
     return set_string(c, &o->rad_load, value);
+  case K_RAD_MESH:
+    return set_string(c, &o->rad_mesh, value);
   default:
     return 0; /* K_RADIOSITY */
   }
@@ -510,6 +514,7 @@ static int apply(const arg_ctx *c, opt_key key, const char *value) {
   case K_RAD_STATS:
   case K_RAD_SAVE:
   case K_RAD_LOAD:
+  case K_RAD_MESH:
     return apply_radiosity(c, key, value);
   }
   return fail(c, "'%s': internal error: unhandled option", c->what);
@@ -631,6 +636,7 @@ static const long_option long_options[] = {
     {"radiosity-stats", K_RAD_STATS, L_NONE},
     {"radiosity-save", K_RAD_SAVE, L_REQUIRED},
     {"radiosity-load", K_RAD_LOAD, L_REQUIRED},
+    {"radiosity-mesh", K_RAD_MESH, L_REQUIRED},
 };
 
 /* Returns how many extra arguments it used (0 or 1), or -1 on failure. */
@@ -981,9 +987,11 @@ const char *zr__cli_usage(void) {
       "Radiosity (hierarchical, on the exact surfaces; any of these turns\n"
       "it on):\n"
       "  --radiosity                  solve diffuse interreflection from\n"
-      "                               emitting surfaces, then render with it\n"
+      "                               emitting surfaces and light sources,\n"
+      "                               then render with it\n"
       "  --bf-eps=X                   refinement threshold, a fraction of\n"
-      "                               the emitted power (default 1e-4)\n"
+      "                               the emitted and light sources'\n"
+      "                               power (default 1e-4)\n"
       "  --area-eps=X                 smallest element, a fraction of the\n"
       "                               total area (default 1e-4)\n"
       "  --vis-rays=K                 K x K rays per link's visibility (4)\n"
@@ -998,6 +1006,8 @@ const char *zr__cli_usage(void) {
       "  --radiosity-stats            key=value statistics on stderr\n"
       "  --radiosity-save=FILE        save the solution\n"
       "  --radiosity-load=FILE        render with a saved solution\n"
+      "  --radiosity-mesh=FILE        also write the solution's mesh:\n"
+      "                               elements flat, edges drawn over\n"
       "\n"
       "  -h, --help                   show this help and exit\n"
       "  --version                    show the version and exit\n"

@@ -43,6 +43,7 @@ typedef struct zr_cli_options {
   int rad_stats;          /* --radiosity-stats: key=value lines */
   char *rad_save;         /* --radiosity-save=FILE, NULL when not given */
   char *rad_load;         /* --radiosity-load=FILE, NULL when not given */
+  char *rad_mesh;         /* --radiosity-mesh=FILE, NULL when not given */
 } zr_cli_options;
 
 /*

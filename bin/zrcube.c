@@ -307,12 +307,32 @@ static void print_radiosity_stats(const run *r) {
           "zrcube: radiosity: rounds=%d iterations=%d residual=%.3g "
           "visibility_rays=%llu seconds=%.3f\n"
           "zrcube: radiosity: emitted=%.6g absorbed=%.6g "
-          "closure_mean=%.6f closure_min=%.6f closure_max=%.6f\n",
+          "closure_mean=%.6f closure_min=%.6f closure_max=%.6f "
+          "lights=%.6g\n",
           st.surfaces, st.nodes, st.elements, st.links, st.vertices,
           st.refine_rounds, st.iterations, st.residual,
           (unsigned long long)st.visibility_rays, r->radiosity_seconds,
           st.emitted_power, st.absorbed_power, st.closure_mean,
-          st.closure_min, st.closure_max);
+          st.closure_min, st.closure_max, st.light_power);
+}
+
+/* --radiosity-mesh=FILE: the solution's mesh at the render's size, on
+   rank 0 (it depends only on the solution, the same on every rank). */
+static zr_status write_radiosity_mesh(run *r) {
+  const zr_render_params *p = &r->opts.params;
+  zr_image *mesh = NULL;
+  unsigned before = r->diag.errors_printed;
+  zr_status s = zr_image_new(p->width, p->height, &mesh);
+  if (s == ZR_OK)
+    s = zr_radiosity_mesh_image(r->rad, p, zr_image_pixels(mesh));
+  if (s == ZR_OK)
+    s = zr_image_write(r->ctx, mesh, r->opts.rad_mesh, ZR_FORMAT_AUTO,
+                       zr_scene_assumed_gamma(r->scene));
+  if (s != ZR_OK && r->diag.errors_printed == before)
+    fprintf(stderr, "zrcube: cannot write the radiosity mesh to '%s': "
+                    "%s\n", r->opts.rad_mesh, zr_status_str(s));
+  zr_image_free(mesh);
+  return s;
 }
 
 /* Step 4: the radiosity solution, on every rank. */
@@ -324,6 +344,7 @@ static int solve_radiosity(run *r) {
     return -1;
   zr_radiosity_params params;
   zr__cli_radiosity_params(&r->opts, r->scene, &params);
+  params.threads = r->threads; /* +WT: the same solution for any count */
   double start = zr__par_now();
   zr_status s;
   if (r->opts.rad_load)
@@ -351,6 +372,8 @@ static int solve_radiosity(run *r) {
         fprintf(stderr, "zrcube: cannot save the radiosity solution to "
                         "'%s': %s\n", r->opts.rad_save, zr_status_str(s));
     }
+    if (s == ZR_OK && r->opts.rad_mesh)
+      s = write_radiosity_mesh(r);
   }
   return zr__par_agree(r->par, s) == ZR_OK ? -1 : EXIT_SCENE;
 }

@@ -27,6 +27,7 @@
 
 %code requires {
 #include "sdl/sdl.h"
+#include "sdl/build_pattern.h"
 }
 
 %code provides {
@@ -41,9 +42,12 @@ int zr__pov_parse(zr_sdl_parser *p);
 
 #include "core/strbuf.h"
 #include "scene/pattern.h"
+#include "sdl/build_iso.h"
 #include "sdl/build_mesh.h"
 #include "sdl/build_shape.h"
+#include "sdl/build_surface.h"
 #include "sdl/build_camlight.h"
+#include "sdl/build_media.h"
 #include "sdl/function.h"
 
 /* A construct's location is its first token's, underlined to the end
@@ -140,6 +144,9 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
   zr_sdl_mod mod;
   zr_sdl_reflection refl;
   zr_transform *transform;
+  zr_sdl_tblock *tblock;
+  zr_sdl_fractal_head fractal;
+  const zr_fn *fn;
   zr_pigment *pigment;
   zr_sdl_pmod pmod;
   zr_sdl_clist clist;
@@ -156,6 +163,7 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
   zr_fog *fog;
   zr_sky_sphere *sky;
   zr_rainbow *rainbow;
+  zr_medium *medium;
   int token;
 }
 
@@ -163,6 +171,7 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %token T_START_SCENE "start of scene"
 %token T_START_VERSION "start of #version"
 %token T_START_PAREN "start of parenthesized expression"
+%token T_START_FN_TEXTURE "start of a function's pattern or pigment"
 
 %token <num> T_NUMBER "number"
 %token <str> T_STRING "string"
@@ -180,6 +189,25 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 /* User-defined functions: lib/sdl/function.c compiles the body. */
 %token <value> T_FUNCTION_ID "function identifier"
 %token T_FUNCTION "function"
+/* Transforms, more patterns (lib/sdl/build_pattern.c). */
+%token <value> T_TRANSFORM_ID "transform identifier"
+%token T_TRANSFORM "transform"
+%token T_MANDEL "mandel"
+%token T_JULIA "julia"
+%token T_MAGNET "magnet"
+%token T_MAX_ITERATION "max_iteration"
+%token T_EXPONENT "exponent"
+%token T_EXTERIOR "exterior"
+%token T_MIN_EXTENT "min_extent"
+%token T_PATTERN "pattern"
+%token T_TRACE "trace"
+%token T_TILES "tiles"
+%token T_TILE2 "tile2"
+%token T_FORM "form"
+%token T_METRIC "metric"
+%token T_OFFSET "offset"
+%token T_SOLID "solid"
+%token T_MAX_EXTENT "max_extent"
 
 /* Textures: patterns, colour maps, normals, image maps. */
 %token <value> T_COLOUR_MAP_ID "color_map identifier"
@@ -238,6 +266,8 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
    (lib/sdl/build_texture.c). */
 %token <value> T_MATERIAL_ID "material identifier"
 %token <value> T_SKY_SPHERE_ID "sky_sphere identifier"
+%token <value> T_CAMERA_ID "camera identifier"
+%token <value> T_LIGHT_ID "light_source identifier"
 %token T_AVERAGE "average"
 %token T_CELLS "cells"
 %token T_CONTROL0 "control0"
@@ -466,6 +496,23 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 /* Finite shapes (lib/sdl/build_shape.c). */
 %token T_BEZIER_SPLINE "bezier_spline"
 %token T_BLOB "blob"
+/* isosurface (lib/sdl/build_iso.c). */
+%token T_ISOSURFACE "isosurface"
+%token T_CONTAINED_BY "contained_by"
+%token T_ACCURACY "accuracy"
+%token T_MAX_GRADIENT "max_gradient"
+%token T_EVALUATE "evaluate"
+%token T_MAX_TRACE "max_trace"
+%token T_ALL_INTERSECTIONS "all_intersections"
+/* height_field (lib/sdl/build_hf.c). */
+%token T_HEIGHT_FIELD "height_field"
+%token T_SMOOTH "smooth"
+%token T_WATER_LEVEL "water_level"
+%token T_PGM "pgm"
+%token T_HF_GRAY_16 "hf_gray_16"
+%token T_OVUS "ovus"
+%token T_PARAMETRIC "parametric"
+%token T_PRECOMPUTE "precompute"
 %token T_COMPONENT "component"
 %token T_CONIC_SWEEP "conic_sweep"
 %token T_CUBIC_SPLINE "cubic_spline"
@@ -481,6 +528,24 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %token T_STURM "sturm"
 %token T_SUPERELLIPSOID "superellipsoid"
 %token T_TORUS "torus"
+/* bicubic_patch, sphere_sweep, julia_fractal (lib/sdl/build_surface.c). */
+%token T_B_SPLINE "b_spline"
+%token T_BICUBIC_PATCH "bicubic_patch"
+%token T_CUBE "cube"
+%token T_FLATNESS "flatness"
+%token T_HYPERCOMPLEX "hypercomplex"
+%token T_JULIA_FRACTAL "julia_fractal"
+%token T_PRECISION "precision"
+%token T_PWR "pwr"
+%token T_QUATERNION "quaternion"
+%token T_RECIPROCAL "reciprocal"
+%token T_SLICE "slice"
+%token T_SPHERE_SWEEP "sphere_sweep"
+%token T_SQR "sqr"
+%token T_TOLERANCE "tolerance"
+%token T_TYPE "type"
+%token T_U_STEPS "u_steps"
+%token T_V_STEPS "v_steps"
 /* Cameras, lights and atmosphere (lib/sdl/build_camlight.c). */
 %token T_ADAPTIVE "adaptive"
 %token T_APERTURE "aperture"
@@ -551,20 +616,51 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %token T_VISIBILITY_COUNT "visibility_count"
 %token T_MAX_ITERATIONS "max_iterations"
 %token T_RESIDUAL_BOUND "residual_bound"
+/* Media, interior_texture and photons (lib/sdl/build_media.c). */
+%token <value> T_MEDIA_ID "media identifier"
+%token <value> T_DENSITY_ID "density identifier"
+%token T_AA_LEVEL "aa_level"
+%token T_AA_THRESHOLD "aa_threshold"
+%token T_ABSORPTION "absorption"
+%token T_DENSITY "density"
+%token T_DENSITY_MAP "density_map"
+%token T_DENSITY_FILE "density_file"
+%token T_DF3 "df3"
+%token T_ECCENTRICITY "eccentricity"
+%token T_EXTINCTION "extinction"
+%token T_INTERVALS "intervals"
+%token T_METHOD "method"
+%token T_RATIO "ratio"
+%token T_SAMPLES "samples"
+%token T_SCATTERING "scattering"
+%token T_INTERIOR_TEXTURE "interior_texture"
+%token T_PHOTONS "photons"
+%token T_AUTOSTOP "autostop"
+%token T_COLLECT "collect"
+%token T_EXPAND_THRESHOLDS "expand_thresholds"
+%token T_GATHER "gather"
+%token T_PASS_THROUGH "pass_through"
+%token T_REFRACTION "refraction"
+%token T_SPACING "spacing"
+%token T_TARGET "target"
+%type <medium> media media_body scattering_body
+%type <pigment> density
+%type <map> density_map density_blocks
+%type <token> photon_kw
 %type <fog> fog_body
 %type <sky> sky_body
 %type <rainbow> rainbow_body
 
-%type <expr> expr primary colour_value colour_spec
+%type <expr> expr primary colour_value colour_spec colour_rgb colour_other
 %type <list> list
-%type <cmod> colour_item
+%type <cmod> colour_item colour_whole
 %type <token> func dot_item
 %type <value> rvalue
 /* Directive values and the expressions only they and parentheses hold
    (comparisons, logic, '? :'), strings and arrays. */
 %type <expr> cexpr
 %type <list> args dims
-%type <str> str_expr str_list
+%type <str> str_expr str_list hf_file
 %type <decl> decl_target
 %type <token> decl_end arg_end str_func init_begin
 %type <object> object object_body object_head union_head union_body
@@ -572,11 +668,17 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %type <object> poly_head poly_coefs
 %type <object> prism_start prism_head lathe_start lathe_head
 %type <object> blob_head blob_component sor_head
+%type <object> iso_head hf_head par_head
+%type <fn> par_fn
 %type <expr> blob_strength
 %type <token> prism_option
 %type <mod> object_mod
 %type <token> rad_kw
-%type <transform> transform
+%type <transform> transform transform_value
+%type <tblock> transform_block
+%type <fractal> fractal fractal_head
+%type <fn> fn_pattern
+%type <object> pattern_object
 %type <pigment> pigment pigment_start pigment_body
 %type <token> pattern_kw block_kw
 %type <clist> colour_list colour_list_items
@@ -594,14 +696,17 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %type <token> spiral_kw
 %type <expr> colour_kw_value
 %type <interior> interior interior_head interior_body
-%type <light> light_body
+%type <light> light_body light_done light_object
 %type <object> mesh_head mesh2_head mesh2_list texture_list
 %type <texture> mesh_texture
 %type <token> mesh2_keyword
+%type <object> patch_head sweep_head julia_head
+%type <token> patch_item sweep_spline julia_function
 
 /* OPTIONAL_COMMA ranks below the operators, so "<0,0,0> -1" reads as a
    subtraction, as in POV-Ray, rather than as a missing comma. */
 %precedence OPTIONAL_COMMA
+%precedence T_OPEN /* isosurface { ... open }: see iso_head */
 %right '?'
 %left '|'
 %left '&'
@@ -653,6 +758,12 @@ start:
     }
 | T_START_INDEX '[' cexpr ']'  { p->nested_value = $3; YYACCEPT; }
 | T_START_DEFAULT '{' default_items '}'  { YYACCEPT; }
+/* function { pigment { ... } } and function { pattern { ... } }
+   (lib/sdl/function.c): nothing is read past the closing brace. */
+| T_START_FN_TEXTURE pigment
+    { p->nested_rvalue = pointer_value(ZR_SDL_PIGMENT, $2); YYACCEPT; }
+| T_START_FN_TEXTURE T_PATTERN '{' pigment_body '}'
+    { p->nested_rvalue = pointer_value(ZR_SDL_PIGMENT, $4); YYACCEPT; }
 ;
 
 items:
@@ -661,13 +772,7 @@ items:
 ;
 
 item:
-  object
-    {
-      if (zr__scene_add_object(p->scene, $1) != ZR_OK) {
-        zr__sdl_error(p, ZR_ENOMEM, &@1, "out of memory");
-        YYABORT;
-      }
-    }
+  object               { TRY(zr__sdl_add_object(p, $1, &@1)); }
 | camera
 | light
 | background
@@ -675,6 +780,7 @@ item:
 | sky_body '}'         { TRY(zr__sdl_sky_end(p, $1, &@1)); }
 | rainbow_body '}'     { TRY(zr__sdl_rainbow_end(p, $1, &@1)); }
 | global_settings
+| media                { TRY(zr__sdl_atmosphere_media(p, $1)); }
 ;
 
 /* ---- #declare and #local (run by the engine through T_START_DECL) ---- */
@@ -715,16 +821,31 @@ rvalue:
 | T_FINISH_ID   { $$ = $1; }
 | T_TEXTURE_ID  { $$ = $1; }
 | T_INTERIOR_ID { $$ = $1; }
+| T_MEDIA_ID    { $$ = $1; }
+| media         { $$ = pointer_value(ZR_SDL_MEDIA, $1); }
+| T_DENSITY_ID  { $$ = $1; }
+| density       { $$ = pointer_value(ZR_SDL_DENSITY, $1); }
 | T_OBJECT_ID   { $$ = $1; }
 | T_NORMAL_ID   { $$ = $1; }
 | T_COLOUR_MAP_ID { $$ = $1; }
 | T_MATERIAL_ID { $$ = $1; }
 | T_SKY_SPHERE_ID { $$ = $1; }
 | sky_body '}'  { $$ = pointer_value(ZR_SDL_SKY_SPHERE, $1); }
+| T_CAMERA_ID   { $$ = $1; }
+| T_LIGHT_ID    { $$ = $1; }
+| light_done    { $$ = pointer_value(ZR_SDL_LIGHT, $1); }
+| camera
+    {
+      const zr_camera *c;
+      TRY(c = zr__sdl_camera_value(p));
+      $$ = pointer_value(ZR_SDL_CAMERA, c);
+    }
 | material      { $$ = pointer_value(ZR_SDL_MATERIAL, $1); }
 | normal        { $$ = pointer_value(ZR_SDL_NORMAL, $1); }
 | colour_map    { $$ = pointer_value(ZR_SDL_COLOUR_MAP, $1); }
 | T_FUNCTION_ID { $$ = $1; }
+| T_TRANSFORM_ID { $$ = $1; }
+| transform_value { $$ = pointer_value(ZR_SDL_TRANSFORM, $1); }
 | T_FUNCTION
     {
       /* The state after 'function' only reduces, so bison has read
@@ -773,6 +894,14 @@ rvalue:
       TRY(zr__sdl_array_init(p, a, (size_t)$3, &@$));
       $$ = pointer_value(ZR_SDL_ARRAY, a);
     }
+;
+
+/* trace()'s fourth argument names the variable that gets the normal,
+   declared or not: the state after its ',' only reduces this, so the
+   engine has not read the name yet when it is told to hand it over as
+   a name. */
+trace_normal:
+  %empty               { p->want_decl_name = true; p->decl_local = false; }
 ;
 
 /* ---- #default ---- */
@@ -970,6 +1099,12 @@ primary:
       TRY(zr__sdl_dimension_size(p, $3.ptr, d, &@5, &$$));
     }
 | T_RAND '(' T_SEED_ID ')' { $$ = zr__sdl_float(zr__sdl_rand($3.ptr)); }
+| T_TRACE '(' T_OBJECT_ID ',' expr ',' expr ')'
+    { TRY(zr__sdl_trace(p, $3.ptr, &$5, &$7, NULL, &@$, &$$)); }
+| T_TRACE '(' T_OBJECT_ID ',' expr ',' expr ',' trace_normal T_DECL_NAME ')'
+    { TRY(zr__sdl_trace(p, $3.ptr, &$5, &$7, &$10, &@$, &$$)); }
+| T_MIN_EXTENT '(' T_OBJECT_ID ')'  { $$ = zr__sdl_extent(p, $3.ptr, false); }
+| T_MAX_EXTENT '(' T_OBJECT_ID ')'  { $$ = zr__sdl_extent(p, $3.ptr, true); }
 | T_INSIDE '(' T_OBJECT_ID ',' expr ')'
     { TRY(zr__sdl_inside(p, $3.ptr, &$5, &@5, &$$)); }
 | T_VTURBULENCE '(' expr ',' expr ',' expr ',' expr ')'
@@ -1052,27 +1187,58 @@ colour_kw_value:
     }
 ;
 
+/* A colour is an expression, or rgb/rgbf/rgbt/rgbft and then any
+   component items ("rgb <0,1,0> red 1"), or component items alone.  A
+   second rgb starts another colour, as in POV-Ray, where "color rgb 1
+   rgb 0" is an error and "checker rgb 1 rgb <1,0,0>" two colours. */
 colour_spec:
+  colour_rgb
+| colour_other
+;
+
+colour_rgb:
+  colour_whole
+    {
+      $$ = zr__sdl_colour_expr(zr_colour5(0, 0, 0, 0, 0));
+      TRY(zr__sdl_colour_apply(p, &$$, &$1));
+    }
+| colour_rgb colour_item
+    { $$ = $1; TRY(zr__sdl_colour_apply(p, &$$, &$2)); }
+;
+
+colour_other:
   cexpr
 | colour_item
     {
       $$ = zr__sdl_colour_expr(zr_colour5(0, 0, 0, 0, 0));
       TRY(zr__sdl_colour_apply(p, &$$, &$1));
     }
-| colour_spec colour_item
+| colour_other colour_item
     { $$ = $1; TRY(zr__sdl_colour_apply(p, &$$, &$2)); }
 ;
 
+colour_whole:
+  T_RGB expr %prec OPTIONAL_COMMA
+    { $$.token = T_RGB; $$.value = $2; $$.loc = @2; }
+| T_RGBF expr %prec OPTIONAL_COMMA
+    { $$.token = T_RGBF; $$.value = $2; $$.loc = @2; }
+| T_RGBT expr %prec OPTIONAL_COMMA
+    { $$.token = T_RGBT; $$.value = $2; $$.loc = @2; }
+| T_RGBFT expr %prec OPTIONAL_COMMA
+    { $$.token = T_RGBFT; $$.value = $2; $$.loc = @2; }
+;
+
 colour_item:
-  T_RGB expr      { $$.token = T_RGB; $$.value = $2; $$.loc = @2; }
-| T_RGBF expr     { $$.token = T_RGBF; $$.value = $2; $$.loc = @2; }
-| T_RGBT expr     { $$.token = T_RGBT; $$.value = $2; $$.loc = @2; }
-| T_RGBFT expr    { $$.token = T_RGBFT; $$.value = $2; $$.loc = @2; }
-| T_RED expr      { $$.token = T_RED; $$.value = $2; $$.loc = @2; }
-| T_GREEN expr    { $$.token = T_GREEN; $$.value = $2; $$.loc = @2; }
-| T_BLUE expr     { $$.token = T_BLUE; $$.value = $2; $$.loc = @2; }
-| T_FILTER expr   { $$.token = T_FILTER; $$.value = $2; $$.loc = @2; }
-| T_TRANSMIT expr { $$.token = T_TRANSMIT; $$.value = $2; $$.loc = @2; }
+  T_RED expr %prec OPTIONAL_COMMA
+    { $$.token = T_RED; $$.value = $2; $$.loc = @2; }
+| T_GREEN expr %prec OPTIONAL_COMMA
+    { $$.token = T_GREEN; $$.value = $2; $$.loc = @2; }
+| T_BLUE expr %prec OPTIONAL_COMMA
+    { $$.token = T_BLUE; $$.value = $2; $$.loc = @2; }
+| T_FILTER expr %prec OPTIONAL_COMMA
+    { $$.token = T_FILTER; $$.value = $2; $$.loc = @2; }
+| T_TRANSMIT expr %prec OPTIONAL_COMMA
+    { $$.token = T_TRANSMIT; $$.value = $2; $$.loc = @2; }
 ;
 
 /* ---- objects ---- */
@@ -1171,7 +1337,15 @@ object_head:
 | prism_head           { TRY(zr__sdl_prism_done(p, $1, &@1)); $$ = $1; }
 | lathe_head           { TRY(zr__sdl_lathe_done(p, $1, &@1)); $$ = $1; }
 | blob_head
+| iso_head %prec OPTIONAL_COMMA
+| hf_head              { TRY(zr__sdl_height_field_done(p, $1, &@1)); $$ = $1; }
+| par_head
+| T_OVUS '{' expr comma expr
+    { TRY($$ = zr__sdl_ovus(p, &@1, &$3, &@3, &$5, &@5)); }
 | sor_head             { TRY(zr__sdl_sor_done(p, $1, &@1)); $$ = $1; }
+| patch_head           { TRY(zr__sdl_patch_done(p, $1, &@1)); $$ = $1; }
+| sweep_head           { TRY(zr__sdl_sweep_done(p, $1, &@1)); $$ = $1; }
+| julia_head           { TRY(zr__sdl_julia_done(p, $1, &@1)); $$ = $1; }
 | mesh_head            { TRY(zr__sdl_mesh_done(p, $1, &@1)); $$ = $1; }
 | mesh2_head           { TRY(zr__sdl_mesh_done(p, $1, &@1)); $$ = $1; }
 | T_SMOOTH_TRIANGLE '{' expr comma expr comma expr comma expr comma expr
@@ -1303,6 +1477,146 @@ blob_strength:
 | T_STRENGTH expr      { $$ = $2; }
 ;
 
+/* isosurface { function { ... } [contained_by { sphere | box }]
+   [threshold T] [accuracy A] [max_gradient G] [evaluate P0, P1, P2]
+   [open] [max_trace N | all_intersections] } (reference manual,
+   "Isosurface").  As for a declared function, the state after
+   'function' only reduces, so the compiler reads the body from the
+   token array.  open among these items is the isosurface's (T_OPEN
+   outranks the reduction to object_head), after them the object
+   modifier's, which means the same. */
+iso_head:
+  T_ISOSURFACE '{' T_FUNCTION
+    {
+      if (yychar != ZR__POV_EMPTY) {
+        zr__sdl_error(p, ZR_ESYNTAX, &@3, "internal error: the parser "
+                      "looked past 'function'");
+        YYABORT;
+      }
+      const zr_fn *fn = zr__sdl_function_parse(p, &@3);
+      TRY(fn);
+      TRY($$ = zr__sdl_isosurface_new(p, &@1, fn, &@3));
+    }
+| iso_head T_CONTAINED_BY '{' object '}'
+    { TRY(zr__sdl_isosurface_container(p, $1, $4, &@2)); $$ = $1; }
+| iso_head T_THRESHOLD expr
+    { TRY(zr__sdl_isosurface_item(p, $1, T_THRESHOLD, &$3, &@3)); $$ = $1; }
+| iso_head T_ACCURACY expr
+    { TRY(zr__sdl_isosurface_item(p, $1, T_ACCURACY, &$3, &@3)); $$ = $1; }
+| iso_head T_MAX_GRADIENT expr
+    {
+      TRY(zr__sdl_isosurface_item(p, $1, T_MAX_GRADIENT, &$3, &@3));
+      $$ = $1;
+    }
+| iso_head T_MAX_TRACE expr
+    { TRY(zr__sdl_isosurface_item(p, $1, T_MAX_TRACE, &$3, &@3)); $$ = $1; }
+| iso_head T_ALL_INTERSECTIONS
+    {
+      TRY(zr__sdl_isosurface_item(p, $1, T_ALL_INTERSECTIONS, NULL, &@2));
+      $$ = $1;
+    }
+| iso_head T_EVALUATE expr comma expr comma expr
+    {
+      zr_sdl_expr e[3] = {$3, $5, $7};
+      zr_sdl_loc at[3] = {@3, @5, @7};
+      TRY(zr__sdl_isosurface_item(p, $1, T_EVALUATE, e, at));
+      $$ = $1;
+    }
+| iso_head T_OPEN
+    {
+      $1->u.isosurface.open = true;
+      $$ = $1;
+    }
+;
+
+/* height_field { [png | pgm | ppm | jpeg] "file" | function W, H { ... }
+   [smooth] [water_level L] [hierarchy [B]] } (reference manual, "Height
+   Field"); the file's own bytes say what it is.  The function's '{' is
+   shifted, then its body read from the token array. */
+hf_head:
+  T_HEIGHT_FIELD '{' hf_file
+    { TRY($$ = zr__sdl_height_field_image(p, &@1, $3, &@3)); }
+| T_HEIGHT_FIELD '{' T_FUNCTION expr comma expr '{'
+    {
+      const zr_fn *fn = zr__sdl_height_field_fn_body(p, &@7);
+      TRY(fn);
+      zr_sdl_expr e[2] = {$4, $6};
+      zr_sdl_loc at[2] = {@4, @6};
+      TRY($$ = zr__sdl_height_field_function(p, &@1, e, at, fn, &@3));
+    }
+| hf_head T_SMOOTH
+    { TRY(zr__sdl_height_field_item(p, $1, T_SMOOTH, NULL, &@2)); $$ = $1; }
+| hf_head T_WATER_LEVEL expr
+    {
+      TRY(zr__sdl_height_field_item(p, $1, T_WATER_LEVEL, &$3, &@3));
+      $$ = $1;
+    }
+/* hierarchy only switches POV-Ray's inner bounding: no picture change. */
+| hf_head T_HIERARCHY expr  { $$ = $1; }
+| hf_head T_HIERARCHY       { $$ = $1; }
+;
+
+/* parametric { function { x(u, v) } function { y(u, v) }
+   function { z(u, v) } <u1, v1>, <u2, v2> [contained_by { sphere | box }]
+   [max_gradient G] [accuracy A] [precompute DEPTH, x, y, z] } (reference
+   manual, "Parametric").  precompute only speeds POV-Ray up: it is read
+   and checked. */
+par_head:
+  T_PARAMETRIC '{' par_fn comma par_fn comma par_fn comma expr comma expr
+    {
+      const zr_fn *fn[3] = {$3, $5, $7};
+      zr_sdl_loc fl[3] = {@3, @5, @7};
+      zr_sdl_expr e[2] = {$9, $11};
+      zr_sdl_loc at[2] = {@9, @11};
+      TRY($$ = zr__sdl_parametric_new(p, &@1, fn, fl, e, at));
+    }
+| par_head T_CONTAINED_BY '{' object '}'
+    { TRY(zr__sdl_parametric_container(p, $1, $4, &@2)); $$ = $1; }
+| par_head T_MAX_GRADIENT expr
+    {
+      TRY(zr__sdl_parametric_item(p, $1, T_MAX_GRADIENT, &$3, &@3));
+      $$ = $1;
+    }
+| par_head T_ACCURACY expr
+    { TRY(zr__sdl_parametric_item(p, $1, T_ACCURACY, &$3, &@3)); $$ = $1; }
+| par_head T_PRECOMPUTE expr par_vars
+    {
+      TRY(zr__sdl_parametric_item(p, $1, T_PRECOMPUTE, &$3, &@3));
+      $$ = $1;
+    }
+;
+
+par_fn:
+  T_FUNCTION
+    {
+      if (yychar != ZR__POV_EMPTY) {
+        zr__sdl_error(p, ZR_ESYNTAX, &@1, "internal error: the parser "
+                      "looked past 'function'");
+        YYABORT;
+      }
+      TRY($$ = zr__sdl_function_parse(p, &@1));
+    }
+;
+
+par_vars:
+  par_var
+| par_vars comma par_var
+;
+
+par_var:
+  T_X
+| T_Y
+| T_Z
+;
+
+hf_file:
+  str_expr
+| T_PNG str_expr       { $$ = $2; }
+| T_PGM str_expr       { $$ = $2; }
+| T_PPM str_expr       { $$ = $2; }
+| T_JPEG str_expr      { $$ = $2; }
+;
+
 /* sor { N, <Point>... } (reference manual, "Surface of Revolution"). */
 sor_head:
   T_SOR '{' expr %prec OPTIONAL_COMMA
@@ -1311,6 +1625,88 @@ sor_head:
     { TRY(zr__sdl_sor_point(p, $1, &$3, &@3)); $$ = $1; }
 | sor_head expr %prec OPTIONAL_COMMA
     { TRY(zr__sdl_sor_point(p, $1, &$2, &@2)); $$ = $1; }
+;
+
+/* bicubic_patch { type T flatness F u_steps U v_steps V <P1> ... <P16>
+   [uv_vectors <C1> <C2> <C3> <C4>] } (reference manual, "Bicubic
+   Patch"); the commas between points may be left out. */
+patch_head:
+  T_BICUBIC_PATCH '{'  { TRY($$ = zr__sdl_patch_new(p, &@1)); }
+| patch_head patch_item expr %prec OPTIONAL_COMMA
+    {
+      TRY(zr__sdl_patch_item(p, $1, (zr_sdl_patch_item)$2, &$3, &@3));
+      $$ = $1;
+    }
+| patch_head expr %prec OPTIONAL_COMMA
+    { TRY(zr__sdl_patch_point(p, $1, &$2, &@2)); $$ = $1; }
+| patch_head ',' expr %prec OPTIONAL_COMMA
+    { TRY(zr__sdl_patch_point(p, $1, &$3, &@3)); $$ = $1; }
+| patch_head T_UV_VECTORS expr comma expr comma expr comma expr
+  %prec OPTIONAL_COMMA
+    {
+      zr_sdl_expr e[4] = {$3, $5, $7, $9};
+      zr_sdl_loc at[4] = {@3, @5, @7, @9};
+      TRY(zr__sdl_patch_uv(p, $1, e, at));
+      $$ = $1;
+    }
+;
+
+patch_item:
+  T_TYPE               { $$ = ZR_SDL_PATCH_TYPE; }
+| T_FLATNESS           { $$ = ZR_SDL_PATCH_FLATNESS; }
+| T_U_STEPS            { $$ = ZR_SDL_PATCH_U_STEPS; }
+| T_V_STEPS            { $$ = ZR_SDL_PATCH_V_STEPS; }
+;
+
+/* sphere_sweep { SPLINE N, <Centre>, Radius ... [tolerance T] }
+   (reference manual, "Sphere Sweep"). */
+sweep_head:
+  T_SPHERE_SWEEP '{' sweep_spline expr %prec OPTIONAL_COMMA
+    { TRY($$ = zr__sdl_sweep_new(p, &@1, $3, &$4, &@4)); }
+| sweep_head ',' expr %prec OPTIONAL_COMMA
+    { TRY(zr__sdl_sweep_item(p, $1, &$3, &@3)); $$ = $1; }
+| sweep_head expr %prec OPTIONAL_COMMA
+    { TRY(zr__sdl_sweep_item(p, $1, &$2, &@2)); $$ = $1; }
+| sweep_head T_TOLERANCE expr %prec OPTIONAL_COMMA
+    { TRY(zr__sdl_sweep_tolerance(p, $1, &$3, &@3)); $$ = $1; }
+;
+
+sweep_spline:
+  T_LINEAR_SPLINE      { $$ = 0; }
+| T_B_SPLINE           { $$ = 1; }
+| T_CUBIC_SPLINE       { $$ = 2; }
+;
+
+/* julia_fractal { <P> [quaternion | hypercomplex] [FUNCTION]
+   [max_iteration N] [precision P] [slice <N>, D] } (reference manual,
+   "Julia Fractal"). */
+julia_head:
+  T_JULIA_FRACTAL '{' expr
+    { TRY($$ = zr__sdl_julia_new(p, &@1, &$3, &@3)); }
+| julia_head T_QUATERNION  { zr__sdl_julia_algebra($1, 0); $$ = $1; }
+| julia_head T_HYPERCOMPLEX  { zr__sdl_julia_algebra($1, 1); $$ = $1; }
+| julia_head julia_function
+    { TRY(zr__sdl_julia_function(p, $1, $2, &@2)); $$ = $1; }
+| julia_head T_PWR '(' expr ',' expr ')'
+    { TRY(zr__sdl_julia_pwr(p, $1, &$4, &@4, &$6, &@6)); $$ = $1; }
+| julia_head T_MAX_ITERATION expr
+    { TRY(zr__sdl_julia_iterations(p, $1, &$3, &@3)); $$ = $1; }
+| julia_head T_PRECISION expr
+    { TRY(zr__sdl_julia_precision(p, $1, &$3, &@3)); $$ = $1; }
+| julia_head T_SLICE expr comma expr
+    { TRY(zr__sdl_julia_slice(p, $1, &$3, &@3, &$5, &@5)); $$ = $1; }
+;
+
+julia_function:
+  T_SQR { $$ = T_SQR; }     | T_CUBE { $$ = T_CUBE; }
+| T_RECIPROCAL { $$ = T_RECIPROCAL; }
+| T_EXP { $$ = T_EXP; }     | T_LN { $$ = T_LN; }
+| T_SIN { $$ = T_SIN; }     | T_ASIN { $$ = T_ASIN; }
+| T_SINH { $$ = T_SINH; }   | T_ASINH { $$ = T_ASINH; }
+| T_COS { $$ = T_COS; }     | T_ACOS { $$ = T_ACOS; }
+| T_COSH { $$ = T_COSH; }   | T_ACOSH { $$ = T_ACOSH; }
+| T_TAN { $$ = T_TAN; }     | T_ATAN { $$ = T_ATAN; }
+| T_TANH { $$ = T_TANH; }   | T_ATANH { $$ = T_ATANH; }
 ;
 
 /* ---- meshes (reference manual, "Mesh" and "Mesh2") ---- */
@@ -1402,6 +1798,8 @@ union_head:
     { TRY($$ = zr__sdl_object_new(p, ZR_OBJ_INTERSECTION, &@1)); }
 | T_MERGE '{'          { TRY($$ = zr__sdl_object_new(p, ZR_OBJ_MERGE, &@1)); }
 | union_head object    { TRY(zr__sdl_union_add(p, $1, $2)); $$ = $1; }
+| union_head light_done
+    { TRY(zr__sdl_csg_add_light(p, $1, $2)); $$ = $1; }
 ;
 
 /* poly { Order, <A1, ..., An> }, cubic { <...> }, quartic { <...> }:
@@ -1433,6 +1831,8 @@ difference_head:
     { TRY($$ = zr__sdl_object_new(p, ZR_OBJ_INTERSECTION, &@1)); }
 | difference_head object
     { TRY(zr__sdl_difference_add(p, $1, $2)); $$ = $1; }
+| difference_head light_done
+    { TRY(zr__sdl_csg_add_light(p, $1, $2)); $$ = $1; }
 ;
 
 union_body:
@@ -1462,6 +1862,14 @@ object_mod:
       $$ = make_mod(ZR_SDL_MOD_IGNORED, NULL);
     }
 | T_INVERSE            { $$ = make_mod(ZR_SDL_MOD_INVERSE, NULL); }
+| T_INTERIOR_TEXTURE '{' texture_body '}'
+    {
+      TRY(zr__sdl_texture_done(p, $3));
+      $$ = make_mod(ZR_SDL_MOD_INTERIOR_TEXTURE, $3);
+    }
+/* zRcube has no photon mapping, and POV-Ray ignores an object's photons
+   block without global photons settings (which warn). */
+| T_PHOTONS '{' photon_items '}'  { $$ = make_mod(ZR_SDL_MOD_IGNORED, NULL); }
 | T_OPEN               { $$ = make_mod(ZR_SDL_MOD_OPEN, NULL); }
 | T_HOLLOW             { $$ = make_mod(ZR_SDL_MOD_HOLLOW, NULL); }
 | T_HOLLOW expr
@@ -1508,12 +1916,33 @@ clip_objects:
 ;
 
 transform:
-  T_SCALE expr         { TRY($$ = zr__sdl_transform(p, T_SCALE, &$2, &@2)); }
-| T_ROTATE expr        { TRY($$ = zr__sdl_transform(p, T_ROTATE, &$2, &@2)); }
-| T_TRANSLATE expr
+  T_SCALE expr %prec OPTIONAL_COMMA
+    { TRY($$ = zr__sdl_transform(p, T_SCALE, &$2, &@2)); }
+| T_ROTATE expr %prec OPTIONAL_COMMA
+    { TRY($$ = zr__sdl_transform(p, T_ROTATE, &$2, &@2)); }
+| T_TRANSLATE expr %prec OPTIONAL_COMMA
     { TRY($$ = zr__sdl_transform(p, T_TRANSLATE, &$2, &@2)); }
 | T_MATRIX '<' list '>'
     { TRY($$ = zr__sdl_matrix(p, &$3, &@3)); }
+| transform_value
+;
+
+/* transform Name and transform { ... } ("Transformations"): inverse
+   anywhere in a block inverts the whole block, as in POV-Ray. */
+transform_value:
+  T_TRANSFORM T_TRANSFORM_ID
+    { TRY($$ = zr__sdl_transform_copy(p, $2.ptr)); }
+| T_TRANSFORM '{' transform_block '}'
+    { TRY($$ = zr__sdl_transform_block_end(p, $3)); }
+;
+
+transform_block:
+  %empty               { TRY($$ = zr__sdl_transform_block_new(p)); }
+| transform_block transform
+    { zr__sdl_transform_block_add($1, $2); $$ = $1; }
+| transform_block T_TRANSFORM_ID
+    { zr__sdl_transform_block_add($1, $2.ptr); $$ = $1; }
+| transform_block T_INVERSE  { $1->inverse = true; $$ = $1; }
 ;
 
 /* ---- textures ---- */
@@ -1527,6 +1956,8 @@ pigment:
 pigment_start:
   %empty               { TRY($$ = zr__sdl_pigment_new(p, NULL)); }
 | T_PIGMENT_ID         { TRY($$ = zr__sdl_pigment_new(p, $1.ptr)); }
+/* density { DENSITY_IDENTIFIER ... } (build_media.c). */
+| T_DENSITY_ID         { TRY($$ = zr__sdl_pigment_new(p, $1.ptr)); }
 | colour_value
     {
       TRY($$ = zr__sdl_pigment_new(p, NULL));
@@ -1560,6 +1991,32 @@ pigment_body:
       TRY(zr__sdl_spiral_arms(p, &$1->pattern, &$3, &@3));
       $$ = $1;
     }
+| pigment_body fractal
+    {
+      TRY(zr__sdl_pigment_pattern(p, $1, $2.kind, NULL));
+      zr__sdl_fractal_set(&$1->pattern, &$2);
+      $$ = $1;
+    }
+/* object { OBJECT Outside, Inside } ("Object Pattern"). */
+| pigment_body T_OBJECT '{' pattern_object colour_list '}'
+    {
+      TRY(zr__sdl_pigment_pattern(p, $1, ZR_PAT_OBJECT, &$5));
+      $1->pattern.object = $4;
+      $$ = $1;
+    }
+| pigment_body T_OBJECT '{' pattern_object pigment_blocks '}'
+    {
+      TRY(zr__sdl_pigment_pattern(p, $1, ZR_PAT_OBJECT, NULL));
+      $1->pattern.object = $4;
+      TRY(zr__sdl_pigment_map_set(p, $1, $5, &@5));
+      $$ = $1;
+    }
+| pigment_body fn_pattern
+    {
+      TRY(zr__sdl_pigment_pattern(p, $1, ZR_PAT_FUNCTION, NULL));
+      TRY(zr__sdl_pattern_function(p, &$1->pattern, $2, &@2));
+      $$ = $1;
+    }
 | pigment_body T_PIGMENT_PATTERN '{' pigment_body '}'
     {
       TRY(zr__sdl_pigment_pattern(p, $1, ZR_PAT_PIGMENT_PATTERN, NULL));
@@ -1568,6 +2025,19 @@ pigment_body:
     }
 | pigment_body pigment_map
     { TRY(zr__sdl_pigment_map_set(p, $1, $2, &@2)); $$ = $1; }
+/* A density's own items (build_media.c): its body is a pigment's. */
+| pigment_body density_map
+    { TRY(zr__sdl_pigment_map_set(p, $1, $2, &@2)); $$ = $1; }
+| pigment_body T_DENSITY_FILE T_DF3 str_expr
+    { TRY(zr__sdl_density_file(p, $1, $4, &@4)); $$ = $1; }
+| pigment_body T_INTERPOLATE expr
+    { TRY(zr__sdl_density_interpolate(p, &$1->pattern, &$3, &@3)); $$ = $1; }
+| pigment_body block_kw density_blocks
+    {
+      TRY(zr__sdl_pigment_pattern(p, $1, $2, NULL));
+      TRY(zr__sdl_pigment_map_set(p, $1, $3, &@3));
+      $$ = $1;
+    }
 | pigment_body T_GRADIENT expr
     {
       TRY(zr__sdl_pigment_pattern(p, $1, ZR_PAT_GRADIENT, NULL));
@@ -1596,6 +2066,44 @@ pattern_kw:
 | T_WOOD { $$ = ZR_PAT_WOOD; }           | T_WRINKLES { $$ = ZR_PAT_WRINKLES; }
 | T_AVERAGE { $$ = ZR_PAT_AVERAGE; }     | T_CELLS { $$ = ZR_PAT_CELLS; }
 | T_QUILTED { $$ = ZR_PAT_QUILTED; }
+;
+
+/* mandel Iterations, julia <C>, Iterations, magnet 1|2 mandel ...
+   ("Fractal Pattern"); exponent, interior and exterior are pattern
+   modifiers. */
+fractal:
+  fractal_head
+| T_MAGNET expr fractal_head
+    { $$ = $3; TRY(zr__sdl_fractal_magnet(p, &$$, &$2, &@2)); }
+;
+
+fractal_head:
+  T_MANDEL expr %prec OPTIONAL_COMMA
+    { TRY(zr__sdl_fractal_head(p, &$$, ZR_PAT_MANDEL, NULL, NULL, &$2, &@2)); }
+| T_JULIA expr comma expr %prec OPTIONAL_COMMA
+    {
+      TRY(zr__sdl_fractal_head(p, &$$, ZR_PAT_JULIA, &$2, &@2, &$4, &@4));
+    }
+;
+
+/* The object of an object pattern. */
+pattern_object:
+  T_OBJECT_ID          { TRY($$ = zr__sdl_object_copy(p, $1.ptr)); }
+| object
+;
+
+/* function { ... } as a pattern: compiled like a declared function's
+   body (the state after 'function' only reduces, see rvalue). */
+fn_pattern:
+  T_FUNCTION
+    {
+      if (yychar != ZR__POV_EMPTY) {
+        zr__sdl_error(p, ZR_ESYNTAX, &@1, "internal error: the parser "
+                      "looked past 'function'");
+        YYABORT;
+      }
+      TRY($$ = zr__sdl_function_parse(p, &@1));
+    }
 ;
 
 /* spiral1 and spiral2 take their number of arms. */
@@ -1666,6 +2174,15 @@ pigment_map_body:
     {
       zr_map_entry e = {.u.pigment = $5};
       TRY(zr__sdl_map_add(p, $1, &$3, &@3, &e));
+      $$ = $1;
+    }
+/* An average's entry may leave out its weight, 1, when its pigment
+   starts with a function ("[function { ... } color_map { ... }]"). */
+| pigment_map_body '[' fn_pattern pigment_body ']'
+    {
+      TRY(zr__sdl_pigment_function_entry(p, $4, $3, &@3));
+      zr_map_entry e = {.u.pigment = $4};
+      TRY(zr__sdl_map_add_weight1(p, $1, &e));
       $$ = $1;
     }
 ;
@@ -1745,6 +2262,8 @@ colour_list_items:
     { $$ = $1; TRY(zr__sdl_clist_add(p, &$$, &$3, &@3)); }
 | colour_list_items T_COLOUR colour_spec
     { $$ = $1; TRY(zr__sdl_clist_add(p, &$$, &$3, &@3)); }
+| colour_list_items colour_rgb
+    { $$ = $1; TRY(zr__sdl_clist_add(p, &$$, &$2, &@2)); }
 ;
 
 pattern_mod:
@@ -1768,6 +2287,15 @@ pattern_mod:
 | T_CONTROL1 expr      { $$ = make_pmod(T_CONTROL1, &$2, &@2); }
 | T_NOISE_GENERATOR expr { $$ = make_pmod(T_NOISE_GENERATOR, &$2, &@2); }
 | T_NUMBER_OF_WAVES expr { $$ = make_pmod(T_NUMBER_OF_WAVES, &$2, &@2); }
+| T_EXPONENT expr      { $$ = make_pmod(T_EXPONENT, &$2, &@2); }
+| T_FORM expr          { $$ = make_pmod(T_FORM, &$2, &@2); }
+| T_METRIC expr        { $$ = make_pmod(T_METRIC, &$2, &@2); }
+| T_OFFSET expr        { $$ = make_pmod(T_OFFSET, &$2, &@2); }
+| T_SOLID              { $$ = make_pmod(T_SOLID, NULL, &@1); }
+| T_INTERIOR expr ',' expr
+    { TRY(zr__sdl_fractal_colouring(p, T_INTERIOR, &$2, &$4, &@2, &$$)); }
+| T_EXTERIOR expr ',' expr
+    { TRY(zr__sdl_fractal_colouring(p, T_EXTERIOR, &$2, &$4, &@2, &$$)); }
 | warp_body '}'
 ;
 
@@ -1828,6 +2356,12 @@ normal_start:
 
 normal_body:
   normal_start
+| normal_body T_DENSITY_FILE T_DF3 str_expr
+    { TRY(zr__sdl_normal_density_file(p, $1, $4, NULL, &@4)); $$ = $1; }
+| normal_body T_DENSITY_FILE T_DF3 str_expr ',' expr
+    { TRY(zr__sdl_normal_density_file(p, $1, $4, &$6, &@6)); $$ = $1; }
+| normal_body T_INTERPOLATE expr
+    { TRY(zr__sdl_density_interpolate(p, &$1->pattern, &$3, &@3)); $$ = $1; }
 | normal_body pattern_kw
     { TRY(zr__sdl_normal_pattern(p, $1, $2, NULL, &@2)); $$ = $1; }
 | normal_body pattern_kw expr
@@ -1852,6 +2386,30 @@ normal_body:
     {
       TRY(zr__sdl_normal_pattern(p, $1, $2, &$5, &@5));
       TRY(zr__sdl_spiral_arms(p, &$1->pattern, &$3, &@3));
+      $$ = $1;
+    }
+| normal_body fractal
+    {
+      TRY(zr__sdl_normal_pattern(p, $1, $2.kind, NULL, &@2));
+      zr__sdl_fractal_set(&$1->pattern, &$2);
+      $$ = $1;
+    }
+| normal_body fractal comma expr
+    {
+      TRY(zr__sdl_normal_pattern(p, $1, $2.kind, &$4, &@4));
+      zr__sdl_fractal_set(&$1->pattern, &$2);
+      $$ = $1;
+    }
+| normal_body fn_pattern
+    {
+      TRY(zr__sdl_normal_pattern(p, $1, ZR_PAT_FUNCTION, NULL, &@2));
+      TRY(zr__sdl_pattern_function(p, &$1->pattern, $2, &@2));
+      $$ = $1;
+    }
+| normal_body fn_pattern expr
+    {
+      TRY(zr__sdl_normal_pattern(p, $1, ZR_PAT_FUNCTION, &$3, &@3));
+      TRY(zr__sdl_pattern_function(p, &$1->pattern, $2, &@2));
       $$ = $1;
     }
 | normal_body T_PIGMENT_PATTERN '{' pigment_body '}'
@@ -1883,6 +2441,8 @@ normal_body:
     }
 | normal_body T_BUMP_SIZE expr
     { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->amount)); $$ = $1; }
+| normal_body T_ACCURACY expr
+    { TRY(zr__sdl_normal_accuracy(p, $1, &$3, &@3)); $$ = $1; }
 | normal_body transform
     { TRY(zr__sdl_normal_transform(p, $1, $2)); $$ = $1; }
 | normal_body pattern_mod
@@ -1896,6 +2456,7 @@ image_map_head:
 | T_PNG str_expr       { TRY($$ = zr__sdl_image_map_new(p, $2, &@2)); }
 | T_JPEG str_expr      { TRY($$ = zr__sdl_image_map_new(p, $2, &@2)); }
 | T_PPM str_expr       { TRY($$ = zr__sdl_image_map_new(p, $2, &@2)); }
+| T_PGM str_expr       { TRY($$ = zr__sdl_image_map_new(p, $2, &@2)); }
 ;
 
 image_map_body:
@@ -1932,6 +2493,12 @@ finish_body:
     { TRY(zr__sdl_finish_energy(p, $1, &$3, &@3)); $$ = $1; }
 | finish_body T_DIFFUSE expr
     { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->diffuse)); $$ = $1; }
+| finish_body T_DIFFUSE expr ',' expr
+    {
+      TRY(zr__sdl_want_float(p, &$3, &@3, &$1->diffuse));
+      TRY(zr__sdl_want_float(p, &$5, &@5, &$1->diffuse_back));
+      $$ = $1;
+    }
 | finish_body T_BRILLIANCE expr
     { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->brilliance)); $$ = $1; }
 | finish_body T_PHONG expr
@@ -1974,6 +2541,13 @@ reflection:
       TRY(zr__sdl_want_rgb(p, &$1, &@1, &$$.min));
       TRY(zr__sdl_want_rgb(p, &$3, &@3, &$$.max));
       $$.max_given = true;
+    }
+| reflection T_EXPONENT expr
+    {
+      $$ = $1;
+      TRY(zr__sdl_want_float(p, &$3, &@3, &$$.exponent));
+      TRY(zr__sdl_reflection_exponent(p, $$.exponent, &@3));
+      $$.exponent_given = true;
     }
 | reflection T_FALLOFF expr
     {
@@ -2040,6 +2614,33 @@ texture_body:
     {
       zr__sdl_texture_pattern($1, $2);
       TRY(zr__sdl_texture_map_set(p, $1, $3, &@3));
+      $$ = $1;
+    }
+| texture_body fractal
+    {
+      zr__sdl_texture_pattern($1, $2.kind);
+      zr__sdl_fractal_set(&$1->pattern, &$2);
+      $$ = $1;
+    }
+| texture_body T_OBJECT '{' pattern_object texture_blocks '}'
+    {
+      zr__sdl_texture_pattern($1, ZR_PAT_OBJECT);
+      $1->pattern.object = $4;
+      TRY(zr__sdl_texture_map_set(p, $1, $5, &@5));
+      $$ = $1;
+    }
+/* tiles { TEXTURE tile2 TEXTURE }: the checker of two textures, as
+   POV-Ray before 3 wrote it ("Patterned Textures"). */
+| texture_body T_TILES '{' layered_texture T_TILE2 layered_texture '}'
+    {
+      zr__sdl_texture_pattern($1, ZR_PAT_CHECKER);
+      TRY(zr__sdl_tiles(p, $1, $4, $6, &@2));
+      $$ = $1;
+    }
+| texture_body fn_pattern
+    {
+      zr__sdl_texture_pattern($1, ZR_PAT_FUNCTION);
+      TRY(zr__sdl_pattern_function(p, &$1->pattern, $2, &@2));
       $$ = $1;
     }
 | texture_body T_PIGMENT_PATTERN '{' pigment_body '}'
@@ -2130,6 +2731,123 @@ interior_body:
     { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->fade_power)); $$ = $1; }
 | interior_body T_FADE_COLOUR colour_value
     { TRY(zr__sdl_want_rgb(p, &$3, &@3, &$1->fade_colour)); $$ = $1; }
+| interior_body media
+    { TRY(zr__sdl_interior_media(p, $1, $2)); $$ = $1; }
+;
+
+/* ---- media (reference manual, "Media"; lib/sdl/build_media.c) ---- */
+
+media:
+  media_body '}'       { TRY(zr__sdl_media_done(p, $1, &@1)); $$ = $1; }
+;
+
+media_body:
+  T_MEDIA '{'          { TRY($$ = zr__sdl_media_new(p, NULL, &@1)); }
+| T_MEDIA '{' T_MEDIA_ID
+    { TRY($$ = zr__sdl_media_new(p, $3.ptr, &@1)); }
+| media_body T_METHOD expr
+    { TRY(zr__sdl_media_item(p, $1, T_METHOD, &$3, &@3)); $$ = $1; }
+| media_body T_INTERVALS expr
+    { TRY(zr__sdl_media_item(p, $1, T_INTERVALS, &$3, &@3)); $$ = $1; }
+| media_body T_SAMPLES expr
+    { TRY(zr__sdl_media_item(p, $1, T_SAMPLES, &$3, &@3)); $$ = $1; }
+| media_body T_SAMPLES expr ',' expr
+    { TRY(zr__sdl_media_samples(p, $1, &$3, &@3, &$5, &@5)); $$ = $1; }
+| media_body T_CONFIDENCE expr
+    { TRY(zr__sdl_media_item(p, $1, T_CONFIDENCE, &$3, &@3)); $$ = $1; }
+| media_body T_VARIANCE expr
+    { TRY(zr__sdl_media_item(p, $1, T_VARIANCE, &$3, &@3)); $$ = $1; }
+| media_body T_RATIO expr
+    { TRY(zr__sdl_media_item(p, $1, T_RATIO, &$3, &@3)); $$ = $1; }
+| media_body T_JITTER expr
+    { TRY(zr__sdl_media_item(p, $1, T_JITTER, &$3, &@3)); $$ = $1; }
+| media_body T_AA_LEVEL expr
+    { TRY(zr__sdl_media_item(p, $1, T_AA_LEVEL, &$3, &@3)); $$ = $1; }
+| media_body T_AA_THRESHOLD expr
+    { TRY(zr__sdl_media_item(p, $1, T_AA_THRESHOLD, &$3, &@3)); $$ = $1; }
+| media_body T_ABSORPTION colour_value
+    { TRY(zr__sdl_media_item(p, $1, T_ABSORPTION, &$3, &@3)); $$ = $1; }
+| media_body T_EMISSION colour_value
+    { TRY(zr__sdl_media_item(p, $1, T_EMISSION, &$3, &@3)); $$ = $1; }
+/* collect: whether photons gather in the media; there are no photons. */
+| media_body T_COLLECT          { $$ = $1; }
+| media_body T_COLLECT expr     { $$ = $1; }
+| scattering_body '}'
+| media_body density
+    { TRY(zr__sdl_media_density(p, $1, $2)); $$ = $1; }
+| media_body transform
+    { TRY(zr__sdl_media_transform(p, $1, $2)); $$ = $1; }
+;
+
+/* scattering { Type, COLOR [eccentricity Value] [extinction Value] } */
+scattering_body:
+  media_body T_SCATTERING '{' expr comma colour_value
+    {
+      TRY(zr__sdl_media_scattering(p, $1, &$4, &@4, &$6, &@6));
+      $$ = $1;
+    }
+| scattering_body T_ECCENTRICITY expr
+    { TRY(zr__sdl_media_eccentricity(p, $1, &$3, &@3)); $$ = $1; }
+| scattering_body T_EXTINCTION expr
+    { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->extinction)); $$ = $1; }
+;
+
+/* density { [PATTERN_TYPE] [DENSITY_MODIFIER...] }: a pigment's body,
+   whose colour multiplies the media's ("Density"). */
+density:
+  T_DENSITY '{' pigment_body '}'  { $$ = $3; }
+;
+
+/* density_map { [Value DENSITY_BODY] ... } ("Density Maps and Density
+   Lists"), read as a pigment_map. */
+density_map:
+  T_DENSITY_MAP '{' pigment_map_body '}'
+    { TRY(zr__sdl_map_done(p, $3, "density_map", &@1)); $$ = $3; }
+;
+
+/* "checker density {A}, density {B}" */
+density_blocks:
+  density
+    {
+      zr_map_entry e = {.u.pigment = $1};
+      TRY($$ = zr__sdl_map_new(p));
+      TRY(zr__sdl_map_add_block(p, $$, &e, &@1));
+    }
+| density_blocks density
+    {
+      zr_map_entry e = {.u.pigment = $2};
+      TRY(zr__sdl_map_add_block(p, $1, &e, &@2));
+      $$ = $1;
+    }
+| density_blocks ','   { $$ = $1; }
+;
+
+/* ---- photons blocks: read, not simulated (lib/sdl/build_media.c) ---- */
+
+/* An object's or a light's photons { }, and global_settings' one. */
+photon_items:
+  %empty
+| photon_items photon_kw
+| photon_items photon_kw photon_args
+| photon_items T_LOAD_FILE str_expr
+| photon_items T_SAVE_FILE str_expr
+;
+
+photon_args:
+  expr                 {}
+| photon_args ',' expr {}
+;
+
+photon_kw:
+  T_TARGET { $$ = T_TARGET; }            | T_REFRACTION { $$ = T_REFRACTION; }
+| T_REFLECTION { $$ = T_REFLECTION; }    | T_COLLECT { $$ = T_COLLECT; }
+| T_PASS_THROUGH { $$ = T_PASS_THROUGH; } | T_AREA_LIGHT { $$ = T_AREA_LIGHT; }
+| T_SPACING { $$ = T_SPACING; }          | T_COUNT { $$ = T_COUNT; }
+| T_GATHER { $$ = T_GATHER; }            | T_MEDIA { $$ = T_MEDIA; }
+| T_JITTER { $$ = T_JITTER; }            | T_RADIUS { $$ = T_RADIUS; }
+| T_MAX_TRACE_LEVEL { $$ = T_MAX_TRACE_LEVEL; }
+| T_ADC_BAILOUT { $$ = T_ADC_BAILOUT; }  | T_AUTOSTOP { $$ = T_AUTOSTOP; }
+| T_EXPAND_THRESHOLDS { $$ = T_EXPAND_THRESHOLDS; }
 ;
 
 /* ---- camera, lights, background, global settings ---- */
@@ -2140,6 +2858,11 @@ camera:
 
 camera_body:
   T_CAMERA '{'         { zr__sdl_camera_begin(p, &@1); }
+| T_CAMERA '{' T_CAMERA_ID
+    {
+      zr__sdl_camera_begin(p, &@1);
+      zr__sdl_camera_from(p, $3.ptr);
+    }
 | camera_body T_PERSPECTIVE
     { TRY(zr__sdl_camera_type(p, ZR_CAMERA_PERSPECTIVE, NULL, &@2)); }
 | camera_body T_ORTHOGRAPHIC
@@ -2209,11 +2932,27 @@ camera_body:
 ;
 
 light:
-  light_body '}'       { TRY(zr__sdl_light_end(p, $1, &@1)); }
+  light_done           { TRY(zr__sdl_light_add(p, $1, &@1)); }
+;
+
+/* A finished light: a scene item, a #declare's value or a part of a
+   union, which it then follows.  object { LIGHT_IDENTIFIER ... } is a
+   light too, as in POV-Ray. */
+light_done:
+  light_body '}'       { TRY(zr__sdl_light_end(p, $1, &@1)); $$ = $1; }
+| light_object '}'     { $$ = $1; }
+;
+
+light_object:
+  T_OBJECT '{' T_LIGHT_ID { TRY($$ = zr__sdl_light_copy(p, $3.ptr)); }
+| light_object transform
+    { zr__sdl_light_transform(p, $1, $2); $$ = $1; }
 ;
 
 light_body:
-  T_LIGHT_SOURCE '{' expr comma colour_value
+  T_LIGHT_SOURCE '{' T_LIGHT_ID
+    { TRY($$ = zr__sdl_light_copy(p, $3.ptr)); }
+| T_LIGHT_SOURCE '{' expr comma colour_value
     {
       TRY($$ = zr__sdl_alloc(p, sizeof *$$));
       TRY(zr__sdl_light(p, $$, &@1));
@@ -2264,6 +3003,7 @@ light_body:
     { $1->media_attenuation = true; $$ = $1; }
 | light_body T_MEDIA_ATTENUATION expr
     { TRY(zr__sdl_light_bool(p, &$3, &@3, &$1->media_attenuation)); $$ = $1; }
+| light_body T_PHOTONS '{' photon_items '}'  { $$ = $1; }
 | light_body T_LOOKS_LIKE '{' object '}'
     { TRY(zr__sdl_looks_like(p, $1, $4, &@4)); $$ = $1; }
 ;
@@ -2276,39 +3016,37 @@ background:
 /* fog { } ("Fog"): items in any order; the colour is any colour. */
 fog_body:
   T_FOG '{'            { TRY($$ = zr__sdl_fog_new(p, &@1)); }
-| fog_body T_FOG_TYPE expr
+| fog_body T_FOG_TYPE expr %prec OPTIONAL_COMMA
     { TRY(zr__sdl_fog_type(p, $1, &$3, &@3)); $$ = $1; }
-| fog_body T_DISTANCE expr
+| fog_body T_DISTANCE expr %prec OPTIONAL_COMMA
     { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->distance)); $$ = $1; }
 /* The colour, item by item: "color" alone only marks it, so "color
-   Gray rgbt 0.5" and "rgb 1 transmit 0.2" read without ambiguity. */
+   Gray rgbt 0.5" and "rgb 1 transmit 0.2" read without ambiguity, and
+   a bare colour expression is one too ("fog { distance 200 Wheat*.5 }").
+   An expression after an item's value continues that value ("distance
+   200 - 50"): the items rank below the operators (OPTIONAL_COMMA). */
 | fog_body T_COLOUR    { $$ = $1; }
-| fog_body T_COLOUR '<' list '>'
-    {
-      zr_sdl_expr e;
-      TRY(zr__sdl_from_list(p, &$4, &@4, &e));
-      TRY(zr__sdl_want_colour(p, &e, &@4, &$1->colour));
-      $$ = $1;
-    }
-| fog_body T_COLOUR_ID
-    { TRY(zr__sdl_want_colour(p, &$2.num, &@2, &$1->colour)); $$ = $1; }
+| fog_body expr %prec OPTIONAL_COMMA
+    { TRY(zr__sdl_want_colour(p, &$2, &@2, &$1->colour)); $$ = $1; }
 | fog_body colour_item
     { TRY(zr__sdl_colour_item_to(p, &$2, &$1->colour)); $$ = $1; }
-| fog_body T_TURBULENCE expr
+| fog_body colour_whole
+    { TRY(zr__sdl_colour_item_to(p, &$2, &$1->colour)); $$ = $1; }
+| fog_body T_TURBULENCE expr %prec OPTIONAL_COMMA
     { TRY(zr__sdl_want_vector(p, &$3, &@3, &$1->turbulence)); $$ = $1; }
-| fog_body T_OCTAVES expr
+| fog_body T_OCTAVES expr %prec OPTIONAL_COMMA
     { TRY(zr__sdl_light_int(p, &$3, &@3, 1, &$1->octaves)); $$ = $1; }
-| fog_body T_OMEGA expr
+| fog_body T_OMEGA expr %prec OPTIONAL_COMMA
     { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->omega)); $$ = $1; }
-| fog_body T_LAMBDA expr
+| fog_body T_LAMBDA expr %prec OPTIONAL_COMMA
     { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->lambda)); $$ = $1; }
-| fog_body T_TURB_DEPTH expr
+| fog_body T_TURB_DEPTH expr %prec OPTIONAL_COMMA
     { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->turb_depth)); $$ = $1; }
-| fog_body T_FOG_OFFSET expr
+| fog_body T_FOG_OFFSET expr %prec OPTIONAL_COMMA
     { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->offset)); $$ = $1; }
-| fog_body T_FOG_ALT expr
+| fog_body T_FOG_ALT expr %prec OPTIONAL_COMMA
     { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->alt)); $$ = $1; }
-| fog_body T_UP expr
+| fog_body T_UP expr %prec OPTIONAL_COMMA
     { TRY(zr__sdl_want_vector(p, &$3, &@3, &$1->up)); $$ = $1; }
 | fog_body transform
     { TRY(zr__sdl_fog_transform(p, $1, $2)); $$ = $1; }
@@ -2367,6 +3105,12 @@ global_body:
     }
 | global_body T_ADC_BAILOUT expr
     { TRY(zr__sdl_want_float(p, &$3, &@3, &SETTINGS->adc_bailout)); }
+| global_body T_HF_GRAY_16
+    { zr__sdl_warning(p, &@2, "'hf_gray_16' is ignored since POV-Ray 3.7 "
+                      "(an output option: +FNg or Grayscale_Output)"); }
+| global_body T_HF_GRAY_16 expr
+    { zr__sdl_warning(p, &@2, "'hf_gray_16' is ignored since POV-Ray 3.7 "
+                      "(an output option: +FNg or Grayscale_Output)"); }
 | global_body T_ASSUMED_GAMMA expr
     {
       TRY(zr__sdl_want_float(p, &$3, &@3, &SETTINGS->assumed_gamma));
@@ -2398,6 +3142,8 @@ global_body:
     { TRY(zr__sdl_want_rgb(p, &$3, &@3, &SETTINGS->ambient_light)); }
 | global_body radiosity_body '}'
     { zr__sdl_radiosity_end(p, &@3); }
+| global_body T_PHOTONS '{' photon_items '}'
+    { zr__sdl_photons_global(p, &@2); }
 ;
 
 /* global_settings { radiosity { ... } }; the items' meaning here is in
@@ -2504,10 +3250,15 @@ int zr__pov_lex(ZR__POV_STYPE *lval, zr_sdl_loc *lloc, zr_sdl_parser *p) {
   case T_INTERIOR_ID:
   case T_OBJECT_ID:
   case T_FUNCTION_ID:
+  case T_TRANSFORM_ID:
   case T_NORMAL_ID:
   case T_COLOUR_MAP_ID:
   case T_MATERIAL_ID:
   case T_SKY_SPHERE_ID:
+  case T_MEDIA_ID:
+  case T_DENSITY_ID:
+  case T_CAMERA_ID:
+  case T_LIGHT_ID:
   case T_STRING_ID:
   case T_ARRAY_ID:
   case T_SEED_ID:

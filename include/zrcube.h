@@ -181,7 +181,10 @@ typedef struct zr_radiosity zr_radiosity;
 
 typedef struct zr_radiosity_params {
   /* Refine a link while B_source * F * A_receiver (see criterion)
-     exceeds bf_eps times the scene's emitted power (largest channel):
+     exceeds bf_eps times the scene's reference power (largest
+     channel): the power emitted plus the power light sources put on
+     the surfaces (lights shoot into the mesh too, and leaves are split
+     where their light varies by the same bound):
      relative, so a scene gives the same mesh at any scale or
      brightness.  Default 1e-4. */
   double bf_eps;
@@ -220,6 +223,10 @@ typedef struct zr_radiosity_params {
      solution carries between surfaces where a ray reads it (not the
      surfaces' own emission, not the solve); default 1. */
   double brightness;
+  /* Threads that refine and solve (0 or 1: the caller's alone; the
+     command line passes +WT).  The solution is the same bytes for any
+     number. */
+  int threads;
 } zr_radiosity_params;
 
 /* Fills p with the defaults above, then takes the settings of the
@@ -249,6 +256,10 @@ typedef struct zr_radiosity_stats {
      (itself and its ancestors): 1 for a side inside a closed scene.
      Area-weighted mean, minimum and maximum over sides with links. */
   double closure_mean, closure_min, closure_max;
+  /* Power the scene's light sources (point, spot, area ...) deliver
+     straight onto all sides, the same mean of channels: a closed scene
+     absorbs emitted_power (its inner sides') plus light_power. */
+  double light_power;
 } zr_radiosity_stats;
 
 /* Builds the surfaces, links and solution; errors go through ctx. */
@@ -317,6 +328,20 @@ ZR_API zr_status zr_render_pixels(const zr_scene *scene,
 ZR_API zr_status zr_render_image(const zr_scene *scene,
                                  const zr_render_params *params, float *rgb,
                                  zr_render_stats *stats);
+
+/*
+ * A picture of the solution's mesh, the check an OpenGL previewer gave:
+ * one ray through the centre of every pixel of the scene's camera at
+ * params' width and height, each element of the solution shown flat at
+ * its radiosity B / pi (light sources' direct light included), other
+ * objects and the background black, and the element edges drawn one
+ * pixel wide where a pixel's element differs from its right or lower
+ * neighbour's: black over bright elements, white over dark ones.  rgb
+ * receives width * height * 3 floats, row by row from the top.
+ */
+ZR_API zr_status zr_radiosity_mesh_image(const zr_radiosity *rad,
+                                         const zr_render_params *params,
+                                         float *rgb);
 
 /* ------------------------------------------------------------------ */
 /* Images                                                             */

@@ -5,6 +5,9 @@ scenesdir = $(pkgdatadir)/scenes
 EXTRA_DIST += scenes/README.md
 dist_scenes_DATA = \
 	scenes/blob.pov \
+	scenes/bicubic.pov \
+	scenes/julia.pov \
+	scenes/sphere_sweep.pov \
 	scenes/camera.pov \
 	scenes/cornell.pov \
 	scenes/csg_difference.pov \
@@ -13,11 +16,16 @@ dist_scenes_DATA = \
 	scenes/default.ref.pov \
 	scenes/expressions.pov \
 	scenes/gamma.pov \
+	scenes/height_field.pov \
+	scenes/isosurface.pov \
+	scenes/fractals.pov \
 	scenes/lathe.pov \
 	scenes/layered.pov \
 	scenes/maps.pov \
 	scenes/mesh.pov \
 	scenes/metallic.pov \
+	scenes/ovus.pov \
+	scenes/parametric.pov \
 	scenes/phong.pov \
 	scenes/polygon.pov \
 	scenes/patterns.pov \
@@ -37,6 +45,8 @@ dist_scenes_DATA = \
 	scenes/zfor.pov \
 	scenes/lights.pov \
 	scenes/atmosphere.pov \
+	scenes/media.pov \
+	scenes/media2.pov \
 	scenes/fisheye.pov \
 	scenes/ortho.pov \
 	scenes/zfor.ref.pov

@@ -19,9 +19,14 @@ tests_imgcmp_LDADD = lib/libzrcube.la -lm
 TESTS += tests/golden.sh
 EXTRA_DIST += tests/golden.sh tests/ref/README.md tests/ref/make-refs.sh \
 	tests/ref/blob.png \
+	tests/ref/bicubic.png \
+	tests/ref/julia.png \
+	tests/ref/sphere_sweep.png \
 	tests/ref/camera.png \
 	tests/ref/lights.png \
 	tests/ref/atmosphere.png \
+	tests/ref/media.png \
+	tests/ref/media2.png \
 	tests/ref/fisheye.png \
 	tests/ref/ortho.png \
 	tests/ref/csg_difference.png \
@@ -29,11 +34,16 @@ EXTRA_DIST += tests/golden.sh tests/ref/README.md tests/ref/make-refs.sh \
 	tests/ref/default.png \
 	tests/ref/expressions.png \
 	tests/ref/gamma.png \
+	tests/ref/height_field.png \
+	tests/ref/isosurface.png \
+	tests/ref/fractals.png \
 	tests/ref/lathe.png \
 	tests/ref/layered.png \
 	tests/ref/maps.png \
 	tests/ref/mesh.png \
 	tests/ref/metallic.png \
+	tests/ref/ovus.png \
+	tests/ref/parametric.png \
 	tests/ref/patterns.png \
 	tests/ref/phong.png \
 	tests/ref/polygon.png \

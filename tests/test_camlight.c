@@ -121,6 +121,68 @@ static void test_camlight_orthographic_view_sizes(void **state) {
   }
 }
 
+/* #declare C = camera { ... } and camera { C ... }: the declared camera
+   is the one the same block would have made, a declaration leaves the
+   scene's camera alone, and items after the identifier act on it. */
+static void test_camlight_camera_identifiers(void **state) {
+  fixture *f = *state;
+  const char *block = "camera { angle 60 location <2,2.5,-3> "
+                      "look_at <0,1,0> }\n";
+  zr_scene *s = good(f, block);
+  zr_camera direct = s->camera;
+  char text[512];
+  snprintf(text, sizeof text, "#declare C0 = camera { location -9*z }\n"
+           "#declare C1 = %scamera { C1 }\n", block);
+  s = good(f, text);
+  assert_true(s->camera.given);
+  assert_memory_equal(&s->camera.location, &direct.location,
+                      sizeof direct.location);
+  assert_memory_equal(&s->camera.direction, &direct.direction,
+                      sizeof direct.direction);
+  assert_memory_equal(&s->camera.right, &direct.right, sizeof direct.right);
+  assert_memory_equal(&s->camera.up, &direct.up, sizeof direct.up);
+  assert_near(s->camera.h_angle, direct.h_angle, 0.0);
+  /* A declaration alone: the default camera. */
+  s = good(f, "#declare C = camera { location <5,5,5> }\n");
+  assert_false(s->camera.given);
+  assert_near(s->camera.location.x, 0.0, 0.0);
+  /* A transform after the identifier moves the placed camera. */
+  s = good(f, "#declare C = camera { location -3*z look_at 0 }\n"
+              "camera { C translate 2*x }\n");
+  assert_near(s->camera.location.x, 2.0, 1e-12);
+  assert_near(s->camera.location.z, -3.0, 1e-12);
+}
+
+/* Declared lights, and lights inside unions: they follow the object's
+   transforms, and every use of a declared union brings its own. */
+static void test_camlight_lights_declared_and_in_unions(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f, "#declare L = light_source { <0, 0, 0> rgb 1 }\n");
+  assert_int_equal(s->n_lights, 0);
+  s = good(f, "#declare L = light_source { <0, 0, 0> rgb 1 }\n"
+              "light_source { L translate x }\n"
+              "object { L translate 2*z }\n");
+  assert_int_equal(s->n_lights, 2);
+  assert_near(s->lights[0].location.x, 1.0, 1e-12);
+  assert_near(s->lights[1].location.z, 2.0, 1e-12);
+  s = good(f, "#declare U = union { light_source { <1, 0, 0> rgb 1 }\n"
+              "  sphere { 0, 1 } }\n"
+              "object { U translate y }\n"
+              "object { U rotate 90*z }\n");
+  assert_int_equal(s->n_lights, 2);
+  assert_int_equal(s->n_objects, 2);
+  assert_near(s->lights[0].location.x, 1.0, 1e-12);
+  assert_near(s->lights[0].location.y, 1.0, 1e-12);
+  assert_near(s->lights[1].location.x, 0.0, 1e-12);
+  assert_near(s->lights[1].location.y, 1.0, 1e-12);
+  /* The declaration itself is unchanged by the uses. */
+  s = good(f, "#declare U = union { light_source { <1, 0, 0> rgb 1 }\n"
+              "  sphere { 0, 1 } }\n"
+              "object { U scale 3 }\nobject { U }\n");
+  assert_near(s->lights[0].location.x, 3.0, 1e-12);
+  assert_near(s->lights[1].location.x, 1.0, 1e-12);
+}
+
 /* Factors measured under a light 10 units above a white plane (diffuse
    1, ambient 0): brightness / cos(incidence). */
 static void test_camlight_spot_cylinder_fade_factors(void **state) {
@@ -207,6 +269,10 @@ static void test_camlight_fog_filter_and_transmit(void **state) {
       {"rgbt <1,0.5,0,0.5>", {0.6000, 0.5500, 0.5000}},
       {"rgbf <1,0.5,0,0.5>", {0.7057, 0.4816, 0.1839}},
       {"rgbft <1,0.5,0,0.3,0.2>", {0.7057, 0.5037, 0.2575}},
+      /* A colour expression (lights/circular.pov writes "Wheat*.5"),
+         and an item's value that goes on ("distance 1 - 0"). */
+      {"<2,1,0>*0.5", {0.7057, 0.5368, 0.3679}},
+      {"<1,0.5,0> distance 1 - 0", {0.7057, 0.5368, 0.3679}},
   };
   for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
     char text[512];
@@ -418,6 +484,10 @@ int main(void) {
                                       teardown),
       cmocka_unit_test_setup_teardown(test_camlight_looks_like, setup,
                                       teardown),
+      cmocka_unit_test_setup_teardown(test_camlight_camera_identifiers,
+                                      setup, teardown),
+      cmocka_unit_test_setup_teardown(
+          test_camlight_lights_declared_and_in_unions, setup, teardown),
       cmocka_unit_test_setup_teardown(test_camlight_bad_input, setup,
                                       teardown),
   };

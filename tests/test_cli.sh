@@ -194,7 +194,7 @@ POV
 cat >unsupported.pov <<'POV'
 camera { location <0, 1, -4> look_at 0 }
 light_source { <4, 6, -5>, color rgb 1 }
-isosurface { function { x } }
+tiff { }
 POV
 cat >noinclude.pov <<'POV'
 #include "no_such_file.inc"
@@ -215,7 +215,7 @@ bad() {
 }
 bad syntax "syntax.pov:3:1: error:" "}" syntax.pov $SIZE
 bad undefined "undefined.pov:3:21: error:" "Radius_typo" undefined.pov $SIZE
-bad unsupported "unsupported.pov:3:1: error:" "isosurface" unsupported.pov $SIZE
+bad unsupported "unsupported.pov:3:1: error:" "tiff" unsupported.pov $SIZE
 bad noinclude "noinclude.pov:1:" "no_such_file.inc" noinclude.pov $SIZE
 bad missing "zrcube: cannot open scene file 'nowhere.pov'" \
   "No such file or directory" nowhere.pov $SIZE

@@ -307,7 +307,7 @@ static void test_function_unsupported_internal(void **state) {
   /* Declaring is fine (functions.inc declares them all); using is not. */
   const char *d = "#declare f_noise3d = function { internal(76) }\n"
                   "#declare N = function { 2 * f_noise3d(x, y, z) - 1 }\n"
-                  "#declare P = function { pattern { checker } }\n";
+                  "#declare P = function { transform { scale 2 } }\n";
   char text[1024];
   snprintf(text, sizeof text, "%s#declare V = N(1, 2, 3);\n", d);
   bad(f, text, ZR_EUNSUPPORTED,
@@ -315,7 +315,8 @@ static void test_function_unsupported_internal(void **state) {
       "supported yet", NULL);
   snprintf(text, sizeof text, "%s#declare V = P(1, 2, 3);\n", d);
   bad(f, text, ZR_EUNSUPPORTED,
-      "function 'P' uses pattern functions, which is not supported yet", NULL);
+      "function 'P' uses transform functions, which is not supported yet",
+      NULL);
   bad(f, "#declare F = function { internal(77) }\n", ZR_ESCENE,
       "there is no internal function 77", NULL);
   bad(f, "#declare F = function { internal(6.5) }\n", ZR_ESCENE,
@@ -324,6 +325,30 @@ static void test_function_unsupported_internal(void **state) {
       "there is no internal function 6e+96", NULL);
   bad(f, "#declare F = function(a) { internal(61) }\n", ZR_ESYNTAX,
       "internal function 61 (f_sphere) takes 4 parameters", NULL);
+}
+
+/* function { pattern { } } and function { pigment { } } ("Function
+   Pattern"): checker's cells are exact, and a pigment function's
+   channels are its colour's (the grey weights are POV-Ray's). */
+static void test_function_pattern_and_pigment(void **state) {
+  fixture *f = *state;
+  const char *d =
+      "#declare P = function { pattern { #if (1) checker #end scale 2 } }\n"
+      "#declare C = pigment { checker rgb <1, 0.5, 0>, rgb <0, 0, 1> }\n"
+      "#declare Q = function { pigment { C } }\n"
+      "#declare G = function { Q(x, y, z).green + Q(x, y, z).gray }\n";
+  assert_true(fabs(value(f, d, "P(1, 1, 1)") - 0) < EPS);
+  assert_true(fabs(value(f, d, "P(3, 1, 1)") - 1) < EPS);
+  assert_true(fabs(value(f, d, "G(0.5, 0.5, 0.5)") -
+                   (0.5 + 0.297 + 0.589 * 0.5)) < EPS);
+  assert_true(fabs(value(f, d, "G(1.5, 0.5, 0.5)") - 0.114) < EPS);
+  /* Called directly, a pigment function gives its colour. */
+  assert_true(fabs(value(f, d, "Q(1.5, 0.5, 0.5).blue") - 1) < EPS);
+  bad(f, "#declare C = pigment { rgb 1 }\n"
+         "#declare Q = function { pigment { C } }\n"
+         "#declare G = function { Q(x, y, z) }\n",
+      ZR_ESYNTAX, "expected '.' and a colour component after a pigment "
+                  "function in function, got '}'", NULL);
 }
 
 static void test_function_errors(void **state) {
@@ -355,8 +380,6 @@ static void test_function_errors(void **state) {
       "expected an operator or '}' in function, got 'y'", NULL);
   bad(f, "#declare F = function { box }\n", ZR_ESYNTAX,
       "'box' cannot be used in a function", NULL);
-  bad(f, "#declare P = function { pattern { #if (1) checker #end } }\n",
-      ZR_ESYNTAX, "expected '}' in function, got '#if'", NULL);
   bad(f, "#declare F = function { x", ZR_ESYNTAX,
       "expected an operator or '}' in function, got end of file", NULL);
   bad(f,
@@ -594,6 +617,8 @@ int main(void) {
       cmocka_unit_test_setup_teardown(test_function_standard_includes,
                                       setup, teardown),
       cmocka_unit_test_setup_teardown(test_function_unsupported_internal,
+                                      setup, teardown),
+      cmocka_unit_test_setup_teardown(test_function_pattern_and_pigment,
                                       setup, teardown),
       cmocka_unit_test_setup_teardown(test_function_errors, setup,
                                       teardown),

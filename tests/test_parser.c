@@ -617,16 +617,17 @@ static void test_parser_custom_reader(void **state) {
 static void test_parser_syntax_error(void **state) {
   fixture *f = *state;
   bad(f, "sphere { <0, 0, 0>, 1, 2 }\n", ZR_ESYNTAX,
-      "unexpected ',', expected 'normal', 'material', 'finish', 'interior', "
-      "'inverse', 'matrix', 'no_shadow', 'open', 'pigment', 'rotate', "
-      "'scale', 'texture', 'translate', 'bounded_by', 'clipped_by', "
-      "'hollow', 'sturm', 'radiosity', 'no_radiosity', '+', '-', '*', '/', "
-      "'}' or '.'",
-      "t.pov:1:22: error: unexpected ',', expected 'normal', 'material', "
+      "unexpected ',', expected 'transform', 'normal', 'material', "
       "'finish', 'interior', 'inverse', 'matrix', 'no_shadow', 'open', "
       "'pigment', 'rotate', 'scale', 'texture', 'translate', 'bounded_by', "
-      "'clipped_by', 'hollow', 'sturm', 'radiosity', 'no_radiosity', '+', "
-      "'-', '*', '/', '}' or '.'\n"
+      "'clipped_by', 'hollow', 'sturm', 'radiosity', 'no_radiosity', "
+      "'interior_texture', 'photons', '+', '-', '*', '/', '}' or '.'",
+      "t.pov:1:22: error: unexpected ',', expected 'transform', 'normal', "
+      "'material', 'finish', 'interior', 'inverse', 'matrix', 'no_shadow', "
+      "'open', 'pigment', 'rotate', 'scale', 'texture', 'translate', "
+      "'bounded_by', 'clipped_by', 'hollow', 'sturm', 'radiosity', "
+      "'no_radiosity', 'interior_texture', 'photons', '+', '-', '*', '/', "
+      "'}' or '.'\n"
       "    1 | sphere { <0, 0, 0>, 1, 2 }\n"
       "      |                      ^\n");
   /* As in POV-Ray, "-1" after a vector subtracts: the radius is missing
@@ -636,11 +637,11 @@ static void test_parser_syntax_error(void **state) {
      (more than MAX_EXPECTED in grammar/pov.y). */
   bad(f, "sphere { 0, 1 }\n}\n", ZR_ESYNTAX, "unexpected '}'", NULL);
   bad(f, "box { 0, 1 shadowless }", ZR_ESYNTAX,
-      "unexpected 'shadowless', expected 'normal', 'material', 'finish', "
-      "'interior', 'inverse', 'matrix', 'no_shadow', 'open', 'pigment', "
-      "'rotate', 'scale', 'texture', 'translate', 'bounded_by', "
-      "'clipped_by', 'hollow', 'sturm', 'radiosity', 'no_radiosity', '+', "
-      "'-', '*', '/', '}' or '.'",
+      "unexpected 'shadowless', expected 'transform', 'normal', 'material', "
+      "'finish', 'interior', 'inverse', 'matrix', 'no_shadow', 'open', "
+      "'pigment', 'rotate', 'scale', 'texture', 'translate', 'bounded_by', "
+      "'clipped_by', 'hollow', 'sturm', 'radiosity', 'no_radiosity', "
+      "'interior_texture', 'photons', '+', '-', '*', '/', '}' or '.'",
       NULL);
   bad(f, "#declare 3 = 1;", ZR_ESYNTAX,
       "unexpected number, expected identifier", NULL);
@@ -673,13 +674,11 @@ static void test_parser_undefined_identifier(void **state) {
 
 static void test_parser_unsupported_keyword(void **state) {
   fixture *f = *state;
-  bad(f, "sphere { 0, 1 }\n  isosurface { }\n", ZR_EUNSUPPORTED,
-      "'isosurface' is not supported yet",
-      "t.pov:2:3: error: 'isosurface' is not supported yet\n"
-      "    2 |   isosurface { }\n"
-      "      |   ^~~~~~~~~~\n");
-  bad(f, "sphere { 0, 1 photons { } }", ZR_EUNSUPPORTED,
-      "'photons' is not supported yet", NULL);
+  bad(f, "sphere { 0, 1 }\n  tiff { }\n", ZR_EUNSUPPORTED,
+      "'tiff' is not supported yet",
+      "t.pov:2:3: error: 'tiff' is not supported yet\n"
+      "    2 |   tiff { }\n"
+      "      |   ^~~~\n");
   bad(f, "#statistics \"x\"", ZR_EUNSUPPORTED,
       "'#statistics' is not supported yet", NULL);
 }

@@ -19,6 +19,16 @@
 #     0.115 at the default bf_eps; 0.2 leaves room for solver changes
 #     but fails a render that lost the indirect light, which measures
 #     above 0.4);
+#   - light sources shoot into the mesh and the render adds only their
+#     interreflected light to the tracer's direct light: a floor alone
+#     under a point light renders the same bytes with and without
+#     --radiosity (nothing bounces back); two plates, a box and a point
+#     light render, per pixel, the direct image (no radiosity) plus the
+#     --radiosity-only image to float rounding (1e-5), the indirect part
+#     is not black, and ranks and threads give the same bytes;
+#   - --radiosity-mesh=FILE writes the solution's mesh at the render's
+#     size, the same bytes from 1 and 2 ranks, with edge pixels (pure
+#     black or white) that grow in number as BF_eps refines the mesh;
 #   - bad option values and bad solution files: exact messages, exit
 #     status 2 for the command line and 1 for a file.
 #
@@ -180,6 +190,81 @@ run plain 0 "$ZRCUBE" cornell.pov $SIZE +Oplain.pfm
 set -- $(pfm_stats plain.pfm 64 64)
 awk -v a="$one" -v b="$2" 'BEGIN { exit !(b < 0.5 * a) }' ||
   fail "without --radiosity the mean is $2, with it $one"
+
+# ---- light sources ---------------------------------------------------
+
+# floats FILE W H: the RGB floats of a PFM file, one a line.
+floats() {
+  tail -c $(($2 * $3 * 12)) "$1" | od -An -v -t f4 | tr -s ' ' '\n' |
+    grep -v '^$'
+}
+cat >floor.pov <<'EOF2'
+#declare F = texture { pigment { rgb 1 } finish { diffuse 0.5 ambient 0 } }
+triangle { <-2,0,-2>, <2,0,-2>, <2,0,2> texture { F } }
+triangle { <-2,0,-2>, <2,0,2>, <-2,0,2> texture { F } }
+light_source { <0,1,0> color rgb 1 }
+camera { location <0,1.5,-3> look_at <0,0,0> }
+EOF2
+run floor0 0 "$ZRCUBE" floor.pov $SIZE +Ofloor0.pfm
+run floor1 0 "$ZRCUBE" floor.pov $SIZE --radiosity --bf-eps=1e-3 \
+  --radiosity-stats +Ofloor1.pfm
+same floor0.pfm floor1.pfm
+grep -q -e ' lights=[1-9]' floor1.err ||
+  fail "floor1: --radiosity-stats shows no light power from the light"
+
+cat >plates.pov <<'EOF2'
+#declare F = texture { pigment { rgb 1 } finish { diffuse 0.5 ambient 0 } }
+triangle { <-1,0,-1>, <1,0,-1>, <1,0,1> texture { F } }
+triangle { <-1,0,-1>, <1,0,1>, <-1,0,1> texture { F } }
+triangle { <-1,1,-1>, <1,1,-1>, <1,1,1> texture { F } }
+triangle { <-1,1,-1>, <1,1,1>, <-1,1,1> texture { F } }
+box { <-0.3,0,-0.2>, <0.2,0.3,0.3>
+      texture { pigment { rgb <1,0.4,0.3> } finish { diffuse 0.8 ambient 0 } } }
+light_source { <0.3,0.6,-0.2> color rgb 1 }
+camera { location <0,0.5,-2.5> look_at <0,0.4,0> }
+EOF2
+LIT="--radiosity --bf-eps=1e-3"
+run plain_l 0 "$ZRCUBE" plates.pov $SIZE +Oplain_l.pfm
+run full_l 0 "$ZRCUBE" plates.pov $SIZE $LIT +WT1 +Ofull_l.pfm
+run only_l 0 "$ZRCUBE" plates.pov $SIZE $LIT --radiosity-only +Oonly_l.pfm
+floats full_l.pfm 64 64 >full_l.txt
+floats plain_l.pfm 64 64 >plain_l.txt
+floats only_l.pfm 64 64 >only_l.txt
+set -- $(paste full_l.txt plain_l.txt only_l.txt |
+  awk '{ d = $1 - $2 - $3; if (d < 0) d = -d; if (d > m) m = d; s += $3 }
+       END { printf "%g %g\n", m, NR ? s / NR : 0 }')
+awk -v m="$1" 'BEGIN { exit !(m < 1e-5) }' ||
+  fail "plates: full render minus direct minus indirect is up to $1"
+awk -v m="$2" 'BEGIN { exit !(m > 0.005) }' ||
+  fail "plates: the indirect light is too dark (mean $2)"
+run full_l2 0 "$ZRCUBE" plates.pov $SIZE $LIT +WT2 +Ofull_l2.pfm
+same full_l.pfm full_l2.pfm
+mpi full_lmpi 0 2 plates.pov $SIZE $LIT +WT1 +Ofull_lmpi.pfm
+same full_l.pfm full_lmpi.pfm
+
+# ---- the mesh image --------------------------------------------------
+
+# ink FILE: how many pixels of a 64 x 64 PFM are pure black or white.
+ink() {
+  floats "$1" 64 64 | awk '{ v[NR % 3] = $1 }
+    NR % 3 == 0 { if ((v[1] == 0 && v[2] == 0 && v[0] == 0) ||
+                      (v[1] == 1 && v[2] == 1 && v[0] == 1)) n++ }
+    END { print n + 0 }'
+}
+run mesh1 0 "$ZRCUBE" cornell.pov $SIZE --radiosity --bf-eps=1e-2 \
+  --radiosity-mesh=mesh1.pfm +Omesh1r.pfm
+mpi mesh2 0 2 cornell.pov $SIZE --radiosity --bf-eps=1e-2 \
+  --radiosity-mesh=mesh2.pfm +Omesh2r.pfm
+same mesh1.pfm mesh2.pfm
+run mesh3 0 "$ZRCUBE" cornell.pov $SIZE --radiosity --bf-eps=1e-3 \
+  --radiosity-mesh=mesh3.pfm +Omesh3r.pfm
+[ -s mesh1.pfm ] || fail "--radiosity-mesh wrote no file"
+coarse=$(ink mesh1.pfm) fine=$(ink mesh3.pfm)
+[ "$coarse" -gt 100 ] || fail "mesh1.pfm shows only $coarse edge pixels"
+[ "$fine" -gt "$coarse" ] ||
+  fail "a finer mesh shows no more edges ($fine against $coarse)"
+run meshbad 1 "$ZRCUBE" cornell.pov $SIZE --radiosity \
+  --radiosity-mesh=nodir/mesh.png +Omeshbad.pfm
 
 if [ -f "$TRUTH" ] && [ -x "$IMGCMP" ]; then
   run big 0 "$ZRCUBE" cornell.pov +W256 +H256 +A0.05 +R3 --radiosity \

@@ -540,6 +540,374 @@ static void test_radiosity_deterministic(void **state) {
   zr_context_free(ctx);
 }
 
+/* ---- light sources (direct.c) ---- */
+
+/* A 4 x 4 floor (two triangles, rho 0.5) with a point light of colour 1
+   at height 1 over its centre, nothing else. */
+static const char *const open_floor_text =
+    "#declare F = texture { pigment { rgb 1 } finish { diffuse 0.5 "
+    "ambient 0 } }\n"
+    "triangle { <-2,0,-2>, <2,0,-2>, <2,0,2> texture { F } }\n"
+    "triangle { <-2,0,-2>, <2,0,2>, <-2,0,2> texture { F } }\n"
+    "light_source { <0,1,0> color rgb 1 }\n";
+
+/*
+ * The light's power onto the floor is the integral of POV-Ray's
+ * irradiance pi * cos over it, cos = h / r (POV-Ray lights do not fall
+ * off with distance): 28.7969 by a 2000 x 2000 midpoint sum (error
+ * below 1e-6).  The solution must hold it (0.5%: its leaves are 4 x 4
+ * point means; measured 1e-5), and since the floor is alone, nothing bounces
+ * back: the radiosity the tracer adds to its direct light is exactly 0
+ * everywhere, while the floor's own radiosity is rho pi cos.
+ */
+static void test_radiosity_light_open_floor(void **state) {
+  (void)state;
+  zr_context *ctx = new_context();
+  zr_scene *scene = parse(ctx, open_floor_text);
+  zr_radiosity *rad = solve(ctx, scene, NULL);
+  zr_radiosity_stats st;
+  zr_radiosity_get_stats(rad, &st);
+  double want = 0.0;
+  const int n = 2000;
+  for (int i = 0; i < n; i++)
+    for (int j = 0; j < n; j++) {
+      double x = -2.0 + 4.0 * (i + 0.5) / n, z = -2.0 + 4.0 * (j + 0.5) / n;
+      want += M_PI / sqrt(x * x + z * z + 1.0) * (16.0 / ((double)n * n));
+    }
+  printf("open floor: light power %.6f, integral %.6f, %zu elements\n",
+         st.light_power, want, st.elements);
+  assert_true(fabs(st.light_power - want) < 0.005 * want);
+  assert_true(st.elements > 2);
+  assert_true(st.emitted_power == 0.0);
+  for (int i = 0; i < 5; i++) {
+    zr_vec3 pt = zr_v3(-1.9 + 0.8 * i, 0, 1.7 - 0.75 * i);
+    zr_rgb l;
+    const zr_object *tri = scene->primitives[pt.x >= pt.z ? 0 : 1];
+    assert_true(zr__radiosity_radiance(rad, tri, pt, zr_v3(0, -1, 0), &l));
+    assert_true(l.r == 0.0 && l.g == 0.0 && l.b == 0.0);
+  }
+  /* The leaf under the light reflects rho pi cos (cos near 1). */
+  int side;
+  int32_t leaf = zr__rad_hit_leaf(rad, scene->primitives[0],
+                                  zr_v3(0.01, 0, 0.0), zr_v3(0, -1, 0),
+                                  &side);
+  assert_true(leaf >= 0);
+  assert_true(rad->nodes[leaf].b[side][0] > 0.45 * M_PI &&
+              rad->nodes[leaf].b[side][0] <= 0.5 * M_PI);
+  assert_no_nan(rad);
+  zr_radiosity_free(rad);
+  zr_scene_free(scene);
+  zr_context_free(ctx);
+}
+
+/* Gauss-Legendre nodes and weights on [-1, 1] (Newton on P_n). */
+static void gauss_legendre(int n, double *x, double *w) {
+  for (int i = 0; i < n; i++) {
+    double z = cos(M_PI * (i + 0.75) / (n + 0.5)), dp = 1.0;
+    for (int it = 0; it < 100; it++) {
+      double p0 = 1.0, p1 = z;
+      for (int k = 2; k <= n; k++) {
+        double p2 = ((2 * k - 1) * z * p1 - (k - 1) * p0) / k;
+        p0 = p1;
+        p1 = p2;
+      }
+      dp = n * (z * p1 - p0) / (z * z - 1.0);
+      double dz = p1 / dp;
+      z -= dz;
+      if (fabs(dz) < 1e-15)
+        break;
+    }
+    x[i] = z;
+    w[i] = 2.0 / ((1.0 - z * z) * dp * dp);
+  }
+}
+
+/*
+ * Two parallel 2 x 2 plates at y = 0 and y = 1 (rho 0.5, both sides
+ * facing each other lit) with a point light of colour 1 half way
+ * between them.  The light puts E(x) = pi * 0.5 / r on each plate (r
+ * the distance to the light); the plates exchange light by the kernel
+ * cos cos / (pi r^2) = 1 / (pi r^4), so by symmetry both carry B with
+ *     B(x) = rho (E(x) + integral of B(x') / (pi r^4) over the other),
+ * solved here by Nystrom's method on a 24 x 24 Gauss-Legendre grid
+ * (both integrands are analytic on the plates: converged to 1e-9).
+ * The indirect light at a point y of the ceiling is
+ *     H(y) = integral of B(x) / (pi r^4) over the floor,
+ * and the radiance the solution adds to the tracer's direct light
+ * there is rho H / pi: every bounce but the first.  Tolerance 3% at the
+ * default BF_eps (measured -1.5%, -1.1% and -0.9% at the three points;
+ * a solution that counted the first bounce again would be several
+ * times too bright, one without the lights black).
+ */
+static void test_radiosity_light_between_plates(void **state) {
+  (void)state;
+  static const char *const text =
+      "#declare F = texture { pigment { rgb 1 } finish { diffuse 0.5 "
+      "ambient 0 } }\n"
+      "triangle { <-1,0,-1>, <1,0,-1>, <1,0,1> texture { F } }\n"
+      "triangle { <-1,0,-1>, <1,0,1>, <-1,0,1> texture { F } }\n"
+      "triangle { <-1,1,-1>, <1,1,-1>, <1,1,1> texture { F } }\n"
+      "triangle { <-1,1,-1>, <1,1,1>, <-1,1,1> texture { F } }\n"
+      "light_source { <0,0.5,0> color rgb 1 }\n";
+  enum { N = 24, NN = N * N };
+  double gx[N], gw[N];
+  gauss_legendre(N, gx, gw);
+  static double px[NN], pz[NN], pw[NN], e[NN], b[NN], nb[NN];
+  for (int i = 0; i < NN; i++) {
+    px[i] = gx[i % N];
+    pz[i] = gx[i / N];
+    pw[i] = gw[i % N] * gw[i / N];
+    e[i] = M_PI * 0.5 / sqrt(px[i] * px[i] + pz[i] * pz[i] + 0.25);
+    b[i] = 0.5 * e[i];
+  }
+  for (int it = 0; it < 40; it++) {
+    for (int i = 0; i < NN; i++) {
+      double h = 0.0;
+      for (int j = 0; j < NN; j++) {
+        double dx = px[i] - px[j], dz = pz[i] - pz[j];
+        double r2 = dx * dx + dz * dz + 1.0;
+        h += pw[j] * b[j] / (M_PI * r2 * r2);
+      }
+      nb[i] = 0.5 * (e[i] + h);
+    }
+    memcpy(b, nb, sizeof b);
+  }
+  zr_context *ctx = new_context();
+  zr_scene *scene = parse(ctx, text);
+  zr_radiosity *rad = solve(ctx, scene, NULL);
+  static const double pts[3][2] = {{0.0, 0.0}, {0.5, 0.3}, {0.9, -0.8}};
+  for (int k = 0; k < 3; k++) {
+    double x = pts[k][0], z = pts[k][1], h = 0.0;
+    for (int j = 0; j < NN; j++) {
+      double dx = x - px[j], dz = z - pz[j];
+      double r2 = dx * dx + dz * dz + 1.0;
+      h += pw[j] * b[j] / (M_PI * r2 * r2);
+    }
+    double want = 0.5 * h / M_PI;
+    const zr_object *tri = scene->primitives[x >= z ? 2 : 3];
+    zr_rgb l;
+    assert_true(
+        zr__radiosity_radiance(rad, tri, zr_v3(x, 1, z), zr_v3(0, 1, 0), &l));
+    printf("plates: ceiling (%.1f, %.1f): indirect radiance %.6f, "
+           "integral %.6f, error %+.2f%%\n",
+           x, z, l.r, want, 100.0 * (l.r / want - 1.0));
+    assert_true(fabs(l.r - want) < 0.03 * want);
+  }
+  zr_radiosity_stats st;
+  zr_radiosity_get_stats(rad, &st);
+  assert_true(st.light_power > 0.0 && st.emitted_power == 0.0);
+  assert_no_nan(rad);
+  zr_radiosity_free(rad);
+  zr_scene_free(scene);
+  zr_context_free(ctx);
+}
+
+/* A point light inside a closed box (rho 0.5): what the light puts on
+   the inner sides is all absorbed there, A (1 - rho) (H_d + H) summed
+   over sides equals the light's power (1%, as for emitters), with
+   gathering and with shooting. */
+static void test_radiosity_light_energy_conserved(void **state) {
+  (void)state;
+  zr_context *ctx = new_context();
+  zr_scene *scene = parse(
+      ctx, "box { <0,0,0>, <1,1,1> pigment { rgb 1 } finish { diffuse 0.5 "
+           "ambient 0 } }\n"
+           "light_source { <0.3,0.6,0.45> color rgb <1, 0.5, 0.25> }\n");
+  for (int shooting = 0; shooting < 2; shooting++) {
+    zr_radiosity_params p;
+    zr_radiosity_params_init(&p, scene);
+    p.shooting = shooting;
+    zr_radiosity *rad = solve(ctx, scene, &p);
+    zr_radiosity_stats st;
+    zr_radiosity_get_stats(rad, &st);
+    printf("light in a box (%s): light %.6f absorbed %.6f\n",
+           shooting ? "shooting" : "gathering", st.light_power,
+           st.absorbed_power);
+    assert_true(st.light_power > 0.0);
+    assert_true(fabs(st.absorbed_power - st.light_power) <
+                0.01 * st.light_power);
+    assert_no_nan(rad);
+    zr_radiosity_free(rad);
+  }
+  zr_scene_free(scene);
+  zr_context_free(ctx);
+}
+
+/*
+ * Refinement follows the direct light: a parallel light from <1, 2, 0>
+ * casts the shadow of a unit box on a 4 x 4 floor, so the floor's
+ * irradiance is pi * cos (uniform) in the light and 0 in the shadow.
+ * After the lights' refinement (before any link), every floor leaf
+ * whose light is neither uniform light nor full shadow (the shadow's
+ * edge crosses it) is at the A_eps limit, and the leaves in the even
+ * light are at least 64 times larger: every mixed leaf was split until
+ * what it may misplace, rho (H_max - H_min) A = rho pi cos A, is within
+ * BF_eps times the reference power, or it reached A_eps.
+ */
+static void test_radiosity_light_refines_shadow_edges(void **state) {
+  (void)state;
+  zr_context *ctx = new_context();
+  zr_scene *scene = parse(
+      ctx, "#declare F = texture { pigment { rgb 1 } finish { diffuse 0.5 "
+           "ambient 0 } }\n"
+           "triangle { <-2,0,-2>, <2,0,-2>, <2,0,2> texture { F } }\n"
+           "triangle { <-2,0,-2>, <2,0,2>, <-2,0,2> texture { F } }\n"
+           "box { <-0.5,0,-0.5>, <0.5,1,0.5> texture { F } }\n"
+           "light_source { <1,2,0> color rgb 1 parallel point_at 0 }\n");
+  zr_radiosity_params p;
+  zr_radiosity_params_init(&p, scene);
+  p.bf_eps = 1e-3;
+  p.area_eps = 1e-4;
+  zr_radiosity *rad = NULL;
+  assert_int_equal(zr__rad_create(ctx, scene, &p, &rad), ZR_OK);
+  zr__rad_direct_power(rad);
+  assert_int_equal(zr__rad_direct_refine(rad), ZR_OK);
+  double lit = M_PI * 2.0 / sqrt(5.0), smallest = INFINITY, largest = 0.0;
+  size_t mixed = 0;
+  for (size_t n = 0; n < rad->n_nodes; n++) {
+    const zr__rad_node *node = &rad->nodes[n];
+    if (node->child >= 0 || node->surf > 1)
+      continue;
+    assert_true(node->has_direct);
+    double h = node->hd[0][0] + node->hd[1][0];
+    smallest = fmin(smallest, node->area);
+    if (fabs(h - lit) < 1e-9 * lit) {
+      largest = fmax(largest, node->area);
+    } else if (h > 1e-12) {
+      mixed++;
+      double thr = p.bf_eps * rad->power_ref;
+      assert_true(0.5 * lit * node->area <= thr * (1.0 + 1e-9) ||
+                  node->area <= rad->area_eps_abs);
+    }
+  }
+  printf("shadow edges: %zu mixed leaves, leaf areas %.3g to %.3g\n", mixed,
+         smallest, largest);
+  assert_true(mixed > 10);
+  assert_true(largest >= 64.0 * smallest);
+  zr_radiosity_free(rad);
+  zr_scene_free(scene);
+  zr_context_free(ctx);
+}
+
+/* A solution with lights saves and loads: the same radiance with both
+   lookups (the smoothed one leaves the direct light out by the saved
+   H_d). */
+static void test_radiosity_light_save_load(void **state) {
+  (void)state;
+  zr_context *ctx = new_context();
+  zr_scene *scene = parse(
+      ctx, "box { <0,0,0>, <1,1,1> pigment { rgb 1 } finish { diffuse 0.5 "
+           "ambient 0 } }\n"
+           "light_source { <0.3,0.6,0.45> color rgb 1 }\n");
+  for (int lookup = 0; lookup < 2; lookup++) {
+    zr_radiosity_params p;
+    zr_radiosity_params_init(&p, scene);
+    p.bf_eps = 1e-3;
+    p.lookup = lookup;
+    zr_radiosity *rad = solve(ctx, scene, &p);
+    const char *path = temp_path("light.zrrad");
+    assert_int_equal(zr_radiosity_save(ctx, rad, path), ZR_OK);
+    zr_radiosity *back = NULL;
+    assert_int_equal(zr_radiosity_load(ctx, scene, path, &back), ZR_OK);
+    for (int i = 0; i < 20; i++) {
+      zr_vec3 pt = zr_v3(0.03 + 0.045 * i, 0, 0.96 - 0.045 * i);
+      zr_rgb x, y;
+      assert_true(zr__radiosity_radiance(rad, scene->primitives[0], pt,
+                                         zr_v3(0, -1, 0), &x));
+      assert_true(zr__radiosity_radiance(back, scene->primitives[0], pt,
+                                         zr_v3(0, -1, 0), &y));
+      assert_true(x.r > 0.0);
+      assert_true(x.r == y.r && x.g == y.g && x.b == y.b);
+    }
+    remove(path);
+    zr_radiosity_free(back);
+    zr_radiosity_free(rad);
+  }
+  zr_scene_free(scene);
+  zr_context_free(ctx);
+}
+
+/* ---- threads ---- */
+
+/* A spherical room (self links on its curved cells) with a box and a
+   cylinder standing in it (links straddling planes, shadows), lit by a
+   small emitter. */
+static const char *const thread_scene =
+    "sphere { 0, 1 pigment { rgb 0.6 } finish { diffuse 1 ambient 0 } }\n"
+    "box { <-0.2,-0.9,-0.2>, <0.2,-0.5,0.2> pigment { rgb <0.9,0.5,0.5> } "
+    "finish { diffuse 1 ambient 0 } }\n"
+    "cylinder { <-0.5,-0.8,0.3>, <-0.5,0,0.3>, 0.2 pigment { rgb 0.8 } "
+    "finish { diffuse 0.8 ambient 0 } }\n"
+    "triangle { <-0.3,0.8,-0.3>, <0.3,0.8,-0.3>, <0.3,0.8,0.3> "
+    "pigment { rgb 1 } finish { emission 2 diffuse 0 } }\n";
+
+/* Everything a solve computed is the same bits. */
+static void assert_same_solution(const zr_radiosity *a,
+                                 const zr_radiosity *b) {
+  assert_int_equal(a->n_nodes, b->n_nodes);
+  assert_int_equal(a->n_links, b->n_links);
+  assert_int_equal(a->n_verts, b->n_verts);
+  assert_int_equal(a->stats.iterations, b->stats.iterations);
+  assert_int_equal(a->stats.visibility_rays, b->stats.visibility_rays);
+  assert_memory_equal(&a->stats.residual, &b->stats.residual,
+                      sizeof a->stats.residual);
+  for (size_t n = 0; n < a->n_nodes; n++) {
+    assert_int_equal(a->nodes[n].child, b->nodes[n].child);
+    assert_memory_equal(a->nodes[n].b, b->nodes[n].b, sizeof a->nodes[n].b);
+  }
+  for (size_t i = 0; i < a->n_links; i++) {
+    const zr__rad_link *x = &a->links[i], *y = &b->links[i];
+    assert_true(x->recv == y->recv && x->src == y->src &&
+                x->rside == y->rside && x->sside == y->sside);
+    assert_memory_equal(&x->ff, &y->ff, sizeof x->ff);
+  }
+  for (size_t v = 0; v < a->n_verts; v++)
+    assert_memory_equal(a->verts[v].b, b->verts[v].b, sizeof a->verts[v].b);
+}
+
+/* 1 and 3 threads (more than this machine may have) give the same
+   cells, links, factors and radiosity, bit for bit, and the same
+   radiance at 400 points of the room's wall, for both refinement
+   criteria and for gathering and shooting. */
+static void test_radiosity_threads_identical(void **state) {
+  (void)state;
+  zr_context *ctx = new_context();
+  zr_scene *scene = parse(ctx, thread_scene);
+  for (int mode = 0; mode < 3; mode++) {
+    zr_radiosity *rad[2];
+    for (int k = 0; k < 2; k++) {
+      zr_radiosity_params p;
+      zr_radiosity_params_init(&p, scene);
+      p.bf_eps = 3e-2;
+      p.area_eps = 1e-2;
+      p.criterion = mode == 1;
+      p.shooting = mode == 2;
+      p.threads = k ? 3 : 1;
+      rad[k] = solve(ctx, scene, &p);
+    }
+    assert_true(rad[0]->n_links > 1000);
+    assert_same_solution(rad[0], rad[1]);
+    int lit = 0;
+    for (int i = 0; i < 400; i++) {
+      /* Points of the sphere's inside, seen from inside. */
+      double th = M_PI * (i / 20 + 0.5) / 20.0, ph = 0.1 * M_PI * (i % 20);
+      zr_vec3 pt = zr_v3(sin(th) * cos(ph), cos(th), sin(th) * sin(ph));
+      zr_rgb x, y;
+      assert_true(zr__radiosity_radiance(rad[0], scene->primitives[0], pt,
+                                         pt, &x));
+      assert_true(zr__radiosity_radiance(rad[1], scene->primitives[0], pt,
+                                         pt, &y));
+      lit += x.r > 0.0;
+      assert_memory_equal(&x, &y, sizeof x);
+    }
+    assert_true(lit > 350);
+    zr_radiosity_free(rad[0]);
+    zr_radiosity_free(rad[1]);
+  }
+  zr_scene_free(scene);
+  zr_context_free(ctx);
+}
+
 /* ---- bad input ---- */
 
 static void test_radiosity_bad_params(void **state) {
@@ -640,6 +1008,12 @@ int main(void) {
       cmocka_unit_test(test_radiosity_final_gather_exact),
       cmocka_unit_test(test_radiosity_save_load),
       cmocka_unit_test(test_radiosity_deterministic),
+      cmocka_unit_test(test_radiosity_light_open_floor),
+      cmocka_unit_test(test_radiosity_light_between_plates),
+      cmocka_unit_test(test_radiosity_light_energy_conserved),
+      cmocka_unit_test(test_radiosity_light_refines_shadow_edges),
+      cmocka_unit_test(test_radiosity_light_save_load),
+      cmocka_unit_test(test_radiosity_threads_identical),
       cmocka_unit_test(test_radiosity_bad_params),
       cmocka_unit_test(test_radiosity_plane_alone),
       cmocka_unit_test(test_radiosity_zero_area_and_dark),

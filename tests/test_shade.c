@@ -158,6 +158,11 @@ static void test_shade_light_behind_surface_gives_no_direct_light(void **s_) {
   assert_int_equal(zr__scene_finish(s, NULL), ZR_OK);
   assert_rgb(trace(s, zr_v3(0, 0, -1), zr_v3(0, 0, 1)), 0.1, 0.05, 0.025,
              EPS);
+  /* "diffuse 0.6, 0.3": the back takes 0.3 of it, with no highlight
+     (N.L = -0.8 from the viewer's side). */
+  f->diffuse_back = 0.3;
+  assert_rgb(trace(s, zr_v3(0, 0, -1), zr_v3(0, 0, 1)), 0.1 + 0.24,
+             0.05 + 0.12, 0.025 + 0.06, EPS);
   zr_scene_free(s);
 }
 
@@ -214,6 +219,13 @@ static void test_shade_reflection_of_background(void **state) {
   s->settings.background = zr_colour5(0.2, 0.4, 0.8, 0, 0);
   assert_int_equal(zr__scene_finish(s, NULL), ZR_OK);
   assert_rgb(trace(s, zr_v3(0, 0, -1), zr_v3(0, 0, 1)), 0.1, 0.2, 0.4, EPS);
+  /* reflection { 0.5 exponent 2 }: POV-Ray 3.7 reflects 0.5 * c^(1/2)
+     (measured on a grey sky of 0.25: 0.25 for exponent 2, 0.031 for
+     exponent 0.5). */
+  f->reflection_exponent = 2;
+  assert_rgb(trace(s, zr_v3(0, 0, -1), zr_v3(0, 0, 1)), 0.5 * sqrt(0.2),
+             0.5 * sqrt(0.4), 0.5 * sqrt(0.8), EPS);
+  f->reflection_exponent = 1;
   /* Variable reflection: 0.1 facing to 0.9 grazing with falloff 2, seen
      at 60 degrees: 0.1 + 0.8 * (1 - cos 60)^2 = 0.3. */
   f->reflection = zr_rgb3(0.1, 0.1, 0.1);

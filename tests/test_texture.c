@@ -67,6 +67,23 @@ static void test_texture_block_pigments_and_transform(void **state) {
   assert_colour(zr__pigment_eval(pg, zr_v3(3, 1, 1)), 0, 0.5, 0, 0, 0);
 }
 
+/* POV-Ray 3.7 renders "checker rgb 1 rgb <1,0,0>" white and red: a
+   second rgb starts the next colour of the list, while component items
+   after an rgb change it ("rgb <0,1,0> red 1" is yellow). */
+static void test_texture_colour_lists_without_commas(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f, "plane { y, 0 pigment { checker rgb 1"
+                        " rgb <1, 0, 0> } }");
+  const zr_pigment *pg = first_texture(s)->pigment;
+  assert_colour(pg->list[0], 1, 1, 1, 0, 0);
+  assert_colour(pg->list[1], 1, 0, 0, 0, 0);
+  s = good(f, "plane { y, 0 pigment { checker rgb <0, 1, 0> red 1"
+              " rgbt 0.5 } }");
+  pg = first_texture(s)->pigment;
+  assert_colour(pg->list[0], 1, 1, 0, 0, 0);
+  assert_colour(pg->list[1], 0.5, 0.5, 0.5, 0, 0.5);
+}
+
 static void test_texture_average_weights(void **state) {
   fixture *f = *state;
   zr_scene *s = good(f, "sphere { 0, 1 pigment { average pigment_map {"
@@ -280,6 +297,7 @@ int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_texture_pigment_map_blends),
       cmocka_unit_test(test_texture_block_pigments_and_transform),
+      cmocka_unit_test(test_texture_colour_lists_without_commas),
       cmocka_unit_test(test_texture_average_weights),
       cmocka_unit_test(test_texture_pigment_pattern_grey),
       cmocka_unit_test(test_texture_legacy_colour_map),

@@ -73,6 +73,14 @@ zr_status zr__ppm_encode(zr_context *ctx, const char *name,
 zr_status zr__pfm_encode(zr_context *ctx, const char *name,
                          const zr_image *image, FILE *stream);
 
+/*
+ * A height field's samples (lib/image/heights.c): the stored values of
+ * a PNG, PGM, PPM or JPEG file scaled to [0, 1], one per pixel, rows top
+ * to bottom, in a malloc'ed array the caller frees.
+ */
+zr_status zr__image_read_heights(zr_context *ctx, const char *path,
+                                 float **heights, int *width, int *height);
+
 /* zr_image_new with a message through ctx on failure. */
 zr_status zr__image_new_named(zr_context *ctx, const char *name, int width,
                               int height, zr_image **out);

@@ -3,4 +3,5 @@ lib_libzrcube_la_SOURCES += \
 	lib/image/image.c lib/image/image.h \
 	lib/image/png.c \
 	lib/image/jpeg.c \
-	lib/image/pnm.c
+	lib/image/pnm.c \
+	lib/image/heights.c

@@ -75,7 +75,10 @@ static void request_rgb(png_structp png, png_infop info) {
     png_set_palette_to_rgb(png);
   if (color_type == PNG_COLOR_TYPE_GRAY && depth < 8)
     png_set_expand_gray_1_2_4_to_8(png);
-  if (color_type & PNG_COLOR_MASK_ALPHA)
+  /* A palette's or grey image's tRNS chunk becomes an alpha channel
+     when expanded: dropped too. */
+  if ((color_type & PNG_COLOR_MASK_ALPHA) ||
+      png_get_valid(png, info, PNG_INFO_tRNS))
     png_set_strip_alpha(png);
   if (color_type == PNG_COLOR_TYPE_GRAY ||
       color_type == PNG_COLOR_TYPE_GRAY_ALPHA)

@@ -5,7 +5,7 @@
  * The file is little-endian binary, whatever the host:
  *
  *   "ZRRADSOL"           8 bytes, the magic
- *   u32 version          2
+ *   u32 version          3 (2 is still read: a file without light sources)
  *   u64 fingerprint      of the scene's geometry and light (below)
  *   u32 surfaces         how many exact surfaces the scene gave
  *   f64 bf_eps, area_eps; i32 visibility_rays, uniform, shooting
@@ -13,7 +13,8 @@
  *   u32 lookup           params.lookup of the solve
  *   then, per surface in scene order, its quadtree in preorder: a byte
  *   (1 when the node has four children) and the node's radiosity, six
- *   f64 (front r g b, back r g b);
+ *   f64 (front r g b, back r g b), then (version 3) the irradiance of
+ *   the light sources the node holds (direct.c), six f64 in that order;
  *   then u64 n and n links: i32 receiver, i32 source (nodes numbered in
  *   the preorder of all the trees, surface after surface), u8 receiver
  *   side, u8 source side, f64 factor, f64 visible fraction.
@@ -23,8 +24,11 @@
  * same bytes as the solve it came from.  The vertices are smoothed again
  * after loading (the same code, so the same values).  The fingerprint is FNV-1a over every primitive's kind,
  * shape numbers, transform and the texture values radiosity reads
- * (pigment colour, diffuse, emission); the camera, lights and other
- * finish values are left out, since they do not change the solution.
+ * (pigment colour, diffuse, emission) and, in a scene with light
+ * sources, every light's values and each finish's brilliance (lights
+ * shoot into the mesh, direct.c); the camera and other finish values
+ * are left out, since they do not change the solution.  A scene without
+ * lights keeps the fingerprint it had in version 2.
  * Loading a file whose fingerprint differs is an error: its quadtrees
  * would belong to other surfaces.
  */
@@ -36,7 +40,7 @@
 #include <string.h>
 
 #define MAGIC "ZRRADSOL"
-#define VERSION 2u
+#define VERSION 3u
 
 /* ---- fingerprint ---- */
 
@@ -85,8 +89,29 @@ static uint64_t hash_shape(uint64_t h, const zr_object *o) {
   }
 }
 
+static uint64_t hash_light(uint64_t h, const zr_light *l) {
+  h = fnv_d(h, (double)l->kind);
+  h = fnv_v(fnv_v(h, l->location), l->point_at);
+  h = fnv_d(fnv_d(fnv_d(h, l->colour.r), l->colour.g), l->colour.b);
+  h = fnv_d(fnv_d(h, l->shadowless), l->parallel);
+  h = fnv_d(fnv_d(fnv_d(h, l->radius), l->falloff), l->tightness);
+  h = fnv_d(fnv_d(h, l->fade_distance), l->fade_power);
+  h = fnv_d(h, l->area);
+  if (l->area) {
+    h = fnv_v(fnv_v(h, l->axis1), l->axis2);
+    h = fnv_d(fnv_d(fnv_d(h, l->size1), l->size2), l->adaptive);
+    h = fnv_d(fnv_d(fnv_d(h, l->jitter), l->circular), l->orient);
+  }
+  return h;
+}
+
 uint64_t zr__rad_fingerprint(const zr_scene *scene) {
   uint64_t h = 0xCBF29CE484222325ull;
+  if (scene->n_lights > 0) {
+    h = fnv_d(h, (double)scene->n_lights);
+    for (size_t i = 0; i < scene->n_lights; i++)
+      h = hash_light(h, &scene->lights[i]);
+  }
   h = fnv_d(h, (double)scene->n_primitives);
   for (size_t i = 0; i < scene->n_primitives; i++) {
     const zr_object *o = scene->primitives[i];
@@ -102,6 +127,8 @@ uint64_t zr__rad_fingerprint(const zr_scene *scene) {
     h = fnv_d(h, f->diffuse);
     h = fnv_d(fnv_d(fnv_d(h, f->emission.r), f->emission.g),
               f->emission.b);
+    if (scene->n_lights > 0)
+      h = fnv_d(h, f->brilliance);
   }
   return h;
 }
@@ -163,6 +190,9 @@ static void save_tree(FILE *f, const zr_radiosity *rad, int32_t n,
   for (int side = 0; side < 2; side++)
     for (int c = 0; c < 3; c++)
       put_f64(f, node->b[side][c]);
+  for (int side = 0; side < 2; side++)
+    for (int c = 0; c < 3; c++)
+      put_f64(f, node->hd[side][c]);
   if (node->child >= 0)
     for (int k = 0; k < 4; k++)
       save_tree(f, rad, node->child + k, order, next);
@@ -229,23 +259,26 @@ ZR_API zr_status zr_radiosity_save(zr_context *ctx, const zr_radiosity *rad,
 /* ---- load ---- */
 
 /* Reads node n's radiosity and subtree; false on a short or bad file. */
-static bool load_tree(FILE *f, zr_radiosity *rad, int32_t n, int depth) {
+static bool load_tree(FILE *f, zr_radiosity *rad, int32_t n, int depth,
+                      uint32_t version) {
   int flag = fgetc(f);
   if (flag != 0 && flag != 1)
     return false;
-  for (int side = 0; side < 2; side++)
-    for (int c = 0; c < 3; c++) {
-      double v;
-      if (!get_f64(f, &v) || !isfinite(v))
-        return false;
-      rad->nodes[n].b[side][c] = v;
-    }
+  for (int k = 0; k < (version >= 3 ? 2 : 1); k++)
+    for (int side = 0; side < 2; side++)
+      for (int c = 0; c < 3; c++) {
+        double v;
+        if (!get_f64(f, &v) || !isfinite(v))
+          return false;
+        (k ? rad->nodes[n].hd : rad->nodes[n].b)[side][c] = v;
+      }
+  rad->nodes[n].has_direct = 1;
   if (flag == 0)
     return true;
   if (depth >= ZR__RAD_DEPTH || !zr__rad_subdivide(rad, n))
     return false;
   for (int k = 0; k < 4; k++)
-    if (!load_tree(f, rad, rad->nodes[n].child + k, depth + 1))
+    if (!load_tree(f, rad, rad->nodes[n].child + k, depth + 1, version))
       return false;
   return true;
 }
@@ -309,14 +342,14 @@ static bool load_links(FILE *f, zr_radiosity *rad) {
 }
 
 static zr_status read_header(zr_context *ctx, FILE *f, const char *path,
-                             zr_radiosity *rad) {
+                             zr_radiosity *rad, uint32_t *version_out) {
   char magic[8];
   uint32_t version, n_surfs, vis, uniform, shooting, rounds, its, lookup;
   uint64_t fp, links;
   if (fread(magic, 1, 8, f) != 8 || memcmp(magic, MAGIC, 8) != 0)
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
                     "radiosity: '%s' is not a zRcube radiosity file", path);
-  if (!get_u32(f, &version) || version != VERSION)
+  if (!get_u32(f, &version) || version < 2 || version > VERSION)
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
                     "radiosity: '%s' has an unknown version", path);
   if (!get_u64(f, &fp) || !get_u32(f, &n_surfs))
@@ -343,6 +376,7 @@ static zr_status read_header(zr_context *ctx, FILE *f, const char *path,
   rad->params.lookup = (int)lookup;
   rad->stats.refine_rounds = (int)rounds;
   rad->stats.iterations = (int)its;
+  *version_out = version;
   return ZR_OK;
 }
 
@@ -356,11 +390,12 @@ ZR_API zr_status zr_radiosity_load(zr_context *ctx, const zr_scene *scene,
                     "radiosity: cannot read '%s': %s", path,
                     strerror(errno));
   zr_radiosity *rad;
+  uint32_t version = VERSION;
   zr_status st = zr__rad_create(ctx, scene, NULL, &rad);
   if (st == ZR_OK)
-    st = read_header(ctx, f, path, rad);
+    st = read_header(ctx, f, path, rad, &version);
   for (size_t s = 0; st == ZR_OK && s < rad->n_surfs; s++)
-    if (!load_tree(f, rad, rad->surfs[s].root, 0))
+    if (!load_tree(f, rad, rad->surfs[s].root, 0, version))
       st = zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
                     "radiosity: '%s' is truncated or corrupt", path);
   if (st == ZR_OK && !load_links(f, rad))

@@ -7,7 +7,9 @@ lib_libzrcube_la_SOURCES += \
 	lib/radiosity/surface.c lib/radiosity/surface.h \
 	lib/radiosity/radiosity.h lib/radiosity/radiosity.c \
 	lib/radiosity/mesh.c lib/radiosity/quadtree.c \
-	lib/radiosity/refine.c lib/radiosity/solve.c lib/radiosity/io.c
+	lib/radiosity/refine.c lib/radiosity/solve.c lib/radiosity/io.c \
+	lib/radiosity/workers.c lib/radiosity/workers.h lib/radiosity/trim.c \
+	lib/radiosity/direct.c lib/radiosity/meshimage.c
 
 check_PROGRAMS += tests/test_formfactor tests/test_nurbs \
 	tests/test_quadtree tests/test_radiosity

@@ -25,7 +25,10 @@
  * a triangle (p1 - p0) x (p2 - p0)) emits, which suits a lamp hung a
  * hair below a ceiling: two-sided, half its power would pour into that
  * gap, and the ceiling cells at the lamp's rim, larger than the gap,
- * would leak the trapped light into the room.  A reflectance above 1
+ * would leak the trapped light into the room.  The parts of a CSG
+ * intersection, difference or merge are surfaces like any primitive's,
+ * trimmed to what the solid keeps (trim.c); a union inside one keeps
+ * all of its children.  A reflectance above 1
  * would create energy; it is clamped to 1 with a warning.  Objects with
  * no area (a degenerate triangle, a flat box) get a warning and take no
  * part, as POV-Ray itself renders nothing for them.
@@ -209,10 +212,11 @@ static int entry_cmp(const void *a, const void *b) {
   return x < y ? -1 : x > y;
 }
 
-/* Adds the surfaces of primitive o; ZR_ENOMEM on failure. */
+/* Adds the surfaces of primitive o, trimmed by the CSG primitive trim
+   when it is a part of one (NULL: whole); ZR_ENOMEM on failure. */
 static zr_status add_primitive(zr_radiosity *rad, zr_context *ctx,
                                const zr_object *o, const zr_vec3 *lo,
-                               const zr_vec3 *hi) {
+                               const zr_vec3 *hi, const zr_object *trim) {
   zr__surface geo[6];
   zr_diag_place where = object_place(o);
   int n = primitive_surfaces(o, lo, hi, geo);
@@ -233,8 +237,14 @@ static zr_status add_primitive(zr_radiosity *rad, zr_context *ctx,
     memset(s, 0, sizeof *s);
     s->geom = geo[i];
     s->object = o;
+    s->trim = trim;
     surface_light(s, o, rad->params.one_sided_emission != 0, &clamped);
     s->area = zr__surface_area(&s->geom, 0, 1, 0, 1, 2, &rad->rule_src);
+    if (trim != NULL) {
+      /* The part the CSG keeps, from a fine grid of inside tests. */
+      const double whole[4] = {0.0, 1.0, 0.0, 1.0};
+      s->area *= zr__rad_trim_fraction(rad, s, whole, 64);
+    }
     zr_status st = zr__rad_add_root(rad, (int32_t)rad->n_surfs);
     if (st != ZR_OK)
       return st;
@@ -253,9 +263,37 @@ static zr_status add_primitive(zr_radiosity *rad, zr_context *ctx,
   return ZR_OK;
 }
 
+/* The primitives under a CSG primitive's node (1 for a primitive). */
+static size_t count_parts(const zr_object *o) {
+  if (!zr__is_csg(o->kind))
+    return 1;
+  size_t n = 0;
+  for (size_t i = 0; i < o->u.csg.n_children; i++)
+    n += count_parts(o->u.csg.children[i]);
+  return n;
+}
+
+/* Adds every part under node of the CSG primitive solid (an
+   intersection, difference or merge), each trimmed by the solid. */
+static zr_status add_parts(zr_radiosity *rad, zr_context *ctx,
+                           const zr_object *node, const zr_object *solid,
+                           const zr_vec3 *lo, const zr_vec3 *hi) {
+  if (!zr__is_csg(node->kind))
+    return add_primitive(rad, ctx, node, lo, hi, solid);
+  for (size_t i = 0; i < node->u.csg.n_children; i++) {
+    zr_status st =
+        add_parts(rad, ctx, node->u.csg.children[i], solid, lo, hi);
+    if (st != ZR_OK)
+      return st;
+  }
+  return ZR_OK;
+}
+
 zr_status zr__rad_mesh_build(zr_radiosity *rad, zr_context *ctx) {
   const zr_scene *scene = rad->scene;
-  size_t np = scene->n_primitives;
+  size_t np = 0;
+  for (size_t i = 0; i < scene->n_primitives; i++)
+    np += count_parts(scene->primitives[i]);
   rad->surfs = calloc(6 * np + 1, sizeof *rad->surfs);
   rad->objects = calloc(np + 1, sizeof *rad->objects);
   if (rad->surfs == NULL || rad->objects == NULL)
@@ -263,9 +301,11 @@ zr_status zr__rad_mesh_build(zr_radiosity *rad, zr_context *ctx) {
                     "radiosity: out of memory for %zu surfaces", 6 * np);
   zr_vec3 lo, hi;
   bool bounded = plane_bounds(scene, &lo, &hi);
-  for (size_t i = 0; i < np; i++) {
-    zr_status st = add_primitive(rad, ctx, scene->primitives[i],
-                                 bounded ? &lo : NULL, bounded ? &hi : NULL);
+  for (size_t i = 0; i < scene->n_primitives; i++) {
+    const zr_object *o = scene->primitives[i];
+    const zr_vec3 *l = bounded ? &lo : NULL, *h = bounded ? &hi : NULL;
+    zr_status st = zr__is_csg(o->kind) ? add_parts(rad, ctx, o, o, l, h)
+                                       : add_primitive(rad, ctx, o, l, h, NULL);
     if (st != ZR_OK)
       return zr__diag(ctx, ZR_DIAG_ERROR, st, NULL,
                       "radiosity: out of memory building surfaces");

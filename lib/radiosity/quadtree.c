@@ -128,8 +128,7 @@ static double angle(zr_vec3 a, zr_vec3 b) {
   return acos(c > 1.0 ? 1.0 : c < -1.0 ? -1.0 : c);
 }
 
-/* Fills the geometry of node n from its cell. */
-static void node_geometry(zr_radiosity *rad, zr__rad_node *node) {
+void zr__rad_node_geometry(const zr_radiosity *rad, zr__rad_node *node) {
   const zr__surface *g = &rad->surfs[node->surf].geom;
   double cell[4];
   zr__rad_node_cell(node, cell);
@@ -140,6 +139,9 @@ static void node_geometry(zr_radiosity *rad, zr__rad_node *node) {
   node->normal = pt.n;
   node->area = zr__surface_area(g, cell[0], cell[1], cell[2], cell[3], 1,
                                 &rad->rule_src);
+  /* Only the part a CSG keeps counts (trim.c). */
+  node->kept = zr__rad_trim_fraction(rad, &rad->surfs[node->surf], cell, 4);
+  node->area *= node->kept;
   node->spread = 0.0;
   if (g->planar)
     return;
@@ -174,7 +176,7 @@ static int32_t node_new(zr_radiosity *rad, int32_t surf, int32_t parent,
     rad->nodes[rad->n_nodes].vert[k] = v;
   }
   node = &rad->nodes[rad->n_nodes];
-  node_geometry(rad, node);
+  zr__rad_node_geometry(rad, node);
   const zr__rad_surface *s = &rad->surfs[surf];
   for (int side = 0; side < 2; side++)
     for (int c = 0; c < 3; c++)
@@ -271,11 +273,15 @@ void zr__rad_smooth(zr_radiosity *rad) {
     if (node->child >= 0)
       continue;
     by_depth[node->depth + 1]++;
+    /* The light sources' direct light, rho H_d, is left out: the tracer
+       adds it per pixel (direct.c). */
+    const double *rho = rad->surfs[node->surf].rho;
     for (int k = 0; k < 4; k++) {
       zr__rad_vertex *v = &rad->verts[node->vert[k]];
       for (int side = 0; side < 2; side++)
         for (int c = 0; c < 3; c++)
-          v->b[side][c] += node->area * node->b[side][c];
+          v->b[side][c] += node->area * (node->b[side][c] -
+                                         rho[c] * node->hd[side][c]);
       v->weight += node->area;
     }
   }

@@ -89,6 +89,8 @@ static zr_status check_params(zr_context *ctx, const zr_radiosity_params *p) {
     what = "lookup must be 0 (final gather) or 1 (smoothed elements)";
   else if (!(p->brightness >= 0.0) || !isfinite(p->brightness))
     what = "brightness must be a finite number >= 0";
+  else if (p->threads < 0)
+    what = "threads must be >= 0";
   if (what == NULL)
     return ZR_OK;
   return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, NULL, "radiosity: %s",
@@ -157,10 +159,17 @@ static zr_status initial_split(zr_radiosity *rad) {
 /* Link, then alternate solving and refining. */
 static zr_status solve_rounds(zr_radiosity *rad, zr_context *ctx) {
   zr_status st = initial_split(rad);
+  /* Cells a CSG trim crosses go down to A_eps (trim.c). */
+  if (st == ZR_OK && rad->params.uniform == 0)
+    st = zr__rad_trim_split(rad);
+  /* Light sources first, so links start from lit sources (direct.c). */
+  if (st == ZR_OK)
+    st = zr__rad_direct_refine(rad);
   if (st == ZR_OK)
     st = zr__rad_link_all(rad);
   int round = 0;
   while (st == ZR_OK) {
+    zr__rad_direct_update(rad);
     zr__rad_finish_links(rad);
     zr__rad_compact_links(rad);
     st = zr__rad_solve(rad, ctx);
@@ -191,10 +200,15 @@ ZR_API zr_status zr_radiosity_solve(zr_context *ctx, const zr_scene *scene,
   zr_status st = zr__rad_create(ctx, scene, params, &rad);
   if (st != ZR_OK)
     return st;
+  zr__rad_direct_power(rad);
   if (!(rad->power_ref > 0.0))
     zr__diag(ctx, ZR_DIAG_WARNING, ZR_OK, NULL,
-             "radiosity: no surface emits light (finish { emission }), "
-             "so the solution is black");
+             scene->n_lights > 0
+                 ? "radiosity: no surface emits light (finish { emission "
+                   "}) and no light source reaches a surface, so the "
+                   "solution is black"
+                 : "radiosity: no surface emits light (finish { emission "
+                   "}), so the solution is black");
   st = solve_rounds(rad, ctx);
   if (st != ZR_OK) {
     zr_radiosity_free(rad);
@@ -273,6 +287,18 @@ static size_t nearest_surface(const zr_radiosity *rad,
   return found;
 }
 
+int32_t zr__rad_hit_leaf(const zr_radiosity *rad, const zr_object *object,
+                         zr_vec3 point, zr_vec3 dir, int *side) {
+  const zr__rad_object_entry *e = zr__rad_object_find(rad, object);
+  if (e == NULL || e->count == 0)
+    return -1;
+  double u = 0.0, v = 0.0;
+  zr_vec3 n = zr_v3(0, 0, 0);
+  size_t s = nearest_surface(rad, e, point, &u, &v, &n);
+  *side = zr_v3_dot(dir, n) > 0.0;
+  return zr__rad_leaf_at(rad, (int32_t)s, u, v);
+}
+
 /*
  * The final gather: the incident radiosity H (irradiance / pi) at point,
  * normal n (the side's), over every link that the leaf and its
@@ -347,7 +373,8 @@ static void gather_source(const zr_radiosity *rad, int32_t qi, int sside,
   size_t nv = zr__surface_patch_polygon(&rad->surfs[q->surf].geom, sc[0],
                                         sc[1], sc[2], sc[3], 16, poly,
                                         4 * ZR__FF_MAX_SEGS);
-  double f = zr__ff_point_polygon(point, n, poly, nv);
+  /* Only the part of the source that CSG keeps shines (trim.c). */
+  double f = q->kept * zr__ff_point_polygon(point, n, poly, nv);
   if (!(f > 0.0))
     return;
   f *= per_point || vis < 1.0 ? point_visibility(rad, q, sside, point, n)

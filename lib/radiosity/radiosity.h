@@ -8,6 +8,8 @@
  *   refine.c    links between nodes, oracle, visibility, transfer factors
  *   solve.c     gathering with push-pull, Southwell shooting, energy
  *   io.c        saving and loading a solution, the scene fingerprint
+ *   direct.c    POV-Ray light sources shooting direct light into the mesh
+ *   meshimage.c a picture of the mesh (elements flat, edges drawn)
  *   radiosity.c the public API and the lookup from a ray hit
  *
  * Every element has two sides, front (along the surface's outward normal)
@@ -56,6 +58,13 @@ typedef struct zr__rad_node {
   double hg[2][3]; /* incident radiosity (irradiance / pi), this level */
   double un[2][3]; /* unshot radiosity (Southwell shooting) */
   double closure[2]; /* sum of F * visibility gathered at this level */
+  /* The fraction of the cell that CSG leaves (trim.c); area is that
+     kept part's area.  1 on a surface no CSG trims. */
+  double kept;
+  /* Irradiance straight from the scene's light sources (direct.c), the
+     mean over the cell, per side; set where has_direct is 1 (leaves). */
+  double hd[2][3];
+  uint8_t has_direct;
 } zr__rad_node;
 
 /* A link: node recv (side rside) gathers from node src (side sside). */
@@ -80,6 +89,9 @@ typedef struct zr__rad_vertex {
 typedef struct zr__rad_surface {
   zr__surface geom;
   const zr_object *object;
+  /* The CSG primitive (intersection, difference, merge) the surface is
+     part of, whose other parts trim it; NULL for none (trim.c). */
+  const zr_object *trim;
   /* Emitted exitance pi * emission * pigment of the front and back
      sides (the back is dark with params.one_sided_emission). */
   double emission[2][3];
@@ -119,6 +131,7 @@ struct zr_radiosity {
      node n.  NULL with lookup 1, which reads no links. */
   uint32_t *recv_start, *recv_links;
 
+  double light_power;  /* light sources' power onto the surfaces (est.) */
   double total_area;   /* of every surface */
   double power_ref;    /* emitted power (largest channel), BF_eps unit */
   double area_eps_abs; /* params.area_eps * total_area */
@@ -136,6 +149,9 @@ const zr__rad_object_entry *zr__rad_object_find(const zr_radiosity *rad,
 zr_status zr__rad_add_root(zr_radiosity *rad, int32_t s);
 /* Splits leaf n into four; false when out of memory. */
 bool zr__rad_subdivide(zr_radiosity *rad, int32_t n);
+/* Fills centre, normal, area and spread of a node from its surf, depth,
+   iu and iv (refinement also uses it for cells not yet made). */
+void zr__rad_node_geometry(const zr_radiosity *rad, zr__rad_node *node);
 /* The cell of node n as {u0, u1, v0, v1}. */
 void zr__rad_node_cell(const zr__rad_node *node, double cell[4]);
 /* The leaf of surface s holding (u,v). */
@@ -175,6 +191,36 @@ static inline double zr__rad_max3(const double c[3]) {
   return m > c[2] ? m : c[2];
 }
 
+/* ---- direct.c ---- */
+/* Estimates the power the scene's light sources deliver onto the
+   surfaces and adds it to power_ref (nothing without lights). */
+void zr__rad_direct_power(zr_radiosity *rad);
+/* Splits leaves where the light sources' direct light varies more than
+   BF_eps allows, sets hd on every leaf and b to each leaf's source
+   (E + rho hd), area means above. */
+zr_status zr__rad_direct_refine(zr_radiosity *rad);
+/* Sets hd on the leaves that refinement made since (no splitting). */
+void zr__rad_direct_update(zr_radiosity *rad);
+/* What leaf node emits or reflects of the light sources' direct light
+   on side: E + rho hd, the source term of the radiosity equation. */
+static inline void zr__rad_leaf_source(const zr_radiosity *rad,
+                                       const zr__rad_node *node, int side,
+                                       double out[3]) {
+  const zr__rad_surface *s = &rad->surfs[node->surf];
+  for (int c = 0; c < 3; c++)
+    out[c] = s->emission[side][c] + s->rho[c] * node->hd[side][c];
+}
+
+/* ---- trim.c ---- */
+/* Whether the point p of surface s survives its CSG (true untrimmed). */
+bool zr__rad_trim_keeps(const zr__rad_surface *s, zr_vec3 p);
+/* The area-weighted fraction of the parameter rectangle cell of s that
+   survives, from an n x n grid of samples (1 untrimmed). */
+double zr__rad_trim_fraction(const zr_radiosity *rad, const zr__rad_surface *s,
+                             const double cell[4], int n);
+/* Splits the cells that a trim crosses down to A_eps. */
+zr_status zr__rad_trim_split(zr_radiosity *rad);
+
 /* ---- io.c ---- */
 uint64_t zr__rad_fingerprint(const zr_scene *scene);
 
@@ -183,6 +229,10 @@ uint64_t zr__rad_fingerprint(const zr_scene *scene);
 zr_status zr__rad_create(zr_context *ctx, const zr_scene *scene,
                          const zr_radiosity_params *params,
                          zr_radiosity **out);
+/* The leaf holding a ray's hit of object at point (direction dir) and
+   the side the ray arrives on; -1 when the object has no surface. */
+int32_t zr__rad_hit_leaf(const zr_radiosity *rad, const zr_object *object,
+                         zr_vec3 point, zr_vec3 dir, int *side);
 /* Counts nodes, leaves, live links and vertices into rad->stats. */
 void zr__rad_count(zr_radiosity *rad);
 /* Indexes the live links by receiver (recv_start, recv_links). */
@@ -191,10 +241,11 @@ zr_status zr__rad_index_links(zr_radiosity *rad);
  * The outgoing diffuse radiance of the solution where a ray with
  * direction dir hits object at point: (E + rho H) / pi of the side the
  * ray comes from, smoothed (bilinear over the leaf's corner vertices).
- * It holds the surface's emission (POV-Ray's emission * pigment) and
- * the diffuse light of every bounce from emitting surfaces, first bounce
- * included; it holds no light from POV-Ray light sources and no
- * ambient.  Units: the scene's radiance units, as emission.  Returns
+ * It holds the surface's emission (POV-Ray's emission * pigment), the
+ * diffuse light of every bounce from emitting surfaces, first bounce
+ * included, and the light of POV-Ray light sources after at least one
+ * diffuse bounce: their direct light is the tracer's, per pixel
+ * (direct.c).  It holds no ambient.  Units: the scene's radiance units, as emission.  Returns
  * false (out black) when the object has no surface in the solution.
  */
 bool zr__radiosity_radiance(const zr_radiosity *rad, const zr_object *object,

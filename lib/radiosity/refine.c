@@ -41,13 +41,23 @@
  * fraction of k x k rays between stratified points of the two cells
  * that the tracer's BVH finds unobstructed (Hanrahan's paper used a
  * similar fixed set of rays; a fraction, not a yes/no).
+ *
+ * Threads (params.threads, workers.h).  Transfer factors and visibility,
+ * most of the time of a solve, are computed for many links at once,
+ * each into its own link.  Refinement is worked out in parallel as plans
+ * (one per link or pair of input surfaces) that one thread then replays
+ * in order (see "refinement as a plan" below), so the cells and links,
+ * and with them the solution, are the same bytes for any thread count.
  */
 #include "radiosity/radiosity.h"
 
+#include <stdatomic.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "radiosity/formfactor.h"
+#include "radiosity/workers.h"
 #include "trace/bvh.h"
 
 /* Sample points of a cell for side classification. */
@@ -55,9 +65,8 @@ typedef struct cell_samples {
   zr_vec3 p[9], n[9];
 } cell_samples;
 
-static void node_samples(const zr_radiosity *rad, int32_t n,
+static void node_samples(const zr_radiosity *rad, const zr__rad_node *node,
                          cell_samples *out) {
-  const zr__rad_node *node = &rad->nodes[n];
   double cell[4];
   zr__rad_node_cell(node, cell);
   static const double f[3] = {0.1, 0.5, 0.9};
@@ -73,8 +82,8 @@ static void node_samples(const zr_radiosity *rad, int32_t n,
 }
 
 /* Counts of sample pairs per side combination, index 2 * rside + sside. */
-static void classify(const zr_radiosity *rad, int32_t p, int32_t q,
-                     int counts[4]) {
+static void classify(const zr_radiosity *rad, const zr__rad_node *p,
+                     const zr__rad_node *q, int counts[4]) {
   cell_samples a, b;
   node_samples(rad, p, &a);
   node_samples(rad, q, &b);
@@ -106,15 +115,14 @@ static double loose_cos(zr_vec3 n, double spread, zr_vec3 c, zr_vec3 t) {
 }
 
 /*
- * The oracle factor from node x's side sx to node y's side sy: Hanrahan's
+ * The oracle factor from node a's side sx to node b's side sy: Hanrahan's
  * A cos cos / (pi r^2 + A) between the centres, where each cosine is the
  * largest towards the other cell's 3 x 3 sample points, so a large cell
  * whose centre lies behind the other (a floor under a box's face) is
  * not judged invisible.
  */
-static double oracle(const zr_radiosity *rad, int32_t x, int sx, int32_t y,
-                     int sy) {
-  const zr__rad_node *a = &rad->nodes[x], *b = &rad->nodes[y];
+static double oracle(const zr_radiosity *rad, const zr__rad_node *a, int sx,
+                     const zr__rad_node *b, int sy) {
   zr_vec3 d = zr_v3_sub(b->centre, a->centre);
   double r2 = zr_v3_dot(d, d);
   if (!(r2 > 0.0))
@@ -122,8 +130,8 @@ static double oracle(const zr_radiosity *rad, int32_t x, int sx, int32_t y,
   zr_vec3 na = zr_v3_scale(a->normal, sx ? -1.0 : 1.0);
   zr_vec3 nb = zr_v3_scale(b->normal, sy ? -1.0 : 1.0);
   cell_samples sa, sb;
-  node_samples(rad, x, &sa);
-  node_samples(rad, y, &sb);
+  node_samples(rad, a, &sa);
+  node_samples(rad, b, &sb);
   double ca = 0.0, cb = 0.0;
   for (int i = 0; i < 9; i++) {
     ca = fmax(ca, loose_cos(na, a->spread, a->centre, sb.p[i]));
@@ -132,105 +140,20 @@ static double oracle(const zr_radiosity *rad, int32_t x, int sx, int32_t y,
   return b->area * ca * cb / (M_PI * r2 + b->area);
 }
 
-static bool can_split(const zr_radiosity *rad, int32_t n) {
-  const zr__rad_node *node = &rad->nodes[n];
+static bool can_split(const zr_radiosity *rad, const zr__rad_node *node) {
   if (rad->params.uniform > 0)
     return node->child >= 0;
   return node->child >= 0 ||
          (node->area > rad->area_eps_abs && node->depth < ZR__RAD_DEPTH);
 }
 
-static zr_status add_link(zr_radiosity *rad, int32_t p, int rs, int32_t q,
-                          int ss);
-static zr_status create_links(zr_radiosity *rad, int32_t p, int32_t q,
-                              int rs_only);
-
-/* Links every child of p to q (or p to every child of q); rs_only
-   (0, 1, or -1 for both) keeps the receiver side of the link split, so
-   a receiver linked on both sides does not get its children linked
-   twice. */
-static zr_status split_and_link(zr_radiosity *rad, int32_t p, int32_t q,
-                                bool split_p, int rs_only) {
-  int32_t n = split_p ? p : q;
-  if (!zr__rad_subdivide(rad, n))
-    return ZR_ENOMEM;
-  int32_t first = rad->nodes[n].child;
-  for (int k = 0; k < 4; k++) {
-    zr_status st = split_p ? create_links(rad, first + k, q, rs_only)
-                           : create_links(rad, p, first + k, rs_only);
-    if (st != ZR_OK)
-      return st;
-  }
-  return ZR_OK;
-}
-
-/* Links all pairs of the children of p (after a self link is split). */
-static zr_status link_children(zr_radiosity *rad, int32_t p) {
-  if (!zr__rad_subdivide(rad, p))
-    return ZR_ENOMEM;
-  int32_t c = rad->nodes[p].child;
-  for (int i = 0; i < 4; i++)
-    for (int j = 0; j < 4; j++) {
-      zr_status st = create_links(rad, c + i, c + j, -1);
-      if (st != ZR_OK)
-        return st;
-    }
-  return ZR_OK;
-}
-
-static int self_choice(const zr_radiosity *rad, const zr__rad_link *l);
-
-/* A curved cell that sees itself gets a link to itself on each pair of
-   sides that face, unless the self transfer is large enough that its
-   children should be linked instead. */
-static zr_status self_links(zr_radiosity *rad, int32_t p, int counts[4],
-                            int rs_only) {
-  zr__rad_link probe;
-  memset(&probe, 0, sizeof probe);
-  probe.recv = probe.src = p;
-  for (int k = 0; k < 4; k++)
-    if (counts[k] > 0 && probe.sside < (k & 1))
-      probe.sside = (uint8_t)(k & 1);
-  if (self_choice(rad, &probe) == 3)
-    return link_children(rad, p);
-  for (int k = 0; k < 4; k++)
-    if (counts[k] > 0 && (rs_only < 0 || rs_only == k >> 1)) {
-      zr_status st = add_link(rad, p, k >> 1, p, k & 1);
-      if (st != ZR_OK)
-        return st;
-    }
-  return ZR_OK;
-}
-
-/* Links receiver p to source q on the sides that face each other (only
-   receiver side rs_only unless it is -1). */
-static zr_status create_links(zr_radiosity *rad, int32_t p, int32_t q,
-                              int rs_only) {
-  int counts[4];
-  classify(rad, p, q, counts);
-  if (p == q)
-    return counts[0] + counts[1] + counts[2] + counts[3] > 0
-               ? self_links(rad, p, counts, rs_only)
-               : ZR_OK;
-  int front = counts[0] + counts[2], back = counts[1] + counts[3];
-  if (front == 0 && back == 0)
-    return ZR_OK;
-  if (front > 0 && back > 0) {
-    /* The receiver straddles the source's plane: split it if it can. */
-    if (can_split(rad, p))
-      return split_and_link(rad, p, q, true, rs_only);
-    if (!rad->surfs[rad->nodes[q].surf].geom.planar && can_split(rad, q))
-      return split_and_link(rad, p, q, false, rs_only);
-  }
-  int ss = back > front;
-  for (int rs = 0; rs < 2; rs++)
-    if (counts[2 * rs + ss] > 0 && (rs_only < 0 || rs == rs_only)) {
-      zr_status st = add_link(rad, p, rs, q, ss);
-      if (st != ZR_OK)
-        return st;
-    }
-  return ZR_OK;
-}
+/* A link as refinement judges it: its two ends, sides, whether it joins
+   a cell to itself and whether its computed visibility is partial. */
+typedef struct link_view {
+  const zr__rad_node *p, *q; /* receiver, source */
+  int rside, sside;
+  bool self, partial;
+} link_view;
 
 /*
  * How much the exact unoccluded factor to the source varies over the
@@ -240,8 +163,8 @@ static zr_status create_links(zr_radiosity *rad, int32_t p, int32_t q,
  * B_q A_p times this spread bounds the light it misplaces inside the
  * receiver.
  */
-static double factor_spread(const zr_radiosity *rad, const zr__rad_link *l) {
-  const zr__rad_node *p = &rad->nodes[l->recv], *q = &rad->nodes[l->src];
+static double factor_spread(const zr_radiosity *rad, const link_view *l) {
+  const zr__rad_node *p = l->p, *q = l->q;
   double rc[4], sc[4];
   zr__rad_node_cell(p, rc);
   zr__rad_node_cell(q, sc);
@@ -271,11 +194,13 @@ static double factor_spread(const zr_radiosity *rad, const zr__rad_link *l) {
   return hi - lo;
 }
 
-/* The spread of the largest channel of B over node n's children (0 for
-   a leaf): how unevenly a source shines. */
-static double radiosity_spread(const zr_radiosity *rad, int32_t n,
-                               int side) {
-  const zr__rad_node *node = &rad->nodes[n];
+/* The spread of the largest channel of B over node's children (0 for a
+   leaf): how unevenly a source shines.  A cell split during the current
+   pass has children that all start from its own value, so this is 0 for
+   it as for a leaf: the answer does not depend on the order in which a
+   pass splits cells. */
+static double radiosity_spread(const zr_radiosity *rad,
+                               const zr__rad_node *node, int side) {
   if (node->child < 0)
     return 0.0;
   double lo = INFINITY, hi = 0.0;
@@ -288,10 +213,10 @@ static double radiosity_spread(const zr_radiosity *rad, int32_t n,
 }
 
 /* Hanrahan's choice: split the node that looks larger from the other. */
-static int larger_end(const zr_radiosity *rad, const zr__rad_link *l,
-                      bool sp, bool sq) {
-  double f_pq = oracle(rad, l->recv, l->rside, l->src, l->sside);
-  double f_qp = oracle(rad, l->src, l->sside, l->recv, l->rside);
+static int larger_end(const zr_radiosity *rad, const link_view *l, bool sp,
+                      bool sq) {
+  double f_pq = oracle(rad, l->p, l->rside, l->q, l->sside);
+  double f_qp = oracle(rad, l->q, l->sside, l->p, l->rside);
   /* Equal up to rounding (equal cells, common in symmetric scenes) is a
      tie, settled for the receiver: rounding must not pick, or a scaled
      scene would refine differently. */
@@ -307,23 +232,22 @@ static int larger_end(const zr_radiosity *rad, const zr__rad_link *l,
  * (known once the link was computed; split the larger end), and an
  * uneven source (split the source).
  */
-static int error_choice(const zr_radiosity *rad, const zr__rad_link *l,
-                        bool sp, bool sq, double thr) {
-  const zr__rad_node *p = &rad->nodes[l->recv], *q = &rad->nodes[l->src];
+static int error_choice(const zr_radiosity *rad, const link_view *l, bool sp,
+                        bool sq, double thr) {
+  const zr__rad_node *p = l->p, *q = l->q;
   double bq = zr__rad_max3(q->b[l->sside]);
   if (!(bq * p->area > thr))
     return 0; /* no factor can make this link matter */
   if (sp && bq * p->area * factor_spread(rad, l) > thr)
     return 1;
-  double f_pq = oracle(rad, l->recv, l->rside, l->src, l->sside);
-  bool partial = l->final && l->vis > 0.0 && l->vis < 1.0;
-  if (partial && bq * p->area * f_pq > thr)
+  double f_pq = oracle(rad, p, l->rside, q, l->sside);
+  if (l->partial && bq * p->area * f_pq > thr)
     return larger_end(rad, l, sp, sq);
   /* An uneven source errs by the same sign at every small receiver near
      it, so this test is per unit area of the receiver: the irradiance
      error against the threshold spread over the scene's area. */
   double thr_area = thr / rad->total_area;
-  if (sq && radiosity_spread(rad, l->src, l->sside) * f_pq > thr_area)
+  if (sq && radiosity_spread(rad, q, l->sside) * f_pq > thr_area)
     return 2;
   return 0;
 }
@@ -333,23 +257,30 @@ static int error_choice(const zr_radiosity *rad, const zr__rad_link *l,
  * exceed the threshold: B A F_self, with F_self estimated as that of a
  * spherical cap whose normals spread as much, (1 - cos spread) / 2.
  */
-static int self_choice(const zr_radiosity *rad, const zr__rad_link *l) {
-  const zr__rad_node *p = &rad->nodes[l->recv];
-  if (!can_split(rad, l->recv))
+static int self_choice(const zr_radiosity *rad, const zr__rad_node *p,
+                       int sside) {
+  if (!can_split(rad, p))
     return 0;
   if (rad->params.uniform > 0)
     return 3;
   double f_self = 0.5 * (1.0 - cos(fmin(p->spread, M_PI)));
-  double e = zr__rad_max3(p->b[l->sside]) * p->area * f_self;
+  double e = zr__rad_max3(p->b[sside]) * p->area * f_self;
   return e > rad->params.bf_eps * rad->power_ref ? 3 : 0;
 }
 
 /* Whether link l should be split, and which end: 1 receiver, 2 source,
    3 both (a self link). */
-static int refine_choice(const zr_radiosity *rad, const zr__rad_link *l) {
-  if (l->recv == l->src)
-    return self_choice(rad, l);
-  bool sp = can_split(rad, l->recv), sq = can_split(rad, l->src);
+static int refine_choice(const zr_radiosity *rad, const link_view *l) {
+  /* A cell that a CSG trim crosses holds removed area that would send
+     and receive as if it were there: links go below it, to the cells
+     zr__rad_trim_split made down to A_eps (trim.c). */
+  bool tp = l->p->kept < 1.0 && can_split(rad, l->p);
+  bool tq = l->q->kept < 1.0 && can_split(rad, l->q);
+  if (l->self)
+    return tp ? 3 : self_choice(rad, l->p, l->sside);
+  if (tp || tq)
+    return tp && (!tq || l->p->area >= l->q->area) ? 1 : 2;
+  bool sp = can_split(rad, l->p), sq = can_split(rad, l->q);
   if (!sp && !sq)
     return 0;
   if (rad->params.uniform > 0)
@@ -361,37 +292,252 @@ static int refine_choice(const zr_radiosity *rad, const zr__rad_link *l) {
      times tighter for a partially visible link (a shadow boundary runs
      through it), which is what keeps light from leaking under objects
      standing on a floor. */
-  const zr__rad_node *p = &rad->nodes[l->recv], *q = &rad->nodes[l->src];
-  double f_pq = oracle(rad, l->recv, l->rside, l->src, l->sside);
-  if (l->final && l->vis > 0.0 && l->vis < 1.0)
+  double f_pq = oracle(rad, l->p, l->rside, l->q, l->sside);
+  if (l->partial)
     thr *= 0.1;
-  if (!(zr__rad_max3(q->b[l->sside]) * f_pq * p->area > thr))
+  if (!(zr__rad_max3(l->q->b[l->sside]) * f_pq * l->p->area > thr))
     return 0;
   return larger_end(rad, l, sp, sq);
 }
 
-/* Replaces link li by finer links when refinement asks; *split set. */
-static zr_status refine_one(zr_radiosity *rad, size_t li, bool *split) {
-  zr__rad_link l = rad->links[li];
+/* ---- refinement as a plan, then its replay ----
+ *
+ * Every decision above reads only the geometry of cells, the radiosity
+ * they start the pass with (a new cell takes its parent's) and the
+ * link's own sides and visibility; none depends on what the pass split
+ * before.  So the recursion of one link (or one pair of input surfaces)
+ * is worked out by a thread on its own, on copies of the cells (a cell
+ * not yet made is filled in as splitting would make it), into a plan:
+ * the splits and links it makes, in the order it makes them.  The
+ * plans are then replayed one after the other in link order by the
+ * calling thread, which makes the cells and links: the nodes and links
+ * come out in the same order, with the same values, for any number of
+ * threads, as if one thread had refined depth first. */
+
+/* A cell by its place in a surface's quadtree. */
+typedef struct cell_key {
+  int32_t surf, depth;
+  uint32_t iu, iv;
+} cell_key;
+
+enum { OP_SPLIT, OP_LINK, OP_KILL_SELF };
+
+/* One step of a plan: split cell a, link receiver a (side rside) to
+   source b (side sside), or kill the self links of cell a. */
+typedef struct plan_op {
+  uint8_t kind, rside, sside, dead;
+  cell_key a, b;
+} plan_op;
+
+typedef struct plan {
+  plan_op *ops;
+  size_t n, cap;
+  bool nomem;
+  int choice; /* of the link a refinement plan starts from */
+} plan;
+
+/* A cell as a plan sees it: a copy of node index, or of the node a
+   split would make (index -1). */
+typedef struct vnode {
+  zr__rad_node n;
+  int32_t index;
+} vnode;
+
+static cell_key key_of(const vnode *v) {
+  cell_key k = {v->n.surf, v->n.depth, v->n.iu, v->n.iv};
+  return k;
+}
+
+static bool same_cell(const vnode *a, const vnode *b) {
+  return a->n.surf == b->n.surf && a->n.depth == b->n.depth &&
+         a->n.iu == b->n.iu && a->n.iv == b->n.iv;
+}
+
+static void vnode_of(const zr_radiosity *rad, int32_t n, vnode *out) {
+  out->n = rad->nodes[n];
+  out->index = n;
+}
+
+/* The four children of v, in zr__rad_subdivide's order, starting from
+   v's radiosity as it gives them. */
+static void vnode_children(const zr_radiosity *rad, const vnode *v,
+                           vnode out[4]) {
+  if (v->index >= 0 && v->n.child >= 0) {
+    for (int k = 0; k < 4; k++)
+      vnode_of(rad, v->n.child + k, &out[k]);
+    return;
+  }
+  uint32_t half = (ZR__RAD_GRID >> v->n.depth) / 2;
+  const uint32_t du[4] = {0, half, half, 0}, dv[4] = {0, 0, half, half};
+  for (int k = 0; k < 4; k++) {
+    zr__rad_node *c = &out[k].n;
+    memset(c, 0, sizeof *c);
+    c->child = -1;
+    c->parent = v->index;
+    c->surf = v->n.surf;
+    c->depth = v->n.depth + 1;
+    c->iu = v->n.iu + du[k];
+    c->iv = v->n.iv + dv[k];
+    zr__rad_node_geometry(rad, c);
+    memcpy(c->b, v->n.b, sizeof c->b);
+    out[k].index = -1;
+  }
+}
+
+/* Appends a step; its index, or SIZE_MAX when out of memory. */
+static size_t plan_push(plan *pl, int kind, const vnode *a, int rside,
+                        const vnode *b, int sside) {
+  if (pl->n == pl->cap) {
+    size_t cap = pl->cap ? 2 * pl->cap : 16;
+    plan_op *ops = realloc(pl->ops, cap * sizeof *ops);
+    if (ops == NULL) {
+      pl->nomem = true;
+      return SIZE_MAX;
+    }
+    pl->ops = ops;
+    pl->cap = cap;
+  }
+  plan_op *op = &pl->ops[pl->n];
+  memset(op, 0, sizeof *op);
+  op->kind = (uint8_t)kind;
+  op->rside = (uint8_t)rside;
+  op->sside = (uint8_t)sside;
+  op->a = key_of(a);
+  if (b != NULL)
+    op->b = key_of(b);
+  return pl->n++;
+}
+
+static void plan_links(const zr_radiosity *rad, plan *pl, const vnode *p,
+                       const vnode *q, int rs_only);
+static void plan_add_link(const zr_radiosity *rad, plan *pl, const vnode *p,
+                          int rs, const vnode *q, int ss);
+
+/* Links every child of p to q (or p to every child of q); rs_only
+   (0, 1, or -1 for both) keeps the receiver side of the link split, so
+   a receiver linked on both sides does not get its children linked
+   twice. */
+static void plan_split_and_link(const zr_radiosity *rad, plan *pl,
+                                const vnode *p, const vnode *q, bool split_p,
+                                int rs_only) {
+  const vnode *n = split_p ? p : q;
+  vnode ch[4];
+  plan_push(pl, OP_SPLIT, n, 0, NULL, 0);
+  vnode_children(rad, n, ch);
+  for (int k = 0; k < 4 && !pl->nomem; k++)
+    plan_links(rad, pl, split_p ? &ch[k] : p, split_p ? q : &ch[k],
+               rs_only);
+}
+
+/* Links all pairs of the children of p (after a self link is split). */
+static void plan_link_children(const zr_radiosity *rad, plan *pl,
+                               const vnode *p) {
+  vnode ch[4];
+  plan_push(pl, OP_SPLIT, p, 0, NULL, 0);
+  vnode_children(rad, p, ch);
+  for (int i = 0; i < 4; i++)
+    for (int j = 0; j < 4 && !pl->nomem; j++)
+      plan_links(rad, pl, &ch[i], &ch[j], -1);
+}
+
+/* A curved cell that sees itself gets a link to itself on each pair of
+   sides that face, unless the self transfer is large enough that its
+   children should be linked instead. */
+static void plan_self_links(const zr_radiosity *rad, plan *pl,
+                            const vnode *p, const int counts[4],
+                            int rs_only) {
+  int sside = 0;
+  for (int k = 0; k < 4; k++)
+    if (counts[k] > 0 && sside < (k & 1))
+      sside = k & 1;
+  if (self_choice(rad, &p->n, sside) == 3) {
+    plan_link_children(rad, pl, p);
+    return;
+  }
+  for (int k = 0; k < 4 && !pl->nomem; k++)
+    if (counts[k] > 0 && (rs_only < 0 || rs_only == k >> 1))
+      plan_add_link(rad, pl, p, k >> 1, p, k & 1);
+}
+
+/* Links receiver p to source q on the sides that face each other (only
+   receiver side rs_only unless it is -1). */
+static void plan_links(const zr_radiosity *rad, plan *pl, const vnode *p,
+                       const vnode *q, int rs_only) {
+  /* A cell that CSG removes whole takes no part (trim.c). */
+  if (!(p->n.kept > 0.0) || !(q->n.kept > 0.0))
+    return;
+  int counts[4];
+  classify(rad, &p->n, &q->n, counts);
+  if (same_cell(p, q)) {
+    if (counts[0] + counts[1] + counts[2] + counts[3] > 0)
+      plan_self_links(rad, pl, p, counts, rs_only);
+    return;
+  }
+  int front = counts[0] + counts[2], back = counts[1] + counts[3];
+  if (front == 0 && back == 0)
+    return;
+  if (front > 0 && back > 0) {
+    /* The receiver straddles the source's plane: split it if it can. */
+    if (can_split(rad, &p->n)) {
+      plan_split_and_link(rad, pl, p, q, true, rs_only);
+      return;
+    }
+    if (!rad->surfs[q->n.surf].geom.planar && can_split(rad, &q->n)) {
+      plan_split_and_link(rad, pl, p, q, false, rs_only);
+      return;
+    }
+  }
+  int ss = back > front;
+  for (int rs = 0; rs < 2 && !pl->nomem; rs++)
+    if (counts[2 * rs + ss] > 0 && (rs_only < 0 || rs == rs_only))
+      plan_add_link(rad, pl, p, rs, q, ss);
+}
+
+/* Refines the link p <- q at once (depth first) if it asks to be;
+   li is its step in the plan (SIZE_MAX for a link the plan starts
+   from).  Returns the choice. */
+static int plan_refine(const zr_radiosity *rad, plan *pl, size_t li,
+                       const vnode *p, int rs, const vnode *q, int ss,
+                       bool partial) {
+  link_view l = {&p->n, &q->n, rs, ss, same_cell(p, q), partial};
   int choice = refine_choice(rad, &l);
-  *split = choice != 0;
-  if (!*split)
-    return ZR_OK;
-  rad->links[li].dead = 1;
+  if (choice == 0)
+    return 0;
+  if (li != SIZE_MAX)
+    pl->ops[li].dead = 1;
   if (choice == 3) {
     /* Every side pair of the cell is relinked through its children, so
        its other self links go too. */
-    for (size_t k = 0; k < rad->n_links; k++)
-      if (rad->links[k].recv == l.recv && rad->links[k].src == l.recv)
-        rad->links[k].dead = 1;
-    return link_children(rad, l.recv);
+    plan_push(pl, OP_KILL_SELF, p, 0, NULL, 0);
+    plan_link_children(rad, pl, p);
+  } else {
+    plan_split_and_link(rad, pl, p, q, choice == 1, rs);
   }
-  return split_and_link(rad, l.recv, l.src, choice == 1, l.rside);
+  return choice;
 }
 
 /* Appends the link and refines it at once (depth first). */
-static zr_status add_link(zr_radiosity *rad, int32_t p, int rs, int32_t q,
-                          int ss) {
+static void plan_add_link(const zr_radiosity *rad, plan *pl, const vnode *p,
+                          int rs, const vnode *q, int ss) {
+  size_t li = plan_push(pl, OP_LINK, p, rs, q, ss);
+  if (li != SIZE_MAX)
+    plan_refine(rad, pl, li, p, rs, q, ss, false);
+}
+
+/* The node of a cell the replay has made (its ancestors are split). */
+static int32_t node_of_key(const zr_radiosity *rad, const cell_key *k) {
+  int32_t n = rad->surfs[k->surf].root;
+  while (rad->nodes[n].depth < k->depth) {
+    const zr__rad_node *node = &rad->nodes[n];
+    uint32_t half = (ZR__RAD_GRID >> node->depth) / 2;
+    bool hu = k->iu - node->iu >= half, hv = k->iv - node->iv >= half;
+    n = node->child + (hv ? (hu ? 2 : 3) : (hu ? 1 : 0));
+  }
+  return n;
+}
+
+static zr_status append_link(zr_radiosity *rad, int32_t p, int rs,
+                             int32_t q, int ss, bool dead) {
   if (rad->n_links == rad->cap_links) {
     size_t cap = rad->cap_links ? 2 * rad->cap_links : 256;
     zr__rad_link *a = realloc(rad->links, cap * sizeof *a);
@@ -400,43 +546,141 @@ static zr_status add_link(zr_radiosity *rad, int32_t p, int rs, int32_t q,
     rad->links = a;
     rad->cap_links = cap;
   }
-  size_t li = rad->n_links++;
-  zr__rad_link *l = &rad->links[li];
+  zr__rad_link *l = &rad->links[rad->n_links++];
   memset(l, 0, sizeof *l);
   l->recv = p;
   l->src = q;
   l->rside = (uint8_t)rs;
   l->sside = (uint8_t)ss;
-  bool split;
-  return refine_one(rad, li, &split);
+  l->dead = dead;
+  return ZR_OK;
+}
+
+static zr_status replay(zr_radiosity *rad, const plan *pl) {
+  if (pl->nomem)
+    return ZR_ENOMEM;
+  for (size_t i = 0; i < pl->n; i++) {
+    const plan_op *op = &pl->ops[i];
+    int32_t a = node_of_key(rad, &op->a);
+    if (op->kind == OP_SPLIT) {
+      if (!zr__rad_subdivide(rad, a))
+        return ZR_ENOMEM;
+    } else if (op->kind == OP_LINK) {
+      zr_status st = append_link(rad, a, op->rside,
+                                 node_of_key(rad, &op->b), op->sside,
+                                 op->dead);
+      if (st != ZR_OK)
+        return st;
+    } else {
+      for (size_t k = 0; k < rad->n_links; k++)
+        if (rad->links[k].recv == a && rad->links[k].src == a)
+          rad->links[k].dead = 1;
+    }
+  }
+  return ZR_OK;
+}
+
+/* Plans are made this many at a time, then replayed: enough to keep
+   the threads busy, few enough that the plans stay small. */
+#define PLAN_BATCH 2048
+
+typedef struct planner {
+  const zr_radiosity *rad;
+  plan *plans;
+  size_t first; /* the task of plans[0] */
+} planner;
+
+static int threads_of(const zr_radiosity *rad) {
+  return rad->params.threads > 1 ? rad->params.threads : 1;
+}
+
+/* link_all's task t joins surface t / n (receiver) to t % n. */
+static void plan_pairs(void *user, size_t begin, size_t end, int worker) {
+  (void)worker;
+  planner *w = user;
+  const zr_radiosity *rad = w->rad;
+  for (size_t t = begin; t < end; t++) {
+    plan *pl = &w->plans[t];
+    pl->n = 0;
+    size_t i = (w->first + t) / rad->n_surfs, j = (w->first + t) % rad->n_surfs;
+    if (i == j && rad->surfs[i].geom.planar)
+      continue; /* a planar surface cannot see itself */
+    vnode p, q;
+    vnode_of(rad, rad->surfs[i].root, &p);
+    vnode_of(rad, rad->surfs[j].root, &q);
+    plan_links(rad, pl, &p, &q, -1);
+  }
+}
+
+static void free_plans(plan *plans) {
+  for (size_t i = 0; plans != NULL && i < PLAN_BATCH; i++)
+    free(plans[i].ops);
+  free(plans);
 }
 
 zr_status zr__rad_link_all(zr_radiosity *rad) {
-  for (size_t i = 0; i < rad->n_surfs; i++)
-    for (size_t j = 0; j < rad->n_surfs; j++) {
-      if (i == j && rad->surfs[i].geom.planar)
-        continue;
-      zr_status st =
-          create_links(rad, rad->surfs[i].root, rad->surfs[j].root, -1);
-      if (st != ZR_OK)
-        return st;
-    }
-  return ZR_OK;
+  size_t n_pairs = rad->n_surfs * rad->n_surfs;
+  plan *plans = calloc(PLAN_BATCH, sizeof *plans);
+  if (plans == NULL)
+    return ZR_ENOMEM;
+  planner w = {rad, plans, 0};
+  zr_status st = ZR_OK;
+  for (size_t at = 0; st == ZR_OK && at < n_pairs; at += PLAN_BATCH) {
+    size_t count = n_pairs - at < PLAN_BATCH ? n_pairs - at : PLAN_BATCH;
+    w.first = at;
+    zr__rad_parallel(threads_of(rad), count, 8, plan_pairs, &w);
+    for (size_t t = 0; st == ZR_OK && t < count; t++)
+      st = replay(rad, &plans[t]);
+  }
+  free_plans(plans);
+  return st;
+}
+
+static void plan_refinements(void *user, size_t begin, size_t end,
+                             int worker) {
+  (void)worker;
+  planner *w = user;
+  const zr_radiosity *rad = w->rad;
+  for (size_t t = begin; t < end; t++) {
+    plan *pl = &w->plans[t];
+    pl->n = 0;
+    pl->choice = 0;
+    const zr__rad_link *l = &rad->links[w->first + t];
+    if (l->dead)
+      continue;
+    vnode p, q;
+    vnode_of(rad, l->recv, &p);
+    vnode_of(rad, l->src, &q);
+    bool partial = l->final && l->vis > 0.0 && l->vis < 1.0;
+    pl->choice =
+        plan_refine(rad, pl, SIZE_MAX, &p, l->rside, &q, l->sside, partial);
+  }
 }
 
 zr_status zr__rad_refine_links(zr_radiosity *rad, size_t *changed) {
   size_t n = rad->n_links;
   *changed = 0;
-  for (size_t i = 0; i < n; i++) {
-    if (rad->links[i].dead)
-      continue;
-    bool split;
-    zr_status st = refine_one(rad, i, &split);
-    if (st != ZR_OK)
-      return st;
-    *changed += split;
+  plan *plans = calloc(PLAN_BATCH, sizeof *plans);
+  if (plans == NULL)
+    return ZR_ENOMEM;
+  planner w = {rad, plans, 0};
+  zr_status st = ZR_OK;
+  for (size_t at = 0; st == ZR_OK && at < n; at += PLAN_BATCH) {
+    size_t count = n - at < PLAN_BATCH ? n - at : PLAN_BATCH;
+    w.first = at;
+    zr__rad_parallel(threads_of(rad), count, 8, plan_refinements, &w);
+    for (size_t t = 0; st == ZR_OK && t < count; t++) {
+      /* A self link killed by an earlier plan of this pass (its cell's
+         other self link split) is left alone, as one thread would. */
+      if (rad->links[at + t].dead || plans[t].choice == 0)
+        continue;
+      rad->links[at + t].dead = 1;
+      (*changed)++;
+      st = replay(rad, &plans[t]);
+    }
   }
-  return ZR_OK;
+  free_plans(plans);
+  return st;
 }
 
 void zr__rad_compact_links(zr_radiosity *rad) {
@@ -480,6 +724,40 @@ static void add_self(const zr__surface_point *pt, double weight,
   s->area += weight;
 }
 
+/* The mean factor over the part of a trimmed receiver cell that its CSG
+   keeps (trim.c): removed points see what the solid's surface does not
+   (the inside of a hole), so they take no part in the mean. */
+typedef struct trimmed_sum {
+  const zr__rad_surface *recv;
+  const zr_vec3 *poly;
+  size_t nv;
+  double side;
+  double flux, area;
+} trimmed_sum;
+
+static void add_trimmed(const zr__surface_point *pt, double weight,
+                        void *user) {
+  trimmed_sum *s = user;
+  if (!zr__rad_trim_keeps(s->recv, pt->p))
+    return;
+  zr_vec3 n = zr_v3_scale(pt->n, s->side);
+  s->flux += weight * zr__ff_point_polygon(pt->p, n, s->poly, s->nv);
+  s->area += weight;
+}
+
+static double trimmed_factor(const zr_radiosity *rad, const zr__rad_node *p,
+                             const double rc[4], double side,
+                             const zr__rad_node *q, const double sc[4]) {
+  zr_vec3 poly[4 * ZR__FF_MAX_SEGS];
+  size_t nv = zr__surface_patch_polygon(&rad->surfs[q->surf].geom, sc[0],
+                                        sc[1], sc[2], sc[3], 16, poly,
+                                        4 * ZR__FF_MAX_SEGS);
+  trimmed_sum s = {&rad->surfs[p->surf], poly, nv, side, 0.0, 0.0};
+  zr__surface_quadrature(&rad->surfs[p->surf].geom, rc[0], rc[1], rc[2],
+                         rc[3], 3, &rad->rule_recv, add_trimmed, &s);
+  return s.area > 0.0 ? s.flux / s.area : -1.0;
+}
+
 static double link_factor(const zr_radiosity *rad, const zr__rad_link *l) {
   const zr__rad_node *p = &rad->nodes[l->recv], *q = &rad->nodes[l->src];
   const zr__surface *gp = &rad->surfs[p->surf].geom;
@@ -492,12 +770,18 @@ static double link_factor(const zr_radiosity *rad, const zr__rad_link *l) {
                   0.0, 0.0};
     zr__surface_quadrature(gp, rc[0], rc[1], rc[2], rc[3], 2,
                            &rad->rule_recv, add_self, &s);
-    return s.area > 0.0 ? fmin(1.0, s.flux / s.area) : 0.0;
+    return s.area > 0.0 ? q->kept * fmin(1.0, s.flux / s.area) : 0.0;
   }
   zr_vec3 d = zr_v3_sub(q->centre, p->centre);
   bool near = zr_v3_dot(d, d) < 4.0 * (p->area + q->area);
-  return zr__ff_patch_patch(gp, rc, side, gq, sc, 16, near ? 3 : 1,
-                            &rad->rule_recv);
+  if (p->kept < 1.0) {
+    double f = trimmed_factor(rad, p, rc, side, q, sc);
+    if (f >= 0.0)
+      return q->kept * f;
+  }
+  /* Only the source's part that CSG keeps sends light (trim.c). */
+  return q->kept * zr__ff_patch_patch(gp, rc, side, gq, sc, 16,
+                                      near ? 3 : 1, &rad->rule_recv);
 }
 
 /* The points of node n at the centres of a k x k grid of its cell,
@@ -548,15 +832,27 @@ static bool facing(zr_vec3 x, zr_vec3 nx, zr_vec3 y, zr_vec3 ny) {
  * permuted source point (stride k + 1, coprime to k^2, so the rays do
  * not run in parallel bundles), or the next one that faces it.
  */
-static double link_visibility(zr_radiosity *rad, const zr__rad_link *l) {
+static double link_visibility(const zr_radiosity *rad,
+                              const zr__rad_link *l, uint64_t *rays) {
   int k = rad->params.visibility_rays, kk = k * k, open = 0, cast = 0;
   double eps = 1e-7 * sqrt(rad->total_area);
   zr_vec3 xp[256], xn[256], yp[256], yn[256];
   grid_points(rad, &rad->nodes[l->recv], k, l->rside, eps, xp, xn);
   grid_points(rad, &rad->nodes[l->src], k, l->sside, eps, yp, yn);
+  /* Points that a CSG removes (trim.c) cast no ray. */
+  bool xk[256], yk[256];
+  const zr__rad_surface *xs = &rad->surfs[rad->nodes[l->recv].surf];
+  const zr__rad_surface *ys = &rad->surfs[rad->nodes[l->src].surf];
   for (int i = 0; i < kk; i++) {
+    xk[i] = xs->trim == NULL || zr__rad_trim_keeps(xs, xp[i]);
+    yk[i] = ys->trim == NULL || zr__rad_trim_keeps(ys, yp[i]);
+  }
+  for (int i = 0; i < kk; i++) {
+    if (!xk[i])
+      continue;
     int j = (i * (k + 1)) % kk, tries = 0;
-    while (tries < kk && !facing(xp[i], xn[i], yp[j], yn[j])) {
+    while (tries < kk &&
+           (!yk[j] || !facing(xp[i], xn[i], yp[j], yn[j]))) {
       j = (j + 1) % kk;
       tries++;
     }
@@ -566,22 +862,44 @@ static double link_visibility(zr_radiosity *rad, const zr__rad_link *l) {
     if (!zr__rad_occluded(rad, xp[i], yp[j]))
       open++;
   }
-  rad->stats.visibility_rays += (uint64_t)cast;
+  *rays += (uint64_t)cast;
   return cast > 0 ? (double)open / cast : 1.0;
 }
 
-void zr__rad_finish_links(zr_radiosity *rad) {
-  for (size_t i = 0; i < rad->n_links; i++) {
-    zr__rad_link *l = &rad->links[i];
+/* The links of [begin, end) not yet final get their transfer factors;
+   each link's own slot is all a worker writes, so the factors are the
+   same whichever thread computes them. */
+typedef struct finisher {
+  zr_radiosity *rad;
+  atomic_uint_fast64_t rays;
+} finisher;
+
+static void finish_range(void *user, size_t begin, size_t end, int worker) {
+  (void)worker;
+  finisher *w = user;
+  const zr_radiosity *rad = w->rad;
+  uint64_t rays = 0;
+  for (size_t i = begin; i < end; i++) {
+    zr__rad_link *l = &w->rad->links[i];
     if (l->dead || l->final)
       continue;
     double f = link_factor(rad, l);
     double vis = 1.0;
     if (f > 0.0 && l->recv != l->src)
-      vis = link_visibility(rad, l);
+      vis = link_visibility(rad, l, &rays);
     f *= vis;
     l->vis = vis;
     l->ff = isfinite(f) ? f : 0.0;
     l->final = 1;
   }
+  /* A count has no summation order: any thread may add its share. */
+  atomic_fetch_add(&w->rays, rays);
+}
+
+void zr__rad_finish_links(zr_radiosity *rad) {
+  finisher w;
+  w.rad = rad;
+  atomic_init(&w.rays, 0);
+  zr__rad_parallel(threads_of(rad), rad->n_links, 64, finish_range, &w);
+  rad->stats.visibility_rays += (uint64_t)atomic_load(&w.rays);
 }

@@ -30,11 +30,19 @@
  * sides of A (1 - rho) H.  In a closed scene that equals the power its
  * inner sides emit: a check that form factors, visibility and solution
  * together conserve energy.
+ *
+ * Threads.  A gather sweep runs over receiver nodes, each adding its
+ * links in link order, and push-pull over surfaces, each summing its
+ * own change, added up over surfaces in order afterwards: the solution
+ * and the residual are the same bits for any number of threads.
+ * Shooting stays on one thread (one shot is a small step).
  */
 #include "radiosity/radiosity.h"
 
 #include <stdlib.h>
 #include <string.h>
+
+#include "radiosity/workers.h"
 
 /* Clears what links deposit at every node. */
 static void clear_gathered(zr_radiosity *rad) {
@@ -59,7 +67,67 @@ static void transfer(zr_radiosity *rad, const zr__rad_link *l,
   p->closure[l->rside] += l->ff;
 }
 
-static void gather(zr_radiosity *rad) {
+/* The live links grouped by receiver node, in link order within each
+   (a counting sort): links[start[n] .. start[n + 1]) end at node n. */
+typedef struct recv_index {
+  uint32_t *start, *links;
+} recv_index;
+
+static void index_by_receiver(const zr_radiosity *rad, recv_index *ix) {
+  ix->start = calloc(rad->n_nodes + 2, sizeof *ix->start);
+  ix->links = malloc((rad->n_links + 1) * sizeof *ix->links);
+  if (ix->start == NULL || ix->links == NULL) {
+    free(ix->start);
+    free(ix->links);
+    ix->start = ix->links = NULL;
+    return; /* gather() then runs on one thread, to the same bits */
+  }
+  for (size_t i = 0; i < rad->n_links; i++)
+    if (!rad->links[i].dead)
+      ix->start[rad->links[i].recv + 2]++;
+  for (size_t n = 2; n < rad->n_nodes + 2; n++)
+    ix->start[n] += ix->start[n - 1];
+  for (size_t i = 0; i < rad->n_links; i++)
+    if (!rad->links[i].dead)
+      ix->links[ix->start[rad->links[i].recv + 1]++] = (uint32_t)i;
+}
+
+static void free_index(recv_index *ix) {
+  free(ix->start);
+  free(ix->links);
+}
+
+typedef struct gatherer {
+  zr_radiosity *rad;
+  const recv_index *ix;
+} gatherer;
+
+/* Gathers into the receivers [begin, end): a worker writes only its own
+   receivers and adds their links in link order, as one thread would, so
+   the sums are the same bits for any number of threads. */
+static void gather_range(void *user, size_t begin, size_t end, int worker) {
+  (void)worker;
+  const gatherer *g = user;
+  zr_radiosity *rad = g->rad;
+  for (size_t n = begin; n < end; n++) {
+    zr__rad_node *node = &rad->nodes[n];
+    memset(node->bg, 0, sizeof node->bg);
+    memset(node->hg, 0, sizeof node->hg);
+    node->closure[0] = node->closure[1] = 0.0;
+    for (uint32_t k = g->ix->start[n]; k < g->ix->start[n + 1]; k++) {
+      const zr__rad_link *l = &rad->links[g->ix->links[k]];
+      transfer(rad, l, rad->nodes[l->src].b[l->sside]);
+    }
+  }
+}
+
+static void gather(zr_radiosity *rad, const recv_index *ix) {
+  if (ix->start != NULL) {
+    gatherer g = {rad, ix};
+    zr__rad_parallel(rad->params.threads, rad->n_nodes, 256, gather_range,
+                     &g);
+    return;
+  }
   clear_gathered(rad);
   for (size_t i = 0; i < rad->n_links; i++) {
     const zr__rad_link *l = &rad->links[i];
@@ -80,7 +148,8 @@ static void push_pull(zr_radiosity *rad, int32_t n, int side,
   for (int c = 0; c < 3; c++)
     d[c] = down[c] + node->bg[side][c];
   if (node->child < 0) {
-    const double *e = rad->surfs[node->surf].emission[side];
+    double e[3]; /* E + rho H_d: emission and light sources (direct.c) */
+    zr__rad_leaf_source(rad, node, side, e);
     double diff = 0.0;
     for (int c = 0; c < 3; c++) {
       up[c] = e[c] + d[c];
@@ -107,26 +176,58 @@ static void push_pull(zr_radiosity *rad, int32_t n, int side,
   }
 }
 
-static double push_pull_all(zr_radiosity *rad) {
-  double change = 0.0, zero[3] = {0, 0, 0}, up[3];
-  for (size_t s = 0; s < rad->n_surfs; s++)
+/* Push-pull of surfaces [begin, end), each tree by one worker; each
+   surface's change goes to its own slot. */
+typedef struct puller {
+  zr_radiosity *rad;
+  double *change;
+} puller;
+
+static void push_pull_range(void *user, size_t begin, size_t end,
+                            int worker) {
+  (void)worker;
+  const puller *w = user;
+  double zero[3] = {0, 0, 0}, up[3];
+  for (size_t s = begin; s < end; s++) {
+    double change = 0.0;
     for (int side = 0; side < 2; side++)
-      push_pull(rad, rad->surfs[s].root, side, zero, up, &change);
-  return change;
+      push_pull(w->rad, w->rad->surfs[s].root, side, zero, up, &change);
+    w->change[s] = change;
+  }
 }
 
-static void solve_gather(zr_radiosity *rad) {
+/* The change, summed per surface and then over surfaces in order, so
+   the residual is the same bits for any number of threads. */
+static double push_pull_all(zr_radiosity *rad, double *change) {
+  puller w = {rad, change};
+  zr__rad_parallel(rad->params.threads, rad->n_surfs, 4, push_pull_range,
+                   &w);
+  double sum = 0.0;
+  for (size_t s = 0; s < rad->n_surfs; s++)
+    sum += change[s];
+  return sum;
+}
+
+static zr_status solve_gather(zr_radiosity *rad) {
+  double *change = malloc((rad->n_surfs + 1) * sizeof *change);
+  if (change == NULL)
+    return ZR_ENOMEM;
+  recv_index ix;
+  index_by_receiver(rad, &ix);
   int it = 0;
   double residual = 0.0;
   while (it < rad->params.max_iterations) {
-    gather(rad);
-    residual = push_pull_all(rad) / rad->power_ref;
+    gather(rad, &ix);
+    residual = push_pull_all(rad, change) / rad->power_ref;
     it++;
     if (!(residual > rad->params.residual))
       break;
   }
   rad->stats.iterations = it;
   rad->stats.residual = residual;
+  free_index(&ix);
+  free(change);
+  return ZR_OK;
 }
 
 /* ---- Southwell shooting ---- */
@@ -236,11 +337,13 @@ static zr_status solve_shooting(zr_radiosity *rad) {
     clear_gathered(rad);
     for (size_t n = 0; n < rad->n_nodes; n++) {
       zr__rad_node *node = &rad->nodes[n];
-      const zr__rad_surface *s = &rad->surfs[node->surf];
-      for (int side = 0; side < 2; side++)
+      for (int side = 0; side < 2; side++) {
+        double e[3] = {0, 0, 0};
+        if (node->child < 0)
+          zr__rad_leaf_source(rad, node, side, e);
         for (int c = 0; c < 3; c++)
-          node->b[side][c] = node->un[side][c] =
-              node->child < 0 ? s->emission[side][c] : 0.0;
+          node->b[side][c] = node->un[side][c] = e[c];
+      }
     }
     int it = 0;
     double residual = 0.0;
@@ -272,21 +375,20 @@ zr_status zr__rad_solve(zr_radiosity *rad, zr_context *ctx) {
     rad->stats.residual = 0.0;
     return ZR_OK;
   }
-  if (!rad->params.shooting) {
-    solve_gather(rad);
-    return ZR_OK;
-  }
-  zr_status st = solve_shooting(rad);
+  zr_status st =
+      rad->params.shooting ? solve_shooting(rad) : solve_gather(rad);
   if (st != ZR_OK)
     return zr__diag(ctx, ZR_DIAG_ERROR, st, NULL,
-                    "radiosity: out of memory while shooting");
+                    rad->params.shooting
+                        ? "radiosity: out of memory while shooting"
+                        : "radiosity: out of memory while gathering");
   return ZR_OK;
 }
 
 /* ---- energy ---- */
 
 typedef struct energy_sums {
-  double emitted, absorbed;
+  double emitted, absorbed, light;
   double closure_area, closure_sum, closure_min, closure_max;
 } energy_sums;
 
@@ -295,8 +397,11 @@ static void energy_leaf(const zr_radiosity *rad, const zr__rad_node *node,
                         energy_sums *e) {
   const zr__rad_surface *s = &rad->surfs[node->surf];
   for (int c = 0; c < 3; c++) {
+    /* h holds the links' light; hd the light sources' (direct.c). */
+    double hc = h[c] + node->hd[side][c];
     e->emitted += node->area * s->emission[side][c] / 3.0;
-    e->absorbed += node->area * (1.0 - s->rho[c]) * h[c] / 3.0;
+    e->light += node->area * node->hd[side][c] / 3.0;
+    e->absorbed += node->area * (1.0 - s->rho[c]) * hc / 3.0;
   }
   if (closure > 0.0) {
     e->closure_area += node->area;
@@ -323,14 +428,18 @@ static void energy_walk(const zr_radiosity *rad, int32_t n, int side,
 }
 
 void zr__rad_energy(zr_radiosity *rad) {
-  gather(rad);
-  energy_sums e = {0.0, 0.0, 0.0, 0.0, INFINITY, 0.0};
+  recv_index ix;
+  index_by_receiver(rad, &ix);
+  gather(rad, &ix);
+  free_index(&ix);
+  energy_sums e = {0.0, 0.0, 0.0, 0.0, 0.0, INFINITY, 0.0};
   double zero[3] = {0, 0, 0};
   for (size_t s = 0; s < rad->n_surfs; s++)
     for (int side = 0; side < 2; side++)
       energy_walk(rad, rad->surfs[s].root, side, zero, 0.0, &e);
   rad->stats.emitted_power = e.emitted;
   rad->stats.absorbed_power = e.absorbed;
+  rad->stats.light_power = e.light;
   rad->stats.closure_mean =
       e.closure_area > 0.0 ? e.closure_sum / e.closure_area : 0.0;
   rad->stats.closure_min = e.closure_area > 0.0 ? e.closure_min : 0.0;

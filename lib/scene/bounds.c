@@ -20,8 +20,10 @@
 
 #include <math.h>
 
+#include "trace/obj_isosurface.h"
 #include "trace/obj_mesh.h"
 #include "trace/obj_shapes.h"
+#include "trace/obj_sweep.h"
 #include "trace/obj_text.h"
 
 /* The half extents along x, y and z of a circle of radius r about the
@@ -105,6 +107,23 @@ static bool local_bounds(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi) {
     return zr__blob_bounds(o, lo, hi);
   case ZR_OBJ_SOR:
     zr__sor_bounds(o, lo, hi);
+    return true;
+  case ZR_OBJ_SPHERE_SWEEP:
+    zr__sweep_bounds(o, lo, hi);
+    return o->u.sweep.data->n_segments > 0;
+  case ZR_OBJ_JULIA:
+    zr__julia_bounds(o, lo, hi);
+    return true;
+  case ZR_OBJ_ISOSURFACE:
+    zr__isosurface_bounds(o, lo, hi);
+    return true;
+  case ZR_OBJ_HEIGHT_FIELD:
+    return zr__height_field_bounds(o, lo, hi);
+  case ZR_OBJ_OVUS:
+    zr__ovus_bounds(o, lo, hi);
+    return true;
+  case ZR_OBJ_PARAMETRIC:
+    zr__parametric_bounds(o, lo, hi);
     return true;
   case ZR_OBJ_SUPERELLIPSOID:
     *lo = zr_v3(-1, -1, -1);

@@ -3,7 +3,7 @@ lib_libzrcube_la_SOURCES += \
 
 # Patterns, noise, colour maps, image maps and normals.
 lib_libzrcube_la_SOURCES += \
-	lib/scene/pattern.c lib/scene/pattern.h \
+	lib/scene/pattern.c lib/scene/pattern.h lib/scene/pattern_more.c \
 	lib/scene/texture.c lib/scene/texture.h
 
 check_PROGRAMS += tests/test_pattern
@@ -25,3 +25,6 @@ tests_test_texture_CPPFLAGS = $(TEST_CPPFLAGS)
 tests_test_texture_LDADD = $(TEST_LDADD)
 tests_test_texture_LDFLAGS = -static
 $(tests_test_texture_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
+
+# The density_file pattern's df3 voxel files (media densities).
+lib_libzrcube_la_SOURCES += lib/scene/df3.c lib/scene/df3.h

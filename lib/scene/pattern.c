@@ -36,6 +36,10 @@
  *   agate      0.5 + 0.5 sin(2 pi (z + agate_turb * wrinkles-like sum));
  *   crackle    distance to the second nearest minus the nearest of one
  *              random point per unit cell (form <-1,1,0>, metric 2);
+ *              form weighs the three nearest distances, metric m
+ *              measures them as (|dx|^m + |dy|^m + |dz|^m)^(1/m),
+ *              offset is a fourth coordinate of every distance, solid
+ *              gives each cell its own random value ("Crackle");
  *   ripples, waves  the mean over 10 random centres in the unit cube of
  *              0.5 + 0.5 sin (ripples) or cos (waves) of 2 pi (distance
  *              * frequency + phase), so they consume frequency and phase
@@ -67,6 +71,7 @@
 #include <math.h>
 #include <stdint.h>
 
+#include "scene/df3.h"
 #include "scene/texture.h"
 
 #define PI 3.14159265358979323846
@@ -93,11 +98,24 @@ void zr__pattern_init(zr_pattern *pt, zr_pattern_kind kind) {
   pt->control1 = 1.0;
   pt->noise_generator = 0;
   pt->pigment = NULL;
+  pt->fractal.iterations = 0;
+  pt->fractal.exponent = 2;
+  pt->fractal.magnet = 0;
+  pt->fractal.c[0] = pt->fractal.c[1] = 0;
+  pt->fractal.interior = 0;
+  pt->fractal.exterior = 1;
+  pt->fractal.interior_factor = pt->fractal.exterior_factor = 1;
+  pt->fn = NULL;
+  pt->object = NULL;
+  pt->crackle_form = zr_v3(-1, 1, 0);
+  pt->crackle_metric = 2;
+  pt->crackle_offset = 0;
+  pt->crackle_solid = false;
 }
 
 bool zr__pattern_is_block(zr_pattern_kind kind) {
   return kind == ZR_PAT_CHECKER || kind == ZR_PAT_HEXAGON ||
-         kind == ZR_PAT_BRICK;
+         kind == ZR_PAT_BRICK || kind == ZR_PAT_OBJECT;
 }
 
 /* ---- noise ---- */
@@ -199,6 +217,55 @@ static zr_vec3 hashed_point(int64_t x, int64_t y, int64_t z) {
   uint32_t a = hash3(x, y, z), b = hash3(x + 7919, y, z),
            c = hash3(x, y + 104729, z);
   return zr_v3(a / 4294967296.0, b / 4294967296.0, c / 4294967296.0);
+}
+
+/* A distance in crackle's metric m, with its offset as a fourth
+   coordinate ("Crackle": offset "displaces the pattern along a fourth
+   dimension"). */
+static double crackle_distance(zr_vec3 d, double m, double offset) {
+  if (m == 2)
+    return sqrt(d.x * d.x + d.y * d.y + d.z * d.z + offset * offset);
+  if (m == 1)
+    return fabs(d.x) + fabs(d.y) + fabs(d.z) + fabs(offset);
+  return pow(pow(fabs(d.x), m) + pow(fabs(d.y), m) + pow(fabs(d.z), m) +
+                 pow(fabs(offset), m),
+             1 / m);
+}
+
+/* Crackle with its form, metric, offset and solid: the weighted sum of
+   the distances to the three nearest feature points (one per unit cell),
+   or with solid the random value of the nearest point's cell. */
+static double crackle_general(const zr_pattern *pt, zr_vec3 p) {
+  double fx = floor(p.x), fy = floor(p.y), fz = floor(p.z);
+  double d[3] = {INFINITY, INFINITY, INFINITY};
+  int64_t near[3] = {0, 0, 0};
+  for (int i = -1; i <= 1; i++)
+    for (int j = -1; j <= 1; j++)
+      for (int k = -1; k <= 1; k++) {
+        int64_t cx = (int64_t)fx + i, cy = (int64_t)fy + j,
+                cz = (int64_t)fz + k;
+        zr_vec3 f = zr_v3_add(hashed_point(cx, cy, cz),
+                              zr_v3((double)cx, (double)cy, (double)cz));
+        double v = crackle_distance(zr_v3_sub(p, f), pt->crackle_metric,
+                                    pt->crackle_offset);
+        if (v < d[0]) {
+          d[2] = d[1];
+          d[1] = d[0];
+          d[0] = v;
+          near[0] = cx;
+          near[1] = cy;
+          near[2] = cz;
+        } else if (v < d[1]) {
+          d[2] = d[1];
+          d[1] = v;
+        } else if (v < d[2]) {
+          d[2] = v;
+        }
+      }
+  if (pt->crackle_solid)
+    return hash3(near[0] + 31337, near[1], near[2]) / 4294967296.0;
+  zr_vec3 w = pt->crackle_form;
+  return clamp01(w.x * d[0] + w.y * d[1] + w.z * d[2]);
 }
 
 /* Voronoi distances to the nearest and second nearest feature point. */
@@ -383,7 +450,11 @@ static double raw_value(const zr_pattern *pt, zr_vec3 p) {
   case ZR_PAT_DENTS:
     return zr__noise(p);
   case ZR_PAT_CRACKLE:
-    return crackle(p);
+    if (pt->crackle_metric == 2 && pt->crackle_offset == 0 &&
+        !pt->crackle_solid && pt->crackle_form.x == -1 &&
+        pt->crackle_form.y == 1 && pt->crackle_form.z == 0)
+      return crackle(p);
+    return crackle_general(pt, p);
   case ZR_PAT_CYLINDRICAL:
     return 1 - fmin(1, sqrt(p.x * p.x + p.z * p.z));
   case ZR_PAT_GRADIENT:
@@ -410,6 +481,13 @@ static double raw_value(const zr_pattern *pt, zr_vec3 p) {
     return sqrt(p.x * p.x + p.y * p.y);
   case ZR_PAT_WRINKLES:
     return clamp01(0.5 * abs_fractal(p, 10, 1.0));
+  case ZR_PAT_MANDEL:
+  case ZR_PAT_JULIA:
+    return zr__pattern_fractal(pt, p);
+  case ZR_PAT_FUNCTION:
+    return zr__pattern_function(pt, p);
+  case ZR_PAT_DENSITY_FILE:
+    return zr__df3_value(pt->density_file, p); /* lib/scene/df3.c */
   default:
     return 0;
   }
@@ -427,6 +505,8 @@ double zr__pattern_eval(const zr_pattern *pt, zr_vec3 p) {
     return hexagon(p);
   case ZR_PAT_BRICK:
     return brick(pt, p);
+  case ZR_PAT_OBJECT:
+    return zr__pattern_object(pt, p);
   case ZR_PAT_RIPPLES:
     return wave_sum(pt, p, false);
   case ZR_PAT_WAVES:

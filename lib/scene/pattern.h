@@ -34,6 +34,16 @@ double zr__pattern_wave(const zr_pattern *pt, double value);
  */
 double zr__pattern_eval(const zr_pattern *pt, zr_vec3 p);
 
+/* mandel and julia (with magnet) and the function pattern before the
+   wave (lib/scene/pattern_more.c). */
+double zr__pattern_fractal(const zr_pattern *pt, zr_vec3 p);
+double zr__pattern_function(const zr_pattern *pt, zr_vec3 p);
+/* The object pattern: 1 inside pt->object, else 0. */
+double zr__pattern_object(const zr_pattern *pt, zr_vec3 p);
+/* The value of pg's pattern at a world point, through pg's transform:
+   what function { pattern { ... } } gives. */
+double zr__pigment_pattern_value(const zr_pigment *pg, zr_vec3 world);
+
 /* Whether kind is a block pattern (a colour list, no colour map). */
 bool zr__pattern_is_block(zr_pattern_kind kind);
 

@@ -22,6 +22,7 @@ void zr__finish_init(zr_finish *f) {
   f->phong_size = 40.0;
   f->roughness = 0.05;
   f->reflection_falloff = 1.0;
+  f->reflection_exponent = 1.0;
 }
 
 void zr__pigment_init(zr_pigment *p) {

@@ -64,8 +64,37 @@ typedef enum zr_pattern_kind {
   ZR_PAT_SPOTTED,
   ZR_PAT_WAVES,
   ZR_PAT_WOOD,
-  ZR_PAT_WRINKLES
+  ZR_PAT_WRINKLES,
+  /* lib/scene/pattern_more.c: fractals (magnet 1 or 2 in pattern.fractal)
+     and user functions. */
+  ZR_PAT_MANDEL,
+  ZR_PAT_JULIA,
+  ZR_PAT_FUNCTION,
+  ZR_PAT_OBJECT, /* a block pattern: 1 inside pattern.object, 0 outside */
+  /* density_file df3 (lib/scene/df3.c). */
+  ZR_PAT_DENSITY_FILE
 } zr_pattern_kind;
+
+/* A df3 voxel grid ("Density File Pattern"), mapped onto the unit cube:
+   nx * ny * nz values in [0, 1], x varying fastest. */
+typedef struct zr_density_file {
+  int nx, ny, nz;
+  const float *values;
+  int interpolate; /* 0 none, 1 trilinear (2, tricubic, acts as 1) */
+} zr_density_file;
+
+/* mandel, julia and magnet ("Fractal Pattern"): POV-Ray's defaults are
+   exponent 2, interior 0 and exterior 1, both with factor 1. */
+typedef struct zr_fractal {
+  int iterations;
+  int exponent;  /* 2 .. 33 */
+  int magnet;    /* 0: none; magnet 1 or 2 */
+  double c[2];   /* julia's complex parameter */
+  int interior, exterior;
+  double interior_factor, exterior_factor;
+} zr_fractal;
+
+struct zr_fn; /* a compiled user function (lib/sdl/function.h) */
 
 /* The wave form applied after frequency and phase ("Waveforms"). */
 typedef enum zr_wave_kind {
@@ -99,6 +128,15 @@ typedef struct zr_pattern {
      for the record: our noise is one function (lib/scene/pattern.c). */
   int noise_generator;
   const struct zr_pigment *pigment; /* pigment_pattern */
+  zr_fractal fractal;               /* mandel, julia */
+  const struct zr_fn *fn;           /* function { }: f(x, y, z) */
+  const struct zr_object *object;   /* object pattern */
+  /* crackle's form (weights of the three nearest distances, default
+     <-1,1,0>), metric (default 2), offset and solid ("Crackle"). */
+  zr_vec3 crackle_form;
+  double crackle_metric, crackle_offset;
+  bool crackle_solid;
+  const zr_density_file *density_file; /* density_file df3 */
 } zr_pattern;
 
 /* color_map: values ascending; the colour between two entries is
@@ -187,12 +225,18 @@ typedef struct zr_normal {
   /* slope_map: the surface's height as a function of the pattern's value,
      a cubic through the entries' heights with their slopes. */
   const zr_map *slope_map;
+  /* accuracy: the step of the central differences that measure the
+     slope, in pattern units ("Accuracy"; default 0.02). */
+  double accuracy;
 } zr_normal;
 
 typedef struct zr_finish {
   zr_rgb ambient;    /* default 0.1, times global ambient_light */
   zr_rgb emission;   /* default 0 */
   double diffuse;    /* default 0.6 */
+  /* diffuse A, B: B of the light arriving at the back of the surface
+     (thin translucent objects: paper, leaves); default 0 */
+  double diffuse_back;
   double brilliance; /* default 1 */
   double phong;      /* default 0 */
   double phong_size; /* default 40 */
@@ -205,6 +249,9 @@ typedef struct zr_finish {
   zr_rgb reflection;     /* reflection (the minimum when max is set) */
   zr_rgb reflection_max; /* equal to reflection unless given */
   double reflection_falloff; /* default 1 */
+  /* reflection { exponent e }: the reflected colour, each channel c,
+     counts as c^(1/e) (measured with POV-Ray 3.7 renders); default 1 */
+  double reflection_exponent;
   bool reflection_fresnel;
   /* reflection { metallic Amount }: 0 when absent, 1 when the keyword
      stands alone; povray tints reflections by 1 + Amount * (1 - F) *
@@ -227,7 +274,44 @@ typedef struct zr_interior {
      above 1000; off while either is 0 (lib/trace/shade.c). */
   double fade_distance, fade_power;
   zr_rgb fade_colour; /* default black */
+  /* media { } inside (lib/trace/media.c); they add where they overlap. */
+  const struct zr_medium *const *media;
+  size_t n_media;
 } zr_interior;
+
+/*
+ * media { } ("Media"): particles that absorb, emit and scatter light,
+ * inside an object's interior or, at scene level, in the atmosphere
+ * (lib/trace/media.c integrates them).  Colours are per unit length;
+ * each is scaled at a point by the product of the densities there.
+ */
+typedef enum zr_scattering_kind {
+  ZR_SCATTER_ISOTROPIC = 1,
+  ZR_SCATTER_MIE_HAZY,
+  ZR_SCATTER_MIE_MURKY,
+  ZR_SCATTER_RAYLEIGH,
+  ZR_SCATTER_HENYEY_GREENSTEIN
+} zr_scattering_kind;
+
+typedef struct zr_medium {
+  int method;                 /* 1, 2 or 3; default 3 */
+  int intervals;              /* default 1 */
+  int min_samples, max_samples; /* default 1, 1 */
+  double confidence;          /* default 0.9 */
+  double variance;            /* default 1/128 */
+  double ratio;               /* default 0.9 */
+  double jitter;              /* default 0 */
+  int aa_level;               /* default 3 */
+  double aa_threshold;        /* default 0.1 */
+  zr_rgb absorption, emission, scattering; /* default black */
+  zr_scattering_kind scattering_type;      /* default isotropic */
+  double eccentricity;        /* Henyey-Greenstein g; default 0 */
+  double extinction;          /* scattering's share of extinction: 1 */
+  /* density { }: pigments whose colours multiply (none: density 1). */
+  const zr_pigment *const *density;
+  size_t n_density;
+  zr_source_loc where;
+} zr_medium;
 
 /*
  * A texture.  A layered one ("Layered Textures") is a chain from the
@@ -275,7 +359,13 @@ typedef enum zr_object_kind {
   ZR_OBJ_LATHE,          /* lib/trace/obj_lathe.c */
   ZR_OBJ_BLOB,           /* lib/trace/obj_blob.c */
   ZR_OBJ_POLY,           /* poly, cubic, quartic: lib/trace/obj_poly.c */
-  ZR_OBJ_SOR             /* lib/trace/obj_sor.c */
+  ZR_OBJ_SOR,            /* lib/trace/obj_sor.c */
+  ZR_OBJ_SPHERE_SWEEP,   /* lib/trace/obj_sweep.c */
+  ZR_OBJ_JULIA,          /* julia_fractal: lib/trace/obj_julia.c */
+  ZR_OBJ_ISOSURFACE,     /* lib/trace/obj_isosurface.c */
+  ZR_OBJ_HEIGHT_FIELD,   /* lib/trace/obj_height_field.c */
+  ZR_OBJ_OVUS,           /* lib/trace/obj_ovus.c */
+  ZR_OBJ_PARAMETRIC      /* lib/trace/obj_parametric.c */
 } zr_object_kind;
 
 /* Whether the object is a CSG node with children in u.csg. */
@@ -285,6 +375,7 @@ static inline bool zr__is_csg(zr_object_kind kind) {
 }
 
 struct zr_mesh; /* triangles and their BVH, shared by every copy */
+struct zr_fn;   /* a compiled user function (lib/sdl/function.h) */
 
 /* One component of a blob ("Blob"): its field is
    strength (1 - d^2 / radius^2)^2 within radius of its centre (sphere)
@@ -333,6 +424,11 @@ struct zr_object {
     struct {
       zr_object **children;
       size_t n_children;
+      /* Light sources written inside the CSG: they follow its
+         transforms and join the scene's lights when the object does
+         (lib/sdl/build_object.c), as in POV-Ray. */
+      struct zr_light **lights;
+      size_t n_lights;
     } csg;
     struct {
       const struct zr_mesh *data;
@@ -430,6 +526,63 @@ struct zr_object {
       zr_vec3 *points; /* as written, kept while the parser reads it */
       size_t n_points, n_expected;
     } sor;
+    struct {
+      /* sphere_sweep ("Sphere Sweep"): its spline pieces, shared by
+         every copy (lib/trace/obj_sweep.h). */
+      const struct zr_sphere_sweep *data;
+    } sweep;
+    struct {
+      /* julia_fractal ("Julia Fractal"): lib/trace/obj_sweep.h. */
+      const struct zr_julia *data;
+    } julia;
+    struct {
+      /* isosurface ("Isosurface"): where fn(x, y, z) equals threshold
+         within the container, a box [lo, hi] or a sphere; inside where
+         fn is below threshold.  The search trusts |grad fn| to stay
+         below max_gradient and stops at intervals of accuracy; it
+         reports the first max_trace crossings along a ray (0: all). */
+      const struct zr_fn *fn;
+      bool sphere, open;
+      zr_vec3 lo, hi;
+      zr_vec3 centre;
+      double radius;
+      double threshold, accuracy, max_gradient;
+      int max_trace;
+    } isosurface;
+    struct {
+      /* height_field ("Height Field"): a w x h grid of heights in
+         [0, 1] over the unit square of the x-z plane, drawn as the
+         triangles of data; water_level hides what lies below it. */
+      const struct zr_mesh *data;
+      const float *heights; /* w * h, row j at z = j / (h - 1) */
+      int w, h;
+      double water_level;
+      bool smooth;
+    } height_field;
+    struct {
+      /* ovus ("Ovus"): a sphere of radius bottom at the origin below
+         y0, one of radius top about <0, bottom, 0> above y1, and
+         between them a lemon: the circle of radius lemon_r about
+         (r, y) = (-lemon_c, lemon_h) turned about the y axis, tangent to
+         both (lib/sdl/build_iso.c computes it).  lemon_r is 0 when the
+         top sphere holds the bottom one: the ovus is the top sphere. */
+      double bottom, top;
+      double lemon_r, lemon_c, lemon_h;
+      double y0, y1;
+    } ovus;
+    struct {
+      /* parametric ("Parametric"): the points <fn[0], fn[1], fn[2]>(u,
+         v) for u in [u0, u1], v in [v0, v1] that lie in the container
+         (a box [lo, hi] or a sphere); a shell, with no inside.  Every
+         partial derivative of the three is taken to stay below
+         max_gradient; accuracy ends the subdivision. */
+      const struct zr_fn *fn[3];
+      double u0, v0, u1, v1;
+      bool sphere;
+      zr_vec3 lo, hi, centre;
+      double radius;
+      double max_gradient, accuracy;
+    } parametric;
   } u;
   /* Object to world (NULL: identity).  A union's modifiers are pushed down
      into its children as they are applied, as POV-Ray does, so a union's
@@ -437,6 +590,9 @@ struct zr_object {
   const zr_transform *transform;
   const zr_texture *texture;   /* NULL: the default texture */
   const zr_interior *interior; /* NULL: the default interior */
+  /* interior_texture { }: the texture of the inside (back) of the
+     surface; NULL: the same as outside. */
+  const zr_texture *interior_texture;
   bool no_shadow;
   bool inverse;
   bool hollow; /* stored for media; it changes nothing else */
@@ -610,6 +766,9 @@ typedef struct zr_settings {
   const zr_fog *fogs;
   const zr_sky_sphere *sky_sphere;
   const zr_rainbow *rainbows;
+  /* Atmospheric media ("Atmospheric Media"), in the order written. */
+  const zr_medium *const *media;
+  size_t n_media;
 } zr_settings;
 
 /* ---- the scene ---- */

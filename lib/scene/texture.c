@@ -320,7 +320,7 @@ zr_vec3 zr__normal_perturb(const zr_normal *nm, zr_vec3 world, zr_vec3 n) {
   if (nm->amount == 0 || nm->pattern.kind == ZR_PAT_NONE)
     return n;
   zr_vec3 p = to_pattern(nm->transform, world);
-  const double h = NORMAL_ACCURACY;
+  const double h = nm->accuracy > 0 ? nm->accuracy : NORMAL_ACCURACY;
   zr_vec3 g = zr_v3(
       height(nm, zr_v3(p.x + h, p.y, p.z)) -
           height(nm, zr_v3(p.x - h, p.y, p.z)),

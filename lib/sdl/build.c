@@ -38,6 +38,9 @@
 #include "scene/pattern.h"
 #include "scene/texture.h"
 #include "sdl/sdl.h"
+#include "sdl/build_camlight.h"
+#include "sdl/build_media.h"
+#include "sdl/build_pattern.h"
 
 static const char *kind_name(zr_object_kind kind) {
   switch (kind) {
@@ -83,6 +86,18 @@ static const char *kind_name(zr_object_kind kind) {
     return "a blob";
   case ZR_OBJ_SOR:
     return "a sor";
+  case ZR_OBJ_SPHERE_SWEEP:
+    return "a sphere_sweep";
+  case ZR_OBJ_JULIA:
+    return "a julia_fractal";
+  case ZR_OBJ_ISOSURFACE:
+    return "an isosurface";
+  case ZR_OBJ_HEIGHT_FIELD:
+    return "a height_field";
+  case ZR_OBJ_OVUS:
+    return "an ovus";
+  case ZR_OBJ_PARAMETRIC:
+    return "a parametric";
   }
   return "an object";
 }
@@ -118,6 +133,8 @@ zr_object *zr__sdl_object_copy(zr_sdl_parser *p, const zr_object *o) {
   if (o->clip && !(copy->clip = zr__sdl_object_copy(p, o->clip)))
     return NULL;
   if (o->bound && !(copy->bound = zr__sdl_object_copy(p, o->bound)))
+    return NULL;
+  if (zr__is_csg(o->kind) && !zr__sdl_csg_copy_lights(p, copy))
     return NULL;
   if (!zr__is_csg(o->kind) || o->u.csg.n_children == 0)
     return copy;
@@ -218,10 +235,14 @@ zr_pigment *zr__sdl_pigment_new(zr_sdl_parser *p, const zr_pigment *from) {
   zr_pigment *pg = zr__sdl_alloc(p, sizeof *pg);
   if (!pg)
     return NULL;
-  if (from)
+  if (from) {
     *pg = *from;
-  else
+  } else {
     zr__pigment_init(pg);
+    /* Pattern defaults already, for a map entry whose function comes
+       first (build_pattern.c, zr__sdl_pigment_function_entry). */
+    zr__pattern_init(&pg->pattern, ZR_PAT_NONE);
+  }
   return pg;
 }
 
@@ -251,6 +272,17 @@ void zr__sdl_finish_reflection(zr_finish *f, const zr_sdl_reflection *r) {
     f->reflection_fresnel = r->fresnel;
   if (r->metallic_given)
     f->reflection_metallic = r->metallic;
+  if (r->exponent_given)
+    f->reflection_exponent = r->exponent;
+}
+
+bool zr__sdl_reflection_exponent(zr_sdl_parser *p, double e,
+                                 const zr_sdl_loc *loc) {
+  if (e > 0.0)
+    return true;
+  zr__sdl_error(p, ZR_ESCENE, loc,
+                "the exponent of reflection must be positive, not %g", e);
+  return false;
 }
 
 zr_texture *zr__sdl_texture_new(zr_sdl_parser *p, const zr_texture *from) {
@@ -458,7 +490,7 @@ bool zr__sdl_pattern_mod(zr_sdl_parser *p, zr_pattern *pt,
       return true;
     return want_positive(p, m, "poly_wave's exponent", &pt->wave_exponent);
   default:
-    return true;
+    return zr__sdl_pattern_mod_more(p, pt, m);
   }
 }
 
@@ -519,6 +551,7 @@ zr_normal *zr__sdl_normal_new(zr_sdl_parser *p, const zr_normal *from) {
   } else {
     zr__pattern_init(&nm->pattern, ZR_PAT_NONE);
     nm->amount = 0.5;
+    nm->accuracy = 0.02;
   }
   return nm;
 }
@@ -580,6 +613,10 @@ static char *find_image(zr_sdl_parser *p, const char *name) {
     free(path);
   }
   return NULL;
+}
+
+char *zr__sdl_find_image(zr_sdl_parser *p, const char *name) {
+  return find_image(p, name);
 }
 
 zr_image_map *zr__sdl_image_map_new(zr_sdl_parser *p, const char *name,
@@ -652,10 +689,24 @@ static bool transform_object(zr_sdl_parser *p, zr_object *o,
       return false;
     o->texture = tx;
   }
-  if (zr__is_csg(o->kind))
+  /* interior_texture and media densities move too (build_media.c). */
+  if (o->interior_texture) {
+    zr_texture *tx = zr__sdl_texture_new(p, o->interior_texture);
+    if (!tx || !zr__sdl_texture_transform(p, tx, t))
+      return false;
+    o->interior_texture = tx;
+  }
+  if (o->interior &&
+      !(o->interior = zr__sdl_interior_transform(p, o->interior, t)))
+    return false;
+  if (zr__is_csg(o->kind)) {
     for (size_t i = 0; i < o->u.csg.n_children; i++)
       if (!transform_object(p, o->u.csg.children[i], t))
         return false;
+    /* The lights are the object's own copies too. */
+    for (size_t i = 0; i < o->u.csg.n_lights; i++)
+      zr__sdl_light_transform(p, o->u.csg.lights[i], t);
+  }
   /* The clip and the bound are the object's own copies (see
      zr__sdl_object_copy), so they may be changed in place. */
   if (o->clip && !transform_object(p, (zr_object *)o->clip, t))
@@ -752,6 +803,10 @@ bool zr__sdl_object_mod(zr_sdl_parser *p, zr_object *o,
     }
     if (o->kind == ZR_OBJ_SOR) {
       o->u.sor.open = true;
+      return true;
+    }
+    if (o->kind == ZR_OBJ_ISOSURFACE) {
+      o->u.isosurface.open = true;
       return true;
     }
     zr__sdl_error(p, ZR_ESYNTAX, loc,

@@ -150,6 +150,11 @@ bool zr__sdl_light_end(zr_sdl_parser *p, zr_light *l,
   if (l->area_illumination)
     zr__sdl_warning(p, loc, "'area_illumination' is not rendered yet: the "
                             "area light shades from its centre");
+  return true;
+}
+
+bool zr__sdl_light_add(zr_sdl_parser *p, zr_light *l,
+                       const zr_sdl_loc *loc) {
   if ((l->looks_like &&
        zr__scene_add_object(p->scene, l->looks_like) != ZR_OK) ||
       zr__scene_add_light(p->scene, l) != ZR_OK) {
@@ -163,6 +168,7 @@ bool zr__sdl_light_end(zr_sdl_parser *p, zr_light *l,
 
 void zr__sdl_camera_begin(zr_sdl_parser *p, const zr_sdl_loc *loc) {
   zr_camera *c = &p->scene->camera;
+  zr_camera saved = *c;
   zr__camera_init(c);
   c->given = true;
   c->confidence = 0.9;
@@ -171,7 +177,37 @@ void zr__sdl_camera_begin(zr_sdl_parser *p, const zr_sdl_loc *loc) {
   c->where.line = loc->line;
   c->where.column = loc->column;
   memset(&p->camera, 0, sizeof p->camera);
+  p->camera.saved = saved;
   zr__transform_identity(&p->camera.transform);
+}
+
+/*
+ * camera { Name ... }: the block starts from the declared camera, which
+ * is finished (aimed, transformed), so what follows acts on it as on a
+ * camera already placed, as in POV-Ray; its angles stay unless the
+ * block sets new ones.
+ */
+void zr__sdl_camera_from(zr_sdl_parser *p, const zr_camera *declared) {
+  zr_camera *c = &p->scene->camera;
+  zr_source_loc where = c->where;
+  *c = *declared;
+  c->given = true;
+  c->where = where;
+  p->camera.from_id = true;
+}
+
+/*
+ * The value of "#declare Name = camera { ... }": the camera just
+ * finished, copied into the arena, while the scene gets back the camera
+ * it had before the block.
+ */
+const zr_camera *zr__sdl_camera_value(zr_sdl_parser *p) {
+  zr_camera *copy = zr__sdl_alloc(p, sizeof *copy);
+  if (copy == NULL)
+    return NULL;
+  *copy = p->scene->camera;
+  p->scene->camera = p->camera.saved;
+  return copy;
 }
 
 bool zr__sdl_camera_type(zr_sdl_parser *p, zr_camera_kind kind,
@@ -271,6 +307,13 @@ static void look_at(zr_camera *c, zr_vec3 target) {
 
 /* The projections' angles: given, or each kind's default. */
 static void camera_angles(zr_sdl_parser *p, zr_camera *c) {
+  if (p->camera.from_id) {
+    if (p->camera.angle_given)
+      c->h_angle = p->camera.angle;
+    if (p->camera.v_angle_given)
+      c->v_angle = p->camera.v_angle;
+    return;
+  }
   if (c->kind == ZR_CAMERA_SPHERICAL) {
     c->h_angle = p->camera.angle_given ? p->camera.angle : 360.0;
     c->v_angle = p->camera.v_angle_given ? p->camera.v_angle

@@ -25,11 +25,19 @@ bool zr__sdl_light_bool(zr_sdl_parser *p, const zr_sdl_expr *e,
                         const zr_sdl_loc *loc, bool *out);
 bool zr__sdl_looks_like(zr_sdl_parser *p, zr_light *l, zr_object *o,
                         const zr_sdl_loc *loc);
-/* Checks the light and adds it (and its looks_like object). */
+/* Checks the finished light. */
 bool zr__sdl_light_end(zr_sdl_parser *p, zr_light *l,
+                       const zr_sdl_loc *loc);
+/* Adds the light (and its looks_like object) to the scene. */
+bool zr__sdl_light_add(zr_sdl_parser *p, zr_light *l,
                        const zr_sdl_loc *loc);
 
 void zr__sdl_camera_begin(zr_sdl_parser *p, const zr_sdl_loc *loc);
+/* camera { CAMERA_IDENTIFIER ...: start from the declared camera. */
+void zr__sdl_camera_from(zr_sdl_parser *p, const zr_camera *declared);
+/* The finished camera as a #declare value; the scene's camera is given
+   back the value it had before the block.  NULL when out of memory. */
+const zr_camera *zr__sdl_camera_value(zr_sdl_parser *p);
 /* The projection; cylinder needs its type (1-4) in e. */
 bool zr__sdl_camera_type(zr_sdl_parser *p, zr_camera_kind kind,
                          const zr_sdl_expr *e, const zr_sdl_loc *loc);

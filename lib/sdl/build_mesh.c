@@ -819,7 +819,13 @@ zr_object *zr__sdl_text(zr_sdl_parser *p, const zr_sdl_loc *loc,
   }
   char *bytes = NULL;
   size_t size = 0;
-  if (!read_font(p, font_name, &bytes, &size)) {
+  /* Like POV-Ray, which says "Cannot find file ..., even after trying
+     to append file type extension": "cyrvetic" finds cyrvetic.ttf. */
+  const char *with_ext = zr__sdl_concat(p, font_name, ".ttf");
+  if (!with_ext)
+    return NULL;
+  if (!read_font(p, font_name, &bytes, &size) &&
+      !read_font(p, with_ext, &bytes, &size)) {
     zr__sdl_error(p, ZR_ENOTFOUND, font_loc, "cannot find font '%s'",
                   font_name);
     return NULL;

@@ -33,6 +33,8 @@
 
 #include "pov-parse.h"
 #include "sdl/sdl.h"
+#include "sdl/build_camlight.h"
+#include "sdl/build_media.h"
 #include "trace/obj_poly.h"
 #include "trace/roots.h"
 
@@ -58,7 +60,12 @@ bool zr__sdl_object_mod_more(zr_sdl_parser *p, zr_object *o,
                              const zr_sdl_mod *mod) {
   switch (mod->kind) {
   case ZR_SDL_MOD_HOLLOW:
+    /* A union's parts are traced one by one: they carry the flag that
+       lets media be seen through them (lib/trace/media.c). */
     o->hollow = mod->ptr == NULL;
+    if (zr__is_csg(o->kind))
+      for (size_t i = 0; i < o->u.csg.n_children; i++)
+        zr__sdl_object_mod_more(p, o->u.csg.children[i], mod);
     return true;
   case ZR_SDL_MOD_CLIPPED_BY:
     o->clip = mod->ptr;
@@ -73,6 +80,9 @@ bool zr__sdl_object_mod_more(zr_sdl_parser *p, zr_object *o,
     return true;
   case ZR_SDL_MOD_BOUND_TO_CLIP:
     return true; /* a bound only: nothing to do */
+  case ZR_SDL_MOD_INTERIOR_TEXTURE:
+    zr__sdl_interior_texture(o, mod->ptr); /* build_media.c */
+    return true;
   default:
     break;
   }
@@ -151,4 +161,69 @@ bool zr__sdl_poly_done(zr_sdl_parser *p, zr_object *o,
                 "a poly of order %d has %d coefficients, not %d",
                 o->u.poly.order, terms, o->u.poly.n_coef);
   return false;
+}
+
+/* ---- light sources inside CSG ("Light Sources", "Union") ---- */
+
+bool zr__sdl_csg_add_light(zr_sdl_parser *p, zr_object *csg, zr_light *l) {
+  size_t n = csg->u.csg.n_lights;
+  zr_light **grown = zr__sdl_alloc(p, (n + 1) * sizeof *grown);
+  if (grown == NULL)
+    return false;
+  if (n > 0)
+    memcpy(grown, csg->u.csg.lights, n * sizeof *grown);
+  grown[n] = l;
+  csg->u.csg.lights = grown;
+  csg->u.csg.n_lights = n + 1;
+  return true;
+}
+
+zr_light *zr__sdl_light_copy(zr_sdl_parser *p, const zr_light *l) {
+  zr_light *copy = zr__sdl_alloc(p, sizeof *copy);
+  if (copy == NULL)
+    return NULL;
+  *copy = *l;
+  /* The looks_like object moves with the light: each copy needs its
+     own. */
+  if (l->looks_like &&
+      !(copy->looks_like = zr__sdl_object_copy(p, l->looks_like)))
+    return NULL;
+  return copy;
+}
+
+bool zr__sdl_csg_copy_lights(zr_sdl_parser *p, zr_object *copy) {
+  size_t n = copy->u.csg.n_lights;
+  if (n == 0)
+    return true;
+  zr_light **lights = zr__sdl_alloc(p, n * sizeof *lights);
+  if (lights == NULL)
+    return false;
+  for (size_t i = 0; i < n; i++)
+    if (!(lights[i] = zr__sdl_light_copy(p, copy->u.csg.lights[i])))
+      return false;
+  copy->u.csg.lights = lights;
+  return true;
+}
+
+/* The lights of o and of its CSG children, in the order written. */
+static bool add_lights(zr_sdl_parser *p, const zr_object *o,
+                       const zr_sdl_loc *loc) {
+  if (!zr__is_csg(o->kind))
+    return true;
+  for (size_t i = 0; i < o->u.csg.n_lights; i++)
+    if (!zr__sdl_light_add(p, o->u.csg.lights[i], loc))
+      return false;
+  for (size_t i = 0; i < o->u.csg.n_children; i++)
+    if (!add_lights(p, o->u.csg.children[i], loc))
+      return false;
+  return true;
+}
+
+bool zr__sdl_add_object(zr_sdl_parser *p, zr_object *o,
+                        const zr_sdl_loc *loc) {
+  if (zr__scene_add_object(p->scene, o) != ZR_OK) {
+    zr__sdl_error(p, ZR_ENOMEM, loc, "out of memory");
+    return false;
+  }
+  return add_lights(p, o, loc);
 }

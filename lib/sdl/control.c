@@ -561,6 +561,10 @@ static bool do_macro(zr_sdl_parser *p, const zr_sdl_loc *at) {
       if (zr__sdl_peek(p, 0)->kind != ',')
         break;
       zr__sdl_top(p)->pos++;
+      /* POV-Ray takes a comma after the last parameter (shapes3.inc's
+         Rounded_Tube has one). */
+      if (zr__sdl_peek(p, 0)->kind == ')')
+        break;
     }
   }
   if (!expect(p, ')', "',' or ')' in the macro's parameters"))

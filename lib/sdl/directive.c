@@ -581,6 +581,7 @@ static bool ends_operand(int kind) {
   case T_INTERIOR_ID: case T_OBJECT_ID: case T_STRING_ID: case T_ARRAY_ID:
   case T_SEED_ID: case T_FUNCTION_ID: case T_STRING:
   case T_NORMAL_ID: case T_COLOUR_MAP_ID: case T_MATERIAL_ID:
+  case T_MEDIA_ID: case T_TRANSFORM_ID: case T_DENSITY_ID:
   /* function.c reads a function's body straight from the token array:
      the next token the engine hands out follows the whole function. */
   case T_FUNCTION:
@@ -803,6 +804,11 @@ static int identifier_token(zr_sdl_kind kind) {
   case ZR_SDL_COLOUR_MAP: return T_COLOUR_MAP_ID;
   case ZR_SDL_MATERIAL: return T_MATERIAL_ID;
   case ZR_SDL_SKY_SPHERE: return T_SKY_SPHERE_ID;
+  case ZR_SDL_CAMERA: return T_CAMERA_ID;
+  case ZR_SDL_LIGHT: return T_LIGHT_ID;
+  case ZR_SDL_MEDIA: return T_MEDIA_ID;
+  case ZR_SDL_DENSITY: return T_DENSITY_ID;
+  case ZR_SDL_TRANSFORM: return T_TRANSFORM_ID;
   case ZR_SDL_STRING: return T_STRING_ID;
   case ZR_SDL_ARRAY: return T_ARRAY_ID;
   case ZR_SDL_SEED: return T_SEED_ID;

@@ -36,10 +36,16 @@
  * 45 f_paraboloid, 47 f_ph, 57 f_r, 60 f_rounded_box, 61 f_sphere, 68
  * f_superellipsoid, 69 f_th, 70 f_torus and 71 f_torus2, each fitted to
  * povray 3.7's own values at several points (see tests/test_function.c;
- * its source was not consulted).  Any other n, and pattern/pigment/
- * transform/spline functions, still compile, so functions.inc parses,
- * but a function that uses one reports it by name and number when it is
- * called (zr__fn_unsupported() tells later users the same).
+ * its source was not consulted).  Any other n, and transform and spline
+ * functions, still compile, so functions.inc parses, but a function that
+ * uses one reports it by name and number when it is called
+ * (zr__fn_unsupported() tells later users the same).
+ *
+ * function { pattern { ... } } and function { pigment { ... } } are read
+ * by the grammar (a nested parse) and become one instruction that
+ * evaluates the pattern's value or the pigment's colour at (x, y, z)
+ * ("Function Pattern"); another body uses a pigment function as
+ * F(x, y, z).red (or .x, .gray ...), one channel of the colour.
  */
 #include "config.h"
 
@@ -51,6 +57,8 @@
 #include <string.h>
 
 #include "pov-parse.h"
+#include "scene/pattern.h"
+#include "scene/texture.h"
 #include "sdl/function.h"
 
 /* ---- the machine ---- */
@@ -63,6 +71,8 @@
  * from slot[arg] or consts[arg] instead (most right operands are one,
  * and one dispatch instead of two is most of the speed).  CALL runs
  * callees[arg] and INTERNAL internal function arg on the top n values;
+ * TEXTURE evaluates pigments[arg] at the top three values, giving its
+ * pattern's value (n -1) or colour channel n (5: its grey);
  * RETURN ends every program with the top value.
  */
 #define OPS(X)                                                             \
@@ -77,7 +87,8 @@
   X(OP_EXP) X(OP_LN) X(OP_LOG) X(OP_SQRT) X(OP_ABS) X(OP_FLOOR)            \
   X(OP_CEIL) X(OP_INT) X(OP_DEGREES) X(OP_RADIANS)                         \
   X(OP_ATAN2) X(OP_POW) X(OP_MOD) X(OP_MIN) X(OP_MAX)                      \
-  X(OP_SELECT3) X(OP_SELECT4) X(OP_CALL) X(OP_INTERNAL) X(OP_RETURN)
+  X(OP_SELECT3) X(OP_SELECT4) X(OP_CALL) X(OP_INTERNAL) X(OP_TEXTURE)    \
+  X(OP_RETURN)
 
 #define AS_ENUM(o) o,
 typedef enum op { OPS(AS_ENUM) } op;
@@ -99,7 +110,16 @@ struct zr_fn {
   const double *consts;
   const zr_fn *const *callees;
   const char *unsupported; /* NULL, or what is missing (see header) */
+  /* pattern { } and pigment { } bodies: what OP_TEXTURE evaluates. */
+  const zr_pigment *const *pigments;
+  int texture_kind; /* 0 plain, FN_PATTERN or FN_PIGMENT */
 };
+
+#define FN_PATTERN 1
+#define FN_PIGMENT 2
+/* The channel OP_TEXTURE gives for a pattern's value, and the grey. */
+#define TEXTURE_PATTERN (-1)
+#define TEXTURE_GREY 5
 
 /* ---- internal functions (functions.inc) ---- */
 
@@ -227,6 +247,23 @@ static double eval_internal(int number, const double *a) {
 
 /* ---- evaluation ---- */
 
+/* A pattern or pigment function's value at the point at[0..2]. */
+static double texture_value(const zr_pigment *pg, int channel,
+                            const double *at) {
+  zr_vec3 p = zr_v3(at[0], at[1], at[2]);
+  if (channel == TEXTURE_PATTERN)
+    return zr__pigment_pattern_value(pg, p);
+  zr_colour c = zr__pigment_eval(pg, p);
+  switch (channel) {
+  case 0: return c.r;
+  case 1: return c.g;
+  case 2: return c.b;
+  case 3: return c.f;
+  case 4: return c.t;
+  default: return 0.297 * c.r + 0.589 * c.g + 0.114 * c.b;
+  }
+}
+
 static double truth(bool b) { return b ? 1.0 : 0.0; }
 
 /* POV-Ray's select(): the sign of a picks the value (Float Functions). */
@@ -353,6 +390,11 @@ static double run(const zr_fn *f, double *base) {
       *sp = eval_internal(i->arg, sp);
       sp++;
       NEXT();
+    CASE(OP_TEXTURE)
+      sp -= 3;
+      *sp = texture_value(f->pigments[i->arg], i->n, sp);
+      sp++;
+      NEXT();
     CASE(OP_RETURN) return sp[-1];
 #ifndef VM_THREADED
     default: return NAN; /* never: every opcode has its case */
@@ -391,6 +433,9 @@ typedef struct compiler {
   size_t n_consts, cap_consts;
   const zr_fn **callees;
   size_t n_callees, cap_callees;
+  const zr_pigment **pigments;
+  size_t n_pigments, cap_pigments;
+  int texture_kind;
   int height, max_height; /* operand stack depth now and at most */
   int need_calls;         /* the deepest a call reaches above base */
   int depth;
@@ -763,6 +808,50 @@ static bool sum_or_prod(compiler *c, bool is_sum) {
   return want(c, ')', "')'");
 }
 
+/* Adds a pigment to the body's pool; its index, or -1. */
+static int add_pigment(compiler *c, const zr_pigment *pg) {
+  if (!grow(c, (void **)&c->pigments, &c->cap_pigments, c->n_pigments,
+            sizeof *c->pigments))
+    return -1;
+  c->pigments[c->n_pigments] = pg;
+  return (int)c->n_pigments++;
+}
+
+/* F(x, y, z).channel for a pigment function F ("Function Pattern":
+   "you have to specify which component of the color vector should be
+   used"): the call becomes one OP_TEXTURE on this body's copy of F's
+   pigment. */
+static bool call_pigment(compiler *c, const zr_fn *callee,
+                         const zr_sdl_token *name) {
+  int n = arguments(c);
+  if (n < 0)
+    return false;
+  if (n != 3)
+    return fail_at(c, name, ZR_ESYNTAX,
+                   "function '%s' takes 3 arguments, not %d", name->v.str,
+                   n);
+  if (!accept(c, '.'))
+    return expected(c, "'.' and a colour component after a pigment "
+                       "function");
+  static const char *const items[] = {"x", "y", "z", "t", "u", "v",
+                                      "red", "green", "blue", "filter",
+                                      "transmit", "gray", "grey"};
+  static const int channel[] = {0, 1, 2, 3, 0, 1, 0, 1, 2, 3, 4,
+                                TEXTURE_GREY, TEXTURE_GREY};
+  for (size_t k = 0; k < sizeof items / sizeof items[0]; k++) {
+    if (is_word(tok(c), items[k]) ||
+        (tok(c)->kind == T_IDENTIFIER && strcmp(tok(c)->v.str,
+                                                items[k]) == 0)) {
+      c->pos++;
+      int at = add_pigment(c, callee->pigments[0]);
+      if (at < 0)
+        return false;
+      return emit(c, OP_TEXTURE, at, channel[k], -2);
+    }
+  }
+  return expected(c, "a colour component after '.'");
+}
+
 /* A declared identifier in a body. */
 static bool declared(compiler *c, const zr_sdl_token *name) {
   const zr_sdl_symbol *s = zr__sdl_lookup(c->p, name->v.str, NULL);
@@ -770,6 +859,9 @@ static bool declared(compiler *c, const zr_sdl_token *name) {
     return fail_at(c, name, ZR_EUNDEFINED,
                    "undefined identifier '%s' in function", name->v.str);
   const zr_sdl_value *v = &s->value;
+  if (v->kind == ZR_SDL_FUNCTION &&
+      ((const zr_fn *)v->ptr)->texture_kind == FN_PIGMENT)
+    return call_pigment(c, v->ptr, name);
   if (v->kind == ZR_SDL_FUNCTION)
     return call_function(c, v->ptr, name);
   if (v->kind == ZR_SDL_FLOAT)
@@ -990,8 +1082,46 @@ static bool skip_block(compiler *c) {
   return true;
 }
 
-/* Bodies of the special kinds (pattern, pigment, transform, spline):
-   parsed over, usable once the texture code evaluates them. */
+/*
+ * pattern { PATTERN ... } and pigment { ... } bodies: read by the
+ * grammar itself (a nested parse from the 'pattern' or 'pigment' token,
+ * which ends right after its '}' without looking further), then the
+ * body becomes x, y, z and one OP_TEXTURE.  A pigment function called
+ * alone (not as F(x,y,z).red) gives its pigment's grey.
+ */
+static bool texture_body(compiler *c, bool pigment) {
+  zr_sdl_parser *p = c->p;
+  size_t frames = p->n_frames;
+  p->frames[frames - 1].pos = c->pos;
+  if (zr__sdl_parse_nested(p, T_START_FN_TEXTURE) != ZR_OK) {
+    c->failed = true;
+    return false;
+  }
+  c->f = &p->files[c->file];
+  if (p->n_frames != frames || p->frames[frames - 1].file != c->file) {
+    zr_sdl_loc at = zr__sdl_peek_loc(p, 0);
+    zr__sdl_error(p, ZR_ESYNTAX, &at, "a function's %s must end in the "
+                  "file or macro where it begins",
+                  pigment ? "pigment" : "pattern");
+    c->failed = true;
+    return false;
+  }
+  c->pos = p->frames[frames - 1].pos;
+  int at = add_pigment(c, p->nested_rvalue.ptr);
+  if (at < 0)
+    return false;
+  c->n_params = 3;
+  c->n_slots = 3;
+  c->texture_kind = pigment ? FN_PIGMENT : FN_PATTERN;
+  for (int k = 0; k < 3; k++)
+    if (!emit(c, OP_LOAD, k, 0, 1))
+      return false;
+  return emit(c, OP_TEXTURE, at, pigment ? TEXTURE_GREY : TEXTURE_PATTERN,
+              -2);
+}
+
+/* Bodies of the other special kinds (transform, spline): parsed over,
+   usable once the code evaluates them. */
 static bool special_body(compiler *c, const char *w) {
   static const char *const reasons[] = {
       "pattern functions", "pigment functions", "transform functions",
@@ -1060,8 +1190,14 @@ static const zr_fn *finish(compiler *c) {
       zr__sdl_alloc(p, (c->n_consts ? c->n_consts : 1) * sizeof *consts);
   const zr_fn **callees = zr__sdl_alloc(
       p, (c->n_callees ? c->n_callees : 1) * sizeof *callees);
-  if (!fn || !code || !consts || !callees)
+  const zr_pigment **pigments = zr__sdl_alloc(
+      p, (c->n_pigments ? c->n_pigments : 1) * sizeof *pigments);
+  if (!fn || !code || !consts || !callees || !pigments)
     return NULL;
+  if (c->n_pigments)
+    memcpy(pigments, c->pigments, c->n_pigments * sizeof *pigments);
+  fn->pigments = (const zr_pigment *const *)pigments;
+  fn->texture_kind = c->texture_kind;
   /* An empty pool was never allocated, and memcpy from NULL is
      undefined even for no bytes. */
   if (c->n_code)
@@ -1103,8 +1239,11 @@ static bool definition(compiler *c, const zr_sdl_loc *at) {
     if (!internal_body(c, have_params))
       return false;
   } else if (w && !have_params &&
-             (strcmp(w, "pattern") == 0 || strcmp(w, "pigment") == 0 ||
-              strcmp(w, "transform") == 0 || strcmp(w, "spline") == 0)) {
+             (strcmp(w, "pattern") == 0 || strcmp(w, "pigment") == 0)) {
+    if (!texture_body(c, w[1] == 'i'))
+      return false;
+  } else if (w && !have_params &&
+             (strcmp(w, "transform") == 0 || strcmp(w, "spline") == 0)) {
     if (!special_body(c, w))
       return false;
   } else if (!expr(c)) {
@@ -1137,6 +1276,10 @@ const zr_fn *zr__sdl_function_parse(zr_sdl_parser *p, const zr_sdl_loc *at) {
   free(c.code);
   free(c.consts);
   free(c.callees);
+  free(c.pigments);
+  /* A pattern or pigment body ran a nested parse, which may have moved
+     the frames (a macro called in it): take the frame anew. */
+  fr = &p->frames[p->n_frames - 1];
   fr->pos = c.pos;
   /* The engine ends a #declare's value by watching the tokens it hands
      out (directive.c, autoend_due); the body went past it, and ended
@@ -1178,6 +1321,12 @@ bool zr__sdl_function_call(zr_sdl_parser *p, const zr_fn *fn,
                   "not %d", name, fn->n_params,
                   fn->n_params == 1 ? "" : "s", args->n);
     return false;
+  }
+  if (fn->texture_kind == FN_PIGMENT) {
+    /* A pigment function gives the pigment's colour there. */
+    zr_vec3 at = zr_v3(args->v[0], args->v[1], args->v[2]);
+    *out = zr__sdl_colour_expr(zr__pigment_eval(fn->pigments[0], at));
+    return true;
   }
   *out = zr__sdl_float(zr__fn_eval(fn, args->v));
   return true;

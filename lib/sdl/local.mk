@@ -59,12 +59,29 @@ $(tests_test_function_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
 # Building meshes, mesh2 and text from the grammar.
 lib_libzrcube_la_SOURCES += lib/sdl/build_mesh.c lib/sdl/build_mesh.h
 lib_libzrcube_la_SOURCES += lib/sdl/build_texture.c
+# Transform blocks, fractal and function patterns (lib/sdl/build_pattern.c).
+lib_libzrcube_la_SOURCES += lib/sdl/build_pattern.c lib/sdl/build_pattern.h
+check_PROGRAMS += tests/test_pattern_more
+TESTS += tests/test_pattern_more
+tests_test_pattern_more_SOURCES = tests/test_pattern_more.c \
+	tests/parse_fixture.c tests/parse_fixture.h
+tests_test_pattern_more_CPPFLAGS = $(TEST_CPPFLAGS)
+tests_test_pattern_more_LDADD = $(TEST_LDADD)
+tests_test_pattern_more_LDFLAGS = -static
+$(tests_test_pattern_more_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
 
 # Cameras, lights and atmospheric effects (issue 3).
 lib_libzrcube_la_SOURCES += lib/sdl/build_camlight.c lib/sdl/build_camlight.h
 
 # Building tori, polygons and superellipsoids from the grammar.
 lib_libzrcube_la_SOURCES += lib/sdl/build_shape.c lib/sdl/build_shape.h
+
+# Building bicubic patches, sphere sweeps and julia fractals.
+lib_libzrcube_la_SOURCES += lib/sdl/build_surface.c lib/sdl/build_surface.h
+
+# Building isosurfaces and height fields from the grammar.
+lib_libzrcube_la_SOURCES += lib/sdl/build_iso.c lib/sdl/build_iso.h \
+	lib/sdl/build_hf.c
 
 # Radiosity settings: global_settings { radiosity { } }, an object's
 # radiosity keywords and finish { energy } (issue 4).
@@ -86,3 +103,6 @@ tests_test_rad_stability_CPPFLAGS = $(TEST_CPPFLAGS)
 tests_test_rad_stability_LDADD = $(TEST_LDADD)
 tests_test_rad_stability_LDFLAGS = -static
 $(tests_test_rad_stability_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
+
+# Participating media, interior_texture and photons blocks.
+lib_libzrcube_la_SOURCES += lib/sdl/build_media.c lib/sdl/build_media.h

@@ -96,7 +96,12 @@ typedef enum zr_sdl_kind {
   ZR_SDL_NORMAL,     /* ptr: a zr_normal */
   ZR_SDL_COLOUR_MAP, /* ptr: a zr_colour_map */
   ZR_SDL_MATERIAL,   /* ptr: a zr_sdl_material (build_texture.c) */
-  ZR_SDL_SKY_SPHERE  /* ptr: a zr_sky_sphere (build_camlight.c) */
+  ZR_SDL_SKY_SPHERE, /* ptr: a zr_sky_sphere (build_camlight.c) */
+  ZR_SDL_CAMERA,     /* ptr: a finished zr_camera (build_camlight.c) */
+  ZR_SDL_MEDIA,      /* ptr: a zr_medium (build_media.c) */
+  ZR_SDL_DENSITY,    /* ptr: a zr_pigment, a media density */
+  ZR_SDL_TRANSFORM,  /* ptr: a zr_transform (build_pattern.c) */
+  ZR_SDL_LIGHT       /* ptr: a finished zr_light (build_camlight.c) */
 } zr_sdl_kind;
 
 /* What an identifier stands for.  Pointers are into the scene's arena
@@ -183,6 +188,8 @@ typedef enum zr_sdl_mod_kind {
   ZR_SDL_MOD_CLIP_TO_BOUND, /* clipped_by { bounded_by } */
   ZR_SDL_MOD_BOUND_TO_CLIP, /* bounded_by { clipped_by } */
   ZR_SDL_MOD_MATERIAL,      /* ptr: a zr_sdl_material */
+  /* lib/sdl/build_media.c */
+  ZR_SDL_MOD_INTERIOR_TEXTURE, /* ptr: a zr_texture */
   /* Read and warned about, no effect: radiosity { importance },
      no_radiosity (lib/sdl/build_radiosity.c). */
   ZR_SDL_MOD_IGNORED
@@ -198,7 +205,9 @@ typedef struct zr_sdl_reflection {
   zr_rgb min, max;
   double falloff;
   double metallic; /* "metallic" alone means 1 */
+  double exponent;
   bool falloff_given, fresnel, fresnel_given, metallic_given;
+  bool exponent_given;
   bool max_given;
 } zr_sdl_reflection;
 
@@ -428,6 +437,10 @@ typedef struct zr_sdl_parser {
   zr_sdl_expr nested_value;
   /* What a camera block defers to its end (see build.c). */
   struct {
+    /* The scene's camera before this block: a camera block that is a
+       #declare's value gives it back (zr__sdl_camera_value). */
+    zr_camera saved;
+    bool from_id; /* camera { CAMERA_IDENTIFIER ... } */
     bool look_at_given, angle_given;
     bool right_given, up_given, v_angle_given, type_given;
     zr_vec3 look_at;
@@ -627,6 +640,18 @@ bool zr__sdl_difference_add(zr_sdl_parser *p, zr_object *d,
                             zr_object *child);
 bool zr__sdl_object_mod_more(zr_sdl_parser *p, zr_object *o,
                              const zr_sdl_mod *mod);
+/* A light source written inside a union (or other CSG): it follows the
+   object's transforms and joins the scene with it. */
+bool zr__sdl_csg_add_light(zr_sdl_parser *p, zr_object *csg, zr_light *l);
+/* A copy of a light (and of its looks_like object) for the parser to
+   change. */
+zr_light *zr__sdl_light_copy(zr_sdl_parser *p, const zr_light *l);
+/* After a CSG object's shallow copy: its own copies of its lights. */
+bool zr__sdl_csg_copy_lights(zr_sdl_parser *p, zr_object *copy);
+/* Adds a finished top-level object to the scene, and the lights that
+   its CSG carries to the scene's lights. */
+bool zr__sdl_add_object(zr_sdl_parser *p, zr_object *o,
+                        const zr_sdl_loc *loc);
 zr_object *zr__sdl_quadric(zr_sdl_parser *p, const zr_sdl_expr e[4],
                            const zr_sdl_loc *loc, const zr_sdl_loc at[4]);
 zr_object *zr__sdl_poly_new(zr_sdl_parser *p, const zr_sdl_expr *order,
@@ -647,6 +672,9 @@ bool zr__sdl_pigment_transform(zr_sdl_parser *p, zr_pigment *pg,
                                const zr_transform *t);
 zr_finish *zr__sdl_finish_new(zr_sdl_parser *p, const zr_finish *from);
 void zr__sdl_finish_reflection(zr_finish *f, const zr_sdl_reflection *r);
+/* reflection { exponent e }: e must be positive. */
+bool zr__sdl_reflection_exponent(zr_sdl_parser *p, double e,
+                                 const zr_sdl_loc *loc);
 zr_texture *zr__sdl_texture_new(zr_sdl_parser *p, const zr_texture *from);
 bool zr__sdl_texture_transform(zr_sdl_parser *p, zr_texture *tx,
                                const zr_transform *t);
@@ -729,6 +757,9 @@ bool zr__sdl_material_texture(zr_sdl_parser *p, zr_sdl_material *m,
                               const zr_texture *tx);
 bool zr__sdl_material_transform(zr_sdl_parser *p, zr_sdl_material *m,
                                 const zr_transform *t);
+/* The path, malloc'ed, where an image file named in the scene is found
+   (searched like #include); NULL when it is nowhere. */
+char *zr__sdl_find_image(zr_sdl_parser *p, const char *name);
 /* Reads the picture of an image_map, searched like #include. */
 zr_image_map *zr__sdl_image_map_new(zr_sdl_parser *p, const char *name,
                                     const zr_sdl_loc *loc);

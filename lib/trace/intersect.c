@@ -22,10 +22,12 @@
 
 #include <math.h>
 
+#include "trace/obj_isosurface.h"
 #include "trace/obj_mesh.h"
 #include "trace/obj_poly.h"
 #include "trace/obj_quadric.h"
 #include "trace/obj_shapes.h"
+#include "trace/obj_sweep.h"
 #include "trace/obj_text.h"
 
 /* Crossings gathered for one shape before clipping to the interval. */
@@ -65,9 +67,12 @@ static void compound_crossings(const zr_object *o, zr_vec3 org,
    the interval, so that a ray leaving such a shape does not spend its
    room on crossings behind it. */
 static bool is_searched(zr_object_kind kind) {
-  return kind == ZR_OBJ_TORUS || kind == ZR_OBJ_POLYGON ||
+  return kind == ZR_OBJ_SPHERE_SWEEP || kind == ZR_OBJ_JULIA ||
+         kind == ZR_OBJ_TORUS || kind == ZR_OBJ_POLYGON ||
          kind == ZR_OBJ_SUPERELLIPSOID || kind == ZR_OBJ_PRISM ||
-         kind == ZR_OBJ_LATHE || kind == ZR_OBJ_BLOB || kind == ZR_OBJ_SOR;
+         kind == ZR_OBJ_LATHE || kind == ZR_OBJ_BLOB || kind == ZR_OBJ_SOR ||
+         kind == ZR_OBJ_ISOSURFACE || kind == ZR_OBJ_HEIGHT_FIELD ||
+         kind == ZR_OBJ_OVUS || kind == ZR_OBJ_PARAMETRIC;
 }
 
 static void searched_crossings(const zr_object *o, zr_vec3 org,
@@ -78,6 +83,10 @@ static void searched_crossings(const zr_object *o, zr_vec3 org,
   int k = 0;
   if (o->kind == ZR_OBJ_TORUS)
     k = zr__torus_crossings(o, org, dir, tmin, tmax, t, n);
+  else if (o->kind == ZR_OBJ_SPHERE_SWEEP)
+    k = zr__sweep_crossings(o, org, dir, tmin, tmax, t, n);
+  else if (o->kind == ZR_OBJ_JULIA)
+    k = zr__julia_crossings(o, org, dir, tmin, tmax, t, n);
   else if (o->kind == ZR_OBJ_POLYGON)
     k = zr__polygon_crossings(o, org, dir, tmin, tmax, t, n);
   else if (o->kind == ZR_OBJ_PRISM)
@@ -88,6 +97,14 @@ static void searched_crossings(const zr_object *o, zr_vec3 org,
     k = zr__blob_crossings(o, org, dir, tmin, tmax, t, n);
   else if (o->kind == ZR_OBJ_SOR)
     k = zr__sor_crossings(o, org, dir, tmin, tmax, t, n);
+  else if (o->kind == ZR_OBJ_ISOSURFACE)
+    k = zr__isosurface_crossings(o, org, dir, tmin, tmax, t, n);
+  else if (o->kind == ZR_OBJ_HEIGHT_FIELD)
+    k = zr__height_field_crossings(o, org, dir, tmin, tmax, t, n);
+  else if (o->kind == ZR_OBJ_OVUS)
+    k = zr__ovus_crossings(o, org, dir, tmin, tmax, t, n);
+  else if (o->kind == ZR_OBJ_PARAMETRIC)
+    k = zr__parametric_crossings(o, org, dir, tmin, tmax, t, n);
   else
     k = zr__superellipsoid_crossings(o, org, dir, tmin, tmax, t, n);
   for (int i = 0; i < k; i++)
@@ -340,6 +357,8 @@ static void shape_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
     break; /* lib/trace/csg.c, called before the transform */
   case ZR_OBJ_POLY:
     break; /* poly_crossings() */
+  case ZR_OBJ_SPHERE_SWEEP:
+  case ZR_OBJ_JULIA:
   case ZR_OBJ_TORUS:
   case ZR_OBJ_POLYGON:
   case ZR_OBJ_SUPERELLIPSOID:
@@ -347,6 +366,10 @@ static void shape_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
   case ZR_OBJ_LATHE:
   case ZR_OBJ_BLOB:
   case ZR_OBJ_SOR:
+  case ZR_OBJ_ISOSURFACE:
+  case ZR_OBJ_HEIGHT_FIELD:
+  case ZR_OBJ_OVUS:
+  case ZR_OBJ_PARAMETRIC:
     break; /* searched_crossings() */
   }
 }
@@ -501,8 +524,19 @@ static bool shape_inside(const zr_object *o, zr_vec3 p) {
     return zr__blob_inside(o, p);
   case ZR_OBJ_SOR:
     return zr__sor_inside(o, p);
+  case ZR_OBJ_SPHERE_SWEEP:
+    return zr__sweep_inside(o, p);
+  case ZR_OBJ_JULIA:
+    return zr__julia_inside(o, p);
+  case ZR_OBJ_ISOSURFACE:
+    return zr__isosurface_inside(o, p);
+  case ZR_OBJ_HEIGHT_FIELD:
+    return zr__height_field_inside(o, p);
+  case ZR_OBJ_OVUS:
+    return zr__ovus_inside(o, p);
   case ZR_OBJ_TRIANGLE:
   case ZR_OBJ_POLYGON:
+  case ZR_OBJ_PARAMETRIC:
   case ZR_OBJ_UNION:
   case ZR_OBJ_INTERSECTION:
   case ZR_OBJ_MERGE:
@@ -513,6 +547,7 @@ static bool shape_inside(const zr_object *o, zr_vec3 p) {
 
 bool zr__inside(const zr_object *object, zr_vec3 p) {
   if (object->kind == ZR_OBJ_TRIANGLE || object->kind == ZR_OBJ_POLYGON ||
+      object->kind == ZR_OBJ_PARAMETRIC ||
       (object->kind == ZR_OBJ_MESH && !zr__has_inside(object)))
     return false; /* no inside, inverse or not */
   if (zr__is_csg(object->kind))

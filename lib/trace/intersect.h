@@ -65,7 +65,7 @@ static inline bool zr__has_inside(const zr_object *object) {
   if (object->kind == ZR_OBJ_MESH)
     return zr__mesh_has_inside(object);
   return object->kind != ZR_OBJ_TRIANGLE && object->kind != ZR_OBJ_DISC &&
-         object->kind != ZR_OBJ_POLYGON;
+         object->kind != ZR_OBJ_POLYGON && object->kind != ZR_OBJ_PARAMETRIC;
 }
 
 /*

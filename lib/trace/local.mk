@@ -98,6 +98,51 @@ lib_libzrcube_la_SOURCES += \
 	lib/trace/obj_lathe.c \
 	lib/trace/obj_blob.c \
 	lib/trace/obj_sor.c
+
+# The sphere sweep and the julia fractal (lib/trace/obj_sweep.h).
+lib_libzrcube_la_SOURCES += \
+	lib/trace/obj_sweep.c lib/trace/obj_sweep.h \
+	lib/trace/obj_julia.c
+
+# The isosurface, the height field and the ovus
+# (lib/trace/obj_isosurface.h), and their tests.
+lib_libzrcube_la_SOURCES += \
+	lib/trace/obj_isosurface.c lib/trace/obj_isosurface.h \
+	lib/trace/obj_height_field.c \
+	lib/trace/obj_ovus.c \
+	lib/trace/obj_parametric.c
+check_PROGRAMS += tests/test_isosurface
+TESTS += tests/test_isosurface
+tests_test_isosurface_SOURCES = tests/test_isosurface.c \
+	tests/parse_fixture.c tests/parse_fixture.h
+tests_test_isosurface_CPPFLAGS = $(TEST_CPPFLAGS)
+tests_test_isosurface_LDADD = $(TEST_LDADD)
+tests_test_isosurface_LDFLAGS = -static
+$(tests_test_isosurface_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
+check_PROGRAMS += tests/test_height_field
+TESTS += tests/test_height_field
+tests_test_height_field_SOURCES = tests/test_height_field.c \
+	tests/parse_fixture.c tests/parse_fixture.h
+tests_test_height_field_CPPFLAGS = $(TEST_CPPFLAGS)
+tests_test_height_field_LDADD = $(TEST_LDADD)
+tests_test_height_field_LDFLAGS = -static
+$(tests_test_height_field_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
+check_PROGRAMS += tests/test_ovus
+TESTS += tests/test_ovus
+tests_test_ovus_SOURCES = tests/test_ovus.c \
+	tests/parse_fixture.c tests/parse_fixture.h
+tests_test_ovus_CPPFLAGS = $(TEST_CPPFLAGS)
+tests_test_ovus_LDADD = $(TEST_LDADD)
+tests_test_ovus_LDFLAGS = -static
+$(tests_test_ovus_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
+check_PROGRAMS += tests/test_parametric
+TESTS += tests/test_parametric
+tests_test_parametric_SOURCES = tests/test_parametric.c \
+	tests/parse_fixture.c tests/parse_fixture.h
+tests_test_parametric_CPPFLAGS = $(TEST_CPPFLAGS)
+tests_test_parametric_LDADD = $(TEST_LDADD)
+tests_test_parametric_LDFLAGS = -static
+$(tests_test_parametric_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
 check_PROGRAMS += tests/test_shapes
 TESTS += tests/test_shapes
 tests_test_shapes_SOURCES = tests/test_shapes.c \
@@ -106,3 +151,24 @@ tests_test_shapes_CPPFLAGS = $(TEST_CPPFLAGS)
 tests_test_shapes_LDADD = $(TEST_LDADD)
 tests_test_shapes_LDFLAGS = -static
 $(tests_test_shapes_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
+
+# bicubic_patch, sphere_sweep and julia_fractal, parsed and traced.
+check_PROGRAMS += tests/test_surfaces
+TESTS += tests/test_surfaces
+tests_test_surfaces_SOURCES = tests/test_surfaces.c \
+	tests/parse_fixture.c tests/parse_fixture.h
+tests_test_surfaces_CPPFLAGS = $(TEST_CPPFLAGS)
+tests_test_surfaces_LDADD = $(TEST_LDADD)
+tests_test_surfaces_LDFLAGS = -static
+$(tests_test_surfaces_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
+
+# Participating media: interior and atmospheric media (lib/trace/media.c).
+lib_libzrcube_la_SOURCES += lib/trace/media.c lib/trace/media.h
+check_PROGRAMS += tests/test_media
+TESTS += tests/test_media
+tests_test_media_SOURCES = tests/test_media.c \
+	tests/parse_fixture.c tests/parse_fixture.h
+tests_test_media_CPPFLAGS = $(TEST_CPPFLAGS)
+tests_test_media_LDADD = $(TEST_LDADD)
+tests_test_media_LDFLAGS = -static
+$(tests_test_media_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h

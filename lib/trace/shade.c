@@ -63,6 +63,7 @@
 #include "trace/atmosphere.h"
 #include "trace/bvh.h"
 #include "trace/lights.h"
+#include "trace/media.h"
 
 zr_colour zr__pigment_at(const zr_pigment *pigment, zr_vec3 p) {
   return zr__pigment_eval(pigment, p); /* lib/scene/texture.c */
@@ -78,11 +79,27 @@ static zr_rgb see_through(zr_colour c) {
 typedef struct shadow_walk {
   const zr_ray *ray;
   zr_rgb light;
+  /* Crossings of hollow containers with media (lib/trace/media.c). */
+  zr_media_crossing crossings[ZR_MEDIA_LIST_MAX];
+  size_t n_crossings;
 } shadow_walk;
 
 static bool shadow_visit(const zr_hit *hit, void *user) {
   shadow_walk *w = user;
   const zr_object *o = hit->object;
+  const zr_object *solid = o->solid ? o->solid : o;
+  if (solid->hollow && solid->interior && solid->interior->n_media > 0 &&
+      w->n_crossings < ZR_MEDIA_LIST_MAX) {
+    /* The walk's hits carry no normals: the ray goes in when a point
+       just past the hit is inside. */
+    zr_media_crossing *c = &w->crossings[w->n_crossings++];
+    zr_vec3 at = zr_v3_madd(w->ray->origin, w->ray->dir, hit->t);
+    zr_vec3 past = zr_v3_madd(at, zr_v3_norm(w->ray->dir),
+                              1e3 * zr__surface_offset(at));
+    c->t = hit->t;
+    c->solid = solid;
+    c->entering = zr__inside(solid, past);
+  }
   if (o->no_shadow)
     return true;
   zr_vec3 p = zr_v3_madd(w->ray->origin, w->ray->dir, hit->t);
@@ -100,11 +117,18 @@ static bool shadow_visit(const zr_hit *hit, void *user) {
 zr_rgb zr__shadow_transmission(const zr_tracer *tracer, zr_vec3 from,
                                zr_vec3 to) {
   zr_ray ray = {to, zr_v3_sub(from, to)};
-  shadow_walk w = {&ray, zr_rgb3(1, 1, 1)};
+  shadow_walk w;
+  w.ray = &ray;
+  w.light = zr_rgb3(1, 1, 1);
+  w.n_crossings = 0;
   tracer->stats->shadow_rays++;
   /* t runs from the surface point (0) to the light (1). */
   if (!zr__bvh_all(tracer->scene->bvh, &ray, 0.0, 1.0, shadow_visit, &w))
     return zr_rgb3(0, 0, 0);
+  if (w.n_crossings > 0 && rgb_max(w.light) > 0.0)
+    w.light = zr_rgb_mul(w.light, zr__media_shadow(tracer, ray.origin,
+                                                   ray.dir, w.crossings,
+                                                   w.n_crossings));
   return w.light;
 }
 
@@ -233,11 +257,27 @@ static zr_rgb direct_light(const zr_tracer *tr, const surface *s,
     if (!zr__light_arrive(light, s->p, &l, &lc))
       continue; /* outside a spotlight's cone (lib/trace/lights.c) */
     double n_dot_l = zr_v3_dot(s->n, l);
-    if (!(n_dot_l > 0.0))
-      continue; /* the light is behind the surface */
-    lc = zr_rgb_mul(lc, zr__light_visibility(tr, light, s->p, lit_from));
+    /* Light behind the surface only counts with a backside diffuse
+       ("diffuse A, B"), and then makes no highlight. */
+    bool back = !(n_dot_l > 0.0);
+    if (back && !(f->diffuse_back > 0.0 && n_dot_l < 0.0))
+      continue;
+    /* Shadow rays leave from the side the light is on. */
+    zr_vec3 from = back ? zr_v3_madd(s->p, s->n, -s->offset) : lit_from;
+    lc = zr_rgb_mul(lc, zr__light_visibility(tr, light, s->p, from));
     if (rgb_max(lc) <= 0.0)
       continue;
+    if (back) {
+      if (light->media_attenuation)
+        lc = zr_rgb_mul(lc, zr__media_light_attenuation(tr, light, s->p));
+      double d = f->diffuse_back * opacity *
+                 (f->brilliance == 1.0 ? -n_dot_l
+                                       : pow(-n_dot_l, f->brilliance));
+      sum = zr_rgb_add(sum, zr_rgb_scale(zr_rgb_mul(lc, c), d));
+      continue;
+    }
+    if (light->media_attenuation) /* lib/trace/media.c */
+      lc = zr_rgb_mul(lc, zr__media_light_attenuation(tr, light, s->p));
     if (f->diffuse != 0.0 && opacity > 0.0) {
       double d = f->diffuse * opacity *
                  (f->brilliance == 1.0 ? n_dot_l
@@ -403,6 +443,11 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
   if (rgb_max(refl) > 0.0 && rw > gs->adc_bailout) {
     tr->stats->reflected_rays++;
     zr_rgb r = trace_secondary(tr, above, mirror, level, rw, media);
+    if (f->reflection_exponent != 1.0) {
+      double k = 1.0 / f->reflection_exponent;
+      r = zr_rgb3(pow(fmax(r.r, 0.0), k), pow(fmax(r.g, 0.0), k),
+                  pow(fmax(r.b, 0.0), k));
+    }
     sum = zr_rgb_add(sum, zr_rgb_mul(refl, r));
   }
   double tw = weight * rgb_max(trans);
@@ -522,32 +567,38 @@ zr_rgb zr__trace_ray(const zr_tracer *tracer, const zr_ray *ray, int level,
   if (level > scene->settings.max_trace_level)
     return zr_rgb3(0, 0, 0);
   zr_hit hit;
-  if (!zr__bvh_nearest(scene->bvh, ray, 0.0, INFINITY, &hit))
+  if (!zr__bvh_nearest(scene->bvh, ray, 0.0, INFINITY, &hit)) {
+    /* Atmospheric media reach to POV-Ray's horizon (lib/trace/media.c). */
+    zr_rgb sky = zr__media_along(tracer, media, ray->origin, ray->dir,
+                                 INFINITY, zr__sky_colour(scene, ray->dir));
     return interior_fade(media, INFINITY,
                          zr__atmosphere_apply(scene, ray->origin, ray->dir,
-                                              INFINITY,
-                                              zr__sky_colour(scene,
-                                                             ray->dir)));
+                                              INFINITY, sky));
+  }
   surface s;
   s.p = zr_v3_madd(ray->origin, ray->dir, hit.t);
   s.d = zr_v3_norm(ray->dir);
   s.entering = zr_v3_dot(hit.normal, s.d) < 0.0;
   zr_vec3 n = hit.normal;
   const zr_texture *tx = hit.object->texture;
+  /* interior_texture: the inside (back) of the surface ("Interior
+     Texture"). */
+  if (!s.entering && hit.object->interior_texture)
+    tx = hit.object->interior_texture;
   if ((tx->over || tx->map) && !tracer->radiosity_only) {
     s.object = hit.object;
     s.offset = zr__surface_offset(s.p);
     s.layer = false;
-    return zr__atmosphere_apply(
-        scene, ray->origin, ray->dir, hit.t,
-        shade_layers(tracer, &s, n, tx, level, weight, media));
+    zr_rgb c = shade_layers(tracer, &s, n, tx, level, weight, media);
+    c = zr__media_along(tracer, media, ray->origin, ray->dir, hit.t, c);
+    return zr__atmosphere_apply(scene, ray->origin, ray->dir, hit.t, c);
   }
-  if (hit.object->texture->normal) /* normal { }: lib/scene/texture.c */
-    n = zr__normal_perturb(hit.object->texture->normal, s.p, n);
+  if (tx->normal) /* normal { }: lib/scene/texture.c */
+    n = zr__normal_perturb(tx->normal, s.p, n);
   s.n = s.entering ? n : zr_v3_neg(n);
   s.object = hit.object;
-  s.finish = hit.object->texture->finish;
-  s.colour = zr__pigment_at(hit.object->texture->pigment, s.p);
+  s.finish = tx->finish;
+  s.colour = zr__pigment_at(tx->pigment, s.p);
   s.offset = zr__surface_offset(s.p);
   s.layer = false;
   if (tracer->radiosity_only) {
@@ -557,10 +608,11 @@ zr_rgb zr__trace_ray(const zr_tracer *tracer, const zr_ray *ray, int level,
       l = zr_rgb3(0, 0, 0); /* no surface in the solution: black */
     return l;
   }
-  /* Fog and rainbows between the ray's origin and the hit, and the
-     fading of the interior the ray crossed. */
+  /* Media, fog and rainbows between the ray's origin and the hit, and
+     the fading of the interior the ray crossed. */
+  zr_rgb c = zr__media_along(tracer, media, ray->origin, ray->dir, hit.t,
+                             shade(tracer, &s, level, weight, media));
   return interior_fade(
       media, hit.t * zr_v3_len(ray->dir),
-      zr__atmosphere_apply(scene, ray->origin, ray->dir, hit.t,
-                           shade(tracer, &s, level, weight, media)));
+      zr__atmosphere_apply(scene, ray->origin, ray->dir, hit.t, c));
 }

@@ -1,0 +1,265 @@
+/*
+ * heights.c - an image file read as a height field's samples (POV-Ray
+ * 3.7 reference, "Height Field"), not as colours: the stored numbers
+ * themselves, scaled to [0, 1], with no transfer function, as POV-Ray
+ * "will normally interpret the height field input file as a container
+ * of linear data".
+ *
+ *   - a palette image gives its palette index (0 .. 255) / 255, whatever
+ *     the colours are;
+ *   - a grey image gives its grey value / maxval (8 or 16 bits, so 16
+ *     bit PNG and PGM files are as smooth as they are stored);
+ *   - a colour image holds a 16-bit number in its red (high byte) and
+ *     green (low byte) samples, the TGA and PPM convention the manual
+ *     gives, which PNG colour images follow too: (256 r + g) / 65535.
+ *     A grey picture stored as colour (r = g = b = v) gives v / 255.
+ *     Samples of more than 8 bits are taken by their high byte here.
+ *
+ * PNG files are decoded by libpng with no conversion but the unpacking
+ * of 1, 2 and 4-bit samples.  Netpbm and JPEG files go through the
+ * codecs (pnm.c, jpeg.c), whose sRGB decoding is exactly undone: it is
+ * a table of every stored code, so the nearest code is the one stored.
+ */
+#include "config.h"
+
+#include <math.h>
+#include <png.h>
+#include <setjmp.h>
+#include <stdbool.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/context.h"
+#include "image/image.h"
+
+typedef struct png_source {
+  const unsigned char *bytes;
+  size_t size, pos;
+} png_source;
+
+static void read_memory(png_structp png, png_bytep data, size_t length) {
+  png_source *src = png_get_io_ptr(png);
+  if (length > src->size - src->pos)
+    png_error(png, "truncated");
+  memcpy(data, src->bytes + src->pos, length);
+  src->pos += length;
+}
+
+/* What libpng's error handler leaves for the message. */
+typedef struct png_failure {
+  char text[200];
+} png_failure;
+
+static void on_error(png_structp png, png_const_charp msg) {
+  png_failure *f = png_get_error_ptr(png);
+  snprintf(f->text, sizeof f->text, "%s", msg);
+  png_longjmp(png, 1);
+}
+
+static void on_warning(png_structp png, png_const_charp msg) {
+  (void)png;
+  (void)msg;
+}
+
+static float colour_height(unsigned r, unsigned g) {
+  return (float)((256.0 * r + g) / 65535.0);
+}
+
+/* Decodes rows into heights[w * h]; the png structs are the caller's. */
+static bool png_heights(png_structp png, png_infop info, png_source *src,
+                        float **out, int *w, int *h) {
+  png_bytep rows = NULL;
+  png_bytepp row_ptrs = NULL;
+  float *heights = NULL;
+  /* volatile: changed between setjmp and a longjmp back to it. */
+  png_bytep volatile rows_v = NULL;
+  png_bytepp volatile ptrs_v = NULL;
+  float *volatile heights_v = NULL;
+  if (setjmp(png_jmpbuf(png))) {
+    free(rows_v);
+    free(ptrs_v);
+    free(heights_v);
+    return false;
+  }
+  png_set_read_fn(png, src, read_memory);
+  png_set_user_limits(png, ZR_IMAGE_MAX_SIDE, ZR_IMAGE_MAX_SIDE);
+  png_read_info(png, info);
+  int type = png_get_color_type(png, info);
+  int depth = png_get_bit_depth(png, info);
+  if (depth < 8)
+    png_set_packing(png); /* one byte per sample, values kept */
+  png_set_interlace_handling(png);
+  png_read_update_info(png, info);
+  int width = (int)png_get_image_width(png, info);
+  int height = (int)png_get_image_height(png, info);
+  int channels = png_get_channels(png, info);
+  size_t rowbytes = png_get_rowbytes(png, info);
+  if ((size_t)width * (size_t)height > ZR_IMAGE_MAX_PIXELS)
+    png_error(png, "image too large");
+  rows = malloc(rowbytes * (size_t)height);
+  rows_v = rows;
+  row_ptrs = malloc((size_t)height * sizeof *row_ptrs);
+  ptrs_v = row_ptrs;
+  heights = malloc((size_t)width * (size_t)height * sizeof *heights);
+  heights_v = heights;
+  if (!rows || !row_ptrs || !heights)
+    png_error(png, "out of memory");
+  for (int y = 0; y < height; y++)
+    row_ptrs[y] = rows + (size_t)y * rowbytes;
+  png_read_image(png, row_ptrs);
+  double maxval = depth == 16 ? 65535.0 : (double)((1u << depth) - 1);
+  for (int y = 0; y < height; y++) {
+    const png_byte *r = row_ptrs[y];
+    float *dst = heights + (size_t)y * width;
+    for (int x = 0; x < width; x++) {
+      unsigned s[4] = {0, 0, 0, 0};
+      for (int c = 0; c < channels && c < 4; c++)
+        s[c] = depth == 16 ? (unsigned)r[2 * (x * channels + c)] << 8 |
+                                 r[2 * (x * channels + c) + 1]
+                           : r[x * channels + c];
+      if (type == PNG_COLOR_TYPE_PALETTE)
+        dst[x] = (float)(s[0] / 255.0);
+      else if (!(type & PNG_COLOR_MASK_COLOR))
+        dst[x] = (float)(s[0] / maxval);
+      else if (depth == 16)
+        dst[x] = colour_height(s[0] >> 8, s[1] >> 8);
+      else
+        dst[x] = colour_height(s[0], s[1]);
+    }
+  }
+  free(rows);
+  free(row_ptrs);
+  *out = heights;
+  *w = width;
+  *h = height;
+  return true;
+}
+
+static zr_status read_png(zr_context *ctx, const char *name,
+                          const unsigned char *bytes, size_t size,
+                          float **out, int *w, int *h) {
+  png_failure failure = {"cannot decode"};
+  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &failure,
+                                           on_error, on_warning);
+  png_infop info = png ? png_create_info_struct(png) : NULL;
+  if (!info) {
+    png_destroy_read_struct(&png, NULL, NULL);
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s", name,
+                    zr_status_str(ZR_ENOMEM));
+  }
+  png_source src = {bytes, size, 0};
+  bool ok = png_heights(png, info, &src, out, w, h);
+  png_destroy_read_struct(&png, &info, NULL);
+  if (!ok)
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL, "%s: %s", name,
+                    failure.text);
+  return ZR_OK;
+}
+
+/* The magic number and maxval of a Netpbm header ("P5 640 480 255"). */
+static bool pnm_header(const unsigned char *b, size_t n, char *magic,
+                       unsigned long *maxval) {
+  if (n < 2 || b[0] != 'P')
+    return false;
+  *magic = (char)b[1];
+  size_t i = 2;
+  unsigned long field[3] = {0, 0, 0};
+  for (int k = 0; k < 3; k++) {
+    for (;;) {
+      while (i < n && (b[i] == ' ' || b[i] == '\t' || b[i] == '\n' ||
+                       b[i] == '\r'))
+        i++;
+      if (i < n && b[i] == '#') {
+        while (i < n && b[i] != '\n')
+          i++;
+        continue;
+      }
+      break;
+    }
+    if (i >= n || b[i] < '0' || b[i] > '9')
+      return false;
+    while (i < n && b[i] >= '0' && b[i] <= '9' && field[k] < 1000000)
+      field[k] = field[k] * 10 + (unsigned long)(b[i++] - '0');
+  }
+  *maxval = field[2];
+  return *maxval >= 1 && *maxval <= 65535;
+}
+
+/* The stored code of a linear value that an sRGB table decoded. */
+static unsigned stored_code(float linear, unsigned long maxval) {
+  double v = zr__srgb_encode(fmin(fmax((double)linear, 0.0), 1.0));
+  return (unsigned)lround(v * (double)maxval);
+}
+
+/* Netpbm and JPEG: decoded as colours, then taken back to codes. */
+static zr_status read_coded(zr_context *ctx, const char *name,
+                            const unsigned char *bytes, size_t size,
+                            bool jpeg, float **out, int *w, int *h) {
+  char magic = '6';
+  unsigned long maxval = 255;
+  if (!jpeg && !pnm_header(bytes, size, &magic, &maxval))
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
+                    "%s: not a PNG, PGM, PPM or JPEG file", name);
+  zr_image *image = NULL;
+  zr_status s = jpeg ? zr__jpeg_decode(ctx, name, bytes, size, &image)
+                     : zr__pnm_decode(ctx, name, bytes, size, &image);
+  if (s != ZR_OK) {
+    zr_image_free(image);
+    return s;
+  }
+  size_t n = (size_t)image->width * (size_t)image->height;
+  float *heights = malloc(n * sizeof *heights);
+  if (!heights) {
+    zr_image_free(image);
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s", name,
+                    zr_status_str(ZR_ENOMEM));
+  }
+  bool grey = magic == '2' || magic == '5';
+  for (size_t i = 0; i < n; i++) {
+    const float *px = image->pixels + 3 * i;
+    unsigned r = stored_code(px[0], maxval);
+    if (grey) {
+      heights[i] = (float)(r / (double)maxval);
+      continue;
+    }
+    unsigned g = stored_code(px[1], maxval);
+    if (maxval > 255) {
+      r >>= 8;
+      g >>= 8;
+    }
+    heights[i] = colour_height(r, g);
+  }
+  *w = image->width;
+  *h = image->height;
+  *out = heights;
+  zr_image_free(image);
+  return ZR_OK;
+}
+
+zr_status zr__image_read_heights(zr_context *ctx, const char *path,
+                                 float **heights, int *width,
+                                 int *height) {
+  *heights = NULL;
+  char *bytes = NULL;
+  size_t size = 0;
+  zr_status s = zr__context_read(ctx, path, &bytes, &size);
+  if (s == ZR_ENOTFOUND)
+    return zr__diag(ctx, ZR_DIAG_ERROR, s, NULL, "%s: file not found",
+                    path);
+  if (s != ZR_OK)
+    return zr__diag(ctx, ZR_DIAG_ERROR, s, NULL, "%s: cannot read: %s",
+                    path, zr_status_str(s));
+  static const unsigned char png_sig[8] = {0x89, 'P', 'N', 'G',
+                                           '\r', '\n', 0x1a, '\n'};
+  const unsigned char *b = (const unsigned char *)bytes;
+  if (size >= 8 && !memcmp(b, png_sig, 8))
+    s = read_png(ctx, path, b, size, heights, width, height);
+  else if (size >= 3 && b[0] == 0xff && b[1] == 0xd8 && b[2] == 0xff)
+    s = read_coded(ctx, path, b, size, true, heights, width, height);
+  else
+    s = read_coded(ctx, path, b, size, false, heights, width, height);
+  free(bytes);
+  return s;
+}

@@ -1,0 +1,291 @@
+/*
+ * test_pattern_more.c - transform blocks and identifiers, the fractal
+ * patterns, the function pattern, min_extent/max_extent, bare default
+ * and font names without their extension (lib/sdl/build_pattern.c,
+ * lib/scene/pattern_more.c), parsed from scene text and evaluated.
+ *
+ * The fractal values are povray 3.7.0's own, printed with
+ * #declare F = function { pattern { mandel 25 } } #debug str(F(x,y,0),0,6)
+ * at the five points below; they are exact ratios of iteration counts
+ * or products of a few complex multiplications, so 1e-5 (the digits
+ * povray printed) is the tolerance.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "parse_fixture.h"
+#include "scene/pattern.h"
+#include "scene/scene.h"
+#include "scene/texture.h"
+
+#define POV_EPS 1e-5
+
+/* The points povray was asked about, in (x, y). */
+static const double points[5][2] = {
+    {-0.2, 0.1}, {0.5, 0.5}, {-1.5, 0.6}, {1, 1}, {0.3, -0.1}};
+
+static const zr_pigment *first_pigment(const zr_scene *s) {
+  assert_true(s->n_objects >= 1);
+  assert_non_null(s->objects[0]->texture);
+  return s->objects[0]->texture->pigment;
+}
+
+/* Parses "box { 0, 1 pigment { PATTERN color_map { black to white } } }"
+   and checks the grey at the five points against povray's values. */
+static void check_fractal_eps(fixture *f, const char *pattern,
+                              const double want[5], double eps) {
+  char text[512];
+  snprintf(text, sizeof text,
+           "box { 0, 1 pigment { %s color_map { [0 rgb 0] [1 rgb 1] } } }",
+           pattern);
+  const zr_pigment *pg = first_pigment(good(f, text));
+  for (int i = 0; i < 5; i++) {
+    zr_colour c = zr__pigment_eval(pg, zr_v3(points[i][0], points[i][1], 0));
+    if (fabs(c.r - want[i]) > eps)
+      fail_msg("%s at (%g, %g): %.6f, povray %.6f", pattern, points[i][0],
+               points[i][1], c.r, want[i]);
+  }
+}
+
+static void check_fractal(fixture *f, const char *pattern,
+                          const double want[5]) {
+  check_fractal_eps(f, pattern, want, POV_EPS);
+}
+
+static void test_pattern_more_mandel(void **state) {
+  fixture *f = *state;
+  const double mandel[5] = {1, 0.12, 0.04, 0, 1};
+  check_fractal(f, "mandel 25", mandel);
+  const double cubic[5] = {1, 1, 0, 0, 1};
+  check_fractal(f, "mandel 25 exponent 3", cubic);
+  const double julia[5] = {1, 1, 0, 0, 0.566667};
+  check_fractal(f, "julia <0.353, 0.288>, 30", julia);
+}
+
+static void test_pattern_more_magnet(void **state) {
+  fixture *f = *state;
+  const double m1[5] = {0.366667, 1, 0.1, 1, 1};
+  check_fractal(f, "magnet 1 mandel 30", m1);
+  const double m2[5] = {1, 1, 1, 0.1, 1};
+  check_fractal(f, "magnet 2 julia <0.2, 0.3>, 30", m2);
+}
+
+static void test_pattern_more_colouring(void **state) {
+  fixture *f = *state;
+  /* interior 1: the smallest |z| of the orbit; exterior 2: the last
+     point's real part times the factor, through the ramp wave. */
+  /* povray's ramp wave wraps values above 1 modulo 1.00001, ours
+     modulo 1: a value that wrapped k times differs by k * 1e-5, and
+     the largest here (10.79) wrapped 10 times, hence 2e-4. */
+  const double i1[5] = {0.180278, 0.642568, 0.606060, 0.5, 0.316228};
+  check_fractal_eps(f, "mandel 25 interior 1, 1 exterior 2, 0.5", i1,
+                    2e-4);
+  const double i3[5] = {0.074085, 0.792152, 0.772316, 1.0, 0.716608};
+  check_fractal_eps(f, "mandel 25 interior 3, 1 exterior 4, 1", i3, 2e-4);
+}
+
+static void test_pattern_more_fractal_errors(void **state) {
+  fixture *f = *state;
+  bad(f, "box { 0, 1 pigment { mandel 25 exterior 7, 1 } }", ZR_ESCENE,
+      "the exterior type must be 0 to 6", NULL);
+  bad(f, "box { 0, 1 pigment { mandel 25 exponent 40 } }", ZR_ESCENE,
+      "exponent must be from 2 to 33", NULL);
+  bad(f, "box { 0, 1 pigment { magnet 3 mandel 25 } }", ZR_ESCENE,
+      "the magnet type must be from 1 to 2",
+      "t.pov:1:29: error: the magnet type must be from 1 to 2\n"
+      "    1 | box { 0, 1 pigment { magnet 3 mandel 25 } }\n"
+      "      |                             ^\n");
+  bad(f, "box { 0, 1 pigment { julia 1, 25 } }", ZR_ESCENE,
+      "julia wants a 2-D vector (a complex number)", NULL);
+}
+
+static void test_pattern_more_function(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f, "#declare F = function(a, b, c) { a * b + c }\n"
+                        "box { 0, 1 pigment { function { F(x, y, 0.25) }"
+                        " color_map { [0 rgb 0] [1 rgb 1] } } }");
+  const zr_pigment *pg = first_pigment(s);
+  zr_colour c = zr__pigment_eval(pg, zr_v3(0.5, 0.5, 0));
+  assert_true(fabs(c.r - 0.5) < 1e-12);
+  /* Beyond 1 the ramp wave repeats the map. */
+  c = zr__pigment_eval(pg, zr_v3(2.5, 0.5, 0));
+  assert_true(fabs(c.r - 0.5) < 1e-12);
+  /* A normal takes a function and its bump size. */
+  s = good(f, "box { 0, 1 normal { function { x * x } 0.3 } }");
+  assert_non_null(s->objects[0]->texture->normal);
+  assert_true(fabs(s->objects[0]->texture->normal->amount - 0.3) < 1e-12);
+  assert_int_equal(s->objects[0]->texture->normal->pattern.kind,
+                   ZR_PAT_FUNCTION);
+}
+
+/* The centre of an object's box, which min_extent and max_extent give. */
+static void assert_centre(fixture *f, const char *object, double x,
+                          double y, double z) {
+  char text[512];
+  snprintf(text, sizeof text,
+           "#declare O = %s\n"
+           "#declare C = (min_extent(O) + max_extent(O)) / 2;\n"
+           "#debug concat(vstr(3, C, \",\", 0, 3), \"\\n\")\n",
+           object);
+  good(f, text);
+  char want[64];
+  snprintf(want, sizeof want, "%.3f,%.3f,%.3f\n", x, y, z);
+  assert_string_equal(f->diag.debug, want);
+}
+
+static void test_pattern_more_transform_blocks(void **state) {
+  fixture *f = *state;
+  /* inverse inverts the whole block wherever it stands (povray 3.7:
+     both give <-1,-2,0>); nested blocks compose in order (<0.5,2,0>). */
+  assert_centre(f, "sphere { 0, 0.1 transform { translate x inverse "
+                   "translate 2*y } }", -1, -2, 0);
+  assert_centre(f, "sphere { 0, 0.1 transform { inverse translate x "
+                   "translate 2*y } }", -1, -2, 0);
+  assert_centre(f, "sphere { 0, 0.1 transform { translate x "
+                   "transform { scale 2 inverse } translate 2*y } }",
+                0.5, 2, 0);
+  /* Identifiers, in blocks and after transform, in pigments too. */
+  zr_scene *s = good(f, "#declare T = transform { scale 2 translate x }\n"
+                        "#declare U = transform { T rotate 90*z }\n"
+                        "#declare V = U\n"
+                        "sphere { 0, 1 transform V pigment { gradient x "
+                        "transform { T inverse } } }");
+  const zr_object *o = s->objects[0];
+  assert_non_null(o->transform);
+  zr_vec3 q = zr__xform_point(o->transform->m, zr_v3(1, 0, 0));
+  /* scale 2: <2,0,0>; translate x: <3,0,0>; rotate 90 about z: <0,3,0>. */
+  assert_true(fabs(q.x) < 1e-12 && fabs(q.y - 3) < 1e-12 &&
+              fabs(q.z) < 1e-12);
+  bad(f, "sphere { 0, 1 transform { skew 2 } }", ZR_EUNDEFINED,
+      "undefined identifier 'skew'", NULL);
+}
+
+static void test_pattern_more_extent_unbounded(void **state) {
+  fixture *f = *state;
+  good(f, "#declare P = plane { y, 0 }\n"
+          "#debug vstr(3, max_extent(P), \",\", 0, 0)\n");
+  assert_string_equal(f->diag.debug, "10000000000,10000000000,10000000000");
+}
+
+static void test_pattern_more_trace(void **state) {
+  fixture *f = *state;
+  /* povray 3.7 prints exactly these for the same scene. */
+  good(f, "#declare N = <0, 0, 0>;\n"
+          "#declare O = union { sphere { <0, 1, 0>, 1 scale <1, 2, 1> }\n"
+          "  box { <-3, -1, -1>, <-2, 1, 1> rotate 30 * y } }\n"
+          "#declare P = trace(O, <0, 10, 0>, -y, N);\n"
+          "#debug concat(vstr(3, P, \",\", 0, 4), \" \", "
+          "vstr(3, N, \",\", 0, 4), \"\\n\")\n"
+          "#declare P = trace(O, <-10, 0.2, 0>, x, N);\n"
+          "#debug concat(vstr(3, P, \",\", 0, 4), \" \", "
+          "vstr(3, N, \",\", 0, 4), \"\\n\")\n"
+          "#declare P = trace(O, <-10, 5, 0>, x, N);\n"
+          "#debug concat(vstr(3, P, \",\", 0, 4), \" \", "
+          "vstr(3, N, \",\", 0, 4), \"\\n\")\n"
+          "#declare P = trace(O, <0.3, 1, 0.2>, <1, 0.2, 0.1>);\n"
+          "#debug concat(vstr(3, P, \",\", 0, 4), \"\\n\")\n");
+  assert_string_equal(f->diag.debug,
+                      "0.0000,4.0000,0.0000 0.0000,1.0000,0.0000\n"
+                      "-0.4359,0.2000,0.0000 -0.6958,-0.7183,0.0000\n"
+                      "0.0000,0.0000,0.0000 0.0000,0.0000,0.0000\n"
+                      "0.8586,1.1117,0.2559\n");
+  bad(f, "#declare O = sphere { 0, 1 }\n"
+         "#declare P = trace(O, <0, 10, 0>, -y, M);\n",
+      ZR_EUNDEFINED, "trace's normal variable 'M' is not declared", NULL);
+  bad(f, "#declare O = sphere { 0, 1 }\n#declare M = 1;\n"
+         "#declare P = trace(O, <0, 10, 0>, -y, M);\n",
+      ZR_ESYNTAX, "trace's normal variable 'M' must be a vector", NULL);
+}
+
+static void test_pattern_more_tiles(void **state) {
+  fixture *f = *state;
+  /* povray 3.7 paints tiles { A tile2 B } as checker texture { B }
+     texture { A }: B where checker's value is 0 (measured). */
+  zr_scene *s = good(f, "plane { y, 0 texture { tiles {"
+                        " texture { pigment { rgb 1 } }"
+                        " tile2 texture { pigment { rgb <0, 0, 1> } } } } }");
+  const zr_texture *tx = s->objects[0]->texture, *second;
+  double t;
+  const zr_texture *a = zr__texture_pick(tx, zr_v3(0.5, 0.5, 0.5),
+                                         &second, &t);
+  assert_true(fabs(a->pigment->colour.b - 1) < 1e-12 &&
+              fabs(a->pigment->colour.r) < 1e-12);
+  const zr_texture *b = zr__texture_pick(tx, zr_v3(1.5, 0.5, 0.5),
+                                         &second, &t);
+  assert_true(fabs(b->pigment->colour.r - 1) < 1e-12);
+}
+
+static void test_pattern_more_object(void **state) {
+  fixture *f = *state;
+  /* The second colour inside the object, the first outside; the
+     pigment's own transform moves the object with it. */
+  zr_scene *s = good(f, "#declare O = union { sphere { 0, 1 }"
+                        " box { <2, -1, -1>, <3, 1, 1> } }\n"
+                        "plane { z, 0 pigment { object { O rgb <1, 0, 0>,"
+                        " rgb <0, 0, 1> } translate 10 * y } }");
+  const zr_pigment *pg = first_pigment(s);
+  assert_true(fabs(zr__pigment_eval(pg, zr_v3(0, 10, 0)).b - 1) < 1e-12);
+  assert_true(fabs(zr__pigment_eval(pg, zr_v3(2.5, 10, 0)).b - 1) < 1e-12);
+  assert_true(fabs(zr__pigment_eval(pg, zr_v3(1.5, 10, 0)).r - 1) < 1e-12);
+  assert_true(fabs(zr__pigment_eval(pg, zr_v3(0, 0, 0)).r - 1) < 1e-12);
+  bad(f, "plane { z, 0 pigment { object { sphere { 0, 1 } rgb 1, rgb 0,"
+         " rgb 0.5 } } }", ZR_ESYNTAX, "too many colours for this pattern",
+      NULL);
+}
+
+static void test_pattern_more_crackle_options(void **state) {
+  fixture *f = *state;
+  /* Our crackle is our own noise, so these are its definitions
+     ("Crackle"): form <1,0,0> metric 1 offset 0.5 is the nearest
+     distance plus 0.5, at least 0.5; solid is constant near a point. */
+  zr_scene *s = good(f, "plane { z, 0 pigment { crackle form <1, 0, 0>"
+                        " metric 1 offset 0.5 color_map { [0 rgb 0]"
+                        " [1 rgb 1] } } }\n"
+                        "plane { z, 0 pigment { crackle solid color_map {"
+                        " [0 rgb 0] [1 rgb 1] } } }");
+  const zr_pigment *a = s->objects[0]->texture->pigment;
+  const zr_pigment *b = s->objects[1]->texture->pigment;
+  assert_int_equal(a->pattern.crackle_metric, 1);
+  for (int i = 0; i < 50; i++) {
+    zr_vec3 q = zr_v3(i * 0.37, i * 0.11, i * 0.23);
+    assert_true(zr__pigment_eval(a, q).r >= 0.5 - 1e-12);
+    double v = zr__pigment_eval(b, q).r;
+    double w = zr__pigment_eval(b, zr_v3_add(q, zr_v3(1e-6, 0, 0))).r;
+    assert_true(v >= 0 && v <= 1 && fabs(v - w) < 1e-12);
+  }
+  bad(f, "plane { z, 0 pigment { crackle metric 0 } }", ZR_ESCENE,
+      "crackle's metric must be positive", NULL);
+}
+
+static void test_pattern_more_bare_default(void **state) {
+  fixture *f = *state;
+  /* povray 3.7 takes "default { }" without its '#'. */
+  zr_scene *s = good(f, "default { finish { ambient 0.7 } }\n"
+                        "sphere { 0, 1 }");
+  assert_true(fabs(s->default_texture->finish->ambient.r - 0.7) < 1e-12);
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test(test_pattern_more_mandel),
+      cmocka_unit_test(test_pattern_more_magnet),
+      cmocka_unit_test(test_pattern_more_colouring),
+      cmocka_unit_test(test_pattern_more_fractal_errors),
+      cmocka_unit_test(test_pattern_more_function),
+      cmocka_unit_test(test_pattern_more_transform_blocks),
+      cmocka_unit_test(test_pattern_more_extent_unbounded),
+      cmocka_unit_test(test_pattern_more_trace),
+      cmocka_unit_test(test_pattern_more_tiles),
+      cmocka_unit_test(test_pattern_more_object),
+      cmocka_unit_test(test_pattern_more_crackle_options),
+      cmocka_unit_test(test_pattern_more_bare_default),
+  };
+  return cmocka_run_group_tests(tests, setup, teardown);
+}
