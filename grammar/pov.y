@@ -417,6 +417,8 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %token T_MOD "mod"
 %token T_NO "no"
 %token T_NO_SHADOW "no_shadow"
+%token T_NO_IMAGE "no_image"
+%token T_NO_REFLECTION "no_reflection"
 %token T_OBJECT "object"
 %token T_OFF "off"
 %token T_ON "on"
@@ -1064,6 +1066,8 @@ primary:
 | T_COLOUR_ID          { $$ = $1.num; }
 | '(' cexpr ')'        { $$ = $2; }
 | '<' list '>'         { TRY(zr__sdl_from_list(p, &$2, &@$, &$$)); }
+/* POV-Ray reads a comma before the '>' ("rgb<0.2,0.1,0.5,>"). */
+| '<' list ',' '>'     { TRY(zr__sdl_from_list(p, &$2, &@$, &$$)); }
 | T_X                  { $$ = zr__sdl_vec(1, 0, 0); }
 | T_Y                  { $$ = zr__sdl_vec(0, 1, 0); }
 | T_Z                  { $$ = zr__sdl_vec(0, 0, 1); }
@@ -1819,9 +1823,13 @@ poly_head:
     }
 ;
 
+/* Commas between coefficients may be left out, as in a vector
+   (hyptorus.pov ends a line without one). */
 poly_coefs:
-  poly_head expr       { TRY(zr__sdl_poly_coef(p, $1, &$2, &@2)); $$ = $1; }
-| poly_coefs ',' expr  { TRY(zr__sdl_poly_coef(p, $1, &$3, &@3)); $$ = $1; }
+  poly_head expr %prec OPTIONAL_COMMA
+    { TRY(zr__sdl_poly_coef(p, $1, &$2, &@2)); $$ = $1; }
+| poly_coefs comma expr %prec OPTIONAL_COMMA
+    { TRY(zr__sdl_poly_coef(p, $1, &$3, &@3)); $$ = $1; }
 ;
 
 /* A difference is an intersection with every child after the first
@@ -1851,6 +1859,8 @@ object_mod:
 | normal               { $$ = make_mod(ZR_SDL_MOD_NORMAL, $1); }
 | material             { $$ = make_mod(ZR_SDL_MOD_MATERIAL, $1); }
 | T_NO_SHADOW          { $$ = make_mod(ZR_SDL_MOD_NO_SHADOW, NULL); }
+| T_NO_IMAGE           { $$ = make_mod(ZR_SDL_MOD_NO_IMAGE, NULL); }
+| T_NO_REFLECTION      { $$ = make_mod(ZR_SDL_MOD_NO_REFLECTION, NULL); }
 | T_NO_RADIOSITY
     {
       zr__sdl_radiosity_object(p, T_NO_RADIOSITY, &@1);
@@ -2738,7 +2748,7 @@ interior_body:
 /* ---- media (reference manual, "Media"; lib/sdl/build_media.c) ---- */
 
 media:
-  media_body '}'       { TRY(zr__sdl_media_done(p, $1, &@1)); $$ = $1; }
+  media_body '}'       { $$ = $1; }
 ;
 
 media_body:

@@ -433,6 +433,43 @@ static void test_camlight_looks_like(void **state) {
   assert_near(s->lights[0].location.y, 5.0, 1e-12);
 }
 
+/* A red sphere seen head on in front of a white wall lit from behind
+   the camera, and a mirror that shows it: no_image hides it from the
+   camera but not from the mirror or the light (its shadow stays);
+   no_reflection hides it in the mirror only. */
+static void test_camlight_no_image_no_reflection(void **state) {
+  fixture *f = *state;
+  static const char *scene =
+      "camera { location <0, 0, -5> look_at 0 angle 10 }\n"
+      "light_source { <0, 0, -20> rgb 1 }\n"
+      "sphere { 0, 0.1 pigment { rgb <1, 0, 0> } finish { ambient 1 "
+      "diffuse 0 } %s }\n"
+      "plane { z, 1 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n";
+  static const char *mirror =
+      "camera { location <0, 0, -5> look_at <0, 0, 10> angle 10 }\n"
+      "sphere { <0, 0, -10>, 1 pigment { rgb <1, 0, 0> } finish { "
+      "ambient 1 diffuse 0 } %s }\n"
+      "plane { z, 1 pigment { rgb 0 } finish { ambient 0 diffuse 0 "
+      "reflection 1 } }\n";
+  char text[1024];
+  const char *mods[] = {"", "no_image", "no_reflection"};
+  /* Direct view: red, the wall in its shadow (black), red. */
+  const double direct_r[] = {1, 0, 1};
+  /* In the mirror (the camera is inside no sphere): red, red, black. */
+  const double mirrored_r[] = {1, 1, 0};
+  for (int i = 0; i < 3; i++) {
+    snprintf(text, sizeof text, scene, mods[i]);
+    float *rgb = render(f, text, 1, 1, 0);
+    assert_near(rgb[0], direct_r[i], 1e-6);
+    assert_near(rgb[1], 0.0, 1e-6);
+    free(rgb);
+    snprintf(text, sizeof text, mirror, mods[i]);
+    rgb = render(f, text, 1, 1, 0);
+    assert_near(rgb[0], mirrored_r[i], 1e-6);
+    free(rgb);
+  }
+}
+
 static void test_camlight_bad_input(void **state) {
   fixture *f = *state;
   /* Dispersion is named, not silently dropped. */
@@ -488,6 +525,8 @@ int main(void) {
                                       setup, teardown),
       cmocka_unit_test_setup_teardown(
           test_camlight_lights_declared_and_in_unions, setup, teardown),
+      cmocka_unit_test_setup_teardown(test_camlight_no_image_no_reflection,
+                                      setup, teardown),
       cmocka_unit_test_setup_teardown(test_camlight_bad_input, setup,
                                       teardown),
   };

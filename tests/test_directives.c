@@ -259,6 +259,16 @@ static void test_directives_vectors_promote(void **state) {
          "0, 1))\n",
          "2,3 2,4,3 2,4,6,8 1.0,1.5,2.0,0.0,0.0 1.5"
          " 1.414214 0,0,1 32 0.0,0.6,0.8");
+  /* POV-Ray's own files leave commas out ("< -1 0 0 >", woods.inc) and
+     put one before the '>' (float4.pov); an operator still continues a
+     component. */
+  prints(f,
+         "#declare E = < -1 0 0 >;\n"
+         "#declare F = <0.2, 0.1, 0.5,>;\n"
+         "#declare G = <1, 2 -1 3>;\n"
+         "#debug concat(vstr(3, E, \",\", 0, 0), \" \", "
+         "vstr(3, F, \",\", 0, 1), \" \", vstr(3, G, \",\", 0, 0))\n",
+         "-1,0,0 0.2,0.1,0.5 1,1,3");
 }
 
 static void test_directives_float_values(void **state) {

@@ -163,6 +163,7 @@ typedef struct png_spec {
   const png_color *palette;
   int n_palette;
   int interlace;
+  int n_trans; /* > 0: a tRNS chunk of this many palette alphas, all 0 */
 } png_spec;
 
 static void write_png(const char *path, const png_spec *sp) {
@@ -180,6 +181,10 @@ static void write_png(const char *path, const png_spec *sp) {
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   if (sp->palette)
     png_set_PLTE(png, info, sp->palette, sp->n_palette);
+  if (sp->n_trans > 0) {
+    png_byte alpha[256] = {0};
+    png_set_tRNS(png, info, alpha, sp->n_trans, NULL);
+  }
   if (sp->file_gamma > 0)
     png_set_gAMA(png, info, sp->file_gamma);
   if (sp->srgb)
@@ -374,7 +379,7 @@ static void test_image_png_grey_palette_alpha(void **state) {
   fixture *fx = *state;
   /* 8-bit grey: one code maps to the same code on all three channels. */
   unsigned char grey[2] = {10, 200};
-  png_spec sp = {PNG_COLOR_TYPE_GRAY, 8, 2, 1, grey, 0, 0, NULL, 0, 0};
+  png_spec sp = {PNG_COLOR_TYPE_GRAY, 8, 2, 1, grey, 0, 0, NULL, 0, 0, 0};
   const char *path = in_dir(fx, "grey.png");
   write_png(path, &sp);
   zr_image *img;
@@ -386,7 +391,7 @@ static void test_image_png_grey_palette_alpha(void **state) {
 
   /* 2-bit grey: code 2 of 3 is 170 of 255. */
   unsigned char grey2[1] = {0x80}; /* first pixel 10b */
-  png_spec sp2 = {PNG_COLOR_TYPE_GRAY, 2, 1, 1, grey2, 0, 0, NULL, 0, 0};
+  png_spec sp2 = {PNG_COLOR_TYPE_GRAY, 2, 1, 1, grey2, 0, 0, NULL, 0, 0, 0};
   path = in_dir(fx, "grey2.png");
   write_png(path, &sp2);
   assert_true(fabs(first_code(fx, path, NULL) - 170) < 1e-3);
@@ -394,7 +399,7 @@ static void test_image_png_grey_palette_alpha(void **state) {
   /* A palette: index 1 is (40, 50, 60). */
   png_color pal[2] = {{0, 0, 0}, {40, 50, 60}};
   unsigned char idx[1] = {1};
-  png_spec sp3 = {PNG_COLOR_TYPE_PALETTE, 8, 1, 1, idx, 0, 0, pal, 2, 0};
+  png_spec sp3 = {PNG_COLOR_TYPE_PALETTE, 8, 1, 1, idx, 0, 0, pal, 2, 0, 0};
   path = in_dir(fx, "pal.png");
   write_png(path, &sp3);
   assert_int_equal(zr_image_read(fx->ctx, path, &img), ZR_OK);
@@ -402,10 +407,20 @@ static void test_image_png_grey_palette_alpha(void **state) {
   assert_true(fabs(zr__srgb_encode(px[1]) * 255 - 50) < 1e-3);
   assert_true(fabs(zr__srgb_encode(px[2]) * 255 - 60) < 1e-3);
   zr_image_free(img);
+  /* The same with a tRNS chunk (POV-Ray's bumpmap_.png has one): libpng
+     makes it an alpha channel, which is skipped. */
+  sp3.n_trans = 1;
+  path = in_dir(fx, "paltrns.png");
+  write_png(path, &sp3);
+  assert_int_equal(zr_image_read(fx->ctx, path, &img), ZR_OK);
+  px = zr_image_pixels_const(img);
+  assert_true(fabs(zr__srgb_encode(px[0]) * 255 - 40) < 1e-3);
+  assert_true(fabs(zr__srgb_encode(px[2]) * 255 - 60) < 1e-3);
+  zr_image_free(img);
 
   /* RGBA: alpha is dropped, the stored colour kept (not composited). */
   unsigned char rgba[4] = {100, 150, 200, 0};
-  png_spec sp4 = {PNG_COLOR_TYPE_RGB_ALPHA, 8, 1, 1, rgba, 0, 0, NULL, 0, 0};
+  png_spec sp4 = {PNG_COLOR_TYPE_RGB_ALPHA, 8, 1, 1, rgba, 0, 0, NULL, 0, 0, 0};
   path = in_dir(fx, "rgba.png");
   write_png(path, &sp4);
   assert_true(fabs(first_code(fx, path, NULL) - 100) < 1e-3);
@@ -414,7 +429,7 @@ static void test_image_png_grey_palette_alpha(void **state) {
   unsigned char ga16[4 * 3] = {0x80, 0x00, 0xff, 0xff, 0, 0, 0, 0,
                                0, 0, 0, 0};
   png_spec sp5 = {PNG_COLOR_TYPE_GRAY_ALPHA, 16, 3, 1, ga16, 0, 0,
-                  NULL, 0, 1};
+                  NULL, 0, 1, 0};
   path = in_dir(fx, "ga16.png");
   write_png(path, &sp5);
   assert_true(fabs(first_code(fx, path, NULL) - 32768.0 / 65535 * 255) <
@@ -426,7 +441,7 @@ static void test_image_png_honours_gama(void **state) {
   /* gAMA 1.0 means the codes are linear: 128 is 128/255 of full light
      (1e-6: float precision of the table). */
   unsigned char v[1] = {128};
-  png_spec sp = {PNG_COLOR_TYPE_GRAY, 8, 1, 1, v, 1.0, 0, NULL, 0, 0};
+  png_spec sp = {PNG_COLOR_TYPE_GRAY, 8, 1, 1, v, 1.0, 0, NULL, 0, 0, 0};
   const char *path = in_dir(fx, "lin.png");
   write_png(path, &sp);
   zr_image *img;

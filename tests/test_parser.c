@@ -618,16 +618,17 @@ static void test_parser_syntax_error(void **state) {
   fixture *f = *state;
   bad(f, "sphere { <0, 0, 0>, 1, 2 }\n", ZR_ESYNTAX,
       "unexpected ',', expected 'transform', 'normal', 'material', "
-      "'finish', 'interior', 'inverse', 'matrix', 'no_shadow', 'open', "
-      "'pigment', 'rotate', 'scale', 'texture', 'translate', 'bounded_by', "
-      "'clipped_by', 'hollow', 'sturm', 'radiosity', 'no_radiosity', "
-      "'interior_texture', 'photons', '+', '-', '*', '/', '}' or '.'",
+      "'finish', 'interior', 'inverse', 'matrix', 'no_shadow', 'no_image', "
+      "'no_reflection', 'open', 'pigment', 'rotate', 'scale', 'texture', "
+      "'translate', 'bounded_by', 'clipped_by', 'hollow', 'sturm', "
+      "'radiosity', 'no_radiosity', 'interior_texture', 'photons', '+', "
+      "'-', '*', '/', '}' or '.'",
       "t.pov:1:22: error: unexpected ',', expected 'transform', 'normal', "
       "'material', 'finish', 'interior', 'inverse', 'matrix', 'no_shadow', "
-      "'open', 'pigment', 'rotate', 'scale', 'texture', 'translate', "
-      "'bounded_by', 'clipped_by', 'hollow', 'sturm', 'radiosity', "
-      "'no_radiosity', 'interior_texture', 'photons', '+', '-', '*', '/', "
-      "'}' or '.'\n"
+      "'no_image', 'no_reflection', 'open', 'pigment', 'rotate', 'scale', "
+      "'texture', 'translate', 'bounded_by', 'clipped_by', 'hollow', "
+      "'sturm', 'radiosity', 'no_radiosity', 'interior_texture', "
+      "'photons', '+', '-', '*', '/', '}' or '.'\n"
       "    1 | sphere { <0, 0, 0>, 1, 2 }\n"
       "      |                      ^\n");
   /* As in POV-Ray, "-1" after a vector subtracts: the radius is missing
@@ -638,10 +639,11 @@ static void test_parser_syntax_error(void **state) {
   bad(f, "sphere { 0, 1 }\n}\n", ZR_ESYNTAX, "unexpected '}'", NULL);
   bad(f, "box { 0, 1 shadowless }", ZR_ESYNTAX,
       "unexpected 'shadowless', expected 'transform', 'normal', 'material', "
-      "'finish', 'interior', 'inverse', 'matrix', 'no_shadow', 'open', "
-      "'pigment', 'rotate', 'scale', 'texture', 'translate', 'bounded_by', "
-      "'clipped_by', 'hollow', 'sturm', 'radiosity', 'no_radiosity', "
-      "'interior_texture', 'photons', '+', '-', '*', '/', '}' or '.'",
+      "'finish', 'interior', 'inverse', 'matrix', 'no_shadow', 'no_image', "
+      "'no_reflection', 'open', 'pigment', 'rotate', 'scale', 'texture', "
+      "'translate', 'bounded_by', 'clipped_by', 'hollow', 'sturm', "
+      "'radiosity', 'no_radiosity', 'interior_texture', 'photons', '+', "
+      "'-', '*', '/', '}' or '.'",
       NULL);
   bad(f, "#declare 3 = 1;", ZR_ESYNTAX,
       "unexpected number, expected identifier", NULL);

@@ -908,6 +908,71 @@ static void test_radiosity_threads_identical(void **state) {
   zr_context_free(ctx);
 }
 
+/* ---- CSG trimming ---- */
+
+/* A furnace (uniform emission, rho 0.5, B = 2 wherever light is
+   enclosed) holding a box with a hemispherical hole in its -z face:
+   difference { box { -1, 1 } sphere { <0,0,-1>, 0.5 } }. */
+static const char *const holed_box_scene =
+    "#declare T = texture { pigment { rgb 1 } finish { diffuse 0.5 "
+    "ambient 0 emission " INV_PI " } }\n"
+    "box { -3, 3 texture { T } }\n"
+    "difference { box { -1, 1 } sphere { <0,0,-1>, 0.5 } texture { T } }\n";
+
+/*
+ * The hole's area is gone: the -z face keeps 4 - pi/4 and the sphere
+ * its half inside the box, pi/2 (0.5%: inside tests on a 64 x 64
+ * grid); the cells removed whole have no area and no link, so they
+ * neither emit nor receive.  Energy is still conserved: everything but
+ * the outer box's outside is enclosed, so the absorbed power is the
+ * emitted power less that outside's (1%, as the closed cube's test),
+ * and the holed box's cells are at B = 2 on average (1%).
+ */
+static void test_radiosity_csg_hole_trimmed(void **state) {
+  (void)state;
+  zr_context *ctx = new_context();
+  zr_scene *scene = parse(ctx, holed_box_scene);
+  zr_radiosity_params p;
+  zr_radiosity_params_init(&p, scene);
+  p.bf_eps = 3e-2;
+  p.area_eps = 1e-3;
+  zr_radiosity *rad = solve(ctx, scene, &p);
+  assert_int_equal(rad->n_surfs, 13);
+  const double face = 4.0 - M_PI / 4.0, cap = M_PI / 2.0;
+  assert_true(fabs(rad->surfs[10].area - face) < 0.005 * face);
+  assert_true(fabs(rad->surfs[12].area - cap) < 0.005 * cap);
+  size_t removed = 0;
+  for (size_t n = 0; n < rad->n_nodes; n++)
+    if (rad->nodes[n].kept == 0.0) {
+      assert_true(rad->nodes[n].area == 0.0);
+      removed++;
+    }
+  assert_true(removed > 0);
+  for (size_t i = 0; i < rad->n_links; i++) {
+    assert_true(rad->nodes[rad->links[i].recv].kept > 0.0);
+    assert_true(rad->nodes[rad->links[i].src].kept > 0.0);
+  }
+  zr_radiosity_stats st;
+  zr_radiosity_get_stats(rad, &st);
+  double area = 0.0;
+  for (size_t k = 0; k < rad->n_surfs; k++)
+    area += rad->surfs[k].area;
+  assert_true(fabs(st.emitted_power - 2.0 * area) < 1e-3 * area);
+  double inner = st.emitted_power - 6.0 * 36.0;
+  printf("holed box: emitted %.4f absorbed %.4f (enclosed emission %.4f, "
+         "%+.2f%%)\n", st.emitted_power, st.absorbed_power, inner,
+         100.0 * (st.absorbed_power / inner - 1.0));
+  assert_true(fabs(st.absorbed_power - inner) < 0.01 * inner);
+  for (int side = 0; side < 2; side++) {
+    double mean = side_mean(rad, 6, 7, side, NULL, NULL);
+    assert_true(fabs(mean - 2.0) < 0.02);
+  }
+  assert_no_nan(rad);
+  zr_radiosity_free(rad);
+  zr_scene_free(scene);
+  zr_context_free(ctx);
+}
+
 /* ---- bad input ---- */
 
 static void test_radiosity_bad_params(void **state) {
@@ -1014,6 +1079,7 @@ int main(void) {
       cmocka_unit_test(test_radiosity_light_refines_shadow_edges),
       cmocka_unit_test(test_radiosity_light_save_load),
       cmocka_unit_test(test_radiosity_threads_identical),
+      cmocka_unit_test(test_radiosity_csg_hole_trimmed),
       cmocka_unit_test(test_radiosity_bad_params),
       cmocka_unit_test(test_radiosity_plane_alone),
       cmocka_unit_test(test_radiosity_zero_area_and_dark),

@@ -67,7 +67,8 @@ static void read_memory(png_structp png, png_bytep data, size_t length) {
   job->pos += length;
 }
 
-/* Sets libpng's transformations so that every row is RGB, 8 or 16 bit. */
+/* Sets libpng's transformations so that every row is RGB (or RGBA, the
+   alpha to be skipped), 8 or 16 bit. */
 static void request_rgb(png_structp png, png_infop info) {
   int color_type = png_get_color_type(png, info);
   int depth = png_get_bit_depth(png, info);
@@ -75,8 +76,9 @@ static void request_rgb(png_structp png, png_infop info) {
     png_set_palette_to_rgb(png);
   if (color_type == PNG_COLOR_TYPE_GRAY && depth < 8)
     png_set_expand_gray_1_2_4_to_8(png);
-  /* A palette's or grey image's tRNS chunk becomes an alpha channel
-     when expanded: dropped too. */
+  /* Alpha is dropped: stripped where libpng can, and skipped while
+     converting where it cannot (a palette's tRNS chunk becomes alpha
+     after the stripping: POV-Ray's bumpmap_.png). */
   if ((color_type & PNG_COLOR_MASK_ALPHA) ||
       png_get_valid(png, info, PNG_INFO_tRNS))
     png_set_strip_alpha(png);
@@ -109,8 +111,9 @@ static zr_status decode_rows(png_job *job) {
   int height = (int)png_get_image_height(job->png, job->info);
   int depth = png_get_bit_depth(job->png, job->info);
   size_t rowbytes = png_get_rowbytes(job->png, job->info);
-  if (png_get_channels(job->png, job->info) != 3 ||
-      rowbytes != (size_t)width * (depth == 16 ? 6 : 3)) {
+  size_t channels = png_get_channels(job->png, job->info);
+  if ((channels != 3 && channels != 4) || (depth != 8 && depth != 16) ||
+      rowbytes != (size_t)width * channels * (depth == 16 ? 2 : 1)) {
     snprintf(job->message, sizeof job->message,
              "unexpected row layout after conversion");
     return ZR_EFORMAT;
@@ -130,15 +133,16 @@ static zr_status decode_rows(png_job *job) {
   png_read_image(job->png, job->row_ptrs);
   png_read_end(job->png, NULL);
 
-  size_t n = (size_t)width * (size_t)height * 3;
+  size_t n = (size_t)width * (size_t)height;
   float *px = job->image->pixels;
-  if (depth == 16) {
-    for (size_t i = 0; i < n; i++)
-      px[i] = job->table[(job->rows[2 * i] << 8) | job->rows[2 * i + 1]];
-  } else {
-    for (size_t i = 0; i < n; i++)
-      px[i] = job->table[job->rows[i]];
-  }
+  for (size_t i = 0; i < n; i++)
+    for (size_t c = 0; c < 3; c++) {
+      size_t k = i * channels + c;
+      const png_byte *r = job->rows;
+      unsigned v = depth == 16 ? (unsigned)(r[2 * k] << 8 | r[2 * k + 1])
+                               : r[k];
+      px[3 * i + c] = job->table[v];
+    }
   return ZR_OK;
 }
 

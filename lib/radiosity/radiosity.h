@@ -11,6 +11,8 @@
  *   direct.c    POV-Ray light sources shooting direct light into the mesh
  *   meshimage.c a picture of the mesh (elements flat, edges drawn)
  *   radiosity.c the public API and the lookup from a ray hit
+ *   trim.c      CSG trimming of the parts of intersections and merges
+ *   workers.c   the threads of a rank, a parallel loop
  *
  * Every element has two sides, front (along the surface's outward normal)
  * and back, each with its own radiosity: POV-Ray lights both sides of a
@@ -20,9 +22,10 @@
  * that shading uses.
  *
  * Everything is in growable arrays addressed by index, so growing an
- * array never invalidates a reference, and the solution is built by one
- * thread in a fixed order: the same scene and parameters give the same
- * bytes.
+ * array never invalidates a reference, and the solution is built in a
+ * fixed order (threads compute into slots of their own, workers.c, and
+ * one thread combines them in order): the same scene and parameters
+ * give the same bytes for any number of threads.
  */
 #ifndef ZR_RADIOSITY_RADIOSITY_H
 #define ZR_RADIOSITY_RADIOSITY_H
@@ -245,7 +248,8 @@ zr_status zr__rad_index_links(zr_radiosity *rad);
  * diffuse light of every bounce from emitting surfaces, first bounce
  * included, and the light of POV-Ray light sources after at least one
  * diffuse bounce: their direct light is the tracer's, per pixel
- * (direct.c).  It holds no ambient.  Units: the scene's radiance units, as emission.  Returns
+ * (direct.c).  It holds no ambient.  Units: the scene's radiance
+ * units, as emission.  Returns
  * false (out black) when the object has no surface in the solution.
  */
 bool zr__radiosity_radiance(const zr_radiosity *rad, const zr_object *object,

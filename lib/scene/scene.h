@@ -594,6 +594,10 @@ struct zr_object {
      surface; NULL: the same as outside. */
   const zr_texture *interior_texture;
   bool no_shadow;
+  /* no_image: unseen by camera rays (and what they pass straight
+     through); no_reflection: unseen in reflections.  Both still cast
+     shadows ("No_Image", "No_Reflection"). */
+  bool no_image, no_reflection;
   bool inverse;
   bool hollow; /* stored for media; it changes nothing else */
   /* clipped_by: only the surface inside this object remains (an

@@ -740,7 +740,12 @@ static void set_flag(zr_object *o, zr_sdl_mod_kind kind) {
     zr__sdl_object_invert(o); /* De Morgan for CSG: build_object.c */
     return;
   }
-  o->no_shadow = true;
+  if (kind == ZR_SDL_MOD_NO_IMAGE)
+    o->no_image = true;
+  else if (kind == ZR_SDL_MOD_NO_REFLECTION)
+    o->no_reflection = true;
+  else
+    o->no_shadow = true;
   if (zr__is_csg(o->kind))
     for (size_t i = 0; i < o->u.csg.n_children; i++)
       set_flag(o->u.csg.children[i], kind);
@@ -785,6 +790,8 @@ bool zr__sdl_object_mod(zr_sdl_parser *p, zr_object *o,
     set_interior(o, mod->ptr, true);
     return true;
   case ZR_SDL_MOD_NO_SHADOW:
+  case ZR_SDL_MOD_NO_IMAGE:
+  case ZR_SDL_MOD_NO_REFLECTION:
   case ZR_SDL_MOD_INVERSE:
     set_flag(o, mod->kind);
     return true;

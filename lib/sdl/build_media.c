@@ -211,14 +211,6 @@ bool zr__sdl_media_transform(zr_sdl_parser *p, zr_medium *m,
   return true;
 }
 
-bool zr__sdl_media_done(zr_sdl_parser *p, zr_medium *m,
-                        const zr_sdl_loc *loc) {
-  (void)p;
-  (void)loc;
-  (void)m;
-  return true;
-}
-
 /* list with m appended, as a new array. */
 static const zr_medium *const *append(zr_sdl_parser *p,
                                       const zr_medium *const *list,

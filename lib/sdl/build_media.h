@@ -33,9 +33,6 @@ bool zr__sdl_media_density(zr_sdl_parser *p, zr_medium *m,
 /* Moves the densities given so far ("Media": later ones stay). */
 bool zr__sdl_media_transform(zr_sdl_parser *p, zr_medium *m,
                              const zr_transform *t);
-/* Checks the finished block. */
-bool zr__sdl_media_done(zr_sdl_parser *p, zr_medium *m,
-                        const zr_sdl_loc *loc);
 /* interior { media { } }: appended to the interior's list. */
 bool zr__sdl_interior_media(zr_sdl_parser *p, zr_interior *in,
                             const zr_medium *m);

@@ -299,6 +299,7 @@ ZR_API zr_status zr_render_pixels(const zr_scene *scene,
   job.tracer.stats = &local;
   job.tracer.radiosity = params->radiosity;
   job.tracer.radiosity_only = params->radiosity_only;
+  job.tracer.hide = ZR_HIDE_IMAGE;
   zr__camera_media(scene, &job.camera_media);
   /* POV-Ray compares colours after undoing the scene's working gamma and
      applying its antialiasing gamma, 2.5 by default (reference,

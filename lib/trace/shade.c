@@ -31,7 +31,11 @@
  * f * C + t.  Light is not attenuated with distance unless the light
  * fades; spotlights, cylinder, parallel and area lights are shaped in
  * lib/trace/lights.c, and fog, rainbows and the sky_sphere act at the
- * ray's end (lib/trace/atmosphere.c).  Rays are followed to
+ * ray's end (lib/trace/atmosphere.c).  Participating media (interior
+ * media of hollow containers, atmospheric media) act on each ray
+ * segment and dim shadow rays through their containers
+ * (lib/trace/media.c); interior_texture replaces the texture where a
+ * ray meets the inside of a surface.  Rays are followed to
  * max_trace_level (deeper ones return black, as in POV-Ray; a ray that
  * passes a surface unbent does not count), and a
  * secondary ray is spawned only if its weight, the product of the
@@ -365,6 +369,14 @@ static zr_rgb interior_fade(const zr_media *media, double d, zr_rgb c) {
                  c.b * (f.b + (1.0 - f.b) * a));
 }
 
+/* A reflected ray's tracer: it no longer hides no_image objects, and
+   hides no_reflection ones. */
+static zr_tracer reflecting(const zr_tracer *tr) {
+  zr_tracer r = *tr;
+  r.hide = ZR_HIDE_REFLECTION;
+  return r;
+}
+
 static zr_rgb trace_secondary(const zr_tracer *tr, zr_vec3 origin,
                               zr_vec3 dir, int level, double weight,
                               const zr_media *media) {
@@ -435,14 +447,16 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
     if (!(tw > gs->adc_bailout))
       return sum;
     tr->stats->reflected_rays++;
-    zr_rgb r = trace_secondary(tr, above, mirror, level, tw, media);
+    zr_tracer rt = reflecting(tr);
+    zr_rgb r = trace_secondary(&rt, above, mirror, level, tw, media);
     return zr_rgb_add(sum, r);
   }
 
   double rw = weight * rgb_max(refl);
   if (rgb_max(refl) > 0.0 && rw > gs->adc_bailout) {
     tr->stats->reflected_rays++;
-    zr_rgb r = trace_secondary(tr, above, mirror, level, rw, media);
+    zr_tracer rt = reflecting(tr);
+    zr_rgb r = trace_secondary(&rt, above, mirror, level, rw, media);
     if (f->reflection_exponent != 1.0) {
       double k = 1.0 / f->reflection_exponent;
       r = zr_rgb3(pow(fmax(r.r, 0.0), k), pow(fmax(r.g, 0.0), k),
@@ -561,13 +575,29 @@ static zr_rgb shade_layers(const zr_tracer *tr, const surface *s,
   return sum;
 }
 
+/* The nearest hit of an object the ray may see (zr_tracer.hide). */
+static bool nearest_shown(const zr_tracer *tracer, const zr_ray *ray,
+                          zr_hit *hit) {
+  double from = 0.0;
+  for (;;) {
+    if (!zr__bvh_nearest(tracer->scene->bvh, ray, from, INFINITY, hit))
+      return false;
+    const zr_object *o = hit->object;
+    bool hidden = ((tracer->hide & ZR_HIDE_IMAGE) && o->no_image) ||
+                  ((tracer->hide & ZR_HIDE_REFLECTION) && o->no_reflection);
+    if (!hidden)
+      return true;
+    from = nextafter(hit->t, INFINITY);
+  }
+}
+
 zr_rgb zr__trace_ray(const zr_tracer *tracer, const zr_ray *ray, int level,
                      double weight, const zr_media *media) {
   const zr_scene *scene = tracer->scene;
   if (level > scene->settings.max_trace_level)
     return zr_rgb3(0, 0, 0);
   zr_hit hit;
-  if (!zr__bvh_nearest(scene->bvh, ray, 0.0, INFINITY, &hit)) {
+  if (!nearest_shown(tracer, ray, &hit)) {
     /* Atmospheric media reach to POV-Ray's horizon (lib/trace/media.c). */
     zr_rgb sky = zr__media_along(tracer, media, ray->origin, ray->dir,
                                  INFINITY, zr__sky_colour(scene, ray->dir));

@@ -37,7 +37,13 @@ typedef struct zr_tracer {
      emission with the diffuse light it carries (lib/radiosity). */
   const zr_radiosity *radiosity;
   int radiosity_only; /* 1: a ray sees the solution at its first hit */
+  /* Which objects this ray and the rays it spawns do not see: the
+     camera's rays hide no_image objects, reflected rays no_reflection
+     ones (ZR_HIDE_*; 0 for rays of other origins). */
+  unsigned hide;
 } zr_tracer;
+
+enum { ZR_HIDE_IMAGE = 1u << 0, ZR_HIDE_REFLECTION = 1u << 1 };
 
 /*
  * The colour seen along ray (whose direction need not be unit length).
