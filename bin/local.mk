@@ -16,6 +16,9 @@ tests_test_cli_options_LDADD = $(TEST_LDADD)
 # End-to-end: mpirun with 1 to 3 ranks, bad input, option handling.
 TESTS += tests/test_cli.sh
 EXTRA_DIST += tests/test_cli.sh
+# Every POV-Ray 3.7 include file parses (skipped without povray-includes).
+TESTS += tests/test_includes.sh
+EXTRA_DIST += tests/test_includes.sh
 
 # Radiosity end to end: the Cornell box with --radiosity, 1 and 2 ranks,
 # save and load, radiosity-only, one-sided emission, option errors.

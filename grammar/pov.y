@@ -28,6 +28,7 @@
 %code requires {
 #include "sdl/sdl.h"
 #include "sdl/build_pattern.h"
+#include "sdl/spline.h"
 }
 
 %code provides {
@@ -164,6 +165,8 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
   zr_sky_sphere *sky;
   zr_rainbow *rainbow;
   zr_medium *medium;
+  zr_sdl_spline *spline;
+  zr_slope *slope;
   int token;
 }
 
@@ -172,6 +175,7 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %token T_START_VERSION "start of #version"
 %token T_START_PAREN "start of parenthesized expression"
 %token T_START_FN_TEXTURE "start of a function's pattern or pigment"
+%token T_START_FN_SPLINE "start of a function's spline"
 
 %token <num> T_NUMBER "number"
 %token <str> T_STRING "string"
@@ -259,6 +263,13 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %token T_TRIANGLE_WAVE "triangle_wave"
 %token T_TURBULENCE "turbulence"
 %token T_WARP "warp"
+%token T_BLACK_HOLE "black_hole"
+%token T_DIST_EXP "dist_exp"
+%token T_FLIP "flip"
+%token T_MAJOR_RADIUS "major_radius"
+%token T_ORIENTATION "orientation"
+%token T_REPEAT "repeat"
+%token T_TOROIDAL "toroidal"
 %token T_WAVES "waves"
 %token T_WOOD "wood"
 %token T_WRINKLES "wrinkles"
@@ -418,7 +429,17 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %token T_NO "no"
 %token T_NO_SHADOW "no_shadow"
 %token T_NO_IMAGE "no_image"
+%token T_CHARSET "charset"
+%token T_ASCII "ascii"
+%token T_UTF8 "utf8"
+%token T_SYS "sys"
 %token T_NO_REFLECTION "no_reflection"
+%token T_DOUBLE_ILLUMINATE "double_illuminate"
+%token T_IRID "irid"
+%token T_IRID_WAVELENGTH "irid_wavelength"
+%token T_THICKNESS "thickness"
+%token T_SLOPE "slope"
+%token T_ALTITUDE "altitude"
 %token T_OBJECT "object"
 %token T_OFF "off"
 %token T_ON "on"
@@ -532,6 +553,10 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %token T_TORUS "torus"
 /* bicubic_patch, sphere_sweep, julia_fractal (lib/sdl/build_surface.c). */
 %token T_B_SPLINE "b_spline"
+/* spline { ... } values (lib/sdl/spline.c). */
+%token T_SPLINE "spline"
+%token T_NATURAL_SPLINE "natural_spline"
+%token <value> T_SPLINE_ID "spline identifier"
 %token T_BICUBIC_PATCH "bicubic_patch"
 %token T_CUBE "cube"
 %token T_FLATNESS "flatness"
@@ -684,15 +709,16 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %type <pigment> pigment pigment_start pigment_body
 %type <token> pattern_kw block_kw
 %type <clist> colour_list colour_list_items
-%type <pmod> pattern_mod warp_body
+%type <pmod> pattern_mod warp_body warp_item
 %type <cmap> colour_map colour_map_head colour_map_body
 %type <normal> normal normal_start normal_body
 %type <imap> image_map_head image_map_body
-%type <finish> finish finish_head finish_body
+%type <finish> finish finish_head finish_body irid_body
 %type <refl> reflection
 %type <texture> texture texture_start texture_body layered_texture
 %type <map> pigment_map pigment_map_body normal_map normal_map_body
 %type <map> texture_map texture_map_body slope_map slope_map_body
+%type <slope> slope_block slope_dir
 %type <map> pigment_blocks normal_blocks texture_blocks
 %type <material> material material_body
 %type <token> spiral_kw
@@ -704,10 +730,16 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %type <token> mesh2_keyword
 %type <object> patch_head sweep_head julia_head
 %type <token> patch_item sweep_spline julia_function
+%type <spline> spline spline_body
+%type <token> spline_type
 
 /* OPTIONAL_COMMA ranks below the operators, so "<0,0,0> -1" reads as a
    subtraction, as in POV-Ray, rather than as a missing comma. */
 %precedence OPTIONAL_COMMA
+/* spline { S (t) ... }: S(t) is a call, not a copy of S then a
+   parenthesized parameter, as in POV-Ray. */
+%precedence SPLINE_COPY
+%precedence '('
 %precedence T_OPEN /* isosurface { ... open }: see iso_head */
 %right '?'
 %left '|'
@@ -766,6 +798,9 @@ start:
     { p->nested_rvalue = pointer_value(ZR_SDL_PIGMENT, $2); YYACCEPT; }
 | T_START_FN_TEXTURE T_PATTERN '{' pigment_body '}'
     { p->nested_rvalue = pointer_value(ZR_SDL_PIGMENT, $4); YYACCEPT; }
+/* function { spline { ... } } likewise. */
+| T_START_FN_SPLINE spline
+    { p->nested_rvalue = pointer_value(ZR_SDL_SPLINE, $2); YYACCEPT; }
 ;
 
 items:
@@ -848,6 +883,8 @@ rvalue:
 | T_FUNCTION_ID { $$ = $1; }
 | T_TRANSFORM_ID { $$ = $1; }
 | transform_value { $$ = pointer_value(ZR_SDL_TRANSFORM, $1); }
+| T_SPLINE_ID   { $$ = $1; }
+| spline        { $$ = pointer_value(ZR_SDL_SPLINE, $1); }
 | T_FUNCTION
     {
       /* The state after 'function' only reduces, so bison has read
@@ -1119,6 +1156,18 @@ primary:
     { TRY(zr__sdl_vrotate(p, &$3, &$5, &@$, &$$)); }
 | T_FUNCTION_ID '(' list ')'
     { TRY(zr__sdl_function_call(p, $1.ptr, &$3, &@1, &@$, &$$)); }
+| T_SPLINE_ID '(' cexpr ')'
+    {
+      double t;
+      TRY(zr__sdl_want_float(p, &$3, &@3, &t));
+      $$ = zr__sdl_spline_value($1.ptr, -1, t);
+    }
+| T_SPLINE_ID '(' cexpr ',' spline_type ')'
+    {
+      double t;
+      TRY(zr__sdl_want_float(p, &$3, &@3, &t));
+      $$ = zr__sdl_spline_value($1.ptr, $5, t);
+    }
 | T_VLENGTH '(' expr ')'
     { TRY(zr__sdl_vcall(p, T_VLENGTH, &$3, NULL, &@$, &$$)); }
 | T_VNORMALIZE '(' expr ')'
@@ -1662,6 +1711,29 @@ patch_item:
 | T_V_STEPS            { $$ = ZR_SDL_PATCH_V_STEPS; }
 ;
 
+/* spline { [SPLINE_ID] [SPLINE_TYPE] T1, <V1> [,] T2, <V2> [,] ... }
+   (reference manual, "Spline"); the parts may come in any order, as
+   POV-Ray reads them, and a spline identifier copies its points. */
+spline:
+  spline_body '}'      { $$ = $1; TRY(zr__sdl_spline_finish(p, $$, &@$)); }
+;
+
+spline_body:
+  T_SPLINE '{'         { TRY($$ = zr__sdl_spline_new(p, NULL)); }
+| spline_body T_SPLINE_ID %prec SPLINE_COPY
+    { TRY($$ = zr__sdl_spline_new(p, $2.ptr)); }
+| spline_body spline_type { $$ = $1; $$->type = $2; }
+| spline_body expr comma expr comma
+    { $$ = $1; TRY(zr__sdl_spline_add(p, $$, &$2, &@2, &$4)); }
+;
+
+spline_type:
+  T_LINEAR_SPLINE      { $$ = ZR_SPLINE_LINEAR; }
+| T_QUADRATIC_SPLINE   { $$ = ZR_SPLINE_QUADRATIC; }
+| T_CUBIC_SPLINE       { $$ = ZR_SPLINE_CUBIC; }
+| T_NATURAL_SPLINE     { $$ = ZR_SPLINE_NATURAL; }
+;
+
 /* sphere_sweep { SPLINE N, <Centre>, Radius ... [tolerance T] }
    (reference manual, "Sphere Sweep"). */
 sweep_head:
@@ -1861,6 +1933,8 @@ object_mod:
 | T_NO_SHADOW          { $$ = make_mod(ZR_SDL_MOD_NO_SHADOW, NULL); }
 | T_NO_IMAGE           { $$ = make_mod(ZR_SDL_MOD_NO_IMAGE, NULL); }
 | T_NO_REFLECTION      { $$ = make_mod(ZR_SDL_MOD_NO_REFLECTION, NULL); }
+| T_DOUBLE_ILLUMINATE
+    { $$ = make_mod(ZR_SDL_MOD_DOUBLE_ILLUMINATE, NULL); }
 | T_NO_RADIOSITY
     {
       zr__sdl_radiosity_object(p, T_NO_RADIOSITY, &@1);
@@ -2048,6 +2122,12 @@ pigment_body:
       TRY(zr__sdl_pigment_map_set(p, $1, $3, &@3));
       $$ = $1;
     }
+| pigment_body slope_block
+    {
+      TRY(zr__sdl_pigment_pattern(p, $1, ZR_PAT_SLOPE, NULL));
+      $1->pattern.slope = *$2;
+      $$ = $1;
+    }
 | pigment_body T_GRADIENT expr
     {
       TRY(zr__sdl_pigment_pattern(p, $1, ZR_PAT_GRADIENT, NULL));
@@ -2055,7 +2135,10 @@ pigment_body:
       $$ = $1;
     }
 | pigment_body pattern_mod
-    { TRY(zr__sdl_pattern_mod(p, &$1->pattern, &$2)); $$ = $1; }
+    {
+      TRY(zr__sdl_pattern_mod_in(p, &$1->pattern, $1->transform, &$2));
+      $$ = $1;
+    }
 | pigment_body colour_map  { $1->colour_map = $2; $$ = $1; }
 /* quick_color only matters to POV-Ray's low quality previews. */
 | pigment_body T_QUICK_COLOUR colour_value  { $$ = $1; }
@@ -2309,23 +2392,43 @@ pattern_mod:
 | warp_body '}'
 ;
 
-/* warp { turbulence <t> [octaves n] [omega w] [lambda l] } */
+/* warp { kind ... } ("Warps"): the kind's keyword first, then items
+   that build_warp.c checks against the kind. */
 warp_body:
   T_WARP '{' T_TURBULENCE expr
-    {
-      $$ = make_pmod(T_WARP, NULL, &@4);
-      /* POV-Ray's defaults, as zr__pattern_init sets them. */
-      $$.warp.octaves = 6;
-      $$.warp.omega = 0.5;
-      $$.warp.lambda = 2.0;
-      TRY(zr__sdl_want_vector(p, &$4, &@4, &$$.warp.turbulence));
-    }
-| warp_body T_OCTAVES expr
-    { $$ = $1; TRY(zr__sdl_octaves(p, &$3, &@3, &$$.warp.octaves)); }
-| warp_body T_OMEGA expr
-    { $$ = $1; TRY(zr__sdl_want_float(p, &$3, &@3, &$$.warp.omega)); }
-| warp_body T_LAMBDA expr
-    { $$ = $1; TRY(zr__sdl_want_float(p, &$3, &@3, &$$.warp.lambda)); }
+    { TRY(zr__sdl_warp_new(p, ZR_WARP_TURBULENCE, &$4, NULL, &@4, &$$)); }
+| T_WARP '{' T_REPEAT expr
+    { TRY(zr__sdl_warp_new(p, ZR_WARP_REPEAT, &$4, NULL, &@4, &$$)); }
+| T_WARP '{' T_BLACK_HOLE expr ',' expr
+    { TRY(zr__sdl_warp_new(p, ZR_WARP_BLACK_HOLE, &$4, &$6, &@4, &$$)); }
+| T_WARP '{' T_PLANAR
+    { TRY(zr__sdl_warp_new(p, ZR_WARP_PLANAR, NULL, NULL, &@3, &$$)); }
+| T_WARP '{' T_PLANAR expr ',' expr
+    { TRY(zr__sdl_warp_new(p, ZR_WARP_PLANAR, &$4, &$6, &@4, &$$)); }
+| T_WARP '{' T_CYLINDRICAL
+    { TRY(zr__sdl_warp_new(p, ZR_WARP_CYLINDRICAL, NULL, NULL, &@3, &$$)); }
+| T_WARP '{' T_SPHERICAL
+    { TRY(zr__sdl_warp_new(p, ZR_WARP_SPHERICAL, NULL, NULL, &@3, &$$)); }
+| T_WARP '{' T_TOROIDAL
+    { TRY(zr__sdl_warp_new(p, ZR_WARP_TOROIDAL, NULL, NULL, &@3, &$$)); }
+| warp_body warp_item
+    { $$ = $1; TRY(zr__sdl_warp_item(p, &$$, &$2)); }
+;
+
+warp_item:
+  T_OCTAVES expr       { $$ = make_pmod(T_OCTAVES, &$2, &@1); }
+| T_OMEGA expr         { $$ = make_pmod(T_OMEGA, &$2, &@1); }
+| T_LAMBDA expr        { $$ = make_pmod(T_LAMBDA, &$2, &@1); }
+| T_TURBULENCE expr    { $$ = make_pmod(T_TURBULENCE, &$2, &@1); }
+| T_OFFSET expr        { $$ = make_pmod(T_OFFSET, &$2, &@1); }
+| T_FLIP expr          { $$ = make_pmod(T_FLIP, &$2, &@1); }
+| T_STRENGTH expr      { $$ = make_pmod(T_STRENGTH, &$2, &@1); }
+| T_FALLOFF expr       { $$ = make_pmod(T_FALLOFF, &$2, &@1); }
+| T_INVERSE            { $$ = make_pmod(T_INVERSE, NULL, &@1); }
+| T_REPEAT expr        { $$ = make_pmod(T_REPEAT, &$2, &@1); }
+| T_ORIENTATION expr   { $$ = make_pmod(T_ORIENTATION, &$2, &@1); }
+| T_DIST_EXP expr      { $$ = make_pmod(T_DIST_EXP, &$2, &@1); }
+| T_MAJOR_RADIUS expr  { $$ = make_pmod(T_MAJOR_RADIUS, &$2, &@1); }
 ;
 
 /* color_map { [Value Colour] ... } (reference manual, "Color Maps"). */
@@ -2428,15 +2531,21 @@ normal_body:
       zr__sdl_pigment_pattern_of(&$1->pattern, $4);
       $$ = $1;
     }
-| normal_body T_PIGMENT_PATTERN '{' pigment_body '}' expr
+| normal_body T_PIGMENT_PATTERN '{' pigment_body '}' comma expr
     {
-      TRY(zr__sdl_normal_pattern(p, $1, ZR_PAT_PIGMENT_PATTERN, &$6, &@6));
+      TRY(zr__sdl_normal_pattern(p, $1, ZR_PAT_PIGMENT_PATTERN, &$7, &@7));
       zr__sdl_pigment_pattern_of(&$1->pattern, $4);
       $$ = $1;
     }
 | normal_body normal_map
     { TRY(zr__sdl_normal_map_set(p, $1, $2, &@2)); $$ = $1; }
 | normal_body slope_map  { $1->slope_map = $2; $$ = $1; }
+| normal_body slope_block
+    {
+      zr__sdl_error(p, ZR_EUNSUPPORTED, &@2, "the slope pattern in a "
+                    "normal is not supported (pigments and textures are)");
+      YYABORT;
+    }
 | normal_body T_GRADIENT expr
     {
       TRY(zr__sdl_normal_pattern(p, $1, ZR_PAT_GRADIENT, NULL, &@2));
@@ -2456,7 +2565,10 @@ normal_body:
 | normal_body transform
     { TRY(zr__sdl_normal_transform(p, $1, $2)); $$ = $1; }
 | normal_body pattern_mod
-    { TRY(zr__sdl_pattern_mod(p, &$1->pattern, &$2)); $$ = $1; }
+    {
+      TRY(zr__sdl_pattern_mod_in(p, &$1->pattern, $1->transform, &$2));
+      $$ = $1;
+    }
 ;
 
 /* ---- image maps (reference manual, "Image Map") ---- */
@@ -2487,6 +2599,44 @@ finish:
   finish_body '}'
 ;
 
+/* slope { <D> [, Lo, Hi] [altitude <A> [, Lo, Hi]] } ("Slope Pattern"). */
+slope_block:
+  slope_dir '}'
+| slope_dir T_ALTITUDE expr '}'
+    {
+      TRY(zr__sdl_slope_altitude(p, $1, &$3, &@3, NULL, NULL, NULL));
+      $$ = $1;
+    }
+| slope_dir T_ALTITUDE expr ',' expr ',' expr '}'
+    {
+      TRY(zr__sdl_slope_altitude(p, $1, &$3, &@3, &$5, &$7, &@5));
+      $$ = $1;
+    }
+;
+
+slope_dir:
+  T_SLOPE '{' expr
+    { TRY($$ = zr__sdl_slope_new(p, &$3, &@3, NULL, NULL, NULL)); }
+| T_SLOPE '{' expr ',' expr ',' expr
+    { TRY($$ = zr__sdl_slope_new(p, &$3, &@3, &$5, &$7, &@5)); }
+| T_SLOPE '{' T_POINT_AT
+    {
+      zr__sdl_error(p, ZR_EUNSUPPORTED, &@3,
+                    "slope { point_at } is not supported; give a direction");
+      YYABORT;
+    }
+;
+
+/* irid { Amount [thickness T] [turbulence U] } ("Iridescence"). */
+irid_body:
+  finish_body T_IRID '{' expr
+    { TRY(zr__sdl_finish_irid(p, $1, T_IRID, &$4, &@4)); $$ = $1; }
+| irid_body T_THICKNESS expr
+    { TRY(zr__sdl_finish_irid(p, $1, T_THICKNESS, &$3, &@3)); $$ = $1; }
+| irid_body T_TURBULENCE expr
+    { TRY(zr__sdl_finish_irid(p, $1, T_TURBULENCE, &$3, &@3)); $$ = $1; }
+;
+
 finish_head:
   T_FINISH '{'         { TRY($$ = zr__sdl_finish_new(p, NULL)); }
 | T_FINISH '{' T_FINISH_ID
@@ -2513,6 +2663,7 @@ finish_body:
     { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->brilliance)); $$ = $1; }
 | finish_body T_PHONG expr
     { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->phong)); $$ = $1; }
+| irid_body '}'
 | finish_body T_PHONG_SIZE expr
     { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->phong_size)); $$ = $1; }
 | finish_body T_SPECULAR expr
@@ -2608,6 +2759,12 @@ texture_body:
   texture_start
 | texture_body pattern_kw
     { zr__sdl_texture_pattern($1, $2); $$ = $1; }
+| texture_body slope_block
+    {
+      zr__sdl_texture_pattern($1, ZR_PAT_SLOPE);
+      $1->pattern.slope = *$2;
+      $$ = $1;
+    }
 | texture_body T_GRADIENT expr
     {
       zr__sdl_texture_pattern($1, ZR_PAT_GRADIENT);
@@ -2660,7 +2817,10 @@ texture_body:
       $$ = $1;
     }
 | texture_body pattern_mod
-    { TRY(zr__sdl_pattern_mod(p, &$1->pattern, &$2)); $$ = $1; }
+    {
+      TRY(zr__sdl_pattern_mod_in(p, &$1->pattern, $1->transform, &$2));
+      $$ = $1;
+    }
 | texture_body texture_map
     { TRY(zr__sdl_texture_map_set(p, $1, $2, &@2)); $$ = $1; }
 /* In a layered texture these change the top layer (build_texture.c). */
@@ -3115,6 +3275,16 @@ global_body:
     }
 | global_body T_ADC_BAILOUT expr
     { TRY(zr__sdl_want_float(p, &$3, &@3, &SETTINGS->adc_bailout)); }
+/* charset: zRcube reads strings as UTF-8, POV-Ray 3.7's default, of
+   which ASCII is a part; the system's code page has no meaning here. */
+| global_body T_CHARSET T_UTF8
+| global_body T_CHARSET T_ASCII
+| global_body T_CHARSET T_SYS
+    {
+      zr__sdl_error(p, ZR_EUNSUPPORTED, &@3,
+                    "'charset sys' is not supported (utf8 or ascii)");
+      YYABORT;
+    }
 | global_body T_HF_GRAY_16
     { zr__sdl_warning(p, &@2, "'hf_gray_16' is ignored since POV-Ray 3.7 "
                       "(an output option: +FNg or Grayscale_Output)"); }
@@ -3150,6 +3320,8 @@ global_body:
     }
 | global_body T_AMBIENT_LIGHT colour_value
     { TRY(zr__sdl_want_rgb(p, &$3, &@3, &SETTINGS->ambient_light)); }
+| global_body T_IRID_WAVELENGTH colour_value
+    { TRY(zr__sdl_irid_wavelength(p, &$3, &@3)); }
 | global_body radiosity_body '}'
     { zr__sdl_radiosity_end(p, &@3); }
 | global_body T_PHOTONS '{' photon_items '}'
@@ -3272,6 +3444,7 @@ int zr__pov_lex(ZR__POV_STYPE *lval, zr_sdl_loc *lloc, zr_sdl_parser *p) {
   case T_STRING_ID:
   case T_ARRAY_ID:
   case T_SEED_ID:
+  case T_SPLINE_ID:
     lval->value = v.value;
     break;
   default:

@@ -234,10 +234,13 @@ static void test_directives_macros(void **state) {
          "#macro Show(V, S, O) #debug concat(\" \", S, vstr(3, V, \",\", "
          "0, 0)) object { O } #end\n"
          "Show(<1, 2, 3>, \"v=\", sphere { 0, 1 })\n"
-         /* A comma after the last parameter, as in shapes3.inc. */
+         /* A comma after the last parameter, or none between two, as
+            in shapes3.inc. */
          "#macro Two(A, B,) #debug str(A + B, 0, 0) #end\n"
-         "Two(1, 2)\n",
-         "720 7 8 -Ba v=1,2,33");
+         "Two(1, 2)\n"
+         "#macro Three(A, B C) #debug str(A + B + C, 0, 0) #end\n"
+         "Three(1, 2, 3)\n",
+         "720 7 8 -Ba v=1,2,336");
   assert_int_equal(f->scene->n_objects, 1);
 }
 

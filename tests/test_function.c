@@ -305,13 +305,14 @@ static void test_function_standard_includes(void **state) {
 static void test_function_unsupported_internal(void **state) {
   fixture *f = *state;
   /* Declaring is fine (functions.inc declares them all); using is not. */
-  const char *d = "#declare f_noise3d = function { internal(76) }\n"
-                  "#declare N = function { 2 * f_noise3d(x, y, z) - 1 }\n"
+  const char *d = "#declare f_ridge = function { internal(58) }\n"
+                  "#declare N = function { 2 * f_ridge(x, y, z, 1, 3, 1, "
+                  "0.2, 0, 0) - 1 }\n"
                   "#declare P = function { transform { scale 2 } }\n";
   char text[1024];
   snprintf(text, sizeof text, "%s#declare V = N(1, 2, 3);\n", d);
   bad(f, text, ZR_EUNSUPPORTED,
-      "function 'N' uses internal function 76 (f_noise3d), which is not "
+      "function 'N' uses internal function 58 (f_ridge), which is not "
       "supported yet", NULL);
   snprintf(text, sizeof text, "%s#declare V = P(1, 2, 3);\n", d);
   bad(f, text, ZR_EUNSUPPORTED,
@@ -325,6 +326,116 @@ static void test_function_unsupported_internal(void **state) {
       "there is no internal function 6e+96", NULL);
   bad(f, "#declare F = function(a) { internal(61) }\n", ZR_ESYNTAX,
       "internal function 61 (f_sphere) takes 4 parameters", NULL);
+}
+
+/* The declarations of functions.inc that the noise tests use. */
+static const char *const noise_decls =
+    "#declare f_noise3d = function { internal(76) }\n"
+    "#declare f_snoise3d = function { 2 * f_noise3d(x, y, z) - 1 }\n"
+    "#declare f_noise_generator = function { internal(78) }\n"
+    "#declare f_hetero_mf = function { internal(29) }\n"
+    "#declare f_ridged_mf = function { internal(59) }\n"
+    "#declare Bozo = function { pattern { bozo } }\n";
+
+/* The value of an SDL call built from a format. */
+static double valuef(fixture *f, const char *format, ...) {
+  char call[256];
+  va_list ap;
+  va_start(ap, format);
+  vsnprintf(call, sizeof call, format, ap);
+  va_end(ap);
+  return value(f, noise_decls, call);
+}
+
+/* f_noise3d is the bozo pattern's noise, in [0, 1] as the manual says
+   ("Functions.inc"), f_snoise3d its [-1, 1] form, and every noise
+   generator number selects it.  The same code computes both sides, so
+   they agree to EPS; the range holds exactly. */
+static void test_function_noise3d(void **state) {
+  fixture *f = *state;
+  static const double at[][3] = {
+      {0.3, 0.7, 1.1}, {-2.25, 4.5, 0.125}, {10.6, -3.3, 7.7}, {0, 0, 0}};
+  for (size_t i = 0; i < sizeof at / sizeof at[0]; i++) {
+    double x = at[i][0], y = at[i][1], z = at[i][2];
+    double n = valuef(f, "f_noise3d(%g, %g, %g)", x, y, z);
+    assert_true(n >= 0 && n <= 1);
+    assert_true(fabs(n - valuef(f, "Bozo(%g, %g, %g)", x, y, z)) < EPS);
+    assert_true(fabs(2 * n - 1 - valuef(f, "f_snoise3d(%g, %g, %g)", x, y,
+                                        z)) < EPS);
+    for (int g = 0; g <= 3; g++)
+      assert_true(fabs(n - valuef(f, "f_noise_generator(%g, %g, %g, %d)",
+                                  x, y, z, g)) < EPS);
+  }
+  /* Over 1000 points the values stay in [0, 1] around the mean 0.5: a
+     noise scaled wrongly (the [-1, 1] of functions.inc's comment) fails.
+     The mean of a lattice noise over 1000 scattered points is within
+     0.05 of its expectation (its deviation is about 0.2 / sqrt(1000)). */
+  char d[1024];
+  snprintf(d, sizeof d,
+           "%s#declare N = function(i) { f_noise3d(i * 0.37, i * 0.19 + 0.5,"
+           " i * 0.11 + 0.25) }\n"
+           "#declare Mean = function { sum(i, 0, 999, N(i)) / 1000 }\n"
+           "#declare In = function { prod(i, 0, 999, (N(i) >= 0) & "
+           "(N(i) <= 1)) }\n",
+           noise_decls);
+  assert_true(fabs(value(f, d, "Mean(0, 0, 0)") - 0.5) < 0.05);
+  assert_true(value(f, d, "In(0, 0, 0)") == 1);
+}
+
+/* f_ridged_mf and f_hetero_mf are Musgrave's sums over the signed noise,
+   checked against the same sums written out from f_snoise3d at the
+   octaves' points (p, then p * lacunarity); the arithmetic differs only
+   in rounding, hence 1e-12. */
+static void test_function_multifractals(void **state) {
+  fixture *f = *state;
+  const double x = 0.3, y = 0.7, z = 1.1, h = 0.5, lac = 2.2;
+  double s0 = valuef(f, "f_snoise3d(%.17g, %.17g, %.17g)", x, y, z);
+  double s1 = valuef(f, "f_snoise3d(%.17g, %.17g, %.17g)", x * lac,
+                     y * lac, z * lac);
+  double s2 = valuef(f, "f_snoise3d(%.17g, %.17g, %.17g)", x * lac * lac,
+                     y * lac * lac, z * lac * lac);
+  double w1 = pow(lac, -h);
+  /* Ridged: one octave is (offset - |noise|)^2; the next is weighted by
+     the previous signal times gain, clamped to [0, 1]. */
+  double offset = 0.9, gain = 0.8;
+  double r0 = (offset - fabs(s0)) * (offset - fabs(s0));
+  double wt = fmin(fmax(r0 * gain, 0), 1);
+  double r1 = (offset - fabs(s1)) * (offset - fabs(s1)) * wt;
+  double got = valuef(f, "f_ridged_mf(%g, %g, %g, %g, %g, 1, %g, %g, 1)", x,
+                      y, z, h, lac, offset, gain);
+  assert_true(fabs(got - r0) < EPS);
+  got = valuef(f, "f_ridged_mf(%g, %g, %g, %g, %g, 2, %g, %g, 1)", x, y, z,
+               h, lac, offset, gain);
+  assert_true(fabs(got - (r0 + r1 * w1)) < EPS);
+  /* Gain 0 silences every octave after the first. */
+  got = valuef(f, "f_ridged_mf(%g, %g, %g, %g, %g, 7, %g, 0, 1)", x, y, z,
+               h, lac, offset);
+  assert_true(fabs(got - r0) < EPS);
+  /* Hetero: T = 0 is the plain 1/f sum of noise + offset, T = 1 scales
+     each octave by the altitude so far; 1.5 octaves add half of the
+     second. */
+  offset = 0.26;
+  double v0 = offset + s0, inc1 = (s1 + offset) * w1;
+  got = valuef(f, "f_hetero_mf(%g, %g, %g, %g, %g, 1, %g, 0, 1)", x, y, z,
+               h, lac, offset);
+  assert_true(fabs(got - v0) < EPS);
+  got = valuef(f, "f_hetero_mf(%g, %g, %g, %g, %g, 2, %g, 0, 1)", x, y, z,
+               h, lac, offset);
+  assert_true(fabs(got - (v0 + inc1)) < EPS);
+  got = valuef(f, "f_hetero_mf(%g, %g, %g, %g, %g, 2, %g, 1, 1)", x, y, z,
+               h, lac, offset);
+  assert_true(fabs(got - (v0 + inc1 * v0)) < EPS);
+  got = valuef(f, "f_hetero_mf(%g, %g, %g, %g, %g, 1.5, %g, 1, 1)", x, y, z,
+               h, lac, offset);
+  assert_true(fabs(got - (v0 + 0.5 * inc1 * v0)) < EPS);
+  double v1 = v0 + inc1 * v0, inc2 = (s2 + offset) * w1 * w1;
+  got = valuef(f, "f_hetero_mf(%g, %g, %g, %g, %g, 3, %g, 1, 1)", x, y, z,
+               h, lac, offset);
+  assert_true(fabs(got - (v1 + inc2 * v1)) < EPS);
+  /* A huge octave count is capped, so it returns (a finite value). */
+  got = valuef(f, "f_ridged_mf(%g, %g, %g, %g, %g, 1e9, %g, 1, 1)", x, y, z,
+               h, lac, 0.9);
+  assert_true(isfinite(got));
 }
 
 /* function { pattern { } } and function { pigment { } } ("Function
@@ -618,6 +729,10 @@ int main(void) {
                                       setup, teardown),
       cmocka_unit_test_setup_teardown(test_function_unsupported_internal,
                                       setup, teardown),
+      cmocka_unit_test_setup_teardown(test_function_noise3d, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_function_multifractals, setup,
+                                      teardown),
       cmocka_unit_test_setup_teardown(test_function_pattern_and_pigment,
                                       setup, teardown),
       cmocka_unit_test_setup_teardown(test_function_errors, setup,

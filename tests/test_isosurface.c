@@ -206,9 +206,10 @@ static void test_isosurface_bad_input(void **state) {
       "an isosurface's function takes x, y and z, not 4 parameters",
       NULL);
   bad(f, "#include \"functions.inc\"\n"
-         "isosurface { function { f_noise3d(x, y, z) } }\n",
+         "isosurface { function { f_helix1(x, y, z, 1, 1, 1, 1, 1, 1, 0) }"
+         " }\n",
       ZR_EUNSUPPORTED,
-      "the isosurface's function uses internal function 76 (f_noise3d), "
+      "the isosurface's function uses internal function 25 (f_helix1), "
       "which is not supported yet", NULL);
 }
 

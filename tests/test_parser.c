@@ -619,13 +619,15 @@ static void test_parser_syntax_error(void **state) {
   bad(f, "sphere { <0, 0, 0>, 1, 2 }\n", ZR_ESYNTAX,
       "unexpected ',', expected 'transform', 'normal', 'material', "
       "'finish', 'interior', 'inverse', 'matrix', 'no_shadow', 'no_image', "
-      "'no_reflection', 'open', 'pigment', 'rotate', 'scale', 'texture', "
+      "'no_reflection', 'double_illuminate', 'open', 'pigment', 'rotate', "
+      "'scale', 'texture', "
       "'translate', 'bounded_by', 'clipped_by', 'hollow', 'sturm', "
       "'radiosity', 'no_radiosity', 'interior_texture', 'photons', '+', "
       "'-', '*', '/', '}' or '.'",
       "t.pov:1:22: error: unexpected ',', expected 'transform', 'normal', "
       "'material', 'finish', 'interior', 'inverse', 'matrix', 'no_shadow', "
-      "'no_image', 'no_reflection', 'open', 'pigment', 'rotate', 'scale', "
+      "'no_image', 'no_reflection', 'double_illuminate', 'open', 'pigment', "
+      "'rotate', 'scale', "
       "'texture', 'translate', 'bounded_by', 'clipped_by', 'hollow', "
       "'sturm', 'radiosity', 'no_radiosity', 'interior_texture', "
       "'photons', '+', '-', '*', '/', '}' or '.'\n"
@@ -640,7 +642,8 @@ static void test_parser_syntax_error(void **state) {
   bad(f, "box { 0, 1 shadowless }", ZR_ESYNTAX,
       "unexpected 'shadowless', expected 'transform', 'normal', 'material', "
       "'finish', 'interior', 'inverse', 'matrix', 'no_shadow', 'no_image', "
-      "'no_reflection', 'open', 'pigment', 'rotate', 'scale', 'texture', "
+      "'no_reflection', 'double_illuminate', 'open', 'pigment', 'rotate', "
+      "'scale', 'texture', "
       "'translate', 'bounded_by', 'clipped_by', 'hollow', 'sturm', "
       "'radiosity', 'no_radiosity', 'interior_texture', 'photons', '+', "
       "'-', '*', '/', '}' or '.'",

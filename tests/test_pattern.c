@@ -125,8 +125,91 @@ static void test_pattern_pigment_eval_uses_transform(void **state) {
   assert_true(fabs(c.r - a.r) < EPS && fabs(c.b - a.b) < EPS);
 }
 
+/*
+ * slope: povray 3.7 renders a plane whose normal is a degrees from the
+ * direction (ambient 1, grey colour map 0 to 1, 8-bit PPM at File_Gamma
+ * 1.0) as 1, 0.8353, 0.6667, 0.5020, 0.3333, 0.1686 for a = 0, 30 ...
+ * 150: 1 - a / 180 to within 2.5 / 255.
+ */
+static void test_pattern_slope_matches_povray(void **state) {
+  (void)state;
+  static const double pov[] = {1, 0.8353, 0.6667, 0.5020, 0.3333, 0.1686};
+  zr_pattern pt;
+  zr__pattern_init(&pt, ZR_PAT_SLOPE);
+  pt.slope.direction = zr_v3(0, 0, -1);
+  for (int i = 0; i < 6; i++) {
+    double a = i * 30 * M_PI / 180;
+    /* -z rotated about x by a. */
+    zr_vec3 n = zr_v3(0, sin(a), -cos(a));
+    double v = zr__pattern_eval_n(&pt, zr_v3(0, 0, 0), n);
+    assert_true(fabs(v - pov[i]) < 2.5 / 255);
+    assert_true(fabs(v - (1 - i * 30 / 180.0)) < EPS);
+  }
+  /* Without a surface (a zero normal) the slope is 0.5, and other
+     patterns ignore the normal. */
+  assert_true(fabs(zr__pattern_eval(&pt, zr_v3(0, 0, 0)) - 0.5) < EPS);
+  zr_pattern g;
+  zr__pattern_init(&g, ZR_PAT_GRADIENT);
+  zr_vec3 p = zr_v3(0.25, 0.5, 0.75);
+  assert_true(zr__pattern_eval_n(&g, p, zr_v3(0, 1, 0)) ==
+              zr__pattern_eval(&g, p));
+}
+
+/* slope { -y*3, 0, 0.5 altitude y, 0.005, 0.4 } (slopemt_36.pov): the
+   slope part maps [0, 0.5] to [0, 1], the altitude part [0.005, 0.4],
+   and they mix 3 : 1 by the vectors' lengths (the manual's rule). */
+static void test_pattern_slope_ranges_and_altitude(void **state) {
+  (void)state;
+  zr_pattern pt;
+  zr__pattern_init(&pt, ZR_PAT_SLOPE);
+  pt.slope.direction = zr_v3(0, -3, 0);
+  pt.slope.lo = 0;
+  pt.slope.hi = 0.5;
+  pt.slope.altitude = zr_v3(0, 1, 0);
+  pt.slope.alt_lo = 0.005;
+  pt.slope.alt_hi = 0.4;
+  zr_vec3 up = zr_v3(0, 1, 0);
+  zr_vec3 side = zr_v3(1, 0, 0);
+  zr_vec3 tilted = zr_v3(sin(M_PI / 4), cos(M_PI / 4), 0); /* 45 deg */
+  /* Flat ground at altitude 0.2: slope 0, altitude 0.195 / 0.395. */
+  double alt = 0.195 / 0.395;
+  assert_true(fabs(zr__pattern_eval_n(&pt, zr_v3(0, 0.2, 0), up) -
+                   alt / 4) < EPS);
+  /* A cliff: slope 0.5 maps to 1. */
+  assert_true(fabs(zr__pattern_eval_n(&pt, zr_v3(0, 0.2, 0), side) -
+                   (3 + alt) / 4) < EPS);
+  /* 45 degrees: 1 - 135/180 = 0.25, mapped to 0.5; above the altitude
+     range the altitude part holds at 1. */
+  assert_true(fabs(zr__pattern_eval_n(&pt, zr_v3(0, 2, 0), tilted) -
+                   (3 * 0.5 + 1) / 4) < EPS);
+  /* Below it at 0. */
+  assert_true(fabs(zr__pattern_eval_n(&pt, zr_v3(0, -1, 0), tilted) -
+                   3 * 0.5 / 4) < EPS);
+}
+
+/* A slope pigment takes the normal given to zr__pigment_eval_n, and the
+   normal is not turned with the pigment (povray: a plane rotated with
+   its pigment 60 degrees from the direction gives 0.6667, not 1). */
+static void test_pattern_slope_pigment_uses_world_normal(void **state) {
+  (void)state;
+  zr_pigment pg;
+  zr__pigment_init(&pg);
+  zr__pigment_set_pattern(&pg, ZR_PAT_SLOPE);
+  pg.pattern.slope.direction = zr_v3(0, 1, 0);
+  zr_transform t;
+  zr__transform_identity(&t);
+  zr__transform_rotate(&t, zr_v3(60, 0, 0));
+  pg.transform = &t;
+  zr_vec3 n = zr_v3(0, cos(M_PI / 3), sin(M_PI / 3));
+  zr_colour c = zr__pigment_eval_n(&pg, zr_v3(0, 0, 0), n);
+  assert_true(fabs(c.r - 2.0 / 3) < EPS);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
+      cmocka_unit_test(test_pattern_slope_matches_povray),
+      cmocka_unit_test(test_pattern_slope_ranges_and_altitude),
+      cmocka_unit_test(test_pattern_slope_pigment_uses_world_normal),
       cmocka_unit_test(test_pattern_checker_cells),
       cmocka_unit_test(test_pattern_gradient_ramp_repeats),
       cmocka_unit_test(test_pattern_colour_map_interpolates),

@@ -868,24 +868,24 @@ static void assert_same_solution(const zr_radiosity *a,
 /* 1 and 3 threads (more than this machine may have) give the same
    cells, links, factors and radiosity, bit for bit, and the same
    radiance at 400 points of the room's wall, for both refinement
-   criteria and for gathering and shooting. */
+   criteria (shooting runs on one thread; its links are gathering's). */
 static void test_radiosity_threads_identical(void **state) {
   (void)state;
   zr_context *ctx = new_context();
   zr_scene *scene = parse(ctx, thread_scene);
-  for (int mode = 0; mode < 3; mode++) {
+  for (int mode = 0; mode < 2; mode++) {
     zr_radiosity *rad[2];
     for (int k = 0; k < 2; k++) {
       zr_radiosity_params p;
       zr_radiosity_params_init(&p, scene);
-      p.bf_eps = 3e-2;
-      p.area_eps = 1e-2;
+      /* Coarse, for speed: still many hundreds of links. */
+      p.bf_eps = mode == 1 ? 0.3 : 0.1;
+      p.area_eps = 2e-2;
       p.criterion = mode == 1;
-      p.shooting = mode == 2;
       p.threads = k ? 3 : 1;
       rad[k] = solve(ctx, scene, &p);
     }
-    assert_true(rad[0]->n_links > 1000);
+    assert_true(rad[0]->n_links > 500);
     assert_same_solution(rad[0], rad[1]);
     int lit = 0;
     for (int i = 0; i < 400; i++) {

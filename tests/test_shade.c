@@ -11,6 +11,7 @@
 #include <cmocka.h>
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "core/arena.h"
@@ -19,6 +20,7 @@
 #include "scene/scene.h"
 #include "trace/render.h"
 #include "trace/shade.h"
+#include "zrcube.h"
 
 /* Hand values are closed forms evaluated in double precision. */
 #define EPS 1e-12
@@ -164,6 +166,123 @@ static void test_shade_light_behind_surface_gives_no_direct_light(void **s_) {
   assert_rgb(trace(s, zr_v3(0, 0, -1), zr_v3(0, 0, 1)), 0.1 + 0.24,
              0.05 + 0.12, 0.025 + 0.06, EPS);
   zr_scene_free(s);
+}
+
+/* double_illuminate: the light on the far side lights the near side as
+   if it were in front, N.L = 0.8 (0.1 ambient + 0.6 * 0.8 diffuse);
+   hand values to double precision. */
+static void test_shade_double_illuminate_lights_the_back(void **s_) {
+  (void)s_;
+  zr_finish *f;
+  zr_scene *s = zr__scene_new();
+  zr_object *o = add_plane(s, zr_v3(0, 0, -1), 0, ORANGE, &f);
+  add_light(s, zr_v3(0, 3, 4), zr_rgb3(1, 1, 1)); /* on the far side */
+  o->double_illuminate = true;
+  assert_int_equal(zr__scene_finish(s, NULL), ZR_OK);
+  assert_rgb(trace(s, zr_v3(0, 0, -1), zr_v3(0, 0, 1)), 0.58, 0.29, 0.145,
+             EPS);
+  /* The lit side itself is unchanged. */
+  assert_rgb(trace(s, zr_v3(0, 0, 1), zr_v3(0, 0, -1)), 0.58, 0.29, 0.145,
+             EPS);
+  zr_scene_free(s);
+}
+
+/*
+ * irid: a grey 0.5 plane, ambient 0, diffuse 1, seen head on and lit
+ * from very far away, against povray 3.7 renders of the same scene
+ * (8-bit PPM, File_Gamma 1.0, so a tolerance of 2.5 / 255); the
+ * formula gives 0.5 (1 + a cos(2 pi t (cos_l + cos_e) / wavelength)) N.L.
+ */
+static void test_shade_irid_matches_povray(void **state) {
+  (void)state;
+  zr_finish *f;
+  zr_scene *s = zr__scene_new();
+  add_plane(s, zr_v3(0, 0, -1), 0, zr_colour5(0.5, 0.5, 0.5, 0, 0), &f);
+  add_light(s, zr_v3(0, 0, -1e7), zr_rgb3(1, 1, 1));
+  f->ambient = zr_rgb3(0, 0, 0);
+  f->diffuse = 1;
+  f->irid = 1;
+  f->irid_thickness = 0.1;
+  assert_int_equal(zr__scene_finish(s, NULL), ZR_OK);
+  const double tol = 2.5 / 255;
+  zr_vec3 eye = zr_v3(0, 0, -1), ahead = zr_v3(0, 0, 1);
+  assert_rgb(trace(s, eye, ahead), 0.3882, 0.1255, 0.0667, tol);
+  f->irid_thickness = 0.2;
+  assert_rgb(trace(s, eye, ahead), 0.0510, 0.5608, 0.7490, tol);
+  /* Amount 0.5, light 60 degrees off the normal (N.L = 0.5). */
+  zr_scene_free(s);
+  s = zr__scene_new();
+  add_plane(s, zr_v3(0, 0, -1), 0, zr_colour5(0.5, 0.5, 0.5, 0, 0), &f);
+  add_light(s, zr_v3(0, 0.866025403784e7, -0.5e7), zr_rgb3(1, 1, 1));
+  f->ambient = zr_rgb3(0, 0, 0);
+  f->diffuse = 1;
+  f->irid = 0.5;
+  f->irid_thickness = 0.1;
+  assert_int_equal(zr__scene_finish(s, NULL), ZR_OK);
+  assert_rgb(trace(s, eye, ahead), 0.2784, 0.2196, 0.2039, tol);
+  /* irid_wavelength changes the channels' phases (the formula, 1e-6
+     for the light's finite distance). */
+  s->settings.irid_wavelength = zr_rgb3(0.5, 0.4, 0.3);
+  double k = 2 * M_PI * 0.1 * 1.5;
+  assert_rgb(trace(s, eye, ahead), 0.25 * (1 + 0.5 * cos(k / 0.5)),
+             0.25 * (1 + 0.5 * cos(k / 0.4)), 0.25 * (1 + 0.5 * cos(k / 0.3)),
+             1e-6);
+  zr_scene_free(s);
+}
+
+/* Keeps the last error's message. */
+static void on_error(const zr_diag *d, void *user) {
+  if (d->level == ZR_DIAG_ERROR)
+    snprintf(user, 512, "%s", d->message);
+}
+
+/* Parses text that must fail with this error message. */
+static void assert_parse_error(const char *text, const char *message) {
+  zr_context *ctx = NULL;
+  char got[512] = "";
+  assert_int_equal(zr_context_new(&ctx), ZR_OK);
+  zr_context_set_diag(ctx, on_error, got);
+  zr_scene *scene = NULL;
+  assert_int_not_equal(
+      zr_scene_parse_string(ctx, "t.pov", text, strlen(text), &scene),
+      ZR_OK);
+  assert_string_equal(got, message);
+  zr_scene_free(scene);
+  zr_context_free(ctx);
+}
+
+static void test_shade_irid_slope_double_illuminate_parse(void **state) {
+  (void)state;
+  const char *good =
+      "global_settings { irid_wavelength <0.7, 0.5, 0.4> }\n"
+      "sphere { 0, 1 double_illuminate\n"
+      "  texture { slope { -y*3, 0, 0.5 altitude y, 0.005, 0.4 }\n"
+      "    texture_map { [0 pigment { rgb 1 }] [1 pigment { rgb 0 }] } } }\n"
+      "sphere { 0, 1 pigment { slope { y } }\n"
+      "  finish { irid { 0.3 thickness 0.2 turbulence 0.1 } } }\n";
+  zr_context *ctx = NULL;
+  assert_int_equal(zr_context_new(&ctx), ZR_OK);
+  zr_scene *scene = NULL;
+  assert_int_equal(
+      zr_scene_parse_string(ctx, "t.pov", good, strlen(good), &scene), ZR_OK);
+  zr_scene_free(scene);
+  zr_context_free(ctx);
+  assert_parse_error("sphere { 0, 1 finish { irid { -0.1 } } }",
+                     "irid amount must be a number >= 0");
+  assert_parse_error("sphere { 0, 1 finish { irid { 0.2 thickness -1 } } }",
+                     "irid thickness must be a number >= 0");
+  assert_parse_error("global_settings { irid_wavelength <0.7, 0, 0.4> }",
+                     "irid_wavelength must be > 0 in every channel");
+  assert_parse_error("sphere { 0, 1 pigment { slope { 0 } } }",
+                     "the slope direction must not be a zero vector");
+  assert_parse_error("sphere { 0, 1 pigment { slope { y altitude 0 } } }",
+                     "the slope's altitude must not be a zero vector");
+  assert_parse_error("sphere { 0, 1 normal { slope { y } } }",
+                     "the slope pattern in a normal is not supported "
+                     "(pigments and textures are)");
+  assert_parse_error("sphere { 0, 1 pigment { slope { point_at 0 } } }",
+                     "slope { point_at } is not supported; give a "
+                     "direction");
 }
 
 static void test_shade_phong_specular_metallic(void **state) {
@@ -654,6 +773,9 @@ int main(void) {
       cmocka_unit_test(test_shade_ambient_diffuse_brilliance),
       cmocka_unit_test(test_shade_light_behind_surface_gives_no_direct_light),
       cmocka_unit_test(test_shade_phong_specular_metallic),
+      cmocka_unit_test(test_shade_double_illuminate_lights_the_back),
+      cmocka_unit_test(test_shade_irid_matches_povray),
+      cmocka_unit_test(test_shade_irid_slope_double_illuminate_parse),
       cmocka_unit_test(test_shade_metallic_curve_matches_povray),
       cmocka_unit_test(test_shade_reflection_of_background),
       cmocka_unit_test(test_shade_shadows_through_filter_and_transmit),

@@ -4,6 +4,7 @@ lib_libzrcube_la_SOURCES += \
 # Patterns, noise, colour maps, image maps and normals.
 lib_libzrcube_la_SOURCES += \
 	lib/scene/pattern.c lib/scene/pattern.h lib/scene/pattern_more.c \
+	lib/scene/warp.c lib/scene/warp.h \
 	lib/scene/texture.c lib/scene/texture.h
 
 check_PROGRAMS += tests/test_pattern

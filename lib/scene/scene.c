@@ -53,6 +53,7 @@ void zr__settings_init(zr_settings *s) {
   s->adc_bailout = 1.0 / 255.0;
   s->assumed_gamma = 1.0;
   s->ambient_light = zr_rgb3(1, 1, 1);
+  s->irid_wavelength = zr_rgb3(0.70, 0.52, 0.48);
   s->background = zr_colour5(0, 0, 0, 0, 0);
   s->version = 3.7;
   s->radiosity.brightness = 1.0;

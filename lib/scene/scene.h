@@ -72,7 +72,10 @@ typedef enum zr_pattern_kind {
   ZR_PAT_FUNCTION,
   ZR_PAT_OBJECT, /* a block pattern: 1 inside pattern.object, 0 outside */
   /* density_file df3 (lib/scene/df3.c). */
-  ZR_PAT_DENSITY_FILE
+  ZR_PAT_DENSITY_FILE,
+  /* slope { }: from the surface normal, so only where there is one
+     (zr__pattern_eval_n; elsewhere the normal counts as zero). */
+  ZR_PAT_SLOPE
 } zr_pattern_kind;
 
 /* A df3 voxel grid ("Density File Pattern"), mapped onto the unit cube:
@@ -107,6 +110,52 @@ typedef enum zr_wave_kind {
   ZR_WAVE_POLY
 } zr_wave_kind;
 
+/* A warp { } ("Warps"): each moves the point where the pattern is
+   evaluated, in the order written among the pattern's transforms
+   (lib/scene/warp.c). */
+typedef enum zr_warp_kind {
+  ZR_WARP_TURBULENCE,
+  ZR_WARP_REPEAT,
+  ZR_WARP_BLACK_HOLE,
+  ZR_WARP_PLANAR,
+  ZR_WARP_CYLINDRICAL,
+  ZR_WARP_SPHERICAL,
+  ZR_WARP_TOROIDAL
+} zr_warp_kind;
+
+typedef struct zr_warp {
+  zr_warp_kind kind;
+  /* The owner's transform written before the warp (identity if none):
+     the warp acts in that frame. */
+  zr_transform frame;
+  zr_vec3 turbulence; /* turbulence; black_hole's random centre shift */
+  int octaves;
+  double omega, lambda;
+  int axis;            /* repeat: 0, 1 or 2 */
+  double width;        /* repeat: the direction's component */
+  zr_vec3 offset;      /* repeat: added per block */
+  zr_vec3 flip;        /* repeat: -1 flips an axis in odd blocks, else 1 */
+  zr_vec3 centre;      /* black_hole */
+  double radius, strength, falloff;
+  bool inverse;
+  zr_vec3 repeat;      /* black_hole: repeat spacing, zero: none */
+  zr_vec3 orientation; /* mapping warps: unit, default <0,0,1> */
+  double dist_exp;     /* mapping warps: default 0 */
+  double distance;     /* planar */
+  double major_radius; /* toroidal: default 1 */
+} zr_warp;
+
+/* slope { <Direction> [, Lo, Hi] [altitude <Altitude> [, Lo, Hi]] }
+   ("Slope Pattern"): direction and altitude as written (their lengths
+   weigh the two parts), the ranges that map to 0 and 1 (defaults 0, 1;
+   no altitude: a zero vector). */
+typedef struct zr_slope {
+  zr_vec3 direction;
+  double lo, hi;
+  zr_vec3 altitude;
+  double alt_lo, alt_hi;
+} zr_slope;
+
 typedef struct zr_pattern {
   zr_pattern_kind kind;
   zr_vec3 vector;    /* gradient: unit direction; brick: brick_size */
@@ -137,6 +186,9 @@ typedef struct zr_pattern {
   double crackle_metric, crackle_offset;
   bool crackle_solid;
   const zr_density_file *density_file; /* density_file df3 */
+  zr_slope slope;                      /* slope { } */
+  const zr_warp *warps; /* in the order written, in the arena */
+  int n_warps;
 } zr_pattern;
 
 /* color_map: values ascending; the colour between two entries is
@@ -264,6 +316,10 @@ typedef struct zr_finish {
      exitance is P / area (lib/radiosity/mesh.c).  Added to emission;
      default 0.  See zrcube(1), "Radiosity settings". */
   zr_rgb energy;
+  /* irid { amount thickness t turbulence u } ("Iridescence"): thin-film
+     interference tints the light from light sources (lib/trace/shade.c);
+     amount 0 (the default) is off, thickness in microns. */
+  double irid, irid_thickness, irid_turbulence;
 } zr_finish;
 
 typedef struct zr_interior {
@@ -598,6 +654,9 @@ struct zr_object {
      through); no_reflection: unseen in reflections.  Both still cast
      shadows ("No_Image", "No_Reflection"). */
   bool no_image, no_reflection;
+  /* double_illuminate: a light on either side of the surface lights it
+     ("Double_Illuminate"), the back as if the normal were turned. */
+  bool double_illuminate;
   bool inverse;
   bool hollow; /* stored for media; it changes nothing else */
   /* clipped_by: only the surface inside this object remains (an
@@ -762,6 +821,9 @@ typedef struct zr_settings {
   int number_of_waves;  /* waves and ripples made after it; default 10 */
   bool assumed_gamma_given;
   zr_rgb ambient_light; /* default 1 */
+  /* irid_wavelength: iridescence's red, green and blue wavelengths in
+     microns ("Irid_Wavelength"); default <0.70, 0.52, 0.48>. */
+  zr_rgb irid_wavelength;
   zr_colour background; /* default black, transmit 0 */
   double version;       /* the last #version; the parser sets 3.7 if none */
   zr_radiosity_settings radiosity;

@@ -201,15 +201,29 @@ void zr__map_find(const zr_map *m, double v, bool block, size_t *i,
   find_interval(&e[0].value, sizeof *e, n, v, i, t);
 }
 
-/* A pigment_map's colour at p, pattern space of the outer pigment. */
-static zr_colour pigment_map_eval(const zr_pigment *pg, zr_vec3 p) {
+/* A pattern's value at p (pattern space) on a surface whose normal is
+   n.  The normal stays in world space: POV-Ray 3.7 measures slope
+   against the world's directions even when the pigment is rotated
+   (a plane and its pigment rotated 30 degrees away from the slope's
+   direction renders 0.8353, not 1), while the altitude part follows
+   the pattern's transforms like any other pattern. */
+static double value_at(const zr_pattern *pt, zr_vec3 p, zr_vec3 n) {
+  if (pt->kind != ZR_PAT_SLOPE)
+    return zr__pattern_eval(pt, p);
+  return zr__pattern_eval_n(pt, p, n);
+}
+
+/* A pigment_map's colour at p, pattern space of the outer pigment, on a
+   surface whose normal is n. */
+static zr_colour pigment_map_eval(const zr_pigment *pg, zr_vec3 p,
+                                  zr_vec3 n) {
   const zr_map *m = pg->pigment_map;
   if (pg->pattern.kind == ZR_PAT_AVERAGE) {
     zr_colour sum = zr_colour5(0, 0, 0, 0, 0);
     double total = 0;
     for (size_t k = 0; k < m->n; k++) {
       double w = m->entries[k].value;
-      zr_colour c = zr__pigment_eval(m->entries[k].u.pigment, p);
+      zr_colour c = zr__pigment_eval_n(m->entries[k].u.pigment, p, n);
       sum = zr_colour5(sum.r + w * c.r, sum.g + w * c.g, sum.b + w * c.b,
                        sum.f + w * c.f, sum.t + w * c.t);
       total += w;
@@ -219,25 +233,30 @@ static zr_colour pigment_map_eval(const zr_pigment *pg, zr_vec3 p) {
     return zr_colour5(sum.r / total, sum.g / total, sum.b / total,
                       sum.f / total, sum.t / total);
   }
-  double v = zr__pattern_eval(&pg->pattern, p);
+  double v = value_at(&pg->pattern, p, n);
   size_t i;
   double t;
   zr__map_find(m, v, zr__pattern_is_block(pg->pattern.kind), &i, &t);
-  zr_colour c = zr__pigment_eval(m->entries[i].u.pigment, p);
+  zr_colour c = zr__pigment_eval_n(m->entries[i].u.pigment, p, n);
   if (t > 0)
-    c = mix(c, zr__pigment_eval(m->entries[i + 1].u.pigment, p), t);
+    c = mix(c, zr__pigment_eval_n(m->entries[i + 1].u.pigment, p, n), t);
   return c;
 }
 
 zr_colour zr__pigment_eval(const zr_pigment *pg, zr_vec3 world) {
+  return zr__pigment_eval_n(pg, world, zr_v3(0, 0, 0));
+}
+
+zr_colour zr__pigment_eval_n(const zr_pigment *pg, zr_vec3 world,
+                             zr_vec3 n) {
   if (pg->kind == ZR_PIGMENT_SOLID)
     return pg->colour;
   zr_vec3 p = to_pattern(pg->transform, world);
   if (pg->kind == ZR_PIGMENT_IMAGE)
     return zr__image_map_eval(pg->image, p);
   if (pg->pigment_map && pg->pigment_map->n > 0)
-    return pigment_map_eval(pg, p);
-  double v = zr__pattern_eval(&pg->pattern, p);
+    return pigment_map_eval(pg, p, n);
+  double v = value_at(&pg->pattern, p, n);
   if (zr__pattern_is_block(pg->pattern.kind)) {
     int i = (int)v;
     return pg->list[i < 0 ? 0 : i > 2 ? 2 : i];
@@ -347,13 +366,19 @@ static zr_rgb see_through(zr_colour c) {
 
 const zr_texture *zr__texture_pick(const zr_texture *tx, zr_vec3 world,
                                    const zr_texture **second, double *t) {
+  return zr__texture_pick_n(tx, world, zr_v3(0, 0, 0), second, t);
+}
+
+const zr_texture *zr__texture_pick_n(const zr_texture *tx, zr_vec3 world,
+                                     zr_vec3 n, const zr_texture **second,
+                                     double *t) {
   *second = NULL;
   *t = 0;
   if (!tx->map || tx->map->n == 0)
     return tx;
   zr_vec3 p = to_pattern(tx->transform, world);
   size_t i;
-  zr__map_find(tx->map, zr__pattern_eval(&tx->pattern, p),
+  zr__map_find(tx->map, value_at(&tx->pattern, p, n),
                zr__pattern_is_block(tx->pattern.kind), &i, t);
   if (*t > 0)
     *second = tx->map->entries[i + 1].u.texture;

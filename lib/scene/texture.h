@@ -24,6 +24,10 @@ zr_colour zr__image_map_eval(const zr_image_map *im, zr_vec3 p);
 
 /* The pigment's colour at a point in world space. */
 zr_colour zr__pigment_eval(const zr_pigment *pg, zr_vec3 world);
+/* The same at a surface point with unit normal n (world space), which
+   the slope pattern needs; zr__pigment_eval passes a zero normal. */
+zr_colour zr__pigment_eval_n(const zr_pigment *pg, zr_vec3 world,
+                             zr_vec3 n);
 
 /*
  * The shading normal at a world point of a surface whose unit normal is
@@ -46,6 +50,10 @@ double zr__slope_map_eval(const zr_map *m, double v);
    *second with weight *t (else NULL and 0); a plain texture itself. */
 const zr_texture *zr__texture_pick(const zr_texture *tx, zr_vec3 world,
                                    const zr_texture **second, double *t);
+/* The same at a surface point with unit normal n (world space). */
+const zr_texture *zr__texture_pick_n(const zr_texture *tx, zr_vec3 world,
+                                     zr_vec3 n, const zr_texture **second,
+                                     double *t);
 
 /* The light a texture, all its layers together, lets through at a
    world point: the product of each layer's f * C + t. */

@@ -16,9 +16,9 @@
  *     later modifiers never change the declaration.
  *   - The camera and lights are built in build_camlight.c.
  *   - Patterns ("Pattern Modifiers"): turbulence, octaves, omega, lambda,
- *     frequency, phase and the wave types set the pattern's fields; a
- *     turbulence warp acts as turbulence (applied before the
- *     transforms, where POV-Ray would apply it in order).  A block
+ *     frequency, phase and the wave types set the pattern's fields;
+ *     warps are applied in the order written among the transforms
+ *     (build_warp.c, lib/scene/warp.c).  A block
  *     pattern takes up to 2 (checker, brick) or 3 (hexagon) colours.
  *     color_map entries may come out of order, as in POV-Ray
  *     (lib/scene/texture.c says how they are read).  A normal's transform, like
@@ -414,11 +414,7 @@ bool zr__sdl_pattern_mod(zr_sdl_parser *p, zr_pattern *pt,
   case T_TURBULENCE:
     return zr__sdl_want_vector(p, &m->value, &m->loc, &pt->turbulence);
   case T_WARP:
-    pt->turbulence = m->warp.turbulence;
-    pt->octaves = m->warp.octaves;
-    pt->omega = m->warp.omega;
-    pt->lambda = m->warp.lambda;
-    return true;
+    return zr__sdl_pattern_warp(p, pt, NULL, m);
   case T_OCTAVES:
     return zr__sdl_octaves(p, &m->value, &m->loc, &pt->octaves);
   case T_OMEGA:
@@ -744,6 +740,8 @@ static void set_flag(zr_object *o, zr_sdl_mod_kind kind) {
     o->no_image = true;
   else if (kind == ZR_SDL_MOD_NO_REFLECTION)
     o->no_reflection = true;
+  else if (kind == ZR_SDL_MOD_DOUBLE_ILLUMINATE)
+    o->double_illuminate = true;
   else
     o->no_shadow = true;
   if (zr__is_csg(o->kind))
@@ -792,6 +790,7 @@ bool zr__sdl_object_mod(zr_sdl_parser *p, zr_object *o,
   case ZR_SDL_MOD_NO_SHADOW:
   case ZR_SDL_MOD_NO_IMAGE:
   case ZR_SDL_MOD_NO_REFLECTION:
+  case ZR_SDL_MOD_DOUBLE_ILLUMINATE:
   case ZR_SDL_MOD_INVERSE:
     set_flag(o, mod->kind);
     return true;

@@ -30,8 +30,10 @@
  */
 #include "config.h"
 
+#include <math.h>
 #include <string.h>
 
+#include "pov-parse.h"
 #include "scene/pattern.h"
 #include "sdl/sdl.h"
 
@@ -264,4 +266,90 @@ bool zr__sdl_material_transform(zr_sdl_parser *p, zr_sdl_material *m,
     return true;
   m->texture = transformed(p, m->texture, t);
   return m->texture != NULL;
+}
+
+/* ---- iridescence ("Iridescence", "Irid_Wavelength") ---- */
+
+bool zr__sdl_finish_irid(zr_sdl_parser *p, zr_finish *f, int kw,
+                         const zr_sdl_expr *e, const zr_sdl_loc *loc) {
+  double v;
+  if (!zr__sdl_want_float(p, e, loc, &v))
+    return false;
+  const char *what = kw == T_IRID        ? "irid amount"
+                     : kw == T_THICKNESS ? "irid thickness"
+                                         : "irid turbulence";
+  if (!(v >= 0.0) || !isfinite(v)) {
+    zr__sdl_error(p, ZR_ESCENE, loc, "%s must be a number >= 0", what);
+    return false;
+  }
+  if (kw == T_IRID)
+    f->irid = v;
+  else if (kw == T_THICKNESS)
+    f->irid_thickness = v;
+  else
+    f->irid_turbulence = v;
+  return true;
+}
+
+bool zr__sdl_irid_wavelength(zr_sdl_parser *p, const zr_sdl_expr *e,
+                             const zr_sdl_loc *loc) {
+  zr_rgb w;
+  if (!zr__sdl_want_rgb(p, e, loc, &w))
+    return false;
+  if (!(w.r > 0.0 && w.g > 0.0 && w.b > 0.0 && isfinite(w.r) &&
+        isfinite(w.g) && isfinite(w.b))) {
+    zr__sdl_error(p, ZR_ESCENE, loc,
+                  "irid_wavelength must be > 0 in every channel");
+    return false;
+  }
+  p->scene->settings.irid_wavelength = w;
+  return true;
+}
+
+/* ---- the slope pattern ("Slope Pattern") ---- */
+
+/* A range's two floats; a missing range leaves the defaults. */
+static bool slope_range(zr_sdl_parser *p, const zr_sdl_expr *lo,
+                        const zr_sdl_expr *hi, const zr_sdl_loc *loc,
+                        double *lo_out, double *hi_out) {
+  if (!lo)
+    return true;
+  return zr__sdl_want_float(p, lo, loc, lo_out) &&
+         zr__sdl_want_float(p, hi, loc, hi_out);
+}
+
+zr_slope *zr__sdl_slope_new(zr_sdl_parser *p, const zr_sdl_expr *d,
+                            const zr_sdl_loc *d_loc, const zr_sdl_expr *lo,
+                            const zr_sdl_expr *hi,
+                            const zr_sdl_loc *lo_loc) {
+  zr_slope *sl = zr__sdl_alloc(p, sizeof *sl);
+  if (!sl)
+    return NULL;
+  zr_pattern defaults;
+  zr__pattern_init(&defaults, ZR_PAT_SLOPE);
+  *sl = defaults.slope;
+  if (!zr__sdl_want_vector(p, d, d_loc, &sl->direction))
+    return NULL;
+  if (!(zr_v3_len(sl->direction) > 0.0)) {
+    zr__sdl_error(p, ZR_ESCENE, d_loc,
+                  "the slope direction must not be a zero vector");
+    return NULL;
+  }
+  if (!slope_range(p, lo, hi, lo_loc, &sl->lo, &sl->hi))
+    return NULL;
+  return sl;
+}
+
+bool zr__sdl_slope_altitude(zr_sdl_parser *p, zr_slope *sl,
+                            const zr_sdl_expr *a, const zr_sdl_loc *a_loc,
+                            const zr_sdl_expr *lo, const zr_sdl_expr *hi,
+                            const zr_sdl_loc *lo_loc) {
+  if (!zr__sdl_want_vector(p, a, a_loc, &sl->altitude))
+    return false;
+  if (!(zr_v3_len(sl->altitude) > 0.0)) {
+    zr__sdl_error(p, ZR_ESCENE, a_loc,
+                  "the slope's altitude must not be a zero vector");
+    return false;
+  }
+  return slope_range(p, lo, hi, lo_loc, &sl->alt_lo, &sl->alt_hi);
 }

@@ -558,11 +558,13 @@ static bool do_macro(zr_sdl_parser *p, const zr_sdl_loc *at) {
         return false;
       m->optional[m->n_params] = optional;
       m->params[m->n_params++] = param;
+      /* POV-Ray takes a parameter list with a comma missing between
+         two names or after the last one (shapes3.inc has both). */
+      if (zr__sdl_peek(p, 0)->kind == T_IDENTIFIER)
+        continue;
       if (zr__sdl_peek(p, 0)->kind != ',')
         break;
       zr__sdl_top(p)->pos++;
-      /* POV-Ray takes a comma after the last parameter (shapes3.inc's
-         Rounded_Tube has one). */
       if (zr__sdl_peek(p, 0)->kind == ')')
         break;
     }

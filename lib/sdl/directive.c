@@ -647,6 +647,10 @@ static bool autoend_due(const zr_sdl_parser *p, int next) {
   /* "#declare T = texture { ... } texture { ... }" layers textures. */
   if (next == T_TEXTURE && a->last == '}')
     return false;
+  /* A '(' after a block starts something new: shapes.inc's Text_Width
+     declares "#local TO = text {...}" and goes on "(max_extent(TO).x". */
+  if (next == '(' && a->last == '}')
+    return true;
   return !continues(next);
 }
 
@@ -812,6 +816,7 @@ static int identifier_token(zr_sdl_kind kind) {
   case ZR_SDL_STRING: return T_STRING_ID;
   case ZR_SDL_ARRAY: return T_ARRAY_ID;
   case ZR_SDL_SEED: return T_SEED_ID;
+  case ZR_SDL_SPLINE: return T_SPLINE_ID;
   default: return T_OBJECT_ID;
   }
 }

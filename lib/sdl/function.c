@@ -36,7 +36,10 @@
  * 45 f_paraboloid, 47 f_ph, 57 f_r, 60 f_rounded_box, 61 f_sphere, 68
  * f_superellipsoid, 69 f_th, 70 f_torus and 71 f_torus2, each fitted to
  * povray 3.7's own values at several points (see tests/test_function.c;
- * its source was not consulted).  Any other n, and transform and spline
+ * its source was not consulted); 76 f_noise3d and 78 f_noise_generator
+ * (the bozo pattern's noise), 59 f_ridged_mf and 29 f_hetero_mf
+ * (Musgrave's multifractals over it), which have our noise's character
+ * and ranges but not POV-Ray's exact values.  Any other n, and transform
  * functions, still compile, so functions.inc parses, but a function that
  * uses one reports it by name and number when it is called
  * (zr__fn_unsupported() tells later users the same).
@@ -46,6 +49,10 @@
  * evaluates the pattern's value or the pigment's colour at (x, y, z)
  * ("Function Pattern"); another body uses a pigment function as
  * F(x, y, z).red (or .x, .gray ...), one channel of the colour.
+ * function { spline { ... } } and function { S } (S a declared spline)
+ * are functions of one parameter whose value in a scene is the spline's
+ * vector (lib/sdl/spline.c); another body takes one component,
+ * F(t).y, which one OP_SPLINE evaluates.
  */
 #include "config.h"
 
@@ -60,6 +67,7 @@
 #include "scene/pattern.h"
 #include "scene/texture.h"
 #include "sdl/function.h"
+#include "sdl/spline.h"
 
 /* ---- the machine ---- */
 
@@ -88,7 +96,7 @@
   X(OP_CEIL) X(OP_INT) X(OP_DEGREES) X(OP_RADIANS)                         \
   X(OP_ATAN2) X(OP_POW) X(OP_MOD) X(OP_MIN) X(OP_MAX)                      \
   X(OP_SELECT3) X(OP_SELECT4) X(OP_CALL) X(OP_INTERNAL) X(OP_TEXTURE)    \
-  X(OP_RETURN)
+  X(OP_SPLINE) X(OP_RETURN)
 
 #define AS_ENUM(o) o,
 typedef enum op { OPS(AS_ENUM) } op;
@@ -112,11 +120,15 @@ struct zr_fn {
   const char *unsupported; /* NULL, or what is missing (see header) */
   /* pattern { } and pigment { } bodies: what OP_TEXTURE evaluates. */
   const zr_pigment *const *pigments;
-  int texture_kind; /* 0 plain, FN_PATTERN or FN_PIGMENT */
+  int texture_kind; /* 0 plain, FN_PATTERN, FN_PIGMENT or FN_SPLINE */
+  /* spline { } bodies and calls of spline functions: what OP_SPLINE
+     evaluates. */
+  const zr_sdl_spline *const *splines;
 };
 
 #define FN_PATTERN 1
 #define FN_PIGMENT 2
+#define FN_SPLINE 3
 /* The channel OP_TEXTURE gives for a pattern's value, and the grey. */
 #define TEXTURE_PATTERN (-1)
 #define TEXTURE_GREY 5
@@ -149,7 +161,7 @@ static const internal_fn internals[] = {
     {24, "f_helical_torus", 13, false},
     {25, "f_helix1", 10, false},      {26, "f_helix2", 10, false},
     {27, "f_hex_x", 4, false},        {28, "f_hex_y", 4, false},
-    {29, "f_hetero_mf", 9, false},    {30, "f_hunt_surface", 4, false},
+    {29, "f_hetero_mf", 9, true},     {30, "f_hunt_surface", 4, false},
     {31, "f_hyperbolic_torus", 6, false},
     {32, "f_isect_ellipsoids", 7, false},
     {33, "f_kampyle_of_eudoxus", 6, false},
@@ -170,7 +182,7 @@ static const internal_fn internals[] = {
     {55, "f_quartic_saddle", 4, false},
     {56, "f_quartic_cylinder", 6, false},
     {57, "f_r", 3, true},             {58, "f_ridge", 9, false},
-    {59, "f_ridged_mf", 9, false},    {60, "f_rounded_box", 7, true},
+    {59, "f_ridged_mf", 9, true},     {60, "f_rounded_box", 7, true},
     {61, "f_sphere", 4, true},        {62, "f_spikes", 8, false},
     {63, "f_spikes_2d", 7, false},    {64, "f_spiral", 9, false},
     {65, "f_steiners_roman", 4, false},
@@ -180,7 +192,7 @@ static const internal_fn internals[] = {
     {71, "f_torus2", 6, true},       {72, "f_torus_gumdrop", 4, false},
     {73, "f_umbrella", 4, false},     {74, "f_witch_of_agnesi", 5, false},
     {75, "f_witch_of_agnesi_2d", 9, false},
-    {76, "f_noise3d", 3, false},      {78, "f_noise_generator", 4, false},
+    {76, "f_noise3d", 3, true},       {78, "f_noise_generator", 4, true},
 };
 
 static const internal_fn *internal_find(int number) {
@@ -196,6 +208,89 @@ static const internal_fn *internal_find(int number) {
 static double field(double v) { return v < -10 ? -10 : v > 10 ? 10 : v; }
 
 /*
+ * The noise functions.  f_noise3d is the noise the bozo pattern uses
+ * (lib/scene/pattern.c), in [0, 1] as the manual documents ("Functions.inc":
+ * f_snoise3d is "just like f_noise3d(), but returns values in the range
+ * [-1, 1]", and functions.inc defines it as 2 f_noise3d - 1).  The noise
+ * generator parameters (0 to 3) all select that one noise, as the
+ * noise_generator of patterns does (see pattern.c).
+ *
+ * f_ridged_mf and f_hetero_mf are F. K. Musgrave's ridged multifractal
+ * and heterogeneous terrain ("Texturing and Modeling: A Procedural
+ * Approach", chapter "Procedural Fractal Terrains"), whose parameters the
+ * manual names and describes: octave i has frequency lacunarity^i and
+ * weight lacunarity^(-i H) (the manual's f^-H), both over signed noise.
+ * The manual's T of f_hetero_mf blends Musgrave's heterogeneous scaling
+ * (each octave scaled by the altitude so far: T = 1) with the plain 1/f
+ * sum (T = 0).  Octaves are capped at MAX_OCTAVES so that a huge count
+ * cannot stall a render: past that the frequencies are beyond what a
+ * double's noise lattice resolves for any lacunarity above 1.5.
+ */
+#define MAX_OCTAVES 100
+
+static double signed_noise(double x, double y, double z) {
+  return 2 * zr__noise(zr_v3(x, y, z)) - 1;
+}
+
+/* The whole octaves to sum; octave 0 is always there.  A NaN count is
+   one octave. */
+static int whole_octaves(double octaves) {
+  return octaves >= MAX_OCTAVES ? MAX_OCTAVES
+         : octaves >= 1         ? (int)octaves
+                                : 1;
+}
+
+/* Musgrave's ridge: offset less |noise|, squared. */
+static double ridge_signal(double offset, double x, double y, double z) {
+  double s = offset - fabs(signed_noise(x, y, z));
+  return s * s;
+}
+
+/* a: x, y, z, H, lacunarity, octaves, offset, gain, noise generator. */
+static double ridged_mf(const double *a) {
+  double h = a[3], lacunarity = a[4], offset = a[6], gain = a[7];
+  int octaves = whole_octaves(a[5]);
+  double x = a[0], y = a[1], z = a[2];
+  double signal = ridge_signal(offset, x, y, z), result = signal;
+  double step = pow(lacunarity, -h), weight_of_octave = 1;
+  for (int i = 1; i < octaves; i++) {
+    x *= lacunarity, y *= lacunarity, z *= lacunarity;
+    weight_of_octave *= step;
+    /* The previous octave's signal, times gain, weighs this one, so
+       ridges (high signal) get detail and valleys stay smooth. */
+    double weight = fmin(fmax(signal * gain, 0), 1);
+    signal = ridge_signal(offset, x, y, z) * weight;
+    result += signal * weight_of_octave;
+  }
+  return result;
+}
+
+/* a: x, y, z, H, lacunarity, octaves, offset, T, noise generator. */
+static double hetero_mf(const double *a) {
+  double h = a[3], lacunarity = a[4], offset = a[6], t = a[7];
+  int octaves = whole_octaves(a[5]);
+  double x = a[0], y = a[1], z = a[2];
+  double value = offset + signed_noise(x, y, z);
+  double step = pow(lacunarity, -h), weight_of_octave = 1;
+  for (int i = 1; i < octaves; i++) {
+    x *= lacunarity, y *= lacunarity, z *= lacunarity;
+    weight_of_octave *= step;
+    double increment = (signed_noise(x, y, z) + offset) * weight_of_octave;
+    value += increment * ((1 - t) + t * value);
+  }
+  /* A fractional octave count adds that fraction of one more octave, so
+     the result is continuous in the count (Musgrave's remainder). */
+  double remainder = a[5] - octaves;
+  if (remainder > 0 && remainder < 1) {
+    x *= lacunarity, y *= lacunarity, z *= lacunarity;
+    weight_of_octave *= step;
+    double increment = (signed_noise(x, y, z) + offset) * weight_of_octave;
+    value += remainder * increment * ((1 - t) + t * value);
+  }
+  return value;
+}
+
+/*
  * The implemented internals.  Each formula was fitted to povray 3.7's
  * values at several points, signs, clipping and edge cases included
  * (tests/test_function.c quotes them): f_r, f_th and f_ph are spherical
@@ -206,6 +301,13 @@ static double eval_internal(int number, const double *a) {
   double x = a[0], y = a[1], z = a[2];
   double r = sqrt(x * x + y * y + z * z);
   switch (number) {
+  case 29:
+    return hetero_mf(a);
+  case 59:
+    return ridged_mf(a);
+  case 76: /* f_noise3d */
+  case 78: /* f_noise_generator: every generator is the one noise */
+    return zr__noise(zr_v3(x, y, z));
   case 17: /* f_ellipsoid: inverse scales; threshold 1 */
     return sqrt(x * x * a[3] * a[3] + y * y * a[4] * a[4] +
                 z * z * a[5] * a[5]);
@@ -395,6 +497,13 @@ static double run(const zr_fn *f, double *base) {
       *sp = texture_value(f->pigments[i->arg], i->n, sp);
       sp++;
       NEXT();
+    CASE(OP_SPLINE) {
+      /* Component n of splines[arg] at the top value. */
+      double v[5];
+      zr__sdl_spline_eval(f->splines[i->arg], -1, sp[-1], v);
+      sp[-1] = v[i->n];
+      NEXT();
+    }
     CASE(OP_RETURN) return sp[-1];
 #ifndef VM_THREADED
     default: return NAN; /* never: every opcode has its case */
@@ -435,6 +544,8 @@ typedef struct compiler {
   size_t n_callees, cap_callees;
   const zr_pigment **pigments;
   size_t n_pigments, cap_pigments;
+  const zr_sdl_spline **splines;
+  size_t n_splines, cap_splines;
   int texture_kind;
   int height, max_height; /* operand stack depth now and at most */
   int need_calls;         /* the deepest a call reaches above base */
@@ -852,6 +963,47 @@ static bool call_pigment(compiler *c, const zr_fn *callee,
   return expected(c, "a colour component after '.'");
 }
 
+/* Adds a spline to the body's pool; its index, or -1. */
+static int add_spline(compiler *c, const zr_sdl_spline *s) {
+  if (!grow(c, (void **)&c->splines, &c->cap_splines, c->n_splines,
+            sizeof *c->splines))
+    return -1;
+  c->splines[c->n_splines] = s;
+  return (int)c->n_splines++;
+}
+
+/* F(t).component for a spline function F ("Spline": a function of a
+   spline returns a vector): one OP_SPLINE on this body's copy of F's
+   spline. */
+static bool call_spline(compiler *c, const zr_fn *callee,
+                        const zr_sdl_token *name) {
+  int n = arguments(c);
+  if (n < 0)
+    return false;
+  if (n != 1)
+    return fail_at(c, name, ZR_ESYNTAX,
+                   "function '%s' takes 1 argument, not %d", name->v.str, n);
+  if (!accept(c, '.'))
+    return expected(c, "'.' and a vector component after a spline "
+                       "function");
+  static const char *const items[] = {"x", "y", "z", "t", "u", "v",
+                                      "red", "green", "blue", "filter",
+                                      "transmit"};
+  static const int channel[] = {0, 1, 2, 3, 0, 1, 0, 1, 2, 3, 4};
+  for (size_t k = 0; k < sizeof items / sizeof items[0]; k++) {
+    if (is_word(tok(c), items[k]) ||
+        (tok(c)->kind == T_IDENTIFIER && strcmp(tok(c)->v.str,
+                                                items[k]) == 0)) {
+      c->pos++;
+      int at = add_spline(c, callee->splines[0]);
+      if (at < 0)
+        return false;
+      return emit(c, OP_SPLINE, at, channel[k], 0);
+    }
+  }
+  return expected(c, "a vector component after '.'");
+}
+
 /* A declared identifier in a body. */
 static bool declared(compiler *c, const zr_sdl_token *name) {
   const zr_sdl_symbol *s = zr__sdl_lookup(c->p, name->v.str, NULL);
@@ -862,6 +1014,9 @@ static bool declared(compiler *c, const zr_sdl_token *name) {
   if (v->kind == ZR_SDL_FUNCTION &&
       ((const zr_fn *)v->ptr)->texture_kind == FN_PIGMENT)
     return call_pigment(c, v->ptr, name);
+  if (v->kind == ZR_SDL_FUNCTION &&
+      ((const zr_fn *)v->ptr)->texture_kind == FN_SPLINE)
+    return call_spline(c, v->ptr, name);
   if (v->kind == ZR_SDL_FUNCTION)
     return call_function(c, v->ptr, name);
   if (v->kind == ZR_SDL_FLOAT)
@@ -1120,6 +1275,52 @@ static bool texture_body(compiler *c, bool pigment) {
               -2);
 }
 
+/* A spline function's body once its spline is known: t, then one
+   OP_SPLINE (component 0 when a body calls it alone; other bodies use
+   F(t).y and the like, and a call in a scene gives the whole vector). */
+static bool spline_code(compiler *c, const zr_sdl_spline *s) {
+  int at = add_spline(c, s);
+  if (at < 0)
+    return false;
+  c->names[0] = "t";
+  c->n_params = 1;
+  c->n_slots = 1;
+  c->texture_kind = FN_SPLINE;
+  return emit(c, OP_LOAD, 0, 0, 1) && emit(c, OP_SPLINE, at, 0, 0);
+}
+
+/* function { spline { ... } }: the grammar reads the spline (a nested
+   parse from the 'spline' token, ending right after its '}'). */
+static bool spline_body(compiler *c) {
+  zr_sdl_parser *p = c->p;
+  size_t frames = p->n_frames;
+  p->frames[frames - 1].pos = c->pos;
+  if (zr__sdl_parse_nested(p, T_START_FN_SPLINE) != ZR_OK) {
+    c->failed = true;
+    return false;
+  }
+  c->f = &p->files[c->file];
+  if (p->n_frames != frames || p->frames[frames - 1].file != c->file) {
+    zr_sdl_loc at = zr__sdl_peek_loc(p, 0);
+    zr__sdl_error(p, ZR_ESYNTAX, &at, "a function's spline must end in "
+                  "the file or macro where it begins");
+    c->failed = true;
+    return false;
+  }
+  c->pos = p->frames[frames - 1].pos;
+  return spline_code(c, p->nested_rvalue.ptr);
+}
+
+/* function { S } for a declared spline S, the whole body. */
+static const zr_sdl_spline *spline_named(compiler *c) {
+  const zr_sdl_token *name = tok(c);
+  if (name->kind != T_IDENTIFIER || c->pos + 1 >= c->f->n_tokens ||
+      !is_char(&c->f->tokens[c->pos + 1], '}'))
+    return NULL;
+  const zr_sdl_symbol *s = zr__sdl_lookup(c->p, name->v.str, NULL);
+  return s && s->value.kind == ZR_SDL_SPLINE ? s->value.ptr : NULL;
+}
+
 /* Bodies of the other special kinds (transform, spline): parsed over,
    usable once the code evaluates them. */
 static bool special_body(compiler *c, const char *w) {
@@ -1192,8 +1393,13 @@ static const zr_fn *finish(compiler *c) {
       p, (c->n_callees ? c->n_callees : 1) * sizeof *callees);
   const zr_pigment **pigments = zr__sdl_alloc(
       p, (c->n_pigments ? c->n_pigments : 1) * sizeof *pigments);
-  if (!fn || !code || !consts || !callees || !pigments)
+  const zr_sdl_spline **splines = zr__sdl_alloc(
+      p, (c->n_splines ? c->n_splines : 1) * sizeof *splines);
+  if (!fn || !code || !consts || !callees || !pigments || !splines)
     return NULL;
+  if (c->n_splines)
+    memcpy(splines, c->splines, c->n_splines * sizeof *splines);
+  fn->splines = (const zr_sdl_spline *const *)splines;
   if (c->n_pigments)
     memcpy(pigments, c->pigments, c->n_pigments * sizeof *pigments);
   fn->pigments = (const zr_pigment *const *)pigments;
@@ -1242,8 +1448,15 @@ static bool definition(compiler *c, const zr_sdl_loc *at) {
              (strcmp(w, "pattern") == 0 || strcmp(w, "pigment") == 0)) {
     if (!texture_body(c, w[1] == 'i'))
       return false;
-  } else if (w && !have_params &&
-             (strcmp(w, "transform") == 0 || strcmp(w, "spline") == 0)) {
+  } else if (w && !have_params && strcmp(w, "spline") == 0) {
+    if (!spline_body(c))
+      return false;
+  } else if (!have_params && spline_named(c)) {
+    const zr_sdl_spline *s = spline_named(c);
+    c->pos++;
+    if (!spline_code(c, s))
+      return false;
+  } else if (w && !have_params && strcmp(w, "transform") == 0) {
     if (!special_body(c, w))
       return false;
   } else if (!expr(c)) {
@@ -1277,6 +1490,7 @@ const zr_fn *zr__sdl_function_parse(zr_sdl_parser *p, const zr_sdl_loc *at) {
   free(c.consts);
   free(c.callees);
   free(c.pigments);
+  free(c.splines);
   /* A pattern or pigment body ran a nested parse, which may have moved
      the frames (a macro called in it): take the frame anew. */
   fr = &p->frames[p->n_frames - 1];
@@ -1321,6 +1535,11 @@ bool zr__sdl_function_call(zr_sdl_parser *p, const zr_fn *fn,
                   "not %d", name, fn->n_params,
                   fn->n_params == 1 ? "" : "s", args->n);
     return false;
+  }
+  if (fn->texture_kind == FN_SPLINE) {
+    /* A spline function gives the spline's vector there. */
+    *out = zr__sdl_spline_value(fn->splines[0], -1, args->v[0]);
+    return true;
   }
   if (fn->texture_kind == FN_PIGMENT) {
     /* A pigment function gives the pigment's colour there. */

@@ -5,12 +5,15 @@ lib_libzrcube_la_SOURCES += \
 	lib/sdl/sdl.h \
 	lib/sdl/build.c \
 	lib/sdl/build_object.c \
+	lib/sdl/build_warp.c \
 	lib/sdl/builtins.c \
 	lib/sdl/control.c \
 	lib/sdl/directive.c \
 	lib/sdl/fastexpr.c \
 	lib/sdl/fileio.c \
 	lib/sdl/keywords.c \
+	lib/sdl/spline.h \
+	lib/sdl/spline.c \
 	lib/sdl/symtab.c \
 	lib/sdl/tokens.c \
 	lib/sdl/values.c
@@ -55,6 +58,16 @@ tests_test_function_CPPFLAGS = $(TEST_CPPFLAGS)
 tests_test_function_LDADD = $(TEST_LDADD)
 tests_test_function_LDFLAGS = -static
 $(tests_test_function_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
+
+# Splines (lib/sdl/spline.c, listed with the sources above).
+check_PROGRAMS += tests/test_spline
+TESTS += tests/test_spline
+tests_test_spline_SOURCES = tests/test_spline.c \
+	tests/parse_fixture.c tests/parse_fixture.h
+tests_test_spline_CPPFLAGS = $(TEST_CPPFLAGS)
+tests_test_spline_LDADD = $(TEST_LDADD)
+tests_test_spline_LDFLAGS = -static
+$(tests_test_spline_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
 
 # Building meshes, mesh2 and text from the grammar.
 lib_libzrcube_la_SOURCES += lib/sdl/build_mesh.c lib/sdl/build_mesh.h

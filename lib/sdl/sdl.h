@@ -101,7 +101,8 @@ typedef enum zr_sdl_kind {
   ZR_SDL_MEDIA,      /* ptr: a zr_medium (build_media.c) */
   ZR_SDL_DENSITY,    /* ptr: a zr_pigment, a media density */
   ZR_SDL_TRANSFORM,  /* ptr: a zr_transform (build_pattern.c) */
-  ZR_SDL_LIGHT       /* ptr: a finished zr_light (build_camlight.c) */
+  ZR_SDL_LIGHT,      /* ptr: a finished zr_light (build_camlight.c) */
+  ZR_SDL_SPLINE      /* ptr: a zr_sdl_spline (spline.c) */
 } zr_sdl_kind;
 
 /* What an identifier stands for.  Pointers are into the scene's arena
@@ -180,6 +181,7 @@ typedef enum zr_sdl_mod_kind {
   ZR_SDL_MOD_NO_SHADOW,
   ZR_SDL_MOD_NO_IMAGE,
   ZR_SDL_MOD_NO_REFLECTION,
+  ZR_SDL_MOD_DOUBLE_ILLUMINATE,
   ZR_SDL_MOD_INVERSE,
   ZR_SDL_MOD_OPEN,
   ZR_SDL_MOD_NORMAL,
@@ -224,10 +226,10 @@ typedef struct zr_sdl_turb {
 /* Kept small: it is a member of the grammar's semantic value, and every
    nested parser holds a stack of those on the C stack. */
 typedef struct zr_sdl_pmod {
-  int token; /* the keyword's token; T_WARP for a turbulence warp */
+  int token; /* the keyword's token; T_WARP for a warp { } */
   zr_sdl_expr value; /* its argument (dim 0: none) */
   zr_sdl_loc loc;
-  zr_sdl_turb warp; /* T_WARP: turbulence, octaves, omega, lambda */
+  struct zr_warp *warp; /* T_WARP: the warp, in the arena */
 } zr_sdl_pmod;
 
 /* The colours after checker, hexagon or brick. */
@@ -674,6 +676,23 @@ bool zr__sdl_pigment_transform(zr_sdl_parser *p, zr_pigment *pg,
                                const zr_transform *t);
 zr_finish *zr__sdl_finish_new(zr_sdl_parser *p, const zr_finish *from);
 void zr__sdl_finish_reflection(zr_finish *f, const zr_sdl_reflection *r);
+/* irid { } items: kw T_IRID (the amount), T_THICKNESS or T_TURBULENCE;
+   each a float >= 0. */
+bool zr__sdl_finish_irid(zr_sdl_parser *p, zr_finish *f, int kw,
+                         const zr_sdl_expr *e, const zr_sdl_loc *loc);
+/* slope { D [, lo, hi] }: D a non-zero vector; lo and hi floats (both or
+   neither; lo_loc for both).  altitude A [, lo, hi] the same. */
+zr_slope *zr__sdl_slope_new(zr_sdl_parser *p, const zr_sdl_expr *d,
+                            const zr_sdl_loc *d_loc, const zr_sdl_expr *lo,
+                            const zr_sdl_expr *hi,
+                            const zr_sdl_loc *lo_loc);
+bool zr__sdl_slope_altitude(zr_sdl_parser *p, zr_slope *sl,
+                            const zr_sdl_expr *a, const zr_sdl_loc *a_loc,
+                            const zr_sdl_expr *lo, const zr_sdl_expr *hi,
+                            const zr_sdl_loc *lo_loc);
+/* global_settings { irid_wavelength C }: every channel > 0. */
+bool zr__sdl_irid_wavelength(zr_sdl_parser *p, const zr_sdl_expr *e,
+                             const zr_sdl_loc *loc);
 /* reflection { exponent e }: e must be positive. */
 bool zr__sdl_reflection_exponent(zr_sdl_parser *p, double e,
                                  const zr_sdl_loc *loc);
@@ -692,6 +711,20 @@ bool zr__sdl_octaves(zr_sdl_parser *p, const zr_sdl_expr *e,
                      const zr_sdl_loc *loc, int *octaves);
 bool zr__sdl_pattern_mod(zr_sdl_parser *p, zr_pattern *pt,
                          const zr_sdl_pmod *m);
+/* warp { } (build_warp.c): a new warp of kind ZR_WARP_* from its first
+   item's values (a, b: NULL when absent), a later item, and a pattern
+   modifier whose warps act in the owner's transform so far (frame, NULL:
+   identity). */
+bool zr__sdl_warp_new(zr_sdl_parser *p, int kind, const zr_sdl_expr *a,
+                      const zr_sdl_expr *b, const zr_sdl_loc *loc,
+                      zr_sdl_pmod *out);
+bool zr__sdl_warp_item(zr_sdl_parser *p, zr_sdl_pmod *wm,
+                       const zr_sdl_pmod *m);
+bool zr__sdl_pattern_warp(zr_sdl_parser *p, zr_pattern *pt,
+                          const zr_transform *frame, const zr_sdl_pmod *m);
+bool zr__sdl_pattern_mod_in(zr_sdl_parser *p, zr_pattern *pt,
+                            const zr_transform *frame,
+                            const zr_sdl_pmod *m);
 bool zr__sdl_clist_add(zr_sdl_parser *p, zr_sdl_clist *l,
                        const zr_sdl_expr *e, const zr_sdl_loc *loc);
 zr_colour_map *zr__sdl_colour_map_new(zr_sdl_parser *p,

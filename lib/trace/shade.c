@@ -63,6 +63,7 @@
 #include <string.h>
 
 #include "radiosity/radiosity.h"
+#include "scene/pattern.h"
 #include "scene/texture.h"
 #include "trace/atmosphere.h"
 #include "trace/bvh.h"
@@ -246,6 +247,30 @@ static double point_random(zr_vec3 p) {
   return (double)(h >> 11) / 9007199254740992.0;
 }
 
+/*
+ * Iridescence ("Iridescence", "Irid_Wavelength"): a film of thickness t
+ * over the surface shifts the light it reflects by the optical path
+ * 4 pi t cos / wavelength, and the light source's colour is scaled per
+ * channel by 1 + amount * cos(that phase).  POV-Ray 3.7 renders of a
+ * plane (amount 0.5 and 1, thickness 0 to 0.5, light along and 60
+ * degrees off the normal, tests/test_shade.c) fit this with cos the mean
+ * of the cosines toward the light and toward the viewer, to 1%.
+ * turbulence u varies the thickness as t (1 + u n), n our turbulence
+ * noise's x component (zero mean): POV-Ray's own noise is not ours, so
+ * only the character of the variation can match.
+ */
+zr_rgb zr__irid_tint(const zr_finish *f, const zr_settings *gs, zr_vec3 p,
+                     double cos_light, double cos_eye) {
+  double t = f->irid_thickness;
+  if (f->irid_turbulence > 0.0)
+    t *= 1.0 + f->irid_turbulence * zr__dturbulence(p, 5, 0.5, 2.0).x;
+  double phase = 2.0 * M_PI * t * (cos_light + cos_eye);
+  zr_rgb w = gs->irid_wavelength;
+  return zr_rgb3(1.0 + f->irid * cos(phase / w.r),
+                 1.0 + f->irid * cos(phase / w.g),
+                 1.0 + f->irid * cos(phase / w.b));
+}
+
 /* Diffuse light and highlights from every light source. */
 static zr_rgb direct_light(const zr_tracer *tr, const surface *s,
                            double opacity) {
@@ -260,14 +285,23 @@ static zr_rgb direct_light(const zr_tracer *tr, const surface *s,
     zr_rgb lc;
     if (!zr__light_arrive(light, s->p, &l, &lc))
       continue; /* outside a spotlight's cone (lib/trace/lights.c) */
-    double n_dot_l = zr_v3_dot(s->n, l);
+    zr_vec3 n = s->n;
+    double n_dot_l = zr_v3_dot(n, l);
+    zr_vec3 from = lit_from;
+    if (n_dot_l < 0.0 && s->object->double_illuminate) {
+      /* double_illuminate: the back is lit as the front would be. */
+      n = zr_v3_neg(n);
+      n_dot_l = -n_dot_l;
+      from = zr_v3_madd(s->p, s->n, -s->offset);
+    }
     /* Light behind the surface only counts with a backside diffuse
        ("diffuse A, B"), and then makes no highlight. */
     bool back = !(n_dot_l > 0.0);
     if (back && !(f->diffuse_back > 0.0 && n_dot_l < 0.0))
       continue;
     /* Shadow rays leave from the side the light is on. */
-    zr_vec3 from = back ? zr_v3_madd(s->p, s->n, -s->offset) : lit_from;
+    if (back)
+      from = zr_v3_madd(s->p, s->n, -s->offset);
     lc = zr_rgb_mul(lc, zr__light_visibility(tr, light, s->p, from));
     if (rgb_max(lc) <= 0.0)
       continue;
@@ -282,6 +316,9 @@ static zr_rgb direct_light(const zr_tracer *tr, const surface *s,
     }
     if (light->media_attenuation) /* lib/trace/media.c */
       lc = zr_rgb_mul(lc, zr__media_light_attenuation(tr, light, s->p));
+    if (f->irid > 0.0)
+      lc = zr_rgb_mul(lc, zr__irid_tint(f, &scene->settings, s->p, n_dot_l,
+                                        -zr_v3_dot(n, s->d)));
     if (f->diffuse != 0.0 && opacity > 0.0) {
       double d = f->diffuse * opacity *
                  (f->brilliance == 1.0 ? n_dot_l
@@ -295,13 +332,13 @@ static zr_rgb direct_light(const zr_tracer *tr, const surface *s,
     if (light->shadowless)
       continue;
     if (f->phong > 0.0) {
-      double cos_r = zr_v3_dot(zr__reflect(s->d, s->n), l);
+      double cos_r = zr_v3_dot(zr__reflect(s->d, n), l);
       if (cos_r > 0.0)
         h += f->phong * pow(cos_r, f->phong_size);
     }
     if (f->specular > 0.0 && f->roughness > 0.0) {
       zr_vec3 half = zr_v3_norm(zr_v3_sub(l, s->d));
-      double cos_h = zr_v3_dot(s->n, half);
+      double cos_h = zr_v3_dot(n, half);
       if (cos_h > 0.0)
         h += f->specular * pow(cos_h, 1.0 / f->roughness);
     }
@@ -520,7 +557,8 @@ static zr_rgb shade_layer(const zr_tracer *tr, const surface *s,
   if (tx->map) {
     const zr_texture *b;
     double t;
-    const zr_texture *a = zr__texture_pick(tx, s->p, &b, &t);
+    /* The slope pattern picks by the surface's own normal. */
+    const zr_texture *a = zr__texture_pick_n(tx, s->p, n_geo, &b, &t);
     surface ls = *s;
     ls.layer = upper;
     zr_rgb c = shade_layers(tr, &ls, n_geo, a, level, weight * (1 - t),
@@ -539,7 +577,7 @@ static zr_rgb shade_layer(const zr_tracer *tr, const surface *s,
     n = zr__normal_perturb(tx->normal, s->p, n);
   ls.n = s->entering ? n : zr_v3_neg(n);
   ls.finish = tx->finish;
-  ls.colour = zr__pigment_at(tx->pigment, s->p);
+  ls.colour = zr__pigment_eval_n(tx->pigment, s->p, n);
   ls.layer = upper;
   return shade(tr, &ls, level, weight, media);
 }
@@ -628,7 +666,7 @@ zr_rgb zr__trace_ray(const zr_tracer *tracer, const zr_ray *ray, int level,
   s.n = s.entering ? n : zr_v3_neg(n);
   s.object = hit.object;
   s.finish = tx->finish;
-  s.colour = zr__pigment_at(tx->pigment, s.p);
+  s.colour = zr__pigment_eval_n(tx->pigment, s.p, n);
   s.offset = zr__surface_offset(s.p);
   s.layer = false;
   if (tracer->radiosity_only) {
