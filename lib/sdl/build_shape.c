@@ -97,17 +97,46 @@ zr_object *zr__sdl_polygon_new(zr_sdl_parser *p, const zr_sdl_loc *loc,
   return o->u.polygon.points ? o : NULL;
 }
 
+/*
+ * One point of a polygon, prism, lathe or sor, which announce their
+ * number of points first: more than announced is an error, and so is a
+ * point of the wrong size where the shape wants 2-D ones (want2d names
+ * the components in the message; NULL takes any vector).
+ */
+static bool add_point(zr_sdl_parser *p, const char *shape, zr_vec3 *points,
+                      size_t *n_points, size_t n_expected,
+                      const char *want2d, const zr_sdl_expr *point,
+                      const zr_sdl_loc *point_loc) {
+  if (*n_points == n_expected) {
+    zr__sdl_error(p, ZR_ESCENE, point_loc,
+                  "the %s has more points than the %zu it announced", shape,
+                  n_expected);
+    return false;
+  }
+  if (want2d && point->dim != 2) {
+    zr__sdl_error(p, ZR_ESCENE, point_loc,
+                  "a %s's points are 2-D vectors %s", shape, want2d);
+    return false;
+  }
+  return zr__sdl_want_vector(p, point, point_loc, &points[(*n_points)++]);
+}
+
+/* Checks that a shape got the points it announced. */
+static bool all_points(zr_sdl_parser *p, const char *shape, size_t n,
+                       size_t n_expected, const zr_sdl_loc *loc) {
+  if (n >= n_expected)
+    return true;
+  zr__sdl_error(p, ZR_ESCENE, loc,
+                "the %s has %zu points, not the %zu it announced", shape, n,
+                n_expected);
+  return false;
+}
+
 bool zr__sdl_polygon_point(zr_sdl_parser *p, zr_object *o,
                            const zr_sdl_expr *point,
                            const zr_sdl_loc *point_loc) {
-  if (o->u.polygon.n_points == o->u.polygon.n_expected) {
-    zr__sdl_error(p, ZR_ESCENE, point_loc,
-                  "the polygon has more points than the %zu it announced",
-                  o->u.polygon.n_expected);
-    return false;
-  }
-  return zr__sdl_want_vector(p, point, point_loc,
-                             &o->u.polygon.points[o->u.polygon.n_points++]);
+  return add_point(p, "polygon", o->u.polygon.points, &o->u.polygon.n_points,
+                   o->u.polygon.n_expected, NULL, point, point_loc);
 }
 
 static bool same_point(zr_vec3 a, zr_vec3 b) {
@@ -174,12 +203,8 @@ bool zr__sdl_polygon_done(zr_sdl_parser *p, zr_object *o,
                           const zr_sdl_loc *loc) {
   const zr_vec3 *pt = o->u.polygon.points;
   size_t n = o->u.polygon.n_points;
-  if (n < o->u.polygon.n_expected) {
-    zr__sdl_error(p, ZR_ESCENE, loc,
-                  "the polygon has %zu points, not the %zu it announced",
-                  n, o->u.polygon.n_expected);
+  if (!all_points(p, "polygon", n, o->u.polygon.n_expected, loc))
     return false;
-  }
   zr_vec3 nrm = zr_v3(0, 0, 0);
   size_t n_edges = 0;
   if (!each_edge(pt, n, newell_edge, &nrm))
@@ -290,19 +315,8 @@ bool zr__sdl_prism_size(zr_sdl_parser *p, zr_object *o,
 bool zr__sdl_prism_point(zr_sdl_parser *p, zr_object *o,
                          const zr_sdl_expr *point,
                          const zr_sdl_loc *point_loc) {
-  if (o->u.prism.n_points == o->u.prism.n_expected) {
-    zr__sdl_error(p, ZR_ESCENE, point_loc,
-                  "the prism has more points than the %zu it announced",
-                  o->u.prism.n_expected);
-    return false;
-  }
-  if (point->dim != 2) {
-    zr__sdl_error(p, ZR_ESCENE, point_loc,
-                  "a prism's points are 2-D vectors <x, z>");
-    return false;
-  }
-  return zr__sdl_want_vector(p, point, point_loc,
-                             &o->u.prism.points[o->u.prism.n_points++]);
+  return add_point(p, "prism", o->u.prism.points, &o->u.prism.n_points,
+                   o->u.prism.n_expected, "<x, z>", point, point_loc);
 }
 
 /* The pieces of curve, filled in order; seg has room for cap. */
@@ -413,12 +427,8 @@ bool zr__sdl_prism_done(zr_sdl_parser *p, zr_object *o,
                         const zr_sdl_loc *loc) {
   const zr_vec3 *pt = o->u.prism.points;
   size_t n = o->u.prism.n_points;
-  if (n < o->u.prism.n_expected) {
-    zr__sdl_error(p, ZR_ESCENE, loc,
-                  "the prism has %zu points, not the %zu it announced", n,
-                  o->u.prism.n_expected);
+  if (!all_points(p, "prism", n, o->u.prism.n_expected, loc))
     return false;
-  }
   curve c = {zr__sdl_alloc(p, 8 * (n + 1) * sizeof(double)), 0, n + 1};
   if (!c.seg)
     return false;
@@ -500,31 +510,16 @@ bool zr__sdl_lathe_count(zr_sdl_parser *p, zr_object *o,
 bool zr__sdl_lathe_point(zr_sdl_parser *p, zr_object *o,
                          const zr_sdl_expr *point,
                          const zr_sdl_loc *point_loc) {
-  if (o->u.lathe.n_points == o->u.lathe.n_expected) {
-    zr__sdl_error(p, ZR_ESCENE, point_loc,
-                  "the lathe has more points than the %zu it announced",
-                  o->u.lathe.n_expected);
-    return false;
-  }
-  if (point->dim != 2) {
-    zr__sdl_error(p, ZR_ESCENE, point_loc,
-                  "a lathe's points are 2-D vectors <r, y>");
-    return false;
-  }
-  return zr__sdl_want_vector(p, point, point_loc,
-                             &o->u.lathe.points[o->u.lathe.n_points++]);
+  return add_point(p, "lathe", o->u.lathe.points, &o->u.lathe.n_points,
+                   o->u.lathe.n_expected, "<r, y>", point, point_loc);
 }
 
 bool zr__sdl_lathe_done(zr_sdl_parser *p, zr_object *o,
                         const zr_sdl_loc *loc) {
   const zr_vec3 *pt = o->u.lathe.points;
   size_t n = o->u.lathe.n_points;
-  if (n < o->u.lathe.n_expected) {
-    zr__sdl_error(p, ZR_ESCENE, loc,
-                  "the lathe has %zu points, not the %zu it announced", n,
-                  o->u.lathe.n_expected);
+  if (!all_points(p, "lathe", n, o->u.lathe.n_expected, loc))
     return false;
-  }
   curve c = {zr__sdl_alloc(p, 8 * n * sizeof(double)), 0, n};
   if (!c.seg)
     return false;
@@ -677,19 +672,8 @@ zr_object *zr__sdl_sor_new(zr_sdl_parser *p, const zr_sdl_loc *loc,
 bool zr__sdl_sor_point(zr_sdl_parser *p, zr_object *o,
                        const zr_sdl_expr *point,
                        const zr_sdl_loc *point_loc) {
-  if (o->u.sor.n_points == o->u.sor.n_expected) {
-    zr__sdl_error(p, ZR_ESCENE, point_loc,
-                  "the sor has more points than the %zu it announced",
-                  o->u.sor.n_expected);
-    return false;
-  }
-  if (point->dim != 2) {
-    zr__sdl_error(p, ZR_ESCENE, point_loc,
-                  "a sor's points are 2-D vectors <r, y>");
-    return false;
-  }
-  return zr__sdl_want_vector(p, point, point_loc,
-                             &o->u.sor.points[o->u.sor.n_points++]);
+  return add_point(p, "sor", o->u.sor.points, &o->u.sor.n_points,
+                   o->u.sor.n_expected, "<r, y>", point, point_loc);
 }
 
 /*
@@ -703,12 +687,8 @@ bool zr__sdl_sor_done(zr_sdl_parser *p, zr_object *o,
                       const zr_sdl_loc *loc) {
   const zr_vec3 *pt = o->u.sor.points;
   size_t n = o->u.sor.n_points;
-  if (n < o->u.sor.n_expected) {
-    zr__sdl_error(p, ZR_ESCENE, loc,
-                  "the sor has %zu points, not the %zu it announced", n,
-                  o->u.sor.n_expected);
+  if (!all_points(p, "sor", n, o->u.sor.n_expected, loc))
     return false;
-  }
   /* The curve's heights must rise from P(1) to P(n-2); the outer two
      points only set slopes and may share a neighbour's height (the
      manual's vase does), but not lie beyond it. */
