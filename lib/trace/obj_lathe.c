@@ -45,30 +45,6 @@ static bool covers(const zr_object *o, zr_vec3 p) {
 
 bool zr__lathe_inside(const zr_object *o, zr_vec3 p) { return covers(o, p); }
 
-typedef struct hit_list {
-  int n;
-  double t[ZR_SHAPE_MAX_CROSSINGS];
-  zr_vec3 normal[ZR_SHAPE_MAX_CROSSINGS];
-} hit_list;
-
-/* Keeps the nearest crossings, sorted. */
-static void keep(hit_list *l, double t, zr_vec3 n) {
-  int j = l->n;
-  if (j == ZR_SHAPE_MAX_CROSSINGS) {
-    if (t >= l->t[j - 1])
-      return;
-    j--;
-  } else {
-    l->n++;
-  }
-  while (j > 0 && l->t[j - 1] > t) {
-    l->t[j] = l->t[j - 1];
-    l->normal[j] = l->normal[j - 1];
-    j--;
-  }
-  l->t[j] = t;
-  l->normal[j] = n;
-}
 
 /* The outward normal at p on the piece seg at s. */
 static zr_vec3 lathe_normal(const zr_object *o, const double *seg, double s,
@@ -96,7 +72,7 @@ static void multiply_add(const double *a, const double *b, double k,
 
 static void piece_crossings(const zr_object *o, const double *seg,
                             zr_vec3 org, zr_vec3 dir, double tmin,
-                            double tmax, hit_list *l) {
+                            double tmax, zr_hit_list *l) {
   const double *r = seg, *y = seg + 4;
   double s[8];
   int n;
@@ -117,7 +93,7 @@ static void piece_crossings(const zr_object *o, const double *seg,
       if (!(t > tmin && t < tmax))
         continue;
       zr_vec3 p = zr_v3_madd(org, dir, t);
-      keep(l, t, lathe_normal(o, seg, s[k], p));
+      zr__hits_keep(l, t, lathe_normal(o, seg, s[k], p));
     }
     return;
   }
@@ -140,7 +116,7 @@ static void piece_crossings(const zr_object *o, const double *seg,
       if (!(ts[i] > tmin && ts[i] < tmax))
         continue;
       zr_vec3 p = zr_v3_madd(org, dir, ts[i]);
-      keep(l, ts[i], lathe_normal(o, seg, s[k], p));
+      zr__hits_keep(l, ts[i], lathe_normal(o, seg, s[k], p));
     }
   }
 }
@@ -158,7 +134,7 @@ int zr__lathe_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
     return 0;
   if (!(fmax(tmin, s0) < fmin(tmax, s1)))
     return 0;
-  hit_list l = {0, {0}, {{0, 0, 0}}};
+  zr_hit_list l = {0, {0}, {{0, 0, 0}}};
   for (size_t i = 0; i < o->u.lathe.n_seg; i++)
     piece_crossings(o, o->u.lathe.seg + 8 * i, org, dir, tmin, tmax, &l);
   for (int i = 0; i < l.n; i++) {

@@ -101,14 +101,7 @@ void zr__prism_bounds(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi) {
                              fmax(h.z * y0, h.z * y1)));
 }
 
-typedef struct hit_list {
-  int n;
-  double t[ZR_SHAPE_MAX_CROSSINGS];
-  zr_vec3 normal[ZR_SHAPE_MAX_CROSSINGS];
-} hit_list;
-
-/* Keeps the nearest crossings, sorted. */
-static void keep(hit_list *l, double t, zr_vec3 n) {
+void zr__hits_keep(zr_hit_list *l, double t, zr_vec3 n) {
   int j = l->n;
   if (j == ZR_SHAPE_MAX_CROSSINGS) {
     if (t >= l->t[j - 1])
@@ -138,7 +131,7 @@ static zr_vec3 outward(const zr_object *o, zr_vec3 p, zr_vec3 n) {
 }
 
 static void wall_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
-                           double tmin, double tmax, hit_list *l) {
+                           double tmin, double tmax, zr_hit_list *l) {
   zr_vec3 m = zr_v3_cross(org, dir);
   double dd = zr_v3_dot(dir, dir);
   for (size_t i = 0; i < o->u.prism.n_seg; i++) {
@@ -181,13 +174,13 @@ static void wall_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
       zr_vec3 p = zr_v3_madd(org, dir, t);
       if (p.y < o->u.prism.y0 || p.y > o->u.prism.y1)
         continue;
-      keep(l, t, outward(o, p, nrm));
+      zr__hits_keep(l, t, outward(o, p, nrm));
     }
   }
 }
 
 static void cap_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
-                          double tmin, double tmax, hit_list *l) {
+                          double tmin, double tmax, zr_hit_list *l) {
   if (o->u.prism.open || dir.y == 0.0)
     return;
   double h[2] = {o->u.prism.y0, o->u.prism.y1};
@@ -198,7 +191,7 @@ static void cap_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
     zr_vec3 p = zr_v3_madd(org, dir, t);
     p.y = h[i];
     if (covers_at(o, p))
-      keep(l, t, zr_v3(0.0, i == 0 ? -1.0 : 1.0, 0.0));
+      zr__hits_keep(l, t, zr_v3(0.0, i == 0 ? -1.0 : 1.0, 0.0));
   }
 }
 
@@ -217,7 +210,7 @@ int zr__prism_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
   tmax = fmin(tmax, s1 + pad);
   if (!(tmin < tmax))
     return 0;
-  hit_list l = {0, {0}, {{0, 0, 0}}};
+  zr_hit_list l = {0, {0}, {{0, 0, 0}}};
   wall_crossings(o, org, dir, tmin, tmax, &l);
   cap_crossings(o, org, dir, tmin, tmax, &l);
   for (int i = 0; i < l.n; i++) {

@@ -18,6 +18,15 @@
 
 #define ZR_SHAPE_MAX_CROSSINGS 4
 
+/* The nearest crossings found so far, sorted (prism, lathe, sor). */
+typedef struct zr_hit_list {
+  int n;
+  double t[ZR_SHAPE_MAX_CROSSINGS];
+  zr_vec3 normal[ZR_SHAPE_MAX_CROSSINGS];
+} zr_hit_list;
+/* Keeps crossing (t, n) if it is among the nearest (obj_prism.c). */
+void zr__hits_keep(zr_hit_list *l, double t, zr_vec3 n);
+
 int zr__torus_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
                         double tmin, double tmax, double t[4],
                         zr_vec3 normal[4]);

@@ -52,43 +52,19 @@ bool zr__sor_inside(const zr_object *o, zr_vec3 p) {
   return seg && p.x * p.x + p.z * p.z < profile(seg, p.y, NULL);
 }
 
-typedef struct hit_list {
-  int n;
-  double t[ZR_SHAPE_MAX_CROSSINGS];
-  zr_vec3 normal[ZR_SHAPE_MAX_CROSSINGS];
-} hit_list;
-
-/* Keeps the nearest crossings, sorted. */
-static void keep(hit_list *l, double t, zr_vec3 n) {
-  int j = l->n;
-  if (j == ZR_SHAPE_MAX_CROSSINGS) {
-    if (t >= l->t[j - 1])
-      return;
-    j--;
-  } else {
-    l->n++;
-  }
-  while (j > 0 && l->t[j - 1] > t) {
-    l->t[j] = l->t[j - 1];
-    l->normal[j] = l->normal[j - 1];
-    j--;
-  }
-  l->t[j] = t;
-  l->normal[j] = n;
-}
 
 static void wall_hit(const double *seg, zr_vec3 org, zr_vec3 dir, double t,
-                     double tmin, double tmax, hit_list *l) {
+                     double tmin, double tmax, zr_hit_list *l) {
   if (!(t > tmin && t < tmax))
     return;
   zr_vec3 p = zr_v3_madd(org, dir, t);
   double slope;
   profile(seg, fmin(seg[1], fmax(seg[0], p.y)), &slope);
-  keep(l, t, zr_v3(2.0 * p.x, -slope, 2.0 * p.z));
+  zr__hits_keep(l, t, zr_v3(2.0 * p.x, -slope, 2.0 * p.z));
 }
 
 static void segment_crossings(const double *seg, zr_vec3 org, zr_vec3 dir,
-                              double tmin, double tmax, hit_list *l) {
+                              double tmin, double tmax, zr_hit_list *l) {
   double a = dir.x * dir.x + dir.z * dir.z;
   double b = 2.0 * (org.x * dir.x + org.z * dir.z);
   double k = org.x * org.x + org.z * org.z;
@@ -133,7 +109,7 @@ int zr__sor_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
                         &s1) ||
       !(fmax(tmin, s0) < fmin(tmax, s1)))
     return 0;
-  hit_list l = {0, {0}, {{0, 0, 0}}};
+  zr_hit_list l = {0, {0}, {{0, 0, 0}}};
   for (size_t i = 0; i < o->u.sor.n_seg; i++)
     segment_crossings(o->u.sor.seg + 6 * i, org, dir, tmin, tmax, &l);
   if (!o->u.sor.open && dir.y != 0.0) {
@@ -148,7 +124,7 @@ int zr__sor_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
         continue;
       zr_vec3 p = zr_v3_madd(org, dir, tc);
       if (p.x * p.x + p.z * p.z <= rr[i])
-        keep(&l, tc, zr_v3(0.0, i == 0 ? -1.0 : 1.0, 0.0));
+        zr__hits_keep(&l, tc, zr_v3(0.0, i == 0 ? -1.0 : 1.0, 0.0));
     }
   }
   for (int i = 0; i < l.n; i++) {
