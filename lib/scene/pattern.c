@@ -17,7 +17,11 @@
  *   gradient  p . v / |v|;  radial: the angle about +y from +x toward
  *             -z over 360 degrees;  onion |p|;  wood |(x, y)|;
  *             marble x;  leopard ((sin x + sin y + sin z) / 3)^2;
- *   planar, spherical, cylindrical, boxed: 1 - min(1, distance).
+ *   planar, spherical, cylindrical, boxed: 1 - min(1, distance);
+ *   slope     1 - angle(normal, direction) / pi, ranges and altitude
+ *             as the manual's "Slope Pattern" says, measured against
+ *             POV-Ray renders; the only pattern that needs the surface
+ *             normal (zr__pattern_eval_n; a zero normal elsewhere).
  * Block patterns evaluate at the point moved by 1e-9 along every axis,
  * so a plane lying exactly on a cell boundary (y = 0) shows one cell as
  * it does in POV-Ray, not rounding noise.
@@ -217,6 +221,20 @@ static double abs_fractal(zr_vec3 p, int octaves, double f0) {
 }
 
 static double clamp01(double v) { return v < 0 ? 0 : v > 1 ? 1 : v; }
+
+/* wrinkles as POV-Ray 3.7 sums it for its default noise_generator 2:
+   ten octaves of clamp(2 noise - 0.5), weights 1, 1/2, 1/4 ..., at
+   frequencies 1, 2, 4 ..., halved.  (The older sum of |noise| put
+   almost no values above 0.55, where povray has about half.) */
+static double wrinkles(zr_vec3 p) {
+  double sum = 0, omega = 1, lambda = 1;
+  for (int i = 0; i < 10; i++) {
+    sum += omega * clamp01(2 * zr__noise(zr_v3_scale(p, lambda)) - 0.5);
+    omega *= 0.5;
+    lambda *= 2;
+  }
+  return sum / 2;
+}
 
 /* A pseudo-random point of the unit cube from a hash. */
 static zr_vec3 hashed_point(int64_t x, int64_t y, int64_t z) {
@@ -515,7 +533,7 @@ static double raw_value(const zr_pattern *pt, zr_vec3 p) {
   case ZR_PAT_WOOD:
     return sqrt(p.x * p.x + p.y * p.y);
   case ZR_PAT_WRINKLES:
-    return clamp01(0.5 * abs_fractal(p, 10, 1.0));
+    return wrinkles(p);
   case ZR_PAT_MANDEL:
   case ZR_PAT_JULIA:
     return zr__pattern_fractal(pt, p);

@@ -47,6 +47,7 @@
 #include <stddef.h>
 
 #include "scene/pattern.h"
+#include "scene/warp.h"
 
 #define PI 3.14159265358979323846
 
@@ -218,6 +219,16 @@ static double value_at(const zr_pattern *pt, zr_vec3 p, zr_vec3 n) {
 static zr_colour pigment_map_eval(const zr_pigment *pg, zr_vec3 p,
                                   zr_vec3 n) {
   const zr_map *m = pg->pigment_map;
+  /* POV-Ray evaluates the map's pigments at the warped point too
+     (lib/scene/warp.c), so the warps move them all, as for average. */
+  const zr_pattern *pt = &pg->pattern;
+  zr_pattern unwarped;
+  if (pt->n_warps > 0) {
+    p = zr__warp_point(pt->warps, pt->n_warps, p);
+    unwarped = *pt;
+    unwarped.n_warps = 0;
+    pt = &unwarped;
+  }
   if (pg->pattern.kind == ZR_PAT_AVERAGE) {
     zr_colour sum = zr_colour5(0, 0, 0, 0, 0);
     double total = 0;
@@ -233,7 +244,7 @@ static zr_colour pigment_map_eval(const zr_pigment *pg, zr_vec3 p,
     return zr_colour5(sum.r / total, sum.g / total, sum.b / total,
                       sum.f / total, sum.t / total);
   }
-  double v = value_at(&pg->pattern, p, n);
+  double v = value_at(pt, p, n);
   size_t i;
   double t;
   zr__map_find(m, v, zr__pattern_is_block(pg->pattern.kind), &i, &t);

@@ -147,10 +147,29 @@ bool zr__sdl_normal_map_set(zr_sdl_parser *p, zr_normal *nm,
   return true;
 }
 
+static const zr_texture *transformed(zr_sdl_parser *p, const zr_texture *tx,
+                                     const zr_transform *t);
+
 bool zr__sdl_texture_map_set(zr_sdl_parser *p, zr_texture *tx,
                              const zr_map *m, const zr_sdl_loc *loc) {
   if (!block_fits(p, tx->pattern.kind, m, loc))
     return false;
+  if (tx->transform) {
+    /* Transforms written before the map move its textures too: POV-Ray
+       renders "gradient x scale 10 texture_map { [0 T] [1 T] }" with T
+       scaled by 10 (T a gradient y pigment: 0.063 to 0.937 over y = 0
+       to 10). */
+    zr_map *moved = zr__sdl_map_new(p);
+    if (!moved)
+      return false;
+    for (size_t i = 0; i < m->n; i++) {
+      zr_map_entry e = m->entries[i];
+      if (!(e.u.texture = transformed(p, e.u.texture, tx->transform)) ||
+          !append(p, moved, &e))
+        return false;
+    }
+    m = moved;
+  }
   tx->map = m;
   return true;
 }
@@ -218,7 +237,10 @@ static const zr_texture *transformed(zr_sdl_parser *p, const zr_texture *tx,
 
 bool zr__sdl_texture_transform_more(zr_sdl_parser *p, zr_texture *tx,
                                     const zr_transform *t) {
-  if (tx->map) {
+  /* The pattern moves even before its map is given, as in "gradient y
+     scale 10 texture_map { ... }" (slopemt_36.pov): POV-Ray renders it
+     the same as with the scale after the map. */
+  if (tx->map || tx->pattern.kind != ZR_PAT_NONE) {
     zr_transform *c = zr__sdl_alloc(p, sizeof *c);
     if (!c)
       return false;
@@ -228,6 +250,8 @@ bool zr__sdl_texture_transform_more(zr_sdl_parser *p, zr_texture *tx,
       zr__transform_identity(c);
     zr__transform_compose(c, t);
     tx->transform = c;
+  }
+  if (tx->map) {
     zr_map *m = zr__sdl_map_new(p);
     if (!m)
       return false;

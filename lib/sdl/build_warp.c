@@ -12,7 +12,8 @@
  *
  * Checks beyond the grammar's, as POV-Ray 3.7 makes them: repeat's
  * direction has exactly one non-zero component; flip's non-zero
- * components flip.  We also reject a black hole radius that is not
+ * components flip; a repeated black hole is fitted into its block
+ * (fit_repeated_hole).  We also reject a black hole radius that is not
  * positive and a zero orientation or planar normal (these are divided
  * by), and normalise orientations and the planar normal.
  */
@@ -128,6 +129,24 @@ bool zr__sdl_warp_new(zr_sdl_parser *p, int kind, const zr_sdl_expr *a,
   }
 }
 
+/* On each repeated axis povray 3.7 moves the centre up to at least the
+   radius and widens the spacing to at least centre + radius, so each
+   copy lies in its block (measured: black_hole <0.5,0,0>, 1 repeat
+   <3,0,0> acts on [0, 2] in every block of 3; <2.8,0,0>, 0.6 repeats
+   every 3.4). */
+static void fit_repeated_hole(zr_warp *w) {
+  double *c[3] = {&w->centre.x, &w->centre.y, &w->centre.z};
+  double *r[3] = {&w->repeat.x, &w->repeat.y, &w->repeat.z};
+  for (int i = 0; i < 3; i++) {
+    if (!(*r[i] > 0))
+      continue;
+    if (*c[i] < w->radius)
+      *c[i] = w->radius;
+    if (*r[i] < *c[i] + w->radius)
+      *r[i] = *c[i] + w->radius;
+  }
+}
+
 /* Whether an item belongs to a warp of this kind. */
 static bool item_fits(zr_warp_kind k, int token) {
   switch (token) {
@@ -192,7 +211,10 @@ bool zr__sdl_warp_item(zr_sdl_parser *p, zr_sdl_pmod *wm,
     w->inverse = true;
     return true;
   case T_REPEAT:
-    return zr__sdl_want_vector(p, e, loc, &w->repeat);
+    if (!zr__sdl_want_vector(p, e, loc, &w->repeat))
+      return false;
+    fit_repeated_hole(w);
+    return true;
   case T_ORIENTATION:
     return want_unit(p, e, loc, "orientation", &w->orientation);
   case T_DIST_EXP:

@@ -42,6 +42,17 @@
 
 #include <complex.h>
 #include <math.h>
+#include <string.h>
+
+/* C11's CMPLX, which glibc leaves out for compilers it does not know to
+   have __builtin_complex (clang, as the fuzz build uses): a complex is
+   an array of its two parts (C11 6.2.5). */
+static double complex complex_of(double re, double im) {
+  double parts[2] = {re, im};
+  double complex z;
+  memcpy(&z, parts, sizeof z);
+  return z;
+}
 
 /* Bisection stops when the bracket is this small, relative to the
    bounding radius (POV-Ray's Fractal_Tolerance is 1e-7 units). */
@@ -138,8 +149,8 @@ static void quaternion_step(const double q[4], int power, double out[4],
 /* The duplex form of a hypercomplex number and back. */
 static void to_duplex(const double h[4], double complex *a,
                       double complex *b) {
-  *a = CMPLX(h[0] - h[3], h[1] + h[2]);
-  *b = CMPLX(h[0] + h[3], h[1] - h[2]);
+  *a = complex_of(h[0] - h[3], h[1] + h[2]);
+  *b = complex_of(h[0] + h[3], h[1] - h[2]);
 }
 
 static void from_duplex(double complex a, double complex b, double h[4]) {
@@ -192,8 +203,9 @@ static double complex part_function(const struct zr_julia *j,
   case ZR_JULIA_ATANH:
     return 0.5 * clog((1.0 + z) / (1.0 - z));
   case ZR_JULIA_PWR:
-    return z != 0.0 ? cexp(CMPLX(j->exponent[0], j->exponent[1]) * clog(z))
-                    : 0.0;
+    if (z == 0.0)
+      return 0.0;
+    return cexp(complex_of(j->exponent[0], j->exponent[1]) * clog(z));
   }
   return z * z;
 }

@@ -26,7 +26,10 @@
  * 3.7 (the tests in tests/test_shade.c state the measured values).
  *
  * A light only shines on the side of the surface that faces the viewer,
- * so nothing lights an opaque surface through itself; shadow rays pass
+ * so nothing lights an opaque surface through itself (unless the object
+ * has double_illuminate, which lights the back as the front); irid
+ * tints each light's colour by thin-film interference (zr__irid_tint);
+ * shadow rays pass
  * through transparent surfaces, each crossing scaling the light by its
  * f * C + t.  Light is not attenuated with distance unless the light
  * fades; spotlights, cylinder, parallel and area lights are shaped in
@@ -557,8 +560,10 @@ static zr_rgb shade_layer(const zr_tracer *tr, const surface *s,
   if (tx->map) {
     const zr_texture *b;
     double t;
-    /* The slope pattern picks by the surface's own normal. */
-    const zr_texture *a = zr__texture_pick_n(tx, s->p, n_geo, &b, &t);
+    /* The slope pattern picks by the normal on the viewer's side (povray
+       3.7 renders a plane seen from its back with the normal turned). */
+    zr_vec3 facing = s->entering ? n_geo : zr_v3_neg(n_geo);
+    const zr_texture *a = zr__texture_pick_n(tx, s->p, facing, &b, &t);
     surface ls = *s;
     ls.layer = upper;
     zr_rgb c = shade_layers(tr, &ls, n_geo, a, level, weight * (1 - t),
@@ -577,7 +582,7 @@ static zr_rgb shade_layer(const zr_tracer *tr, const surface *s,
     n = zr__normal_perturb(tx->normal, s->p, n);
   ls.n = s->entering ? n : zr_v3_neg(n);
   ls.finish = tx->finish;
-  ls.colour = zr__pigment_eval_n(tx->pigment, s->p, n);
+  ls.colour = zr__pigment_eval_n(tx->pigment, s->p, ls.n);
   ls.layer = upper;
   return shade(tr, &ls, level, weight, media);
 }
@@ -666,7 +671,7 @@ zr_rgb zr__trace_ray(const zr_tracer *tracer, const zr_ray *ray, int level,
   s.n = s.entering ? n : zr_v3_neg(n);
   s.object = hit.object;
   s.finish = tx->finish;
-  s.colour = zr__pigment_eval_n(tx->pigment, s.p, n);
+  s.colour = zr__pigment_eval_n(tx->pigment, s.p, s.n);
   s.offset = zr__surface_offset(s.p);
   s.layer = false;
   if (tracer->radiosity_only) {
