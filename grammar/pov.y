@@ -405,6 +405,7 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %token T_FALLOFF "falloff"
 %token T_FALSE "false"
 %token T_FILTER "filter"
+%token T_GAMMA "gamma"
 %token T_FINISH "finish"
 %token T_FLOOR "floor"
 %token T_FRESNEL "fresnel"
@@ -504,6 +505,7 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %token T_TTF "ttf"
 %token T_UV_INDICES "uv_indices"
 %token T_UV_VECTORS "uv_vectors"
+%token T_UV_MAPPING "uv_mapping"
 %token T_VERTEX_VECTORS "vertex_vectors"
 /* CSG, quadrics and object modifiers (lib/sdl/build_object.c). */
 %token T_BOUNDED_BY "bounded_by"
@@ -687,7 +689,7 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
    (comparisons, logic, '? :'), strings and arrays. */
 %type <expr> cexpr
 %type <list> args dims
-%type <str> str_expr str_list hf_file
+%type <str> str_expr str_list hf_file image_map_file
 %type <decl> decl_target
 %type <token> decl_end arg_end str_func init_begin
 %type <object> object object_body object_head union_head union_body
@@ -1946,6 +1948,7 @@ object_mod:
       $$ = make_mod(ZR_SDL_MOD_IGNORED, NULL);
     }
 | T_INVERSE            { $$ = make_mod(ZR_SDL_MOD_INVERSE, NULL); }
+| T_UV_MAPPING         { $$ = make_mod(ZR_SDL_MOD_UV_MAPPING, NULL); }
 | T_INTERIOR_TEXTURE '{' texture_body '}'
     {
       TRY(zr__sdl_texture_done(p, $3));
@@ -2140,6 +2143,8 @@ pigment_body:
       $$ = $1;
     }
 | pigment_body colour_map  { $1->colour_map = $2; $$ = $1; }
+/* uv_mapping ("UV Mapping"): the pattern takes the surface's (u, v, 0). */
+| pigment_body T_UV_MAPPING  { $1->uv_mapping = true; $$ = $1; }
 /* quick_color only matters to POV-Ray's low quality previews. */
 | pigment_body T_QUICK_COLOUR colour_value  { $$ = $1; }
 ;
@@ -2564,6 +2569,7 @@ normal_body:
     { TRY(zr__sdl_normal_accuracy(p, $1, &$3, &@3)); $$ = $1; }
 | normal_body transform
     { TRY(zr__sdl_normal_transform(p, $1, $2)); $$ = $1; }
+| normal_body T_UV_MAPPING  { $1->uv_mapping = true; $$ = $1; }
 | normal_body pattern_mod
     {
       TRY(zr__sdl_pattern_mod_in(p, &$1->pattern, $1->transform, &$2));
@@ -2574,11 +2580,19 @@ normal_body:
 /* ---- image maps (reference manual, "Image Map") ---- */
 
 image_map_head:
-  str_expr             { TRY($$ = zr__sdl_image_map_new(p, $1, &@1)); }
-| T_PNG str_expr       { TRY($$ = zr__sdl_image_map_new(p, $2, &@2)); }
-| T_JPEG str_expr      { TRY($$ = zr__sdl_image_map_new(p, $2, &@2)); }
-| T_PPM str_expr       { TRY($$ = zr__sdl_image_map_new(p, $2, &@2)); }
-| T_PGM str_expr       { TRY($$ = zr__sdl_image_map_new(p, $2, &@2)); }
+  image_map_file
+    { TRY($$ = zr__sdl_image_map_new(p, $1, &@1, NULL, NULL)); }
+/* "Image File Gamma": gamma must follow the file name. */
+| image_map_file T_GAMMA expr
+    { TRY($$ = zr__sdl_image_map_new(p, $1, &@1, &$3, &@3)); }
+;
+
+image_map_file:
+  str_expr
+| T_PNG str_expr       { $$ = $2; @$ = @2; }
+| T_JPEG str_expr      { $$ = $2; @$ = @2; }
+| T_PPM str_expr       { $$ = $2; @$ = @2; }
+| T_PGM str_expr       { $$ = $2; @$ = @2; }
 ;
 
 image_map_body:
@@ -2593,6 +2607,16 @@ image_map_body:
     { TRY(zr__sdl_image_map_mod(p, $1, T_FILTER, &$4, &@4)); $$ = $1; }
 | image_map_body T_TRANSMIT T_ALL expr
     { TRY(zr__sdl_image_map_mod(p, $1, T_TRANSMIT, &$4, &@4)); $$ = $1; }
+| image_map_body T_FILTER expr ',' expr
+    {
+      TRY(zr__sdl_image_map_index(p, $1, T_FILTER, &$3, &@3, &$5, &@5));
+      $$ = $1;
+    }
+| image_map_body T_TRANSMIT expr ',' expr
+    {
+      TRY(zr__sdl_image_map_index(p, $1, T_TRANSMIT, &$3, &@3, &$5, &@5));
+      $$ = $1;
+    }
 ;
 
 finish:
@@ -2701,6 +2725,15 @@ reflection:
       memset(&$$, 0, sizeof $$);
       TRY(zr__sdl_want_rgb(p, &$1, &@1, &$$.min));
       TRY(zr__sdl_want_rgb(p, &$3, &@3, &$$.max));
+      $$.max_given = true;
+    }
+/* "reflection { 0.0 1.0 fresnel on }" (gamma_showcase.pov): POV-Ray
+   takes the maximum without its comma when it is a plain number. */
+| colour_value T_NUMBER
+    {
+      memset(&$$, 0, sizeof $$);
+      TRY(zr__sdl_want_rgb(p, &$1, &@1, &$$.min));
+      $$.max = zr_rgb3($2, $2, $2);
       $$.max_given = true;
     }
 | reflection T_EXPONENT expr
@@ -2824,6 +2857,13 @@ texture_body:
 | texture_body texture_map
     { TRY(zr__sdl_texture_map_set(p, $1, $2, &@2)); $$ = $1; }
 /* In a layered texture these change the top layer (build_texture.c). */
+| texture_body T_UV_MAPPING
+    {
+      zr_texture *top;
+      TRY(top = zr__sdl_texture_top(p, $1));
+      top->uv_mapping = true;
+      $$ = $1;
+    }
 | texture_body pigment
     {
       zr_texture *top;

@@ -153,6 +153,10 @@ static void test_function_captures_floats(void **state) {
   assert_true(value(f, d, "F(3)") == 6);
   assert_true(value(f, d, "G(2, 0, 0)") == 8);
   assert_true(value(f, d, "F(3) + K") == 16);
+  /* Built-in constants are constants in functions too (trace2.pov puts
+     clock in one): a still image's clock is 0, tau is 2 pi. */
+  d = "#declare H = function { x + clock + tau }\n";
+  assert_true(fabs(value(f, d, "H(1, 0, 0)") - (1 + 2 * M_PI)) < 1e-12);
 }
 
 static void test_function_nested_calls(void **state) {

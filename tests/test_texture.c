@@ -84,6 +84,18 @@ static void test_texture_colour_lists_without_commas(void **state) {
   assert_colour(pg->list[1], 0.5, 0.5, 0.5, 0, 0.5);
 }
 
+/* gamma_showcase.pov writes "reflection { 0.0 1.0 fresnel on }": the
+   maximum may follow without a comma when it is a plain number. */
+static void test_texture_reflection_without_comma(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f, "sphere { 0, 1 finish { reflection { 0.1 0.9 "
+                        "fresnel on } } }");
+  const zr_finish *fin = first_texture(s)->finish;
+  assert_true(fabs(fin->reflection.r - 0.1) < EPS);
+  assert_true(fabs(fin->reflection_max.g - 0.9) < EPS);
+  assert_true(fin->reflection_fresnel);
+}
+
 static void test_texture_average_weights(void **state) {
   fixture *f = *state;
   zr_scene *s = good(f, "sphere { 0, 1 pigment { average pigment_map {"
@@ -298,6 +310,7 @@ int main(void) {
       cmocka_unit_test(test_texture_pigment_map_blends),
       cmocka_unit_test(test_texture_block_pigments_and_transform),
       cmocka_unit_test(test_texture_colour_lists_without_commas),
+      cmocka_unit_test(test_texture_reflection_without_comma),
       cmocka_unit_test(test_texture_average_weights),
       cmocka_unit_test(test_texture_pigment_pattern_grey),
       cmocka_unit_test(test_texture_legacy_colour_map),

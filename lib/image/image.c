@@ -57,6 +57,10 @@ ZR_API zr_status zr_image_new(int width, int height, zr_image **out) {
   }
   image->width = width;
   image->height = height;
+  image->indices = NULL;
+  image->palette_size = 0;
+  image->codes = NULL;
+  image->maxval = 0;
   *out = image;
   return ZR_OK;
 }
@@ -86,6 +90,8 @@ ZR_API void zr_image_free(zr_image *image) {
   if (!image)
     return;
   free(image->pixels);
+  free(image->indices);
+  free(image->codes);
   free(image);
 }
 

@@ -19,6 +19,16 @@ struct zr_image {
   int width;
   int height;
   float *pixels; /* width * height * 3 linear floats */
+  /* Palette files (PNG colour type 3) only, else NULL and 0: the palette
+     entry of each pixel, which image_map's "filter INDEX, AMOUNT" and
+     "transmit INDEX, AMOUNT" refer to. */
+  unsigned char *indices;
+  int palette_size;
+  /* PNG files only, else NULL: the stored code of each sample (three per
+     pixel, 0 .. maxval) before decoding, so that image_map's "gamma G"
+     can decode them again with the transfer it names. */
+  unsigned short *codes;
+  unsigned maxval;
 };
 
 /* Limits that keep a hostile header from asking for gigabytes. */

@@ -2,7 +2,9 @@
  * png.c - PNG reading and writing through libpng 1.6.
  *
  * Reading accepts every PNG colour type and depth (PNG specification,
- * section 11.2.2): palettes and grey are expanded to RGB, 1/2/4-bit
+ * section 11.2.2): palettes and grey are expanded to RGB (a palette
+ * image keeps its indices too, for image_map's per-index filter and
+ * transmit), 1/2/4-bit
  * samples widened to 8, 16-bit samples kept at full precision.  Alpha,
  * including a palette's tRNS transparency, is dropped, not composited:
  * a zr_image has no alpha and the colour of a transparent pixel is still
@@ -68,12 +70,18 @@ static void read_memory(png_structp png, png_bytep data, size_t length) {
 }
 
 /* Sets libpng's transformations so that every row is RGB (or RGBA, the
-   alpha to be skipped), 8 or 16 bit. */
+   alpha to be skipped), 8 or 16 bit, or for a palette image one 8-bit
+   index a pixel. */
 static void request_rgb(png_structp png, png_infop info) {
   int color_type = png_get_color_type(png, info);
   int depth = png_get_bit_depth(png, info);
-  if (color_type == PNG_COLOR_TYPE_PALETTE)
-    png_set_palette_to_rgb(png);
+  if (color_type == PNG_COLOR_TYPE_PALETTE) {
+    /* Palette rows stay indices, one byte each: decode_rows looks the
+       colours up itself and keeps the indices. */
+    png_set_packing(png);
+    png_set_interlace_handling(png);
+    return;
+  }
   if (color_type == PNG_COLOR_TYPE_GRAY && depth < 8)
     png_set_expand_gray_1_2_4_to_8(png);
   /* Alpha is dropped: stripped where libpng can, and skipped while
@@ -98,6 +106,29 @@ static float *transfer_table(png_structp png, png_infop info, int depth) {
   return zr__decode_table(maxval, ZR_TRANSFER_SRGB, 0.0);
 }
 
+/* Looks the colour of each palette index up, keeping the index.  An
+   index past the palette is an error (PNG specification, 11.2.3). */
+static zr_status expand_palette(png_job *job, png_const_colorp palette,
+                                int palette_size) {
+  zr_image *image = job->image;
+  size_t n = (size_t)image->width * (size_t)image->height;
+  for (size_t i = 0; i < n; i++) {
+    unsigned k = job->rows[i];
+    if (k >= (unsigned)palette_size) {
+      snprintf(job->message, sizeof job->message, "palette index %u "
+               "past the %d entries of the palette", k, palette_size);
+      return ZR_EFORMAT;
+    }
+    image->indices[i] = (unsigned char)k;
+    unsigned rgb[3] = {palette[k].red, palette[k].green, palette[k].blue};
+    for (size_t c = 0; c < 3; c++) {
+      image->codes[3 * i + c] = (unsigned short)rgb[c];
+      image->pixels[3 * i + c] = job->table[rgb[c]];
+    }
+  }
+  return ZR_OK;
+}
+
 /* Runs libpng; returns ZR_OK or leaves a message in job and says so. */
 static zr_status decode_rows(png_job *job) {
   if (setjmp(png_jmpbuf(job->png)))
@@ -112,7 +143,16 @@ static zr_status decode_rows(png_job *job) {
   int depth = png_get_bit_depth(job->png, job->info);
   size_t rowbytes = png_get_rowbytes(job->png, job->info);
   size_t channels = png_get_channels(job->png, job->info);
-  if ((channels != 3 && channels != 4) || (depth != 8 && depth != 16) ||
+  png_colorp palette = NULL;
+  int palette_size = 0;
+  if (png_get_color_type(job->png, job->info) == PNG_COLOR_TYPE_PALETTE &&
+      !png_get_PLTE(job->png, job->info, &palette, &palette_size)) {
+    snprintf(job->message, sizeof job->message, "palette image without "
+             "a PLTE chunk");
+    return ZR_EFORMAT;
+  }
+  if ((palette ? channels != 1 : channels != 3 && channels != 4) ||
+      (depth != 8 && depth != 16) ||
       rowbytes != (size_t)width * channels * (depth == 16 ? 2 : 1)) {
     snprintf(job->message, sizeof job->message,
              "unexpected row layout after conversion");
@@ -123,9 +163,17 @@ static zr_status decode_rows(png_job *job) {
   if (s != ZR_OK)
     return s;
   job->table = transfer_table(job->png, job->info, depth);
+  size_t n = (size_t)width * (size_t)height;
+  job->image->codes = malloc(n * 3 * sizeof *job->image->codes);
+  job->image->maxval = depth == 16 ? 65535u : 255u;
+  if (palette) {
+    job->image->indices = malloc(n);
+    job->image->palette_size = palette_size;
+  }
   job->rows = malloc(rowbytes * (size_t)height);
   job->row_ptrs = malloc((size_t)height * sizeof *job->row_ptrs);
-  if (!job->table || !job->rows || !job->row_ptrs)
+  if (!job->table || !job->rows || !job->row_ptrs || !job->image->codes ||
+      (palette && !job->image->indices))
     return zr__diag(job->ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s",
                     job->name, zr_status_str(ZR_ENOMEM));
   for (int y = 0; y < height; y++)
@@ -133,14 +181,17 @@ static zr_status decode_rows(png_job *job) {
   png_read_image(job->png, job->row_ptrs);
   png_read_end(job->png, NULL);
 
-  size_t n = (size_t)width * (size_t)height;
+  if (palette)
+    return expand_palette(job, palette, palette_size);
   float *px = job->image->pixels;
+  unsigned short *codes = job->image->codes;
   for (size_t i = 0; i < n; i++)
     for (size_t c = 0; c < 3; c++) {
       size_t k = i * channels + c;
       const png_byte *r = job->rows;
       unsigned v = depth == 16 ? (unsigned)(r[2 * k] << 8 | r[2 * k + 1])
                                : r[k];
+      codes[3 * i + c] = (unsigned short)v;
       px[3 * i + c] = job->table[v];
     }
   return ZR_OK;

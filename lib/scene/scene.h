@@ -237,6 +237,12 @@ typedef struct zr_image_map {
   bool once;
   int interpolate;     /* 0 none, 2 bilinear (others act as 2) */
   double filter_all, transmit_all;
+  /* Palette images only, else NULL and 0: each pixel's palette entry and
+     each entry's filter and transmit (2 * palette_size floats), set by
+     "filter all" and "filter INDEX, AMOUNT" in the order written. */
+  const unsigned char *indices;
+  int palette_size;
+  float *palette_ft;
 } zr_image_map;
 
 typedef enum zr_pigment_kind {
@@ -263,6 +269,9 @@ typedef struct zr_pigment {
      picks or blends these pigments, evaluated in this pigment's pattern
      space, so transforming the outer pigment moves them all. */
   const zr_map *pigment_map;
+  /* uv_mapping ("UV Mapping"): the pattern is evaluated at (u, v, 0),
+     the hit's surface coordinates, instead of the 3-D point. */
+  bool uv_mapping;
 } zr_pigment;
 
 /* normal { Pattern [Bump_Size] ... }: the shading normal tilts against
@@ -280,6 +289,7 @@ typedef struct zr_normal {
   /* accuracy: the step of the central differences that measure the
      slope, in pattern units ("Accuracy"; default 0.02). */
   double accuracy;
+  bool uv_mapping; /* as a pigment's */
 } zr_normal;
 
 typedef struct zr_finish {
@@ -387,6 +397,9 @@ typedef struct zr_texture {
   const zr_map *map;             /* patterned texture: NULL if plain */
   zr_pattern pattern;            /* the map's pattern */
   const zr_transform *transform; /* the map pattern's, as a pigment's */
+  /* texture { uv_mapping ... }: every pattern of this texture (pigment,
+     normal, map and the map's textures) uses the surface's (u, v, 0). */
+  bool uv_mapping;
 } zr_texture;
 
 /* ---- objects ---- */
@@ -659,6 +672,9 @@ struct zr_object {
   bool double_illuminate;
   bool inverse;
   bool hollow; /* stored for media; it changes nothing else */
+  /* uv_mapping as an object modifier: the textures given after it use
+     the surface's (u, v) and no longer move with the object. */
+  bool uv_mapping;
   /* clipped_by: only the surface inside this object remains (an
      intersection of the clipping objects); NULL when not clipped. */
   const zr_object *clip;

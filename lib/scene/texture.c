@@ -124,8 +124,12 @@ void zr__pigment_set_pattern(zr_pigment *pg, zr_pattern_kind kind) {
 static double frac(double v) { return v - floor(v); }
 
 static zr_colour pixel(const zr_image_map *im, int x, int y) {
-  const float *px = im->pixels + ((size_t)y * (size_t)im->width +
-                                  (size_t)x) * 3;
+  size_t i = (size_t)y * (size_t)im->width + (size_t)x;
+  const float *px = im->pixels + i * 3;
+  if (im->indices) {
+    const float *ft = im->palette_ft + 2 * (size_t)im->indices[i];
+    return zr_colour5(px[0], px[1], px[2], ft[0], ft[1]);
+  }
   return zr_colour5(px[0], px[1], px[2], im->filter_all, im->transmit_all);
 }
 

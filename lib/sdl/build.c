@@ -248,6 +248,8 @@ zr_pigment *zr__sdl_pigment_new(zr_sdl_parser *p, const zr_pigment *from) {
 
 bool zr__sdl_pigment_transform(zr_sdl_parser *p, zr_pigment *pg,
                                const zr_transform *t) {
+  if (p->moving_object && pg->uv_mapping)
+    return true;
   pg->transform = composed(p, pg->transform, t);
   return pg->transform != NULL;
 }
@@ -310,6 +312,8 @@ bool zr__sdl_texture_done(zr_sdl_parser *p, zr_texture *tx) {
 
 bool zr__sdl_texture_transform(zr_sdl_parser *p, zr_texture *tx,
                                const zr_transform *t) {
+  if (p->moving_object && tx->uv_mapping) /* layers above stay too */
+    return true;
   zr_pigment *pg = zr__sdl_pigment_new(
       p, tx->pigment ? tx->pigment : p->scene->default_texture->pigment);
   if (!pg || !zr__sdl_pigment_transform(p, pg, t))
@@ -564,6 +568,8 @@ bool zr__sdl_normal_pattern(zr_sdl_parser *p, zr_normal *nm, int kind,
 
 bool zr__sdl_normal_transform(zr_sdl_parser *p, zr_normal *nm,
                               const zr_transform *t) {
+  if (p->moving_object && nm->uv_mapping)
+    return true;
   nm->transform = composed(p, nm->transform, t);
   return nm->transform != NULL;
 }
@@ -615,8 +621,61 @@ char *zr__sdl_find_image(zr_sdl_parser *p, const char *name) {
   return find_image(p, name);
 }
 
+/*
+ * "gamma G" after an image_map's file name ("Image File Gamma"): the
+ * stored codes are decoded again with linear = code ^ G instead of the
+ * transfer the file asks for.  Only PNG files keep their codes.
+ */
+static bool image_gamma(zr_sdl_parser *p, zr_image *image,
+                        const char *name, double g,
+                        const zr_sdl_loc *loc) {
+  if (!(g > 0) || !isfinite(g)) {
+    zr__sdl_error(p, ZR_ESCENE, loc, "image_map gamma %g must be positive",
+                  g);
+    return false;
+  }
+  if (!image->codes) {
+    zr__sdl_error(p, ZR_EUNSUPPORTED, loc,
+                  "image_map gamma is supported for PNG files only, not "
+                  "'%s'", name);
+    return false;
+  }
+  float *table = zr__decode_table(image->maxval, ZR_TRANSFER_POWER, g);
+  if (!table) {
+    zr__sdl_error(p, ZR_ENOMEM, loc, "out of memory");
+    return false;
+  }
+  size_t n = (size_t)image->width * (size_t)image->height * 3;
+  for (size_t i = 0; i < n; i++)
+    image->pixels[i] = table[image->codes[i]];
+  free(table);
+  return true;
+}
+
+/* The palette indices of a palette image, with every entry's filter and
+   transmit 0 until the image_map says otherwise. */
+static bool keep_palette(zr_sdl_parser *p, zr_image_map *im,
+                         const zr_image *image) {
+  size_t n = (size_t)image->width * (size_t)image->height;
+  unsigned char *indices = zr__sdl_alloc(p, n);
+  float *ft = zr__sdl_alloc(p, 2 * (size_t)image->palette_size *
+                                   sizeof *ft);
+  if (!indices || !ft)
+    return false;
+  memcpy(indices, image->indices, n);
+  im->indices = indices;
+  im->palette_size = image->palette_size;
+  im->palette_ft = ft;
+  return true;
+}
+
 zr_image_map *zr__sdl_image_map_new(zr_sdl_parser *p, const char *name,
-                                    const zr_sdl_loc *loc) {
+                                    const zr_sdl_loc *loc,
+                                    const zr_sdl_expr *gamma,
+                                    const zr_sdl_loc *gamma_loc) {
+  double g = 0;
+  if (gamma && !zr__sdl_want_float(p, gamma, gamma_loc, &g))
+    return NULL;
   char *path = find_image(p, name);
   if (!path) {
     zr__sdl_error(p, ZR_ENOTFOUND, loc, "image_map file '%s' not found",
@@ -630,9 +689,15 @@ zr_image_map *zr__sdl_image_map_new(zr_sdl_parser *p, const char *name,
     zr__sdl_error(p, s, loc, "cannot use '%s' as an image_map", name);
     return NULL;
   }
+  if (gamma && !image_gamma(p, image, name, g, gamma_loc)) {
+    zr_image_free(image);
+    return NULL;
+  }
   zr_image_map *im = zr__sdl_alloc(p, sizeof *im);
   size_t n = (size_t)image->width * (size_t)image->height * 3;
   float *pixels = im ? zr__sdl_alloc(p, n * sizeof *pixels) : NULL;
+  if (pixels && image->indices && !keep_palette(p, im, image))
+    pixels = NULL;
   if (pixels) {
     memcpy(pixels, image->pixels, n * sizeof *pixels);
     im->path = zr__sdl_strdup(p, name, strlen(name));
@@ -665,33 +730,86 @@ bool zr__sdl_image_map_mod(zr_sdl_parser *p, zr_image_map *im, int token,
     im->interpolate = (int)v;
     return true;
   case T_FILTER:
-    im->filter_all = v;
+  case T_TRANSMIT:
+    /* "filter all" sets every palette entry, as POV-Ray 3.7 does, so a
+       later "filter INDEX, AMOUNT" overrides one entry. */
+    if (token == T_FILTER)
+      im->filter_all = v;
+    else
+      im->transmit_all = v;
+    for (int k = 0; k < im->palette_size; k++)
+      im->palette_ft[2 * k + (token == T_TRANSMIT)] = (float)v;
     return true;
   default:
-    im->transmit_all = v;
     return true;
   }
 }
 
+bool zr__sdl_image_map_index(zr_sdl_parser *p, zr_image_map *im, int token,
+                             const zr_sdl_expr *index,
+                             const zr_sdl_loc *index_loc,
+                             const zr_sdl_expr *amount,
+                             const zr_sdl_loc *amount_loc) {
+  const char *kw = token == T_FILTER ? "filter" : "transmit";
+  double k = 0, v = 0;
+  if (!zr__sdl_want_float(p, index, index_loc, &k) ||
+      !zr__sdl_want_float(p, amount, amount_loc, &v))
+    return false;
+  /* POV-Ray 3.7 refuses the index form on an image without a palette
+     ("cannot be used with non color-mapped image"), and so do we. */
+  if (!im->indices) {
+    zr__sdl_error(p, ZR_ESCENE, index_loc,
+                  "'%s INDEX, AMOUNT' needs a palette image; '%s' has no "
+                  "palette (use '%s all AMOUNT')", kw, im->path, kw);
+    return false;
+  }
+  /* POV-Ray rounds the index as (int)(k + 0.01). */
+  double r = floor(k + 0.01);
+  if (!(r >= 0 && r < im->palette_size)) {
+    zr__sdl_error(p, ZR_ESCENE, index_loc,
+                  "%s palette index %g is out of range: '%s' has %d "
+                  "palette entries", kw, k, im->path, im->palette_size);
+    return false;
+  }
+  im->palette_ft[2 * (size_t)r + (token == T_TRANSMIT)] = (float)v;
+  return true;
+}
+
 /* ---- object modifiers ---- */
 
-static bool transform_object(zr_sdl_parser *p, zr_object *o,
-                             const zr_transform *t) {
-  if (!(o->transform = composed(p, o->transform, t)))
-    return false;
+/* The object's texture and interior_texture, moved with it (media
+   densities move with the interior, build_media.c).  An object with
+   uv_mapping keeps its textures on its surface. */
+static bool transform_textures(zr_sdl_parser *p, zr_object *o,
+                               const zr_transform *t) {
+  if (o->uv_mapping)
+    return true;
   if (o->texture) {
     zr_texture *tx = zr__sdl_texture_new(p, o->texture);
     if (!tx || !zr__sdl_texture_transform(p, tx, t))
       return false;
     o->texture = tx;
   }
-  /* interior_texture and media densities move too (build_media.c). */
   if (o->interior_texture) {
     zr_texture *tx = zr__sdl_texture_new(p, o->interior_texture);
     if (!tx || !zr__sdl_texture_transform(p, tx, t))
       return false;
     o->interior_texture = tx;
   }
+  return true;
+}
+
+static bool transform_object(zr_sdl_parser *p, zr_object *o,
+                             const zr_transform *t) {
+  if (!(o->transform = composed(p, o->transform, t)))
+    return false;
+  /* Patterns with uv_mapping stay put on the surface (zr_sdl_parser). */
+  bool was_moving = p->moving_object;
+  p->moving_object = true;
+  bool ok = transform_textures(p, o, t);
+  p->moving_object = was_moving;
+  if (!ok)
+    return false;
   if (o->interior &&
       !(o->interior = zr__sdl_interior_transform(p, o->interior, t)))
     return false;
@@ -749,10 +867,78 @@ static void set_flag(zr_object *o, zr_sdl_mod_kind kind) {
       set_flag(o->u.csg.children[i], kind);
 }
 
+/* ---- uv_mapping ("UV Mapping", "Supported Objects") ---- */
+
+static bool texture_uses_uv(const zr_texture *tx) {
+  for (; tx; tx = tx->over) {
+    if (tx->uv_mapping || (tx->pigment && tx->pigment->uv_mapping) ||
+        (tx->normal && tx->normal->uv_mapping))
+      return true;
+    if (tx->map)
+      for (size_t i = 0; i < tx->map->n; i++)
+        if (texture_uses_uv(tx->map->entries[i].u.texture))
+          return true;
+  }
+  return false;
+}
+
+/* The first primitive in o without surface coordinates (those of
+   lib/trace/intersect.c, zr__hit_uv), NULL if all have them. */
+static const zr_object *without_uv(const zr_object *o) {
+  if (zr__is_csg(o->kind)) {
+    for (size_t i = 0; i < o->u.csg.n_children; i++) {
+      const zr_object *c = without_uv(o->u.csg.children[i]);
+      if (c)
+        return c;
+    }
+    return NULL;
+  }
+  bool has = o->kind == ZR_OBJ_MESH || o->kind == ZR_OBJ_SPHERE ||
+             o->kind == ZR_OBJ_TORUS;
+  return has ? NULL : o;
+}
+
+/* Shading looks at the primitive hit, so CSG passes the flag down. */
+static void set_uv_mapping(zr_object *o) {
+  o->uv_mapping = true;
+  if (zr__is_csg(o->kind))
+    for (size_t i = 0; i < o->u.csg.n_children; i++)
+      set_uv_mapping(o->u.csg.children[i]);
+}
+
+static bool uv_mapping_allowed(zr_sdl_parser *p, const zr_object *o,
+                               const zr_sdl_mod *mod,
+                               const zr_sdl_loc *loc) {
+  bool uses = false;
+  if (mod->kind == ZR_SDL_MOD_UV_MAPPING)
+    uses = true;
+  else if (mod->kind == ZR_SDL_MOD_PIGMENT)
+    uses = ((const zr_pigment *)mod->ptr)->uv_mapping;
+  else if (mod->kind == ZR_SDL_MOD_NORMAL)
+    uses = ((const zr_normal *)mod->ptr)->uv_mapping;
+  else if (mod->kind == ZR_SDL_MOD_TEXTURE ||
+           mod->kind == ZR_SDL_MOD_INTERIOR_TEXTURE)
+    uses = texture_uses_uv(mod->ptr);
+  else if (mod->kind == ZR_SDL_MOD_MATERIAL)
+    uses = texture_uses_uv(((const zr_sdl_material *)mod->ptr)->texture);
+  const zr_object *bare = uses ? without_uv(o) : NULL;
+  if (!bare)
+    return true;
+  zr__sdl_error(p, ZR_EUNSUPPORTED, loc,
+                "uv_mapping on %s: zRcube has surface coordinates only "
+                "for mesh, mesh2, sphere and torus", kind_name(bare->kind));
+  return false;
+}
+
 bool zr__sdl_object_mod(zr_sdl_parser *p, zr_object *o,
                         const zr_sdl_mod *mod, const zr_sdl_loc *loc) {
   zr_texture *tx;
+  if (!uv_mapping_allowed(p, o, mod, loc))
+    return false;
   switch (mod->kind) {
+  case ZR_SDL_MOD_UV_MAPPING:
+    set_uv_mapping(o);
+    return true;
   case ZR_SDL_MOD_TRANSFORM:
     return transform_object(p, o, mod->ptr);
   case ZR_SDL_MOD_PIGMENT:

@@ -839,7 +839,7 @@ static int deliver(zr_sdl_parser *p, int kind, const zr_sdl_lexval *val,
    POV-Ray 3.7 gives 0 for all of clock, clock_delta, clock_on,
    frame_number, initial_clock, final_clock, initial_frame and
    final_frame (measured with povray 3.7.0). */
-static double constant(const zr_sdl_parser *p, const char *name) {
+double zr__sdl_constant(const zr_sdl_parser *p, const char *name) {
   if (strcmp(name, "clock") == 0)
     return p->clock;
   if (strcmp(name, "image_width") == 0)
@@ -948,7 +948,7 @@ int zr__sdl_next(zr_sdl_lexval *val, zr_sdl_loc *loc, zr_sdl_parser *p) {
                     t->v.str);
       return ZR__POV_error;
     case T_CONSTANT:
-      v.num = constant(p, t->v.str);
+      v.num = zr__sdl_constant(p, t->v.str);
       return deliver(p, T_NUMBER, &v, &tl, NULL, val, loc);
     case T_DEFINED: {
       bool defined;

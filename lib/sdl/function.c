@@ -1080,6 +1080,10 @@ static bool primary(compiler *c) {
       return sum_or_prod(c, w[0] == 's');
     if (constant_word(c, w))
       return true;
+    /* clock, image_width ... are constants while the scene is parsed,
+       so a function may use them as POV-Ray's do (trace2.pov). */
+    if (t->kind == T_CONSTANT)
+      return emit_const(c, zr__sdl_constant(c->p, w));
     if (strcmp(w, "x") == 0 || strcmp(w, "y") == 0 || strcmp(w, "z") == 0 ||
         strcmp(w, "u") == 0 || strcmp(w, "v") == 0)
       return fail_at(c, t, ZR_EUNDEFINED,

@@ -194,6 +194,7 @@ typedef enum zr_sdl_mod_kind {
   ZR_SDL_MOD_MATERIAL,      /* ptr: a zr_sdl_material */
   /* lib/sdl/build_media.c */
   ZR_SDL_MOD_INTERIOR_TEXTURE, /* ptr: a zr_texture */
+  ZR_SDL_MOD_UV_MAPPING, /* the textures after it use surface (u, v) */
   /* Read and warned about, no effect: radiosity { importance },
      no_radiosity (lib/sdl/build_radiosity.c). */
   ZR_SDL_MOD_IGNORED
@@ -414,6 +415,9 @@ typedef struct zr_sdl_parser {
   zr_sdl_autoend autoend;
   bool want_decl_name;
   bool decl_local; /* the name wanted follows #local */
+  /* An object's transform is being applied to its textures: patterns
+     with uv_mapping stay where they are on the surface. */
+  bool moving_object;
   int nested_depth; /* parsers running, for ZR_SDL_MAX_NESTED_PARSE */
   int macro_depth;
   int include_depth;
@@ -463,6 +467,9 @@ void zr__sdl_warning(zr_sdl_parser *p, const zr_sdl_loc *loc,
     __attribute__((format(printf, 3, 4)));
 /* Arena memory, reporting ZR_ENOMEM when there is none. */
 void *zr__sdl_alloc(zr_sdl_parser *p, size_t size);
+/* A built-in float constant's value (clock, image_width, version ...;
+   "Built-in Float Identifiers"), name one of the T_CONSTANT words. */
+double zr__sdl_constant(const zr_sdl_parser *p, const char *name);
 /* Parses one float expression for a directive (nested parse). */
 zr_status zr__sdl_parse_expr(zr_sdl_parser *p, int start_token,
                              zr_sdl_expr *out);
@@ -795,11 +802,21 @@ bool zr__sdl_material_transform(zr_sdl_parser *p, zr_sdl_material *m,
 /* The path, malloc'ed, where an image file named in the scene is found
    (searched like #include); NULL when it is nowhere. */
 char *zr__sdl_find_image(zr_sdl_parser *p, const char *name);
-/* Reads the picture of an image_map, searched like #include. */
+/* Reads the picture of an image_map, searched like #include; gamma
+   (NULL: none) is the "gamma G" written after the file name. */
 zr_image_map *zr__sdl_image_map_new(zr_sdl_parser *p, const char *name,
-                                    const zr_sdl_loc *loc);
+                                    const zr_sdl_loc *loc,
+                                    const zr_sdl_expr *gamma,
+                                    const zr_sdl_loc *gamma_loc);
 bool zr__sdl_image_map_mod(zr_sdl_parser *p, zr_image_map *im, int token,
                            const zr_sdl_expr *e, const zr_sdl_loc *loc);
+/* "filter INDEX, AMOUNT" or "transmit INDEX, AMOUNT" (token T_FILTER or
+   T_TRANSMIT) for one palette entry. */
+bool zr__sdl_image_map_index(zr_sdl_parser *p, zr_image_map *im, int token,
+                             const zr_sdl_expr *index,
+                             const zr_sdl_loc *index_loc,
+                             const zr_sdl_expr *amount,
+                             const zr_sdl_loc *amount_loc);
 /* Cameras, lights and atmospheric effects: lib/sdl/build_camlight.h. */
 
 /* ---- radiosity settings (build_radiosity.c) ---- */

@@ -36,6 +36,7 @@ typedef struct crossing_list {
   double t[4];
   zr_vec3 normal[4]; /* object space, any length */
   int32_t texture[4]; /* a mesh's texture list index, -1 for none */
+  double u[4], v[4];  /* a mesh's surface coordinates (else unset) */
 } crossing_list;
 
 static void add_crossing(crossing_list *l, double t, zr_vec3 n) {
@@ -60,6 +61,10 @@ static void compound_crossings(const zr_object *o, zr_vec3 org,
   for (int i = 0; i < n; i++) {
     add_crossing(l, c[i].t, c[i].normal);
     l->texture[l->n - 1] = c[i].texture;
+    if (o->kind == ZR_OBJ_MESH) {
+      l->u[l->n - 1] = c[i].u;
+      l->v[l->n - 1] = c[i].v;
+    }
   }
 }
 
@@ -395,6 +400,8 @@ static void clip_crossings(const zr_object *clip, const zr_ray *ray,
     l->t[kept] = l->t[i];
     l->normal[kept] = l->normal[i];
     l->texture[kept] = l->texture[i];
+    l->u[kept] = l->u[i];
+    l->v[kept] = l->v[i];
     kept++;
   }
   l->n = kept;
@@ -456,6 +463,11 @@ static int crossings(const zr_object *object, const zr_ray *ray,
     hits[j].object = object->kind == ZR_OBJ_MESH
                          ? zr__mesh_hit_object(object, l.texture[i])
                          : object;
+    hits[j].u = hits[j].v = 0.0;
+    if (object->kind == ZR_OBJ_MESH) {
+      hits[j].u = l.u[i];
+      hits[j].v = l.v[i];
+    }
   }
   return n;
 }
@@ -558,4 +570,53 @@ bool zr__inside(const zr_object *object, zr_vec3 p) {
   bool in = shape_inside(object, local) != object->inverse;
   /* A clipped object is inside where it and its clip both are. */
   return in && (!object->clip || zr__inside(object->clip, p));
+}
+
+/* ---- surface coordinates ("UV Mapping", "Supported Objects") ---- */
+
+#define UV_PI 3.14159265358979323846
+
+/* POV-Ray 3.7's sphere mapping: u the angle about y from +x towards +z
+   over a full turn, v from the south pole (0) to the north (1). */
+static void sphere_uv(zr_vec3 d, double *u, double *v) {
+  double len = zr_v3_len(d);
+  if (!(len > 0.0)) {
+    *u = *v = 0.0;
+    return;
+  }
+  d = zr_v3_scale(d, 1.0 / len);
+  *v = 0.5 + asin(fmax(-1.0, fmin(1.0, d.y))) / UV_PI;
+  double r = sqrt(d.x * d.x + d.z * d.z);
+  double theta = 0.0;
+  if (r > 1e-10) {
+    theta = acos(fmax(-1.0, fmin(1.0, d.x / r)));
+    if (d.z < 0.0)
+      theta = 2.0 * UV_PI - theta;
+  }
+  *u = theta / (2.0 * UV_PI);
+}
+
+bool zr__hit_uv(const zr_hit *hit, zr_vec3 p, double *u, double *v) {
+  const zr_object *o = hit->object;
+  if (o->kind == ZR_OBJ_MESH) {
+    *u = hit->u;
+    *v = hit->v;
+    return true;
+  }
+  if (o->transform)
+    p = zr__xform_point(o->transform->inv, p);
+  if (o->kind == ZR_OBJ_SPHERE) {
+    sphere_uv(zr_v3_sub(p, o->u.sphere.centre), u, v);
+    return true;
+  }
+  if (o->kind == ZR_OBJ_TORUS) {
+    /* u about the y axis, v about the tube's circle (POV-Ray's torus
+       CalcUV). */
+    *u = 1.0 - (atan2(p.z, p.x) + UV_PI) / (2.0 * UV_PI);
+    double x = sqrt(p.x * p.x + p.z * p.z) - o->u.torus.major;
+    *v = (atan2(p.y, x) + UV_PI) / (2.0 * UV_PI);
+    return true;
+  }
+  *u = *v = 0.0;
+  return false;
 }

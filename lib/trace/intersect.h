@@ -27,6 +27,10 @@ typedef struct zr_hit {
      object is inverse): it does not yet face the ray. */
   zr_vec3 normal;
   const zr_object *object;
+  /* A mesh's surface coordinates at the hit (uv_vectors interpolated,
+     "UV Mapping"); 0 for other objects, whose (u, v) the shader derives
+     from the point only when a texture asks (zr__hit_uv). */
+  double u, v;
 } zr_hit;
 
 /* The most crossings one primitive gives in an interval: every shape
@@ -46,6 +50,11 @@ int zr__intersect(const zr_object *object, const zr_ray *ray, double tmin,
    that need only t and the object. */
 int zr__intersect_t(const zr_object *object, const zr_ray *ray, double tmin,
                     double tmax, zr_hit hits[ZR_MAX_CROSSINGS]);
+
+/* The surface coordinates (u, v) of hit at world point p, as POV-Ray
+   3.7 defines them ("UV Mapping", "Supported Objects"); false when the
+   object has none. */
+bool zr__hit_uv(const zr_hit *hit, zr_vec3 p, double *u, double *v);
 
 /* Whether the world point p lies inside the object (POV-Ray's inside, with
    inverse applied).  Triangles have no inside; a disc's is its plane's. */

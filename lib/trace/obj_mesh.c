@@ -419,6 +419,18 @@ static zr_mesh_crossing finish_hit(const struct zr_mesh *m,
     if (zr_v3_dot(s, s) > 0.0 && isfinite(zr_v3_dot(s, s)))
       c.normal = s;
   }
+  /* uv_mapping: the corners' uv_vectors blended like the normals;
+     without them POV-Ray gives each triangle (0,0), (1,0), (1,1). */
+  if (m->uvs && m->face_uvs) {
+    const uint32_t *ui = m->face_uvs[h->face];
+    c.u = w[0] * m->uvs[ui[0]][0] + w[1] * m->uvs[ui[1]][0] +
+          w[2] * m->uvs[ui[2]][0];
+    c.v = w[0] * m->uvs[ui[0]][1] + w[1] * m->uvs[ui[1]][1] +
+          w[2] * m->uvs[ui[2]][1];
+  } else {
+    c.u = w[1] + w[2];
+    c.v = w[2];
+  }
   c.texture = -1;
   if (m->face_textures) {
     /* Three texture indices per face: POV-Ray blends the corners'

@@ -25,7 +25,7 @@ struct zr_mesh {
   size_t n_vertices, cap_vertices;
   zr_vec3 *normals;
   size_t n_normals, cap_normals;
-  double (*uvs)[2]; /* stored for uv_mapping, not used by shading yet */
+  double (*uvs)[2]; /* uv_vectors, for uv_mapping */
   size_t n_uvs, cap_uvs;
   uint32_t (*faces)[3];
   size_t n_faces, cap_faces;
@@ -48,6 +48,7 @@ typedef struct zr_mesh_crossing {
   double t;
   zr_vec3 normal;  /* any length, smooth when the face has normals */
   int32_t texture; /* index into the texture list, -1 for none */
+  double u, v;     /* surface coordinates ("UV Mapping"); meshes only */
 } zr_mesh_crossing;
 
 /* Builds the BVH (reordering the faces) and checks the indices; the

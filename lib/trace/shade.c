@@ -200,7 +200,31 @@ typedef struct surface {
   zr_colour colour;
   double offset;  /* distance to move secondary rays off the surface */
   bool layer;     /* an upper layer: the layers below take transmission */
+  /* uv_mapping ("UV Mapping"): uv_all when every pattern here takes
+     (u, v, 0), as under an object's or an outer texture's uv_mapping;
+     hu, hv are a mesh hit's coordinates, uvp the point (u, v, 0),
+     found only when a pattern first asks (uv_known). */
+  bool uv_all, uv_known;
+  double hu, hv;
+  zr_vec3 uvp;
 } surface;
+
+/* The point a pattern is evaluated at: the hit, or its (u, v, 0). */
+static zr_vec3 pattern_point(surface *s, bool uv) {
+  if (!uv && !s->uv_all)
+    return s->p;
+  if (!s->uv_known) {
+    zr_hit h;
+    h.object = s->object;
+    h.u = s->hu;
+    h.v = s->hv;
+    double u, v;
+    zr__hit_uv(&h, s->p, &u, &v); /* lib/trace/intersect.c */
+    s->uvp = zr_v3(u, v, 0.0);
+    s->uv_known = true;
+  }
+  return s->uvp;
+}
 
 /*
  * POV-Ray's "empirical function that models the reflectivity of metallic
@@ -563,9 +587,11 @@ static zr_rgb shade_layer(const zr_tracer *tr, const surface *s,
     /* The slope pattern picks by the normal on the viewer's side (povray
        3.7 renders a plane seen from its back with the normal turned). */
     zr_vec3 facing = s->entering ? n_geo : zr_v3_neg(n_geo);
-    const zr_texture *a = zr__texture_pick_n(tx, s->p, facing, &b, &t);
     surface ls = *s;
+    const zr_texture *a = zr__texture_pick_n(
+        tx, pattern_point(&ls, tx->uv_mapping), facing, &b, &t);
     ls.layer = upper;
+    ls.uv_all = ls.uv_all || tx->uv_mapping;
     zr_rgb c = shade_layers(tr, &ls, n_geo, a, level, weight * (1 - t),
                             media);
     if (!b)
@@ -578,11 +604,14 @@ static zr_rgb shade_layer(const zr_tracer *tr, const surface *s,
   }
   surface ls = *s;
   zr_vec3 n = n_geo;
+  bool uv = tx->uv_mapping;
   if (tx->normal)
-    n = zr__normal_perturb(tx->normal, s->p, n);
+    n = zr__normal_perturb(
+        tx->normal, pattern_point(&ls, uv || tx->normal->uv_mapping), n);
   ls.n = s->entering ? n : zr_v3_neg(n);
   ls.finish = tx->finish;
-  ls.colour = zr__pigment_eval_n(tx->pigment, s->p, ls.n);
+  ls.colour = zr__pigment_eval_n(
+      tx->pigment, pattern_point(&ls, uv || tx->pigment->uv_mapping), ls.n);
   ls.layer = upper;
   return shade(tr, &ls, level, weight, media);
 }
@@ -610,8 +639,11 @@ static zr_rgb shade_layers(const zr_tracer *tr, const surface *s,
     sum = zr_rgb_add(sum, zr_rgb_mul(through, c));
     if (i == 0)
       break;
-    through = zr_rgb_mul(through, zr__texture_see_through_layer(
-                                      layers[i], s->p));
+    surface us = *s;
+    zr_vec3 at = pattern_point(&us, layers[i]->uv_mapping ||
+                                        layers[i]->pigment->uv_mapping);
+    through = zr_rgb_mul(through,
+                         zr__texture_see_through_layer(layers[i], at));
     if (rgb_max(through) <= 0.0)
       break;
   }
@@ -652,6 +684,10 @@ zr_rgb zr__trace_ray(const zr_tracer *tracer, const zr_ray *ray, int level,
   s.p = zr_v3_madd(ray->origin, ray->dir, hit.t);
   s.d = zr_v3_norm(ray->dir);
   s.entering = zr_v3_dot(hit.normal, s.d) < 0.0;
+  s.uv_all = hit.object->uv_mapping;
+  s.uv_known = false;
+  s.hu = hit.u;
+  s.hv = hit.v;
   zr_vec3 n = hit.normal;
   const zr_texture *tx = hit.object->texture;
   /* interior_texture: the inside (back) of the surface ("Interior
@@ -666,12 +702,15 @@ zr_rgb zr__trace_ray(const zr_tracer *tracer, const zr_ray *ray, int level,
     c = zr__media_along(tracer, media, ray->origin, ray->dir, hit.t, c);
     return zr__atmosphere_apply(scene, ray->origin, ray->dir, hit.t, c);
   }
-  if (tx->normal) /* normal { }: lib/scene/texture.c */
-    n = zr__normal_perturb(tx->normal, s.p, n);
-  s.n = s.entering ? n : zr_v3_neg(n);
   s.object = hit.object;
+  bool uv = tx->uv_mapping;
+  if (tx->normal) /* normal { }: lib/scene/texture.c */
+    n = zr__normal_perturb(
+        tx->normal, pattern_point(&s, uv || tx->normal->uv_mapping), n);
+  s.n = s.entering ? n : zr_v3_neg(n);
   s.finish = tx->finish;
-  s.colour = zr__pigment_eval_n(tx->pigment, s.p, s.n);
+  s.colour = zr__pigment_eval_n(
+      tx->pigment, pattern_point(&s, uv || tx->pigment->uv_mapping), s.n);
   s.offset = zr__surface_offset(s.p);
   s.layer = false;
   if (tracer->radiosity_only) {
