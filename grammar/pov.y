@@ -334,6 +334,7 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %token T_START_INDEX "start of array index"
 %token T_START_DEFAULT "start of #default"
 %token T_DECL_END "end of declaration"
+%token T_ARG_SEP "end of macro argument"
 %token <value> T_STRING_ID "string identifier"
 %token <value> T_ARRAY_ID "array identifier"
 %token <value> T_SEED_ID "random stream identifier"
@@ -849,9 +850,13 @@ decl_end:
 | T_DECL_END           { $$ = 0; }
 ;
 
+/* T_ARG_SEP: the engine ends an argument that is a block (an object, a
+   texture ...) when no ',' follows it, as POV-Ray does (shapes.pov:
+   "Align_Object(Center_Object(...) -y, <0,0,0>)"). */
 arg_end:
   ','                  { $$ = ','; }
 | ')'                  { $$ = ')'; }
+| T_ARG_SEP            { $$ = ','; }
 ;
 
 rvalue:
@@ -2626,6 +2631,10 @@ finish:
 /* slope { <D> [, Lo, Hi] [altitude <A> [, Lo, Hi]] } ("Slope Pattern"). */
 slope_block:
   slope_dir '}'
+/* POV-Ray 3.7 also reads the direction alone, without braces
+   (terrain.inc: "slope -z"). */
+| T_SLOPE expr %prec OPTIONAL_COMMA
+    { TRY($$ = zr__sdl_slope_new(p, &$2, &@2, NULL, NULL, NULL)); }
 | slope_dir T_ALTITUDE expr '}'
     {
       TRY(zr__sdl_slope_altitude(p, $1, &$3, &@3, NULL, NULL, NULL));

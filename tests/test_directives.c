@@ -244,6 +244,19 @@ static void test_directives_macros(void **state) {
   assert_int_equal(f->scene->n_objects, 1);
 }
 
+/* shapes.pov calls "Align_Object(Center_Object(...) -y, <0,0,0>)": an
+   argument that is a block ends without its comma. */
+static void test_directives_block_argument_without_comma(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f, "#macro Place(O, V) object { O translate V } #end\n"
+                        "Place(sphere { 0, 1 } -y)\n");
+  assert_int_equal(s->n_objects, 1);
+  assert_true(s->objects[0]->transform != NULL);
+  /* Numbers still need their commas: "1 -y" is one expression. */
+  bad(f, "#macro Two(A, B) #end\nTwo(1 -y)\n", ZR_ESYNTAX,
+      "macro 'Two' takes 2 arguments, not 1", NULL);
+}
+
 /* ---- values ---- */
 
 static void test_directives_vectors_promote(void **state) {
@@ -657,6 +670,7 @@ int main(void) {
       T(test_directives_while_and_for),
       T(test_directives_while_in_macro_in_include),
       T(test_directives_macros),
+      T(test_directives_block_argument_without_comma),
       T(test_directives_vectors_promote),
       T(test_directives_float_values),
       T(test_directives_fast_path_agrees),

@@ -546,6 +546,68 @@ static void test_image_pfm_big_endian_bottom_up(void **state) {
   zr_image_free(img);
 }
 
+/* A palette image keeps each pixel's palette entry (image_map's "filter
+   INDEX, AMOUNT"), and every PNG its stored codes (image_map's "gamma");
+   both are exact integers. */
+static void test_image_png_keeps_indices_and_codes(void **state) {
+  fixture *fx = *state;
+  /* 4-bit indices 2, 0, 1: packed high nibble first. */
+  png_color pal[3] = {{10, 20, 30}, {40, 50, 60}, {70, 80, 90}};
+  unsigned char idx[2] = {0x20, 0x10};
+  png_spec sp = {PNG_COLOR_TYPE_PALETTE, 4, 3, 1, idx, 0, 0, pal, 3, 0, 0};
+  const char *path = in_dir(fx, "pal4.png");
+  write_png(path, &sp);
+  zr_image *img;
+  assert_int_equal(zr_image_read(fx->ctx, path, &img), ZR_OK);
+  assert_int_equal(img->palette_size, 3);
+  assert_non_null(img->indices);
+  assert_int_equal(img->indices[0], 2);
+  assert_int_equal(img->indices[1], 0);
+  assert_int_equal(img->indices[2], 1);
+  assert_int_equal(img->maxval, 255);
+  assert_int_equal(img->codes[0], 70);
+  assert_int_equal(img->codes[5], 30);
+  assert_int_equal(img->codes[8], 60);
+  assert_true(fabs(zr__srgb_encode(img->pixels[6]) * 255 - 40) < 1e-3);
+  zr_image_free(img);
+
+  /* RGB: codes but no indices. */
+  unsigned char rgb[3] = {1, 128, 255};
+  png_spec sp2 = {PNG_COLOR_TYPE_RGB, 8, 1, 1, rgb, 0, 0, NULL, 0, 0, 0};
+  path = in_dir(fx, "rgb.png");
+  write_png(path, &sp2);
+  assert_int_equal(zr_image_read(fx->ctx, path, &img), ZR_OK);
+  assert_null(img->indices);
+  assert_int_equal(img->palette_size, 0);
+  assert_int_equal(img->codes[0], 1);
+  assert_int_equal(img->codes[1], 128);
+  assert_int_equal(img->codes[2], 255);
+  zr_image_free(img);
+
+  /* Indices 1 and 5 with a palette of 2 (made with Python's zlib): the
+     index past the palette reads as black, as in libpng and POV-Ray. */
+  static const unsigned char past[] = {
+      0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00,
+      0x0d, 0x49, 0x48, 0x44, 0x52, 0x00, 0x00, 0x00, 0x02, 0x00, 0x00,
+      0x00, 0x01, 0x08, 0x03, 0x00, 0x00, 0x00, 0xc3, 0xfc, 0x8f, 0xb8,
+      0x00, 0x00, 0x00, 0x06, 0x50, 0x4c, 0x54, 0x45, 0x01, 0x02, 0x03,
+      0x04, 0x05, 0x06, 0x95, 0x53, 0x6f, 0x48, 0x00, 0x00, 0x00, 0x0b,
+      0x49, 0x44, 0x41, 0x54, 0x78, 0xda, 0x63, 0x60, 0x64, 0x05, 0x00,
+      0x00, 0x0a, 0x00, 0x07, 0x69, 0x39, 0x66, 0x9e, 0x00, 0x00, 0x00,
+      0x00, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82};
+  path = in_dir(fx, "past.png");
+  write_bytes(path, (const char *)past, sizeof past);
+  assert_int_equal(zr_image_read(fx->ctx, path, &img), ZR_OK);
+  assert_int_equal(img->indices[1], 5);
+  assert_int_equal(img->codes[0], 4);
+  assert_true(img->pixels[3] == 0 && img->pixels[5] == 0);
+  char expect[900];
+  snprintf(expect, sizeof expect, "%s: 1 pixel(s) with a palette index "
+           "past the 2 entries of the palette, read as black", path);
+  assert_string_equal(fx->warning, expect);
+  zr_image_free(img);
+}
+
 static void test_image_broken_files(void **state) {
   fixture *fx = *state;
   char expect[900];
@@ -777,6 +839,8 @@ int main(void) {
       cmocka_unit_test_setup_teardown(test_image_ppm_variants, setup,
                                       teardown),
       cmocka_unit_test_setup_teardown(test_image_pfm_big_endian_bottom_up,
+                                      setup, teardown),
+      cmocka_unit_test_setup_teardown(test_image_png_keeps_indices_and_codes,
                                       setup, teardown),
       cmocka_unit_test_setup_teardown(test_image_broken_files, setup,
                                       teardown),

@@ -11,12 +11,15 @@
 #include <cmocka.h>
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "parse_fixture.h"
 #include "scene/pattern.h"
 #include "scene/scene.h"
 #include "scene/texture.h"
+#include "trace/intersect.h"
 
 /* Colours here are a few products and sums of exact decimals: 1e-9
    covers their rounding. */
@@ -94,6 +97,19 @@ static void test_texture_reflection_without_comma(void **state) {
   assert_true(fabs(fin->reflection.r - 0.1) < EPS);
   assert_true(fabs(fin->reflection_max.g - 0.9) < EPS);
   assert_true(fin->reflection_fresnel);
+}
+
+/* terrain.inc writes "slope -z": the direction without braces reads as
+   "slope { -z }". */
+static void test_texture_slope_without_braces(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f, "plane { y, 0 pigment { slope -z } }");
+  const zr_slope *a = &first_texture(s)->pigment->pattern.slope;
+  zr_slope bare = *a;
+  s = good(f, "plane { y, 0 pigment { slope { -z } } }");
+  assert_memory_equal(&bare, &first_texture(s)->pigment->pattern.slope,
+                      sizeof bare);
+  assert_true(bare.direction.z < 0.0);
 }
 
 static void test_texture_average_weights(void **state) {
@@ -294,6 +310,147 @@ static void test_texture_noise_and_waves_settings(void **state) {
   assert_int_equal(s->objects[1]->texture->pigment->pattern.waves, 5);
 }
 
+/* ---- image maps ("Filtering and Transmitting Bitmap Areas", "Image
+   File Gamma") ---- */
+
+/* A 4 x 1 8-bit palette PNG: palette red, green, blue, white; the pixels
+   are indices 0, 1, 2, 3.  Made with Python's zlib. */
+static const unsigned char palette_png[] = {
+    0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d,
+    0x49, 0x48, 0x44, 0x52, 0x00, 0x00, 0x00, 0x04, 0x00, 0x00, 0x00, 0x01,
+    0x08, 0x03, 0x00, 0x00, 0x00, 0xce, 0xe2, 0xff, 0xff, 0x00, 0x00, 0x00,
+    0x0c, 0x50, 0x4c, 0x54, 0x45, 0xff, 0x00, 0x00, 0x00, 0xff, 0x00, 0x00,
+    0x00, 0xff, 0xff, 0xff, 0xff, 0xfb, 0x00, 0x60, 0xf6, 0x00, 0x00, 0x00,
+    0x0d, 0x49, 0x44, 0x41, 0x54, 0x78, 0xda, 0x63, 0x60, 0x60, 0x64, 0x62,
+    0x06, 0x00, 0x00, 0x0f, 0x00, 0x07, 0x5b, 0xd0, 0x8b, 0x7d, 0x00, 0x00,
+    0x00, 0x00, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82};
+
+/* A 1 x 1 8-bit RGB PNG without gAMA or sRGB chunks: codes 128, 64,
+   200. */
+static const unsigned char rgb_png[] = {
+    0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d,
+    0x49, 0x48, 0x44, 0x52, 0x00, 0x00, 0x00, 0x01, 0x00, 0x00, 0x00, 0x01,
+    0x08, 0x02, 0x00, 0x00, 0x00, 0x90, 0x77, 0x53, 0xde, 0x00, 0x00, 0x00,
+    0x0c, 0x49, 0x44, 0x41, 0x54, 0x78, 0xda, 0x63, 0x68, 0x70, 0x38, 0x01,
+    0x00, 0x02, 0xcc, 0x01, 0x89, 0x1b, 0x22, 0x39, 0x9f, 0x00, 0x00, 0x00,
+    0x00, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82};
+
+/* Writes bytes to a fresh file under /tmp and returns its path in buf. */
+static const char *write_file(char *buf, size_t size, const char *name,
+                              const unsigned char *bytes, size_t n) {
+  snprintf(buf, size, "/tmp/zr-texture-%ld-%s", (long)getpid(), name);
+  FILE *fp = fopen(buf, "wb");
+  assert_non_null(fp);
+  assert_int_equal(fwrite(bytes, 1, n, fp), n);
+  assert_int_equal(fclose(fp), 0);
+  return buf;
+}
+
+/* Parses "sphere { 0, 1 pigment { image_map { png PATH MODS } } }". */
+static const zr_pigment *image_pigment(fixture *f, const char *path,
+                                       const char *mods) {
+  char text[1024];
+  snprintf(text, sizeof text,
+           "sphere { 0, 1 pigment { image_map { png \"%s\" %s } } }", path,
+           mods);
+  const zr_pigment *pg = first_texture(good(f, text))->pigment;
+  assert_int_equal(pg->kind, ZR_PIGMENT_IMAGE);
+  return pg;
+}
+
+/* Pixel k of the 4 x 1 map lies at u = (k + 0.5) / 4. */
+static zr_colour palette_pixel(const zr_pigment *pg, int k) {
+  return zr__pigment_eval(pg, zr_v3((k + 0.5) / 4, 0.5, 0));
+}
+
+static void test_texture_image_map_palette_filter_transmit(void **state) {
+  fixture *f = *state;
+  char path[256];
+  write_file(path, sizeof path, "pal.png", palette_png, sizeof palette_png);
+  /* Index forms set one entry each; the rest stay 0. */
+  const zr_pigment *pg = image_pigment(
+      f, path, "filter 1, 0.5 transmit 2, 0.25 transmit 3, 1");
+  assert_int_equal(pg->image->palette_size, 4);
+  assert_colour(palette_pixel(pg, 0), 1, 0, 0, 0, 0);
+  assert_colour(palette_pixel(pg, 1), 0, 1, 0, 0.5, 0);
+  assert_colour(palette_pixel(pg, 2), 0, 0, 1, 0, 0.25);
+  assert_colour(palette_pixel(pg, 3), 1, 1, 1, 0, 1);
+  /* "all" sets every entry; a later index form overrides one, an
+     earlier one is overwritten.  POV-Ray reads the index as
+     (int)(INDEX + 0.01), so 1.995 is entry 2. */
+  pg = image_pigment(f, path, "transmit 0, 0.75 transmit all 0.5 "
+                              "filter all 0.125 filter 1.995, 1");
+  assert_colour(palette_pixel(pg, 0), 1, 0, 0, 0.125, 0.5);
+  assert_colour(palette_pixel(pg, 2), 0, 0, 1, 1, 0.5);
+  assert_colour(palette_pixel(pg, 3), 1, 1, 1, 0.125, 0.5);
+  unlink(path);
+}
+
+static void test_texture_image_map_bad_palette_index(void **state) {
+  fixture *f = *state;
+  char pal[256], rgb[256], text[1024];
+  write_file(pal, sizeof pal, "pal.png", palette_png, sizeof palette_png);
+  write_file(rgb, sizeof rgb, "rgb.png", rgb_png, sizeof rgb_png);
+  char message[512];
+  snprintf(text, sizeof text, "sphere { 0, 1 pigment { image_map { png "
+           "\"%s\" transmit 4, 1 } } }", pal);
+  snprintf(message, sizeof message, "transmit palette index 4 is out of "
+           "range: '%s' has 4 palette entries", pal);
+  bad(f, text, ZR_ESCENE, message, NULL);
+  snprintf(text, sizeof text, "sphere { 0, 1 pigment { image_map { png "
+           "\"%s\" filter -1, 1 } } }", pal);
+  snprintf(message, sizeof message, "filter palette index -1 is out of "
+           "range: '%s' has 4 palette entries", pal);
+  bad(f, text, ZR_ESCENE, message, NULL);
+  /* POV-Ray 3.7 refuses the index form without a palette too. */
+  snprintf(text, sizeof text, "sphere { 0, 1 pigment { image_map { png "
+           "\"%s\" filter 0, 1 } } }", rgb);
+  snprintf(message, sizeof message, "'filter INDEX, AMOUNT' needs a "
+           "palette image; '%s' has no palette (use 'filter all AMOUNT')",
+           rgb);
+  bad(f, text, ZR_ESCENE, message, NULL);
+  snprintf(text, sizeof text, "sphere { 0, 1 pigment { image_map { png "
+           "\"%s\" transmit 0 } } }", pal);
+  bad(f, text, ZR_ESYNTAX,
+      "unexpected '}', expected '+', '-', '*', '/', ',' or '.'", NULL);
+  unlink(pal);
+  unlink(rgb);
+}
+
+static void test_texture_image_map_gamma(void **state) {
+  fixture *f = *state;
+  char rgb[256], pal[256], text[1024];
+  write_file(rgb, sizeof rgb, "rgb.png", rgb_png, sizeof rgb_png);
+  write_file(pal, sizeof pal, "pal.png", palette_png, sizeof palette_png);
+  /* "gamma G": linear = (code / 255) ^ G, whatever the file says.  The
+     decoded floats are single precision: 1e-6 relative covers them. */
+  const zr_pigment *pg = image_pigment(f, rgb, "gamma 2.2");
+  zr_colour c = zr__pigment_eval(pg, zr_v3(0.5, 0.5, 0));
+  assert_true(fabs(c.r - pow(128 / 255.0, 2.2)) < 1e-6);
+  assert_true(fabs(c.g - pow(64 / 255.0, 2.2)) < 1e-6);
+  assert_true(fabs(c.b - pow(200 / 255.0, 2.2)) < 1e-6);
+  pg = image_pigment(f, rgb, "gamma 1 once");
+  c = zr__pigment_eval(pg, zr_v3(0.5, 0.5, 0));
+  assert_true(fabs(c.r - 128 / 255.0) < 1e-6);
+  assert_true(fabs(c.b - 200 / 255.0) < 1e-6);
+  /* Without it the file's default, sRGB, holds: code 128 is 0.2158605. */
+  pg = image_pigment(f, rgb, "");
+  c = zr__pigment_eval(pg, zr_v3(0.5, 0.5, 0));
+  assert_true(fabs(c.r - 0.2158605) < 1e-6);
+  /* A palette image keeps its indices under a gamma. */
+  pg = image_pigment(f, pal, "gamma 2 transmit 3, 0.5");
+  assert_colour(palette_pixel(pg, 3), 1, 1, 1, 0, 0.5);
+  snprintf(text, sizeof text, "sphere { 0, 1 pigment { image_map { png "
+           "\"%s\" gamma 0 } } }", rgb);
+  bad(f, text, ZR_ESCENE, "image_map gamma 0 must be positive", NULL);
+  /* gamma must follow the file name ("Image File Gamma"). */
+  snprintf(text, sizeof text, "sphere { 0, 1 pigment { image_map { png "
+           "\"%s\" once gamma 2.2 } } }", rgb);
+  assert_int_equal(parse(f, text), ZR_ESYNTAX);
+  unlink(pal);
+  unlink(rgb);
+}
+
 static void test_texture_bad_maps(void **state) {
   fixture *f = *state;
   bad(f, "sphere { 0, 1 pigment { gradient x pigment_map { } } }",
@@ -305,12 +462,102 @@ static void test_texture_bad_maps(void **state) {
       "a slope_map entry wants <height, slope>", NULL);
 }
 
+/* ---- uv_mapping ("UV Mapping") ---- */
+
+/* The (u, v) where the ray from o along d first meets the scene's first
+   object, as zr__hit_uv gives them. */
+static void first_uv(const zr_scene *s, zr_vec3 o, zr_vec3 d, double *u,
+                     double *v) {
+  zr_hit h[ZR_MAX_CROSSINGS];
+  zr_ray r = {o, d};
+  assert_true(zr__intersect(s->objects[0], &r, 0.0, INFINITY, h) >= 1);
+  assert_true(zr__hit_uv(&h[0], zr_v3_madd(o, d, h[0].t), u, v));
+}
+
+/* The uv values are the manual's definitions evaluated by hand (sphere:
+   u the angle about y from +x over a turn, v = 1/2 + asin(y) / pi;
+   torus: POV-Ray 3.7's torus CalcUV; mesh2: the corners' uv_vectors
+   blended barycentrically), so 1e-9 covers only rounding. */
+static void test_texture_uv_mapping_sphere(void **state) {
+  fixture *f = *state;
+  /* The rotation turns the sphere, not the uv pattern on it. */
+  zr_scene *s = good(f, "sphere { 0, 1 pigment { uv_mapping checker"
+                        " rgb 0, rgb 1 scale 0.25 } rotate 90*y }");
+  const zr_pigment *pg = first_texture(s)->pigment;
+  assert_true(pg->uv_mapping);
+  double u, v;
+  /* World (0, 0.5, -sqrt(3)/2) is object (sqrt(3)/2, 0.5, 0) after the
+     inverse of rotate 90*y: u = 0, v = 1/2 + 1/6. */
+  first_uv(s, zr_v3(0, 0.5, -5), zr_v3(0, 0, 1), &u, &v);
+  assert_true(fabs(u - 0.0) < EPS);
+  assert_true(fabs(v - 2.0 / 3.0) < EPS);
+  /* Checker at (0, 2/3, 0) / 0.25 = (0, 2.67, 0): floor sum 2, even. */
+  assert_colour(zr__pigment_eval(pg, zr_v3(u, v, 0)), 0, 0, 0, 0, 0);
+  /* World (-1, 0, 0) is object (0, 0, -1): a three-quarter turn. */
+  first_uv(s, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), &u, &v);
+  assert_true(fabs(u - 0.75) < EPS);
+  assert_true(fabs(v - 0.5) < EPS);
+  /* (3, 2, 0): odd. */
+  assert_colour(zr__pigment_eval(pg, zr_v3(u, v, 0)), 1, 1, 1, 0, 0);
+}
+
+static void test_texture_uv_mapping_torus_and_object(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f, "torus { 2, 0.5 uv_mapping texture { pigment {"
+                        " checker } } translate 10*x }");
+  assert_true(s->objects[0]->uv_mapping);
+  double u, v;
+  /* The outer equator at +x: u = 1 - (0 + pi) / 2 pi, v = 1/2. */
+  first_uv(s, zr_v3(20, 0, 0), zr_v3(-1, 0, 0), &u, &v);
+  assert_true(fabs(u - 0.5) < EPS);
+  assert_true(fabs(v - 0.5) < EPS);
+  /* The top of the tube: v = (pi / 2 + pi) / 2 pi. */
+  first_uv(s, zr_v3(12, 5, 0), zr_v3(0, -1, 0), &u, &v);
+  assert_true(fabs(u - 0.5) < EPS);
+  assert_true(fabs(v - 0.75) < EPS);
+}
+
+static void test_texture_uv_mapping_mesh2(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f, "mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>,"
+                        " <0,1,0> } uv_vectors { 3, <0,0>, <2,0>, <0,4> }"
+                        " face_indices { 1, <0,1,2> } uv_indices { 1,"
+                        " <0,1,2> } texture { uv_mapping pigment {"
+                        " checker } } }");
+  assert_true(first_texture(s)->uv_mapping);
+  double u, v;
+  /* (0.25, 0.5) has weights 0.25, 0.25, 0.5 on the three corners. */
+  first_uv(s, zr_v3(0.25, 0.5, 5), zr_v3(0, 0, -1), &u, &v);
+  assert_true(fabs(u - 0.5) < EPS);
+  assert_true(fabs(v - 2.0) < EPS);
+  /* Without uv_vectors each triangle has (0,0), (1,0), (1,1). */
+  s = good(f, "mesh { triangle { <0,0,0>, <1,0,0>, <0,1,0> }"
+              " pigment { uv_mapping checker } }");
+  first_uv(s, zr_v3(0.25, 0.5, 5), zr_v3(0, 0, -1), &u, &v);
+  assert_true(fabs(u - 0.75) < EPS);
+  assert_true(fabs(v - 0.5) < EPS);
+}
+
+static void test_texture_uv_mapping_without_uv(void **state) {
+  fixture *f = *state;
+  bad(f, "box { 0, 1 pigment { uv_mapping checker } }", ZR_EUNSUPPORTED,
+      "uv_mapping on a box: zRcube has surface coordinates only for mesh, "
+      "mesh2, sphere and torus",
+      NULL);
+  bad(f, "union { sphere { 0, 1 } cylinder { 0, y, 1 } uv_mapping }",
+      ZR_EUNSUPPORTED,
+      "uv_mapping on a cylinder: zRcube has surface coordinates only for "
+      "mesh, mesh2, sphere and torus",
+      NULL);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_texture_pigment_map_blends),
       cmocka_unit_test(test_texture_block_pigments_and_transform),
       cmocka_unit_test(test_texture_colour_lists_without_commas),
       cmocka_unit_test(test_texture_reflection_without_comma),
+      cmocka_unit_test(test_texture_slope_without_braces),
       cmocka_unit_test(test_texture_average_weights),
       cmocka_unit_test(test_texture_pigment_pattern_grey),
       cmocka_unit_test(test_texture_legacy_colour_map),
@@ -325,6 +572,13 @@ int main(void) {
       cmocka_unit_test(test_texture_normal_forms_parse),
       cmocka_unit_test(test_texture_noise_and_waves_settings),
       cmocka_unit_test(test_texture_bad_maps),
+      cmocka_unit_test(test_texture_uv_mapping_sphere),
+      cmocka_unit_test(test_texture_uv_mapping_torus_and_object),
+      cmocka_unit_test(test_texture_uv_mapping_mesh2),
+      cmocka_unit_test(test_texture_uv_mapping_without_uv),
+      cmocka_unit_test(test_texture_image_map_palette_filter_transmit),
+      cmocka_unit_test(test_texture_image_map_bad_palette_index),
+      cmocka_unit_test(test_texture_image_map_gamma),
   };
   return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -107,25 +107,34 @@ static float *transfer_table(png_structp png, png_infop info, int depth) {
 }
 
 /* Looks the colour of each palette index up, keeping the index.  An
-   index past the palette is an error (PNG specification, 11.2.3). */
+   index past the palette breaks the PNG specification (11.2.3) but
+   libpng and POV-Ray read it as black, and so do we, with a warning. */
 static zr_status expand_palette(png_job *job, png_const_colorp palette,
                                 int palette_size) {
   zr_image *image = job->image;
   size_t n = (size_t)image->width * (size_t)image->height;
+  size_t past = 0;
   for (size_t i = 0; i < n; i++) {
     unsigned k = job->rows[i];
-    if (k >= (unsigned)palette_size) {
-      snprintf(job->message, sizeof job->message, "palette index %u "
-               "past the %d entries of the palette", k, palette_size);
-      return ZR_EFORMAT;
+    unsigned rgb[3] = {0, 0, 0};
+    if (k < (unsigned)palette_size) {
+      rgb[0] = palette[k].red;
+      rgb[1] = palette[k].green;
+      rgb[2] = palette[k].blue;
+    } else {
+      past++;
     }
     image->indices[i] = (unsigned char)k;
-    unsigned rgb[3] = {palette[k].red, palette[k].green, palette[k].blue};
     for (size_t c = 0; c < 3; c++) {
       image->codes[3 * i + c] = (unsigned short)rgb[c];
       image->pixels[3 * i + c] = job->table[rgb[c]];
     }
   }
+  if (past)
+    zr__diag(job->ctx, ZR_DIAG_WARNING, ZR_EFORMAT, NULL,
+             "%s: %zu pixel(s) with a palette index past the %d entries "
+             "of the palette, read as black", job->name, past,
+             palette_size);
   return ZR_OK;
 }
 

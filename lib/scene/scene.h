@@ -238,7 +238,8 @@ typedef struct zr_image_map {
   int interpolate;     /* 0 none, 2 bilinear (others act as 2) */
   double filter_all, transmit_all;
   /* Palette images only, else NULL and 0: each pixel's palette entry and
-     each entry's filter and transmit (2 * palette_size floats), set by
+     each index's filter and transmit (2 * 256 floats, one pair for each
+     byte value, as a file may hold indices past its palette), set by
      "filter all" and "filter INDEX, AMOUNT" in the order written. */
   const unsigned char *indices;
   int palette_size;

@@ -658,8 +658,9 @@ static bool keep_palette(zr_sdl_parser *p, zr_image_map *im,
                          const zr_image *image) {
   size_t n = (size_t)image->width * (size_t)image->height;
   unsigned char *indices = zr__sdl_alloc(p, n);
-  float *ft = zr__sdl_alloc(p, 2 * (size_t)image->palette_size *
-                                   sizeof *ft);
+  /* Every byte value gets an entry: a file may hold indices past its
+     palette (read as black). */
+  float *ft = zr__sdl_alloc(p, 2 * 256 * sizeof *ft);
   if (!indices || !ft)
     return false;
   memcpy(indices, image->indices, n);
@@ -737,7 +738,7 @@ bool zr__sdl_image_map_mod(zr_sdl_parser *p, zr_image_map *im, int token,
       im->filter_all = v;
     else
       im->transmit_all = v;
-    for (int k = 0; k < im->palette_size; k++)
+    for (int k = 0; im->palette_ft && k < 256; k++)
       im->palette_ft[2 * k + (token == T_TRANSMIT)] = (float)v;
     return true;
   default:

@@ -507,6 +507,8 @@ zr_status zr__sdl_parse_nested(zr_sdl_parser *p, int start_token) {
   memset(&p->autoend, 0, sizeof p->autoend);
   if (start_token == T_START_DECL)
     p->autoend.token = T_DECL_END;
+  else if (start_token == T_START_ARG)
+    p->autoend.token = T_ARG_SEP;
   else if (start_token == T_START_VERSION)
     p->autoend.token = ';';
   p->start_token = start_token;
@@ -638,6 +640,11 @@ static bool autoend_due(const zr_sdl_parser *p, int next) {
   const zr_sdl_autoend *a = &p->autoend;
   if (!a->token || a->depth > 0 || !a->operand || closes_block(next))
     return false;
+  /* A macro argument ends by itself only after a block, where nothing
+     can continue it; otherwise its ',' or ')' ends it. */
+  if (a->token == T_ARG_SEP)
+    return a->last == '}' && next != ',' && next != ')' && next != 0 &&
+           next != T_TEXTURE && !is_directive(next);
   if (next == 0)
     return p->n_frames == 1;
   if (is_directive(next))

@@ -8,7 +8,7 @@
  * disk and a run depends on nothing but its input.  Diagnostics go to a
  * callback that only touches the formatted text, so the message and
  * caret formatting are exercised too.  Loops may repeat their bodies
- * 100,000 times in all (zr_context_set_loop_limit), so that an endless
+ * 2,000 times in all (zr_context_set_loop_limit), so that an endless
  * "#while" ends with its error in milliseconds rather than after the
  * default limit's half minute, which the fuzzer would report as a hang.
  * Built with --enable-fuzz and
@@ -49,7 +49,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     return 0;
   size_t sum = 0;
   zr_context_set_reader(ctx, refuse, NULL);
-  zr_context_set_loop_limit(ctx, 100000);
+  zr_context_set_loop_limit(ctx, 2000);
   zr_context_set_diag(ctx, on_diag, &sum);
   zr_scene *scene = NULL;
   if (zr_scene_parse_string(ctx, "fuzz.pov", (const char *)data, size,
