@@ -150,6 +150,53 @@ static void test_nurbs_sphere_on_implicit_surface(void **state) {
   assert_vec_close(pt.n, zr_v3(0, 1, 0), 1e-12);
 }
 
+/* POV-Ray's torus about y: (sqrt(x^2 + z^2) - R)^2 + y^2 = r^2, with
+   the implicit gradient as its outward normal, area 4 pi^2 R r, and
+   (u, v) found again from a point (but at the seams u = 0 and v = 0,
+   which are also u = 1 and v = 1). */
+static void test_nurbs_torus_on_implicit_surface(void **state) {
+  (void)state;
+  const double big = 2.0, small = 0.5;
+  zr_transform t;
+  skew_transform(&t, zr_v3(1, 1, 1));
+  for (int k = 0; k < 2; k++) {
+    const zr_transform *xf = k ? &t : NULL;
+    zr__surface s;
+    assert_int_equal(zr__surface_torus(&s, big, small, xf, NULL, NULL),
+                     ZR_OK);
+    for (int i = 0; i < GRID; i++)
+      for (int j = 0; j < GRID; j++) {
+        double u = (double)i / (GRID - 1), v = (double)j / (GRID - 1);
+        zr__surface_point pt;
+        zr__surface_eval(&s, u, v, &pt);
+        zr_vec3 q = xf ? zr__xform_point(xf->inv, pt.p) : pt.p;
+        double rho = hypot(q.x, q.z);
+        assert_abs(hypot(rho - big, q.y), small, GEOM_EPS);
+        zr_vec3 grad = zr_v3((rho - big) * q.x / rho, q.y,
+                             (rho - big) * q.z / rho);
+        zr_vec3 n = xf ? zr__xform_normal(xf->inv, grad) : grad;
+        assert_vec_close(pt.n, zr_v3_norm(n), GEOM_EPS);
+        assert_true(pt.da > 0.0);
+        if (i == 0 || i == GRID - 1 || j == 0 || j == GRID - 1)
+          continue;
+        double lu, lv;
+        zr__surface_locate(&s, pt.p, &lu, &lv);
+        assert_abs(lu, u, 1e-12);
+        assert_abs(lv, v, 1e-12);
+      }
+    /* A rigid motion keeps the area. */
+    assert_abs(area(&s) / (4 * M_PI * M_PI * big * small), 1.0, AREA_EPS);
+  }
+  zr_context *ctx = NULL;
+  assert_int_equal(zr_context_new(&ctx), ZR_OK);
+  zr__surface s;
+  assert_int_equal(zr__surface_torus(&s, 1, 2, NULL, ctx, NULL), ZR_EINVAL);
+  assert_string_equal(zr_context_last_error(ctx),
+                      "error: torus: radiosity needs 0 < minor < major "
+                      "radius (got 1, 2)\n");
+  zr_context_free(ctx);
+}
+
 static void test_nurbs_sphere_transformed(void **state) {
   (void)state;
   zr__surface s;
@@ -593,6 +640,7 @@ int main(void) {
       cmocka_unit_test(test_nurbs_derivatives_match_differences),
       cmocka_unit_test(test_nurbs_sphere_on_implicit_surface),
       cmocka_unit_test(test_nurbs_sphere_transformed),
+      cmocka_unit_test(test_nurbs_torus_on_implicit_surface),
       cmocka_unit_test(test_nurbs_mirror_keeps_normals_outward),
       cmocka_unit_test(test_nurbs_cylinder_on_implicit_surface),
       cmocka_unit_test(test_nurbs_cone_on_implicit_surface),

@@ -621,14 +621,14 @@ static void test_parser_syntax_error(void **state) {
       "'finish', 'interior', 'inverse', 'matrix', 'no_shadow', 'no_image', "
       "'no_reflection', 'double_illuminate', 'open', 'pigment', 'rotate', "
       "'scale', 'texture', "
-      "'translate', 'bounded_by', 'clipped_by', 'hollow', 'sturm', "
+      "'translate', 'uv_mapping', 'bounded_by', 'clipped_by', 'hollow', 'sturm', "
       "'radiosity', 'no_radiosity', 'interior_texture', 'photons', '+', "
       "'-', '*', '/', '}' or '.'",
       "t.pov:1:22: error: unexpected ',', expected 'transform', 'normal', "
       "'material', 'finish', 'interior', 'inverse', 'matrix', 'no_shadow', "
       "'no_image', 'no_reflection', 'double_illuminate', 'open', 'pigment', "
       "'rotate', 'scale', "
-      "'texture', 'translate', 'bounded_by', 'clipped_by', 'hollow', "
+      "'texture', 'translate', 'uv_mapping', 'bounded_by', 'clipped_by', 'hollow', "
       "'sturm', 'radiosity', 'no_radiosity', 'interior_texture', "
       "'photons', '+', '-', '*', '/', '}' or '.'\n"
       "    1 | sphere { <0, 0, 0>, 1, 2 }\n"
@@ -644,7 +644,7 @@ static void test_parser_syntax_error(void **state) {
       "'finish', 'interior', 'inverse', 'matrix', 'no_shadow', 'no_image', "
       "'no_reflection', 'double_illuminate', 'open', 'pigment', 'rotate', "
       "'scale', 'texture', "
-      "'translate', 'bounded_by', 'clipped_by', 'hollow', 'sturm', "
+      "'translate', 'uv_mapping', 'bounded_by', 'clipped_by', 'hollow', 'sturm', "
       "'radiosity', 'no_radiosity', 'interior_texture', 'photons', '+', "
       "'-', '*', '/', '}' or '.'",
       NULL);

@@ -476,7 +476,9 @@ static void first_uv(const zr_scene *s, zr_vec3 o, zr_vec3 d, double *u,
 
 /* The uv values are the manual's definitions evaluated by hand (sphere:
    u the angle about y from +x over a turn, v = 1/2 + asin(y) / pi;
-   torus: POV-Ray 3.7's torus CalcUV; mesh2: the corners' uv_vectors
+   torus: u = 1/2 - atan2(z, x) / 2 pi, v = 1/2 + atan2(y, r - major) /
+   2 pi, which povray 3.7 renders of gradient x and y bear out; mesh2:
+   uv_vectors
    blended barycentrically), so 1e-9 covers only rounding. */
 static void test_texture_uv_mapping_sphere(void **state) {
   fixture *f = *state;
@@ -507,13 +509,30 @@ static void test_texture_uv_mapping_torus_and_object(void **state) {
                         " checker } } translate 10*x }");
   assert_true(s->objects[0]->uv_mapping);
   double u, v;
-  /* The outer equator at +x: u = 1 - (0 + pi) / 2 pi, v = 1/2. */
+  /* The outer equator at +x: u = 1/2, v = 1/2. */
   first_uv(s, zr_v3(20, 0, 0), zr_v3(-1, 0, 0), &u, &v);
   assert_true(fabs(u - 0.5) < EPS);
   assert_true(fabs(v - 0.5) < EPS);
-  /* The top of the tube: v = (pi / 2 + pi) / 2 pi. */
-  first_uv(s, zr_v3(12, 5, 0), zr_v3(0, -1, 0), &u, &v);
-  assert_true(fabs(u - 0.5) < EPS);
+  /* The top of the tube at +z: u = 1/4, v = (pi / 2 + pi) / 2 pi. */
+  first_uv(s, zr_v3(10, 5, 2), zr_v3(0, -1, 0), &u, &v);
+  assert_true(fabs(u - 0.25) < EPS);
+  assert_true(fabs(v - 0.75) < EPS);
+}
+
+/* The box map is the manual's UV Boxmap figure (povray 3.7 renders of
+   gradient x and y on a box match it); 1e-9 covers rounding. */
+static void test_texture_uv_mapping_box(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f, "box { 0, <1, 2, 4> pigment { uv_mapping checker"
+                        " } }");
+  double u, v;
+  /* Max x at y = 1, z = 1: u = 3/4 - (1/4) / 4, v = 1/3 + (1/2) / 3. */
+  first_uv(s, zr_v3(5, 1, 1), zr_v3(-1, 0, 0), &u, &v);
+  assert_true(fabs(u - (0.75 - 0.0625)) < EPS);
+  assert_true(fabs(v - 0.5) < EPS);
+  /* Max y at x = 0.5, z = 3: u = 1/4 + 1/8, v = 1 - (3/4) / 3. */
+  first_uv(s, zr_v3(0.5, 5, 3), zr_v3(0, -1, 0), &u, &v);
+  assert_true(fabs(u - 0.375) < EPS);
   assert_true(fabs(v - 0.75) < EPS);
 }
 
@@ -540,14 +559,14 @@ static void test_texture_uv_mapping_mesh2(void **state) {
 
 static void test_texture_uv_mapping_without_uv(void **state) {
   fixture *f = *state;
-  bad(f, "box { 0, 1 pigment { uv_mapping checker } }", ZR_EUNSUPPORTED,
-      "uv_mapping on a box: zRcube has surface coordinates only for mesh, "
-      "mesh2, sphere and torus",
+  bad(f, "plane { y, 0 pigment { uv_mapping checker } }", ZR_EUNSUPPORTED,
+      "uv_mapping on a plane: zRcube has surface coordinates only for "
+      "mesh, mesh2, sphere, box and torus",
       NULL);
   bad(f, "union { sphere { 0, 1 } cylinder { 0, y, 1 } uv_mapping }",
       ZR_EUNSUPPORTED,
       "uv_mapping on a cylinder: zRcube has surface coordinates only for "
-      "mesh, mesh2, sphere and torus",
+      "mesh, mesh2, sphere, box and torus",
       NULL);
 }
 
@@ -574,6 +593,7 @@ int main(void) {
       cmocka_unit_test(test_texture_bad_maps),
       cmocka_unit_test(test_texture_uv_mapping_sphere),
       cmocka_unit_test(test_texture_uv_mapping_torus_and_object),
+      cmocka_unit_test(test_texture_uv_mapping_box),
       cmocka_unit_test(test_texture_uv_mapping_mesh2),
       cmocka_unit_test(test_texture_uv_mapping_without_uv),
       cmocka_unit_test(test_texture_image_map_palette_filter_transmit),

@@ -81,6 +81,8 @@ static uint64_t hash_shape(uint64_t h, const zr_object *o) {
     h = fnv_v(fnv_v(h, o->u.cone.base), o->u.cone.cap);
     h = fnv_d(fnv_d(h, o->u.cone.base_radius), o->u.cone.cap_radius);
     return fnv_d(h, o->u.cone.open);
+  case ZR_OBJ_TORUS:
+    return fnv_d(fnv_d(h, o->u.torus.major), o->u.torus.minor);
   case ZR_OBJ_DISC:
     h = fnv_v(fnv_v(h, o->u.disc.centre), o->u.disc.normal);
     return fnv_d(fnv_d(h, o->u.disc.radius), o->u.disc.hole_radius);

@@ -189,6 +189,22 @@ void zr__nurbs_profile_half_circle(zr__nurbs_profile *c, double rad) {
   }
 }
 
+void zr__nurbs_profile_circle(zr__nurbs_profile *c, double centre,
+                              double rad) {
+  /* Four quarter arcs, corners on the circumscribed square. */
+  static const double r[9] = {0, 1, 1, 1, 0, -1, -1, -1, 0};
+  static const double h[9] = {-1, -1, 0, 1, 1, 1, 0, -1, -1};
+  memset(c, 0, sizeof *c);
+  c->degree = 2;
+  c->n_cp = 9;
+  arc_knots(c->knots, 4);
+  for (int i = 0; i < 9; i++) {
+    c->r[i] = centre + rad * r[i];
+    c->h[i] = rad * h[i];
+    c->w[i] = (i % 2) ? M_SQRT1_2 : 1.0;
+  }
+}
+
 void zr__nurbs_revolve(zr__nurbs *s, const zr__nurbs_profile *c) {
   /* The nine-point circle from +x towards -z: its corner points lie on
      the circumscribed square and carry weight sqrt(2)/2. */

@@ -77,6 +77,10 @@ void zr__nurbs_profile_line(zr__nurbs_profile *c, double r0, double h0,
 /* The half circle of radius rad from (0, -rad) through (rad, 0) to
    (0, rad): two rational quarter arcs. */
 void zr__nurbs_profile_half_circle(zr__nurbs_profile *c, double rad);
+/* The whole circle of radius rad about (r, h) = (centre, 0), from its
+   lowest point counter-clockwise (outwards first): a torus's tube. */
+void zr__nurbs_profile_circle(zr__nurbs_profile *c, double centre,
+                              double rad);
 
 /*
  * The surface swept by turning profile c once about the y axis (section

@@ -371,6 +371,26 @@ zr_status zr__surface_sphere(zr__surface *s, zr_vec3 centre, double radius,
   return ZR_OK;
 }
 
+zr_status zr__surface_torus(zr__surface *s, double major, double minor,
+                            const zr_transform *xf, zr_context *ctx,
+                            const zr_diag_place *where) {
+  memset(s, 0, sizeof *s);
+  if (!(minor > 0.0) || !(major > minor) || !isfinite(major))
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, where,
+                    "torus: radiosity needs 0 < minor < major radius "
+                    "(got %g, %g)", major, minor);
+  zr_status st = set_orientation(s, xf, ctx, where);
+  if (st != ZR_OK)
+    return st;
+  s->kind = ZR__SURFACE_TORUS;
+  zr__nurbs_profile prof;
+  zr__nurbs_profile_circle(&prof, major, minor);
+  s->r0 = major;
+  s->r1 = minor;
+  build_revolution(s, &prof, zr_v3(0, 0, 0), zr_v3(0, 1, 0), xf);
+  return ZR_OK;
+}
+
 /* The axis of a cylinder or cone, with the checks both need. */
 static zr_status solid_axis(const char *what, zr_vec3 base, zr_vec3 cap,
                             zr_vec3 *axis, double *length, zr_context *ctx,
@@ -607,6 +627,14 @@ static void locate_revolution(const zr__surface *s, zr_vec3 p, double *u,
   case ZR__SURFACE_SPHERE:
     *v = arc_param(atan2(q.y, rho) + M_PI_2, 2);
     break;
+  case ZR__SURFACE_TORUS: {
+    /* The angle round the tube from its lowest point. */
+    double theta = atan2(q.y, rho - s->r0) + M_PI_2;
+    if (theta < 0.0)
+      theta += 2.0 * M_PI;
+    *v = arc_param(theta, 4);
+    break;
+  }
   case ZR__SURFACE_DISC:
     *v = (s->r0 - rho) / (s->r0 - s->r1);
     break;
@@ -646,7 +674,7 @@ static bool u_edges_curved(const zr__surface *s) {
 }
 
 static bool v_edges_curved(const zr__surface *s) {
-  return s->kind == ZR__SURFACE_SPHERE;
+  return s->kind == ZR__SURFACE_SPHERE || s->kind == ZR__SURFACE_TORUS;
 }
 
 typedef struct polygon_out {

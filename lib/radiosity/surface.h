@@ -28,7 +28,8 @@ typedef enum zr__surface_kind {
   ZR__SURFACE_DISC,              /* NURBS, planar; v = 0 on the rim */
   ZR__SURFACE_SPHERE,            /* NURBS; v = 0 at the -y pole */
   ZR__SURFACE_CYLINDER,          /* NURBS; v = 0 at the base */
-  ZR__SURFACE_CONE               /* NURBS; v = 0 at the base */
+  ZR__SURFACE_CONE,              /* NURBS; v = 0 at the base */
+  ZR__SURFACE_TORUS              /* NURBS; v = 0 under the tube */
 } zr__surface_kind;
 
 typedef struct zr__surface {
@@ -43,7 +44,8 @@ typedef struct zr__surface {
   /* Surfaces of revolution, for zr__surface_locate: world to the model
      frame (axis +y, the centre or base at the origin) and the profile's
      radius at v = 0 (r0) and v = 1 (r1) and height at v = 1 (the
-     sphere's radius is r0). */
+     sphere's radius is r0; a torus keeps its major and minor radii
+     in r0 and r1). */
   double to_model[4][4];
   double r0, r1, height;
 } zr__surface;
@@ -94,6 +96,13 @@ zr_status zr__surface_disc(zr__surface *s, zr_vec3 centre, zr_vec3 normal,
 zr_status zr__surface_sphere(zr__surface *s, zr_vec3 centre, double radius,
                              const zr_transform *xf, zr_context *ctx,
                              const zr_diag_place *where);
+/* POV-Ray's torus about the y axis: the tube's circle (radius minor, its
+   centre major from the axis) turned about y.  Not yet a radiosity
+   surface (mesh.c): a torus in a furnace box took minutes to solve at
+   BF_eps 1e-2, which needs looking into first. */
+zr_status zr__surface_torus(zr__surface *s, double major, double minor,
+                            const zr_transform *xf, zr_context *ctx,
+                            const zr_diag_place *where);
 /* The open side of a cylinder (caps are discs of their own). */
 zr_status zr__surface_cylinder(zr__surface *s, zr_vec3 base, zr_vec3 cap,
                                double radius, const zr_transform *xf,

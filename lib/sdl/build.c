@@ -895,7 +895,7 @@ static const zr_object *without_uv(const zr_object *o) {
     return NULL;
   }
   bool has = o->kind == ZR_OBJ_MESH || o->kind == ZR_OBJ_SPHERE ||
-             o->kind == ZR_OBJ_TORUS;
+             o->kind == ZR_OBJ_TORUS || o->kind == ZR_OBJ_BOX;
   return has ? NULL : o;
 }
 
@@ -927,7 +927,8 @@ static bool uv_mapping_allowed(zr_sdl_parser *p, const zr_object *o,
     return true;
   zr__sdl_error(p, ZR_EUNSUPPORTED, loc,
                 "uv_mapping on %s: zRcube has surface coordinates only "
-                "for mesh, mesh2, sphere and torus", kind_name(bare->kind));
+                "for mesh, mesh2, sphere, box and torus",
+                kind_name(bare->kind));
   return false;
 }
 

@@ -596,6 +596,51 @@ static void sphere_uv(zr_vec3 d, double *u, double *v) {
   *u = theta / (2.0 * UV_PI);
 }
 
+/* POV-Ray 3.7's box map ("UV Mapping", the UV Boxmap figure): the faces
+   unfolded as a cross over u in [0, 1], v in [0, 1] (min x, max z, max
+   x, min z in the middle row; min y below and max y above max z).  The
+   face is the one the object-space point p lies nearest. */
+static void box_uv(const zr_object *o, zr_vec3 p, double *u, double *v) {
+  zr_vec3 a = o->u.box.corner1, b = o->u.box.corner2;
+  zr_vec3 lo = zr_v3(fmin(a.x, b.x), fmin(a.y, b.y), fmin(a.z, b.z));
+  zr_vec3 hi = zr_v3(fmax(a.x, b.x), fmax(a.y, b.y), fmax(a.z, b.z));
+  double d[6] = {fabs(p.x - lo.x), fabs(p.x - hi.x), fabs(p.y - lo.y),
+                 fabs(p.y - hi.y), fabs(p.z - lo.z), fabs(p.z - hi.z)};
+  int face = 0;
+  for (int k = 1; k < 6; k++)
+    if (d[k] < d[face])
+      face = k;
+  double x = (p.x - lo.x) / (hi.x - lo.x);
+  double y = (p.y - lo.y) / (hi.y - lo.y);
+  double z = (p.z - lo.z) / (hi.z - lo.z);
+  switch (face) {
+  case 0: /* min x */
+    *u = z / 4.0;
+    *v = 1.0 / 3.0 + y / 3.0;
+    break;
+  case 1: /* max x */
+    *u = 3.0 / 4.0 - z / 4.0;
+    *v = 1.0 / 3.0 + y / 3.0;
+    break;
+  case 2: /* min y */
+    *u = 1.0 / 4.0 + x / 4.0;
+    *v = z / 3.0;
+    break;
+  case 3: /* max y */
+    *u = 1.0 / 4.0 + x / 4.0;
+    *v = 1.0 - z / 3.0;
+    break;
+  case 4: /* min z */
+    *u = 1.0 - x / 4.0;
+    *v = 1.0 / 3.0 + y / 3.0;
+    break;
+  default: /* max z */
+    *u = 1.0 / 4.0 + x / 4.0;
+    *v = 1.0 / 3.0 + y / 3.0;
+    break;
+  }
+}
+
 bool zr__hit_uv(const zr_hit *hit, zr_vec3 p, double *u, double *v) {
   const zr_object *o = hit->object;
   if (o->kind == ZR_OBJ_MESH) {
@@ -609,9 +654,14 @@ bool zr__hit_uv(const zr_hit *hit, zr_vec3 p, double *u, double *v) {
     sphere_uv(zr_v3_sub(p, o->u.sphere.centre), u, v);
     return true;
   }
+  if (o->kind == ZR_OBJ_BOX) {
+    box_uv(o, p, u, v);
+    return true;
+  }
   if (o->kind == ZR_OBJ_TORUS) {
-    /* u about the y axis, v about the tube's circle (POV-Ray's torus
-       CalcUV). */
+    /* u about the y axis from -x, v about the tube from its inner
+       equator (POV-Ray 3.7's torus; povray renders of uv_mapping
+       gradient x and gradient y on a torus agree). */
     *u = 1.0 - (atan2(p.z, p.x) + UV_PI) / (2.0 * UV_PI);
     double x = sqrt(p.x * p.x + p.z * p.z) - o->u.torus.major;
     *v = (atan2(p.y, x) + UV_PI) / (2.0 * UV_PI);

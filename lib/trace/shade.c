@@ -116,6 +116,11 @@ static bool shadow_visit(const zr_hit *hit, void *user) {
     /* Layered or patterned: lib/scene/texture.c. */
     w->light = zr_rgb_mul(w->light, zr__texture_see_through(tx, p));
   } else {
+    /* A uv_mapping pigment filters by its colour at the hit's (u, v). */
+    double u, v;
+    if ((o->uv_mapping || tx->uv_mapping || tx->pigment->uv_mapping) &&
+        zr__hit_uv(hit, p, &u, &v))
+      p = zr_v3(u, v, 0.0);
     zr_colour c = zr__pigment_at(tx->pigment, p);
     w->light = zr_rgb_mul(w->light, see_through(c));
   }
