@@ -1078,6 +1078,20 @@ cexpr:
 | cexpr T_LE cexpr     { TRY(zr__sdl_compare(p, T_LE, &$1, &$3, &@2, &$$)); }
 | cexpr T_GE cexpr     { TRY(zr__sdl_compare(p, T_GE, &$1, &$3, &@2, &$$)); }
 | cexpr T_NE cexpr     { TRY(zr__sdl_compare(p, T_NE, &$1, &$3, &@2, &$$)); }
+/* Strings compare as strcmp orders them (meshcam_macros.inc: "#if
+   (c_file != "")"). */
+| str_expr '=' str_expr
+    { $$ = zr__sdl_float(strcmp($1, $3) == 0); }
+| str_expr T_NE str_expr
+    { $$ = zr__sdl_float(strcmp($1, $3) != 0); }
+| str_expr '<' str_expr
+    { $$ = zr__sdl_float(strcmp($1, $3) < 0); }
+| str_expr '>' str_expr
+    { $$ = zr__sdl_float(strcmp($1, $3) > 0); }
+| str_expr T_LE str_expr
+    { $$ = zr__sdl_float(strcmp($1, $3) <= 0); }
+| str_expr T_GE str_expr
+    { $$ = zr__sdl_float(strcmp($1, $3) >= 0); }
 ;
 
 args:
@@ -3225,6 +3239,7 @@ light_body:
 | light_body T_PHOTONS '{' photon_items '}'  { $$ = $1; }
 | light_body T_LOOKS_LIKE '{' object '}'
     { TRY(zr__sdl_looks_like(p, $1, $4, &@4)); $$ = $1; }
+
 ;
 
 background:

@@ -244,6 +244,19 @@ static void test_directives_macros(void **state) {
   assert_int_equal(f->scene->n_objects, 1);
 }
 
+/* Strings compare in conditions, as strcmp orders them (povray 3.7
+   prints the same three words; meshcam_macros.inc relies on it). */
+static void test_directives_string_comparison(void **state) {
+  fixture *f = *state;
+  prints(f,
+         "#declare S = \"abc\";\n"
+         "#if (S != \"\") #debug \"ne \" #end\n"
+         "#if (S = \"abc\") #debug \"eq \" #end\n"
+         "#if (\"abc\" < \"abd\") #debug \"lt\" #end\n"
+         "#if (\"b\" <= \"a\") #debug \" wrong\" #end\n",
+         "ne eq lt");
+}
+
 /* shapes.pov calls "Align_Object(Center_Object(...) -y, <0,0,0>)": an
    argument that is a block ends without its comma. */
 static void test_directives_block_argument_without_comma(void **state) {
@@ -671,6 +684,7 @@ int main(void) {
       T(test_directives_while_in_macro_in_include),
       T(test_directives_macros),
       T(test_directives_block_argument_without_comma),
+      T(test_directives_string_comparison),
       T(test_directives_vectors_promote),
       T(test_directives_float_values),
       T(test_directives_fast_path_agrees),
