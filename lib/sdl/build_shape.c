@@ -79,6 +79,23 @@ zr_object *zr__sdl_superellipsoid(zr_sdl_parser *p, const zr_sdl_loc *loc,
 /* More points than this are surely a mistake (and would not fit). */
 #define MAX_POLYGON_POINTS 10000000
 
+/*
+ * The room for the n points that a polygon, prism, lathe or sor
+ * announces (what names it in the message: "a polygon", "this prism"),
+ * at least fewest of them; NULL after an error.
+ */
+static zr_vec3 *point_room(zr_sdl_parser *p, const char *what,
+                           double fewest, double n, const zr_sdl_loc *at,
+                           size_t *n_expected) {
+  if (!(n >= fewest && n <= MAX_POLYGON_POINTS)) {
+    zr__sdl_error(p, ZR_ESCENE, at, "%s needs at least %g points, not %g",
+                  what, fewest, n);
+    return NULL;
+  }
+  *n_expected = (size_t)n;
+  return zr__sdl_alloc(p, (size_t)n * sizeof(zr_vec3));
+}
+
 zr_object *zr__sdl_polygon_new(zr_sdl_parser *p, const zr_sdl_loc *loc,
                                const zr_sdl_expr *count,
                                const zr_sdl_loc *count_loc) {
@@ -86,14 +103,8 @@ zr_object *zr__sdl_polygon_new(zr_sdl_parser *p, const zr_sdl_loc *loc,
   double n;
   if (!o || !zr__sdl_want_float(p, count, count_loc, &n))
     return NULL;
-  if (!(n >= 3.0 && n <= MAX_POLYGON_POINTS)) {
-    zr__sdl_error(p, ZR_ESCENE, count_loc,
-                  "a polygon needs at least 3 points, not %g", n);
-    return NULL;
-  }
-  o->u.polygon.n_expected = (size_t)n;
-  o->u.polygon.points =
-      zr__sdl_alloc(p, o->u.polygon.n_expected * sizeof(zr_vec3));
+  o->u.polygon.points = point_room(p, "a polygon", 3, n, count_loc,
+                                   &o->u.polygon.n_expected);
   return o->u.polygon.points ? o : NULL;
 }
 
@@ -299,16 +310,10 @@ bool zr__sdl_prism_size(zr_sdl_parser *p, zr_object *o,
     return false;
   static const double fewest[4] = {3, 3, 4, 4};
   int spline = o->u.prism.spline;
-  if (!(n >= fewest[spline] && n <= MAX_POLYGON_POINTS)) {
-    zr__sdl_error(p, ZR_ESCENE, &at[2],
-                  "this prism needs at least %g points, not %g",
-                  fewest[spline], n);
-    return false;
-  }
   o->u.prism.y0 = fmin(h0, h1);
   o->u.prism.y1 = fmax(h0, h1);
-  o->u.prism.n_expected = (size_t)n;
-  o->u.prism.points = zr__sdl_alloc(p, (size_t)n * sizeof(zr_vec3));
+  o->u.prism.points = point_room(p, "this prism", fewest[spline], n, &at[2],
+                                 &o->u.prism.n_expected);
   return o->u.prism.points != NULL;
 }
 
@@ -496,14 +501,8 @@ bool zr__sdl_lathe_count(zr_sdl_parser *p, zr_object *o,
     return false;
   static const double fewest[4] = {2, 3, 4, 4};
   int spline = o->u.lathe.spline;
-  if (!(n >= fewest[spline] && n <= MAX_POLYGON_POINTS)) {
-    zr__sdl_error(p, ZR_ESCENE, at,
-                  "this lathe needs at least %g points, not %g",
-                  fewest[spline], n);
-    return false;
-  }
-  o->u.lathe.n_expected = (size_t)n;
-  o->u.lathe.points = zr__sdl_alloc(p, (size_t)n * sizeof(zr_vec3));
+  o->u.lathe.points = point_room(p, "this lathe", fewest[spline], n, at,
+                                 &o->u.lathe.n_expected);
   return o->u.lathe.points != NULL;
 }
 
@@ -659,13 +658,8 @@ zr_object *zr__sdl_sor_new(zr_sdl_parser *p, const zr_sdl_loc *loc,
   double n;
   if (!o || !zr__sdl_want_float(p, count, count_loc, &n))
     return NULL;
-  if (!(n >= 4.0 && n <= MAX_POLYGON_POINTS)) {
-    zr__sdl_error(p, ZR_ESCENE, count_loc,
-                  "a sor needs at least 4 points, not %g", n);
-    return NULL;
-  }
-  o->u.sor.n_expected = (size_t)n;
-  o->u.sor.points = zr__sdl_alloc(p, (size_t)n * sizeof(zr_vec3));
+  o->u.sor.points = point_room(p, "a sor", 4, n, count_loc,
+                               &o->u.sor.n_expected);
   return o->u.sor.points ? o : NULL;
 }
 
