@@ -103,6 +103,22 @@ static zr_sdl_value pointer_value(zr_sdl_kind kind, const void *ptr) {
   return v;
 }
 
+/* Gives a list back to the pool once its consumer ran; ok is what the
+   consumer returned. */
+static bool list_done(zr_sdl_parser *p, zr_sdl_list *l, bool ok) {
+  zr__sdl_list_release(p, l);
+  return ok;
+}
+
+/* The colours of checker, hexagon or brick, in the arena (the grammar's
+   value holds a pointer: see zr_sdl_list). */
+static zr_sdl_clist *clist_new(zr_sdl_parser *p) {
+  zr_sdl_clist *l = zr__sdl_alloc(p, sizeof *l);
+  if (l)
+    memset(l, 0, sizeof *l);
+  return l;
+}
+
 static zr_sdl_mod make_mod(zr_sdl_mod_kind kind, const void *ptr) {
   zr_sdl_mod m = {kind, ptr};
   return m;
@@ -140,9 +156,10 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
   zr_sdl_decl_name decl;
   zr_sdl_value value;
   zr_sdl_expr expr;
-  zr_sdl_list list;
+  zr_sdl_list *list;
   zr_sdl_colour_mod cmod;
   zr_sdl_mod mod;
+  zr_sdl_lgroup lgroup;
   zr_sdl_reflection refl;
   zr_transform *transform;
   zr_sdl_tblock *tblock;
@@ -150,7 +167,7 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
   const zr_fn *fn;
   zr_pigment *pigment;
   zr_sdl_pmod pmod;
-  zr_sdl_clist clist;
+  zr_sdl_clist *clist;
   zr_colour_map *cmap;
   zr_normal *normal;
   zr_image_map *imap;
@@ -176,6 +193,7 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %token T_START_PAREN "start of parenthesized expression"
 %token T_START_FN_TEXTURE "start of a function's pattern or pigment"
 %token T_START_FN_SPLINE "start of a function's spline"
+%token T_START_FN_TRANSFORM "start of a function's transform"
 
 %token <num> T_NUMBER "number"
 %token <str> T_STRING "string"
@@ -223,6 +241,7 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %token T_BOZO "bozo"
 %token T_BRICK "brick"
 %token T_BRICK_SIZE "brick_size"
+%token T_BUMP_MAP "bump_map"
 %token T_BUMP_SIZE "bump_size"
 %token T_BUMPS "bumps"
 %token T_CHECKER "checker"
@@ -233,6 +252,7 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %token T_DENTS "dents"
 %token T_FREQUENCY "frequency"
 %token T_GRADIENT "gradient"
+%token T_TILING "tiling"
 %token T_GRANITE "granite"
 %token T_HEXAGON "hexagon"
 %token T_IMAGE_MAP "image_map"
@@ -241,6 +261,10 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %token T_LAMBDA "lambda"
 %token T_LEOPARD "leopard"
 %token T_MAP_TYPE "map_type"
+%token T_MATERIAL_MAP "material_map"
+%token T_USE_COLOR "use_color"
+%token T_USE_INDEX "use_index"
+%token T_PROJECTED_THROUGH "projected_through"
 %token T_MARBLE "marble"
 %token T_MORTAR "mortar"
 %token T_NORMAL "normal"
@@ -535,6 +559,11 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %token T_SMOOTH "smooth"
 %token T_WATER_LEVEL "water_level"
 %token T_PGM "pgm"
+%token T_GIF "gif"
+%token T_POT "pot"
+%token T_TGA "tga"
+%token T_LIGHT_GROUP "light_group"
+%token T_GLOBAL_LIGHTS "global_lights"
 %token T_HF_GRAY_16 "hf_gray_16"
 %token T_OVUS "ovus"
 %token T_PARAMETRIC "parametric"
@@ -604,6 +633,7 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %token T_MEDIA_ATTENUATION "media_attenuation"
 %token T_MEDIA_INTERACTION "media_interaction"
 %token T_OMNIMAX "omnimax"
+%token T_MESH_CAMERA "mesh_camera"
 %token T_ORIENT "orient"
 %token T_ORTHOGRAPHIC "orthographic"
 %token T_PANORAMIC "panoramic"
@@ -682,10 +712,11 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %type <rainbow> rainbow_body
 
 %type <expr> expr primary colour_value colour_spec colour_rgb colour_other
+%type <expr> init_colour init_colour_spec init_colour_other
 %type <list> list
 %type <cmod> colour_item colour_whole
 %type <token> func dot_item
-%type <value> rvalue
+%type <value> rvalue other_value init_value
 /* Directive values and the expressions only they and parentheses hold
    (comparisons, logic, '? :'), strings and arrays. */
 %type <expr> cexpr
@@ -693,6 +724,8 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %type <str> str_expr str_list hf_file image_map_file
 %type <decl> decl_target
 %type <token> decl_end arg_end str_func init_begin
+%type <object> light_group_head
+%type <lgroup> light_group_body
 %type <object> object object_body object_head union_head union_body
 %type <object> difference_head clip_objects polygon_head
 %type <object> poly_head poly_coefs
@@ -710,19 +743,20 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %type <fn> fn_pattern
 %type <object> pattern_object
 %type <pigment> pigment pigment_start pigment_body
+%type <pigment> pigment_start_bare pigment_body_bare
 %type <token> pattern_kw block_kw
 %type <clist> colour_list colour_list_items
 %type <pmod> pattern_mod warp_body warp_item
 %type <cmap> colour_map colour_map_head colour_map_body
-%type <normal> normal normal_start normal_body
-%type <imap> image_map_head image_map_body
+%type <normal> normal normal_start normal_body bump_map_body
+%type <imap> image_map_head image_map_body material_map_head
 %type <finish> finish finish_head finish_body irid_body
 %type <refl> reflection
 %type <texture> texture texture_start texture_body layered_texture
 %type <map> pigment_map pigment_map_body normal_map normal_map_body
 %type <map> texture_map texture_map_body slope_map slope_map_body
 %type <slope> slope_block slope_dir
-%type <map> pigment_blocks normal_blocks texture_blocks
+%type <map> pigment_blocks normal_blocks texture_blocks material_textures
 %type <material> material material_body
 %type <token> spiral_kw
 %type <expr> colour_kw_value
@@ -743,6 +777,11 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
    parenthesized parameter, as in POV-Ray. */
 %precedence SPLINE_COPY
 %precedence '('
+/* In an array initialiser, whose elements need no commas between them,
+   a token that can continue an element does ("{rgb 1 red 0}" is one
+   colour, "{texture {A} texture {B}}" one layered texture, "array[2]
+   {...}" an initialised array), as in POV-Ray. */
+%precedence '{' T_TEXTURE T_RED T_GREEN T_BLUE T_FILTER T_TRANSMIT
 %precedence T_OPEN /* isosurface { ... open }: see iso_head */
 %right '?'
 %left '|'
@@ -804,6 +843,9 @@ start:
 /* function { spline { ... } } likewise. */
 | T_START_FN_SPLINE spline
     { p->nested_rvalue = pointer_value(ZR_SDL_SPLINE, $2); YYACCEPT; }
+/* function { transform { ... } } likewise. */
+| T_START_FN_TRANSFORM transform_value
+    { p->nested_rvalue = pointer_value(ZR_SDL_TRANSFORM, $2); YYACCEPT; }
 ;
 
 items:
@@ -861,7 +903,12 @@ arg_end:
 
 rvalue:
   colour_value  { $$ = numeric_value(&$1); }
-| T_PIGMENT_ID  { $$ = $1; }
+| other_value
+;
+
+/* Every value but a float, vector or colour. */
+other_value:
+  T_PIGMENT_ID  { $$ = $1; }
 | T_FINISH_ID   { $$ = $1; }
 | T_TEXTURE_ID  { $$ = $1; }
 | T_INTERIOR_ID { $$ = $1; }
@@ -887,10 +934,10 @@ rvalue:
 | material      { $$ = pointer_value(ZR_SDL_MATERIAL, $1); }
 | normal        { $$ = pointer_value(ZR_SDL_NORMAL, $1); }
 | colour_map    { $$ = pointer_value(ZR_SDL_COLOUR_MAP, $1); }
-| T_FUNCTION_ID { $$ = $1; }
+| T_FUNCTION_ID %prec SPLINE_COPY { $$ = $1; }
 | T_TRANSFORM_ID { $$ = $1; }
 | transform_value { $$ = pointer_value(ZR_SDL_TRANSFORM, $1); }
-| T_SPLINE_ID   { $$ = $1; }
+| T_SPLINE_ID %prec SPLINE_COPY { $$ = $1; }
 | spline        { $$ = pointer_value(ZR_SDL_SPLINE, $1); }
 | T_FUNCTION
     {
@@ -908,7 +955,8 @@ rvalue:
     }
 | pigment       { $$ = pointer_value(ZR_SDL_PIGMENT, $1); }
 | finish        { $$ = pointer_value(ZR_SDL_FINISH, $1); }
-| layered_texture { $$ = pointer_value(ZR_SDL_TEXTURE, $1); }
+| layered_texture %prec OPTIONAL_COMMA
+    { $$ = pointer_value(ZR_SDL_TEXTURE, $1); }
 | interior      { $$ = pointer_value(ZR_SDL_INTERIOR, $1); }
 | object        { $$ = pointer_value(ZR_SDL_OBJECT, $1); }
 | str_expr      { $$ = pointer_value(ZR_SDL_STRING, $1); }
@@ -927,16 +975,16 @@ rvalue:
       TRY(a = zr__sdl_array_copy(p, $1.ptr));
       $$ = pointer_value(ZR_SDL_ARRAY, a);
     }
-| T_ARRAY dims
+| T_ARRAY dims %prec OPTIONAL_COMMA
     {
       zr_sdl_array *a;
-      TRY(a = zr__sdl_array_new(p, &$2, &@2));
+      TRY(list_done(p, $2, (a = zr__sdl_array_new(p, $2, &@2)) != NULL));
       $$ = pointer_value(ZR_SDL_ARRAY, a);
     }
 | T_ARRAY dims init_begin init_items opt_comma '}'
     {
       zr_sdl_array *a;
-      TRY(a = zr__sdl_array_new(p, &$2, &@2));
+      TRY(list_done(p, $2, (a = zr__sdl_array_new(p, $2, &@2)) != NULL));
       TRY(zr__sdl_array_init(p, a, (size_t)$3, &@$));
       $$ = pointer_value(ZR_SDL_ARRAY, a);
     }
@@ -973,8 +1021,9 @@ default_item:
 /* ---- arrays ---- */
 
 dims:
-  '[' cexpr ']'        { $$.n = 0; TRY(zr__sdl_list_add(p, &$$, &$2, &@2)); }
-| dims '[' cexpr ']'   { $$ = $1; TRY(zr__sdl_list_add(p, &$$, &$3, &@3)); }
+  '[' cexpr ']'
+    { TRY($$ = zr__sdl_list_new(p)); TRY(zr__sdl_list_add(p, $$, &$2, &@2)); }
+| dims '[' cexpr ']'   { $$ = $1; TRY(zr__sdl_list_add(p, $$, &$3, &@3)); }
 ;
 
 /* The elements of every level go to p->init in row-major order; the
@@ -983,14 +1032,53 @@ init_begin:
   '{'                  { $$ = (int)p->n_init; }
 ;
 
+/* POV-Ray reads the elements without commas between them too
+   (lemon.inc: "<0.1, 9.4> <0.1, 9.4>"), and a comparison, '&', '|' or
+   '?:' outside parentheses is none of an element's business there (as
+   in any of its float expressions): "{1 <3,4>}" is two elements and
+   "{1 -2}" one, -1, since an operator continues the element. */
 init_items:
   init_item
-| init_items ',' init_item
+| init_items comma init_item
 ;
 
 init_item:
-  rvalue               { TRY(zr__sdl_init_add(p, &$1, &@1)); }
+  init_value           { TRY(zr__sdl_init_add(p, &$1, &@1)); }
 | '{' init_items opt_comma '}'
+;
+
+init_value:
+  init_colour          { $$ = numeric_value(&$1); }
+| other_value
+;
+
+/* colour_value with expr where it has cexpr. */
+init_colour:
+  T_COLOUR init_colour_spec
+    {
+      $$ = $2;
+      if ($$.dim != 5) {
+        zr_sdl_colour_mod none = {0, $$, @2};
+        TRY(zr__sdl_colour_apply(p, &$$, &none));
+      }
+    }
+| init_colour_spec
+;
+
+init_colour_spec:
+  colour_rgb %prec OPTIONAL_COMMA
+| init_colour_other %prec OPTIONAL_COMMA
+;
+
+init_colour_other:
+  expr %prec OPTIONAL_COMMA
+| colour_item
+    {
+      $$ = zr__sdl_colour_expr(zr_colour5(0, 0, 0, 0, 0));
+      TRY(zr__sdl_colour_apply(p, &$$, &$1));
+    }
+| init_colour_other colour_item
+    { $$ = $1; TRY(zr__sdl_colour_apply(p, &$$, &$2)); }
 ;
 
 /* POV-Ray accepts a comma after an initialiser's last element. */
@@ -1095,8 +1183,9 @@ cexpr:
 ;
 
 args:
-  cexpr                { $$.n = 0; TRY(zr__sdl_list_add(p, &$$, &$1, &@1)); }
-| args ',' cexpr       { $$ = $1; TRY(zr__sdl_list_add(p, &$$, &$3, &@3)); }
+  cexpr
+    { TRY($$ = zr__sdl_list_new(p)); TRY(zr__sdl_list_add(p, $$, &$1, &@1)); }
+| args ',' cexpr       { $$ = $1; TRY(zr__sdl_list_add(p, $$, &$3, &@3)); }
 ;
 
 expr:
@@ -1123,9 +1212,11 @@ primary:
 | T_VECTOR_ID          { $$ = $1.num; }
 | T_COLOUR_ID          { $$ = $1.num; }
 | '(' cexpr ')'        { $$ = $2; }
-| '<' list '>'         { TRY(zr__sdl_from_list(p, &$2, &@$, &$$)); }
+| '<' list '>'
+    { TRY(list_done(p, $2, zr__sdl_from_list(p, $2, &@$, &$$))); }
 /* POV-Ray reads a comma before the '>' ("rgb<0.2,0.1,0.5,>"). */
-| '<' list ',' '>'     { TRY(zr__sdl_from_list(p, &$2, &@$, &$$)); }
+| '<' list ',' '>'
+    { TRY(list_done(p, $2, zr__sdl_from_list(p, $2, &@$, &$$))); }
 | T_X                  { $$ = zr__sdl_vec(1, 0, 0); }
 | T_Y                  { $$ = zr__sdl_vec(0, 1, 0); }
 | T_Z                  { $$ = zr__sdl_vec(0, 0, 1); }
@@ -1144,7 +1235,8 @@ primary:
 | T_FALSE              { $$ = zr__sdl_float(0); }
 | T_NO                 { $$ = zr__sdl_float(0); }
 | T_OFF                { $$ = zr__sdl_float(0); }
-| func '(' args ')'    { TRY(zr__sdl_call(p, $1, &$3, &@$, &$$)); }
+| func '(' args ')'
+    { TRY(list_done(p, $3, zr__sdl_call(p, $1, $3, &@$, &$$))); }
 | str_func '(' str_expr ')'
     { TRY(zr__sdl_string_float(p, $1, $3, &@$, &$$)); }
 | T_STRCMP '(' str_expr ',' str_expr ')'
@@ -1176,7 +1268,10 @@ primary:
 | T_VROTATE '(' expr ',' expr ')'
     { TRY(zr__sdl_vrotate(p, &$3, &$5, &@$, &$$)); }
 | T_FUNCTION_ID '(' list ')'
-    { TRY(zr__sdl_function_call(p, $1.ptr, &$3, &@1, &@$, &$$)); }
+    {
+      TRY(list_done(p, $3, zr__sdl_function_call(p, $1.ptr, $3, &@1, &@$,
+                                                  &$$)));
+    }
 | T_SPLINE_ID '(' cexpr ')'
     {
       double t;
@@ -1206,9 +1301,9 @@ primary:
    OPTIONAL_COMMA ranks below the operators. */
 list:
   expr %prec OPTIONAL_COMMA
-    { $$.n = 0; TRY(zr__sdl_list_add(p, &$$, &$1, &@1)); }
+    { TRY($$ = zr__sdl_list_new(p)); TRY(zr__sdl_list_add(p, $$, &$1, &@1)); }
 | list comma expr %prec OPTIONAL_COMMA
-    { $$ = $1; TRY(zr__sdl_list_add(p, &$$, &$3, &@3)); }
+    { $$ = $1; TRY(zr__sdl_list_add(p, $$, &$3, &@3)); }
 ;
 
 func:
@@ -1320,6 +1415,47 @@ colour_item:
 object:
   object_body '}'
 | union_body '}'
+| light_group_body '}'
+    { TRY(zr__sdl_light_group_done(p, $1.object, $1.global, &@1)); $$ = $1.object; }
+;
+
+/* light_group { objects and light sources, then [global_lights B]
+   and transformations } (reference manual, "Light Group"): a union
+   whose lights light only its own objects. */
+light_group_head:
+  T_LIGHT_GROUP '{'
+    { TRY($$ = zr__sdl_object_new(p, ZR_OBJ_UNION, &@1)); }
+| light_group_head object
+    { TRY(zr__sdl_union_add(p, $1, $2)); $$ = $1; }
+/* "light_group { L1 }": an object identifier alone, as the manual's
+   nested group has it. */
+| light_group_head T_OBJECT_ID
+    {
+      zr_object *copy = zr__sdl_object_copy(p, $2.ptr);
+      TRY(copy);
+      TRY(zr__sdl_union_add(p, $1, copy));
+      $$ = $1;
+    }
+| light_group_head light_done
+    { TRY(zr__sdl_csg_add_light(p, $1, $2)); $$ = $1; }
+;
+
+light_group_body:
+  light_group_head     { $$.object = $1; $$.global = false; }
+| light_group_body T_GLOBAL_LIGHTS expr
+    {
+      double on;
+      TRY(zr__sdl_want_float(p, &$3, &@3, &on));
+      $$ = $1;
+      $$.global = on != 0.0;
+    }
+| light_group_body T_GLOBAL_LIGHTS  { $$ = $1; $$.global = true; }
+| light_group_body transform
+    {
+      zr_sdl_mod m = make_mod(ZR_SDL_MOD_TRANSFORM, $2);
+      TRY(zr__sdl_object_mod(p, $1.object, &m, &@2));
+      $$ = $1;
+    }
 ;
 
 object_body:
@@ -1421,6 +1557,13 @@ object_head:
 | sweep_head           { TRY(zr__sdl_sweep_done(p, $1, &@1)); $$ = $1; }
 | julia_head           { TRY(zr__sdl_julia_done(p, $1, &@1)); $$ = $1; }
 | mesh_head            { TRY(zr__sdl_mesh_done(p, $1, &@1)); $$ = $1; }
+/* mesh { M ... } and mesh2 { M ... }: a copy of the declared mesh, as
+   object { M ... } (POV-Ray accepts both; the mesh camera's manual
+   section writes it so). */
+| T_MESH '{' T_OBJECT_ID
+    { TRY($$ = zr__sdl_mesh_copy(p, $3.ptr, &@3)); }
+| T_MESH2 '{' T_OBJECT_ID
+    { TRY($$ = zr__sdl_mesh_copy(p, $3.ptr, &@3)); }
 | mesh2_head           { TRY(zr__sdl_mesh_done(p, $1, &@1)); $$ = $1; }
 | T_SMOOTH_TRIANGLE '{' expr comma expr comma expr comma expr comma expr
   comma expr
@@ -1541,7 +1684,7 @@ blob_component:
     {
       zr_blob_component *c =
           &$1->u.blob.components[$1->u.blob.n_components - 1];
-      TRY(zr__sdl_blob_component_mod(p, c, &$2, &@2));
+      TRY(zr__sdl_blob_component_mod(p, $1, c, &$2, &@2));
       $$ = $1;
     }
 ;
@@ -1603,13 +1746,15 @@ iso_head:
     }
 ;
 
-/* height_field { [png | pgm | ppm | jpeg] "file" | function W, H { ... }
+/* height_field { [png | gif | pot | tga | pgm | ppm | jpeg] "file" | function W, H { ... }
    [smooth] [water_level L] [hierarchy [B]] } (reference manual, "Height
    Field"); the file's own bytes say what it is.  The function's '{' is
    shifted, then its body read from the token array. */
 hf_head:
   T_HEIGHT_FIELD '{' hf_file
-    { TRY($$ = zr__sdl_height_field_image(p, &@1, $3, &@3)); }
+    { TRY($$ = zr__sdl_height_field_image(p, &@1, $3, &@3, false)); }
+| T_HEIGHT_FIELD '{' T_POT str_expr
+    { TRY($$ = zr__sdl_height_field_image(p, &@1, $4, &@4, true)); }
 | T_HEIGHT_FIELD '{' T_FUNCTION expr comma expr '{'
     {
       const zr_fn *fn = zr__sdl_height_field_fn_body(p, &@7);
@@ -1689,6 +1834,8 @@ hf_file:
 | T_PGM str_expr       { $$ = $2; }
 | T_PPM str_expr       { $$ = $2; }
 | T_JPEG str_expr      { $$ = $2; }
+| T_GIF str_expr       { $$ = $2; }
+| T_TGA str_expr       { $$ = $2; }
 ;
 
 /* sor { N, <Point>... } (reference manual, "Surface of Revolution"). */
@@ -1816,7 +1963,15 @@ mesh_head:
     {
       zr_sdl_expr v[3] = {$4, $6, $8};
       zr_sdl_loc l[3] = {@4, @6, @8};
-      TRY(zr__sdl_mesh_triangle(p, $1, v, l, NULL, NULL, $9));
+      TRY(zr__sdl_mesh_triangle(p, $1, v, l, NULL, NULL, NULL, NULL, $9));
+      $$ = $1;
+    }
+| mesh_head T_TRIANGLE '{' expr comma expr comma expr
+  T_UV_VECTORS expr comma expr comma expr mesh_texture '}'
+    {
+      zr_sdl_expr v[3] = {$4, $6, $8}, uv[3] = {$10, $12, $14};
+      zr_sdl_loc l[3] = {@4, @6, @8}, ul[3] = {@10, @12, @14};
+      TRY(zr__sdl_mesh_triangle(p, $1, v, l, NULL, NULL, uv, ul, $15));
       $$ = $1;
     }
 | mesh_head T_SMOOTH_TRIANGLE '{' expr comma expr comma expr comma expr
@@ -1824,7 +1979,18 @@ mesh_head:
     {
       zr_sdl_expr v[3] = {$4, $8, $12}, n[3] = {$6, $10, $14};
       zr_sdl_loc vl[3] = {@4, @8, @12}, nl[3] = {@6, @10, @14};
-      TRY(zr__sdl_mesh_triangle(p, $1, v, vl, n, nl, $15));
+      TRY(zr__sdl_mesh_triangle(p, $1, v, vl, n, nl, NULL, NULL, $15));
+      $$ = $1;
+    }
+| mesh_head T_SMOOTH_TRIANGLE '{' expr comma expr comma expr comma expr
+  comma expr comma expr T_UV_VECTORS expr comma expr comma expr
+  mesh_texture '}'
+    {
+      zr_sdl_expr v[3] = {$4, $8, $12}, n[3] = {$6, $10, $14};
+      zr_sdl_expr uv[3] = {$16, $18, $20};
+      zr_sdl_loc vl[3] = {@4, @8, @12}, nl[3] = {@6, @10, @14};
+      zr_sdl_loc ul[3] = {@16, @18, @20};
+      TRY(zr__sdl_mesh_triangle(p, $1, v, vl, n, nl, uv, ul, $21));
       $$ = $1;
     }
 | mesh_head T_INSIDE_VECTOR expr
@@ -2029,7 +2195,7 @@ transform:
 | T_TRANSLATE expr %prec OPTIONAL_COMMA
     { TRY($$ = zr__sdl_transform(p, T_TRANSLATE, &$2, &@2)); }
 | T_MATRIX '<' list '>'
-    { TRY($$ = zr__sdl_matrix(p, &$3, &@3)); }
+    { TRY(list_done(p, $3, ($$ = zr__sdl_matrix(p, $3, &@3)) != NULL)); }
 | transform_value
 ;
 
@@ -2060,15 +2226,19 @@ pigment:
 /* A pigment's body also stands alone in pigment_pattern { } and in the
    entries of a pigment_map. */
 pigment_start:
-  %empty               { TRY($$ = zr__sdl_pigment_new(p, NULL)); }
-| T_PIGMENT_ID         { TRY($$ = zr__sdl_pigment_new(p, $1.ptr)); }
-/* density { DENSITY_IDENTIFIER ... } (build_media.c). */
-| T_DENSITY_ID         { TRY($$ = zr__sdl_pigment_new(p, $1.ptr)); }
+  pigment_start_bare
 | colour_value
     {
       TRY($$ = zr__sdl_pigment_new(p, NULL));
       TRY(zr__sdl_want_colour(p, &$1, &@1, &$$->colour));
     }
+;
+
+pigment_start_bare:
+  %empty               { TRY($$ = zr__sdl_pigment_new(p, NULL)); }
+| T_PIGMENT_ID         { TRY($$ = zr__sdl_pigment_new(p, $1.ptr)); }
+/* density { DENSITY_IDENTIFIER ... } (build_media.c). */
+| T_DENSITY_ID         { TRY($$ = zr__sdl_pigment_new(p, $1.ptr)); }
 | T_IMAGE_MAP '{' image_map_body '}'
     {
       TRY($$ = zr__sdl_pigment_new(p, NULL));
@@ -2079,93 +2249,108 @@ pigment_start:
 
 pigment_body:
   pigment_start
-| pigment_body transform
-    { TRY(zr__sdl_pigment_transform(p, $1, $2)); $$ = $1; }
-| pigment_body pattern_kw
-    { TRY(zr__sdl_pigment_pattern(p, $1, $2, NULL)); $$ = $1; }
-| pigment_body block_kw colour_list
-    { TRY(zr__sdl_pigment_pattern(p, $1, $2, &$3)); $$ = $1; }
-| pigment_body block_kw pigment_blocks
+| pigment_body pigment_item
+;
+
+/* An average's pigment_map entry may leave out its weight when its
+   pigment does not start with a colour ("Average" pattern: "[gradient y
+   color_map { ... }]"); POV-Ray then reads no colour first either. */
+pigment_body_bare:
+  pigment_start_bare
+| pigment_body_bare pigment_item
+;
+
+/* The items after a pigment's start.  Each works on the pigment before
+   it on the stack, $<pigment>0: a pigment_item only ever follows a
+   pigment_body or a pigment_body_bare, which are the same pigment. */
+pigment_item:
+  transform
+    { TRY(zr__sdl_pigment_transform(p, $<pigment>0, $1)); }
+| pattern_kw
+    { TRY(zr__sdl_pigment_pattern(p, $<pigment>0, $1, NULL)); }
+| block_kw colour_list
+    { TRY(zr__sdl_pigment_pattern(p, $<pigment>0, $1, $2)); }
+| block_kw pigment_blocks
     {
-      TRY(zr__sdl_pigment_pattern(p, $1, $2, NULL));
-      TRY(zr__sdl_pigment_map_set(p, $1, $3, &@3));
-      $$ = $1;
+      TRY(zr__sdl_pigment_pattern(p, $<pigment>0, $1, NULL));
+      TRY(zr__sdl_pigment_map_set(p, $<pigment>0, $2, &@2));
     }
-| pigment_body spiral_kw expr
+| spiral_kw expr
     {
-      TRY(zr__sdl_pigment_pattern(p, $1, $2, NULL));
-      TRY(zr__sdl_spiral_arms(p, &$1->pattern, &$3, &@3));
-      $$ = $1;
+      TRY(zr__sdl_pigment_pattern(p, $<pigment>0, $1, NULL));
+      TRY(zr__sdl_spiral_arms(p, &$<pigment>0->pattern, &$2, &@2));
     }
-| pigment_body fractal
+| fractal
     {
-      TRY(zr__sdl_pigment_pattern(p, $1, $2.kind, NULL));
-      zr__sdl_fractal_set(&$1->pattern, &$2);
-      $$ = $1;
+      TRY(zr__sdl_pigment_pattern(p, $<pigment>0, $1.kind, NULL));
+      zr__sdl_fractal_set(&$<pigment>0->pattern, &$1);
     }
 /* object { OBJECT Outside, Inside } ("Object Pattern"). */
-| pigment_body T_OBJECT '{' pattern_object colour_list '}'
+| T_OBJECT '{' pattern_object colour_list '}'
     {
-      TRY(zr__sdl_pigment_pattern(p, $1, ZR_PAT_OBJECT, &$5));
-      $1->pattern.object = $4;
-      $$ = $1;
+      TRY(zr__sdl_pigment_pattern(p, $<pigment>0, ZR_PAT_OBJECT, $4));
+      $<pigment>0->pattern.object = $3;
     }
-| pigment_body T_OBJECT '{' pattern_object pigment_blocks '}'
+| T_OBJECT '{' pattern_object pigment_blocks '}'
     {
-      TRY(zr__sdl_pigment_pattern(p, $1, ZR_PAT_OBJECT, NULL));
-      $1->pattern.object = $4;
-      TRY(zr__sdl_pigment_map_set(p, $1, $5, &@5));
-      $$ = $1;
+      TRY(zr__sdl_pigment_pattern(p, $<pigment>0, ZR_PAT_OBJECT, NULL));
+      $<pigment>0->pattern.object = $3;
+      TRY(zr__sdl_pigment_map_set(p, $<pigment>0, $4, &@4));
     }
-| pigment_body fn_pattern
+| fn_pattern
     {
-      TRY(zr__sdl_pigment_pattern(p, $1, ZR_PAT_FUNCTION, NULL));
-      TRY(zr__sdl_pattern_function(p, &$1->pattern, $2, &@2));
-      $$ = $1;
+      TRY(zr__sdl_pigment_pattern(p, $<pigment>0, ZR_PAT_FUNCTION, NULL));
+      TRY(zr__sdl_pattern_function(p, &$<pigment>0->pattern, $1, &@1));
     }
-| pigment_body T_PIGMENT_PATTERN '{' pigment_body '}'
+| T_PIGMENT_PATTERN '{' pigment_body '}'
     {
-      TRY(zr__sdl_pigment_pattern(p, $1, ZR_PAT_PIGMENT_PATTERN, NULL));
-      zr__sdl_pigment_pattern_of(&$1->pattern, $4);
-      $$ = $1;
+      zr_pigment *pg = $<pigment>0;
+      TRY(zr__sdl_pigment_pattern(p, pg, ZR_PAT_PIGMENT_PATTERN, NULL));
+      zr__sdl_pigment_pattern_of(&pg->pattern, $3);
     }
-| pigment_body pigment_map
-    { TRY(zr__sdl_pigment_map_set(p, $1, $2, &@2)); $$ = $1; }
+| pigment_map
+    { TRY(zr__sdl_pigment_map_set(p, $<pigment>0, $1, &@1)); }
 /* A density's own items (build_media.c): its body is a pigment's. */
-| pigment_body density_map
-    { TRY(zr__sdl_pigment_map_set(p, $1, $2, &@2)); $$ = $1; }
-| pigment_body T_DENSITY_FILE T_DF3 str_expr
-    { TRY(zr__sdl_density_file(p, $1, $4, &@4)); $$ = $1; }
-| pigment_body T_INTERPOLATE expr
-    { TRY(zr__sdl_density_interpolate(p, &$1->pattern, &$3, &@3)); $$ = $1; }
-| pigment_body block_kw density_blocks
+| density_map
+    { TRY(zr__sdl_pigment_map_set(p, $<pigment>0, $1, &@1)); }
+| T_DENSITY_FILE T_DF3 str_expr
+    { TRY(zr__sdl_density_file(p, $<pigment>0, $3, &@3)); }
+| T_INTERPOLATE expr
     {
-      TRY(zr__sdl_pigment_pattern(p, $1, $2, NULL));
-      TRY(zr__sdl_pigment_map_set(p, $1, $3, &@3));
-      $$ = $1;
+      zr_pigment *pg = $<pigment>0;
+      TRY(zr__sdl_density_interpolate(p, &pg->pattern, &$2, &@2));
     }
-| pigment_body slope_block
+| block_kw density_blocks
     {
-      TRY(zr__sdl_pigment_pattern(p, $1, ZR_PAT_SLOPE, NULL));
-      $1->pattern.slope = *$2;
-      $$ = $1;
+      TRY(zr__sdl_pigment_pattern(p, $<pigment>0, $1, NULL));
+      TRY(zr__sdl_pigment_map_set(p, $<pigment>0, $2, &@2));
     }
-| pigment_body T_GRADIENT expr
+| slope_block
     {
-      TRY(zr__sdl_pigment_pattern(p, $1, ZR_PAT_GRADIENT, NULL));
-      TRY(zr__sdl_gradient(p, &$1->pattern, &$3, &@3));
-      $$ = $1;
+      TRY(zr__sdl_pigment_pattern(p, $<pigment>0, ZR_PAT_SLOPE, NULL));
+      $<pigment>0->pattern.slope = *$1;
     }
-| pigment_body pattern_mod
+/* tiling N ("Tiling Pattern"). */
+| T_TILING expr
     {
-      TRY(zr__sdl_pattern_mod_in(p, &$1->pattern, $1->transform, &$2));
-      $$ = $1;
+      TRY(zr__sdl_pigment_pattern(p, $<pigment>0, ZR_PAT_TILING, NULL));
+      TRY(zr__sdl_tiling(p, &$<pigment>0->pattern, &$2, &@2));
     }
-| pigment_body colour_map  { $1->colour_map = $2; $$ = $1; }
+| T_GRADIENT expr
+    {
+      TRY(zr__sdl_pigment_pattern(p, $<pigment>0, ZR_PAT_GRADIENT, NULL));
+      TRY(zr__sdl_gradient(p, &$<pigment>0->pattern, &$2, &@2));
+    }
+| pattern_mod
+    {
+      zr_pigment *pg = $<pigment>0;
+      TRY(zr__sdl_pattern_mod_in(p, &pg->pattern, pg->transform, &$1));
+    }
+| colour_map  { $<pigment>0->colour_map = $1; }
 /* uv_mapping ("UV Mapping"): the pattern takes the surface's (u, v, 0). */
-| pigment_body T_UV_MAPPING  { $1->uv_mapping = true; $$ = $1; }
+| T_UV_MAPPING  { $<pigment>0->uv_mapping = true; }
 /* quick_color only matters to POV-Ray's low quality previews. */
-| pigment_body T_QUICK_COLOUR colour_value  { $$ = $1; }
+| T_QUICK_COLOUR colour_value
 ;
 
 /* ---- patterns (reference manual, "Pattern") ---- */
@@ -2203,7 +2388,8 @@ fractal_head:
     }
 ;
 
-/* The object of an object pattern. */
+/* The object of an object pattern or looks_like: an identifier alone is
+   a copy. */
 pattern_object:
   T_OBJECT_ID          { TRY($$ = zr__sdl_object_copy(p, $1.ptr)); }
 | object
@@ -2294,11 +2480,11 @@ pigment_map_body:
       $$ = $1;
     }
 /* An average's entry may leave out its weight, 1, when its pigment
-   starts with a function ("[function { ... } color_map { ... }]"). */
-| pigment_map_body '[' fn_pattern pigment_body ']'
+   does not start with a colour ("[function { ... } color_map { ... }]",
+   "[gradient y color_map { ... }]"). */
+| pigment_map_body '[' pigment_body_bare ']'
     {
-      TRY(zr__sdl_pigment_function_entry(p, $4, $3, &@3));
-      zr_map_entry e = {.u.pigment = $4};
+      zr_map_entry e = {.u.pigment = $3};
       TRY(zr__sdl_map_add_weight1(p, $1, &e));
       $$ = $1;
     }
@@ -2368,19 +2554,19 @@ block_kw:
 /* "checker Red, Blue" or "checker color Red color Blue": a comma or the
    colour keyword separates the colours ("Color List Pigments"). */
 colour_list:
-  %empty               { memset(&$$, 0, sizeof $$); }
+  %empty               { TRY($$ = clist_new(p)); }
 | colour_list_items
 ;
 
 colour_list_items:
   colour_value
-    { memset(&$$, 0, sizeof $$); TRY(zr__sdl_clist_add(p, &$$, &$1, &@1)); }
+    { TRY($$ = clist_new(p)); TRY(zr__sdl_clist_add(p, $$, &$1, &@1)); }
 | colour_list_items ',' colour_value
-    { $$ = $1; TRY(zr__sdl_clist_add(p, &$$, &$3, &@3)); }
+    { $$ = $1; TRY(zr__sdl_clist_add(p, $$, &$3, &@3)); }
 | colour_list_items T_COLOUR colour_spec
-    { $$ = $1; TRY(zr__sdl_clist_add(p, &$$, &$3, &@3)); }
+    { $$ = $1; TRY(zr__sdl_clist_add(p, $$, &$3, &@3)); }
 | colour_list_items colour_rgb
-    { $$ = $1; TRY(zr__sdl_clist_add(p, &$$, &$2, &@2)); }
+    { $$ = $1; TRY(zr__sdl_clist_add(p, $$, &$2, &@2)); }
 ;
 
 pattern_mod:
@@ -2584,6 +2770,8 @@ normal_body:
     }
 | normal_body T_BUMP_SIZE expr
     { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->amount)); $$ = $1; }
+| normal_body T_BUMP_MAP '{' bump_map_body '}'
+    { TRY(zr__sdl_bump_map_end(p, $1, $4, &@2)); $$ = $1; }
 | normal_body T_ACCURACY expr
     { TRY(zr__sdl_normal_accuracy(p, $1, &$3, &@3)); $$ = $1; }
 | normal_body transform
@@ -2612,6 +2800,8 @@ image_map_file:
 | T_JPEG str_expr      { $$ = $2; @$ = @2; }
 | T_PPM str_expr       { $$ = $2; @$ = @2; }
 | T_PGM str_expr       { $$ = $2; @$ = @2; }
+| T_GIF str_expr       { $$ = $2; @$ = @2; }
+| T_TGA str_expr       { $$ = $2; @$ = @2; }
 ;
 
 image_map_body:
@@ -2636,6 +2826,64 @@ image_map_body:
       TRY(zr__sdl_image_map_index(p, $1, T_TRANSMIT, &$3, &@3, &$5, &@5));
       $$ = $1;
     }
+;
+
+/* bump_map { FILE [gamma G] ITEMS } ("Bump Map"), build_texture.c. */
+bump_map_body:
+  image_map_file
+    {
+      TRY($$ = zr__sdl_bump_map_new(
+              p, zr__sdl_bitmap_new(p, "bump_map", $1, &@1, NULL, NULL)));
+    }
+| image_map_file T_GAMMA expr
+    {
+      TRY($$ = zr__sdl_bump_map_new(
+              p, zr__sdl_bitmap_new(p, "bump_map", $1, &@1, &$3, &@3)));
+    }
+| bump_map_body T_MAP_TYPE expr
+    { TRY(zr__sdl_bump_map_mod(p, $1, T_MAP_TYPE, &$3, &@3)); $$ = $1; }
+| bump_map_body T_ONCE
+    { TRY(zr__sdl_bump_map_mod(p, $1, T_ONCE, NULL, &@2)); $$ = $1; }
+| bump_map_body T_INTERPOLATE expr
+    { TRY(zr__sdl_bump_map_mod(p, $1, T_INTERPOLATE, &$3, &@3)); $$ = $1; }
+| bump_map_body T_USE_INDEX
+    { TRY(zr__sdl_bump_map_mod(p, $1, T_USE_INDEX, NULL, &@2)); $$ = $1; }
+| bump_map_body T_USE_COLOR
+    { TRY(zr__sdl_bump_map_mod(p, $1, T_USE_COLOR, NULL, &@2)); $$ = $1; }
+| bump_map_body T_BUMP_SIZE expr
+    { TRY(zr__sdl_bump_map_mod(p, $1, T_BUMP_SIZE, &$3, &@3)); $$ = $1; }
+;
+
+/* material_map { FILE ITEMS TEXTURES TRANSFORMS } ("Material Maps"). */
+material_map_head:
+  image_map_file
+    {
+      TRY($$ = zr__sdl_bitmap_new(p, "material_map", $1, &@1, NULL,
+                                  NULL));
+    }
+| material_map_head T_MAP_TYPE expr
+    { TRY(zr__sdl_image_map_mod(p, $1, T_MAP_TYPE, &$3, &@3)); $$ = $1; }
+| material_map_head T_ONCE
+    { TRY(zr__sdl_image_map_mod(p, $1, T_ONCE, NULL, &@2)); $$ = $1; }
+| material_map_head T_INTERPOLATE expr
+    { TRY(zr__sdl_image_map_mod(p, $1, T_INTERPOLATE, &$3, &@3)); $$ = $1; }
+;
+
+/* Any number of textures, indexed from 0. */
+material_textures:
+  texture
+    {
+      zr_map_entry e = {.u.texture = $1};
+      TRY($$ = zr__sdl_map_new(p));
+      TRY(zr__sdl_material_add(p, $$, &e));
+    }
+| material_textures texture
+    {
+      zr_map_entry e = {.u.texture = $2};
+      TRY(zr__sdl_material_add(p, $1, &e));
+      $$ = $1;
+    }
+| material_textures ','  { $$ = $1; }
 ;
 
 finish:
@@ -2879,6 +3127,14 @@ texture_body:
     }
 | texture_body texture_map
     { TRY(zr__sdl_texture_map_set(p, $1, $2, &@2)); $$ = $1; }
+| texture_body T_MATERIAL_MAP '{' material_map_head material_textures
+    transform_block '}'
+    {
+      zr_transform *t;
+      TRY(t = zr__sdl_transform_block_end(p, $6));
+      TRY(zr__sdl_material_map(p, $1, $4, $5, t, &@2));
+      $$ = $1;
+    }
 /* In a layered texture these change the top layer (build_texture.c). */
 | texture_body T_UV_MAPPING
     {
@@ -3162,6 +3418,19 @@ camera_body:
     }
 | camera_body transform
     { zr__sdl_camera_transform(p, $2); }
+| camera_body mesh_camera '}'
+    { TRY(zr__sdl_mesh_camera_end(p, &@2)); }
+;
+
+/* mesh_camera { rays distribution [max_distance] mesh { } ... [smooth] }
+   ("Mesh projection"; lib/sdl/build_meshcam.c). */
+mesh_camera:
+  T_MESH_CAMERA '{' expr comma expr
+    { TRY(zr__sdl_mesh_camera(p, &@1, &$3, &@3, &$5, &@5, NULL, NULL)); }
+| T_MESH_CAMERA '{' expr comma expr comma expr
+    { TRY(zr__sdl_mesh_camera(p, &@1, &$3, &@3, &$5, &@5, &$7, &@7)); }
+| mesh_camera object   { TRY(zr__sdl_mesh_camera_add(p, $2, &@2)); }
+| mesh_camera T_SMOOTH { TRY(zr__sdl_mesh_camera_smooth(p, &@2)); }
 ;
 
 light:
@@ -3237,8 +3506,19 @@ light_body:
 | light_body T_MEDIA_ATTENUATION expr
     { TRY(zr__sdl_light_bool(p, &$3, &@3, &$1->media_attenuation)); $$ = $1; }
 | light_body T_PHOTONS '{' photon_items '}'  { $$ = $1; }
-| light_body T_LOOKS_LIKE '{' object '}'
+/* The object may be an identifier alone ("looks_like { LightShape }",
+   qtvrpanorama.pov), as in an object pattern. */
+| light_body T_LOOKS_LIKE '{' pattern_object '}'
     { TRY(zr__sdl_looks_like(p, $1, $4, &@4)); $$ = $1; }
+/* projected_through { OBJECT } ("Projected_Through"): only the object's
+   shape matters (lib/trace/lights.c); it is not one of the scene's. */
+| light_body T_PROJECTED_THROUGH '{' object '}'
+    { $1->projected_through = $4; $$ = $1; }
+| light_body T_PROJECTED_THROUGH '{' T_OBJECT_ID '}'
+    {
+      TRY($1->projected_through = zr__sdl_object_copy(p, $4.ptr));
+      $$ = $1;
+    }
 
 ;
 

@@ -227,6 +227,11 @@ typedef struct zr_radiosity_params {
      command line passes +WT).  The solution is the same bytes for any
      number. */
   int threads;
+  /* A mesh (mesh, mesh2, height_field) with more faces than this takes
+     no part in the solution, with a warning: refining links between
+     thousands of faces still takes minutes.  Default 1024; 0: no
+     limit. */
+  int max_mesh_faces;
 } zr_radiosity_params;
 
 /* Fills p with the defaults above, then takes the settings of the

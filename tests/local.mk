@@ -10,6 +10,9 @@ tests_test_image_LDADD = $(TEST_LDADD) $(PNG_LIBS) $(JPEG_LIBS)
 # (-fvisibility=hidden): link the static archive, where they resolve.
 tests_test_image_LDFLAGS = -static
 
+# The numeric assertions the test programs share (header only).
+EXTRA_DIST += tests/test_util.h
+
 # imgcmp compares two renders (SSIM or relative RMSE); golden.sh uses it.
 check_PROGRAMS += tests/imgcmp
 tests_imgcmp_SOURCES = tests/imgcmp.c
@@ -74,3 +77,11 @@ EXTRA_DIST += tests/test_cornell_truth.sh
 EXTRA_DIST += bench/radiosity.sh bench/radiosity/charts.gp \
 	bench/radiosity/cornell.pov bench/radiosity/check_truth.py \
 	bench/radiosity/summary.awk bench/radiosity/error-time.png
+
+# GIF, POT and TGA files (lib/image/gif.c, tga.c, heights.c).
+check_PROGRAMS += tests/test_image_formats
+TESTS += tests/test_image_formats
+tests_test_image_formats_SOURCES = tests/test_image_formats.c
+tests_test_image_formats_CPPFLAGS = $(TEST_CPPFLAGS)
+tests_test_image_formats_LDADD = $(TEST_LDADD) $(PNG_LIBS) $(JPEG_LIBS)
+tests_test_image_formats_LDFLAGS = -static

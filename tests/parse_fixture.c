@@ -8,6 +8,7 @@
 #include <stdint.h>
 #include <cmocka.h>
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -93,4 +94,16 @@ void bad(fixture *f, const char *text, zr_status status,
   assert_string_equal(f->diag.message, message);
   if (full)
     assert_string_equal(f->diag.text, full);
+}
+
+const zr_object *only(fixture *f, const char *text) {
+  zr_scene *s = good(f, text);
+  assert_int_equal(s->n_primitives, 1);
+  return s->primitives[0];
+}
+
+int cross(const zr_object *obj, zr_vec3 o, zr_vec3 d, double tmin,
+          zr_hit h[ZR_MAX_CROSSINGS]) {
+  zr_ray r = {o, d};
+  return zr__intersect(obj, &r, tmin, INFINITY, h);
 }

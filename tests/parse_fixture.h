@@ -1,12 +1,16 @@
 /*
  * parse_fixture.h - what the scene-language test programs share: a
  * cmocka fixture holding a context whose diagnostics are captured and
- * whose reader serves in-memory files, and the calls that parse a text
- * and assert success or an exact error.
+ * whose reader serves in-memory files, the calls that parse a text
+ * and assert success or an exact error, and the first look the shape
+ * tests take at what they parsed (its one primitive, a ray's
+ * crossings).
  */
 #ifndef ZR_TESTS_PARSE_FIXTURE_H
 #define ZR_TESTS_PARSE_FIXTURE_H
 
+#include "scene/scene.h"
+#include "trace/intersect.h"
 #include "zrcube.h"
 
 /* A file the reader serves (#include, #fopen): path and contents. */
@@ -48,5 +52,13 @@ zr_scene *good(fixture *f, const char *text);
    message, and, when full is not NULL, this full text. */
 void bad(fixture *f, const char *text, zr_status status,
          const char *message, const char *full);
+
+/* Parses text that must be good and hold one primitive; returns it. */
+const zr_object *only(fixture *f, const char *text);
+
+/* The crossings of the ray o + t d, t from tmin on, with obj: their
+   number, and the hits in h. */
+int cross(const zr_object *obj, zr_vec3 o, zr_vec3 d, double tmin,
+          zr_hit h[ZR_MAX_CROSSINGS]);
 
 #endif /* ZR_TESTS_PARSE_FIXTURE_H */

@@ -19,35 +19,11 @@
 #include "trace/intersect.h"
 #include "zrcube.h"
 #include "parse_fixture.h"
+#include "test_util.h"
 
 /* Crossings here are roots of quadratics or of linear equations with
    small integer coefficients: 1e-12 covers double rounding. */
 #define EPS 1e-12
-
-static void assert_near(double a, double b, double tol) {
-  if (!(fabs(a - b) <= tol))
-    fail_msg("%.17g differs from %.17g by more than %g", a, b, tol);
-}
-
-static void assert_vec(zr_vec3 v, double x, double y, double z) {
-  assert_near(v.x, x, EPS);
-  assert_near(v.y, y, EPS);
-  assert_near(v.z, z, EPS);
-}
-
-/* The only primitive of a scene made of one object. */
-static const zr_object *only(fixture *f, const char *text) {
-  zr_scene *s = good(f, text);
-  assert_int_equal(s->n_primitives, 1);
-  return s->primitives[0];
-}
-
-/* Crossings of the ray from o along d, t in (0, inf). */
-static int cross(const zr_object *obj, zr_vec3 o, zr_vec3 d,
-                 zr_hit h[ZR_MAX_CROSSINGS]) {
-  zr_ray r = {o, d};
-  return zr__intersect(obj, &r, 0.0, INFINITY, h);
-}
 
 static void test_csg_difference_cuts_with_inverted_normal(void **state) {
   fixture *f = *state;
@@ -55,20 +31,20 @@ static void test_csg_difference_cuts_with_inverted_normal(void **state) {
                                "  box { <0, -2, -2>, <2, 2, 2> } }\n");
   assert_int_equal(o->kind, ZR_OBJ_INTERSECTION);
   zr_hit h[2];
-  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), h), 2);
+  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), 0.0, h), 2);
   assert_near(h[0].t, 4.0, EPS);
-  assert_vec(h[0].normal, -1, 0, 0);
+  assert_vec(h[0].normal, -1, 0, 0, EPS);
   assert_int_equal(h[0].object->kind, ZR_OBJ_SPHERE);
   /* The cut face: the inverted box's normal points out of the solid. */
   assert_near(h[1].t, 5.0, EPS);
-  assert_vec(h[1].normal, 1, 0, 0);
+  assert_vec(h[1].normal, 1, 0, 0, EPS);
   assert_int_equal(h[1].object->kind, ZR_OBJ_BOX);
   assert_true(h[1].object->inverse);
   /* Both parts belong to the primitive, whose interior rays enter. */
   assert_ptr_equal(h[0].object->solid, o);
   assert_ptr_equal(h[1].object->solid, o);
   /* The removed half has no surface: a ray through it meets nothing. */
-  assert_int_equal(cross(o, zr_v3(0.5, -5, 0), zr_v3(0, 1, 0), h), 0);
+  assert_int_equal(cross(o, zr_v3(0.5, -5, 0), zr_v3(0, 1, 0), 0.0, h), 0);
   assert_true(zr__inside(o, zr_v3(-0.5, 0, 0)));
   assert_false(zr__inside(o, zr_v3(0.5, 0, 0)));
   assert_false(zr__inside(o, zr_v3(-2, 0, 0)));
@@ -79,11 +55,11 @@ static void test_csg_intersection_is_a_lens(void **state) {
   const zr_object *o =
       only(f, "intersection { sphere { 0, 1 } sphere { x, 1 } }\n");
   zr_hit h[2];
-  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), h), 2);
+  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), 0.0, h), 2);
   assert_near(h[0].t, 5.0, EPS); /* enters the second sphere at x = 0 */
-  assert_vec(h[0].normal, -1, 0, 0);
+  assert_vec(h[0].normal, -1, 0, 0, EPS);
   assert_near(h[1].t, 6.0, EPS); /* leaves the first at x = 1 */
-  assert_vec(h[1].normal, 1, 0, 0);
+  assert_vec(h[1].normal, 1, 0, 0, EPS);
   assert_true(zr__inside(o, zr_v3(0.5, 0, 0)));
   assert_false(zr__inside(o, zr_v3(-0.5, 0, 0)));
 }
@@ -93,14 +69,14 @@ static void test_csg_merge_drops_inner_surfaces(void **state) {
   const zr_object *m =
       only(f, "merge { sphere { 0, 1 } sphere { x, 1 } }\n");
   zr_hit h[2];
-  assert_int_equal(cross(m, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), h), 2);
+  assert_int_equal(cross(m, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), 0.0, h), 2);
   assert_near(h[0].t, 4.0, EPS);
   assert_near(h[1].t, 7.0, EPS);
   /* A union inside an intersection keeps its inner surfaces. */
   const zr_object *u = only(f, "intersection {\n"
                                "  union { sphere { 0, 1 } sphere { x, 1 } }\n"
                                "  box { -10, 10 } }\n");
-  assert_int_equal(cross(u, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), h), 2);
+  assert_int_equal(cross(u, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), 0.0, h), 2);
   assert_near(h[0].t, 4.0, EPS);
   assert_near(h[1].t, 5.0, EPS);
   /* Crossings beyond the first two are found from a later start. */
@@ -120,11 +96,11 @@ static void test_csg_inverse_follows_de_morgan(void **state) {
   assert_true(zr__inside(o, zr_v3(0.5, 0, 0)));
   assert_true(zr__inside(o, zr_v3(-5, 0, 0)));
   zr_hit h[2];
-  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), h), 2);
+  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), 0.0, h), 2);
   assert_near(h[0].t, 4.0, EPS);
-  assert_vec(h[0].normal, 1, 0, 0); /* now pointing into the sphere */
+  assert_vec(h[0].normal, 1, 0, 0, EPS); /* now pointing into the sphere */
   assert_near(h[1].t, 5.0, EPS);
-  assert_vec(h[1].normal, -1, 0, 0);
+  assert_vec(h[1].normal, -1, 0, 0, EPS);
   /* Inverted twice is the object again. */
   o = only(f, "difference { sphere { 0, 1 } box { <0, -2, -2>, 2 }\n"
               "  inverse inverse }\n");
@@ -141,7 +117,7 @@ static void test_csg_transforms_and_textures_reach_children(void **state) {
          "  pigment { rgb <0, 0, 1> } }\n"
          "object { D translate <10, 0, 0> }\n");
   zr_hit h[2];
-  assert_int_equal(cross(o, zr_v3(5, 0, 0), zr_v3(1, 0, 0), h), 2);
+  assert_int_equal(cross(o, zr_v3(5, 0, 0), zr_v3(1, 0, 0), 0.0, h), 2);
   assert_near(h[0].t, 4.0, EPS);
   assert_near(h[1].t, 5.0, EPS);
   /* The sphere keeps its red; the box takes the difference's blue. */
@@ -196,24 +172,24 @@ static void test_csg_quadric_cylinder_and_paraboloid(void **state) {
   zr_vec3 lo, hi;
   assert_false(zr__object_bounds(o, &lo, &hi));
   zr_hit h[2];
-  assert_int_equal(cross(o, zr_v3(-5, 7, 0), zr_v3(1, 0, 0), h), 2);
+  assert_int_equal(cross(o, zr_v3(-5, 7, 0), zr_v3(1, 0, 0), 0.0, h), 2);
   assert_near(h[0].t, 4.0, EPS);
-  assert_vec(h[0].normal, -1, 0, 0);
+  assert_vec(h[0].normal, -1, 0, 0, EPS);
   assert_near(h[1].t, 6.0, EPS);
-  assert_vec(h[1].normal, 1, 0, 0);
+  assert_vec(h[1].normal, 1, 0, 0, EPS);
   /* Along the axis it is never crossed. */
-  assert_int_equal(cross(o, zr_v3(0, -5, 0), zr_v3(0, 1, 0), h), 0);
+  assert_int_equal(cross(o, zr_v3(0, -5, 0), zr_v3(0, 1, 0), 0.0, h), 0);
   assert_true(zr__inside(o, zr_v3(0.5, 100, 0)));
   assert_false(zr__inside(o, zr_v3(1.5, 0, 0)));
   /* y = x^2 + z^2: along the axis the equation is linear. */
   o = only(f, "quadric { <1, 0, 1>, <0, 0, 0>, <0, -1, 0>, 0 }\n");
-  assert_int_equal(cross(o, zr_v3(0, 5, 0), zr_v3(0, -1, 0), h), 1);
+  assert_int_equal(cross(o, zr_v3(0, 5, 0), zr_v3(0, -1, 0), 0.0, h), 1);
   assert_near(h[0].t, 5.0, EPS);
-  assert_vec(h[0].normal, 0, -1, 0);
+  assert_vec(h[0].normal, 0, -1, 0, EPS);
   assert_true(zr__inside(o, zr_v3(0, 1, 0)));
   /* Transformed: the unit cylinder scaled by 2 about its axis. */
   o = only(f, "quadric { <1, 0, 1>, 0, 0, -1 scale 2 }\n");
-  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), h), 2);
+  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), 0.0, h), 2);
   assert_near(h[0].t, 3.0, EPS);
   assert_near(h[1].t, 7.0, EPS);
 }
@@ -224,28 +200,28 @@ static void test_csg_clipped_by_keeps_the_inside_part(void **state) {
       only(f, "sphere { 0, 1 clipped_by { plane { x, 0 } }\n"
               "  translate <0, 0, 0> }\n");
   zr_hit h[2];
-  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), h), 1);
+  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), 0.0, h), 1);
   assert_near(h[0].t, 4.0, EPS);
   /* Nothing of the plane itself remains: the open half shell shows
      its inside. */
-  assert_int_equal(cross(o, zr_v3(5, 0, 0), zr_v3(-1, 0, 0), h), 1);
+  assert_int_equal(cross(o, zr_v3(5, 0, 0), zr_v3(-1, 0, 0), 0.0, h), 1);
   assert_near(h[0].t, 6.0, EPS);
   /* The clip follows later transforms. */
   o = only(f, "sphere { 0, 1 clipped_by { plane { x, 0 } }\n"
               "  translate <3, 0, 0> }\n");
-  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), h), 1);
+  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), 0.0, h), 1);
   assert_near(h[0].t, 7.0, EPS);
   /* clipped_by { bounded_by } clips by the bound. */
   o = only(f, "sphere { 0, 1 bounded_by { plane { x, 0 } }\n"
               "  clipped_by { bounded_by } }\n");
-  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), h), 1);
+  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), 0.0, h), 1);
   /* A bound alone changes nothing. */
   o = only(f, "sphere { 0, 1 bounded_by { plane { x, 0 } } }\n");
-  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), h), 2);
+  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), 0.0, h), 2);
   /* A clipped CSG object. */
   o = only(f, "merge { sphere { 0, 1 } sphere { x, 1 }\n"
               "  clipped_by { plane { -x, -0.5 } } }\n");
-  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), h), 1);
+  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), 0.0, h), 1);
   assert_near(h[0].t, 7.0, EPS);
 }
 
@@ -272,7 +248,7 @@ static void test_csg_quartic_torus(void **state) {
   zr_hit h[2];
   /* Roots of a quartic refined by Newton's method: 1e-9 allows for the
      conditioning of the expanded coefficients. */
-  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), h), 2);
+  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), 0.0, h), 2);
   assert_near(h[0].t, 2.0, 1e-9);
   assert_near(h[1].t, 4.0, 1e-9);
   assert_near(h[0].normal.x, -1, 1e-9);
@@ -282,12 +258,12 @@ static void test_csg_quartic_torus(void **state) {
   assert_near(h[0].t, 6.0, 1e-9);
   assert_near(h[1].t, 8.0, 1e-9);
   /* Through the hole along the axis: no crossing. */
-  assert_int_equal(cross(o, zr_v3(0, -5, 0), zr_v3(0, 1, 0), h), 0);
+  assert_int_equal(cross(o, zr_v3(0, -5, 0), zr_v3(0, 1, 0), 0.0, h), 0);
   assert_true(zr__inside(o, zr_v3(2, 0.5, 0)));
   assert_false(zr__inside(o, zr_v3(0, 0, 0)));
   /* poly { 2, ... } is a quadric: the unit sphere. */
   o = only(f, "poly { 2, <1, 0, 0, 0, 1, 0, 0, 1, 0, -1> }\n");
-  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), h), 2);
+  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), 0.0, h), 2);
   assert_near(h[0].t, 4.0, 1e-9);
   assert_near(h[1].t, 6.0, 1e-9);
 }

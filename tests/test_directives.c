@@ -28,11 +28,7 @@
 #include "scene/scene.h"
 #include "zrcube.h"
 #include "parse_fixture.h"
-
-static void assert_near(double a, double b, double tolerance) {
-  if (!(fabs(a - b) <= tolerance))
-    fail_msg("%.17g != %.17g (tolerance %g)", a, b, tolerance);
-}
+#include "test_util.h"
 
 /* Parses text, which must succeed, and checks what it printed. */
 static void prints(fixture *f, const char *text, const char *expected) {
@@ -481,6 +477,43 @@ static void test_directives_arrays(void **state) {
       "the array has 3 elements but its initialiser gives 2", NULL);
 }
 
+/* Initialiser elements need no commas between them (lemon.inc), as
+   povray 3.7 reads them (measured: each line's values are povray's). */
+static void test_directives_arrays_without_commas(void **state) {
+  fixture *f = *state;
+  prints(f,
+         "#declare A = array[4] { 1 2, 3 4 }\n"
+         "#declare B = array[4] { <1,2> <3,4>, <5,6> < 7,8> }\n"
+         "#declare C = array[3] { 1 -2, <1,2>.x (3) }\n"
+         "#declare D = array[2][2] { {1 2} {3 4} }\n"
+         "#declare E = array[2] { rgb 1 red 0 rgb <0,1,0> }\n"
+         "#declare S = array[2] { \"a\" \"b\" }\n"
+         "#declare P = array[2] { (1 < 2) (3 > 4) }\n"
+         "#debug concat(str(A[3], 0, 0), vstr(2, B[3], \",\", 0, 0), \" \","
+         " str(C[0], 0, 0), str(C[1], 0, 0), str(C[2], 0, 0), \" \","
+         " str(D[1][0], 0, 0),"
+         " \" \", str(E[0].red, 0, 0), str(E[0].green, 0, 0),"
+         " str(E[1].red, 0, 0), str(E[1].green, 0, 0), \" \", S[1],"
+         " str(P[0], 0, 0), str(P[1], 0, 0))\n",
+         "47,8 -113 3 0101 b10");
+  /* "<1,2> < 3" is two elements, so the vector is one too many. */
+  bad(f, "#declare A = array[1] { <1, 2> < 3, 4> }\n", ZR_ESCENE,
+      "the array has 1 elements but its initialiser gives 2", NULL);
+  bad(f, "#declare A = array[2] { 1 2 3 }\n", ZR_ESCENE,
+      "the array has 2 elements but its initialiser gives 3", NULL);
+}
+
+/* vstr writes the first n components of a longer vector or colour, as
+   povray 3.7 does (measured). */
+static void test_directives_vstr_truncates(void **state) {
+  fixture *f = *state;
+  prints(f,
+         "#declare C = rgb <0.25, 0.5, 1>;\n"
+         "#debug concat(vstr(2, <1, 2, 3>, \",\", 0, 1), \" \","
+         " vstr(3, C, \",\", 0, 2))\n",
+         "1.0,2.0 0.25,0.50,1.00");
+}
+
 static void test_directives_rand(void **state) {
   fixture *f = *state;
   /* The same seed gives the same stream, values lie in [0, 1). */
@@ -694,6 +727,8 @@ int main(void) {
       T(test_directives_constants),
       T(test_directives_strings),
       T(test_directives_arrays),
+      T(test_directives_arrays_without_commas),
+      T(test_directives_vstr_truncates),
       T(test_directives_rand),
       T(test_directives_messages),
       T(test_directives_file_io),

@@ -251,6 +251,55 @@ static void test_function_internals_match_povray(void **state) {
   assert_true(fabs(value(f, d, "B(3, 4, 0)") - (4 - 2)) < EPS);
 }
 
+/* f_helix1 and f_helix2 (function.c's helix1, helix2) against povray
+   3.7.0's values, printed to 9 digits as above: each cross section
+   type (0 square to 3 concave diamond, beyond and below), rotation,
+   shape, several helixes, abyss.pov's cable, the bound far from the
+   strands and with period or shape 0. */
+static void test_function_helixes_match_povray(void **state) {
+  fixture *f = *state;
+  const char *d = "#declare f_helix1 = function { internal(25) }\n"
+                  "#declare f_helix2 = function { internal(26) }\n";
+  struct {
+    const char *call;
+    double povray;
+  } cases[] = {
+      {"f_helix1(-0.9, 0.15, 0.05, 1, 1, 0.3, 1, 1, 1, 0)",
+       -0.163417077},
+      {"f_helix1(-0.9, 0.15, 0.05, 1, 1, 0.3, 1, 1, 4, 0)",
+       0.086183596},
+      {"f_helix1(-0.9, 0.15, 0.05, 1, 1, 0.3, 1, 1, -1, 0)",
+       -0.231770398},
+      {"f_helix1(0.3, 0.2, -0.8, 2, 1.5, 0.2, 0.8, 1.5, 0, 20)",
+       0.093735774},
+      {"f_helix1(0.3, 0.7, -0.8, 2, 1.5, 0.2, 0.8, 1.5, 3, 20)",
+       0.823040065},
+      {"f_helix1(0.01, 0.5, 0.012, 3, 35, 0.0105, 0.0165, 2, 1, 0)",
+       -0.002257235},
+      {"f_helix1(1, 0, 0, 1, 1, 0.1, 1, 1, 1, 0)",
+       1.900000000},
+      {"f_helix1(10, 0, 0, 1, 1, 0.1, 1, 1, 1, 0)",
+       9.432554978},
+      {"f_helix1(-0.9, 0.15, 0.05, 1, 0, 0.3, 1, 1, 1, 0)",
+       1.601387819},
+      {"f_helix1(-0.9, 0.15, 0.05, 1, 1, 0.3, 1, 0, 1, 0)",
+       1.601387819},
+      {"f_helix2(-0.9, 0.15, 0.05, 1, 1, 0.3, 1, 1, 4, 0)",
+       2.943196980},
+      {"f_helix2(0.3, 0.4, -0.2, 3, 2, 0.6, 0.3, 2, 1, 0)",
+       -0.174940565},
+      {"f_helix2(0.3, 0.4, -0.2, 2, 1.5, 0.6, 0.1, 1.5, 0, 20)",
+       -0.265540135},
+      {"f_helix2(0.5, -0.4, 0.7, 1, 1, 0.5, 0.2, 1, 2.5, 45)",
+       0.374823741},
+  };
+  for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+    double v = value(f, d, cases[i].call);
+    if (fabs(v - cases[i].povray) > 1e-8)
+      fail_msg("%s: %.10f, povray %.9f", cases[i].call, v, cases[i].povray);
+  }
+}
+
 /* Functions pass through macros as values (manual, "Functions and
    Macros"), and a function written in a macro captures its arguments. */
 static void test_function_in_macros(void **state) {
@@ -318,10 +367,11 @@ static void test_function_unsupported_internal(void **state) {
   bad(f, text, ZR_EUNSUPPORTED,
       "function 'N' uses internal function 58 (f_ridge), which is not "
       "supported yet", NULL);
-  snprintf(text, sizeof text, "%s#declare V = P(1, 2, 3);\n", d);
-  bad(f, text, ZR_EUNSUPPORTED,
-      "function 'P' uses transform functions, which is not supported yet",
-      NULL);
+  /* Transform functions work (tests/test_meshcam.c checks them). */
+  snprintf(text, sizeof text, "%s#declare V = P(1, 2, 3);\n"
+           "#debug vstr(3, V, \",\", 0, 1)\n", d);
+  good(f, text);
+  assert_string_equal(f->diag.debug, "2.0,4.0,6.0");
   bad(f, "#declare F = function { internal(77) }\n", ZR_ESCENE,
       "there is no internal function 77", NULL);
   bad(f, "#declare F = function { internal(6.5) }\n", ZR_ESCENE,
@@ -726,6 +776,8 @@ int main(void) {
       cmocka_unit_test_setup_teardown(test_function_sum_prod, setup,
                                       teardown),
       cmocka_unit_test_setup_teardown(test_function_internals_match_povray,
+                                      setup, teardown),
+      cmocka_unit_test_setup_teardown(test_function_helixes_match_povray,
                                       setup, teardown),
       cmocka_unit_test_setup_teardown(test_function_in_macros, setup,
                                       teardown),

@@ -19,24 +19,7 @@
 #include "trace/obj_isosurface.h"
 #include "zrcube.h"
 #include "parse_fixture.h"
-
-static void assert_near(double a, double b, double tol) {
-  if (!(fabs(a - b) <= tol))
-    fail_msg("%.17g differs from %.17g by more than %g", a, b, tol);
-}
-
-static void assert_vec(zr_vec3 v, double x, double y, double z,
-                       double tol) {
-  assert_near(v.x, x, tol);
-  assert_near(v.y, y, tol);
-  assert_near(v.z, z, tol);
-}
-
-static const zr_object *only(fixture *f, const char *text) {
-  zr_scene *s = good(f, text);
-  assert_int_equal(s->n_primitives, 1);
-  return s->primitives[0];
-}
+#include "test_util.h"
 
 /* The first crossing straight down onto (x, z), in object space. */
 static int down(const zr_object *o, double x, double z,
@@ -56,7 +39,7 @@ static const vfile files[] = {
     {"a.pgm", "P2\n3 3\n65535\n65535 32768 0\n0 0 0\n0 0 13107\n"},
     /* A colour file holds 256 r + g. */
     {"c.ppm", "P3\n2 2\n255\n1 2 0  0 0 0\n0 0 0  255 255 255\n"},
-    {"t.tga", "not read"},
+    {"t.tif", "not read"},
     {NULL, NULL}};
 
 static void test_height_field_image_layout(void **state) {
@@ -135,15 +118,15 @@ static void test_height_field_water(void **state) {
 static void test_height_field_bad_input(void **state) {
   fixture *f = *state;
   f->files = files;
-  bad(f, "height_field { \"t.tga\" }\n", ZR_EUNSUPPORTED,
-      "height_field: 'tga' files are not supported yet (use png, pgm, ppm "
-      "or jpeg)",
-      "t.pov:1:16: error: height_field: 'tga' files are not supported yet "
-      "(use png, pgm, ppm or jpeg)\n"
-      "    1 | height_field { \"t.tga\" }\n"
+  bad(f, "height_field { \"t.tif\" }\n", ZR_EUNSUPPORTED,
+      "height_field: 'tif' files are not supported yet (use png, gif, pot, "
+      "tga, pgm, ppm or jpeg)",
+      "t.pov:1:16: error: height_field: 'tif' files are not supported yet "
+      "(use png, gif, pot, tga, pgm, ppm or jpeg)\n"
+      "    1 | height_field { \"t.tif\" }\n"
       "      |                ^~~~~~~\n");
-  bad(f, "height_field { tga \"t.tga\" }\n", ZR_EUNSUPPORTED,
-      "'tga' is not supported yet", NULL);
+  bad(f, "height_field { tiff \"t.tif\" }\n", ZR_EUNSUPPORTED,
+      "'tiff' is not supported yet", NULL);
   bad(f, "height_field { png \"none.png\" }\n", ZR_ENOTFOUND,
       "height_field file 'none.png' not found", NULL);
   bad(f, "height_field { function 1, 10 { x } }\n", ZR_ESCENE,

@@ -618,7 +618,7 @@ static void test_image_broken_files(void **state) {
 
   path = in_dir(fx, "empty.dat");
   write_bytes(path, "", 0);
-  snprintf(expect, sizeof expect, "%s: not a PNG, JPEG, PPM or PFM file",
+  snprintf(expect, sizeof expect, "%s: not a PNG, JPEG, GIF, TGA, PPM or PFM file",
            path);
   assert_read_fails(fx, path, ZR_EFORMAT, expect);
 

@@ -16,21 +16,11 @@
 #include "core/transform.h"
 #include "scene/scene.h"
 #include "trace/intersect.h"
+#include "test_util.h"
 
 /* Hits here are roots of low-degree polynomials with small integer or
    simple irrational coefficients: 1e-12 covers double rounding. */
 #define EPS 1e-12
-
-static void assert_near(double a, double b, double tol) {
-  if (!(fabs(a - b) <= tol))
-    fail_msg("%.17g differs from %.17g by more than %g", a, b, tol);
-}
-
-static void assert_vec(zr_vec3 v, double x, double y, double z) {
-  assert_near(v.x, x, EPS);
-  assert_near(v.y, y, EPS);
-  assert_near(v.z, z, EPS);
-}
 
 static zr_ray ray(double ox, double oy, double oz, double dx, double dy,
                   double dz) {
@@ -58,13 +48,13 @@ static void test_intersect_sphere_outside_and_inside(void **state) {
   assert_int_equal(hits(&s, ray(0, 0, -5, 0, 0, 1), h), 2);
   assert_near(h[0].t, 4.0, EPS);
   assert_near(h[1].t, 6.0, EPS);
-  assert_vec(h[0].normal, 0, 0, -1);
-  assert_vec(h[1].normal, 0, 0, 1);
+  assert_vec(h[0].normal, 0, 0, -1, EPS);
+  assert_vec(h[1].normal, 0, 0, 1, EPS);
   assert_ptr_equal(h[0].object, &s);
   /* From the centre only the exit is ahead; its normal still points out. */
   assert_int_equal(hits(&s, ray(0, 0, 0, 0, 1, 0), h), 1);
   assert_near(h[0].t, 1.0, EPS);
-  assert_vec(h[0].normal, 0, 1, 0);
+  assert_vec(h[0].normal, 0, 1, 0, EPS);
   assert_true(zr__inside(&s, zr_v3(0.5, 0.5, 0.5)));
   assert_false(zr__inside(&s, zr_v3(0.6, 0.6, 0.6)));
 }
@@ -96,7 +86,7 @@ static void test_intersect_sphere_transformed_keeps_world_t(void **state) {
   assert_int_equal(hits(&s, ray(1, 0, -10, 0, 0, 2), h), 2);
   assert_near(h[0].t, 4.0, EPS);
   assert_near(h[1].t, 6.0, EPS);
-  assert_vec(h[0].normal, 0, 0, -1);
+  assert_vec(h[0].normal, 0, 0, -1, EPS);
   assert_true(zr__inside(&s, zr_v3(2.9, 0, 0)));
   assert_false(zr__inside(&s, zr_v3(-1.1, 0, 0)));
 }
@@ -114,7 +104,7 @@ static void test_intersect_ellipsoid_normal_by_inverse_transpose(void **st) {
   assert_int_equal(hits(&s, ray(1, 5, 0, 0, -1, 0), h), 2);
   assert_near(h[0].t, 5.0 - sqrt(3.0) / 2.0, EPS);
   zr_vec3 g = zr_v3_norm(zr_v3(0.25, sqrt(3.0) / 2.0, 0));
-  assert_vec(h[0].normal, g.x, g.y, g.z);
+  assert_vec(h[0].normal, g.x, g.y, g.z, EPS);
 }
 
 static void test_intersect_box_faces_rotation_and_parallel(void **state) {
@@ -128,11 +118,11 @@ static void test_intersect_box_faces_rotation_and_parallel(void **state) {
   assert_int_equal(hits(&b, ray(-5, 0.5, 0.25, 1, 0, 0), h), 2);
   assert_near(h[0].t, 4.0, EPS);
   assert_near(h[1].t, 6.0, EPS);
-  assert_vec(h[0].normal, -1, 0, 0);
-  assert_vec(h[1].normal, 1, 0, 0);
+  assert_vec(h[0].normal, -1, 0, 0, EPS);
+  assert_vec(h[1].normal, 1, 0, 0, EPS);
   /* From inside only the exit face. */
   assert_int_equal(hits(&b, ray(0, 0, 0, 0, 0, -1), h), 1);
-  assert_vec(h[0].normal, 0, 0, -1);
+  assert_vec(h[0].normal, 0, 0, -1, EPS);
   /* Parallel to the y faces and above them: a miss. */
   assert_int_equal(hits(&b, ray(-5, 1.5, 0, 1, 0, 0), h), 0);
   /* Rotated 45 degrees about y the box's corner points along -z. */
@@ -156,13 +146,13 @@ static void test_intersect_plane_sides_and_inverse(void **state) {
   zr_hit h[2];
   assert_int_equal(hits(&p, ray(0, 3, 0, 0, -2, 0), h), 1);
   assert_near(h[0].t, 2.0, EPS);
-  assert_vec(h[0].normal, 0, 1, 0);
+  assert_vec(h[0].normal, 0, 1, 0, EPS);
   assert_int_equal(hits(&p, ray(0, 3, 0, 1, 0, 0), h), 0); /* parallel */
   assert_true(zr__inside(&p, zr_v3(0, -2, 0)));
   assert_false(zr__inside(&p, zr_v3(0, 0, 0)));
   p.inverse = true;
   assert_int_equal(hits(&p, ray(0, 3, 0, 0, -2, 0), h), 1);
-  assert_vec(h[0].normal, 0, -1, 0);
+  assert_vec(h[0].normal, 0, -1, 0, EPS);
   assert_false(zr__inside(&p, zr_v3(0, -2, 0)));
   assert_true(zr__inside(&p, zr_v3(0, 0, 0)));
 }
@@ -178,7 +168,7 @@ static void test_intersect_triangle_inside_edges_and_miss(void **state) {
   zr_hit h[2];
   assert_int_equal(hits(&t, ray(0.25, 0.25, -2, 0, 0, 1), h), 1);
   assert_near(h[0].t, 2.0, EPS);
-  assert_vec(h[0].normal, 0, 0, 1); /* (p1 - p0) x (p2 - p0) */
+  assert_vec(h[0].normal, 0, 0, 1, EPS); /* (p1 - p0) x (p2 - p0) */
   assert_int_equal(hits(&t, ray(0.6, 0.6, -2, 0, 0, 1), h), 0);
   assert_int_equal(hits(&t, ray(-0.1, 0.5, -2, 0, 0, 1), h), 0);
   assert_int_equal(hits(&t, ray(0.5, 0.5, -2, 1, 0, 0), h), 0);
@@ -204,18 +194,18 @@ static void test_intersect_cylinder_capped_and_open(void **state) {
   assert_int_equal(hits(&c, ray(-3, 1, 0, 1, 0, 0), h), 2);
   assert_near(h[0].t, 2.5, EPS);
   assert_near(h[1].t, 3.5, EPS);
-  assert_vec(h[0].normal, -1, 0, 0);
+  assert_vec(h[0].normal, -1, 0, 0, EPS);
   /* Along the axis through both caps. */
   assert_int_equal(hits(&c, ray(0.1, -1, 0, 0, 1, 0), h), 2);
   assert_near(h[0].t, 1.0, EPS);
   assert_near(h[1].t, 3.0, EPS);
-  assert_vec(h[0].normal, 0, -1, 0);
-  assert_vec(h[1].normal, 0, 1, 0);
+  assert_vec(h[0].normal, 0, -1, 0, EPS);
+  assert_vec(h[1].normal, 0, 1, 0, EPS);
   /* In through the bottom cap, out through the side at y = 1. */
   assert_int_equal(hits(&c, ray(0, -1, 0, 0.25, 1, 0), h), 2);
-  assert_vec(h[0].normal, 0, -1, 0);
+  assert_vec(h[0].normal, 0, -1, 0, EPS);
   assert_near(h[1].t, 2.0, EPS);
-  assert_vec(h[1].normal, 1, 0, 0);
+  assert_vec(h[1].normal, 1, 0, 0, EPS);
   /* Above the cap, past the end: a miss. */
   assert_int_equal(hits(&c, ray(-3, 2.5, 0, 1, 0, 0), h), 0);
   /* Open: the axis ray meets no surface, the slanted one only the side,
@@ -224,7 +214,7 @@ static void test_intersect_cylinder_capped_and_open(void **state) {
   assert_int_equal(hits(&o, ray(0.1, -1, 0, 0, 1, 0), h), 0);
   assert_int_equal(hits(&o, ray(0, -1, 0, 0.25, 1, 0), h), 1);
   assert_near(h[0].t, 2.0, EPS);
-  assert_vec(h[0].normal, 1, 0, 0);
+  assert_vec(h[0].normal, 1, 0, 0, EPS);
   assert_true(zr__inside(&c, zr_v3(0.4, 1.9, 0)));
   assert_false(zr__inside(&c, zr_v3(0.4, 2.1, 0)));
   assert_false(zr__inside(&c, zr_v3(0.6, 1, 0)));
@@ -245,12 +235,12 @@ static void test_intersect_cone_apex_frustum_and_open(void **state) {
   assert_near(h[0].t, 2.5, EPS);
   assert_near(h[1].t, 3.5, EPS);
   double s = sqrt(0.5);
-  assert_vec(h[0].normal, -s, s, 0);
-  assert_vec(h[1].normal, s, s, 0);
+  assert_vec(h[0].normal, -s, s, 0, EPS);
+  assert_vec(h[1].normal, s, s, 0, EPS);
   /* Up from below: the base disc, then the side. */
   assert_int_equal(hits(&k, ray(0.25, -1, 0, 0, 1, 0), h), 2);
   assert_near(h[0].t, 1.0, EPS);
-  assert_vec(h[0].normal, 0, -1, 0);
+  assert_vec(h[0].normal, 0, -1, 0, EPS);
   assert_near(h[1].t, 1.75, EPS);
   /* The mirror nappe above the apex is not part of the cone. */
   assert_int_equal(hits(&k, ray(-3, 1.5, 0, 1, 0, 0), h), 0);
@@ -258,7 +248,7 @@ static void test_intersect_cone_apex_frustum_and_open(void **state) {
   k.u.cone.cap_radius = 0.5;
   assert_int_equal(hits(&k, ray(0.1, 2, 0, 0, -1, 0), h), 2);
   assert_near(h[0].t, 1.0, EPS);
-  assert_vec(h[0].normal, 0, 1, 0);
+  assert_vec(h[0].normal, 0, 1, 0, EPS);
   assert_near(h[1].t, 2.0, EPS);
   k.u.cone.open = true;
   assert_int_equal(hits(&k, ray(0.1, 2, 0, 0, -1, 0), h), 0);
@@ -278,7 +268,7 @@ static void test_intersect_disc_with_hole(void **state) {
   zr_hit h[2];
   assert_int_equal(hits(&d, ray(0.75, 0, -1, 0, 0, 1), h), 1);
   assert_near(h[0].t, 2.0, EPS);
-  assert_vec(h[0].normal, 0, 0, -1);
+  assert_vec(h[0].normal, 0, 0, -1, EPS);
   assert_int_equal(hits(&d, ray(0.25, 0, -1, 0, 0, 1), h), 0); /* hole */
   assert_int_equal(hits(&d, ray(1.25, 0, -1, 0, 0, 1), h), 0); /* outside */
   /* A disc's inside is its plane's: opposite the normal. */
@@ -292,7 +282,7 @@ static void test_intersect_inverse_sphere_flips_normal(void **state) {
   s.inverse = true;
   zr_hit h[2];
   assert_int_equal(hits(&s, ray(0, 0, -5, 0, 0, 1), h), 2);
-  assert_vec(h[0].normal, 0, 0, 1);
+  assert_vec(h[0].normal, 0, 0, 1, EPS);
   assert_false(zr__inside(&s, zr_v3(0, 0, 0)));
   assert_true(zr__inside(&s, zr_v3(0, 0, 2)));
 }

@@ -19,30 +19,7 @@
 #include "trace/obj_isosurface.h"
 #include "zrcube.h"
 #include "parse_fixture.h"
-
-static void assert_near(double a, double b, double tol) {
-  if (!(fabs(a - b) <= tol))
-    fail_msg("%.17g differs from %.17g by more than %g", a, b, tol);
-}
-
-static void assert_vec(zr_vec3 v, double x, double y, double z,
-                       double tol) {
-  assert_near(v.x, x, tol);
-  assert_near(v.y, y, tol);
-  assert_near(v.z, z, tol);
-}
-
-static const zr_object *only(fixture *f, const char *text) {
-  zr_scene *s = good(f, text);
-  assert_int_equal(s->n_primitives, 1);
-  return s->primitives[0];
-}
-
-static int cross(const zr_object *obj, zr_vec3 o, zr_vec3 d, double tmin,
-                 zr_hit h[ZR_MAX_CROSSINGS]) {
-  zr_ray r = {o, d};
-  return zr__intersect(obj, &r, tmin, INFINITY, h);
-}
+#include "test_util.h"
 
 /* Crossings are refined to a few ulps of t once bracketed, so 1e-9
    leaves a wide margin; normals come from central differences of a
@@ -206,10 +183,9 @@ static void test_isosurface_bad_input(void **state) {
       "an isosurface's function takes x, y and z, not 4 parameters",
       NULL);
   bad(f, "#include \"functions.inc\"\n"
-         "isosurface { function { f_helix1(x, y, z, 1, 1, 1, 1, 1, 1, 0) }"
-         " }\n",
+         "isosurface { function { f_bicorn(x, y, z, 1, 1) } }\n",
       ZR_EUNSUPPORTED,
-      "the isosurface's function uses internal function 25 (f_helix1), "
+      "the isosurface's function uses internal function 4 (f_bicorn), "
       "which is not supported yet", NULL);
 }
 

@@ -183,10 +183,10 @@ static void test_lexer_keyword_table(void **state) {
                      &k[i]);
     supported += k[i].token != T_UNSUPPORTED;
   }
-  assert_int_equal(supported, 424);
+  assert_int_equal(supported, 437);
   assert_int_equal(zr__sdl_keyword_find("color", 5)->token, T_COLOUR);
   assert_int_equal(zr__sdl_keyword_find("colour", 6)->token, T_COLOUR);
-  assert_int_equal(zr__sdl_keyword_find("material_map", 12)->token,
+  assert_int_equal(zr__sdl_keyword_find("use_alpha", 9)->token,
                    T_UNSUPPORTED);
   assert_null(zr__sdl_keyword_find("Sphere", 6));
   assert_null(zr__sdl_keyword_find("sph", 3));

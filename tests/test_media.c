@@ -23,6 +23,7 @@
 #include "trace/media.h"
 #include "trace/render.h"
 #include "trace/shade.h"
+#include "test_util.h"
 
 /* Closed forms evaluated in double precision, compared with a render's
    single precision pixels. */
@@ -30,11 +31,6 @@
 /* povray's 16-bit PPM quantises to 1.5e-5 after its sRGB encoding, and
    its single precision colours add about as much again. */
 #define POV_TOL 2e-4
-
-static void assert_near(double a, double b, double tol) {
-  if (!(fabs(a - b) <= tol))
-    fail_msg("%.17g differs from %.17g by more than %g", a, b, tol);
-}
 
 /* A 20 x 20 orthographic view of a box from z = -1 to 1 holding the
    media, in front of a plane of colour BACK (ambient 1) at z = 5.  The

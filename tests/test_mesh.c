@@ -23,15 +23,11 @@
 #include "trace/obj_mesh.h"
 #include "zrcube.h"
 #include "parse_fixture.h"
+#include "test_util.h"
 
 /* Hits are computed from small whole-number vertices by a few products:
    1e-9 leaves room for rounding and catches any real mistake. */
 #define EPS 1e-9
-
-static void assert_near(double a, double b) {
-  if (fabs(a - b) > EPS)
-    fail_msg("%.12g != %.12g", a, b);
-}
 
 static const struct zr_mesh *only_mesh(const zr_scene *s) {
   assert_int_equal(s->n_primitives, 1);
@@ -56,8 +52,8 @@ static void test_mesh_mesh2_hit(void **state) {
   zr_ray ray = {zr_v3(0.25, 0.5, 0), zr_v3(0, 0, 2)};
   zr_hit hit;
   assert_true(zr__bvh_nearest(s->bvh, &ray, 0, INFINITY, &hit));
-  assert_near(hit.t, 0.5);
-  assert_near(fabs(hit.normal.z), 1.0);
+  assert_near(hit.t, 0.5, EPS);
+  assert_near(fabs(hit.normal.z), 1.0, EPS);
   zr_ray miss = {zr_v3(1.5, 0.5, 0), zr_v3(0, 0, 1)};
   assert_false(zr__bvh_nearest(s->bvh, &miss, 0, INFINITY, &hit));
 }
@@ -78,13 +74,13 @@ static void test_mesh_fast_and_grammar_agree(void **state) {
                         "}\n");
   const struct zr_mesh *m = only_mesh(s);
   assert_int_equal(m->n_vertices, 4);
-  assert_near(m->vertices[1].x, 1);
-  assert_near(m->vertices[2].z, 1);
+  assert_near(m->vertices[1].x, 1, EPS);
+  assert_near(m->vertices[2].z, 1, EPS);
   assert_int_equal(m->n_faces, 2);
   zr_ray ray = {zr_v3(0.75, 0.5, 0), zr_v3(0, 0, 1)};
   zr_hit hit;
   assert_true(zr__bvh_nearest(s->bvh, &ray, 0, INFINITY, &hit));
-  assert_near(hit.t, 1.0);
+  assert_near(hit.t, 1.0, EPS);
 }
 
 /* A grid of many triangles: the BVH's nearest crossing must be the one
@@ -137,7 +133,7 @@ static void test_mesh_bvh_matches_brute_force(void **state) {
     bool found = zr__bvh_nearest(s->bvh, &ray, 0, INFINITY, &hit);
     assert_int_equal(found, best < INFINITY);
     if (found)
-      assert_near(hit.t, best);
+      assert_near(hit.t, best, EPS);
   }
 }
 
@@ -148,19 +144,19 @@ static void test_mesh_smooth_normals(void **state) {
   zr_ray ray = {zr_v3(0.5, 0.25, -1), zr_v3(0, 0, 1)};
   zr_hit hit;
   assert_true(zr__bvh_nearest(s->bvh, &ray, 0, INFINITY, &hit));
-  assert_near(hit.t, 1);
+  assert_near(hit.t, 1, EPS);
   /* Barycentric weights 0.25, 0.5, 0.25 of the corner normals. */
   zr_vec3 want = zr_v3_norm(zr_v3(0.5, 0.25, -1));
-  assert_near(hit.normal.x, want.x);
-  assert_near(hit.normal.y, want.y);
-  assert_near(hit.normal.z, want.z);
+  assert_near(hit.normal.x, want.x, EPS);
+  assert_near(hit.normal.y, want.y, EPS);
+  assert_near(hit.normal.z, want.z, EPS);
   /* mesh { smooth_triangle } gives the same normal. */
   s = good(f, "mesh { triangle { <5,5,5>, <6,5,5>, <5,6,5> }\n"
               "  smooth_triangle { <0,0,0>, <0,0,-1>, <1,0,0>, "
               "<1,0,-1>, <0,1,0>, <0,1,-1> } }\n");
   assert_true(zr__bvh_nearest(s->bvh, &ray, 0, INFINITY, &hit));
-  assert_near(hit.normal.x, want.x);
-  assert_near(hit.normal.y, want.y);
+  assert_near(hit.normal.x, want.x, EPS);
+  assert_near(hit.normal.y, want.y, EPS);
 }
 
 static void test_mesh_texture_list(void **state) {
@@ -176,19 +172,19 @@ static void test_mesh_texture_list(void **state) {
   zr_hit hit;
   zr_ray right = {zr_v3(0.75, 0.25, 0), zr_v3(0, 0, 1)};
   assert_true(zr__bvh_nearest(s->bvh, &right, 0, INFINITY, &hit));
-  assert_near(hit.object->texture->pigment->colour.b, 1);
+  assert_near(hit.object->texture->pigment->colour.b, 1, EPS);
   zr_ray left = {zr_v3(0.25, 0.75, 0), zr_v3(0, 0, 1)};
   assert_true(zr__bvh_nearest(s->bvh, &left, 0, INFINITY, &hit));
-  assert_near(hit.object->texture->pigment->colour.r, 1);
+  assert_near(hit.object->texture->pigment->colour.r, 1, EPS);
   /* mesh { } triangles with and without their own texture. */
   s = good(f, "mesh { triangle { <0,0,1>, <1,0,1>, <1,1,1> texture { "
               "pigment { rgb <1,0,0> } } }\n"
               "  triangle { <0,0,1>, <1,1,1>, <0,1,1> }\n"
               "  pigment { rgb <0,1,0> } }\n");
   assert_true(zr__bvh_nearest(s->bvh, &right, 0, INFINITY, &hit));
-  assert_near(hit.object->texture->pigment->colour.r, 1);
+  assert_near(hit.object->texture->pigment->colour.r, 1, EPS);
   assert_true(zr__bvh_nearest(s->bvh, &left, 0, INFINITY, &hit));
-  assert_near(hit.object->texture->pigment->colour.g, 1);
+  assert_near(hit.object->texture->pigment->colour.g, 1, EPS);
 }
 
 /* A tetrahedron: closed, so inside_vector makes it a solid. */
@@ -224,10 +220,10 @@ static void test_mesh_instances_share(void **state) {
   zr_ray ray = {zr_v3(5.25, 0.5, -1), zr_v3(0, 0, 1)};
   zr_hit hit;
   assert_true(zr__bvh_nearest(s->bvh, &ray, 0, INFINITY, &hit));
-  assert_near(hit.t, 2);
+  assert_near(hit.t, 2, EPS);
   zr_ray behind = {zr_v3(0.25, 0.5, 2), zr_v3(0, 0, 1)};
   assert_true(zr__bvh_nearest(s->bvh, &behind, 0, INFINITY, &hit));
-  assert_near(hit.t, 2);
+  assert_near(hit.t, 2, EPS);
 }
 
 static void test_mesh_bad_lists(void **state) {

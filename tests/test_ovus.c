@@ -17,23 +17,7 @@
 #include "trace/intersect.h"
 #include "zrcube.h"
 #include "parse_fixture.h"
-
-static void assert_near(double a, double b, double tol) {
-  if (!(fabs(a - b) <= tol))
-    fail_msg("%.17g differs from %.17g by more than %g", a, b, tol);
-}
-
-static const zr_object *only(fixture *f, const char *text) {
-  zr_scene *s = good(f, text);
-  assert_int_equal(s->n_primitives, 1);
-  return s->primitives[0];
-}
-
-static int cross(const zr_object *obj, zr_vec3 o, zr_vec3 d,
-                 zr_hit h[ZR_MAX_CROSSINGS]) {
-  zr_ray r = {o, d};
-  return zr__intersect(obj, &r, 0, INFINITY, h);
-}
+#include "test_util.h"
 
 /*
  * ovus { 1, 0.5 } against POV-Ray 3.7's own surface: trace() from x = 5
@@ -56,7 +40,7 @@ static void test_ovus_matches_povray(void **state) {
   };
   zr_hit h[ZR_MAX_CROSSINGS];
   for (size_t i = 0; i < sizeof ref / sizeof *ref; i++) {
-    assert_int_equal(cross(o, zr_v3(5, ref[i][0], 0), zr_v3(-1, 0, 0), h),
+    assert_int_equal(cross(o, zr_v3(5, ref[i][0], 0), zr_v3(-1, 0, 0), 0.0, h),
                      2);
     assert_near(5 - h[0].t, ref[i][1], 2e-6);
     assert_near(h[0].normal.x, ref[i][2], 2e-6);
@@ -64,7 +48,7 @@ static void test_ovus_matches_povray(void **state) {
     /* Symmetric about the y axis. */
     assert_near(h[1].t - h[0].t, 2 * ref[i][1], 4e-6);
   }
-  assert_int_equal(cross(o, zr_v3(0, 5, 0), zr_v3(0, -1, 0), h), 2);
+  assert_int_equal(cross(o, zr_v3(0, 5, 0), zr_v3(0, -1, 0), 0.0, h), 2);
   assert_near(h[0].t, 5 - 1.5, 1e-12);
   assert_near(h[1].t, 5 + 1, 1e-12);
   assert_true(zr__inside(o, zr_v3(0, 1.4, 0)));
@@ -83,7 +67,7 @@ static void test_ovus_sphere_and_bad_input(void **state) {
   const zr_object *o = only(f, "ovus { 0.3, 0.7 translate y }\n");
   assert_int_equal(f->diag.warnings, 1);
   zr_hit h[ZR_MAX_CROSSINGS];
-  assert_int_equal(cross(o, zr_v3(0, 5, 0), zr_v3(0, -1, 0), h), 2);
+  assert_int_equal(cross(o, zr_v3(0, 5, 0), zr_v3(0, -1, 0), 0.0, h), 2);
   assert_near(h[0].t, 5 - (1 + 0.3 + 0.7), 1e-12);
   assert_near(h[1].t, 5 - (1 + 0.3 - 0.7), 1e-12);
   bad(f, "ovus { 1, -1 }\n", ZR_ESCENE, "an ovus's radii must be positive",

@@ -17,23 +17,7 @@
 #include "trace/intersect.h"
 #include "zrcube.h"
 #include "parse_fixture.h"
-
-static void assert_near(double a, double b, double tol) {
-  if (!(fabs(a - b) <= tol))
-    fail_msg("%.17g differs from %.17g by more than %g", a, b, tol);
-}
-
-static const zr_object *only(fixture *f, const char *text) {
-  zr_scene *s = good(f, text);
-  assert_int_equal(s->n_primitives, 1);
-  return s->primitives[0];
-}
-
-static int cross(const zr_object *obj, zr_vec3 o, zr_vec3 d, double tmin,
-                 zr_hit h[ZR_MAX_CROSSINGS]) {
-  zr_ray r = {o, d};
-  return zr__intersect(obj, &r, tmin, INFINITY, h);
-}
+#include "test_util.h"
 
 #define SPHERE                                                            \
   "parametric { function { sin(u) * cos(v) } function { sin(u) * sin(v) }" \

@@ -22,16 +22,12 @@
 #include "scene/scene.h"
 #include "zrcube.h"
 #include "parse_fixture.h"
+#include "test_util.h"
 
 /* Values written in the scenes are small decimals combined by a few
    operations, and transforms multiply a few 4x4 matrices: 1e-9 leaves
    room for their rounding and catches any real mistake. */
 #define EPS 1e-9
-
-static void assert_vec(zr_vec3 v, double x, double y, double z) {
-  if (fabs(v.x - x) > EPS || fabs(v.y - y) > EPS || fabs(v.z - z) > EPS)
-    fail_msg("<%g, %g, %g> != <%g, %g, %g>", v.x, v.y, v.z, x, y, z);
-}
 
 static void assert_num(double a, double b) {
   if (fabs(a - b) > EPS)
@@ -73,23 +69,23 @@ static void test_parser_primitives(void **state) {
   assert_int_equal(s->n_objects, 8);
   zr_object **o = s->objects;
   assert_int_equal(o[0]->kind, ZR_OBJ_SPHERE);
-  assert_vec(o[0]->u.sphere.centre, 1, 2, 3);
+  assert_vec(o[0]->u.sphere.centre, 1, 2, 3, EPS);
   assert_num(o[0]->u.sphere.radius, 0.5);
-  assert_vec(o[1]->u.box.corner1, -1, -2, -3);
-  assert_vec(o[1]->u.box.corner2, 1, 2, 3);
+  assert_vec(o[1]->u.box.corner1, -1, -2, -3, EPS);
+  assert_vec(o[1]->u.box.corner2, 1, 2, 3, EPS);
   /* A x + B y + C z = D |<A,B,C>|: the normal is made unit, D stays. */
-  assert_vec(o[2]->u.plane.normal, 0, 1, 0);
+  assert_vec(o[2]->u.plane.normal, 0, 1, 0, EPS);
   assert_num(o[2]->u.plane.distance, -1);
-  assert_vec(o[3]->u.triangle.p[1], 1, 0, 0);
-  assert_vec(o[3]->u.triangle.p[2], 0, 1, 0);
-  assert_vec(o[4]->u.cylinder.cap, 0, 2, 0);
+  assert_vec(o[3]->u.triangle.p[1], 1, 0, 0, EPS);
+  assert_vec(o[3]->u.triangle.p[2], 0, 1, 0, EPS);
+  assert_vec(o[4]->u.cylinder.cap, 0, 2, 0, EPS);
   assert_num(o[4]->u.cylinder.radius, 0.25);
   assert_true(o[4]->u.cylinder.open);
   assert_false(o[5]->u.cone.open);
   assert_num(o[5]->u.cone.base_radius, 1);
-  assert_vec(o[5]->u.cone.cap, 0, 3, 0);
+  assert_vec(o[5]->u.cone.cap, 0, 3, 0, EPS);
   assert_num(o[5]->u.cone.cap_radius, 0.5);
-  assert_vec(o[6]->u.disc.normal, 0, 0, 1);
+  assert_vec(o[6]->u.disc.normal, 0, 0, 1, EPS);
   assert_num(o[6]->u.disc.radius, 2);
   assert_num(o[6]->u.disc.hole_radius, 0.5);
   assert_num(o[7]->u.disc.hole_radius, 0);
@@ -130,20 +126,20 @@ static void test_parser_expressions(void **state) {
       "sphere { <vlength(<3, 4, 0>), vdot(x, y), atan2(1, 1)>, 1 }\n"
       "sphere { <!0, !2, !!1e-11>, 1 }\n");
   zr_object **o = s->objects;
-  assert_vec(o[0]->u.sphere.centre, 4, 6, 8);
+  assert_vec(o[0]->u.sphere.centre, 4, 6, 8, EPS);
   assert_num(o[0]->u.sphere.radius, 9);
-  assert_vec(o[1]->u.sphere.centre, 2, 3, 4);
+  assert_vec(o[1]->u.sphere.centre, 2, 3, 4, EPS);
   assert_num(o[1]->u.sphere.radius, -2);
-  assert_vec(o[2]->u.sphere.centre, 1, 2, -1);
+  assert_vec(o[2]->u.sphere.centre, 1, 2, -1, EPS);
   assert_num(o[2]->u.sphere.radius, 12);
-  assert_vec(o[3]->u.sphere.centre, 1, 5, 2);
+  assert_vec(o[3]->u.sphere.centre, 1, 5, 2, EPS);
   assert_num(o[3]->u.sphere.radius, 1);
-  assert_vec(o[4]->u.sphere.centre, 1, 2, -1);
+  assert_vec(o[4]->u.sphere.centre, 1, 2, -1, EPS);
   assert_num(o[4]->u.sphere.radius, 3);
-  assert_vec(o[5]->u.sphere.centre, 180, M_PI, 2);
+  assert_vec(o[5]->u.sphere.centre, 180, M_PI, 2, EPS);
   assert_num(o[5]->u.sphere.radius, 2);
-  assert_vec(o[6]->u.sphere.centre, 5, 0, M_PI / 4);
-  assert_vec(o[7]->u.sphere.centre, 1, 0, 0);
+  assert_vec(o[6]->u.sphere.centre, 5, 0, M_PI / 4, EPS);
+  assert_vec(o[7]->u.sphere.centre, 1, 0, 0, EPS);
 }
 
 static void test_parser_colours(void **state) {
@@ -237,19 +233,19 @@ static void test_parser_transforms_in_order(void **state) {
       "sphere { 0, 1 pigment { rgb 1 } scale 2 translate y }\n"
       "sphere { 0, 1 texture { pigment { rgb 1 } scale 3 } }\n");
   zr_object **o = s->objects;
-  assert_vec(to_world(o[0], zr_v3(1, 0, 0)), 3, 0, 0);
-  assert_vec(to_world(o[1], zr_v3(1, 0, 0)), 4, 0, 0);
+  assert_vec(to_world(o[0], zr_v3(1, 0, 0)), 3, 0, 0, EPS);
+  assert_vec(to_world(o[1], zr_v3(1, 0, 0)), 4, 0, 0, EPS);
   /* rotate y 90 takes +x to -z in POV-Ray's left-handed space. */
-  assert_vec(to_world(o[2], zr_v3(1, 0, 0)), 0, 0, -1);
-  assert_vec(to_world(o[3], zr_v3(1, 1, 1)), 1, 2, 3);
-  assert_vec(to_world(o[4], zr_v3(0, 0, 0)), 1, 2, 3);
+  assert_vec(to_world(o[2], zr_v3(1, 0, 0)), 0, 0, -1, EPS);
+  assert_vec(to_world(o[3], zr_v3(1, 1, 1)), 1, 2, 3, EPS);
+  assert_vec(to_world(o[4], zr_v3(0, 0, 0)), 1, 2, 3, EPS);
   /* The texture moves with the object: its pigment's transform. */
   const zr_transform *pt = o[5]->texture->pigment->transform;
   assert_non_null(pt);
-  assert_vec(zr__xform_point(pt->m, zr_v3(1, 0, 0)), 2, 1, 0);
+  assert_vec(zr__xform_point(pt->m, zr_v3(1, 0, 0)), 2, 1, 0, EPS);
   pt = o[6]->texture->pigment->transform;
   assert_non_null(pt);
-  assert_vec(zr__xform_point(pt->m, zr_v3(1, 0, 0)), 3, 0, 0);
+  assert_vec(zr__xform_point(pt->m, zr_v3(1, 0, 0)), 3, 0, 0, EPS);
   assert_null(o[6]->transform);
 
   /* POV-Ray: "Scale X by 0.0. Changed to 1.0." with a warning. */
@@ -259,7 +255,7 @@ static void test_parser_transforms_in_order(void **state) {
                       "t.pov:1:21: warning: scale by 0 in xz changed to 1\n"
                       "    1 | sphere { 0, 1 scale <0, 2, 0> }\n"
                       "      |                     ^~~~~~~~~\n");
-  assert_vec(to_world(s->objects[0], zr_v3(1, 1, 1)), 1, 2, 1);
+  assert_vec(to_world(s->objects[0], zr_v3(1, 1, 1)), 1, 2, 1, EPS);
 }
 
 static void test_parser_union_pushes_modifiers(void **state) {
@@ -279,7 +275,7 @@ static void test_parser_union_pushes_modifiers(void **state) {
   assert_int_equal(info.primitives, 3);
   for (size_t i = 0; i < s->n_primitives; i++) {
     const zr_object *p = s->primitives[i];
-    assert_vec(to_world(p, zr_v3(0, 0, 0)), 0, 5, 0);
+    assert_vec(to_world(p, zr_v3(0, 0, 0)), 0, 5, 0, EPS);
     assert_true(p->no_shadow);
   }
   /* The sphere keeps its own texture (moved with it); the others
@@ -307,7 +303,7 @@ static void test_parser_declare_copies(void **state) {
   /* O2 is the union O was when O2 was declared. */
   assert_int_equal(o[4]->kind, ZR_OBJ_UNION);
   assert_int_equal(o[0]->u.csg.n_children, 2);
-  assert_vec(to_world(o[0]->u.csg.children[1], zr_v3(0, 0, 0)), 0, 1, 0);
+  assert_vec(to_world(o[0]->u.csg.children[1], zr_v3(0, 0, 0)), 0, 1, 0, EPS);
   /* The declared union (and so the second copy) did not move. */
   assert_null(o[1]->u.csg.children[1]->transform);
   assert_null(o[1]->texture->pigment->transform);
@@ -321,47 +317,74 @@ static void test_parser_declare_copies(void **state) {
   assert_int_equal(info.primitives, 8);
 }
 
+/* Primitives take the texture they inherit in place (lib/scene/scene.c
+   flatten): a declared object placed both bare and in a textured union,
+   in either order, must still get the default texture bare and the
+   union's inside it. */
+static void test_parser_inherited_texture_per_use(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f,
+      "#declare S = sphere { 0, 1 }\n"
+      "object { S }\n"
+      "union { object { S } sphere { x, 1 } pigment { rgb z } }\n"
+      "object { S translate y }\n"
+      "#default { pigment { rgb x } }\n"
+      "object { S }\n");
+  assert_int_equal(s->n_primitives, 5);
+  const zr_texture *bare = s->primitives[0]->texture;
+  assert_non_null(bare);
+  assert_ptr_equal(s->primitives[3]->texture, bare);
+  assert_colour(s->primitives[1]->texture->pigment->colour, 0, 0, 1, 0, 0);
+  assert_colour(s->primitives[2]->texture->pigment->colour, 0, 0, 1, 0, 0);
+  assert_ptr_not_equal(s->primitives[1]->texture, bare);
+  /* #default changes objects made after it only. */
+  assert_colour(s->primitives[4]->texture->pigment->colour, 1, 0, 0, 0, 0);
+  assert_colour(bare->pigment->colour, 0, 0, 0, 0, 0);
+  for (size_t i = 0; i < s->n_primitives; i++)
+    assert_non_null(s->primitives[i]->interior);
+}
+
 static void test_parser_camera_look_at(void **state) {
   fixture *f = *state;
   zr_scene *s = good(f,
       "camera { location <0, 0, -10> look_at <0, 0, 0> angle 90 }\n");
   zr_camera *c = &s->camera;
   assert_true(c->given);
-  assert_vec(c->location, 0, 0, -10);
+  assert_vec(c->location, 0, 0, -10, EPS);
   /* 0.5 * |right| / tan(45 degrees) = 0.665 with the default right. */
-  assert_vec(c->direction, 0, 0, 0.665);
-  assert_vec(c->right, 1.33, 0, 0);
-  assert_vec(c->up, 0, 1, 0);
+  assert_vec(c->direction, 0, 0, 0.665, EPS);
+  assert_vec(c->right, 1.33, 0, 0, EPS);
+  assert_vec(c->up, 0, 1, 0, EPS);
 
   s = good(f, "camera { location <5, 0, 0> look_at 0 }\n");
   c = &s->camera;
-  assert_vec(c->direction, -1, 0, 0);
+  assert_vec(c->direction, -1, 0, 0, EPS);
   /* Looking down -x with y up is a -90 degree turn about y, which takes
      the right vector +x to +z. */
-  assert_vec(c->right, 0, 0, 1.33);
-  assert_vec(c->up, 0, 1, 0);
+  assert_vec(c->right, 0, 0, 1.33, EPS);
+  assert_vec(c->up, 0, 1, 0, EPS);
 
   /* The Cornell box's mirrored right vector stays mirrored. */
   s = good(f, "camera { location <0, 1, -3> right <-1, 0, 0> up y\n"
               "  look_at <0, 1, 0> angle 60 }\n");
   c = &s->camera;
-  assert_vec(c->right, -1, 0, 0);
-  assert_vec(c->up, 0, 1, 0);
-  assert_vec(c->direction, 0, 0, 0.5 / tan(M_PI / 6));
+  assert_vec(c->right, -1, 0, 0, EPS);
+  assert_vec(c->up, 0, 1, 0, EPS);
+  assert_vec(c->direction, 0, 0, 0.5 / tan(M_PI / 6), EPS);
 
   s = good(f, "camera { perspective location 0 direction z * 2\n"
               "  up y right x sky x look_at z translate <1, 2, 3> }\n");
   c = &s->camera;
-  assert_vec(c->location, 1, 2, 3);
-  assert_vec(c->direction, 0, 0, 2);
+  assert_vec(c->location, 1, 2, 3, EPS);
+  assert_vec(c->direction, 0, 0, 2, EPS);
   /* With sky along +x the camera rolls: up turns to +x. */
-  assert_vec(c->up, 1, 0, 0);
-  assert_vec(c->right, 0, -1, 0);
+  assert_vec(c->up, 1, 0, 0, EPS);
+  assert_vec(c->right, 0, -1, 0, EPS);
 
   s = good(f, "camera { location <0, 0, -1> rotate <0, 90, 0> }\n");
   c = &s->camera;
-  assert_vec(c->location, -1, 0, 0);
-  assert_vec(c->direction, 1, 0, 0);
+  assert_vec(c->location, -1, 0, 0, EPS);
+  assert_vec(c->direction, 1, 0, 0, EPS);
 }
 
 /* Where the camera puts point q on a width x height image: solves
@@ -430,10 +453,10 @@ static void test_parser_lights_background_settings(void **state) {
       "light_source { <1, 2, 3>, color rgb <1, 0.5, 0.25> }\n"
       "light_source { <0, 0, 0>, 1 shadowless translate <0, 10, 0> }\n");
   assert_int_equal(s->n_lights, 2);
-  assert_vec(s->lights[0].location, 1, 2, 3);
+  assert_vec(s->lights[0].location, 1, 2, 3, EPS);
   assert_rgb(s->lights[0].colour, 1, 0.5, 0.25);
   assert_false(s->lights[0].shadowless);
-  assert_vec(s->lights[1].location, 0, 10, 0);
+  assert_vec(s->lights[1].location, 0, 10, 0, EPS);
   assert_rgb(s->lights[1].colour, 1, 1, 1);
   assert_true(s->lights[1].shadowless);
   assert_colour(s->settings.background, 0.1, 0.2, 0.3, 0, 0);
@@ -480,14 +503,14 @@ static void test_parser_zfor_replays(void **state) {
   /* 3 * (1 + 2 + 1) spheres and the last one. */
   assert_int_equal(s->n_objects, 13);
   zr_object **o = s->objects;
-  assert_vec(o[0]->u.sphere.centre, 0, 0, 0);
-  assert_vec(o[1]->u.sphere.centre, 0, 1, 0);
-  assert_vec(o[2]->u.sphere.centre, 1, 1, 0);
+  assert_vec(o[0]->u.sphere.centre, 0, 0, 0, EPS);
+  assert_vec(o[1]->u.sphere.centre, 0, 1, 0, EPS);
+  assert_vec(o[2]->u.sphere.centre, 1, 1, 0, EPS);
   /* After the inner loop the outer zr is back. */
-  assert_vec(o[3]->u.sphere.centre, 0, 2, 0);
-  assert_vec(o[4]->u.sphere.centre, 1, 0, 0);
-  assert_vec(o[11]->u.sphere.centre, 2, 2, 0);
-  assert_vec(o[12]->u.sphere.centre, 42, 0, 0);
+  assert_vec(o[3]->u.sphere.centre, 0, 2, 0, EPS);
+  assert_vec(o[4]->u.sphere.centre, 1, 0, 0, EPS);
+  assert_vec(o[11]->u.sphere.centre, 2, 2, 0, EPS);
+  assert_vec(o[12]->u.sphere.centre, 42, 0, 0, EPS);
 }
 
 /* ---- files and includes ---- */
@@ -572,7 +595,7 @@ static void test_parser_include_paths(void **state) {
   zr_scene *s = f->scene;
   assert_int_equal(s->n_objects, 2);
   assert_num(s->objects[0]->u.sphere.radius, 2);
-  assert_vec(to_world(s->objects[0], zr_v3(0, 0, 0)), 1, 0, 0);
+  assert_vec(to_world(s->objects[0], zr_v3(0, 0, 0)), 1, 0, 0, EPS);
   assert_int_equal(s->objects[1]->kind, ZR_OBJ_BOX);
   /* POV-Ray's own include directory is searched last: consts.inc is
      found there, and its directives run (e = exp(1), o = <0,0,0>). */
@@ -614,42 +637,143 @@ static void test_parser_custom_reader(void **state) {
 
 /* ---- bad input ---- */
 
+/* Splits the list of an "expected A, B or C" message into its names:
+   quoted tokens ('}', ',') and bare words (number, identifier).  Fails
+   the test on a list that is not of that form; returns the count. */
+static int expected_names(const char *list, char names[][40], int max) {
+  int n = 0;
+  bool last = false;
+  const char *p = list;
+  for (;;) {
+    const char *end;
+    if (*p == '\'') {
+      /* A quoted token may be a quote or comma itself: its closing
+         quote is the one followed by a separator or the end. */
+      end = p + 2;
+      while (*end && !(end[0] == '\'' &&
+                       (end[1] == '\0' || end[1] == ',' || end[1] == ' ')))
+        end++;
+      if (*end != '\'')
+        fail_msg("unclosed quote in the expected list '%s'", list);
+      end++;
+    } else {
+      end = p;
+      while (*end >= 'a' && *end <= 'z')
+        end++;
+      if (end == p)
+        fail_msg("no name at '%s' in the expected list '%s'", p, list);
+    }
+    if (n == max || end - p >= 40)
+      fail_msg("expected list too long: '%s'", list);
+    snprintf(names[n], sizeof names[n], "%.*s", (int)(end - p), p);
+    n++;
+    /* Names are separated by ", ", the last two by " or ". */
+    if (*end == '\0') {
+      if (n >= 2 && !last)
+        fail_msg("no ' or ' before the last name in '%s'", list);
+      return n;
+    }
+    if (last)
+      fail_msg("a name after the ' or ' one in '%s'", list);
+    if (strncmp(end, ", ", 2) == 0) {
+      p = end + 2;
+    } else if (strncmp(end, " or ", 4) == 0) {
+      p = end + 4;
+      last = true;
+    } else {
+      fail_msg("bad separator at '%s' in the expected list '%s'", end,
+               list);
+    }
+  }
+}
+
+static bool named(char names[][40], int n, const char *name) {
+  for (int k = 0; k < n; k++)
+    if (strcmp(names[k], name) == 0)
+      return true;
+  return false;
+}
+
+/*
+ * Parses the one-line text, which must fail with one syntax error at
+ * column of line 1 on the token what (as quoted in the message):
+ * "unexpected WHAT, expected LIST", a well-formed list naming no token
+ * twice, every name of must and none of must_not; the full text is
+ * "t.pov:1:COLUMN: error: MESSAGE", the line quoted and a caret (with a
+ * tilde for each further character of the token) under the column.
+ * Which other tokens are listed, and in what order, is the grammar's
+ * business: adding an object modifier must not break this test.  A
+ * list longer than MAX_EXPECTED in grammar/pov.y is left out of the
+ * message; if that happens here, raise MAX_EXPECTED (a message that
+ * says only "unexpected ','" helps nobody).
+ */
+static void syntax_error(fixture *f, const char *text, int column,
+                         const char *what, const char *const *must,
+                         const char *const *must_not) {
+  assert_int_equal(parse(f, text), ZR_ESYNTAX);
+  assert_int_equal(f->diag.errors, 1);
+  assert_int_equal(f->diag.status, ZR_ESYNTAX);
+  char head[128];
+  snprintf(head, sizeof head, "unexpected %s, expected ", what);
+  const char *msg = f->diag.message;
+  if (strncmp(msg, head, strlen(head)) != 0)
+    fail_msg("'%s' does not begin with '%s'", msg, head);
+  char names[64][40];
+  int n = expected_names(msg + strlen(head), names, 64);
+  for (int i = 0; i < n; i++)
+    for (int k = i + 1; k < n; k++)
+      if (strcmp(names[i], names[k]) == 0)
+        fail_msg("%s is listed twice in '%s'", names[i], msg);
+  for (; must && *must; must++)
+    if (!named(names, n, *must))
+      fail_msg("%s is not listed in '%s'", *must, msg);
+  for (; must_not && *must_not; must_not++)
+    if (named(names, n, *must_not))
+      fail_msg("%s cannot come here, yet '%s' lists it", *must_not, msg);
+  /* The token's width: a quoted token's characters, else one. */
+  size_t width = what[0] == '\'' ? strlen(what) - 2 : 1;
+  size_t line_len = strcspn(text, "\n");
+  char full[4096], caret[256];
+  assert_true(column >= 1 && (size_t)column - 1 + width < sizeof caret);
+  memset(caret, ' ', (size_t)column - 1);
+  caret[column - 1] = '^';
+  memset(caret + column, '~', width - 1);
+  caret[column - 1 + width] = '\0';
+  snprintf(full, sizeof full,
+           "t.pov:1:%d: error: %s\n    1 | %.*s\n      | %s\n", column, msg,
+           (int)line_len, text, caret);
+  assert_string_equal(f->diag.text, full);
+}
+
 static void test_parser_syntax_error(void **state) {
   fixture *f = *state;
-  bad(f, "sphere { <0, 0, 0>, 1, 2 }\n", ZR_ESYNTAX,
-      "unexpected ',', expected 'transform', 'normal', 'material', "
-      "'finish', 'interior', 'inverse', 'matrix', 'no_shadow', 'no_image', "
-      "'no_reflection', 'double_illuminate', 'open', 'pigment', 'rotate', "
-      "'scale', 'texture', "
-      "'translate', 'uv_mapping', 'bounded_by', 'clipped_by', 'hollow', 'sturm', "
-      "'radiosity', 'no_radiosity', 'interior_texture', 'photons', '+', "
-      "'-', '*', '/', '}' or '.'",
-      "t.pov:1:22: error: unexpected ',', expected 'transform', 'normal', "
-      "'material', 'finish', 'interior', 'inverse', 'matrix', 'no_shadow', "
-      "'no_image', 'no_reflection', 'double_illuminate', 'open', 'pigment', "
-      "'rotate', 'scale', "
-      "'texture', 'translate', 'uv_mapping', 'bounded_by', 'clipped_by', 'hollow', "
-      "'sturm', 'radiosity', 'no_radiosity', 'interior_texture', "
-      "'photons', '+', '-', '*', '/', '}' or '.'\n"
-      "    1 | sphere { <0, 0, 0>, 1, 2 }\n"
-      "      |                      ^\n");
+  /* After a sphere's radius: its modifiers, the operators that could
+     continue the radius, or the closing brace; not another value. */
+  static const char *const modifiers[] = {
+      "'translate'", "'rotate'", "'scale'", "'pigment'", "'texture'",
+      "'finish'", "'no_shadow'", "'+'", "'*'", "'}'", NULL};
+  static const char *const not_after_radius[] = {
+      "','", "'sphere'", "'{'", "number", "'shadowless'", NULL};
+  syntax_error(f, "sphere { <0, 0, 0>, 1, 2 }\n", 22, "','", modifiers,
+               not_after_radius);
+  syntax_error(f, "box { 0, 1 shadowless }", 12, "'shadowless'",
+               modifiers, not_after_radius);
+  /* Inside a call: another argument, the closing parenthesis or an
+     operator (a list that names the comma token itself). */
+  static const char *const in_call[] = {"','", "')'", "'+'", "'<='", NULL};
+  static const char *const not_in_call[] = {"';'", "'}'", "'{'", NULL};
+  syntax_error(f, "#declare A = max(1;", 19, "';'", in_call, not_in_call);
+  /* Here the list is short and fixed by the language. */
+  static const char *const identifier[] = {"identifier", NULL};
+  syntax_error(f, "#declare 3 = 1;", 10, "number", identifier, NULL);
+  assert_string_equal(f->diag.message,
+                      "unexpected number, expected identifier");
   /* As in POV-Ray, "-1" after a vector subtracts: the radius is missing
      and too many tokens could start it to list them. */
   bad(f, "sphere { <0, 0, 0> -1 }", ZR_ESYNTAX, "unexpected '}'", NULL);
   /* Every statement and object keyword could follow: too many to list
      (more than MAX_EXPECTED in grammar/pov.y). */
   bad(f, "sphere { 0, 1 }\n}\n", ZR_ESYNTAX, "unexpected '}'", NULL);
-  bad(f, "box { 0, 1 shadowless }", ZR_ESYNTAX,
-      "unexpected 'shadowless', expected 'transform', 'normal', 'material', "
-      "'finish', 'interior', 'inverse', 'matrix', 'no_shadow', 'no_image', "
-      "'no_reflection', 'double_illuminate', 'open', 'pigment', 'rotate', "
-      "'scale', 'texture', "
-      "'translate', 'uv_mapping', 'bounded_by', 'clipped_by', 'hollow', 'sturm', "
-      "'radiosity', 'no_radiosity', 'interior_texture', 'photons', '+', "
-      "'-', '*', '/', '}' or '.'",
-      NULL);
-  bad(f, "#declare 3 = 1;", ZR_ESYNTAX,
-      "unexpected number, expected identifier", NULL);
 }
 
 static void test_parser_type_errors(void **state) {
@@ -795,6 +919,8 @@ int main(void) {
       cmocka_unit_test_setup_teardown(test_parser_transforms_in_order, setup,
                                       teardown),
       cmocka_unit_test_setup_teardown(test_parser_union_pushes_modifiers,
+                                      setup, teardown),
+      cmocka_unit_test_setup_teardown(test_parser_inherited_texture_per_use,
                                       setup, teardown),
       cmocka_unit_test_setup_teardown(test_parser_declare_copies, setup,
                                       teardown),

@@ -1,7 +1,8 @@
 /*
  * test_pattern_more.c - transform blocks and identifiers, the fractal
- * patterns, the function pattern, min_extent/max_extent, bare default
- * and font names without their extension (lib/sdl/build_pattern.c,
+ * patterns, the function pattern, the tiling pattern
+ * (lib/scene/pattern_tiling.c), min_extent/max_extent, bare default and
+ * font names without their extension (lib/sdl/build_pattern.c,
  * lib/scene/pattern_more.c), and warps (lib/sdl/build_warp.c,
  * lib/scene/warp.c), parsed from scene text and evaluated.
  *
@@ -284,9 +285,9 @@ static double warped_grey(fixture *f, const char *mods, zr_vec3 at) {
   return zr__pigment_eval(first_pigment(good(f, text)), at).r;
 }
 
-/* The warps' formulas as the reference manual ("Warps") and POV-Ray
-   3.7's warp.cpp give them, at points worked by hand: exact but for
-   rounding, so 1e-9.  (Whole images of each warp, rendered beside
+/* The warps' formulas as the reference manual ("Warps") gives them and
+   POV-Ray 3.7's renders show them, at points worked by hand: exact but
+   for rounding, so 1e-9.  (Whole images of each warp, rendered beside
    povray 3.7 on a flat, ambient-lit plane, match at SSIM 0.9998 to 1.) */
 static void test_pattern_more_warp_formulas(void **state) {
   fixture *f = *state;
@@ -324,6 +325,20 @@ static void test_pattern_more_warp_formulas(void **state) {
                                zr_v3(0.3, 0.2, 7)) - 0.3) < eps);
 }
 
+/* A mapping warp's orientation, against POV-Ray 3.7's own values: a
+   spherical warp with orientation <1, 2, 3> sends <-2.5, 2.5, 0> to
+   x = 1.613 and <2.5, 1.5, 0> to x = 0.779 (measured through a
+   function pigment in a 16-bit linear render: within 0.0006), so
+   gradient x reads 0.613 and 0.779 there. */
+static void test_pattern_more_warp_orientation(void **state) {
+  fixture *f = *state;
+  const char *warp = "warp { spherical orientation <1, 2, 3> }";
+  assert_true(fabs(warped_grey(f, warp, zr_v3(-2.5, 2.5, 0)) - 0.613) <
+              1e-3);
+  assert_true(fabs(warped_grey(f, warp, zr_v3(2.5, 1.5, 0)) - 0.779) <
+              1e-3);
+}
+
 /* Warps and transforms apply in the order written: with warp before
    scale 2, world x = 1.8 is 0.9 in the warp's frame, block 1 of
    repeat x*0.5, giving 0.4; with the warp after the scale, 1.8 is in
@@ -355,9 +370,74 @@ static void test_pattern_more_warp_errors(void **state) {
       ZR_ESCENE, "'major_radius' is not an item of a spherical warp", NULL);
 }
 
+/* tiling 1 to 13, 15 and 18 against povray 3.7.0's values, printed by
+   #declare F = function { pigment { tiling N color_map { [0 rgb 0]
+   [1 rgb 1] } } } #debug str(F(x, 0, z).red, 0, 7): each tile type k
+   of N runs from k/N at its heart to (k + 1)/N at its edges.  The
+   points are off the edges, where povray's ties between tiles would be
+   its own; 1e-6 is the digits it printed. */
+static void test_pattern_more_tiling(void **state) {
+  fixture *f = *state;
+  static const struct {
+    int tiling;
+    double x, z, povray;
+  } cases[] = {
+      {1, -0.85, 0.5, 0.7}, {1, 0.3, 0.1, 0.8}, {1, 0.5, 0.5, 0},
+      {2, -2, -2, 0.8452995}, {2, -1.7, 1.9, 0.7969655},
+      {2, -1.3, -0.1, 0.357735}, {2, -1, 1.6, 0.1524791}, {2, -1, 0, 0},
+      {3, 0.73741, 1.450722, 0.8497529}, {3, 1.771161, 2.654702, 0.4019212},
+      {4, 0.73741, 1.450722, 0.7996705}, {4, 1.439391, 2.53395, 0.9528286},
+      {5, -2, -2, 0.8968663}, {5, -1.8, 1.6, 0.5841597},
+      {5, -1.5, 0.6, 0.5642734}, {5, -1.2, -0.2, 0.6103134},
+      {5, -0.9, -0.8, 0.2825069}, {5, -0.7, 1.8, 0.9476927},
+      {6, -2, 0.8, 0.3}, {6, -1.4, -1.6, 0.6}, {6, -0.9, 0.6, 0.9},
+      {6, -0.4, 1.3, 0.2}, {7, -2, -1, 0.7928932}, {7, -1.4, -1.4, 0.2727922},
+      {7, -0.9, -1.3, 0.2828427}, {7, 0.3, 0.2, 0.5},
+      {8, 0.73741, 1.450722, 0.3309678}, {8, 1.771161, 2.654702, 0.7559848},
+      {8, 1.439391, 2.53395, 0.9300148}, {9, 0.73741, 1.450722, 0.6751495},
+      {9, 1.594353, -2.042375, 0.4401854},
+      {9, -1.743262, -1.707113, 0.3045376}, {10, 0.73741, 1.450722, 0.52518},
+      {10, 1.771161, 2.654702, 0.542322}, {11, 0.73741, 1.450722, 0.82494},
+      {11, 1.771161, 2.654702, 0.5141073}, {11, 1.439391, 2.53395, 0.3559667},
+      {12, 2.405403, -2.320764, 0.7297313},
+      {12, -1.323106, 2.498072, 0.3346187},
+      {12, 0.704715, -2.239805, 0.5067967},
+      {13, 0.73741, 1.450722, 0.3047632}, {13, 1.771161, 2.654702, 0.5028771},
+      {15, 0.73741, 1.450722, 0.549278}, {15, 1.771161, 2.654702, 0.771161},
+      {18, 0.73741, 1.450722, 0.73741}, {18, 1.771161, 2.654702, 0.271161},
+  };
+  for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+    char text[200];
+    snprintf(text, sizeof text, "plane { y, 0 pigment { tiling %d "
+             "color_map { [0 rgb 0] [1 rgb 1] } } }", cases[i].tiling);
+    const zr_pigment *pg = first_pigment(good(f, text));
+    /* The same whatever y. */
+    for (int y = -1; y <= 1; y++) {
+      zr_colour c = zr__pigment_eval(pg, zr_v3(cases[i].x, y * 3.5,
+                                               cases[i].z));
+      if (fabs(c.r - cases[i].povray) > 1e-6)
+        fail_msg("tiling %d at (%g, %d, %g): %.7f, povray %.7f",
+                 cases[i].tiling, cases[i].x, y, cases[i].z, c.r,
+                 cases[i].povray);
+    }
+  }
+  bad(f, "plane { y, 0 pigment { tiling 0 } }", ZR_ESCENE,
+      "the tiling number must be from 1 to 27, not 0", NULL);
+  bad(f, "plane { y, 0 pigment { tiling 28.5 } }", ZR_ESCENE,
+      "the tiling number must be from 1 to 27, not 28.5", NULL);
+  bad(f, "plane { y, 0 pigment { tiling <1, 2> } }", ZR_ESYNTAX,
+      "expected a float, got a 2-D vector", NULL);
+  bad(f, "plane { y, 0 pigment { tiling 27 } }", ZR_EUNSUPPORTED,
+      "tiling 27 is not supported yet",
+      "t.pov:1:31: error: tiling 27 is not supported yet\n"
+      "    1 | plane { y, 0 pigment { tiling 27 } }\n"
+      "      |                               ^~\n");
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_pattern_more_warp_formulas),
+      cmocka_unit_test(test_pattern_more_warp_orientation),
       cmocka_unit_test(test_pattern_more_warp_order),
       cmocka_unit_test(test_pattern_more_warp_errors),
       cmocka_unit_test(test_pattern_more_mandel),
@@ -365,6 +445,7 @@ int main(void) {
       cmocka_unit_test(test_pattern_more_colouring),
       cmocka_unit_test(test_pattern_more_fractal_errors),
       cmocka_unit_test(test_pattern_more_function),
+      cmocka_unit_test(test_pattern_more_tiling),
       cmocka_unit_test(test_pattern_more_transform_blocks),
       cmocka_unit_test(test_pattern_more_extent_unbounded),
       cmocka_unit_test(test_pattern_more_trace),

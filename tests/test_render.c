@@ -17,13 +17,9 @@
 #include "core/arena.h"
 #include "scene/scene.h"
 #include "trace/render.h"
+#include "test_util.h"
 
 #define EPS 1e-12
-
-static void assert_near(double a, double b, double tol) {
-  if (!(fabs(a - b) <= tol))
-    fail_msg("%.17g differs from %.17g by more than %g", a, b, tol);
-}
 
 static void test_render_params_defaults(void **state) {
   (void)state;

@@ -21,17 +21,13 @@
 #include "trace/render.h"
 #include "trace/shade.h"
 #include "zrcube.h"
+#include "test_util.h"
 
 /* Hand values are closed forms evaluated in double precision. */
 #define EPS 1e-12
 /* povray's 16-bit output quantises to 1.5e-5 and its own single
    precision colour arithmetic adds a little more. */
 #define POV_TOL 6e-5
-
-static void assert_near(double a, double b, double tol) {
-  if (!(fabs(a - b) <= tol))
-    fail_msg("%.17g differs from %.17g by more than %g", a, b, tol);
-}
 
 static void assert_rgb(zr_rgb c, double r, double g, double b, double tol) {
   assert_near(c.r, r, tol);

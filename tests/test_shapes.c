@@ -22,18 +22,7 @@
 #include "trace/roots.h"
 #include "zrcube.h"
 #include "parse_fixture.h"
-
-static void assert_near(double a, double b, double tol) {
-  if (!(fabs(a - b) <= tol))
-    fail_msg("%.17g differs from %.17g by more than %g", a, b, tol);
-}
-
-static void assert_vec(zr_vec3 v, double x, double y, double z,
-                       double tol) {
-  assert_near(v.x, x, tol);
-  assert_near(v.y, y, tol);
-  assert_near(v.z, z, tol);
-}
+#include "test_util.h"
 
 /* The coefficients (c[i] of x^i) of the monic polynomial with these
    roots. */
@@ -94,19 +83,6 @@ static void test_shapes_roots_multiplicity(void **state) {
   /* No real roots: x^4 + 1. */
   double none[5] = {1, 0, 0, 0, 1};
   assert_int_equal(zr__poly_roots(none, 4, -10.0, 10.0, out), 0);
-}
-
-/* The only primitive of a scene made of one object. */
-static const zr_object *only(fixture *f, const char *text) {
-  zr_scene *s = good(f, text);
-  assert_int_equal(s->n_primitives, 1);
-  return s->primitives[0];
-}
-
-static int cross(const zr_object *obj, zr_vec3 o, zr_vec3 d, double tmin,
-                 zr_hit h[ZR_MAX_CROSSINGS]) {
-  zr_ray r = {o, d};
-  return zr__intersect(obj, &r, tmin, INFINITY, h);
 }
 
 /* Torus crossings are roots of well-scaled quartics with simple roots:
@@ -530,9 +506,9 @@ static void test_shapes_blob_fields_add(void **state) {
   /* The dent: along z the surface is nearer the centre at -z. */
   assert_int_equal(cross(o, zr_v3(0, 0, -5), zr_v3(0, 0, 1), 0.0, h), 2);
   assert_true(5.0 - h[0].t < h[1].t - 5.0);
-  bad(f, "blob { sphere { 0, 1, 1 pigment { rgb 1 } } }\n", ZR_EUNSUPPORTED,
-      "blob components take transformations only; their own textures "
-      "are not supported yet", NULL);
+  bad(f, "blob { sphere { 0, 1, 1 no_shadow } }\n", ZR_ESYNTAX,
+      "a blob component takes a texture, pigment, normal, finish and "
+      "transformations only", NULL);
   bad(f, "blob { threshold 0 sphere { 0, 1, 1 } }\n", ZR_ESCENE,
       "a blob's threshold must be positive", NULL);
 }

@@ -21,31 +21,7 @@
 #include "trace/obj_sweep.h"
 #include "zrcube.h"
 #include "parse_fixture.h"
-
-static void assert_near(double a, double b, double tol) {
-  if (!(fabs(a - b) <= tol))
-    fail_msg("%.17g differs from %.17g by more than %g", a, b, tol);
-}
-
-static void assert_vec(zr_vec3 v, double x, double y, double z,
-                       double tol) {
-  assert_near(v.x, x, tol);
-  assert_near(v.y, y, tol);
-  assert_near(v.z, z, tol);
-}
-
-/* The only primitive of a scene made of one object. */
-static const zr_object *only(fixture *f, const char *text) {
-  zr_scene *s = good(f, text);
-  assert_int_equal(s->n_primitives, 1);
-  return s->primitives[0];
-}
-
-static int cross(const zr_object *obj, zr_vec3 o, zr_vec3 d, double tmin,
-                 zr_hit h[ZR_MAX_CROSSINGS]) {
-  zr_ray r = {o, d};
-  return zr__intersect(obj, &r, tmin, INFINITY, h);
-}
+#include "test_util.h"
 
 /* ---- sphere_sweep ---- */
 
@@ -263,8 +239,10 @@ static void manual_value(double u, double v, zr_vec3 *p, zr_vec3 *n) {
 }
 
 /* The manual's patch: at a corner of the pieces the crossing is the
-   Bezier point and the normal the exact one; splitting follows u_steps,
-   v_steps and flatness as POV-Ray's does. */
+   Bezier point and the normal the exact one; the number of pieces is
+   the manual's 2^u_steps * 2^v_steps, two triangles each (u_steps 3
+   v_steps 3: "128 smooth triangles"), unless flatness stops the
+   splitting. */
 static void test_surfaces_patch_manual(void **state) {
   fixture *f = *state;
   const zr_object *o =
@@ -283,9 +261,86 @@ static void test_surfaces_patch_manual(void **state) {
   o = only(f, "bicubic_patch { type 1 u_steps 3 v_steps 1\n" MANUAL_PATCH
               "}\n");
   assert_int_equal(o->u.mesh.data->n_faces, 32);
-  o = only(f, "bicubic_patch { type 1 flatness 10 u_steps 3 v_steps 3\n"
+  /* The patch's size (its control points' box diagonal) is sqrt 34 and
+     the control points furthest from its corners' plane, P5, P8, P9
+     and P12, are 1.2 from it: 20.6 per cent. */
+  o = only(f, "bicubic_patch { type 1 flatness 21 u_steps 3 v_steps 3\n"
               MANUAL_PATCH "}\n");
   assert_int_equal(o->u.mesh.data->n_faces, 2);
+  o = only(f, "bicubic_patch { type 1 flatness 20 u_steps 3 v_steps 3\n"
+              MANUAL_PATCH "}\n");
+  assert_true(o->u.mesh.data->n_faces > 2);
+}
+
+/* POV-Ray 3.7's flatness is relative (measured: the manual's patch
+   with its control points times 10 renders the same at each flatness),
+   so the same patch ten times larger is cut into the same pieces. */
+static void test_surfaces_patch_flatness_is_relative(void **state) {
+  fixture *f = *state;
+  const zr_object *o = only(
+      f, "bicubic_patch { type 1 flatness 0.1 u_steps 8 v_steps 8\n"
+         MANUAL_PATCH "}\n");
+  size_t small = o->u.mesh.data->n_faces;
+  /* More than one piece, fewer than the 2^16 u_steps 8 v_steps 8
+     would make: flatness decided. */
+  assert_true(small > 2 && small < 2 * 65536);
+  o = only(f, "bicubic_patch { type 1 flatness 0.1 u_steps 8 v_steps 8\n"
+              "  <0, 0, 20>, <10, 0, 0>, <20, 0, 0>, <30, 0, -20>,\n"
+              "  <0, 10, 0>, <10, 10, 0>, <20, 10, 0>, <30, 10, 0>,\n"
+              "  <0, 20, 0>, <10, 20, 0>, <20, 20, 0>, <30, 20, 0>,\n"
+              "  <0, 30, 20>, <10, 30, 0>, <20, 30, 0>, <30, 30, -20> }\n");
+  assert_int_equal(o->u.mesh.data->n_faces, small);
+}
+
+/* One bilinear piece (u_steps 0, v_steps 0: the manual's minimum of
+   one piece) whose corner at control point 16 is raised by 2.  The
+   piece is cut along the diagonal from point 1 to point 16, as POV-Ray
+   3.7 cuts it (its renders of uniform subdivisions are ours to the
+   pixel only so; see piece() in lib/sdl/build_surface.c): a ray just
+   below that diagonal meets the triangle (P1, P4, P16), z = 2 y / 3,
+   and one beyond it (P1, P16, P13), z = 2 x / 3. */
+static void test_surfaces_patch_diagonal(void **state) {
+  fixture *f = *state;
+  const zr_object *o = only(
+      f, "bicubic_patch { type 1 u_steps 0 v_steps 0\n"
+         "  <0,0,0> <1,0,0> <2,0,0> <3,0,0>\n"
+         "  <0,1,0> <1,1,0.222222222222> <2,1,0.444444444444> "
+         "<3,1,0.666666666667>\n"
+         "  <0,2,0> <1,2,0.444444444444> <2,2,0.888888888889> "
+         "<3,2,1.333333333333>\n"
+         "  <0,3,0> <1,3,0.666666666667> <2,3,1.333333333333> <3,3,2> }\n");
+  assert_int_equal(o->u.mesh.data->n_faces, 2);
+  zr_hit h[2];
+  assert_int_equal(cross(o, zr_v3(1.5, 1.49, 5), zr_v3(0, 0, -1), 0.0, h),
+                   1);
+  assert_near(h[0].t, 5.0 - 2.0 * 1.49 / 3.0, 1e-9);
+  assert_int_equal(cross(o, zr_v3(0.5, 2.5, 5), zr_v3(0, 0, -1), 0.0, h),
+                   1);
+  assert_near(h[0].t, 5.0 - 1.0 / 3.0, 1e-9);
+}
+
+/* A patch whose first row of control points is one point: the edge
+   u = 0 collapses to a tip, where the tangent along v vanishes and the
+   patch has no normal.  There POV-Ray 3.7 shades with <1, 0, 0>
+   (measured: see patch_value in lib/sdl/build_surface.c), not with the
+   flat patch's own <0, 0, +-1>. */
+static void test_surfaces_patch_collapsed_edge(void **state) {
+  fixture *f = *state;
+  const zr_object *o = only(
+      f, "bicubic_patch { type 1 u_steps 2 v_steps 2\n"
+         "  <0,0,0> <0,0,0> <0,0,0> <0,0,0>\n"
+         "  <-1,1,0> <-0.3,1,0> <0.3,1,0> <1,1,0>\n"
+         "  <-2,2,0> <-0.7,2,0> <0.7,2,0> <2,2,0>\n"
+         "  <-3,3,0> <-1,3,0> <1,3,0> <3,3,0> }\n");
+  const struct zr_mesh *m = o->u.mesh.data;
+  int tips = 0;
+  for (size_t k = 0; k < m->n_vertices; k++) {
+    if (zr_v3_len(m->vertices[k]) > 1e-12)
+      continue;
+    tips++;
+    assert_vec(m->normals[k], 1, 0, 0, 0.0);
+  }
+  assert_true(tips >= 1);
 }
 
 static void test_surfaces_patch_bad_input(void **state) {
@@ -422,6 +477,9 @@ int main(void) {
       TEST(test_surfaces_sweep_bad_input),
       TEST(test_surfaces_patch_flat),
       TEST(test_surfaces_patch_manual),
+      TEST(test_surfaces_patch_diagonal),
+      TEST(test_surfaces_patch_flatness_is_relative),
+      TEST(test_surfaces_patch_collapsed_edge),
       TEST(test_surfaces_patch_bad_input),
       TEST(test_surfaces_julia_unit_ball),
       TEST(test_surfaces_julia_slice_and_transform),

@@ -25,15 +25,11 @@
 #include "trace/obj_text.h"
 #include "zrcube.h"
 #include "parse_fixture.h"
+#include "test_util.h"
 
 /* The crossings below are closed forms evaluated by a few products and
    one square root: 1e-9 is rounding room that still catches mistakes. */
 #define EPS 1e-9
-
-static void assert_near(double a, double b) {
-  if (fabs(a - b) > EPS)
-    fail_msg("%.12g != %.12g", a, b);
-}
 
 /* ---- a font made here ---- */
 
@@ -213,35 +209,35 @@ static void test_text_arch_crossings(void **state) {
   zr_scene *s = arch_scene(f, "A", "0.5, 0");
   const struct zr_text *tx = only_text(s);
   assert_int_equal(tx->n_glyphs, 1);
-  assert_near(tx->thickness, 0.5);
+  assert_near(tx->thickness, 0.5, EPS);
   /* Along +x at height 0.25: the curve at s = (1 - sqrt(0.5)) / 2. */
   double s0 = (1 - sqrt(0.5)) / 2;
   zr_ray ray = {zr_v3(-1, 0.25, 0.25), zr_v3(1, 0, 0)};
   zr_hit hit;
   assert_true(zr__bvh_nearest(s->bvh, &ray, 0, INFINITY, &hit));
-  assert_near(hit.t, 1 + s0);
+  assert_near(hit.t, 1 + s0, EPS);
   /* The outward normal there is (-y'(s), x'(s)) normalised. */
   double tx_ = 1000, ty = 2000 - 4000 * s0, len = hypot(tx_, ty);
-  assert_near(hit.normal.x, -ty / len);
-  assert_near(hit.normal.y, tx_ / len);
-  assert_near(hit.normal.z, 0);
+  assert_near(hit.normal.x, -ty / len, EPS);
+  assert_near(hit.normal.y, tx_ / len, EPS);
+  assert_near(hit.normal.z, 0, EPS);
   /* Both crossings: in at s0, out at 1 - s0. */
   zr_hit h[ZR_MAX_CROSSINGS];
   assert_int_equal(zr__intersect(s->primitives[0], &ray, 0, INFINITY, h), 2);
-  assert_near(h[1].t, 1 + (1 - s0));
+  assert_near(h[1].t, 1 + (1 - s0), EPS);
   /* Down onto the front cap at x = 0.5, y = 0.1, then out the back. */
   zr_ray down = {zr_v3(0.5, 0.1, -2), zr_v3(0, 0, 1)};
   assert_int_equal(zr__intersect(s->primitives[0], &down, 0, INFINITY, h),
                    2);
-  assert_near(h[0].t, 2);
-  assert_near(h[0].normal.z, -1);
-  assert_near(h[1].t, 2.5);
-  assert_near(h[1].normal.z, 1);
+  assert_near(h[0].t, 2, EPS);
+  assert_near(h[0].normal.z, -1, EPS);
+  assert_near(h[1].t, 2.5, EPS);
+  assert_near(h[1].normal.z, 1, EPS);
   /* Up through the base line from below. */
   zr_ray up = {zr_v3(0.3, -1, 0.1), zr_v3(0, 1, 0)};
   assert_true(zr__bvh_nearest(s->bvh, &up, 0, INFINITY, &hit));
-  assert_near(hit.t, 1);
-  assert_near(hit.normal.y, -1);
+  assert_near(hit.t, 1, EPS);
+  assert_near(hit.normal.y, -1, EPS);
   /* Above the arch's top (0.5) there is nothing. */
   zr_ray over = {zr_v3(0.5, 0.55, -2), zr_v3(0, 0, 1)};
   assert_false(zr__bvh_nearest(s->bvh, &over, 0, INFINITY, &hit));
@@ -257,9 +253,9 @@ static void test_text_layout(void **state) {
   zr_scene *s = arch_scene(f, "AA", "1, <0.25, 0.5, 0>");
   const struct zr_text *tx = only_text(s);
   assert_int_equal(tx->n_glyphs, 2);
-  assert_near(tx->glyphs[1].lo[0], 1.2 + 0.25);
-  assert_near(tx->glyphs[1].lo[1], 0.5);
-  assert_near(tx->hi.x, 1.45 + 1.0);
+  assert_near(tx->glyphs[1].lo[0], 1.2 + 0.25, EPS);
+  assert_near(tx->glyphs[1].lo[1], 0.5, EPS);
+  assert_near(tx->hi.x, 1.45 + 1.0, EPS);
   /* Commas may separate the font, the string and the thickness. */
   bytes font;
   make_font(&font);

@@ -121,6 +121,52 @@ static void test_texture_average_weights(void **state) {
                 0.25, 0, 0.75, 0, 0);
 }
 
+/* An average's pigment_map entry may leave out its weight when its
+   pigment starts with a pattern or a transformation (qtvrpanorama.pov:
+   "[gradient y color_map { ... }]"); povray 3.7 mixes this one to
+   <0.2, 0, 0.6> (measured). */
+static void test_texture_average_without_weights(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f, "sphere { 0, 1 pigment { average pigment_map {"
+                        " [gradient x color_map { [0 rgb <1, 0, 0>]"
+                        " [1 rgb <1, 0, 0>] }] [3 rgb <0, 0, 1>]"
+                        " [checker rgb 0 rgb 0 scale 2] } } }");
+  const zr_pigment *pg = first_texture(s)->pigment;
+  assert_int_equal(pg->pigment_map->n, 3);
+  assert_true(fabs(pg->pigment_map->entries[0].value - 1) < EPS);
+  assert_colour(zr__pigment_eval(pg, zr_v3(0.3, 0.2, 0.1)), 0.2, 0, 0.6, 0,
+                0);
+  /* A weight, with or without its comma, still comes first. */
+  s = good(f, "sphere { 0, 1 pigment { average pigment_map {"
+              " [0.5, bozo] [0.5 scale 2] [function { x }] } } }");
+  pg = first_texture(s)->pigment;
+  assert_true(fabs(pg->pigment_map->entries[1].value - 0.5) < EPS);
+  assert_int_equal(pg->pigment_map->entries[2].u.pigment->pattern.kind,
+                   ZR_PAT_FUNCTION);
+  /* Without a weight an entry cannot start with a colour: povray reads
+     a float there too. */
+  bad(f, "sphere { 0, 1 pigment { average pigment_map { [rgb 1] } } }",
+      ZR_ESYNTAX, "unexpected 'rgb'", NULL);
+  /* Other patterns' entries need their value, as in povray. */
+  bad(f, "sphere { 0, 1 pigment { gradient x pigment_map { [bozo]"
+         " [1 rgb 0] } } }",
+      ZR_ESYNTAX, "only an average's map entries may leave out their value",
+      "t.pov:1:36: error: only an average's map entries may leave out "
+      "their value\n"
+      "    1 | sphere { 0, 1 pigment { gradient x pigment_map { [bozo] "
+      "[1 rgb 0] } } }\n"
+      "      |                                    "
+      "^~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~\n");
+  bad(f, "sphere { 0, 1 normal { gradient x normal_map { [bumps 0.5]"
+         " [1 dents] } } }",
+      ZR_ESYNTAX, "only an average's map entries may leave out their value",
+      NULL);
+  bad(f, "sphere { 0, 1 texture { gradient x texture_map {"
+         " [pigment { rgb 1 }] [1 pigment { rgb 0 }] } } }",
+      ZR_ESYNTAX, "only an average's map entries may leave out their value",
+      NULL);
+}
+
 static void test_texture_pigment_pattern_grey(void **state) {
   fixture *f = *state;
   zr_scene *s = good(f, "sphere { 0, 1 pigment {"
@@ -250,7 +296,7 @@ static void test_texture_slope_map_hermite(void **state) {
   e[0].value = 0;
   e[1].value = 1;
   e[1].u.slope.height = 1;
-  zr_map m = {2, e};
+  zr_map m = {2, e, 0};
   assert_true(fabs(zr__slope_map_eval(&m, 0.25) - 0.15625) < EPS);
   assert_true(fabs(zr__slope_map_eval(&m, 1.0) - 1.0) < EPS);
   /* A slope of 1 at both ends of a 0..1 rise is the straight line. */
@@ -376,8 +422,9 @@ static void test_texture_image_map_palette_filter_transmit(void **state) {
   assert_colour(palette_pixel(pg, 2), 0, 0, 1, 0, 0.25);
   assert_colour(palette_pixel(pg, 3), 1, 1, 1, 0, 1);
   /* "all" sets every entry; a later index form overrides one, an
-     earlier one is overwritten.  POV-Ray reads the index as
-     (int)(INDEX + 0.01), so 1.995 is entry 2. */
+     earlier one is overwritten, as POV-Ray 3.7 renders it.  The entry
+     is INDEX + 0.01 rounded towards zero (measured: see
+     zr__sdl_image_map_index), so 1.995 is entry 2. */
   pg = image_pigment(f, path, "transmit 0, 0.75 transmit all 0.5 "
                               "filter all 0.125 filter 1.995, 1");
   assert_colour(palette_pixel(pg, 0), 1, 0, 0, 0.125, 0.5);
@@ -397,12 +444,18 @@ static void test_texture_image_map_bad_palette_index(void **state) {
   snprintf(message, sizeof message, "transmit palette index 4 is out of "
            "range: '%s' has 4 palette entries", pal);
   bad(f, text, ZR_ESCENE, message, NULL);
+  /* POV-Ray 3.7 takes -1.005 as entry 0 and refuses -1.02 (measured
+     on a two-entry palette): the index rounds towards zero. */
   snprintf(text, sizeof text, "sphere { 0, 1 pigment { image_map { png "
-           "\"%s\" filter -1, 1 } } }", pal);
-  snprintf(message, sizeof message, "filter palette index -1 is out of "
-           "range: '%s' has 4 palette entries", pal);
+           "\"%s\" filter -1.02, 1 } } }", pal);
+  snprintf(message, sizeof message, "filter palette index -1.02 is out "
+           "of range: '%s' has 4 palette entries", pal);
   bad(f, text, ZR_ESCENE, message, NULL);
-  /* POV-Ray 3.7 refuses the index form without a palette too. */
+  const zr_pigment *pg = image_pigment(f, pal, "filter -1.005, 1");
+  assert_colour(palette_pixel(pg, 0), 1, 0, 0, 1, 0);
+  assert_colour(palette_pixel(pg, 1), 0, 1, 0, 0, 0);
+  /* POV-Ray 3.7 refuses the index form on an RGB PNG too (measured:
+     "Keyword 'filter' cannot be used with non color-mapped image"). */
   snprintf(text, sizeof text, "sphere { 0, 1 pigment { image_map { png "
            "\"%s\" filter 0, 1 } } }", rgb);
   snprintf(message, sizeof message, "'filter INDEX, AMOUNT' needs a "
@@ -578,6 +631,7 @@ int main(void) {
       cmocka_unit_test(test_texture_reflection_without_comma),
       cmocka_unit_test(test_texture_slope_without_braces),
       cmocka_unit_test(test_texture_average_weights),
+      cmocka_unit_test(test_texture_average_without_weights),
       cmocka_unit_test(test_texture_pigment_pattern_grey),
       cmocka_unit_test(test_texture_legacy_colour_map),
       cmocka_unit_test(test_texture_layers_and_see_through),

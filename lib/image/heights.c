@@ -14,6 +14,14 @@
  *     gives, which PNG colour images follow too: (256 r + g) / 65535.
  *     A grey picture stored as colour (r = g = b = v) gives v / 255.
  *     Samples of more than 8 bits are taken by their high byte here.
+ *   - a GIF file is a palette image: index / 255; so is a colour-mapped
+ *     TGA file, and TGA colour files follow the red/green rule above;
+ *   - a POT file (Fractint's "continuous potential", which the manual
+ *     calls "essentially a GIF file with a 16 bit palette") is a GIF
+ *     twice as wide as the field: the left half holds the high bytes of
+ *     16-bit heights, the right half the low bytes, so a pixel of the
+ *     field is (256 left + right) / 65535.  The layout was checked on
+ *     the stock mtmand.pot, whose halves join without a seam.
  *
  * PNG files are decoded by libpng with no conversion but the unpacking
  * of 1, 2 and 4-bit samples.  Netpbm and JPEG files go through the
@@ -201,7 +209,7 @@ static zr_status read_coded(zr_context *ctx, const char *name,
   unsigned long maxval = 255;
   if (!jpeg && !pnm_header(bytes, size, &magic, &maxval))
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
-                    "%s: not a PNG, PGM, PPM or JPEG file", name);
+                    "%s: not a PNG, GIF, TGA, PGM, PPM or JPEG file", name);
   zr_image *image = NULL;
   zr_status s = jpeg ? zr__jpeg_decode(ctx, name, bytes, size, &image)
                      : zr__pnm_decode(ctx, name, bytes, size, &image);
@@ -238,7 +246,74 @@ static zr_status read_coded(zr_context *ctx, const char *name,
   return ZR_OK;
 }
 
-zr_status zr__image_read_heights(zr_context *ctx, const char *path,
+/* TGA files: decoded, then read by their stored codes. */
+static zr_status read_tga(zr_context *ctx, const char *name,
+                          const unsigned char *bytes, size_t size,
+                          float **out, int *w, int *h) {
+  zr_image *image = NULL;
+  zr_status s = zr__tga_decode(ctx, name, bytes, size, &image);
+  if (s != ZR_OK)
+    return s;
+  size_t n = (size_t)image->width * (size_t)image->height;
+  float *heights = malloc(n * sizeof *heights);
+  if (!heights) {
+    zr_image_free(image);
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s", name,
+                    zr_status_str(ZR_ENOMEM));
+  }
+  bool grey = (bytes[2] & 7) == 3;
+  for (size_t i = 0; i < n; i++) {
+    const unsigned short *c = image->codes + 3 * i;
+    if (image->indices)
+      heights[i] = (float)(image->indices[i] / 255.0);
+    else if (grey)
+      heights[i] = (float)(c[0] / 255.0);
+    else
+      heights[i] = colour_height(c[0], c[1]);
+  }
+  *w = image->width;
+  *h = image->height;
+  *out = heights;
+  zr_image_free(image);
+  return ZR_OK;
+}
+
+/* GIF and POT files (see the top of the file). */
+static zr_status read_gif(zr_context *ctx, const char *name,
+                          const unsigned char *bytes, size_t size, bool pot,
+                          float **out, int *w, int *h) {
+  zr_gif_indices g;
+  zr_status s = zr__gif_decode_indices(ctx, name, bytes, size, &g);
+  if (s != ZR_OK)
+    return s;
+  if (pot && g.width % 2 != 0) {
+    free(g.indices);
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
+                    "%s: a POT file is twice as wide as its height field, "
+                    "but this one is %d pixels wide", name, g.width);
+  }
+  int width = pot ? g.width / 2 : g.width;
+  float *heights = malloc((size_t)width * (size_t)g.height * sizeof *heights);
+  if (!heights) {
+    free(g.indices);
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s", name,
+                    zr_status_str(ZR_ENOMEM));
+  }
+  for (int y = 0; y < g.height; y++) {
+    const unsigned char *row = g.indices + (size_t)y * (size_t)g.width;
+    float *dst = heights + (size_t)y * (size_t)width;
+    for (int x = 0; x < width; x++)
+      dst[x] = pot ? colour_height(row[x], row[x + width])
+                   : (float)(row[x] / 255.0);
+  }
+  free(g.indices);
+  *out = heights;
+  *w = width;
+  *h = g.height;
+  return ZR_OK;
+}
+
+zr_status zr__image_read_heights(zr_context *ctx, const char *path, bool pot,
                                  float **heights, int *width,
                                  int *height) {
   *heights = NULL;
@@ -254,10 +329,19 @@ zr_status zr__image_read_heights(zr_context *ctx, const char *path,
   static const unsigned char png_sig[8] = {0x89, 'P', 'N', 'G',
                                            '\r', '\n', 0x1a, '\n'};
   const unsigned char *b = (const unsigned char *)bytes;
-  if (size >= 8 && !memcmp(b, png_sig, 8))
+  bool gif = size >= 6 && (!memcmp(b, "GIF87a", 6) ||
+                           !memcmp(b, "GIF89a", 6));
+  if (pot && !gif)
+    s = zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
+                 "%s: not a POT file (a POT file is a GIF file)", path);
+  else if (gif)
+    s = read_gif(ctx, path, b, size, pot, heights, width, height);
+  else if (size >= 8 && !memcmp(b, png_sig, 8))
     s = read_png(ctx, path, b, size, heights, width, height);
   else if (size >= 3 && b[0] == 0xff && b[1] == 0xd8 && b[2] == 0xff)
     s = read_coded(ctx, path, b, size, true, heights, width, height);
+  else if (!(size >= 2 && b[0] == 'P') && zr__tga_looks_like(b, size))
+    s = read_tga(ctx, path, b, size, heights, width, height);
   else
     s = read_coded(ctx, path, b, size, false, heights, width, height);
   free(bytes);

@@ -185,7 +185,7 @@ static zr_status not_an_image(zr_context *ctx, const char *path) {
     break;
   }
   return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
-                  "%s: not a PNG, JPEG, PPM or PFM file", path);
+                  "%s: not a PNG, JPEG, GIF, TGA, PPM or PFM file", path);
 }
 
 static zr_status decode(zr_context *ctx, const char *path,
@@ -196,10 +196,15 @@ static zr_status decode(zr_context *ctx, const char *path,
     return zr__png_decode(ctx, path, b, n, out);
   if (n >= 3 && b[0] == 0xff && b[1] == 0xd8 && b[2] == 0xff)
     return zr__jpeg_decode(ctx, path, b, n, out);
+  if (n >= 6 && (!memcmp(b, "GIF87a", 6) || !memcmp(b, "GIF89a", 6)))
+    return zr__gif_decode(ctx, path, b, n, out);
   if (n >= 2 && b[0] == 'P' && (b[1] == 'F' || b[1] == 'f'))
     return zr__pfm_decode(ctx, path, b, n, out);
   if (n >= 2 && b[0] == 'P' && b[1] >= '1' && b[1] <= '7')
     return zr__pnm_decode(ctx, path, b, n, out);
+  /* TGA has no signature: last, when the header makes sense as one. */
+  if (zr__tga_looks_like(b, n) || !strcasecmp(extension(path), "tga"))
+    return zr__tga_decode(ctx, path, b, n, out);
   return not_an_image(ctx, path);
 }
 

@@ -10,6 +10,7 @@
 #ifndef ZR_IMAGE_IMAGE_H
 #define ZR_IMAGE_IMAGE_H
 
+#include <stdbool.h>
 #include <stddef.h>
 #include <stdio.h>
 
@@ -77,6 +78,26 @@ zr_status zr__pnm_decode(zr_context *ctx, const char *name,
 zr_status zr__pfm_decode(zr_context *ctx, const char *name,
                          const unsigned char *bytes, size_t size,
                          zr_image **out);
+/* A GIF file's first image as palette indices (gif.c), for image maps
+   (zr__gif_decode) and height fields, which read the indices alone. */
+typedef struct zr_gif_indices {
+  int width, height;
+  unsigned char *indices; /* width * height, rows top to bottom; malloc'ed */
+  int palette_size;
+  unsigned char palette[768]; /* red, green, blue of each entry */
+} zr_gif_indices;
+zr_status zr__gif_decode_indices(zr_context *ctx, const char *name,
+                                 const unsigned char *bytes, size_t size,
+                                 zr_gif_indices *out);
+zr_status zr__gif_decode(zr_context *ctx, const char *name,
+                         const unsigned char *bytes, size_t size,
+                         zr_image **out);
+/* TGA (tga.c): whether a header could be one of the TGA files read
+   (TGA has no signature), and the decoder. */
+bool zr__tga_looks_like(const unsigned char *bytes, size_t size);
+zr_status zr__tga_decode(zr_context *ctx, const char *name,
+                         const unsigned char *bytes, size_t size,
+                         zr_image **out);
 zr_status zr__ppm_encode(zr_context *ctx, const char *name,
                          const zr_image *image, double assumed_gamma,
                          FILE *stream);
@@ -85,10 +106,11 @@ zr_status zr__pfm_encode(zr_context *ctx, const char *name,
 
 /*
  * A height field's samples (lib/image/heights.c): the stored values of
- * a PNG, PGM, PPM or JPEG file scaled to [0, 1], one per pixel, rows top
- * to bottom, in a malloc'ed array the caller frees.
+ * a PNG, GIF, PGM, PPM or JPEG file scaled to [0, 1], one per pixel,
+ * rows top to bottom, in a malloc'ed array the caller frees.  pot: the
+ * file is a POT file (a double-width GIF holding 16-bit heights).
  */
-zr_status zr__image_read_heights(zr_context *ctx, const char *path,
+zr_status zr__image_read_heights(zr_context *ctx, const char *path, bool pot,
                                  float **heights, int *width, int *height);
 
 /* zr_image_new with a message through ctx on failure. */

@@ -54,10 +54,12 @@
 #include "trace/lights.h"
 #include "trace/shade.h"
 
-/* The irradiance of every light at point p (unit normal n) on the front
-   (side 0, along n) and back sides. */
-static void direct_point(const zr_tracer *tr, zr_vec3 p, zr_vec3 n,
-                         double brilliance, double h[2][3]) {
+/* The irradiance of every light that lights object (light groups) at
+   point p (unit normal n) on the front (side 0, along n) and back
+   sides. */
+static void direct_point(const zr_tracer *tr, const zr_object *object,
+                         zr_vec3 p, zr_vec3 n, double brilliance,
+                         double h[2][3]) {
   const zr_scene *scene = tr->scene;
   memset(h, 0, 2 * sizeof h[0]);
   double off = zr__surface_offset(p);
@@ -65,6 +67,8 @@ static void direct_point(const zr_tracer *tr, zr_vec3 p, zr_vec3 n,
     const zr_light *light = &scene->lights[i];
     zr_vec3 l;
     zr_rgb lc;
+    if (!zr__light_lights(scene, light, object))
+      continue; /* another light_group's light */
     if (!zr__light_arrive(light, p, &l, &lc))
       continue; /* outside a spotlight's or cylinder's cone */
     for (int side = 0; side < 2; side++) {
@@ -114,7 +118,7 @@ static void cell_direct(const zr_radiosity *rad, const zr_tracer *tr,
     if (s->trim != NULL && !zr__rad_trim_keeps(s, pt.p))
       continue;
     double h[2][3];
-    direct_point(tr, pt.p, pt.n, brilliance, h);
+    direct_point(tr, s->object, pt.p, pt.n, brilliance, h);
     double w = isfinite(pt.da) && pt.da > 0.0 ? pt.da : 0.0;
     wsum += w;
     kept++;
@@ -135,7 +139,7 @@ static void cell_direct(const zr_radiosity *rad, const zr_tracer *tr,
     if (s->trim != NULL && !zr__rad_trim_keeps(s, pt.p))
       continue;
     double h[2][3];
-    direct_point(tr, pt.p, pt.n, brilliance, h);
+    direct_point(tr, s->object, pt.p, pt.n, brilliance, h);
     for (int side = 0; side < 2; side++)
       for (int c = 0; c < 3; c++) {
         out->lo[side][c] = fmin(out->lo[side][c], h[side][c]);

@@ -62,6 +62,9 @@ typedef struct contour {
   zr_vec3 first, prev; /* unit directions to the first and last vertex */
   int count;
   double sum;
+  /* 0: the factor is |sum| (the polygon seen from either side); +-1:
+     sign * sum, clamped at 0 (only one side of the polygon counts). */
+  double sign;
 } contour;
 
 static void contour_edge(contour *c, zr_vec3 ra, zr_vec3 rb) {
@@ -91,7 +94,8 @@ static void contour_vertex(contour *c, zr_vec3 v) {
 static double contour_close(contour *c) {
   if (c->count >= 2)
     contour_edge(c, c->prev, c->first);
-  return fabs(c->sum) / (2.0 * M_PI);
+  double sum = c->sign == 0.0 ? fabs(c->sum) : fmax(0.0, c->sign * c->sum);
+  return sum / (2.0 * M_PI);
 }
 
 /*
@@ -145,12 +149,13 @@ static bool in_plane(const polygon_plane *pl, zr_vec3 p) {
   return fabs(zr_v3_dot(pl->normal, d)) <= 1e-12;
 }
 
-static double point_polygon(zr_vec3 p, zr_vec3 n, const polygon_plane *pl) {
+static double point_polygon_signed(zr_vec3 p, zr_vec3 n,
+                                   const polygon_plane *pl, double sign) {
   if (in_plane(pl, p))
     return 0.0;
   const zr_vec3 *verts = pl->verts;
   size_t nv = pl->nv;
-  contour c = {p, n, zr_v3(0, 0, 0), zr_v3(0, 0, 0), 0, 0.0};
+  contour c = {p, n, zr_v3(0, 0, 0), zr_v3(0, 0, 0), 0, 0.0, sign};
   /* Sutherland-Hodgman against the half-space h(x) = n . (x - p) >= 0:
      for each edge a -> b emit the crossing point, then b if in front. */
   zr_vec3 a = verts[nv - 1];
@@ -167,6 +172,10 @@ static double point_polygon(zr_vec3 p, zr_vec3 n, const polygon_plane *pl) {
     ha = hb;
   }
   return fmin(1.0, contour_close(&c));
+}
+
+static double point_polygon(zr_vec3 p, zr_vec3 n, const polygon_plane *pl) {
+  return point_polygon_signed(p, n, pl, 0.0);
 }
 
 double zr__ff_point_polygon(zr_vec3 p, zr_vec3 n, const zr_vec3 *verts,
@@ -231,34 +240,58 @@ double zr__ff_patch_polygon(const zr__surface *recv, double u0, double u1,
   return f.area > 0.0 ? f.flux / f.area : 0.0;
 }
 
-/* Like polygon_flux, with the receiver's normals turned to one side. */
+/* Like polygon_flux, with the receiver's normals turned to one side
+   and, when sign is not 0, only one side of the source counted. */
 typedef struct sided_flux {
   polygon_flux f;
-  double side;
+  double side, sign;
 } sided_flux;
 
 static void add_sided_flux(const zr__surface_point *pt, double weight,
                            void *user) {
   sided_flux *sf = user;
-  zr__surface_point q = *pt;
-  q.n = zr_v3_scale(q.n, sf->side);
-  add_polygon_flux(&q, weight, &sf->f);
+  zr_vec3 n = zr_v3_scale(pt->n, sf->side);
+  sf->f.area += weight;
+  sf->f.flux += weight * point_polygon_signed(pt->p, n, &sf->f.plane,
+                                              sf->sign);
+}
+
+/* The factor of zr__ff_patch_patch, the source counted from both sides
+   (sign 0) or from one (+-1: the sign that its contour sum has where
+   that side faces the receiver point). */
+static double patch_patch(const zr__surface *recv, const double rcell[4],
+                          double side, const zr__surface *src,
+                          const double scell[4], double sign, int segs,
+                          int cells, const zr__gauss_rule *rule) {
+  zr_vec3 poly[4 * ZR__FF_MAX_SEGS];
+  segs = segs < 1 ? 1 : segs > ZR__FF_MAX_SEGS ? ZR__FF_MAX_SEGS : segs;
+  size_t nv = zr__surface_patch_polygon(src, scell[0], scell[1], scell[2],
+                                        scell[3], segs, poly,
+                                        4 * ZR__FF_MAX_SEGS);
+  sided_flux sf = {{{0}, 0.0, 0.0}, side < 0.0 ? -1.0 : 1.0, sign};
+  polygon_plane_init(&sf.f.plane, poly, nv);
+  zr__surface_quadrature(recv, rcell[0], rcell[1], rcell[2], rcell[3], cells,
+                         rule, add_sided_flux, &sf);
+  return sf.f.area > 0.0 ? sf.f.flux / sf.f.area : 0.0;
 }
 
 double zr__ff_patch_patch(const zr__surface *recv, const double rcell[4],
                           double side, const zr__surface *src,
                           const double scell[4], int segs, int cells,
                           const zr__gauss_rule *rule) {
-  zr_vec3 poly[4 * ZR__FF_MAX_SEGS];
-  segs = segs < 1 ? 1 : segs > ZR__FF_MAX_SEGS ? ZR__FF_MAX_SEGS : segs;
-  size_t nv = zr__surface_patch_polygon(src, scell[0], scell[1], scell[2],
-                                        scell[3], segs, poly,
-                                        4 * ZR__FF_MAX_SEGS);
-  sided_flux sf = {{{0}, 0.0, 0.0}, side < 0.0 ? -1.0 : 1.0};
-  polygon_plane_init(&sf.f.plane, poly, nv);
-  zr__surface_quadrature(recv, rcell[0], rcell[1], rcell[2], rcell[3], cells,
-                         rule, add_sided_flux, &sf);
-  return sf.f.area > 0.0 ? sf.f.flux / sf.f.area : 0.0;
+  return patch_patch(recv, rcell, side, src, scell, 0.0, segs, cells, rule);
+}
+
+double zr__ff_patch_patch_sided(const zr__surface *recv,
+                                const double rcell[4], double side,
+                                const zr__surface *src, const double scell[4],
+                                double sside, int segs, int cells,
+                                const zr__gauss_rule *rule) {
+  /* The boundary runs (u0,v0), (u1,v0), (u1,v1), (u0,v1), anticlockwise
+     about S_u x S_v, which is orient times the outward normal; seen from
+     the side S_u x S_v points to, the contour sum is negative. */
+  double sign = (sside < 0.0 ? 1.0 : -1.0) * (src->orient < 0.0 ? -1.0 : 1.0);
+  return patch_patch(recv, rcell, side, src, scell, sign, segs, cells, rule);
 }
 
 /* ---- the refinement oracle ---- */

@@ -71,6 +71,22 @@ double zr__ff_patch_patch(const zr__surface *recv, const double rcell[4],
                           const zr__gauss_rule *rule);
 
 /*
+ * zr__ff_patch_patch with only one side of the source counted: side
+ * sside (+1 the outward side, -1 the inward one) where it faces a
+ * receiver point, nothing where the other side does.  By Stokes'
+ * theorem the signed contour sum is the projected solid angle of the
+ * parts turned that way less that of the parts turned away, so a curved
+ * cell that a receiver point sees from behind (the far side of a ball,
+ * through the ball) gives 0, not its projected size, and one that the
+ * ball's rim crosses is short by the sliver folded behind the rim.
+ */
+double zr__ff_patch_patch_sided(const zr__surface *recv,
+                                const double rcell[4], double side,
+                                const zr__surface *src, const double scell[4],
+                                double sside, int segs, int cells,
+                                const zr__gauss_rule *rule);
+
+/*
  * Hanrahan, Salzman and Aupperle's cheap estimate of the form factor from
  * a receiver point x (normal nx) to a source of area area_y centred at y
  * (normal ny): the factor of a coaxial disc of that area, tilted by the

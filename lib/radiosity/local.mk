@@ -9,12 +9,22 @@ lib_libzrcube_la_SOURCES += \
 	lib/radiosity/mesh.c lib/radiosity/quadtree.c \
 	lib/radiosity/refine.c lib/radiosity/solve.c lib/radiosity/io.c \
 	lib/radiosity/workers.c lib/radiosity/workers.h lib/radiosity/trim.c \
-	lib/radiosity/direct.c lib/radiosity/meshimage.c
+	lib/radiosity/direct.c lib/radiosity/meshimage.c \
+	lib/radiosity/cluster.c
 
 check_PROGRAMS += tests/test_formfactor tests/test_nurbs \
-	tests/test_quadtree tests/test_radiosity
+	tests/test_quadtree tests/test_radiosity tests/test_rad_mesh \
+	tests/test_rad_torus
 TESTS += tests/test_formfactor tests/test_nurbs tests/test_quadtree \
-	tests/test_radiosity
+	tests/test_radiosity tests/test_rad_mesh tests/test_rad_torus
+tests_test_rad_torus_SOURCES = tests/test_rad_torus.c
+tests_test_rad_torus_CPPFLAGS = $(TEST_CPPFLAGS)
+tests_test_rad_torus_LDADD = $(TEST_LDADD)
+tests_test_rad_torus_LDFLAGS = -static
+tests_test_rad_mesh_SOURCES = tests/test_rad_mesh.c
+tests_test_rad_mesh_CPPFLAGS = $(TEST_CPPFLAGS)
+tests_test_rad_mesh_LDADD = $(TEST_LDADD)
+tests_test_rad_mesh_LDFLAGS = -static
 tests_test_quadtree_SOURCES = tests/test_quadtree.c
 tests_test_quadtree_CPPFLAGS = $(TEST_CPPFLAGS)
 tests_test_quadtree_LDADD = $(TEST_LDADD)

@@ -12,8 +12,14 @@
  * object, stretched to reach every axis-aligned plane (so six planes
  * forming a room bound themselves), then widened by a margin of 10% of
  * its diagonal on every side so that light reaching past the objects
- * still lands on the floor.  A tilted plane is covered by a rectangle
- * that may stick out of those bounds (no trimming yet).
+ * still lands on the floor.  A tilted plane is its exact section of
+ * those bounds, a convex polygon of three to six corners as a fan of
+ * triangles.  A mesh (mesh, mesh2, smooth_triangle, and a height_field
+ * without water_level) is one surface whose quadtree groups its faces
+ * into clusters (surface.c, cluster.c), so a large mesh is no multitude
+ * of surfaces linked in pairs.  Objects of the other kinds (text,
+ * polygon, prism, lathe, sor, blob, isosurface ...) have no radiosity
+ * surface yet: they are counted and named in one warning per kind.
  *
  * The surface's light follows POV-Ray's finish (reference manual,
  * "Finish"): emission is a radiance that POV-Ray multiplies by the
@@ -39,6 +45,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "trace/obj_mesh.h"
+
 /* Where an object was written, for messages. */
 static zr_diag_place object_place(const zr_object *obj) {
   zr_diag_place where;
@@ -49,11 +57,44 @@ static zr_diag_place object_place(const zr_object *obj) {
   return where;
 }
 
+/* POV-Ray's keyword for each kind, in zr_object_kind's order. */
 static const char *kind_name(zr_object_kind kind) {
-  static const char *const names[] = {"sphere", "box",  "plane", "triangle",
-                                      "cylinder", "cone", "disc", "union"};
+  static const char *const names[] = {
+      "sphere",       "box",         "plane",    "triangle",
+      "cylinder",     "cone",        "disc",     "union",
+      "mesh",         "text",        "intersection", "merge",
+      "quadric",      "torus",       "polygon",  "superellipsoid",
+      "prism",        "lathe",       "blob",     "poly",
+      "sor",          "sphere_sweep", "julia_fractal", "isosurface",
+      "height_field", "ovus",        "parametric"};
   return (size_t)kind < sizeof names / sizeof names[0] ? names[kind]
                                                        : "object";
+}
+
+/* The mesh whose faces are an object's radiosity surface, or NULL.  A
+   height field is its triangles unless water_level hides some of them
+   (the tracer drops what lies below it; radiosity cannot yet). */
+static const struct zr_mesh *object_mesh(const zr_object *o) {
+  if (o->kind == ZR_OBJ_MESH)
+    return o->u.mesh.data;
+  if (o->kind == ZR_OBJ_HEIGHT_FIELD && !(o->u.height_field.water_level > 0.0))
+    return o->u.height_field.data;
+  return NULL;
+}
+
+/* Whether radiosity models objects of this kind at all (others are
+   counted and named once, in zr__rad_mesh_build). */
+static bool modelled(const zr_object *o) {
+  switch (o->kind) {
+  case ZR_OBJ_SPHERE: case ZR_OBJ_BOX: case ZR_OBJ_PLANE:
+  case ZR_OBJ_TRIANGLE: case ZR_OBJ_CYLINDER: case ZR_OBJ_CONE:
+  case ZR_OBJ_DISC: case ZR_OBJ_TORUS:
+    return true;
+  case ZR_OBJ_MESH: case ZR_OBJ_HEIGHT_FIELD:
+    return object_mesh(o) != NULL;
+  default:
+    return false;
+  }
 }
 
 /* The bounds that clip infinite planes; false when nothing bounds them. */
@@ -116,6 +157,10 @@ static int primitive_surfaces(const zr_object *o, const zr_vec3 *lo,
     st = zr__surface_sphere(&out[n++], o->u.sphere.centre,
                             o->u.sphere.radius, xf, NULL, NULL);
     break;
+  case ZR_OBJ_TORUS:
+    st = zr__surface_torus(&out[n++], o->u.torus.major, o->u.torus.minor,
+                           xf, NULL, NULL);
+    break;
   case ZR_OBJ_DISC:
     st = zr__surface_disc(&out[n++], o->u.disc.centre, o->u.disc.normal,
                           o->u.disc.radius, o->u.disc.hole_radius, xf, NULL,
@@ -124,9 +169,13 @@ static int primitive_surfaces(const zr_object *o, const zr_vec3 *lo,
   case ZR_OBJ_PLANE:
     if (lo == NULL)
       return -1;
-    st = zr__surface_plane_in_box(&out[n++], o->u.plane.normal,
+    n = zr__surface_plane_section(out, o->u.plane.normal,
                                   o->u.plane.distance, *lo, *hi, xf, NULL,
-                                  NULL, NULL);
+                                  NULL);
+    return n > 0 ? n : -1;
+  case ZR_OBJ_MESH:
+  case ZR_OBJ_HEIGHT_FIELD:
+    st = zr__surface_mesh(&out[n++], object_mesh(o), xf, NULL, NULL);
     break;
   case ZR_OBJ_CYLINDER: {
     zr_vec3 b = o->u.cylinder.base, c = o->u.cylinder.cap;
@@ -214,11 +263,35 @@ static int entry_cmp(const void *a, const void *b) {
 
 /* Adds the surfaces of primitive o, trimmed by the CSG primitive trim
    when it is a part of one (NULL: whole); ZR_ENOMEM on failure. */
+/* The objects of each kind that radiosity does not model, and the
+   first of them, for one warning per kind. */
+typedef struct skip_tally {
+  size_t count[ZR_OBJ_PARAMETRIC + 1];
+  const zr_object *first[ZR_OBJ_PARAMETRIC + 1];
+} skip_tally;
+
 static zr_status add_primitive(zr_radiosity *rad, zr_context *ctx,
                                const zr_object *o, const zr_vec3 *lo,
-                               const zr_vec3 *hi, const zr_object *trim) {
+                               const zr_vec3 *hi, const zr_object *trim,
+                               skip_tally *tally) {
   zr__surface geo[6];
   zr_diag_place where = object_place(o);
+  const struct zr_mesh *faces = object_mesh(o);
+  if (faces && rad->params.max_mesh_faces > 0 &&
+      faces->n_faces > (size_t)rad->params.max_mesh_faces) {
+    zr__diag(ctx, ZR_DIAG_WARNING, ZR_OK, &where,
+             "radiosity: this %s has %zu faces, more than the %d radiosity "
+             "takes (zr_radiosity_params.max_mesh_faces); it takes no part "
+             "in the radiosity solution",
+             kind_name(o->kind), faces->n_faces, rad->params.max_mesh_faces);
+    return ZR_OK;
+  }
+  if (!modelled(o)) {
+    size_t k = (size_t)o->kind <= ZR_OBJ_PARAMETRIC ? (size_t)o->kind : 0;
+    if (tally->count[k]++ == 0)
+      tally->first[k] = o;
+    return ZR_OK;
+  }
   int n = primitive_surfaces(o, lo, hi, geo);
   if (n < 0) {
     zr__diag(ctx, ZR_DIAG_WARNING, ZR_OK, &where,
@@ -231,6 +304,16 @@ static zr_status add_primitive(zr_radiosity *rad, zr_context *ctx,
   e->object = o;
   e->first = (uint32_t)rad->n_surfs;
   e->count = (uint32_t)n;
+  if (o->kind == ZR_OBJ_MESH && o->u.mesh.textured != NULL) {
+    /* A mesh with a texture list: hits report the copy that carries the
+       face's texture; every copy looks up the same surface (whose light
+       is the mesh's own texture's). */
+    for (size_t k = 0; k < o->u.mesh.data->n_textures; k++) {
+      zr__rad_object_entry *c = &rad->objects[rad->n_objects++];
+      *c = *e;
+      c->object = &o->u.mesh.textured[k];
+    }
+  }
   bool clamped = false;
   for (int i = 0; i < n; i++) {
     zr__rad_surface *s = &rad->surfs[rad->n_surfs];
@@ -265,6 +348,8 @@ static zr_status add_primitive(zr_radiosity *rad, zr_context *ctx,
 
 /* The primitives under a CSG primitive's node (1 for a primitive). */
 static size_t count_parts(const zr_object *o) {
+  if (o->kind == ZR_OBJ_MESH && o->u.mesh.textured != NULL)
+    return 1 + o->u.mesh.data->n_textures; /* the copies' entries */
   if (!zr__is_csg(o->kind))
     return 1;
   size_t n = 0;
@@ -277,12 +362,13 @@ static size_t count_parts(const zr_object *o) {
    intersection, difference or merge), each trimmed by the solid. */
 static zr_status add_parts(zr_radiosity *rad, zr_context *ctx,
                            const zr_object *node, const zr_object *solid,
-                           const zr_vec3 *lo, const zr_vec3 *hi) {
+                           const zr_vec3 *lo, const zr_vec3 *hi,
+                           skip_tally *tally) {
   if (!zr__is_csg(node->kind))
-    return add_primitive(rad, ctx, node, lo, hi, solid);
+    return add_primitive(rad, ctx, node, lo, hi, solid, tally);
   for (size_t i = 0; i < node->u.csg.n_children; i++) {
-    zr_status st =
-        add_parts(rad, ctx, node->u.csg.children[i], solid, lo, hi);
+    zr_status st = add_parts(rad, ctx, node->u.csg.children[i], solid, lo,
+                             hi, tally);
     if (st != ZR_OK)
       return st;
   }
@@ -301,14 +387,33 @@ zr_status zr__rad_mesh_build(zr_radiosity *rad, zr_context *ctx) {
                     "radiosity: out of memory for %zu surfaces", 6 * np);
   zr_vec3 lo, hi;
   bool bounded = plane_bounds(scene, &lo, &hi);
+  skip_tally tally;
+  memset(&tally, 0, sizeof tally);
   for (size_t i = 0; i < scene->n_primitives; i++) {
     const zr_object *o = scene->primitives[i];
     const zr_vec3 *l = bounded ? &lo : NULL, *h = bounded ? &hi : NULL;
-    zr_status st = zr__is_csg(o->kind) ? add_parts(rad, ctx, o, o, l, h)
-                                       : add_primitive(rad, ctx, o, l, h, NULL);
+    zr_status st = zr__is_csg(o->kind)
+                       ? add_parts(rad, ctx, o, o, l, h, &tally)
+                       : add_primitive(rad, ctx, o, l, h, NULL, &tally);
     if (st != ZR_OK)
       return zr__diag(ctx, ZR_DIAG_ERROR, st, NULL,
                       "radiosity: out of memory building surfaces");
+  }
+  /* One warning per kind radiosity does not model yet, so a picture
+     with such objects dark to radiosity is no silent surprise. */
+  for (size_t k = 0; k <= ZR_OBJ_PARAMETRIC; k++) {
+    if (tally.count[k] == 0)
+      continue;
+    zr_diag_place where = object_place(tally.first[k]);
+    const char *why = k == ZR_OBJ_HEIGHT_FIELD
+                          ? " (a height_field with water_level)"
+                          : "";
+    zr__diag(ctx, ZR_DIAG_WARNING, ZR_OK, &where,
+             "radiosity: %zu %s object%s%s take%s no part (they neither "
+             "receive nor give radiosity light; the first is here)",
+             tally.count[k], kind_name((zr_object_kind)k),
+             tally.count[k] == 1 ? "" : "s", why,
+             tally.count[k] == 1 ? "s" : "");
   }
   if (rad->n_surfs == 0)
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ESCENE, NULL,

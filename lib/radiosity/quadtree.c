@@ -44,8 +44,10 @@ static bool grow(void **array, size_t *cap, size_t need, size_t size) {
 
 /* ---- vertices ---- */
 
-static size_t vertex_hash(int32_t surf, uint32_t iu, uint32_t iv) {
-  uint64_t h = (uint64_t)(uint32_t)surf * 0x9E3779B97F4A7C15ull;
+static size_t vertex_hash(int32_t surf, uint32_t slot, uint32_t iu,
+                          uint32_t iv) {
+  uint64_t h = ((uint64_t)(uint32_t)surf + ((uint64_t)slot << 32)) *
+               0x9E3779B97F4A7C15ull;
   h ^= ((uint64_t)iu << 32 | iv) + 0x632BE59BD9B4E019ull + (h << 6);
   h ^= h >> 29;
   h *= 0xBF58476D1CE4E5B9ull;
@@ -54,16 +56,16 @@ static size_t vertex_hash(int32_t surf, uint32_t iu, uint32_t iv) {
 }
 
 /* The slot of (surf, iu, iv): its vertex or the empty slot for it. */
-static size_t vertex_slot(const zr_radiosity *rad, int32_t surf, uint32_t iu,
-                          uint32_t iv) {
+static size_t vertex_slot(const zr_radiosity *rad, int32_t surf,
+                          uint32_t slot, uint32_t iu, uint32_t iv) {
   size_t mask = rad->hash_cap - 1;
-  size_t i = vertex_hash(surf, iu, iv) & mask;
+  size_t i = vertex_hash(surf, slot, iu, iv) & mask;
   for (;;) {
     uint32_t e = rad->vhash[i];
     if (e == 0)
       return i;
     const zr__rad_vertex *v = &rad->verts[e - 1];
-    if (v->surf == surf && v->iu == iu && v->iv == iv)
+    if (v->surf == surf && v->slot == slot && v->iu == iu && v->iv == iv)
       return i;
     i = (i + 1) & mask;
   }
@@ -78,19 +80,20 @@ static bool rehash(zr_radiosity *rad, size_t cap) {
   rad->hash_cap = cap;
   for (size_t k = 0; k < rad->n_verts; k++) {
     const zr__rad_vertex *v = &rad->verts[k];
-    rad->vhash[vertex_slot(rad, v->surf, v->iu, v->iv)] = (uint32_t)k + 1;
+    rad->vhash[vertex_slot(rad, v->surf, v->slot, v->iu, v->iv)] =
+        (uint32_t)k + 1;
   }
   return true;
 }
 
 /* The index of the vertex (surf, iu, iv), created when new; UINT32_MAX
    when out of memory. */
-static uint32_t vertex_get(zr_radiosity *rad, int32_t surf, uint32_t iu,
-                           uint32_t iv) {
+static uint32_t vertex_get(zr_radiosity *rad, int32_t surf, uint32_t mslot,
+                           uint32_t iu, uint32_t iv) {
   if (2 * (rad->n_verts + 1) > rad->hash_cap &&
       !rehash(rad, rad->hash_cap ? 2 * rad->hash_cap : 1024))
     return UINT32_MAX;
-  size_t slot = vertex_slot(rad, surf, iu, iv);
+  size_t slot = vertex_slot(rad, surf, mslot, iu, iv);
   if (rad->vhash[slot] != 0)
     return rad->vhash[slot] - 1;
   if (!grow((void **)&rad->verts, &rad->cap_verts, rad->n_verts + 1,
@@ -99,6 +102,7 @@ static uint32_t vertex_get(zr_radiosity *rad, int32_t surf, uint32_t iu,
   zr__rad_vertex *v = &rad->verts[rad->n_verts];
   memset(v, 0, sizeof *v);
   v->surf = surf;
+  v->slot = mslot;
   v->iu = iu;
   v->iv = iv;
   rad->vhash[slot] = (uint32_t)++rad->n_verts;
@@ -107,8 +111,8 @@ static uint32_t vertex_get(zr_radiosity *rad, int32_t surf, uint32_t iu,
 
 /* The vertex at (surf, iu, iv) if it exists, else UINT32_MAX. */
 static uint32_t vertex_find(const zr_radiosity *rad, int32_t surf,
-                            uint32_t iu, uint32_t iv) {
-  uint32_t e = rad->vhash[vertex_slot(rad, surf, iu, iv)];
+                            uint32_t slot, uint32_t iu, uint32_t iv) {
+  uint32_t e = rad->vhash[vertex_slot(rad, surf, slot, iu, iv)];
   return e == 0 ? UINT32_MAX : e - 1;
 }
 
@@ -128,10 +132,39 @@ static double angle(zr_vec3 a, zr_vec3 b) {
   return acos(c > 1.0 ? 1.0 : c < -1.0 ? -1.0 : c);
 }
 
+/* The vertex slot of a node's corners (see zr__rad_vertex). */
+static uint32_t node_slot(const zr_radiosity *rad, int32_t surf,
+                          int32_t depth, uint32_t iu, uint32_t iv) {
+  const zr__surface *g = &rad->surfs[surf].geom;
+  if (g->kind != ZR__SURFACE_MESH || depth < g->slot_depth)
+    return 0;
+  zr__rad_node probe = {.depth = depth, .iu = iu, .iv = iv};
+  double cell[4];
+  size_t f0, f1;
+  zr__rad_node_cell(&probe, cell);
+  zr__surface_mesh_cluster(g, cell, &f0, &f1);
+  return (uint32_t)f0 + 1;
+}
+
+/* A cluster of a mesh's faces: its aggregate, and no CSG trim (a cell
+   with no area is dropped as a removed one is). */
+static bool cluster_geometry(const zr__surface *g, const double cell[4],
+                             zr__rad_node *node) {
+  size_t f0, f1;
+  if (!zr__surface_mesh_cluster(g, cell, &f0, &f1))
+    return false;
+  zr__surface_mesh_aggregate(g, f0, f1, &node->area, &node->centre,
+                             &node->normal, &node->spread);
+  node->kept = node->area > 0.0 ? 1.0 : 0.0;
+  return true;
+}
+
 void zr__rad_node_geometry(const zr_radiosity *rad, zr__rad_node *node) {
   const zr__surface *g = &rad->surfs[node->surf].geom;
   double cell[4];
   zr__rad_node_cell(node, cell);
+  if (cluster_geometry(g, cell, node))
+    return;
   zr__surface_point pt;
   zr__surface_eval(g, 0.5 * (cell[0] + cell[1]), 0.5 * (cell[2] + cell[3]),
                    &pt);
@@ -143,7 +176,9 @@ void zr__rad_node_geometry(const zr_radiosity *rad, zr__rad_node *node) {
   node->kept = zr__rad_trim_fraction(rad, &rad->surfs[node->surf], cell, 4);
   node->area *= node->kept;
   node->spread = 0.0;
-  if (g->planar)
+  if (g->kind == ZR__SURFACE_MESH && !(node->area > 0.0))
+    node->kept = 0.0; /* an empty slot or a face with no area */
+  if (g->planar || g->kind == ZR__SURFACE_MESH)
     return;
   for (int k = 0; k < 4; k++) {
     zr__surface_point c;
@@ -169,8 +204,9 @@ static int32_t node_new(zr_radiosity *rad, int32_t surf, int32_t parent,
   uint32_t step = ZR__RAD_GRID >> depth;
   const uint32_t cu[4] = {iu, iu + step, iu + step, iu};
   const uint32_t cv[4] = {iv, iv, iv + step, iv + step};
+  uint32_t slot = node_slot(rad, surf, depth, iu, iv);
   for (int k = 0; k < 4; k++) {
-    uint32_t v = vertex_get(rad, surf, cu[k], cv[k]);
+    uint32_t v = vertex_get(rad, surf, slot, cu[k], cv[k]);
     if (v == UINT32_MAX)
       return -1;
     rad->nodes[rad->n_nodes].vert[k] = v;
@@ -239,7 +275,7 @@ static void fix_edge(zr_radiosity *rad, int32_t surf, uint32_t au,
   if ((bu - au) + (bv - av) < 2)
     return;
   uint32_t mu = au + (bu - au) / 2, mv = av + (bv - av) / 2;
-  uint32_t vm = vertex_find(rad, surf, mu, mv);
+  uint32_t vm = vertex_find(rad, surf, rad->verts[va].slot, mu, mv);
   if (vm == UINT32_MAX)
     return;
   zr__rad_vertex *m = &rad->verts[vm];
@@ -312,6 +348,15 @@ void zr__rad_interpolate(const zr_radiosity *rad, int32_t n, int side,
   const zr__rad_node *node = &rad->nodes[n];
   double cell[4];
   zr__rad_node_cell(node, cell);
+  size_t f0, f1;
+  if (zr__surface_mesh_cluster(&rad->surfs[node->surf].geom, cell, &f0,
+                               &f1)) {
+    /* A cluster's corners are no points of its faces: it is flat. */
+    const double *rho = rad->surfs[node->surf].rho;
+    for (int c = 0; c < 3; c++)
+      out[c] = node->b[side][c] - rho[c] * node->hd[side][c];
+    return;
+  }
   double s = (u - cell[0]) / (cell[1] - cell[0]);
   double t = (v - cell[2]) / (cell[3] - cell[2]);
   s = s < 0.0 ? 0.0 : s > 1.0 ? 1.0 : s;

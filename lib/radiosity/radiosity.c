@@ -36,6 +36,7 @@
 #include <string.h>
 
 #include "radiosity/formfactor.h"
+#include "trace/obj_mesh.h"
 
 ZR_API void zr_radiosity_params_init(zr_radiosity_params *p,
                                      const zr_scene *scene) {
@@ -49,6 +50,7 @@ ZR_API void zr_radiosity_params_init(zr_radiosity_params *p,
   p->uniform = 0;
   p->shooting = 0;
   p->brightness = 1.0;
+  p->max_mesh_faces = 1024;
   if (scene == NULL)
     return;
   /* The scene's radiosity block (lib/sdl/build_radiosity.c): zRcube's
@@ -144,7 +146,9 @@ static zr_status initial_split(zr_radiosity *rad) {
   if (rad->params.uniform > 0)
     return zr__rad_uniform(rad, rad->params.uniform);
   for (size_t s = 0; s < rad->n_surfs; s++) {
-    if (rad->surfs[s].geom.planar)
+    /* A mesh's faces are planar; its clusters split as links ask. */
+    if (rad->surfs[s].geom.planar ||
+        rad->surfs[s].geom.kind == ZR__SURFACE_MESH)
       continue;
     int32_t root = rad->surfs[s].root;
     if (!zr__rad_subdivide(rad, root))
@@ -262,10 +266,43 @@ ZR_API void zr_radiosity_get_stats(const zr_radiosity *rad,
   *stats = rad->stats;
 }
 
+/* The face of mesh surface g that a ray with direction dir hits at
+   point, from the mesh's own BVH: a short ray across the point. */
+static bool mesh_hit_face(const zr__surface *g, zr_vec3 point, zr_vec3 dir,
+                          size_t *face) {
+  const zr_transform *xf = g->mesh_xf;
+  zr_vec3 p = xf ? zr__xform_point(xf->inv, point) : point;
+  zr_vec3 d = xf ? zr__xform_dir(xf->inv, dir) : dir;
+  double dl = zr_v3_len(d);
+  double size = zr_v3_len(zr_v3_sub(g->mesh->hi, g->mesh->lo));
+  if (!(dl > 0.0) || !(size > 0.0))
+    return false;
+  double t0 = 1e-6 * size / dl;
+  zr_mesh_crossing c[2];
+  int n = zr__mesh_crossings(g->mesh, zr_v3_madd(p, d, -t0), d, 0.0,
+                             2.0 * t0, c);
+  if (n == 0)
+    return false;
+  int best = n == 2 && fabs(c[1].t - t0) < fabs(c[0].t - t0);
+  *face = c[best].face;
+  return true;
+}
+
 /* The surface of the entry nearest to point, with its (u,v) and normal. */
 static size_t nearest_surface(const zr_radiosity *rad,
                               const zr__rad_object_entry *e, zr_vec3 point,
-                              double *u, double *v, zr_vec3 *normal) {
+                              zr_vec3 dir, double *u, double *v,
+                              zr_vec3 *normal) {
+  const zr__surface *first = &rad->surfs[e->first].geom;
+  size_t face;
+  if (e->count == 1 && first->kind == ZR__SURFACE_MESH &&
+      mesh_hit_face(first, point, dir, &face)) {
+    zr__surface_mesh_locate_face(first, face, point, u, v);
+    zr__surface_point pt;
+    zr__surface_eval(first, *u, *v, &pt);
+    *normal = pt.n;
+    return e->first;
+  }
   double best = INFINITY;
   size_t found = e->first;
   for (uint32_t k = 0; k < e->count; k++) {
@@ -294,7 +331,7 @@ int32_t zr__rad_hit_leaf(const zr_radiosity *rad, const zr_object *object,
     return -1;
   double u = 0.0, v = 0.0;
   zr_vec3 n = zr_v3(0, 0, 0);
-  size_t s = nearest_surface(rad, e, point, &u, &v, &n);
+  size_t s = nearest_surface(rad, e, point, dir, &u, &v, &n);
   *side = zr_v3_dot(dir, n) > 0.0;
   return zr__rad_leaf_at(rad, (int32_t)s, u, v);
 }
@@ -392,7 +429,10 @@ static void final_gather(const zr_radiosity *rad, int32_t leaf, int side,
       if (l->rside != side)
         continue;
       const zr__rad_node *q = &rad->nodes[l->src];
-      if (l->src == l->recv) {
+      /* A cluster of a mesh's faces keeps its mean factor too: its
+         links are the faint ones, and its exact factor is a sum over
+         every face (cluster.c). */
+      if (l->src == l->recv || zr__rad_cluster(rad, q, NULL, NULL)) {
         for (int c = 0; c < 3; c++)
           h[c] += l->ff * q->b[l->sside][c];
         continue;
@@ -413,7 +453,7 @@ bool zr__radiosity_radiance(const zr_radiosity *rad, const zr_object *object,
     return false;
   double u = 0.0, v = 0.0;
   zr_vec3 n = zr_v3(0, 0, 0);
-  size_t s = nearest_surface(rad, e, point, &u, &v, &n);
+  size_t s = nearest_surface(rad, e, point, dir, &u, &v, &n);
   int side = zr_v3_dot(dir, n) > 0.0; /* arriving from behind: back */
   int32_t leaf = zr__rad_leaf_at(rad, (int32_t)s, u, v);
   double b[3];

@@ -12,6 +12,7 @@
  *   meshimage.c a picture of the mesh (elements flat, edges drawn)
  *   radiosity.c the public API and the lookup from a ray hit
  *   trim.c      CSG trimming of the parts of intersections and merges
+ *   cluster.c   form factors of links to clusters of a mesh's faces
  *   workers.c   the threads of a rank, a parallel loop
  *
  * Every element has two sides, front (along the surface's outward normal)
@@ -84,6 +85,10 @@ typedef struct zr__rad_link {
 typedef struct zr__rad_vertex {
   int32_t surf;
   uint32_t iu, iv;
+  /* 1 + the face of a mesh surface whose triangle the vertex is a
+     corner of (neighbouring slots are no neighbours on the mesh), 0 on
+     other surfaces and for clusters' corners. */
+  uint32_t slot;
   double b[2][3]; /* smoothed radiosity */
   double weight;  /* area summed while smoothing */
 } zr__rad_vertex;
@@ -223,6 +228,24 @@ double zr__rad_trim_fraction(const zr_radiosity *rad, const zr__rad_surface *s,
                              const double cell[4], int n);
 /* Splits the cells that a trim crosses down to A_eps. */
 zr_status zr__rad_trim_split(zr_radiosity *rad);
+
+/* ---- cluster.c ---- */
+/* Whether node is a cluster of a mesh's faces (more than one face's
+   slot); [*f0, *f1) are its faces (either may be NULL). */
+bool zr__rad_cluster(const zr_radiosity *rad, const zr__rad_node *node,
+                     size_t *f0, size_t *f1);
+/* A cluster whose faces do not all face one way. */
+bool zr__rad_mixed_cluster(const zr_radiosity *rad, const zr__rad_node *node);
+/* The factor from point p (normal n, the receiving side's) to the faces
+   of cluster q that show side sside to p. */
+double zr__rad_cluster_point_factor(const zr_radiosity *rad,
+                                    const zr__rad_node *q, int sside,
+                                    zr_vec3 p, zr_vec3 n);
+/* The form factor of a link p (rside) <- q (sside) with a cluster at
+   either end, without visibility. */
+double zr__rad_cluster_link_factor(const zr_radiosity *rad,
+                                   const zr__rad_node *p, int rside,
+                                   const zr__rad_node *q, int sside);
 
 /* ---- io.c ---- */
 uint64_t zr__rad_fingerprint(const zr_scene *scene);

@@ -81,13 +81,40 @@ static void node_samples(const zr_radiosity *rad, const zr__rad_node *node,
     }
 }
 
-/* Counts of sample pairs per side combination, index 2 * rside + sside. */
+/* The side of the closed surface of node n (zr__surface_encloses) that
+   the points pts[0..8] see: 1 inside, 0 outside, -1 each when it is not
+   closed or a CSG trims it (a hole shows its inside from outside). */
+static void enclosed_sides(const zr_radiosity *rad, const zr__rad_node *n,
+                           const zr_vec3 pts[9], int out[9]) {
+  const zr__rad_surface *s = &rad->surfs[n->surf];
+  for (int i = 0; i < 9; i++)
+    out[i] = s->trim == NULL ? zr__surface_encloses(&s->geom, pts[i]) : -1;
+}
+
+/*
+ * Counts of sample pairs per side combination, index 2 * rside + sside,
+ * and in counts[4] the pairs whose source point the source's own
+ * surface hides (its rim runs through the source cell as seen).
+ * On a closed surface (a sphere, a torus) the side a pair would join
+ * is checked against the other point's place: a point outside the
+ * solid sees only the outward side, and a pair of points of the same
+ * closed surface is joined inside or outside at both ends.  A pair that
+ * fails is hidden by the surface itself and counts for no side: a wall
+ * sees the far half of a ball through the ball, behind those points'
+ * tangent planes, and counting it made the wall's cells straddle the
+ * ball's "back" side, so they split down to A_eps (a torus or sphere in
+ * a room took minutes to link).
+ */
 static void classify(const zr_radiosity *rad, const zr__rad_node *p,
-                     const zr__rad_node *q, int counts[4]) {
+                     const zr__rad_node *q, int counts[5]) {
   cell_samples a, b;
   node_samples(rad, p, &a);
   node_samples(rad, q, &b);
-  memset(counts, 0, 4 * sizeof *counts);
+  bool same = p->surf == q->surf;
+  int in_p[9], in_q[9]; /* b's points against p's solid, a's against q's */
+  enclosed_sides(rad, p, b.p, in_p);
+  enclosed_sides(rad, q, a.p, in_q);
+  memset(counts, 0, 5 * sizeof *counts);
   for (int i = 0; i < 9; i++)
     for (int j = 0; j < 9; j++) {
       zr_vec3 d = zr_v3_sub(b.p[j], a.p[i]);
@@ -99,7 +126,18 @@ static void classify(const zr_radiosity *rad, const zr__rad_node *p,
       /* Coplanar up to rounding: no light passes edge-on. */
       if (fabs(ca) < 1e-7 || fabs(cb) < 1e-7)
         continue;
-      counts[2 * (ca < 0.0) + (cb < 0.0)]++;
+      int rs = ca < 0.0, ss = cb < 0.0;
+      /* Hidden at the source end: the receiver's side of the pair is
+         right but the source point turns its other side to it. */
+      bool hidden_q = same ? in_p[j] >= 0 && rs != ss
+                           : in_q[i] >= 0 && ss != in_q[i];
+      if (hidden_q) {
+        counts[4] += same || in_p[j] < 0 || rs == in_p[j];
+        continue;
+      }
+      if (!same && in_p[j] >= 0 && rs != in_p[j])
+        continue; /* the receiver's surface clips it (formfactor.c) */
+      counts[2 * rs + ss]++;
     }
 }
 
@@ -168,6 +206,9 @@ static double factor_spread(const zr_radiosity *rad, const link_view *l) {
   double rc[4], sc[4];
   zr__rad_node_cell(p, rc);
   zr__rad_node_cell(q, sc);
+  if (zr__rad_cluster(rad, p, NULL, NULL))
+    return 1.0; /* a cluster's factor varies as its faces: split it */
+  bool to_cluster = zr__rad_cluster(rad, q, NULL, NULL);
   zr_vec3 poly[4 * ZR__FF_MAX_SEGS];
   size_t nv = zr__surface_patch_polygon(&rad->surfs[q->surf].geom, sc[0],
                                         sc[1], sc[2], sc[3], 16, poly,
@@ -187,7 +228,9 @@ static double factor_spread(const zr_radiosity *rad, const link_view *l) {
                        rc[0] + f[i] * (rc[1] - rc[0]),
                        rc[2] + f[j] * (rc[3] - rc[2]), &pt);
       zr_vec3 n = l->rside ? zr_v3_neg(pt.n) : pt.n;
-      double f = zr__ff_point_polygon(pt.p, n, poly, nv);
+      double f = to_cluster ? zr__rad_cluster_point_factor(rad, q, l->sside,
+                                                           pt.p, n)
+                            : zr__ff_point_polygon(pt.p, n, poly, nv);
       lo = fmin(lo, f);
       hi = fmax(hi, f);
     }
@@ -261,8 +304,8 @@ static int self_choice(const zr_radiosity *rad, const zr__rad_node *p,
                        int sside) {
   if (!can_split(rad, p))
     return 0;
-  if (rad->params.uniform > 0)
-    return 3;
+  if (rad->params.uniform > 0 || zr__rad_cluster(rad, p, NULL, NULL))
+    return 3; /* a cluster receives as its faces (refine_choice) */
   double f_self = 0.5 * (1.0 - cos(fmin(p->spread, M_PI)));
   double e = zr__rad_max3(p->b[sside]) * p->area * f_self;
   return e > rad->params.bf_eps * rad->power_ref ? 3 : 0;
@@ -274,6 +317,11 @@ static int refine_choice(const zr_radiosity *rad, const link_view *l) {
   /* A cell that a CSG trim crosses holds removed area that would send
      and receive as if it were there: links go below it, to the cells
      zr__rad_trim_split made down to A_eps (trim.c). */
+  /* A cluster of a mesh's faces receives as its faces: a cluster
+     handing its mean factor to every face would light faces that turn
+     away as much as those that face the source (cluster.c). */
+  if (zr__rad_cluster(rad, l->p, NULL, NULL) && can_split(rad, l->p))
+    return l->self ? 3 : 1;
   bool tp = l->p->kept < 1.0 && can_split(rad, l->p);
   bool tq = l->q->kept < 1.0 && can_split(rad, l->q);
   if (l->self)
@@ -409,24 +457,25 @@ static size_t plan_push(plan *pl, int kind, const vnode *a, int rside,
 }
 
 static void plan_links(const zr_radiosity *rad, plan *pl, const vnode *p,
-                       const vnode *q, int rs_only);
+                       const vnode *q, int rs_only, int ss_only);
 static void plan_add_link(const zr_radiosity *rad, plan *pl, const vnode *p,
                           int rs, const vnode *q, int ss);
 
 /* Links every child of p to q (or p to every child of q); rs_only
    (0, 1, or -1 for both) keeps the receiver side of the link split, so
    a receiver linked on both sides does not get its children linked
-   twice. */
+   twice; ss_only likewise keeps the source side of a cluster link
+   (cluster.c), which may join one receiver side to both. */
 static void plan_split_and_link(const zr_radiosity *rad, plan *pl,
                                 const vnode *p, const vnode *q, bool split_p,
-                                int rs_only) {
+                                int rs_only, int ss_only) {
   const vnode *n = split_p ? p : q;
   vnode ch[4];
   plan_push(pl, OP_SPLIT, n, 0, NULL, 0);
   vnode_children(rad, n, ch);
   for (int k = 0; k < 4 && !pl->nomem; k++)
     plan_links(rad, pl, split_p ? &ch[k] : p, split_p ? q : &ch[k],
-               rs_only);
+               rs_only, ss_only);
 }
 
 /* Links all pairs of the children of p (after a self link is split). */
@@ -437,7 +486,7 @@ static void plan_link_children(const zr_radiosity *rad, plan *pl,
   vnode_children(rad, p, ch);
   for (int i = 0; i < 4; i++)
     for (int j = 0; j < 4 && !pl->nomem; j++)
-      plan_links(rad, pl, &ch[i], &ch[j], -1);
+      plan_links(rad, pl, &ch[i], &ch[j], -1, -1);
 }
 
 /* A curved cell that sees itself gets a link to itself on each pair of
@@ -462,12 +511,19 @@ static void plan_self_links(const zr_radiosity *rad, plan *pl,
 /* Links receiver p to source q on the sides that face each other (only
    receiver side rs_only unless it is -1). */
 static void plan_links(const zr_radiosity *rad, plan *pl, const vnode *p,
-                       const vnode *q, int rs_only) {
+                       const vnode *q, int rs_only, int ss_only) {
   /* A cell that CSG removes whole takes no part (trim.c). */
   if (!(p->n.kept > 0.0) || !(q->n.kept > 0.0))
     return;
-  int counts[4];
+  int counts[5];
   classify(rad, &p->n, &q->n, counts);
+  /* A cluster of a mesh's faces facing many ways may show any side to
+     any side (its factor picks the faces per side, cluster.c); the nine
+     samples of classify could miss some. */
+  bool mixed = zr__rad_mixed_cluster(rad, &p->n) ||
+               zr__rad_mixed_cluster(rad, &q->n);
+  if (mixed)
+    counts[0] = counts[1] = counts[2] = counts[3] = 1;
   if (same_cell(p, q)) {
     if (counts[0] + counts[1] + counts[2] + counts[3] > 0)
       plan_self_links(rad, pl, p, counts, rs_only);
@@ -476,21 +532,40 @@ static void plan_links(const zr_radiosity *rad, plan *pl, const vnode *p,
   int front = counts[0] + counts[2], back = counts[1] + counts[3];
   if (front == 0 && back == 0)
     return;
-  if (front > 0 && back > 0) {
+  /* The source's own rim (the silhouette of a ball) crosses it as the
+     receiver sees it: the contour formula needs a source cell seen
+     one-to-one, so the source is split, not the receiver. */
+  if (counts[4] > 0 && !rad->surfs[q->n.surf].geom.planar &&
+      can_split(rad, &q->n)) {
+    plan_split_and_link(rad, pl, p, q, false, rs_only, ss_only);
+    return;
+  }
+  /* A source cluster or a planar source is sided per receiver point in
+     a cluster link (cluster.c): no split is needed. */
+  bool sided = zr__rad_cluster(rad, &q->n, NULL, NULL) ||
+               (zr__rad_cluster(rad, &p->n, NULL, NULL) &&
+                (rad->surfs[q->n.surf].geom.planar ||
+                 rad->surfs[q->n.surf].geom.kind == ZR__SURFACE_MESH));
+  if (front > 0 && back > 0 && !sided) {
     /* The receiver straddles the source's plane: split it if it can. */
     if (can_split(rad, &p->n)) {
-      plan_split_and_link(rad, pl, p, q, true, rs_only);
+      plan_split_and_link(rad, pl, p, q, true, rs_only, ss_only);
       return;
     }
-    if (!rad->surfs[q->n.surf].geom.planar && can_split(rad, &q->n)) {
-      plan_split_and_link(rad, pl, p, q, false, rs_only);
+    if (!rad->surfs[q->n.surf].geom.planar &&
+        rad->surfs[q->n.surf].geom.kind != ZR__SURFACE_MESH &&
+        can_split(rad, &q->n)) {
+      plan_split_and_link(rad, pl, p, q, false, rs_only, ss_only);
       return;
     }
   }
   int ss = back > front;
+  bool both = sided && front > 0 && back > 0;
   for (int rs = 0; rs < 2 && !pl->nomem; rs++)
-    if (counts[2 * rs + ss] > 0 && (rs_only < 0 || rs == rs_only))
-      plan_add_link(rad, pl, p, rs, q, ss);
+    for (int s2 = 0; s2 < 2 && !pl->nomem; s2++)
+      if ((s2 == ss || both) && (ss_only < 0 || s2 == ss_only) &&
+          counts[2 * rs + s2] > 0 && (rs_only < 0 || rs == rs_only))
+        plan_add_link(rad, pl, p, rs, q, s2);
 }
 
 /* Refines the link p <- q at once (depth first) if it asks to be;
@@ -511,7 +586,11 @@ static int plan_refine(const zr_radiosity *rad, plan *pl, size_t li,
     plan_push(pl, OP_KILL_SELF, p, 0, NULL, 0);
     plan_link_children(rad, pl, p);
   } else {
-    plan_split_and_link(rad, pl, p, q, choice == 1, rs);
+    /* A link with a cluster end may have a twin on the source's other
+       side (plan_links): the children keep this one's. */
+    bool clustered = zr__rad_cluster(rad, &p->n, NULL, NULL) ||
+                     zr__rad_cluster(rad, &q->n, NULL, NULL);
+    plan_split_and_link(rad, pl, p, q, choice == 1, rs, clustered ? ss : -1);
   }
   return choice;
 }
@@ -608,7 +687,7 @@ static void plan_pairs(void *user, size_t begin, size_t end, int worker) {
     vnode p, q;
     vnode_of(rad, rad->surfs[i].root, &p);
     vnode_of(rad, rad->surfs[j].root, &q);
-    plan_links(rad, pl, &p, &q, -1);
+    plan_links(rad, pl, &p, &q, -1, -1);
   }
 }
 
@@ -697,10 +776,15 @@ void zr__rad_compact_links(zr_radiosity *rad) {
 }
 
 zr_status zr__rad_uniform(zr_radiosity *rad, int n_levels) {
-  for (size_t n = 0; n < rad->n_nodes; n++)
-    if (rad->nodes[n].depth < n_levels && rad->nodes[n].child < 0 &&
+  for (size_t n = 0; n < rad->n_nodes; n++) {
+    /* On a mesh the levels count from its faces' (surface.c). */
+    const zr__surface *g = &rad->surfs[rad->nodes[n].surf].geom;
+    int levels = n_levels + (g->kind == ZR__SURFACE_MESH ? g->slot_depth : 0);
+    if (rad->nodes[n].depth < levels && rad->nodes[n].child < 0 &&
+        (g->kind != ZR__SURFACE_MESH || rad->nodes[n].kept > 0.0) &&
         !zr__rad_subdivide(rad, (int32_t)n))
       return ZR_ENOMEM;
+  }
   return ZR_OK;
 }
 
@@ -709,18 +793,43 @@ zr_status zr__rad_uniform(zr_radiosity *rad, int n_levels) {
 typedef struct self_sum {
   const zr__surface *src;
   double cell[4];
-  double side;
+  double side, sside; /* the receiver's side and the source's, +-1 */
   const zr__gauss_rule *rule;
   double flux, area;
 } self_sum;
 
+/* The kernel cos_p cos_q / (pi r^2) from a point p (normal n, turned
+   to the link's side) over the source points that turn that same side
+   to p.  Inside a sphere that is every point; on a torus, which sees
+   itself round its bend, a point showing p its other side is hidden by
+   the surface, and counting it (as a two-sided source would) gave a
+   self factor too large: a cell handed back more light than it had. */
+typedef struct sided_kernel {
+  zr_vec3 p, n;
+  double side;
+  double sum;
+} sided_kernel;
+
+static void add_sided_kernel(const zr__surface_point *q, double weight,
+                             void *user) {
+  sided_kernel *k = user;
+  zr_vec3 d = zr_v3_sub(q->p, k->p);
+  double r2 = zr_v3_dot(d, d);
+  double cos_p = zr_v3_dot(k->n, d);
+  double cos_q = -k->side * zr_v3_dot(q->n, d);
+  /* A Gauss point on p itself is the kernel's pole; behind, nothing. */
+  if (!(r2 > 0.0) || cos_p <= 0.0 || cos_q <= 0.0)
+    return;
+  k->sum += weight * cos_p * cos_q / (M_PI * r2 * r2);
+}
+
 static void add_self(const zr__surface_point *pt, double weight,
                      void *user) {
   self_sum *s = user;
-  zr_vec3 n = zr_v3_scale(pt->n, s->side);
-  s->flux += weight * zr__ff_point_patch_quadrature(
-                          pt->p, n, s->src, s->cell[0], s->cell[1],
-                          s->cell[2], s->cell[3], s->rule);
+  sided_kernel k = {pt->p, zr_v3_scale(pt->n, s->side), s->sside, 0.0};
+  zr__surface_quadrature(s->src, s->cell[0], s->cell[1], s->cell[2],
+                         s->cell[3], 1, s->rule, add_sided_kernel, &k);
+  s->flux += weight * k.sum;
   s->area += weight;
 }
 
@@ -765,9 +874,12 @@ static double link_factor(const zr_radiosity *rad, const zr__rad_link *l) {
   double rc[4], sc[4], side = l->rside ? -1.0 : 1.0;
   zr__rad_node_cell(p, rc);
   zr__rad_node_cell(q, sc);
+  if (zr__rad_cluster(rad, p, NULL, NULL) ||
+      zr__rad_cluster(rad, q, NULL, NULL))
+    return zr__rad_cluster_link_factor(rad, p, l->rside, q, l->sside);
   if (l->recv == l->src) {
-    self_sum s = {gq, {sc[0], sc[1], sc[2], sc[3]}, side, &rad->rule_src,
-                  0.0, 0.0};
+    self_sum s = {gq,  {sc[0], sc[1], sc[2], sc[3]}, side,
+                  l->sside ? -1.0 : 1.0, &rad->rule_src, 0.0, 0.0};
     zr__surface_quadrature(gp, rc[0], rc[1], rc[2], rc[3], 2,
                            &rad->rule_recv, add_self, &s);
     return s.area > 0.0 ? q->kept * fmin(1.0, s.flux / s.area) : 0.0;
@@ -779,7 +891,14 @@ static double link_factor(const zr_radiosity *rad, const zr__rad_link *l) {
     if (f >= 0.0)
       return q->kept * f;
   }
-  /* Only the source's part that CSG keeps sends light (trim.c). */
+  /* Only the source's part that CSG keeps sends light (trim.c).  A
+     curved source sends from the link's side only: where a receiver
+     point sees its other side (through a ball, or round a torus's
+     bend) that side's own link, if any, carries the light. */
+  if (!gq->planar && gq->kind != ZR__SURFACE_MESH)
+    return q->kept * zr__ff_patch_patch_sided(
+                         gp, rc, side, gq, sc, l->sside ? -1.0 : 1.0, 16,
+                         near ? 3 : 1, &rad->rule_recv);
   return q->kept * zr__ff_patch_patch(gp, rc, side, gq, sc, 16,
                                       near ? 3 : 1, &rad->rule_recv);
 }
@@ -866,6 +985,13 @@ static double link_visibility(const zr_radiosity *rad,
   return cast > 0 ? (double)open / cast : 1.0;
 }
 
+/* Whether node n's surface can stand between two of its own points: a
+   torus can (its tube hides the far side of the hole); the inside of a
+   sphere, cylinder or cone cannot. */
+static bool self_hiding(const zr_radiosity *rad, int32_t n) {
+  return rad->surfs[rad->nodes[n].surf].geom.kind == ZR__SURFACE_TORUS;
+}
+
 /* The links of [begin, end) not yet final get their transfer factors;
    each link's own slot is all a worker writes, so the factors are the
    same whichever thread computes them. */
@@ -885,7 +1011,10 @@ static void finish_range(void *user, size_t begin, size_t end, int worker) {
       continue;
     double f = link_factor(rad, l);
     double vis = 1.0;
-    if (f > 0.0 && l->recv != l->src)
+    /* A cell sees all of itself unless its surface can hide part of
+       itself from itself, as a torus's tube does across the hole. */
+    bool self = l->recv == l->src;
+    if (f > 0.0 && (!self || self_hiding(rad, l->recv)))
       vis = link_visibility(rad, l, &rays);
     f *= vis;
     l->vis = vis;

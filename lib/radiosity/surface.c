@@ -39,6 +39,8 @@
 #include <math.h>
 #include <string.h>
 
+#include "trace/obj_mesh.h"
+
 /* ---- checks and small helpers ---- */
 
 static bool vec_finite(zr_vec3 a) {
@@ -313,6 +315,75 @@ zr_status zr__surface_plane_in_box(zr__surface *s, zr_vec3 normal,
                                    where);
 }
 
+/*
+ * A tilted plane's section of the box is a convex polygon of three to
+ * six corners: the points where the plane cuts the box's edges, without
+ * the repeats at corners, in order round their centroid (anticlockwise
+ * seen from the normal's side, so a x b = n makes every fan triangle
+ * face along the plane's normal).  It is a fan of triangles from the
+ * first corner, which covers the section exactly.
+ */
+int zr__surface_plane_section(zr__surface out[4], zr_vec3 normal,
+                              double distance, zr_vec3 lo, zr_vec3 hi,
+                              const zr_transform *xf, zr_context *ctx,
+                              const zr_diag_place *where) {
+  zr__surface probe;
+  zr_status st = zr__surface_plane_in_box(&probe, normal, distance, lo, hi,
+                                          xf, NULL, ctx, where);
+  if (st != ZR_OK)
+    return -1;
+  double nl = zr_v3_len(normal);
+  zr_vec3 p0 = map_point(xf, zr_v3_scale(normal, distance / (nl * nl)));
+  zr_vec3 n = zr_v3_norm(xf ? zr__xform_normal(xf->inv, normal) : normal);
+  zr_vec3 a, b, pts[12], keep[12];
+  bool aligned;
+  plane_axes(&n, &a, &b, &aligned);
+  if (aligned) {
+    out[0] = probe;
+    return 1;
+  }
+  zr_vec3 blo = zr_v3_min(lo, hi), bhi = zr_v3_max(lo, hi);
+  lo = blo;
+  hi = bhi;
+  int count = box_section(n, p0, lo, hi, pts), m = 0;
+  double tol = 1e-9 * zr_v3_len(zr_v3_sub(hi, lo));
+  for (int k = 0; k < count; k++) {
+    bool seen = false;
+    for (int j = 0; j < m && !seen; j++)
+      seen = zr_v3_len(zr_v3_sub(pts[k], keep[j])) <= tol;
+    if (!seen)
+      keep[m++] = pts[k];
+  }
+  if (m < 3)
+    return out[0] = probe, 1;
+  zr_vec3 c = zr_v3(0, 0, 0);
+  for (int k = 0; k < m; k++)
+    c = zr_v3_add(c, keep[k]);
+  c = zr_v3_scale(c, 1.0 / m);
+  double ang[12];
+  for (int k = 0; k < m; k++) {
+    zr_vec3 d = zr_v3_sub(keep[k], c);
+    ang[k] = atan2(zr_v3_dot(d, b), zr_v3_dot(d, a));
+  }
+  for (int i = 1; i < m; i++) /* insertion sort by angle */
+    for (int j = i; j > 0 && ang[j] < ang[j - 1]; j--) {
+      double t = ang[j];
+      ang[j] = ang[j - 1];
+      ang[j - 1] = t;
+      zr_vec3 q = keep[j];
+      keep[j] = keep[j - 1];
+      keep[j - 1] = q;
+    }
+  int nt = 0;
+  for (int k = 1; k + 1 < m; k++)
+    if (zr__surface_triangle(&out[nt], keep[0], keep[k], keep[k + 1], NULL,
+                             NULL, NULL) == ZR_OK)
+      nt++;
+  if (nt == 0)
+    return out[0] = probe, 1;
+  return nt;
+}
+
 zr_status zr__surface_disc(zr__surface *s, zr_vec3 centre, zr_vec3 normal,
                            double radius, double hole_radius,
                            const zr_transform *xf, zr_context *ctx,
@@ -488,9 +559,282 @@ static zr_vec3 nurbs_normal(const zr__nurbs_derivs *d, double u, double v,
   return zr_v3_norm(limit);
 }
 
+
+/* ---- meshes ----
+ *
+ * A mesh of a million triangles must not become a million input
+ * surfaces linked in pairs (Hanrahan's initial linking is quadratic in
+ * them), so a mesh is one surface whose quadtree groups its faces: level
+ * slot_depth of the quadtree has one cell ("slot") per face, and the
+ * cells above are clusters of faces, which links may join as a whole
+ * when refinement finds them small or faint enough (cluster.c).  The
+ * faces come in the order of the mesh's BVH leaves (obj_mesh.c), so
+ * consecutive faces lie close together; a slot's index is read from
+ * the quadtree's child numbers (0 at low u and v, 1 high u, 2 both
+ * high, 3 high v), so every cell holds a contiguous run of faces. */
+
+/* The face index of slot (su, sv) at level k. */
+static size_t slot_index(uint32_t su, uint32_t sv, int k) {
+  size_t idx = 0;
+  for (int l = k - 1; l >= 0; l--) {
+    unsigned hu = (su >> l) & 1u, hv = (sv >> l) & 1u;
+    idx = 4 * idx + (hv ? (hu ? 2 : 3) : (hu ? 1 : 0));
+  }
+  return idx;
+}
+
+static void slot_coords(size_t idx, int k, uint32_t *su, uint32_t *sv) {
+  static const unsigned du[4] = {0, 1, 1, 0}, dv[4] = {0, 0, 1, 1};
+  *su = *sv = 0;
+  for (int l = k - 1; l >= 0; l--) {
+    unsigned digit = (unsigned)(idx >> (2 * l)) & 3u;
+    *su = 2 * *su + du[digit];
+    *sv = 2 * *sv + dv[digit];
+  }
+}
+
+zr_status zr__surface_mesh(zr__surface *s, const struct zr_mesh *mesh,
+                           const zr_transform *xf, zr_context *ctx,
+                           const zr_diag_place *where) {
+  memset(s, 0, sizeof *s);
+  if (mesh == NULL || mesh->n_faces == 0)
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, where,
+                    "mesh has no triangles");
+  int k = 0;
+  while (k < 12 && ((size_t)1 << (2 * k)) < mesh->n_faces)
+    k++;
+  if (((size_t)1 << (2 * k)) < mesh->n_faces)
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, where,
+                    "mesh has %zu triangles, more than radiosity takes "
+                    "(16777216)",
+                    mesh->n_faces);
+  zr_status st = set_orientation(s, xf, ctx, where);
+  if (st != ZR_OK)
+    return st;
+  s->kind = ZR__SURFACE_MESH;
+  s->planar = false;
+  s->mesh = mesh;
+  s->mesh_xf = xf;
+  s->n_faces = mesh->n_faces;
+  s->slot_depth = k;
+  return ZR_OK;
+}
+
+bool zr__surface_mesh_tri(const zr__surface *s, size_t f, zr__mesh_face *out) {
+  const uint32_t *idx = s->mesh->faces[f];
+  for (int i = 0; i < 3; i++)
+    out->p[i] = map_point(s->mesh_xf, s->mesh->vertices[idx[i]]);
+  zr_vec3 c = zr_v3_cross(zr_v3_sub(out->p[1], out->p[0]),
+                          zr_v3_sub(out->p[2], out->p[0]));
+  double len = zr_v3_len(c);
+  out->area = 0.5 * len;
+  if (!(len > 0.0) || !isfinite(len)) {
+    out->n = zr_v3(0, 0, 0);
+    out->area = 0.0;
+    return false;
+  }
+  out->n = zr_v3_scale(c, s->orient / len);
+  return true;
+}
+
+bool zr__surface_mesh_face(const zr__surface *s, size_t f, zr__surface *tri) {
+  /* A surface is 3 kB (its NURBS): only what a triangle reads is set,
+     as this runs for every point of a mesh. */
+  zr__mesh_face face;
+  bool ok = zr__surface_mesh_tri(s, f, &face);
+  tri->kind = ZR__SURFACE_TRIANGLE;
+  tri->planar = true;
+  tri->orient = s->orient;
+  for (int i = 0; i < 3; i++)
+    tri->p[i] = face.p[i];
+  tri->plane_normal = face.n;
+  return ok;
+}
+
+bool zr__surface_mesh_cluster(const zr__surface *s, const double cell[4],
+                              size_t *f0, size_t *f1) {
+  if (s->kind != ZR__SURFACE_MESH)
+    return false;
+  double grid = ldexp(1.0, s->slot_depth);
+  double width = (cell[1] - cell[0]) * grid;
+  size_t side = width > 1.5 ? (size_t)(width + 0.5) : 1;
+  /* Quadtree cells are dyadic: a cluster's corner is a whole slot. */
+  uint32_t su = (uint32_t)floor(cell[0] * grid + 0.5);
+  uint32_t sv = (uint32_t)floor(cell[2] * grid + 0.5);
+  if (side == 1) {
+    /* A cell inside one slot: its centre says which. */
+    su = (uint32_t)fmin(grid - 1, floor(0.5 * (cell[0] + cell[1]) * grid));
+    sv = (uint32_t)fmin(grid - 1, floor(0.5 * (cell[2] + cell[3]) * grid));
+  }
+  size_t a = slot_index(su, sv, s->slot_depth), b = a + side * side;
+  *f0 = a < s->n_faces ? a : s->n_faces;
+  *f1 = b < s->n_faces ? b : s->n_faces;
+  return side > 1;
+}
+
+void zr__surface_mesh_aggregate(const zr__surface *s, size_t f0, size_t f1,
+                                double *area, zr_vec3 *centre,
+                                zr_vec3 *normal, double *spread) {
+  double a = 0.0;
+  zr_vec3 c = zr_v3(0, 0, 0), n = zr_v3(0, 0, 0);
+  zr__mesh_face tri;
+  for (size_t f = f0; f < f1; f++) {
+    if (!zr__surface_mesh_tri(s, f, &tri))
+      continue;
+    zr_vec3 g = zr_v3_scale(zr_v3_add(zr_v3_add(tri.p[0], tri.p[1]),
+                                      tri.p[2]),
+                            1.0 / 3.0);
+    a += tri.area;
+    c = zr_v3_madd(c, g, tri.area);
+    n = zr_v3_madd(n, tri.n, tri.area);
+  }
+  *area = a;
+  *centre = a > 0.0 ? zr_v3_scale(c, 1.0 / a) : c;
+  double nl = zr_v3_len(n);
+  if (!(a > 0.0) || !(nl > 1e-9 * a)) {
+    *normal = zr_v3(0, 1, 0);
+    *spread = M_PI;
+    return;
+  }
+  *normal = zr_v3_scale(n, 1.0 / nl);
+  double worst = 1.0;
+  for (size_t f = f0; f < f1; f++)
+    if (zr__surface_mesh_tri(s, f, &tri))
+      worst = fmin(worst, zr_v3_dot(tri.n, *normal));
+  *spread = acos(fmax(-1.0, fmin(1.0, worst)));
+}
+
+/* The face holding (u,v) and the local (u,v) in its slot; a slot past
+   the last face gives the last face, and false. */
+static bool mesh_slot(const zr__surface *s, double u, double v, size_t *f,
+                      double *lu, double *lv) {
+  double grid = ldexp(1.0, s->slot_depth);
+  double gu = fmin(fmax(u * grid, 0.0), grid), gv = fmin(fmax(v * grid, 0.0),
+                                                          grid);
+  uint32_t su = (uint32_t)fmin(grid - 1, floor(gu));
+  uint32_t sv = (uint32_t)fmin(grid - 1, floor(gv));
+  *lu = gu - su;
+  *lv = gv - sv;
+  *f = slot_index(su, sv, s->slot_depth);
+  if (*f < s->n_faces)
+    return true;
+  *f = s->n_faces - 1;
+  return false;
+}
+
+/* The face of an in-slot cell as a triangle and the cell in its own
+   parameters. */
+static size_t mesh_local_cell(const zr__surface *s, double u0, double u1,
+                              double v0, double v1, double local[4]) {
+  double grid = ldexp(1.0, s->slot_depth);
+  uint32_t su = (uint32_t)fmin(grid - 1, floor(0.5 * (u0 + u1) * grid));
+  uint32_t sv = (uint32_t)fmin(grid - 1, floor(0.5 * (v0 + v1) * grid));
+  local[0] = u0 * grid - su;
+  local[1] = u1 * grid - su;
+  local[2] = v0 * grid - sv;
+  local[3] = v1 * grid - sv;
+  return slot_index(su, sv, s->slot_depth);
+}
+
+static void mesh_eval(const zr__surface *s, double u, double v,
+                      zr__surface_point *out) {
+  size_t f;
+  double lu, lv;
+  bool real = mesh_slot(s, u, v, &f, &lu, &lv);
+  zr__mesh_face tri;
+  if (!zr__surface_mesh_tri(s, f, &tri))
+    real = false;
+  /* The triangle's collapsed square, as zr__surface_eval has it. */
+  zr_vec3 edge = zr_v3_add(zr_v3_scale(tri.p[1], 1.0 - lv),
+                           zr_v3_scale(tri.p[2], lv));
+  out->p = zr_v3_add(zr_v3_scale(tri.p[0], 1.0 - lu), zr_v3_scale(edge, lu));
+  out->n = tri.n;
+  out->da = lu * 2.0 * tri.area;
+  if (!real) {
+    out->da = 0.0;
+    if (!(zr_v3_len(out->n) > 0.0))
+      out->n = zr_v3(0, 1, 0);
+    return;
+  }
+  out->da *= ldexp(1.0, 2 * s->slot_depth);
+}
+
+void zr__surface_mesh_locate_face(const zr__surface *s, size_t f, zr_vec3 p,
+                                  double *u, double *v) {
+  zr__surface tri;
+  double lu = 0.0, lv = 0.0;
+  if (f < s->n_faces && zr__surface_mesh_face(s, f, &tri))
+    zr__surface_locate(&tri, p, &lu, &lv);
+  uint32_t su, sv;
+  slot_coords(f < s->n_faces ? f : 0, s->slot_depth, &su, &sv);
+  double grid = ldexp(1.0, s->slot_depth);
+  /* Kept inside the slot, off its far edges, which are the next's. */
+  lu = fmin(lu, 1.0 - 1e-9);
+  lv = fmin(lv, 1.0 - 1e-9);
+  *u = (su + lu) / grid;
+  *v = (sv + lv) / grid;
+}
+
+/* The nearest face by a walk over all of them: for points that no ray
+   locates (radiosity.c finds a ray hit's face from the mesh's BVH). */
+static void mesh_locate(const zr__surface *s, zr_vec3 p, double *u,
+                        double *v) {
+  double best = INFINITY;
+  size_t found = 0;
+  zr__surface tri;
+  for (size_t f = 0; f < s->n_faces; f++) {
+    if (!zr__surface_mesh_face(s, f, &tri))
+      continue;
+    double a, b;
+    zr__surface_locate(&tri, p, &a, &b);
+    zr__surface_point pt;
+    zr__surface_eval(&tri, a, b, &pt);
+    zr_vec3 d = zr_v3_sub(pt.p, p);
+    if (zr_v3_dot(d, d) < best) {
+      best = zr_v3_dot(d, d);
+      found = f;
+    }
+  }
+  zr__surface_mesh_locate_face(s, found, p, u, v);
+}
+
+/* Quadrature over a mesh cell: a cluster gives each face's centroid
+   with the face's area, an in-slot cell its triangle's Gauss points. */
+static void mesh_quadrature(const zr__surface *s, double u0, double u1,
+                            double v0, double v1, int cells,
+                            const zr__gauss_rule *rule,
+                            zr__surface_visit_fn visit, void *user) {
+  double cell[4] = {u0, u1, v0, v1};
+  size_t f0, f1;
+  zr__surface tri;
+  if (zr__surface_mesh_cluster(s, cell, &f0, &f1)) {
+    zr__mesh_face face;
+    for (size_t f = f0; f < f1; f++) {
+      if (!zr__surface_mesh_tri(s, f, &face))
+        continue;
+      zr__surface_point pt;
+      pt.p = zr_v3_scale(
+          zr_v3_add(zr_v3_add(face.p[0], face.p[1]), face.p[2]), 1.0 / 3.0);
+      pt.n = face.n;
+      pt.da = 2.0 * face.area * ldexp(1.0, 2 * s->slot_depth);
+      visit(&pt, face.area, user);
+    }
+    return;
+  }
+  double local[4];
+  size_t f = mesh_local_cell(s, u0, u1, v0, v1, local);
+  if (f >= s->n_faces || !zr__surface_mesh_face(s, f, &tri))
+    return;
+  zr__surface_quadrature(&tri, local[0], local[1], local[2], local[3], cells,
+                         rule, visit, user);
+}
+
 void zr__surface_eval(const zr__surface *s, double u, double v,
                       zr__surface_point *out) {
   switch (s->kind) {
+  case ZR__SURFACE_MESH:
+    mesh_eval(s, u, v, out);
+    return;
   case ZR__SURFACE_PARALLELOGRAM:
     out->p = zr_v3_madd(zr_v3_madd(s->p[0], s->p[1], u), s->p[2], v);
     out->n = s->plane_normal;
@@ -541,6 +885,10 @@ void zr__surface_quadrature(const zr__surface *s, double u0, double u1,
                                                      {v0, v1};
   int nbu = 2, nbv = 2;
   cells = cells < 1 ? 1 : cells;
+  if (s->kind == ZR__SURFACE_MESH) {
+    mesh_quadrature(s, u0, u1, v0, v1, cells, rule, visit, user);
+    return;
+  }
   if (!s->planar || s->kind == ZR__SURFACE_DISC) {
     const zr__nurbs *nb = &s->nurbs;
     nbu = knot_breaks(nb->ku, nb->nu + nb->p + 1, u0, u1, bu);
@@ -658,12 +1006,27 @@ void zr__surface_locate(const zr__surface *s, zr_vec3 p, double *u,
     *u = a + b;
     *v = *u > 0.0 ? b / *u : 0.0;
     break;
+  case ZR__SURFACE_MESH:
+    mesh_locate(s, p, u, v);
+    return;
   default:
     locate_revolution(s, p, u, v);
     break;
   }
   *u = clamp01(*u);
   *v = clamp01(*v);
+}
+
+int zr__surface_encloses(const zr__surface *s, zr_vec3 p) {
+  if (s->kind != ZR__SURFACE_SPHERE && s->kind != ZR__SURFACE_TORUS)
+    return -1;
+  /* In the model frame the sphere is |q| = r0 and the torus
+     (rho - r0)^2 + y^2 = r1^2, whatever the transform. */
+  zr_vec3 q = zr__xform_point(s->to_model, p);
+  if (s->kind == ZR__SURFACE_SPHERE)
+    return zr_v3_dot(q, q) < s->r0 * s->r0;
+  double d = hypot(q.x, q.z) - s->r0;
+  return d * d + q.y * q.y < s->r1 * s->r1;
 }
 
 /* ---- patch boundaries ---- */
@@ -705,6 +1068,19 @@ static void emit_edge(polygon_out *o, const zr__surface *s, double ua,
 size_t zr__surface_patch_polygon(const zr__surface *s, double u0, double u1,
                                  double v0, double v1, int segs,
                                  zr_vec3 *out, size_t max) {
+  if (s->kind == ZR__SURFACE_MESH) {
+    /* A cluster is no polygon (cluster.c sums its faces). */
+    double cell[4] = {u0, u1, v0, v1}, local[4];
+    size_t f0, f1;
+    zr__surface tri;
+    if (zr__surface_mesh_cluster(s, cell, &f0, &f1))
+      return 0;
+    size_t f = mesh_local_cell(s, u0, u1, v0, v1, local);
+    if (f >= s->n_faces || !zr__surface_mesh_face(s, f, &tri))
+      return 0;
+    return zr__surface_patch_polygon(&tri, local[0], local[1], local[2],
+                                     local[3], segs, out, max);
+  }
   zr__surface_point a, b;
   zr__surface_eval(s, u0, v0, &a);
   zr__surface_eval(s, u1, v1, &b);

@@ -29,8 +29,11 @@ typedef enum zr__surface_kind {
   ZR__SURFACE_SPHERE,            /* NURBS; v = 0 at the -y pole */
   ZR__SURFACE_CYLINDER,          /* NURBS; v = 0 at the base */
   ZR__SURFACE_CONE,              /* NURBS; v = 0 at the base */
-  ZR__SURFACE_TORUS              /* NURBS; v = 0 under the tube */
+  ZR__SURFACE_TORUS,             /* NURBS; v = 0 under the tube */
+  ZR__SURFACE_MESH               /* triangles in quadtree slots, below */
 } zr__surface_kind;
+
+struct zr_mesh; /* lib/trace/obj_mesh.h */
 
 typedef struct zr__surface {
   zr__surface_kind kind;
@@ -48,6 +51,18 @@ typedef struct zr__surface {
      in r0 and r1). */
   double to_model[4][4];
   double r0, r1, height;
+  /* A mesh (mesh, mesh2, smooth_triangle, height_field): its faces, in
+     the order of the mesh's own BVH, fill the 4^slot_depth cells of
+     the quadtree's level slot_depth one each, in quadtree order (child
+     k of a cell holds the k-th quarter of its faces), so every cell
+     above that level is a cluster of faces that lie close together and
+     every cell at or below it is part of one triangle, parametrised as
+     a triangle surface in its slot.  Points and normals are the flat
+     triangles' (smooth normals are the tracer's), mapped by xf. */
+  const struct zr_mesh *mesh;
+  const zr_transform *mesh_xf;
+  size_t n_faces;
+  int slot_depth;
 } zr__surface;
 
 /* One evaluated point. */
@@ -88,6 +103,17 @@ zr_status zr__surface_plane_in_box(zr__surface *s, zr_vec3 normal,
                                    const zr_transform *xf, bool *covers_more,
                                    zr_context *ctx,
                                    const zr_diag_place *where);
+/*
+ * The same plane's exact section of [lo, hi]: the parallelogram above
+ * when the plane is perpendicular to an axis, else the convex polygon
+ * where it crosses the box as a fan of (at most four) triangles facing
+ * along the plane's normal.  Returns how many surfaces it wrote to out,
+ * -1 (with a message) when the plane misses the box.
+ */
+int zr__surface_plane_section(zr__surface out[4], zr_vec3 normal,
+                              double distance, zr_vec3 lo, zr_vec3 hi,
+                              const zr_transform *xf, zr_context *ctx,
+                              const zr_diag_place *where);
 /* A disc (hole_radius 0) or annulus facing along normal. */
 zr_status zr__surface_disc(zr__surface *s, zr_vec3 centre, zr_vec3 normal,
                            double radius, double hole_radius,
@@ -112,6 +138,38 @@ zr_status zr__surface_cone(zr__surface *s, zr_vec3 base, double base_radius,
                            zr_vec3 cap, double cap_radius,
                            const zr_transform *xf, zr_context *ctx,
                            const zr_diag_place *where);
+
+/* The faces of mesh (in its own coordinates, then xf) as one surface;
+   ZR_EINVAL for a mesh with no faces or more than 4^12. */
+zr_status zr__surface_mesh(zr__surface *s, const struct zr_mesh *mesh,
+                           const zr_transform *xf, zr_context *ctx,
+                           const zr_diag_place *where);
+/* Whether the parameter rectangle cell of a mesh surface is a cluster
+   (it spans more than one face's slot); [*f0, *f1) are the faces in
+   it either way.  False for every other kind. */
+bool zr__surface_mesh_cluster(const zr__surface *s, const double cell[4],
+                              size_t *f0, size_t *f1);
+/* Face f of a mesh surface as a triangle surface (its plane_normal is
+   0 when the face has no area); false for a face with no area.  Only
+   the fields a triangle uses are set. */
+bool zr__surface_mesh_face(const zr__surface *s, size_t f, zr__surface *tri);
+/* A face in world space, for loops over many faces. */
+typedef struct zr__mesh_face {
+  zr_vec3 p[3];
+  zr_vec3 n; /* unit outward normal */
+  double area;
+} zr__mesh_face;
+/* Face f of a mesh surface; false for a face with no area. */
+bool zr__surface_mesh_tri(const zr__surface *s, size_t f, zr__mesh_face *out);
+/* The (u,v) of point p on face f of a mesh surface. */
+void zr__surface_mesh_locate_face(const zr__surface *s, size_t f, zr_vec3 p,
+                                  double *u, double *v);
+/* A cluster's aggregate: area, area-weighted centroid and mean normal,
+   and the largest angle between that normal and its faces' (pi when
+   the normals cancel out). */
+void zr__surface_mesh_aggregate(const zr__surface *s, size_t f0, size_t f1,
+                                double *area, zr_vec3 *centre,
+                                zr_vec3 *normal, double *spread);
 
 /* S(u,v), the normal and the area element at (u,v) in [0,1]^2. */
 void zr__surface_eval(const zr__surface *s, double u, double v,
@@ -146,6 +204,15 @@ double zr__surface_area(const zr__surface *s, double u0, double u1,
  */
 void zr__surface_locate(const zr__surface *s, zr_vec3 p, double *u,
                         double *v);
+
+/*
+ * Whether p lies inside the solid that s bounds on its own: 1 inside,
+ * 0 outside, -1 when s is not a closed surface (only a sphere and a
+ * torus are).  A point outside a closed surface sees only its outward
+ * side, a point inside only its inward side: a segment from a point of
+ * s that leaves it on the other side crosses s again.
+ */
+int zr__surface_encloses(const zr__surface *s, zr_vec3 p);
 
 /*
  * The boundary of the parameter rectangle as a world-space polygon, in

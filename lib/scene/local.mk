@@ -4,8 +4,10 @@ lib_libzrcube_la_SOURCES += \
 # Patterns, noise, colour maps, image maps and normals.
 lib_libzrcube_la_SOURCES += \
 	lib/scene/pattern.c lib/scene/pattern.h lib/scene/pattern_more.c \
+	lib/scene/pattern_tiling.c \
 	lib/scene/warp.c lib/scene/warp.h \
-	lib/scene/texture.c lib/scene/texture.h
+	lib/scene/texture.c lib/scene/texture.h \
+	lib/scene/bitmap.c lib/scene/bitmap.h
 
 check_PROGRAMS += tests/test_pattern
 TESTS += tests/test_pattern
@@ -26,6 +28,16 @@ tests_test_texture_CPPFLAGS = $(TEST_CPPFLAGS)
 tests_test_texture_LDADD = $(TEST_LDADD)
 tests_test_texture_LDFLAGS = -static
 $(tests_test_texture_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
+
+# Bump maps, material maps and map types (lib/scene/bitmap.c).
+check_PROGRAMS += tests/test_bitmap
+TESTS += tests/test_bitmap
+tests_test_bitmap_SOURCES = tests/test_bitmap.c \
+	tests/parse_fixture.c tests/parse_fixture.h
+tests_test_bitmap_CPPFLAGS = $(TEST_CPPFLAGS)
+tests_test_bitmap_LDADD = $(TEST_LDADD)
+tests_test_bitmap_LDFLAGS = -static
+$(tests_test_bitmap_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
 
 # The density_file pattern's df3 voxel files (media densities).
 lib_libzrcube_la_SOURCES += lib/scene/df3.c lib/scene/df3.h

@@ -541,6 +541,8 @@ static double raw_value(const zr_pattern *pt, zr_vec3 p) {
     return zr__pattern_function(pt, p);
   case ZR_PAT_DENSITY_FILE:
     return zr__df3_value(pt->density_file, p); /* lib/scene/df3.c */
+  case ZR_PAT_TILING:
+    return zr__pattern_tiling(pt->tiling, p);
   default:
     return 0;
   }

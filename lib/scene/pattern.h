@@ -41,6 +41,11 @@ double zr__pattern_eval_n(const zr_pattern *pt, zr_vec3 p, zr_vec3 n);
    wave (lib/scene/pattern_more.c). */
 double zr__pattern_fractal(const zr_pattern *pt, zr_vec3 p);
 double zr__pattern_function(const zr_pattern *pt, zr_vec3 p);
+/* The tiling pattern number (lib/scene/pattern_tiling.c), before the
+   wave: (type + bevel) / types; 0 for a number it does not know. */
+double zr__pattern_tiling(int number, zr_vec3 p);
+/* Whether tiling number is one of those implemented. */
+bool zr__pattern_tiling_known(int number);
 /* The object pattern: 1 inside pt->object, else 0. */
 double zr__pattern_object(const zr_pattern *pt, zr_vec3 p);
 /* The value of pg's pattern at a world point, through pg's transform:

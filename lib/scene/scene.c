@@ -154,7 +154,7 @@ static zr_object *resolve_part(zr_scene *scene, const zr_object *object,
   return copy;
 }
 
-static zr_status flatten(zr_scene *scene, const zr_object *object,
+static zr_status flatten(zr_scene *scene, zr_object *object,
                          const zr_texture *inherited, flat_list *out) {
   const zr_texture *texture = object->texture ? object->texture : inherited;
   if (object->kind == ZR_OBJ_UNION) {
@@ -174,14 +174,13 @@ static zr_status flatten(zr_scene *scene, const zr_object *object,
     /* Intersections and merges stay whole: one primitive. */
     if (!(prim = resolve_part(scene, object, texture, NULL)))
       return ZR_ENOMEM;
-  } else if (object->texture != texture || !object->interior) {
-    zr_object *copy = zr__arena_memdup(&scene->arena, object, sizeof *copy);
-    if (!copy)
-      return ZR_ENOMEM;
-    copy->texture = texture;
-    if (!copy->interior)
-      copy->interior = scene->default_interior;
-    prim = copy;
+  } else {
+    /* Every object of the tree is its own (the parser copies a declared
+       object where it is used), so it takes what it inherits itself: a
+       copy of each would double the memory of a million spheres. */
+    object->texture = texture;
+    if (!object->interior)
+      object->interior = scene->default_interior;
   }
   /* A mesh with a texture list gets one copy per texture, each placed
      and textured like this one (lib/trace/obj_mesh.c). */

@@ -13,6 +13,7 @@
 
 #include <stdbool.h>
 #include <stddef.h>
+#include <stdint.h>
 
 #include "core/arena.h"
 #include "core/transform.h"
@@ -75,7 +76,9 @@ typedef enum zr_pattern_kind {
   ZR_PAT_DENSITY_FILE,
   /* slope { }: from the surface normal, so only where there is one
      (zr__pattern_eval_n; elsewhere the normal counts as zero). */
-  ZR_PAT_SLOPE
+  ZR_PAT_SLOPE,
+  /* tiling N (lib/scene/pattern_tiling.c), N in pattern.tiling. */
+  ZR_PAT_TILING
 } zr_pattern_kind;
 
 /* A df3 voxel grid ("Density File Pattern"), mapped onto the unit cube:
@@ -171,6 +174,7 @@ typedef struct zr_pattern {
   zr_wave_kind wave;
   double wave_exponent; /* poly_wave: default 1 */
   int arms;                 /* spiral1, spiral2: number of arms */
+  int tiling;               /* tiling: its number, 1 to 27 */
   int waves;                /* ripples, waves: number_of_waves, def. 10 */
   double control0, control1; /* quilted: defaults 1 and 1 */
   /* noise_generator 1, 2 or 3 (default: the global setting, 2).  Kept
@@ -226,6 +230,7 @@ typedef struct zr_map_entry {
 typedef struct zr_map {
   size_t n;
   const zr_map_entry *entries;
+  size_t n_unweighted; /* entries that left out their value (weight 1) */
 } zr_map;
 
 /* An image_map's picture, decoded once into the scene's arena. */
@@ -233,7 +238,7 @@ typedef struct zr_image_map {
   const char *path; /* as written, for messages */
   int width, height;
   const float *pixels; /* width * height * 3 linear floats, top row first */
-  int map_type;        /* 0 planar, 1 spherical, 2 cylindrical */
+  int map_type;        /* 0 planar, 1 spherical, 2 cylindrical, 5 torus */
   bool once;
   int interpolate;     /* 0 none, 2 bilinear (others act as 2) */
   double filter_all, transmit_all;
@@ -244,6 +249,11 @@ typedef struct zr_image_map {
   const unsigned char *indices;
   int palette_size;
   float *palette_ft;
+  /* bump_map and material_map only, else NULL: one number a pixel, the
+     bump map's height (lib/scene/bitmap.c) or the material map's
+     texture index. */
+  const float *values;
+  bool use_index; /* bump_map: the heights are the palette indices */
 } zr_image_map;
 
 typedef enum zr_pigment_kind {
@@ -291,6 +301,9 @@ typedef struct zr_normal {
      slope, in pattern units ("Accuracy"; default 0.02). */
   double accuracy;
   bool uv_mapping; /* as a pigment's */
+  /* bump_map { }: the normal tilts by the picture's height differences
+     (lib/scene/bitmap.c) instead of a pattern's. */
+  const zr_image_map *bump_map;
 } zr_normal;
 
 typedef struct zr_finish {
@@ -401,6 +414,9 @@ typedef struct zr_texture {
   /* texture { uv_mapping ... }: every pattern of this texture (pigment,
      normal, map and the map's textures) uses the surface's (u, v, 0). */
   bool uv_mapping;
+  /* material_map { }: the picture's index at the point picks the map's
+     entry (modulo their number) instead of the pattern. */
+  const zr_image_map *material;
 } zr_texture;
 
 /* ---- objects ---- */
@@ -455,6 +471,11 @@ typedef struct zr_blob_component {
   zr_vec3 a, b; /* a: the sphere's centre */
   double radius, strength;
   const zr_transform *transform; /* component to blob; NULL: identity */
+  /* The component's own texture (pigment, finish, normal or texture
+     given inside it), in blob space; NULL: the blob's.  Where fields
+     overlap, the lit colours of the textures blend by each component's
+     field at the point (measured on POV-Ray 3.7's renders). */
+  const struct zr_texture *texture;
 } zr_blob_component;
 struct zr_text; /* extruded glyph outlines, shared likewise */
 
@@ -583,6 +604,7 @@ struct zr_object {
       bool sturm;
       zr_blob_component *components;
       size_t n_components, cap_components;
+      bool textured; /* some component has a texture of its own */
     } blob;
     struct {
       /* A surface of revolution ("Surface of Revolution"): per segment
@@ -671,6 +693,9 @@ struct zr_object {
   /* double_illuminate: a light on either side of the surface lights it
      ("Double_Illuminate"), the back as if the normal were turned. */
   bool double_illuminate;
+  /* The innermost light_group the object is in (an index into the
+     scene's light_groups), 0 for none ("Light Group"). */
+  uint32_t light_group;
   bool inverse;
   bool hollow; /* stored for media; it changes nothing else */
   /* uv_mapping as an object modifier: the textures given after it use
@@ -729,6 +754,13 @@ typedef struct zr_light {
   /* looks_like { }: the object, moved to the light and given no_shadow,
      is also one of the scene's objects; NULL: none. */
   zr_object *looks_like;
+  /* projected_through { }: light reaches a point only along rays that
+     cross this object, which is not one of the scene's objects and
+     casts no shadow (lib/trace/lights.c); NULL: none. */
+  zr_object *projected_through;
+  /* The light_group the light is in, 0 for none: it then lights only
+     the objects of that group and of the groups inside it. */
+  uint32_t light_group;
   zr_source_loc where;
 } zr_light;
 
@@ -740,8 +772,36 @@ typedef enum zr_camera_kind {
   ZR_CAMERA_OMNIMAX,
   ZR_CAMERA_PANORAMIC,
   ZR_CAMERA_CYLINDER, /* cylinder_type 1-4 */
-  ZR_CAMERA_SPHERICAL
+  ZR_CAMERA_SPHERICAL,
+  ZR_CAMERA_MESH /* mesh_camera { }: rays from mesh faces */
 } zr_camera_kind;
+
+/* One mesh of a mesh_camera, as written in its block. */
+typedef struct zr_camera_mesh {
+  const struct zr_mesh *data;
+  const zr_transform *transform; /* mesh to world; NULL: identity */
+} zr_camera_mesh;
+
+/*
+ * mesh_camera { rays distribution [max_distance] mesh { } ... [smooth] }
+ * ("Mesh projection"; lib/trace/camera_mesh.c shoots its rays).  For
+ * distribution 3 the faces of the first mesh are also sorted into a
+ * grid x grid table over uv space, so a pixel's face is found fast:
+ * cell c holds faces cell_faces[cell_start[c] .. cell_start[c + 1]), in
+ * the order they were written.
+ */
+typedef struct zr_mesh_camera {
+  int rays_per_pixel;
+  int distribution; /* 0-3 */
+  double max_distance; /* 0: no limit */
+  bool smooth;
+  const zr_camera_mesh *meshes;
+  size_t n_meshes;
+  size_t n_faces; /* of all the meshes */
+  int grid;
+  double grid_lo[2], cell_size[2]; /* the uv of cell (0, 0), a cell's size */
+  const uint32_t *cell_start, *cell_faces;
+} zr_mesh_camera;
 
 /*
  * The camera after all its modifiers ran, in POV-Ray's terms: a ray
@@ -770,6 +830,7 @@ typedef struct zr_camera {
   double confidence; /* default 0.9 */
   double variance;   /* default 1/128 */
   const zr_normal *normal; /* perturbs every camera ray; NULL: none */
+  const zr_mesh_camera *mesh; /* ZR_CAMERA_MESH only */
   zr_source_loc where;
 } zr_camera;
 
@@ -866,6 +927,14 @@ struct zr_scene {
   zr_light *lights;
   size_t n_lights;
   size_t cap_lights;
+  /* light_group { }s, indexed from 1 (entry 0 is unused): the group each
+     is inside (0: none) and whether the scene's own lights light its
+     objects too (global_lights). */
+  struct zr_light_group {
+    uint32_t parent;
+    bool global_lights;
+  } *light_groups;
+  size_t n_light_groups; /* entries, 0 or 1 + the number of groups */
   zr_camera camera;
   zr_settings settings;
   const zr_texture *default_texture;

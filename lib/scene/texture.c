@@ -17,7 +17,8 @@
  *   - an image map projects its picture, which fills the unit square
  *     (0,0)-(1,1), onto the x-y plane (map_type 0), around the y axis
  *     onto a sphere (1: u the angle from +x, v the latitude from the
- *     south pole) or a cylinder (2: u as for the sphere, v = y).  The
+ *     south pole), a cylinder (2: u as for the sphere, v = y) or a
+ *     torus (5), as lib/scene/bitmap.c says.  The
  *     picture repeats unless "once", outside which it is clear
  *     (transmit 1).  interpolate 2 is bilinear between pixel centres;
  *     filter all / transmit all set those channels for every pixel.
@@ -46,6 +47,7 @@
 #include <math.h>
 #include <stddef.h>
 
+#include "scene/bitmap.h"
 #include "scene/pattern.h"
 #include "scene/warp.h"
 
@@ -145,33 +147,11 @@ static int index_of(double c, int n, bool repeat) {
 }
 
 zr_colour zr__image_map_eval(const zr_image_map *im, zr_vec3 p) {
-  double u, v;
-  bool once_u = false, once_v = false;
-  if (im->map_type == 1 || im->map_type == 2) {
-    double a = atan2(p.z, p.x) / (2 * PI);
-    u = a < 0 ? a + 1 : a;
-    if (im->map_type == 1) {
-      double r = zr_v3_len(p);
-      double s = r > 0 ? p.y / r : 0;
-      s = s < -1 ? -1 : s > 1 ? 1 : s;
-      v = 0.5 + asin(s) / PI;
-    } else {
-      v = p.y;
-      once_v = im->once;
-    }
-  } else {
-    u = p.x;
-    v = p.y;
-    once_u = once_v = im->once;
-  }
-  if ((once_u && (u < 0 || u >= 1)) || (once_v && (v < 0 || v >= 1)))
+  double px, py;
+  bool repeat_x, repeat_y;
+  if (!zr__bitmap_where(im, p, &px, &py, &repeat_x, &repeat_y))
     return zr_colour5(0, 0, 0, 0, 1);
-  if (!once_u)
-    u = frac(u);
-  if (!once_v)
-    v = frac(v);
-  /* Image rows run top to bottom, v bottom to top. */
-  double px = u * im->width, py = (1 - v) * im->height;
+  bool once_u = !repeat_x, once_v = !repeat_y;
   if (im->interpolate == 0)
     return pixel(im, index_of(px, im->width, !once_u),
                  index_of(py, im->height, !once_v));
@@ -335,6 +315,8 @@ static zr_vec3 normal_map_perturb(const zr_normal *nm, zr_vec3 p,
 }
 
 zr_vec3 zr__normal_perturb(const zr_normal *nm, zr_vec3 world, zr_vec3 n) {
+  if (nm->bump_map)
+    return zr__bump_map_perturb(nm, world, n);
   if (nm->normal_map && nm->normal_map->n > 0) {
     zr_vec3 p = to_pattern(nm->transform, world);
     zr_vec3 np = n;
@@ -393,6 +375,9 @@ const zr_texture *zr__texture_pick_n(const zr_texture *tx, zr_vec3 world,
     return tx;
   zr_vec3 p = to_pattern(tx->transform, world);
   size_t i;
+  if (tx->material)
+    return tx->map->entries[zr__material_map_entry(tx->material, p,
+                                                   tx->map->n)].u.texture;
   zr__map_find(tx->map, value_at(&tx->pattern, p, n),
                zr__pattern_is_block(tx->pattern.kind), &i, t);
   if (*t > 0)

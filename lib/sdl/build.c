@@ -240,7 +240,7 @@ zr_pigment *zr__sdl_pigment_new(zr_sdl_parser *p, const zr_pigment *from) {
   } else {
     zr__pigment_init(pg);
     /* Pattern defaults already, for a map entry whose function comes
-       first (build_pattern.c, zr__sdl_pigment_function_entry). */
+       first ("[function { ... } color_map { ... }]"). */
     zr__pattern_init(&pg->pattern, ZR_PAT_NONE);
   }
   return pg;
@@ -627,17 +627,17 @@ char *zr__sdl_find_image(zr_sdl_parser *p, const char *name) {
  * transfer the file asks for.  Only PNG files keep their codes.
  */
 static bool image_gamma(zr_sdl_parser *p, zr_image *image,
-                        const char *name, double g,
+                        const char *what, const char *name, double g,
                         const zr_sdl_loc *loc) {
   if (!(g > 0) || !isfinite(g)) {
-    zr__sdl_error(p, ZR_ESCENE, loc, "image_map gamma %g must be positive",
+    zr__sdl_error(p, ZR_ESCENE, loc, "%s gamma %g must be positive", what,
                   g);
     return false;
   }
   if (!image->codes) {
     zr__sdl_error(p, ZR_EUNSUPPORTED, loc,
-                  "image_map gamma is supported for PNG files only, not "
-                  "'%s'", name);
+                  "%s gamma is supported for PNG files only, not '%s'",
+                  what, name);
     return false;
   }
   float *table = zr__decode_table(image->maxval, ZR_TRANSFER_POWER, g);
@@ -670,16 +670,69 @@ static bool keep_palette(zr_sdl_parser *p, zr_image_map *im,
   return true;
 }
 
+/* A sample as stored, over its maximum: PNG files keep their codes; the
+   other codecs' sRGB decoding is undone. */
+static double stored(const zr_image *image, size_t k) {
+  if (image->codes)
+    return image->codes[k] / (double)image->maxval;
+  return zr__srgb_encode(image->pixels[k]);
+}
+
+/*
+ * The number of each pixel a bump_map or material_map reads
+ * (lib/scene/bitmap.c): a bump map's height is the grey of the stored
+ * samples, 0.297 red + 0.589 green + 0.114 blue (POV-Ray 3.7 renders
+ * of pure red, green and blue steps measure these weights), or of the
+ * decoded ones under a "gamma"; use_index replaces it later
+ * (zr__sdl_bump_map_end).  A material map's is the palette index, else
+ * the red sample on a 0 .. 255 scale ("Material Maps").
+ */
+static bool bitmap_values(zr_sdl_parser *p, zr_image_map *im,
+                          const zr_image *image, bool material,
+                          bool decoded) {
+  size_t n = (size_t)image->width * (size_t)image->height;
+  float *values = zr__sdl_alloc(p, n * sizeof *values);
+  if (!values)
+    return false;
+  for (size_t i = 0; i < n; i++) {
+    double r, g, b;
+    if (decoded) {
+      r = image->pixels[3 * i];
+      g = image->pixels[3 * i + 1];
+      b = image->pixels[3 * i + 2];
+    } else {
+      r = stored(image, 3 * i);
+      g = stored(image, 3 * i + 1);
+      b = stored(image, 3 * i + 2);
+    }
+    if (!material)
+      values[i] = (float)(0.297 * r + 0.589 * g + 0.114 * b);
+    else if (image->indices)
+      values[i] = image->indices[i];
+    else
+      values[i] = (float)floor(r * 255 + 0.5);
+  }
+  im->values = values;
+  return true;
+}
+
 zr_image_map *zr__sdl_image_map_new(zr_sdl_parser *p, const char *name,
                                     const zr_sdl_loc *loc,
                                     const zr_sdl_expr *gamma,
                                     const zr_sdl_loc *gamma_loc) {
+  return zr__sdl_bitmap_new(p, "image_map", name, loc, gamma, gamma_loc);
+}
+
+zr_image_map *zr__sdl_bitmap_new(zr_sdl_parser *p, const char *what,
+                                 const char *name, const zr_sdl_loc *loc,
+                                 const zr_sdl_expr *gamma,
+                                 const zr_sdl_loc *gamma_loc) {
   double g = 0;
   if (gamma && !zr__sdl_want_float(p, gamma, gamma_loc, &g))
     return NULL;
   char *path = find_image(p, name);
   if (!path) {
-    zr__sdl_error(p, ZR_ENOTFOUND, loc, "image_map file '%s' not found",
+    zr__sdl_error(p, ZR_ENOTFOUND, loc, "%s file '%s' not found", what,
                   name);
     return NULL;
   }
@@ -687,10 +740,11 @@ zr_image_map *zr__sdl_image_map_new(zr_sdl_parser *p, const char *name,
   zr_status s = zr_image_read(p->ctx, path, &image);
   free(path);
   if (s != ZR_OK) {
-    zr__sdl_error(p, s, loc, "cannot use '%s' as an image_map", name);
+    zr__sdl_error(p, s, loc, "cannot use '%s' as %s %s", name,
+                  what[0] == 'i' ? "an" : "a", what);
     return NULL;
   }
-  if (gamma && !image_gamma(p, image, name, g, gamma_loc)) {
+  if (gamma && !image_gamma(p, image, what, name, g, gamma_loc)) {
     zr_image_free(image);
     return NULL;
   }
@@ -698,6 +752,10 @@ zr_image_map *zr__sdl_image_map_new(zr_sdl_parser *p, const char *name,
   size_t n = (size_t)image->width * (size_t)image->height * 3;
   float *pixels = im ? zr__sdl_alloc(p, n * sizeof *pixels) : NULL;
   if (pixels && image->indices && !keep_palette(p, im, image))
+    pixels = NULL;
+  if (pixels && strcmp(what, "image_map") != 0 &&
+      !bitmap_values(p, im, image, strcmp(what, "material_map") == 0,
+                     gamma != NULL))
     pixels = NULL;
   if (pixels) {
     memcpy(pixels, image->pixels, n * sizeof *pixels);
@@ -717,9 +775,11 @@ bool zr__sdl_image_map_mod(zr_sdl_parser *p, zr_image_map *im, int token,
     return false;
   switch (token) {
   case T_MAP_TYPE:
-    if (v != 0 && v != 1 && v != 2) {
+    /* "Types 3 and 4 are still under development" ("The map_type
+       Option"). */
+    if (v != 0 && v != 1 && v != 2 && v != 5) {
       zr__sdl_error(p, ZR_ESCENE, loc,
-                    "map_type %g is not supported (0, 1 or 2)", v);
+                    "map_type %g is not supported (0, 1, 2 or 5)", v);
       return false;
     }
     im->map_type = (int)v;
@@ -756,16 +816,20 @@ bool zr__sdl_image_map_index(zr_sdl_parser *p, zr_image_map *im, int token,
   if (!zr__sdl_want_float(p, index, index_loc, &k) ||
       !zr__sdl_want_float(p, amount, amount_loc, &v))
     return false;
-  /* POV-Ray 3.7 refuses the index form on an image without a palette
-     ("cannot be used with non color-mapped image"), and so do we. */
+  /* The manual gives the index form for "the color palette/registers"
+     of palette images only ("The Filter and Transmit Bitmap
+     Modifiers"); POV-Ray 3.7 stops with a parse error when it is used
+     on an RGB PNG (measured), and so do we. */
   if (!im->indices) {
     zr__sdl_error(p, ZR_ESCENE, index_loc,
                   "'%s INDEX, AMOUNT' needs a palette image; '%s' has no "
                   "palette (use '%s all AMOUNT')", kw, im->path, kw);
     return false;
   }
-  /* POV-Ray rounds the index as (int)(k + 0.01). */
-  double r = floor(k + 0.01);
+  /* The entry is INDEX + 0.01 rounded towards zero, as measured with
+     POV-Ray 3.7 on a two-entry palette: 0.995 and 1.989 pick entry 1,
+     0.985 and -1.005 entry 0; -1.02 and 1.991 are out of range. */
+  double r = trunc(k + 0.01);
   if (!(r >= 0 && r < im->palette_size)) {
     zr__sdl_error(p, ZR_ESCENE, index_loc,
                   "%s palette index %g is out of range: '%s' has %d "
@@ -800,9 +864,34 @@ static bool transform_textures(zr_sdl_parser *p, zr_object *o,
   return true;
 }
 
+/* A blob's components' own textures move with the blob: into a new
+   array, as copies of the blob share the old one. */
+static bool transform_blob_textures(zr_sdl_parser *p, zr_object *o,
+                                    const zr_transform *t) {
+  size_t n = o->u.blob.n_components;
+  zr_blob_component *c = zr__sdl_alloc(p, (n ? n : 1) * sizeof *c);
+  if (!c)
+    return false;
+  for (size_t i = 0; i < n; i++) {
+    c[i] = o->u.blob.components[i];
+    if (!c[i].texture)
+      continue;
+    zr_texture *tx = zr__sdl_texture_new(p, c[i].texture);
+    if (!tx || !zr__sdl_texture_transform(p, tx, t))
+      return false;
+    c[i].texture = tx;
+  }
+  o->u.blob.components = c;
+  o->u.blob.cap_components = n;
+  return true;
+}
+
 static bool transform_object(zr_sdl_parser *p, zr_object *o,
                              const zr_transform *t) {
   if (!(o->transform = composed(p, o->transform, t)))
+    return false;
+  if (o->kind == ZR_OBJ_BLOB && o->u.blob.textured &&
+      !transform_blob_textures(p, o, t))
     return false;
   /* Patterns with uv_mapping stay put on the surface (zr_sdl_parser). */
   bool was_moving = p->moving_object;

@@ -74,6 +74,13 @@ void zr__sdl_light_transform(zr_sdl_parser *p, zr_light *l,
     zr_sdl_mod m = {ZR_SDL_MOD_TRANSFORM, t};
     zr__sdl_object_mod(p, l->looks_like, &m, NULL);
   }
+  /* The object moves with the light: POV-Ray 3.7 renders the spot of a
+     light projected through a sphere 1.5 units along x when the light
+     is translated 1.5 along x, not the other way. */
+  if (l->projected_through) {
+    zr_sdl_mod m = {ZR_SDL_MOD_TRANSFORM, t};
+    zr__sdl_object_mod(p, l->projected_through, &m, NULL);
+  }
 }
 
 bool zr__sdl_light_int(zr_sdl_parser *p, const zr_sdl_expr *e,
@@ -213,11 +220,6 @@ const zr_camera *zr__sdl_camera_value(zr_sdl_parser *p) {
 bool zr__sdl_camera_type(zr_sdl_parser *p, zr_camera_kind kind,
                          const zr_sdl_expr *e, const zr_sdl_loc *loc) {
   zr_camera *c = &p->scene->camera;
-  if (kind == ZR_CAMERA_OMNIMAX) {
-    zr__sdl_error(p, ZR_EUNSUPPORTED, loc,
-                  "'omnimax' is not supported yet");
-    return false;
-  }
   if (kind == ZR_CAMERA_CYLINDER) {
     double type;
     if (!zr__sdl_want_float(p, e, loc, &type))
@@ -292,9 +294,13 @@ static void look_at(zr_camera *c, zr_vec3 target) {
   double rl = zr_v3_len(c->right);
   double ul = zr_v3_len(c->up);
   /* POV-Ray's space is left-handed: right = up x direction normally; a
-     right vector pointing the other way mirrors the image and stays so. */
+     right vector pointing the other way mirrors the image and stays so.
+     So does a degenerate triple, up along direction or right in their
+     plane ("up z sky z" with the default direction z): POV-Ray 3.7
+     renders those mirrored too (measured with up z and direction z, x,
+     y and -y). */
   double handed =
-      zr_v3_dot(zr_v3_cross(c->up, c->direction), c->right) < 0 ? -1 : 1;
+      zr_v3_dot(zr_v3_cross(c->up, c->direction), c->right) > 0 ? 1 : -1;
   zr_vec3 dn = zr_v3_norm(d);
   zr_vec3 rn = zr_v3_norm(zr_v3_cross(c->sky, dn));
   if (zr_v3_len(rn) == 0) /* looking along the sky: keep the old right */

@@ -52,6 +52,20 @@ void zr__sdl_camera_transform(zr_sdl_parser *p, const zr_transform *t);
 /* Applies what the block deferred: angle, look_at, then transforms. */
 void zr__sdl_camera_end(zr_sdl_parser *p);
 
+/* mesh_camera { rays distribution [max_distance] ...: makes the camera
+   a mesh camera (lib/sdl/build_meshcam.c); max may be NULL. */
+bool zr__sdl_mesh_camera(zr_sdl_parser *p, const zr_sdl_loc *at,
+                         const zr_sdl_expr *rays, const zr_sdl_loc *rays_at,
+                         const zr_sdl_expr *dist, const zr_sdl_loc *dist_at,
+                         const zr_sdl_expr *max, const zr_sdl_loc *max_at);
+/* One mesh or mesh2 of the block. */
+bool zr__sdl_mesh_camera_add(zr_sdl_parser *p, const zr_object *mesh,
+                             const zr_sdl_loc *loc);
+bool zr__sdl_mesh_camera_smooth(zr_sdl_parser *p, const zr_sdl_loc *loc);
+/* The block's '}': checks it and, for distribution 3, sorts the first
+   mesh's faces into its uv grid. */
+bool zr__sdl_mesh_camera_end(zr_sdl_parser *p, const zr_sdl_loc *loc);
+
 /* Applies one colour item (rgb ..., filter ...) to *colour. */
 bool zr__sdl_colour_item_to(zr_sdl_parser *p, const zr_sdl_colour_mod *m,
                             zr_colour *colour);

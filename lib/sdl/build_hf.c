@@ -3,7 +3,8 @@
  * reference, "Height Field"); the tracer's side is
  * lib/trace/obj_height_field.c.
  *
- * The heights come from an image file, read as numbers rather than
+ * The heights come from an image file (PNG, GIF, POT, TGA, PGM, PPM
+ * or JPEG), read as numbers rather than
  * colours (lib/image/heights.c), or from a function sampled on a grid
  * of the resolution given.  The unscaled field spans 0 to 1 along x, y
  * and z.  Image column i lies at x = i / (W - 1) and image row j at
@@ -51,8 +52,8 @@ static zr_object *hf_new(zr_sdl_parser *p, const zr_sdl_loc *loc, int w,
 /* The file's type from its name's extension, for a height_field without
    a type keyword; NULL when it is one zRcube reads. */
 static const char *unreadable_type(const char *name) {
-  static const char *const others[] = {"tga", "gif", "iff", "tif", "tiff",
-                                       "pot", "sys", "exr", "hdr"};
+  static const char *const others[] = {"iff", "tif", "tiff", "sys",
+                                       "exr", "hdr"};
   const char *dot = strrchr(name, '.');
   if (!dot)
     return NULL;
@@ -65,12 +66,12 @@ static const char *unreadable_type(const char *name) {
 zr_object *zr__sdl_height_field_image(zr_sdl_parser *p,
                                       const zr_sdl_loc *loc,
                                       const char *name,
-                                      const zr_sdl_loc *name_loc) {
-  const char *type = unreadable_type(name);
+                                      const zr_sdl_loc *name_loc, bool pot) {
+  const char *type = pot ? NULL : unreadable_type(name);
   if (type) {
     zr__sdl_error(p, ZR_EUNSUPPORTED, name_loc,
                   "height_field: '%s' files are not supported yet (use "
-                  "png, pgm, ppm or jpeg)", type);
+                  "png, gif, pot, tga, pgm, ppm or jpeg)", type);
     return NULL;
   }
   char *path = zr__sdl_find_image(p, name);
@@ -81,7 +82,7 @@ zr_object *zr__sdl_height_field_image(zr_sdl_parser *p,
   }
   float *samples = NULL;
   int w = 0, h = 0;
-  zr_status s = zr__image_read_heights(p->ctx, path, &samples, &w, &h);
+  zr_status s = zr__image_read_heights(p->ctx, path, pot, &samples, &w, &h);
   free(path);
   if (s != ZR_OK) {
     zr__sdl_error(p, s, name_loc, "cannot use '%s' as a height_field",

@@ -47,12 +47,13 @@ zr_object *zr__sdl_ovus(zr_sdl_parser *p, const zr_sdl_loc *loc,
  * [water_level L] [hierarchy [B]] } (lib/sdl/build_hf.c): the object
  * from an image file (its type from the file itself), or from a
  * function sampled W x H times; then the items; then done after the
- * last one, which makes the triangles.
+ * last one, which makes the triangles.  pot: the file was named with
+ * the pot keyword (a Fractint POT file, 16-bit heights in a GIF).
  */
 zr_object *zr__sdl_height_field_image(zr_sdl_parser *p,
                                       const zr_sdl_loc *loc,
                                       const char *name,
-                                      const zr_sdl_loc *name_loc);
+                                      const zr_sdl_loc *name_loc, bool pot);
 /* The function body whose '{' (at brace) the grammar has just shifted,
    read from the token array. */
 const zr_fn *zr__sdl_height_field_fn_body(zr_sdl_parser *p,

@@ -154,19 +154,62 @@ static bool face_extra(zr_sdl_parser *p, uint32_t (**rows)[3], size_t old,
   return true;
 }
 
+static bool add_uv(zr_sdl_parser *p, struct zr_mesh *m, double u, double v,
+                   uint32_t *index) {
+  if (!grow(p, (void **)&m->uvs, &m->cap_uvs, m->n_uvs, sizeof *m->uvs))
+    return false;
+  *index = (uint32_t)m->n_uvs;
+  m->uvs[m->n_uvs][0] = u;
+  m->uvs[m->n_uvs++][1] = v;
+  return true;
+}
+
+/*
+ * A triangle's uv_vectors ("Mesh"), or for one written without them
+ * once another has them, the corners POV-Ray gives a triangle without
+ * uv_vectors: (0,0), (1,0) and (1,1), kept once as uvs 0 to 2.
+ */
+static bool face_uvs(zr_sdl_parser *p, struct zr_mesh *m, size_t f,
+                     size_t old_cap, const zr_vec3 *uv) {
+  if (!uv && !m->face_uvs)
+    return true;
+  bool first = !m->face_uvs;
+  if (!face_extra(p, &m->face_uvs, old_cap, m->cap_faces, f, 0))
+    return false;
+  if (first) {
+    static const double corner[3][2] = {{0, 0}, {1, 0}, {1, 1}};
+    uint32_t at;
+    for (int k = 0; k < 3; k++)
+      if (!add_uv(p, m, corner[k][0], corner[k][1], &at))
+        return false;
+    for (size_t g = 0; g < f; g++)
+      for (int k = 0; k < 3; k++)
+        m->face_uvs[g][k] = (uint32_t)k;
+  }
+  for (int k = 0; k < 3; k++) {
+    m->face_uvs[f][k] = (uint32_t)k;
+    if (uv && !add_uv(p, m, uv[k].x, uv[k].y, &m->face_uvs[f][k]))
+      return false;
+  }
+  return true;
+}
+
 bool zr__sdl_mesh_triangle(zr_sdl_parser *p, zr_object *o,
                            const zr_sdl_expr vertices[3],
                            const zr_sdl_loc vertex_locs[3],
                            const zr_sdl_expr *normals,
                            const zr_sdl_loc *normal_locs,
+                           const zr_sdl_expr *uvs, const zr_sdl_loc *uv_locs,
                            const zr_texture *texture) {
   struct zr_mesh *m = &build_of(o)->mesh;
-  zr_vec3 v[3], n[3];
+  zr_vec3 v[3], n[3], uv[3];
   for (int k = 0; k < 3; k++) {
     if (!zr__sdl_want_vector(p, &vertices[k], &vertex_locs[k], &v[k]))
       return false;
     if (normals &&
         !zr__sdl_want_vector(p, &normals[k], &normal_locs[k], &n[k]))
+      return false;
+    if (uvs && !zr__sdl_want_vector(p, &uvs[k], &uv_locs[k], &uv[k]))
       return false;
   }
   if (m->n_faces > UINT32_MAX / 4) {
@@ -192,6 +235,8 @@ bool zr__sdl_mesh_triangle(zr_sdl_parser *p, zr_object *o,
       if (!add_normal(p, m, flat, &m->face_normals[g][k]))
         return false;
   }
+  if (!face_uvs(p, m, f, old_cap, uvs ? uv : NULL))
+    return false;
   if ((texture || m->face_textures) &&
       !face_extra(p, (uint32_t(**)[3])&m->face_textures, old_cap,
                   m->cap_faces, f, (uint32_t)-1))
@@ -282,6 +327,16 @@ bool zr__sdl_mesh_done(zr_sdl_parser *p, zr_object *o,
     return false;
   }
   return true;
+}
+
+zr_object *zr__sdl_mesh_copy(zr_sdl_parser *p, const zr_object *o,
+                             const zr_sdl_loc *loc) {
+  if (o->kind != ZR_OBJ_MESH) {
+    zr__sdl_error(p, ZR_ESCENE, loc, "only a mesh or mesh2 identifier can "
+                  "start a mesh { } block");
+    return NULL;
+  }
+  return zr__sdl_object_copy(p, o);
 }
 
 /* ---- mesh2 lists ---- */
@@ -477,10 +532,35 @@ static bool signed_number(cursor *c, double *out) {
   return true;
 }
 
-/* Whether the token at i may follow a complete item. */
+/* Whether the token at i may follow a complete item (a run of items
+   starts with a comma or a '<'). */
 static bool item_end(const cursor *c, size_t i) {
   int k = kind_at(c, i);
-  return k == ',' || k == '}' || k == '<';
+  return k == ',' || k == '}' || k == '<' || k == ZR_SDL_NUMBER_LIST;
+}
+
+/* The items of a run the lexer kept as one token (numlist.c), read
+   again from the file's bytes with the reader that found them. */
+static bool number_list(zr_sdl_parser *p, mesh_build *b, int file,
+                        const zr_sdl_numlist *list) {
+  /* The reader looks past an item's end to see that it is complete:
+     it reads up to the file's end, and stops after the run's items. */
+  const zr_sdl_file *f = &p->files[file];
+  zr_sdl_numreader r = {f->bytes, list->begin, f->size, list->line,
+                        list->column, list->uv, true};
+  for (size_t k = 0; k < list->n_items; k++) {
+    double v[3];
+    int dim;
+    zr_sdl_loc loc = {file, 0, 0, 1};
+    if (!zr__sdl_numlist_item(&r, v, &dim, &loc.line, &loc.column)) {
+      zr__sdl_error(p, ZR_ESYNTAX, &loc, "%s: the lexer's run of items "
+                    "does not read again", list_names[b->list]);
+      return false;
+    }
+    if (!take_vector(p, b, zr_v3(v[0], v[1], v[2]), &loc))
+      return false;
+  }
+  return true;
 }
 
 /* "<a, b[, c]>" of signed numbers; dim gets 2 or 3. */
@@ -526,6 +606,15 @@ static bool fast_items(zr_sdl_parser *p, mesh_build *b) {
   }
   bool faces = b->list == ZR_SDL_M2_FACES;
   for (;;) {
+    if (kind_at(&c, c.pos) == ZR_SDL_NUMBER_LIST) {
+      if (!number_list(p, b, fr->file, c.tokens[c.pos].v.list))
+        return false;
+      c.pos++;
+      if (kind_at(&c, c.pos) == ',')
+        c.pos++;
+      fr->pos = c.pos;
+      continue;
+    }
     size_t start = c.pos;
     double v[3];
     int dim = 0;
@@ -625,7 +714,7 @@ zr_object *zr__sdl_smooth_triangle(zr_sdl_parser *p, const zr_sdl_loc *loc,
   zr_sdl_expr v[3] = {e[0], e[2], e[4]}, n[3] = {e[1], e[3], e[5]};
   zr_sdl_loc vl[3] = {locs[0], locs[2], locs[4]};
   zr_sdl_loc nl[3] = {locs[1], locs[3], locs[5]};
-  if (!zr__sdl_mesh_triangle(p, o, v, vl, n, nl, NULL) ||
+  if (!zr__sdl_mesh_triangle(p, o, v, vl, n, nl, NULL, NULL, NULL) ||
       !zr__sdl_mesh_done(p, o, loc))
     return NULL;
   return o;

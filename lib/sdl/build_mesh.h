@@ -18,16 +18,22 @@ typedef enum zr_sdl_mesh2_list {
   ZR_SDL_M2_TEXTURES
 } zr_sdl_mesh2_list;
 
+/* mesh { M ... }: a copy of the declared mesh M (an error when M is
+   another kind of object). */
+zr_object *zr__sdl_mesh_copy(zr_sdl_parser *p, const zr_object *o,
+                             const zr_sdl_loc *loc);
 /* An empty mesh (mesh2 set for mesh2's messages). */
 zr_object *zr__sdl_mesh_new(zr_sdl_parser *p, bool mesh2,
                             const zr_sdl_loc *loc);
-/* mesh { triangle { v0, v1, v2 [texture] } }, or a smooth_triangle when
-   normals (three) is not NULL.  texture may be NULL. */
+/* mesh { triangle { v0, v1, v2 [uv_vectors a, b, c] [texture] } }, or a
+   smooth_triangle when normals (three) is not NULL; uvs (three, or
+   NULL) are the uv_vectors.  texture may be NULL. */
 bool zr__sdl_mesh_triangle(zr_sdl_parser *p, zr_object *o,
                            const zr_sdl_expr vertices[3],
                            const zr_sdl_loc vertex_locs[3],
                            const zr_sdl_expr *normals,
                            const zr_sdl_loc *normal_locs,
+                           const zr_sdl_expr *uvs, const zr_sdl_loc *uv_locs,
                            const zr_texture *texture);
 bool zr__sdl_mesh_inside_vector(zr_sdl_parser *p, zr_object *o,
                                 const zr_sdl_expr *e, const zr_sdl_loc *loc);

@@ -29,6 +29,7 @@
 #include "config.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
 
 #include "pov-parse.h"
@@ -188,6 +189,11 @@ zr_light *zr__sdl_light_copy(zr_sdl_parser *p, const zr_light *l) {
   if (l->looks_like &&
       !(copy->looks_like = zr__sdl_object_copy(p, l->looks_like)))
     return NULL;
+  /* So does the projected_through one. */
+  if (l->projected_through &&
+      !(copy->projected_through =
+            zr__sdl_object_copy(p, l->projected_through)))
+    return NULL;
   return copy;
 }
 
@@ -202,6 +208,53 @@ bool zr__sdl_csg_copy_lights(zr_sdl_parser *p, zr_object *copy) {
     if (!(lights[i] = zr__sdl_light_copy(p, copy->u.csg.lights[i])))
       return false;
   copy->u.csg.lights = lights;
+  return true;
+}
+
+/* ---- light_group ("Light Group") ---- */
+
+/* Puts the objects under o that are in no group yet into group g, and
+   the groups directly under it inside g. */
+static void join_group(zr_scene *scene, zr_object *o, uint32_t g) {
+  if (o->light_group != 0 && o->light_group != g) {
+    uint32_t top = o->light_group;
+    while (scene->light_groups[top].parent != 0)
+      top = scene->light_groups[top].parent;
+    if (top != g)
+      scene->light_groups[top].parent = g;
+  } else {
+    o->light_group = g;
+  }
+  if (zr__is_csg(o->kind)) {
+    for (size_t i = 0; i < o->u.csg.n_children; i++)
+      join_group(scene, o->u.csg.children[i], g);
+    for (size_t i = 0; i < o->u.csg.n_lights; i++)
+      if (o->u.csg.lights[i]->light_group == 0)
+        o->u.csg.lights[i]->light_group = g;
+  }
+}
+
+bool zr__sdl_light_group_done(zr_sdl_parser *p, zr_object *group,
+                              bool global, const zr_sdl_loc *loc) {
+  zr_scene *scene = p->scene;
+  size_t n = scene->n_light_groups ? scene->n_light_groups : 1;
+  if (n >= UINT32_MAX) {
+    zr__sdl_error(p, ZR_ELIMIT, loc, "too many light groups");
+    return false;
+  }
+  struct zr_light_group *grown =
+      zr__sdl_alloc(p, (n + 1) * sizeof *grown);
+  if (!grown)
+    return false;
+  if (scene->n_light_groups)
+    memcpy(grown, scene->light_groups, n * sizeof *grown);
+  else
+    memset(grown, 0, sizeof *grown);
+  grown[n].parent = 0;
+  grown[n].global_lights = global;
+  scene->light_groups = grown;
+  scene->n_light_groups = n + 1;
+  join_group(scene, group, (uint32_t)n);
   return true;
 }
 

@@ -270,18 +270,6 @@ bool zr__sdl_pattern_function(zr_sdl_parser *p, zr_pattern *pt,
   return true;
 }
 
-bool zr__sdl_pigment_function_entry(zr_sdl_parser *p, zr_pigment *pg,
-                                    const zr_fn *fn, const zr_sdl_loc *loc) {
-  if (pg->kind != ZR_PIGMENT_SOLID || pg->pattern.kind != ZR_PAT_NONE) {
-    zr__sdl_error(p, ZR_ESYNTAX, loc, "a pigment has one pattern: this "
-                  "entry has a function and another");
-    return false;
-  }
-  pg->kind = ZR_PIGMENT_PATTERN;
-  pg->pattern.kind = ZR_PAT_FUNCTION;
-  return zr__sdl_pattern_function(p, &pg->pattern, fn, loc);
-}
-
 bool zr__sdl_normal_accuracy(zr_sdl_parser *p, zr_normal *nm,
                              const zr_sdl_expr *e, const zr_sdl_loc *loc) {
   double a;

@@ -63,11 +63,6 @@ bool zr__sdl_pattern_function(zr_sdl_parser *p, zr_pattern *pt,
    object's bounding box, +-1e10 for an unbounded one, as in POV-Ray. */
 zr_sdl_expr zr__sdl_extent(zr_sdl_parser *p, const zr_object *o, bool max);
 
-/* "[function { ... } PIGMENT_BODY]": fn becomes the pattern of pg,
-   whose modifiers (written after the function) stay. */
-bool zr__sdl_pigment_function_entry(zr_sdl_parser *p, zr_pigment *pg,
-                                    const zr_fn *fn, const zr_sdl_loc *loc);
-
 /* normal { accuracy A }: A > 0. */
 bool zr__sdl_normal_accuracy(zr_sdl_parser *p, zr_normal *nm,
                              const zr_sdl_expr *e, const zr_sdl_loc *loc);

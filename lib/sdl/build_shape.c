@@ -628,15 +628,46 @@ zr_blob_component *zr__sdl_blob_component(zr_sdl_parser *p, zr_object *o,
   return slot;
 }
 
-bool zr__sdl_blob_component_mod(zr_sdl_parser *p, zr_blob_component *c,
-                                const zr_sdl_mod *mod,
+/*
+ * A component's texture items go to a stand-in object that carries its
+ * texture, so they mean what they mean on an object: a pigment, finish
+ * or normal changes a copy of the texture so far (or of the default
+ * texture), a texture goes on top as a layer, and a transformation after
+ * them moves their patterns.
+ */
+static bool component_texture_mod(zr_sdl_parser *p, zr_blob_component *c,
+                                  const zr_sdl_mod *mod,
+                                  const zr_sdl_loc *loc) {
+  zr_object carrier;
+  memset(&carrier, 0, sizeof carrier);
+  carrier.kind = ZR_OBJ_SPHERE;
+  carrier.texture = c->texture;
+  if (!zr__sdl_object_mod(p, &carrier, mod, loc))
+    return false;
+  c->texture = carrier.texture;
+  return true;
+}
+
+bool zr__sdl_blob_component_mod(zr_sdl_parser *p, zr_object *blob,
+                                zr_blob_component *c, const zr_sdl_mod *mod,
                                 const zr_sdl_loc *loc) {
-  if (mod->kind != ZR_SDL_MOD_TRANSFORM) {
-    zr__sdl_error(p, ZR_EUNSUPPORTED, loc,
-                  "blob components take transformations only; their own "
-                  "textures are not supported yet");
+  switch (mod->kind) {
+  case ZR_SDL_MOD_TRANSFORM:
+    break;
+  case ZR_SDL_MOD_PIGMENT:
+  case ZR_SDL_MOD_FINISH:
+  case ZR_SDL_MOD_NORMAL:
+  case ZR_SDL_MOD_TEXTURE:
+    blob->u.blob.textured = true;
+    return component_texture_mod(p, c, mod, loc);
+  default:
+    zr__sdl_error(p, ZR_ESYNTAX, loc,
+                  "a blob component takes a texture, pigment, normal, "
+                  "finish and transformations only");
     return false;
   }
+  if (c->texture && !component_texture_mod(p, c, mod, loc))
+    return false;
   zr_transform *t = zr__sdl_alloc(p, sizeof *t);
   if (!t)
     return false;

@@ -65,8 +65,9 @@ zr_blob_component *zr__sdl_blob_component(zr_sdl_parser *p, zr_object *o,
                                           bool cylinder, bool component,
                                           const zr_sdl_expr *e,
                                           const zr_sdl_loc *at);
-bool zr__sdl_blob_component_mod(zr_sdl_parser *p, zr_blob_component *c,
-                                const zr_sdl_mod *mod,
+/* An item inside a component of blob: a transformation or texture. */
+bool zr__sdl_blob_component_mod(zr_sdl_parser *p, zr_object *blob,
+                                zr_blob_component *c, const zr_sdl_mod *mod,
                                 const zr_sdl_loc *loc);
 /* sor { N, points }: new after the count, one call per point, done. */
 zr_object *zr__sdl_sor_new(zr_sdl_parser *p, const zr_sdl_loc *loc,

@@ -4,20 +4,30 @@
  * Patch", "Sphere Sweep", "Julia Fractal").
  *
  * A bicubic_patch becomes a smooth triangle mesh (lib/trace/obj_mesh.c),
- * built the way POV-Ray's patch is cut up (source core/shape/bezier.cpp):
- * the 4 x 4 Bezier control net is halved by de Casteljau's construction
- * in u and v together while the depth is below both u_steps and v_steps,
- * then in the one direction still below its count, until the depth
- * reaches both or the piece is flat enough (every control point within
- * flatness of the plane of its corners; flatness 0 never is).  Each
- * piece becomes its two corner triangles, (u0,v0) (u0,v1) (u1,v1) and
- * (u0,v0) (u1,v1) (u1,v0), whose corner normals are the patch's exact
- * normals there, so the barycentric blend of the mesh's smooth triangles
- * is POV-Ray's shading normal.  Types 0 and 1 differ in POV-Ray only in
- * whether the pieces are kept or recomputed per ray; both give this
- * mesh.  The mesh keeps each corner's (u, v) through the uv_vectors
- * corners for uv_mapping.  Control point i, j (row i of four in the
- * order written) weighs B_i(u) B_j(v).
+ * cut up as the manual's "Bicubic Patch" describes: at most
+ * 2^u_steps * 2^v_steps pieces (u_steps 3 v_steps 3 "translates to 64
+ * sub-patches (128 smooth triangles)"), each two triangles, and with a
+ * flatness above 0 a piece that is already "flat enough to just
+ * pretend it is a rectangle" is not split further.  We halve the 4 x 4
+ * Bezier control net by de Casteljau's construction, each time in the
+ * direction with more halvings to go (u on a tie), so the pieces stay
+ * as square as the counts allow; a piece is flat enough when its
+ * control points lie within flatness percent of the patch's size of
+ * the plane of its corners (flat_enough, patch_tolerance).  Each piece
+ * is cut along its diagonal from (u0, v0) to (u1, v1), as POV-Ray's
+ * renders show (see piece), and the triangles' corner normals are the
+ * patch's exact normals there, so the mesh shades smoothly
+ * ("automatically smoothed using normal interpolation").  Types 0 and
+ * 1 differ only in memory and speed in the manual; both give this
+ * mesh.  Control point i, j (row i of four in the order written) weighs
+ * B_i(u) B_j(v); uv_vectors' corners 1 to 4 belong to control points
+ * 1, 4, 16 and 13, so the default <0,0>, <1,0>, <1,1>, <0,1> runs the
+ * texture's u along the rows (as POV-Ray 3.7 renders a uv_mapping
+ * gradient on a flat patch).  What
+ * POV-Ray accepts was measured with it: the items before the points
+ * (flatness after them is "No matching } in 'bicubic_patch'"), type
+ * -0.999 to 1.999 without a word, -1 refused, 2 and up read as 1 with
+ * a warning.
  *
  * The sphere sweep and julia fractal are checked here and traced by
  * lib/trace/obj_sweep.c and obj_julia.c.
@@ -78,7 +88,7 @@ static bool want_steps(zr_sdl_parser *p, const zr_sdl_expr *e,
   return true;
 }
 
-/* POV-Ray reads the patch's items, then its points. */
+/* POV-Ray 3.7 reads the patch's items, then its points (measured). */
 static bool items_first(zr_sdl_parser *p, const zr_sdl_loc *loc) {
   zr__sdl_error(p, ZR_ESYNTAX, loc, "a bicubic_patch's type, flatness, "
                 "u_steps, v_steps and uv_vectors come before its points");
@@ -96,8 +106,8 @@ bool zr__sdl_patch_item(zr_sdl_parser *p, zr_object *o,
   case ZR_SDL_PATCH_TYPE:
     if (!zr__sdl_want_float(p, e, loc, &v))
       return false;
-    /* POV-Ray takes the integer part, refuses a negative type and
-       reads 2 and up as 1 (with this warning). */
+    /* As measured with POV-Ray 3.7: -0.999 to 1.999 pass, -1 is
+       refused, 2 and up give this warning. */
     if (!(v > -1.0)) {
       zr__sdl_error(p, ZR_ESCENE, loc, "Undefined bicubic patch type %g "
                     "(type 0 or 1)", v);
@@ -152,10 +162,9 @@ bool zr__sdl_patch_uv(zr_sdl_parser *p, zr_object *o,
 
 typedef zr_vec3 net[4][4];
 
-/* The point and unit normal of the patch at (u, v); a normal that
-   vanishes (a collapsed edge) is <1, 0, 0>, as POV-Ray makes it. */
-static void patch_value(const net cp, double u, double v, zr_vec3 *point,
-                        zr_vec3 *normal) {
+/* The point of the patch at (u, v) and its tangents along u and v. */
+static void patch_eval(const net cp, double u, double v, zr_vec3 *point,
+                       zr_vec3 *tu, zr_vec3 *tv) {
   double bu[4] = {(1 - u) * (1 - u) * (1 - u), 3 * u * (1 - u) * (1 - u),
                   3 * u * u * (1 - u), u * u * u};
   double bv[4] = {(1 - v) * (1 - v) * (1 - v), 3 * v * (1 - v) * (1 - v),
@@ -164,21 +173,43 @@ static void patch_value(const net cp, double u, double v, zr_vec3 *point,
                   3 * u * (2 - 3 * u), 3 * u * u};
   double dv[4] = {-3 * (1 - v) * (1 - v), 3 * (1 - v) * (1 - 3 * v),
                   3 * v * (2 - 3 * v), 3 * v * v};
-  zr_vec3 pt = zr_v3(0, 0, 0), tu = pt, tv = pt;
+  zr_vec3 pt = zr_v3(0, 0, 0), a = pt, b = pt;
   for (int i = 0; i < 4; i++)
     for (int j = 0; j < 4; j++) {
       pt = zr_v3_madd(pt, cp[i][j], bu[i] * bv[j]);
-      tu = zr_v3_madd(tu, cp[i][j], du[i] * bv[j]);
-      tv = zr_v3_madd(tv, cp[i][j], bu[i] * dv[j]);
+      a = zr_v3_madd(a, cp[i][j], du[i] * bv[j]);
+      b = zr_v3_madd(b, cp[i][j], bu[i] * dv[j]);
     }
+  *point = pt;
+  *tu = a;
+  *tv = b;
+}
+
+/* The unit normal from two tangents; false when they are parallel or
+   one vanishes. */
+static bool unit_normal(zr_vec3 tu, zr_vec3 tv, zr_vec3 *normal) {
   zr_vec3 n = zr_v3_cross(tu, tv);
   double nn = zr_v3_dot(n, n);
-  if (nn > 1e-10 * zr_v3_dot(tu, tu) * zr_v3_dot(tv, tv) && isfinite(nn))
-    n = zr_v3_scale(n, 1.0 / sqrt(nn));
-  else
-    n = zr_v3(1, 0, 0);
-  *point = pt;
-  *normal = n;
+  if (!(nn > 1e-10 * zr_v3_dot(tu, tu) * zr_v3_dot(tv, tv)) ||
+      !isfinite(nn))
+    return false;
+  *normal = zr_v3_scale(n, 1.0 / sqrt(nn));
+  return true;
+}
+
+/* The point and unit normal of the patch at (u, v).  Where the normal
+   vanishes (a corner whose edge collapses to a point, or a cusp) it is
+   <1, 0, 0>: that is what POV-Ray 3.7 shades there, measured on a patch
+   whose first row is one point (its tip is dark under a light from the
+   upper left and bright under one from +x, and our renders with
+   <1, 0, 0> equal POV-Ray's, SSIM 1.0000 both, where the limit normal
+   from inside the patch gives 0.967). */
+static void patch_value(const net cp, double u, double v, zr_vec3 *point,
+                        zr_vec3 *normal) {
+  zr_vec3 tu, tv;
+  patch_eval(cp, u, v, point, &tu, &tv);
+  if (!unit_normal(tu, tv, normal))
+    *normal = zr_v3(1, 0, 0);
 }
 
 /* de Casteljau halving of four points. */
@@ -195,7 +226,7 @@ static void halve(const zr_vec3 a[4], zr_vec3 lo[4], zr_vec3 hi[4]) {
 }
 
 /* The net split at u = 1/2 (first index) into lo and hi. */
-static void split_u(const net n, net lo, net hi) {
+static void split_u_net(const net n, net lo, net hi) {
   for (int j = 0; j < 4; j++) {
     zr_vec3 col[4] = {n[0][j], n[1][j], n[2][j], n[3][j]}, l[4], h[4];
     halve(col, l, h);
@@ -206,44 +237,61 @@ static void split_u(const net n, net lo, net hi) {
   }
 }
 
-static void split_v(const net n, net lo, net hi) {
+/* The net split at v = 1/2 (second index). */
+static void split_v_net(const net n, net lo, net hi) {
   for (int i = 0; i < 4; i++)
     halve(n[i], lo[i], hi[i]);
 }
 
-static bool same_point(zr_vec3 a, zr_vec3 b) {
-  return zr_v3_len(zr_v3_sub(a, b)) < 1e-10;
-}
-
-/* Whether every control point is within flatness of the plane of
-   three distinct corners (POV-Ray's choice of corners). */
-static bool flat_enough(const net n, double flatness) {
-  if (!(flatness > 0.0))
+/*
+ * Whether the piece of control net n is flat enough to be two
+ * triangles: every control point within tolerance of the plane through
+ * the centre of its four corners square to its diagonals (by the convex
+ * hull property the surface piece then lies as near it).  A piece whose
+ * diagonals give no plane is not.  The caller makes the tolerance
+ * flatness percent of the whole patch's size (patch_tolerance).
+ */
+static bool flat_enough(const net n, double tolerance) {
+  if (!(tolerance > 0.0))
     return false;
-  zr_vec3 a = n[0][0], b = n[0][3], c = n[3][0];
-  if (same_point(a, b)) {
-    b = n[3][3];
-  } else if (same_point(a, c)) {
-    c = n[3][3];
-  }
-  if (same_point(a, b) || same_point(a, c) || same_point(b, c))
+  zr_vec3 d1 = zr_v3_sub(n[3][3], n[0][0]), d2 = zr_v3_sub(n[3][0], n[0][3]);
+  zr_vec3 nrm;
+  if (!unit_normal(d1, d2, &nrm))
     return false;
-  zr_vec3 nrm = zr_v3_cross(zr_v3_sub(a, b), zr_v3_sub(c, b));
-  double len = zr_v3_len(nrm);
-  if (!(len > 1e-10 * zr_v3_len(zr_v3_sub(a, b)) *
-                  zr_v3_len(zr_v3_sub(c, b))))
-    return false;
-  nrm = zr_v3_scale(nrm, 1.0 / len);
+  zr_vec3 centre = zr_v3_scale(zr_v3_add(zr_v3_add(n[0][0], n[0][3]),
+                                         zr_v3_add(n[3][0], n[3][3])),
+                               0.25);
   for (int i = 0; i < 4; i++)
     for (int j = 0; j < 4; j++)
-      if (!(fabs(zr_v3_dot(zr_v3_sub(n[i][j], a), nrm)) < flatness))
+      if (!(fabs(zr_v3_dot(zr_v3_sub(n[i][j], centre), nrm)) < tolerance))
         return false;
   return true;
+}
+
+/*
+ * How far a piece may stray from flat: flatness percent of the patch's
+ * size, the diagonal of its control points' box.  Relative, because
+ * POV-Ray 3.7's flatness is: scaling the manual's patch by 10 leaves
+ * the picture each flatness gives unchanged.  Per cent, because that
+ * reproduces how finely POV-Ray cuts: on the manual's patch flatness
+ * 0.3, 0.1, 0.03 and 0.01 render closest to uniform u_steps = v_steps =
+ * 3, 4, 5 and 6 at both sizes (measured, SSIM against POV-Ray's
+ * uniform renders), and so do these tolerances here.
+ */
+static double patch_tolerance(const patch_build *b) {
+  zr_vec3 lo = b->points[0], hi = b->points[0];
+  for (int k = 1; k < 16; k++) {
+    zr_vec3 q = b->points[k];
+    lo = zr_v3(fmin(lo.x, q.x), fmin(lo.y, q.y), fmin(lo.z, q.z));
+    hi = zr_v3(fmax(hi.x, q.x), fmax(hi.y, q.y), fmax(hi.z, q.z));
+  }
+  return b->flatness / 100.0 * zr_v3_len(zr_v3_sub(hi, lo));
 }
 
 /* Where the pieces go: counted first (mesh NULL), then stored. */
 typedef struct patch_sink {
   const patch_build *b;
+  double tolerance; /* patch_tolerance */
   struct zr_mesh *mesh;
   size_t n_pieces;
 } patch_sink;
@@ -255,7 +303,8 @@ static void add_corner(patch_sink *s, double u, double v) {
   patch_value((const zr_vec3(*)[4])s->b->points, u, v, &m->vertices[k],
               &m->normals[k]);
   m->n_normals++;
-  /* uv_vectors: POV-Ray blends the corners at (v, u). */
+  /* The uv_vectors corners sit at control points 1 (u = v = 0), 4
+     (v = 1), 16 and 13 (u = 1): bilinear in (v, u). */
   double x = v, y = u;
   for (int c = 0; c < 2; c++)
     m->uvs[k][c] = (1 - x) * (1 - y) * uv[0][c] + x * (1 - y) * uv[1][c] +
@@ -284,6 +333,12 @@ static void add_face(struct zr_mesh *m, uint32_t a, uint32_t b,
   m->n_faces++;
 }
 
+/* A piece of the patch: its four corners and two triangles, cut along
+   the diagonal from (u0, v0) to (u1, v1).  The manual leaves the cut
+   open; this one is POV-Ray 3.7's, measured: with flatness 0 our
+   renders of the manual's patch at u_steps = v_steps = 2, 3 and 4 are
+   then identical to POV-Ray's (SSIM 1.0000), where the other diagonal,
+   or the shorter of the two, gives 0.974 at 2. */
 static void piece(patch_sink *s, double u0, double u1, double v0,
                   double v1) {
   s->n_pieces++;
@@ -299,33 +354,31 @@ static void piece(patch_sink *s, double u0, double u1, double v0,
   add_face(m, k, k + 2, k + 3);
 }
 
+/* Cuts the piece [u0, u1] x [v0, v1], whose control net is n and which
+   has been halved split_u times in u and split_v times in v. */
 static void subdivide(patch_sink *s, const net n, double u0, double u1,
-                      double v0, double v1, int depth) {
+                      double v0, double v1, int split_u, int split_v) {
   const patch_build *b = s->b;
-  bool more_u = depth < b->u_steps, more_v = depth < b->v_steps;
-  if (flat_enough(n, b->flatness) || (!more_u && !more_v)) {
+  int left_u = b->u_steps - split_u, left_v = b->v_steps - split_v;
+  if ((left_u <= 0 && left_v <= 0) || flat_enough(n, s->tolerance)) {
     piece(s, u0, u1, v0, v1);
     return;
   }
-  double um = 0.5 * (u0 + u1), vm = 0.5 * (v0 + v1);
   net lo, hi;
-  if (more_u && more_v) {
-    net ll, lh, hl, hh;
-    split_u(n, lo, hi);
-    split_v((const zr_vec3(*)[4])lo, ll, lh);
-    split_v((const zr_vec3(*)[4])hi, hl, hh);
-    subdivide(s, (const zr_vec3(*)[4])ll, u0, um, v0, vm, depth + 1);
-    subdivide(s, (const zr_vec3(*)[4])lh, u0, um, vm, v1, depth + 1);
-    subdivide(s, (const zr_vec3(*)[4])hl, um, u1, v0, vm, depth + 1);
-    subdivide(s, (const zr_vec3(*)[4])hh, um, u1, vm, v1, depth + 1);
-  } else if (more_u) {
-    split_u(n, lo, hi);
-    subdivide(s, (const zr_vec3(*)[4])lo, u0, um, v0, v1, depth + 1);
-    subdivide(s, (const zr_vec3(*)[4])hi, um, u1, v0, v1, depth + 1);
+  if (left_u >= left_v) {
+    double um = 0.5 * (u0 + u1);
+    split_u_net(n, lo, hi);
+    subdivide(s, (const zr_vec3(*)[4])lo, u0, um, v0, v1, split_u + 1,
+              split_v);
+    subdivide(s, (const zr_vec3(*)[4])hi, um, u1, v0, v1, split_u + 1,
+              split_v);
   } else {
-    split_v(n, lo, hi);
-    subdivide(s, (const zr_vec3(*)[4])lo, u0, u1, v0, vm, depth + 1);
-    subdivide(s, (const zr_vec3(*)[4])hi, u0, u1, vm, v1, depth + 1);
+    double vm = 0.5 * (v0 + v1);
+    split_v_net(n, lo, hi);
+    subdivide(s, (const zr_vec3(*)[4])lo, u0, u1, v0, vm, split_u,
+              split_v + 1);
+    subdivide(s, (const zr_vec3(*)[4])hi, u0, u1, vm, v1, split_u,
+              split_v + 1);
   }
 }
 
@@ -344,8 +397,8 @@ bool zr__sdl_patch_done(zr_sdl_parser *p, zr_object *o,
     return false;
   }
   const zr_vec3(*cp)[4] = (const zr_vec3(*)[4])b->points;
-  patch_sink s = {b, NULL, 0};
-  subdivide(&s, cp, 0.0, 1.0, 0.0, 1.0, 0);
+  patch_sink s = {b, patch_tolerance(b), NULL, 0};
+  subdivide(&s, cp, 0.0, 1.0, 0.0, 1.0, 0, 0);
   struct zr_mesh *m = &b->mesh;
   size_t nv = 4 * s.n_pieces, nf = 2 * s.n_pieces;
   m->vertices = zr__sdl_alloc(p, nv * sizeof *m->vertices);
@@ -361,7 +414,7 @@ bool zr__sdl_patch_done(zr_sdl_parser *p, zr_object *o,
   m->cap_faces = nf;
   s.mesh = m;
   s.n_pieces = 0;
-  subdivide(&s, cp, 0.0, 1.0, 0.0, 1.0, 0);
+  subdivide(&s, cp, 0.0, 1.0, 0.0, 1.0, 0, 0);
   if (m->n_faces == 0) {
     zr__sdl_error(p, ZR_ESCENE, loc,
                   "the bicubic_patch's control points make no surface");

@@ -77,6 +77,7 @@ bool zr__sdl_map_add(zr_sdl_parser *p, zr_map *m, const zr_sdl_expr *v,
 bool zr__sdl_map_add_weight1(zr_sdl_parser *p, zr_map *m,
                              zr_map_entry *e) {
   e->value = 1;
+  m->n_unweighted++;
   return append(p, m, e);
 }
 
@@ -114,11 +115,19 @@ bool zr__sdl_map_done(zr_sdl_parser *p, const zr_map *m, const char *what,
   return true;
 }
 
-/* A block pattern takes at most as many items as it has blocks. */
+/* A block pattern takes at most as many items as it has blocks, and
+   only an average's entries may leave out their value (povray 3.7:
+   "gradient x pigment_map { [bozo] }" is "Expected 'numeric
+   expression', bozo found"). */
 static bool block_fits(zr_sdl_parser *p, zr_pattern_kind kind,
                        const zr_map *m, const zr_sdl_loc *loc) {
   if (kind == ZR_PAT_AVERAGE)
     return true;
+  if (m->n_unweighted && kind != ZR_PAT_NONE) {
+    zr__sdl_error(p, ZR_ESYNTAX, loc, "only an average's map entries may "
+                  "leave out their value");
+    return false;
+  }
   if (!zr__pattern_is_block(kind))
     return true;
   size_t most = kind == ZR_PAT_HEXAGON ? 3 : 2;
@@ -182,6 +191,26 @@ bool zr__sdl_spiral_arms(zr_sdl_parser *p, zr_pattern *pt,
   if (!zr__sdl_want_float(p, arms, loc, &n))
     return false;
   pt->arms = (int)n;
+  return true;
+}
+
+bool zr__sdl_tiling(zr_sdl_parser *p, zr_pattern *pt, const zr_sdl_expr *n,
+                    const zr_sdl_loc *loc) {
+  double v;
+  if (!zr__sdl_want_float(p, n, loc, &v))
+    return false;
+  /* povray reads tiling 2.5 as tiling 2 (measured). */
+  if (!(v >= 1 && v < 28)) {
+    zr__sdl_error(p, ZR_ESCENE, loc, "the tiling number must be from 1 "
+                  "to 27, not %g", v);
+    return false;
+  }
+  if (!zr__pattern_tiling_known((int)v)) {
+    zr__sdl_error(p, ZR_EUNSUPPORTED, loc, "tiling %d is not supported "
+                  "yet", (int)v);
+    return false;
+  }
+  pt->tiling = (int)v;
   return true;
 }
 
@@ -376,4 +405,74 @@ bool zr__sdl_slope_altitude(zr_sdl_parser *p, zr_slope *sl,
     return false;
   }
   return slope_range(p, lo, hi, lo_loc, &sl->alt_lo, &sl->alt_hi);
+}
+
+/* ---- bump maps and material maps (lib/scene/bitmap.c) ---- */
+
+zr_normal *zr__sdl_bump_map_new(zr_sdl_parser *p, zr_image_map *im) {
+  zr_normal *bump = im ? zr__sdl_normal_new(p, NULL) : NULL;
+  if (bump)
+    bump->bump_map = im;
+  return bump;
+}
+
+bool zr__sdl_bump_map_mod(zr_sdl_parser *p, zr_normal *bump, int token,
+                          const zr_sdl_expr *e, const zr_sdl_loc *loc) {
+  /* The picture is this bump map's own, read by zr__sdl_bump_map_new. */
+  zr_image_map *im = (zr_image_map *)bump->bump_map;
+  switch (token) {
+  case T_USE_INDEX:
+  case T_USE_COLOR:
+    im->use_index = token == T_USE_INDEX;
+    return true;
+  case T_BUMP_SIZE:
+    return zr__sdl_want_float(p, e, loc, &bump->amount);
+  default:
+    return zr__sdl_image_map_mod(p, im, token, e, loc);
+  }
+}
+
+bool zr__sdl_bump_map_end(zr_sdl_parser *p, zr_normal *nm,
+                          const zr_normal *bump, const zr_sdl_loc *loc) {
+  zr_image_map *im = (zr_image_map *)bump->bump_map;
+  if (im->use_index && !im->indices) {
+    /* POV-Ray 3.7 then bumps by the colours' grey (measured: a red step
+       in an RGB PNG tilts by 0.297 with or without use_index). */
+    zr__sdl_warning(p, loc, "use_index needs a palette image; '%s' has "
+                    "none, so its grey is used", im->path);
+  } else if (im->use_index) {
+    /* The index itself is the height: POV-Ray 3.7 tilts by 5 times the
+       bump size at a step from index 0 to 5, whatever the palette's
+       size (measured with 6 and 256 entries). */
+    size_t n = (size_t)im->width * (size_t)im->height;
+    float *values = zr__sdl_alloc(p, n * sizeof *values);
+    if (!values)
+      return false;
+    for (size_t i = 0; i < n; i++)
+      values[i] = im->indices[i];
+    im->values = values;
+  }
+  zr__pattern_init(&nm->pattern, ZR_PAT_NONE);
+  nm->normal_map = NULL;
+  nm->slope_map = NULL;
+  nm->bump_map = im;
+  nm->amount = bump->amount;
+  return true;
+}
+
+bool zr__sdl_material_add(zr_sdl_parser *p, zr_map *m, zr_map_entry *e) {
+  e->value = (double)m->n;
+  return append(p, m, e);
+}
+
+bool zr__sdl_material_map(zr_sdl_parser *p, zr_texture *tx,
+                          const zr_image_map *im, const zr_map *textures,
+                          const zr_transform *t, const zr_sdl_loc *loc) {
+  zr__sdl_texture_pattern(tx, ZR_PAT_NONE);
+  if (!zr__sdl_texture_map_set(p, tx, textures, loc))
+    return false;
+  tx->material = im;
+  /* Transforms inside the block move the picture and its textures, like
+     those after it. */
+  return !t || zr__sdl_texture_transform_more(p, tx, t);
 }

@@ -219,13 +219,11 @@ const char *zr__sdl_str(zr_sdl_parser *p, double v, double width,
 const char *zr__sdl_vstr(zr_sdl_parser *p, double n, const zr_sdl_expr *v,
                          const char *sep, double width, double prec,
                          const zr_sdl_loc *loc) {
+  (void)loc;
+  /* povray 3.7 writes the first n components of a longer vector or a
+     colour: vstr(2, <1,2,3>, ...) is "1,2" (measured; tiling.pov writes
+     vstr(3, Colour, ...)). */
   int dims = n < 2 ? 2 : n > 5 ? 5 : (int)n;
-  if (v->dim > dims) {
-    zr__sdl_error(p, ZR_ESCENE, loc,
-                  "vstr: the vector has %d components, more than %d",
-                  v->dim, dims);
-    return NULL;
-  }
   zr_strbuf sb;
   zr__strbuf_init(&sb);
   for (int i = 0; i < dims; i++) {

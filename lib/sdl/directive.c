@@ -954,6 +954,12 @@ int zr__sdl_next(zr_sdl_lexval *val, zr_sdl_loc *loc, zr_sdl_parser *p) {
       zr__sdl_error(p, ZR_EUNSUPPORTED, &tl, "'%s' is not supported yet",
                     t->v.str);
       return ZR__POV_error;
+    case ZR_SDL_NUMBER_LIST:
+      /* mesh2's fast reader takes these runs after the list's count
+         (build_mesh.c); nothing else should meet one. */
+      zr__sdl_error(p, ZR_ESYNTAX, &tl, "these mesh2 items cannot be "
+                    "read here");
+      return ZR__POV_error;
     case T_CONSTANT:
       v.num = zr__sdl_constant(p, t->v.str);
       return deliver(p, T_NUMBER, &v, &tl, NULL, val, loc);

@@ -33,16 +33,17 @@
  * dispatches by direct threading where the compiler allows it.
  *
  * `internal(n)` bodies (functions.inc) map n to a routine: 17 f_ellipsoid,
- * 45 f_paraboloid, 47 f_ph, 57 f_r, 60 f_rounded_box, 61 f_sphere, 68
- * f_superellipsoid, 69 f_th, 70 f_torus and 71 f_torus2, each fitted to
- * povray 3.7's own values at several points (see tests/test_function.c;
- * its source was not consulted); 76 f_noise3d and 78 f_noise_generator
+ * 25 f_helix1, 26 f_helix2, 45 f_paraboloid, 47 f_ph, 57 f_r, 60
+ * f_rounded_box, 61 f_sphere, 68 f_superellipsoid, 69 f_th, 70 f_torus
+ * and 71 f_torus2, each fitted to povray 3.7's own values at several
+ * points (see tests/test_function.c; its source was not consulted); 76
+ * f_noise3d and 78 f_noise_generator
  * (the bozo pattern's noise), 59 f_ridged_mf and 29 f_hetero_mf
  * (Musgrave's multifractals over it), which have our noise's character
- * and ranges but not POV-Ray's exact values.  Any other n, and transform
- * functions, still compile, so functions.inc parses, but a function that
- * uses one reports it by name and number when it is called
- * (zr__fn_unsupported() tells later users the same).
+ * and ranges but not POV-Ray's exact values.  Any other n still
+ * compiles, so functions.inc parses, but a function that uses one
+ * reports it by name and number when it is called (zr__fn_unsupported()
+ * tells later users the same).
  *
  * function { pattern { ... } } and function { pigment { ... } } are read
  * by the grammar (a nested parse) and become one instruction that
@@ -52,7 +53,10 @@
  * function { spline { ... } } and function { S } (S a declared spline)
  * are functions of one parameter whose value in a scene is the spline's
  * vector (lib/sdl/spline.c); another body takes one component,
- * F(t).y, which one OP_SPLINE evaluates.
+ * F(t).y, which one OP_SPLINE evaluates.  function { transform { ... } }
+ * is a function of x, y, z whose value in a scene is the point moved by
+ * the transform (transforms.inc's vtransform), and F(x, y, z).y in a
+ * body, one OP_XFORM.
  */
 #include "config.h"
 
@@ -96,7 +100,7 @@
   X(OP_CEIL) X(OP_INT) X(OP_DEGREES) X(OP_RADIANS)                         \
   X(OP_ATAN2) X(OP_POW) X(OP_MOD) X(OP_MIN) X(OP_MAX)                      \
   X(OP_SELECT3) X(OP_SELECT4) X(OP_CALL) X(OP_INTERNAL) X(OP_TEXTURE)    \
-  X(OP_SPLINE) X(OP_RETURN)
+  X(OP_SPLINE) X(OP_XFORM) X(OP_RETURN)
 
 #define AS_ENUM(o) o,
 typedef enum op { OPS(AS_ENUM) } op;
@@ -120,15 +124,19 @@ struct zr_fn {
   const char *unsupported; /* NULL, or what is missing (see header) */
   /* pattern { } and pigment { } bodies: what OP_TEXTURE evaluates. */
   const zr_pigment *const *pigments;
-  int texture_kind; /* 0 plain, FN_PATTERN, FN_PIGMENT or FN_SPLINE */
+  int texture_kind; /* 0 plain or FN_PATTERN ... FN_TRANSFORM */
   /* spline { } bodies and calls of spline functions: what OP_SPLINE
      evaluates. */
   const zr_sdl_spline *const *splines;
+  /* transform { } bodies and calls of transform functions: what
+     OP_XFORM applies. */
+  const zr_transform *const *transforms;
 };
 
 #define FN_PATTERN 1
 #define FN_PIGMENT 2
 #define FN_SPLINE 3
+#define FN_TRANSFORM 4
 /* The channel OP_TEXTURE gives for a pattern's value, and the grey. */
 #define TEXTURE_PATTERN (-1)
 #define TEXTURE_GREY 5
@@ -159,7 +167,7 @@ static const internal_fn internals[] = {
     {21, "f_folium_surface_2d", 9, false},
     {22, "f_glob", 4, false},         {23, "f_heart", 4, false},
     {24, "f_helical_torus", 13, false},
-    {25, "f_helix1", 10, false},      {26, "f_helix2", 10, false},
+    {25, "f_helix1", 10, true},       {26, "f_helix2", 10, true},
     {27, "f_hex_x", 4, false},        {28, "f_hex_y", 4, false},
     {29, "f_hetero_mf", 9, true},     {30, "f_hunt_surface", 4, false},
     {31, "f_hyperbolic_torus", 6, false},
@@ -291,6 +299,71 @@ static double hetero_mf(const double *a) {
 }
 
 /*
+ * The helixes (functions.inc's f_helix1 and f_helix2, about the y axis).
+ * The cross section type c picks the norm of a 2-D offset (u, v): the
+ * reference manual's "Cross Section Type" lists 0 square, 1 circle, 2
+ * diamond and 3 concave diamond, which are the unit balls of
+ * (|u|^p + |v|^p)^(1/p) for p = 2 / c (infinity, 2, 1 and 2/3, the
+ * astroid); povray 3.7's values follow that formula for every c we
+ * measured, negative ones and its underflow for tiny c included.
+ */
+static double section_norm(double u, double v, double c) {
+  u = fabs(u);
+  v = fabs(v);
+  if (c == 0)
+    return fmax(u, v);
+  double p = 2 / c;
+  return pow(pow(u, p) + pow(v, p), 1 / p);
+}
+
+/* (u, v) turned by angle radians. */
+static void turn(double *u, double *v, double angle) {
+  double c = cos(angle), s = sin(angle), t = *u;
+  *u = t * c - *v * s;
+  *v = t * s + *v * c;
+}
+
+/*
+ * f_helix1: a: x, y, z, number of helixes n, period w, minor radius r,
+ * major radius R, shape, cross section type and rotation (degrees).
+ * Strand k runs at the angle atan2(z, x) = ((2k + 1) pi) / n - w y, so
+ * n strands cross each meridian half plane every 2 pi / (n w) in y.  The
+ * section is taken in that half plane: u = rho - R and v the distance in
+ * y to the nearest crossing, divided by shape (a wider tube in y for
+ * shape > 1), then turned by the rotation.  The value, less r, never
+ * exceeds rho + R - r (measured: povray 3.7 bounds it so far from the
+ * strands, and when n w or shape is 0).
+ */
+static double helix1(const double *a) {
+  double x = a[0], y = a[1], z = a[2];
+  double n = a[3], w = a[4], r = a[5], big = a[6], shape = a[7];
+  double rho = sqrt(x * x + z * z);
+  double bound = rho + big;
+  if (n * w == 0 || shape == 0)
+    return bound - r;
+  double phase = n * (atan2(z, x) + w * y) - M_PI;
+  phase -= 2 * M_PI * floor((phase + M_PI) / (2 * M_PI));
+  double u = rho - big, v = phase / (n * w) / shape;
+  turn(&u, &v, a[9] * (M_PI / 180));
+  return fmin(section_norm(u, v, a[8]), bound) - r;
+}
+
+/*
+ * f_helix2: one strand whose centre is R (cos w y, sin w y) in the plane
+ * of constant y, a twisted bar when r > R ("needs a negated function").
+ * The section is in that plane, in axes that turn with the strand; the
+ * number of helixes, the shape and the rotation do not count (measured:
+ * povray 3.7 gives the same values whatever they are).
+ */
+static double helix2(const double *a) {
+  double x = a[0], y = a[1], z = a[2];
+  double w = a[4], r = a[5], big = a[6];
+  double u = x - big * cos(w * y), v = z - big * sin(w * y);
+  turn(&u, &v, -w * y);
+  return section_norm(u, v, a[8]) - r;
+}
+
+/*
  * The implemented internals.  Each formula was fitted to povray 3.7's
  * values at several points, signs, clipping and edge cases included
  * (tests/test_function.c quotes them): f_r, f_th and f_ph are spherical
@@ -301,6 +374,10 @@ static double eval_internal(int number, const double *a) {
   double x = a[0], y = a[1], z = a[2];
   double r = sqrt(x * x + y * y + z * z);
   switch (number) {
+  case 25:
+    return helix1(a);
+  case 26:
+    return helix2(a);
   case 29:
     return hetero_mf(a);
   case 59:
@@ -504,6 +581,15 @@ static double run(const zr_fn *f, double *base) {
       sp[-1] = v[i->n];
       NEXT();
     }
+    CASE(OP_XFORM) {
+      /* Component n of the top three values as a point moved by
+         transforms[arg]. */
+      zr_vec3 q = zr__xform_point(f->transforms[i->arg]->m,
+                                  zr_v3(sp[-3], sp[-2], sp[-1]));
+      sp -= 2;
+      sp[-1] = i->n == 0 ? q.x : i->n == 1 ? q.y : q.z;
+      NEXT();
+    }
     CASE(OP_RETURN) return sp[-1];
 #ifndef VM_THREADED
     default: return NAN; /* never: every opcode has its case */
@@ -546,6 +632,8 @@ typedef struct compiler {
   size_t n_pigments, cap_pigments;
   const zr_sdl_spline **splines;
   size_t n_splines, cap_splines;
+  const zr_transform **transforms;
+  size_t n_transforms, cap_transforms;
   int texture_kind;
   int height, max_height; /* operand stack depth now and at most */
   int need_calls;         /* the deepest a call reaches above base */
@@ -972,6 +1060,47 @@ static int add_spline(compiler *c, const zr_sdl_spline *s) {
   return (int)c->n_splines++;
 }
 
+/* Adds a transform to the body's pool; its index, or -1. */
+static int add_transform(compiler *c, const zr_transform *t) {
+  if (!grow(c, (void **)&c->transforms, &c->cap_transforms,
+            c->n_transforms, sizeof *c->transforms))
+    return -1;
+  c->transforms[c->n_transforms] = t;
+  return (int)c->n_transforms++;
+}
+
+/* F(x, y, z).component for a transform function F (its value is a
+   vector, "Function"): one OP_XFORM on this body's copy of F's
+   transform. */
+static bool call_transform(compiler *c, const zr_fn *callee,
+                           const zr_sdl_token *name) {
+  int n = arguments(c);
+  if (n < 0)
+    return false;
+  if (n != 3)
+    return fail_at(c, name, ZR_ESYNTAX,
+                   "function '%s' takes 3 arguments, not %d", name->v.str,
+                   n);
+  if (!accept(c, '.'))
+    return expected(c, "'.' and a vector component after a transform "
+                       "function");
+  static const char *const items[] = {"x", "y", "z", "u", "v",
+                                      "red", "green", "blue"};
+  static const int channel[] = {0, 1, 2, 0, 1, 0, 1, 2};
+  for (size_t k = 0; k < sizeof items / sizeof items[0]; k++) {
+    if (is_word(tok(c), items[k]) ||
+        (tok(c)->kind == T_IDENTIFIER && strcmp(tok(c)->v.str,
+                                                items[k]) == 0)) {
+      c->pos++;
+      int at = add_transform(c, callee->transforms[0]);
+      if (at < 0)
+        return false;
+      return emit(c, OP_XFORM, at, channel[k], -2);
+    }
+  }
+  return expected(c, "a vector component after '.'");
+}
+
 /* F(t).component for a spline function F ("Spline": a function of a
    spline returns a vector): one OP_SPLINE on this body's copy of F's
    spline. */
@@ -1017,6 +1146,9 @@ static bool declared(compiler *c, const zr_sdl_token *name) {
   if (v->kind == ZR_SDL_FUNCTION &&
       ((const zr_fn *)v->ptr)->texture_kind == FN_SPLINE)
     return call_spline(c, v->ptr, name);
+  if (v->kind == ZR_SDL_FUNCTION &&
+      ((const zr_fn *)v->ptr)->texture_kind == FN_TRANSFORM)
+    return call_transform(c, v->ptr, name);
   if (v->kind == ZR_SDL_FUNCTION)
     return call_function(c, v->ptr, name);
   if (v->kind == ZR_SDL_FLOAT)
@@ -1223,24 +1355,6 @@ static bool parameter_list(compiler *c) {
   return want(c, ')', "',' or ')'");
 }
 
-/* Skips a balanced { ... } block whose '{' is the current token.  A
-   directive stops it: skipping one could carry the reading past the
-   #end of the macro the function is written in. */
-static bool skip_block(compiler *c) {
-  int depth = 0;
-  do {
-    const zr_sdl_token *t = tok(c);
-    if (t->kind == 0 || is_directive(t))
-      return expected(c, "'}'");
-    if (is_char(t, '{'))
-      depth++;
-    else if (is_char(t, '}'))
-      depth--;
-    c->pos++;
-  } while (depth > 0);
-  return true;
-}
-
 /*
  * pattern { PATTERN ... } and pigment { ... } bodies: read by the
  * grammar itself (a nested parse from the 'pattern' or 'pigment' token,
@@ -1325,22 +1439,40 @@ static const zr_sdl_spline *spline_named(compiler *c) {
   return s && s->value.kind == ZR_SDL_SPLINE ? s->value.ptr : NULL;
 }
 
-/* Bodies of the other special kinds (transform, spline): parsed over,
-   usable once the code evaluates them. */
-static bool special_body(compiler *c, const char *w) {
-  static const char *const reasons[] = {
-      "pattern functions", "pigment functions", "transform functions",
-      "spline functions"};
-  static const char *const kinds[] = {"pattern", "pigment", "transform",
-                                      "spline"};
-  c->pos++;
-  for (int k = 0; k < 4; k++)
-    if (strcmp(w, kinds[k]) == 0)
-      c->unsupported = reasons[k];
-  if (!is_char(tok(c), '{'))
-    return expected(c, "'{'");
+/*
+ * function { transform { ... } } ("Function": a transform function takes
+ * a point and gives it transformed, a vector): the grammar reads the
+ * transform (a nested parse from the 'transform' token, ending right
+ * after its '}' or identifier), then the body is x, y, z and one
+ * OP_XFORM, whose x a body calling it alone gets.
+ */
+static bool transform_body(compiler *c) {
+  zr_sdl_parser *p = c->p;
+  size_t frames = p->n_frames;
+  p->frames[frames - 1].pos = c->pos;
+  if (zr__sdl_parse_nested(p, T_START_FN_TRANSFORM) != ZR_OK) {
+    c->failed = true;
+    return false;
+  }
+  c->f = &p->files[c->file];
+  if (p->n_frames != frames || p->frames[frames - 1].file != c->file) {
+    zr_sdl_loc at = zr__sdl_peek_loc(p, 0);
+    zr__sdl_error(p, ZR_ESYNTAX, &at, "a function's transform must end "
+                  "in the file or macro where it begins");
+    c->failed = true;
+    return false;
+  }
+  c->pos = p->frames[frames - 1].pos;
+  int at = add_transform(c, p->nested_rvalue.ptr);
+  if (at < 0)
+    return false;
   c->n_params = 3;
-  return skip_block(c) && emit_const(c, 0);
+  c->n_slots = 3;
+  c->texture_kind = FN_TRANSFORM;
+  for (int k = 0; k < 3; k++)
+    if (!emit(c, OP_LOAD, k, 0, 1))
+      return false;
+  return emit(c, OP_XFORM, at, 0, -2);
 }
 
 /* internal(n) as a whole body: the parameters are the routine's. */
@@ -1399,8 +1531,15 @@ static const zr_fn *finish(compiler *c) {
       p, (c->n_pigments ? c->n_pigments : 1) * sizeof *pigments);
   const zr_sdl_spline **splines = zr__sdl_alloc(
       p, (c->n_splines ? c->n_splines : 1) * sizeof *splines);
-  if (!fn || !code || !consts || !callees || !pigments || !splines)
+  const zr_transform **transforms = zr__sdl_alloc(
+      p, (c->n_transforms ? c->n_transforms : 1) * sizeof *transforms);
+  if (!fn || !code || !consts || !callees || !pigments || !splines ||
+      !transforms)
     return NULL;
+  if (c->n_transforms)
+    memcpy(transforms, c->transforms,
+           c->n_transforms * sizeof *transforms);
+  fn->transforms = (const zr_transform *const *)transforms;
   if (c->n_splines)
     memcpy(splines, c->splines, c->n_splines * sizeof *splines);
   fn->splines = (const zr_sdl_spline *const *)splines;
@@ -1461,7 +1600,7 @@ static bool definition(compiler *c, const zr_sdl_loc *at) {
     if (!spline_code(c, s))
       return false;
   } else if (w && !have_params && strcmp(w, "transform") == 0) {
-    if (!special_body(c, w))
+    if (!transform_body(c))
       return false;
   } else if (!expr(c)) {
     return false;
@@ -1495,6 +1634,7 @@ const zr_fn *zr__sdl_function_parse(zr_sdl_parser *p, const zr_sdl_loc *at) {
   free(c.callees);
   free(c.pigments);
   free(c.splines);
+  free(c.transforms);
   /* A pattern or pigment body ran a nested parse, which may have moved
      the frames (a macro called in it): take the frame anew. */
   fr = &p->frames[p->n_frames - 1];
@@ -1543,6 +1683,13 @@ bool zr__sdl_function_call(zr_sdl_parser *p, const zr_fn *fn,
   if (fn->texture_kind == FN_SPLINE) {
     /* A spline function gives the spline's vector there. */
     *out = zr__sdl_spline_value(fn->splines[0], -1, args->v[0]);
+    return true;
+  }
+  if (fn->texture_kind == FN_TRANSFORM) {
+    /* A transform function gives the point transformed. */
+    zr_vec3 q = zr__xform_point(fn->transforms[0]->m,
+                                zr_v3(args->v[0], args->v[1], args->v[2]));
+    *out = zr__sdl_vec(q.x, q.y, q.z);
     return true;
   }
   if (fn->texture_kind == FN_PIGMENT) {

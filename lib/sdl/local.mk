@@ -12,6 +12,7 @@ lib_libzrcube_la_SOURCES += \
 	lib/sdl/fastexpr.c \
 	lib/sdl/fileio.c \
 	lib/sdl/keywords.c \
+	lib/sdl/numlist.c \
 	lib/sdl/spline.h \
 	lib/sdl/spline.c \
 	lib/sdl/symtab.c \
@@ -47,6 +48,16 @@ tests_test_directives_CPPFLAGS = $(TEST_CPPFLAGS)
 tests_test_directives_LDADD = $(TEST_LDADD)
 tests_test_directives_LDFLAGS = -static
 $(tests_test_directives_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
+
+# Runs of plain mesh2 items read from the bytes (lib/sdl/numlist.c).
+check_PROGRAMS += tests/test_numlist
+TESTS += tests/test_numlist
+tests_test_numlist_SOURCES = tests/test_numlist.c \
+	tests/parse_fixture.c tests/parse_fixture.h
+tests_test_numlist_CPPFLAGS = $(TEST_CPPFLAGS)
+tests_test_numlist_LDADD = $(TEST_LDADD)
+tests_test_numlist_LDFLAGS = -static
+$(tests_test_numlist_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
 
 # User-defined functions (lib/sdl/function.c) and their tests.
 lib_libzrcube_la_SOURCES += lib/sdl/function.h lib/sdl/function.c
@@ -85,6 +96,7 @@ $(tests_test_pattern_more_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
 
 # Cameras, lights and atmospheric effects (issue 3).
 lib_libzrcube_la_SOURCES += lib/sdl/build_camlight.c lib/sdl/build_camlight.h
+lib_libzrcube_la_SOURCES += lib/sdl/build_meshcam.c
 
 # Building tori, polygons and superellipsoids from the grammar.
 lib_libzrcube_la_SOURCES += lib/sdl/build_shape.c lib/sdl/build_shape.h

@@ -70,11 +70,15 @@ typedef struct zr_sdl_expr {
   double v[5];
 } zr_sdl_expr;
 
-/* A comma-separated list of floats: vector literals and matrix. */
+/* A comma-separated list of floats: vector literals and matrix.  The
+   grammar holds lists by pointer, from a pool (zr__sdl_list_new), so
+   its semantic value stays small: bison copies that value at every
+   shift and reduction. */
 #define ZR_SDL_LIST_MAX 16
 typedef struct zr_sdl_list {
   int n;
   double v[ZR_SDL_LIST_MAX];
+  struct zr_sdl_list *next_free; /* in the parser's pool */
 } zr_sdl_list;
 
 typedef enum zr_sdl_kind {
@@ -206,6 +210,12 @@ typedef struct zr_sdl_mod {
 } zr_sdl_mod;
 
 /* The contents of a reflection { ... } block. */
+/* A light_group being read: its union and its global_lights. */
+typedef struct zr_sdl_lgroup {
+  zr_object *object;
+  bool global;
+} zr_sdl_lgroup;
+
 typedef struct zr_sdl_reflection {
   zr_rgb min, max;
   double falloff;
@@ -250,6 +260,21 @@ typedef union zr_sdl_lexval {
 
 /* ---- token arrays ---- */
 
+/*
+ * The kind of the one token that stands for a run of plain mesh2 items
+ * (numlist.c): no bison token has it, only mesh2's fast reader
+ * (build_mesh.c) reads it.
+ */
+#define ZR_SDL_NUMBER_LIST 0x100000
+
+/* Where such a run is in its file's bytes. */
+typedef struct zr_sdl_numlist {
+  size_t begin, end;
+  int line, column; /* of begin */
+  bool uv;          /* uv_vectors: 2-D items too */
+  size_t n_items;
+} zr_sdl_numlist;
+
 typedef struct zr_sdl_token {
   int kind; /* a bison token kind, or a character */
   int line;
@@ -258,8 +283,25 @@ typedef struct zr_sdl_token {
   union {
     double num;
     const char *str; /* interned in the file's arena */
+    const zr_sdl_numlist *list; /* ZR_SDL_NUMBER_LIST */
   } v;
 } zr_sdl_token;
+
+/* Reads a run of plain mesh2 items from bytes [pos, end), counting
+   lines and columns from (line, column). */
+typedef struct zr_sdl_numreader {
+  const char *bytes;
+  size_t pos, end;
+  int line, column;
+  bool uv;       /* 2-D vectors are items too */
+  bool comma_ok; /* a comma may come before the next item */
+} zr_sdl_numreader;
+
+/* The next item of the run: its values (v[2] = 0 for a 2-D one), dim
+   and the place of its '<'.  False, with the reader left where it was,
+   when what follows is not a plain item. */
+bool zr__sdl_numlist_item(zr_sdl_numreader *r, double v[3], int *dim,
+                          int *line, int *column);
 
 /* One scene or include file, lexed once and kept while parsing. */
 typedef struct zr_sdl_file {
@@ -292,6 +334,8 @@ void zr__sdl_file_free(zr_sdl_file *f);
 typedef struct zr_sdl_lexer {
   zr_sdl_file *file;
   int line, column;       /* where the next character is */
+  size_t offset;          /* the same place as a byte of the file */
+  size_t read_pos;        /* the next byte the scanner's input reads */
   int comment_depth;      /* nesting of block comments */
   zr_sdl_loc comment_at;  /* where the outermost open comment began */
   bool failed;
@@ -301,6 +345,7 @@ typedef struct zr_sdl_lexer {
 } zr_sdl_lexer;
 
 /* Called by the scanner's actions (grammar/pov.l). */
+int zr__sdl_lex_input(zr_sdl_lexer *lx, char *buf, int max);
 const char *zr__sdl_lex_intern(zr_sdl_lexer *lx, const char *s, size_t n);
 const char *zr__sdl_lex_string(zr_sdl_lexer *lx, const char *s, size_t n);
 void zr__sdl_lex_fail(zr_sdl_lexer *lx, const zr_sdl_loc *at,
@@ -435,6 +480,7 @@ typedef struct zr_sdl_parser {
   zr_sdl_list nested_list;
   int nested_end;
   zr_sdl_fhandle *handles; /* files #fopen opened, closed at the end */
+  zr_sdl_list *free_lists; /* the grammar's lists, for reuse */
   /* The elements of an array initialiser being parsed, in order. */
   zr_sdl_value *init;
   size_t n_init, cap_init;
@@ -454,6 +500,11 @@ typedef struct zr_sdl_parser {
     zr_vec3 look_at;
     double angle, v_angle;
     zr_transform transform;
+    /* mesh_camera { }: the camera's mesh block while it is read, its
+       meshes in an array of cap_meshes. */
+    zr_mesh_camera *mesh;
+    zr_sdl_loc mesh_at;
+    size_t cap_meshes;
   } camera;
 } zr_sdl_parser;
 
@@ -551,6 +602,10 @@ bool zr__sdl_from_list(zr_sdl_parser *p, const zr_sdl_list *l,
                        const zr_sdl_loc *loc, zr_sdl_expr *out);
 bool zr__sdl_list_add(zr_sdl_parser *p, zr_sdl_list *l, const zr_sdl_expr *e,
                       const zr_sdl_loc *loc);
+/* An empty list from the parser's pool (in the scene's arena), NULL
+   after reporting that memory ran out; release gives it back. */
+zr_sdl_list *zr__sdl_list_new(zr_sdl_parser *p);
+void zr__sdl_list_release(zr_sdl_parser *p, zr_sdl_list *l);
 bool zr__sdl_dot(zr_sdl_parser *p, const zr_sdl_expr *e, int item,
                  const zr_sdl_loc *loc, zr_sdl_expr *out);
 bool zr__sdl_vcall(zr_sdl_parser *p, int func, const zr_sdl_expr *a,
@@ -659,6 +714,11 @@ bool zr__sdl_csg_add_light(zr_sdl_parser *p, zr_object *csg, zr_light *l);
 zr_light *zr__sdl_light_copy(zr_sdl_parser *p, const zr_light *l);
 /* After a CSG object's shallow copy: its own copies of its lights. */
 bool zr__sdl_csg_copy_lights(zr_sdl_parser *p, zr_object *copy);
+/* The closing brace of light_group { } (build_object.c): its lights and
+   objects become a new group's, a group inside it that group's child.
+   global: global_lights on. */
+bool zr__sdl_light_group_done(zr_sdl_parser *p, zr_object *group,
+                              bool global, const zr_sdl_loc *loc);
 /* Adds a finished top-level object to the scene, and the lights that
    its CSG carries to the scene's lights. */
 bool zr__sdl_add_object(zr_sdl_parser *p, zr_object *o,
@@ -776,6 +836,9 @@ bool zr__sdl_normal_map_set(zr_sdl_parser *p, zr_normal *nm,
 bool zr__sdl_texture_map_set(zr_sdl_parser *p, zr_texture *tx,
                              const zr_map *m, const zr_sdl_loc *loc);
 /* spiral1/spiral2 Number_of_Arms on a pattern already of that kind. */
+/* tiling N: N from 1 to 27 (its whole part) and known to lib/scene. */
+bool zr__sdl_tiling(zr_sdl_parser *p, zr_pattern *pt, const zr_sdl_expr *n,
+                    const zr_sdl_loc *loc);
 bool zr__sdl_spiral_arms(zr_sdl_parser *p, zr_pattern *pt,
                          const zr_sdl_expr *arms, const zr_sdl_loc *loc);
 /* pigment_pattern { ... } makes pt that pattern of pg. */
@@ -808,8 +871,28 @@ zr_image_map *zr__sdl_image_map_new(zr_sdl_parser *p, const char *name,
                                     const zr_sdl_loc *loc,
                                     const zr_sdl_expr *gamma,
                                     const zr_sdl_loc *gamma_loc);
+/* The same for what ("image_map", "bump_map" or "material_map"), which
+   messages name; the last two also get the picture's values. */
+zr_image_map *zr__sdl_bitmap_new(zr_sdl_parser *p, const char *what,
+                                 const char *name, const zr_sdl_loc *loc,
+                                 const zr_sdl_expr *gamma,
+                                 const zr_sdl_loc *gamma_loc);
 bool zr__sdl_image_map_mod(zr_sdl_parser *p, zr_image_map *im, int token,
                            const zr_sdl_expr *e, const zr_sdl_loc *loc);
+/* bump_map { } (build_texture.c): a fresh normal holding the picture,
+   its items (T_MAP_TYPE, T_ONCE, T_INTERPOLATE, T_USE_INDEX,
+   T_USE_COLOR, T_BUMP_SIZE), then the normal it goes in. */
+zr_normal *zr__sdl_bump_map_new(zr_sdl_parser *p, zr_image_map *im);
+bool zr__sdl_bump_map_mod(zr_sdl_parser *p, zr_normal *bump, int token,
+                          const zr_sdl_expr *e, const zr_sdl_loc *loc);
+bool zr__sdl_bump_map_end(zr_sdl_parser *p, zr_normal *nm,
+                          const zr_normal *bump, const zr_sdl_loc *loc);
+/* material_map { FILE MODS TEXTURES TRANSFORMS } on texture tx; its
+   textures are appended with their index as their value. */
+bool zr__sdl_material_add(zr_sdl_parser *p, zr_map *m, zr_map_entry *e);
+bool zr__sdl_material_map(zr_sdl_parser *p, zr_texture *tx,
+                          const zr_image_map *im, const zr_map *textures,
+                          const zr_transform *t, const zr_sdl_loc *loc);
 /* "filter INDEX, AMOUNT" or "transmit INDEX, AMOUNT" (token T_FILTER or
    T_TRANSMIT) for one palette entry. */
 bool zr__sdl_image_map_index(zr_sdl_parser *p, zr_image_map *im, int token,

@@ -10,7 +10,8 @@
  * GCC and of Bison's bistromathic example).  The block directives (#if
  * ... #else ... #end, #while ... #end, #macro ... #end) are linked to
  * each other once here, so skipping and looping jump straight to their
- * partner.
+ * partner.  The plain items of a mesh2 list become a single token whose
+ * bytes are read later (numlist.c): they are the bulk of big files.
  */
 #include "config.h"
 
@@ -73,18 +74,23 @@ void zr__sdl_lex_fail(zr_sdl_lexer *lx, const zr_sdl_loc *at,
   lx->error_at = *at;
 }
 
+/* memchr, which the C library runs many bytes at a time: a big mesh2
+   has millions of lines. */
+static const char *next_newline(const zr_sdl_file *f, const char *from) {
+  return memchr(from, '\n', (size_t)(f->bytes + f->size - from));
+}
+
 static zr_status index_lines(zr_sdl_file *f) {
   size_t n = 1;
-  for (size_t i = 0; i < f->size; i++)
-    n += f->bytes[i] == '\n';
+  for (const char *c = f->bytes; c && (c = next_newline(f, c)); c++)
+    n++;
   f->line_starts = malloc(n * sizeof *f->line_starts);
   if (!f->line_starts)
     return ZR_ENOMEM;
   f->line_starts[0] = 0;
   f->n_lines = 1;
-  for (size_t i = 0; i < f->size; i++)
-    if (f->bytes[i] == '\n')
-      f->line_starts[f->n_lines++] = i + 1;
+  for (const char *c = f->bytes; c && (c = next_newline(f, c)); c++)
+    f->line_starts[f->n_lines++] = (size_t)(c + 1 - f->bytes);
   return ZR_OK;
 }
 
@@ -113,6 +119,72 @@ static zr_status push_token(zr_sdl_file *f, size_t *cap,
   }
   f->tokens[f->n_tokens++] = *t;
   return ZR_OK;
+}
+
+int zr__sdl_lex_input(zr_sdl_lexer *lx, char *buf, int max) {
+  const zr_sdl_file *f = lx->file;
+  size_t n = f->size - lx->read_pos;
+  if (n > (size_t)max)
+    n = (size_t)max;
+  memcpy(buf, f->bytes + lx->read_pos, n);
+  lx->read_pos += n;
+  return (int)n;
+}
+
+/* The mesh2 lists whose plain items may be read as one run. */
+static bool number_list_keyword(int kind) {
+  return kind == T_VERTEX_VECTORS || kind == T_NORMAL_VECTORS ||
+         kind == T_UV_VECTORS || kind == T_FACE_INDICES ||
+         kind == T_NORMAL_INDICES || kind == T_UV_INDICES;
+}
+
+/*
+ * After "vertex_vectors { 1000" and the like, the plain items that
+ * follow are read as one run (numlist.c) and kept as one token, and the
+ * scanner goes on after them: a huge mesh2 then costs a few tokens, not
+ * tens of millions.  The run's bytes stay in the file, where build_mesh.c
+ * reads them again with the same reader.
+ */
+static zr_status number_list(zr_sdl_file *f, size_t *cap, zr_sdl_lexer *lx,
+                             yyscan_t scanner) {
+  size_t n = f->n_tokens;
+  if (n < 3 || f->tokens[n - 1].kind != T_NUMBER ||
+      f->tokens[n - 2].kind != '{' ||
+      !number_list_keyword(f->tokens[n - 3].kind))
+    return ZR_OK;
+  zr_sdl_numreader r = {f->bytes, lx->offset, f->size, lx->line,
+                        lx->column, f->tokens[n - 3].kind == T_UV_VECTORS,
+                        true};
+  size_t items = 0;
+  double v[3];
+  int dim, line, column;
+  while (zr__sdl_numlist_item(&r, v, &dim, &line, &column))
+    items++;
+  if (items == 0)
+    return ZR_OK;
+  zr_sdl_numlist *list = zr__arena_alloc(&f->strings, sizeof *list);
+  if (!list)
+    return ZR_ENOMEM;
+  list->begin = lx->offset;
+  list->end = r.pos;
+  list->line = lx->line;
+  list->column = lx->column;
+  list->uv = r.uv;
+  list->n_items = items;
+  zr_sdl_token t;
+  memset(&t, 0, sizeof t);
+  t.kind = ZR_SDL_NUMBER_LIST;
+  t.line = lx->line;
+  t.column = lx->column;
+  t.length = 1;
+  t.v.list = list;
+  zr_status status = push_token(f, cap, &t);
+  /* The scanner forgets what it read ahead and goes on after the run. */
+  lx->offset = lx->read_pos = r.pos;
+  lx->line = r.line;
+  lx->column = r.column;
+  zr__scan_restart(NULL, scanner);
+  return status;
 }
 
 static bool opens_block(int kind) {
@@ -175,11 +247,11 @@ zr_status zr__sdl_file_lex(zr_sdl_file *f, int file_index, char *path,
   yyscan_t scanner;
   if (zr__scan_lex_init_extra(&lx, &scanner) != 0)
     return ZR_ENOMEM;
-  /* A UTF-8 byte order mark is not part of the scene. */
+  /* A UTF-8 byte order mark is not part of the scene.  The scanner
+     reads the bytes through zr__sdl_lex_input(). */
   size_t skip = size >= 3 && memcmp(bytes, "\xEF\xBB\xBF", 3) == 0 ? 3 : 0;
-  YY_BUFFER_STATE buffer =
-      zr__scan__scan_bytes(bytes + skip, (int)(size - skip), scanner);
-  zr_status status = buffer ? ZR_OK : ZR_ENOMEM;
+  lx.offset = lx.read_pos = skip;
+  zr_status status = ZR_OK;
   size_t cap = 0;
   while (status == ZR_OK) {
     ZR__POV_STYPE value;
@@ -210,9 +282,9 @@ zr_status zr__sdl_file_lex(zr_sdl_file *f, int file_index, char *path,
     status = push_token(f, &cap, &t);
     if (kind == 0)
       break;
+    if (status == ZR_OK && kind == T_NUMBER)
+      status = number_list(f, &cap, &lx, scanner);
   }
-  if (buffer)
-    zr__scan__delete_buffer(buffer, scanner);
   zr__scan_lex_destroy(scanner);
   if (status == ZR_OK)
     status = link_blocks(f);

@@ -111,6 +111,24 @@ void zr__sdl_negate(zr_sdl_expr *e) {
     e->v[i] = -e->v[i];
 }
 
+zr_sdl_list *zr__sdl_list_new(zr_sdl_parser *p) {
+  zr_sdl_list *l = p->free_lists;
+  if (l)
+    p->free_lists = l->next_free;
+  else if (!(l = zr__sdl_alloc(p, sizeof *l)))
+    return NULL;
+  l->n = 0;
+  l->next_free = NULL;
+  return l;
+}
+
+/* A list the grammar dropped after an error is not given back: the
+   arena frees it with the scene. */
+void zr__sdl_list_release(zr_sdl_parser *p, zr_sdl_list *l) {
+  l->next_free = p->free_lists;
+  p->free_lists = l;
+}
+
 bool zr__sdl_list_add(zr_sdl_parser *p, zr_sdl_list *l, const zr_sdl_expr *e,
                       const zr_sdl_loc *loc) {
   if (e->dim != 1) {

@@ -3,11 +3,12 @@
  * down with the binned surface area heuristic (Wald, "On fast
  * Construction of SAH-based Bounding Volume Hierarchies", 2007).
  *
- * Each node's primitives are sorted into BINS buckets by the centre of
+ * Each node's primitives are sorted into 16 bins by the centre of
  * their boxes along the widest axis of those centres; the split between
  * buckets that minimises  A_left * N_left + A_right * N_right  (areas of
  * the child boxes, the expected number of intersection tests for a ray
- * that hits the node) wins, unless a leaf is cheaper.  Nodes live in one
+ * that hits the node) wins, unless a leaf is cheaper; that sweep,
+ * zr__sah_sweep, serves each mesh's hierarchy too.  Nodes live in one
  * array in depth-first order: an inner node's left child follows it and
  * its right child's index is stored.
  *
@@ -26,7 +27,6 @@
 #include "core/context.h"
 
 enum {
-  BINS = 16,
   LEAF_MAX = 4,     /* a node this small is always a leaf */
   DEPTH_MAX = 60,   /* beyond this splits fall back to the median */
   STACK_MAX = 128
@@ -65,10 +65,22 @@ static void box_empty(box3 *b) {
   }
 }
 
+/* fmin and fmax as glibc computes them (the second operand when the
+   two are equal, the other one when one is a NaN), in comparisons that
+   -O2 keeps inline where fmin and fmax stay calls: the builder's boxes
+   are the same floats, bit for bit, a few times faster. */
+static inline double min_of(double a, double b) {
+  return a < b || b != b ? a : b;
+}
+
+static inline double max_of(double a, double b) {
+  return a > b || b != b ? a : b;
+}
+
 static void box_grow(box3 *b, const double lo[3], const double hi[3]) {
   for (int i = 0; i < 3; i++) {
-    b->lo[i] = fmin(b->lo[i], lo[i]);
-    b->hi[i] = fmax(b->hi[i], hi[i]);
+    b->lo[i] = min_of(b->lo[i], lo[i]);
+    b->hi[i] = max_of(b->hi[i], hi[i]);
   }
 }
 
@@ -117,16 +129,80 @@ static zr_status new_node(builder *b, size_t *index) {
   return ZR_OK;
 }
 
+/* box_grow with plain comparisons, which -O2 makes instructions where
+   fmin and fmax stay calls: the sweep runs once per node of a
+   million-triangle mesh.  (The sweep's boxes hold no NaN.) */
+static void sweep_grow(box3 *b, const double lo[3], const double hi[3]) {
+  for (int i = 0; i < 3; i++) {
+    b->lo[i] = lo[i] < b->lo[i] ? lo[i] : b->lo[i];
+    b->hi[i] = hi[i] > b->hi[i] ? hi[i] : b->hi[i];
+  }
+}
+
+int zr__sah_sweep(const zr_sah_bin bins[ZR_SAH_BINS], size_t n,
+                  double *cost) {
+  /* Sweep from the right to know the right side's cost of every split,
+     then from the left to find the cheapest. */
+  double right_cost[ZR_SAH_BINS];
+  box3 acc;
+  box_empty(&acc);
+  size_t acc_n = 0;
+  for (int k = ZR_SAH_BINS - 1; k > 0; k--) {
+    if (bins[k].count)
+      sweep_grow(&acc, bins[k].lo, bins[k].hi);
+    acc_n += bins[k].count;
+    right_cost[k] = acc_n ? box_area(&acc) * (double)acc_n : 0.0;
+  }
+  double best = INFINITY;
+  int best_k = -1;
+  box_empty(&acc);
+  acc_n = 0;
+  for (int k = 1; k < ZR_SAH_BINS; k++) {
+    if (bins[k - 1].count)
+      sweep_grow(&acc, bins[k - 1].lo, bins[k - 1].hi);
+    acc_n += bins[k - 1].count;
+    if (acc_n == 0 || acc_n == n)
+      continue;
+    double c = box_area(&acc) * (double)acc_n + right_cost[k];
+    if (c < best) {
+      best = c;
+      best_k = k;
+    }
+  }
+  *cost = best;
+  return best_k;
+}
+
+static int bin_of(double c, double lo, double scale) {
+  int k = (int)((c - lo) * scale);
+  return k < 0 ? 0 : k >= ZR_SAH_BINS ? ZR_SAH_BINS - 1 : k;
+}
+
+/* A node's box and the box of its primitives' centres. */
+typedef struct node_boxes {
+  box3 bounds, centres;
+} node_boxes;
+
+static void boxes_of(const build_item *items, size_t n, node_boxes *out) {
+  box_empty(&out->bounds);
+  box_empty(&out->centres);
+  for (size_t i = 0; i < n; i++) {
+    box_grow(&out->bounds, items[i].lo, items[i].hi);
+    box_grow(&out->centres, items[i].centre, items[i].centre);
+  }
+}
+
 /*
  * Chooses where to split items[0..n) by the binned SAH.  Returns the
  * number that go left (0 when a leaf is cheaper or no split separates
- * anything), reordering items so those come first.
+ * anything), reordering items so those come first; sides gets the boxes
+ * of both sides, the unions of their bins' (the values a pass over each
+ * side would find, so the children make none).
  */
-static size_t sah_split(build_item *items, size_t n, const box3 *bounds) {
-  box3 cb;
-  box_empty(&cb);
-  for (size_t i = 0; i < n; i++)
-    box_grow(&cb, items[i].centre, items[i].centre);
+static size_t sah_split(build_item *items, size_t n, const node_boxes *node,
+                        node_boxes sides[2]) {
+  const box3 *bounds = &node->bounds;
+  box3 cb = node->centres;
   int axis = 0;
   double ext = -1.0;
   for (int a = 0; a < 3; a++)
@@ -136,44 +212,29 @@ static size_t sah_split(build_item *items, size_t n, const box3 *bounds) {
     }
   if (!(ext > 0.0))
     return 0;
-  size_t counts[BINS] = {0};
-  box3 bins[BINS];
-  for (int i = 0; i < BINS; i++)
-    box_empty(&bins[i]);
-  double scale = BINS / ext;
-  for (size_t i = 0; i < n; i++) {
-    int k = (int)((items[i].centre[axis] - cb.lo[axis]) * scale);
-    k = k < 0 ? 0 : k >= BINS ? BINS - 1 : k;
-    counts[k]++;
-    box_grow(&bins[k], items[i].lo, items[i].hi);
-  }
-  /* Sweep from the right to know the right side's cost of every split. */
-  double right_cost[BINS];
-  box3 acc;
-  box_empty(&acc);
-  size_t acc_n = 0;
-  for (int k = BINS - 1; k > 0; k--) {
-    if (counts[k])
-      box_grow(&acc, bins[k].lo, bins[k].hi);
-    acc_n += counts[k];
-    right_cost[k] = acc_n ? box_area(&acc) * (double)acc_n : 0.0;
-  }
-  double best = INFINITY;
-  int best_k = -1;
-  box_empty(&acc);
-  acc_n = 0;
-  for (int k = 1; k < BINS; k++) {
-    if (counts[k - 1])
-      box_grow(&acc, bins[k - 1].lo, bins[k - 1].hi);
-    acc_n += counts[k - 1];
-    if (acc_n == 0 || acc_n == n)
-      continue;
-    double cost = box_area(&acc) * (double)acc_n + right_cost[k];
-    if (cost < best) {
-      best = cost;
-      best_k = k;
+  zr_sah_bin bins[ZR_SAH_BINS];
+  box3 bin_centres[ZR_SAH_BINS];
+  for (int i = 0; i < ZR_SAH_BINS; i++) {
+    for (int a = 0; a < 3; a++) {
+      bins[i].lo[a] = INFINITY;
+      bins[i].hi[a] = -INFINITY;
     }
+    bins[i].count = 0;
+    box_empty(&bin_centres[i]);
   }
+  double scale = ZR_SAH_BINS / ext;
+  for (size_t i = 0; i < n; i++) {
+    int k = bin_of(items[i].centre[axis], cb.lo[axis], scale);
+    zr_sah_bin *bin = &bins[k];
+    bin->count++;
+    for (int a = 0; a < 3; a++) {
+      bin->lo[a] = min_of(bin->lo[a], items[i].lo[a]);
+      bin->hi[a] = max_of(bin->hi[a], items[i].hi[a]);
+    }
+    box_grow(&bin_centres[k], items[i].centre, items[i].centre);
+  }
+  double best;
+  int best_k = zr__sah_sweep(bins, n, &best);
   if (best_k < 0)
     return 0;
   /* A traversal step costs about as much as one intersection test. */
@@ -181,11 +242,20 @@ static size_t sah_split(build_item *items, size_t n, const box3 *bounds) {
   double split_cost = box_area(bounds) + best;
   if (n <= 16 && split_cost >= leaf_cost)
     return 0;
+  for (int side = 0; side < 2; side++) {
+    box_empty(&sides[side].bounds);
+    box_empty(&sides[side].centres);
+  }
+  for (int k = 0; k < ZR_SAH_BINS; k++) {
+    node_boxes *side = &sides[k >= best_k];
+    if (bins[k].count) {
+      box_grow(&side->bounds, bins[k].lo, bins[k].hi);
+      box_grow(&side->centres, bin_centres[k].lo, bin_centres[k].hi);
+    }
+  }
   size_t left = 0;
   for (size_t i = 0; i < n; i++) {
-    int k = (int)((items[i].centre[axis] - cb.lo[axis]) * scale);
-    k = k < 0 ? 0 : k >= BINS ? BINS - 1 : k;
-    if (k < best_k) {
+    if (bin_of(items[i].centre[axis], cb.lo[axis], scale) < best_k) {
       build_item t = items[i];
       items[i] = items[left];
       items[left] = t;
@@ -209,23 +279,33 @@ static size_t median_split(build_item *items, size_t n) {
   return n / 2;
 }
 
-static zr_status build_node(builder *b, size_t first, size_t n, int depth) {
+/* The node of items [first, first + n); known (NULL: not known) holds
+   its boxes when its parent's split found them. */
+static zr_status build_node(builder *b, size_t first, size_t n, int depth,
+                            const node_boxes *known) {
   size_t index;
   zr_status s = new_node(b, &index);
   if (s != ZR_OK)
     return s;
   if (depth > b->depth)
     b->depth = depth;
-  box3 bounds;
-  box_empty(&bounds);
-  for (size_t i = first; i < first + n; i++)
-    box_grow(&bounds, b->items[i].lo, b->items[i].hi);
-  memcpy(b->nodes[index].lo, bounds.lo, sizeof bounds.lo);
-  memcpy(b->nodes[index].hi, bounds.hi, sizeof bounds.hi);
+  node_boxes node;
+  if (known)
+    node = *known;
+  else
+    boxes_of(b->items + first, n, &node);
+  memcpy(b->nodes[index].lo, node.bounds.lo, sizeof node.bounds.lo);
+  memcpy(b->nodes[index].hi, node.bounds.hi, sizeof node.bounds.hi);
   size_t left = 0;
+  node_boxes sides[2];
+  bool sides_known = false;
   if (n > LEAF_MAX) {
-    left = depth < DEPTH_MAX ? sah_split(b->items + first, n, &bounds)
-                             : median_split(b->items + first, n);
+    if (depth < DEPTH_MAX) {
+      left = sah_split(b->items + first, n, &node, sides);
+      sides_known = left > 0;
+    } else {
+      left = median_split(b->items + first, n);
+    }
     /* Too many primitives sharing one centre: force a split so leaves
        stay small unless they are all truly coincident. */
     if (left == 0 && n > 16)
@@ -237,11 +317,12 @@ static zr_status build_node(builder *b, size_t first, size_t n, int depth) {
     return ZR_OK;
   }
   b->nodes[index].count = 0;
-  s = build_node(b, first, left, depth + 1);
+  s = build_node(b, first, left, depth + 1, sides_known ? &sides[0] : NULL);
   if (s != ZR_OK)
     return s;
   b->nodes[index].first = (uint32_t)b->n_nodes;
-  return build_node(b, first + left, n - left, depth + 1);
+  return build_node(b, first + left, n - left, depth + 1,
+                    sides_known ? &sides[1] : NULL);
 }
 
 zr_status zr__bvh_build(zr_scene *scene, zr_context *ctx) {
@@ -278,7 +359,7 @@ zr_status zr__bvh_build(zr_scene *scene, zr_context *ctx) {
     it->object = o;
   }
   if (nb > 0) {
-    s = build_node(&b, 0, nb, 0);
+    s = build_node(&b, 0, nb, 0, NULL);
     if (s != ZR_OK)
       goto fail;
   }

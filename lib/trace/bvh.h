@@ -36,6 +36,25 @@ typedef bool (*zr_crossing_fn)(const zr_hit *hit, void *user);
 bool zr__bvh_all(const struct zr_bvh *bvh, const zr_ray *ray, double tmin,
                  double tmax, zr_crossing_fn visit, void *user);
 
+/*
+ * The sweep of the binned surface area heuristic (Wald 2007), shared by
+ * this hierarchy and each mesh's (obj_mesh.c).  A node's primitives are
+ * put in ZR_SAH_BINS bins along one axis by their centres; a bin holds
+ * their count and the box of their boxes.  Returns the k, 1 to
+ * ZR_SAH_BINS - 1, for which bins [0, k) going left and the rest right
+ * costs least, A_left N_left + A_right N_right (areas of the two sides'
+ * boxes, the expected number of intersection tests for a ray that
+ * meets the node), with that cost in *cost; -1 when every split leaves
+ * a side empty.  n is the node's number of primitives.
+ */
+enum { ZR_SAH_BINS = 16 };
+typedef struct zr_sah_bin {
+  double lo[3], hi[3];
+  size_t count;
+} zr_sah_bin;
+int zr__sah_sweep(const zr_sah_bin bins[ZR_SAH_BINS], size_t n,
+                  double *cost);
+
 /* Statistics for tests and the benchmark note. */
 typedef struct zr_bvh_info {
   size_t nodes;

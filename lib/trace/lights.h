@@ -36,6 +36,27 @@ double zr__light_fade(const zr_light *light, double distance);
 zr_rgb zr__light_visibility(const zr_tracer *tracer, const zr_light *light,
                             zr_vec3 p, zr_vec3 lit_from);
 
+/*
+ * Whether light lights object, as light groups decide ("Light Group"):
+ * a light of no group lights the objects of no group, and those of a
+ * group with global_lights on; a light of a group lights the objects of
+ * that group and of the groups nested in it.  Every object casts
+ * shadows for every light, in a group or not (measured on POV-Ray 3.7).
+ */
+static inline bool zr__light_lights(const zr_scene *scene,
+                                    const zr_light *light,
+                                    const zr_object *object) {
+  uint32_t g = object->light_group;
+  if (light->light_group == 0 && g == 0)
+    return true;
+  if (light->light_group == 0)
+    return scene->light_groups[g].global_lights;
+  for (; g != 0; g = scene->light_groups[g].parent)
+    if (g == light->light_group)
+      return true;
+  return false;
+}
+
 /* The grid point (i, j) of an area light seen from p, jitter included
    (the hash is of p, so the picture does not depend on threads). */
 zr_vec3 zr__area_light_point(const zr_light *light, zr_vec3 p, int i, int j);

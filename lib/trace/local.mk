@@ -75,6 +75,7 @@ $(tests_test_csg_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
 # (issue 3), and their tests.
 lib_libzrcube_la_SOURCES += \
 	lib/trace/camera.c \
+	lib/trace/camera_mesh.c \
 	lib/trace/lights.c lib/trace/lights.h \
 	lib/trace/atmosphere.c lib/trace/atmosphere.h
 check_PROGRAMS += tests/test_camlight
@@ -85,6 +86,16 @@ tests_test_camlight_CPPFLAGS = $(TEST_CPPFLAGS)
 tests_test_camlight_LDADD = $(TEST_LDADD)
 tests_test_camlight_LDFLAGS = -static
 $(tests_test_camlight_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
+# mesh_camera, omnimax and transform functions (lib/trace/camera_mesh.c,
+# lib/sdl/build_meshcam.c).
+check_PROGRAMS += tests/test_meshcam
+TESTS += tests/test_meshcam
+tests_test_meshcam_SOURCES = tests/test_meshcam.c \
+	tests/parse_fixture.c tests/parse_fixture.h
+tests_test_meshcam_CPPFLAGS = $(TEST_CPPFLAGS)
+tests_test_meshcam_LDADD = $(TEST_LDADD)
+tests_test_meshcam_LDFLAGS = -static
+$(tests_test_meshcam_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
 
 # Torus, polygon, superellipsoid, prism, lathe, blob and sor, and the
 # polynomial root finder they and later shapes share (issue 3).
@@ -151,6 +162,15 @@ tests_test_shapes_CPPFLAGS = $(TEST_CPPFLAGS)
 tests_test_shapes_LDADD = $(TEST_LDADD)
 tests_test_shapes_LDFLAGS = -static
 $(tests_test_shapes_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
+# light_group and blob components' own textures, rendered.
+check_PROGRAMS += tests/test_lightgroup
+TESTS += tests/test_lightgroup
+tests_test_lightgroup_SOURCES = tests/test_lightgroup.c \
+	tests/parse_fixture.c tests/parse_fixture.h tests/test_util.h
+tests_test_lightgroup_CPPFLAGS = $(TEST_CPPFLAGS)
+tests_test_lightgroup_LDADD = $(TEST_LDADD)
+tests_test_lightgroup_LDFLAGS = -static
+$(tests_test_lightgroup_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
 
 # bicubic_patch, sphere_sweep and julia_fractal, parsed and traced.
 check_PROGRAMS += tests/test_surfaces

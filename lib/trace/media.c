@@ -165,7 +165,9 @@ static zr_rgb in_scattered(const walk *w, zr_vec3 p, zr_rgb sc) {
   zr_rgb sum = zr_rgb3(0, 0, 0);
   for (size_t i = 0; i < scene->n_lights; i++) {
     const zr_light *light = &scene->lights[i];
-    if (!light->media_interaction)
+    /* A light_group's lights light no media: zRcube does not yet tell
+       a group's media from others. */
+    if (!light->media_interaction || light->light_group != 0)
       continue;
     zr_vec3 l;
     zr_rgb lc;
@@ -487,7 +489,9 @@ static int lit_spans(const walk *w, double depth, lit_span *out) {
   const zr_scene *scene = w->tr->scene;
   for (size_t i = 0; i < scene->n_lights && n < MAX_LIGHTS; i++) {
     const zr_light *light = &scene->lights[i];
-    if (!light->media_interaction)
+    /* A light_group's lights light no media: zRcube does not yet tell
+       a group's media from others. */
+    if (!light->media_interaction || light->light_group != 0)
       continue;
     if (light->kind == ZR_LIGHT_POINT) {
       s0[n] = 0.0;

@@ -149,37 +149,46 @@ static int compare_double(const void *a, const void *b) {
   return (x > y) - (x < y);
 }
 
+/* Component c's field at p (blob space), and its gradient added to
+   *grad when grad is not NULL. */
+static double component_field(const zr_blob_component *c, zr_vec3 p,
+                              zr_vec3 *grad) {
+  zr_vec3 q = c->transform ? zr__xform_point(c->transform->inv, p) : p;
+  zr_vec3 v = zr_v3_sub(q, c->a); /* from the nearest axis point */
+  if (c->cylinder) {
+    zr_vec3 axis = zr_v3_sub(c->b, c->a);
+    double ll = zr_v3_dot(axis, axis);
+    double s = ll > 0.0 ? zr_v3_dot(v, axis) / ll : 0.0;
+    s = fmin(1.0, fmax(0.0, s));
+    v = zr_v3_sub(q, zr_v3_madd(c->a, axis, s));
+  }
+  double rr = c->radius * c->radius, dd = zr_v3_dot(v, v);
+  if (!(dd < rr))
+    return 0.0;
+  double k = 1.0 - dd / rr;
+  if (grad) {
+    /* d/dq of s k^2 is -2 s k / rr; grad q = 2 v (local). */
+    zr_vec3 gl = zr_v3_scale(v, -4.0 * c->strength * k / rr);
+    if (c->transform)
+      gl = zr__xform_normal(c->transform->inv, gl);
+    *grad = zr_v3_add(*grad, gl);
+  }
+  return c->strength * k * k;
+}
+
 /* The field and its gradient (blob space) at p. */
 static double field(const zr_object *o, zr_vec3 p, zr_vec3 *grad) {
   double sum = 0.0;
-  zr_vec3 g = zr_v3(0, 0, 0);
-  for (size_t i = 0; i < o->u.blob.n_components; i++) {
-    const zr_blob_component *c = &o->u.blob.components[i];
-    zr_vec3 q = c->transform ? zr__xform_point(c->transform->inv, p) : p;
-    zr_vec3 v = zr_v3_sub(q, c->a); /* from the nearest axis point */
-    if (c->cylinder) {
-      zr_vec3 axis = zr_v3_sub(c->b, c->a);
-      double ll = zr_v3_dot(axis, axis);
-      double s = ll > 0.0 ? zr_v3_dot(v, axis) / ll : 0.0;
-      s = fmin(1.0, fmax(0.0, s));
-      v = zr_v3_sub(q, zr_v3_madd(c->a, axis, s));
-    }
-    double rr = c->radius * c->radius, dd = zr_v3_dot(v, v);
-    if (!(dd < rr))
-      continue;
-    double k = 1.0 - dd / rr;
-    sum += c->strength * k * k;
-    if (grad) {
-      /* d/dq of s k^2 is -2 s k / rr; grad q = 2 v (local). */
-      zr_vec3 gl = zr_v3_scale(v, -4.0 * c->strength * k / rr);
-      if (c->transform)
-        gl = zr__xform_normal(c->transform->inv, gl);
-      g = zr_v3_add(g, gl);
-    }
-  }
   if (grad)
-    *grad = g;
+    *grad = zr_v3(0, 0, 0);
+  for (size_t i = 0; i < o->u.blob.n_components; i++)
+    sum += component_field(&o->u.blob.components[i], p, grad);
   return sum;
+}
+
+double zr__blob_component_density(const zr_object *o, size_t i,
+                                  zr_vec3 p) {
+  return component_field(&o->u.blob.components[i], p, NULL);
 }
 
 double zr__blob_density(const zr_object *o, zr_vec3 p) {

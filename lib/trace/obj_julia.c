@@ -4,39 +4,41 @@
  * plane, whose sequence h, f(h) + p, f(f(h) + p) + p, ... stays within
  * the escape radius for max_iteration steps.
  *
- * The slice: a 3-D point (x, y, z) is the 4-D point (x, y, z, w) with
- * w = (distance - n.x x - n.y y - n.z z) / n.w, as POV-Ray maps it.  The
- * escape test and the bounding sphere are POV-Ray's (source
- * core/shape/fractal.cpp): for quaternions the radius is 1 + |p|, at
- * most 2, and a point escapes when |h|^2 exceeds that radius squared;
- * hypercomplex numbers use radius 4.  Since the set is defined by a
- * finite number of steps, these radii shape the object and must match.
+ * The slice: the manual's plane perpendicular to the 4-D normal n at
+ * the given distance, projected to 3-D by dropping w, so (x, y, z) is
+ * the 4-D point (x, y, z, w) with w = (distance - n.x x - n.y y -
+ * n.z z) / n.w (hence n.w may not be 0).  The escape radius is the
+ * manual's 4 for hypercomplex numbers; for quaternions POV-Ray 3.7's
+ * renders measure 1 + |p|, at most 2 (with max_iteration 2,
+ * p = <0.5, 0, 0, 0> reaches +-1 on the x axis and +-1.414 on the y
+ * axis, where radius 4 would give +-1.87; p = 0 reaches 1, p = <3, 0,
+ * 0, 0> +-0.56 across its silhouette; zRcube's renders of these match
+ * to the pixel).  Since the set is defined by a
+ * finite number of steps, the radius shapes the object.  The bounding
+ * sphere is the escape radius: nothing beyond it is inside.
  *
  * Quaternion squares and cubes follow from q = (x, v), v = (y, z, w):
  * q^2 = (x^2 - |v|^2, 2 x v), q^3 = (x^3 - 3 x |v|^2, (3 x^2 - |v|^2) v).
- * Hypercomplex numbers multiply componentwise in their "duplex" form,
- * the complex pair a = (x - w) + i (y + z), b = (x + w) + i (y - z), so
- * a function of one (sqr, cube, reciprocal, exp, ln, the trigonometric
+ * Hypercomplex numbers, with the manual's table of products, are two
+ * copies of the complex numbers: in the "duplex" form a = (x - w) +
+ * i (y + z), b = (x + w) + i (y - z) they multiply part by part, so a
+ * function of one (sqr, cube, reciprocal, exp, ln, the trigonometric
  * and hyperbolic functions and their inverses, pwr) is that complex
- * function of each part, as POV-Ray computes it.  Quaternions have only
- * sqr and cube (the parser refuses the others, as POV-Ray does).
- * (POV-Ray 3.7's hypercomplex `cube` iterates the square, a slip in its
- * source; zRcube computes the cube the keyword asks for.)
+ * function of each part.  Quaternions have only sqr and cube, as the
+ * manual says.  The manual's hypercomplex `cube` is h*h*h, which is
+ * what zRcube computes; POV-Ray 3.7 renders it (measured, 200 x 200,
+ * p = <-0.4, 0.3, 0.1, 0>, max_iteration 8) with nearly the silhouette
+ * of its `sqr` (872 pixels differ) and far from a cube's (2587).
  *
- * Along a ray the tracer marches from the bounding sphere's entry, by
- * the larger of POV-Ray's distance estimate (march_sample) and the
- * precision's step (1 / precision, as POV-Ray's "precision" is), and
- * bisects each change between inside and outside down to POV-Ray's
- * tolerance.  The estimates are POV-Ray's rather than rigorous bounds
- * so that the same specks of a dusty set appear.  The march starts at
- * the same place whatever the interval asked for, so a crossing's t
- * never depends on it.  The normal is the gradient of |h_N|^2 over
- * (x, y, z) at the crossing's inside end (N = max_iteration), by
- * forward differentiation of the iteration, which is how POV-Ray
- * shades it (for the hypercomplex functions other than sqr and cube
- * with POV-Ray's stand-in factors, see hypercomplex_step); POV-Ray
- * leaves out how w follows x, y and z on a tilted slice, zRcube does
- * not.
+ * Along a ray the tracer marches from the bounding sphere's entry by
+ * the larger of a distance estimate (march_sample; the manual uses one
+ * for quaternions) and the precision's step, 1 / precision, and
+ * bisects each change between inside and outside down to TOLERANCE.
+ * The march starts at the same place whatever the interval asked for,
+ * so a crossing's t never depends on it.  The normal is the gradient of
+ * |h_N|^2 over (x, y, z) at the crossing's inside end (N =
+ * max_iteration), by forward differentiation of the iteration through
+ * the slice, w following x, y and z.
  */
 #include "trace/obj_sweep.h"
 
@@ -55,7 +57,7 @@ static double complex complex_of(double re, double im) {
 }
 
 /* Bisection stops when the bracket is this small, relative to the
-   bounding radius (POV-Ray's Fractal_Tolerance is 1e-7 units). */
+   bounding radius: far below a pixel, well above rounding. */
 #define TOLERANCE 1e-7
 
 static double julia_radius(const struct zr_julia *j) {
@@ -160,13 +162,10 @@ static void from_duplex(double complex a, double complex b, double h[4]) {
   h[3] = 0.5 * (creal(b) - creal(a));
 }
 
-/* The complex function of a julia_fractal on one duplex part, with the
-   inverse functions on the branches of POV-Ray's formulas (source
-   core/math/hypercomplex.cpp): asin z = -i ln(i z + sqrt(1 - z^2)),
-   acos z = -i ln(z + sqrt(z^2 - 1)), and so on. */
+/* The complex function of a julia_fractal on one duplex part; the
+   inverse functions take C99's principal branches (ISO C 7.3.5). */
 static double complex part_function(const struct zr_julia *j,
                                     double complex z) {
-  const double complex i = I;
   switch (j->function) {
   case ZR_JULIA_SQR:
     return z * z;
@@ -181,27 +180,27 @@ static double complex part_function(const struct zr_julia *j,
   case ZR_JULIA_SIN:
     return csin(z);
   case ZR_JULIA_ASIN:
-    return -i * clog(i * z + csqrt(1.0 - z * z));
+    return casin(z);
   case ZR_JULIA_COS:
     return ccos(z);
   case ZR_JULIA_ACOS:
-    return -i * clog(z + csqrt(z * z - 1.0));
+    return cacos(z);
   case ZR_JULIA_TAN:
     return ctan(z);
   case ZR_JULIA_ATAN:
-    return 0.5 * i * clog((1.0 - i * z) / (1.0 + i * z));
+    return catan(z);
   case ZR_JULIA_SINH:
     return csinh(z);
   case ZR_JULIA_ASINH:
-    return clog(z + csqrt(z * z + 1.0));
+    return casinh(z);
   case ZR_JULIA_COSH:
     return ccosh(z);
   case ZR_JULIA_ACOSH:
-    return clog(z + csqrt(z * z - 1.0));
+    return cacosh(z);
   case ZR_JULIA_TANH:
     return ctanh(z);
   case ZR_JULIA_ATANH:
-    return 0.5 * clog((1.0 + z) / (1.0 - z));
+    return catanh(z);
   case ZR_JULIA_PWR:
     if (z == 0.0)
       return 0.0;
@@ -210,43 +209,76 @@ static double complex part_function(const struct zr_julia *j,
   return z * z;
 }
 
-/*
- * Hypercomplex h -> f(h), part by part in duplex form, with the
- * derivative columns multiplied by the parts' factors: the derivative
- * for sqr and cube; for the other functions POV-Ray's own factors,
- * which its normals and steps are made of ("up to a constant", its
- * source says): h at the first step, then f(h), or -1/h^2 for
- * reciprocal.  step is the step's number from 0.
- */
-static void hypercomplex_step(const struct zr_julia *j, const double h[4],
-                              int step, double out[4], double (*d)[4],
-                              int n_cols) {
+/* The derivative of part_function at z, where it has the value fz. */
+static double complex part_derivative(const struct zr_julia *j,
+                                      double complex z, double complex fz) {
+  switch (j->function) {
+  case ZR_JULIA_SQR:
+    return 2.0 * z;
+  case ZR_JULIA_CUBE:
+    return 3.0 * z * z;
+  case ZR_JULIA_RECIPROCAL:
+    return -fz * fz;
+  case ZR_JULIA_EXP:
+    return fz;
+  case ZR_JULIA_LN:
+    return z != 0.0 ? 1.0 / z : 0.0;
+  case ZR_JULIA_SIN:
+    return ccos(z);
+  case ZR_JULIA_ASIN:
+    return 1.0 / csqrt(1.0 - z * z);
+  case ZR_JULIA_COS:
+    return -csin(z);
+  case ZR_JULIA_ACOS:
+    return -1.0 / csqrt(1.0 - z * z);
+  case ZR_JULIA_TAN:
+    return 1.0 + fz * fz;
+  case ZR_JULIA_ATAN:
+    return 1.0 / (1.0 + z * z);
+  case ZR_JULIA_SINH:
+    return ccosh(z);
+  case ZR_JULIA_ASINH:
+    return 1.0 / csqrt(z * z + 1.0);
+  case ZR_JULIA_COSH:
+    return csinh(z);
+  case ZR_JULIA_ACOSH:
+    return 1.0 / (csqrt(z - 1.0) * csqrt(z + 1.0));
+  case ZR_JULIA_TANH:
+    return 1.0 - fz * fz;
+  case ZR_JULIA_ATANH:
+    return 1.0 / (1.0 - z * z);
+  case ZR_JULIA_PWR:
+    return z != 0.0 ? complex_of(j->exponent[0], j->exponent[1]) * fz / z
+                    : 0.0;
+  }
+  return 2.0 * z;
+}
+
+/* Hypercomplex h -> f(h), part by part in duplex form, with the
+   derivative columns multiplied part by part by f' (the duplex form
+   makes the algebra two copies of the complex numbers, so f acts on
+   each copy as a holomorphic function).  Returns how much the step
+   stretches small distances at most, max(|f'(a)|, |f'(b)|), as the
+   duplex form is an isometry up to the factor sqrt(2); 0 when neither
+   the columns nor the factor are asked for (want_stretch false). */
+static double hypercomplex_step(const struct zr_julia *j,
+                                const double h[4], double out[4],
+                                double (*d)[4], int n_cols,
+                                bool want_stretch) {
   double complex a, b;
   to_duplex(h, &a, &b);
   double complex fa = part_function(j, a), fb = part_function(j, b);
-  double complex ka, kb;
-  if (j->function == ZR_JULIA_SQR) {
-    ka = 2.0 * a;
-    kb = 2.0 * b;
-  } else if (j->function == ZR_JULIA_CUBE) {
-    ka = 3.0 * a * a;
-    kb = 3.0 * b * b;
-  } else if (step == 0) {
-    ka = a;
-    kb = b;
-  } else if (j->function == ZR_JULIA_RECIPROCAL) {
-    ka = -fa * fa;
-    kb = -fb * fb;
-  } else {
-    ka = fa;
-    kb = fb;
-  }
+  from_duplex(fa, fb, out);
+  if (!n_cols && !want_stretch)
+    return 0.0;
+  double complex ka = part_derivative(j, a, fa);
+  double complex kb = part_derivative(j, b, fb);
   for (int k = 0; k < n_cols; k++) {
     double complex da, db;
     to_duplex(d[k], &da, &db);
     from_duplex(ka * da, kb * db, d[k]);
   }
-  from_duplex(fa, fb, out);
+  return fmax(cabs(ka), cabs(kb));
 }
 
 /* Only the direction of the derivative's columns matters (they make a
@@ -266,91 +298,88 @@ static void rescale(double (*dh)[4]) {
       dh[k][m] = ldexp(dh[k][m], -e);
 }
 
+/* Whether the distance estimate applies: the iteration is a
+   polynomial (Hart, Sandin and Kauffman's estimate comes from the
+   Green's function of a polynomial Julia set).  The manual names the
+   estimate for quaternions; hypercomplex sqr and cube are polynomials
+   in each duplex part, so it holds for them as well. */
+static bool has_estimate(const struct zr_julia *j) {
+  return j->function == ZR_JULIA_SQR || j->function == ZR_JULIA_CUBE;
+}
+
 /*
  * Iterates from s (with the derivative columns when n_cols is 3, kept
  * in range by rescale when asked); true when the point stays inside.
- * For a point that escapes, *escape is the step at which it was seen
- * beyond the radius (s then holds that iterate) and *norms the product
- * of the norms of the iterates before it; *escape is -1 otherwise.
+ * A point is inside when none of h_0 ... h_(N-1) lies beyond the
+ * escape radius, N = max_iteration (the manual's sequence; h_N itself
+ * is not tested, as POV-Ray's renders of p = <0.5, 0, 0, 0> with
+ * max_iteration 2 show: their edge on the x axis is where h_1, not h_2,
+ * reaches the radius).  For a point that escapes, s holds the first
+ * iterate beyond the radius and *stretch, when not NULL, a bound on how
+ * much the iteration up to it stretches small distances: the product
+ * over the steps of each step's bound (quaternions: |d(q^n)| is at most
+ * n |q|^(n-1) |dq|, since |a b| = |a| |b|; hypercomplex numbers: see
+ * hypercomplex_step).
  */
 static bool iterate(const struct zr_julia *j, julia_state *s, int n_cols,
-                    bool keep_in_range, int *escape, double *norms) {
+                    bool keep_in_range, double *stretch) {
   int power = j->function == ZR_JULIA_CUBE ? 3 : 2;
-  *escape = -1;
-  *norms = 1.0;
+  bool quaternion = j->algebra == ZR_JULIA_QUATERNION;
+  if (stretch)
+    *stretch = 1.0;
   for (int i = 0; i < j->max_iteration; i++) {
     double n2 = s->h[0] * s->h[0] + s->h[1] * s->h[1] +
                 s->h[2] * s->h[2] + s->h[3] * s->h[3];
-    if (n2 > j->exit2) {
-      *escape = i;
+    if (n2 > j->exit2)
       return false;
-    }
-    *norms *= sqrt(n2);
-    double next[4];
-    if (j->algebra == ZR_JULIA_QUATERNION)
+    double next[4], k;
+    if (quaternion) {
       quaternion_step(s->h, power, next, s->dh, n_cols);
-    else
-      hypercomplex_step(j, s->h, i, next, s->dh, n_cols);
+      k = power * (power == 2 ? sqrt(n2) : n2);
+    } else {
+      k = hypercomplex_step(j, s->h, next, s->dh, n_cols, stretch != NULL);
+    }
+    if (stretch)
+      *stretch *= k;
     for (int m = 0; m < 4; m++)
       s->h[m] = next[m] + j->c[m];
     if (n_cols && keep_in_range)
       rescale(s->dh);
   }
-  /* POV-Ray tests before each step only, so a point that escapes at
-     the last one is still inside. */
   return true;
 }
 
 static bool point_inside(const struct zr_julia *j, zr_vec3 p) {
   julia_state s;
-  int escape;
-  double norms;
   lift(j, p, &s, false);
-  return iterate(j, &s, 0, false, &escape, &norms);
+  return iterate(j, &s, 0, false, NULL);
 }
 
 /*
- * A point of the march along the unit direction d: whether it is
- * inside, and in *dist how far the march may step from it, POV-Ray's
- * estimates (core/math/quaternion.cpp, hypercomplex.cpp) so the same
- * thin parts are found or stepped over: for quaternions |h| ln|h|^2
- * over power^(i+1) times the product of the norms of the iterates up to
- * the escaped one, the i-th; for hypercomplex numbers the step to where
- * |h|^2 would vanish along the gradient of |h|^2 / 2 at the escape,
- * used only between 1 and 30 times the precision's step.  0 when none
- * applies.
+ * A point of the march: whether it is inside, and in *dist how far the
+ * march may step from it, 0 when no estimate applies.  For a point
+ * that escapes a polynomial iteration, Hart, Sandin and Kauffman's
+ * estimate ("Ray tracing deterministic 3-D fractals", SIGGRAPH 1989)
+ * of the distance to the set: |h| ln |h| / (2 |h'|), with |h'| bounded
+ * above by iterate's stretch, which only shortens the estimate.  Like
+ * the manual's, it is not a proven bound in four dimensions, so the
+ * march still checks every point it steps to.
  */
-static bool march_sample(const struct zr_julia *j, zr_vec3 p, zr_vec3 d,
+static bool march_sample(const struct zr_julia *j, zr_vec3 p,
                          double *dist) {
   julia_state s;
-  int escape;
-  double norms, step = 1.0 / j->precision;
-  bool hyper = j->algebra == ZR_JULIA_HYPERCOMPLEX;
-  lift(j, p, &s, hyper);
+  double stretch;
+  bool estimate = has_estimate(j);
+  lift(j, p, &s, false);
   *dist = 0.0;
-  if (iterate(j, &s, hyper ? 3 : 0, false, &escape, &norms))
+  if (iterate(j, &s, 0, false, estimate ? &stretch : NULL))
     return true;
-  double n2 = s.h[0] * s.h[0] + s.h[1] * s.h[1] + s.h[2] * s.h[2] +
-              s.h[3] * s.h[3];
-  if (!hyper) {
-    double power = j->function == ZR_JULIA_CUBE ? 3.0 : 2.0;
-    /* POV-Ray's product runs over the escaped iterate too. */
-    double den = pow(power, escape + 1) * norms * sqrt(n2);
-    if (den > 0.0 && n2 > 1.0)
-      *dist = sqrt(n2) * log(n2) / den;
+  if (!estimate)
     return false;
-  }
-  double slope = 0.0;
-  zr_vec3 dd = d;
-  double dc[3] = {dd.x, dd.y, dd.z};
-  for (int k = 0; k < 3; k++)
-    for (int m = 0; m < 4; m++)
-      slope += dc[k] * s.h[m] * s.dh[k][m];
-  if (slope < -TOLERANCE) {
-    slope *= -2.0;
-    if (n2 > step * slope && n2 < 30.0 * step * slope)
-      *dist = n2 / slope;
-  }
+  double n = sqrt(s.h[0] * s.h[0] + s.h[1] * s.h[1] + s.h[2] * s.h[2] +
+                  s.h[3] * s.h[3]);
+  if (n > 1.0 && stretch > 0.0 && isfinite(stretch))
+    *dist = n * log(n) / (2.0 * stretch);
   return false;
 }
 
@@ -361,10 +390,8 @@ bool zr__julia_inside(const zr_object *o, zr_vec3 p) {
 /* The gradient of |h_N|^2 by (x, y, z): outward. */
 static zr_vec3 julia_normal(const struct zr_julia *j, zr_vec3 p) {
   julia_state s;
-  int escape;
-  double norms;
   lift(j, p, &s, true);
-  iterate(j, &s, 3, true, &escape, &norms);
+  iterate(j, &s, 3, true, NULL);
   double g[3];
   for (int k = 0; k < 3; k++) {
     g[k] = 0.0;
@@ -373,9 +400,12 @@ static zr_vec3 julia_normal(const struct zr_julia *j, zr_vec3 p) {
   }
   /* h_N may be tiny too: scaled, the normal survives normalising. */
   double big = fmax(fabs(g[0]), fmax(fabs(g[1]), fabs(g[2])));
-  if (big > 0.0 && isfinite(big))
-    for (int k = 0; k < 3; k++)
-      g[k] /= big;
+  /* At a pole or branch point of the function the gradient is lost;
+     the direction from the centre is the best guess left. */
+  if (!(big > 0.0) || !isfinite(big))
+    return zr_v3_dot(p, p) > 0.0 ? p : zr_v3(0, 1, 0);
+  for (int k = 0; k < 3; k++)
+    g[k] /= big;
   return zr_v3(g[0], g[1], g[2]);
 }
 
@@ -394,20 +424,20 @@ int zr__julia_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
   if (!(disc > 0.0))
     return 0;
   double root = sqrt(disc);
-  /* The march starts a few tolerances from the origin, as POV-Ray's
-     does, so a ray leaving the surface does not find it again. */
+  /* The march starts a few tolerances from the ray's origin, so a ray
+     leaving the surface does not find it again. */
   double step = 1.0 / j->precision, tol = TOLERANCE * r;
   double s_end = -b + root, s = fmax(-b - root, 3.0 * tol);
   s_end = fmin(s_end, tmax * len);
   if (!(s < s_end))
     return 0;
   double dist;
-  bool in = march_sample(j, zr_v3_madd(org, d, s), d, &dist);
+  bool in = march_sample(j, zr_v3_madd(org, d, s), &dist);
   int found = 0;
   while (s < s_end && found < 4) {
     double ds = fmax(dist, step);
     double s_next = fmin(s + ds, s_end), dist_next;
-    bool in_next = march_sample(j, zr_v3_madd(org, d, s_next), d,
+    bool in_next = march_sample(j, zr_v3_madd(org, d, s_next),
                                 &dist_next);
     if (in_next != in) {
       /* Bisect [s, s_next] down to the tolerance. */
@@ -419,8 +449,8 @@ int zr__julia_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
         else
           e = m;
       }
-      /* The crossing is the bracket's inside end, as in POV-Ray: its
-         normal then comes from all max_iteration steps. */
+      /* The crossing is the bracket's inside end: its normal then
+         comes from all max_iteration steps. */
       double sh = in ? a : e, th = sh / len;
       if (th > tmin && th < tmax) {
         t[found] = th;

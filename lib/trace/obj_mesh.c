@@ -12,8 +12,9 @@
  *
  * The inner hierarchy is built top down with the binned surface area
  * heuristic (Wald, "On fast Construction of SAH-based Bounding Volume
- * Hierarchies", 2007), like lib/trace/bvh.c's, but over an index array
- * and with single-precision node boxes rounded outward, which halves the
+ * Hierarchies", 2007) with lib/trace/bvh.c's sweep (zr__sah_sweep), but
+ * over the faces' own boxes, partitioned in place, and with
+ * single-precision node boxes rounded outward, which halves the
  * nodes' size for the million-triangle meshes it exists for.  The faces
  * are then put in leaf order, so a leaf is a run of consecutive rows and
  * needs no index table.  Triangles are tested in double precision
@@ -29,6 +30,7 @@
  */
 #include "trace/obj_mesh.h"
 
+#include "trace/bvh.h"
 #include "trace/intersect.h"
 
 #include <math.h>
@@ -36,7 +38,7 @@
 #include <string.h>
 
 enum {
-  BINS = 16,
+  BINS = ZR_SAH_BINS,
   LEAF_MAX = 4,    /* a node this small is always a leaf */
   LEAF_SAH_MAX = 8, /* SAH may prefer a leaf up to this size */
   DEPTH_MAX = 64,
@@ -106,12 +108,43 @@ static int bin_of(float c, float lo, float scale) {
   return k < 0 ? 0 : k >= BINS ? BINS - 1 : k;
 }
 
+/* The box of faces [0, n) and the box of their centres. */
+static void bounds_of(const face_box *boxes, size_t n, fbox *bounds,
+                      fbox *centres) {
+  fbox_empty(bounds);
+  fbox_empty(centres);
+  for (size_t i = 0; i < n; i++) {
+    fbox_grow(bounds, boxes[i].lo, boxes[i].hi);
+    fbox_grow(centres, boxes[i].centre, boxes[i].centre);
+  }
+}
+
+/* The sides of a split: each side's box and the box of its centres,
+   the unions of its bins' (the same floats a pass over its faces would
+   give, so the children need no pass of their own). */
+typedef struct sides {
+  fbox bounds[2], centres[2];
+} sides;
+
+/* A split in halves, for nodes the heuristic cannot split; a node of
+   at most leaf_max faces stays a leaf (0). */
+static size_t halve(face_box *boxes, size_t n, size_t leaf_max,
+                    sides *out) {
+  if (n <= leaf_max)
+    return 0;
+  size_t left = n / 2;
+  bounds_of(boxes, left, &out->bounds[0], &out->centres[0]);
+  bounds_of(boxes + left, n - left, &out->bounds[1], &out->centres[1]);
+  return left;
+}
+
 /*
  * The number of faces of order[0..n) that go left, reordered so they
- * come first; 0 when a leaf is the better choice.
+ * come first; 0 when a leaf is the better choice.  out gets the boxes
+ * of both sides.
  */
 static size_t split(face_box *boxes, size_t n, const fbox *bounds,
-                    const fbox *centres) {
+                    const fbox *centres, sides *out) {
   const fbox cb = *centres;
   int axis = 0;
   for (int a = 1; a < 3; a++)
@@ -120,51 +153,51 @@ static size_t split(face_box *boxes, size_t n, const fbox *bounds,
   double ext = (double)cb.hi[axis] - cb.lo[axis];
   if (!(ext > 0.0)) {
     /* Every centre coincides: any halving is as good as another. */
-    return n > LEAF_SAH_MAX ? n / 2 : 0;
+    return halve(boxes, n, LEAF_SAH_MAX, out);
   }
   float scale = (float)(BINS / ext);
   size_t counts[BINS] = {0};
-  fbox bins[BINS];
-  for (int i = 0; i < BINS; i++)
+  fbox bins[BINS], bin_centres[BINS];
+  for (int i = 0; i < BINS; i++) {
     fbox_empty(&bins[i]);
+    fbox_empty(&bin_centres[i]);
+  }
   for (size_t i = 0; i < n; i++) {
     const face_box *fb = &boxes[i];
     int k = bin_of(fb->centre[axis], cb.lo[axis], scale);
     counts[k]++;
     fbox_grow(&bins[k], fb->lo, fb->hi);
+    fbox_grow(&bin_centres[k], fb->centre, fb->centre);
   }
-  double right_cost[BINS];
-  fbox acc;
-  fbox_empty(&acc);
-  size_t acc_n = 0;
-  for (int k = BINS - 1; k > 0; k--) {
-    if (counts[k])
-      fbox_grow(&acc, bins[k].lo, bins[k].hi);
-    acc_n += counts[k];
-    right_cost[k] = acc_n ? fbox_area(&acc) * (double)acc_n : 0.0;
-  }
-  double best = INFINITY;
-  int best_k = -1;
-  fbox_empty(&acc);
-  acc_n = 0;
-  for (int k = 1; k < BINS; k++) {
-    if (counts[k - 1])
-      fbox_grow(&acc, bins[k - 1].lo, bins[k - 1].hi);
-    acc_n += counts[k - 1];
-    if (acc_n == 0 || acc_n == n)
-      continue;
-    double cost = fbox_area(&acc) * (double)acc_n + right_cost[k];
-    if (cost < best) {
-      best = cost;
-      best_k = k;
+  /* The shared sweep, in double precision: the floats convert exactly
+     and give the areas fbox_area would. */
+  zr_sah_bin sweep[BINS];
+  for (int k = 0; k < BINS; k++) {
+    for (int a = 0; a < 3; a++) {
+      sweep[k].lo[a] = bins[k].lo[a];
+      sweep[k].hi[a] = bins[k].hi[a];
     }
+    sweep[k].count = counts[k];
   }
+  double best;
+  int best_k = zr__sah_sweep(sweep, n, &best);
   if (best_k < 0)
-    return n > LEAF_SAH_MAX ? n / 2 : 0;
+    return halve(boxes, n, LEAF_SAH_MAX, out);
   /* A traversal step costs about as much as one triangle test. */
   double area = fbox_area(bounds);
   if (n <= LEAF_SAH_MAX && area + best >= area * (double)n)
     return 0;
+  for (int side = 0; side < 2; side++) {
+    fbox_empty(&out->bounds[side]);
+    fbox_empty(&out->centres[side]);
+  }
+  for (int k = 0; k < BINS; k++) {
+    int side = k >= best_k;
+    if (counts[k]) {
+      fbox_grow(&out->bounds[side], bins[k].lo, bins[k].hi);
+      fbox_grow(&out->centres[side], bin_centres[k].lo, bin_centres[k].hi);
+    }
+  }
   size_t left = 0;
   for (size_t i = 0; i < n; i++) {
     if (bin_of(boxes[i].centre[axis], cb.lo[axis], scale) < best_k) {
@@ -190,37 +223,35 @@ static zr_status new_node(builder *b, size_t *index) {
   return ZR_OK;
 }
 
-static zr_status build_node(builder *b, size_t first, size_t n, int depth) {
+/* The node of faces [first, first + n), whose box and centres' box the
+   caller knows (the parent's split found them). */
+static zr_status build_node(builder *b, size_t first, size_t n, int depth,
+                            const fbox *bounds, const fbox *centres) {
   size_t index;
   zr_status s = new_node(b, &index);
   if (s != ZR_OK)
     return s;
-  /* The node's box and the box of its faces' centres, in one pass. */
-  fbox bounds, centres;
-  fbox_empty(&bounds);
-  fbox_empty(&centres);
-  for (size_t i = first; i < first + n; i++) {
-    const face_box *fb = &b->boxes[i];
-    fbox_grow(&bounds, fb->lo, fb->hi);
-    fbox_grow(&centres, fb->centre, fb->centre);
-  }
-  memcpy(b->nodes[index].lo, bounds.lo, sizeof bounds.lo);
-  memcpy(b->nodes[index].hi, bounds.hi, sizeof bounds.hi);
+  memcpy(b->nodes[index].lo, bounds->lo, sizeof bounds->lo);
+  memcpy(b->nodes[index].hi, bounds->hi, sizeof bounds->hi);
   size_t left = 0;
+  sides out;
   if (n > LEAF_MAX)
-    left = depth < DEPTH_MAX ? split(b->boxes + first, n, &bounds, &centres)
-                             : n / 2;
+    left = depth < DEPTH_MAX
+               ? split(b->boxes + first, n, bounds, centres, &out)
+               : halve(b->boxes + first, n, LEAF_MAX, &out);
   if (left == 0 || left == n) {
     b->nodes[index].first = (uint32_t)first;
     b->nodes[index].count = (uint32_t)n;
     return ZR_OK;
   }
   b->nodes[index].count = 0;
-  s = build_node(b, first, left, depth + 1);
+  s = build_node(b, first, left, depth + 1, &out.bounds[0],
+                 &out.centres[0]);
   if (s != ZR_OK)
     return s;
   b->nodes[index].first = (uint32_t)b->n_nodes;
-  return build_node(b, first + left, n - left, depth + 1);
+  return build_node(b, first + left, n - left, depth + 1, &out.bounds[1],
+                    &out.centres[1]);
 }
 
 /* Puts the rows of an n-row table of row-size bytes in the given order,
@@ -301,7 +332,9 @@ zr_status zr__mesh_build(struct zr_mesh *mesh, zr_arena *arena,
     }
     fb->face = (uint32_t)f;
   }
-  s = build_node(&b, 0, n, 0);
+  fbox bounds, centres;
+  bounds_of(boxes, n, &bounds, &centres);
+  s = build_node(&b, 0, n, 0, &bounds, &centres);
   if (s != ZR_OK)
     goto done;
   for (size_t i = 0; i < n; i++)
@@ -321,10 +354,13 @@ zr_status zr__mesh_build(struct zr_mesh *mesh, zr_arena *arena,
     goto done;
   mesh->nodes = zr__arena_memdup(arena, b.nodes,
                                  b.n_nodes * sizeof *b.nodes);
-  if (!mesh->nodes) {
+  mesh->face_row = zr__arena_alloc(arena, n * sizeof *mesh->face_row);
+  if (!mesh->nodes || !mesh->face_row) {
     s = ZR_ENOMEM;
     goto done;
   }
+  for (size_t i = 0; i < n; i++)
+    mesh->face_row[order[i]] = (uint32_t)i;
   mesh->n_nodes = b.n_nodes;
 done:
   free(b.nodes);
@@ -406,6 +442,7 @@ static zr_mesh_crossing finish_hit(const struct zr_mesh *m,
                                    const raw_hit *h) {
   zr_mesh_crossing c;
   c.t = h->t;
+  c.face = h->face;
   const uint32_t *idx = m->faces[h->face];
   zr_vec3 p0 = m->vertices[idx[0]];
   c.normal = zr_v3_cross(zr_v3_sub(m->vertices[idx[1]], p0),

@@ -38,6 +38,9 @@ struct zr_mesh {
   size_t n_textures;
   bool has_inside; /* inside_vector given: the mesh encloses a volume */
   zr_vec3 inside_vector;
+  /* face_row[i]: the row of the i-th face written, for mesh_camera,
+     which numbers faces in the order of the scene file. */
+  uint32_t *face_row;
   zr_mesh_node *nodes;
   size_t n_nodes;
   zr_vec3 lo, hi; /* the box of every vertex the faces use */
@@ -49,6 +52,7 @@ typedef struct zr_mesh_crossing {
   zr_vec3 normal;  /* any length, smooth when the face has normals */
   int32_t texture; /* index into the texture list, -1 for none */
   double u, v;     /* surface coordinates ("UV Mapping"); meshes only */
+  size_t face;     /* which face (radiosity looks its cell up by it) */
 } zr_mesh_crossing;
 
 /* Builds the BVH (reordering the faces) and checks the indices; the

@@ -66,6 +66,8 @@ bool zr__blob_inside(const zr_object *o, zr_vec3 p);
 bool zr__blob_bounds(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi);
 /* The sum of the components' fields at p (blob space). */
 double zr__blob_density(const zr_object *o, zr_vec3 p);
+/* Component i's field at p (blob space): its texture's weight there. */
+double zr__blob_component_density(const zr_object *o, size_t i, zr_vec3 p);
 
 int zr__sor_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
                       double tmin, double tmax, double t[4],

@@ -119,7 +119,7 @@ typedef struct nearest2 {
 static void keep(nearest2 *k, double t, zr_vec3 normal) {
   if (!(t < k->limit))
     return;
-  zr_mesh_crossing c = {t, normal, -1, 0.0, 0.0};
+  zr_mesh_crossing c = {t, normal, -1, 0.0, 0.0, 0};
   if (k->n < 2) {
     k->c[k->n++] = c;
   } else {

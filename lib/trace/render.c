@@ -66,7 +66,9 @@ zr_ray zr__camera_ray(const zr_camera *camera, int width, int height,
                       double x, double y) {
   double u = x / width - 0.5, v = 0.5 - y / height;
   zr_ray ray = {camera->location, zr_v3(0, 0, 0)};
-  if (!zr__camera_project(camera, u, v, &ray))
+  if (camera->kind == ZR_CAMERA_MESH
+          ? !zr__camera_mesh_ray(camera, width, height, x, y, 0, &ray)
+          : !zr__camera_project(camera, u, v, &ray))
     ray.dir = zr_v3(0, 0, 0); /* no ray here: the caller renders black */
   return ray;
 }
@@ -114,6 +116,9 @@ typedef struct pixel_job {
 void zr__camera_media(const zr_scene *scene, zr_media *media) {
   media->n = 0;
   media->passes = 0;
+  /* A mesh camera's rays start on its faces, not at its location. */
+  if (scene->camera.kind == ZR_CAMERA_MESH)
+    return;
   for (size_t i = 0; i < scene->n_primitives; i++) {
     const zr_object *o = scene->primitives[i];
     if (media->n < ZR_MEDIA_MAX && zr__has_inside(o) &&
@@ -185,10 +190,42 @@ static zr_rgb focal_blur(const pixel_job *job, const zr_render_params *p,
   return zr_rgb_scale(sum, 1.0 / n);
 }
 
+/*
+ * A mesh camera's sample: the average of the rays that have a face
+ * (lib/trace/camera_mesh.c); black when none has, which povray leaves
+ * black and transparent.
+ */
+static zr_rgb mesh_sample(const pixel_job *job, const zr_render_params *p,
+                          double x, double y) {
+  const zr_tracer *tr = &job->tracer;
+  const zr_camera *c = &tr->scene->camera;
+  zr_rgb sum = zr_rgb3(0, 0, 0);
+  int n = 0, rays = zr__camera_mesh_rays(c);
+  for (int k = 0; k < rays; k++) {
+    zr_ray ray;
+    if (!zr__camera_mesh_ray(c, p->width, p->height, x, y, k, &ray))
+      continue;
+    zr_rgb col = c->mesh->max_distance > 0.0
+                     ? zr__trace_camera_ray_within(tr, &ray,
+                                                   c->mesh->max_distance,
+                                                   &job->camera_media)
+                     : zr__trace_ray(tr, &ray, 1, 1.0, &job->camera_media);
+    sum = zr_rgb_add(sum, col);
+    n++;
+  }
+  if (n > 1)
+    tr->stats->supersample_rays += (uint64_t)(n - 1);
+  return n > 0 ? zr_rgb_scale(sum, 1.0 / n) : sum;
+}
+
 static void trace_point(const pixel_job *job, const zr_render_params *p,
                         double x, double y, zr_rgb *out) {
   const zr_tracer *tr = &job->tracer;
   const zr_camera *c = &tr->scene->camera;
+  if (c->kind == ZR_CAMERA_MESH) {
+    *out = mesh_sample(job, p, x, y);
+    return;
+  }
   if (c->aperture > 0.0 && c->blur_samples > 0) {
     *out = focal_blur(job, p, x, y);
     return;

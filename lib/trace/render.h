@@ -27,6 +27,14 @@ zr_ray zr__camera_ray(const zr_camera *camera, int width, int height,
 bool zr__camera_project(const zr_camera *camera, double u, double v,
                         zr_ray *ray);
 
+/* A mesh_camera (lib/trace/camera_mesh.c): how many rays each sample of
+   a pixel tries, and ray k through sample point (sx, sy) (pixels from
+   the top left corner of a width x height image); false when that ray
+   has no face, so is not shot. */
+int zr__camera_mesh_rays(const zr_camera *camera);
+bool zr__camera_mesh_ray(const zr_camera *camera, int width, int height,
+                         double sx, double sy, int k, zr_ray *ray);
+
 /* Moves *ray (a pinhole camera ray) to a point of the lens chosen by a
    and b in [0, 1), aimed at the focal plane: one focal blur sample. */
 bool zr__camera_focal_sample(const zr_camera *camera, zr_ray *ray,

@@ -72,6 +72,7 @@
 #include "trace/bvh.h"
 #include "trace/lights.h"
 #include "trace/media.h"
+#include "trace/obj_shapes.h"
 
 zr_colour zr__pigment_at(const zr_pigment *pigment, zr_vec3 p) {
   return zr__pigment_eval(pigment, p); /* lib/scene/texture.c */
@@ -315,6 +316,8 @@ static zr_rgb direct_light(const zr_tracer *tr, const surface *s,
     const zr_light *light = &scene->lights[i];
     zr_vec3 l;
     zr_rgb lc;
+    if (!zr__light_lights(scene, light, s->object))
+      continue; /* a light_group's light, or this object's group's */
     if (!zr__light_arrive(light, s->p, &l, &lc))
       continue; /* outside a spotlight's cone (lib/trace/lights.c) */
     zr_vec3 n = s->n;
@@ -552,6 +555,20 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
   return sum;
 }
 
+/*
+ * The geometric normal n perturbed by nm at p, before the caller turns
+ * it towards the viewer when the ray leaves the surface.  A bump map
+ * tilts the normal on the viewer's side: POV-Ray 3.7 renders a grey
+ * ramp on "plane { z, 0 }" and on "plane { -z, 0 }" seen from -z with
+ * the same normal, so the tilt must not turn with n.
+ */
+static zr_vec3 perturbed(const zr_normal *nm, zr_vec3 p, zr_vec3 n,
+                         bool entering) {
+  if (nm->bump_map && !entering)
+    return zr_v3_neg(zr__normal_perturb(nm, p, zr_v3_neg(n)));
+  return zr__normal_perturb(nm, p, n);
+}
+
 #define MAX_LAYERS 64
 
 static zr_rgb shade_layers(const zr_tracer *tr, const surface *s,
@@ -611,8 +628,9 @@ static zr_rgb shade_layer(const zr_tracer *tr, const surface *s,
   zr_vec3 n = n_geo;
   bool uv = tx->uv_mapping;
   if (tx->normal)
-    n = zr__normal_perturb(
-        tx->normal, pattern_point(&ls, uv || tx->normal->uv_mapping), n);
+    n = perturbed(tx->normal,
+                  pattern_point(&ls, uv || tx->normal->uv_mapping), n,
+                  s->entering);
   ls.n = s->entering ? n : zr_v3_neg(n);
   ls.finish = tx->finish;
   ls.colour = zr__pigment_eval_n(
@@ -655,12 +673,64 @@ static zr_rgb shade_layers(const zr_tracer *tr, const surface *s,
   return sum;
 }
 
+/*
+ * A blob whose components have textures of their own ("Blob"): the lit
+ * colour of each texture, weighted by its components' fields at the
+ * point, as measured on POV-Ray 3.7's renders (two spheres' pigments
+ * blend in the proportion of their fields where they overlap).  A
+ * component without a texture takes the blob's; components whose field
+ * is not positive there take no part.  Components that share a texture
+ * are shaded once, with their fields added.
+ */
+#define MAX_BLOB_TEXTURES 16
+
+static zr_rgb shade_blob(const zr_tracer *tr, const surface *s,
+                         zr_vec3 n_geo, const zr_object *o, int level,
+                         double weight, const zr_media *media) {
+  zr_vec3 q = o->transform ? zr__xform_point(o->transform->inv, s->p)
+                           : s->p;
+  const zr_texture *tex[MAX_BLOB_TEXTURES];
+  double w[MAX_BLOB_TEXTURES];
+  int n = 0;
+  double total = 0.0;
+  for (size_t i = 0; i < o->u.blob.n_components; i++) {
+    double f = zr__blob_component_density(o, i, q);
+    if (!(f > 0.0))
+      continue;
+    const zr_texture *t = o->u.blob.components[i].texture;
+    if (!t)
+      t = o->texture;
+    int k = 0;
+    while (k < n && tex[k] != t)
+      k++;
+    if (k == n) {
+      if (n == MAX_BLOB_TEXTURES)
+        k = MAX_BLOB_TEXTURES - 1; /* more than that overlap: rare */
+      else
+        tex[n++] = t, w[k] = 0.0;
+    }
+    w[k] += f;
+    total += f;
+  }
+  if (n == 0) /* on the surface some field is positive; rounding */
+    return shade_layers(tr, s, n_geo, o->texture, level, weight, media);
+  zr_rgb sum = zr_rgb3(0, 0, 0);
+  for (int k = 0; k < n; k++) {
+    double share = w[k] / total;
+    sum = zr_rgb_add(sum, zr_rgb_scale(shade_layers(tr, s, n_geo, tex[k],
+                                                    level, weight * share,
+                                                    media),
+                                       share));
+  }
+  return sum;
+}
+
 /* The nearest hit of an object the ray may see (zr_tracer.hide). */
 static bool nearest_shown(const zr_tracer *tracer, const zr_ray *ray,
-                          zr_hit *hit) {
+                          double tmax, zr_hit *hit) {
   double from = 0.0;
   for (;;) {
-    if (!zr__bvh_nearest(tracer->scene->bvh, ray, from, INFINITY, hit))
+    if (!zr__bvh_nearest(tracer->scene->bvh, ray, from, tmax, hit))
       return false;
     const zr_object *o = hit->object;
     bool hidden = ((tracer->hide & ZR_HIDE_IMAGE) && o->no_image) ||
@@ -671,13 +741,17 @@ static bool nearest_shown(const zr_tracer *tracer, const zr_ray *ray,
   }
 }
 
-zr_rgb zr__trace_ray(const zr_tracer *tracer, const zr_ray *ray, int level,
-                     double weight, const zr_media *media) {
+/* What zr__trace_ray() sees, with the first surface looked for only up
+   to tmax along the ray (a mesh camera's max_distance); beyond it the
+   ray sees the background, as in povray. */
+static zr_rgb trace_upto(const zr_tracer *tracer, const zr_ray *ray,
+                         int level, double weight, const zr_media *media,
+                         double tmax) {
   const zr_scene *scene = tracer->scene;
   if (level > scene->settings.max_trace_level)
     return zr_rgb3(0, 0, 0);
   zr_hit hit;
-  if (!nearest_shown(tracer, ray, &hit)) {
+  if (!nearest_shown(tracer, ray, tmax, &hit)) {
     /* Atmospheric media reach to POV-Ray's horizon (lib/trace/media.c). */
     zr_rgb sky = zr__media_along(tracer, media, ray->origin, ray->dir,
                                  INFINITY, zr__sky_colour(scene, ray->dir));
@@ -699,19 +773,24 @@ zr_rgb zr__trace_ray(const zr_tracer *tracer, const zr_ray *ray, int level,
      Texture"). */
   if (!s.entering && hit.object->interior_texture)
     tx = hit.object->interior_texture;
-  if ((tx->over || tx->map) && !tracer->radiosity_only) {
+  bool blob = hit.object->kind == ZR_OBJ_BLOB &&
+              hit.object->u.blob.textured && tx == hit.object->texture;
+  if ((tx->over || tx->map || blob) && !tracer->radiosity_only) {
     s.object = hit.object;
     s.offset = zr__surface_offset(s.p);
     s.layer = false;
-    zr_rgb c = shade_layers(tracer, &s, n, tx, level, weight, media);
+    zr_rgb c = blob ? shade_blob(tracer, &s, n, hit.object, level, weight,
+                                 media)
+                    : shade_layers(tracer, &s, n, tx, level, weight, media);
     c = zr__media_along(tracer, media, ray->origin, ray->dir, hit.t, c);
     return zr__atmosphere_apply(scene, ray->origin, ray->dir, hit.t, c);
   }
   s.object = hit.object;
   bool uv = tx->uv_mapping;
   if (tx->normal) /* normal { }: lib/scene/texture.c */
-    n = zr__normal_perturb(
-        tx->normal, pattern_point(&s, uv || tx->normal->uv_mapping), n);
+    n = perturbed(tx->normal,
+                  pattern_point(&s, uv || tx->normal->uv_mapping), n,
+                  s.entering);
   s.n = s.entering ? n : zr_v3_neg(n);
   s.finish = tx->finish;
   s.colour = zr__pigment_eval_n(
@@ -732,4 +811,17 @@ zr_rgb zr__trace_ray(const zr_tracer *tracer, const zr_ray *ray, int level,
   return interior_fade(
       media, hit.t * zr_v3_len(ray->dir),
       zr__atmosphere_apply(scene, ray->origin, ray->dir, hit.t, c));
+}
+
+zr_rgb zr__trace_ray(const zr_tracer *tracer, const zr_ray *ray, int level,
+                     double weight, const zr_media *media) {
+  return trace_upto(tracer, ray, level, weight, media, INFINITY);
+}
+
+zr_rgb zr__trace_camera_ray_within(const zr_tracer *tracer,
+                                   const zr_ray *ray, double distance,
+                                   const zr_media *media) {
+  double len = zr_v3_len(ray->dir);
+  return trace_upto(tracer, ray, 1, 1.0, media,
+                    len > 0.0 ? distance / len : INFINITY);
 }

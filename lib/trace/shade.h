@@ -54,6 +54,11 @@ enum { ZR_HIDE_IMAGE = 1u << 0, ZR_HIDE_REFLECTION = 1u << 1 };
  */
 zr_rgb zr__trace_ray(const zr_tracer *tracer, const zr_ray *ray, int level,
                      double weight, const zr_media *media);
+/* A camera ray that sees surfaces only within distance (world units)
+   of its origin (mesh_camera's max_distance). */
+zr_rgb zr__trace_camera_ray_within(const zr_tracer *tracer,
+                                   const zr_ray *ray, double distance,
+                                   const zr_media *media);
 
 /* The pigment's colour at a world point (solid colours for now). */
 zr_colour zr__pigment_at(const zr_pigment *pigment, zr_vec3 p);

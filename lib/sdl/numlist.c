@@ -1,0 +1,215 @@
+/*
+ * numlist.c - the plain items of a mesh2 list, read straight from the
+ * file's bytes.
+ *
+ * A mesh2 of a million vertices is an 80 MB file of little but
+ * "<i, y, z>," items (reference manual, "Mesh2").  Lexing each number,
+ * comma and bracket into a 24-byte token would cost hundreds of
+ * megabytes and most of the parse time, so the lexer (tokens.c) hands
+ * the run of plain items after a list's count to this reader instead and
+ * keeps one token for the whole run (ZR_SDL_NUMBER_LIST); mesh2's fast
+ * reader (build_mesh.c) reads the run again with the same function when
+ * the grammar reaches it, so the two can never disagree on where the run
+ * ends.
+ *
+ * An item is a vector of signed numbers, "<a, b, c>" (or "<a, b>" in
+ * uv_vectors), followed by a comma, the next '<' or the list's '}' - the
+ * items build_mesh.c's token reader takes.  Blanks may sit anywhere in
+ * between, a comma may follow each item.  A number is what the scanner
+ * (grammar/pov.l) calls one, and must be followed by a blank, ',' or
+ * '>': anything else ("2a", "1.5.3", a comment, an operator) ends the
+ * run before the item, and the scanner and the grammar take over from
+ * there exactly as if there had been no run.  Numbers convert exactly
+ * like strtod(), which the scanner uses: with at most 19 significant
+ * digits, a mantissa below 2^53 and a power of ten up to 22 both are
+ * exact doubles and one IEEE division or product rounds correctly
+ * (Clinger's fast path); any other number goes to strtod() itself.
+ */
+#include "config.h"
+
+#include <stdint.h>
+#include <stdlib.h>
+
+#include "sdl/sdl.h"
+
+static const double powers_of_ten[23] = {
+    1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+    1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+
+static inline bool is_blank(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' ||
+         c == '\v';
+}
+
+static inline bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+static inline char at(const zr_sdl_numreader *r) {
+  return r->pos < r->end ? r->bytes[r->pos] : '\0';
+}
+
+static inline char at_plus(const zr_sdl_numreader *r, size_t k) {
+  return r->pos + k < r->end ? r->bytes[r->pos + k] : '\0';
+}
+
+/* Moves past one byte on its line (not a newline). */
+static inline void step(zr_sdl_numreader *r) {
+  r->pos++;
+  r->column++;
+}
+
+/* Blanks, counting lines and columns as the scanner does: one column a
+   byte. */
+static inline void skip_blanks(zr_sdl_numreader *r) {
+  while (r->pos < r->end && is_blank(r->bytes[r->pos])) {
+    if (r->bytes[r->pos] == '\n') {
+      r->line++;
+      r->column = 1;
+    } else {
+      r->column++;
+    }
+    r->pos++;
+  }
+}
+
+/* A number as the scanner matches one: DIGITS ["." DIGITS*] [EXP] or
+   "." DIGITS [EXP], EXP = [eE][-+]?DIGITS. */
+static inline bool number(zr_sdl_numreader *r, double *out) {
+  size_t start = r->pos;
+  uint64_t mantissa = 0;
+  int digits = 0, fraction = 0;
+  bool any = false;
+  while (is_digit(at(r))) {
+    if (mantissa || at(r) != '0') {
+      if (digits < 19)
+        mantissa = mantissa * 10 + (uint64_t)(at(r) - '0');
+      digits++;
+    }
+    any = true;
+    step(r);
+  }
+  if (at(r) == '.' && (any || is_digit(at_plus(r, 1)))) {
+    step(r);
+    while (is_digit(at(r))) {
+      if (mantissa || at(r) != '0') {
+        if (digits < 19)
+          mantissa = mantissa * 10 + (uint64_t)(at(r) - '0');
+        digits++;
+      }
+      fraction++;
+      step(r);
+    }
+    any = true;
+  }
+  if (!any)
+    return false;
+  int exponent = 0;
+  bool exponent_ok = true;
+  char e = at(r);
+  if (e == 'e' || e == 'E') {
+    size_t k = at_plus(r, 1) == '-' || at_plus(r, 1) == '+' ? 2 : 1;
+    if (is_digit(at_plus(r, k))) {
+      bool negative = at_plus(r, 1) == '-';
+      for (size_t i = 0; i < k; i++)
+        step(r);
+      while (is_digit(at(r))) {
+        if (exponent < 10000)
+          exponent = exponent * 10 + (at(r) - '0');
+        else
+          exponent_ok = false;
+        step(r);
+      }
+      if (negative)
+        exponent = -exponent;
+    }
+  }
+  /* The scanner would read what follows as another token. */
+  char next = at(r);
+  if (!(is_blank(next) || next == ',' || next == '>'))
+    return false;
+  int power = exponent - fraction;
+  if (mantissa == 0 && digits == 0) {
+    *out = 0.0;
+  } else if (digits <= 19 && exponent_ok &&
+             mantissa <= (UINT64_C(1) << 53) && power >= -22 &&
+             power <= 22) {
+    double m = (double)mantissa;
+    *out = power < 0 ? m / powers_of_ten[-power] : m * powers_of_ten[power];
+  } else {
+    /* The character after the number stops strtod where the scanner
+       stopped. */
+    *out = strtod(r->bytes + start, NULL);
+  }
+  return true;
+}
+
+/* Signs, then a number: the token reader's "signed number". */
+static inline bool signed_number(zr_sdl_numreader *r, double *out) {
+  double sign = 1.0;
+  while (at(r) == '-' || at(r) == '+') {
+    if (at(r) == '-')
+      sign = -sign;
+    step(r);
+    skip_blanks(r);
+  }
+  double v;
+  if (!number(r, &v))
+    return false;
+  *out = sign * v;
+  return true;
+}
+
+/* The reader works on a copy of its state that lives in registers (the
+   bytes are chars, which may alias anything behind a pointer). */
+static inline bool item(zr_sdl_numreader *r, double v[3], int *dim,
+                        int *line, int *column) {
+  zr_sdl_numreader start = *r;
+  skip_blanks(r);
+  if (at(r) == ',' && r->comma_ok) {
+    step(r);
+    skip_blanks(r);
+  }
+  if (at(r) != '<')
+    goto not_an_item;
+  *line = r->line;
+  *column = r->column;
+  step(r);
+  int n = 0;
+  for (;;) {
+    skip_blanks(r);
+    if (n == 3 || !signed_number(r, &v[n]))
+      goto not_an_item;
+    n++;
+    skip_blanks(r);
+    if (at(r) == '>')
+      break;
+    if (at(r) != ',')
+      goto not_an_item;
+    step(r);
+  }
+  step(r);
+  if (n == 2 && r->uv)
+    v[2] = 0.0;
+  else if (n != 3)
+    goto not_an_item;
+  /* Complete only when nothing can continue it ("<1,2,3>*2" cannot be
+     taken here). */
+  zr_sdl_numreader after = *r;
+  skip_blanks(&after);
+  char next = at(&after);
+  if (next != ',' && next != '<' && next != '}')
+    goto not_an_item;
+  *dim = n;
+  r->comma_ok = true;
+  return true;
+not_an_item:
+  *r = start;
+  return false;
+}
+
+bool zr__sdl_numlist_item(zr_sdl_numreader *r, double v[3], int *dim,
+                          int *line, int *column) {
+  zr_sdl_numreader s = *r;
+  bool ok = item(&s, v, dim, line, column);
+  *r = s;
+  return ok;
+}

@@ -1,0 +1,298 @@
+/*
+ * test_numlist.c - runs of plain mesh2 items read from the bytes
+ * (lib/sdl/numlist.c): numbers convert as strtod() does, a run stops
+ * where the scanner and grammar must take over, the lexer keeps a run
+ * as one token (lib/sdl/tokens.c), and the parse of a run gives the
+ * same mesh and the same error places as the tokens would.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "config.h"
+#include "core/strbuf.h"
+#include "parse_fixture.h"
+#include "pov-parse.h"
+#include "sdl/sdl.h"
+#include "trace/obj_mesh.h"
+
+static zr_sdl_numreader reader(const char *s, bool uv) {
+  zr_sdl_numreader r = {s, 0, strlen(s), 1, 1, uv, true};
+  return r;
+}
+
+/* Reads "<x, x, x>}" and checks all three values have strtod's bits. */
+static void check_number(const char *x) {
+  char text[200];
+  snprintf(text, sizeof text, "<%s, -%s,%s>}", x, x, x);
+  zr_sdl_numreader r = reader(text, false);
+  double v[3];
+  int dim, line, column;
+  assert_true(zr__sdl_numlist_item(&r, v, &dim, &line, &column));
+  assert_int_equal(dim, 3);
+  double want = strtod(x, NULL), minus = -want;
+  if (memcmp(&v[0], &want, sizeof want) != 0 ||
+      memcmp(&v[1], &minus, sizeof minus) != 0 ||
+      memcmp(&v[2], &want, sizeof want) != 0)
+    fail_msg("'%s' read as %.17g, %.17g, %.17g; strtod gives %.17g", x,
+             v[0], v[1], v[2], want);
+}
+
+static void test_numlist_numbers_like_strtod(void **state) {
+  (void)state;
+  static const char *const numbers[] = {
+      "0", "0.0", "00012", "1.", ".5", "0.1", "0.3", "3.14159", "1e22",
+      "1e23", "1E5", "1e+5", "1e-5", "5e-22", "5e-23", "1.5e300",
+      "1.7976931348623157e308", "1e309", "4.9e-324", "2e-400",
+      "2.2250738585072014e-308", "9007199254740992", "9007199254740993",
+      "123456789012345678901234", "0.000000000000000000000000000001",
+      "12345678901234567890e-10", "1234567890123456789", "0.0548",
+      "000.000", "1.e5", ".5e-3", "99999999999999999999"};
+  for (size_t i = 0; i < sizeof numbers / sizeof *numbers; i++)
+    check_number(numbers[i]);
+  /* Many decimals of every length, as printf writes them. */
+  unsigned long long seed = 42;
+  for (int i = 0; i < 20000; i++) {
+    seed = seed * 6364136223846793005ULL + 1442695040888963407ULL;
+    double x = (double)(seed >> 11) / (double)(1ULL << 53);
+    double scale = (double)(1ULL << (seed >> 5) % 40) / 1048576.0;
+    char text[64];
+    snprintf(text, sizeof text, "%.*f", (int)(seed % 18), x * scale);
+    check_number(text);
+    snprintf(text, sizeof text, "%.*e", (int)(seed % 20), x * 1e10);
+    check_number(text);
+  }
+}
+
+/* Not a plain item: the reader takes nothing and stays where it was. */
+static void check_not_item(const char *text, bool uv) {
+  zr_sdl_numreader r = reader(text, uv);
+  double v[3];
+  int dim, line, column;
+  if (zr__sdl_numlist_item(&r, v, &dim, &line, &column))
+    fail_msg("'%s' was read as an item", text);
+  assert_int_equal(r.pos, 0);
+  assert_int_equal(r.line, 1);
+  assert_int_equal(r.column, 1);
+}
+
+static void test_numlist_stops_where_the_grammar_starts(void **state) {
+  (void)state;
+  check_not_item("<1,2,3>*2, <1,2,3>}", false); /* an expression */
+  check_not_item("<1,2a,3>}", false);            /* number then name */
+  check_not_item("<1,2,3e>}", false);            /* "3" then "e" */
+  check_not_item("<1,2.5.3,3>}", false);         /* two numbers */
+  check_not_item("<1,2,3> // a comment\n}", false);
+  check_not_item("<1,/* c */2,3>}", false);
+  check_not_item("<1,2,3>", false); /* nothing says it is complete */
+  check_not_item("<1,2>,", false);  /* 2-D outside uv_vectors */
+  check_not_item("<1>,", true);
+  check_not_item("<1,2,3,4>,", true);
+  check_not_item("<A,2,3>,", false);
+  check_not_item("<1,2,3>.x,", false);
+  check_not_item(",, <1,2,3>}", false);
+  check_not_item("5, <1,2,3>}", false); /* a texture index */
+  /* uv_vectors takes 2-D items; signs and blanks anywhere. */
+  zr_sdl_numreader r = reader(" ,\n <1 , - -2 >\n\t<+3,-4,5> }", true);
+  double v[3];
+  int dim, line, column;
+  assert_true(zr__sdl_numlist_item(&r, v, &dim, &line, &column));
+  assert_int_equal(dim, 2);
+  assert_true(v[0] == 1 && v[1] == 2 && v[2] == 0);
+  assert_int_equal(line, 2);
+  assert_int_equal(column, 2);
+  assert_true(zr__sdl_numlist_item(&r, v, &dim, &line, &column));
+  assert_int_equal(dim, 3);
+  assert_true(v[0] == 3 && v[1] == -4 && v[2] == 5);
+  assert_int_equal(line, 3);
+  assert_int_equal(column, 2);
+  assert_false(zr__sdl_numlist_item(&r, v, &dim, &line, &column));
+  assert_int_equal(r.bytes[r.pos], ' ');
+}
+
+/* The lexer keeps the items after a list's count as one token, and the
+   tokens after it keep their places. */
+static void test_numlist_lexer_keeps_one_token(void **state) {
+  (void)state;
+  const char *text = "mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>,\n"
+                     "  <0,1,0> } face_indices { 1 <0,1,2>, 4 } }\n";
+  size_t n = strlen(text);
+  char *bytes = malloc(n + 1);
+  char *path = strdup("t.pov");
+  assert_non_null(bytes);
+  assert_non_null(path);
+  memcpy(bytes, text, n + 1);
+  zr_sdl_file file;
+  zr_sdl_loc err_loc;
+  char err[200];
+  assert_int_equal(zr__sdl_file_lex(&file, 0, path, bytes, n, &err_loc, err,
+                                    sizeof err),
+                   ZR_OK);
+  static const int kinds[] = {T_MESH2, '{', T_VERTEX_VECTORS, '{',
+                              T_NUMBER, ZR_SDL_NUMBER_LIST, '}',
+                              T_FACE_INDICES, '{', T_NUMBER,
+                              ZR_SDL_NUMBER_LIST, ',', T_NUMBER, '}', '}',
+                              0};
+  assert_int_equal(file.n_tokens, sizeof kinds / sizeof *kinds);
+  for (size_t i = 0; i < file.n_tokens; i++)
+    assert_int_equal(file.tokens[i].kind, kinds[i]);
+  const zr_sdl_numlist *list = file.tokens[5].v.list;
+  assert_int_equal(list->n_items, 3);
+  assert_int_equal(list->line, 1);
+  assert_int_equal(list->column, 27);
+  assert_false(list->uv);
+  /* The '}' after the run, and the texture index after the face. */
+  assert_int_equal(file.tokens[6].line, 2);
+  assert_int_equal(file.tokens[6].column, 11);
+  assert_int_equal(file.tokens[12].line, 2);
+  assert_int_equal(file.tokens[12].column, 39);
+  assert_int_equal(file.tokens[10].v.list->n_items, 1);
+  zr__sdl_file_free(&file);
+}
+
+static const struct zr_mesh *mesh_of(const zr_scene *s, size_t i) {
+  assert_true(s->n_primitives > i);
+  assert_int_equal(s->primitives[i]->kind, ZR_OBJ_MESH);
+  return s->primitives[i]->u.mesh.data;
+}
+
+/* A grid of side n written as the benchmark writes it, with the text
+   between after some items. */
+static char *grid(int n, const char *between) {
+  zr_strbuf b;
+  zr__strbuf_init(&b);
+  zr__strbuf_printf(&b, "mesh2 { vertex_vectors { %d,\n", n * n);
+  for (int j = 0; j < n; j++)
+    for (int i = 0; i < n; i++)
+      zr__strbuf_printf(&b, "  <%d, %.4f, %d>,%s\n", i,
+                        (i * 7 % 11) * 0.0137 - j * 0.5, -10 - j,
+                        (i + j) % 5 == 0 ? between : "");
+  zr__strbuf_printf(&b, "} face_indices { %d,\n", 2 * (n - 1) * (n - 1));
+  for (int j = 0; j < n - 1; j++)
+    for (int i = 0; i < n - 1; i++) {
+      int a = j * n + i;
+      zr__strbuf_printf(&b, "  <%d, %d, %d>, <%d, %d, %d>,%s\n", a, a + 1,
+                        a + n, a + 1, a + n + 1, a + n,
+                        (i + j) % 7 == 0 ? between : "");
+    }
+  zr__strbuf_printf(&b, "} }\n");
+  char *text = strdup(zr__strbuf_cstr(&b));
+  zr__strbuf_free(&b);
+  return text;
+}
+
+/* Comments and directives between items send some of them through the
+   scanner and the grammar: the mesh must not change a bit. */
+static void test_numlist_same_mesh_as_the_grammar(void **state) {
+  fixture *f = *state;
+  const int n = 30;
+  char *plain = grid(n, "");
+  char *spoilt = grid(n, " // a comment\n#if (1) #end");
+  zr_scene *s = good(f, plain);
+  const struct zr_mesh *m = mesh_of(s, 0);
+  size_t nv = m->n_vertices, nf = m->n_faces;
+  zr_vec3 *vertices = malloc(nv * sizeof *vertices);
+  uint32_t(*faces)[3] = malloc(nf * sizeof *faces);
+  assert_non_null(vertices);
+  assert_non_null(faces);
+  memcpy(vertices, m->vertices, nv * sizeof *vertices);
+  memcpy(faces, m->faces, nf * sizeof *faces);
+  s = good(f, spoilt);
+  m = mesh_of(s, 0);
+  assert_int_equal(m->n_vertices, nv);
+  assert_int_equal(m->n_faces, nf);
+  assert_memory_equal(m->vertices, vertices, nv * sizeof *vertices);
+  assert_memory_equal(m->faces, faces, nf * sizeof *faces);
+  free(vertices);
+  free(faces);
+  free(plain);
+  free(spoilt);
+}
+
+/* A loop and a macro replay the token of a run: every copy reads it. */
+static void test_numlist_replayed_by_loops_and_macros(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(
+      f, "#macro M(X)\n"
+         "  mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,X> }\n"
+         "          face_indices { 1, <0,1,2> } }\n"
+         "#end\n"
+         "#declare I = 0;\n"
+         "#while (I < 3)\n"
+         "  mesh2 { vertex_vectors { 3, <0,0,5>, <1,0,5>, <0,1,5>, }\n"
+         "          face_indices { 1, <0,1,2> } translate I*x }\n"
+         "  #declare I = I + 1;\n"
+         "#end\n"
+         "M(7) M(8)\n");
+  assert_int_equal(s->n_primitives, 5);
+  for (size_t i = 0; i < 5; i++) {
+    const struct zr_mesh *m = mesh_of(s, i);
+    assert_int_equal(m->n_vertices, 3);
+    assert_int_equal(m->n_faces, 1);
+    assert_true(m->vertices[1].x == 1.0 && m->vertices[2].y == 1.0);
+  }
+  /* In the macro the identifier ends the run: the grammar reads the
+     last item. */
+  assert_true(mesh_of(s, 0)->vertices[0].z == 5.0);
+  assert_true(mesh_of(s, 2)->vertices[0].x == 0.0);
+  assert_true(mesh_of(s, 3)->vertices[0].z == 0.0);
+  assert_true(mesh_of(s, 3)->vertices[2].z == 7.0);
+  assert_true(mesh_of(s, 4)->vertices[2].z == 8.0);
+}
+
+/* Errors in and after a run point where they are, even a million lines
+   into the file. */
+static void test_numlist_error_places(void **state) {
+  fixture *f = *state;
+  bad(f, "mesh2 { vertex_vectors { 1, <0,0,0>,\n"
+         "  <1,0,0> } }\n",
+      ZR_ESCENE, "vertex_vectors: more items than the 1 announced",
+      "t.pov:2:3: error: vertex_vectors: more items than the 1 announced\n"
+      "    2 |   <1,0,0> } }\n"
+      "      |   ^\n");
+  bad(f, "mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> }\n"
+         "  face_indices { 2, <0,1,2>,\n"
+         "     <0,-1,2> } }\n",
+      ZR_ESCENE, "face_indices: -1 is not an index",
+      "t.pov:3:6: error: face_indices: -1 is not an index\n"
+      "    3 |      <0,-1,2> } }\n"
+      "      |      ^\n");
+  const int lines = 1000000;
+  zr_strbuf b;
+  zr__strbuf_init(&b);
+  zr__strbuf_printf(&b, "mesh2 { vertex_vectors { %d,\n", lines);
+  for (int i = 0; i < lines; i++)
+    zr__strbuf_printf(&b, "  <%d, 0.5, -1>,\n", i);
+  /* Line lines + 2: the scanner goes on after the run. */
+  zr__strbuf_printf(&b, "  <1, 2, 3> bogus } }\n");
+  char want[300];
+  snprintf(want, sizeof want,
+           "t.pov:%d:13: error: undefined identifier 'bogus'\n"
+           "%5d |   <1, 2, 3> bogus } }\n"
+           "      |             ^~~~~\n",
+           lines + 2, lines + 2);
+  bad(f, zr__strbuf_cstr(&b), ZR_EUNDEFINED, "undefined identifier 'bogus'",
+      want);
+  zr__strbuf_free(&b);
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test(test_numlist_numbers_like_strtod),
+      cmocka_unit_test(test_numlist_stops_where_the_grammar_starts),
+      cmocka_unit_test(test_numlist_lexer_keeps_one_token),
+      cmocka_unit_test_setup_teardown(test_numlist_same_mesh_as_the_grammar,
+                                      setup, teardown),
+      cmocka_unit_test_setup_teardown(
+          test_numlist_replayed_by_loops_and_macros, setup, teardown),
+      cmocka_unit_test_setup_teardown(test_numlist_error_places, setup,
+                                      teardown),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}
