@@ -161,6 +161,53 @@ static void test_rad_mesh_cube_floor_mean(void **state) {
   zr_context_free(ctx);
 }
 
+/* ---- polygons ---- */
+
+/* The same cube of polygons, its floor a square with a square hole and
+   a second polygon filling the hole: each polygon is its rectangle
+   trimmed to the polygon (trim.c), so the two floor parts together
+   receive as the whole floor does: mean 0.17122 within 1%, and the
+   holed part's kept area is 1 - 0.12. */
+static void test_rad_mesh_polygons(void **state) {
+  (void)state;
+  zr_context *ctx = new_context();
+  zr_scene *scene = parse(
+      ctx,
+      "#declare T = " WALL_TEXTURE ";\n"
+      "polygon { 10, <0,0,0>, <1,0,0>, <1,0,1>, <0,0,1>, <0,0,0>,\n"
+      "  <0.3,0,0.3>, <0.7,0,0.3>, <0.7,0,0.6>, <0.3,0,0.6>, <0.3,0,0.3>\n"
+      "  texture { T } }\n"
+      "polygon { 5, <0.3,0,0.3>, <0.7,0,0.3>, <0.7,0,0.6>, <0.3,0,0.6>,\n"
+      "  <0.3,0,0.3> texture { T } }\n"
+      "polygon { 5, <0,1,0>, <1,1,0>, <1,1,1>, <0,1,1>, <0,1,0> " LAMP_TEXTURE
+      " }\n"
+      "polygon { 4, <0,0,0>, <0,1,0>, <0,1,1>, <0,0,1> texture { T } }\n"
+      "polygon { 4, <1,0,0>, <1,1,0>, <1,1,1>, <1,0,1> texture { T } }\n"
+      "polygon { 4, <0,0,0>, <1,0,0>, <1,1,0>, <0,1,0> texture { T } }\n"
+      "polygon { 4, <0,0,1>, <1,0,1>, <1,1,1>, <0,1,1> texture { T } }\n");
+  zr_radiosity *rad = solve(ctx, scene, NULL);
+  assert_int_equal(rad->n_surfs, 7);
+  assert_true(fabs(rad->surfs[0].area - 0.88) < 0.01);
+  assert_true(fabs(rad->surfs[1].area - 0.12) < 0.01);
+  double sum = 0.0, area = 0.0;
+  for (size_t n = 0; n < rad->n_nodes; n++) {
+    const zr__rad_node *node = &rad->nodes[n];
+    if (node->child >= 0 || node->surf > 1 || !(node->area > 0.0))
+      continue;
+    sum += node->area * (node->b[0][0] + node->b[1][0]);
+    area += node->area;
+  }
+  double floor = sum / area;
+  assert_true(fabs(floor - 0.17122) < 0.01 * 0.17122);
+  zr_radiosity_stats st;
+  zr_radiosity_get_stats(rad, &st);
+  assert_true(fabs(st.absorbed_power - 1.0) < 0.01);
+  assert_no_nan(rad);
+  zr_radiosity_free(rad);
+  zr_scene_free(scene);
+  zr_context_free(ctx);
+}
+
 /* ---- many triangles ---- */
 
 /* A sphere of radius 0.25 at the centre of the emitting-ceiling cube
@@ -436,6 +483,7 @@ int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_rad_mesh_furnace),
       cmocka_unit_test(test_rad_mesh_cube_floor_mean),
+      cmocka_unit_test(test_rad_mesh_polygons),
       cmocka_unit_test(test_rad_mesh_many_triangles),
       cmocka_unit_test(test_rad_mesh_tilted_plane_section),
       cmocka_unit_test(test_rad_mesh_tilted_plane_lights_as_rotated),

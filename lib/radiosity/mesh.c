@@ -88,7 +88,7 @@ static bool modelled(const zr_object *o) {
   switch (o->kind) {
   case ZR_OBJ_SPHERE: case ZR_OBJ_BOX: case ZR_OBJ_PLANE:
   case ZR_OBJ_TRIANGLE: case ZR_OBJ_CYLINDER: case ZR_OBJ_CONE:
-  case ZR_OBJ_DISC: case ZR_OBJ_TORUS:
+  case ZR_OBJ_DISC: case ZR_OBJ_TORUS: case ZR_OBJ_POLYGON:
     return true;
   case ZR_OBJ_MESH: case ZR_OBJ_HEIGHT_FIELD:
     return object_mesh(o) != NULL;
@@ -177,6 +177,34 @@ static int primitive_surfaces(const zr_object *o, const zr_vec3 *lo,
   case ZR_OBJ_HEIGHT_FIELD:
     st = zr__surface_mesh(&out[n++], object_mesh(o), xf, NULL, NULL);
     break;
+  case ZR_OBJ_POLYGON: {
+    /* The rectangle of the edges in the plane's (u, v) axes; trim.c
+       keeps the polygon of it. */
+    const double *e = o->u.polygon.edges;
+    if (o->u.polygon.n_edges == 0)
+      return -1;
+    double u0 = INFINITY, u1 = -INFINITY, v0 = INFINITY, v1 = -INFINITY;
+    for (size_t k = 0; k < 2 * o->u.polygon.n_edges; k++) {
+      u0 = fmin(u0, e[2 * k]);
+      u1 = fmax(u1, e[2 * k]);
+      v0 = fmin(v0, e[2 * k + 1]);
+      v1 = fmax(v1, e[2 * k + 1]);
+    }
+    zr_vec3 ua = o->u.polygon.u_axis, va = o->u.polygon.v_axis;
+    zr_vec3 origin = zr_v3_add(
+        zr_v3_scale(o->u.polygon.normal, o->u.polygon.distance),
+        zr_v3_add(zr_v3_scale(ua, u0), zr_v3_scale(va, v0)));
+    zr_vec3 e1 = zr_v3_scale(ua, u1 - u0), e2 = zr_v3_scale(va, v1 - v0);
+    /* The surface's normal e1 x e2 along the polygon's. */
+    if (zr_v3_dot(zr_v3_cross(e1, e2), o->u.polygon.normal) < 0.0) {
+      zr_vec3 t = e1;
+      e1 = e2;
+      e2 = t;
+    }
+    st = zr__surface_parallelogram(&out[n++], origin, e1, e2, xf, NULL,
+                                   NULL);
+    break;
+  }
   case ZR_OBJ_CYLINDER: {
     zr_vec3 b = o->u.cylinder.base, c = o->u.cylinder.cap;
     double r = o->u.cylinder.radius;
@@ -320,10 +348,11 @@ static zr_status add_primitive(zr_radiosity *rad, zr_context *ctx,
     memset(s, 0, sizeof *s);
     s->geom = geo[i];
     s->object = o;
-    s->trim = trim;
+    /* A polygon trims its own rectangle (trim.c). */
+    s->trim = trim ? trim : o->kind == ZR_OBJ_POLYGON ? o : NULL;
     surface_light(s, o, rad->params.one_sided_emission != 0, &clamped);
     s->area = zr__surface_area(&s->geom, 0, 1, 0, 1, 2, &rad->rule_src);
-    if (trim != NULL) {
+    if (s->trim != NULL) {
       /* The part the CSG keeps, from a fine grid of inside tests. */
       const double whole[4] = {0.0, 1.0, 0.0, 1.0};
       s->area *= zr__rad_trim_fraction(rad, s, whole, 64);

@@ -16,17 +16,28 @@
  * L, the node's other children decide so: an intersection keeps p where
  * every other child contains it (a difference is an intersection with
  * the later children inverted), a merge where none does, a union
- * always; and where every clipped_by on the way contains it.
+ * always; and where every clipped_by on the way contains it.  A
+ * polygon is trimmed the same way, its rectangle to the polygon.
  */
 #include "radiosity/radiosity.h"
 
 #include "trace/intersect.h"
+#include "trace/obj_shapes.h"
 
 /* 1 kept, 0 removed, -1 when leaf is not under node. */
 static int keeps_under(const zr_object *node, const zr_object *leaf,
                        zr_vec3 p) {
-  if (node == leaf)
+  if (node == leaf) {
+    /* A polygon's surface is the rectangle around it (mesh.c), trimmed
+       to the polygon here. */
+    if (leaf->kind == ZR_OBJ_POLYGON &&
+        !zr__polygon_covers(leaf, leaf->transform
+                                      ? zr__xform_point(
+                                            leaf->transform->inv, p)
+                                      : p))
+      return 0;
     return leaf->clip == NULL || zr__inside(leaf->clip, p);
+  }
   if (!zr__is_csg(node->kind))
     return -1;
   for (size_t i = 0; i < node->u.csg.n_children; i++) {

@@ -34,6 +34,11 @@ static bool polygon_covers(const zr_object *o, double u, double v) {
   return in;
 }
 
+bool zr__polygon_covers(const zr_object *o, zr_vec3 p) {
+  return polygon_covers(o, zr_v3_dot(p, o->u.polygon.u_axis),
+                        zr_v3_dot(p, o->u.polygon.v_axis));
+}
+
 int zr__polygon_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
                           double tmin, double tmax, double t[4],
                           zr_vec3 normal[4]) {

@@ -33,6 +33,9 @@ int zr__torus_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
 bool zr__torus_inside(const zr_object *o, zr_vec3 p);
 void zr__torus_bounds(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi);
 
+/* Whether the point p of the polygon's plane (object space) is on the
+   polygon, by the even-odd rule. */
+bool zr__polygon_covers(const zr_object *o, zr_vec3 p);
 int zr__polygon_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
                           double tmin, double tmax, double t[4],
                           zr_vec3 normal[4]);
