@@ -32,6 +32,7 @@
  */
 #include "radiosity/radiosity.h"
 
+#include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -231,12 +232,35 @@ ZR_API zr_status zr_radiosity_solve(zr_context *ctx, const zr_scene *scene,
   return ZR_OK;
 }
 
+/* A curved source node's boundary polygon, for the final gather. */
+typedef struct zr__rad_poly {
+  size_t n;
+  zr_vec3 p[];
+} zr__rad_poly;
+
+void zr__rad_free_poly_cache(zr_radiosity *rad) {
+  if (rad->poly_cache == NULL)
+    return;
+  for (size_t i = 0; i < rad->n_poly_cache; i++)
+    free(atomic_load_explicit(&rad->poly_cache[i], memory_order_relaxed));
+  free((void *)rad->poly_cache);
+  rad->poly_cache = NULL;
+  rad->n_poly_cache = 0;
+}
+
 zr_status zr__rad_index_links(zr_radiosity *rad) {
   free(rad->recv_start);
   free(rad->recv_links);
+  zr__rad_free_poly_cache(rad);
   rad->recv_start = calloc(rad->n_nodes + 2, sizeof *rad->recv_start);
   rad->recv_links = malloc((rad->n_links + 1) * sizeof *rad->recv_links);
-  if (rad->recv_start == NULL || rad->recv_links == NULL) {
+  /* calloc's zero bytes are null pointers on every platform we build
+     for; atomic pointers of that value are simply "not made yet". */
+  rad->poly_cache = calloc(rad->n_nodes + 1, sizeof *rad->poly_cache);
+  rad->n_poly_cache = rad->poly_cache ? rad->n_nodes : 0;
+  if (rad->recv_start == NULL || rad->recv_links == NULL ||
+      rad->poly_cache == NULL) {
+    zr__rad_free_poly_cache(rad);
     free(rad->recv_start);
     free(rad->recv_links);
     rad->recv_start = rad->recv_links = NULL;
@@ -391,6 +415,41 @@ static double point_visibility(const zr_radiosity *rad,
    wall's radiosity falls towards the corner where it meets the wall
    holding the point).  vis: the link's visible fraction; below 1, or
    with per_point set, the point's own visibility replaces it. */
+/* Source node qi's boundary polygon: a planar cell's corners into buf,
+   a curved cell's chords from the cache (made on first use; a thread
+   that loses the race to publish frees its copy, which is the same). */
+static const zr_vec3 *source_polygon(const zr_radiosity *rad, int32_t qi,
+                                     zr_vec3 *buf, size_t *nv) {
+  const zr__rad_node *q = &rad->nodes[qi];
+  const zr__surface *g = &rad->surfs[q->surf].geom;
+  double sc[4];
+  bool cache = !g->planar && (size_t)qi < rad->n_poly_cache;
+  if (cache) {
+    zr__rad_poly *c = atomic_load_explicit(&rad->poly_cache[qi],
+                                           memory_order_acquire);
+    if (c != NULL) {
+      *nv = c->n;
+      return c->p;
+    }
+  }
+  zr__rad_node_cell(q, sc);
+  *nv = zr__surface_patch_polygon(g, sc[0], sc[1], sc[2], sc[3], 16, buf,
+                                  4 * ZR__FF_MAX_SEGS);
+  if (!cache)
+    return buf;
+  zr__rad_poly *made = malloc(sizeof *made + *nv * sizeof made->p[0]);
+  if (made == NULL)
+    return buf;
+  made->n = *nv;
+  memcpy(made->p, buf, *nv * sizeof *buf);
+  zr__rad_poly *expected = NULL;
+  if (!atomic_compare_exchange_strong_explicit(
+          &rad->poly_cache[qi], &expected, made, memory_order_acq_rel,
+          memory_order_acquire))
+    free(made);
+  return buf;
+}
+
 static void gather_source(const zr_radiosity *rad, int32_t qi, int sside,
                           zr_vec3 point, zr_vec3 n, double vis,
                           bool per_point, double h[3]) {
@@ -404,12 +463,9 @@ static void gather_source(const zr_radiosity *rad, int32_t qi, int sside,
       return;
     }
   }
-  zr_vec3 poly[4 * ZR__FF_MAX_SEGS];
-  double sc[4];
-  zr__rad_node_cell(q, sc);
-  size_t nv = zr__surface_patch_polygon(&rad->surfs[q->surf].geom, sc[0],
-                                        sc[1], sc[2], sc[3], 16, poly,
-                                        4 * ZR__FF_MAX_SEGS);
+  zr_vec3 buf[4 * ZR__FF_MAX_SEGS];
+  size_t nv;
+  const zr_vec3 *poly = source_polygon(rad, qi, buf, &nv);
   /* Only the part of the source that CSG keeps shines (trim.c). */
   double f = q->kept * zr__ff_point_polygon(point, n, poly, nv);
   if (!(f > 0.0))

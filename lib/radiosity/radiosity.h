@@ -138,6 +138,12 @@ struct zr_radiosity {
      hit: links recv_links[recv_start[n] .. recv_start[n + 1]) end at
      node n.  NULL with lookup 1, which reads no links. */
   uint32_t *recv_start, *recv_links;
+  /* With the index above: the boundary polygon of each curved source
+     node the final gather has asked for (16 chords an edge, 64 NURBS
+     evaluations), made once by whichever thread asks first and kept
+     (radiosity.c); NULL entries are not made yet. */
+  struct zr__rad_poly *_Atomic *poly_cache;
+  size_t n_poly_cache; /* its entries: the nodes when it was made */
 
   double light_power;  /* light sources' power onto the surfaces (est.) */
   double total_area;   /* of every surface */
@@ -172,6 +178,8 @@ void zr__rad_smooth(zr_radiosity *rad);
 void zr__rad_interpolate(const zr_radiosity *rad, int32_t n, int side,
                          double u, double v, double out[3]);
 void zr__rad_free_arrays(zr_radiosity *rad);
+/* Frees the final gather's polygon cache (radiosity.c). */
+void zr__rad_free_poly_cache(zr_radiosity *rad);
 
 /* ---- refine.c ---- */
 /* Links every pair of surfaces that see each other, then refines. */
