@@ -195,6 +195,20 @@ static bool pnm_header(const unsigned char *b, size_t n, char *magic,
   return *maxval >= 1 && *maxval <= 65535;
 }
 
+/* An array for a decoded image's heights; on failure the image is
+   freed and the message given. */
+static float *heights_for(zr_context *ctx, const char *name,
+                          zr_image *image) {
+  size_t n = (size_t)image->width * (size_t)image->height;
+  float *heights = malloc(n * sizeof *heights);
+  if (!heights) {
+    zr_image_free(image);
+    zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s", name,
+             zr_status_str(ZR_ENOMEM));
+  }
+  return heights;
+}
+
 /* The stored code of a linear value that an sRGB table decoded. */
 static unsigned stored_code(float linear, unsigned long maxval) {
   double v = zr__srgb_encode(fmin(fmax((double)linear, 0.0), 1.0));
@@ -218,12 +232,9 @@ static zr_status read_coded(zr_context *ctx, const char *name,
     return s;
   }
   size_t n = (size_t)image->width * (size_t)image->height;
-  float *heights = malloc(n * sizeof *heights);
-  if (!heights) {
-    zr_image_free(image);
-    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s", name,
-                    zr_status_str(ZR_ENOMEM));
-  }
+  float *heights = heights_for(ctx, name, image);
+  if (!heights)
+    return ZR_ENOMEM;
   bool grey = magic == '2' || magic == '5';
   for (size_t i = 0; i < n; i++) {
     const float *px = image->pixels + 3 * i;
@@ -255,12 +266,9 @@ static zr_status read_tga(zr_context *ctx, const char *name,
   if (s != ZR_OK)
     return s;
   size_t n = (size_t)image->width * (size_t)image->height;
-  float *heights = malloc(n * sizeof *heights);
-  if (!heights) {
-    zr_image_free(image);
-    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s", name,
-                    zr_status_str(ZR_ENOMEM));
-  }
+  float *heights = heights_for(ctx, name, image);
+  if (!heights)
+    return ZR_ENOMEM;
   bool grey = (bytes[2] & 7) == 3;
   for (size_t i = 0; i < n; i++) {
     const unsigned short *c = image->codes + 3 * i;

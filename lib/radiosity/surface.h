@@ -123,9 +123,7 @@ zr_status zr__surface_sphere(zr__surface *s, zr_vec3 centre, double radius,
                              const zr_transform *xf, zr_context *ctx,
                              const zr_diag_place *where);
 /* POV-Ray's torus about the y axis: the tube's circle (radius minor, its
-   centre major from the axis) turned about y.  Not yet a radiosity
-   surface (mesh.c): a torus in a furnace box took minutes to solve at
-   BF_eps 1e-2, which needs looking into first. */
+   centre major from the axis) turned about y. */
 zr_status zr__surface_torus(zr__surface *s, double major, double minor,
                             const zr_transform *xf, zr_context *ctx,
                             const zr_diag_place *where);
