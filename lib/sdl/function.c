@@ -1355,6 +1355,40 @@ static bool parameter_list(compiler *c) {
   return want(c, ')', "',' or ')'");
 }
 
+/* A block the grammar reads for the compiler (a nested parse from
+   start_token, ending right after its '}'): the compiler goes on after
+   it, in the same file or macro, or fails naming what the block was. */
+static bool nested_block(compiler *c, int start_token, const char *what) {
+  zr_sdl_parser *p = c->p;
+  size_t frames = p->n_frames;
+  p->frames[frames - 1].pos = c->pos;
+  if (zr__sdl_parse_nested(p, start_token) != ZR_OK) {
+    c->failed = true;
+    return false;
+  }
+  c->f = &p->files[c->file];
+  if (p->n_frames != frames || p->frames[frames - 1].file != c->file) {
+    zr_sdl_loc at = zr__sdl_peek_loc(p, 0);
+    zr__sdl_error(p, ZR_ESYNTAX, &at, "a function's %s must end in the "
+                  "file or macro where it begins", what);
+    c->failed = true;
+    return false;
+  }
+  c->pos = p->frames[frames - 1].pos;
+  return true;
+}
+
+/* The body of a function of a point: x, y and z loaded, the
+   parameters a pattern, pigment or transform takes. */
+static bool load_xyz(compiler *c) {
+  c->n_params = 3;
+  c->n_slots = 3;
+  for (int k = 0; k < 3; k++)
+    if (!emit(c, OP_LOAD, k, 0, 1))
+      return false;
+  return true;
+}
+
 /*
  * pattern { PATTERN ... } and pigment { ... } bodies: read by the
  * grammar itself (a nested parse from the 'pattern' or 'pigment' token,
@@ -1363,32 +1397,14 @@ static bool parameter_list(compiler *c) {
  * alone (not as F(x,y,z).red) gives its pigment's grey.
  */
 static bool texture_body(compiler *c, bool pigment) {
-  zr_sdl_parser *p = c->p;
-  size_t frames = p->n_frames;
-  p->frames[frames - 1].pos = c->pos;
-  if (zr__sdl_parse_nested(p, T_START_FN_TEXTURE) != ZR_OK) {
-    c->failed = true;
+  if (!nested_block(c, T_START_FN_TEXTURE, pigment ? "pigment" : "pattern"))
     return false;
-  }
-  c->f = &p->files[c->file];
-  if (p->n_frames != frames || p->frames[frames - 1].file != c->file) {
-    zr_sdl_loc at = zr__sdl_peek_loc(p, 0);
-    zr__sdl_error(p, ZR_ESYNTAX, &at, "a function's %s must end in the "
-                  "file or macro where it begins",
-                  pigment ? "pigment" : "pattern");
-    c->failed = true;
-    return false;
-  }
-  c->pos = p->frames[frames - 1].pos;
-  int at = add_pigment(c, p->nested_rvalue.ptr);
+  int at = add_pigment(c, c->p->nested_rvalue.ptr);
   if (at < 0)
     return false;
-  c->n_params = 3;
-  c->n_slots = 3;
   c->texture_kind = pigment ? FN_PIGMENT : FN_PATTERN;
-  for (int k = 0; k < 3; k++)
-    if (!emit(c, OP_LOAD, k, 0, 1))
-      return false;
+  if (!load_xyz(c))
+    return false;
   return emit(c, OP_TEXTURE, at, pigment ? TEXTURE_GREY : TEXTURE_PATTERN,
               -2);
 }
@@ -1407,26 +1423,10 @@ static bool spline_code(compiler *c, const zr_sdl_spline *s) {
   return emit(c, OP_LOAD, 0, 0, 1) && emit(c, OP_SPLINE, at, 0, 0);
 }
 
-/* function { spline { ... } }: the grammar reads the spline (a nested
-   parse from the 'spline' token, ending right after its '}'). */
+/* function { spline { ... } }: the grammar reads the spline. */
 static bool spline_body(compiler *c) {
-  zr_sdl_parser *p = c->p;
-  size_t frames = p->n_frames;
-  p->frames[frames - 1].pos = c->pos;
-  if (zr__sdl_parse_nested(p, T_START_FN_SPLINE) != ZR_OK) {
-    c->failed = true;
-    return false;
-  }
-  c->f = &p->files[c->file];
-  if (p->n_frames != frames || p->frames[frames - 1].file != c->file) {
-    zr_sdl_loc at = zr__sdl_peek_loc(p, 0);
-    zr__sdl_error(p, ZR_ESYNTAX, &at, "a function's spline must end in "
-                  "the file or macro where it begins");
-    c->failed = true;
-    return false;
-  }
-  c->pos = p->frames[frames - 1].pos;
-  return spline_code(c, p->nested_rvalue.ptr);
+  return nested_block(c, T_START_FN_SPLINE, "spline") &&
+         spline_code(c, c->p->nested_rvalue.ptr);
 }
 
 /* function { S } for a declared spline S, the whole body. */
@@ -1447,32 +1447,13 @@ static const zr_sdl_spline *spline_named(compiler *c) {
  * OP_XFORM, whose x a body calling it alone gets.
  */
 static bool transform_body(compiler *c) {
-  zr_sdl_parser *p = c->p;
-  size_t frames = p->n_frames;
-  p->frames[frames - 1].pos = c->pos;
-  if (zr__sdl_parse_nested(p, T_START_FN_TRANSFORM) != ZR_OK) {
-    c->failed = true;
+  if (!nested_block(c, T_START_FN_TRANSFORM, "transform"))
     return false;
-  }
-  c->f = &p->files[c->file];
-  if (p->n_frames != frames || p->frames[frames - 1].file != c->file) {
-    zr_sdl_loc at = zr__sdl_peek_loc(p, 0);
-    zr__sdl_error(p, ZR_ESYNTAX, &at, "a function's transform must end "
-                  "in the file or macro where it begins");
-    c->failed = true;
-    return false;
-  }
-  c->pos = p->frames[frames - 1].pos;
-  int at = add_transform(c, p->nested_rvalue.ptr);
+  int at = add_transform(c, c->p->nested_rvalue.ptr);
   if (at < 0)
     return false;
-  c->n_params = 3;
-  c->n_slots = 3;
   c->texture_kind = FN_TRANSFORM;
-  for (int k = 0; k < 3; k++)
-    if (!emit(c, OP_LOAD, k, 0, 1))
-      return false;
-  return emit(c, OP_XFORM, at, 0, -2);
+  return load_xyz(c) && emit(c, OP_XFORM, at, 0, -2);
 }
 
 /* internal(n) as a whole body: the parameters are the routine's. */
