@@ -89,6 +89,7 @@ distcheck: build
 
 bench: build
 	bench/run.sh $(BUILD)
+	bench/conformance.sh $(BUILD) all
 
 clean:
 	-$(MAKE) -C $(BUILD) clean

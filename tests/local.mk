@@ -66,7 +66,8 @@ EXTRA_DIST += tests/golden.sh tests/ref/README.md tests/ref/make-refs.sh \
 	tests/ref/zfor.png
 
 # The benchmark against POV-Ray (run by `make bench` in the top Makefile).
-EXTRA_DIST += bench/run.sh bench/README.md
+EXTRA_DIST += bench/run.sh bench/README.md bench/conformance.sh \
+	bench/conformance.py
 
 # The radiosity benchmark's footing: imgcmp reads POV-Ray's Radiance HDR
 # output, and the Cornell box ground truth and scene are what they claim.
