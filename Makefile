@@ -89,7 +89,7 @@ distcheck: build
 
 bench: build
 	bench/run.sh $(BUILD)
-	bench/conformance.sh $(BUILD) all
+	bench/conformance.sh $(BUILD) all || test $$? = 77
 
 clean:
 	-$(MAKE) -C $(BUILD) clean
