@@ -351,7 +351,7 @@ typedef struct zr_interior {
   /* Attenuation of light travelling d inside ("Attenuation"): each
      channel keeps fade_colour + (1 - fade_colour) / (1 + (d /
      fade_distance)^fade_power), exp(-d / fade_distance) for powers
-     above 1000; off while either is 0 (lib/trace/shade.c). */
+     of 1000 and above; off while either is 0 (lib/trace/shade.c). */
   double fade_distance, fade_power;
   zr_rgb fade_colour; /* default black */
   /* media { } inside (lib/trace/media.c); they add where they overlap. */

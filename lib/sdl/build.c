@@ -828,7 +828,11 @@ bool zr__sdl_image_map_index(zr_sdl_parser *p, zr_image_map *im, int token,
   }
   /* The entry is INDEX + 0.01 rounded towards zero, as measured with
      POV-Ray 3.7 on a two-entry palette: 0.995 and 1.989 pick entry 1,
-     0.985 and -1.005 entry 0; -1.02 and 1.991 are out of range. */
+     0.985 and -1.005 entry 0; -1.02 and 1.991 are out of range.  The
+     manual says nothing of fractional indices; bisection puts povray's
+     three edges (entry 1, and out of range above and below) at 0.99,
+     1.99 and -1.01 to 1e-5 (bench/provenance/probe.py
+     image_map_index). */
   double r = trunc(k + 0.01);
   if (!(r >= 0 && r < im->palette_size)) {
     zr__sdl_error(p, ZR_ESCENE, index_loc,

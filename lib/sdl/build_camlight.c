@@ -114,6 +114,8 @@ bool zr__sdl_area_light(zr_sdl_parser *p, zr_light *l,
       !zr__sdl_want_float(p, &e[2], &at[2], &n1) ||
       !zr__sdl_want_float(p, &e[3], &at[3], &n2))
     return false;
+  /* The manual asks sizes of at least 1 ("Area Lights"); 1024 a side
+     is our own cap on a light's cost (povray accepts more). */
   if (!(n1 >= 1 && n1 <= 1024)) {
     zr__sdl_error(p, ZR_ESCENE, &at[2], "an area light has 1 to 1024 "
                                         "lights a side, not %g", n1);

@@ -163,6 +163,10 @@ static zr_rgb apply_rainbow(const zr_rainbow *rb, zr_vec3 unit, double d,
   double a = acos(c) / DEG;
   double lo = rb->angle - 0.5 * rb->width;
   double index = rb->width > 0.0 ? (a - lo) / rb->width : -1.0;
+  /* "random noise" on the index ("Rainbow"): our own noise of the ray's
+     direction, which changes over 1/1000 radian (about a pixel of a
+     wide view) so that it reads as grain, as povray's random numbers
+     do, yet the same direction always gets the same value. */
   if (rb->jitter != 0.0)
     index += rb->jitter * (zr__noise(zr_v3_scale(unit, 1000.0)) - 0.5);
   if (index < 0.0 || index > 1.0 || !rb->colour_map)

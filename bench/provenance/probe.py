@@ -1,0 +1,389 @@
+#!/usr/bin/python3
+"""
+probe.py - where zRcube's measured constants come from.
+
+Some numbers in zRcube are neither in the POV-Ray 3.7 reference manual
+nor derivable: they were measured on the `povray` binary, as a black
+box.  Each probe below renders or #debug-s small scenes with povray,
+prints what povray gives, and sets it beside the constant or curve the
+code uses (the file and line named in the probe's title, whose comment
+points back here).  Nothing is read from POV-Ray's source.
+
+  /usr/bin/python3 bench/provenance/probe.py            # every probe
+  /usr/bin/python3 bench/provenance/probe.py NAME ...   # some of them
+  /usr/bin/python3 bench/provenance/probe.py --list
+
+POVRAY=/path/to/povray picks the binary (default: povray on PATH).  The
+script uses the standard library only and exits 77 when povray is
+missing; it prints "N passed, N failed" (a probe fails when povray's
+values no longer agree with the code's constant).  Renders are tiny
+(one thread, no antialiasing) and take a few seconds each probe.
+"""
+import math
+import os
+import shutil
+import struct
+import subprocess
+import sys
+import tempfile
+import zlib
+
+POVRAY = os.environ.get("POVRAY") or shutil.which("povray") or ""
+INCLUDE = "/usr/share/povray-3.7/include"
+
+
+# ---- running povray ----
+
+def render(workdir, scene, width, height, name="probe"):
+    """Renders scene text at width x height into a 16-bit PPM with no
+    gamma (File_Gamma=1 and assumed_gamma 1 in the scene give linear
+    values).  Returns (exit status, messages, rows of (r, g, b))."""
+    pov = os.path.join(workdir, name + ".pov")
+    out = os.path.join(workdir, name + ".ppm")
+    with open(pov, "w") as f:
+        f.write(scene)
+    if os.path.exists(out):
+        os.remove(out)
+    cmd = [POVRAY, "+I" + pov, "+O" + out, "+FP16", "+W%d" % width,
+           "+H%d" % height, "-D", "-A", "+WT1", "File_Gamma=1.0",
+           "+L" + INCLUDE, "+L" + workdir]
+    r = subprocess.run(cmd, cwd=workdir, capture_output=True, text=True,
+                       timeout=120)
+    text = r.stdout + r.stderr
+    if r.returncode != 0 or not os.path.exists(out):
+        return r.returncode or 1, text, None
+    return 0, text, read_ppm16(out)
+
+
+def read_ppm16(path):
+    data = open(path, "rb").read()
+    fields, i = [], 0
+    while len(fields) < 4:
+        while data[i:i + 1].isspace():
+            i += 1
+        if data[i:i + 1] == b"#":
+            while data[i:i + 1] != b"\n":
+                i += 1
+            continue
+        j = i
+        while not data[j:j + 1].isspace():
+            j += 1
+        fields.append(data[i:j])
+        i = j
+    i += 1
+    w, h, top = int(fields[1]), int(fields[2]), int(fields[3])
+    size = 2 if top > 255 else 1
+    rows = []
+    for y in range(h):
+        row = []
+        for x in range(w):
+            px = []
+            for c in range(3):
+                k = i + ((y * w + x) * 3 + c) * size
+                px.append(int.from_bytes(data[k:k + size], "big") / top)
+            row.append(tuple(px))
+        rows.append(row)
+    return rows
+
+
+def debug_values(workdir, scene):
+    """Parses scene (which #debug-s lines "key=value") and returns the
+    dict of those lines."""
+    status, text, _ = render(workdir, scene + "\nsphere { 0, 1 }\n", 1, 1)
+    values = {}
+    for line in text.splitlines():
+        if "=" in line and line.startswith("probe:"):
+            key, value = line[len("probe:"):].split("=", 1)
+            values[key.strip()] = value.strip()
+    return status, values
+
+
+def write_palette_png(path, palette, indices):
+    """A one-row 8-bit palette PNG (colour type 3) of the given indices."""
+    def chunk(kind, body):
+        c = struct.pack(">I", len(body)) + kind + body
+        return c + struct.pack(">I", zlib.crc32(kind + body) & 0xFFFFFFFF)
+    ihdr = struct.pack(">IIBBBBB", len(indices), 1, 8, 3, 0, 0, 0)
+    plte = b"".join(bytes(c) for c in palette)
+    raw = b"\x00" + bytes(indices)
+    with open(path, "wb") as f:
+        f.write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", ihdr) +
+                chunk(b"PLTE", plte) + chunk(b"IDAT", zlib.compress(raw)) +
+                chunk(b"IEND", b""))
+
+
+HEADER = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"
+
+
+# ---- the probes ----
+
+def probe_image_map_index(workdir):
+    """lib/sdl/build.c, zr__sdl_image_map_index: the palette entry of
+    "transmit INDEX, AMOUNT" is trunc(INDEX + 0.01).  A two-entry
+    palette image (entry 0 red, entry 1 green) is mapped over the view
+    in front of a blue background; the entry given transmit 1 shows
+    blue.  Bisection finds the INDEX where entry 1 starts and where the
+    index leaves the range at each end."""
+    write_palette_png(os.path.join(workdir, "pal.png"),
+                      [(255, 0, 0), (0, 255, 0)], [0, 1])
+
+    def entry(index):
+        scene = HEADER + """
+camera { orthographic location <0.5, 0.5, -5> look_at <0.5, 0.5, 0>
+         right x up y }
+background { rgb <0, 0, 1> }
+plane { -z, 0
+  pigment { image_map { png "pal.png"
+                        transmit %.6f, 1 } }
+  finish { ambient 1 diffuse 0 } }
+""" % index
+        status, text, rows = render(workdir, scene, 2, 1)
+        if status != 0:
+            return None  # povray refuses the index
+        blue = [px[2] > 0.5 for px in rows[0]]
+        return blue.index(True) if True in blue else -1
+
+    def edge(lo, hi, want_lo):
+        # The point in [lo, hi] where entry() stops giving want_lo.
+        for _ in range(14):
+            mid = 0.5 * (lo + hi)
+            if entry(mid) == want_lo:
+                lo = mid
+            else:
+                hi = mid
+        return 0.5 * (lo + hi)
+
+    ones = edge(0.9, 1.0, 0)      # entry 1 from here on
+    top = edge(1.95, 2.05, 1)     # out of range from here on
+    bottom = edge(-0.95, -1.05, 0)  # out of range below this
+    print("  entry 1 from INDEX %.4f; out of range from %.4f; "
+          "below %.4f" % (ones, top, bottom))
+    print("  at these INDEX values povray picks:",
+          ", ".join("%g -> %s" % (k, entry(k)) for k in
+                    (-1.02, -1.005, 0.985, 0.995, 1.989, 1.991)))
+    offsets = (1 - ones, 2 - top, -1 - bottom)
+    print("  offset added before truncation: %.4f, %.4f, %.4f "
+          "(zRcube: 0.01)" % offsets)
+    return all(abs(o - 0.01) < 0.002 for o in offsets)
+
+
+MEDIA_SCENE = """#version %s;
+global_settings { assumed_gamma 1 }
+camera { location <0, 0, -4> look_at 0 }
+box { -1, 1 hollow pigment { rgbt 1 }
+  interior { media { %s
+    emission 1.5
+    density { spherical color_map { [0 rgb 0] [0.5 rgb 0.2]
+                                    [1 rgb 1] } scale 1.2 } } } }
+"""
+
+
+def probe_media_defaults(workdir):
+    """lib/sdl/build_media.c, zr__sdl_media_new: the media defaults.
+    The manual's table ("Media") says samples 1, 1 and, from 3.5 on,
+    method 3 with one interval; povray renders a medium without those
+    items the same as with "samples 10, 10" (and differently from
+    "samples 1, 1"); under #version 3.1 the same as "method 1
+    intervals 10 samples 1, 1"."""
+    def image(version, items):
+        status, text, rows = render(workdir, MEDIA_SCENE % (version, items),
+                                    24, 18)
+        if status != 0:
+            raise RuntimeError(text[-2000:])
+        return rows
+
+    ok = True
+    plain = image("3.7", "")
+    for items, want in (("samples 10, 10", True), ("samples 1, 1", False),
+                        ("method 3 intervals 1 samples 10, 10", True)):
+        same = image("3.7", items) == plain
+        print("  #version 3.7: default %s \"%s\"" %
+              ("==" if same else "!=", items))
+        ok = ok and same == want
+    old = image("3.1", "")
+    for items, want in (("method 1 intervals 10 samples 1, 1", True),
+                        ("method 3 intervals 1 samples 10, 10", False)):
+        same = image("3.1", items) == old
+        print("  #version 3.1: default %s \"%s\"" %
+              ("==" if same else "!=", items))
+        ok = ok and same == want
+    print("  zRcube: 3.5 and later method 3, intervals 1, samples 10, 10;"
+          " before, method 1, intervals 10, samples 1, 1")
+    return ok
+
+
+def smoothstep(t):
+    t = min(1.0, max(0.0, t))
+    return t * t * (3 - 2 * t)
+
+
+def probe_spotlight_curve(workdir):
+    """lib/trace/lights.c, zr__light_cone: a spotlight's factor between
+    radius and falloff is the smoothstep 3t^2 - 2t^3 of t = (cos a -
+    cos falloff) / (cos radius - cos falloff), times cos(a)^tightness.
+    A white plane (ambient 0, diffuse 1) under a spotlight 10 units up
+    pointing straight down; a pixel at x on the plane is lit at angle
+    a = atan(x / 10) with N.L = cos a, so factor = value / cos a."""
+    worst = 0.0
+    w = 121
+    for radius, falloff, tight in ((10, 30, 0), (0, 40, 0), (15, 25, 5)):
+        scene = HEADER + """
+camera { orthographic location <0, 20, 0> look_at 0
+         right x * 20 up z * 20 * 3 / %d }
+plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }
+light_source { <0, 10, 0> rgb 1 spotlight point_at 0
+  radius %g falloff %g tightness %g }
+""" % (w, radius, falloff, tight)
+        status, text, rows = render(workdir, scene, w, 3)
+        if status != 0:
+            raise RuntimeError(text[-2000:])
+        cr, cf = (math.cos(math.radians(v)) for v in (radius, falloff))
+        shown = []
+        for i in range(w // 2, w):
+            x = 20 * ((i + 0.5) / w - 0.5)
+            c = 10 / math.hypot(x, 10)
+            measured = rows[1][i][0] / c
+            if c <= cf:
+                ours = 0.0
+            elif c >= cr:
+                ours = 1.0
+            else:
+                ours = smoothstep((c - cf) / (cr - cf))
+            ours *= c ** tight
+            worst = max(worst, abs(measured - ours))
+            if i % 6 == 0:
+                shown.append("%.1f:%.4f/%.4f" %
+                              (math.degrees(math.acos(c)), measured, ours))
+        print("  radius %g falloff %g tightness %g (angle:povray/zRcube)" %
+              (radius, falloff, tight))
+        print("   ", " ".join(shown))
+    print("  largest difference %.2e" % worst)
+    return worst < 2e-3
+
+
+def probe_cylinder_curve(workdir):
+    """lib/trace/lights.c, zr__light_cone: a cylinder light's factor is
+    the smoothstep of t = (falloff - d) / (falloff - radius) in the
+    distance d from its axis, times (1 - d / falloff)^tightness.  The
+    plane is lit along the axis (N.L = 1), so a pixel is the factor."""
+    worst = 0.0
+    w = 121
+    for radius, falloff, tight in ((2, 6, 0), (1, 8, 3)):
+        scene = HEADER + """
+camera { orthographic location <0, 20, 0> look_at 0
+         right x * 20 up z * 20 * 3 / %d }
+plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }
+light_source { <0, 10, 0> rgb 1 cylinder point_at 0
+  radius %g falloff %g tightness %g }
+""" % (w, radius, falloff, tight)
+        status, text, rows = render(workdir, scene, w, 3)
+        if status != 0:
+            raise RuntimeError(text[-2000:])
+        shown = []
+        for i in range(w // 2, w):
+            d = abs(20 * ((i + 0.5) / w - 0.5))
+            measured = rows[1][i][0]
+            if d >= falloff:
+                ours = 0.0
+            elif d <= radius:
+                ours = 1.0
+            else:
+                ours = smoothstep((falloff - d) / (falloff - radius))
+            ours *= (1 - d / falloff) ** tight if d < falloff else 0.0
+            worst = max(worst, abs(measured - ours))
+            if i % 6 == 0:
+                shown.append("%.2f:%.4f/%.4f" % (d, measured, ours))
+        print("  radius %g falloff %g tightness %g (d:povray/zRcube)" %
+              (radius, falloff, tight))
+        print("   ", " ".join(shown))
+    print("  largest difference %.2e" % worst)
+    return worst < 2e-3
+
+
+def probe_brick_colours(workdir):
+    """lib/scene/texture.c, zr__pigment_set_pattern: brick's default
+    colours.  The manual ("Brick") only says "a default deep red and
+    dark gray"; a brick pigment without colours, ambient 1, shows the
+    two values."""
+    scene = HEADER + """
+camera { orthographic location <0, 0, -10> look_at 0 right x * 16
+         up y * 12 }
+plane { -z, 0 pigment { brick } finish { ambient 1 diffuse 0 } }
+"""
+    status, text, rows = render(workdir, scene, 32, 24)
+    if status != 0:
+        raise RuntimeError(text[-2000:])
+    seen = {}
+    for row in rows:
+        for px in row:
+            key = tuple(round(c, 4) for c in px)
+            seen[key] = seen.get(key, 0) + 1
+    found = sorted(seen, key=lambda k: -seen[k])
+    print("  colours seen (pixels):",
+          ", ".join("<%g, %g, %g> (%d)" % (k + (seen[k],)) for k in found))
+    want = [(0.6, 0.15, 0.15), (0.5, 0.5, 0.5)]
+    print("  zRcube: brick <0.6, 0.15, 0.15>, mortar <0.5, 0.5, 0.5>")
+    return sorted(found) == sorted(want)
+
+
+def probe_unbounded_extent(workdir):
+    """lib/sdl/build_pattern.c, zr__sdl_extent: min_extent and
+    max_extent of an object without finite bounds (a plane)."""
+    status, values = debug_values(workdir, HEADER + """
+#declare P = plane { y, 0 }
+#debug concat("probe:min=", vstr(3, min_extent(P), ",", 0, -1), "\\n")
+#debug concat("probe:max=", vstr(3, max_extent(P), ",", 0, -1), "\\n")
+""")
+    print("  min_extent %s, max_extent %s (zRcube: -1e10 and 1e10 on each"
+          " axis)" % (values.get("min"), values.get("max")))
+    try:
+        lo = [float(v) for v in values["min"].split(",")]
+        hi = [float(v) for v in values["max"].split(",")]
+    except (KeyError, ValueError):
+        return False
+    return all(v == -1e10 for v in lo) and all(v == 1e10 for v in hi)
+
+
+PROBES = [
+    ("image_map_index", probe_image_map_index),
+    ("media_defaults", probe_media_defaults),
+    ("spotlight_curve", probe_spotlight_curve),
+    ("cylinder_curve", probe_cylinder_curve),
+    ("brick_colours", probe_brick_colours),
+    ("unbounded_extent", probe_unbounded_extent),
+]
+
+
+def main(argv):
+    if "--list" in argv:
+        for name, fn in PROBES:
+            print("%-18s %s" % (name, fn.__doc__.split(":")[0].strip()))
+        return 0
+    if not POVRAY or not os.path.exists(POVRAY):
+        print("povray not found: probes skipped")
+        return 77
+    names = [a for a in argv if not a.startswith("-")]
+    unknown = [n for n in names if n not in dict(PROBES)]
+    if unknown:
+        print("unknown probe(s): %s (see --list)" % ", ".join(unknown))
+        return 2
+    passed = failed = 0
+    for name, fn in PROBES:
+        if names and name not in names:
+            continue
+        print("%s: %s" % (name, fn.__doc__.split(":")[0].strip()))
+        with tempfile.TemporaryDirectory(prefix="zr-probe-") as workdir:
+            try:
+                ok = fn(workdir)
+            except (RuntimeError, subprocess.TimeoutExpired) as e:
+                print("  povray failed: %s" % e)
+                ok = False
+        print("  %s" % ("agrees" if ok else "DIFFERS"))
+        passed += ok
+        failed += not ok
+    print("%d passed, %d failed" % (passed, failed))
+    return 0 if failed == 0 else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
