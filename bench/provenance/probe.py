@@ -344,6 +344,64 @@ def probe_unbounded_extent(workdir):
     return all(v == -1e10 for v in lo) and all(v == 1e10 for v in hi)
 
 
+def probe_rounded_box_offset(workdir):
+    """lib/sdl/function.c, f_rounded_box (internal 60): the distance to
+    the box shrunk by the radius, less the radius, less 1e-6.  povray's
+    values (#debug, 9 decimals) at points inside, near and outside the
+    box are set beside the plain distance; their difference is the
+    offset."""
+    points = [(0, 0, 0), (0.45, 0, 0), (0.49, 0.55, 0), (-0.6, -0.7, 0.1),
+              (2, 0, 0), (0.3, 0.3, 0.3), (1, 1, 1)]
+    r, half = 0.1, (0.5, 0.6, 0.7)
+    lines = "".join(
+        '#debug concat("probe:%d=", str(f_rounded_box(%g, %g, %g, %g, '
+        '%g, %g, %g), 0, 9), "\\n")\n' % ((i,) + pt + (r,) + half)
+        for i, pt in enumerate(points))
+    status, values = debug_values(workdir, HEADER +
+                                  '#include "functions.inc"\n' + lines)
+    offsets = []
+    for i, pt in enumerate(points):
+        d = [max(abs(c) - (h - r), 0.0) for c, h in zip(pt, half)]
+        plain = math.sqrt(sum(v * v for v in d)) - r
+        try:
+            got = float(values[str(i)])
+        except (KeyError, ValueError):
+            return False
+        offsets.append(plain - got)
+        print("  f_rounded_box%s: povray %.9f, distance %.9f, below by "
+              "%.2e" % (pt, got, plain, plain - got))
+    print("  zRcube subtracts 1e-6")
+    return all(abs(o - 1e-6) < 2e-9 for o in offsets)
+
+
+def probe_field_clip(workdir):
+    """lib/sdl/function.c, field(): internal functions with a "field
+    strength" parameter are clipped to [-10, 10]; plain distances are
+    not."""
+    cases = [("f_paraboloid(0, 11, 0, 1)", 10.0),
+             ("f_paraboloid(0, -30, 0, 1)", -10.0),
+             ("f_paraboloid(0, 3, 0, 1)", None),
+             ("f_sphere(20, 0, 0, 1)", 19.0)]
+    lines = "".join('#debug concat("probe:%d=", str(%s, 0, 6), "\\n")\n'
+                    % (i, e) for i, (e, _) in enumerate(cases))
+    status, values = debug_values(workdir, HEADER +
+                                  '#include "functions.inc"\n' + lines)
+    ok = True
+    for i, (e, want) in enumerate(cases):
+        got = values.get(str(i))
+        print("  %s = %s%s" % (e, got, "" if want is None else
+                                " (zRcube %g)" % want))
+        try:
+            v = float(got)
+        except (TypeError, ValueError):
+            return False
+        if want is not None and abs(v - want) > 1e-6:
+            ok = False
+        if want is None and abs(v) >= 10:
+            ok = False
+    return ok
+
+
 PROBES = [
     ("image_map_index", probe_image_map_index),
     ("media_defaults", probe_media_defaults),
@@ -351,6 +409,8 @@ PROBES = [
     ("cylinder_curve", probe_cylinder_curve),
     ("brick_colours", probe_brick_colours),
     ("unbounded_extent", probe_unbounded_extent),
+    ("rounded_box_offset", probe_rounded_box_offset),
+    ("field_clip", probe_field_clip),
 ]
 
 

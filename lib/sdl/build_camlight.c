@@ -497,7 +497,10 @@ zr_rainbow *zr__sdl_rainbow_new(zr_sdl_parser *p) {
   rb->arc_angle = 180;
   rb->falloff_angle = 180;
   rb->up = zr_v3(0, 1, 0);
-  rb->distance = 1e7; /* "a sufficiently large value" */
+  /* "a sufficiently large value" ("Rainbow"); 1e7 is ours: any
+     distance far beyond a scene's leaves 1 - exp(-d / distance) near 0
+     on objects, which is what the manual asks of it. */
+  rb->distance = 1e7;
   return rb;
 }
 

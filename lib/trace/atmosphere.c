@@ -52,7 +52,8 @@
 static const double DEG = 3.14159265358979323846 / 180.0;
 
 /* The distance a ray to the sky counts as (for rainbow and jitter; fog
-   treats it as infinite). */
+   treats it as infinite): our own stand-in for "very far", beyond any
+   scene's size (the manual gives none). */
 #define SKY_DISTANCE 1e7
 
 zr_rgb zr__sky_colour(const zr_scene *scene, zr_vec3 dir) {

@@ -290,7 +290,11 @@ static double point_random(zr_vec3 p) {
  * of the cosines toward the light and toward the viewer, to 1%.
  * turbulence u varies the thickness as t (1 + u n), n our turbulence
  * noise's x component (zero mean): POV-Ray's own noise is not ours, so
- * only the character of the variation can match.
+ * only the character of the variation can match.  The manual says the
+ * octaves, lambda and omega of this turbulence are "internally set"
+ * ("Iridescence"); 5 octaves, omega 0.5 and lambda 2 are our own pick
+ * (the usual turbulence weights, one octave short of the pattern
+ * default since finer ones do not show in a film's colour).
  */
 zr_rgb zr__irid_tint(const zr_finish *f, const zr_settings *gs, zr_vec3 p,
                      double cos_light, double cos_eye) {
