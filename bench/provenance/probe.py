@@ -402,6 +402,159 @@ def probe_field_clip(workdir):
     return ok
 
 
+def magnet_count(kind, c, iterations, bailout, settled):
+    """The exterior-1 value of magnet 1 or 2 (mandel form, z0 = 0) at
+    c, as lib/scene/pattern_more.c computes it with the given bailout
+    (on |z|^2) and settling distance (on |z - 1|^2); 1 for interior."""
+    z = 0j
+    for n in range(iterations):
+        if kind == 1:
+            den = 2 * z + c - 2
+            q = (z * z + c - 1) / den if den != 0 else 1e30
+        else:
+            c1, c2 = c - 1, c - 2
+            den = 3 * z * z + 3 * c2 * z + c1 * c2 + 1
+            q = (z ** 3 + 3 * c1 * z + c1 * c2) / den if den != 0 else 1e30
+        z = q * q
+        if abs(z) ** 2 > bailout or abs(z - 1) ** 2 < settled:
+            return n / iterations
+    return 1.0
+
+
+def probe_magnet_limits(workdir):
+    """lib/scene/pattern_more.c, MAGNET_BAILOUT and MAGNET_SETTLED: a
+    magnet orbit escapes when |z|^2 exceeds 1e4 or it comes within 0.01
+    of the fixed point 1 (|z - 1|^2 < 1e-4).  povray's exterior counts
+    (function { pattern { magnet N mandel 30 } }, #debug) on a grid of
+    points are compared with the iteration run for a range of both
+    limits; the probe prints which limits reproduce every value."""
+    pts = [(-2 + 0.37 * i, -1.6 + 0.29 * j) for i in range(14)
+           for j in range(12)]
+    pts += [(1.2 + 0.13 * k, 0.3 + 0.07 * k) for k in range(12)]
+    got = {}
+    for kind in (1, 2):
+        lines = "".join(
+            '#debug concat("probe:%d=", str(F(%g, %g, 0), 0, 9), "\\n")\n'
+            % (i, x, y) for i, (x, y) in enumerate(pts))
+        status, values = debug_values(
+            workdir, HEADER + "#declare F = function { pattern { magnet %d "
+            "mandel 30 } }\n" % kind + lines)
+        try:
+            got[kind] = [float(values[str(i)]) for i in range(len(pts))]
+        except (KeyError, ValueError):
+            print("  povray gave no values")
+            return False
+    bailouts = [4, 100, 1000, 2000, 3000, 5000, 1e4, 2e4, 1e5, 1e6]
+    settles = [0, 1e-6, 1e-5, 1e-4, 1e-3, 1e-2]
+    fits = []
+    for b in bailouts:
+        for st in settles:
+            bad = 0
+            for kind in (1, 2):
+                for (x, y), v in zip(pts, got[kind]):
+                    ours = magnet_count(kind, complex(x, y), 30, b, st)
+                    if abs(ours - v) > 1e-6 and abs(ours % 1.0 - v) > 1e-6:
+                        bad += 1
+            if bad == 0:
+                fits.append((b, st))
+    print("  %d points x 2 kinds; limits (|z|^2 bailout, |z-1|^2 settle) "
+          "that reproduce all of povray's values:" % len(pts))
+    print("   ", ", ".join("(%g, %g)" % f for f in fits) or "none")
+    print("  zRcube: (1e4, 1e-4)")
+    return (1e4, 1e-4) in fits
+
+
+def omnimax_direction(a, u, v, curve, widest):
+    """The unit ray (right, up, direction parts) of lib/trace/camera.c's
+    omnimax at image point (u, v), or None where it shoots none."""
+    span = 1.0 if a < 1.0 else min(a, widest)
+    r90, v0 = 0.5 * min(a, span), -0.5 * (span - 1.0)
+    x, y = u * a, v - v0
+    r = math.hypot(x, y)
+    rho = r / r90
+    if rho > 1.0:
+        return None
+    theta = rho * (curve[0] + rho * rho * (curve[1] + rho * rho * curve[2]))
+    cx, cy = (x / r, y / r) if r > 0 else (0.0, 0.0)
+    if math.sin(theta) * cy + math.cos(theta) < 0:
+        return None
+    return (math.sin(theta) * cx, math.sin(theta) * cy, math.cos(theta))
+
+
+def probe_omnimax_curve(workdir):
+    """lib/trace/camera.c, OMNIMAX_CURVE and OMNIMAX_WIDEST: the
+    omnimax lens curve theta(rho) = 1.411284 rho - 0.094448 rho^3 +
+    0.256789 rho^5 and the widest aspect 1.28344.  The camera sits in a
+    unit sphere whose colour is its point, that is the ray's direction
+    (three renders, one per axis); every pixel's povray direction is
+    set beside ours, and the odd quintic is fitted again to povray's
+    (rho, theta) pairs."""
+    curve, widest = (1.411284, -0.094448, 0.256789), 1.28344
+    w, h = 64, 48
+    worst, mask_bad, pairs = 0.0, 0, []
+    for right in (1.33, 0.75, 1.0, 1.2, 2.0):
+        chans = []
+        for axis in "xyz":
+            scene = HEADER + """
+camera { omnimax location 0 direction z right x * %g up y }
+sphere { 0, 1 hollow
+  pigment { function { %s * 0.5 + 0.5 } color_map { [0 rgb 0] [1 rgb 1] } }
+  finish { ambient 1 diffuse 0 } }
+""" % (right, axis)
+            status, text, rows = render(workdir, scene, w, h)
+            if status != 0:
+                raise RuntimeError(text[-2000:])
+            chans.append(rows)
+        a = right / 1.0
+        for j in range(h):
+            for i in range(w):
+                px = [chans[k][j][i][0] * 2 - 1 for k in range(3)]
+                shot = abs(math.sqrt(sum(c * c for c in px)) - 1) < 0.01
+                u, v = (i + 0.5) / w - 0.5, 0.5 - (j + 0.5) / h
+                ours = omnimax_direction(a, u, v, curve, widest)
+                if (ours is not None) != shot:
+                    mask_bad += 1
+                    continue
+                if ours is None:
+                    continue
+                dot = sum(p * q for p, q in zip(px, ours))
+                dot /= math.sqrt(sum(c * c for c in px))
+                worst = max(worst, math.degrees(math.acos(min(1.0, dot))))
+                if right == 1.33:
+                    span = min(a, widest)
+                    r90, v0 = 0.5 * span, -0.5 * (span - 1.0)
+                    rho = math.hypot(u * a, v - v0) / r90
+                    pairs.append((rho, math.acos(max(-1.0, min(1.0,
+                                                               px[2])))))
+    # Least squares for theta = c1 rho + c3 rho^3 + c5 rho^5.
+    m = [[0.0] * 3 for _ in range(3)]
+    rhs = [0.0] * 3
+    for rho, theta in pairs:
+        basis = (rho, rho ** 3, rho ** 5)
+        for r_ in range(3):
+            rhs[r_] += basis[r_] * theta
+            for c_ in range(3):
+                m[r_][c_] += basis[r_] * basis[c_]
+    for col in range(3):  # Gauss-Jordan on the 3 x 3 system
+        piv = m[col][col]
+        for c_ in range(3):
+            m[col][c_] /= piv
+        rhs[col] /= piv
+        for r_ in range(3):
+            if r_ != col:
+                f = m[r_][col]
+                for c_ in range(3):
+                    m[r_][c_] -= f * m[col][c_]
+                rhs[r_] -= f * rhs[col]
+    print("  pixels whose ray/no-ray differs: %d; largest angle between "
+          "povray's and our rays: %.4f degrees" % (mask_bad, worst))
+    print("  fit to povray (right 1.33, %d pixels): theta = %.6f rho %+.6f "
+          "rho^3 %+.6f rho^5" % ((len(pairs),) + tuple(rhs)))
+    print("  zRcube: theta = 1.411284 rho - 0.094448 rho^3 + 0.256789 rho^5,"
+          " widest aspect 1.28344")
+    return mask_bad == 0 and worst < 0.02
+
+
 PROBES = [
     ("image_map_index", probe_image_map_index),
     ("media_defaults", probe_media_defaults),
@@ -411,6 +564,8 @@ PROBES = [
     ("unbounded_extent", probe_unbounded_extent),
     ("rounded_box_offset", probe_rounded_box_offset),
     ("field_clip", probe_field_clip),
+    ("magnet_limits", probe_magnet_limits),
+    ("omnimax_curve", probe_omnimax_curve),
 ]
 
 
