@@ -555,6 +555,88 @@ sphere { 0, 1 hollow
     return mask_bad == 0 and worst < 0.02
 
 
+ZRCUBE = os.environ.get("ZRCUBE") or os.path.join(
+    os.path.dirname(os.path.abspath(__file__)), "..", "..", "build", "bin",
+    "zrcube")
+
+PATCH_VIEWS = [
+    "camera { location <1.5, 1.5, -6> look_at <1.5, 1.5, 0> }\n"
+    "light_source { <-5, 10, -10> rgb 1 }",
+    "camera { location <-3, 5, -4> look_at <1.5, 1.5, 0> angle 50 }\n"
+    "light_source { <8, 2, -3> rgb 1 }",
+]
+
+PATCH_SCENE = HEADER + """%s
+bicubic_patch { type 1 flatness %g u_steps %d v_steps %d
+  <0, 0, 2>, <1, 0, 0>, <2, 0, 0>, <3, 0,-2>,
+  <0, 1, 0>, <1, 1, 0>, <2, 1, 0>, <3, 1, 0>,
+  <0, 2, 0>, <1, 2, 0>, <2, 2, 0>, <3, 2, 0>,
+  <0, 3, 2>, <1, 3, 0>, <2, 3, 0>, <3, 3, -2>
+  pigment { rgb 1 } finish { ambient 0 diffuse 1 } }
+"""
+
+
+def render_zrcube(workdir, scene, width, height):
+    pov = os.path.join(workdir, "z.pov")
+    out = os.path.join(workdir, "z.ppm")
+    with open(pov, "w") as f:
+        f.write(scene)
+    r = subprocess.run([ZRCUBE, "+I" + pov, "+O" + out, "+W%d" % width,
+                        "+H%d" % height, "-D", "+WT1"], cwd=workdir,
+                       capture_output=True, text=True, timeout=120)
+    if r.returncode != 0:
+        raise RuntimeError(r.stderr[-2000:])
+    return read_ppm16(out)
+
+
+def patch_steps(draw, view):
+    """For flatness 0.3, 0.1, 0.03 and 0.01 (u_steps = v_steps = 8 as
+    the limit), the uniform u_steps = v_steps (flatness 0) whose render
+    is nearest (mean absolute difference) to the adaptive one."""
+    def flat(rows):
+        return [c for row in rows for px in row for c in px]
+
+    def diff(a, b):
+        return sum(abs(x - y) for x, y in zip(a, b)) / len(a)
+    uniform = {n: flat(draw(PATCH_SCENE % (view, 0, n, n)))
+               for n in range(1, 8)}
+    steps = []
+    for f in (0.3, 0.1, 0.03, 0.01):
+        im = flat(draw(PATCH_SCENE % (view, f, 8, 8)))
+        d = {n: diff(im, uniform[n]) for n in uniform}
+        steps.append(min(d, key=d.get))
+    return steps
+
+
+def probe_patch_flatness(workdir):
+    """lib/sdl/build_surface.c, patch_tolerance: a bicubic patch piece
+    is flat enough when its control points lie within flatness / 20 of
+    the patch's size from its plane.  The manual only says that smaller
+    flatness subdivides more ("Bicubic Patch").  On two views of the
+    manual's patch, each flatness is matched to the uniform subdivision
+    it looks like, for povray and (when built) for zRcube; the scale
+    1/20 makes the two agree."""
+    def pov(scene):
+        status, text, rows = render(workdir, scene, 160, 120)
+        if status != 0:
+            raise RuntimeError(text[-2000:])
+        return rows
+    ok = True
+    for k, view in enumerate(PATCH_VIEWS):
+        theirs = patch_steps(pov, view)
+        print("  view %d: flatness 0.3, 0.1, 0.03, 0.01 look like uniform "
+              "steps %s in povray" % (k + 1, theirs))
+        if os.path.exists(ZRCUBE):
+            ours = patch_steps(
+                lambda sc: render_zrcube(workdir, sc, 160, 120), view)
+            print("          and %s in zRcube (%s)" %
+                  (ours, os.path.normpath(ZRCUBE)))
+            ok = ok and ours == theirs
+        else:
+            print("          (no zRcube at %s: povray only)" % ZRCUBE)
+    return ok
+
+
 PROBES = [
     ("image_map_index", probe_image_map_index),
     ("media_defaults", probe_media_defaults),
@@ -566,6 +648,7 @@ PROBES = [
     ("field_clip", probe_field_clip),
     ("magnet_limits", probe_magnet_limits),
     ("omnimax_curve", probe_omnimax_curve),
+    ("patch_flatness", probe_patch_flatness),
 ]
 
 
