@@ -637,6 +637,52 @@ def probe_patch_flatness(workdir):
     return ok
 
 
+def probe_rainbow_falloff(workdir):
+    """lib/trace/atmosphere.c, apply_rainbow: a rainbow arc fades
+    between falloff_angle / 2 and arc_angle / 2 (around its direction,
+    from up) by the smoothstep 3 t^2 - 2 t^3, t going from 1 to 0.  A
+    white rainbow over a black sky, seen along its direction; each
+    pixel in the middle of the band is its weight."""
+    w, h = 96, 72
+    worst, shown = 0.0, {}
+    for arc, falloff in ((180, 60), (300, 100)):
+        scene = HEADER + """
+camera { location 0 direction z right x * 1.33 up y }
+background { rgb 0 }
+rainbow { angle 20 width 10 distance 1e7 direction <0, 0, 1> up y
+  arc_angle %g falloff_angle %g
+  color_map { [0 rgb 1] [1 rgb 1] } }
+""" % (arc, falloff)
+        status, text, rows = render(workdir, scene, w, h)
+        if status != 0:
+            raise RuntimeError(text[-2000:])
+        for j in range(h):
+            for i in range(w):
+                u, v = (i + 0.5) / w - 0.5, 0.5 - (j + 0.5) / h
+                x, y, z = u * 1.33, v, 1.0
+                a = math.degrees(math.acos(z / math.sqrt(x * x + y * y + 1)))
+                if abs(a - 20) > 3:
+                    continue
+                phi = math.degrees(math.atan2(abs(x), y))
+                if phi > arc / 2:
+                    ours = 0.0
+                elif phi > falloff / 2:
+                    ours = smoothstep(1 - (phi - falloff / 2) /
+                                      (0.5 * (arc - falloff)))
+                else:
+                    ours = 1.0
+                got = rows[j][i][0]
+                worst = max(worst, abs(got - ours))
+                bucket = int(phi // 15)
+                if bucket not in shown:
+                    shown[bucket] = "%.0f:%.4f/%.4f" % (phi, got, ours)
+        print("  arc %g falloff %g (phi:povray/zRcube)" % (arc, falloff))
+        print("   ", " ".join(shown[k] for k in sorted(shown)))
+        shown = {}
+    print("  largest difference %.2e" % worst)
+    return worst < 2e-3
+
+
 PROBES = [
     ("image_map_index", probe_image_map_index),
     ("media_defaults", probe_media_defaults),
@@ -649,6 +695,7 @@ PROBES = [
     ("magnet_limits", probe_magnet_limits),
     ("omnimax_curve", probe_omnimax_curve),
     ("patch_flatness", probe_patch_flatness),
+    ("rainbow_falloff", probe_rainbow_falloff),
 ]
 
 

@@ -189,7 +189,9 @@ static zr_rgb apply_rainbow(const zr_rainbow *rb, zr_vec3 unit, double d,
     double soft = 0.5 * (rb->arc_angle - rb->falloff_angle);
     if (phi > 0.5 * rb->falloff_angle && soft > 0.0) {
       double t = 1.0 - (phi - 0.5 * rb->falloff_angle) / soft;
-      weight = t * t * (3.0 - 2.0 * t); /* measured: a smoothstep */
+      /* Measured: a smoothstep (bench/provenance/probe.py
+         rainbow_falloff). */
+      weight = t * t * (3.0 - 2.0 * t);
     }
   }
   zr_colour f = zr__colour_map_eval(rb->colour_map, index);
