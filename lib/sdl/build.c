@@ -402,7 +402,9 @@ bool zr__sdl_octaves(zr_sdl_parser *p, const zr_sdl_expr *e,
   double v;
   if (!zr__sdl_want_float(p, e, loc, &v))
     return false;
-  /* POV-Ray limits octaves to 1 .. 10 ("Octaves"). */
+  /* The manual's range ("Octaves", 3.4.7.5.5.4: "Legal values range
+     from 1 to <10"), with 10 let through; povray 3.7 itself accepts
+     larger counts (11 and 30 parse without a word). */
   if (v < 1 || v > 10) {
     zr__sdl_error(p, ZR_ESCENE, loc, "octaves must be between 1 and 10");
     return false;
@@ -681,8 +683,9 @@ static double stored(const zr_image *image, size_t k) {
 /*
  * The number of each pixel a bump_map or material_map reads
  * (lib/scene/bitmap.c): a bump map's height is the grey of the stored
- * samples, 0.297 red + 0.589 green + 0.114 blue (POV-Ray 3.7 renders
- * of pure red, green and blue steps measure these weights), or of the
+ * samples, 0.297 red + 0.589 green + 0.114 blue (the manual's grey,
+ * 2.3.3.3.7, and POV-Ray 3.7 renders of pure red, green and blue steps
+ * measure these weights), or of the
  * decoded ones under a "gamma"; use_index replaces it later
  * (zr__sdl_bump_map_end).  A material map's is the palette index, else
  * the red sample on a 0 .. 255 scale ("Material Maps").

@@ -441,7 +441,8 @@ static double texture_value(const zr_pigment *pg, int channel,
   case 2: return c.b;
   case 3: return c.f;
   case 4: return c.t;
-  default: return 0.297 * c.r + 0.589 * c.g + 0.114 * c.b;
+  default: /* .gray: the manual's weights (2.3.3.3.7) */
+    return 0.297 * c.r + 0.589 * c.g + 0.114 * c.b;
   }
 }
 
