@@ -683,6 +683,35 @@ rainbow { angle 20 width 10 distance 1e7 direction <0, 0, 1> up y
     return worst < 2e-3
 
 
+def probe_normal_amount(workdir):
+    """lib/sdl/build.c, zr__sdl_normal_pattern: a normal pattern
+    written without an amount has bump size 0.5.  For several patterns
+    a lit plane with "normal { PATTERN }" is compared byte for byte
+    with "PATTERN 0.5" and "PATTERN 0.4"."""
+    def image(normal):
+        scene = HEADER + """
+camera { location <0, 3, -4> look_at 0 }
+light_source { <-3, 6, -5> rgb 1 }
+plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 0.8 phong 0.5 }
+  normal { %s scale 0.7 } }
+""" % normal
+        status, text, rows = render(workdir, scene, 48, 36)
+        if status != 0:
+            raise RuntimeError(text[-2000:])
+        return rows
+    ok = True
+    for pattern, after in (("bumps", ""), ("ripples", ""), ("wood", ""),
+                           ("leopard", ""), ("gradient x", ""),
+                           ("granite", "")):
+        plain = image(pattern + after)
+        half = image(pattern + " 0.5" + after) == plain
+        other = image(pattern + " 0.4" + after) == plain
+        print("  %-10s default %s 0.5, %s 0.4" %
+              (pattern, "==" if half else "!=", "==" if other else "!="))
+        ok = ok and half and not other
+    return ok
+
+
 PROBES = [
     ("image_map_index", probe_image_map_index),
     ("media_defaults", probe_media_defaults),
@@ -696,6 +725,7 @@ PROBES = [
     ("omnimax_curve", probe_omnimax_curve),
     ("patch_flatness", probe_patch_flatness),
     ("rainbow_falloff", probe_rainbow_falloff),
+    ("normal_amount", probe_normal_amount),
 ]
 
 

@@ -563,7 +563,8 @@ bool zr__sdl_normal_pattern(zr_sdl_parser *p, zr_normal *nm, int kind,
                             const zr_sdl_loc *loc) {
   zr__pattern_init(&nm->pattern, (zr_pattern_kind)kind);
   nm->pattern.waves = p->scene->settings.number_of_waves;
-  /* POV-Ray's default bump size is 0.5 for every normal pattern. */
+  /* A normal pattern without an amount has bump size 0.5 (not in the
+     manual; measured: bench/provenance/probe.py normal_amount). */
   nm->amount = 0.5;
   return !amount || zr__sdl_want_float(p, amount, loc, &nm->amount);
 }
