@@ -712,6 +712,32 @@ plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 0.8 phong 0.5 }
     return ok
 
 
+def probe_reflection_exponent(workdir):
+    """lib/trace/shade.c, reflection: with reflection { r exponent e }
+    the reflected colour c counts as r * c^(1/e) (the manual only says
+    lower exponents darken middle and low intensities).  A black mirror
+    (no ambient, no diffuse) seen from above reflects a grey sky L."""
+    worst = 0.0
+    for r, e, sky in ((1, 0.5, 0.3), (1, 2, 0.3), (0.5, 2, 0.6),
+                      (0.7, 0.7, 0.8), (0.4, 3, 0.05)):
+        scene = HEADER + """
+camera { location <0, 1, -1> look_at 0 }
+background { rgb %g }
+plane { y, 0 pigment { rgb 0 } finish { ambient 0 diffuse 0
+  reflection { %g exponent %g } } }
+""" % (sky, r, e)
+        status, text, rows = render(workdir, scene, 4, 4)
+        if status != 0:
+            raise RuntimeError(text[-2000:])
+        got = rows[3][1][1]
+        ours = r * sky ** (1 / e)
+        worst = max(worst, abs(got - ours))
+        print("  reflection %g exponent %g, sky %g: povray %.5f, "
+              "r c^(1/e) %.5f, (r c)^(1/e) %.5f" %
+              (r, e, sky, got, ours, (r * sky) ** (1 / e)))
+    return worst < 1e-3
+
+
 PROBES = [
     ("image_map_index", probe_image_map_index),
     ("media_defaults", probe_media_defaults),
@@ -726,6 +752,7 @@ PROBES = [
     ("patch_flatness", probe_patch_flatness),
     ("rainbow_falloff", probe_rainbow_falloff),
     ("normal_amount", probe_normal_amount),
+    ("reflection_exponent", probe_reflection_exponent),
 ]
 
 

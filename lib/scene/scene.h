@@ -326,7 +326,8 @@ typedef struct zr_finish {
   zr_rgb reflection_max; /* equal to reflection unless given */
   double reflection_falloff; /* default 1 */
   /* reflection { exponent e }: the reflected colour, each channel c,
-     counts as c^(1/e) (measured with POV-Ray 3.7 renders); default 1 */
+     counts as c^(1/e), times the reflection amount (measured:
+     bench/provenance/probe.py reflection_exponent); default 1 */
   double reflection_exponent;
   bool reflection_fresnel;
   /* reflection { metallic Amount }: 0 when absent, 1 when the keyword
