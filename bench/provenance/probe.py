@@ -738,6 +738,66 @@ plane { y, 0 pigment { rgb 0 } finish { ambient 0 diffuse 0
     return worst < 1e-3
 
 
+def ovus_extent(a, b, k, y):
+    """The distance from the y axis of lib/sdl/build_iso.c's ovus
+    surface at height y, with lemon radius R = k max(a, b)."""
+    r = k * max(a, b)
+    h = ((r - a) ** 2 - (r - b) ** 2 + a * a) / (2 * a)
+    c = math.sqrt(max(0.0, (r - a) ** 2 - h * h))
+    y0 = -h * a / (r - a)
+    y1 = h + r * (a - h) / (r - b)
+    if y < y0:
+        return math.sqrt(max(0.0, a * a - y * y))
+    if y > y1:
+        return math.sqrt(max(0.0, b * b - (y - a) ** 2))
+    return math.sqrt(max(0.0, r * r - (y - h) ** 2)) - c
+
+
+def probe_ovus_lemon(workdir):
+    """lib/sdl/build_iso.c, zr__sdl_ovus: the lemon joining an ovus's
+    spheres is the circle of radius 2 max(a, b) tangent inside both
+    (the manual: "automatically computed").  trace() along -x onto
+    ovus objects of several radius ratios, at heights through the
+    lemon; the probe prints which multiplier k of R = k max(a, b) fits
+    every distance."""
+    shapes = [(1, 0.6), (1, 1.5), (0.8, 0.3), (1, 1)]
+    ks = [1.5, 1.75, 2, 2.25, 2.5, 3]
+    lines, cases = "", []
+    for a, b in shapes:
+        top = a + b
+        for j in range(1, 12):
+            y = -a + (top + a) * j / 12
+            lines += ('#declare O = ovus { %g, %g }\n#declare N = <0, 0, 0>;'
+                      '\n#declare P = trace(O, <5, %g, 0>, <-1, 0, 0>, N);\n'
+                      '#debug concat("probe:%d=", str(P.x, 0, 9), "\\n")\n'
+                      % (a, b, y, len(cases)))
+            cases.append((a, b, y))
+    status, values = debug_values(workdir, HEADER + lines)
+    try:
+        got = [float(values[str(i)]) for i in range(len(cases))]
+    except (KeyError, ValueError):
+        print("  povray gave no values")
+        return False
+    # povray's trace() misses an ovus of equal radii exactly at the seams
+    # (it returns <0, 0, 0>): those rays say nothing about the lemon.
+    missed = [i for i, v in enumerate(got) if v == 0.0]
+    if missed:
+        print("  povray's trace() missed at %s: left out" % ", ".join(
+            "ovus {%g, %g} y = %g" % cases[i] for i in missed))
+    fits = []
+    for k in ks:
+        worst = 0.0
+        for i, (a, b, y) in enumerate(cases):
+            if i not in missed:
+                worst = max(worst, abs(got[i] - ovus_extent(a, b, k, y)))
+        print("  R = %g max(a, b): largest difference %.2e" % (k, worst))
+        if worst < 1e-4:
+            fits.append(k)
+    print("  %d traces on ovus %s; zRcube: R = 2 max(a, b)" %
+          (len(cases), ", ".join("{%g, %g}" % s for s in shapes)))
+    return fits == [2]
+
+
 PROBES = [
     ("image_map_index", probe_image_map_index),
     ("media_defaults", probe_media_defaults),
@@ -753,6 +813,7 @@ PROBES = [
     ("rainbow_falloff", probe_rainbow_falloff),
     ("normal_amount", probe_normal_amount),
     ("reflection_exponent", probe_reflection_exponent),
+    ("ovus_lemon", probe_ovus_lemon),
 ]
 
 
