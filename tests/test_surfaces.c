@@ -263,11 +263,12 @@ static void test_surfaces_patch_manual(void **state) {
   assert_int_equal(o->u.mesh.data->n_faces, 32);
   /* The patch's size (its control points' box diagonal) is sqrt 34 and
      the control points furthest from its corners' plane, P5, P8, P9
-     and P12, are 1.2 from it: 20.6 per cent. */
-  o = only(f, "bicubic_patch { type 1 flatness 21 u_steps 3 v_steps 3\n"
+     and P12, are 1.2 from it: flatness 20 * 1.2 / sqrt 34 = 4.116
+     (the tolerance is flatness / 20 of the size). */
+  o = only(f, "bicubic_patch { type 1 flatness 4.12 u_steps 3 v_steps 3\n"
               MANUAL_PATCH "}\n");
   assert_int_equal(o->u.mesh.data->n_faces, 2);
-  o = only(f, "bicubic_patch { type 1 flatness 20 u_steps 3 v_steps 3\n"
+  o = only(f, "bicubic_patch { type 1 flatness 4.11 u_steps 3 v_steps 3\n"
               MANUAL_PATCH "}\n");
   assert_true(o->u.mesh.data->n_faces > 2);
 }

@@ -326,7 +326,8 @@ typedef struct zr_finish {
   zr_rgb reflection_max; /* equal to reflection unless given */
   double reflection_falloff; /* default 1 */
   /* reflection { exponent e }: the reflected colour, each channel c,
-     counts as c^(1/e) (measured with POV-Ray 3.7 renders); default 1 */
+     counts as c^(1/e), times the reflection amount (measured:
+     bench/provenance/probe.py reflection_exponent); default 1 */
   double reflection_exponent;
   bool reflection_fresnel;
   /* reflection { metallic Amount }: 0 when absent, 1 when the keyword
@@ -351,7 +352,7 @@ typedef struct zr_interior {
   /* Attenuation of light travelling d inside ("Attenuation"): each
      channel keeps fade_colour + (1 - fade_colour) / (1 + (d /
      fade_distance)^fade_power), exp(-d / fade_distance) for powers
-     above 1000; off while either is 0 (lib/trace/shade.c). */
+     of 1000 and above; off while either is 0 (lib/trace/shade.c). */
   double fade_distance, fade_power;
   zr_rgb fade_colour; /* default black */
   /* media { } inside (lib/trace/media.c); they add where they overlap. */

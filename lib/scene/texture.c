@@ -13,7 +13,8 @@
  *     as POV-Ray's renders of gradient show;
  *   - checker, hexagon and brick pick a colour of their list, whose
  *     defaults are POV-Ray's: checker blue, green; hexagon blue, green,
- *     red; brick mortar grey 0.5 and brick <0.6, 0.15, 0.15> (measured);
+ *     red; brick mortar grey 0.5 and brick <0.6, 0.15, 0.15> (measured:
+ *     bench/provenance/probe.py brick_colours);
  *   - an image map projects its picture, which fills the unit square
  *     (0,0)-(1,1), onto the x-y plane (map_type 0), around the y axis
  *     onto a sphere (1: u the angle from +x, v the latitude from the
@@ -25,7 +26,8 @@
  * Normals follow "Normal": the surface is taken as displaced by
  * bump_size times the pattern's value, so the normal tilts against the
  * value's gradient, measured by central differences 0.02 pattern units
- * apart (POV-Ray's default "accuracy") and carried to world space by the
+ * apart (the manual's default accuracy, "Normals, Accuracy",
+ * 3.4.6.2.2.1; the central differences are our own) and carried to world space by the
  * inverse transpose of the transform.  dents uses the cube of the noise,
  * which leaves flat ground between sharp pits.
  *
@@ -112,6 +114,8 @@ void zr__pigment_set_pattern(zr_pigment *pg, zr_pattern_kind kind) {
   const zr_colour green = zr_colour5(0, 1, 0, 0, 0);
   const zr_colour red = zr_colour5(1, 0, 0, 0, 0);
   if (kind == ZR_PAT_BRICK) {
+    /* The manual's "deep red and dark gray" ("Brick"); the values are
+       povray's (bench/provenance/probe.py brick_colours). */
     pg->list[0] = zr_colour5(0.5, 0.5, 0.5, 0, 0);
     pg->list[1] = zr_colour5(0.6, 0.15, 0.15, 0, 0);
   } else {

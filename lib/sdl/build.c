@@ -402,7 +402,9 @@ bool zr__sdl_octaves(zr_sdl_parser *p, const zr_sdl_expr *e,
   double v;
   if (!zr__sdl_want_float(p, e, loc, &v))
     return false;
-  /* POV-Ray limits octaves to 1 .. 10 ("Octaves"). */
+  /* The manual's range ("Octaves", 3.4.7.5.5.4: "Legal values range
+     from 1 to <10"), with 10 let through; povray 3.7 itself accepts
+     larger counts (11 and 30 parse without a word). */
   if (v < 1 || v > 10) {
     zr__sdl_error(p, ZR_ESCENE, loc, "octaves must be between 1 and 10");
     return false;
@@ -561,7 +563,8 @@ bool zr__sdl_normal_pattern(zr_sdl_parser *p, zr_normal *nm, int kind,
                             const zr_sdl_loc *loc) {
   zr__pattern_init(&nm->pattern, (zr_pattern_kind)kind);
   nm->pattern.waves = p->scene->settings.number_of_waves;
-  /* POV-Ray's default bump size is 0.5 for every normal pattern. */
+  /* A normal pattern without an amount has bump size 0.5 (not in the
+     manual; measured: bench/provenance/probe.py normal_amount). */
   nm->amount = 0.5;
   return !amount || zr__sdl_want_float(p, amount, loc, &nm->amount);
 }
@@ -681,8 +684,9 @@ static double stored(const zr_image *image, size_t k) {
 /*
  * The number of each pixel a bump_map or material_map reads
  * (lib/scene/bitmap.c): a bump map's height is the grey of the stored
- * samples, 0.297 red + 0.589 green + 0.114 blue (POV-Ray 3.7 renders
- * of pure red, green and blue steps measure these weights), or of the
+ * samples, 0.297 red + 0.589 green + 0.114 blue (the manual's grey,
+ * 2.3.3.3.7, and POV-Ray 3.7 renders of pure red, green and blue steps
+ * measure these weights), or of the
  * decoded ones under a "gamma"; use_index replaces it later
  * (zr__sdl_bump_map_end).  A material map's is the palette index, else
  * the red sample on a 0 .. 255 scale ("Material Maps").
@@ -828,7 +832,11 @@ bool zr__sdl_image_map_index(zr_sdl_parser *p, zr_image_map *im, int token,
   }
   /* The entry is INDEX + 0.01 rounded towards zero, as measured with
      POV-Ray 3.7 on a two-entry palette: 0.995 and 1.989 pick entry 1,
-     0.985 and -1.005 entry 0; -1.02 and 1.991 are out of range. */
+     0.985 and -1.005 entry 0; -1.02 and 1.991 are out of range.  The
+     manual says nothing of fractional indices; bisection puts povray's
+     three edges (entry 1, and out of range above and below) at 0.99,
+     1.99 and -1.01 to 1e-5 (bench/provenance/probe.py
+     image_map_index). */
   double r = trunc(k + 0.01);
   if (!(r >= 0 && r < im->palette_size)) {
     zr__sdl_error(p, ZR_ESCENE, index_loc,

@@ -114,6 +114,8 @@ bool zr__sdl_area_light(zr_sdl_parser *p, zr_light *l,
       !zr__sdl_want_float(p, &e[2], &at[2], &n1) ||
       !zr__sdl_want_float(p, &e[3], &at[3], &n2))
     return false;
+  /* The manual asks sizes of at least 1 ("Area Lights"); 1024 a side
+     is our own cap on a light's cost (povray accepts more). */
   if (!(n1 >= 1 && n1 <= 1024)) {
     zr__sdl_error(p, ZR_ESCENE, &at[2], "an area light has 1 to 1024 "
                                         "lights a side, not %g", n1);
@@ -495,7 +497,10 @@ zr_rainbow *zr__sdl_rainbow_new(zr_sdl_parser *p) {
   rb->arc_angle = 180;
   rb->falloff_angle = 180;
   rb->up = zr_v3(0, 1, 0);
-  rb->distance = 1e7; /* "a sufficiently large value" */
+  /* "a sufficiently large value" ("Rainbow"); 1e7 is ours: any
+     distance far beyond a scene's leaves 1 - exp(-d / distance) near 0
+     on objects, which is what the manual asks of it. */
+  rb->distance = 1e7;
   return rb;
 }
 

@@ -155,7 +155,9 @@ bool zr__sdl_isosurface_item(zr_sdl_parser *p, zr_object *o, int token,
  * radius ratios, is the circle of radius R = 2 max(a, b) tangent inside
  * to both spheres' circles, the bottom's (radius a about the origin) and
  * the top's (radius b about (0, a)): its centre (-c, h) is R - a from
- * the first and R - b from the second.  When b >= 2 a the top sphere
+ * the first and R - b from the second (bench/provenance/probe.py
+ * ovus_lemon: of R = 1.5 ... 3 max(a, b), only 2 fits povray's traces,
+ * to 5e-6).  When b >= 2 a the top sphere
  * holds the bottom one and the ovus is the top sphere, as the manual
  * says.
  */

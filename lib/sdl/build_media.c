@@ -3,11 +3,14 @@
  * blocks as the grammar reads them (reference manual, "Media",
  * "Interior", "Atmospheric Media", "Interior Texture", "Photons").
  *
- * A media block starts from POV-Ray 3.7's defaults (method 3, one
- * interval, samples 10, 10 (the manual's table says 1, 1; povray's
- * parser sets 10 from #version 3.5 on), aa_level 3, aa_threshold 0.1,
- * confidence 0.9,
- * variance 1/128, ratio 0.9, jitter 0) or from a copy of a media
+ * A media block starts from POV-Ray 3.7's defaults (the manual's table
+ * in "Media", 3.4.8, and its note that 3.5 made method 3 with one
+ * interval the default: method 3, one interval, aa_level 3,
+ * aa_threshold 0.1, confidence 0.9, variance 1/128, ratio 0.9, jitter
+ * 0; but samples 10, 10 where the table says 1, 1, because povray
+ * renders a medium without "samples" exactly as with "samples 10, 10"
+ * and not as with "samples 1, 1": bench/provenance/probe.py
+ * media_defaults) or from a copy of a media
  * identifier, which must come first.  Every item but density and the
  * transformations overrides what was set before.  Densities are
  * pigments (a pattern with a colour_map, density_map or a block
@@ -46,8 +49,11 @@ zr_medium *zr__sdl_media_new(zr_sdl_parser *p, const zr_medium *from,
     *m = *from;
   } else {
     memset(m, 0, sizeof *m);
-    /* POV-Ray 3.5 and later: method 3, one interval, samples 10, 10;
-       before, method 1 with 10 intervals of one sample. */
+    /* #version 3.5 and later: method 3, one interval, samples 10, 10;
+       before, method 1 with 10 intervals of one sample.  Both measured:
+       povray renders a medium without these items byte for byte as
+       with them, under #version 3.7 and 3.1 (bench/provenance/probe.py
+       media_defaults). */
     bool old = p->version < 3.5;
     m->method = old ? 1 : 3;
     m->intervals = old ? 10 : 1;

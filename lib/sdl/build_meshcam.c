@@ -65,7 +65,9 @@ bool zr__sdl_mesh_camera(zr_sdl_parser *p, const zr_sdl_loc *at,
   memset(m, 0, sizeof *m);
   m->rays_per_pixel = (int)n;
   m->distribution = (int)d;
-  /* "if greater than EPSILON": anything else is no limit. */
+  /* "if greater than EPSILON" ("Max Distance", 3.4.2.2.3.3), the
+     manual's 1e-10 ("Numeric Expressions"): anything else is no
+     limit. */
   m->max_distance = limit > 1e-10 ? limit : 0.0;
   p->camera.mesh = m;
   p->camera.mesh_at = *at;
@@ -133,7 +135,8 @@ static void cell_span(double lo, double hi, double from, double size,
 /*
  * Sorts the first mesh's faces into a grid of cells over their uv box:
  * each cell lists, in the order the faces were written, the faces whose
- * uv box touches it.
+ * uv box touches it.  About sqrt(n) x sqrt(n) cells for n faces, at most
+ * 1024 a side (our own lookup structure: the cap only bounds its memory).
  */
 static bool uv_grid(zr_sdl_parser *p, zr_mesh_camera *m) {
   const struct zr_mesh *d = m->meshes[0].data;

@@ -68,7 +68,7 @@ zr_sdl_expr zr__sdl_extent(zr_sdl_parser *p, const zr_object *o, bool max) {
   zr_vec3 lo, hi;
   if (!zr__object_bounds(o, &lo, &hi)) {
     /* povray 3.7 gives <-1e10,-1e10,-1e10> and its opposite for a plane
-       (measured). */
+       (measured: bench/provenance/probe.py unbounded_extent). */
     lo = zr_v3(-1e10, -1e10, -1e10);
     hi = zr_v3(1e10, 1e10, 1e10);
   }

@@ -12,7 +12,7 @@
  * Bezier control net by de Casteljau's construction, each time in the
  * direction with more halvings to go (u on a tie), so the pieces stay
  * as square as the counts allow; a piece is flat enough when its
- * control points lie within flatness percent of the patch's size of
+ * control points lie within flatness / 20 of the patch's size of
  * the plane of its corners (flat_enough, patch_tolerance).  Each piece
  * is cut along its diagonal from (u0, v0) to (u1, v1), as POV-Ray's
  * renders show (see piece), and the triangles' corner normals are the
@@ -249,7 +249,7 @@ static void split_v_net(const net n, net lo, net hi) {
  * the centre of its four corners square to its diagonals (by the convex
  * hull property the surface piece then lies as near it).  A piece whose
  * diagonals give no plane is not.  The caller makes the tolerance
- * flatness percent of the whole patch's size (patch_tolerance).
+ * flatness / 20 of the whole patch's size (patch_tolerance).
  */
 static bool flat_enough(const net n, double tolerance) {
   if (!(tolerance > 0.0))
@@ -269,14 +269,16 @@ static bool flat_enough(const net n, double tolerance) {
 }
 
 /*
- * How far a piece may stray from flat: flatness percent of the patch's
- * size, the diagonal of its control points' box.  Relative, because
- * POV-Ray 3.7's flatness is: scaling the manual's patch by 10 leaves
- * the picture each flatness gives unchanged.  Per cent, because that
- * reproduces how finely POV-Ray cuts: on the manual's patch flatness
- * 0.3, 0.1, 0.03 and 0.01 render closest to uniform u_steps = v_steps =
- * 3, 4, 5 and 6 at both sizes (measured, SSIM against POV-Ray's
- * uniform renders), and so do these tolerances here.
+ * How far a piece may stray from flat: flatness / 20 of the patch's
+ * size, the diagonal of its control points' box.  The manual says only
+ * that a smaller flatness subdivides more.  Relative, because POV-Ray
+ * 3.7's flatness is: scaling the manual's patch by 10 leaves the
+ * picture each flatness gives unchanged.  The scale 1/20 is measured:
+ * on two views of the manual's patch, flatness 0.3, 0.1, 0.03 and 0.01
+ * render nearest to uniform u_steps = v_steps of 3, 3, 4, 5 and 2, 3,
+ * 4, 5 in povray, and so they do here with 1/20 (with 1/100 here they
+ * were 4, 5, 5, 6 and 3, 4, 5, 6): bench/provenance/probe.py
+ * patch_flatness.
  */
 static double patch_tolerance(const patch_build *b) {
   zr_vec3 lo = b->points[0], hi = b->points[0];
@@ -285,7 +287,7 @@ static double patch_tolerance(const patch_build *b) {
     lo = zr_v3(fmin(lo.x, q.x), fmin(lo.y, q.y), fmin(lo.z, q.z));
     hi = zr_v3(fmax(hi.x, q.x), fmax(hi.y, q.y), fmax(hi.z, q.z));
   }
-  return b->flatness / 100.0 * zr_v3_len(zr_v3_sub(hi, lo));
+  return b->flatness / 20.0 * zr_v3_len(zr_v3_sub(hi, lo));
 }
 
 /* Where the pieces go: counted first (mesh NULL), then stored. */

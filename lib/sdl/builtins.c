@@ -39,7 +39,10 @@
 #include "scene/pattern.h"
 #include "trace/intersect.h"
 
-/* The reference manual's epsilon for truth and equality. */
+/* The reference manual's epsilon for truth and equality: "Numeric
+   Expressions" (3.3.1.5) calls values within about 1.0e-10 of zero false
+   and of each other equal; "Operators" (3.3.1.5.3) writes A = B as
+   abs(A-B) < EPSILON and A != B as abs(A-B) >= EPSILON. */
 #define EPSILON 1e-10
 
 /* The largest array the language may make: more elements than this is a

@@ -41,7 +41,9 @@
 #include "sdl/sdl.h"
 
 #define NONE ((size_t)-1)
-/* The reference manual's epsilon for #case and #for. */
+/* The reference manual's epsilon for #case and #for: "Numeric
+   Expressions" (3.3.1.5) calls values within about 1.0e-10 of each other
+   equal, and "Operators" (3.3.1.5.3) writes A = B as abs(A-B) < EPSILON. */
 #define EPSILON 1e-10
 
 static const zr_sdl_file *file_of(zr_sdl_parser *p) {

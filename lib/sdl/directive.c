@@ -30,7 +30,7 @@
  * A directive's expression that has no closing token of its own (the
  * value of #version, an object after #declare) ends where the next token
  * cannot continue it: the engine then hands the grammar an end token,
- * as POV-Ray's parser stops there (see autoend_due below).
+ * as POV-Ray reads such input (see autoend_due below).
  * Messages carry the source line, a caret and the include and macro
  * call chain.
  */

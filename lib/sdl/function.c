@@ -212,7 +212,8 @@ static const internal_fn *internal_find(int number) {
 
 /* The functions with a "field strength" parameter give values clipped to
    [-10, 10] in povray 3.7 (f_paraboloid(0, 11, 0, 1) is 10); the plain
-   distances (f_sphere, f_torus ...) are not clipped. */
+   distances (f_sphere, f_torus ...) are not clipped
+   (bench/provenance/probe.py field_clip). */
 static double field(double v) { return v < -10 ? -10 : v > 10 ? 10 : v; }
 
 /*
@@ -396,7 +397,8 @@ static double eval_internal(int number, const double *a) {
     return r;
   case 60: { /* f_rounded_box: corner radius, then half sizes */
     /* The distance to a box shrunk by the radius, less the radius;
-       povray's values are 1e-6 below it at every point we measured. */
+       povray's values are 1e-6 below it at every point we measured
+       (bench/provenance/probe.py rounded_box_offset). */
     double dx = fmax(fabs(x) - (a[4] - a[3]), 0);
     double dy = fmax(fabs(y) - (a[5] - a[3]), 0);
     double dz = fmax(fabs(z) - (a[6] - a[3]), 0);
@@ -439,7 +441,8 @@ static double texture_value(const zr_pigment *pg, int channel,
   case 2: return c.b;
   case 3: return c.f;
   case 4: return c.t;
-  default: return 0.297 * c.r + 0.589 * c.g + 0.114 * c.b;
+  default: /* .gray: the manual's weights (2.3.3.3.7) */
+    return 0.297 * c.r + 0.589 * c.g + 0.114 * c.b;
   }
 }
 

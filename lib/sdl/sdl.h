@@ -48,7 +48,8 @@
    a macro argument inside a declaration ...): each level is a C stack
    frame of yyparse, so this bounds the C stack the parse can use. */
 #define ZR_SDL_MAX_NESTED_PARSE 400
-/* The most dimensions an array may have, as in POV-Ray. */
+/* The most dimensions an array may have ("Array", 3.3.1.10: "up to
+   five dimensions"). */
 #define ZR_SDL_MAX_DIMS 5
 
 /* A place in a scene file: file is an index into the parser's files. */
@@ -773,7 +774,7 @@ bool zr__sdl_pigment_pattern(zr_sdl_parser *p, zr_pigment *pg, int kind,
                              const zr_sdl_clist *list);
 bool zr__sdl_gradient(zr_sdl_parser *p, zr_pattern *pt,
                       const zr_sdl_expr *e, const zr_sdl_loc *loc);
-/* octaves' value, checked against POV-Ray's range 1 .. 10. */
+/* octaves' value, checked against the manual's range 1 .. 10. */
 bool zr__sdl_octaves(zr_sdl_parser *p, const zr_sdl_expr *e,
                      const zr_sdl_loc *loc, int *octaves);
 bool zr__sdl_pattern_mod(zr_sdl_parser *p, zr_pattern *pt,

@@ -22,10 +22,11 @@
  * a cubic spline of three points has no segment and gives its middle
  * point everywhere, as POV-Ray does.
  *
- * POV-Ray keeps five components per point and returns as many as the
- * longest point has; a float point counts as a 2-D vector with both
- * components the float (measured: spline { 0, 1  1, 3 } gives <2, 2> at
- * 0.5).
+ * A point is a float or a vector of up to five components (the
+ * language's longest vector, a colour with filter and transmit), and
+ * povray's value has as many components as the longest point; a float
+ * point counts as a 2-D vector with both components the float
+ * (measured: spline { 0, 1  1, 3 } gives <2, 2> at 0.5).
  */
 #include "config.h"
 

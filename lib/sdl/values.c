@@ -181,7 +181,9 @@ bool zr__sdl_dot(zr_sdl_parser *p, const zr_sdl_expr *e, int item,
                   dim_name(e->dim), name);
     return false;
   }
-  /* .gray weighs red, green and blue as POV-Ray's grey conversion. */
+  /* .gray weighs red, green and blue as the manual's grey: "gray value
+     = Red*29.7% + Green*58.9% + Blue*11.4%" (2.3.3.3.7, "Noise and
+     pigment functions"). */
   *out = zr__sdl_float(index < 0 ? 0.297 * e->v[0] + 0.589 * e->v[1] +
                                        0.114 * e->v[2]
                                  : e->v[index]);

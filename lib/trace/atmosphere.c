@@ -52,7 +52,8 @@
 static const double DEG = 3.14159265358979323846 / 180.0;
 
 /* The distance a ray to the sky counts as (for rainbow and jitter; fog
-   treats it as infinite). */
+   treats it as infinite): our own stand-in for "very far", beyond any
+   scene's size (the manual gives none). */
 #define SKY_DISTANCE 1e7
 
 zr_rgb zr__sky_colour(const zr_scene *scene, zr_vec3 dir) {
@@ -163,6 +164,10 @@ static zr_rgb apply_rainbow(const zr_rainbow *rb, zr_vec3 unit, double d,
   double a = acos(c) / DEG;
   double lo = rb->angle - 0.5 * rb->width;
   double index = rb->width > 0.0 ? (a - lo) / rb->width : -1.0;
+  /* "random noise" on the index ("Rainbow"): our own noise of the ray's
+     direction, which changes over 1/1000 radian (about a pixel of a
+     wide view) so that it reads as grain, as povray's random numbers
+     do, yet the same direction always gets the same value. */
   if (rb->jitter != 0.0)
     index += rb->jitter * (zr__noise(zr_v3_scale(unit, 1000.0)) - 0.5);
   if (index < 0.0 || index > 1.0 || !rb->colour_map)
@@ -184,7 +189,9 @@ static zr_rgb apply_rainbow(const zr_rainbow *rb, zr_vec3 unit, double d,
     double soft = 0.5 * (rb->arc_angle - rb->falloff_angle);
     if (phi > 0.5 * rb->falloff_angle && soft > 0.0) {
       double t = 1.0 - (phi - 0.5 * rb->falloff_angle) / soft;
-      weight = t * t * (3.0 - 2.0 * t); /* measured: a smoothstep */
+      /* Measured: a smoothstep (bench/provenance/probe.py
+         rainbow_falloff). */
+      weight = t * t * (3.0 - 2.0 * t);
     }
   }
   zr_colour f = zr__colour_map_eval(rb->colour_map, index);

@@ -46,6 +46,10 @@
  *                     U and D parts sum below zero).  The mask of every
  *                     render measured (a = 0.75 to 2.67) agrees pixel
  *                     for pixel, the directions within 0.011 degrees.
+ *                     The manual gives no curve: the constants are a
+ *                     least-squares fit to povray's rays, which
+ *                     bench/provenance/probe.py omnimax_curve measures
+ *                     and fits again.
  *
  * Focal blur moves each sample's origin within a lens disc of diameter
  * aperture across R-hat and U-hat and aims it at the point where the
@@ -64,6 +68,7 @@
 static const double DEG = 3.14159265358979323846 / 180.0;
 
 /* The omnimax lens curve (see above) and the widest its circle gets. */
+/* Measured (bench/provenance/probe.py omnimax_curve; see above). */
 static const double OMNIMAX_CURVE[3] = {1.411284, -0.094448, 0.256789};
 static const double OMNIMAX_WIDEST = 1.28344;
 

@@ -4,10 +4,12 @@
  * "Spotlights", "Cylindrical Lights", "Parallel Lights", "Area Lights",
  * "Light Fading").
  *
- * The manual gives the shape of each effect; the exact curves were
- * measured from povray 3.7 renders of a white plane (diffuse 1, ambient
- * 0) under a light 10 units above it, and these formulas reproduce the
- * measured factors to 1e-4:
+ * The manual gives the shape of each effect (its figures of the
+ * spotlight curve have no formula); the exact curves were measured from
+ * povray 3.7 renders of a white plane (diffuse 1, ambient 0) under a
+ * light 10 units above it, and these formulas reproduce the measured
+ * factors to 1e-5 (bench/provenance/probe.py spotlight_curve and
+ * cylinder_curve print both):
  *   - spotlight: with c = cos(angle from the axis), full light inside
  *     radius, none beyond falloff, and between them the smoothstep
  *     3 t^2 - 2 t^3 of t = (c - cos falloff) / (cos radius - cos
@@ -18,7 +20,9 @@
  *     under a cylinder light is lit at normal incidence, N.L = 1), so it
  *     shades like a parallel light.
  *   - fading: 2 / (1 + (d / fade_distance)^fade_power), d the distance
- *     to the light's location (0.4 at d = 10, fade_distance 5, power 2).
+ *     to the light's location: the manual's formula (the figure in
+ *     "Light Fading", 3.4.4.1.9), and povray gives
+ *     0.4 at d = 10, fade_distance 5, power 2.
  *   - parallel: the direction location - point_at everywhere.  Shadow
  *     rays run parallel to it up to the plane through location; points
  *     above that plane are lit and unshadowed, as the manual says.
@@ -35,8 +39,9 @@
  * inscribed ellipse; orient turns the grid to face the point lit.
  * Measured against povray: adaptive 0, 1 and 2 renders agree with its
  * pixel for pixel; the full grid and circular lights differ in a pixel
- * or two along a shadow's edge (povray's exact point order and circle
- * mapping are not documented).  area_illumination is parsed with a
+ * or two along a shadow's edge (the manual does not say where the
+ * points of a full grid or of a circular light lie, and the grid and
+ * circle mapping here are our own).  area_illumination is parsed with a
  * warning: shading still comes from the light's centre.
  *
  * projected_through ("Projected_Through"): a point is lit only when its

@@ -14,7 +14,9 @@
  * P(u, v) = org + t dir for (u, v, t) from the box's centre and entry,
  * so the crossing is exact, not accuracy-near, and a ray leaving the
  * surface does not meet it again; should Newton fail (a fold, a ray
- * along the surface), the box's entry is the crossing, as POV-Ray's.
+ * along the surface), the box's entry is taken as the crossing, which
+ * is within accuracy of the surface ("Parametric": accuracy bounds how
+ * far the subdivision goes).
  * The normal is Pu x Pv, turned to face the ray.  Nothing is kept between rays, and the
  * functions are evaluated by lib/sdl/function.c's machine, which never
  * allocates, so any number of threads trace the same surface.

@@ -84,9 +84,10 @@ int zr__poly_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
     bound = fmax(bound, fabs(c[m] / c[deg]));
   bound += 1.0;
   /* A ray leaving the surface starts where the expanded coefficients
-     put a spurious root within their rounding of t = 0; like POV-Ray's
-     depth tolerance for polynomial shapes, roots closer than a
-     millionth of the origin's scale are not crossings. */
+     put a spurious root within their rounding of t = 0, so roots closer
+     than a millionth of the origin's scale are not crossings (our own
+     margin: far above the rounding of the coefficients, far below any
+     feature a scene of 1e-3 to 1e5 units draws). */
   double near = 1e-6 * (1.0 + zr_v3_len(org)) / zr_v3_len(dir);
   double lo = fmax(fmax(tmin, near), -bound), hi = fmin(tmax, bound);
   if (!(lo < hi))

@@ -3,16 +3,17 @@
  * Sweep"): the space a ball of varying radius fills as it moves along a
  * spline through the written spheres.  Each piece of the spline moves a
  * ball of centre c(u) and radius r(u), polynomials of degree 1 (linear
- * spline) or 3 (b_spline, cubic_spline, with the matrices POV-Ray uses:
- * the uniform cubic B-spline and Catmull-Rom), for u in [0, 1]; a linear
+ * spline) or 3 (b_spline, cubic_spline), for u in [0, 1]; a linear
  * sweep of n spheres has n - 1 pieces, the cubic ones n - 3, the first
- * and last sphere only steering the curve.
+ * and last sphere only steering the curve.  The manual names b_spline a
+ * cubic b-spline that approximates the spheres and asks four spheres of
+ * both cubic kinds; the textbook uniform cubic B-spline is the one, and
+ * for cubic_spline the Catmull-Rom spline, the cubic that passes
+ * through the inner spheres with the same four-point window, matches
+ * povray's render of scenes/sphere_sweep.pov (tests/golden.sh, SSIM >=
+ * 0.98 against tests/ref/sphere_sweep.png).
  *
- * POV-Ray (after van Wijk, "Ray tracing objects defined by sweeping a
- * sphere", 1984) solves for the parameters where the ray touches the
- * envelope and then throws away crossings that lie inside other parts.
- * zRcube computes the same surface, the boundary of the union of the
- * balls, from a view that needs no such clean-up.  Along a unit ray
+ * The surface is the boundary of the union of the balls.  Along a unit ray
  * q + s d the ball at u is met for s in [b(u) - sqrt(H(u)),
  * b(u) + sqrt(H(u))], where b = d . (c - q) and H = b^2 - |c - q|^2 + r^2
  * is a polynomial of degree 6 in u.  Over a stretch of u where H > 0 these
@@ -42,7 +43,9 @@
 #include "trace/roots.h"
 
 /* Rows: the power-basis coefficients (u^0 .. u^3) as weights of the
-   four spheres of a piece ("Sphere Sweep"'s two cubic splines). */
+   four spheres of a piece ("Sphere Sweep"'s two cubic splines): the
+   uniform cubic B-spline's and Catmull-Rom's standard basis matrices
+   (the latter with tension 1/2). */
 static const double b_spline_matrix[4][4] = {
     {1.0 / 6.0, 4.0 / 6.0, 1.0 / 6.0, 0.0},
     {-3.0 / 6.0, 0.0, 3.0 / 6.0, 0.0},

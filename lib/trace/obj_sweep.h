@@ -32,8 +32,9 @@ typedef enum zr_sweep_spline {
 
 struct zr_sphere_sweep {
   zr_sweep_spline spline;
-  /* tolerance: POV-Ray's least depth of a crossing, kept for the
-     record; the crossings here are exact, so it changes nothing. */
+  /* tolerance: the manual's "depth tolerance" against self-shading
+     ("Sphere Sweep", 3.4.5.1.13), kept for the record; the crossings
+     here are exact, so it changes nothing. */
   double tolerance;
   /* The spheres as written (kept while parsing). */
   zr_vec3 *centres;

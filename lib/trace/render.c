@@ -16,11 +16,13 @@
  * Antialiasing runs in two passes so that every pixel's result depends
  * only on the scene and the complete image of pixel centres: pass 1 traces
  * the centres; pass 2 compares each centre with its four neighbours
- * (POV-Ray compares with the left and upper ones and supersamples both
- * pixels of a pair that differ, which is the same as looking at all
- * four, except that it renders in 32 x 32 blocks and never returns to a
+ * (the manual's method 1 compares with the left and upper ones and
+ * supersamples both pixels of a pair that differ, 3.2.8.7, which is the
+ * same as looking at all four, except that povray renders in 32 x 32
+ * blocks, 3.2.8.2, and, as its renders show, never returns to a
  * finished block, so a right or lower neighbour across a block border
- * does not count) after POV-Ray's antialiasing gamma, and where the
+ * does not count: tests/test_render.c) after the antialiasing gamma,
+ * and where the
  * difference exceeds the threshold averages the centre with an
  * aa_depth x aa_depth grid of samples over the pixel.  povray also
  * compares with neighbours already supersampled, which depends on the

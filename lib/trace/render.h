@@ -43,14 +43,16 @@ bool zr__camera_focal_sample(const zr_camera *camera, zr_ray *ray,
 /* The objects that enclose the camera's location, outermost first. */
 void zr__camera_media(const zr_scene *scene, zr_media *media);
 
-/* POV-Ray's Antialias_Gamma default. */
+/* The Antialias_Gamma default ("Anti-Aliasing Options", 3.2.8.7). */
 #define ZR_AA_GAMMA 2.5
-/* POV-Ray 3.7's render block size (Render_Block_Size default). */
+/* The Render_Block_Size default ("Render Block Size", 3.2.8.2). */
 #define ZR_AA_BLOCK 32
 
-/* POV-Ray's colour difference for antialiasing: the sum of the absolute
-   differences of the red, green and blue values, each clipped to [0, 1]
-   and raised to exponent (assumed_gamma / antialias gamma). */
+/* The colour difference for antialiasing ("Anti-Aliasing Options",
+   3.2.8.7): the sum of the absolute differences of the red, green and
+   blue values, each clipped to [0, 1] and raised to exponent
+   (assumed_gamma / antialias gamma, the manual's gamma-adjusted
+   comparison). */
 double zr__colour_difference(const float *a, const float *b,
                              double exponent);
 

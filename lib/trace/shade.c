@@ -290,7 +290,11 @@ static double point_random(zr_vec3 p) {
  * of the cosines toward the light and toward the viewer, to 1%.
  * turbulence u varies the thickness as t (1 + u n), n our turbulence
  * noise's x component (zero mean): POV-Ray's own noise is not ours, so
- * only the character of the variation can match.
+ * only the character of the variation can match.  The manual says the
+ * octaves, lambda and omega of this turbulence are "internally set"
+ * ("Iridescence"); 5 octaves, omega 0.5 and lambda 2 are our own pick
+ * (the usual turbulence weights, one octave short of the pattern
+ * default since finer ones do not show in a film's colour).
  */
 zr_rgb zr__irid_tint(const zr_finish *f, const zr_settings *gs, zr_vec3 p,
                      double cos_light, double cos_eye) {
@@ -419,11 +423,12 @@ static zr_rgb reflection_amount(const surface *s, double n1, double n2) {
 
 /*
  * Light that travelled distance d inside the innermost object of media
- * ("Attenuation" in the reference's Interior section): povray 3.7
- * renders of a clear slab measure 1 / (1 + (d / fade_distance)^power)
- * (0.8 at d = 0.5, power 2, fade_distance 1), fade_colour + (1 -
- * fade_colour) times that per channel, and exp(-d / fade_distance) for
- * powers above 1000.
+ * ("Attenuation" in the reference's Interior section, 3.4.8.1.6, whose
+ * figure gives 1 / (1 + (d / fade_distance)^fade_power) and whose text
+ * gives exp(-d / fade_distance) for fade_power 1000 or above); povray
+ * 3.7 renders of a clear slab agree (0.8 at d = 0.5, power 2,
+ * fade_distance 1), with fade_colour + (1 - fade_colour) times that per
+ * channel ("fade_color colorizes the attenuation").
  */
 static zr_rgb interior_fade(const zr_media *media, double d, zr_rgb c) {
   if (!media || media->n == 0)
@@ -431,7 +436,7 @@ static zr_rgb interior_fade(const zr_media *media, double d, zr_rgb c) {
   const zr_interior *in = media->objects[media->n - 1]->interior;
   if (!in || !(in->fade_distance > 0.0) || in->fade_power == 0.0)
     return c;
-  double a = in->fade_power > 1000.0
+  double a = in->fade_power >= 1000.0
                  ? exp(-d / in->fade_distance)
                  : 1.0 / (1.0 + pow(d / in->fade_distance, in->fade_power));
   if (isinf(d))
@@ -752,7 +757,8 @@ static zr_rgb trace_upto(const zr_tracer *tracer, const zr_ray *ray,
     return zr_rgb3(0, 0, 0);
   zr_hit hit;
   if (!nearest_shown(tracer, ray, tmax, &hit)) {
-    /* Atmospheric media reach to POV-Ray's horizon (lib/trace/media.c). */
+    /* Atmospheric media reach as far as lib/trace/media.c takes them
+       along a ray that meets nothing. */
     zr_rgb sky = zr__media_along(tracer, media, ray->origin, ray->dir,
                                  INFINITY, zr__sky_colour(scene, ray->dir));
     return interior_fade(media, INFINITY,
