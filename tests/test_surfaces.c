@@ -375,8 +375,8 @@ static void test_surfaces_patch_bad_input(void **state) {
    the points of the unit ball (|h| < 1) and let the others escape, the
    bisection stops within 1e-7 of the radius and reports the inside
    end; 2e-7 covers it.  The hypercomplex set is where both complex
-   parts (obj_julia.c, bicomplex) are within 1; on the x axis they are |x|, and escape past the
-   radius 4 takes longer there (1e-5). */
+   parts (obj_julia.c, bicomplex) are within 1; on the x axis they are
+   |x|, and escape past the radius 4 takes longer there (1e-5). */
 static void test_surfaces_julia_unit_ball(void **state) {
   fixture *f = *state;
   const char *const kinds[3] = {"quaternion sqr", "quaternion cube",
