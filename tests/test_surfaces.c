@@ -375,9 +375,9 @@ static void test_surfaces_patch_bad_input(void **state) {
 /* With p = 0 the quaternion and the hypercomplex square and cube keep
    the points of the unit ball (|h| < 1) and let the others escape, the
    bisection stops within 1e-7 of the radius and reports the inside
-   end; 2e-7 covers it.  The hypercomplex set is where both duplex
-   parts are within 1; on the x axis they are |x|, and escape past the
-   radius 4 takes longer there (1e-5). */
+   end; 2e-7 covers it.  The hypercomplex set is where both complex
+   parts (obj_julia.c, bicomplex) are within 1; on the x axis they are
+   |x|, and escape past the radius 4 takes longer there (1e-5). */
 static void test_surfaces_julia_unit_ball(void **state) {
   fixture *f = *state;
   const char *const kinds[3] = {"quaternion sqr", "quaternion cube",
@@ -452,6 +452,58 @@ static void test_surfaces_julia_hypercomplex_functions(void **state) {
   assert_near(o->u.julia.data->exponent[1], 0.5, 0.0);
 }
 
+/* The escape radius R = min(1 + |p|, 2) for quaternions, as measured
+   (bench/julia_probe.sh, q2_p0.5 and q2_p1.5): with max_iteration 2 the
+   object is |h^2 + p| <= R, so on the x axis x^2 + p = R and on the y
+   axis y^2 - p = R.  Bisection stops within 1e-7 of the radius: 2e-7. */
+static void test_surfaces_julia_escape_radius(void **state) {
+  fixture *f = *state;
+  const zr_object *o = only(
+      f, "julia_fractal { <0.5, 0, 0, 0> max_iteration 2 precision 100 }\n");
+  zr_hit h[2];
+  assert_true(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), 0.0, h) >= 1);
+  assert_near(h[0].t, 5.0 - 1.0, 2e-7);
+  assert_true(cross(o, zr_v3(0, -5, 0), zr_v3(0, 1, 0), 0.0, h) >= 1);
+  assert_near(h[0].t, 5.0 - sqrt(2.0), 2e-7);
+  o = only(f, "julia_fractal { <1.5, 0, 0, 0> max_iteration 2 "
+              "precision 100 }\n");
+  assert_true(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), 0.0, h) >= 1);
+  assert_near(h[0].t, 5.0 - sqrt(0.5), 2e-7);
+  assert_true(cross(o, zr_v3(0, -5, 0), zr_v3(0, 1, 0), 0.0, h) >= 1);
+  assert_near(h[0].t, 5.0 - sqrt(3.5), 2e-7);
+  /* One iteration keeps the whole ball, which fills the bounding
+     sphere: POV-Ray shows no surface (julia_probe.sh, q1_*). */
+  o = only(f, "julia_fractal { <0.5, 0, 0, 0> max_iteration 1 }\n");
+  assert_int_equal(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), 0.0, h), 0);
+  assert_true(zr__inside(o, zr_v3(1.4, 0, 0)));
+  assert_false(zr__inside(o, zr_v3(1.6, 0, 0)));
+}
+
+/* The hypercomplex algebra: ij = ji = k and kk = +1 (see obj_julia.c),
+   escape radius 4, max_iteration 2, p = 0.  In the y-z plane
+   h = yi + zj squares to -(y^2 + z^2) + 2yz k, so on the diagonal
+   y = z the surface is at 8 y^4 = 16 (non-commuting quaternions would
+   give 4 y^4 = 16).  At w = 0.5, h = x + 0.5k squares to x^2 + 0.25 +
+   xk, so (x^2 + 0.25)^2 + x^2 = 16, x^2 = (sqrt(66) - 1.5) / 2 (kk = -1
+   would give (x^2 - 0.25)^2 + x^2 = 16); POV-Ray: x = -1.819895
+   (julia_probe.sh, h2_w05). */
+static void test_surfaces_julia_hypercomplex_algebra(void **state) {
+  fixture *f = *state;
+  const zr_object *o = only(
+      f, "julia_fractal { <0, 0, 0, 0> hypercomplex max_iteration 2 "
+         "precision 100 }\n");
+  zr_hit h[2];
+  zr_vec3 d = zr_v3(0, 1 / sqrt(2.0), 1 / sqrt(2.0));
+  assert_true(cross(o, zr_v3_scale(d, -5), d, 0.0, h) >= 1);
+  assert_near(h[0].t, 5.0 - sqrt(2.0) * pow(2.0, 0.25), 1e-6);
+  o = only(f, "julia_fractal { <0, 0, 0, 0> hypercomplex max_iteration 2 "
+              "precision 100 slice <0, 0, 0, 1>, 0.5 }\n");
+  assert_true(cross(o, zr_v3(-5, 0, 0), zr_v3(1, 0, 0), 0.0, h) >= 1);
+  double x = sqrt((sqrt(66.0) - 1.5) / 2.0);
+  assert_near(x, 1.819895, 1e-6);
+  assert_near(h[0].t, 5.0 - x, 1e-6);
+}
+
 static void test_surfaces_julia_bad_input(void **state) {
   fixture *f = *state;
   bad(f, "julia_fractal { <0, 0, 0, 0> sin max_iteration 9 }\n",
@@ -485,6 +537,8 @@ int main(void) {
       TEST(test_surfaces_julia_unit_ball),
       TEST(test_surfaces_julia_slice_and_transform),
       TEST(test_surfaces_julia_hypercomplex_functions),
+      TEST(test_surfaces_julia_escape_radius),
+      TEST(test_surfaces_julia_hypercomplex_algebra),
       TEST(test_surfaces_julia_bad_input),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);

@@ -41,3 +41,15 @@ $(tests_test_bitmap_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
 
 # The density_file pattern's df3 voxel files (media densities).
 lib_libzrcube_la_SOURCES += lib/scene/df3.c lib/scene/df3.h
+
+# The warps against POV-Ray's measured values (bench/warp_probe.sh).
+check_PROGRAMS += tests/test_warp
+TESTS += tests/test_warp
+tests_test_warp_SOURCES = tests/test_warp.c
+tests_test_warp_CPPFLAGS = $(TEST_CPPFLAGS)
+tests_test_warp_LDADD = $(TEST_LDADD)
+tests_test_warp_LDFLAGS = -static
+# The same probes read back by zrcube and by POV-Ray (skipped without it).
+TESTS += tests/test_warp_probe.sh
+EXTRA_DIST += tests/test_warp_probe.sh bench/warp_probe.sh \
+	bench/issue17_ssim.sh

@@ -1,45 +1,27 @@
 /*
- * warp.c - pattern warps (POV-Ray 3.7 reference manual, "Warps").
+ * warp.c - pattern warps (POV-Ray 3.7 reference manual, "Warp" and the
+ * sections under it).
  *
- * A warp moves the point at which a pattern is evaluated.  POV-Ray keeps
- * a pattern's transforms and warps in one list in the order written and
- * takes an evaluation point through it from the last entry to the first,
- * so "warp { repeat x } scale 2" repeats every 2 units and "scale 2
- * warp { repeat x }" every unit.  We keep the transforms composed in one
- * matrix (the pigment's, normal's or texture's) and give each warp the
- * part of that matrix written before it (its frame F).  The point the
- * pattern sees is then reached by starting from the fully transformed
- * point and, for each warp from the last to the first, going forward to
- * its frame, warping, and coming back: p = F^-1 warp(F p).  The classic
- * turbulence keyword is not a warp here: POV-Ray puts it at the head of
- * the list, nearest the pattern, which is where lib/scene/pattern.c
- * applies it, after all of these.
+ * A warp moves the point at which a pattern is evaluated.  The manual
+ * says that warps and transforms act "in the order in which you specify
+ * them"; measured (bench/warp_probe.sh, lines frame_before and
+ * frame_after), the point is taken through the list from the last
+ * entry back to the first, as through an object's inverse transforms:
+ * with "scale 2 warp { repeat x }" world x = 1.5 repeats to 0.5 and is
+ * then halved (0.25); with "warp { repeat x } scale 2" it is halved to
+ * 0.75 and that repeats to itself.  The transforms stay composed in one
+ * matrix (the pigment's, normal's or texture's); each warp keeps the
+ * part of it written before the warp (its frame F), so the pattern
+ * sees, for each warp from the last to the first, p <- F^-1 warp(F p).
+ * The plain turbulence keyword is not in this list: the manual applies
+ * it first, whatever its place, which lib/scene/pattern.c does.
  *
- *   - turbulence: p + t * dturbulence(p) ("Turbulence Warp").
- *   - repeat <d> offset <o> flip <f>: d has one non-zero component w on
- *     axis a; block b = floor(p[a] / w); p[a] -= b w; in odd blocks the
- *     flipped axes change sign (then p[a] += w if a itself flips); then
- *     p += b o ("Repeat Warp").
- *   - black_hole <c>, r: within r of the centre, d = p - c moves p by
- *     s d, s = min(1, ((r - |d|) / r)^falloff * strength), outwards with
- *     inverse; repeat <v> copies the hole every v (components under
- *     1e-10 do not repeat), turbulence <u> shifts each copy's centre by
- *     u times a per-block random number in [0, 1) ("Black Hole Warp").
- *     Our random numbers come from our own hash of the block, so the
- *     shifted holes are not where POV-Ray's are, only alike.
- *   - planar <n>, d; cylindrical, spherical, toroidal [major_radius R]
- *     with orientation <o> and dist_exp e ("Mapping using warps"): the
- *     point maps to (u, v, distance) as the manual's image maps do, u
- *     and v in [0, 1) (times distance^e when e is not 0), then goes
- *     along the orientation (see orient: the manual only says the
- *     mapped box stretches "along the orientation vector"; the map is
- *     POV-Ray 3.7's as measured).  A point on the axis (or at the
- *     centre) is left where it is.
- *
- * Coordinates are clamped to +-1e17 after the warps, which the manual
- * does not say but POV-Ray 3.7 does: a cylindrical warp with dist_exp
- * 20 under function { min(abs(x) * 1e-18, 1) } renders 0.1 at a
- * distance of 17.5, where u * distance^20 is about 4e24 (measured).
+ * Every rule below that the manual leaves open was measured with
+ * bench/warp_probe.sh, which prints, for POV-Ray 3.7 or zrcube, the
+ * warped point of each probe point as three function patterns see it;
+ * the comments cite its lines by their case name (the first word).
+ * tests/test_warp.c checks these values and tests/test_warp_probe.sh
+ * compares the two renderers line by line when POV-Ray is installed.
  */
 #include "config.h"
 
@@ -49,13 +31,27 @@
 #include "scene/pattern.h"
 #include "scene/warp.h"
 
-#define COORD_LIMIT 1.0e17
-#define REPEAT_EPS 1.0e-10
+/*
+ * The largest coordinate a pattern is given: each of x, y and z is cut
+ * to [-1e17, 1e17].  Measured (warp_probe.sh, far, far_fine, far_in,
+ * far_exp): offsets of 1e14 per block reach 9.99e16 unchanged in block
+ * 999 and stop at 1e17 from block 1000 on; 2e17, -3e17 and 4e17 come
+ * back as +-1e17 even where the warp leaves them alone.  (POV-Ray cuts
+ * them without any warp too, as a function pattern at y = 2e17 shows;
+ * lib/scene/pattern.c does not, which only matters that far away.)
+ */
+#define PATTERN_COORD_MAX 1e17
+
+/* Black hole repeat components below this are "do not repeat" (the
+   manual: 0 means no repeat; this also keeps floor(x / r) finite). */
+#define HOLE_NO_REPEAT 1e-10
 
 void zr__warp_init(zr_warp *w, zr_warp_kind kind) {
   *w = (zr_warp){0};
   w->kind = kind;
   zr__transform_identity(&w->frame);
+  /* The manual's defaults: "Default values for pattern modifiers" and
+     "Mapping using warps". */
   w->octaves = 6;
   w->omega = 0.5;
   w->lambda = 2.0;
@@ -69,143 +65,229 @@ void zr__warp_init(zr_warp *w, zr_warp_kind kind) {
   w->major_radius = 1;
 }
 
-static double *axis_of(zr_vec3 *v, int a) {
-  return a == 0 ? &v->x : a == 1 ? &v->y : &v->z;
-}
-
-static zr_vec3 repeat(const zr_warp *w, zr_vec3 p) {
-  double *pa = axis_of(&p, w->axis);
-  /* The block number is kept in single precision, as POV-Ray 3.7's
-     renders show: function { x / 2 } under repeat x is 0.75 at x =
-     16777217.5, block 16777216 (measured), not 0.25. */
-  float block = (float)floor(*pa / w->width);
-  *pa -= block * w->width;
-  if ((int)block & 1) {
-    p = zr_v3_mul(p, w->flip);
-    zr_vec3 f = w->flip;
-    if (*axis_of(&f, w->axis) < 0)
-      *pa += w->width;
-  }
-  return zr_v3_madd(p, w->offset, block);
-}
-
-/* A number in [0, 1) for a block of a repeated black hole. */
-static double block_random(int bx, int by, int bz, int k) {
-  uint64_t h = (uint64_t)(uint32_t)bx * 0x9E3779B97F4A7C15u;
-  h ^= (uint64_t)(uint32_t)by * 0xC2B2AE3D27D4EB4Fu;
-  h ^= (uint64_t)(uint32_t)bz * 0x165667B19E3779F9u;
-  h += (uint64_t)k * 0x27D4EB2F165667C5u;
-  h ^= h >> 31;
-  h *= 0xBF58476D1CE4E5B9u;
-  h ^= h >> 29;
-  return (double)(h >> 11) * (1.0 / 9007199254740992.0);
-}
-
-static int block_of(double x, double spacing) {
-  return spacing >= REPEAT_EPS ? (int)floor(x / spacing) : 0;
-}
-
-static zr_vec3 black_hole(const zr_warp *w, zr_vec3 p) {
-  zr_vec3 c = w->centre;
-  zr_vec3 r = w->repeat;
-  if (r.x != 0 || r.y != 0 || r.z != 0) {
-    int bx = block_of(p.x, r.x), by = block_of(p.y, r.y),
-        bz = block_of(p.z, r.z);
-    zr_vec3 u = w->turbulence;
-    c = zr_v3_add(c, zr_v3(u.x * block_random(bx, by, bz, 0),
-                           u.y * block_random(bx, by, bz, 1),
-                           u.z * block_random(bx, by, bz, 2)));
-    c = zr_v3_add(c, zr_v3(r.x * bx, r.y * by, r.z * bz));
-  }
-  zr_vec3 d = zr_v3_sub(p, c);
-  double len = sqrt(zr_v3_dot(d, d));
-  if (len >= w->radius)
-    return p;
-  double s = pow((w->radius - len) / w->radius, w->falloff) * w->strength;
-  if (s > 1)
-    s = 1;
-  return zr_v3_madd(p, d, w->inverse ? -s : s);
-}
-
-/* The angle about y from +x towards +z, as a fraction of a turn. */
-static double turn_xz(double x, double z, double len) {
-  double theta;
-  if (z == 0)
-    theta = x > 0 ? 0 : M_PI;
-  else {
-    theta = acos(x / len);
-    if (z < 0)
-      theta = 2 * M_PI - theta;
-  }
-  return theta / (2 * M_PI);
+static void set_axis(zr_vec3 *v, int axis, double value) {
+  if (axis == 0)
+    v->x = value;
+  else if (axis == 1)
+    v->y = value;
+  else
+    v->z = value;
 }
 
 /*
- * The mapping warps' orientation step: (u, v, dist) becomes
- * u e_u + v e_v + dist e_d with, for the unit orientation o,
- *   e_u = (o.y + o.z, 0, -o.x), e_v = (0, o.x + o.z, o.y),
- *   e_d = (o.x, -o.y, o.z),
- * so <0,0,1> leaves the point as it is and <0,1,0> sends (u, v, dist)
- * to (u, -dist, v).  The manual gives no formula; this linear map is
- * POV-Ray 3.7's, measured with function pigments (0.5 + x / 50 and so
- * on, 16-bit linear output) under a spherical warp at five points for
- * each of the orientations x, y, <1,2,3>, <0.6,0.8,0> and <-1,0.5,0.2>:
- * every component within 0.0006 (the output's quantisation) of it.
- * It is not a rotation (e_u and e_v are not unit vectors in general).
+ * repeat <w along one axis> offset <o> flip <f> ("Repeat Warp").  The
+ * manual: copy n (counted from 0 at the origin, the copy between 0 and
+ * w) shows the slice of the first copy moved by n o, every other copy
+ * mirrored on the flipped axes, "the first copy in the positive
+ * direction" not flipped.  Measured (warp_probe.sh, repeat*):
+ *   - n = floor(p / w) also for negative p and negative w (repeat -2*y
+ *     sends y = 0.5 to -1.5, y = 2.5 to -1.5, y = -0.5 to itself), and
+ *     the point moves by -n w along the axis;
+ *   - copies with odd n are the mirrored ones, on both sides of 0
+ *     (n = 1, -1 flip; 2, -2 do not);
+ *   - a flipped axis other than the repeat axis changes sign; the
+ *     repeat axis itself is mirrored within the copy, local -> w - local
+ *     (repeat 2*x flip x: 2.5 and -1.5 read 1.5);
+ *   - the offset is added after the mirroring (repeat_flip_offset:
+ *     2.5 reads <1.6, -0.05, 0.425>, -1.5 reads <1.4, -0.45, -0.175>).
+ * Far from the origin the copy number is exact here: POV-Ray rounds it
+ * beyond 2^24 copies (repeat_far: x = 16777217.5 reads 1.5 there, 0.5
+ * here), which no scene can see.
  */
-static zr_vec3 orient(const zr_warp *w, double u, double v, double dist) {
-  zr_vec3 o = w->orientation;
-  if (o.x == 0 && o.y == 0 && o.z == 1)
-    return zr_v3(u, v, dist);
-  zr_vec3 e_u = zr_v3(o.y + o.z, 0, -o.x);
-  zr_vec3 e_v = zr_v3(0, o.x + o.z, o.y);
-  zr_vec3 e_d = zr_v3(o.x, -o.y, o.z);
-  return zr_v3_add(zr_v3_add(zr_v3_scale(e_u, u), zr_v3_scale(e_v, v)),
-                   zr_v3_scale(e_d, dist));
+static zr_vec3 repeat(const zr_warp *w, zr_vec3 p) {
+  double along = zr_v3_get(p, w->axis);
+  double copy = floor(along / w->width);
+  double local = along - copy * w->width;
+  if (fmod(copy, 2.0) != 0.0) {
+    zr_vec3 sign = w->flip;
+    p = zr_v3_mul(p, sign);
+    if (zr_v3_get(sign, w->axis) < 0)
+      local = w->width - local;
+  }
+  set_axis(&p, w->axis, local);
+  return zr_v3_madd(p, w->offset, copy);
 }
 
-static double dist_scale(double len, double e) {
-  return e == 1 ? len : e != 0 ? pow(len, e) : 1;
+/* A number in [0, 1) for one axis of one block of a repeated black
+   hole: a 64-bit mix of the block's indices (the finaliser of
+   Steele, Lea and Flood's SplitMix64, "Fast splittable pseudorandom
+   number generators", OOPSLA 2014).  The manual asks only for "a
+   different random amount ranging from 0 to 1" per axis, the same in
+   every render; POV-Ray's own numbers are not matched. */
+static double hole_random(const int64_t block[3], int axis) {
+  uint64_t h = 0x6A09E667F3BCC909u + (uint64_t)axis;
+  for (int k = 0; k < 3; k++) {
+    h ^= (uint64_t)block[k] + 0x9E3779B97F4A7C15u + (h << 6) + (h >> 2);
+    h = (h ^ (h >> 30)) * 0xBF58476D1CE4E5B9u;
+    h = (h ^ (h >> 27)) * 0x94D049BB133111EBu;
+    h ^= h >> 31;
+  }
+  return (double)(h >> 11) * 0x1p-53;
 }
 
-static zr_vec3 cylindrical(const zr_warp *w, zr_vec3 p) {
-  double len = sqrt(p.x * p.x + p.z * p.z);
-  if (len == 0)
+/*
+ * black_hole <c>, r ("Black Hole Warp").  From the manual: the
+ * closeness k = (r - |d|) / r of a point at d = p - c within the
+ * sphere, the force k^falloff times strength, the move "clipped to a
+ * maximum of the original distance from the center", inverse pushing
+ * the other way; with repeat, c is an offset into each block of the
+ * given size (sizes are fitted when the warp is read,
+ * lib/sdl/build_warp.c) and turbulence moves each block's centre by
+ * the turbulence times a random amount in [0, 1) per axis.  Measured
+ * (warp_probe.sh, hole*): the pattern point moves away from the centre
+ * by the force times d (black_hole <1,0,0>, 2 sends x = 1.5 to
+ * 1.78125, force 0.5625), so the pattern is drawn in; inverse moves it
+ * towards the centre (0.25 -> 0.109375); a force of 1 or more moves it
+ * by exactly d (strength 3: 0.1 -> 0.2; inverse strength 4: 0.25 -> 0).
+ */
+static zr_vec3 black_hole(const zr_warp *w, zr_vec3 p) {
+  zr_vec3 centre = w->centre;
+  const zr_vec3 size = w->repeat;
+  if (size.x != 0 || size.y != 0 || size.z != 0) {
+    double pc[3] = {p.x, p.y, p.z};
+    double sc[3] = {size.x, size.y, size.z};
+    double jitter[3] = {w->turbulence.x, w->turbulence.y, w->turbulence.z};
+    double shift[3] = {0, 0, 0};
+    int64_t block[3] = {0, 0, 0};
+    for (int k = 0; k < 3; k++)
+      if (sc[k] >= HOLE_NO_REPEAT)
+        block[k] = (int64_t)floor(pc[k] / sc[k]);
+    for (int k = 0; k < 3; k++)
+      shift[k] = (double)block[k] * sc[k] +
+                 (jitter[k] != 0 ? jitter[k] * hole_random(block, k) : 0);
+    centre = zr_v3_add(centre, zr_v3(shift[0], shift[1], shift[2]));
+  }
+  zr_vec3 d = zr_v3_sub(p, centre);
+  double dist = zr_v3_len(d);
+  if (!(dist < w->radius))
     return p;
-  double u = turn_xz(p.x, p.z, len) * dist_scale(len, w->dist_exp);
-  return orient(w, u, p.y, len);
+  double closeness = (w->radius - dist) / w->radius;
+  double force = w->strength * pow(closeness, w->falloff);
+  if (force > 1)
+    force = 1;
+  return zr_v3_madd(p, d, w->inverse ? -force : force);
 }
 
-static zr_vec3 spherical(const zr_warp *w, zr_vec3 p) {
-  double dist = sqrt(zr_v3_dot(p, p));
-  if (dist == 0)
-    return p;
-  double x = p.x / dist, y = p.y / dist, z = p.z / dist;
-  double v = 0.5 + asin(y) / M_PI;
-  double len = sqrt(x * x + z * z);
-  double u = len == 0 ? 0 : turn_xz(x, z, len);
-  double k = dist_scale(dist, w->dist_exp);
-  return orient(w, u * k, v * k, dist);
+/*
+ * The mapping warps ("Mapping using warps") turn a point into three map
+ * coordinates: u and v "as the image maps use" ("The map_type Option")
+ * and a depth, the manual's "distance" (from the origin, the y axis or
+ * the torus's ring).  dist_exp e multiplies u and v (cylindrical: u
+ * only) by depth^e; e = 0, the default, leaves the manual's box from
+ * <0,0> to <1,1>.
+ */
+typedef struct map_coords {
+  double u, v, depth;
+} map_coords;
+
+/* The fraction of a turn from the direction (c, s) = (1, 0) towards
+   (0, 1), in [0, 1). */
+static double turn(double s, double c) {
+  double t = atan2(s, c) / (2 * M_PI);
+  return t < 0 ? t + 1 : t;
 }
 
-static zr_vec3 toroidal(const zr_warp *w, zr_vec3 p) {
-  double len = sqrt(p.x * p.x + p.z * p.z);
-  if (len == 0)
-    return p;
-  double u = turn_xz(p.x, p.z, len);
-  double x = len - w->major_radius;
-  double minor = sqrt(x * x + p.y * p.y);
-  double phi = minor == 0 ? 0 : acos(-x / minor);
-  if (p.y > 0)
-    phi = 2 * M_PI - phi;
-  double v = phi / (2 * M_PI);
-  double k = dist_scale(minor, w->dist_exp);
-  return orient(w, u * k, v * k, minor);
+static double depth_weight(double depth, double e) {
+  return e == 0 ? 1.0 : pow(depth, e);
+}
+
+/*
+ * Measured (warp_probe.sh, cyl, cyl_exp, cyl_exp2, axis_cyl): u is the
+ * turn about y from +x towards +z (<0,0.3,1> has u 0.25, <1,0.3,-1>
+ * 0.875), v = y, depth the distance from the y axis; dist_exp scales u
+ * alone (<0,0.3,2>, dist_exp 1: u 0.5, v 0.3).  A point on the axis is
+ * left where it is, whatever the orientation (axis_cyl).
+ */
+static bool cylinder_coords(const zr_warp *w, zr_vec3 p, map_coords *m) {
+  double r = hypot(p.x, p.z);
+  if (r == 0)
+    return false;
+  m->u = turn(p.z, p.x) * depth_weight(r, w->dist_exp);
+  m->v = p.y;
+  m->depth = r;
+  return true;
+}
+
+/*
+ * Measured (sph, sph_exp, axis_sph): u as for the cylinder, v from 0 at
+ * the -y pole through 0.5 at the equator to 1 at +y, linear in the
+ * latitude (<1,1,0>: 0.75), depth the distance from the origin; at a
+ * pole u is 0 and the point is mapped like any other (with orientation
+ * x, <0,2,0> goes to <2,1,0>); dist_exp scales u and v.  The origin is
+ * left where it is.
+ */
+static bool sphere_coords(const zr_warp *w, zr_vec3 p, map_coords *m) {
+  double r = zr_v3_len(p);
+  if (r == 0)
+    return false;
+  double k = depth_weight(r, w->dist_exp);
+  double lat = asin(fmax(-1.0, fmin(1.0, p.y / r)));
+  m->u = turn(p.z, p.x) * k;
+  m->v = (0.5 + lat / M_PI) * k;
+  m->depth = r;
+  return true;
+}
+
+/*
+ * Measured (tor, tor_r, axis_tor): u as for the cylinder; v is the turn
+ * about the ring at major_radius R in the plane through the y axis,
+ * from 0 on the inner side (towards the axis) through 0.25 below, 0.5
+ * outside and 0.75 above (R 1: <0.5,0,0> 0, <1,-1,0> 0.25, <2,0,0>
+ * 0.5, <1,1,0> 0.75); depth the distance from the ring; dist_exp
+ * scales u and v.  A point on the y axis is left where it is.  On the
+ * ring itself POV-Ray's v is not a number (tor, <1,0,0>); here it is 0.
+ */
+static bool torus_coords(const zr_warp *w, zr_vec3 p, map_coords *m) {
+  double r = hypot(p.x, p.z);
+  if (r == 0)
+    return false;
+  double out = r - w->major_radius; /* outwards from the ring */
+  double depth = hypot(out, p.y);
+  double k = depth_weight(depth, w->dist_exp);
+  m->u = turn(p.z, p.x) * k;
+  m->v = depth == 0 ? 0 : turn(-p.y, -out) * k;
+  m->depth = depth;
+  return true;
+}
+
+/*
+ * Where the map coordinates go: the manual's box "stretching to
+ * infinity along the orientation vector".  With the default
+ * orientation z they are the point (u, v, depth).  Measured
+ * (warp_probe.sh, sph_ox, sph_oy, sph_onz, cyl_oy, tor_ox, planar_y):
+ * orientation x sends them to (depth, v, -u), orientation y to
+ * (u, -depth, v), -z to -(u, v, depth); and for the unit orientations
+ * <1,2,3>/sqrt(14), <0.6,0.8,0> and <-1,0.5,0.2>/|...| (sph_o123,
+ * sph_o68, sph_oneg) every probe equals o.x times the x placement plus
+ * o.y times the y placement plus o.z times the z one (to the 9
+ * decimals printed).  So the placement is linear in the orientation;
+ * it is not a rotation unless the orientation is an axis.
+ */
+static zr_vec3 place(zr_vec3 o, map_coords m) {
+  zr_vec3 along_x = zr_v3(m.depth, m.v, -m.u);
+  zr_vec3 along_y = zr_v3(m.u, -m.depth, m.v);
+  zr_vec3 along_z = zr_v3(m.u, m.v, m.depth);
+  zr_vec3 q = zr_v3_scale(along_x, o.x);
+  q = zr_v3_madd(q, along_y, o.y);
+  return zr_v3_madd(q, along_z, o.z);
+}
+
+/*
+ * planar <n>, d: the manual takes the pattern "from an other plane"
+ * (normal n, distance d along it) and extrudes it along z.  Measured
+ * (planar, planar_y, planar_n): the point becomes the map coordinates
+ * (x, y, d) placed along n as above: by default <x, y, 0>; planar y,
+ * 0.5 reads <x, -0.5, y>.
+ */
+static zr_vec3 planar(const zr_warp *w, zr_vec3 p) {
+  map_coords m = {p.x, p.y, w->distance};
+  return place(w->orientation, m);
 }
 
 zr_vec3 zr__warp_apply(const zr_warp *w, zr_vec3 p) {
+  map_coords m;
   switch (w->kind) {
-  case ZR_WARP_TURBULENCE:
+  case ZR_WARP_TURBULENCE: /* "Turbulence Warp": p + amount * DNoise */
     return zr_v3_add(p, zr_v3_mul(w->turbulence,
                                   zr__dturbulence(p, w->octaves, w->omega,
                                                   w->lambda)));
@@ -214,27 +296,27 @@ zr_vec3 zr__warp_apply(const zr_warp *w, zr_vec3 p) {
   case ZR_WARP_BLACK_HOLE:
     return black_hole(w, p);
   case ZR_WARP_PLANAR:
-    return orient(w, p.x, p.y, w->distance);
+    return planar(w, p);
   case ZR_WARP_CYLINDRICAL:
-    return cylindrical(w, p);
+    return cylinder_coords(w, p, &m) ? place(w->orientation, m) : p;
   case ZR_WARP_SPHERICAL:
-    return spherical(w, p);
+    return sphere_coords(w, p, &m) ? place(w->orientation, m) : p;
   case ZR_WARP_TOROIDAL:
-    return toroidal(w, p);
+    return torus_coords(w, p, &m) ? place(w->orientation, m) : p;
   }
   return p;
 }
 
-static double clamp_coord(double v) {
-  return v > COORD_LIMIT ? COORD_LIMIT : v < -COORD_LIMIT ? -COORD_LIMIT : v;
+static double cut(double c) {
+  return fmax(-PATTERN_COORD_MAX, fmin(PATTERN_COORD_MAX, c));
 }
 
 zr_vec3 zr__warp_point(const zr_warp *warps, int n, zr_vec3 p) {
   for (int i = n - 1; i >= 0; i--) {
     const zr_warp *w = &warps[i];
-    p = zr__xform_point(w->frame.m, p);
-    p = zr__warp_apply(w, p);
-    p = zr__xform_point(w->frame.inv, p);
+    zr_vec3 q = zr__xform_point(w->frame.m, p);
+    q = zr__warp_apply(w, q);
+    p = zr__xform_point(w->frame.inv, q);
   }
-  return zr_v3(clamp_coord(p.x), clamp_coord(p.y), clamp_coord(p.z));
+  return zr_v3(cut(p.x), cut(p.y), cut(p.z));
 }

@@ -7,13 +7,12 @@
 
 #include "scene/scene.h"
 
-/* POV-Ray's defaults for a warp of this kind, identity frame. */
+/* The manual's defaults for a warp of this kind, identity frame. */
 void zr__warp_init(zr_warp *w, zr_warp_kind kind);
 /* One warp's move of p, in the warp's own frame. */
 zr_vec3 zr__warp_apply(const zr_warp *w, zr_vec3 p);
 /* Every warp of a pattern, last written first, each in its frame: p is
-   in the pattern's space (after all its transforms), as POV-Ray's
-   Warp_EPoint takes it. */
+   in the pattern's space (after all its transforms). */
 zr_vec3 zr__warp_point(const zr_warp *warps, int n, zr_vec3 p);
 
 #endif /* ZR_SCENE_WARP_H */

@@ -192,3 +192,12 @@ tests_test_media_CPPFLAGS = $(TEST_CPPFLAGS)
 tests_test_media_LDADD = $(TEST_LDADD)
 tests_test_media_LDFLAGS = -static
 $(tests_test_media_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
+
+# julia_fractal's escape rule against POV-Ray (skipped without it).
+TESTS += tests/test_julia_probe.sh
+EXTRA_DIST += tests/test_julia_probe.sh bench/julia_probe.sh
+
+# The metallic tint against POV-Ray (skipped without it); the fit.
+TESTS += tests/test_metallic_probe.sh
+EXTRA_DIST += tests/test_metallic_probe.sh bench/metallic_probe.sh \
+	bench/metallic_fit.py

@@ -7,28 +7,31 @@
  * The slice: the manual's plane perpendicular to the 4-D normal n at
  * the given distance, projected to 3-D by dropping w, so (x, y, z) is
  * the 4-D point (x, y, z, w) with w = (distance - n.x x - n.y y -
- * n.z z) / n.w (hence n.w may not be 0).  The escape radius is the
- * manual's 4 for hypercomplex numbers; for quaternions POV-Ray 3.7's
- * renders measure 1 + |p|, at most 2 (with max_iteration 2,
- * p = <0.5, 0, 0, 0> reaches +-1 on the x axis and +-1.414 on the y
- * axis, where radius 4 would give +-1.87; p = 0 reaches 1, p = <3, 0,
- * 0, 0> +-0.56 across its silhouette; zRcube's renders of these match
- * to the pixel).  Since the set is defined by a
- * finite number of steps, the radius shapes the object.  The bounding
- * sphere is the escape radius: nothing beyond it is inside.
+ * n.z z) / n.w (hence n.w may not be 0).
+ *
+ * The escape radius R (see escape_radius) and the bounding sphere: a
+ * point is inside when none of h_0 ... h_(N-1) lies beyond R, so the
+ * object lies in the 4-D ball |h_0| <= R, whose slice lies in the 3-D
+ * ball of radius R about the origin (dropping w only shortens a
+ * vector): that ball bounds the object and starts the march.  Since
+ * the set is defined by a finite number of steps, R shapes the object
+ * whenever max_iteration is small, so it is measured
+ * (bench/julia_probe.sh).
  *
  * Quaternion squares and cubes follow from q = (x, v), v = (y, z, w):
  * q^2 = (x^2 - |v|^2, 2 x v), q^3 = (x^3 - 3 x |v|^2, (3 x^2 - |v|^2) v).
- * Hypercomplex numbers, with the manual's table of products, are two
- * copies of the complex numbers: in the "duplex" form a = (x - w) +
- * i (y + z), b = (x + w) + i (y - z) they multiply part by part, so a
- * function of one (sqr, cube, reciprocal, exp, ln, the trigonometric
- * and hyperbolic functions and their inverses, pwr) is that complex
- * function of each part.  Quaternions have only sqr and cube, as the
- * manual says.  The manual's hypercomplex `cube` is h*h*h, which is
- * what zRcube computes; POV-Ray 3.7 renders it (measured, 200 x 200,
- * p = <-0.4, 0.3, 0.1, 0>, max_iteration 8) with nearly the silhouette
- * of its `sqr` (872 pixels differ) and far from a cube's (2587).
+ * Hypercomplex numbers split into two complex numbers (see bicomplex
+ * below), so a function of one (sqr, cube, reciprocal, exp, ln, the
+ * trigonometric and hyperbolic functions and their inverses, pwr) is
+ * that complex function of each part.  Quaternions have only sqr and
+ * cube, as the manual says.  The manual's hypercomplex `cube` is h*h*h,
+ * which is what zRcube computes; POV-Ray 3.7 draws it exactly as its
+ * `sqr` (julia_probe.sh: h2_cube and h2_skew meet every ray at the same
+ * point), which no stock scene uses.  For the functions other than
+ * sqr and cube, POV-Ray's crossings lie on its march's steps (1 /
+ * precision apart along the ray: h2_sin meets the ray from -y at
+ * -2.083000 with precision 1000, the boundary being at -2.083329);
+ * zRcube bisects every crossing.
  *
  * Along a ray the tracer marches from the bounding sphere's entry by
  * the larger of a distance estimate (march_sample; the manual uses one
@@ -60,13 +63,61 @@ static double complex complex_of(double re, double im) {
    bounding radius: far below a pixel, well above rounding. */
 #define TOLERANCE 1e-7
 
-static double julia_radius(const struct zr_julia *j) {
+/*
+ * Where the object fills the bounding sphere, POV-Ray reports no
+ * surface on the sphere, yet it finds the surface of an object whose
+ * later iterates end exactly there.  Measured (bench/julia_probe.sh):
+ * with max_iteration 1 the object is the whole ball |h_0| <= R and no
+ * ray meets it (q1_*, h1_*); hypercomplex 1/h with p = 0 returns to h_0
+ * every other step, and rays meet it only at |x| = 1/4, not on the
+ * sphere (h6_recip0, h3_recip0); quaternion p = 0, max_iteration 2 is
+ * the unit ball cut by |h_1| = |h_0|^2 <= 1, and rays meet it at 1
+ * (q2_p0); where the slice is skewed the ball is met inside the sphere
+ * and rays meet it there (h2_exp, h2_recip: x = -3.977436 =
+ * -sqrt(16 - 0.18)).  So the march runs between the points where the
+ * ray enters and leaves a sphere a little wider than R (radius
+ * R (1 + BOUND_WIDEN)); at those two points the iterates may reach
+ * |h|^2 = R^2 (1 + 3 BOUND_WIDEN) (ENTRY_SLACK), enough for h_0 and
+ * for an iterate equal to it (|h|^2 <= R^2 (1 + 2 BOUND_WIDEN)), not
+ * for h_0^2 on the unit sphere (R^2 (1 + 4 BOUND_WIDEN)); everywhere
+ * else the test is |h| > R.  The one measured case this misses is an
+ * object touching the sphere through a later iterate at the cut radius
+ * 2: quaternion p = <2,0,0,0>, max_iteration 2 at y = -2 (q2_p2),
+ * where POV-Ray finds nothing and zRcube the surface.  1e-9 is far
+ * above rounding (about 1e-16) and far below a pixel.
+ */
+#define BOUND_WIDEN 1e-9
+#define ENTRY_SLACK (1.0 + 3 * BOUND_WIDEN)
+
+/*
+ * The escape radius R: a point escapes once an iterate has |h| > R.
+ *
+ * Hypercomplex numbers: the manual's "hypersphere of radius 4"; measured
+ * (julia_probe.sh, h2_p0: with p = 0 and max_iteration 2, h_1 = h_0^2
+ * reaches 4 where rays meet the object, at |h_0| = 2; h2_p0.5, h2_p2,
+ * h2_p5 agree).
+ *
+ * Quaternions: R = 1 + |p|, but no more than 2.  Why 1 + |p| is an
+ * escape radius (|q^2| = |q|^2 for quaternions): if |q| = r > 1 + |p|
+ * then |q^2 + p| >= r^2 - |p| = r + (r (r - 1) - |p|) and
+ * r (r - 1) - |p| > (1 + |p|) |p| - |p| = |p|^2 >= 0, and that gain
+ * grows with r, so the iterates grow without bound: past R a point
+ * never comes back.  That POV-Ray 3.7 uses this R, and cuts it at 2,
+ * is measured (julia_probe.sh: with max_iteration 2 the object is
+ * |h_0^2 + p| <= R; p = <0.5,0,0,0> meets the rays at x = -1 and
+ * y = -1.414214, R = 1.5; p = <1,0,0,0> at x = -1 and y = -1.732051,
+ * R = 2; p = <2,0,0,0> on the diagonal at 1.154701 = 2 / sqrt(3),
+ * R = 2, not 3; q2_p1.5 and q2_pi15 give R = 2 for |p| = 1.5; p = 0
+ * gives R = 1, the unit ball).  The cut at 2 keeps R an escape radius
+ * only while |p| <= 2 (r (r - 1) >= |p| at r = 2), so for a larger p
+ * some points beyond R would come back: they are outside all the same.
+ */
+static double escape_radius(const struct zr_julia *j) {
   if (j->algebra == ZR_JULIA_HYPERCOMPLEX)
     return 4.0;
-  double r = 1.0 + sqrt(j->c[0] * j->c[0] + j->c[1] * j->c[1] +
-                        j->c[2] * j->c[2] + j->c[3] * j->c[3]) +
-             TOLERANCE;
-  return r > 2.0 ? 2.0 : r;
+  double p = sqrt(j->c[0] * j->c[0] + j->c[1] * j->c[1] +
+                  j->c[2] * j->c[2] + j->c[3] * j->c[3]);
+  return fmin(1.0 + p, 2.0);
 }
 
 bool zr__julia_prepare(struct zr_julia *j) {
@@ -75,15 +126,15 @@ bool zr__julia_prepare(struct zr_julia *j) {
     n2 += j->slice[k] * j->slice[k];
   if (!(n2 > 0.0) || j->slice[3] == 0.0)
     return false;
-  double r = julia_radius(j);
-  j->exit2 = j->algebra == ZR_JULIA_HYPERCOMPLEX ? 16.0 : r * r + TOLERANCE;
+  j->escape = escape_radius(j);
   if (j->precision < 1.0)
     j->precision = 1.0;
   return true;
 }
 
 void zr__julia_bounds(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi) {
-  double r = julia_radius(o->u.julia.data);
+  double r = ((const struct zr_julia *)o->u.julia.data)->escape *
+             (1.0 + BOUND_WIDEN);
   *lo = zr_v3(-r, -r, -r);
   *hi = zr_v3(r, r, r);
 }
@@ -148,21 +199,44 @@ static void quaternion_step(const double q[4], int power, double out[4],
   }
 }
 
-/* The duplex form of a hypercomplex number and back. */
-static void to_duplex(const double h[4], double complex *a,
-                      double complex *b) {
-  *a = complex_of(h[0] - h[3], h[1] + h[2]);
-  *b = complex_of(h[0] + h[3], h[1] - h[2]);
+/*
+ * Hypercomplex numbers as pairs of complex numbers.  The manual's table
+ * gives ij = ji = k, jk = kj = -i, ki = ik = -j and ii = jj = -1; it
+ * also lists kk = -1, but commuting i and j give kk = (ij)(ij) = ii jj =
+ * +1, and POV-Ray agrees (julia_probe.sh, h2_w05: at w = 0.5, h_0 = x +
+ * 0.5k, and rays meet the object where (x^2 + 0.25)^2 + x^2 = 16, x =
+ * 1.819895, as kk = +1 gives; kk = -1 would give 1.946).  So with
+ * kk = 1 the elements e = (1 + k) / 2 and f = (1 - k) / 2 satisfy
+ * e e = e, f f = f, e f = 0, e + f = 1 and k e = e, k f = -f.  Writing
+ * j = -ik (from ik = -j), h = x + yi + zj + wk = A + B k with
+ * A = x + iy and B = w - iz, complex numbers in 1 and i, hence
+ *   h = (A + B) e + (A - B) f,
+ * and products, sums and so power series act on the two parts
+ * separately: f(h) = f(A + B) e + f(A - B) f.  Back: A = (P + M) / 2,
+ * B = (P - M) / 2 for P = A + B, M = A - B; and |h|^2 = |A|^2 + |B|^2 =
+ * (|P|^2 + |M|^2) / 2.  tests/test_julia.c checks the table.
+ */
+typedef struct bicomplex {
+  double complex along_e; /* P = A + B */
+  double complex along_f; /* M = A - B */
+} bicomplex;
+
+static bicomplex split(const double h[4]) {
+  double complex a = complex_of(h[0], h[1]);  /* x + iy */
+  double complex b = complex_of(h[3], -h[2]); /* w - iz */
+  return (bicomplex){a + b, a - b};
 }
 
-static void from_duplex(double complex a, double complex b, double h[4]) {
-  h[0] = 0.5 * (creal(a) + creal(b));
-  h[1] = 0.5 * (cimag(a) + cimag(b));
-  h[2] = 0.5 * (cimag(a) - cimag(b));
-  h[3] = 0.5 * (creal(b) - creal(a));
+static void join(bicomplex s, double h[4]) {
+  double complex a = 0.5 * (s.along_e + s.along_f);
+  double complex b = 0.5 * (s.along_e - s.along_f);
+  h[0] = creal(a);
+  h[1] = cimag(a);
+  h[2] = -cimag(b);
+  h[3] = creal(b);
 }
 
-/* The complex function of a julia_fractal on one duplex part; the
+/* The complex function of a julia_fractal on one part (bicomplex); the
    inverse functions take C99's principal branches (ISO C 7.3.5). */
 static double complex part_function(const struct zr_julia *j,
                                     double complex z) {
@@ -254,31 +328,30 @@ static double complex part_derivative(const struct zr_julia *j,
   return 2.0 * z;
 }
 
-/* Hypercomplex h -> f(h), part by part in duplex form, with the
-   derivative columns multiplied part by part by f' (the duplex form
-   makes the algebra two copies of the complex numbers, so f acts on
-   each copy as a holomorphic function).  Returns how much the step
-   stretches small distances at most, max(|f'(a)|, |f'(b)|), as the
-   duplex form is an isometry up to the factor sqrt(2); 0 when neither
-   the columns nor the factor are asked for (want_stretch false). */
+/* Hypercomplex h -> f(h), part by part (bicomplex above), with the
+   derivative columns multiplied part by part by f' (each part is a
+   complex number on which f acts as a holomorphic function).  Returns
+   how much the step stretches small distances at most, the larger of
+   |f'| on the two parts (|h|^2 is the mean of the parts' |.|^2);
+   0 when neither the columns nor the factor are asked for
+   (want_stretch false). */
 static double hypercomplex_step(const struct zr_julia *j,
                                 const double h[4], double out[4],
                                 double (*d)[4], int n_cols,
                                 bool want_stretch) {
-  double complex a, b;
-  to_duplex(h, &a, &b);
-  double complex fa = part_function(j, a), fb = part_function(j, b);
-  from_duplex(fa, fb, out);
+  bicomplex s = split(h);
+  bicomplex fs = {part_function(j, s.along_e),
+                  part_function(j, s.along_f)};
+  join(fs, out);
   if (!n_cols && !want_stretch)
     return 0.0;
-  double complex ka = part_derivative(j, a, fa);
-  double complex kb = part_derivative(j, b, fb);
+  double complex ke = part_derivative(j, s.along_e, fs.along_e);
+  double complex kf = part_derivative(j, s.along_f, fs.along_f);
   for (int k = 0; k < n_cols; k++) {
-    double complex da, db;
-    to_duplex(d[k], &da, &db);
-    from_duplex(ka * da, kb * db, d[k]);
+    bicomplex ds = split(d[k]);
+    join((bicomplex){ke * ds.along_e, kf * ds.along_f}, d[k]);
   }
-  return fmax(cabs(ka), cabs(kb));
+  return fmax(cabs(ke), cabs(kf));
 }
 
 /* Only the direction of the derivative's columns matters (they make a
@@ -302,7 +375,7 @@ static void rescale(double (*dh)[4]) {
    polynomial (Hart, Sandin and Kauffman's estimate comes from the
    Green's function of a polynomial Julia set).  The manual names the
    estimate for quaternions; hypercomplex sqr and cube are polynomials
-   in each duplex part, so it holds for them as well. */
+   in each part (bicomplex), so it holds for them as well. */
 static bool has_estimate(const struct zr_julia *j) {
   return j->function == ZR_JULIA_SQR || j->function == ZR_JULIA_CUBE;
 }
@@ -322,7 +395,8 @@ static bool has_estimate(const struct zr_julia *j) {
  * hypercomplex_step).
  */
 static bool iterate(const struct zr_julia *j, julia_state *s, int n_cols,
-                    bool keep_in_range, double *stretch) {
+                    bool keep_in_range, double *stretch, double slack) {
+  double limit2 = j->escape * j->escape * slack;
   int power = j->function == ZR_JULIA_CUBE ? 3 : 2;
   bool quaternion = j->algebra == ZR_JULIA_QUATERNION;
   if (stretch)
@@ -330,7 +404,7 @@ static bool iterate(const struct zr_julia *j, julia_state *s, int n_cols,
   for (int i = 0; i < j->max_iteration; i++) {
     double n2 = s->h[0] * s->h[0] + s->h[1] * s->h[1] +
                 s->h[2] * s->h[2] + s->h[3] * s->h[3];
-    if (n2 > j->exit2)
+    if (n2 > limit2)
       return false;
     double next[4], k;
     if (quaternion) {
@@ -352,7 +426,7 @@ static bool iterate(const struct zr_julia *j, julia_state *s, int n_cols,
 static bool point_inside(const struct zr_julia *j, zr_vec3 p) {
   julia_state s;
   lift(j, p, &s, false);
-  return iterate(j, &s, 0, false, NULL);
+  return iterate(j, &s, 0, false, NULL, 1.0);
 }
 
 /*
@@ -366,13 +440,13 @@ static bool point_inside(const struct zr_julia *j, zr_vec3 p) {
  * march still checks every point it steps to.
  */
 static bool march_sample(const struct zr_julia *j, zr_vec3 p,
-                         double *dist) {
+                         double *dist, double slack) {
   julia_state s;
   double stretch;
   bool estimate = has_estimate(j);
   lift(j, p, &s, false);
   *dist = 0.0;
-  if (iterate(j, &s, 0, false, estimate ? &stretch : NULL))
+  if (iterate(j, &s, 0, false, estimate ? &stretch : NULL, slack))
     return true;
   if (!estimate)
     return false;
@@ -391,7 +465,7 @@ bool zr__julia_inside(const zr_object *o, zr_vec3 p) {
 static zr_vec3 julia_normal(const struct zr_julia *j, zr_vec3 p) {
   julia_state s;
   lift(j, p, &s, true);
-  iterate(j, &s, 3, true, NULL);
+  iterate(j, &s, 3, true, NULL, 1.0);
   double g[3];
   for (int k = 0; k < 3; k++) {
     g[k] = 0.0;
@@ -417,8 +491,8 @@ int zr__julia_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
   if (!(len > 0.0) || !isfinite(len))
     return 0;
   zr_vec3 d = zr_v3_scale(dir, 1.0 / len);
-  double r = julia_radius(j);
-  /* The bounding sphere about the origin. */
+  double r = j->escape * (1.0 + BOUND_WIDEN);
+  /* The bounding sphere about the origin (see ENTRY_SLACK). */
   double b = zr_v3_dot(org, d), c = zr_v3_dot(org, org) - r * r;
   double disc = b * b - c;
   if (!(disc > 0.0))
@@ -427,18 +501,18 @@ int zr__julia_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
   /* The march starts a few tolerances from the ray's origin, so a ray
      leaving the surface does not find it again. */
   double step = 1.0 / j->precision, tol = TOLERANCE * r;
-  double s_end = -b + root, s = fmax(-b - root, 3.0 * tol);
-  s_end = fmin(s_end, tmax * len);
+  double s_far = -b + root, s = fmax(-b - root, 3.0 * tol);
+  double s_end = fmin(s_far, tmax * len);
   if (!(s < s_end))
     return 0;
   double dist;
-  bool in = march_sample(j, zr_v3_madd(org, d, s), &dist);
+  bool in = march_sample(j, zr_v3_madd(org, d, s), &dist, ENTRY_SLACK);
   int found = 0;
   while (s < s_end && found < 4) {
     double ds = fmax(dist, step);
     double s_next = fmin(s + ds, s_end), dist_next;
-    bool in_next = march_sample(j, zr_v3_madd(org, d, s_next),
-                                &dist_next);
+    bool in_next = march_sample(j, zr_v3_madd(org, d, s_next), &dist_next,
+                                s_next == s_far ? ENTRY_SLACK : 1.0);
     if (in_next != in) {
       /* Bisect [s, s_next] down to the tolerance. */
       double a = s, e = s_next;

@@ -95,7 +95,8 @@ struct zr_julia {
   /* slice <n>, d: the hyperplane n . h = d (n a unit vector) that 3-D
      space is mapped onto (lib/trace/obj_julia.c). */
   double slice[4], distance;
-  double exit2; /* |h|^2 beyond which a point escapes */
+  double escape; /* the escape radius: |h| beyond it escapes; the
+                    bounding sphere about the origin too */
 };
 
 /* Computes the slice's frame from slice and distance; false when the

@@ -92,7 +92,7 @@ double zr__fresnel(double cos_i, double n1, double n2);
 
 /* The share of the light's own colour in a metallic highlight or
    reflection at an angle with cosine cos_angle (0 facing, 1 grazing). */
-double zr__metallic_fresnel(double cos_angle);
+double zr__metallic_white(double cos_angle);
 /* finish { irid { } }: the factor, per channel, by which thin-film
    interference scales a light's colour at p, given the cosines of the
    angles to the light and to the viewer (lib/trace/shade.c). */
