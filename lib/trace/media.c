@@ -40,8 +40,9 @@
  *     jitter / 2 of a cell (not the interval's ends).  With min samples 3
  *     or more (the manual: adaptive sampling only then) a cell whose two
  *     end samples differ by more than aa_threshold (the largest channel
- *     of |j_a - j_b| + |k_a - k_b| times the interval's length: how much
- *     the interval's light would change) is halved, recursively, up to
+ *     of |j_a - j_b| + |k_a - k_b| times the interval's length and the
+ *     transmittance up to the cell: how much the interval's light, as
+ *     seen from the origin, would change) is halved, recursively, up to
  *     aa_level times.
  *   - method 2: min samples evenly spread through the interval (each in
  *     the middle of its share, moved by up to jitter / 2 of it); method
@@ -130,6 +131,11 @@ typedef struct march {
   zr_vec3 origin, dir;
   bool shadow;   /* extinction only */
   bool lights;   /* some medium scatters and the ray is not a shadow */
+  /* The spotlights and cylinder lights (bit i: the scene's light i)
+     whose beam holds the piece of the ray being sampled; beams_known
+     false when the ray was not cut at every beam (then all are asked). */
+  bool beams_known;
+  uint64_t beams;
   bool varies;   /* the coefficients may change along the ray */
   uint64_t seed;
   uint64_t draws;
@@ -237,6 +243,11 @@ static sample sample_at(const march *m, double s) {
     const zr_light *light = &scene->lights[li];
     if (!lights_media(light, s))
       continue;
+    /* A beam lights all of a piece or none of it (the pieces are cut
+       where the ray crosses its boundary). */
+    if (light->kind != ZR_LIGHT_POINT && m->beams_known &&
+        !(m->beams >> li & 1u))
+      continue;
     zr_vec3 toward;
     zr_rgb arriving;
     if (!zr__light_arrive(light, p, &toward, &arriving) ||
@@ -316,7 +327,10 @@ static double measure(const sample *a, double len) {
    threshold and levels remain. */
 static void cell(march *m, const sample *a, const sample *b, int levels,
                  double len) {
-  if (levels > 0 && change(a, b, len) > m->pl.aa_threshold) {
+  /* The change is weighed by what still shows of it through the media
+     before the cell: deep in fog a difference is not seen. */
+  if (levels > 0 &&
+      change(a, b, len) * rgb_max(m->t) > m->pl.aa_threshold) {
     sample mid = sample_at(m, 0.5 * (a->s + b->s));
     cell(m, a, &mid, levels - 1, len);
     cell(m, &mid, b, levels - 1, len);
@@ -488,19 +502,23 @@ static int by_value(const void *a, const void *b) {
 
 /* Cuts [0, depth] into pieces (ends[0] = 0 < ends[1] < ... = depth) and
    tells which ones a spotlight or cylinder light lights; their number. */
-static int pieces(const march *m, double depth, double *ends, bool *lit) {
+static int pieces(march *m, double depth, double *ends, bool *lit,
+                  uint64_t *beams) {
   int n = 0;
   ends[n++] = 0.0;
   const zr_scene *scene = m->tr->scene;
-  bool beams = false;
+  bool beams_any = false;
   if (m->lights)
     for (size_t i = 0; i < scene->n_lights; i++) {
       const zr_light *light = &scene->lights[i];
       if (light->kind == ZR_LIGHT_POINT || !lights_media(light, 0.0))
         continue;
-      beams = true;
+      beams_any = true;
       n = light_cuts(m, light, depth, ends, n);
     }
+  /* Every cut was kept (none fell off the end of ends) and every light
+     fits in a mask: the masks can be trusted. */
+  m->beams_known = n < MAX_PIECES - 1 && scene->n_lights <= 64;
   ends[n++] = depth;
   qsort(ends, (size_t)n, sizeof ends[0], by_value);
   int k = 1;
@@ -510,14 +528,19 @@ static int pieces(const march *m, double depth, double *ends, bool *lit) {
   /* A piece is lit when its middle is inside some beam. */
   for (int i = 0; i + 1 < k; i++) {
     lit[i] = false;
-    if (!beams)
+    beams[i] = 0;
+    if (!beams_any)
       continue;
     double mid = 0.5 * (ends[i] + ends[i + 1]);
     zr_vec3 p = zr_v3_madd(m->origin, m->dir, mid);
-    for (size_t li = 0; li < scene->n_lights && !lit[i]; li++) {
+    for (size_t li = 0; li < scene->n_lights; li++) {
       const zr_light *light = &scene->lights[li];
-      lit[i] = light->kind != ZR_LIGHT_POINT && lights_media(light, mid) &&
-               zr__light_cone(light, p) > 0.0;
+      if (light->kind != ZR_LIGHT_POINT && lights_media(light, mid) &&
+          zr__light_cone(light, p) > 0.0) {
+        lit[i] = true;
+        if (li < 64)
+          beams[i] |= (uint64_t)1 << li;
+      }
     }
   }
   return k - 1;
@@ -586,7 +609,8 @@ zr_rgb zr__media_integrate(const zr_tracer *tracer,
 
   double ends[MAX_PIECES + 1];
   bool lit[MAX_PIECES];
-  int np = pieces(&m, depth, ends, lit);
+  uint64_t beams[MAX_PIECES];
+  int np = pieces(&m, depth, ends, lit, beams);
   /* Deal the intervals out: each piece one, then one at a time to the
      piece with the fewest for its weight. */
   int count[MAX_PIECES];
@@ -606,6 +630,7 @@ zr_rgb zr__media_integrate(const zr_tracer *tracer,
     }
   for (int i = 0; i < np; i++) {
     double h = (ends[i + 1] - ends[i]) / count[i];
+    m.beams = beams[i];
     for (int k = 0; k < count[i]; k++) {
       double s0 = ends[i] + k * h;
       double s1 = k + 1 == count[i] ? ends[i + 1] : s0 + h;
