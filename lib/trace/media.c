@@ -31,7 +31,8 @@
  *   - The ray is first cut where it enters or leaves the cone of a
  *     spotlight or the tube of a cylinder light that lights the media
  *     (a ray-cone or ray-cylinder intersection), so a beam is never
- *     stepped over.  Each piece gets one interval, and the rest of the
+ *     stepped over, and a piece's samples ask only the beams that hold
+ *     its middle for their light.  Each piece gets one interval, and the rest of the
  *     `intervals` are dealt out one at a time to the piece whose share
  *     is then the smallest for its weight: length times ratio for lit
  *     pieces, length times (1 - ratio) for the others.
@@ -48,8 +49,8 @@
  *     the middle of its share, moved by up to jitter / 2 of it); method
  *     1: min samples at random.  Then, up to max samples, more random
  *     ones while the spread of the samples leaves the interval's mean
- *     unsure: with n samples of spread s^2 (of the same measure as above)
- *     the variance of the mean is below, with probability `confidence`,
+ *     unsure: with n samples of spread s^2 (of the largest channel of j
+ *     plus that of k, times the interval's length) the variance of the mean is below, with probability `confidence`,
  *     (n - 1) s^2 / (n chi2_(1 - confidence)(n - 1)), the usual upper
  *     confidence bound of a normal variance; sampling stops once that
  *     bound is under `variance`.
