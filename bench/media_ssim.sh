@@ -12,7 +12,10 @@
 # Prints one line per scene:
 #   scene  zr_vs_povray  povray_vs_povray4x  zr_vs_povray4x  zr_seconds
 # POV-Ray's pictures are kept in OUTDIR/ref and reused by later runs
-# (MEDIA_POVRAY_AGAIN=1 renders them again).  Exits 77 without povray.
+# (MEDIA_POVRAY_AGAIN=1 renders them again); zRcube's go to OUTDIR/zr, or
+# OUTDIR/$MEDIA_LABEL to keep runs of two builds apart.  A scene counts
+# when the word `media` stands alone in it (hollow1.pov has only
+# media_attenuation).  Exits 77 without povray.
 set -u
 zr=${1:-build/bin/zrcube}
 case $zr in /*) ;; *) zr=$(pwd)/$zr ;; esac
@@ -24,7 +27,8 @@ ex=/usr/share/doc/povray/examples
 inc=/usr/share/povray-3.7/include
 tmo=${MEDIA_TIMEOUT:-600}
 command -v povray >/dev/null 2>&1 || { echo "media_ssim.sh: no povray" >&2; exit 77; }
-mkdir -p "$out/ref" "$out/zr"
+zdir=$out/${MEDIA_LABEL:-zr}
+mkdir -p "$out/ref" "$zdir"
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/zr_media.XXXXXX") || exit 1
 trap 'rm -rf "$tmp"' EXIT
 
@@ -80,11 +84,11 @@ while read -r f; do
         (cd "$dir" && timeout "$tmo" povray +I"$s4" +O"$ref4" +W160 +H120 -D -A \
             +WT1 -GA +L"$inc" +L"$dir" </dev/null >/dev/null 2>&1)
     fi
-    zout=$out/zr/$name.png
+    zout=$zdir/$name.png
     rm -f "$zout"
     t0=$(date +%s.%N)
     (cd "$dir" && timeout "$tmo" "$zr" +I"$f" +O"$zout" +W160 +H120 -D +WT1 \
-        </dev/null >/dev/null 2>"$out/zr/$name.log")
+        </dev/null >/dev/null 2>"$zdir/$name.log")
     t1=$(date +%s.%N)
     printf '%s\t%s\t%s\t%s\t%.1f\n' "${f#$ex/}" "$(ssim "$zout" "$ref")" \
         "$(ssim "$ref4" "$ref")" "$(ssim "$zout" "$ref4")" \
