@@ -74,6 +74,10 @@ EXTRA_DIST += bench/run.sh bench/README.md bench/conformance.sh \
 TESTS += tests/test_cornell_truth.sh
 EXTRA_DIST += tests/test_cornell_truth.sh
 
+# Media against POV-Ray's pictures (skipped without povray).
+TESTS += tests/test_media_povray.sh
+EXTRA_DIST += tests/test_media_povray.sh tests/media_check.pov
+
 # The radiosity benchmark (bench/radiosity.sh; not run by `make check`).
 EXTRA_DIST += bench/radiosity.sh bench/radiosity/charts.gp \
 	bench/radiosity/cornell.pov bench/radiosity/check_truth.py \

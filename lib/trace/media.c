@@ -1,59 +1,95 @@
 /*
  * media.c - participating media (reference manual, "Media", "Object
- * Media", "Atmospheric Media", "Empty and Solid Objects"), integrated
- * the way POV-Ray 3.7 does it so that pictures match.
+ * Media", "Atmospheric Media", "Empty and Solid Objects", "Sampling
+ * Parameters & Methods"), integrated from the volume rendering equation.
  *
- * A ray segment from its origin (distance 0) to the surface it hits
- * (distance D) is sampled.  At a point the media's coefficients are
- * their colours times the product of their densities' colours there
- * (no density: 1); the extinction is absorption + extinction factor *
- * scattering, the source is emission plus, for scattering media, the
- * light of every light source with media_interaction that reaches the
- * point (after shadows, which the media of crossed containers dim)
- * times the scattering colour and the phase function's value for the
- * angle between the light and the ray: 1 (isotropic), Mie hazy
- * 0.576655375 (1 + 9 ((1 + a) / 2)^8), Mie murky
- * 0.495714547 (1 + 50 ((1 + a) / 2)^32), Rayleigh
- * 0.799372013 (1 + a^2) and Henyey-Greenstein
- * (1 - g^2) / (1 + g^2 - 2 g a)^1.5, a the cosine between the
- * direction toward the light and the ray's, averaged over the media.
+ * Along a ray x(s) = origin + s dir (dir unit, 0 <= s <= D) a medium has
+ * at each point, per colour channel,
+ *     extinction  k(s) = density (absorption + extinction * scattering)
+ *     source      j(s) = density (emission + scattering * sum over the
+ *                        lights of light(x) * phase(cos))
+ * summed over the media that overlap there (the manual: several media
+ * in one container add), density being the product of the medium's
+ * density { } colours (1 without any).  What reaches the origin is
+ *     L = C T(0, D) + integral_0^D T(0, s) j(s) ds,
+ *     T(a, b) = exp(-integral_a^b k),
+ * C being the colour behind the media (Beer-Lambert transmittance and
+ * the emission integral; see any text on radiative transfer, e.g.
+ * Chandrasekhar, "Radiative Transfer", 1950).
  *
- * The segment is cut into intervals.  Spotlights and cylinder lights
- * light stretches of it (where it crosses their cone or tube), which
- * get intervals of their own, shared out by ratio between lit and unlit
- * stretches; otherwise `intervals` equal ones (one for constant media
- * not lit by anything).  Each interval then takes:
- *   - method 3 (the default): samples at the ends of sub-intervals
- *     and, recursively, at midpoints where two neighbouring samples
- *     differ by more than aa_threshold (the sum of the channels'
- *     differences), up to aa_level deep, averaging 1:1:1 at the deepest
- *     level and 2:1 / 1:2 elsewhere, as POV-Ray 3.7 weighs them; min
- *     samples sets the number of sub-intervals (adaptive() below says
- *     how, with the quirks of povray 3.7.0 that renders show); jitter
- *     moves each point by up to jitter times its spacing.
- *   - methods 1 and 2: min samples at random points (1) or evenly
- *     spread, jittered, ones (2), each source sample dimmed by
- *     exp(-extinction * its distance into the interval), then more
- *     random samples up to max while the variance of the samples is
- *     above variance scaled by the chi-square quantile for confidence.
- * The intervals then combine front to back:
- *     seen = colour * exp(-sum od) + sum_i te_i exp(-sum_{j<i} od_j)
- * with od and te an interval's mean optical depth and source times its
- * length.  For one interval of constant media with absorption a and
- * emission e, method 3 and the default samples 10 this is
- * colour exp(-a D) + e D (1/6) sum_{j<6} exp(-j a D / 6), which
- * tests/test_media.c checks.
+ * Quadrature.  k and j are sampled at points along the ray, taken as
+ * varying linearly between neighbouring points and as constant between
+ * an end of an interval and the sample nearest to it.  Over a span of
+ * length h whose mean extinction is k and mean source j this is exact:
+ *     T_span = exp(-k h),  emitted = j (1 - exp(-k h)) / k  (j h at k 0),
+ * and spans combine front to back (the light of a span is dimmed by the
+ * transmittance of the spans before it).  So constant media are exact
+ * whatever the samples (the test relies on it), and smooth ones converge
+ * as the points get closer.
+ *
+ * Where the points go (the manual's sampling parameters):
+ *   - The ray is first cut where it enters or leaves the cone of a
+ *     spotlight or the tube of a cylinder light that lights the media
+ *     (a ray-cone or ray-cylinder intersection), so a beam is never
+ *     stepped over, and a piece's samples ask only the beams that hold
+ *     its middle for their light.  Each piece gets one interval, and the rest of the
+ *     `intervals` are dealt out one at a time to the piece whose share
+ *     is then the smallest for its weight: length times ratio for lit
+ *     pieces, length times (1 - ratio) for the others.
+ *   - method 3: an interval is cut into `min samples` equal cells
+ *     (at least 1) with a sample at each cell boundary, moved by up to
+ *     jitter / 2 of a cell (not the interval's ends).  With min samples 3
+ *     or more (the manual: adaptive sampling only then) a cell whose two
+ *     end samples differ by more than aa_threshold (the largest channel
+ *     of |j_a - j_b| + |k_a - k_b| times the interval's length and the
+ *     transmittance up to the cell: how much the interval's light, as
+ *     seen from the origin, would change) is halved, recursively, up to
+ *     aa_level times.
+ *   - method 2: min samples evenly spread through the interval (each in
+ *     the middle of its share, moved by up to jitter / 2 of it); method
+ *     1: min samples at random.  Then, up to max samples, more random
+ *     ones while the spread of the samples leaves the interval's mean
+ *     unsure: with n samples of spread s^2 (of the largest channel of j
+ *     plus that of k, times the interval's length) the variance of the mean is below, with probability `confidence`,
+ *     (n - 1) s^2 / (n chi2_(1 - confidence)(n - 1)), the usual upper
+ *     confidence bound of a normal variance; sampling stops once that
+ *     bound is under `variance`.
+ * Several media on one ray sample with the largest intervals, samples
+ * and aa_level and the smallest aa_threshold among them; the first
+ * one's method and ratio; the largest jitter, confidence and the
+ * smallest variance.
+ *
+ * Random numbers come from a hash of the ray (its origin and direction,
+ * so of the pixel and its sample) and a counter: an image is the same
+ * for any number of threads and ranks.
+ *
+ * Phase functions, cos being the cosine between the direction toward
+ * the light and the ray's direction (cos 1: the light shines straight
+ * at the viewer), as forms of the literature (Nishita, Miyawaki and
+ * Nakamae 1987 for the two Mie approximations; Rayleigh's 1 + cos^2;
+ * Henyey and Greenstein 1941), each times a scale.  POV-Ray's manual
+ * gives the shapes only as plots; the scales were measured with
+ * bench/media_phase.sh (povray 3.7.0, exact to the 5 digits given):
+ *   isotropic          1                                    scale 1
+ *   Henyey-Greenstein  (1 - g^2) / (1 + g^2 - 2 g cos)^1.5  scale 1
+ *   Rayleigh           1 + cos^2                            0.79936
+ *   Mie hazy           1 + 9 ((1 + cos) / 2)^8              0.57666
+ *   Mie murky          1 + 50 ((1 + cos) / 2)^32            0.49571
+ * Isotropic and Henyey-Greenstein with scale 1 integrate to 4 pi over
+ * the sphere (the convention: the mean over all directions is 1).  The
+ * other three do not: their means over the sphere would be 1 with the
+ * scales 3/4 (the mean of 1 + mu^2 for mu uniform in [-1, 1] is
+ * 1 + 1/3), 1/2 (the mean of ((1 + mu) / 2)^n is 1 / (n + 1), so
+ * 1 + 9/9 = 2) and 33/83 (1 + 50/33); the measured scales are 1.0658,
+ * 1.1533 and 1.2467 times those.  tests/test_media.c integrates each.
  *
  * Media inside objects are seen only by rays inside hollow objects
- * (every object the ray is in must be hollow), as POV-Ray renders them,
- * and only up to a surface; atmospheric media likewise, and on a ray
- * that hits nothing out to 2e10 units, POV-Ray's BOUND_HUGE: the manual
- * says no media show against the background, and indeed their
- * extinction hides it (povray 3.7 renders a background seen through
- * scattering haze black, with a spotlight's beam across it; a cone the
- * ray never leaves ends at 1e7, povray's MAX_DISTANCE).  Random numbers
- * (method 1, jitter) come from a hash of the ray and the sample's
- * number, so an image is the same for any number of threads and ranks.
+ * (every object the ray is in must be hollow) and only up to a surface.
+ * A ray to the sky crosses atmospheric media out to 2e10 units, and a
+ * spotlight or cylinder light lights none of them past 1e7 units along
+ * a ray: both measured from povray renders by bench/media_sky.sh (the
+ * manual says media need a finite ray; the background then shows
+ * through absorbing haze as exp(-absorption 2e10)).
  */
 #include "trace/media.h"
 
@@ -65,674 +101,652 @@
 #include "scene/texture.h"
 #include "trace/lights.h"
 
-#define MAX_LIGHTS 64
-#define MAX_INTERVALS 512
-/* POV-Ray's lengths for a ray that hits nothing (BOUND_HUGE) and for a
-   spotlight's cone or a cylinder light's tube that the ray never leaves
-   (MAX_DISTANCE). */
+/* Measured by bench/media_sky.sh (see above). */
 #define SKY_DEPTH 2e10
-#define LIGHT_REACH 1e7
+#define BEAM_REACH 1e7
 
-typedef struct lit_span {
-  bool lit;
-  double s0, s1;
-} lit_span;
+/* Bounds on the work one ray may ask for. */
+#define MAX_PIECES 64      /* lit and unlit stretches of a ray */
+#define MAX_INTERVALS 1024 /* intervals over all pieces */
+#define MAX_RANDOM 512     /* samples of one interval, methods 1 and 2 */
+#define MAX_CELLS 4096     /* cells of one interval, method 3 */
 
-typedef struct interval {
-  bool lit;
-  double s0, ds;
-  zr_rgb od, te, te2;
-  int samples;
-} interval;
+/* The coefficients at one point of the ray. */
+typedef struct sample {
+  double s;       /* distance along the ray */
+  zr_rgb k;       /* extinction */
+  zr_rgb j;       /* source: emitted and scattered toward the origin */
+} sample;
 
-/* What one integration needs. */
-typedef struct walk {
+/* How the media of one ray are sampled (see the essay). */
+typedef struct plan {
+  int method, intervals, min_samples, max_samples, aa_level;
+  double ratio, jitter, aa_threshold, confidence, variance;
+} plan;
+
+/* One integration in progress. */
+typedef struct march {
   const zr_tracer *tr;
   const zr_medium *const *list;
   size_t n;
-  zr_vec3 origin, dir; /* dir unit */
-  bool shadow;
-  bool scattering; /* some medium scatters and the ray is not a shadow */
+  zr_vec3 origin, dir;
+  bool shadow;   /* extinction only */
+  bool lights;   /* some medium scatters and the ray is not a shadow */
+  /* The spotlights and cylinder lights (bit i: the scene's light i)
+     whose beam holds the piece of the ray being sampled; beams_known
+     false when the ray was not cut at every beam (then all are asked). */
+  bool beams_known;
+  uint64_t beams;
+  bool varies;   /* the coefficients may change along the ray */
   uint64_t seed;
   uint64_t draws;
-} walk;
+  plan pl;
+  /* What is known so far: transmittance from the origin to the end of
+     the last span, and the light gathered. */
+  zr_rgb t, light;
+} march;
 
 static double rgb_max(zr_rgb c) { return fmax(c.r, fmax(c.g, c.b)); }
 
-static zr_rgb rgb_exp_neg(zr_rgb c) {
-  return zr_rgb3(exp(-c.r), exp(-c.g), exp(-c.b));
-}
-
-static bool rgb_is_zero(zr_rgb c) {
+static bool rgb_zero(zr_rgb c) {
   return c.r == 0.0 && c.g == 0.0 && c.b == 0.0;
 }
 
-static uint64_t mix64(uint64_t h) {
-  h ^= h >> 33;
-  h *= 0xff51afd7ed558ccdu;
-  h ^= h >> 33;
-  h *= 0xc4ceb9fe1a85ec53u;
-  h ^= h >> 33;
+/* ----- random numbers ------------------------------------------------ */
+
+/* A 64-bit finaliser (the one of the splitmix64 generator): every input
+   bit flips about half of the output bits. */
+static uint64_t scramble(uint64_t z) {
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
+  return z ^ (z >> 31);
+}
+
+static uint64_t bits_of(double v) {
+  uint64_t u;
+  memcpy(&u, &v, sizeof u);
+  return u;
+}
+
+static uint64_t ray_key(zr_vec3 o, zr_vec3 d) {
+  uint64_t h = 0x6a09e667f3bcc908u;
+  double v[6] = {o.x, o.y, o.z, d.x, d.y, d.z};
+  for (int i = 0; i < 6; i++)
+    h = scramble(h ^ bits_of(v[i]));
   return h;
 }
 
-/* The ray's seed: a hash of its origin and direction. */
-static uint64_t ray_seed(zr_vec3 o, zr_vec3 d) {
-  double c[6] = {o.x, o.y, o.z, d.x, d.y, d.z};
-  uint64_t h = 0x9e3779b97f4a7c15u;
-  for (int i = 0; i < 6; i++) {
-    uint64_t bits;
-    memcpy(&bits, &c[i], sizeof bits);
-    h = mix64(h ^ (bits + 0x9e3779b97f4a7c15u + (h << 6)));
-  }
-  return h;
+/* Uniform in [0, 1). */
+static double uniform(march *m) {
+  uint64_t z = scramble(m->seed + 0x9e3779b97f4a7c15u * ++m->draws);
+  return (double)(z >> 11) * 0x1.0p-53;
 }
 
-/* The walk's next number in [0, 1). */
-static double next_random(walk *w) {
-  uint64_t h = mix64(w->seed + 0x9e3779b97f4a7c15u * ++w->draws);
-  return (double)(h >> 11) / 9007199254740992.0;
-}
+/* ----- phase functions ----------------------------------------------- */
 
-static double phase(const zr_medium *m, double a) {
-  switch (m->scattering_type) {
-  case ZR_SCATTER_RAYLEIGH:
-    return 0.799372013 * (1.0 + a * a);
+double zr__media_phase(const zr_medium *medium, double cos_angle) {
+  double c = fmax(-1.0, fmin(1.0, cos_angle));
+  switch (medium->scattering_type) {
   case ZR_SCATTER_MIE_HAZY:
-    return 0.576655375 * (1.0 + 9.0 * pow(0.5 * (1.0 + a), 8.0));
+    return 0.57666 * (1.0 + 9.0 * pow(0.5 * (1.0 + c), 8.0));
   case ZR_SCATTER_MIE_MURKY:
-    return 0.495714547 * (1.0 + 50.0 * pow(0.5 * (1.0 + a), 32.0));
+    return 0.49571 * (1.0 + 50.0 * pow(0.5 * (1.0 + c), 32.0));
+  case ZR_SCATTER_RAYLEIGH:
+    return 0.79936 * (1.0 + c * c);
   case ZR_SCATTER_HENYEY_GREENSTEIN: {
-    double g = m->eccentricity;
-    return (1.0 - g * g) / pow(1.0 + g * g - 2.0 * g * a, 1.5);
+    double g = medium->eccentricity;
+    double q = 1.0 + g * g - 2.0 * g * c;
+    return q > 0.0 ? (1.0 - g * g) / (q * sqrt(q)) : 0.0;
   }
+  case ZR_SCATTER_ISOTROPIC:
   default:
     return 1.0;
   }
 }
 
-/* The product of the medium's densities at p. */
-static zr_rgb density_at(const zr_medium *m, zr_vec3 p) {
+/* ----- the coefficients at a point ------------------------------------ */
+
+static zr_rgb density_at(const zr_medium *medium, zr_vec3 p) {
   zr_rgb d = zr_rgb3(1, 1, 1);
-  for (size_t i = 0; i < m->n_density; i++)
-    d = zr_rgb_mul(d, zr_colour_rgb(zr__pigment_eval(m->density[i], p)));
+  for (size_t i = 0; i < medium->n_density; i++)
+    d = zr_rgb_mul(d, zr_colour_rgb(zr__pigment_eval(medium->density[i], p)));
   return d;
 }
 
-/* Light scattered toward the ray's origin at p by scattering sc. */
-static zr_rgb in_scattered(const walk *w, zr_vec3 p, zr_rgb sc) {
-  const zr_scene *scene = w->tr->scene;
-  zr_rgb sum = zr_rgb3(0, 0, 0);
-  for (size_t i = 0; i < scene->n_lights; i++) {
-    const zr_light *light = &scene->lights[i];
-    /* A light_group's lights light no media: zRcube does not yet tell
-       a group's media from others. */
-    if (!light->media_interaction || light->light_group != 0)
-      continue;
-    zr_vec3 l;
-    zr_rgb lc;
-    if (!zr__light_arrive(light, p, &l, &lc) || rgb_max(lc) <= 0.0)
-      continue;
-    lc = zr_rgb_mul(lc, zr__light_visibility(w->tr, light, p, p));
-    if (rgb_max(lc) <= 0.0)
-      continue;
-    lc = zr_rgb_mul(lc, zr__media_light_attenuation(w->tr, light, p));
-    double a = zr_v3_dot(l, w->dir), k = 0.0;
-    for (size_t j = 0; j < w->n; j++)
-      k += phase(w->list[j], a);
-    k /= (double)w->n;
-    sum = zr_rgb_add(sum, zr_rgb_scale(zr_rgb_mul(sc, lc), k));
-  }
-  return sum;
+/* Whether light may light the media of this ray at distance s. */
+static bool lights_media(const zr_light *light, double s) {
+  /* A light_group's lights light no media: zRcube does not yet tell a
+     group's media from the others. */
+  if (!light->media_interaction || light->light_group != 0)
+    return false;
+  return light->kind == ZR_LIGHT_POINT || s <= BEAM_REACH;
 }
 
-/*
- * One sample at fraction f of interval iv: *source is the light the
- * media send toward the origin there times the interval's length
- * (dimmed within the interval for methods 1 and 2), *od the optical
- * depth the interval would have were the media everywhere as here.
- */
-static void sample(walk *w, interval *iv, double f, int method,
-                   zr_rgb *source, zr_rgb *od) {
-  double into = f * iv->ds;
-  zr_vec3 p = zr_v3_madd(w->origin, w->dir, iv->s0 + into);
-  zr_rgb ext = zr_rgb3(0, 0, 0), em = ext, sc = ext;
-  for (size_t i = 0; i < w->n; i++) {
-    const zr_medium *m = w->list[i];
-    zr_rgb d = density_at(m, p);
-    zr_rgb e = zr_rgb_madd(m->absorption, m->scattering, m->extinction);
-    ext = zr_rgb_add(ext, zr_rgb_mul(d, e));
-    if (!w->shadow) {
-      em = zr_rgb_add(em, zr_rgb_mul(d, m->emission));
-      sc = zr_rgb_add(sc, zr_rgb_mul(d, m->scattering));
+static sample sample_at(const march *m, double s) {
+  sample out = {s, zr_rgb3(0, 0, 0), zr_rgb3(0, 0, 0)};
+  zr_vec3 p = zr_v3_madd(m->origin, m->dir, s);
+  zr_rgb density[ZR_MEDIA_LIST_MAX];
+  bool scatters = false;
+  for (size_t i = 0; i < m->n; i++) {
+    const zr_medium *md = m->list[i];
+    density[i] = density_at(md, p);
+    zr_rgb k = zr_rgb_madd(md->absorption, md->scattering, md->extinction);
+    out.k = zr_rgb_add(out.k, zr_rgb_mul(density[i], k));
+    if (!m->shadow) {
+      out.j = zr_rgb_add(out.j, zr_rgb_mul(density[i], md->emission));
+      scatters = scatters || !rgb_zero(md->scattering);
     }
   }
-  *od = zr_rgb_scale(ext, iv->ds);
-  if (w->scattering && iv->lit && !rgb_is_zero(sc))
-    em = zr_rgb_add(em, in_scattered(w, p, sc));
-  if (method == 3) {
-    em = zr_rgb_scale(em, iv->ds);
-  } else {
-    em = zr_rgb_mul(zr_rgb_scale(em, iv->ds),
-                    rgb_exp_neg(zr_rgb_scale(ext, into)));
-    iv->od = zr_rgb_add(iv->od, *od);
-    iv->te = zr_rgb_add(iv->te, em);
-    iv->te2 = zr_rgb_add(iv->te2, zr_rgb_mul(em, em));
+  if (!scatters || !m->lights)
+    return out;
+  const zr_scene *scene = m->tr->scene;
+  for (size_t li = 0; li < scene->n_lights; li++) {
+    const zr_light *light = &scene->lights[li];
+    if (!lights_media(light, s))
+      continue;
+    /* A beam lights all of a piece or none of it (the pieces are cut
+       where the ray crosses its boundary). */
+    if (light->kind != ZR_LIGHT_POINT && m->beams_known &&
+        !(m->beams >> li & 1u))
+      continue;
+    zr_vec3 toward;
+    zr_rgb arriving;
+    if (!zr__light_arrive(light, p, &toward, &arriving) ||
+        rgb_max(arriving) <= 0.0)
+      continue;
+    arriving = zr_rgb_mul(arriving, zr__light_visibility(m->tr, light, p, p));
+    if (rgb_max(arriving) <= 0.0)
+      continue;
+    arriving =
+        zr_rgb_mul(arriving, zr__media_light_attenuation(m->tr, light, p));
+    double c = zr_v3_dot(toward, m->dir);
+    for (size_t i = 0; i < m->n; i++) {
+      const zr_medium *md = m->list[i];
+      if (rgb_zero(md->scattering))
+        continue;
+      zr_rgb sc = zr_rgb_mul(density[i], md->scattering);
+      out.j = zr_rgb_add(out.j, zr_rgb_scale(zr_rgb_mul(sc, arriving),
+                                             zr__media_phase(md, c)));
+    }
   }
-  *source = em;
-  iv->samples++;
+  return out;
 }
 
-static double colour_distance(zr_rgb a, zr_rgb b) {
-  return fabs(a.r - b.r) + fabs(a.g - b.g) + fabs(a.b - b.b);
+/* ----- spans ------------------------------------------------------------ */
+
+/* (1 - exp(-x)) / x, 1 at 0, without cancellation for small x. */
+static double grow(double x) {
+  return fabs(x) < 1e-8 ? 1.0 - 0.5 * x : -expm1(-x) / x;
 }
 
-/* Method 3 between fractions f1 and f3 with samples c1, c3 there. */
-static void sample_recursive(walk *w, interval *iv, double f1, double f3,
-                             zr_rgb c1, zr_rgb c3, zr_rgb od1, zr_rgb od3,
-                             int depth, double jitter, double threshold,
-                             zr_rgb *result, zr_rgb *od_result) {
-  double f2 = 0.5 * (f1 + f3) + jitter * (f3 - f1) * (next_random(w) - 0.5);
-  zr_rgb c2, od2;
-  sample(w, iv, f2, 3, &c2, &od2);
-  if (depth <= 0) {
-    *result = zr_rgb_scale(zr_rgb_add(zr_rgb_add(c1, c2), c3), 1.0 / 3.0);
-    *od_result =
-        zr_rgb_scale(zr_rgb_add(zr_rgb_add(od1, od2), od3), 1.0 / 3.0);
+/* Adds the span from a to b (a before b), its coefficients the means
+   of those at its ends. */
+static void add_span(march *m, const sample *a, const sample *b) {
+  double h = b->s - a->s;
+  if (!(h > 0.0))
+    return;
+  double k[3] = {0.5 * (a->k.r + b->k.r), 0.5 * (a->k.g + b->k.g),
+                 0.5 * (a->k.b + b->k.b)};
+  double j[3] = {0.5 * (a->j.r + b->j.r), 0.5 * (a->j.g + b->j.g),
+                 0.5 * (a->j.b + b->j.b)};
+  double *t[3] = {&m->t.r, &m->t.g, &m->t.b};
+  double *l[3] = {&m->light.r, &m->light.g, &m->light.b};
+  for (int c = 0; c < 3; c++) {
+    double depth = k[c] * h;
+    if (j[c] != 0.0)
+      *l[c] += *t[c] * j[c] * h * grow(depth);
+    *t[c] *= exp(-depth);
+  }
+}
+
+/* A sample at s with the coefficients of another (an interval's end
+   takes those of the sample nearest to it). */
+static sample moved(const sample *from, double s) {
+  sample out = *from;
+  out.s = s;
+  return out;
+}
+
+/* The measure two samples are compared with (method 3) and whose spread
+   decides methods 1 and 2: how much the light of an interval of length
+   len changes with the coefficients. */
+static double change(const sample *a, const sample *b, double len) {
+  zr_rgb dj = zr_rgb3(fabs(a->j.r - b->j.r), fabs(a->j.g - b->j.g),
+                      fabs(a->j.b - b->j.b));
+  zr_rgb dk = zr_rgb3(fabs(a->k.r - b->k.r), fabs(a->k.g - b->k.g),
+                      fabs(a->k.b - b->k.b));
+  return rgb_max(zr_rgb_add(dj, dk)) * len;
+}
+
+static double measure(const sample *a, double len) {
+  return (rgb_max(a->j) + rgb_max(a->k)) * len;
+}
+
+/* ----- method 3 ---------------------------------------------------------- */
+
+/* The cell from a to b, halved while its ends differ by more than the
+   threshold and levels remain. */
+static void cell(march *m, const sample *a, const sample *b, int levels,
+                 double len) {
+  /* The change is weighed by what still shows of it through the media
+     before the cell: deep in fog a difference is not seen. */
+  if (levels > 0 &&
+      change(a, b, len) * rgb_max(m->t) > m->pl.aa_threshold) {
+    sample mid = sample_at(m, 0.5 * (a->s + b->s));
+    cell(m, a, &mid, levels - 1, len);
+    cell(m, &mid, b, levels - 1, len);
     return;
   }
-  zr_rgb r, o;
-  if (colour_distance(c1, c2) > threshold) {
-    sample_recursive(w, iv, f1, f2, c1, c2, od1, od2, depth - 1, jitter,
-                     threshold, &r, &o);
-    *result = zr_rgb_scale(r, 0.5);
-    *od_result = zr_rgb_scale(o, 0.5);
-  } else {
-    *result = zr_rgb_add(zr_rgb_scale(c1, 1.0 / 3.0),
-                         zr_rgb_scale(c2, 1.0 / 6.0));
-    *od_result = zr_rgb_add(zr_rgb_scale(od1, 1.0 / 3.0),
-                            zr_rgb_scale(od2, 1.0 / 6.0));
-  }
-  if (colour_distance(c2, c3) > threshold) {
-    sample_recursive(w, iv, f2, f3, c2, c3, od2, od3, depth - 1, jitter,
-                     threshold, &r, &o);
-    *result = zr_rgb_madd(*result, r, 0.5);
-    *od_result = zr_rgb_madd(*od_result, o, 0.5);
-  } else {
-    *result = zr_rgb_add(*result, zr_rgb_add(zr_rgb_scale(c2, 1.0 / 6.0),
-                                             zr_rgb_scale(c3, 1.0 / 3.0)));
-    *od_result =
-        zr_rgb_add(*od_result, zr_rgb_add(zr_rgb_scale(od2, 1.0 / 6.0),
-                                          zr_rgb_scale(od3, 1.0 / 3.0)));
+  add_span(m, a, b);
+}
+
+static void adaptive_interval(march *m, double s0, double s1) {
+  double len = s1 - s0;
+  int cells = m->pl.min_samples < 1 ? 1 : m->pl.min_samples;
+  if (cells > MAX_CELLS)
+    cells = MAX_CELLS;
+  int levels = m->pl.min_samples >= 3 ? m->pl.aa_level : 0;
+  double h = len / cells;
+  sample a = sample_at(m, s0);
+  for (int i = 1; i <= cells; i++) {
+    double s = i == cells ? s1 : s0 + i * h;
+    if (i < cells && m->pl.jitter > 0.0)
+      s += m->pl.jitter * h * (uniform(m) - 0.5);
+    sample b = sample_at(m, s);
+    cell(m, &a, &b, levels, len);
+    a = b;
   }
 }
 
-/*
- * Method 3 over one interval as POV-Ray 3.7.0 does it: s = max(2,
- * min / 2 + 1) sub-intervals of 1 / (s + 1) of the interval each (so
- * the last stretch of it is not sampled), sub-interval j's source
- * dimmed by exp(-od / s) for the optical depth od gathered before it.
- * povray 3.7.0 renders of constant media match this to 1e-4 (for
- * absorption a, emission e and length d, samples 10 gives
- * e d (1/6) sum_{j<6} exp(-j a d / 6)).
- */
-static void adaptive(walk *w, interval *iv, const zr_medium *im,
-                     double threshold) {
-  int subs = im->min_samples / 2 + 1;
-  if (subs < 2)
-    subs = 2;
-  double dd = 1.0 / (subs + 1), n = 1.0 / subs;
-  zr_rgb c0, od0, c1, od1, r, o;
-  sample(w, iv, dd * im->jitter * (next_random(w) - 0.5), 3, &c0, &od0);
-  iv->te = iv->od = zr_rgb3(0, 0, 0);
-  for (int j = 1; j <= subs; j++) {
-    double f1 = j * dd;
-    sample(w, iv, f1 + dd * im->jitter * (next_random(w) - 0.5), 3, &c1,
-           &od1);
-    sample_recursive(w, iv, f1 - dd, f1, c0, c1, od0, od1,
-                     im->aa_level - 1, im->jitter, threshold, &r, &o);
-    iv->te = zr_rgb_add(iv->te, zr_rgb_mul(r, rgb_exp_neg(
-                                                  zr_rgb_scale(iv->od, n))));
-    iv->od = zr_rgb_add(iv->od, o);
-    c0 = c1;
-    od0 = od1;
-  }
-  iv->samples = subs;
-}
+/* ----- methods 1 and 2 --------------------------------------------------- */
 
-/*
- * The inverse of the upper tail of the chi-square distribution with df
- * degrees of freedom: the x with P(X > x) = q, by Wilson and Hilferty's
- * cube-root normal approximation (good to a few percent from df = 1,
- * enough for a stopping threshold).
- */
+/* The standard normal quantile for p in (0, 1): Abramowitz and Stegun,
+   "Handbook of Mathematical Functions", 26.2.23 (error below 4.5e-4). */
 static double normal_quantile(double p) {
-  /* Acklam's rational approximation of the inverse normal CDF. */
-  static const double a[] = {-3.969683028665376e+01, 2.209460984245205e+02,
-                             -2.759285104469687e+02, 1.383577518672690e+02,
-                             -3.066479806614716e+01, 2.506628277459239e+00};
-  static const double b[] = {-5.447609879822406e+01, 1.615858368580409e+02,
-                             -1.556989798598866e+02, 6.680131188771972e+01,
-                             -1.328068155288572e+01};
-  static const double c[] = {-7.784894002430293e-03, -3.223964580411365e-01,
-                             -2.400758277161838e+00, -2.549732539343734e+00,
-                             4.374664141464968e+00, 2.938163982698783e+00};
-  static const double d[] = {7.784695709041462e-03, 3.224671290700398e-01,
-                             2.445134137142996e+00, 3.754408661907416e+00};
-  if (p <= 0.0)
-    return -INFINITY;
-  if (p >= 1.0)
-    return INFINITY;
-  if (p < 0.02425) {
-    double q = sqrt(-2.0 * log(p));
-    return (((((c[0] * q + c[1]) * q + c[2]) * q + c[3]) * q + c[4]) * q +
-            c[5]) /
-           ((((d[0] * q + d[1]) * q + d[2]) * q + d[3]) * q + 1.0);
-  }
-  if (p > 1.0 - 0.02425)
-    return -normal_quantile(1.0 - p);
-  double q = p - 0.5, r = q * q;
-  return (((((a[0] * r + a[1]) * r + a[2]) * r + a[3]) * r + a[4]) * r +
-          a[5]) *
-         q /
-         (((((b[0] * r + b[1]) * r + b[2]) * r + b[3]) * r + b[4]) * r + 1.0);
+  bool upper = p > 0.5;
+  double q = upper ? 1.0 - p : p;
+  if (q <= 0.0)
+    return upper ? INFINITY : -INFINITY;
+  double t = sqrt(-2.0 * log(q));
+  double z = t - (2.515517 + t * (0.802853 + t * 0.010328)) /
+                     (1.0 + t * (1.432788 + t * (0.189269 + t * 0.001308)));
+  return upper ? z : -z;
 }
 
-static double chi2_upper_inverse(double df, double q) {
-  double z = normal_quantile(1.0 - q);
-  double k = 2.0 / (9.0 * df);
-  double x = 1.0 - k + z * sqrt(k);
+/* The p-quantile of chi-square with df degrees of freedom: Wilson and
+   Hilferty's cube-root normal approximation (1931). */
+static double chi2_quantile(double p, double df) {
+  double a = 2.0 / (9.0 * df);
+  double x = 1.0 - a + normal_quantile(p) * sqrt(a);
   return x > 0.0 ? df * x * x * x : 0.0;
 }
 
-/* POV-Ray's threshold on the variance after n samples. */
-static double sample_threshold(const zr_medium *im, int n) {
-  if (im->max_samples <= 1)
-    return 0.0;
-  double t = chi2_upper_inverse(im->max_samples - 1, im->confidence);
-  t = t > 0.0 ? im->variance / t : im->variance * 1e-10;
-  return t * chi2_upper_inverse(n, im->confidence);
+/* Whether n samples with these sums pin the mean down well enough. */
+static bool settled(const march *m, int n, double sum, double sum2) {
+  if (n < 2)
+    return false;
+  double mean = sum / n;
+  double spread = fmax(0.0, (sum2 - n * mean * mean) / (n - 1));
+  if (spread == 0.0)
+    return true;
+  double q = chi2_quantile(1.0 - m->pl.confidence, n - 1);
+  if (!(q > 0.0))
+    return false;
+  return (n - 1) * spread / (q * n) <= m->pl.variance;
 }
 
-static void regular(walk *w, interval *ivs, int n_iv, const zr_medium *im,
-                    bool one_sample) {
-  zr_rgb c, od;
-  for (int i = 0; i < n_iv; i++)
-    for (int j = 0; j < im->min_samples; j++) {
-      double f = im->method == 2
-                     ? (j + 0.5) / im->min_samples +
-                           next_random(w) * im->jitter / im->min_samples
-                     : next_random(w);
-      sample(w, &ivs[i], f, im->method == 2 ? 2 : 1, &c, &od);
-      if (one_sample)
-        break;
-    }
-  if (w->shadow || im->max_samples <= im->min_samples)
-    return;
-  for (int i = 0; i < n_iv; i++) {
-    interval *iv = &ivs[i];
-    for (;;) {
-      double k = 1.0 / iv->samples;
-      zr_rgb m = zr_rgb_scale(iv->te, k);
-      zr_rgb va = zr_rgb_scale(zr_rgb_madd(zr_rgb_scale(iv->te2, k),
-                                           zr_rgb_mul(m, m), -1.0),
-                               k);
-      double limit = sample_threshold(im, iv->samples);
-      if (va.r < limit && va.g < limit && va.b < limit)
-        break;
-      sample(w, iv, next_random(w), 1, &c, &od);
-      if (iv->samples > im->max_samples)
-        break;
-    }
-  }
+static int by_distance(const void *a, const void *b) {
+  double sa = ((const sample *)a)->s, sb = ((const sample *)b)->s;
+  return (sa > sb) - (sa < sb);
 }
 
-/* ---- which stretches of the ray lights shine on ---- */
-
-/* Whether point q is lit by the spot or cylinder light's shape. */
-static bool in_light_shape(const zr_light *light, zr_vec3 axis, zr_vec3 q) {
-  zr_vec3 v = zr_v3_sub(q, light->location);
-  double along = zr_v3_dot(v, axis);
-  if (light->kind == ZR_LIGHT_SPOT) {
-    double c = cos(light->falloff * M_PI / 180.0);
-    double len = zr_v3_len(v);
-    return along > 0.0 && along >= c * len;
-  }
-  zr_vec3 off = zr_v3_madd(v, axis, -along);
-  return along > 0.0 && zr_v3_len(off) <= light->falloff;
-}
-
-/*
- * The stretch [*s0, *s1] of [0, depth] inside a spotlight's cone or a
- * cylinder light's tube: both are convex, so it is one stretch, found
- * from the roots of the surface's quadratic and the plane through the
- * light across its axis.
- */
-static bool light_span(const walk *w, const zr_light *light, double depth,
-                       double *s0, double *s1) {
-  zr_vec3 axis = zr_v3_norm(zr_v3_sub(light->point_at, light->location));
-  zr_vec3 v = zr_v3_sub(w->origin, light->location);
-  double k1 = zr_v3_dot(w->dir, axis), k2 = zr_v3_dot(v, axis);
-  double k3 = zr_v3_dot(v, w->dir), k4 = zr_v3_dot(v, v);
-  double qa, qb, qc;
-  if (light->kind == ZR_LIGHT_SPOT) {
-    double c = cos(light->falloff * M_PI / 180.0), c2 = c * c;
-    qa = k1 * k1 - c2;
-    qb = 2.0 * (k1 * k2 - c2 * k3);
-    qc = k2 * k2 - c2 * k4;
-  } else {
-    double r = light->falloff;
-    qa = 1.0 - k1 * k1;
-    qb = 2.0 * (k3 - k1 * k2);
-    qc = k4 - k2 * k2 - r * r;
-  }
-  double cuts[5];
+static void random_interval(march *m, double s0, double s1) {
+  double len = s1 - s0;
+  sample pts[MAX_RANDOM];
+  int lo = m->pl.min_samples < 1 ? 1 : m->pl.min_samples;
+  int hi = m->pl.max_samples < lo ? lo : m->pl.max_samples;
+  if (hi > MAX_RANDOM)
+    hi = MAX_RANDOM;
+  if (lo > hi)
+    lo = hi;
+  double sum = 0.0, sum2 = 0.0;
   int n = 0;
-  cuts[n++] = 0.0;
-  if (fabs(qa) > 1e-12) {
-    double disc = qb * qb - 4.0 * qa * qc;
-    if (disc >= 0.0) {
-      double sq = sqrt(disc);
-      cuts[n++] = (-qb - sq) / (2.0 * qa);
-      cuts[n++] = (-qb + sq) / (2.0 * qa);
-    }
-  } else if (fabs(qb) > 1e-12) {
-    cuts[n++] = -qc / qb;
+  for (; n < lo; n++) {
+    double u = m->pl.method == 1
+                   ? uniform(m)
+                   : (n + 0.5 + m->pl.jitter * (uniform(m) - 0.5)) / lo;
+    pts[n] = sample_at(m, s0 + len * u);
+    double x = measure(&pts[n], len);
+    sum += x;
+    sum2 += x * x;
   }
-  if (fabs(k1) > 1e-12)
-    cuts[n++] = -k2 / k1;
-  /* Sort the cuts inside [0, depth] and test each piece's middle. */
-  double pts[7];
-  int m = 0;
-  for (int i = 0; i < n; i++)
-    if (cuts[i] >= 0.0 && cuts[i] <= depth)
-      pts[m++] = cuts[i];
-  double end = fmin(depth, LIGHT_REACH);
-  for (int i = 0; i < m; i++)
-    pts[i] = fmin(pts[i], end);
-  pts[m++] = end;
-  for (int i = 1; i < m; i++)
-    for (int j = i; j > 0 && pts[j - 1] > pts[j]; j--) {
-      double t = pts[j];
-      pts[j] = pts[j - 1];
-      pts[j - 1] = t;
-    }
-  bool found = false;
-  for (int i = 0; i + 1 < m; i++) {
-    if (!(pts[i + 1] > pts[i]))
-      continue;
-    zr_vec3 mid = zr_v3_madd(w->origin, w->dir, 0.5 * (pts[i] + pts[i + 1]));
-    if (!in_light_shape(light, axis, mid))
-      continue;
-    if (!found)
-      *s0 = pts[i];
-    *s1 = pts[i + 1];
-    found = true;
-  }
-  return found;
-}
-
-static void sort_doubles(double *a, int n) {
-  for (int i = 1; i < n; i++)
-    for (int j = i; j > 0 && a[j - 1] > a[j]; j--) {
-      double t = a[j];
-      a[j] = a[j - 1];
-      a[j - 1] = t;
-    }
-}
-
-/* The lit and unlit stretches of [0, depth], as POV-Ray 3.7 forms them
-   (the starts and the ends of the lights' stretches sorted apart). */
-static int lit_spans(const walk *w, double depth, lit_span *out) {
-  double s0[MAX_LIGHTS], s1[MAX_LIGHTS];
-  int n = 0;
-  const zr_scene *scene = w->tr->scene;
-  for (size_t i = 0; i < scene->n_lights && n < MAX_LIGHTS; i++) {
-    const zr_light *light = &scene->lights[i];
-    /* A light_group's lights light no media: zRcube does not yet tell
-       a group's media from others. */
-    if (!light->media_interaction || light->light_group != 0)
-      continue;
-    if (light->kind == ZR_LIGHT_POINT) {
-      s0[n] = 0.0;
-      s1[n++] = depth;
-    } else if (light_span(w, light, depth, &s0[n], &s1[n])) {
-      n++;
-    }
-  }
-  if (n == 0) {
-    out[0] = (lit_span){false, 0.0, depth};
-    return 1;
-  }
-  sort_doubles(s0, n);
-  sort_doubles(s1, n);
-  int k = 0;
-  if (s0[0] > 0.0)
-    out[k++] = (lit_span){false, 0.0, s0[0]};
-  out[k++] = (lit_span){true, s0[0], s1[0]};
-  for (int i = 1; i < n; i++) {
-    if (s0[i] > out[k - 1].s1) {
-      out[k] = (lit_span){false, out[k - 1].s1, s0[i]};
-      k++;
-      out[k++] = (lit_span){true, s0[i], s1[i]};
-    } else if (s1[i] > out[k - 1].s1) {
-      out[k - 1].s1 = s1[i];
-    }
-  }
-  if (out[k - 1].s1 < depth) {
-    out[k] = (lit_span){false, out[k - 1].s1, depth};
-    k++;
-  }
-  return k;
-}
-
-static int add_interval(interval *ivs, int n, bool lit, double s0,
-                        double ds) {
-  if (n >= MAX_INTERVALS)
-    return n;
-  memset(&ivs[n], 0, sizeof ivs[n]);
-  ivs[n].lit = lit;
-  ivs[n].s0 = s0;
-  ivs[n].ds = ds;
-  return n + 1;
-}
-
-/* The sampling intervals over the stretches ("Sampling Parameters"). */
-static int make_intervals(const lit_span *spans, int n_spans,
-                          const zr_medium *im, bool constant, double depth,
-                          interval *ivs) {
-  int n = 0;
-  int count = im->intervals > n_spans ? im->intervals : n_spans;
-  if (count > MAX_INTERVALS)
-    count = MAX_INTERVALS;
-  if (n_spans == 1) {
-    double ds = spans[0].s1 - spans[0].s0;
-    if (!spans[0].lit && constant)
-      return add_interval(ivs, 0, false, spans[0].s0, ds);
-    for (int i = 0; i < count; i++)
-      n = add_interval(ivs, n, spans[0].lit,
-                       spans[0].s0 + ds * i / count, ds / count);
-  } else {
-    double sum = 0.0;
-    for (int i = 0; i < n_spans; i++)
-      sum += spans[i].lit ? im->ratio : 1.0 - im->ratio;
-    int remaining = count;
-    for (int i = 0; i < n_spans; i++) {
-      double weight = spans[i].lit ? im->ratio : 1.0 - im->ratio;
-      int k = (int)(weight / sum * count) + 1;
-      int r = remaining - n_spans + i + 1;
-      if (k > r)
-        k = r;
-      if (k < 1)
-        k = 1;
-      double ds = (spans[i].s1 - spans[i].s0) / k;
-      for (int j = 0; j < k; j++)
-        n = add_interval(ivs, n, spans[i].lit, spans[i].s0 + ds * j, ds);
-      remaining -= k;
-    }
-  }
-  /* Cover the ends, as POV-Ray does. */
-  if (n > 0 && ivs[0].s0 > 0.0 && n < MAX_INTERVALS) {
-    memmove(&ivs[1], &ivs[0], (size_t)n * sizeof *ivs);
+  while (n < hi && !settled(m, n, sum, sum2)) {
+    pts[n] = sample_at(m, s0 + len * uniform(m));
+    double x = measure(&pts[n], len);
+    sum += x;
+    sum2 += x * x;
     n++;
-    memset(&ivs[0], 0, sizeof ivs[0]);
-    ivs[0].ds = ivs[1].s0;
   }
-  double end = n > 0 ? ivs[n - 1].s0 + ivs[n - 1].ds : 0.0;
-  if (end < depth)
-    n = add_interval(ivs, n, false, end, depth - end);
+  qsort(pts, (size_t)n, sizeof pts[0], by_distance);
+  sample first = moved(&pts[0], s0), last = moved(&pts[n - 1], s1);
+  add_span(m, &first, &pts[0]);
+  for (int i = 1; i < n; i++)
+    add_span(m, &pts[i - 1], &pts[i]);
+  add_span(m, &pts[n - 1], &last);
+}
+
+/* ----- lit pieces of the ray ---------------------------------------------- */
+
+/* Adds the roots in (0, depth) of a t^2 + b t + c to cuts. */
+static int add_roots(double a, double b, double c, double depth,
+                     double *cuts, int n) {
+  double r[2];
+  int k = 0;
+  if (fabs(a) < 1e-14) {
+    if (b != 0.0)
+      r[k++] = -c / b;
+  } else {
+    double disc = b * b - 4.0 * a * c;
+    if (disc >= 0.0) {
+      /* The root of larger magnitude first, the other from the product
+         of the roots, which keeps both precise. */
+      double q = -0.5 * (b + copysign(sqrt(disc), b));
+      r[k++] = q / a;
+      if (q != 0.0)
+        r[k++] = c / q;
+    }
+  }
+  for (int i = 0; i < k; i++)
+    if (r[i] > 0.0 && r[i] < depth && n < MAX_PIECES - 1)
+      cuts[n++] = r[i];
   return n;
+}
+
+/* The distances where the ray crosses the boundary of the light's cone
+   (spotlight: the angle to the axis equals falloff) or tube (cylinder
+   light: the distance to the axis equals falloff, and the plane of the
+   light's location), and where it passes BEAM_REACH. */
+static int light_cuts(const march *m, const zr_light *light, double depth,
+                      double *cuts, int n) {
+  zr_vec3 axis = zr_v3_sub(light->point_at, light->location);
+  double al = zr_v3_len(axis);
+  if (!(al > 0.0))
+    return n;
+  axis = zr_v3_scale(axis, 1.0 / al);
+  zr_vec3 w = zr_v3_sub(m->origin, light->location);
+  double dw = zr_v3_dot(m->dir, axis), ww = zr_v3_dot(w, axis);
+  if (light->kind == ZR_LIGHT_SPOT) {
+    /* (w + t d) . axis = cos(falloff) |w + t d|, squared. */
+    double cf = cos(light->falloff * 3.14159265358979323846 / 180.0);
+    double c2 = cf * cf;
+    n = add_roots(dw * dw - c2, 2.0 * (dw * ww - c2 * zr_v3_dot(w, m->dir)),
+                  ww * ww - c2 * zr_v3_dot(w, w), depth, cuts, n);
+    if (fabs(dw) > 1e-14)
+      n = add_roots(0.0, dw, ww, depth, cuts, n); /* the apex's plane */
+  } else {
+    /* |(w + t d) - ((w + t d) . axis) axis|^2 = falloff^2. */
+    zr_vec3 pd = zr_v3_madd(m->dir, axis, -dw), pw = zr_v3_madd(w, axis, -ww);
+    n = add_roots(zr_v3_dot(pd, pd), 2.0 * zr_v3_dot(pd, pw),
+                  zr_v3_dot(pw, pw) - light->falloff * light->falloff, depth,
+                  cuts, n);
+    n = add_roots(0.0, dw, ww, depth, cuts, n);
+  }
+  if (BEAM_REACH < depth && n < MAX_PIECES - 1)
+    cuts[n++] = BEAM_REACH;
+  return n;
+}
+
+static int by_value(const void *a, const void *b) {
+  double x = *(const double *)a, y = *(const double *)b;
+  return (x > y) - (x < y);
+}
+
+/* Cuts [0, depth] into pieces (ends[0] = 0 < ends[1] < ... = depth) and
+   tells which ones a spotlight or cylinder light lights; their number. */
+static int pieces(march *m, double depth, double *ends, bool *lit,
+                  uint64_t *beams) {
+  int n = 0;
+  ends[n++] = 0.0;
+  const zr_scene *scene = m->tr->scene;
+  bool beams_any = false;
+  if (m->lights)
+    for (size_t i = 0; i < scene->n_lights; i++) {
+      const zr_light *light = &scene->lights[i];
+      if (light->kind == ZR_LIGHT_POINT || !lights_media(light, 0.0))
+        continue;
+      beams_any = true;
+      n = light_cuts(m, light, depth, ends, n);
+    }
+  /* Every cut was kept (none fell off the end of ends) and every light
+     fits in a mask: the masks can be trusted. */
+  m->beams_known = n < MAX_PIECES - 1 && scene->n_lights <= 64;
+  ends[n++] = depth;
+  qsort(ends, (size_t)n, sizeof ends[0], by_value);
+  int k = 1;
+  for (int i = 1; i < n; i++)
+    if (ends[i] > ends[k - 1])
+      ends[k++] = ends[i];
+  /* A piece is lit when its middle is inside some beam. */
+  for (int i = 0; i + 1 < k; i++) {
+    lit[i] = false;
+    beams[i] = 0;
+    if (!beams_any)
+      continue;
+    double mid = 0.5 * (ends[i] + ends[i + 1]);
+    zr_vec3 p = zr_v3_madd(m->origin, m->dir, mid);
+    for (size_t li = 0; li < scene->n_lights; li++) {
+      const zr_light *light = &scene->lights[li];
+      if (light->kind != ZR_LIGHT_POINT && lights_media(light, mid) &&
+          zr__light_cone(light, p) > 0.0) {
+        lit[i] = true;
+        if (li < 64)
+          beams[i] |= (uint64_t)1 << li;
+      }
+    }
+  }
+  return k - 1;
+}
+
+/* ----- one integration ---------------------------------------------------- */
+
+static plan plan_of(const zr_medium *const *list, size_t n) {
+  plan p = {list[0]->method, 1, 1, 1, 0, list[0]->ratio, 0.0, INFINITY,
+            0.0, INFINITY};
+  for (size_t i = 0; i < n; i++) {
+    const zr_medium *m = list[i];
+    p.intervals = m->intervals > p.intervals ? m->intervals : p.intervals;
+    p.min_samples =
+        m->min_samples > p.min_samples ? m->min_samples : p.min_samples;
+    p.max_samples =
+        m->max_samples > p.max_samples ? m->max_samples : p.max_samples;
+    p.aa_level = m->aa_level > p.aa_level ? m->aa_level : p.aa_level;
+    p.aa_threshold = fmin(p.aa_threshold, m->aa_threshold);
+    p.jitter = fmax(p.jitter, m->jitter);
+    p.confidence = fmax(p.confidence, m->confidence);
+    p.variance = fmin(p.variance, m->variance);
+  }
+  if (p.aa_level > 30)
+    p.aa_level = 30;
+  if (p.intervals > MAX_INTERVALS)
+    p.intervals = MAX_INTERVALS;
+  return p;
+}
+
+static void run_interval(march *m, double s0, double s1) {
+  if (!(s1 > s0))
+    return;
+  if (!m->varies) {
+    /* Constant coefficients: one span is exact. */
+    sample a = sample_at(m, s0), b = moved(&a, s1);
+    add_span(m, &a, &b);
+  } else if (m->pl.method == 3) {
+    adaptive_interval(m, s0, s1);
+  } else {
+    random_interval(m, s0, s1);
+  }
 }
 
 zr_rgb zr__media_integrate(const zr_tracer *tracer,
                            const zr_medium *const *list, size_t n,
                            zr_vec3 origin, zr_vec3 dir, double depth,
                            bool shadow, zr_rgb colour) {
-  if (n == 0 || !(depth > 0.0) || isinf(depth))
+  if (n == 0 || !(depth > 0.0))
     return colour;
-  walk w = {tracer, list, n, origin, dir, shadow, false,
-            ray_seed(origin, dir), 0};
-  const zr_medium *im = list[0];
-  double threshold = INFINITY;
-  bool extinction = false, constant = true;
+  if (n > ZR_MEDIA_LIST_MAX)
+    n = ZR_MEDIA_LIST_MAX;
+  march m = {.tr = tracer, .list = list, .n = n, .origin = origin,
+             .dir = dir, .shadow = shadow, .t = zr_rgb3(1, 1, 1),
+             .light = zr_rgb3(0, 0, 0)};
+  m.pl = plan_of(list, n);
+  bool scatters = false;
   for (size_t i = 0; i < n; i++) {
-    const zr_medium *m = list[i];
-    if (m->intervals > im->intervals)
-      im = m;
-    threshold = fmin(threshold, m->aa_threshold);
-    extinction = extinction || !rgb_is_zero(m->absorption) ||
-                 !rgb_is_zero(m->scattering);
-    w.scattering = w.scattering || (!shadow && !rgb_is_zero(m->scattering));
-    constant = constant && m->n_density == 0;
+    scatters = scatters || !rgb_zero(list[i]->scattering);
+    m.varies = m.varies || list[i]->n_density > 0;
   }
-  if (shadow && !extinction)
-    return colour;
-  lit_span spans[2 * MAX_LIGHTS + 2];
-  int n_spans = 1;
-  spans[0] = (lit_span){false, 0.0, depth};
-  if (!shadow)
-    n_spans = lit_spans(&w, depth, spans);
-  interval ivs[MAX_INTERVALS + 2];
-  int n_iv = make_intervals(spans, n_spans, im, im->n_density == 0, depth,
-                            ivs);
-  bool one_sample = shadow && constant;
-  if (im->method == 3 && !one_sample) {
-    for (int i = 0; i < n_iv; i++)
-      adaptive(&w, &ivs[i], im, threshold);
-  } else {
-    regular(&w, ivs, n_iv, im, one_sample);
+  m.lights = scatters && !shadow && tracer->scene->n_lights > 0;
+  /* Lit media change along the ray with distance, shadows and cones. */
+  m.varies = m.varies || m.lights;
+  m.seed = ray_key(origin, dir);
+
+  double ends[MAX_PIECES + 1];
+  bool lit[MAX_PIECES];
+  uint64_t beams[MAX_PIECES];
+  int np = pieces(&m, depth, ends, lit, beams);
+  /* Deal the intervals out: each piece one, then one at a time to the
+     piece with the fewest for its weight. */
+  int count[MAX_PIECES];
+  double weight[MAX_PIECES];
+  for (int i = 0; i < np; i++) {
+    count[i] = 1;
+    double r = lit[i] ? m.pl.ratio : 1.0 - m.pl.ratio;
+    weight[i] = (ends[i + 1] - ends[i]) * fmax(r, 1e-6);
   }
-  zr_rgb od = zr_rgb3(0, 0, 0), te = od;
-  for (int i = 0; i < n_iv; i++) {
-    double k = ivs[i].samples > 0 ? 1.0 / ivs[i].samples : 0.0;
-    te = zr_rgb_add(te, zr_rgb_mul(zr_rgb_scale(ivs[i].te, k),
-                                   rgb_exp_neg(od)));
-    od = zr_rgb_madd(od, ivs[i].od, k);
+  if (m.varies)
+    for (int left = m.pl.intervals - np; left > 0; left--) {
+      int best = 0;
+      for (int i = 1; i < np; i++)
+        if (weight[i] * count[best] > weight[best] * count[i])
+          best = i;
+      count[best]++;
+    }
+  for (int i = 0; i < np; i++) {
+    double h = (ends[i + 1] - ends[i]) / count[i];
+    m.beams = beams[i];
+    for (int k = 0; k < count[i]; k++) {
+      double s0 = ends[i] + k * h;
+      double s1 = k + 1 == count[i] ? ends[i + 1] : s0 + h;
+      run_interval(&m, s0, s1);
+    }
   }
-  return zr_rgb_add(zr_rgb_mul(colour, rgb_exp_neg(od)), te);
+  return zr_rgb_add(zr_rgb_mul(colour, m.t), m.light);
 }
 
-/* Appends the media of in to list (n so far); the new count. */
-static size_t gather(const zr_interior *in, const zr_medium **list,
-                     size_t n) {
-  for (size_t i = 0; in && i < in->n_media && n < ZR_MEDIA_LIST_MAX; i++)
-    list[n++] = in->media[i];
-  return n;
-}
+/* ----- the ray's media ---------------------------------------------------- */
 
 zr_rgb zr__media_along(const zr_tracer *tracer, const zr_media *inside,
                        zr_vec3 origin, zr_vec3 dir, double t,
                        zr_rgb colour) {
-  const zr_settings *s = &tracer->scene->settings;
-  int depth_n = inside ? inside->n : 0;
+  const zr_settings *settings = &tracer->scene->settings;
   const zr_medium *list[ZR_MEDIA_LIST_MAX];
   size_t n = 0;
-  for (int i = 0; i < depth_n; i++) {
+  for (int i = 0; inside && i < inside->n; i++) {
     const zr_object *o = inside->objects[i];
     if (!o->hollow)
-      return colour; /* a solid object blocks all media */
-    n = gather(o->interior, list, n);
+      return colour; /* a solid object holds no media a ray sees */
+    const zr_interior *in = o->interior;
+    for (size_t k = 0; in && k < in->n_media && n < ZR_MEDIA_LIST_MAX; k++)
+      list[n++] = in->media[k];
   }
-  if (n == 0 && s->n_media == 0)
+  if (n == 0 && settings->n_media == 0)
     return colour;
   double len = zr_v3_len(dir);
   if (!(len > 0.0))
     return colour;
   zr_vec3 unit = zr_v3_scale(dir, 1.0 / len);
-  /* A ray to the sky sees no interior media (povray samples those only
-     up to a surface), and atmospheric media out to SKY_DEPTH: their
-     extinction hides the background, as povray renders it. */
   bool sky = isinf(t);
   double depth = sky ? SKY_DEPTH : t * len;
+  /* Interior media only up to a surface; the atmosphere's beyond. */
   if (n > 0 && !sky)
     colour = zr__media_integrate(tracer, list, n, origin, unit, depth, false,
                                  colour);
-  if (s->n_media > 0)
-    colour = zr__media_integrate(tracer, s->media, s->n_media, origin, unit,
-                                 depth, false, colour);
+  if (settings->n_media > 0)
+    colour = zr__media_integrate(tracer, settings->media, settings->n_media,
+                                 origin, unit, depth, false, colour);
   return colour;
 }
 
 zr_rgb zr__media_light_attenuation(const zr_tracer *tracer,
                                    const zr_light *light, zr_vec3 p) {
-  const zr_settings *s = &tracer->scene->settings;
-  if (!light->media_attenuation || s->n_media == 0)
-    return zr_rgb3(1, 1, 1);
-  zr_vec3 d = zr_v3_sub(light->location, p);
-  double len = zr_v3_len(d);
+  const zr_settings *settings = &tracer->scene->settings;
+  zr_rgb one = zr_rgb3(1, 1, 1);
+  if (!light->media_attenuation || settings->n_media == 0)
+    return one;
+  zr_vec3 to_light = zr_v3_sub(light->location, p);
+  double len = zr_v3_len(to_light);
   if (!(len > 0.0))
-    return zr_rgb3(1, 1, 1);
-  return zr__media_integrate(tracer, s->media, s->n_media, p,
-                             zr_v3_scale(d, 1.0 / len), len, true,
-                             zr_rgb3(1, 1, 1));
+    return one;
+  return zr__media_integrate(tracer, settings->media, settings->n_media, p,
+                             zr_v3_scale(to_light, 1.0 / len), len, true,
+                             one);
 }
 
-static int by_t(const void *a, const void *b) {
+static int by_crossing(const void *a, const void *b) {
   double ta = ((const zr_media_crossing *)a)->t;
   double tb = ((const zr_media_crossing *)b)->t;
   return (ta > tb) - (ta < tb);
 }
 
+/* The most containers one shadow ray follows at once. */
+#define SHADOW_CONTAINERS 32
+
 zr_rgb zr__media_shadow(const zr_tracer *tracer, zr_vec3 origin,
                         zr_vec3 dir, zr_media_crossing *crossings,
                         size_t n) {
-  zr_rgb light = zr_rgb3(1, 1, 1);
+  zr_rgb kept = zr_rgb3(1, 1, 1);
   double len = zr_v3_len(dir);
   if (n == 0 || !(len > 0.0))
-    return light;
+    return kept;
   zr_vec3 unit = zr_v3_scale(dir, 1.0 / len);
-  qsort(crossings, n, sizeof *crossings, by_t);
-  /* Each container on its own: from where the ray is inside it (from
-     the start when its first crossing leaves it) to where it leaves. */
+  qsort(crossings, n, sizeof *crossings, by_crossing);
+  /* The containers met, and whether the ray is inside each: inside from
+     the start those whose first crossing leaves them. */
+  const zr_object *box[SHADOW_CONTAINERS];
+  bool in[SHADOW_CONTAINERS];
+  int nb = 0;
   for (size_t i = 0; i < n; i++) {
-    const zr_object *solid = crossings[i].solid;
-    bool seen = false;
-    for (size_t j = 0; j < i && !seen; j++)
-      seen = crossings[j].solid == solid;
-    if (seen)
-      continue;
-    const zr_interior *in = solid->interior;
-    double start = crossings[i].entering ? -1.0 : 0.0;
-    for (size_t j = i; j < n; j++) {
-      if (crossings[j].solid != solid)
-        continue;
-      if (crossings[j].entering) {
-        start = crossings[j].t;
-        continue;
-      }
-      if (start >= 0.0) {
-        zr_vec3 o = zr_v3_madd(origin, dir, start);
-        light = zr__media_integrate(tracer, in->media, in->n_media, o, unit,
-                                    (crossings[j].t - start) * len, true,
-                                    light);
-      }
-      start = -1.0;
-    }
-    if (start >= 0.0) {
-      zr_vec3 o = zr_v3_madd(origin, dir, start);
-      light = zr__media_integrate(tracer, in->media, in->n_media, o, unit,
-                                  (1.0 - start) * len, true, light);
+    int k = 0;
+    while (k < nb && box[k] != crossings[i].solid)
+      k++;
+    if (k == nb && nb < SHADOW_CONTAINERS) {
+      box[nb] = crossings[i].solid;
+      in[nb++] = !crossings[i].entering;
     }
   }
-  return light;
+  /* Walk from crossing to crossing: between two, the media of every
+     container the ray is in add up (as on a camera ray). */
+  double from = 0.0;
+  for (size_t i = 0; i <= n; i++) {
+    double to = i < n ? fmin(fmax(crossings[i].t, 0.0), 1.0) : 1.0;
+    if (to > from) {
+      const zr_medium *list[ZR_MEDIA_LIST_MAX];
+      size_t nl = 0;
+      for (int k = 0; k < nb; k++) {
+        const zr_interior *it = box[k]->interior;
+        for (size_t q = 0; in[k] && it && q < it->n_media &&
+                           nl < ZR_MEDIA_LIST_MAX;
+             q++)
+          list[nl++] = it->media[q];
+      }
+      if (nl > 0)
+        kept = zr__media_integrate(tracer, list, nl,
+                                   zr_v3_madd(origin, dir, from), unit,
+                                   (to - from) * len, true, kept);
+      from = to;
+    }
+    if (i < n)
+      for (int k = 0; k < nb; k++)
+        if (box[k] == crossings[i].solid)
+          in[k] = crossings[i].entering;
+  }
+  return kept;
 }

@@ -15,6 +15,13 @@
 #define ZR_MEDIA_LIST_MAX 32
 
 /*
+ * The phase function of medium's scattering for cos_angle, the cosine
+ * between the direction toward the light and the ray's direction, in
+ * POV-Ray's scale (lib/trace/media.c says how it was measured).
+ */
+double zr__media_phase(const zr_medium *medium, double cos_angle);
+
+/*
  * colour arriving at origin from distance depth along unit direction
  * dir, seen through the media in list: colour * exp(-optical depth) plus
  * the light the media emit and scatter toward origin.  With shadow set
