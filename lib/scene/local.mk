@@ -41,3 +41,13 @@ $(tests_test_bitmap_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
 
 # The density_file pattern's df3 voxel files (media densities).
 lib_libzrcube_la_SOURCES += lib/scene/df3.c lib/scene/df3.h
+
+# rand() and noise against values recorded from POV-Ray by the probe
+# scripts in bench/noise/ (data in tests/noise/).
+check_PROGRAMS += tests/test_noise
+TESTS += tests/test_noise
+tests_test_noise_SOURCES = tests/test_noise.c
+tests_test_noise_CPPFLAGS = $(TEST_CPPFLAGS)
+tests_test_noise_LDADD = $(TEST_LDADD)
+tests_test_noise_LDFLAGS = -static
+EXTRA_DIST += tests/noise/rand.txt bench/noise/probe_rand.sh
