@@ -76,6 +76,10 @@ static double case_value(const char *name, zr_vec3 p) {
       {"agate", ZR_PAT_AGATE, 0},       {"agate04", ZR_PAT_AGATE, 0},
       {"turbx", ZR_PAT_GRADIENT, 0},    {"turby", ZR_PAT_GRADIENT, 0},
       {"turbz", ZR_PAT_GRADIENT, 0},    {"bozoturb", ZR_PAT_BOZO, 0},
+      {"crackle", ZR_PAT_CRACKLE, 0},   {"crackle100", ZR_PAT_CRACKLE, 0},
+      {"crackle011", ZR_PAT_CRACKLE, 0}, {"crackle_m1", ZR_PAT_CRACKLE, 0},
+      {"crackle_m3", ZR_PAT_CRACKLE, 0}, {"crackle_off", ZR_PAT_CRACKLE, 0},
+      {"crackle_solid", ZR_PAT_CRACKLE, 0},
   };
   for (size_t i = 0; i < sizeof kinds / sizeof kinds[0]; i++) {
     if (strcmp(name, kinds[i].name) != 0)
@@ -99,6 +103,18 @@ static double case_value(const char *name, zr_vec3 p) {
       pt.octaves = 8;
     } else if (strcmp(name, "bozoturb") == 0) {
       pt.turbulence = zr_v3(0.5, 0.5, 0.5);
+    } else if (strcmp(name, "crackle100") == 0) {
+      pt.crackle_form = zr_v3(1, 0, 0);
+    } else if (strcmp(name, "crackle011") == 0) {
+      pt.crackle_form = zr_v3(0, 1, 1);
+    } else if (strcmp(name, "crackle_m1") == 0) {
+      pt.crackle_metric = 1;
+    } else if (strcmp(name, "crackle_m3") == 0) {
+      pt.crackle_metric = 3;
+    } else if (strcmp(name, "crackle_off") == 0) {
+      pt.crackle_offset = 0.5;
+    } else if (strcmp(name, "crackle_solid") == 0) {
+      pt.crackle_solid = true;
     }
     return zr__pattern_eval(&pt, p);
   }
@@ -138,7 +154,7 @@ static void test_noise_patterns(void **state) {
   fclose(f);
   print_message("%d points, largest difference %.3g\n", n, worst);
   assert_int_equal(bad, 0);
-  assert_true(n > 5000);
+  assert_true(n > 8000);
 }
 
 int main(void) {

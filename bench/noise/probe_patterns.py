@@ -49,6 +49,13 @@ CASES = [
               "octaves 3 omega 0.7 lambda 2.5 }"),
     ("turbz", "pattern { gradient z warp { turbulence 0.25 octaves 8 } }"),
     ("bozoturb", "pattern { bozo turbulence 0.5 }"),
+    ("crackle", "pattern { crackle }"),
+    ("crackle100", "pattern { crackle form <1, 0, 0> }"),
+    ("crackle011", "pattern { crackle form <0, 1, 1> }"),
+    ("crackle_m1", "pattern { crackle metric 1 }"),
+    ("crackle_m3", "pattern { crackle metric 3 }"),
+    ("crackle_off", "pattern { crackle offset 0.5 }"),
+    ("crackle_solid", "pattern { crackle solid }"),
 ]
 
 
@@ -73,7 +80,7 @@ def main():
             lines.append("%s %.6f %.6f %.6f %.17g" % (name, p[0], p[1],
                                                         p[2], x))
             n += 1
-        print("%-9s %4d points, values %.4f to %.4f" % (name, n, min(v),
+        print("%-13s %4d points, values %.4f to %.4f" % (name, n, min(v),
                                                          max(v)))
     with open(out, "w") as f:
         f.write("\n".join(lines) + "\n")

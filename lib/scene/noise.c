@@ -31,11 +31,15 @@
 
 static double smooth(double t) { return t * t * (3 - 2 * t); }
 
+unsigned zr__noise_hash(int64_t x, int64_t y, int64_t z, int offset) {
+  unsigned a = (unsigned)((x + offset) & 4095);
+  unsigned b = (unsigned)((y + offset) & 4095);
+  unsigned c = (unsigned)((z + offset) & 4095);
+  return noise_hash[noise_hash[noise_hash[a] ^ b] ^ c];
+}
+
 static unsigned lattice_hash(int64_t x, int64_t y, int64_t z) {
-  unsigned a = (unsigned)((x + NOISE_HASH_OFFSET) & 4095);
-  unsigned b = (unsigned)((y + NOISE_HASH_OFFSET) & 4095);
-  unsigned c = (unsigned)((z + NOISE_HASH_OFFSET) & 4095);
-  return noise_hash[noise_hash[noise_hash[a] ^ b] ^ c] & 255u;
+  return zr__noise_hash(x, y, z, NOISE_HASH_OFFSET) & 255u;
 }
 
 /* The blend of step 1 of the probe for n_tables tables at once: out[m]

@@ -38,9 +38,9 @@
  *   agate      (0.5 + 0.5 sin(2 pi (1.1 z + 1.3 agate_turb s)))^0.77, s
  *              = c(n(p)) + the sum over octaves 1..5 of (2 n(2^i p) -
  *              0.5) / 2^i;
- *   crackle    (not yet measured: our own feature points) distance to the
- *              second nearest minus the nearest of one
- *              random point per unit cell (form <-1,1,0>, metric 2);
+ *   crackle    distance to the second nearest minus the nearest of one
+ *              feature point per unit cell (form <-1,1,0>, metric 2),
+ *              the points measured (bench/noise/probe_crackle.py);
  *              form weighs the three nearest distances, metric m
  *              measures them as (|dx|^m + |dy|^m + |dz|^m)^(1/m),
  *              offset is a fourth coordinate of every distance, solid
@@ -79,6 +79,8 @@
 
 #include "scene/df3.h"
 #include "scene/noise.h"
+
+#include "../../bench/noise/crackle_tables.h"
 #include "scene/texture.h"
 #include "scene/warp.h"
 
@@ -266,6 +268,15 @@ static double agate(zr_vec3 p, double agate_turb, int generator) {
   return pow(v < 0 ? 0 : v, 0.77);
 }
 
+/* The feature point of crackle's cell (x, y, z), measured: one a cell,
+   placed by the noise's hash with crackle's offset
+   (bench/noise/probe_crackle.py writes the table). */
+static zr_vec3 crackle_point(int64_t x, int64_t y, int64_t z) {
+  const double *o = crackle_points[zr__noise_hash(x, y, z,
+                                                  CRACKLE_HASH_OFFSET)];
+  return zr_v3((double)x + o[0], (double)y + o[1], (double)z + o[2]);
+}
+
 /* A pseudo-random point of the unit cube from a hash. */
 static zr_vec3 hashed_point(int64_t x, int64_t y, int64_t z) {
   uint32_t a = hash3(x, y, z), b = hash3(x + 7919, y, z),
@@ -288,27 +299,25 @@ static double crackle_distance(zr_vec3 d, double m, double offset) {
 
 /* Crackle with its form, metric, offset and solid: the weighted sum of
    the distances to the three nearest feature points (one per unit cell),
-   or with solid the random value of the nearest point's cell. */
+   clamped to [0, 1], or with solid the noise at the nearest point (all
+   measured to 1e-12, bench/noise/probe_crackle.py). */
 static double crackle_general(const zr_pattern *pt, zr_vec3 p) {
   double fx = floor(p.x), fy = floor(p.y), fz = floor(p.z);
   double d[3] = {INFINITY, INFINITY, INFINITY};
-  int64_t near[3] = {0, 0, 0};
+  zr_vec3 near = p;
   for (int i = -1; i <= 1; i++)
     for (int j = -1; j <= 1; j++)
       for (int k = -1; k <= 1; k++) {
         int64_t cx = (int64_t)fx + i, cy = (int64_t)fy + j,
                 cz = (int64_t)fz + k;
-        zr_vec3 f = zr_v3_add(hashed_point(cx, cy, cz),
-                              zr_v3((double)cx, (double)cy, (double)cz));
+        zr_vec3 f = crackle_point(cx, cy, cz);
         double v = crackle_distance(zr_v3_sub(p, f), pt->crackle_metric,
                                     pt->crackle_offset);
         if (v < d[0]) {
           d[2] = d[1];
           d[1] = d[0];
           d[0] = v;
-          near[0] = cx;
-          near[1] = cy;
-          near[2] = cz;
+          near = f;
         } else if (v < d[1]) {
           d[2] = d[1];
           d[1] = v;
@@ -316,8 +325,8 @@ static double crackle_general(const zr_pattern *pt, zr_vec3 p) {
           d[2] = v;
         }
       }
-  if (pt->crackle_solid)
-    return hash3(near[0] + 31337, near[1], near[2]) / 4294967296.0;
+  if (pt->crackle_solid) /* the noise at the nearest point (measured) */
+    return zr__noise(near);
   zr_vec3 w = pt->crackle_form;
   return clamp01(w.x * d[0] + w.y * d[1] + w.z * d[2]);
 }
@@ -331,8 +340,7 @@ static double crackle(zr_vec3 p) {
       for (int k = -1; k <= 1; k++) {
         int64_t cx = (int64_t)fx + i, cy = (int64_t)fy + j,
                 cz = (int64_t)fz + k;
-        zr_vec3 f = zr_v3_add(hashed_point(cx, cy, cz),
-                              zr_v3((double)cx, (double)cy, (double)cz));
+        zr_vec3 f = crackle_point(cx, cy, cz);
         double d = zr_v3_len(zr_v3_sub(p, f));
         if (d < d1) {
           d2 = d1;
