@@ -4,7 +4,7 @@ lib_libzrcube_la_SOURCES += \
 # Patterns, noise, colour maps, image maps and normals.
 lib_libzrcube_la_SOURCES += \
 	lib/scene/pattern.c lib/scene/pattern.h lib/scene/pattern_more.c \
-	lib/scene/pattern_tiling.c \
+	lib/scene/pattern_tiling.c lib/scene/noise.c lib/scene/noise.h \
 	lib/scene/warp.c lib/scene/warp.h \
 	lib/scene/texture.c lib/scene/texture.h \
 	lib/scene/bitmap.c lib/scene/bitmap.h
@@ -53,3 +53,17 @@ tests_test_warp_LDFLAGS = -static
 TESTS += tests/test_warp_probe.sh
 EXTRA_DIST += tests/test_warp_probe.sh bench/warp_probe.sh \
 	bench/issue17_ssim.sh
+
+# rand() and noise against values recorded from POV-Ray by the probe
+# scripts in bench/noise/ (data in tests/noise/).
+check_PROGRAMS += tests/test_noise
+TESTS += tests/test_noise
+tests_test_noise_SOURCES = tests/test_noise.c
+tests_test_noise_CPPFLAGS = $(TEST_CPPFLAGS)
+tests_test_noise_LDADD = $(TEST_LDADD)
+tests_test_noise_LDFLAGS = -static
+EXTRA_DIST += tests/noise/rand.txt bench/noise/probe_rand.sh \
+	bench/noise/probe_noise.py bench/noise/povprobe.py \
+	bench/noise/noise_tables.h bench/noise/probe_patterns.py \
+	tests/noise/patterns.txt bench/noise/probe_crackle.py \
+	bench/noise/crackle_tables.h

@@ -26,20 +26,21 @@
  * so a plane lying exactly on a cell boundary (y = 0) shows one cell as
  * it does in POV-Ray, not rounding noise.
  *
- * Noise is our own, not POV-Ray's (whose source we do not use): Perlin's
- * "improved noise" (Perlin, "Improving Noise", SIGGRAPH 2002), a lattice
- * gradient noise with the quintic fade and 12 edge gradients, whose
- * lattice hash is an integer mixing function instead of a permutation
- * table, scaled to [0, 1] with mean 0.5 like POV-Ray's.  Noise-based
- * patterns (bozo, spotted, bumps, dents, granite, wrinkles, agate,
- * crackle, ripples, waves) therefore have POV-Ray's character, scale and
- * range but not its exact picture:
- *   bozo, spotted, bumps, dents  noise(p);
- *   granite    sum over 6 octaves of |2 noise(4 p 2^i) - 1| / 2^i, / 2;
- *   wrinkles   sum over 10 octaves of |2 noise(p 2^i) - 1| / 2^i, / 2;
- *   agate      0.5 + 0.5 sin(2 pi (z + agate_turb * wrinkles-like sum));
+ * Noise is POV-Ray's, reconstructed from measurements of the povray
+ * binary without its source (lib/scene/noise.c; bench/noise/ holds the
+ * probe scripts, tests/test_noise.c checks 6400 recorded values to
+ * 1e-9).  The noise patterns, each formula found by
+ * bench/noise/probe_patterns.py for noise_generator 2 (c(n) is 2 n - 0.5
+ * clamped to [0, 1]):
+ *   bozo, spotted, bumps  n(p);  dents  n(p)^3;
+ *   wrinkles   half the sum over 10 octaves of c(n(2^i p)) / 2^i;
+ *   granite    the sum over 6 octaves of |c(n(4 2^i p)) - 0.5| / 2^i;
+ *   agate      (0.5 + 0.5 sin(2 pi (1.1 z + 1.3 agate_turb s)))^0.77, s
+ *              = c(n(p)) + the sum over octaves 1..5 of (2 n(2^i p) -
+ *              0.5) / 2^i;
  *   crackle    distance to the second nearest minus the nearest of one
- *              random point per unit cell (form <-1,1,0>, metric 2);
+ *              feature point per unit cell (form <-1,1,0>, metric 2),
+ *              the points measured (bench/noise/probe_crackle.py);
  *              form weighs the three nearest distances, metric m
  *              measures them as (|dx|^m + |dy|^m + |dz|^m)^(1/m),
  *              offset is a fourth coordinate of every distance, solid
@@ -49,11 +50,12 @@
  *              * frequency + phase), so they consume frequency and phase
  *              as the manual says.
  * Turbulence displaces the point by the turbulence vector times the sum
- * over octaves of omega^i dnoise(p lambda^i), before the pattern's
- * transforms, as the manual's "Turbulence versus Turbulence Warp" says.
- * noise_generator 1, 2 and 3 ("Noise Generator") all use this one noise:
- * the number is accepted and stored, but the pictures of the three
- * differ from POV-Ray's anyway since none of them is its noise.
+ * over octaves of omega^i D(p lambda^i), D POV-Ray's vector noise
+ * (measured), before the pattern's transforms, as the manual's
+ * "Turbulence versus Turbulence Warp" says.  noise_generator 1 is
+ * POV-Ray's for bozo, spotted, bumps and dents; wrinkles, granite and
+ * agate with generator 1, and generator 3 anywhere, use formulas and a
+ * noise of our own (Perlin's improved noise for 3), not yet measured.
  *
  * Patterns the manual describes only in words, with our definitions:
  *   cells      one random value per unit cube ("Cells Pattern");
@@ -76,6 +78,9 @@
 #include <stdint.h>
 
 #include "scene/df3.h"
+#include "scene/noise.h"
+
+#include "../../bench/noise/crackle_tables.h"
 #include "scene/texture.h"
 #include "scene/warp.h"
 
@@ -167,7 +172,9 @@ static double fade(double t) {
 
 static double lerp(double t, double a, double b) { return a + t * (b - a); }
 
-/* Perlin's improved noise in about [-1, 1], zero at lattice points. */
+/* Perlin's improved noise in about [-1, 1], zero at lattice points: what
+   noise_generator 3 ("generates Perlin noise") gives until that generator
+   is measured as the other two were. */
 static double raw_noise(zr_vec3 p) {
   double fx = floor(p.x), fy = floor(p.y), fz = floor(p.z);
   int64_t ix = (int64_t)fx, iy = (int64_t)fy, iz = (int64_t)fz;
@@ -186,54 +193,88 @@ static double raw_noise(zr_vec3 p) {
                    lerp(u, c[0][1][1], c[1][1][1])));
 }
 
-double zr__noise(zr_vec3 p) {
-  double n = 0.5 + 0.5 * raw_noise(p);
-  return n < 0 ? 0 : n > 1 ? 1 : n;
+double zr__noise(zr_vec3 p) { return zr__noise_lattice(p); }
+
+double zr__noise_gen(zr_vec3 p, int generator) {
+  if (generator == 3) {
+    double n = 0.5 + 0.5 * raw_noise(p);
+    return n < 0 ? 0 : n > 1 ? 1 : n;
+  }
+  return zr__noise_generator(p, generator);
 }
 
-zr_vec3 zr__dnoise(zr_vec3 p) {
-  /* Three far-apart samples of one noise are independent enough. */
-  return zr_v3(raw_noise(p), raw_noise(zr_v3_add(p, zr_v3(31.4, 17.7, 43.1))),
-               raw_noise(zr_v3_add(p, zr_v3(-12.3, 57.9, 8.6))));
-}
+zr_vec3 zr__dnoise(zr_vec3 p) { return zr__dnoise_lattice(p); }
 
 zr_vec3 zr__dturbulence(zr_vec3 p, int octaves, double omega,
                         double lambda) {
+  /* omega and lambda act as single-precision numbers: omega 0.7 differs
+     from the double 0.7 by the float's rounding in the probe's
+     measurements (bench/noise/probe_patterns.py). */
+  double om = (float)omega, la = (float)lambda;
   zr_vec3 sum = zr_v3(0, 0, 0);
   double amp = 1.0, scale = 1.0;
   for (int i = 0; i < octaves; i++) {
     sum = zr_v3_madd(sum, zr__dnoise(zr_v3_scale(p, scale)), amp);
-    amp *= omega;
-    scale *= lambda;
-  }
-  return sum;
-}
-
-/* The 1/f sum of |2 noise - 1| over octaves from base frequency f0. */
-static double abs_fractal(zr_vec3 p, int octaves, double f0) {
-  double sum = 0, amp = 1, f = f0;
-  for (int i = 0; i < octaves; i++) {
-    sum += amp * fabs(raw_noise(zr_v3_scale(p, f)));
-    amp *= 0.5;
-    f *= 2;
+    amp *= om;
+    scale *= la;
   }
   return sum;
 }
 
 static double clamp01(double v) { return v < 0 ? 0 : v > 1 ? 1 : v; }
 
-/* wrinkles as POV-Ray 3.7 sums it for its default noise_generator 2:
-   ten octaves of clamp(2 noise - 0.5), weights 1, 1/2, 1/4 ..., at
-   frequencies 1, 2, 4 ..., halved.  (The older sum of |noise| put
-   almost no values above 0.55, where povray has about half.) */
-static double wrinkles(zr_vec3 p) {
-  double sum = 0, omega = 1, lambda = 1;
+/* The octave term of wrinkles, granite and agate: 2 n - 0.5 clamped to
+   [0, 1] (measured: bench/noise/probe_patterns.py). */
+static double octave(double n) { return clamp01(2 * n - 0.5); }
+
+/* wrinkles: half the sum over 10 octaves i of octave(noise(2^i p)) / 2^i
+   (measured to 1e-14 for noise_generator 2). */
+static double wrinkles(zr_vec3 p, int generator) {
+  double sum = 0, amp = 1, f = 1;
   for (int i = 0; i < 10; i++) {
-    sum += omega * clamp01(2 * zr__noise(zr_v3_scale(p, lambda)) - 0.5);
-    omega *= 0.5;
-    lambda *= 2;
+    sum += amp * octave(zr__noise_gen(zr_v3_scale(p, f), generator));
+    amp *= 0.5;
+    f *= 2;
   }
   return sum / 2;
+}
+
+/* granite: the sum over 6 octaves i of |octave(noise(4 2^i p)) - 0.5| /
+   2^i (measured to 1e-14 for noise_generator 2). */
+static double granite(zr_vec3 p, int generator) {
+  double sum = 0, amp = 1, f = 4;
+  for (int i = 0; i < 6; i++) {
+    sum += amp * fabs(octave(zr__noise_gen(zr_v3_scale(p, f), generator)) -
+                      0.5);
+    amp *= 0.5;
+    f *= 2;
+  }
+  return sum;
+}
+
+/* agate: (0.5 + 0.5 sin(2 pi (1.1 z + 1.3 agate_turb s)))^0.77, s the sum
+   over 6 octaves i of (2 noise(2^i p) - 0.5) / 2^i with only the first
+   octave clamped to [0, 1] (measured to 1e-13; agate_turb acts as a
+   single-precision number). */
+static double agate(zr_vec3 p, double agate_turb, int generator) {
+  double s = octave(zr__noise_gen(p, generator)), amp = 0.5, f = 2;
+  for (int i = 1; i < 6; i++) {
+    s += amp * (2 * zr__noise_gen(zr_v3_scale(p, f), generator) - 0.5);
+    amp *= 0.5;
+    f *= 2;
+  }
+  double v = 0.5 + 0.5 * sin(2 * PI * (1.1 * p.z + 1.3 * (float)agate_turb *
+                                                        s));
+  return pow(v < 0 ? 0 : v, 0.77);
+}
+
+/* The feature point of crackle's cell (x, y, z), measured: one a cell,
+   placed by the noise's hash with crackle's offset
+   (bench/noise/probe_crackle.py writes the table). */
+static zr_vec3 crackle_point(int64_t x, int64_t y, int64_t z) {
+  const double *o = crackle_points[zr__noise_hash(x, y, z,
+                                                  CRACKLE_HASH_OFFSET)];
+  return zr_v3((double)x + o[0], (double)y + o[1], (double)z + o[2]);
 }
 
 /* A pseudo-random point of the unit cube from a hash. */
@@ -258,27 +299,25 @@ static double crackle_distance(zr_vec3 d, double m, double offset) {
 
 /* Crackle with its form, metric, offset and solid: the weighted sum of
    the distances to the three nearest feature points (one per unit cell),
-   or with solid the random value of the nearest point's cell. */
+   clamped to [0, 1], or with solid the noise at the nearest point (all
+   measured to 1e-12, bench/noise/probe_crackle.py). */
 static double crackle_general(const zr_pattern *pt, zr_vec3 p) {
   double fx = floor(p.x), fy = floor(p.y), fz = floor(p.z);
   double d[3] = {INFINITY, INFINITY, INFINITY};
-  int64_t near[3] = {0, 0, 0};
+  zr_vec3 near = p;
   for (int i = -1; i <= 1; i++)
     for (int j = -1; j <= 1; j++)
       for (int k = -1; k <= 1; k++) {
         int64_t cx = (int64_t)fx + i, cy = (int64_t)fy + j,
                 cz = (int64_t)fz + k;
-        zr_vec3 f = zr_v3_add(hashed_point(cx, cy, cz),
-                              zr_v3((double)cx, (double)cy, (double)cz));
+        zr_vec3 f = crackle_point(cx, cy, cz);
         double v = crackle_distance(zr_v3_sub(p, f), pt->crackle_metric,
                                     pt->crackle_offset);
         if (v < d[0]) {
           d[2] = d[1];
           d[1] = d[0];
           d[0] = v;
-          near[0] = cx;
-          near[1] = cy;
-          near[2] = cz;
+          near = f;
         } else if (v < d[1]) {
           d[2] = d[1];
           d[1] = v;
@@ -286,8 +325,8 @@ static double crackle_general(const zr_pattern *pt, zr_vec3 p) {
           d[2] = v;
         }
       }
-  if (pt->crackle_solid)
-    return hash3(near[0] + 31337, near[1], near[2]) / 4294967296.0;
+  if (pt->crackle_solid) /* the noise at the nearest point (measured) */
+    return zr__noise(near);
   zr_vec3 w = pt->crackle_form;
   return clamp01(w.x * d[0] + w.y * d[1] + w.z * d[2]);
 }
@@ -301,8 +340,7 @@ static double crackle(zr_vec3 p) {
       for (int k = -1; k <= 1; k++) {
         int64_t cx = (int64_t)fx + i, cy = (int64_t)fy + j,
                 cz = (int64_t)fz + k;
-        zr_vec3 f = zr_v3_add(hashed_point(cx, cy, cz),
-                              zr_v3((double)cx, (double)cy, (double)cz));
+        zr_vec3 f = crackle_point(cx, cy, cz);
         double d = zr_v3_len(zr_v3_sub(p, f));
         if (d < d1) {
           d2 = d1;
@@ -482,8 +520,7 @@ static double slope_value(const zr_slope *sl, zr_vec3 p, zr_vec3 n) {
 static double raw_value(const zr_pattern *pt, zr_vec3 p) {
   switch (pt->kind) {
   case ZR_PAT_AGATE:
-    return 0.5 + 0.5 * sin(2 * PI * (p.z + pt->agate_turb *
-                                                abs_fractal(p, 6, 1.0)));
+    return agate(p, pt->agate_turb, pt->noise_generator);
   case ZR_PAT_BOXED:
     return 1 - fmin(1, zr_v3_max_comp(zr_v3(fabs(p.x), fabs(p.y),
                                             fabs(p.z))));
@@ -500,8 +537,12 @@ static double raw_value(const zr_pattern *pt, zr_vec3 p) {
   case ZR_PAT_BOZO:
   case ZR_PAT_SPOTTED:
   case ZR_PAT_BUMPS:
-  case ZR_PAT_DENTS:
-    return zr__noise(p);
+    return zr__noise_gen(p, pt->noise_generator);
+  case ZR_PAT_DENTS: {
+    /* The cube of the noise (measured to 1e-14). */
+    double n = zr__noise_gen(p, pt->noise_generator);
+    return n * n * n;
+  }
   case ZR_PAT_CRACKLE:
     if (pt->crackle_metric == 2 && pt->crackle_offset == 0 &&
         !pt->crackle_solid && pt->crackle_form.x == -1 &&
@@ -513,7 +554,7 @@ static double raw_value(const zr_pattern *pt, zr_vec3 p) {
   case ZR_PAT_GRADIENT:
     return zr_v3_dot(p, pt->vector);
   case ZR_PAT_GRANITE:
-    return clamp01(0.5 * abs_fractal(p, 6, 4.0));
+    return granite(p, pt->noise_generator);
   case ZR_PAT_LEOPARD: {
     double s = (sin(p.x) + sin(p.y) + sin(p.z)) / 3;
     return s * s;
@@ -533,7 +574,7 @@ static double raw_value(const zr_pattern *pt, zr_vec3 p) {
   case ZR_PAT_WOOD:
     return sqrt(p.x * p.x + p.y * p.y);
   case ZR_PAT_WRINKLES:
-    return wrinkles(p);
+    return wrinkles(p, pt->noise_generator);
   case ZR_PAT_MANDEL:
   case ZR_PAT_JULIA:
     return zr__pattern_fractal(pt, p);

@@ -15,11 +15,12 @@
  * vturbulence() the pattern code's turbulence (scene/pattern.c), whose
  * noise is zRcube's own: its values are not POV-Ray's.
  *
- * rand() streams: seed(n) starts a splitmix64 generator (Steele, Lea and
- * Flood, "Fast splittable pseudorandom number generators", OOPSLA 2014)
- * at n; each rand() returns the top 53 bits of the next output as a float
- * in [0, 1).  The stream is deterministic for a given seed, as POV-Ray's
- * is, but it is not POV-Ray's sequence.
+ * rand() streams are POV-Ray's, as measured by bench/noise/probe_rand.sh
+ * (which records the values tests/test_noise.c checks): seed(n) cuts n to
+ * a 32-bit signed integer (toward zero; out of range gives -2^31), and
+ * each rand() steps the linear congruential generator
+ * s' = 1812433253 s + 12345 mod 2^32 and returns s' / (2^32 - 1), so 1 is
+ * a possible value and the stream repeats after 2^32 steps.
  *
  * Strings and arrays live in the scene's arena: they are values that
  * identifiers keep until the scene is freed.
@@ -297,19 +298,30 @@ bool zr__sdl_string_float(zr_sdl_parser *p, int func, const char *s,
 const zr_sdl_rand *zr__sdl_seed(zr_sdl_parser *p, double n) {
   zr_sdl_rand *r = zr__sdl_alloc(p, sizeof *r);
   if (r)
-    r->state = (unsigned long long)(long long)n;
+    r->state = zr__sdl_seed_state(n);
   return r;
+}
+
+unsigned long long zr__sdl_seed_state(double n) {
+  /* Measured (bench/noise/probe_rand.sh): -12.7 starts as -12, and any
+     number outside the signed 32-bit range (or not a number) as -2^31. */
+  long long s = n > -2147483649.0 && n < 2147483648.0 ? (long long)n
+                                                       : -2147483648LL;
+  return (unsigned long long)s & 0xFFFFFFFFull;
+}
+
+double zr__sdl_rand_step(unsigned long long *state) {
+  /* Multiplier, increment and divisor derived from POV-Ray's output by
+     bench/noise/probe_rand.sh. */
+  *state = (*state * 1812433253ull + 12345ull) & 0xFFFFFFFFull;
+  return (double)*state / 4294967295.0;
 }
 
 double zr__sdl_rand(const zr_sdl_rand *stream) {
   /* The stream belongs to the identifier's value, which is the one
      thing a rand() call is meant to change. */
   zr_sdl_rand *r = (zr_sdl_rand *)stream;
-  uint64_t z = (r->state += 0x9E3779B97F4A7C15ull);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  z ^= z >> 31;
-  return (double)(z >> 11) * (1.0 / 9007199254740992.0);
+  return zr__sdl_rand_step(&r->state);
 }
 
 /* ---- arrays ---- */

@@ -675,6 +675,10 @@ bool zr__sdl_file_exists(zr_sdl_parser *p, const char *name);
 /* seed(n) and rand(stream). */
 const zr_sdl_rand *zr__sdl_seed(zr_sdl_parser *p, double n);
 double zr__sdl_rand(const zr_sdl_rand *stream);
+/* POV-Ray's generator: the state seed(n) starts from, and one step that
+   returns the next value in [0, 1]. */
+unsigned long long zr__sdl_seed_state(double n);
+double zr__sdl_rand_step(unsigned long long *state);
 /* Arrays: a new array of the given dimensions, its initialiser (the
    p->init values), a copy, and dimension_size(). */
 zr_sdl_array *zr__sdl_array_new(zr_sdl_parser *p, const zr_sdl_list *dims,

@@ -1,0 +1,91 @@
+#!/usr/bin/python3
+"""probe_patterns.py - records POV-Ray 3.7's values of the noise
+functions and the noise-based patterns at random points and writes
+tests/noise/patterns.txt, which tests/test_noise.c checks zRcube
+against.  Rerunning it rewrites the file byte for byte (fixed seeds).
+Run: bench/noise/probe_patterns.py [output]
+
+Each case is a name, the function povray evaluates and the points.  The
+formulas lib/scene/pattern.c uses for them were found with these values
+and the noise of bench/noise/probe_noise.py (all for noise_generator 2):
+  bozo, spotted, bumps  the noise n(p);      dents  n(p)^3;
+  wrinkles  half the sum over 10 octaves i of c(n(2^i p)) / 2^i, where
+            c(n) = 2 n - 0.5 clamped to [0, 1];
+  granite   the sum over 6 octaves i of |c(n(4 2^i p)) - 0.5| / 2^i;
+  agate     (0.5 + 0.5 sin(2 pi (1.1 z + 1.3 agate_turb s)))^0.77 with
+            s = c(n(p)) + the sum over octaves i = 1..5 of
+            (2 n(2^i p) - 0.5) / 2^i (agate_turb 0 leaves the 1.1 z);
+  turbulence  the point moves by turbulence times the sum over octaves i
+            of omega^i D(lambda^i p), D the vector noise; omega (and
+            agate_turb) act as single-precision numbers (0.7 is off by
+            the float's rounding, 8e-9).
+The gradient cases use positive points: povray's gradient pattern at
+negative coordinates is off by about 1e-5 a unit from the fraction of
+the coordinate, which is not the noise.  Points where a gradient wraps (value within 1e-6 of 0 or 1) are
+left out: the two renderers may round them to either side.
+"""
+import os
+import sys
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from povprobe import function  # noqa: E402
+
+CASES = [
+    ("noise", "f_noise3d(x, y, z)"),
+    ("noise1", "f_noise_generator(x, y, z, 1)"),
+    ("bozo", "pattern { bozo }"),
+    ("bozo1", "pattern { bozo noise_generator 1 }"),
+    ("spotted", "pattern { spotted }"),
+    ("bumps", "pattern { bumps }"),
+    ("dents", "pattern { dents }"),
+    ("dents1", "pattern { dents noise_generator 1 }"),
+    ("wrinkles", "pattern { wrinkles }"),
+    ("granite", "pattern { granite }"),
+    ("agate", "pattern { agate }"),
+    ("agate04", "pattern { agate agate_turb 0.4 }"),
+    ("turbx", "pattern { gradient x turbulence 0.3 }"),
+    ("turby", "pattern { gradient y turbulence <0.2, 0.4, 0.1> "
+              "octaves 3 omega 0.7 lambda 2.5 }"),
+    ("turbz", "pattern { gradient z warp { turbulence 0.25 octaves 8 } }"),
+    ("bozoturb", "pattern { bozo turbulence 0.5 }"),
+    ("crackle", "pattern { crackle }"),
+    ("crackle100", "pattern { crackle form <1, 0, 0> }"),
+    ("crackle011", "pattern { crackle form <0, 1, 1> }"),
+    ("crackle_m1", "pattern { crackle metric 1 }"),
+    ("crackle_m3", "pattern { crackle metric 3 }"),
+    ("crackle_off", "pattern { crackle offset 0.5 }"),
+    ("crackle_solid", "pattern { crackle solid }"),
+]
+
+
+def main():
+    out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(
+        os.path.dirname(os.path.abspath(__file__)), "..", "..", "tests",
+        "noise", "patterns.txt")
+    rng = np.random.default_rng(1616)
+    lines = ["# case x y z value: POV-Ray 3.7's value, written by "
+             "bench/noise/probe_patterns.py"]
+    for name, body in CASES:
+        P = np.round(rng.uniform(-20, 20, size=(400, 3)), 6)
+        if name.startswith("turb"):
+            # gradient's wrap of negative values drifts by about 1e-5 a
+            # unit in povray (a separate matter): positive points only.
+            P = np.abs(P)
+        v = function(body, [tuple(p) for p in P])
+        n = 0
+        for p, x in zip(P, v):
+            if name.startswith("turb") and not 1e-6 < x < 1 - 1e-6:
+                continue
+            lines.append("%s %.6f %.6f %.6f %.17g" % (name, p[0], p[1],
+                                                        p[2], x))
+            n += 1
+        print("%-13s %4d points, values %.4f to %.4f" % (name, n, min(v),
+                                                         max(v)))
+    with open(out, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("wrote", out)
+
+
+if __name__ == "__main__":
+    main()

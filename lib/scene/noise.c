@@ -1,0 +1,94 @@
+/*
+ * noise.c - POV-Ray 3.7's noise, reconstructed from measurements of the
+ * povray binary (no source: bench/noise/probe_noise.py derives every
+ * table and constant from f_noise3d values that povray prints, and
+ * tests/test_noise.c checks thousands of recorded values).
+ *
+ * The noise of the default noise_generator 2 is a lattice noise with a
+ * value and a gradient at every integer point c: at p, the sum over the
+ * eight corners of p's unit cell of w(x) w(y) w(z) (v(c) + g(c) . (p - c)),
+ * where w is the cubic Hermite weight 3t^2 - 2t^3 of the distance along
+ * each axis (t for the far corner, 1 - t for the near one).  (v, g) is
+ * entry h & 255 of a 256-entry table, h = T[T[T[x'] ^ y'] ^ z'] with T a
+ * permutation of 0..4095 and x' = (x + K) & 4095.  The probe found T, K
+ * and the table; they live in bench/noise/noise_tables.h, which the
+ * probe writes.  The values come out in about [0.1, 0.9], as povray's do
+ * (the manual calls generator 2 "range corrected").  noise_generator 1
+ * ("the noise that was used in POV-Ray 3.1") is the same noise mapped by
+ * a + b n and clamped to [0, 1] (a and b measured by the same probe).
+ *
+ * Turbulence's vector noise has three components of the same form and
+ * hash, each with its own table (step 6 of the probe): a point moves by
+ * the turbulence vector times the sum over octaves i of omega^i
+ * D(lambda^i p), which the probe's turbulence samples match to 1e-11.
+ */
+#include "scene/noise.h"
+
+#include <math.h>
+#include <stdint.h>
+
+#include "../../bench/noise/noise_tables.h"
+
+static double smooth(double t) { return t * t * (3 - 2 * t); }
+
+unsigned zr__noise_hash(int64_t x, int64_t y, int64_t z, int offset) {
+  unsigned a = (unsigned)((x + offset) & 4095);
+  unsigned b = (unsigned)((y + offset) & 4095);
+  unsigned c = (unsigned)((z + offset) & 4095);
+  return noise_hash[noise_hash[noise_hash[a] ^ b] ^ c];
+}
+
+static unsigned lattice_hash(int64_t x, int64_t y, int64_t z) {
+  return zr__noise_hash(x, y, z, NOISE_HASH_OFFSET) & 255u;
+}
+
+/* The blend of step 1 of the probe for n_tables tables at once: out[m]
+   is the noise of tables[m]. */
+static void blend(zr_vec3 p, const double (*const *tables)[4], int n_tables,
+                  double *out) {
+  double fx = floor(p.x), fy = floor(p.y), fz = floor(p.z);
+  int64_t ix = (int64_t)fx, iy = (int64_t)fy, iz = (int64_t)fz;
+  double t[3] = {p.x - fx, p.y - fy, p.z - fz};
+  double w[3][2];
+  for (int a = 0; a < 3; a++) {
+    w[a][1] = smooth(t[a]);
+    w[a][0] = 1 - w[a][1];
+  }
+  for (int m = 0; m < n_tables; m++)
+    out[m] = 0;
+  for (int i = 0; i < 2; i++)
+    for (int j = 0; j < 2; j++)
+      for (int k = 0; k < 2; k++) {
+        unsigned h = lattice_hash(ix + i, iy + j, iz + k);
+        double wc = w[0][i] * w[1][j] * w[2][k];
+        double dx = t[0] - i, dy = t[1] - j, dz = t[2] - k;
+        for (int m = 0; m < n_tables; m++) {
+          const double *e = tables[m][h];
+          out[m] += wc * (e[0] + e[1] * dx + e[2] * dy + e[3] * dz);
+        }
+      }
+}
+
+double zr__noise_lattice(zr_vec3 p) {
+  const double (*tables[1])[4] = {noise_lattice};
+  double n;
+  blend(p, tables, 1, &n);
+  return n;
+}
+
+zr_vec3 zr__dnoise_lattice(zr_vec3 p) {
+  const double (*tables[3])[4] = {dnoise_lattice[0], dnoise_lattice[1],
+                                  dnoise_lattice[2]};
+  double d[3];
+  blend(p, tables, 3, d);
+  return zr_v3(d[0], d[1], d[2]);
+}
+
+double zr__noise_generator(zr_vec3 p, int generator) {
+  double n = zr__noise_lattice(p);
+  if (generator == 1) {
+    n = NOISE_GEN1_A + NOISE_GEN1_B * n;
+    return n < 0 ? 0 : n > 1 ? 1 : n;
+  }
+  return n;
+}

@@ -1,0 +1,22 @@
+/*
+ * noise.h - POV-Ray 3.7's noise functions, measured (see noise.c).
+ */
+#ifndef ZR_SCENE_NOISE_H
+#define ZR_SCENE_NOISE_H
+
+#include <stdint.h>
+
+#include "core/vec.h"
+
+/* The noise of noise_generator 2 (POV-Ray's default) at p, in about
+   [0.1, 0.9]: what f_noise3d and the bozo pattern give. */
+double zr__noise_lattice(zr_vec3 p);
+/* The 12-bit lattice hash of the cell (x, y, z) with the coordinates
+   moved by offset (the noise's and crackle's differ). */
+unsigned zr__noise_hash(int64_t x, int64_t y, int64_t z, int offset);
+/* Turbulence's vector noise at p, each component in about [-1, 1]. */
+zr_vec3 zr__dnoise_lattice(zr_vec3 p);
+/* The noise of generator 1 or 2 (any other number: 2). */
+double zr__noise_generator(zr_vec3 p, int generator);
+
+#endif /* ZR_SCENE_NOISE_H */

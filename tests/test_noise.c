@@ -1,0 +1,166 @@
+/*
+ * test_noise.c - rand() and the noise functions against values recorded
+ * from POV-Ray 3.7 by the probe scripts in bench/noise/ (the data files
+ * in tests/noise/ are their output; rerunning a script rewrites its file
+ * byte for byte).  Every line of a data file is one probe: its inputs and
+ * the value POV-Ray printed with str(v, 0, 20).
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "scene/noise.h"
+#include "scene/pattern.h"
+#include "sdl/sdl.h"
+#include "test_util.h"
+
+/* Opens tests/noise/name in the source tree (ZR_SRCDIR, set by make
+   check, or the current folder). */
+static FILE *open_data(const char *name) {
+  const char *dir = getenv("ZR_SRCDIR");
+  char path[4096];
+  snprintf(path, sizeof path, "%s/tests/noise/%s", dir ? dir : ".", name);
+  FILE *f = fopen(path, "r");
+  if (!f)
+    fail_msg("cannot open %s", path);
+  return f;
+}
+
+/* Every value of 16 streams, 40 steps each.  The values are k / (2^32 -
+   1) printed with 20 decimals, so 1e-15 allows only printing rounding. */
+static void test_noise_rand_streams(void **state) {
+  (void)state;
+  FILE *f = open_data("rand.txt");
+  char line[256];
+  unsigned long long s = 0;
+  double last_seed = NAN;
+  int n = 0;
+  while (fgets(line, sizeof line, f)) {
+    double seed, value;
+    int step;
+    if (line[0] == '#' || sscanf(line, "%lf %d %lf", &seed, &step,
+                                 &value) != 3)
+      continue;
+    if (step == 0 || seed != last_seed)
+      s = zr__sdl_seed_state(seed);
+    last_seed = seed;
+    assert_near(zr__sdl_rand_step(&s), value, 1e-15);
+    n++;
+  }
+  fclose(f);
+  assert_int_equal(n, 640);
+}
+
+/* zRcube's value for one case of bench/noise/probe_patterns.py. */
+static double case_value(const char *name, zr_vec3 p) {
+  if (strcmp(name, "noise") == 0)
+    return zr__noise(p);
+  if (strcmp(name, "noise1") == 0)
+    return zr__noise_gen(p, 1);
+  static const struct {
+    const char *name;
+    zr_pattern_kind kind;
+    int generator;
+  } kinds[] = {
+      {"bozo", ZR_PAT_BOZO, 0},         {"bozo1", ZR_PAT_BOZO, 1},
+      {"spotted", ZR_PAT_SPOTTED, 0},   {"bumps", ZR_PAT_BUMPS, 0},
+      {"dents", ZR_PAT_DENTS, 0},       {"dents1", ZR_PAT_DENTS, 1},
+      {"wrinkles", ZR_PAT_WRINKLES, 0}, {"granite", ZR_PAT_GRANITE, 0},
+      {"agate", ZR_PAT_AGATE, 0},       {"agate04", ZR_PAT_AGATE, 0},
+      {"turbx", ZR_PAT_GRADIENT, 0},    {"turby", ZR_PAT_GRADIENT, 0},
+      {"turbz", ZR_PAT_GRADIENT, 0},    {"bozoturb", ZR_PAT_BOZO, 0},
+      {"crackle", ZR_PAT_CRACKLE, 0},   {"crackle100", ZR_PAT_CRACKLE, 0},
+      {"crackle011", ZR_PAT_CRACKLE, 0}, {"crackle_m1", ZR_PAT_CRACKLE, 0},
+      {"crackle_m3", ZR_PAT_CRACKLE, 0}, {"crackle_off", ZR_PAT_CRACKLE, 0},
+      {"crackle_solid", ZR_PAT_CRACKLE, 0},
+  };
+  for (size_t i = 0; i < sizeof kinds / sizeof kinds[0]; i++) {
+    if (strcmp(name, kinds[i].name) != 0)
+      continue;
+    zr_pattern pt;
+    zr__pattern_init(&pt, kinds[i].kind);
+    pt.noise_generator = kinds[i].generator;
+    if (strcmp(name, "agate04") == 0)
+      pt.agate_turb = 0.4;
+    if (strcmp(name, "turbx") == 0) {
+      pt.turbulence = zr_v3(0.3, 0.3, 0.3);
+    } else if (strcmp(name, "turby") == 0) {
+      pt.vector = zr_v3(0, 1, 0);
+      pt.turbulence = zr_v3(0.2, 0.4, 0.1);
+      pt.octaves = 3;
+      pt.omega = 0.7;
+      pt.lambda = 2.5;
+    } else if (strcmp(name, "turbz") == 0) {
+      pt.vector = zr_v3(0, 0, 1);
+      pt.turbulence = zr_v3(0.25, 0.25, 0.25);
+      pt.octaves = 8;
+    } else if (strcmp(name, "bozoturb") == 0) {
+      pt.turbulence = zr_v3(0.5, 0.5, 0.5);
+    } else if (strcmp(name, "crackle100") == 0) {
+      pt.crackle_form = zr_v3(1, 0, 0);
+    } else if (strcmp(name, "crackle011") == 0) {
+      pt.crackle_form = zr_v3(0, 1, 1);
+    } else if (strcmp(name, "crackle_m1") == 0) {
+      pt.crackle_metric = 1;
+    } else if (strcmp(name, "crackle_m3") == 0) {
+      pt.crackle_metric = 3;
+    } else if (strcmp(name, "crackle_off") == 0) {
+      pt.crackle_offset = 0.5;
+    } else if (strcmp(name, "crackle_solid") == 0) {
+      pt.crackle_solid = true;
+    }
+    return zr__pattern_eval(&pt, p);
+  }
+  fail_msg("unknown case %s", name);
+  return 0;
+}
+
+/* Every recorded point of every case.  The formulas are POV-Ray's to
+   double rounding (1e-13 in the probes) but the tables hold values fitted
+   to 1e-12 and printed with 11 to 14 digits, and single-precision omega
+   and agate_turb follow the float's rounding: 1e-9 is far below anything
+   a picture shows and far above what the reconstruction leaves. */
+static void test_noise_patterns(void **state) {
+  (void)state;
+  FILE *f = open_data("patterns.txt");
+  char line[256], name[32], last_bad[32] = "";
+  int n = 0, bad = 0;
+  double worst = 0;
+  while (fgets(line, sizeof line, f)) {
+    double x, y, z, value;
+    if (line[0] == '#' ||
+        sscanf(line, "%31s %lf %lf %lf %lf", name, &x, &y, &z, &value) != 5)
+      continue;
+    double got = case_value(name, zr_v3(x, y, z));
+    double err = fabs(got - value);
+    if (!(err <= 1e-9)) {
+      if (strcmp(name, last_bad) != 0) /* the first of each case */
+        print_error("%s at <%g, %g, %g>: %.17g, POV-Ray %.17g\n", name, x,
+                    y, z, got, value);
+      snprintf(last_bad, sizeof last_bad, "%s", name);
+      bad++;
+    }
+    if (err > worst)
+      worst = err;
+    n++;
+  }
+  fclose(f);
+  print_message("%d points, largest difference %.3g\n", n, worst);
+  assert_int_equal(bad, 0);
+  assert_true(n > 8000);
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test(test_noise_rand_streams),
+      cmocka_unit_test(test_noise_patterns),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}
