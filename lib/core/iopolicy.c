@@ -233,12 +233,53 @@ static zr_status resolve_for_write(const char *path, char **resolved,
   return *resolved ? ZR_OK : ZR_ENOMEM;
 }
 
+/*
+ * Whether path is a symbolic link that POV-Ray's installation put in its
+ * include folder: Debian installs the TrueType fonts there as links into
+ * /usr/share/fonts.  A scene cannot make links and that folder is the
+ * system's, so what its links lead to is readable; links anywhere else
+ * (a scene's folder unpacked from an archive) are judged by their
+ * targets.
+ */
+static bool installed_link(const char *path) {
+  struct stat st;
+  if (lstat(path, &st) != 0 || !S_ISLNK(st.st_mode))
+    return false;
+  const char *slash = strrchr(path, '/');
+  if (!slash)
+    return false;
+  char *dir = slash == path ? strdup("/")
+                            : strndup(path, (size_t)(slash - path));
+  char *real_dir = dir ? realpath(dir, NULL) : NULL;
+  char *real_inc = realpath(ZR_POVRAY_INCLUDE_DIR, NULL);
+  bool yes = real_dir && real_inc && strcmp(real_dir, real_inc) == 0;
+  free(dir);
+  free(real_dir);
+  free(real_inc);
+  return yes;
+}
+
+static zr_status check(const zr_context *ctx, const char *path,
+                       const char *scene_dir, zr_io_access access,
+                       char **resolved, bool *existed, bool *trusted,
+                       char *why, size_t why_size);
+
 zr_status zr__io_check(const zr_context *ctx, const char *path,
                        const char *scene_dir, zr_io_access access,
                        char **resolved, bool *existed, char *why,
                        size_t why_size) {
+  bool trusted;
+  return check(ctx, path, scene_dir, access, resolved, existed, &trusted,
+               why, why_size);
+}
+
+static zr_status check(const zr_context *ctx, const char *path,
+                       const char *scene_dir, zr_io_access access,
+                       char **resolved, bool *existed, bool *trusted,
+                       char *why, size_t why_size) {
   *resolved = NULL;
   *existed = false;
+  *trusted = false;
   if (!path || !*path)
     return say(why, why_size, ZR_ENOTFOUND, "an empty file name");
   zr_status s;
@@ -257,8 +298,12 @@ zr_status zr__io_check(const zr_context *ctx, const char *path,
   } else {
     s = resolve_for_write(path, resolved, existed, why, why_size);
   }
-  if (s == ZR_OK && !permitted(ctx, *resolved, scene_dir, access))
-    s = refuse_outside(path, *resolved, access, why, why_size);
+  if (s == ZR_OK && !permitted(ctx, *resolved, scene_dir, access)) {
+    if (access == ZR_IO_ACCESS_READ && installed_link(path))
+      *trusted = true;
+    else
+      s = refuse_outside(path, *resolved, access, why, why_size);
+  }
   if (s != ZR_OK) {
     free(*resolved);
     *resolved = NULL;
@@ -335,9 +380,9 @@ zr_status zr__io_read_scene(zr_context *ctx, const char *path,
                             const char *scene_dir, char **bytes,
                             size_t *size, char *why, size_t why_size) {
   char *resolved;
-  bool existed;
-  zr_status s = zr__io_check(ctx, path, scene_dir, ZR_IO_ACCESS_READ,
-                             &resolved, &existed, why, why_size);
+  bool existed, trusted;
+  zr_status s = check(ctx, path, scene_dir, ZR_IO_ACCESS_READ, &resolved,
+                      &existed, &trusted, why, why_size);
   if (s != ZR_OK)
     return s;
   int fd = open(resolved, O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_NOCTTY |
@@ -348,7 +393,7 @@ zr_status zr__io_read_scene(zr_context *ctx, const char *path,
                ? say(why, why_size, ZR_EACCESS, "'%s' changed into a "
                      "symbolic link while being opened", path)
                : cannot(path, errno, why, why_size);
-  bool confined = !ctx || ctx->io_mode == ZR_IO_RESTRICTED;
+  bool confined = (!ctx || ctx->io_mode == ZR_IO_RESTRICTED) && !trusted;
   s = check_open(ctx, fd, path, scene_dir, ZR_IO_ACCESS_READ, confined, why,
                  why_size);
   if (s == ZR_OK)
