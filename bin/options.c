@@ -984,9 +984,6 @@ int zr__cli_output_path(const zr_cli_options *o, char **path,
   struct stat st;
   const char *out = o->output;
   size_t out_len = out ? strlen(out) : 0;
-  if (out && !strcmp(out, "-"))
-    return fail(&c, "cannot write the image to standard output ('-'): "
-                    "name a file");
   /* A device, FIFO or socket is never an image file: writing next to
      it under another name would surprise as much as writing into it. */
   if (out && stat(out, &st) == 0 && !S_ISDIR(st.st_mode) &&
@@ -1058,11 +1055,14 @@ const char *zr__cli_usage(void) {
       "  +I<file>, --input=FILE       the scene (or give it as an argument)\n"
       "  +O<file>, --output=FILE      the image: .png, .ppm or .pfm by its\n"
       "                               extension (default: SCENE.png here);\n"
-      "                               a directory puts SCENE.png in it\n"
+      "                               a directory puts SCENE.png in it, a\n"
+      "                               name without extension gets .png\n"
       "  +FN, +FN16, +FP              PNG (8 or 16 bit) or PPM output\n"
       "  -F                           render without writing an image\n"
       "  +W<n>, --width=N             image width in pixels (default 320)\n"
-      "  +H<n>, --height=N            image height in pixels (default 240)\n"
+      "  +H<n>, --height=N            image height in pixels (default 240);\n"
+      "                               at most 65535 a side and 2^27\n"
+      "                               (134217728) pixels in all\n"
       "  +A[t], --antialias[=T]       antialias, threshold T (default 0.3)\n"
       "  -A, --no-antialias           no antialiasing (default)\n"
       "  +R<n>, --aa-depth=N          n*n samples per antialiased pixel\n"
@@ -1082,6 +1082,13 @@ const char *zr__cli_usage(void) {
       "  --max-loop-iterations=N      stop a parse whose #while and #for\n"
       "                               loops repeat more than N times in\n"
       "                               all (default 100000000; 0: no limit)\n"
+      "  --read-path=DIR              let scenes read below DIR too\n"
+      "  --write-path=DIR             let scenes write below DIR too\n"
+      "  --io-restrictions=MODE       restricted (default: scenes read\n"
+      "                               below their folder, the working\n"
+      "                               directory and the include paths and\n"
+      "                               write below the working directory),\n"
+      "                               read-only or none\n"
       "  +D, -D, +P, -P               accepted and ignored (no display)\n"
       "\n"
       "Radiosity (hierarchical, on the exact surfaces; any of these turns\n"
