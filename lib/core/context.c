@@ -253,7 +253,7 @@ zr_status zr__context_read(zr_context *ctx, const char *path, char **bytes,
   char why[512];
   zr_status s = zr__io_read_named(path, bytes, size, why, sizeof why);
   if (s == ZR_EACCESS)
-    zr__diag(ctx, ZR_DIAG_ERROR, s, NULL, "%s", why);
+    zr__diag(ctx, ZR_DIAG_ERROR, s, NULL, "cannot read: %s", why);
   return observed(ctx, path, s, bytes, size);
 }
 
