@@ -68,7 +68,10 @@ typedef enum opt_key {
   K_RAD_STATS,
   K_RAD_SAVE,
   K_RAD_LOAD,
-  K_RAD_MESH
+  K_RAD_MESH,
+  K_READ_PATH,
+  K_WRITE_PATH,
+  K_IO_RESTRICTIONS
 } opt_key;
 
 /* Where the option being applied came from, for messages. */
@@ -118,6 +121,12 @@ void zr__cli_free(zr_cli_options *o) {
   for (size_t i = 0; i < o->n_include_paths; i++)
     free(o->include_paths[i]);
   free(o->include_paths);
+  for (size_t i = 0; i < o->n_read_paths; i++)
+    free(o->read_paths[i]);
+  free(o->read_paths);
+  for (size_t i = 0; i < o->n_write_paths; i++)
+    free(o->write_paths[i]);
+  free(o->write_paths);
   memset(o, 0, sizeof *o);
 }
 
@@ -196,6 +205,38 @@ static int add_include(const arg_ctx *c, const char *dir) {
   if (!paths[o->n_include_paths])
     return fail(c, "out of memory");
   o->n_include_paths++;
+  return 0;
+}
+
+/* --read-path and --write-path: kept as given; the library resolves
+   them (zr_context_add_read_path) on the rank that reads the files. */
+static int add_dir(const arg_ctx *c, char ***dirs, size_t *n,
+                   const char *dir) {
+  if (!*dir)
+    return fail(c, "'%s' needs a directory", c->what);
+  char **grown = realloc(*dirs, (*n + 1) * sizeof *grown);
+  if (!grown)
+    return fail(c, "out of memory");
+  *dirs = grown;
+  grown[*n] = strdup(dir);
+  if (!grown[*n])
+    return fail(c, "out of memory");
+  (*n)++;
+  return 0;
+}
+
+/* POV-Ray's [File I/O Security] words, and on/off. */
+static int set_io_restrictions(const arg_ctx *c, const char *value) {
+  zr_cli_options *o = c->o;
+  if (!strcasecmp(value, "restricted") || !strcasecmp(value, "on"))
+    o->io_mode = ZR_IO_RESTRICTED;
+  else if (!strcasecmp(value, "read-only"))
+    o->io_mode = ZR_IO_READ_ONLY;
+  else if (!strcasecmp(value, "none") || !strcasecmp(value, "off"))
+    o->io_mode = ZR_IO_NONE;
+  else
+    return fail(c, "'%s': the I/O restrictions are 'restricted' (or "
+                   "'on'), 'read-only' or 'none' (or 'off')", c->what);
   return 0;
 }
 
@@ -457,6 +498,12 @@ static int apply(const arg_ctx *c, opt_key key, const char *value) {
     return 0;
   case K_INCLUDE:
     return add_include(c, value);
+  case K_READ_PATH:
+    return add_dir(c, &o->read_paths, &o->n_read_paths, value);
+  case K_WRITE_PATH:
+    return add_dir(c, &o->write_paths, &o->n_write_paths, value);
+  case K_IO_RESTRICTIONS:
+    return set_io_restrictions(c, value);
   case K_VERBOSE:
     o->verbose = 1;
     o->quiet = 0;
@@ -637,6 +684,9 @@ static const long_option long_options[] = {
     {"radiosity-save", K_RAD_SAVE, L_REQUIRED},
     {"radiosity-load", K_RAD_LOAD, L_REQUIRED},
     {"radiosity-mesh", K_RAD_MESH, L_REQUIRED},
+    {"read-path", K_READ_PATH, L_REQUIRED},
+    {"write-path", K_WRITE_PATH, L_REQUIRED},
+    {"io-restrictions", K_IO_RESTRICTIONS, L_REQUIRED},
 };
 
 /* Returns how many extra arguments it used (0 or 1), or -1 on failure. */
@@ -707,6 +757,10 @@ static const ini_option ini_options[] = {
     {"Output_To_File", K_OUTPUT_ON, 1, K_OUTPUT_OFF},
     {"Output_File_Type", K_FORMAT, 0, K_FORMAT},
     {"Bits_Per_Color", K_BITS, 0, K_BITS},
+    /* zrcube's own keys for what POV-Ray sets in povray.conf. */
+    {"Read_Path", K_READ_PATH, 0, K_READ_PATH},
+    {"Write_Path", K_WRITE_PATH, 0, K_WRITE_PATH},
+    {"IO_Restrictions", K_IO_RESTRICTIONS, 0, K_IO_RESTRICTIONS},
 };
 
 /* arg is "Key=Value"; POV-Ray's keys are case-insensitive. */
@@ -892,6 +946,24 @@ static char *default_name(const char *dir, const char *input,
   return name;
 }
 
+/* path + ext, malloc'ed. */
+static char *with_extension(const char *path, const char *ext) {
+  size_t n = strlen(path) + strlen(ext) + 1;
+  char *name = malloc(n);
+  if (name)
+    snprintf(name, n, "%s%s", path, ext);
+  return name;
+}
+
+static const char *kind_of(mode_t mode) {
+  return S_ISDIR(mode)    ? "a directory"
+         : S_ISCHR(mode)  ? "a character device"
+         : S_ISBLK(mode)  ? "a block device"
+         : S_ISFIFO(mode) ? "a FIFO"
+         : S_ISSOCK(mode) ? "a socket"
+                          : "not a regular file";
+}
+
 static int same_file(const char *a, const char *b) {
   if (!strcmp(a, b))
     return 1;
@@ -912,6 +984,12 @@ int zr__cli_output_path(const zr_cli_options *o, char **path,
   struct stat st;
   const char *out = o->output;
   size_t out_len = out ? strlen(out) : 0;
+  /* A device, FIFO or socket is never an image file: writing next to
+     it under another name would surprise as much as writing into it. */
+  if (out && stat(out, &st) == 0 && !S_ISDIR(st.st_mode) &&
+      !S_ISREG(st.st_mode))
+    return fail(&c, "cannot write the image to '%s': it is %s, not a "
+                    "regular file or a directory", out, kind_of(st.st_mode));
   if (!out || (out_len > 0 && out[out_len - 1] == '/') ||
       (stat(out, &st) == 0 && S_ISDIR(st.st_mode))) {
     /* POV-Ray: no name, or a directory, means the scene's base name. */
@@ -930,11 +1008,18 @@ int zr__cli_output_path(const zr_cli_options *o, char **path,
                       "+FP)", out);
     if (fmt == ZR_FORMAT_AUTO)
       fmt = by_name == ZR_FORMAT_AUTO ? ZR_FORMAT_PNG8 : by_name;
-    /* As POV-Ray does, a name without an extension gets the type's. */
-    name = *ext ? strdup(out) : default_name(NULL, out, format_extension(fmt));
+    /* As POV-Ray does, a name without an extension gets the type's, in
+       the folder the name gives (+Odir/abc writes dir/abc.png). */
+    name = *ext ? strdup(out) : with_extension(out, format_extension(fmt));
   }
   if (!name)
     return fail(&c, "out of memory");
+  if (stat(name, &st) == 0 && !S_ISREG(st.st_mode)) {
+    fail(&c, "cannot write the image to '%s': it is %s, not a regular "
+             "file", name, kind_of(st.st_mode));
+    free(name);
+    return -1;
+  }
   if (same_file(name, o->input)) {
     fail(&c, "refusing to overwrite the scene file '%s' with the image",
          o->input);
@@ -943,6 +1028,18 @@ int zr__cli_output_path(const zr_cli_options *o, char **path,
   }
   *path = name;
   *format = fmt;
+  return 0;
+}
+
+int zr__cli_check_size(const zr_cli_options *o, char *err,
+                       size_t err_size) {
+  arg_ctx c = {(zr_cli_options *)o, err, err_size, "", ""};
+  unsigned long long w = (unsigned long long)o->params.width;
+  unsigned long long h = (unsigned long long)o->params.height;
+  if (w * h > (unsigned long long)ZR_IMAGE_MAX_PIXELS)
+    return fail(&c, "an image of %llux%llu is %llu pixels, more than the "
+                    "limit of %llu (2^27) pixels; make +W or +H smaller",
+                w, h, w * h, (unsigned long long)ZR_IMAGE_MAX_PIXELS);
   return 0;
 }
 
@@ -958,11 +1055,14 @@ const char *zr__cli_usage(void) {
       "  +I<file>, --input=FILE       the scene (or give it as an argument)\n"
       "  +O<file>, --output=FILE      the image: .png, .ppm or .pfm by its\n"
       "                               extension (default: SCENE.png here);\n"
-      "                               a directory puts SCENE.png in it\n"
+      "                               a directory puts SCENE.png in it, a\n"
+      "                               name without extension gets .png\n"
       "  +FN, +FN16, +FP              PNG (8 or 16 bit) or PPM output\n"
       "  -F                           render without writing an image\n"
       "  +W<n>, --width=N             image width in pixels (default 320)\n"
-      "  +H<n>, --height=N            image height in pixels (default 240)\n"
+      "  +H<n>, --height=N            image height in pixels (default 240);\n"
+      "                               at most 65535 a side and 2^27\n"
+      "                               (134217728) pixels in all\n"
       "  +A[t], --antialias[=T]       antialias, threshold T (default 0.3)\n"
       "  -A, --no-antialias           no antialiasing (default)\n"
       "  +R<n>, --aa-depth=N          n*n samples per antialiased pixel\n"
@@ -982,6 +1082,13 @@ const char *zr__cli_usage(void) {
       "  --max-loop-iterations=N      stop a parse whose #while and #for\n"
       "                               loops repeat more than N times in\n"
       "                               all (default 100000000; 0: no limit)\n"
+      "  --read-path=DIR              let scenes read below DIR too\n"
+      "  --write-path=DIR             let scenes write below DIR too\n"
+      "  --io-restrictions=MODE       restricted (default: scenes read\n"
+      "                               below their folder, the working\n"
+      "                               directory and the include paths and\n"
+      "                               write below the working directory),\n"
+      "                               read-only or none\n"
       "  +D, -D, +P, -P               accepted and ignored (no display)\n"
       "\n"
       "Radiosity (hierarchical, on the exact surfaces; any of these turns\n"

@@ -44,6 +44,12 @@ typedef struct zr_cli_options {
   char *rad_save;         /* --radiosity-save=FILE, NULL when not given */
   char *rad_load;         /* --radiosity-load=FILE, NULL when not given */
   char *rad_mesh;         /* --radiosity-mesh=FILE, NULL when not given */
+  /* I/O restrictions (zrcube(1), "I/O restrictions"). */
+  zr_io_restrictions io_mode; /* --io-restrictions, default restricted */
+  char **read_paths;      /* --read-path, as given */
+  size_t n_read_paths;
+  char **write_paths;     /* --write-path, as given */
+  size_t n_write_paths;
 } zr_cli_options;
 
 /*
@@ -89,6 +95,13 @@ int zr__cli_parse(zr_cli_options *o, int argc, char **argv, char *err,
 int zr__cli_output_path(const zr_cli_options *o, char **path,
                         zr_image_format *format, char *err,
                         size_t err_size);
+
+/*
+ * Checks the image size against the library's limit,
+ * ZR_IMAGE_MAX_PIXELS (2^27) pixels in all, before any parsing: -1 with
+ * a message giving the numbers in err when it is too large.
+ */
+int zr__cli_check_size(const zr_cli_options *o, char *err, size_t err_size);
 
 /* The --help text. */
 const char *zr__cli_usage(void);

@@ -29,6 +29,7 @@
 #include "config.h"
 
 #include <errno.h>
+#include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -119,26 +120,74 @@ static int find_scene(zr_cli_options *o) {
 }
 
 /*
- * Fails early, before a long render, when the image could not be written
- * for want of its directory.  Returns 0, or -1 after printing why.
+ * Fails early, before a long parse and render, when a file the run will
+ * write (the image, a radiosity save or mesh) could not be written: the
+ * library writes a new file beside the target and renames it over the
+ * target (lib/core/iopolicy.c), so this creates and removes such a file
+ * in the same folder, and refuses a target that exists and is not a
+ * writable regular file (a symbolic link is judged by its file).
+ * Returns 0, or -1 after printing why.  Nothing the user has is touched.
  */
-static int check_output_dir(const char *path) {
-  const char *slash = strrchr(path, '/');
-  char *dir = !slash         ? strdup(".")
-              : slash == path ? strdup("/")
-                              : strndup(path, (size_t)(slash - path));
-  if (!dir) {
+static int check_writable(const char *what, const char *path) {
+  struct stat st;
+  char *target = NULL;
+  if (lstat(path, &st) == 0 && S_ISLNK(st.st_mode))
+    target = realpath(path, NULL); /* NULL: a link to nothing yet */
+  if (!target)
+    target = strdup(path);
+  if (!target) {
     fprintf(stderr, "zrcube: out of memory\n");
     return -1;
   }
   int rc = 0;
-  if (access(dir, W_OK) != 0) {
-    fprintf(stderr, "zrcube: cannot write '%s': directory '%s': %s\n", path,
-            dir, strerror(errno));
+  if (stat(target, &st) == 0) {
+    if (!S_ISREG(st.st_mode)) {
+      fprintf(stderr, "zrcube: cannot write the %s to '%s': it is not a "
+                      "regular file\n", what, path);
+      rc = -1;
+    } else if (access(target, W_OK) != 0) {
+      fprintf(stderr, "zrcube: cannot write the %s to '%s': %s\n", what,
+              path, strerror(errno));
+      rc = -1;
+    }
+  }
+  size_t n = strlen(target) + 64;
+  char *probe = rc == 0 ? malloc(n) : NULL;
+  if (probe) {
+    snprintf(probe, n, "%s.%ld.probe.tmp", target, (long)getpid());
+    int fd = open(probe, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW, 0600);
+    if (fd < 0) {
+      const char *slash = strrchr(target, '/');
+      fprintf(stderr, "zrcube: cannot write the %s to '%s': cannot create "
+                      "a file in %s%.*s%s: %s\n", what, path,
+              slash ? "'" : "the working directory",
+              slash ? (int)(slash - target + (slash == target)) : 0,
+              target, slash ? "'" : "", strerror(errno));
+      rc = -1;
+    } else {
+      close(fd);
+      unlink(probe);
+    }
+  } else if (rc == 0) {
+    fprintf(stderr, "zrcube: out of memory\n");
     rc = -1;
   }
-  free(dir);
+  free(probe);
+  free(target);
   return rc;
+}
+
+/* Every file the run will write, checked before the scene is read. */
+static int check_outputs(const zr_cli_options *o, const char *image) {
+  if (o->parse_only)
+    return 0;
+  if (o->write_output && check_writable("image", image))
+    return -1;
+  if (o->rad_save && check_writable("radiosity solution", o->rad_save))
+    return -1;
+  if (o->rad_mesh && check_writable("radiosity mesh", o->rad_mesh))
+    return -1;
+  return 0;
 }
 
 typedef struct run {
@@ -200,8 +249,11 @@ static int read_command_line(run *r, int argc, char **argv) {
                                    err, sizeof err) < 0) {
       fprintf(stderr, "%s\n", err);
       usage = 1;
-    } else if (r->opts.write_output && !r->opts.parse_only &&
-               check_output_dir(r->output_path)) {
+    } else if (!r->opts.parse_only &&
+               zr__cli_check_size(&r->opts, err, sizeof err) < 0) {
+      fprintf(stderr, "%s\n", err);
+      usage = 1;
+    } else if (check_outputs(&r->opts, r->output_path)) {
       unusable = 1;
     }
   }
@@ -232,6 +284,37 @@ static int read_command_line(run *r, int argc, char **argv) {
   return -1;
 }
 
+/*
+ * The I/O restrictions of the command line.  The folders matter where
+ * files are read, on rank 0 (the other ranks read rank 0's files from
+ * memory), so only rank 0 stops on a folder that is not there; the
+ * others add the folders they have, for the files #fopen writes.
+ */
+static zr_status add_folders(run *r, char **dirs, size_t n, int write) {
+  for (size_t i = 0; i < n; i++) {
+    zr_status s = write ? zr_context_add_write_path(r->ctx, dirs[i])
+                        : zr_context_add_read_path(r->ctx, dirs[i]);
+    if (s == ZR_OK || r->rank != 0)
+      continue;
+    fprintf(stderr, "zrcube: --%s-path '%s': %s\n",
+            write ? "write" : "read", dirs[i],
+            s == ZR_ENOTFOUND ? "no such directory"
+            : s == ZR_EINVAL  ? "not a directory"
+                              : zr_status_str(s));
+    return s;
+  }
+  return ZR_OK;
+}
+
+static zr_status set_io_restrictions(run *r) {
+  zr_status s = zr_context_set_io_restrictions(r->ctx, r->opts.io_mode);
+  if (s == ZR_OK)
+    s = add_folders(r, r->opts.read_paths, r->opts.n_read_paths, 0);
+  if (s == ZR_OK)
+    s = add_folders(r, r->opts.write_paths, r->opts.n_write_paths, 1);
+  return s;
+}
+
 static zr_status make_context(run *r) {
   zr_status s = zr_context_new(&r->ctx);
   if (s != ZR_OK)
@@ -251,6 +334,8 @@ static zr_status make_context(run *r) {
      files as rank 0 asked the disk. */
   if (s == ZR_OK)
     s = zr_context_add_include_path(r->ctx, ZR_POVRAY_INCLUDE_DIR);
+  if (s == ZR_OK)
+    s = set_io_restrictions(r);
   return s;
 }
 
@@ -261,7 +346,10 @@ static int read_scene(run *r) {
   zr__bundle_init(&r->bundle);
   double start = zr__par_now();
   if (r->rank == 0 && local == ZR_OK) {
-    zr_context_set_reader(r->ctx, zr__bundle_record_reader, &r->bundle);
+    /* Rank 0 reads with the library's own reader, which applies the
+       I/O restrictions, and records what it read for the others. */
+    zr_context_set_read_observer(r->ctx, zr__bundle_record_observer,
+                                 &r->bundle);
     root = zr_scene_parse_file(r->ctx, r->opts.input, &r->scene);
     if (root != ZR_OK && r->diag.errors_printed == 0)
       fprintf(stderr, "zrcube: cannot read scene '%s': %s\n",

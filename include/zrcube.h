@@ -57,7 +57,8 @@ extern "C" {
   X(ESCENE, -10, "invalid scene")                                          \
   X(EMPI, -11, "message passing error")                                    \
   X(ETHREAD, -12, "thread error")                                          \
-  X(EEXIST, -13, "file exists")
+  X(EEXIST, -13, "file exists")                                           \
+  X(EACCESS, -14, "file refused by the I/O restrictions")
 
 typedef enum zr_status {
 #define ZR_STATUS_ENUM_(name, value, text) ZR_##name = value,
@@ -136,6 +137,61 @@ ZR_API zr_status zr_context_set_render_size(zr_context *ctx, int width,
 #define ZR_DEFAULT_LOOP_LIMIT 100000000ULL
 ZR_API void zr_context_set_loop_limit(zr_context *ctx,
                                       unsigned long long iterations);
+/*
+ * I/O restrictions: which files a scene may open.  They apply to every
+ * file a scene names (#include, #fopen and #read/#write, image_map,
+ * bump_map, material_map and height_field images, density_file, text
+ * fonts, file_exists()), after POV-Ray's [File I/O Security] settings
+ * of the same names:
+ *   ZR_IO_RESTRICTED (the default): a scene reads only files below the
+ *     main scene file's folder, the working directory, the include
+ *     paths, POV-Ray's include folder and the folders added with
+ *     zr_context_add_read_path() or zr_context_add_write_path(); it
+ *     writes only below the working directory and the write paths;
+ *   ZR_IO_READ_ONLY: reads anywhere, writes as above;
+ *   ZR_IO_NONE: no folder is checked.
+ * A path is judged after its symbolic links are resolved, and the file
+ * opened is checked again once open.  Whatever the setting, only regular
+ * files are read or written: devices, FIFOs, sockets and directories are
+ * refused by name.  A refused file is never read, so no message shows
+ * its contents; the scene stops with ZR_EACCESS at the name's location.
+ * Files the caller names (zr_scene_parse_file, zr_image_read,
+ * zr_image_write, zr_radiosity_save and _load) are not confined to these
+ * folders, but must be regular files too.  A reader set with
+ * zr_context_set_reader() takes the place of the disk, and what it
+ * serves is its own business: the restrictions guard the library's own
+ * reading.
+ */
+typedef enum zr_io_restrictions {
+  ZR_IO_RESTRICTED = 0,
+  ZR_IO_READ_ONLY = 1,
+  ZR_IO_NONE = 2
+} zr_io_restrictions;
+
+/* ZR_EINVAL for a value outside the enumeration. */
+ZR_API zr_status zr_context_set_io_restrictions(zr_context *ctx,
+                                                zr_io_restrictions mode);
+/*
+ * Adds a folder (and everything below it) where scenes may read, or read
+ * and write.  A relative name is taken from the working directory now,
+ * and symbolic links are resolved now.  ZR_ENOTFOUND when dir does not
+ * exist, ZR_EINVAL when it is not a directory.
+ */
+ZR_API zr_status zr_context_add_read_path(zr_context *ctx, const char *dir);
+ZR_API zr_status zr_context_add_write_path(zr_context *ctx, const char *dir);
+
+/*
+ * Called with every file the library's own reader reads (not a reader
+ * set with zr_context_set_reader()), under the name the parser asked
+ * for: a parallel program records the files to serve them to its other
+ * processes.  A status other than ZR_OK fails the read with it.
+ */
+typedef zr_status (*zr_read_observer_fn)(const char *path,
+                                         const char *bytes, size_t size,
+                                         void *user);
+ZR_API void zr_context_set_read_observer(zr_context *ctx,
+                                         zr_read_observer_fn fn, void *user);
+
 /* The message of the last error reported through ctx ("" when none). */
 ZR_API const char *zr_context_last_error(const zr_context *ctx);
 
@@ -284,6 +340,15 @@ ZR_API zr_status zr_radiosity_load(zr_context *ctx, const zr_scene *scene,
 /* ------------------------------------------------------------------ */
 /* Rendering                                                          */
 /* ------------------------------------------------------------------ */
+
+/*
+ * The largest image zr_image_new() makes, and so the largest render and
+ * the largest image file read: at most ZR_IMAGE_MAX_SIDE pixels a side
+ * and ZR_IMAGE_MAX_PIXELS (2^27 = 134217728) pixels in all, 1.5 GiB of
+ * floats.
+ */
+#define ZR_IMAGE_MAX_SIDE 65536
+#define ZR_IMAGE_MAX_PIXELS ((size_t)1 << 27)
 
 typedef struct zr_render_params {
   int width;            /* pixels; default 320 */

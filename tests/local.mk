@@ -90,3 +90,14 @@ tests_test_image_formats_SOURCES = tests/test_image_formats.c
 tests_test_image_formats_CPPFLAGS = $(TEST_CPPFLAGS)
 tests_test_image_formats_LDADD = $(TEST_LDADD) $(PNG_LIBS) $(JPEG_LIBS)
 tests_test_image_formats_LDFLAGS = -static
+
+# The I/O restrictions (issue 10): the path rules of lib/core/iopolicy.c,
+# and end to end the output name, devices, links, the checks before
+# parsing and every file a scene opens.
+check_PROGRAMS += tests/test_iopolicy
+TESTS += tests/test_iopolicy tests/test_iopolicy.sh
+tests_test_iopolicy_SOURCES = tests/test_iopolicy.c
+tests_test_iopolicy_CPPFLAGS = $(TEST_CPPFLAGS)
+tests_test_iopolicy_LDADD = $(TEST_LDADD)
+tests_test_iopolicy_LDFLAGS = -static
+EXTRA_DIST += tests/test_iopolicy.sh

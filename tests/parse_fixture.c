@@ -52,6 +52,13 @@ int setup(void **state) {
   assert_non_null(f);
   assert_int_equal(zr_context_new(&f->ctx), ZR_OK);
   zr_context_set_diag(f->ctx, on_diag, &f->diag);
+  /* The tests write image and font files in /tmp (or $TMPDIR) and name
+     them by absolute path; a string scene has no folder of its own, so
+     the I/O restrictions would refuse them. */
+  const char *tmp = getenv("TMPDIR");
+  assert_int_equal(zr_context_add_read_path(f->ctx, "/tmp"), ZR_OK);
+  if (tmp && *tmp)
+    assert_int_equal(zr_context_add_read_path(f->ctx, tmp), ZR_OK);
   *state = f;
   return 0;
 }

@@ -148,8 +148,8 @@ expect overwrite \
 same scene.keep scene.pov
 # A directory that is not there fails before the render, not after.
 serial nodir 1 "$ZRCUBE" scene.pov +Linc $SIZE +Ono_such_dir/x.png
-expect nodir "zrcube: cannot write 'no_such_dir/x.png': directory \
-'no_such_dir': No such file or directory"
+expect nodir "zrcube: cannot write the image to 'no_such_dir/x.png': \
+cannot create a file in 'no_such_dir': No such file or directory"
 serial verbose 0 "$ZRCUBE" scene.pov +Linc $SIZE +V -F
 expect verbose "zrcube: rays: camera 3072,"
 # Statistics are summed over the ranks and printed by rank 0.

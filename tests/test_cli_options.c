@@ -318,6 +318,22 @@ static void test_cli_options_output_names(void **state) {
   assert_string_equal(path, "/tmp/s.png");
   free(path);
 
+  /* POV-Ray's rule: the extension is appended in the folder named
+     (issue 10: this wrote ./abc.png over the user's file). */
+  assert_int_equal(OUTPUT(&path, &fmt, err, "s.pov", "+Ooutdir/abc"), 0);
+  assert_string_equal(path, "outdir/abc.png");
+  free(path);
+  assert_int_equal(OUTPUT(&path, &fmt, err, "s.pov", "+O/x/y/abc", "+FP"),
+                   0);
+  assert_string_equal(path, "/x/y/abc.ppm");
+  free(path);
+  /* Devices are refused by name, not renamed next to. */
+  assert_int_equal(OUTPUT(&path, &fmt, err, "s.pov", "+O/dev/full"), -1);
+  assert_string_equal(err, "zrcube: cannot write the image to '/dev/full': "
+                           "it is a character device, not a regular file "
+                           "or a directory");
+  assert_null(path);
+
   assert_int_equal(OUTPUT(&path, &fmt, err, "s.pov", "+Oimage.tga"), -1);
   assert_string_equal(err, "zrcube: cannot write 'image.tga': the output "
                            "name must end in .png, .ppm or .pfm (or give "
@@ -360,8 +376,61 @@ static void test_cli_options_never_overwrite_scene(void **state) {
   rmdir(dir);
 }
 
+/* The image size against the library's limit, with its numbers. */
+static void test_cli_options_image_limit(void **state) {
+  (void)state;
+  zr_cli_options o;
+  char err[512];
+  assert_int_equal(PARSE(&o, err, "s.pov", "+W16384", "+H8192"), 0);
+  assert_int_equal(zr__cli_check_size(&o, err, sizeof err), 0);
+  zr__cli_free(&o);
+  assert_int_equal(PARSE(&o, err, "s.pov", "+W16384", "+H8193"), 0);
+  assert_int_equal(zr__cli_check_size(&o, err, sizeof err), -1);
+  assert_string_equal(err, "zrcube: an image of 16384x8193 is 134234112 "
+                           "pixels, more than the limit of 134217728 "
+                           "(2^27) pixels; make +W or +H smaller");
+  zr__cli_free(&o);
+  assert_int_equal(PARSE(&o, err, "s.pov", "+W65535", "+H65535"), 0);
+  assert_int_equal(zr__cli_check_size(&o, err, sizeof err), -1);
+  zr__cli_free(&o);
+}
+
+/* --read-path, --write-path, --io-restrictions and their INI keys. */
+static void test_cli_options_io_restrictions(void **state) {
+  (void)state;
+  zr_cli_options o;
+  char err[512];
+  assert_int_equal(PARSE(&o, err, "s.pov"), 0);
+  assert_int_equal(o.io_mode, ZR_IO_RESTRICTED);
+  zr__cli_free(&o);
+  assert_int_equal(PARSE(&o, err, "s.pov", "--read-path=a", "--read-path",
+                         "b", "Write_Path=c", "--io-restrictions=read-only"),
+                   0);
+  assert_int_equal(o.n_read_paths, 2);
+  assert_string_equal(o.read_paths[0], "a");
+  assert_string_equal(o.read_paths[1], "b");
+  assert_int_equal(o.n_write_paths, 1);
+  assert_string_equal(o.write_paths[0], "c");
+  assert_int_equal(o.io_mode, ZR_IO_READ_ONLY);
+  zr__cli_free(&o);
+  assert_int_equal(PARSE(&o, err, "s.pov", "IO_Restrictions=none"), 0);
+  assert_int_equal(o.io_mode, ZR_IO_NONE);
+  zr__cli_free(&o);
+  assert_int_equal(PARSE(&o, err, "s.pov", "--io-restrictions=off",
+                         "--io-restrictions=on"), 0);
+  assert_int_equal(o.io_mode, ZR_IO_RESTRICTED);
+  zr__cli_free(&o);
+  EXPECT_ERROR("zrcube: '--io-restrictions=maybe': the I/O restrictions "
+               "are 'restricted' (or 'on'), 'read-only' or 'none' (or "
+               "'off')", "s.pov", "--io-restrictions=maybe");
+  EXPECT_ERROR("zrcube: '--read-path=' needs a directory", "s.pov",
+               "--read-path=");
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
+      cmocka_unit_test(test_cli_options_image_limit),
+      cmocka_unit_test(test_cli_options_io_restrictions),
       cmocka_unit_test(test_cli_options_defaults),
       cmocka_unit_test(test_cli_options_povray_switches),
       cmocka_unit_test(test_cli_options_switches_turn_off),

@@ -580,15 +580,20 @@ static void test_directives_file_io(void **state) {
   fclose(file);
   remove("zr_test_fileio.txt");
   assert_string_equal(line, "1,-123.45,<1,2,-3> ,0.333333,\"str\"\n");
-  bad(f, "#fopen F \"/tmp/x.txt\" write\n", ZR_EINVAL,
-      "'#fopen' may write only below the working directory, not "
-      "'/tmp/x.txt'", NULL);
-  bad(f, "#fopen F \"../x.txt\" append\n", ZR_EINVAL,
-      "'#fopen' may write only below the working directory, not "
-      "'../x.txt'", NULL);
-  bad(f, "#fopen F \"/etc/passwd\" read\n", ZR_EINVAL,
-      "'#fopen' may read only next to the scene or in the include paths, "
-      "not '/etc/passwd'", NULL);
+  /* The I/O restrictions (tests/test_iopolicy.c has the rest). */
+  bad(f, "#fopen F \"/etc/x.txt\" write\n", ZR_EACCESS,
+      "'#fopen' cannot open a file for writing: '/etc/x.txt' is outside "
+      "the folders a scene may write (the working directory and the write "
+      "paths)", NULL);
+  assert_int_equal(parse(f, "#fopen F \"../x.txt\" append\n"),
+                   ZR_EACCESS);
+  assert_non_null(strstr(f->diag.message, "'../x.txt' leads to '"));
+  assert_non_null(strstr(f->diag.message, "/x.txt', outside the folders "
+                                          "a scene may write"));
+  bad(f, "#fopen F \"/etc/passwd\" read\n", ZR_EACCESS,
+      "cannot read data file: '/etc/passwd' is outside the folders a "
+      "scene may read (the scene's folder, the working directory, the "
+      "include paths and the read paths)", NULL);
   bad(f, "#fopen F \"no_such_file.txt\" read\n", ZR_ENOTFOUND,
       "cannot find data file 'no_such_file.txt'", NULL);
 }

@@ -203,6 +203,10 @@ static int setup(void **state) {
     free(fx);
     return -1;
   }
+  /* The scenes are strings naming files in fx->dir, which is neither
+     the working directory nor an include path: let them read there. */
+  if (zr_context_add_read_path(fx->ctx, fx->dir) != ZR_OK)
+    return -1;
   zr_context_set_diag(fx->ctx, catch_diag, fx);
   *state = fx;
   return 0;

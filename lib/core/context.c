@@ -12,7 +12,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
+#include "core/iopolicy.h"
 #include "core/strbuf.h"
 
 ZR_API const char *zr_status_str(zr_status status) {
@@ -48,6 +50,12 @@ ZR_API void zr_context_free(zr_context *ctx) {
   for (size_t i = 0; i < ctx->n_include_paths; i++)
     free(ctx->include_paths[i]);
   free(ctx->include_paths);
+  for (size_t i = 0; i < ctx->n_read_dirs; i++)
+    free(ctx->read_dirs[i]);
+  free(ctx->read_dirs);
+  for (size_t i = 0; i < ctx->n_write_dirs; i++)
+    free(ctx->write_dirs[i]);
+  free(ctx->write_dirs);
   free(ctx);
 }
 
@@ -85,6 +93,56 @@ ZR_API zr_status zr_context_add_include_path(zr_context *ctx,
     return ZR_ENOMEM;
   ctx->n_include_paths++;
   return ZR_OK;
+}
+
+ZR_API zr_status zr_context_set_io_restrictions(zr_context *ctx,
+                                                zr_io_restrictions mode) {
+  if (!ctx || (mode != ZR_IO_RESTRICTED && mode != ZR_IO_READ_ONLY &&
+               mode != ZR_IO_NONE))
+    return ZR_EINVAL;
+  ctx->io_mode = mode;
+  return ZR_OK;
+}
+
+/* Resolves dir now (POV-Ray resolves its permitted paths once, from the
+   working directory at start) and appends it to a list. */
+static zr_status add_dir(char ***dirs, size_t *n, const char *dir) {
+  char *real = realpath(dir, NULL);
+  if (!real)
+    return errno == ENOENT || errno == ENOTDIR ? ZR_ENOTFOUND : ZR_EIO;
+  struct stat st;
+  if (stat(real, &st) != 0 || !S_ISDIR(st.st_mode)) {
+    free(real);
+    return ZR_EINVAL;
+  }
+  char **grown = realloc(*dirs, (*n + 1) * sizeof *grown);
+  if (!grown) {
+    free(real);
+    return ZR_ENOMEM;
+  }
+  *dirs = grown;
+  grown[(*n)++] = real;
+  return ZR_OK;
+}
+
+ZR_API zr_status zr_context_add_read_path(zr_context *ctx, const char *dir) {
+  if (!ctx || !dir)
+    return ZR_EINVAL;
+  return add_dir(&ctx->read_dirs, &ctx->n_read_dirs, dir);
+}
+
+ZR_API zr_status zr_context_add_write_path(zr_context *ctx,
+                                           const char *dir) {
+  if (!ctx || !dir)
+    return ZR_EINVAL;
+  return add_dir(&ctx->write_dirs, &ctx->n_write_dirs, dir);
+}
+
+ZR_API void zr_context_set_read_observer(zr_context *ctx,
+                                         zr_read_observer_fn fn,
+                                         void *user) {
+  ctx->observer_fn = fn;
+  ctx->observer_user = user;
 }
 
 ZR_API const char *zr_context_last_error(const zr_context *ctx) {
@@ -175,30 +233,38 @@ zr_status zr__diag(zr_context *ctx, zr_diag_level level, zr_status status,
   return s;
 }
 
-static zr_status stdio_read(const char *path, char **bytes, size_t *size) {
-  FILE *f = fopen(path, "rb");
-  if (!f)
-    return errno == ENOENT ? ZR_ENOTFOUND : ZR_EIO;
-  zr_strbuf sb;
-  zr__strbuf_init(&sb);
-  char chunk[65536];
-  size_t n;
-  while ((n = fread(chunk, 1, sizeof chunk, f)) > 0)
-    zr__strbuf_append(&sb, chunk, n);
-  int failed = ferror(f);
-  fclose(f);
-  if (failed || sb.failed) {
-    zr__strbuf_free(&sb);
-    return failed ? ZR_EIO : ZR_ENOMEM;
+/* Hands what the library's own reader read to the observer. */
+static zr_status observed(zr_context *ctx, const char *path, zr_status s,
+                          char **bytes, size_t *size) {
+  if (s != ZR_OK || !ctx || !ctx->observer_fn)
+    return s;
+  s = ctx->observer_fn(path, *bytes, *size, ctx->observer_user);
+  if (s != ZR_OK) {
+    free(*bytes);
+    *bytes = NULL;
   }
-  *size = sb.len;
-  *bytes = zr__strbuf_take(&sb);
-  return *bytes ? ZR_OK : ZR_ENOMEM;
+  return s;
 }
 
 zr_status zr__context_read(zr_context *ctx, const char *path, char **bytes,
                            size_t *size) {
   if (ctx && ctx->read_fn)
     return ctx->read_fn(path, bytes, size, ctx->read_user);
-  return stdio_read(path, bytes, size);
+  char why[512];
+  zr_status s = zr__io_read_named(path, bytes, size, why, sizeof why);
+  if (s == ZR_EACCESS)
+    zr__diag(ctx, ZR_DIAG_ERROR, s, NULL, "cannot read: %s", why);
+  return observed(ctx, path, s, bytes, size);
+}
+
+zr_status zr__context_read_scene(zr_context *ctx, const char *path,
+                                 const char *scene_dir, char **bytes,
+                                 size_t *size, char *why, size_t why_size) {
+  if (why_size)
+    why[0] = '\0';
+  if (ctx && ctx->read_fn)
+    return ctx->read_fn(path, bytes, size, ctx->read_user);
+  zr_status s = zr__io_read_scene(ctx, path, scene_dir, bytes, size, why,
+                                  why_size);
+  return observed(ctx, path, s, bytes, size);
 }

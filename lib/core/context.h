@@ -20,6 +20,15 @@ struct zr_context {
   size_t n_include_paths;
   int render_width, render_height; /* 0 until set: the parser's defaults */
   unsigned long long loop_limit;   /* 0: none */
+  /* I/O restrictions (iopolicy.c): the mode and the folders added to the
+     defaults, each resolved (realpath) when added. */
+  zr_io_restrictions io_mode;
+  char **read_dirs;
+  size_t n_read_dirs;
+  char **write_dirs;
+  size_t n_write_dirs;
+  zr_read_observer_fn observer_fn;
+  void *observer_user;
   char last_error[1024];
   unsigned errors;   /* errors reported so far */
   unsigned warnings; /* warnings reported so far */
@@ -51,8 +60,25 @@ zr_status zr__diag(zr_context *ctx, zr_diag_level level, zr_status status,
 zr_status zr__vdiag(zr_context *ctx, zr_diag_level level, zr_status status,
                     const zr_diag_place *place, const char *fmt, va_list ap);
 
-/* Reads a whole file through the context's reader (stdio by default). */
+/*
+ * Reads a whole file the caller named (the scene file given to
+ * zr_scene_parse_file, an image given to zr_image_read) through the
+ * context's reader, or the library's own (iopolicy.c: regular files
+ * only, not confined to folders).  The bytes end in a NUL that *size
+ * does not count.
+ */
 zr_status zr__context_read(zr_context *ctx, const char *path, char **bytes,
                            size_t *size);
+
+/*
+ * Reads a whole file a scene named, under the context's I/O restrictions
+ * (zrcube.h); scene_dir is the resolved folder of the main scene file
+ * (NULL when the scene is a string).  ZR_ENOTFOUND when the file does
+ * not exist (a search goes on to its next place); ZR_EACCESS when it is
+ * refused, with the reason in why (which never quotes the file).
+ */
+zr_status zr__context_read_scene(zr_context *ctx, const char *path,
+                                 const char *scene_dir, char **bytes,
+                                 size_t *size, char *why, size_t why_size);
 
 #endif /* ZR_CORE_CONTEXT_H */

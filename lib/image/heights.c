@@ -331,9 +331,23 @@ zr_status zr__image_read_heights(zr_context *ctx, const char *path, bool pot,
   if (s == ZR_ENOTFOUND)
     return zr__diag(ctx, ZR_DIAG_ERROR, s, NULL, "%s: file not found",
                     path);
+  if (s == ZR_EACCESS)
+    return s; /* zr__context_read said why */
   if (s != ZR_OK)
     return zr__diag(ctx, ZR_DIAG_ERROR, s, NULL, "%s: cannot read: %s",
                     path, zr_status_str(s));
+  s = zr__image_decode_heights(ctx, path, pot, bytes, size, heights, width,
+                               height);
+  free(bytes);
+  return s;
+}
+
+zr_status zr__image_decode_heights(zr_context *ctx, const char *path,
+                                   bool pot, const char *bytes, size_t size,
+                                   float **heights, int *width,
+                                   int *height) {
+  zr_status s;
+  *heights = NULL;
   static const unsigned char png_sig[8] = {0x89, 'P', 'N', 'G',
                                            '\r', '\n', 0x1a, '\n'};
   const unsigned char *b = (const unsigned char *)bytes;
@@ -352,6 +366,5 @@ zr_status zr__image_read_heights(zr_context *ctx, const char *path, bool pot,
     s = read_tga(ctx, path, b, size, heights, width, height);
   else
     s = read_coded(ctx, path, b, size, false, heights, width, height);
-  free(bytes);
   return s;
 }

@@ -33,6 +33,7 @@
 #include <unistd.h>
 
 #include "core/context.h"
+#include "core/iopolicy.h"
 
 static zr_status check_size(int width, int height) {
   if (width <= 0 || height <= 0)
@@ -220,11 +221,20 @@ ZR_API zr_status zr_image_read(zr_context *ctx, const char *path,
   if (s == ZR_ENOTFOUND)
     return zr__diag(ctx, ZR_DIAG_ERROR, s, NULL, "%s: file not found",
                     path);
+  if (s == ZR_EACCESS)
+    return s; /* zr__context_read said why */
   if (s != ZR_OK)
     return zr__diag(ctx, ZR_DIAG_ERROR, s, NULL, "%s: cannot read: %s",
                     path, zr_status_str(s));
-  s = decode(ctx, path, (const unsigned char *)bytes, size, out);
+  s = zr__image_decode(ctx, path, bytes, size, out);
   free(bytes);
+  return s;
+}
+
+zr_status zr__image_decode(zr_context *ctx, const char *name,
+                           const char *bytes, size_t size, zr_image **out) {
+  *out = NULL;
+  zr_status s = decode(ctx, name, (const unsigned char *)bytes, size, out);
   if (s != ZR_OK && *out) {
     zr_image_free(*out);
     *out = NULL;
@@ -233,37 +243,6 @@ ZR_API zr_status zr_image_read(zr_context *ctx, const char *path,
 }
 
 /* ---- atomic writing ---- */
-
-/*
- * Opens a new file beside path, named path.PID.N.tmp.  O_EXCL makes two
- * threads or processes writing the same target pick different names, and
- * open()'s mode lets the umask decide the permissions, as for any file.
- */
-static FILE *open_temporary(const char *path, char *tmp, size_t tmp_size) {
-  for (int attempt = 0; attempt < 100; attempt++) {
-    int n = snprintf(tmp, tmp_size, "%s.%ld.%d.tmp", path, (long)getpid(),
-                     attempt);
-    if (n < 0 || (size_t)n >= tmp_size) {
-      errno = ENAMETOOLONG;
-      return NULL;
-    }
-    int fd = open(tmp, O_WRONLY | O_CREAT | O_EXCL, 0666);
-    if (fd < 0) {
-      if (errno == EEXIST)
-        continue;
-      return NULL;
-    }
-    FILE *f = fdopen(fd, "wb");
-    if (!f) {
-      int e = errno;
-      close(fd);
-      unlink(tmp);
-      errno = e;
-    }
-    return f;
-  }
-  return NULL;
-}
 
 static zr_status encode(zr_context *ctx, const zr_image *image,
                         const char *path, zr_image_format format,
@@ -311,17 +290,26 @@ ZR_API zr_status zr_image_write(zr_context *ctx, const zr_image *image,
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, NULL,
                     "%s: unknown image format %d", path, (int)format);
 
-  size_t tmp_size = strlen(path) + 64;
-  char *tmp = malloc(tmp_size);
-  if (!tmp)
-    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s", path,
-                    zr_status_str(ZR_ENOMEM));
-  FILE *f = open_temporary(path, tmp, tmp_size);
+  /* The image goes to a new file beside the one it replaces, renamed
+     over it once complete: a failure leaves the old file whole.  A
+     symbolic link is followed, so the link stays and its file is
+     replaced; a device, FIFO or directory is refused by name. */
+  char why[512];
+  char *target = NULL;
+  zr_status ts = zr__io_output_target(path, &target, why, sizeof why);
+  if (ts != ZR_OK)
+    return ts == ZR_ENOMEM
+               ? zr__diag(ctx, ZR_DIAG_ERROR, ts, NULL, "%s: %s", path,
+                          zr_status_str(ts))
+               : zr__diag(ctx, ZR_DIAG_ERROR, ts, NULL,
+                          "cannot write the image: %s", why);
+  char *tmp = NULL;
+  FILE *f = zr__io_open_temp(target, &tmp);
   if (!f) {
     zr_status s = zr__diag(ctx, ZR_DIAG_ERROR, ZR_EIO, NULL,
-                           "%s: cannot create %s: %s", path, tmp,
-                           strerror(errno));
-    free(tmp);
+                           "%s: cannot create a file in its folder: %s",
+                           path, strerror(errno));
+    free(target);
     return s;
   }
   zr_status s = encode(ctx, image, path, format, assumed_gamma, f);
@@ -331,12 +319,13 @@ ZR_API zr_status zr_image_write(zr_context *ctx, const zr_image *image,
   if (fclose(f) != 0 && s == ZR_OK)
     s = zr__diag(ctx, ZR_DIAG_ERROR, ZR_EIO, NULL, "%s: write failed: %s",
                  path, strerror(errno));
-  if (s == ZR_OK && rename(tmp, path) != 0)
+  if (s == ZR_OK && rename(tmp, target) != 0)
     s = zr__diag(ctx, ZR_DIAG_ERROR, ZR_EIO, NULL,
                  "%s: cannot rename %s to it: %s", path, tmp,
                  strerror(errno));
   if (s != ZR_OK)
     unlink(tmp);
   free(tmp);
+  free(target);
   return s;
 }

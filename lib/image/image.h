@@ -32,9 +32,8 @@ struct zr_image {
   unsigned maxval;
 };
 
-/* Limits that keep a hostile header from asking for gigabytes. */
-#define ZR_IMAGE_MAX_SIDE 65536
-#define ZR_IMAGE_MAX_PIXELS ((size_t)1 << 27)
+/* ZR_IMAGE_MAX_SIDE and ZR_IMAGE_MAX_PIXELS (zrcube.h) keep a hostile
+   header from asking for gigabytes. */
 
 /* How stored integer samples map to linear light. */
 typedef enum zr_transfer {
@@ -112,6 +111,16 @@ zr_status zr__pfm_encode(zr_context *ctx, const char *name,
  */
 zr_status zr__image_read_heights(zr_context *ctx, const char *path, bool pot,
                                  float **heights, int *width, int *height);
+
+/* The same from a file's bytes already read (name for messages). */
+zr_status zr__image_decode_heights(zr_context *ctx, const char *name,
+                                   bool pot, const char *bytes, size_t size,
+                                   float **heights, int *width,
+                                   int *height);
+
+/* zr_image_read from a file's bytes already read (name for messages). */
+zr_status zr__image_decode(zr_context *ctx, const char *name,
+                           const char *bytes, size_t size, zr_image **out);
 
 /* zr_image_new with a message through ctx on failure. */
 zr_status zr__image_new_named(zr_context *ctx, const char *name, int width,

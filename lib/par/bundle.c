@@ -267,3 +267,15 @@ zr_status zr__bundle_serve_reader(const char *path, char **bytes,
   const zr_bundle_file *f = zr__bundle_find(user, path);
   return f ? serve(f, bytes, size) : ZR_ENOTFOUND;
 }
+
+zr_status zr__bundle_record_observer(const char *path, const char *bytes,
+                                     size_t size, void *user) {
+  zr_bundle *bundle = user;
+  const zr_bundle_file *seen = zr__bundle_find(bundle, path);
+  if (seen)
+    return seen->size == size && (size == 0 ||
+                                  memcmp(seen->bytes, bytes, size) == 0)
+               ? ZR_OK
+               : ZR_EIO;
+  return zr__bundle_add(bundle, path, bytes, size);
+}

@@ -57,6 +57,15 @@ zr_status zr__bundle_deserialise(zr_bundle *bundle, const char *bytes,
 zr_status zr__bundle_record_reader(const char *path, char **bytes,
                                    size_t *size, void *user);
 
+/*
+ * A zr_read_observer_fn (user: the zr_bundle) that records what the
+ * library's own reader read, which applies the I/O restrictions (rank 0
+ * parses with it).  A path read again must give the same bytes, else
+ * ZR_EIO: the other ranks would see one version of it.
+ */
+zr_status zr__bundle_record_observer(const char *path, const char *bytes,
+                                     size_t size, void *user);
+
 /* A zr_read_fn (user: the zr_bundle) serving recorded files only.  Both
    readers, like the library's default one, put a NUL after the bytes
    (not counted in *size). */

@@ -38,6 +38,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
+
+#include "core/iopolicy.h"
 
 #define MAGIC "ZRRADSOL"
 #define VERSION 3u
@@ -225,12 +228,26 @@ ZR_API zr_status zr_radiosity_save(zr_context *ctx, const zr_radiosity *rad,
   if (order == NULL)
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL,
                     "radiosity: out of memory saving '%s'", path);
-  FILE *f = fopen(path, "wb");
-  if (f == NULL) {
+  /* Written beside the target and renamed over it when complete, so a
+     failure leaves an older save whole; a device or directory is
+     refused by name. */
+  char why[512];
+  char *target = NULL, *tmp = NULL;
+  zr_status ts = zr__io_output_target(path, &target, why, sizeof why);
+  if (ts != ZR_OK) {
     free(order);
-    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EIO, NULL,
+    return zr__diag(ctx, ZR_DIAG_ERROR, ts, NULL,
                     "radiosity: cannot write '%s': %s", path,
-                    strerror(errno));
+                    ts == ZR_ENOMEM ? zr_status_str(ts) : why);
+  }
+  FILE *f = zr__io_open_temp(target, &tmp);
+  if (f == NULL) {
+    zr_status s = zr__diag(ctx, ZR_DIAG_ERROR, ZR_EIO, NULL,
+                           "radiosity: cannot write '%s': %s", path,
+                           strerror(errno));
+    free(order);
+    free(target);
+    return s;
   }
   fwrite(MAGIC, 1, 8, f);
   put_u32(f, VERSION);
@@ -252,10 +269,19 @@ ZR_API zr_status zr_radiosity_save(zr_context *ctx, const zr_radiosity *rad,
   save_links(f, rad, order);
   free(order);
   bool bad = ferror(f) != 0;
+  zr_status st = ZR_OK;
   if (fclose(f) != 0 || bad)
-    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EIO, NULL,
-                    "radiosity: error writing '%s'", path);
-  return ZR_OK;
+    st = zr__diag(ctx, ZR_DIAG_ERROR, ZR_EIO, NULL,
+                  "radiosity: error writing '%s'", path);
+  else if (rename(tmp, target) != 0)
+    st = zr__diag(ctx, ZR_DIAG_ERROR, ZR_EIO, NULL,
+                  "radiosity: cannot rename '%s' to '%s': %s", tmp, path,
+                  strerror(errno));
+  if (st != ZR_OK)
+    unlink(tmp);
+  free(tmp);
+  free(target);
+  return st;
 }
 
 /* ---- load ---- */
@@ -385,12 +411,12 @@ static zr_status read_header(zr_context *ctx, FILE *f, const char *path,
 ZR_API zr_status zr_radiosity_load(zr_context *ctx, const zr_scene *scene,
                                    const char *path, zr_radiosity **out) {
   *out = NULL;
-  FILE *f = fopen(path, "rb");
-  if (f == NULL)
-    return zr__diag(ctx, ZR_DIAG_ERROR,
-                    errno == ENOENT ? ZR_ENOTFOUND : ZR_EIO, NULL,
-                    "radiosity: cannot read '%s': %s", path,
-                    strerror(errno));
+  char why[512];
+  FILE *f = NULL;
+  zr_status os = zr__io_open_named(path, &f, why, sizeof why);
+  if (os != ZR_OK)
+    return zr__diag(ctx, ZR_DIAG_ERROR, os, NULL, "radiosity: cannot read "
+                    "%s", why);
   zr_radiosity *rad;
   uint32_t version = VERSION;
   zr_status st = zr__rad_create(ctx, scene, NULL, &rad);

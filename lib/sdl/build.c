@@ -592,12 +592,15 @@ static char *image_path(const char *dir, size_t n, const char *name) {
   return zr__strbuf_take(&sb);
 }
 
-/* The first of the places #include searches where name can be read,
-   malloc'ed; NULL when none. */
-static char *find_image(zr_sdl_parser *p, const char *name) {
+zr_status zr__sdl_read_image(zr_sdl_parser *p, const char *name,
+                             const zr_sdl_loc *at, const char *what,
+                             char **path_out, char **bytes, size_t *size) {
+  /* The places #include searches but POV-Ray's include folder: next
+     to the file being read, then along the include paths. */
   const char *scene = p->files[zr__sdl_top(p)->file].path;
   const char *slash = strrchr(scene, '/');
   size_t n_dirs = p->ctx ? p->ctx->n_include_paths : 0;
+  *path_out = NULL;
   for (size_t i = 0; i <= n_dirs; i++) {
     char *path;
     if (name[0] == '/')
@@ -609,19 +612,16 @@ static char *find_image(zr_sdl_parser *p, const char *name) {
                         strlen(p->ctx->include_paths[i - 1]), name);
     if (!path)
       continue;
-    char *bytes = NULL;
-    size_t size = 0;
-    if (zr__context_read(p->ctx, path, &bytes, &size) == ZR_OK) {
-      free(bytes);
-      return path;
+    zr_status s = zr__sdl_read_file(p, path, at, what, bytes, size);
+    if (s == ZR_OK) {
+      *path_out = path;
+      return ZR_OK;
     }
     free(path);
+    if (s != ZR_ENOTFOUND)
+      return s;
   }
-  return NULL;
-}
-
-char *zr__sdl_find_image(zr_sdl_parser *p, const char *name) {
-  return find_image(p, name);
+  return ZR_ENOTFOUND;
 }
 
 /*
@@ -734,14 +734,18 @@ zr_image_map *zr__sdl_bitmap_new(zr_sdl_parser *p, const char *what,
   double g = 0;
   if (gamma && !zr__sdl_want_float(p, gamma, gamma_loc, &g))
     return NULL;
-  char *path = find_image(p, name);
-  if (!path) {
+  char *path = NULL, *bytes = NULL;
+  size_t size = 0;
+  zr_status s = zr__sdl_read_image(p, name, loc, what, &path, &bytes,
+                                   &size);
+  if (s == ZR_ENOTFOUND)
     zr__sdl_error(p, ZR_ENOTFOUND, loc, "%s file '%s' not found", what,
                   name);
+  if (s != ZR_OK)
     return NULL;
-  }
   zr_image *image = NULL;
-  zr_status s = zr_image_read(p->ctx, path, &image);
+  s = zr__image_decode(p->ctx, path, bytes, size, &image);
+  free(bytes);
   free(path);
   if (s != ZR_OK) {
     zr__sdl_error(p, s, loc, "cannot use '%s' as %s %s", name,

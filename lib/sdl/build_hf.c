@@ -74,15 +74,20 @@ zr_object *zr__sdl_height_field_image(zr_sdl_parser *p,
                   "png, gif, pot, tga, pgm, ppm or jpeg)", type);
     return NULL;
   }
-  char *path = zr__sdl_find_image(p, name);
-  if (!path) {
+  char *path = NULL, *bytes = NULL;
+  size_t size = 0;
+  zr_status s = zr__sdl_read_image(p, name, name_loc, "height_field file",
+                                   &path, &bytes, &size);
+  if (s == ZR_ENOTFOUND)
     zr__sdl_error(p, ZR_ENOTFOUND, name_loc,
                   "height_field file '%s' not found", name);
+  if (s != ZR_OK)
     return NULL;
-  }
   float *samples = NULL;
   int w = 0, h = 0;
-  zr_status s = zr__image_read_heights(p->ctx, path, pot, &samples, &w, &h);
+  s = zr__image_decode_heights(p->ctx, path, pot, bytes, size, &samples, &w,
+                               &h);
+  free(bytes);
   free(path);
   if (s != ZR_OK) {
     zr__sdl_error(p, s, name_loc, "cannot use '%s' as a height_field",

@@ -288,15 +288,15 @@ void zr__sdl_interior_texture(zr_object *o, const zr_texture *tx) {
    an error. */
 static const zr_density_file *load_df3(zr_sdl_parser *p, const char *name,
                                        const zr_sdl_loc *loc) {
-  char *path = zr__sdl_find_image(p, name);
-  if (!path) {
+  char *path = NULL, *bytes = NULL;
+  size_t size = 0;
+  zr_status s = zr__sdl_read_image(p, name, loc, "density_file", &path,
+                                   &bytes, &size);
+  if (s == ZR_ENOTFOUND)
     zr__sdl_error(p, ZR_ENOTFOUND, loc, "density_file '%s' not found",
                   name);
+  if (s != ZR_OK)
     return NULL;
-  }
-  char *bytes = NULL;
-  size_t size = 0;
-  zr_status s = zr__context_read(p->ctx, path, &bytes, &size);
   free(path);
   zr_density_file *d = zr__sdl_alloc(p, sizeof *d);
   if (s == ZR_OK && d) {

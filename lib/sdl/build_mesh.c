@@ -728,9 +728,11 @@ static const char *const internal_fonts[] = {"povlogo.ttf", "timrom.ttf",
 
 /* Reads a font searched like an #include file: beside the including
    file, along the include paths, then in POV-Ray's include directory,
-   where its fonts are installed.  False when none can be read. */
-static bool read_font(zr_sdl_parser *p, const char *name, char **bytes,
-                      size_t *size) {
+   where its fonts are installed, under the I/O restrictions.
+   ZR_ENOTFOUND when it is nowhere; other failures reported at 'at'. */
+static zr_status read_font(zr_sdl_parser *p, const char *name,
+                           const zr_sdl_loc *at, char **bytes,
+                           size_t *size) {
   const char *scene = p->files[zr__sdl_top(p)->file].path;
   const char *slash = strrchr(scene, '/');
   size_t n_dirs = p->ctx ? p->ctx->n_include_paths : 0;
@@ -751,17 +753,17 @@ static bool read_font(zr_sdl_parser *p, const char *name, char **bytes,
     size_t len = dir_len + 1 + strlen(name) + 1;
     char *path = malloc(len);
     if (!path)
-      return false;
+      return zr__sdl_error(p, ZR_ENOMEM, at, "out of memory");
     if (dir_len)
       snprintf(path, len, "%.*s/%s", (int)dir_len, dir, name);
     else
       snprintf(path, len, "%s", name);
-    zr_status s = zr__context_read(p->ctx, path, bytes, size);
+    zr_status s = zr__sdl_read_file(p, path, at, "font", bytes, size);
     free(path);
-    if (s == ZR_OK)
-      return true;
+    if (s != ZR_ENOTFOUND)
+      return s;
   }
-  return false;
+  return ZR_ENOTFOUND;
 }
 
 /* The outline pieces of the glyph being placed, collected by the font
@@ -913,12 +915,14 @@ zr_object *zr__sdl_text(zr_sdl_parser *p, const zr_sdl_loc *loc,
   const char *with_ext = zr__sdl_concat(p, font_name, ".ttf");
   if (!with_ext)
     return NULL;
-  if (!read_font(p, font_name, &bytes, &size) &&
-      !read_font(p, with_ext, &bytes, &size)) {
+  zr_status fs = read_font(p, font_name, font_loc, &bytes, &size);
+  if (fs == ZR_ENOTFOUND)
+    fs = read_font(p, with_ext, font_loc, &bytes, &size);
+  if (fs == ZR_ENOTFOUND)
     zr__sdl_error(p, ZR_ENOTFOUND, font_loc, "cannot find font '%s'",
                   font_name);
+  if (fs != ZR_OK)
     return NULL;
-  }
   zr_ttf font;
   const char *err = zr__ttf_open(&font, (const uint8_t *)bytes, size);
   zr_object *o = NULL;

@@ -42,6 +42,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/iopolicy.h"
 #include "core/strbuf.h"
 #include "pov-parse.h"
 #include "sdl/sdl.h"
@@ -399,14 +400,12 @@ static int open_include(zr_sdl_parser *p, const char *name,
     }
     char *bytes = NULL;
     size_t size = 0;
-    zr_status s = zr__context_read(p->ctx, path, &bytes, &size);
+    zr_status s = zr__sdl_read_file(p, path, at, what, &bytes, &size);
     if (s == ZR_ENOTFOUND) {
       free(path);
       continue;
     }
     if (s != ZR_OK) {
-      zr__sdl_error(p, s, at, "cannot read %s '%s': %s", what, path,
-                    zr_status_str(s));
       free(path);
       return -1;
     }
@@ -428,6 +427,20 @@ static int open_include(zr_sdl_parser *p, const char *name,
   }
   zr__sdl_error(p, ZR_ENOTFOUND, at, "cannot find %s '%s'", what, name);
   return -1;
+}
+
+zr_status zr__sdl_read_file(zr_sdl_parser *p, const char *path,
+                            const zr_sdl_loc *at, const char *what,
+                            char **bytes, size_t *size) {
+  char why[1024];
+  zr_status s = zr__context_read_scene(p->ctx, path, p->scene_dir, bytes,
+                                       size, why, sizeof why);
+  if (s == ZR_OK || s == ZR_ENOTFOUND)
+    return s;
+  if (why[0])
+    return zr__sdl_error(p, s, at, "cannot read %s: %s", what, why);
+  return zr__sdl_error(p, s, at, "cannot read %s '%s': %s", what, path,
+                       zr_status_str(s));
 }
 
 int zr__sdl_open_data(zr_sdl_parser *p, const char *name,
@@ -481,13 +494,19 @@ bool zr__sdl_file_exists(zr_sdl_parser *p, const char *name) {
                        strlen(ZR_POVRAY_INCLUDE_DIR), name);
     if (!path)
       continue;
+    /* A file the I/O restrictions refuse is not there for the scene:
+       file_exists() tells nothing about the rest of the disk. */
     char *bytes = NULL;
     size_t size = 0;
-    zr_status s = zr__context_read(p->ctx, path, &bytes, &size);
+    char why[512];
+    zr_status s = zr__context_read_scene(p->ctx, path, p->scene_dir,
+                                         &bytes, &size, why, sizeof why);
     free(path);
     free(bytes);
     if (s == ZR_OK)
       return true;
+    if (s != ZR_ENOTFOUND)
+      return false;
   }
   return false;
 }
@@ -1037,12 +1056,13 @@ static void parser_free(zr_sdl_parser *p) {
     zr__sdl_file_free(&p->files[i]);
   free(p->files);
   free(p->init);
+  free(p->scene_dir);
   zr__sdl_close_files(p);
   zr__sdl_symtab_free(&p->globals);
 }
 
 static zr_status parse(zr_context *ctx, char *path, char *bytes, size_t size,
-                       zr_scene **out) {
+                       bool from_disk, zr_scene **out) {
   zr_sdl_parser p;
   memset(&p, 0, sizeof p);
   p.ctx = ctx;
@@ -1055,6 +1075,8 @@ static zr_status parse(zr_context *ctx, char *path, char *bytes, size_t size,
     free(bytes);
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "out of memory");
   }
+  if (from_disk)
+    p.scene_dir = zr__io_scene_dir(path);
   int index;
   zr_sdl_loc err_loc;
   char err[200];
@@ -1090,6 +1112,8 @@ ZR_API zr_status zr_scene_parse_file(zr_context *ctx, const char *path,
   char *bytes = NULL;
   size_t size = 0;
   zr_status s = zr__context_read(ctx, path, &bytes, &size);
+  if (s == ZR_EACCESS)
+    return s; /* zr__context_read said why */
   if (s != ZR_OK)
     return zr__diag(ctx, ZR_DIAG_ERROR, s, NULL,
                     "cannot open scene file '%s': %s", path,
@@ -1099,7 +1123,7 @@ ZR_API zr_status zr_scene_parse_file(zr_context *ctx, const char *path,
     free(bytes);
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "out of memory");
   }
-  return parse(ctx, copy, bytes, size, out);
+  return parse(ctx, copy, bytes, size, true, out);
 }
 
 ZR_API zr_status zr_scene_parse_string(zr_context *ctx, const char *name,
@@ -1120,5 +1144,5 @@ ZR_API zr_status zr_scene_parse_string(zr_context *ctx, const char *name,
   if (size > 0)
     memcpy(bytes, text, size);
   bytes[size] = '\0';
-  return parse(ctx, copy, bytes, size, out);
+  return parse(ctx, copy, bytes, size, false, out);
 }

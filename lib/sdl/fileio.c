@@ -11,13 +11,13 @@
  * prints floats as "%g", vectors as "<x,y,z> " (the format povray 3.7.0
  * writes) and strings as they are.
  *
- * I/O restrictions, after POV-Ray's default security settings: a file is
- * read only where #include looks (next to the including file, in the
- * include paths, in POV-Ray's include directory), and an absolute name
- * only inside the main scene's directory or an include path; a file is
- * written only below the working directory, never through an absolute
- * name or a ".." component.  The binary word types of #write (uint8 ...)
- * are not supported yet.
+ * A file is read where #include looks (next to the including file, in
+ * the include paths, in POV-Ray's include directory) and written where
+ * it is named, both under the context's I/O restrictions
+ * (lib/core/iopolicy.c): by default reads below the scene's folder, the
+ * working directory and the include paths, writes below the working
+ * directory, judged after symbolic links are resolved.  The binary word
+ * types of #write (uint8 ...) are not supported yet.
  */
 #include "config.h"
 
@@ -25,6 +25,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/iopolicy.h"
 #include "pov-parse.h"
 #include "sdl/sdl.h"
 
@@ -83,35 +84,6 @@ static zr_sdl_fhandle *handle(zr_sdl_parser *p, const char *name,
   return (zr_sdl_fhandle *)s->value.ptr;
 }
 
-static bool has_dotdot(const char *name) {
-  for (const char *s = name; (s = strstr(s, "..")); s += 2)
-    if ((s == name || s[-1] == '/') && (s[2] == '\0' || s[2] == '/'))
-      return true;
-  return false;
-}
-
-/* Whether path lies inside directory dir. */
-static bool inside(const char *path, const char *dir, size_t n) {
-  while (n > 1 && dir[n - 1] == '/')
-    n--;
-  return n > 0 && strncmp(path, dir, n) == 0 && path[n] == '/';
-}
-
-static bool may_read(zr_sdl_parser *p, const char *name) {
-  if (name[0] != '/')
-    return !has_dotdot(name);
-  const char *scene = p->files[0].path;
-  const char *slash = strrchr(scene, '/');
-  if (slash && inside(name, scene, (size_t)(slash - scene)))
-    return !has_dotdot(name);
-  for (size_t i = 0; p->ctx && i < p->ctx->n_include_paths; i++) {
-    const char *dir = p->ctx->include_paths[i];
-    if (inside(name, dir, strlen(dir)))
-      return !has_dotdot(name);
-  }
-  return false;
-}
-
 static bool do_fopen(zr_sdl_parser *p, const zr_sdl_loc *at) {
   zr_sdl_loc nl = zr__sdl_peek_loc(p, 0);
   const char *name = read_name(p, "'#fopen'");
@@ -139,28 +111,23 @@ static bool do_fopen(zr_sdl_parser *p, const zr_sdl_loc *at) {
   }
   h->file = -1;
   if (reading) {
-    if (!may_read(p, path)) {
-      free(h);
-      zr__sdl_error(p, ZR_EINVAL, &fl, "'#fopen' may read only next to the "
-                    "scene or in the include paths, not '%s'", path);
-      return false;
-    }
+    /* Searched like #include, under the I/O restrictions. */
     h->file = zr__sdl_open_data(p, path, &fl);
     if (h->file < 0) {
       free(h);
       return false;
     }
   } else {
-    if (path[0] == '/' || has_dotdot(path) || path[0] == '\0') {
+    char why[1024];
+    FILE *out = NULL;
+    zr_status s = zr__io_open_scene_write(
+        p->ctx, path, m[0] == 'w' ? ZR_IO_ACCESS_WRITE : ZR_IO_ACCESS_APPEND,
+        &out, why, sizeof why);
+    h->out = out;
+    if (s != ZR_OK) {
       free(h);
-      zr__sdl_error(p, ZR_EINVAL, &fl, "'#fopen' may write only below the "
-                    "working directory, not '%s'", path);
-      return false;
-    }
-    h->out = fopen(path, m[0] == 'w' ? "w" : "a");
-    if (!h->out) {
-      free(h);
-      zr__sdl_error(p, ZR_EIO, &fl, "cannot open '%s' for writing", path);
+      zr__sdl_error(p, s, &fl, "'#fopen' cannot open a file for %s: %s",
+                    m[0] == 'w' ? "writing" : "appending", why);
       return false;
     }
   }

@@ -481,6 +481,9 @@ typedef struct zr_sdl_parser {
   zr_sdl_list nested_list;
   int nested_end;
   zr_sdl_fhandle *handles; /* files #fopen opened, closed at the end */
+  /* The main scene file's folder, resolved (NULL for a string): a scene
+     may read below it (lib/core/iopolicy.c). */
+  char *scene_dir;
   zr_sdl_list *free_lists; /* the grammar's lists, for reuse */
   /* The elements of an array initialiser being parsed, in order. */
   zr_sdl_value *init;
@@ -583,6 +586,13 @@ bool zr__sdl_run_file_directive(zr_sdl_parser *p, int kind,
 void zr__sdl_close_files(zr_sdl_parser *p);
 int zr__sdl_open_data(zr_sdl_parser *p, const char *name,
                       const zr_sdl_loc *at);
+/* Reads one place a search tries (directive.c), under the I/O
+   restrictions: ZR_ENOTFOUND silently when no file is there; any other
+   failure, a refusal among them, reported at 'at' as "cannot read
+   <what>: <why>" (the file's contents never quoted). */
+zr_status zr__sdl_read_file(zr_sdl_parser *p, const char *path,
+                            const zr_sdl_loc *at, const char *what,
+                            char **bytes, size_t *size);
 /* #default: the texture, pigment or finish of objects made from now on
    (control.c). */
 bool zr__sdl_set_default(zr_sdl_parser *p, const zr_texture *texture,
@@ -867,9 +877,16 @@ bool zr__sdl_material_texture(zr_sdl_parser *p, zr_sdl_material *m,
                               const zr_texture *tx);
 bool zr__sdl_material_transform(zr_sdl_parser *p, zr_sdl_material *m,
                                 const zr_transform *t);
-/* The path, malloc'ed, where an image file named in the scene is found
-   (searched like #include); NULL when it is nowhere. */
-char *zr__sdl_find_image(zr_sdl_parser *p, const char *name);
+/*
+ * Reads an image or data file named in the scene (image_map,
+ * height_field, density_file), searched like #include, under the I/O
+ * restrictions: ZR_OK with *path (where it was found) and *bytes
+ * malloc'ed; ZR_ENOTFOUND, reporting nothing, when it is nowhere;
+ * another status after reporting at 'at' (a refused file is not read).
+ */
+zr_status zr__sdl_read_image(zr_sdl_parser *p, const char *name,
+                             const zr_sdl_loc *at, const char *what,
+                             char **path, char **bytes, size_t *size);
 /* Reads the picture of an image_map, searched like #include; gamma
    (NULL: none) is the "gamma G" written after the file name. */
 zr_image_map *zr__sdl_image_map_new(zr_sdl_parser *p, const char *name,
