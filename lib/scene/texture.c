@@ -27,9 +27,9 @@
  * bump_size times the pattern's value, so the normal tilts against the
  * value's gradient, measured by central differences 0.02 pattern units
  * apart (the manual's default accuracy, "Normals, Accuracy",
- * 3.4.6.2.2.1; the central differences are our own) and carried to world space by the
- * inverse transpose of the transform.  dents uses the cube of the noise,
- * which leaves flat ground between sharp pits.
+ * 3.4.6.2.2.1; the central differences are our own) and carried to
+ * world space by the inverse transpose of the transform.  dents uses
+ * the cube of the noise, which leaves flat ground between sharp pits.
  *
  * Maps ("Pigment Maps and Pigment Lists", "Normal Maps", "Slope Maps",
  * "Texture Maps", "Average"): the pattern's value v falls between two
