@@ -7,6 +7,7 @@ dist_scenes_DATA = \
 	scenes/blob.pov \
 	scenes/bicubic.pov \
 	scenes/julia.pov \
+	scenes/warps.pov \
 	scenes/sphere_sweep.pov \
 	scenes/camera.pov \
 	scenes/cornell.pov \

@@ -149,9 +149,14 @@ static zr_vec3 black_hole(const zr_warp *w, zr_vec3 p) {
     double jitter[3] = {w->turbulence.x, w->turbulence.y, w->turbulence.z};
     double shift[3] = {0, 0, 0};
     int64_t block[3] = {0, 0, 0};
-    for (int k = 0; k < 3; k++)
-      if (sc[k] >= HOLE_NO_REPEAT)
-        block[k] = (int64_t)floor(pc[k] / sc[k]);
+    for (int k = 0; k < 3; k++) {
+      if (!(sc[k] >= HOLE_NO_REPEAT))
+        continue;
+      /* Far out (or not a number) the block index is held to 2^62, so
+         that it converts to an integer. */
+      double b = floor(pc[k] / sc[k]);
+      block[k] = (int64_t)(fabs(b) < 0x1p62 ? b : copysign(0x1p62, b));
+    }
     for (int k = 0; k < 3; k++)
       shift[k] = (double)block[k] * sc[k] +
                  (jitter[k] != 0 ? jitter[k] * hole_random(block, k) : 0);
