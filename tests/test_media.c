@@ -231,14 +231,14 @@ static void test_media_converges(void **state) {
   assert_true(last < 1e-4);
   /* Method 3: more cells, and the adaptive halving, get closer (a
      threshold of 100 halves nothing here). */
-  double e3 = fabs(ball_render(f, "method 3 samples 4 aa_threshold 100") -
+  double e3 = fabs(ball_render(f, "method 3 samples 5 aa_threshold 100") -
                    truth);
   double e30 = fabs(ball_render(f, "method 3 samples 30 aa_threshold 100") -
                     truth);
-  double ea = fabs(ball_render(f, "method 3 samples 4 aa_level 4 "
+  double ea = fabs(ball_render(f, "method 3 samples 5 aa_level 4 "
                                   "aa_threshold 0.01") - truth);
   assert_true(e30 < e3);
-  assert_true(ea < 0.1 * e3);
+  assert_true(ea < 0.2 * e3);
   assert_true(e30 < 2e-4);
   /* Random samples (method 1): many are close, on average. */
   double e1 = fabs(ball_render(f, "method 1 samples 400, 400") - truth);
