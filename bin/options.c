@@ -757,9 +757,13 @@ static const ini_option ini_options[] = {
     {"Output_To_File", K_OUTPUT_ON, 1, K_OUTPUT_OFF},
     {"Output_File_Type", K_FORMAT, 0, K_FORMAT},
     {"Bits_Per_Color", K_BITS, 0, K_BITS},
-    /* zrcube's own keys for what POV-Ray sets in povray.conf. */
+    /* zrcube's own keys for what POV-Ray 3.7 sets in povray.conf
+       ([Permitted Paths] read= and read+write=, [File I/O Security]);
+       the plural spellings are accepted too. */
     {"Read_Path", K_READ_PATH, 0, K_READ_PATH},
+    {"Read_Paths", K_READ_PATH, 0, K_READ_PATH},
     {"Write_Path", K_WRITE_PATH, 0, K_WRITE_PATH},
+    {"Write_Paths", K_WRITE_PATH, 0, K_WRITE_PATH},
     {"IO_Restrictions", K_IO_RESTRICTIONS, 0, K_IO_RESTRICTIONS},
 };
 

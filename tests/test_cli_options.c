@@ -413,8 +413,13 @@ static void test_cli_options_io_restrictions(void **state) {
   assert_string_equal(o.write_paths[0], "c");
   assert_int_equal(o.io_mode, ZR_IO_READ_ONLY);
   zr__cli_free(&o);
-  assert_int_equal(PARSE(&o, err, "s.pov", "IO_Restrictions=none"), 0);
+  assert_int_equal(PARSE(&o, err, "s.pov", "IO_Restrictions=none",
+                         "Read_Paths=d", "write_paths=e"), 0);
   assert_int_equal(o.io_mode, ZR_IO_NONE);
+  assert_int_equal(o.n_read_paths, 1);
+  assert_string_equal(o.read_paths[0], "d");
+  assert_int_equal(o.n_write_paths, 1);
+  assert_string_equal(o.write_paths[0], "e");
   zr__cli_free(&o);
   assert_int_equal(PARSE(&o, err, "s.pov", "--io-restrictions=off",
                          "--io-restrictions=on"), 0);
