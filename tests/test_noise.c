@@ -73,6 +73,8 @@ static double case_value(const char *name, zr_vec3 p) {
       {"spotted", ZR_PAT_SPOTTED, 0},   {"bumps", ZR_PAT_BUMPS, 0},
       {"dents", ZR_PAT_DENTS, 0},       {"dents1", ZR_PAT_DENTS, 1},
       {"wrinkles", ZR_PAT_WRINKLES, 0}, {"granite", ZR_PAT_GRANITE, 0},
+      {"wrinkles1", ZR_PAT_WRINKLES, 1}, {"granite1", ZR_PAT_GRANITE, 1},
+      {"agate1", ZR_PAT_AGATE, 1},
       {"agate", ZR_PAT_AGATE, 0},       {"agate04", ZR_PAT_AGATE, 0},
       {"turbx", ZR_PAT_GRADIENT, 0},    {"turby", ZR_PAT_GRADIENT, 0},
       {"turbz", ZR_PAT_GRADIENT, 0},    {"bozoturb", ZR_PAT_BOZO, 0},

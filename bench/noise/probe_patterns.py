@@ -7,7 +7,8 @@ Run: bench/noise/probe_patterns.py [output]
 
 Each case is a name, the function povray evaluates and the points.  The
 formulas lib/scene/pattern.c uses for them were found with these values
-and the noise of bench/noise/probe_noise.py (all for noise_generator 2):
+and the noise of bench/noise/probe_noise.py (for noise_generator 2; for
+generator 1, c(n) is generator 1's noise and agate clamps every octave):
   bozo, spotted, bumps  the noise n(p);      dents  n(p)^3;
   wrinkles  half the sum over 10 octaves i of c(n(2^i p)) / 2^i, where
             c(n) = 2 n - 0.5 clamped to [0, 1];
@@ -41,6 +42,9 @@ CASES = [
     ("dents", "pattern { dents }"),
     ("dents1", "pattern { dents noise_generator 1 }"),
     ("wrinkles", "pattern { wrinkles }"),
+    ("wrinkles1", "pattern { wrinkles noise_generator 1 }"),
+    ("granite1", "pattern { granite noise_generator 1 }"),
+    ("agate1", "pattern { agate noise_generator 1 }"),
     ("granite", "pattern { granite }"),
     ("agate", "pattern { agate }"),
     ("agate04", "pattern { agate agate_turb 0.4 }"),

@@ -32,6 +32,7 @@
  * 1e-9).  The noise patterns, each formula found by
  * bench/noise/probe_patterns.py for noise_generator 2 (c(n) is 2 n - 0.5
  * clamped to [0, 1]):
+ * (for noise_generator 1, c(n) is generator 1's noise itself):
  *   bozo, spotted, bumps  n(p);  dents  n(p)^3;
  *   wrinkles   half the sum over 10 octaves of c(n(2^i p)) / 2^i;
  *   granite    the sum over 6 octaves of |c(n(4 2^i p)) - 0.5| / 2^i;
@@ -52,10 +53,9 @@
  * Turbulence displaces the point by the turbulence vector times the sum
  * over octaves of omega^i D(p lambda^i), D POV-Ray's vector noise
  * (measured), before the pattern's transforms, as the manual's
- * "Turbulence versus Turbulence Warp" says.  noise_generator 1 is
- * POV-Ray's for bozo, spotted, bumps and dents; wrinkles, granite and
- * agate with generator 1, and generator 3 anywhere, use formulas and a
- * noise of our own (Perlin's improved noise for 3), not yet measured.
+ * "Turbulence versus Turbulence Warp" says.  noise_generator 1 and 2
+ * are POV-Ray's for every noise pattern (measured); generator 3 is our
+ * own Perlin improved noise, not yet measured.
  *
  * Patterns the manual describes only in words, with our definitions:
  *   cells      one random value per unit cube ("Cells Pattern");
@@ -223,29 +223,35 @@ zr_vec3 zr__dturbulence(zr_vec3 p, int octaves, double omega,
 
 static double clamp01(double v) { return v < 0 ? 0 : v > 1 ? 1 : v; }
 
-/* The octave term of wrinkles, granite and agate: 2 n - 0.5 clamped to
-   [0, 1] (measured: bench/noise/probe_patterns.py). */
-static double octave(double n) { return clamp01(2 * n - 0.5); }
+/* The octave term of wrinkles, granite and agate at p (measured:
+   bench/noise/probe_patterns.py): for noise_generator 1 its noise (which
+   is clamped to [0, 1]), for the others 2 n - 0.5, clamped to [0, 1]
+   unless clamp is false (agate's later octaves). */
+static double octave(zr_vec3 p, int generator, bool clamp) {
+  if (generator == 1)
+    return zr__noise_gen(p, 1);
+  double v = 2 * zr__noise_gen(p, generator) - 0.5;
+  return clamp ? clamp01(v) : v;
+}
 
-/* wrinkles: half the sum over 10 octaves i of octave(noise(2^i p)) / 2^i
-   (measured to 1e-14 for noise_generator 2). */
+/* wrinkles: half the sum over 10 octaves i of octave(2^i p) / 2^i
+   (measured to 1e-14 for noise_generators 1 and 2). */
 static double wrinkles(zr_vec3 p, int generator) {
   double sum = 0, amp = 1, f = 1;
   for (int i = 0; i < 10; i++) {
-    sum += amp * octave(zr__noise_gen(zr_v3_scale(p, f), generator));
+    sum += amp * octave(zr_v3_scale(p, f), generator, true);
     amp *= 0.5;
     f *= 2;
   }
   return sum / 2;
 }
 
-/* granite: the sum over 6 octaves i of |octave(noise(4 2^i p)) - 0.5| /
-   2^i (measured to 1e-14 for noise_generator 2). */
+/* granite: the sum over 6 octaves i of |octave(4 2^i p) - 0.5| / 2^i
+   (measured to 1e-14 for noise_generators 1 and 2). */
 static double granite(zr_vec3 p, int generator) {
   double sum = 0, amp = 1, f = 4;
   for (int i = 0; i < 6; i++) {
-    sum += amp * fabs(octave(zr__noise_gen(zr_v3_scale(p, f), generator)) -
-                      0.5);
+    sum += amp * fabs(octave(zr_v3_scale(p, f), generator, true) - 0.5);
     amp *= 0.5;
     f *= 2;
   }
@@ -253,13 +259,13 @@ static double granite(zr_vec3 p, int generator) {
 }
 
 /* agate: (0.5 + 0.5 sin(2 pi (1.1 z + 1.3 agate_turb s)))^0.77, s the sum
-   over 6 octaves i of (2 noise(2^i p) - 0.5) / 2^i with only the first
-   octave clamped to [0, 1] (measured to 1e-13; agate_turb acts as a
-   single-precision number). */
+   over 6 octaves i of octave(2^i p) / 2^i with only the first octave
+   clamped for generator 2 (measured to 1e-13 for generators 1 and 2;
+   agate_turb acts as a single-precision number). */
 static double agate(zr_vec3 p, double agate_turb, int generator) {
-  double s = octave(zr__noise_gen(p, generator)), amp = 0.5, f = 2;
+  double s = octave(p, generator, true), amp = 0.5, f = 2;
   for (int i = 1; i < 6; i++) {
-    s += amp * (2 * zr__noise_gen(zr_v3_scale(p, f), generator) - 0.5);
+    s += amp * octave(zr_v3_scale(p, f), generator, false);
     amp *= 0.5;
     f *= 2;
   }
