@@ -53,7 +53,8 @@
  * Turbulence displaces the point by the turbulence vector times the sum
  * over octaves of omega^i D(p lambda^i), D POV-Ray's vector noise
  * (measured), before the pattern's transforms, as the manual's
- * "Turbulence versus Turbulence Warp" says.  noise_generator 1 and 2
+ * "Turbulence versus Turbulence Warp" says; marble and wood have
+ * turbulences of their own (measured, see turbulent_point()).  noise_generator 1 and 2
  * are POV-Ray's for every noise pattern (measured); generator 3 is our
  * own Perlin improved noise, not yet measured.
  *
@@ -307,23 +308,37 @@ static double crackle_distance(zr_vec3 d, double m, double offset) {
    the distances to the three nearest feature points (one per unit cell),
    clamped to [0, 1], or with solid the noise at the nearest point (all
    measured to 1e-12, bench/noise/probe_crackle.py). */
-static double crackle_general(const zr_pattern *pt, zr_vec3 p) {
-  double fx = floor(p.x), fy = floor(p.y), fz = floor(p.z);
-  double d[3] = {INFINITY, INFINITY, INFINITY};
-  zr_vec3 near = p;
-  for (int i = -1; i <= 1; i++)
-    for (int j = -1; j <= 1; j++)
-      for (int k = -1; k <= 1; k++) {
-        int64_t cx = (int64_t)fx + i, cy = (int64_t)fy + j,
-                cz = (int64_t)fz + k;
-        zr_vec3 f = crackle_point(cx, cy, cz);
+/* How far p is from the outside of the block of cells within reach
+   cells of its own, along the nearest axis: no point outside the block
+   is nearer than this in any metric of at least 1. */
+static double block_margin(zr_vec3 p, int reach) {
+  double c[3] = {p.x, p.y, p.z}, m = INFINITY;
+  for (int a = 0; a < 3; a++) {
+    double f = floor(c[a]);
+    m = fmin(m, fmin(c[a] - (f - reach), f + reach + 1 - c[a]));
+  }
+  return m;
+}
+
+/* The three smallest distances from p to the feature points of the cells
+   within reach cells of p's own, in crackle's metric, and the nearest
+   point. */
+static void nearest_three(const zr_pattern *pt, zr_vec3 p, int reach,
+                          double d[3], zr_vec3 *near) {
+  int64_t fx = (int64_t)floor(p.x), fy = (int64_t)floor(p.y),
+          fz = (int64_t)floor(p.z);
+  d[0] = d[1] = d[2] = INFINITY;
+  for (int64_t i = -reach; i <= reach; i++)
+    for (int64_t j = -reach; j <= reach; j++)
+      for (int64_t k = -reach; k <= reach; k++) {
+        zr_vec3 f = crackle_point(fx + i, fy + j, fz + k);
         double v = crackle_distance(zr_v3_sub(p, f), pt->crackle_metric,
                                     pt->crackle_offset);
         if (v < d[0]) {
           d[2] = d[1];
           d[1] = d[0];
           d[0] = v;
-          near = f;
+          *near = f;
         } else if (v < d[1]) {
           d[2] = d[1];
           d[1] = v;
@@ -331,14 +346,27 @@ static double crackle_general(const zr_pattern *pt, zr_vec3 p) {
           d[2] = v;
         }
       }
+}
+
+static double crackle_general(const zr_pattern *pt, zr_vec3 p) {
+  double d[3];
+  zr_vec3 near = p;
+  /* The 27 cells around p, or 125 when the third nearest point of those
+     lies farther than the 27 cells reach: POV-Ray finds points two cells
+     away (measured with metric 1). */
+  nearest_three(pt, p, 1, d, &near);
+  if (d[2] > block_margin(p, 1))
+    nearest_three(pt, p, 2, d, &near);
   if (pt->crackle_solid) /* the noise at the nearest point (measured) */
     return zr__noise(near);
   zr_vec3 w = pt->crackle_form;
   return clamp01(w.x * d[0] + w.y * d[1] + w.z * d[2]);
 }
 
-/* Voronoi distances to the nearest and second nearest feature point. */
-static double crackle(zr_vec3 p) {
+/* Voronoi distances to the nearest and second nearest feature point
+   among the 27 cells around p (crackle_general when they may not hold
+   the two nearest). */
+static double crackle(const zr_pattern *pt, zr_vec3 p) {
   double fx = floor(p.x), fy = floor(p.y), fz = floor(p.z);
   double d1 = INFINITY, d2 = INFINITY;
   for (int i = -1; i <= 1; i++)
@@ -355,6 +383,8 @@ static double crackle(zr_vec3 p) {
           d2 = d;
         }
       }
+  if (d2 > block_margin(p, 1))
+    return crackle_general(pt, p);
   return clamp01(d2 - d1);
 }
 
@@ -553,7 +583,7 @@ static double raw_value(const zr_pattern *pt, zr_vec3 p) {
     if (pt->crackle_metric == 2 && pt->crackle_offset == 0 &&
         !pt->crackle_solid && pt->crackle_form.x == -1 &&
         pt->crackle_form.y == 1 && pt->crackle_form.z == 0)
-      return crackle(p);
+      return crackle(pt, p);
     return crackle_general(pt, p);
   case ZR_PAT_CYLINDRICAL:
     return 1 - fmin(1, sqrt(p.x * p.x + p.z * p.z));
@@ -595,13 +625,40 @@ static double raw_value(const zr_pattern *pt, zr_vec3 p) {
   }
 }
 
+/* The point a pattern's own turbulence moves p to (measured,
+   bench/noise/probe_patterns.py).  Most patterns move it by the
+   turbulence vector times the vector turbulence; marble and wood have
+   their own: marble moves x alone, by turbulence.x times the sum over
+   octaves i of omega^i octave(lambda^i p) (only the first octave clamped
+   for generator 2, as agate's), and wood moves each coordinate a by
+   sin(2 pi turbulence.a (a + D.a)), D the vector turbulence. */
+static zr_vec3 turbulent_point(const zr_pattern *pt, zr_vec3 p) {
+  zr_vec3 t = pt->turbulence;
+  if (pt->kind == ZR_PAT_MARBLE) {
+    double om = (float)pt->omega, la = (float)pt->lambda;
+    double s = octave(p, pt->noise_generator, true), amp = om, f = la;
+    for (int i = 1; i < pt->octaves; i++) {
+      s += amp * octave(zr_v3_scale(p, f), pt->noise_generator, false);
+      amp *= om;
+      f *= la;
+    }
+    p.x += t.x * s;
+    return p;
+  }
+  zr_vec3 d = zr__dturbulence(p, pt->octaves, pt->omega, pt->lambda);
+  if (pt->kind == ZR_PAT_WOOD)
+    return zr_v3(p.x + sin(2 * PI * t.x * (p.x + d.x)),
+                 p.y + sin(2 * PI * t.y * (p.y + d.y)),
+                 p.z + sin(2 * PI * t.z * (p.z + d.z)));
+  return zr_v3_add(p, zr_v3_mul(t, d));
+}
+
 double zr__pattern_eval(const zr_pattern *pt, zr_vec3 p) {
   if (pt->n_warps > 0)
     p = zr__warp_point(pt->warps, pt->n_warps, p); /* lib/scene/warp.c */
   zr_vec3 t = pt->turbulence;
   if (t.x != 0 || t.y != 0 || t.z != 0)
-    p = zr_v3_add(p, zr_v3_mul(t, zr__dturbulence(p, pt->octaves,
-                                                  pt->omega, pt->lambda)));
+    p = turbulent_point(pt, p);
   switch (pt->kind) {
   case ZR_PAT_CHECKER:
     return checker(p);
