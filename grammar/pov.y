@@ -3651,7 +3651,8 @@ global_body:
       }
       SETTINGS->number_of_waves = (int)n;
     }
-/* Every noise generator is our one noise (lib/scene/pattern.c). */
+/* The default noise_generator of patterns made after it
+   (lib/scene/pattern.c). */
 | global_body T_NOISE_GENERATOR expr
     {
       double g;
@@ -3661,6 +3662,7 @@ global_body:
                       "noise_generator must be 1, 2 or 3");
         YYABORT;
       }
+      SETTINGS->noise_generator = (int)g;
     }
 | global_body T_AMBIENT_LIGHT colour_value
     { TRY(zr__sdl_want_rgb(p, &$3, &@3, &SETTINGS->ambient_light)); }

@@ -66,4 +66,5 @@ EXTRA_DIST += tests/noise/rand.txt bench/noise/probe_rand.sh \
 	bench/noise/probe_noise.py bench/noise/povprobe.py \
 	bench/noise/noise_tables.h bench/noise/probe_patterns.py \
 	tests/noise/patterns.txt bench/noise/probe_crackle.py \
-	bench/noise/crackle_tables.h
+	bench/noise/crackle_tables.h bench/noise/README.md \
+	bench/noise/ssim_scenes.sh

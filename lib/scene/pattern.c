@@ -32,6 +32,7 @@
  * 1e-9).  The noise patterns, each formula found by
  * bench/noise/probe_patterns.py for noise_generator 2 (c(n) is 2 n - 0.5
  * clamped to [0, 1]):
+ * (for noise_generator 1, c(n) is generator 1's noise itself):
  *   bozo, spotted, bumps  n(p);  dents  n(p)^3;
  *   wrinkles   half the sum over 10 octaves of c(n(2^i p)) / 2^i;
  *   granite    the sum over 6 octaves of |c(n(4 2^i p)) - 0.5| / 2^i;
@@ -52,10 +53,10 @@
  * Turbulence displaces the point by the turbulence vector times the sum
  * over octaves of omega^i D(p lambda^i), D POV-Ray's vector noise
  * (measured), before the pattern's transforms, as the manual's
- * "Turbulence versus Turbulence Warp" says.  noise_generator 1 is
- * POV-Ray's for bozo, spotted, bumps and dents; wrinkles, granite and
- * agate with generator 1, and generator 3 anywhere, use formulas and a
- * noise of our own (Perlin's improved noise for 3), not yet measured.
+ * "Turbulence versus Turbulence Warp" says; marble and wood have
+ * turbulences of their own (measured, see turbulent_point()).  noise_generator 1 and 2
+ * are POV-Ray's for every noise pattern (measured); generator 3 is our
+ * own Perlin improved noise, not yet measured.
  *
  * Patterns the manual describes only in words, with our definitions:
  *   cells      one random value per unit cube ("Cells Pattern");
@@ -223,29 +224,35 @@ zr_vec3 zr__dturbulence(zr_vec3 p, int octaves, double omega,
 
 static double clamp01(double v) { return v < 0 ? 0 : v > 1 ? 1 : v; }
 
-/* The octave term of wrinkles, granite and agate: 2 n - 0.5 clamped to
-   [0, 1] (measured: bench/noise/probe_patterns.py). */
-static double octave(double n) { return clamp01(2 * n - 0.5); }
+/* The octave term of wrinkles, granite and agate at p (measured:
+   bench/noise/probe_patterns.py): for noise_generator 1 its noise (which
+   is clamped to [0, 1]), for the others 2 n - 0.5, clamped to [0, 1]
+   unless clamp is false (agate's later octaves). */
+static double octave(zr_vec3 p, int generator, bool clamp) {
+  if (generator == 1)
+    return zr__noise_gen(p, 1);
+  double v = 2 * zr__noise_gen(p, generator) - 0.5;
+  return clamp ? clamp01(v) : v;
+}
 
-/* wrinkles: half the sum over 10 octaves i of octave(noise(2^i p)) / 2^i
-   (measured to 1e-14 for noise_generator 2). */
+/* wrinkles: half the sum over 10 octaves i of octave(2^i p) / 2^i
+   (measured to 1e-14 for noise_generators 1 and 2). */
 static double wrinkles(zr_vec3 p, int generator) {
   double sum = 0, amp = 1, f = 1;
   for (int i = 0; i < 10; i++) {
-    sum += amp * octave(zr__noise_gen(zr_v3_scale(p, f), generator));
+    sum += amp * octave(zr_v3_scale(p, f), generator, true);
     amp *= 0.5;
     f *= 2;
   }
   return sum / 2;
 }
 
-/* granite: the sum over 6 octaves i of |octave(noise(4 2^i p)) - 0.5| /
-   2^i (measured to 1e-14 for noise_generator 2). */
+/* granite: the sum over 6 octaves i of |octave(4 2^i p) - 0.5| / 2^i
+   (measured to 1e-14 for noise_generators 1 and 2). */
 static double granite(zr_vec3 p, int generator) {
   double sum = 0, amp = 1, f = 4;
   for (int i = 0; i < 6; i++) {
-    sum += amp * fabs(octave(zr__noise_gen(zr_v3_scale(p, f), generator)) -
-                      0.5);
+    sum += amp * fabs(octave(zr_v3_scale(p, f), generator, true) - 0.5);
     amp *= 0.5;
     f *= 2;
   }
@@ -253,13 +260,13 @@ static double granite(zr_vec3 p, int generator) {
 }
 
 /* agate: (0.5 + 0.5 sin(2 pi (1.1 z + 1.3 agate_turb s)))^0.77, s the sum
-   over 6 octaves i of (2 noise(2^i p) - 0.5) / 2^i with only the first
-   octave clamped to [0, 1] (measured to 1e-13; agate_turb acts as a
-   single-precision number). */
+   over 6 octaves i of octave(2^i p) / 2^i with only the first octave
+   clamped for generator 2 (measured to 1e-13 for generators 1 and 2;
+   agate_turb acts as a single-precision number). */
 static double agate(zr_vec3 p, double agate_turb, int generator) {
-  double s = octave(zr__noise_gen(p, generator)), amp = 0.5, f = 2;
+  double s = octave(p, generator, true), amp = 0.5, f = 2;
   for (int i = 1; i < 6; i++) {
-    s += amp * (2 * zr__noise_gen(zr_v3_scale(p, f), generator) - 0.5);
+    s += amp * octave(zr_v3_scale(p, f), generator, false);
     amp *= 0.5;
     f *= 2;
   }
@@ -301,23 +308,37 @@ static double crackle_distance(zr_vec3 d, double m, double offset) {
    the distances to the three nearest feature points (one per unit cell),
    clamped to [0, 1], or with solid the noise at the nearest point (all
    measured to 1e-12, bench/noise/probe_crackle.py). */
-static double crackle_general(const zr_pattern *pt, zr_vec3 p) {
-  double fx = floor(p.x), fy = floor(p.y), fz = floor(p.z);
-  double d[3] = {INFINITY, INFINITY, INFINITY};
-  zr_vec3 near = p;
-  for (int i = -1; i <= 1; i++)
-    for (int j = -1; j <= 1; j++)
-      for (int k = -1; k <= 1; k++) {
-        int64_t cx = (int64_t)fx + i, cy = (int64_t)fy + j,
-                cz = (int64_t)fz + k;
-        zr_vec3 f = crackle_point(cx, cy, cz);
+/* How far p is from the outside of the block of cells within reach
+   cells of its own, along the nearest axis: no point outside the block
+   is nearer than this in any metric of at least 1. */
+static double block_margin(zr_vec3 p, int reach) {
+  double c[3] = {p.x, p.y, p.z}, m = INFINITY;
+  for (int a = 0; a < 3; a++) {
+    double f = floor(c[a]);
+    m = fmin(m, fmin(c[a] - (f - reach), f + reach + 1 - c[a]));
+  }
+  return m;
+}
+
+/* The three smallest distances from p to the feature points of the cells
+   within reach cells of p's own, in crackle's metric, and the nearest
+   point. */
+static void nearest_three(const zr_pattern *pt, zr_vec3 p, int reach,
+                          double d[3], zr_vec3 *near) {
+  int64_t fx = (int64_t)floor(p.x), fy = (int64_t)floor(p.y),
+          fz = (int64_t)floor(p.z);
+  d[0] = d[1] = d[2] = INFINITY;
+  for (int64_t i = -reach; i <= reach; i++)
+    for (int64_t j = -reach; j <= reach; j++)
+      for (int64_t k = -reach; k <= reach; k++) {
+        zr_vec3 f = crackle_point(fx + i, fy + j, fz + k);
         double v = crackle_distance(zr_v3_sub(p, f), pt->crackle_metric,
                                     pt->crackle_offset);
         if (v < d[0]) {
           d[2] = d[1];
           d[1] = d[0];
           d[0] = v;
-          near = f;
+          *near = f;
         } else if (v < d[1]) {
           d[2] = d[1];
           d[1] = v;
@@ -325,14 +346,27 @@ static double crackle_general(const zr_pattern *pt, zr_vec3 p) {
           d[2] = v;
         }
       }
+}
+
+static double crackle_general(const zr_pattern *pt, zr_vec3 p) {
+  double d[3];
+  zr_vec3 near = p;
+  /* The 27 cells around p, or 125 when the third nearest point of those
+     lies farther than the 27 cells reach: POV-Ray finds points two cells
+     away (measured with metric 1). */
+  nearest_three(pt, p, 1, d, &near);
+  if (d[2] > block_margin(p, 1))
+    nearest_three(pt, p, 2, d, &near);
   if (pt->crackle_solid) /* the noise at the nearest point (measured) */
     return zr__noise(near);
   zr_vec3 w = pt->crackle_form;
   return clamp01(w.x * d[0] + w.y * d[1] + w.z * d[2]);
 }
 
-/* Voronoi distances to the nearest and second nearest feature point. */
-static double crackle(zr_vec3 p) {
+/* Voronoi distances to the nearest and second nearest feature point
+   among the 27 cells around p (crackle_general when they may not hold
+   the two nearest). */
+static double crackle(const zr_pattern *pt, zr_vec3 p) {
   double fx = floor(p.x), fy = floor(p.y), fz = floor(p.z);
   double d1 = INFINITY, d2 = INFINITY;
   for (int i = -1; i <= 1; i++)
@@ -349,6 +383,8 @@ static double crackle(zr_vec3 p) {
           d2 = d;
         }
       }
+  if (d2 > block_margin(p, 1))
+    return crackle_general(pt, p);
   return clamp01(d2 - d1);
 }
 
@@ -547,7 +583,7 @@ static double raw_value(const zr_pattern *pt, zr_vec3 p) {
     if (pt->crackle_metric == 2 && pt->crackle_offset == 0 &&
         !pt->crackle_solid && pt->crackle_form.x == -1 &&
         pt->crackle_form.y == 1 && pt->crackle_form.z == 0)
-      return crackle(p);
+      return crackle(pt, p);
     return crackle_general(pt, p);
   case ZR_PAT_CYLINDRICAL:
     return 1 - fmin(1, sqrt(p.x * p.x + p.z * p.z));
@@ -589,13 +625,40 @@ static double raw_value(const zr_pattern *pt, zr_vec3 p) {
   }
 }
 
+/* The point a pattern's own turbulence moves p to (measured,
+   bench/noise/probe_patterns.py).  Most patterns move it by the
+   turbulence vector times the vector turbulence; marble and wood have
+   their own: marble moves x alone, by turbulence.x times the sum over
+   octaves i of omega^i octave(lambda^i p) (only the first octave clamped
+   for generator 2, as agate's), and wood moves each coordinate a by
+   sin(2 pi turbulence.a (a + D.a)), D the vector turbulence. */
+static zr_vec3 turbulent_point(const zr_pattern *pt, zr_vec3 p) {
+  zr_vec3 t = pt->turbulence;
+  if (pt->kind == ZR_PAT_MARBLE) {
+    double om = (float)pt->omega, la = (float)pt->lambda;
+    double s = octave(p, pt->noise_generator, true), amp = om, f = la;
+    for (int i = 1; i < pt->octaves; i++) {
+      s += amp * octave(zr_v3_scale(p, f), pt->noise_generator, false);
+      amp *= om;
+      f *= la;
+    }
+    p.x += t.x * s;
+    return p;
+  }
+  zr_vec3 d = zr__dturbulence(p, pt->octaves, pt->omega, pt->lambda);
+  if (pt->kind == ZR_PAT_WOOD)
+    return zr_v3(p.x + sin(2 * PI * t.x * (p.x + d.x)),
+                 p.y + sin(2 * PI * t.y * (p.y + d.y)),
+                 p.z + sin(2 * PI * t.z * (p.z + d.z)));
+  return zr_v3_add(p, zr_v3_mul(t, d));
+}
+
 double zr__pattern_eval(const zr_pattern *pt, zr_vec3 p) {
   if (pt->n_warps > 0)
     p = zr__warp_point(pt->warps, pt->n_warps, p); /* lib/scene/warp.c */
   zr_vec3 t = pt->turbulence;
   if (t.x != 0 || t.y != 0 || t.z != 0)
-    p = zr_v3_add(p, zr_v3_mul(t, zr__dturbulence(p, pt->octaves,
-                                                  pt->omega, pt->lambda)));
+    p = turbulent_point(pt, p);
   switch (pt->kind) {
   case ZR_PAT_CHECKER:
     return checker(p);

@@ -898,6 +898,7 @@ typedef struct zr_settings {
   double adc_bailout;   /* default 1/255 */
   double assumed_gamma; /* default 1.0 */
   int number_of_waves;  /* waves and ripples made after it; default 10 */
+  int noise_generator;  /* patterns made after it; default 0 (= 2) */
   bool assumed_gamma_given;
   zr_rgb ambient_light; /* default 1 */
   /* irid_wavelength: iridescence's red, green and blue wavelengths in

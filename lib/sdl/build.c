@@ -346,6 +346,7 @@ bool zr__sdl_pigment_pattern(zr_sdl_parser *p, zr_pigment *pg, int kind,
   zr__pigment_set_pattern(pg, (zr_pattern_kind)kind);
   /* global_settings { number_of_waves } sets the default. */
   pg->pattern.waves = p->scene->settings.number_of_waves;
+  pg->pattern.noise_generator = p->scene->settings.noise_generator;
   if (!list || list->n == 0)
     return true;
   int most = kind == ZR_PAT_HEXAGON ? 3 : 2;
@@ -563,6 +564,7 @@ bool zr__sdl_normal_pattern(zr_sdl_parser *p, zr_normal *nm, int kind,
                             const zr_sdl_loc *loc) {
   zr__pattern_init(&nm->pattern, (zr_pattern_kind)kind);
   nm->pattern.waves = p->scene->settings.number_of_waves;
+  nm->pattern.noise_generator = p->scene->settings.noise_generator;
   /* A normal pattern without an amount has bump size 0.5 (not in the
      manual; measured: bench/provenance/probe.py normal_amount). */
   nm->amount = 0.5;
