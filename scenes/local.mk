@@ -15,6 +15,9 @@ dist_scenes_DATA = \
 	scenes/default.pov \
 	scenes/default.ref.pov \
 	scenes/expressions.pov \
+	scenes/flat_box.pov \
+	scenes/normal_tilt.pov \
+	scenes/texture_modify.pov \
 	scenes/gamma.pov \
 	scenes/height_field.pov \
 	scenes/isosurface.pov \

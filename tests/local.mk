@@ -22,6 +22,9 @@ tests_imgcmp_LDADD = lib/libzrcube.la -lm
 TESTS += tests/golden.sh
 EXTRA_DIST += tests/golden.sh tests/ref/README.md tests/ref/make-refs.sh \
 	tests/ref/blob.png \
+	tests/ref/flat_box.png \
+	tests/ref/normal_tilt.png \
+	tests/ref/texture_modify.png \
 	tests/ref/bicubic.png \
 	tests/ref/julia.png \
 	tests/ref/sphere_sweep.png \

@@ -294,6 +294,66 @@ zr_texture *zr__sdl_texture_new(zr_sdl_parser *p, const zr_texture *from) {
   return tx;
 }
 
+/*
+ * "Pigment", "Normal", "Finish": the items of a block without an
+ * identifier modify the current values, those of the texture the block
+ * is in (the top layer of a texture identifier, or what an earlier
+ * block of the same texture gave), else those of the default texture
+ * (#default).  POV-Ray 3.7's renders: texture { T pigment { quick_color
+ * C } } keeps T's pattern (advanced/chess2.pov's pieces), #default {
+ * normal { onion } } reaches object { X normal { } } (slopemap.pov).
+ */
+void zr__sdl_texture_base(zr_sdl_parser *p, const zr_texture *tx, int kind) {
+  while (tx && tx->over)
+    tx = tx->over;
+  const zr_texture *d = p->default_changed ? p->scene->default_texture : NULL;
+  switch (kind) {
+  case 'p':
+    p->pigment_base = tx && tx->pigment ? tx->pigment
+                      : d               ? d->pigment
+                                        : NULL;
+    break;
+  case 'n':
+    p->normal_base = tx && tx->normal ? tx->normal
+                     : d              ? d->normal
+                                      : NULL;
+    break;
+  default:
+    p->finish_base = tx && tx->finish ? tx->finish
+                     : d              ? d->finish
+                                      : NULL;
+    break;
+  }
+  p->base_set |= kind == 'p' ? 1 : kind == 'n' ? 2 : 4;
+}
+
+void zr__sdl_block_base(zr_sdl_parser *p, int kind) {
+  int bit = kind == 'p' ? 1 : kind == 'n' ? 2 : 4;
+  if (!(p->base_set & bit))
+    zr__sdl_texture_base(p, NULL, kind);
+}
+
+const zr_pigment *zr__sdl_take_pigment_base(zr_sdl_parser *p) {
+  const zr_pigment *b = p->pigment_base;
+  p->pigment_base = NULL;
+  p->base_set &= ~1;
+  return b;
+}
+
+const zr_normal *zr__sdl_take_normal_base(zr_sdl_parser *p) {
+  const zr_normal *b = p->normal_base;
+  p->normal_base = NULL;
+  p->base_set &= ~2;
+  return b;
+}
+
+const zr_finish *zr__sdl_take_finish_base(zr_sdl_parser *p) {
+  const zr_finish *b = p->finish_base;
+  p->finish_base = NULL;
+  p->base_set &= ~4;
+  return b;
+}
+
 bool zr__sdl_texture_done(zr_sdl_parser *p, zr_texture *tx) {
   if (tx->map && tx->map->n > 0) {
     /* A patterned texture shows as its first entry wherever one plain

@@ -463,6 +463,16 @@ typedef struct zr_sdl_parser {
   /* An object's transform is being applied to its textures: patterns
      with uv_mapping stay where they are on the surface. */
   bool moving_object;
+  /* What the next pigment { }, normal { } or finish { } without an
+     identifier starts from: its texture's own (set just before the
+     block inside a texture), else the default texture's once #default
+     changed it ("Pigment", "Normal", "Finish": the items modify the
+     current values).  Taken and cleared as the block starts. */
+  const zr_pigment *pigment_base;
+  const zr_normal *normal_base;
+  const zr_finish *finish_base;
+  int base_set;         /* bits 1, 2, 4: pigment, normal, finish base set */
+  bool default_changed; /* a #default was read */
   int nested_depth; /* parsers running, for ZR_SDL_MAX_NESTED_PARSE */
   int macro_depth;
   int include_depth;
@@ -584,6 +594,17 @@ int zr__sdl_open_data(zr_sdl_parser *p, const char *name,
                       const zr_sdl_loc *at);
 /* #default: the texture, pigment or finish of objects made from now on
    (control.c). */
+/* The bases of the next pigment, normal or finish block of texture tx
+   (its top layer's own), see pigment_base; kind is 'p', 'n' or 'f'. */
+void zr__sdl_texture_base(zr_sdl_parser *p, const zr_texture *tx, int kind);
+/* The same for a block outside a texture (or in a texture that set
+   none): the default texture's once #default changed it. */
+void zr__sdl_block_base(zr_sdl_parser *p, int kind);
+/* The base a block starts from (and clears it): NULL for the built-in
+   defaults. */
+const zr_pigment *zr__sdl_take_pigment_base(zr_sdl_parser *p);
+const zr_normal *zr__sdl_take_normal_base(zr_sdl_parser *p);
+const zr_finish *zr__sdl_take_finish_base(zr_sdl_parser *p);
 bool zr__sdl_set_default(zr_sdl_parser *p, const zr_texture *texture,
                          const zr_pigment *pigment,
                          const zr_finish *finish);

@@ -557,14 +557,16 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
 
 /*
  * The geometric normal n perturbed by nm at p, before the caller turns
- * it towards the viewer when the ray leaves the surface.  A bump map
- * tilts the normal on the viewer's side: POV-Ray 3.7 renders a grey
- * ramp on "plane { z, 0 }" and on "plane { -z, 0 }" seen from -z with
- * the same normal, so the tilt must not turn with n.
+ * it towards the viewer when the ray leaves the surface.  A normal
+ * tilts on the viewer's side: POV-Ray 3.7 renders a grey ramp on
+ * "plane { z, 0 }" and on "plane { -z, 0 }" seen from -z with the same
+ * normal, for a bump map and for a pattern (gradient x tilts the same
+ * way seen from either side: bench/conform/normal_probe.sh), so the
+ * tilt must not turn with n.
  */
 static zr_vec3 perturbed(const zr_normal *nm, zr_vec3 p, zr_vec3 n,
                          bool entering) {
-  if (nm->bump_map && !entering)
+  if (!entering)
     return zr_v3_neg(zr__normal_perturb(nm, p, zr_v3_neg(n)));
   return zr__normal_perturb(nm, p, n);
 }
