@@ -17,6 +17,7 @@ dist_scenes_DATA = \
 	scenes/expressions.pov \
 	scenes/flat_box.pov \
 	scenes/normal_tilt.pov \
+	scenes/spirals.pov \
 	scenes/texture_modify.pov \
 	scenes/gamma.pov \
 	scenes/height_field.pov \

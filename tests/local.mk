@@ -24,6 +24,7 @@ EXTRA_DIST += tests/golden.sh tests/ref/README.md tests/ref/make-refs.sh \
 	tests/ref/blob.png \
 	tests/ref/flat_box.png \
 	tests/ref/normal_tilt.png \
+	tests/ref/spirals.png \
 	tests/ref/texture_modify.png \
 	tests/ref/bicubic.png \
 	tests/ref/julia.png \
