@@ -337,9 +337,14 @@ static zr_rgb direct_light(const zr_tracer *tr, const surface *s,
     /* Shadow rays leave from the side the light is on. */
     if (back)
       from = zr_v3_madd(s->p, s->n, -s->offset);
-    lc = zr_rgb_mul(lc, zr__light_visibility(tr, light, s->p, from));
-    if (rgb_max(lc) <= 0.0)
+    /* Skip what the shadow blocks, not what is dark: a light of
+       negative colour takes light away (POV-Ray 3.7 darkens a lit
+       plane by "light_source { ... color rgb -0.5 }": crater_dat.pov,
+       abyss.pov, scenes/negative_light.pov). */
+    zr_rgb vis = zr__light_visibility(tr, light, s->p, from);
+    if (rgb_max(vis) <= 0.0)
       continue;
+    lc = zr_rgb_mul(lc, vis);
     if (back) {
       if (light->media_attenuation)
         lc = zr_rgb_mul(lc, zr__media_light_attenuation(tr, light, s->p));
