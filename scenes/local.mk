@@ -19,6 +19,7 @@ dist_scenes_DATA = \
 	scenes/negative_light.pov \
 	scenes/normal_tilt.pov \
 	scenes/spirals.pov \
+	scenes/transmit_over.pov \
 	scenes/texture_modify.pov \
 	scenes/gamma.pov \
 	scenes/height_field.pov \

@@ -481,7 +481,10 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
   const zr_settings *gs = &tr->scene->settings;
   zr_colour col = s->colour;
   zr_rgb c = zr_colour_rgb(col);
-  double opacity = fmax(0.0, 1.0 - col.f - col.t);
+  /* Not clamped: transmit above 1 makes the surface's own colour count
+     negatively, a contrast trick POV-Ray 3.7 renders (advanced/
+     bwstripe.pov: rgb 0.5 transmit 100 before the camera). */
+  double opacity = 1.0 - col.f - col.t;
 
   zr_rgb sum;
   zr_rgb diffuse_in;
