@@ -18,6 +18,7 @@ dist_scenes_DATA = \
 	scenes/flat_box.pov \
 	scenes/negative_light.pov \
 	scenes/normal_tilt.pov \
+	scenes/ortho_id.pov \
 	scenes/spirals.pov \
 	scenes/transmit_over.pov \
 	scenes/texture_modify.pov \
