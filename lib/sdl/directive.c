@@ -253,6 +253,24 @@ static zr_sdl_symbol *resolve(zr_sdl_parser *p, zr_sdl_symbol *s,
   return s;
 }
 
+/* #declare NAME where NAME is, innermost, a parameter passed by
+   identifier: the caller's variable is the one to change, named now
+   (POV-Ray 3.7: macros/macro2.pov turns its objects so). */
+static void bind_alias(zr_sdl_parser *p, zr_sdl_decl_name *d) {
+  zr_sdl_symbol *s = NULL;
+  for (size_t i = p->n_frames; i-- > 1 && !s;)
+    s = zr__sdl_symtab_find(&p->frames[i].locals, d->name);
+  while (s && s->value.kind == ZR_SDL_ALIAS) {
+    const zr_sdl_alias *a = s->value.ptr;
+    if (a->frame >= p->n_frames)
+      return;
+    d->name = a->name;
+    d->frame = (int)a->frame;
+    d->bound = true;
+    s = zr__sdl_symtab_find(scope_of(p, a->frame), a->name);
+  }
+}
+
 zr_sdl_symbol *zr__sdl_lookup(zr_sdl_parser *p, const char *name,
                               size_t *frame) {
   for (size_t i = p->n_frames; i-- > 1;) {
@@ -302,6 +320,19 @@ bool zr__sdl_define(zr_sdl_parser *p, const zr_sdl_decl_name *name,
     frame = p->n_frames - 1;
   zr_sdl_symtab *t = NULL;
   zr_sdl_symbol *s = NULL;
+  if (!is_local && name->bound && (size_t)name->frame < p->n_frames) {
+    t = scope_of(p, (size_t)name->frame);
+    s = zr__sdl_symtab_find(t, name->name);
+    if (s) {
+      s->value = *value;
+      return true;
+    }
+    if (zr__sdl_symtab_set(t, name->name, value) != ZR_OK) {
+      zr__sdl_error(p, ZR_ENOMEM, loc, "out of memory");
+      return false;
+    }
+    return true;
+  }
   if (is_local) {
     t = scope_of(p, frame);
     s = zr__sdl_symtab_find(t, name->name);
@@ -988,6 +1019,9 @@ int zr__sdl_next(zr_sdl_lexval *val, zr_sdl_loc *loc, zr_sdl_parser *p) {
       v.decl.name = t->v.str;
       v.decl.frame = (int)(p->n_frames - 1);
       v.decl.local = p->decl_local;
+      v.decl.bound = false;
+      if (!p->decl_local)
+        bind_alias(p, &v.decl);
       return deliver(p, T_DECL_NAME, &v, &tl, t->v.str, val, loc);
     }
     zr_sdl_symbol *s = zr__sdl_lookup(p, t->v.str, NULL);

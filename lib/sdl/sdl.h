@@ -123,6 +123,10 @@ typedef struct zr_sdl_decl_name {
   const char *name;
   int frame;
   bool local;
+  /* #declare of a parameter passed by identifier: name and frame are
+     the caller's variable, found when the name was read, as a macro may
+     end before the value does ("#declare P = object { P }" then #end). */
+  bool bound;
   int n_index;
   int index[ZR_SDL_MAX_DIMS];
 } zr_sdl_decl_name;
