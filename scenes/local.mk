@@ -14,6 +14,7 @@ dist_scenes_DATA = \
 	scenes/csg_union.pov \
 	scenes/default.pov \
 	scenes/default.ref.pov \
+	scenes/default_maps.pov \
 	scenes/expressions.pov \
 	scenes/flat_box.pov \
 	scenes/negative_light.pov \

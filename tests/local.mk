@@ -22,6 +22,7 @@ tests_imgcmp_LDADD = lib/libzrcube.la -lm
 TESTS += tests/golden.sh
 EXTRA_DIST += tests/golden.sh tests/ref/README.md tests/ref/make-refs.sh \
 	tests/ref/blob.png \
+	tests/ref/default_maps.png \
 	tests/ref/flat_box.png \
 	tests/ref/negative_light.png \
 	tests/ref/normal_tilt.png \

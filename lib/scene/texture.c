@@ -83,6 +83,59 @@ static const zr_colour_map default_map = {2, grey_ramp};
 
 const zr_colour_map *zr__default_colour_map(void) { return &default_map; }
 
+/*
+ * The maps POV-Ray 3.7 gives some patterns written without a colour map
+ * (pigments/pigment.pov); read from its #debug output by
+ * bench/conform/defmap_probe.sh, which prints each pattern's value and
+ * colour at scattered points (every knot below fits them to 1e-5).
+ * Other patterns use the grey ramp.  mandel's map is left out: its
+ * knots were not pinned down.
+ */
+static const zr_colour_map_entry agate_map[] = {
+    {0.0, {1, 1, 1, 0, 0}},         {0.5, {0.95, 0.75, 0.5, 0, 0}},
+    {0.5, {0.9, 0.7, 0.5, 0, 0}},   {0.6, {0.9, 0.7, 0.4, 0, 0}},
+    {0.6, {1, 0.7, 0.4, 0, 0}},     {1.0, {0.6, 0.3, 0, 0, 0}},
+};
+static const zr_colour_map_entry bozo_map[] = {
+    {0.4, {1, 1, 1, 0, 0}}, {0.4, {0, 1, 0, 0, 0}}, {0.6, {0, 1, 0, 0, 0}},
+    {0.6, {0, 0, 1, 0, 0}}, {0.8, {0, 0, 1, 0, 0}}, {0.8, {1, 0, 0, 0, 0}},
+};
+static const zr_colour_map_entry marble_map[] = {
+    {0.0, {0.9, 0.8, 0.8, 0, 0}}, {0.9, {0.9, 0.08, 0.08, 0, 0}},
+    {0.9, {0, 0, 0, 0, 0}},
+};
+static const zr_colour_map_entry radial_map[] = {
+    {0.0, {0, 1, 1, 0, 0}},       {1.0 / 3, {1, 1, 0, 0, 0}},
+    {2.0 / 3, {1, 0, 1, 0, 0}},   {1.0, {0, 1, 1, 0, 0}},
+};
+static const zr_colour_map_entry wood_map[] = {
+    {0.6, {0.666, 0.312, 0.2, 0, 0}},
+    {0.6, {0.4, 0.1333, 0.066, 0, 0}},
+};
+#define MAP_OF(e) {sizeof(e) / sizeof(e)[0], e}
+static const zr_colour_map agate_default = MAP_OF(agate_map);
+static const zr_colour_map bozo_default = MAP_OF(bozo_map);
+static const zr_colour_map marble_default = MAP_OF(marble_map);
+static const zr_colour_map radial_default = MAP_OF(radial_map);
+static const zr_colour_map wood_default = MAP_OF(wood_map);
+
+static const zr_colour_map *default_map_of(zr_pattern_kind kind) {
+  switch (kind) {
+  case ZR_PAT_AGATE:
+    return &agate_default;
+  case ZR_PAT_BOZO:
+    return &bozo_default;
+  case ZR_PAT_MARBLE:
+    return &marble_default;
+  case ZR_PAT_RADIAL:
+    return &radial_default;
+  case ZR_PAT_WOOD:
+    return &wood_default;
+  default:
+    return &default_map;
+  }
+}
+
 static zr_colour mix(zr_colour a, zr_colour b, double t) {
   return zr_colour5(a.r + (b.r - a.r) * t, a.g + (b.g - a.g) * t,
                     a.b + (b.b - a.b) * t, a.f + (b.f - a.f) * t,
@@ -276,7 +329,7 @@ zr_colour zr__pigment_eval_n(const zr_pigment *pg, zr_vec3 world,
     return pg->list[i < 0 ? 0 : i > 2 ? 2 : i];
   }
   return zr__colour_map_eval(
-      pg->colour_map ? pg->colour_map : zr__default_colour_map(), v);
+      pg->colour_map ? pg->colour_map : default_map_of(pg->pattern.kind), v);
 }
 
 /* ---- normals ---- */
