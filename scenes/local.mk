@@ -16,6 +16,7 @@ dist_scenes_DATA = \
 	scenes/default.ref.pov \
 	scenes/default_maps.pov \
 	scenes/expressions.pov \
+	scenes/fade_shadow.pov \
 	scenes/flat_box.pov \
 	scenes/negative_light.pov \
 	scenes/normal_tilt.pov \

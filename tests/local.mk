@@ -23,6 +23,7 @@ TESTS += tests/golden.sh
 EXTRA_DIST += tests/golden.sh tests/ref/README.md tests/ref/make-refs.sh \
 	tests/ref/blob.png \
 	tests/ref/default_maps.png \
+	tests/ref/fade_shadow.png \
 	tests/ref/flat_box.png \
 	tests/ref/negative_light.png \
 	tests/ref/normal_tilt.png \
