@@ -603,6 +603,7 @@ static bool do_declare(zr_sdl_parser *p, int kind) {
 static bool do_version(zr_sdl_parser *p, const zr_sdl_loc *directive) {
   zr_sdl_expr e;
   zr_status s = zr__sdl_parse_expr(p, T_START_VERSION, &e);
+  p->version_given = true;
   return s == ZR_OK && zr__sdl_want_float(p, &e, directive, &p->version);
 }
 
@@ -1103,6 +1104,16 @@ static zr_status parse(zr_context *ctx, char *path, char *bytes, size_t size,
   }
   s = p.status;
   p.scene->settings.version = p.version;
+  /* A legacy scene (no #version at all, or one below 3.7 in force at
+     the end) without assumed_gamma works in the display's gamma, 2.2:
+     POV-Ray 3.7 writes rgb 0.5 seen with ambient 1 as 128 then, as 188
+     (linear 0.5) after "#version 3.7;" or "#include \"colors.inc\""
+     (which sets and restores the version), and as 188 with
+     assumed_gamma 1 in a #version 3.6 scene ("assumed_gamma":
+     "undefined for legacy scenes"). */
+  if (!p.scene->settings.assumed_gamma_given &&
+      (!p.version_given || p.version < 3.7 - 1e-9))
+    p.scene->settings.assumed_gamma = 2.2;
   parser_free(&p);
   if (s == ZR_OK)
     s = zr__scene_finish(p.scene, ctx);

@@ -460,6 +460,7 @@ typedef struct zr_sdl_parser {
   size_t n_frames, cap_frames;
   zr_sdl_symtab globals;
   double version;
+  bool version_given; /* a #version was read */
   int start_token; /* pseudo-token for the next yylex, 0 for none */
   zr_sdl_autoend autoend;
   bool want_decl_name;
