@@ -18,6 +18,7 @@ dist_scenes_DATA = \
 	scenes/expressions.pov \
 	scenes/fade_shadow.pov \
 	scenes/flat_box.pov \
+	scenes/image_gamma.pov \
 	scenes/legacy_gamma.pov \
 	scenes/negative_light.pov \
 	scenes/normal_tilt.pov \

@@ -25,6 +25,7 @@ EXTRA_DIST += tests/golden.sh tests/ref/README.md tests/ref/make-refs.sh \
 	tests/ref/default_maps.png \
 	tests/ref/fade_shadow.png \
 	tests/ref/flat_box.png \
+	tests/ref/image_gamma.png \
 	tests/ref/legacy_gamma.png \
 	tests/ref/negative_light.png \
 	tests/ref/normal_tilt.png \

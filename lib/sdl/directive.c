@@ -1068,6 +1068,8 @@ static void parser_free(zr_sdl_parser *p) {
   while (p->n_frames > 0)
     zr__sdl_pop_frame(p);
   free(p->frames);
+  free(p->image_pixels);
+  free(p->image_sizes);
   for (size_t i = 0; i < p->n_files; i++)
     zr__sdl_file_free(&p->files[i]);
   free(p->files);
@@ -1114,6 +1116,8 @@ static zr_status parse(zr_context *ctx, char *path, char *bytes, size_t size,
   if (!p.scene->settings.assumed_gamma_given &&
       (!p.version_given || p.version < 3.7 - 1e-9))
     p.scene->settings.assumed_gamma = 2.2;
+  if (s == ZR_OK)
+    zr__sdl_images_to_working_gamma(&p, p.scene->settings.assumed_gamma);
   parser_free(&p);
   if (s == ZR_OK)
     s = zr__scene_finish(p.scene, ctx);

@@ -461,6 +461,11 @@ typedef struct zr_sdl_parser {
   zr_sdl_symtab globals;
   double version;
   bool version_given; /* a #version was read */
+  /* The pixels of every image_map read, taken to the working gamma
+     space once assumed_gamma is known (the end of the parse). */
+  float **image_pixels;
+  size_t *image_sizes;
+  size_t n_images, cap_images;
   int start_token; /* pseudo-token for the next yylex, 0 for none */
   zr_sdl_autoend autoend;
   bool want_decl_name;
@@ -602,6 +607,8 @@ int zr__sdl_open_data(zr_sdl_parser *p, const char *name,
 /* The bases of the next pigment, normal or finish block of texture tx
    (its top layer's own), see pigment_base; kind is 'p', 'n' or 'f'. */
 void zr__sdl_texture_base(zr_sdl_parser *p, const zr_texture *tx, int kind);
+/* Raises every image_map's pixels to 1/gamma (build.c). */
+void zr__sdl_images_to_working_gamma(zr_sdl_parser *p, double gamma);
 /* The same for a block outside a texture (or in a texture that set
    none): the default texture's once #default changed it. */
 void zr__sdl_block_base(zr_sdl_parser *p, int kind);
