@@ -2220,7 +2220,8 @@ transform_block:
 /* ---- textures ---- */
 
 pigment:
-  T_PIGMENT '{' pigment_body '}'  { $$ = $3; }
+  T_PIGMENT '{' { zr__sdl_block_base(p, 'p'); } pigment_body '}'
+    { $$ = $4; }
 ;
 
 /* A pigment's body also stands alone in pigment_pattern { } and in the
@@ -2229,18 +2230,29 @@ pigment_start:
   pigment_start_bare
 | colour_value
     {
+      zr__sdl_take_pigment_base(p);
       TRY($$ = zr__sdl_pigment_new(p, NULL));
       TRY(zr__sdl_want_colour(p, &$1, &@1, &$$->colour));
     }
 ;
 
 pigment_start_bare:
-  %empty               { TRY($$ = zr__sdl_pigment_new(p, NULL)); }
-| T_PIGMENT_ID         { TRY($$ = zr__sdl_pigment_new(p, $1.ptr)); }
+  %empty
+    { TRY($$ = zr__sdl_pigment_new(p, zr__sdl_take_pigment_base(p))); }
+| T_PIGMENT_ID
+    {
+      zr__sdl_take_pigment_base(p);
+      TRY($$ = zr__sdl_pigment_new(p, $1.ptr));
+    }
 /* density { DENSITY_IDENTIFIER ... } (build_media.c). */
-| T_DENSITY_ID         { TRY($$ = zr__sdl_pigment_new(p, $1.ptr)); }
+| T_DENSITY_ID
+    {
+      zr__sdl_take_pigment_base(p);
+      TRY($$ = zr__sdl_pigment_new(p, $1.ptr));
+    }
 | T_IMAGE_MAP '{' image_map_body '}'
     {
+      zr__sdl_take_pigment_base(p);
       TRY($$ = zr__sdl_pigment_new(p, NULL));
       $$->kind = ZR_PIGMENT_IMAGE;
       $$->image = $3;
@@ -2669,12 +2681,18 @@ colour_map_body:
 /* ---- normals (reference manual, "Normal") ---- */
 
 normal:
-  T_NORMAL '{' normal_body '}'  { $$ = $3; }
+  T_NORMAL '{' { zr__sdl_block_base(p, 'n'); } normal_body '}'
+    { $$ = $4; }
 ;
 
 normal_start:
-  %empty               { TRY($$ = zr__sdl_normal_new(p, NULL)); }
-| T_NORMAL_ID          { TRY($$ = zr__sdl_normal_new(p, $1.ptr)); }
+  %empty
+    { TRY($$ = zr__sdl_normal_new(p, zr__sdl_take_normal_base(p))); }
+| T_NORMAL_ID
+    {
+      zr__sdl_take_normal_base(p);
+      TRY($$ = zr__sdl_normal_new(p, $1.ptr));
+    }
 ;
 
 normal_body:
@@ -2933,9 +2951,17 @@ irid_body:
 ;
 
 finish_head:
-  T_FINISH '{'         { TRY($$ = zr__sdl_finish_new(p, NULL)); }
-| T_FINISH '{' T_FINISH_ID
-    { TRY($$ = zr__sdl_finish_new(p, $3.ptr)); }
+  finish_open
+    { TRY($$ = zr__sdl_finish_new(p, zr__sdl_take_finish_base(p))); }
+| finish_open T_FINISH_ID
+    {
+      zr__sdl_take_finish_base(p);
+      TRY($$ = zr__sdl_finish_new(p, $2.ptr));
+    }
+;
+
+finish_open:
+  T_FINISH '{'         { zr__sdl_block_base(p, 'f'); }
 ;
 
 finish_body:
@@ -3143,25 +3169,25 @@ texture_body:
       top->uv_mapping = true;
       $$ = $1;
     }
-| texture_body pigment
+| texture_body { zr__sdl_texture_base(p, $1, 'p'); } pigment
     {
       zr_texture *top;
       TRY(top = zr__sdl_texture_top(p, $1));
-      top->pigment = $2;
+      top->pigment = $3;
       $$ = $1;
     }
-| texture_body finish
+| texture_body { zr__sdl_texture_base(p, $1, 'f'); } finish
     {
       zr_texture *top;
       TRY(top = zr__sdl_texture_top(p, $1));
-      top->finish = $2;
+      top->finish = $3;
       $$ = $1;
     }
-| texture_body normal
+| texture_body { zr__sdl_texture_base(p, $1, 'n'); } normal
     {
       zr_texture *top;
       TRY(top = zr__sdl_texture_top(p, $1));
-      top->normal = $2;
+      top->normal = $3;
       $$ = $1;
     }
 | texture_body transform

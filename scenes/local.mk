@@ -15,7 +15,18 @@ dist_scenes_DATA = \
 	scenes/csg_union.pov \
 	scenes/default.pov \
 	scenes/default.ref.pov \
+	scenes/default_maps.pov \
 	scenes/expressions.pov \
+	scenes/fade_shadow.pov \
+	scenes/flat_box.pov \
+	scenes/image_gamma.pov \
+	scenes/legacy_gamma.pov \
+	scenes/negative_light.pov \
+	scenes/normal_tilt.pov \
+	scenes/ortho_id.pov \
+	scenes/spirals.pov \
+	scenes/transmit_over.pov \
+	scenes/texture_modify.pov \
 	scenes/gamma.pov \
 	scenes/height_field.pov \
 	scenes/isosurface.pov \

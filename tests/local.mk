@@ -22,6 +22,17 @@ tests_imgcmp_LDADD = lib/libzrcube.la -lm
 TESTS += tests/golden.sh
 EXTRA_DIST += tests/golden.sh tests/ref/README.md tests/ref/make-refs.sh \
 	tests/ref/blob.png \
+	tests/ref/default_maps.png \
+	tests/ref/fade_shadow.png \
+	tests/ref/flat_box.png \
+	tests/ref/image_gamma.png \
+	tests/ref/legacy_gamma.png \
+	tests/ref/negative_light.png \
+	tests/ref/normal_tilt.png \
+	tests/ref/ortho_id.png \
+	tests/ref/spirals.png \
+	tests/ref/transmit_over.png \
+	tests/ref/texture_modify.png \
 	tests/ref/bicubic.png \
 	tests/ref/julia.png \
 	tests/ref/warps.png \

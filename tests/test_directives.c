@@ -220,6 +220,12 @@ static void test_directives_macros(void **state) {
          "#macro Outer(W) Inc(W) #end\n"
          "Outer(K)\n"
          "#debug concat(str(K, 0, 0), \" \")\n"
+         /* Also when the macro ends before the #declare's value does
+            (no ';' after an object, macros/macro2.pov): POV-Ray 3.7
+            prints 1 here. */
+         "#macro Move(O) #declare O = object { O translate x } #end\n"
+         "#declare S = sphere { 0, 1 } Move(S)\n"
+         "#debug concat(str(min_extent(S).x + 1, 0, 0), \" \")\n"
          /* Optional parameters and #break out of a macro. */
          "#macro Opt(A, optional B) #ifdef (B) #debug \"B\" #else "
          "#debug \"-\" #end #end\n"
@@ -236,7 +242,7 @@ static void test_directives_macros(void **state) {
          "Two(1, 2)\n"
          "#macro Three(A, B C) #debug str(A + B + C, 0, 0) #end\n"
          "Three(1, 2, 3)\n",
-         "720 7 8 -Ba v=1,2,336");
+         "720 7 8 1 -Ba v=1,2,336");
   assert_int_equal(f->scene->n_objects, 1);
 }
 

@@ -417,11 +417,20 @@ static double quilted(const zr_pattern *pt, zr_vec3 p) {
                   quilt_profile(p.z, c0, c1)) / 3);
 }
 
-/* One spiral's phase: arms turns per revolution, one per unit of radius
+/* One spiral's phase: arms turns per revolution, the angle counted from
+   -y towards +x, one per unit of radius and of z.  POV-Ray 3.7's values
+   (#debug of a ramp_wave spiral1 pigment function, bench/conform/
+   spiral_probe.pov): 0.55 at <0.3, 0, 0> with one arm, 0.8 with two,
+   0.05 with three; +arms/16 every 1/16 turn, +0.05 every 0.05 of r
    and of z. */
 static double spiral_phase(zr_vec3 p, double arms) {
-  double a = atan2(p.y, p.x) / (2 * PI);
+  double a = atan2(p.y, p.x) / (2 * PI) + 0.25;
   return arms * a + sqrt(p.x * p.x + p.y * p.y) + p.z;
+}
+
+static double triangle01(double v) {
+  double f = v - floor(v);
+  return f < 0.5 ? 2 * f : 2 - 2 * f;
 }
 
 /* The grey POV-Ray takes of a colour. */
@@ -495,7 +504,7 @@ double zr__pattern_wave(const zr_pattern *pt, double v) {
   zr_wave_kind wave = pt->wave;
   if (wave == ZR_WAVE_DEFAULT)
     wave = pt->kind == ZR_PAT_MARBLE || pt->kind == ZR_PAT_WOOD ||
-                   pt->kind == ZR_PAT_SPIRAL1
+                   pt->kind == ZR_PAT_SPIRAL1 || pt->kind == ZR_PAT_SPIRAL2
                ? ZR_WAVE_TRIANGLE
                : ZR_WAVE_RAMP;
   double f;
@@ -570,6 +579,14 @@ static double raw_value(const zr_pattern *pt, zr_vec3 p) {
     return quilted(pt, p);
   case ZR_PAT_SPIRAL1:
     return spiral_phase(p, pt->arms);
+  case ZR_PAT_SPIRAL2:
+    /* The spiral's triangle wave plus the triangle wave of the radius,
+       then the pattern's wave (triangle by default): POV-Ray 3.7's ramp
+       values (spiral_probe.pov) rise and fall by 2 per turn and per unit
+       of z, by 4, 0 or -4 per unit of radius, and are 0.5 at <0.3, 0, 0>
+       with one arm (0.9 + 0.6), 0.795147 (triangle) at <0.3, 0.1, 0>. */
+    return triangle01(spiral_phase(p, pt->arms)) +
+           triangle01(sqrt(p.x * p.x + p.y * p.y));
   case ZR_PAT_BOZO:
   case ZR_PAT_SPOTTED:
   case ZR_PAT_BUMPS:
@@ -672,15 +689,6 @@ double zr__pattern_eval(const zr_pattern *pt, zr_vec3 p) {
     return wave_sum(pt, p, false);
   case ZR_PAT_WAVES:
     return wave_sum(pt, p, true);
-  case ZR_PAT_SPIRAL2: {
-    /* Each spiral goes through the wave on its own, then they mix. */
-    zr_pattern one = *pt;
-    one.kind = ZR_PAT_SPIRAL1;
-    double a = zr__pattern_wave(&one, spiral_phase(p, pt->arms));
-    zr_vec3 mirrored = zr_v3(p.x, -p.y, p.z);
-    double b = zr__pattern_wave(&one, spiral_phase(mirrored, pt->arms));
-    return 0.5 * (a + b);
-  }
   case ZR_PAT_AVERAGE:
     return 0;
   case ZR_PAT_SLOPE:

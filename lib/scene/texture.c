@@ -23,13 +23,18 @@
  *     picture repeats unless "once", outside which it is clear
  *     (transmit 1).  interpolate 2 is bilinear between pixel centres;
  *     filter all / transmit all set those channels for every pixel.
- * Normals follow "Normal": the surface is taken as displaced by
- * bump_size times the pattern's value, so the normal tilts against the
- * value's gradient, measured by central differences 0.02 pattern units
- * apart (the manual's default accuracy, "Normals, Accuracy",
- * 3.4.6.2.2.1; the central differences are our own) and carried to
- * world space by the inverse transpose of the transform.  dents uses
- * the cube of the noise, which leaves flat ground between sharp pits.
+ * Normals follow "Normal" and POV-Ray 3.7's renders as
+ * bench/conform/normal_probe.sh measures them: the normal, on the
+ * viewer's side of the surface, is taken to pattern space and made of
+ * unit length there, the gradient of the pattern's height (its value,
+ * or the slope map's curve of it) times bump_size times a measured gain
+ * is taken off it, and the result goes back to world space by the
+ * inverse transpose of the transform.  So a uniform scale of the pattern
+ * leaves the tilt as it is, a non-uniform one changes it.  The gradient
+ * comes from central differences "accuracy" (default 0.02, the manual's "Normals, Accuracy",
+ * 3.4.6.2.2.1; the central differences are our own) pattern units apart.  dents uses the cube of the noise, which leaves flat ground
+ * between sharp pits; wrinkles also leans the normal along (1, 1, 1) of
+ * pattern space, as POV-Ray's does.
  *
  * Maps ("Pigment Maps and Pigment Lists", "Normal Maps", "Slope Maps",
  * "Texture Maps", "Average"): the pattern's value v falls between two
@@ -57,6 +62,19 @@
 
 /* Central difference step of normal slopes, in pattern units. */
 #define NORMAL_ACCURACY 0.02
+/* Tilt gains, measured (see tilt_gain()). */
+#define SLOPE_GAIN 0.13333
+#define BUMPS_GAIN 0.75
+#define DENTS_GAIN 0.23
+#define RIPPLES_GAIN 0.41
+#define WAVES_GAIN 0.95
+#define WRINKLES_GAIN 0.26
+/* POV-Ray's wrinkles also lean the normal by this much per unit of bump
+   size towards +x, +y and +z of pattern space, on either side of a
+   surface and turning with the pattern (normal_probe.sh: a mean tilt of
+   0.28 at bump size 0.5 seen along +z, 0.18 seen along -z, which
+   n + 0.5 * 0.45 (1, 1, 1) gives). */
+#define WRINKLES_LEAN 0.45
 
 static const zr_colour_map_entry grey_ramp[] = {
     {0.0, {0, 0, 0, 0, 0}},
@@ -65,6 +83,59 @@ static const zr_colour_map_entry grey_ramp[] = {
 static const zr_colour_map default_map = {2, grey_ramp};
 
 const zr_colour_map *zr__default_colour_map(void) { return &default_map; }
+
+/*
+ * The maps POV-Ray 3.7 gives some patterns written without a colour map
+ * (pigments/pigment.pov); read from its #debug output by
+ * bench/conform/defmap_probe.sh, which prints each pattern's value and
+ * colour at scattered points (every knot below fits them to 1e-5).
+ * Other patterns use the grey ramp.  mandel's map is left out: its
+ * knots were not pinned down.
+ */
+static const zr_colour_map_entry agate_map[] = {
+    {0.0, {1, 1, 1, 0, 0}},         {0.5, {0.95, 0.75, 0.5, 0, 0}},
+    {0.5, {0.9, 0.7, 0.5, 0, 0}},   {0.6, {0.9, 0.7, 0.4, 0, 0}},
+    {0.6, {1, 0.7, 0.4, 0, 0}},     {1.0, {0.6, 0.3, 0, 0, 0}},
+};
+static const zr_colour_map_entry bozo_map[] = {
+    {0.4, {1, 1, 1, 0, 0}}, {0.4, {0, 1, 0, 0, 0}}, {0.6, {0, 1, 0, 0, 0}},
+    {0.6, {0, 0, 1, 0, 0}}, {0.8, {0, 0, 1, 0, 0}}, {0.8, {1, 0, 0, 0, 0}},
+};
+static const zr_colour_map_entry marble_map[] = {
+    {0.0, {0.9, 0.8, 0.8, 0, 0}}, {0.9, {0.9, 0.08, 0.08, 0, 0}},
+    {0.9, {0, 0, 0, 0, 0}},
+};
+static const zr_colour_map_entry radial_map[] = {
+    {0.0, {0, 1, 1, 0, 0}},       {1.0 / 3, {1, 1, 0, 0, 0}},
+    {2.0 / 3, {1, 0, 1, 0, 0}},   {1.0, {0, 1, 1, 0, 0}},
+};
+static const zr_colour_map_entry wood_map[] = {
+    {0.6, {0.666, 0.312, 0.2, 0, 0}},
+    {0.6, {0.4, 0.1333, 0.066, 0, 0}},
+};
+#define MAP_OF(e) {sizeof(e) / sizeof(e)[0], e}
+static const zr_colour_map agate_default = MAP_OF(agate_map);
+static const zr_colour_map bozo_default = MAP_OF(bozo_map);
+static const zr_colour_map marble_default = MAP_OF(marble_map);
+static const zr_colour_map radial_default = MAP_OF(radial_map);
+static const zr_colour_map wood_default = MAP_OF(wood_map);
+
+static const zr_colour_map *default_map_of(zr_pattern_kind kind) {
+  switch (kind) {
+  case ZR_PAT_AGATE:
+    return &agate_default;
+  case ZR_PAT_BOZO:
+    return &bozo_default;
+  case ZR_PAT_MARBLE:
+    return &marble_default;
+  case ZR_PAT_RADIAL:
+    return &radial_default;
+  case ZR_PAT_WOOD:
+    return &wood_default;
+  default:
+    return &default_map;
+  }
+}
 
 static zr_colour mix(zr_colour a, zr_colour b, double t) {
   return zr_colour5(a.r + (b.r - a.r) * t, a.g + (b.g - a.g) * t,
@@ -261,7 +332,7 @@ zr_colour zr__pigment_eval_n(const zr_pigment *pg, zr_vec3 world,
     return pg->list[i < 0 ? 0 : i > 2 ? 2 : i];
   }
   return zr__colour_map_eval(
-      pg->colour_map ? pg->colour_map : zr__default_colour_map(), v);
+      pg->colour_map ? pg->colour_map : default_map_of(pg->pattern.kind), v);
 }
 
 /* ---- normals ---- */
@@ -318,6 +389,38 @@ static zr_vec3 normal_map_perturb(const zr_normal *nm, zr_vec3 p,
   return r;
 }
 
+/*
+ * How far a unit slope of the pattern's height (per pattern unit) tilts
+ * the normal, per unit of bump_size.  No section of the manual gives
+ * these; each is measured by bench/conform/normal_probe.sh, which reads
+ * the normal back from POV-Ray 3.7's renders of a plane lit by three
+ * coloured parallel lights and compares it with this renderer's:
+ *   - patterns through a slope map, given or implied (gradient, granite,
+ *     ...): gradient x, A tilts by 0.13333 A (A = 0.25 to 4, any scale,
+ *     any accuracy, with or without slope_map);
+ *   - bumps, dents, ripples, waves and wrinkles, which POV-Ray tilts by
+ *     its own rules: the gain that makes the root mean square tilt over
+ *     a plane match POV-Ray's at bump size 0.5.
+ */
+static double tilt_gain(const zr_normal *nm) {
+  if (nm->slope_map && nm->slope_map->n > 0)
+    return SLOPE_GAIN;
+  switch (nm->pattern.kind) {
+  case ZR_PAT_BUMPS:
+    return BUMPS_GAIN;
+  case ZR_PAT_DENTS:
+    return DENTS_GAIN;
+  case ZR_PAT_RIPPLES:
+    return RIPPLES_GAIN;
+  case ZR_PAT_WAVES:
+    return WAVES_GAIN;
+  case ZR_PAT_WRINKLES:
+    return WRINKLES_GAIN;
+  default:
+    return SLOPE_GAIN;
+  }
+}
+
 zr_vec3 zr__normal_perturb(const zr_normal *nm, zr_vec3 world, zr_vec3 n) {
   if (nm->bump_map)
     return zr__bump_map_perturb(nm, world, n);
@@ -340,6 +443,16 @@ zr_vec3 zr__normal_perturb(const zr_normal *nm, zr_vec3 world, zr_vec3 n) {
   if (nm->amount == 0 || nm->pattern.kind == ZR_PAT_NONE)
     return n;
   zr_vec3 p = to_pattern(nm->transform, world);
+  /* The normal in pattern space, of unit length there: the tilt is
+     measured against it, so a uniform scale of the pattern changes its
+     features' size but not their slope (bench/conform/normal_probe.sh:
+     gradient x, 0.5 tilts by 0.0667 at scales 0.01 to 10). */
+  zr_vec3 np = n;
+  if (nm->transform) {
+    np = zr__xform_normal(nm->transform->m, n);
+    double len = zr_v3_len(np);
+    np = len > 0 ? zr_v3_scale(np, 1 / len) : n;
+  }
   const double h = nm->accuracy > 0 ? nm->accuracy : NORMAL_ACCURACY;
   zr_vec3 g = zr_v3(
       height(nm, zr_v3(p.x + h, p.y, p.z)) -
@@ -348,12 +461,19 @@ zr_vec3 zr__normal_perturb(const zr_normal *nm, zr_vec3 world, zr_vec3 n) {
           height(nm, zr_v3(p.x, p.y - h, p.z)),
       height(nm, zr_v3(p.x, p.y, p.z + h)) -
           height(nm, zr_v3(p.x, p.y, p.z - h)));
-  g = zr_v3_scale(g, 1 / (2 * h));
+  g = zr_v3_scale(g, nm->amount * tilt_gain(nm) / (2 * h));
+  if (nm->pattern.kind == ZR_PAT_WRINKLES && !(nm->slope_map &&
+                                               nm->slope_map->n > 0)) {
+    double lean = nm->amount * WRINKLES_LEAN;
+    g = zr_v3_sub(g, zr_v3(lean, lean, lean));
+  }
+  /* The whole gradient is taken off, its part along the normal too:
+     gradient <1,0,1>, 4 on a plane seen along +z tilts by 0.28, and by
+     0.61 seen along -z (normal_probe.sh), as n - g predicts (0.27,
+     0.61) and the tangential part alone (0.38 both ways) does not. */
+  zr_vec3 tilted = zr_v3_sub(np, g);
   if (nm->transform)
-    g = zr__xform_normal(nm->transform->inv, g);
-  /* Only the slope along the surface tilts it. */
-  zr_vec3 tangential = zr_v3_madd(g, n, -zr_v3_dot(g, n));
-  zr_vec3 tilted = zr_v3_madd(n, tangential, -nm->amount);
+    tilted = zr__xform_normal(nm->transform->inv, tilted);
   double len = zr_v3_len(tilted);
   return len > 0 ? zr_v3_scale(tilted, 1 / len) : n;
 }

@@ -294,6 +294,66 @@ zr_texture *zr__sdl_texture_new(zr_sdl_parser *p, const zr_texture *from) {
   return tx;
 }
 
+/*
+ * "Pigment", "Normal", "Finish": the items of a block without an
+ * identifier modify the current values, those of the texture the block
+ * is in (the top layer of a texture identifier, or what an earlier
+ * block of the same texture gave), else those of the default texture
+ * (#default).  POV-Ray 3.7's renders: texture { T pigment { quick_color
+ * C } } keeps T's pattern (advanced/chess2.pov's pieces), #default {
+ * normal { onion } } reaches object { X normal { } } (slopemap.pov).
+ */
+void zr__sdl_texture_base(zr_sdl_parser *p, const zr_texture *tx, int kind) {
+  while (tx && tx->over)
+    tx = tx->over;
+  const zr_texture *d = p->default_changed ? p->scene->default_texture : NULL;
+  switch (kind) {
+  case 'p':
+    p->pigment_base = tx && tx->pigment ? tx->pigment
+                      : d               ? d->pigment
+                                        : NULL;
+    break;
+  case 'n':
+    p->normal_base = tx && tx->normal ? tx->normal
+                     : d              ? d->normal
+                                      : NULL;
+    break;
+  default:
+    p->finish_base = tx && tx->finish ? tx->finish
+                     : d              ? d->finish
+                                      : NULL;
+    break;
+  }
+  p->base_set |= kind == 'p' ? 1 : kind == 'n' ? 2 : 4;
+}
+
+void zr__sdl_block_base(zr_sdl_parser *p, int kind) {
+  int bit = kind == 'p' ? 1 : kind == 'n' ? 2 : 4;
+  if (!(p->base_set & bit))
+    zr__sdl_texture_base(p, NULL, kind);
+}
+
+const zr_pigment *zr__sdl_take_pigment_base(zr_sdl_parser *p) {
+  const zr_pigment *b = p->pigment_base;
+  p->pigment_base = NULL;
+  p->base_set &= ~1;
+  return b;
+}
+
+const zr_normal *zr__sdl_take_normal_base(zr_sdl_parser *p) {
+  const zr_normal *b = p->normal_base;
+  p->normal_base = NULL;
+  p->base_set &= ~2;
+  return b;
+}
+
+const zr_finish *zr__sdl_take_finish_base(zr_sdl_parser *p) {
+  const zr_finish *b = p->finish_base;
+  p->finish_base = NULL;
+  p->base_set &= ~4;
+  return b;
+}
+
 bool zr__sdl_texture_done(zr_sdl_parser *p, zr_texture *tx) {
   if (tx->map && tx->map->n > 0) {
     /* A patterned texture shows as its first entry wherever one plain
@@ -729,6 +789,34 @@ zr_image_map *zr__sdl_image_map_new(zr_sdl_parser *p, const char *name,
   return zr__sdl_bitmap_new(p, "image_map", name, loc, gamma, gamma_loc);
 }
 
+/*
+ * An image_map's colours are light as its file says ("Image File
+ * Gamma"), while scene colours live in the assumed_gamma space, so under
+ * assumed_gamma G they are raised to 1/G: POV-Ray 3.7 shows a picture
+ * with ambient 1 under assumed_gamma 2.2 as it is, not darker
+ * (advanced/sunsethf.pov, drums2; scenes/image_gamma.pov).  G is known
+ * only when the parse ends: the buffers wait in the parser.
+ */
+static bool remember_image(zr_sdl_parser *p, float *pixels, size_t n) {
+  if (p->n_images == p->cap_images) {
+    size_t cap = p->cap_images ? 2 * p->cap_images : 8;
+    float **a = realloc(p->image_pixels, cap * sizeof *a);
+    if (a)
+      p->image_pixels = a;
+    size_t *b = a ? realloc(p->image_sizes, cap * sizeof *b) : NULL;
+    if (b)
+      p->image_sizes = b;
+    if (!a || !b) {
+      zr__sdl_error(p, ZR_ENOMEM, NULL, "out of memory");
+      return false;
+    }
+    p->cap_images = cap;
+  }
+  p->image_pixels[p->n_images] = pixels;
+  p->image_sizes[p->n_images++] = n;
+  return true;
+}
+
 zr_image_map *zr__sdl_bitmap_new(zr_sdl_parser *p, const char *what,
                                  const char *name, const zr_sdl_loc *loc,
                                  const zr_sdl_expr *gamma,
@@ -767,6 +855,9 @@ zr_image_map *zr__sdl_bitmap_new(zr_sdl_parser *p, const char *what,
       !bitmap_values(p, im, image, strcmp(what, "material_map") == 0,
                      gamma != NULL))
     pixels = NULL;
+  if (pixels && strcmp(what, "image_map") == 0 &&
+      !remember_image(p, pixels, n))
+    pixels = NULL;
   if (pixels) {
     memcpy(pixels, image->pixels, n * sizeof *pixels);
     im->path = zr__sdl_strdup(p, name, strlen(name));
@@ -776,6 +867,16 @@ zr_image_map *zr__sdl_bitmap_new(zr_sdl_parser *p, const char *what,
   }
   zr_image_free(image);
   return pixels && im->path ? im : NULL;
+}
+
+void zr__sdl_images_to_working_gamma(zr_sdl_parser *p, double gamma) {
+  if (gamma == 1.0)
+    return;
+  for (size_t i = 0; i < p->n_images; i++)
+    for (size_t k = 0; k < p->image_sizes[i]; k++) {
+      float v = p->image_pixels[i][k];
+      p->image_pixels[i][k] = v > 0 ? (float)pow(v, 1.0 / gamma) : v;
+    }
 }
 
 bool zr__sdl_image_map_mod(zr_sdl_parser *p, zr_image_map *im, int token,

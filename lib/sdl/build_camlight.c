@@ -348,9 +348,13 @@ void zr__sdl_camera_end(zr_sdl_parser *p) {
     c->direction = zr_v3_scale(zr_v3_norm(c->direction), length);
   }
   camera_angles(p, c);
+  /* A camera from an identifier was sized when it was declared: sizing
+     it again made templates/Basic_Scenes/Orthographic_isometric.pov's
+     view seven times too wide. */
   if (c->kind == ZR_CAMERA_ORTHOGRAPHIC &&
       (p->camera.angle_given ||
-       !(p->camera.right_given || p->camera.up_given))) {
+       !(p->camera.from_id || p->camera.right_given ||
+         p->camera.up_given))) {
     /* The view of a perspective camera at the look_at distance. */
     zr_vec3 target = p->camera.look_at_given ? p->camera.look_at
                                              : zr_v3(0, 0, 1);

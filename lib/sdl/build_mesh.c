@@ -823,6 +823,7 @@ static const char *layout(zr_sdl_parser *p, const zr_ttf *font,
   const char *err = glyphs ? NULL : "out of memory";
   size_t n_glyphs = 0;
   unsigned previous = 0;
+  bool s_first = true, lead_blank = false;
   const unsigned char *s = (const unsigned char *)string;
   while (!err && *s) {
     unsigned g = zr__ttf_glyph(font, next_char(&s));
@@ -832,6 +833,9 @@ static const char *layout(zr_sdl_parser *p, const zr_ttf *font,
     err = zr__ttf_outline(font, g, add_segment, &tb);
     if (err)
       break;
+    if (tb.n == first && s_first)
+      lead_blank = true;
+    s_first = false;
     if (tb.n > first) {
       zr_text_glyph *gl = &glyphs[n_glyphs++];
       gl->first = first;
@@ -854,8 +858,11 @@ static const char *layout(zr_sdl_parser *p, const zr_ttf *font,
     previous = g;
   }
   /* "The text will start with the origin at the lower left, front of
-     the first character": the first glyph's left edge goes to x = 0. */
-  if (!err && n_glyphs > 0) {
+     the first character": the first glyph's left edge goes to x = 0.
+     A blank first character has its origin there, so leading spaces
+     keep their width: POV-Ray 3.7 puts the A of " A" 0.26 further
+     right than that of "A" in timrom.ttf (trace() along z). */
+  if (!err && n_glyphs > 0 && !lead_blank) {
     double dx = glyphs[0].lo[0];
     for (size_t i = 0; i < tb.n; i++) {
       tb.segments[i].p0[0] -= dx;

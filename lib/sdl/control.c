@@ -764,6 +764,7 @@ bool zr__sdl_set_default(zr_sdl_parser *p, const zr_texture *texture,
     if (!p->scene->objects[i]->texture)
       p->scene->objects[i]->texture = old;
   p->scene->default_texture = t;
+  p->default_changed = true;
   return true;
 }
 

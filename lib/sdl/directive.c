@@ -254,6 +254,24 @@ static zr_sdl_symbol *resolve(zr_sdl_parser *p, zr_sdl_symbol *s,
   return s;
 }
 
+/* #declare NAME where NAME is, innermost, a parameter passed by
+   identifier: the caller's variable is the one to change, named now
+   (POV-Ray 3.7: macros/macro2.pov turns its objects so). */
+static void bind_alias(zr_sdl_parser *p, zr_sdl_decl_name *d) {
+  zr_sdl_symbol *s = NULL;
+  for (size_t i = p->n_frames; i-- > 1 && !s;)
+    s = zr__sdl_symtab_find(&p->frames[i].locals, d->name);
+  while (s && s->value.kind == ZR_SDL_ALIAS) {
+    const zr_sdl_alias *a = s->value.ptr;
+    if (a->frame >= p->n_frames)
+      return;
+    d->name = a->name;
+    d->frame = (int)a->frame;
+    d->bound = true;
+    s = zr__sdl_symtab_find(scope_of(p, a->frame), a->name);
+  }
+}
+
 zr_sdl_symbol *zr__sdl_lookup(zr_sdl_parser *p, const char *name,
                               size_t *frame) {
   for (size_t i = p->n_frames; i-- > 1;) {
@@ -303,6 +321,19 @@ bool zr__sdl_define(zr_sdl_parser *p, const zr_sdl_decl_name *name,
     frame = p->n_frames - 1;
   zr_sdl_symtab *t = NULL;
   zr_sdl_symbol *s = NULL;
+  if (!is_local && name->bound && (size_t)name->frame < p->n_frames) {
+    t = scope_of(p, (size_t)name->frame);
+    s = zr__sdl_symtab_find(t, name->name);
+    if (s) {
+      s->value = *value;
+      return true;
+    }
+    if (zr__sdl_symtab_set(t, name->name, value) != ZR_OK) {
+      zr__sdl_error(p, ZR_ENOMEM, loc, "out of memory");
+      return false;
+    }
+    return true;
+  }
   if (is_local) {
     t = scope_of(p, frame);
     s = zr__sdl_symtab_find(t, name->name);
@@ -591,6 +622,7 @@ static bool do_declare(zr_sdl_parser *p, int kind) {
 static bool do_version(zr_sdl_parser *p, const zr_sdl_loc *directive) {
   zr_sdl_expr e;
   zr_status s = zr__sdl_parse_expr(p, T_START_VERSION, &e);
+  p->version_given = true;
   return s == ZR_OK && zr__sdl_want_float(p, &e, directive, &p->version);
 }
 
@@ -1007,6 +1039,9 @@ int zr__sdl_next(zr_sdl_lexval *val, zr_sdl_loc *loc, zr_sdl_parser *p) {
       v.decl.name = t->v.str;
       v.decl.frame = (int)(p->n_frames - 1);
       v.decl.local = p->decl_local;
+      v.decl.bound = false;
+      if (!p->decl_local)
+        bind_alias(p, &v.decl);
       return deliver(p, T_DECL_NAME, &v, &tl, t->v.str, val, loc);
     }
     zr_sdl_symbol *s = zr__sdl_lookup(p, t->v.str, NULL);
@@ -1052,6 +1087,8 @@ static void parser_free(zr_sdl_parser *p) {
   while (p->n_frames > 0)
     zr__sdl_pop_frame(p);
   free(p->frames);
+  free(p->image_pixels);
+  free(p->image_sizes);
   for (size_t i = 0; i < p->n_files; i++)
     zr__sdl_file_free(&p->files[i]);
   free(p->files);
@@ -1091,6 +1128,18 @@ static zr_status parse(zr_context *ctx, char *path, char *bytes, size_t size,
   }
   s = p.status;
   p.scene->settings.version = p.version;
+  /* A legacy scene (no #version at all, or one below 3.7 in force at
+     the end) without assumed_gamma works in the display's gamma, 2.2:
+     POV-Ray 3.7 writes rgb 0.5 seen with ambient 1 as 128 then, as 188
+     (linear 0.5) after "#version 3.7;" or "#include \"colors.inc\""
+     (which sets and restores the version), and as 188 with
+     assumed_gamma 1 in a #version 3.6 scene ("assumed_gamma":
+     "undefined for legacy scenes"). */
+  if (!p.scene->settings.assumed_gamma_given &&
+      (!p.version_given || p.version < 3.7 - 1e-9))
+    p.scene->settings.assumed_gamma = 2.2;
+  if (s == ZR_OK)
+    zr__sdl_images_to_working_gamma(&p, p.scene->settings.assumed_gamma);
   parser_free(&p);
   if (s == ZR_OK)
     s = zr__scene_finish(p.scene, ctx);

@@ -124,6 +124,10 @@ typedef struct zr_sdl_decl_name {
   const char *name;
   int frame;
   bool local;
+  /* #declare of a parameter passed by identifier: name and frame are
+     the caller's variable, found when the name was read, as a macro may
+     end before the value does ("#declare P = object { P }" then #end). */
+  bool bound;
   int n_index;
   int index[ZR_SDL_MAX_DIMS];
 } zr_sdl_decl_name;
@@ -457,6 +461,12 @@ typedef struct zr_sdl_parser {
   size_t n_frames, cap_frames;
   zr_sdl_symtab globals;
   double version;
+  bool version_given; /* a #version was read */
+  /* The pixels of every image_map read, taken to the working gamma
+     space once assumed_gamma is known (the end of the parse). */
+  float **image_pixels;
+  size_t *image_sizes;
+  size_t n_images, cap_images;
   int start_token; /* pseudo-token for the next yylex, 0 for none */
   zr_sdl_autoend autoend;
   bool want_decl_name;
@@ -464,6 +474,16 @@ typedef struct zr_sdl_parser {
   /* An object's transform is being applied to its textures: patterns
      with uv_mapping stay where they are on the surface. */
   bool moving_object;
+  /* What the next pigment { }, normal { } or finish { } without an
+     identifier starts from: its texture's own (set just before the
+     block inside a texture), else the default texture's once #default
+     changed it ("Pigment", "Normal", "Finish": the items modify the
+     current values).  Taken and cleared as the block starts. */
+  const zr_pigment *pigment_base;
+  const zr_normal *normal_base;
+  const zr_finish *finish_base;
+  int base_set;         /* bits 1, 2, 4: pigment, normal, finish base set */
+  bool default_changed; /* a #default was read */
   int nested_depth; /* parsers running, for ZR_SDL_MAX_NESTED_PARSE */
   int macro_depth;
   int include_depth;
@@ -595,6 +615,19 @@ zr_status zr__sdl_read_file(zr_sdl_parser *p, const char *path,
                             char **bytes, size_t *size);
 /* #default: the texture, pigment or finish of objects made from now on
    (control.c). */
+/* The bases of the next pigment, normal or finish block of texture tx
+   (its top layer's own), see pigment_base; kind is 'p', 'n' or 'f'. */
+void zr__sdl_texture_base(zr_sdl_parser *p, const zr_texture *tx, int kind);
+/* Raises every image_map's pixels to 1/gamma (build.c). */
+void zr__sdl_images_to_working_gamma(zr_sdl_parser *p, double gamma);
+/* The same for a block outside a texture (or in a texture that set
+   none): the default texture's once #default changed it. */
+void zr__sdl_block_base(zr_sdl_parser *p, int kind);
+/* The base a block starts from (and clears it): NULL for the built-in
+   defaults. */
+const zr_pigment *zr__sdl_take_pigment_base(zr_sdl_parser *p);
+const zr_normal *zr__sdl_take_normal_base(zr_sdl_parser *p);
+const zr_finish *zr__sdl_take_finish_base(zr_sdl_parser *p);
 bool zr__sdl_set_default(zr_sdl_parser *p, const zr_texture *texture,
                          const zr_pigment *pigment,
                          const zr_finish *finish);

@@ -189,7 +189,9 @@ static void box_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
       far_sign = s1;
     }
   }
-  if (!(tnear < tfar) || near_axis < 0 || far_axis < 0)
+  /* A box flat along one axis is still hit, on its face: POV-Ray 3.7
+     shows box { <0,0,0>, <1,1,0> } (tests/scenes/flat_box.pov). */
+  if (!(tnear <= tfar) || near_axis < 0 || far_axis < 0)
     return;
   double n0[3] = {0, 0, 0}, n1[3] = {0, 0, 0};
   n0[near_axis] = near_sign;

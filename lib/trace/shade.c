@@ -91,7 +91,78 @@ typedef struct shadow_walk {
   /* Crossings of hollow containers with media (lib/trace/media.c). */
   zr_media_crossing crossings[ZR_MEDIA_LIST_MAX];
   size_t n_crossings;
+  /* Crossings of objects whose interior fades light (fade_distance). */
+  zr_media_crossing fades[ZR_MEDIA_LIST_MAX];
+  size_t n_fades;
 } shadow_walk;
+
+static bool fades_light(const zr_object *solid) {
+  const zr_interior *in = solid->interior;
+  return in && in->fade_distance > 0.0 && in->fade_power != 0.0;
+}
+
+/* What is left of light after distance d inside an interior that fades
+   it ("Attenuation", see interior_fade below). */
+static zr_rgb fade_factor(const zr_interior *in, double d) {
+  double a = in->fade_power > 1000.0
+                 ? exp(-d / in->fade_distance)
+                 : 1.0 / (1.0 + pow(d / in->fade_distance, in->fade_power));
+  zr_rgb f = in->fade_colour;
+  return zr_rgb3(f.r + (1.0 - f.r) * a, f.g + (1.0 - f.g) * a,
+                 f.b + (1.0 - f.b) * a);
+}
+
+/*
+ * A shadow ray through objects whose interior fades light loses as much
+ * as a camera ray would over the same length inside them: POV-Ray 3.7
+ * darkens the shadow of a clear block with fade_distance
+ * (interior/atten2.pov, scenes/fade_shadow.pov).  The crossings come in
+ * any order; each object's stretch runs from where the ray enters it
+ * (or the ray's start) to where it leaves (or the light).
+ */
+static zr_rgb shadow_fade(const shadow_walk *w) {
+  zr_rgb light = zr_rgb3(1, 1, 1);
+  double len = zr_v3_len(w->ray->dir);
+  bool done[ZR_MEDIA_LIST_MAX] = {false};
+  for (size_t i = 0; i < w->n_fades; i++) {
+    if (done[i])
+      continue;
+    const zr_object *solid = w->fades[i].solid;
+    /* This object's crossings, in order along the ray. */
+    double ts[ZR_MEDIA_LIST_MAX];
+    bool in[ZR_MEDIA_LIST_MAX];
+    size_t n = 0;
+    for (size_t j = i; j < w->n_fades; j++) {
+      if (w->fades[j].solid != solid)
+        continue;
+      done[j] = true;
+      size_t k = n++;
+      while (k > 0 && ts[k - 1] > w->fades[j].t) {
+        ts[k] = ts[k - 1];
+        in[k] = in[k - 1];
+        k--;
+      }
+      ts[k] = w->fades[j].t;
+      in[k] = w->fades[j].entering;
+    }
+    double inside = 0.0, start = 0.0;
+    bool is_in = n > 0 && !in[0]; /* the first crossing leaves: began in */
+    for (size_t k = 0; k < n; k++) {
+      if (in[k]) {
+        start = ts[k];
+        is_in = true;
+      } else if (is_in) {
+        inside += ts[k] - start;
+        is_in = false;
+      }
+    }
+    if (is_in)
+      inside += 1.0 - start;
+    if (inside > 0.0)
+      light = zr_rgb_mul(light, fade_factor(solid->interior, inside * len));
+  }
+  return light;
+}
 
 static bool shadow_visit(const zr_hit *hit, void *user) {
   shadow_walk *w = user;
@@ -102,6 +173,15 @@ static bool shadow_visit(const zr_hit *hit, void *user) {
     /* The walk's hits carry no normals: the ray goes in when a point
        just past the hit is inside. */
     zr_media_crossing *c = &w->crossings[w->n_crossings++];
+    zr_vec3 at = zr_v3_madd(w->ray->origin, w->ray->dir, hit->t);
+    zr_vec3 past = zr_v3_madd(at, zr_v3_norm(w->ray->dir),
+                              1e3 * zr__surface_offset(at));
+    c->t = hit->t;
+    c->solid = solid;
+    c->entering = zr__inside(solid, past);
+  }
+  if (fades_light(solid) && w->n_fades < ZR_MEDIA_LIST_MAX) {
+    zr_media_crossing *c = &w->fades[w->n_fades++];
     zr_vec3 at = zr_v3_madd(w->ray->origin, w->ray->dir, hit->t);
     zr_vec3 past = zr_v3_madd(at, zr_v3_norm(w->ray->dir),
                               1e3 * zr__surface_offset(at));
@@ -135,10 +215,13 @@ zr_rgb zr__shadow_transmission(const zr_tracer *tracer, zr_vec3 from,
   w.ray = &ray;
   w.light = zr_rgb3(1, 1, 1);
   w.n_crossings = 0;
+  w.n_fades = 0;
   tracer->stats->shadow_rays++;
   /* t runs from the surface point (0) to the light (1). */
   if (!zr__bvh_all(tracer->scene->bvh, &ray, 0.0, 1.0, shadow_visit, &w))
     return zr_rgb3(0, 0, 0);
+  if (w.n_fades > 0 && rgb_max(w.light) > 0.0)
+    w.light = zr_rgb_mul(w.light, shadow_fade(&w));
   if (w.n_crossings > 0 && rgb_max(w.light) > 0.0)
     w.light = zr_rgb_mul(w.light, zr__media_shadow(tracer, ray.origin,
                                                    ray.dir, w.crossings,
@@ -353,9 +436,14 @@ static zr_rgb direct_light(const zr_tracer *tr, const surface *s,
     /* Shadow rays leave from the side the light is on. */
     if (back)
       from = zr_v3_madd(s->p, s->n, -s->offset);
-    lc = zr_rgb_mul(lc, zr__light_visibility(tr, light, s->p, from));
-    if (rgb_max(lc) <= 0.0)
+    /* Skip what the shadow blocks, not what is dark: a light of
+       negative colour takes light away (POV-Ray 3.7 darkens a lit
+       plane by "light_source { ... color rgb -0.5 }": crater_dat.pov,
+       abyss.pov, scenes/negative_light.pov). */
+    zr_rgb vis = zr__light_visibility(tr, light, s->p, from);
+    if (rgb_max(vis) <= 0.0)
       continue;
+    lc = zr_rgb_mul(lc, vis);
     if (back) {
       if (light->media_attenuation)
         lc = zr_rgb_mul(lc, zr__media_light_attenuation(tr, light, s->p));
@@ -493,7 +581,10 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
   const zr_settings *gs = &tr->scene->settings;
   zr_colour col = s->colour;
   zr_rgb c = zr_colour_rgb(col);
-  double opacity = fmax(0.0, 1.0 - col.f - col.t);
+  /* Not clamped: transmit above 1 makes the surface's own colour count
+     negatively, a contrast trick POV-Ray 3.7 renders (advanced/
+     bwstripe.pov: rgb 0.5 transmit 100 before the camera). */
+  double opacity = 1.0 - col.f - col.t;
 
   zr_rgb sum;
   zr_rgb diffuse_in;
@@ -574,14 +665,16 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
 
 /*
  * The geometric normal n perturbed by nm at p, before the caller turns
- * it towards the viewer when the ray leaves the surface.  A bump map
- * tilts the normal on the viewer's side: POV-Ray 3.7 renders a grey
- * ramp on "plane { z, 0 }" and on "plane { -z, 0 }" seen from -z with
- * the same normal, so the tilt must not turn with n.
+ * it towards the viewer when the ray leaves the surface.  A normal
+ * tilts on the viewer's side: POV-Ray 3.7 renders a grey ramp on
+ * "plane { z, 0 }" and on "plane { -z, 0 }" seen from -z with the same
+ * normal, for a bump map and for a pattern (gradient x tilts the same
+ * way seen from either side: bench/conform/normal_probe.sh), so the
+ * tilt must not turn with n.
  */
 static zr_vec3 perturbed(const zr_normal *nm, zr_vec3 p, zr_vec3 n,
                          bool entering) {
-  if (nm->bump_map && !entering)
+  if (!entering)
     return zr_v3_neg(zr__normal_perturb(nm, p, zr_v3_neg(n)));
   return zr__normal_perturb(nm, p, n);
 }
