@@ -31,10 +31,11 @@
  * is taken off it, and the result goes back to world space by the
  * inverse transpose of the transform.  So a uniform scale of the pattern
  * leaves the tilt as it is, a non-uniform one changes it.  The gradient
- * comes from central differences "accuracy" (default 0.02, the manual's "Normals, Accuracy",
- * 3.4.6.2.2.1; the central differences are our own) pattern units apart.  dents uses the cube of the noise, which leaves flat ground
- * between sharp pits; wrinkles also leans the normal along (1, 1, 1) of
- * pattern space, as POV-Ray's does.
+ * comes from central differences "accuracy" (default 0.02, the manual's
+ * "Normals, Accuracy", 3.4.6.2.2.1; the central differences are our
+ * own) pattern units apart.  dents uses the cube of the noise, which
+ * leaves flat ground between sharp pits; wrinkles also leans the normal
+ * along (1, 1, 1) of pattern space, as POV-Ray's does.
  *
  * Maps ("Pigment Maps and Pigment Lists", "Normal Maps", "Slope Maps",
  * "Texture Maps", "Average"): the pattern's value v falls between two
