@@ -3716,6 +3716,10 @@ rad_kw:
 
 %%
 
+const char *zr__sdl_kind_name(int kind) {
+  return yysymbol_name(YYTRANSLATE(kind));
+}
+
 /* How many expected tokens a message lists before it gives up. */
 #define MAX_EXPECTED 32
 

@@ -19,7 +19,9 @@ struct zr_context {
   char **include_paths;
   size_t n_include_paths;
   int render_width, render_height; /* 0 until set: the parser's defaults */
-  unsigned long long loop_limit;   /* 0: none */
+  unsigned long long work_limit;   /* parse steps; 0: none */
+  unsigned long long file_limit;   /* bytes of one file read; 0: none */
+  struct zr_budget *budget;        /* the run's memory (core/budget.h) */
   char last_error[1024];
   unsigned errors;   /* errors reported so far */
   unsigned warnings; /* warnings reported so far */
@@ -51,8 +53,27 @@ zr_status zr__diag(zr_context *ctx, zr_diag_level level, zr_status status,
 zr_status zr__vdiag(zr_context *ctx, zr_diag_level level, zr_status status,
                     const zr_diag_place *place, const char *fmt, va_list ap);
 
-/* Reads a whole file through the context's reader (stdio by default). */
+/* Reads a whole file through the context's reader (stdio by default).
+   A file larger than the context's file limit gives ZR_ELIMIT. */
 zr_status zr__context_read(zr_context *ctx, const char *path, char **bytes,
                            size_t *size);
+/* Why a read failed with status s, for "cannot read 'x': ..." messages:
+   the file limit and the option that raises it for ZR_ELIMIT. */
+const char *zr__context_read_error(const zr_context *ctx, zr_status s,
+                                   char *buf, size_t size);
+/* Charges bytes for what (a noun phrase: "an array of 100000 elements")
+   to the context's memory budget; on failure reports a located error
+   at place (may be NULL) and returns ZR_ELIMIT. */
+zr_status zr__context_charge(zr_context *ctx, size_t bytes,
+                             const zr_diag_place *place, const char *what);
+void zr__context_release(zr_context *ctx, size_t bytes);
+/* The message for what needing bytes past the budget, in buf. */
+const char *zr__context_budget_text(const zr_context *ctx, size_t bytes,
+                                    const char *what, char *buf,
+                                    size_t size);
+/* Reports that what did not fit in the memory budget (see above). */
+zr_status zr__context_over_budget(zr_context *ctx, size_t bytes,
+                                  const zr_diag_place *place,
+                                  const char *what);
 
 #endif /* ZR_CORE_CONTEXT_H */
