@@ -211,8 +211,9 @@ static zr_status add_file(zr_sdl_parser *p, char *path, char *bytes,
   }
   *index = (int)p->n_files;
   zr_sdl_file *f = &p->files[p->n_files++];
-  zr_status s = zr__sdl_file_lex(f, *index, path, bytes, size, err_loc, err,
-                                 err_size);
+  zr_status s = zr__sdl_file_lex_budget(f, *index, path, bytes, size,
+                                        p->ctx ? p->ctx->budget : NULL,
+                                        err_loc, err, err_size);
   if (s == ZR_OK || s == ZR_ESYNTAX) {
     f->scene_path = zr__arena_strdup(&p->scene->arena, f->path);
     if (!f->scene_path) {

@@ -326,6 +326,10 @@ typedef struct zr_sdl_file {
      #for and #macro -> #end; (size_t)-1 where there is none. */
   size_t *links;
   zr_arena strings; /* identifier and string texts */
+  /* The token array and the file's bytes are charged to this budget
+     (NULL: none) while the file is held. */
+  struct zr_budget *budget;
+  size_t charged;
 } zr_sdl_file;
 
 /*
@@ -336,6 +340,13 @@ typedef struct zr_sdl_file {
 zr_status zr__sdl_file_lex(zr_sdl_file *f, int file_index, char *path,
                            char *bytes, size_t size, zr_sdl_loc *err_loc,
                            char *err, size_t err_size);
+/* The same, charging the file to budget; ZR_ELIMIT (err says so) when
+   it does not fit. */
+zr_status zr__sdl_file_lex_budget(zr_sdl_file *f, int file_index,
+                                  char *path, char *bytes, size_t size,
+                                  struct zr_budget *budget,
+                                  zr_sdl_loc *err_loc, char *err,
+                                  size_t err_size);
 void zr__sdl_file_free(zr_sdl_file *f);
 
 /* What the flex scanner keeps between tokens (its "extra" data). */
@@ -514,6 +525,7 @@ typedef struct zr_sdl_parser {
        meshes in an array of cap_meshes. */
     zr_mesh_camera *mesh;
     zr_sdl_loc mesh_at;
+    zr_sdl_loc look_at_at; /* where look_at was written */
     size_t cap_meshes;
   } camera;
 } zr_sdl_parser;
@@ -718,6 +730,14 @@ const zr_sdl_value *zr__sdl_array_get(zr_sdl_parser *p, const char *name,
 
 /* ---- building the scene (build.c) ---- */
 
+/* Warns, as POV-Ray 3.7 does ("Degenerate triangle. Please remove.",
+   measured), about a triangle whose corners are on one line. */
+void zr__sdl_degenerate_triangle(zr_sdl_parser *p, const zr_vec3 *corners,
+                                 const zr_sdl_loc *at);
+/* A cylinder's or cone's axis must have a length: POV-Ray 3.7 stops on
+   base point = apex point (measured); false after the error at at. */
+bool zr__sdl_axis_given(zr_sdl_parser *p, zr_vec3 base, zr_vec3 cap,
+                        const char *shape, const zr_sdl_loc *at);
 zr_object *zr__sdl_object_new(zr_sdl_parser *p, zr_object_kind kind,
                               const zr_sdl_loc *loc);
 zr_object *zr__sdl_object_copy(zr_sdl_parser *p, const zr_object *o);
