@@ -85,3 +85,9 @@ tests_test_image_formats_SOURCES = tests/test_image_formats.c
 tests_test_image_formats_CPPFLAGS = $(TEST_CPPFLAGS)
 tests_test_image_formats_LDADD = $(TEST_LDADD) $(PNG_LIBS) $(JPEG_LIBS)
 tests_test_image_formats_LDFLAGS = -static
+
+# Hostile input and faults (issue 10): budgets, escaped and bounded
+# messages, non-finite values, signals, a killed rank, a full disk, too
+# little memory, corrupt files, 10^6 objects.
+TESTS += tests/test_faults.sh
+EXTRA_DIST += tests/test_faults.sh
