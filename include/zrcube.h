@@ -86,7 +86,11 @@ typedef enum zr_diag_level {
  * One diagnostic.  file is NULL and line/column are 0 when the message has
  * no place in a scene file.  text is the complete message formatted like a
  * compiler's: "scene.pov:12:7: error: message", the include chain, the
- * source line and a caret under the column, ending in a newline.  All
+ * source line and a caret under the column, ending in a newline.  Both
+ * message and text are safe to print on a terminal: control bytes and
+ * bytes that are not UTF-8 from the scene show as \xNN, an error's or
+ * warning's message stops after 2048 bytes with "...", and a long source
+ * line is quoted as a window of 70 columns each side of the caret.  All
  * pointers are valid only during the callback.
  */
 typedef struct zr_diag {

@@ -123,6 +123,8 @@ run bigincl 1 bigincl.pov --max-file-size=100K -q +Obigincl.png
 expect bigincl "cannot read include file"
 expect bigincl "larger than the file size limit"
 run bigincl_ok 0 bigincl.pov --parse-only
+run bigscene 1 big.inc --max-file-size=100K -q +Obigscene.png
+expect bigscene "cannot open scene file 'big.inc': it is larger than the file size limit of 100 KiB"
 
 cat > hugearray.pov <<EOF
 $scene_head

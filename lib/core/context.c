@@ -310,20 +310,27 @@ zr_status zr__vdiag(zr_context *ctx, zr_diag_level level, zr_status status,
   zr__strbuf_init(&msg);
   zr__strbuf_init(&text);
   zr__strbuf_vprintf(&msg, fmt, ap);
+  /* What the message shows: control bytes escaped, and for errors and
+     warnings at most MESSAGE_MAX bytes of it.  #debug text is the
+     scene's own output: its newlines and tabs stay, escape sequences do
+     not reach the terminal. */
+  zr_strbuf shown;
+  zr__strbuf_init(&shown);
+  const char *m = zr__strbuf_cstr(&msg);
+  size_t mlen = strlen(m);
+  bool cut = level != ZR_DIAG_DEBUG && mlen > MESSAGE_MAX;
+  put_escaped(&shown, m, cut ? MESSAGE_MAX : mlen, true);
+  if (cut)
+    zr__strbuf_puts(&shown, "...");
   if (level == ZR_DIAG_DEBUG) {
-    /* #debug text is the scene's own output: its newlines and tabs
-       stay, escape sequences do not reach the terminal. */
-    puts_escaped(&text, zr__strbuf_cstr(&msg), true);
+    zr__strbuf_puts(&text, zr__strbuf_cstr(&shown));
   } else {
     if (place && place->file) {
       puts_escaped(&text, place->file, false);
       zr__strbuf_printf(&text, ":%d:%d: ", place->line, place->column);
     }
-    zr__strbuf_printf(&text, "%s: ", level_name(level));
-    const char *m = zr__strbuf_cstr(&msg);
-    size_t mlen = strlen(m);
-    put_escaped(&text, m, mlen > MESSAGE_MAX ? MESSAGE_MAX : mlen, true);
-    zr__strbuf_puts(&text, mlen > MESSAGE_MAX ? "...\n" : "\n");
+    zr__strbuf_printf(&text, "%s: %s\n", level_name(level),
+                      zr__strbuf_cstr(&shown));
     if (place && place->notes)
       puts_escaped(&text, place->notes, true);
     if (place && place->source_line && place->line > 0)
@@ -338,10 +345,11 @@ zr_status zr__vdiag(zr_context *ctx, zr_diag_level level, zr_status status,
                  place ? place->file : NULL,
                  place ? place->line : 0,
                  place ? place->column : 0,
-                 zr__strbuf_cstr(&msg),
+                 zr__strbuf_cstr(&shown),
                  zr__strbuf_cstr(&text)};
     ctx->diag_fn(&d, ctx->diag_user);
   }
+  zr__strbuf_free(&shown);
   zr__strbuf_free(&msg);
   zr__strbuf_free(&text);
   return status;

@@ -331,9 +331,11 @@ zr_status zr__image_read_heights(zr_context *ctx, const char *path, bool pot,
   if (s == ZR_ENOTFOUND)
     return zr__diag(ctx, ZR_DIAG_ERROR, s, NULL, "%s: file not found",
                     path);
-  if (s != ZR_OK)
+  if (s != ZR_OK) {
+    char why[160];
     return zr__diag(ctx, ZR_DIAG_ERROR, s, NULL, "%s: cannot read: %s",
-                    path, zr_status_str(s));
+                    path, zr__context_read_error(ctx, s, why, sizeof why));
+  }
   static const unsigned char png_sig[8] = {0x89, 'P', 'N', 'G',
                                            '\r', '\n', 0x1a, '\n'};
   const unsigned char *b = (const unsigned char *)bytes;

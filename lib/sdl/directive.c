@@ -1129,10 +1129,12 @@ ZR_API zr_status zr_scene_parse_file(zr_context *ctx, const char *path,
   char *bytes = NULL;
   size_t size = 0;
   zr_status s = zr__context_read(ctx, path, &bytes, &size);
-  if (s != ZR_OK)
+  if (s != ZR_OK) {
+    char why[160];
     return zr__diag(ctx, ZR_DIAG_ERROR, s, NULL,
                     "cannot open scene file '%s': %s", path,
-                    zr_status_str(s));
+                    zr__context_read_error(ctx, s, why, sizeof why));
+  }
   char *copy = strdup(path);
   if (!copy) {
     free(bytes);
