@@ -95,18 +95,6 @@ zr_status zr__context_over_budget(zr_context *ctx, size_t bytes,
                                           sizeof text));
 }
 
-zr_status zr__context_charge(zr_context *ctx, size_t bytes,
-                             const zr_diag_place *place, const char *what) {
-  if (!ctx || zr__budget_charge(ctx->budget, bytes))
-    return ZR_OK;
-  return zr__context_over_budget(ctx, bytes, place, what);
-}
-
-void zr__context_release(zr_context *ctx, size_t bytes) {
-  if (ctx)
-    zr__budget_release(ctx->budget, bytes);
-}
-
 ZR_API void zr_context_free(zr_context *ctx) {
   if (!ctx)
     return;

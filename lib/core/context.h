@@ -61,17 +61,14 @@ zr_status zr__context_read(zr_context *ctx, const char *path, char **bytes,
    the file limit and the option that raises it for ZR_ELIMIT. */
 const char *zr__context_read_error(const zr_context *ctx, zr_status s,
                                    char *buf, size_t size);
-/* Charges bytes for what (a noun phrase: "an array of 100000 elements")
-   to the context's memory budget; on failure reports a located error
-   at place (may be NULL) and returns ZR_ELIMIT. */
-zr_status zr__context_charge(zr_context *ctx, size_t bytes,
-                             const zr_diag_place *place, const char *what);
-void zr__context_release(zr_context *ctx, size_t bytes);
-/* The message for what needing bytes past the budget, in buf. */
+/* The message for what (a noun phrase: "the 4000x4000 image 'a.png'")
+   needing bytes past the context's memory budget, in buf: the budget
+   and the option that raises it. */
 const char *zr__context_budget_text(const zr_context *ctx, size_t bytes,
                                     const char *what, char *buf,
                                     size_t size);
-/* Reports that what did not fit in the memory budget (see above). */
+/* Reports that message as an error at place (may be NULL); returns
+   ZR_ELIMIT. */
 zr_status zr__context_over_budget(zr_context *ctx, size_t bytes,
                                   const zr_diag_place *place,
                                   const char *what);
