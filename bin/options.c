@@ -50,6 +50,8 @@ typedef enum opt_key {
   K_VERSION,
   K_PARSE_ONLY,
   K_LOOP_LIMIT,
+  K_MEMORY_LIMIT,
+  K_FILE_LIMIT,
   K_IGNORED,      /* display options: zrcube opens no window */
   K_OUTPUT_ON,    /* optional format */
   K_OUTPUT_OFF,   /* optional format, kept for later */
@@ -102,7 +104,8 @@ void zr__cli_init(zr_cli_options *o, const zr_render_params *defaults) {
   o->params = *defaults;
   o->format = ZR_FORMAT_AUTO;
   o->write_output = 1;
-  o->loop_limit = ZR_DEFAULT_LOOP_LIMIT;
+  o->loop_limit = ZR_DEFAULT_WORK_LIMIT;
+  o->file_limit = ZR_DEFAULT_FILE_LIMIT;
   zr_radiosity_params_init(&o->rad, NULL);
   /* A lamp emits from its front only: with two-sided emission the
      Cornell box's lamp, hung 0.01 below the ceiling, pours half its
@@ -128,6 +131,34 @@ void zr__cli_free(zr_cli_options *o) {
     free(o->write_paths[i]);
   free(o->write_paths);
   memset(o, 0, sizeof *o);
+}
+
+/* A size: digits, then an optional K, M, G or T (powers of 1024), with
+   an optional "B" or "iB" after it ("512M", "2GiB", "1000000"). */
+static int parse_size(const char *s, unsigned long long *out) {
+  if (!s || !isdigit((unsigned char)*s))
+    return -1;
+  errno = 0;
+  char *end;
+  unsigned long long n = strtoull(s, &end, 10);
+  if (errno)
+    return -1;
+  int shift = 0;
+  switch (*end) {
+  case 'k': case 'K': shift = 10; end++; break;
+  case 'm': case 'M': shift = 20; end++; break;
+  case 'g': case 'G': shift = 30; end++; break;
+  case 't': case 'T': shift = 40; end++; break;
+  default: break;
+  }
+  if (shift && *end == 'i')
+    end++;
+  if (*end == 'B' || *end == 'b')
+    end++;
+  if (*end || (shift && n > (~0ULL >> shift)))
+    return -1;
+  *out = n << shift;
+  return 0;
 }
 
 /* A whole number from lo to hi and nothing else (no sign games, no
@@ -531,9 +562,25 @@ static int apply(const arg_ctx *c, opt_key key, const char *value) {
     unsigned long long n = value && isdigit((unsigned char)*value)
                                ? strtoull(value, &end, 10) : 0;
     if (!end || *end || errno)
-      return fail(c, "'%s': --max-loop-iterations must be a whole number "
+      return fail(c, "'%s': --max-work must be a whole number "
                      "(0: no limit)", c->what);
     o->loop_limit = n;
+    return 0;
+  }
+  case K_MEMORY_LIMIT:
+  case K_FILE_LIMIT: {
+    unsigned long long n;
+    if (parse_size(value, &n) < 0)
+      return fail(c, "'%s': --%s must be a size in bytes, with an "
+                     "optional K, M, G or T (binary units; 0: no limit)",
+                  c->what, key == K_MEMORY_LIMIT ? "memory-limit"
+                                                 : "max-file-size");
+    if (key == K_MEMORY_LIMIT) {
+      o->memory_limit = n;
+      o->memory_limit_given = 1;
+    } else {
+      o->file_limit = n;
+    }
     return 0;
   }
   case K_IGNORED:
@@ -670,6 +717,9 @@ static const long_option long_options[] = {
     {"version", K_VERSION, L_NONE},
     {"parse-only", K_PARSE_ONLY, L_NONE},
     {"max-loop-iterations", K_LOOP_LIMIT, L_REQUIRED},
+    {"max-work", K_LOOP_LIMIT, L_REQUIRED},
+    {"memory-limit", K_MEMORY_LIMIT, L_REQUIRED},
+    {"max-file-size", K_FILE_LIMIT, L_REQUIRED},
     {"radiosity", K_RADIOSITY, L_NONE},
     {"bf-eps", K_BF_EPS, L_REQUIRED},
     {"area-eps", K_AREA_EPS, L_REQUIRED},
@@ -1083,9 +1133,16 @@ const char *zr__cli_usage(void) {
       "  -q, --quiet                  no progress line and no warnings\n"
       "  --parse-only                 parse the scene, print what it holds\n"
       "                               and the parse time, render nothing\n"
-      "  --max-loop-iterations=N      stop a parse whose #while and #for\n"
-      "                               loops repeat more than N times in\n"
-      "                               all (default 100000000; 0: no limit)\n"
+      "  --max-work=N                 stop a parse after N steps (each\n"
+      "                               directive, macro call and loop pass\n"
+      "                               is one; default 200000000; 0: no\n"
+      "                               limit); --max-loop-iterations=N is\n"
+      "                               the older name\n"
+      "  --memory-limit=SIZE          the run's memory budget (K, M, G, T:\n"
+      "                               binary units; default half of\n"
+      "                               physical memory; 0: no limit)\n"
+      "  --max-file-size=SIZE         the largest file a scene may read\n"
+      "                               (default 1G; 0: no limit)\n"
       "  --read-path=DIR              let scenes read below DIR too\n"
       "  --write-path=DIR             let scenes write below DIR too\n"
       "  --io-restrictions=MODE       restricted (default: scenes read\n"

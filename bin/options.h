@@ -32,7 +32,11 @@ typedef struct zr_cli_options {
   int help;
   int version;
   int parse_only;         /* --parse-only: report what the scene holds */
-  unsigned long long loop_limit; /* --max-loop-iterations; 0: none */
+  unsigned long long loop_limit; /* --max-work (--max-loop-iterations);
+                                    0: none */
+  int memory_limit_given;        /* --memory-limit was given */
+  unsigned long long memory_limit; /* its bytes; 0: none */
+  unsigned long long file_limit; /* --max-file-size; 0: none */
   /* Radiosity (issue 4): any radiosity option turns it on. */
   int radiosity;          /* solve (or load) a solution, render with it */
   zr_radiosity_params rad; /* the solver's settings */

@@ -323,7 +323,10 @@ static zr_status make_context(run *r) {
   r->diag.quiet = r->opts.quiet;
   zr_context_set_diag(r->ctx, print_diag, &r->diag);
   /* Scenes read image_width and image_height while they are parsed. */
-  zr_context_set_loop_limit(r->ctx, r->opts.loop_limit);
+  zr_context_set_work_limit(r->ctx, r->opts.loop_limit);
+  zr_context_set_file_limit(r->ctx, r->opts.file_limit);
+  if (r->opts.memory_limit_given)
+    zr_context_set_memory_limit(r->ctx, r->opts.memory_limit);
   s = zr_context_set_render_size(r->ctx, r->opts.params.width,
                                  r->opts.params.height);
   for (size_t i = 0; i < r->opts.n_include_paths && s == ZR_OK; i++)
@@ -344,6 +347,7 @@ static int read_scene(run *r) {
   zr_status local = make_context(r);
   zr_status root = local;
   zr__bundle_init(&r->bundle);
+  r->bundle.max_file_size = r->opts.file_limit;
   double start = zr__par_now();
   if (r->rank == 0 && local == ZR_OK) {
     /* Rank 0 reads with the library's own reader, which applies the
@@ -550,10 +554,13 @@ static void print_scene_info(const run *r) {
          "infinite primitives: %zu\n"
          "lights: %zu\n"
          "camera: %s\n"
-         "parse seconds: %.4f\n",
+         "parse seconds: %.4f\n"
+         "parse steps: %llu\n"
+         "memory peak: %llu\n",
          r->opts.input, info.objects, info.primitives,
          info.finite_primitives, info.infinite_primitives, info.lights,
-         info.has_camera ? "yes" : "no (the default)", r->parse_seconds);
+         info.has_camera ? "yes" : "no (the default)", r->parse_seconds,
+         info.parse_steps, zr_context_memory_peak(r->ctx));
 }
 
 int main(int argc, char **argv) {

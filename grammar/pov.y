@@ -1471,6 +1471,11 @@ object_head:
       TRY($$ = zr__sdl_object_new(p, ZR_OBJ_SPHERE, &@1));
       TRY(zr__sdl_want_vector(p, &$3, &@3, &$$->u.sphere.centre));
       TRY(zr__sdl_want_float(p, &$5, &@5, &$$->u.sphere.radius));
+      if ($$->u.sphere.radius < 0)
+        zr__sdl_warning(p, &@5, "a sphere with a negative radius (%g) "
+                        "is drawn with radius %g (POV-Ray 3.7 draws it "
+                        "too, shaded inside out)", $$->u.sphere.radius,
+                        -$$->u.sphere.radius);
     }
 | T_BOX '{' expr comma expr
     {
@@ -1496,6 +1501,7 @@ object_head:
       TRY(zr__sdl_want_vector(p, &$3, &@3, &$$->u.triangle.p[0]));
       TRY(zr__sdl_want_vector(p, &$5, &@5, &$$->u.triangle.p[1]));
       TRY(zr__sdl_want_vector(p, &$7, &@7, &$$->u.triangle.p[2]));
+      zr__sdl_degenerate_triangle(p, $$->u.triangle.p, &@1);
     }
 | T_CYLINDER '{' expr comma expr comma expr
     {
@@ -1503,6 +1509,8 @@ object_head:
       TRY(zr__sdl_want_vector(p, &$3, &@3, &$$->u.cylinder.base));
       TRY(zr__sdl_want_vector(p, &$5, &@5, &$$->u.cylinder.cap));
       TRY(zr__sdl_want_float(p, &$7, &@7, &$$->u.cylinder.radius));
+      TRY(zr__sdl_axis_given(p, $$->u.cylinder.base, $$->u.cylinder.cap,
+                             "cylinder", &@5));
     }
 | T_CONE '{' expr comma expr comma expr comma expr
     {
@@ -1511,6 +1519,8 @@ object_head:
       TRY(zr__sdl_want_float(p, &$5, &@5, &$$->u.cone.base_radius));
       TRY(zr__sdl_want_vector(p, &$7, &@7, &$$->u.cone.cap));
       TRY(zr__sdl_want_float(p, &$9, &@9, &$$->u.cone.cap_radius));
+      TRY(zr__sdl_axis_given(p, $$->u.cone.base, $$->u.cone.cap, "cone",
+                             &@7));
     }
 | T_DISC '{' expr comma expr comma expr
     {
@@ -3368,7 +3378,7 @@ photon_kw:
 /* ---- camera, lights, background, global settings ---- */
 
 camera:
-  camera_body '}'      { zr__sdl_camera_end(p); }
+  camera_body '}'      { TRY(zr__sdl_camera_end(p)); }
 ;
 
 camera_body:
@@ -3440,7 +3450,7 @@ camera_body:
     {
       zr_vec3 target;
       TRY(zr__sdl_want_vector(p, &$3, &@3, &target));
-      zr__sdl_camera_look_at(p, target);
+      zr__sdl_camera_look_at(p, target, &@3);
     }
 | camera_body transform
     { zr__sdl_camera_transform(p, $2); }
@@ -3743,6 +3753,10 @@ rad_kw:
 ;
 
 %%
+
+const char *zr__sdl_kind_name(int kind) {
+  return yysymbol_name(YYTRANSLATE(kind));
+}
 
 /* How many expected tokens a message lists before it gives up. */
 #define MAX_EXPECTED 32

@@ -87,7 +87,11 @@ typedef enum zr_diag_level {
  * One diagnostic.  file is NULL and line/column are 0 when the message has
  * no place in a scene file.  text is the complete message formatted like a
  * compiler's: "scene.pov:12:7: error: message", the include chain, the
- * source line and a caret under the column, ending in a newline.  All
+ * source line and a caret under the column, ending in a newline.  Both
+ * message and text are safe to print on a terminal: control bytes and
+ * bytes that are not UTF-8 from the scene show as \xNN, an error's or
+ * warning's message stops after 2048 bytes with "...", and a long source
+ * line is quoted as a window of 70 columns each side of the caret.  All
  * pointers are valid only during the callback.
  */
 typedef struct zr_diag {
@@ -128,13 +132,20 @@ ZR_API zr_status zr_context_add_include_path(zr_context *ctx, const char *dir);
 ZR_API zr_status zr_context_set_render_size(zr_context *ctx, int width,
                                             int height);
 /*
- * The most times the #while and #for loops of one parse may repeat
- * their bodies, all loops together, before the parse stops with
- * ZR_ELIMIT: a loop whose condition never turns false ends with an
- * error instead of running forever.  0: no limit.  Default
- * ZR_DEFAULT_LOOP_LIMIT, about half a minute of the simplest loop.
+ * The work budget of one parse: every directive run, every macro call
+ * and every pass through a #while, #for or #zfor body is one step.  A
+ * scene that takes more steps stops with ZR_ELIMIT and a located error
+ * (a loop whose condition never turns false, macros that branch into
+ * each other without end), instead of parsing forever.  0: no limit.
+ * The default, ZR_DEFAULT_WORK_LIMIT, is about a minute of the simplest
+ * loop and more than a hundred times what the most demanding stock
+ * scene of POV-Ray 3.7 takes.
  */
-#define ZR_DEFAULT_LOOP_LIMIT 100000000ULL
+#define ZR_DEFAULT_WORK_LIMIT 200000000ULL
+ZR_API void zr_context_set_work_limit(zr_context *ctx,
+                                      unsigned long long steps);
+/* The older name of the work budget (it counted loop passes only). */
+#define ZR_DEFAULT_LOOP_LIMIT ZR_DEFAULT_WORK_LIMIT
 ZR_API void zr_context_set_loop_limit(zr_context *ctx,
                                       unsigned long long iterations);
 /*
@@ -192,6 +203,30 @@ typedef zr_status (*zr_read_observer_fn)(const char *path,
 ZR_API void zr_context_set_read_observer(zr_context *ctx,
                                          zr_read_observer_fn fn, void *user);
 
+ * The memory budget of everything made with ctx (scenes, their token
+ * arrays, arrays, meshes and images, radiosity solutions): the large
+ * allocations are charged to it before they are made, and one that does
+ * not fit stops the parse or solve with ZR_ELIMIT and a message, rather
+ * than the process growing until the system kills it.  The default is
+ * half of physical memory, or three quarters of the process's address
+ * space or data limit (ulimit -v, -d) when that is lower.  0: no limit.
+ * Scenes made with ctx share its budget, and may outlive ctx.
+ */
+ZR_API void zr_context_set_memory_limit(zr_context *ctx,
+                                        unsigned long long bytes);
+ZR_API unsigned long long zr_context_memory_limit(const zr_context *ctx);
+/* The most memory charged to ctx's budget at once so far. */
+ZR_API unsigned long long zr_context_memory_peak(const zr_context *ctx);
+/*
+ * The largest file a scene may read (the scene file, #include, image
+ * and height-field maps, fonts, density files, radiosity files): a
+ * larger regular file is refused before it is read, and a device or
+ * pipe that gives more than this (#include "/dev/zero") is cut off with
+ * ZR_ELIMIT.  0: no limit.  Default ZR_DEFAULT_FILE_LIMIT (1 GiB).
+ */
+#define ZR_DEFAULT_FILE_LIMIT (1ULL << 30)
+ZR_API void zr_context_set_file_limit(zr_context *ctx,
+                                      unsigned long long bytes);
 /* The message of the last error reported through ctx ("" when none). */
 ZR_API const char *zr_context_last_error(const zr_context *ctx);
 
@@ -219,6 +254,9 @@ typedef struct zr_scene_info {
   int has_camera;
   /* global_settings { radiosity { } }: the scene asks for radiosity */
   int has_radiosity;
+  /* Steps the parse took against the work budget
+     (zr_context_set_work_limit). */
+  unsigned long long parse_steps;
 } zr_scene_info;
 
 ZR_API void zr_scene_get_info(const zr_scene *scene, zr_scene_info *info);

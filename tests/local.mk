@@ -113,3 +113,8 @@ tests_test_iopolicy_CPPFLAGS = $(TEST_CPPFLAGS)
 tests_test_iopolicy_LDADD = $(TEST_LDADD)
 tests_test_iopolicy_LDFLAGS = -static
 EXTRA_DIST += tests/test_iopolicy.sh
+# Hostile input and faults (issue 10): budgets, escaped and bounded
+# messages, non-finite values, signals, a killed rank, a full disk, too
+# little memory, corrupt files, 10^6 objects.
+TESTS += tests/test_faults.sh
+EXTRA_DIST += tests/test_faults.sh

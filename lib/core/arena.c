@@ -3,7 +3,10 @@
  */
 #include "core/arena.h"
 
+#include "core/budget.h"
+
 #include <stdalign.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -25,20 +28,33 @@ void zr__arena_free(zr_arena *a) {
     free(b);
     b = next;
   }
+  zr__budget_release(a->budget, a->charged);
+  struct zr_budget *budget = a->budget;
   zr__arena_init(a);
+  a->budget = budget;
 }
 
 void *zr__arena_alloc(zr_arena *a, size_t size) {
   const size_t align = alignof(max_align_t);
+  if (size > SIZE_MAX / 2)
+    return NULL;
   size = (size + align - 1) & ~(align - 1);
   if (size == 0)
     size = align;
   zr_arena_block *b = a->head;
   if (!b || b->size - b->used < size) {
     size_t cap = size > BLOCK_SIZE / 4 ? size : BLOCK_SIZE;
-    b = malloc(sizeof *b + cap);
-    if (!b)
+    if (!zr__budget_charge(a->budget, sizeof *b + cap)) {
+      a->over_budget = 1;
       return NULL;
+    }
+    b = malloc(sizeof *b + cap);
+    if (!b) {
+      zr__budget_release(a->budget, sizeof *b + cap);
+      return NULL;
+    }
+    if (a->budget)
+      a->charged += sizeof *b + cap;
     b->size = cap;
     b->used = 0;
     /* A large one-off block goes behind the head so the head keeps its

@@ -11,12 +11,20 @@
 
 typedef struct zr_arena_block zr_arena_block;
 
+struct zr_budget;
+
 typedef struct zr_arena {
   zr_arena_block *head;
   size_t used; /* bytes handed out, for statistics */
+  /* Blocks are charged to this budget (NULL: none) and given back when
+     the arena is freed; over_budget tells why an allocation failed. */
+  struct zr_budget *budget;
+  size_t charged;
+  int over_budget;
 } zr_arena;
 
 void zr__arena_init(zr_arena *a);
+/* Frees every block; the arena keeps its budget and can be used again. */
 void zr__arena_free(zr_arena *a);
 /* Zeroed memory aligned for any type; NULL when out of memory. */
 void *zr__arena_alloc(zr_arena *a, size_t size);

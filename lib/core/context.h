@@ -19,7 +19,6 @@ struct zr_context {
   char **include_paths;
   size_t n_include_paths;
   int render_width, render_height; /* 0 until set: the parser's defaults */
-  unsigned long long loop_limit;   /* 0: none */
   /* I/O restrictions (iopolicy.c): the mode and the folders added to the
      defaults, each resolved (realpath) when added. */
   zr_io_restrictions io_mode;
@@ -29,6 +28,9 @@ struct zr_context {
   size_t n_write_dirs;
   zr_read_observer_fn observer_fn;
   void *observer_user;
+  unsigned long long work_limit;   /* parse steps; 0: none */
+  unsigned long long file_limit;   /* bytes of one file read; 0: none */
+  struct zr_budget *budget;        /* the run's memory (core/budget.h) */
   char last_error[1024];
   unsigned errors;   /* errors reported so far */
   unsigned warnings; /* warnings reported so far */
@@ -65,10 +67,26 @@ zr_status zr__vdiag(zr_context *ctx, zr_diag_level level, zr_status status,
  * zr_scene_parse_file, an image given to zr_image_read) through the
  * context's reader, or the library's own (iopolicy.c: regular files
  * only, not confined to folders).  The bytes end in a NUL that *size
- * does not count.
+ * does not count.  A file larger than the context's file limit gives
+ * ZR_ELIMIT.
  */
 zr_status zr__context_read(zr_context *ctx, const char *path, char **bytes,
                            size_t *size);
+/* Why a read failed with status s, for "cannot read 'x': ..." messages:
+   the file limit and the option that raises it for ZR_ELIMIT. */
+const char *zr__context_read_error(const zr_context *ctx, zr_status s,
+                                   char *buf, size_t size);
+/* The message for what (a noun phrase: "the 4000x4000 image 'a.png'")
+   needing bytes past the context's memory budget, in buf: the budget
+   and the option that raises it. */
+const char *zr__context_budget_text(const zr_context *ctx, size_t bytes,
+                                    const char *what, char *buf,
+                                    size_t size);
+/* Reports that message as an error at place (may be NULL); returns
+   ZR_ELIMIT. */
+zr_status zr__context_over_budget(zr_context *ctx, size_t bytes,
+                                  const zr_diag_place *place,
+                                  const char *what);
 
 /*
  * Reads a whole file a scene named, under the context's I/O restrictions

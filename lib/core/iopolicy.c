@@ -30,6 +30,7 @@
  */
 #include "config.h"
 
+#include "core/budget.h"
 #include "core/iopolicy.h"
 
 #include <errno.h>
@@ -336,13 +337,28 @@ static zr_status check_open(const zr_context *ctx, int fd, const char *path,
   return ZR_OK;
 }
 
-/* Reads all of fd into a malloc'ed buffer ending in a NUL. */
-static zr_status read_all(int fd, const char *path, char **bytes,
-                          size_t *size, char *why, size_t why_size) {
+/* The message for a file over the file size limit (0: no limit). */
+static zr_status too_large(const char *path, unsigned long long limit,
+                           char *why, size_t why_size) {
+  char text[32];
+  return say(why, why_size, ZR_ELIMIT,
+             "'%s' is larger than the file size limit of %s (raise it "
+             "with --max-file-size)", path,
+             zr__budget_size_text((size_t)limit, text, sizeof text));
+}
+
+/* Reads all of fd into a malloc'ed buffer ending in a NUL, at most limit
+   bytes (0: no limit): a larger regular file is refused unread. */
+static zr_status read_all(int fd, const char *path, unsigned long long limit,
+                          char **bytes, size_t *size, char *why,
+                          size_t why_size) {
   struct stat st;
   size_t cap = 65536;
-  if (fstat(fd, &st) == 0 && st.st_size > 0 &&
-      (uintmax_t)st.st_size < SIZE_MAX / 2)
+  bool have_stat = fstat(fd, &st) == 0;
+  if (have_stat && limit && S_ISREG(st.st_mode) &&
+      (unsigned long long)st.st_size > limit)
+    return too_large(path, limit, why, why_size);
+  if (have_stat && st.st_size > 0 && (uintmax_t)st.st_size < SIZE_MAX / 2)
     cap = (size_t)st.st_size + 1;
   char *buf = malloc(cap);
   if (!buf)
@@ -369,6 +385,10 @@ static zr_status read_all(int fd, const char *path, char **bytes,
     if (n == 0)
       break;
     len += (size_t)n;
+    if (limit && len > limit) {
+      free(buf);
+      return too_large(path, limit, why, why_size);
+    }
   }
   buf[len] = '\0';
   *bytes = buf;
@@ -397,20 +417,27 @@ zr_status zr__io_read_scene(zr_context *ctx, const char *path,
   s = check_open(ctx, fd, path, scene_dir, ZR_IO_ACCESS_READ, confined, why,
                  why_size);
   if (s == ZR_OK)
-    s = read_all(fd, path, bytes, size, why, why_size);
+    s = read_all(fd, path, ctx ? ctx->file_limit : ZR_DEFAULT_FILE_LIMIT,
+                 bytes, size, why, why_size);
   close(fd);
   return s;
 }
 
 zr_status zr__io_read_named(const char *path, char **bytes, size_t *size,
                             char *why, size_t why_size) {
+  return zr__io_read_named_max(path, 0, bytes, size, why, why_size);
+}
+
+zr_status zr__io_read_named_max(const char *path, unsigned long long limit,
+                                char **bytes, size_t *size, char *why,
+                                size_t why_size) {
   int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
   if (fd < 0)
     return cannot(path, errno, why, why_size);
   zr_status s = check_open(NULL, fd, path, NULL, ZR_IO_ACCESS_READ, false,
                            why, why_size);
   if (s == ZR_OK)
-    s = read_all(fd, path, bytes, size, why, why_size);
+    s = read_all(fd, path, limit, bytes, size, why, why_size);
   close(fd);
   return s;
 }

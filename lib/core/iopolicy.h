@@ -55,6 +55,11 @@ zr_status zr__io_read_scene(zr_context *ctx, const char *path,
    regular files only. */
 zr_status zr__io_read_named(const char *path, char **bytes, size_t *size,
                             char *why, size_t why_size);
+/* The same, refusing a file larger than limit bytes (0: no limit) with
+   ZR_ELIMIT. */
+zr_status zr__io_read_named_max(const char *path, unsigned long long limit,
+                                char **bytes, size_t *size, char *why,
+                                size_t why_size);
 
 /* Opens a file the caller named for reading as a stdio stream: any
    folder, regular files only (why says what else it is). */

@@ -1,5 +1,6 @@
 lib_libzrcube_la_SOURCES += \
 	lib/core/arena.c lib/core/arena.h \
+	lib/core/budget.c lib/core/budget.h \
 	lib/core/context.c lib/core/context.h \
 	lib/core/iopolicy.c lib/core/iopolicy.h \
 	lib/core/strbuf.c lib/core/strbuf.h \

@@ -333,9 +333,11 @@ zr_status zr__image_read_heights(zr_context *ctx, const char *path, bool pot,
                     path);
   if (s == ZR_EACCESS)
     return s; /* zr__context_read said why */
-  if (s != ZR_OK)
+  if (s != ZR_OK) {
+    char why[160];
     return zr__diag(ctx, ZR_DIAG_ERROR, s, NULL, "%s: cannot read: %s",
-                    path, zr_status_str(s));
+                    path, zr__context_read_error(ctx, s, why, sizeof why));
+  }
   s = zr__image_decode_heights(ctx, path, pot, bytes, size, heights, width,
                                height);
   free(bytes);

@@ -32,6 +32,7 @@
 #include <strings.h>
 #include <unistd.h>
 
+#include "core/budget.h"
 #include "core/context.h"
 #include "core/iopolicy.h"
 
@@ -62,13 +63,38 @@ ZR_API zr_status zr_image_new(int width, int height, zr_image **out) {
   image->palette_size = 0;
   image->codes = NULL;
   image->maxval = 0;
+  image->budget = NULL;
+  image->charged = 0;
   *out = image;
   return ZR_OK;
 }
 
+/* What a decoded image costs per pixel: its three floats (12 bytes),
+   the codes and palette indices a PNG keeps (7), and the decoder's rows
+   of up to 8 bytes a pixel (16-bit RGBA), which are charged for the
+   image's life: an over-estimate of 8 bytes a pixel while it lasts. */
+enum { DECODED_BYTES_PER_PIXEL = 28 };
+
 zr_status zr__image_new_named(zr_context *ctx, const char *name, int width,
                               int height, zr_image **out) {
-  zr_status s = zr_image_new(width, height, out);
+  zr_status s = check_size(width, height);
+  size_t bytes = s == ZR_OK ? (size_t)width * (size_t)height *
+                                  DECODED_BYTES_PER_PIXEL
+                            : 0;
+  if (s == ZR_OK && ctx && !zr__budget_charge(ctx->budget, bytes)) {
+    char what[200];
+    snprintf(what, sizeof what, "the %dx%d image '%.120s'", width, height,
+             name);
+    return zr__context_over_budget(ctx, bytes, NULL, what);
+  }
+  if (s == ZR_OK)
+    s = zr_image_new(width, height, out);
+  if (s == ZR_OK && ctx) {
+    (*out)->budget = zr__budget_ref(ctx->budget);
+    (*out)->charged = bytes;
+  } else if (ctx) {
+    zr__budget_release(ctx->budget, bytes);
+  }
   switch (s) {
   case ZR_OK:
     return ZR_OK;
@@ -93,6 +119,8 @@ ZR_API void zr_image_free(zr_image *image) {
   free(image->pixels);
   free(image->indices);
   free(image->codes);
+  zr__budget_release(image->budget, image->charged);
+  zr__budget_unref(image->budget);
   free(image);
 }
 
@@ -223,9 +251,11 @@ ZR_API zr_status zr_image_read(zr_context *ctx, const char *path,
                     path);
   if (s == ZR_EACCESS)
     return s; /* zr__context_read said why */
-  if (s != ZR_OK)
+  if (s != ZR_OK) {
+    char why[160];
     return zr__diag(ctx, ZR_DIAG_ERROR, s, NULL, "%s: cannot read: %s",
-                    path, zr_status_str(s));
+                    path, zr__context_read_error(ctx, s, why, sizeof why));
+  }
   s = zr__image_decode(ctx, path, bytes, size, out);
   free(bytes);
   return s;

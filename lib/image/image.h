@@ -30,6 +30,10 @@ struct zr_image {
      can decode them again with the transfer it names. */
   unsigned short *codes;
   unsigned maxval;
+  /* A decoded file's memory, charged to the budget of the context that
+     read it (NULL: none) until the image is freed. */
+  struct zr_budget *budget;
+  size_t charged;
 };
 
 /* ZR_IMAGE_MAX_SIDE and ZR_IMAGE_MAX_PIXELS (zrcube.h) keep a hostile

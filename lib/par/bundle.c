@@ -20,6 +20,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 static const char magic[4] = {'Z', 'R', 'B', '1'};
 
@@ -207,10 +208,19 @@ static zr_status serve(const zr_bundle_file *f, char **bytes, size_t *size) {
   return ZR_OK;
 }
 
-static zr_status read_disk(const char *path, char **bytes, size_t *size) {
+static zr_status read_disk(const char *path, unsigned long long limit,
+                           char **bytes, size_t *size) {
   FILE *file = fopen(path, "rb");
   if (!file)
     return errno == ENOENT || errno == ENOTDIR ? ZR_ENOTFOUND : ZR_EIO;
+  /* A regular file over the limit is refused unread; a device or a
+     pipe (/dev/zero) when it has given more than the limit. */
+  struct stat st;
+  if (limit && fstat(fileno(file), &st) == 0 && S_ISREG(st.st_mode) &&
+      (unsigned long long)st.st_size > limit) {
+    fclose(file);
+    return ZR_ELIMIT;
+  }
   size_t cap = 65536, len = 0;
   char *buf = malloc(cap);
   zr_status status = buf ? ZR_OK : ZR_ENOMEM;
@@ -227,6 +237,10 @@ static zr_status read_disk(const char *path, char **bytes, size_t *size) {
     }
     size_t n = fread(buf + len, 1, cap - 1 - len, file);
     len += n;
+    if (limit && len > limit) {
+      status = ZR_ELIMIT;
+      break;
+    }
     if (n == 0) {
       /* A directory opens on Linux and then fails to read: EIO. */
       if (ferror(file))
@@ -251,7 +265,7 @@ zr_status zr__bundle_record_reader(const char *path, char **bytes,
   const zr_bundle_file *seen = zr__bundle_find(bundle, path);
   if (seen)
     return serve(seen, bytes, size);
-  zr_status s = read_disk(path, bytes, size);
+  zr_status s = read_disk(path, bundle->max_file_size, bytes, size);
   if (s != ZR_OK)
     return s;
   s = zr__bundle_add(bundle, path, *bytes, *size);

@@ -24,6 +24,9 @@ typedef struct zr_bundle {
   zr_bundle_file *files;
   size_t count;
   size_t cap;
+  /* The record reader refuses a file larger than this (0: no limit),
+     before reading it all: the context's file limit. */
+  unsigned long long max_file_size;
 } zr_bundle;
 
 void zr__bundle_init(zr_bundle *bundle);

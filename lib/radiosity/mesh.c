@@ -424,6 +424,8 @@ zr_status zr__rad_mesh_build(zr_radiosity *rad, zr_context *ctx) {
     zr_status st = zr__is_csg(o->kind)
                        ? add_parts(rad, ctx, o, o, l, h, &tally)
                        : add_primitive(rad, ctx, o, l, h, NULL, &tally);
+    if (st != ZR_OK && rad->over_budget)
+      return ZR_ELIMIT; /* the caller says so */
     if (st != ZR_OK)
       return zr__diag(ctx, ZR_DIAG_ERROR, st, NULL,
                       "radiosity: out of memory building surfaces");

@@ -28,12 +28,15 @@
 
 /* ---- growable arrays ---- */
 
-static bool grow(void **array, size_t *cap, size_t need, size_t size) {
+static bool grow(zr_radiosity *rad, void **array, size_t *cap, size_t need,
+                 size_t size) {
   if (need <= *cap)
     return true;
   size_t cap2 = *cap ? *cap : 64;
   while (cap2 < need)
     cap2 *= 2;
+  if (!zr__rad_charge(rad, (cap2 - *cap) * size))
+    return false;
   void *p = realloc(*array, cap2 * size);
   if (p == NULL)
     return false;
@@ -96,7 +99,7 @@ static uint32_t vertex_get(zr_radiosity *rad, int32_t surf, uint32_t mslot,
   size_t slot = vertex_slot(rad, surf, mslot, iu, iv);
   if (rad->vhash[slot] != 0)
     return rad->vhash[slot] - 1;
-  if (!grow((void **)&rad->verts, &rad->cap_verts, rad->n_verts + 1,
+  if (!grow(rad, (void **)&rad->verts, &rad->cap_verts, rad->n_verts + 1,
             sizeof *rad->verts))
     return UINT32_MAX;
   zr__rad_vertex *v = &rad->verts[rad->n_verts];
@@ -190,7 +193,7 @@ void zr__rad_node_geometry(const zr_radiosity *rad, zr__rad_node *node) {
 /* A new node; -1 when out of memory. */
 static int32_t node_new(zr_radiosity *rad, int32_t surf, int32_t parent,
                         int32_t depth, uint32_t iu, uint32_t iv) {
-  if (!grow((void **)&rad->nodes, &rad->cap_nodes, rad->n_nodes + 1,
+  if (!grow(rad, (void **)&rad->nodes, &rad->cap_nodes, rad->n_nodes + 1,
             sizeof *rad->nodes))
     return -1;
   zr__rad_node *node = &rad->nodes[rad->n_nodes];

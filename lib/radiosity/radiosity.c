@@ -36,6 +36,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/budget.h"
 #include "radiosity/formfactor.h"
 #include "trace/obj_mesh.h"
 
@@ -100,6 +101,16 @@ static zr_status check_params(zr_context *ctx, const zr_radiosity_params *p) {
                   what);
 }
 
+/* The message for a solve stopped by the memory budget. */
+static zr_status over_budget(zr_context *ctx) {
+  return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ELIMIT, NULL,
+                  "radiosity: the solution's elements and links do not "
+                  "fit in the memory budget of %llu bytes (raise it with "
+                  "--memory-limit, or coarsen the solution with a larger "
+                  "--bf-eps or --area-eps)",
+                  (unsigned long long)zr_context_memory_limit(ctx));
+}
+
 zr_status zr__rad_create(zr_context *ctx, const zr_scene *scene,
                          const zr_radiosity_params *params,
                          zr_radiosity **out) {
@@ -118,14 +129,16 @@ zr_status zr__rad_create(zr_context *ctx, const zr_scene *scene,
                     "radiosity: out of memory");
   rad->scene = scene;
   rad->params = *params;
+  rad->budget = ctx ? zr__budget_ref(ctx->budget) : NULL;
   rad->fingerprint = zr__rad_fingerprint(scene);
   /* Different orders, so a self link's two rules never share a point. */
   zr__gauss_rule_init(&rad->rule_recv, 4);
   zr__gauss_rule_init(&rad->rule_src, 5);
   st = zr__rad_mesh_build(rad, ctx);
   if (st != ZR_OK) {
+    bool budget = rad->over_budget;
     zr_radiosity_free(rad);
-    return st;
+    return budget ? over_budget(ctx) : st;
   }
   rad->area_eps_abs = params->area_eps * rad->total_area;
   *out = rad;
@@ -188,6 +201,8 @@ static zr_status solve_rounds(zr_radiosity *rad, zr_context *ctx) {
     round++;
   }
   rad->stats.refine_rounds = round;
+  if (st != ZR_OK && rad->over_budget)
+    return over_budget(ctx);
   if (st == ZR_ENOMEM)
     return zr__diag(ctx, ZR_DIAG_ERROR, st, NULL,
                     "radiosity: out of memory refining links");
@@ -282,8 +297,21 @@ ZR_API void zr_radiosity_free(zr_radiosity *rad) {
   if (rad == NULL)
     return;
   zr__rad_free_arrays(rad);
+  zr__budget_release(rad->budget, rad->charged);
+  zr__budget_unref(rad->budget);
   free(rad);
 }
+
+bool zr__rad_charge(zr_radiosity *rad, size_t bytes) {
+  if (!zr__budget_charge(rad->budget, bytes)) {
+    rad->over_budget = true;
+    return false;
+  }
+  if (rad->budget)
+    rad->charged += bytes;
+  return true;
+}
+
 
 ZR_API void zr_radiosity_get_stats(const zr_radiosity *rad,
                                    zr_radiosity_stats *stats) {

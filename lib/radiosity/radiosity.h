@@ -116,6 +116,12 @@ typedef struct zr__rad_object_entry {
 
 struct zr_radiosity {
   const zr_scene *scene;
+  /* The nodes, vertices and links are charged to the budget of the
+     context that solved (NULL: none) until the solution is freed;
+     over_budget tells that a growth failed for the budget. */
+  struct zr_budget *budget;
+  size_t charged;
+  bool over_budget;
   zr_radiosity_params params;
   zr_radiosity_stats stats;
   uint64_t fingerprint;
@@ -154,6 +160,9 @@ struct zr_radiosity {
 
 /* ---- mesh.c ---- */
 zr_status zr__rad_mesh_build(zr_radiosity *rad, zr_context *ctx);
+/* Charges bytes of growth to rad's budget; false (over_budget set) when
+   they do not fit. */
+bool zr__rad_charge(zr_radiosity *rad, size_t bytes);
 /* The surfaces of object (count 0 when it has none). */
 const zr__rad_object_entry *zr__rad_object_find(const zr_radiosity *rad,
                                                 const zr_object *object);

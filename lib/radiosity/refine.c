@@ -619,6 +619,8 @@ static zr_status append_link(zr_radiosity *rad, int32_t p, int rs,
                              int32_t q, int ss, bool dead) {
   if (rad->n_links == rad->cap_links) {
     size_t cap = rad->cap_links ? 2 * rad->cap_links : 256;
+    if (!zr__rad_charge(rad, (cap - rad->cap_links) * sizeof *rad->links))
+      return ZR_ENOMEM;
     zr__rad_link *a = realloc(rad->links, cap * sizeof *a);
     if (a == NULL)
       return ZR_ENOMEM;

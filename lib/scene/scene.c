@@ -8,6 +8,8 @@
  */
 #include "scene/scene.h"
 
+#include "core/budget.h"
+
 #include <stdlib.h>
 #include <string.h>
 
@@ -214,6 +216,7 @@ ZR_API void zr_scene_free(zr_scene *scene) {
   free(scene->objects);
   free(scene->lights);
   zr__arena_free(&scene->arena);
+  zr__budget_unref(scene->arena.budget);
   free(scene);
 }
 
@@ -222,6 +225,7 @@ ZR_API void zr_scene_get_info(const zr_scene *scene, zr_scene_info *info) {
   info->objects = scene->n_objects;
   info->primitives = scene->n_primitives;
   info->lights = scene->n_lights;
+  info->parse_steps = scene->parse_steps;
   info->has_camera = scene->camera.given;
   info->has_radiosity = scene->settings.radiosity.on;
   for (size_t i = 0; i < scene->n_primitives; i++) {

@@ -946,6 +946,7 @@ struct zr_scene {
   const zr_object **primitives;
   size_t n_primitives;
   struct zr_bvh *bvh;
+  unsigned long long parse_steps; /* the work budget the parse used */
 };
 
 void zr__finish_init(zr_finish *f);

@@ -102,6 +102,27 @@ static const char *kind_name(zr_object_kind kind) {
   return "an object";
 }
 
+/* Degenerate means the corners span no area: the cross product of two
+   edges is exactly zero (collinear or repeated corners), a fact of
+   geometry that needs no tolerance. */
+void zr__sdl_degenerate_triangle(zr_sdl_parser *p, const zr_vec3 *corners,
+                                 const zr_sdl_loc *at) {
+  zr_vec3 n = zr_v3_cross(zr_v3_sub(corners[1], corners[0]),
+                          zr_v3_sub(corners[2], corners[0]));
+  if (zr_v3_len(n) == 0)
+    zr__sdl_warning(p, at, "degenerate triangle: its corners are on one "
+                    "line, so it shows nothing (remove it)");
+}
+
+bool zr__sdl_axis_given(zr_sdl_parser *p, zr_vec3 base, zr_vec3 cap,
+                        const char *shape, const zr_sdl_loc *at) {
+  if (zr_v3_len(zr_v3_sub(cap, base)) != 0)
+    return true;
+  zr__sdl_error(p, ZR_ESCENE, at, "degenerate %s: its base point and cap "
+                "point are the same", shape);
+  return false;
+}
+
 zr_object *zr__sdl_object_new(zr_sdl_parser *p, zr_object_kind kind,
                               const zr_sdl_loc *loc) {
   zr_object *o = zr__sdl_alloc(p, sizeof *o);

@@ -278,8 +278,10 @@ bool zr__sdl_camera_blur_samples(zr_sdl_parser *p, const zr_sdl_expr *min,
   return true;
 }
 
-void zr__sdl_camera_look_at(zr_sdl_parser *p, zr_vec3 target) {
+void zr__sdl_camera_look_at(zr_sdl_parser *p, zr_vec3 target,
+                            const zr_sdl_loc *at) {
   p->camera.look_at_given = true;
+  p->camera.look_at_at = *at;
   p->camera.look_at = target;
 }
 
@@ -338,8 +340,17 @@ static void camera_angles(zr_sdl_parser *p, zr_camera *c) {
  * whose last value counts wherever it is written, then aims the camera,
  * then applies the transforms in the order written.
  */
-void zr__sdl_camera_end(zr_sdl_parser *p) {
+bool zr__sdl_camera_end(zr_sdl_parser *p) {
   zr_camera *c = &p->scene->camera;
+  /* No direction to look in: POV-Ray 3.7 stops too ("Parse Error:
+     Camera location and look_at point must be different.", measured). */
+  if (p->camera.look_at_given &&
+      zr_v3_len(zr_v3_sub(p->camera.look_at, c->location)) == 0) {
+    zr__sdl_error(p, ZR_ESCENE, &p->camera.look_at_at,
+                  "the camera's location and look_at point must be "
+                  "different");
+    return false;
+  }
   bool perspective_like = c->kind == ZR_CAMERA_PERSPECTIVE ||
                           c->kind == ZR_CAMERA_ORTHOGRAPHIC;
   if (p->camera.angle_given && perspective_like) {
@@ -374,6 +385,7 @@ void zr__sdl_camera_end(zr_sdl_parser *p) {
   c->right = zr__xform_dir(t->m, c->right);
   c->sky = zr__xform_dir(t->m, c->sky);
   c->focal_point = zr__xform_point(t->m, c->focal_point);
+  return true;
 }
 
 /* ---- atmosphere ---- */

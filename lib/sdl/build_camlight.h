@@ -47,10 +47,11 @@ bool zr__sdl_camera_angle(zr_sdl_parser *p, double degrees,
 bool zr__sdl_camera_blur_samples(zr_sdl_parser *p, const zr_sdl_expr *min,
                                  const zr_sdl_expr *max,
                                  const zr_sdl_loc *loc);
-void zr__sdl_camera_look_at(zr_sdl_parser *p, zr_vec3 target);
+void zr__sdl_camera_look_at(zr_sdl_parser *p, zr_vec3 target,
+                            const zr_sdl_loc *at);
 void zr__sdl_camera_transform(zr_sdl_parser *p, const zr_transform *t);
 /* Applies what the block deferred: angle, look_at, then transforms. */
-void zr__sdl_camera_end(zr_sdl_parser *p);
+bool zr__sdl_camera_end(zr_sdl_parser *p);
 
 /* mesh_camera { rays distribution [max_distance] ...: makes the camera
    a mesh camera (lib/sdl/build_meshcam.c); max may be NULL. */

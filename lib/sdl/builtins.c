@@ -326,22 +326,30 @@ double zr__sdl_rand(const zr_sdl_rand *stream) {
 
 /* ---- arrays ---- */
 
+static size_t page_count(size_t n) {
+  return (n + ZR_SDL_ARRAY_PAGE - 1) / ZR_SDL_ARRAY_PAGE;
+}
+
 static zr_sdl_array *array_alloc(zr_sdl_parser *p, int n_dims,
                                  const int *dims, size_t n) {
   zr_sdl_array *a = zr__sdl_alloc(p, sizeof *a);
   if (!a)
     return NULL;
-  memset(a, 0, sizeof *a);
   a->n_dims = n_dims;
   memcpy(a->dims, dims, (size_t)n_dims * sizeof *dims);
   a->n = n;
-  a->elems = zr__sdl_alloc(p, n * sizeof *a->elems);
-  a->set = zr__sdl_alloc(p, n * sizeof *a->set);
-  if (!a->elems || !a->set)
-    return NULL;
-  memset(a->elems, 0, n * sizeof *a->elems);
-  memset(a->set, 0, n * sizeof *a->set);
-  return a;
+  /* Zeroed by the arena: no page yet. */
+  a->pages = zr__sdl_alloc(p, page_count(n) * sizeof *a->pages);
+  return a->pages ? a : NULL;
+}
+
+/* The page holding element i, made when missing. */
+static zr_sdl_array_page *page_for(zr_sdl_parser *p, zr_sdl_array *a,
+                                   size_t i) {
+  zr_sdl_array_page **slot = &a->pages[i / ZR_SDL_ARRAY_PAGE];
+  if (!*slot)
+    *slot = zr__sdl_alloc(p, sizeof **slot);
+  return *slot;
 }
 
 zr_sdl_array *zr__sdl_array_new(zr_sdl_parser *p, const zr_sdl_list *dims,
@@ -394,9 +402,13 @@ bool zr__sdl_array_init(zr_sdl_parser *p, zr_sdl_array *a, size_t start,
                   "initialiser gives %zu", a->n, count);
     return false;
   }
-  memcpy(a->elems, p->init + start, count * sizeof *a->elems);
-  for (size_t i = 0; i < count; i++)
-    a->set[i] = true;
+  for (size_t i = 0; i < count; i++) {
+    zr_sdl_array_page *pg = page_for(p, a, i);
+    if (!pg)
+      return false;
+    pg->elems[i % ZR_SDL_ARRAY_PAGE] = p->init[start + i];
+    pg->set[i % ZR_SDL_ARRAY_PAGE] = true;
+  }
   p->n_init = start;
   return true;
 }
@@ -405,8 +417,14 @@ zr_sdl_array *zr__sdl_array_copy(zr_sdl_parser *p, const zr_sdl_array *a) {
   zr_sdl_array *c = array_alloc(p, a->n_dims, a->dims, a->n);
   if (!c)
     return NULL;
-  memcpy(c->elems, a->elems, a->n * sizeof *a->elems);
-  memcpy(c->set, a->set, a->n * sizeof *a->set);
+  for (size_t k = 0; k < page_count(a->n); k++) {
+    if (!a->pages[k])
+      continue;
+    c->pages[k] = zr__sdl_alloc(p, sizeof *c->pages[k]);
+    if (!c->pages[k])
+      return NULL;
+    memcpy(c->pages[k], a->pages[k], sizeof *c->pages[k]);
+  }
   return c;
 }
 
@@ -422,13 +440,14 @@ bool zr__sdl_dimension_size(zr_sdl_parser *p, const zr_sdl_array *a,
   return true;
 }
 
-zr_sdl_value *zr__sdl_array_at(zr_sdl_parser *p, const char *name,
-                               zr_sdl_array *a, const int *index, int n,
-                               const zr_sdl_loc *loc) {
+/* The offset of the element at the indices, or false after an error. */
+static bool element_offset(zr_sdl_parser *p, const char *name,
+                           const zr_sdl_array *a, const int *index, int n,
+                           const zr_sdl_loc *loc, size_t *out) {
   if (n != a->n_dims) {
     zr__sdl_error(p, ZR_ESYNTAX, loc, "'%s' has %d dimension%s, not %d",
                   name, a->n_dims, a->n_dims == 1 ? "" : "s", n);
-    return NULL;
+    return false;
   }
   size_t offset = 0;
   for (int i = 0; i < n; i++) {
@@ -436,9 +455,36 @@ zr_sdl_value *zr__sdl_array_at(zr_sdl_parser *p, const char *name,
       zr__sdl_error(p, ZR_ESCENE, loc,
                     "index %d of '%s' is out of range 0 to %d", index[i],
                     name, a->dims[i] - 1);
-      return NULL;
+      return false;
     }
     offset = offset * (size_t)a->dims[i] + (size_t)index[i];
   }
-  return &a->elems[offset];
+  *out = offset;
+  return true;
+}
+
+zr_sdl_value *zr__sdl_array_at(zr_sdl_parser *p, const char *name,
+                               zr_sdl_array *a, const int *index, int n,
+                               const zr_sdl_loc *loc) {
+  size_t i;
+  if (!element_offset(p, name, a, index, n, loc, &i))
+    return NULL;
+  zr_sdl_array_page *pg = page_for(p, a, i);
+  if (!pg)
+    return NULL;
+  pg->set[i % ZR_SDL_ARRAY_PAGE] = true;
+  return &pg->elems[i % ZR_SDL_ARRAY_PAGE];
+}
+
+const zr_sdl_value *zr__sdl_array_get(zr_sdl_parser *p, const char *name,
+                                      const zr_sdl_array *a,
+                                      const int *index, int n,
+                                      const zr_sdl_loc *loc, bool *set) {
+  static const zr_sdl_value unset;
+  size_t i;
+  if (!element_offset(p, name, a, index, n, loc, &i))
+    return NULL;
+  const zr_sdl_array_page *pg = a->pages[i / ZR_SDL_ARRAY_PAGE];
+  *set = pg && pg->set[i % ZR_SDL_ARRAY_PAGE];
+  return *set ? &pg->elems[i % ZR_SDL_ARRAY_PAGE] : &unset;
 }

@@ -34,6 +34,7 @@
 #include "config.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -186,11 +187,10 @@ bool zr__sdl_read_defined(zr_sdl_parser *p, const zr_sdl_loc *at,
         return false;
       index[n++] = (int)floor(v);
     }
-    zr_sdl_value *e = zr__sdl_array_at(p, name, (zr_sdl_array *)a, index,
-                                       n, &nl);
-    if (!e)
+    bool set;
+    if (!zr__sdl_array_get(p, name, a, index, n, &nl, &set))
       return false;
-    *out = a->set[e - a->elems];
+    *out = set;
   }
   return expect(p, ')', "')' after the identifier");
 }
@@ -417,21 +417,16 @@ static bool do_for(zr_sdl_parser *p, const zr_sdl_loc *at) {
   return true;
 }
 
-/* Counts one more repetition of a loop body against the context's
-   limit, so that a loop whose condition never changes ends. */
+/* Counts one more pass of a loop body against the work budget, so that
+   a loop whose condition never changes ends. */
 static bool count_iteration(zr_sdl_parser *p, size_t open) {
-  unsigned long long limit = p->ctx->loop_limit;
-  if (limit == 0 || ++p->loop_iterations <= limit)
-    return true;
   const zr_sdl_file *f = file_of(p);
   zr_sdl_loc at = zr__sdl_token_loc(zr__sdl_top(p)->file,
                                     &f->tokens[open]);
-  zr__sdl_error(p, ZR_ELIMIT, &at,
-                "the scene's loops ran %llu times, the limit: is this "
-                "'%s' endless? (raise the limit with "
-                "--max-loop-iterations)", limit,
-                directive_name(f->tokens[open].kind));
-  return false;
+  char what[48];
+  snprintf(what, sizeof what, "a pass of '%s'",
+           directive_name(f->tokens[open].kind));
+  return zr__sdl_spend(p, &at, what);
 }
 
 /* The #end of a #for: the next value of the counter, or the way out. */
@@ -638,6 +633,10 @@ static bool read_argument(zr_sdl_parser *p, zr_sdl_value *value,
 
 bool zr__sdl_call_macro(zr_sdl_parser *p, const zr_sdl_macro *m,
                         const zr_sdl_loc *at) {
+  char what[96];
+  snprintf(what, sizeof what, "a call of macro '%.60s'", m->name);
+  if (!zr__sdl_spend(p, at, what))
+    return false;
   if (p->macro_depth >= ZR_SDL_MAX_MACRO_DEPTH) {
     zr__sdl_error(p, ZR_ELIMIT, at, "macro calls nested more than %d "
                   "deep (does '%s' call itself without end?)",

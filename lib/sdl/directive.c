@@ -43,6 +43,7 @@
 #include <string.h>
 
 #include "core/iopolicy.h"
+#include "core/budget.h"
 #include "core/strbuf.h"
 #include "pov-parse.h"
 #include "sdl/sdl.h"
@@ -122,11 +123,36 @@ void zr__sdl_warning(zr_sdl_parser *p, const zr_sdl_loc *loc,
   va_end(ap);
 }
 
+bool zr__sdl_spend(zr_sdl_parser *p, const zr_sdl_loc *at,
+                   const char *what) {
+  unsigned long long limit = p->ctx ? p->ctx->work_limit : 0;
+  if (limit == 0 || ++p->work <= limit)
+    return true;
+  zr__sdl_error(p, ZR_ELIMIT, at,
+                "the parse used up its work budget of %llu steps (each "
+                "directive, macro call and loop pass is one) at %s: does "
+                "the scene loop or recurse without end? (raise the budget "
+                "with --max-work)", limit, what);
+  return false;
+}
+
 void *zr__sdl_alloc(zr_sdl_parser *p, size_t size) {
-  void *m = zr__arena_alloc(&p->scene->arena, size);
-  if (!m)
-    zr__sdl_error(p, ZR_ENOMEM, NULL, "out of memory");
-  return m;
+  zr_arena *a = &p->scene->arena;
+  a->over_budget = 0;
+  void *m = zr__arena_alloc(a, size);
+  if (m)
+    return m;
+  /* Point at the token the grammar read last: the item being built. */
+  zr_sdl_loc *at = p->last_loc.line > 0 ? &p->last_loc : NULL;
+  if (a->over_budget) {
+    char text[400];
+    zr__sdl_error(p, ZR_ELIMIT, at, "%s",
+                  zr__context_budget_text(p->ctx, size, "the scene", text,
+                                          sizeof text));
+  } else {
+    zr__sdl_error(p, ZR_ENOMEM, at, "out of memory");
+  }
+  return NULL;
 }
 
 const char *zr__sdl_token_name(const char *name, char *buf, size_t size) {
@@ -186,8 +212,9 @@ static zr_status add_file(zr_sdl_parser *p, char *path, char *bytes,
   }
   *index = (int)p->n_files;
   zr_sdl_file *f = &p->files[p->n_files++];
-  zr_status s = zr__sdl_file_lex(f, *index, path, bytes, size, err_loc, err,
-                                 err_size);
+  zr_status s = zr__sdl_file_lex_budget(f, *index, path, bytes, size,
+                                        p->ctx ? p->ctx->budget : NULL,
+                                        err_loc, err, err_size);
   if (s == ZR_OK || s == ZR_ESYNTAX) {
     f->scene_path = zr__arena_strdup(&p->scene->arena, f->path);
     if (!f->scene_path) {
@@ -307,7 +334,6 @@ static bool define_element(zr_sdl_parser *p, const zr_sdl_decl_name *name,
   if (!e)
     return false;
   *e = *value;
-  a->set[e - a->elems] = true;
   return true;
 }
 
@@ -934,10 +960,11 @@ static const zr_sdl_value *array_element(zr_sdl_parser *p, const char *name,
     }
     index[n++] = (int)floor(v);
   }
-  zr_sdl_value *e = zr__sdl_array_at(p, name, a, index, n, at);
+  bool set;
+  const zr_sdl_value *e = zr__sdl_array_get(p, name, a, index, n, at, &set);
   if (!e)
     return NULL;
-  if (!a->set[e - a->elems]) {
+  if (!set) {
     zr__sdl_error(p, ZR_EUNDEFINED, at,
                   "element of array '%s' used before it was assigned",
                   name);
@@ -979,6 +1006,12 @@ int zr__sdl_next(zr_sdl_lexval *val, zr_sdl_loc *loc, zr_sdl_parser *p) {
       return deliver(p, 0, &v, &tl, NULL, val, loc);
     }
     fr->pos++;
+    if (is_directive(t->kind)) {
+      char what[48];
+      snprintf(what, sizeof what, "'%s'", zr__sdl_kind_name(t->kind));
+      if (!zr__sdl_spend(p, &tl, what))
+        return ZR__POV_error;
+    }
     switch (t->kind) {
     case T_INCLUDE:
       if (!do_include(p, &tl))
@@ -1114,6 +1147,10 @@ static zr_status parse(zr_context *ctx, char *path, char *bytes, size_t size,
   }
   if (from_disk)
     p.scene_dir = zr__io_scene_dir(path);
+  /* The scene's arena (arrays, objects, textures) is charged to the
+     run's memory budget; the scene keeps the budget alive. */
+  if (ctx)
+    p.scene->arena.budget = zr__budget_ref(ctx->budget);
   int index;
   zr_sdl_loc err_loc;
   char err[200];
@@ -1140,6 +1177,7 @@ static zr_status parse(zr_context *ctx, char *path, char *bytes, size_t size,
     p.scene->settings.assumed_gamma = 2.2;
   if (s == ZR_OK)
     zr__sdl_images_to_working_gamma(&p, p.scene->settings.assumed_gamma);
+  p.scene->parse_steps = p.work;
   parser_free(&p);
   if (s == ZR_OK)
     s = zr__scene_finish(p.scene, ctx);
@@ -1163,10 +1201,12 @@ ZR_API zr_status zr_scene_parse_file(zr_context *ctx, const char *path,
   zr_status s = zr__context_read(ctx, path, &bytes, &size);
   if (s == ZR_EACCESS)
     return s; /* zr__context_read said why */
-  if (s != ZR_OK)
+  if (s != ZR_OK) {
+    char why[160];
     return zr__diag(ctx, ZR_DIAG_ERROR, s, NULL,
                     "cannot open scene file '%s': %s", path,
-                    zr_status_str(s));
+                    zr__context_read_error(ctx, s, why, sizeof why));
+  }
   char *copy = strdup(path);
   if (!copy) {
     free(bytes);

@@ -132,14 +132,22 @@ typedef struct zr_sdl_decl_name {
   int index[ZR_SDL_MAX_DIMS];
 } zr_sdl_decl_name;
 
-/* An array: dims[0] x dims[1] ... elements in row-major order; set[i]
-   tells whether element i was ever assigned. */
+/* An array: dims[0] x dims[1] ... elements in row-major order, kept in
+   pages of ZR_SDL_ARRAY_PAGE elements that are made when one of their
+   elements is first assigned, so an array costs for what it holds:
+   array[100000000] is a table of page pointers until it is filled.
+   set[i] of a page tells whether its element i was ever assigned. */
+#define ZR_SDL_ARRAY_PAGE 1024
+typedef struct zr_sdl_array_page {
+  struct zr_sdl_value elems[ZR_SDL_ARRAY_PAGE];
+  bool set[ZR_SDL_ARRAY_PAGE];
+} zr_sdl_array_page;
+
 typedef struct zr_sdl_array {
   int n_dims;
   int dims[ZR_SDL_MAX_DIMS];
   size_t n;
-  struct zr_sdl_value *elems;
-  bool *set;
+  zr_sdl_array_page **pages; /* n / ZR_SDL_ARRAY_PAGE rounded up */
 } zr_sdl_array;
 
 /* A #macro: its body is tokens [body, end) of a file, end the #end. */
@@ -323,6 +331,10 @@ typedef struct zr_sdl_file {
      #for and #macro -> #end; (size_t)-1 where there is none. */
   size_t *links;
   zr_arena strings; /* identifier and string texts */
+  /* The token array and the file's bytes are charged to this budget
+     (NULL: none) while the file is held. */
+  struct zr_budget *budget;
+  size_t charged;
 } zr_sdl_file;
 
 /*
@@ -333,6 +345,13 @@ typedef struct zr_sdl_file {
 zr_status zr__sdl_file_lex(zr_sdl_file *f, int file_index, char *path,
                            char *bytes, size_t size, zr_sdl_loc *err_loc,
                            char *err, size_t err_size);
+/* The same, charging the file to budget; ZR_ELIMIT (err says so) when
+   it does not fit. */
+zr_status zr__sdl_file_lex_budget(zr_sdl_file *f, int file_index,
+                                  char *path, char *bytes, size_t size,
+                                  struct zr_budget *budget,
+                                  zr_sdl_loc *err_loc, char *err,
+                                  size_t err_size);
 void zr__sdl_file_free(zr_sdl_file *f);
 
 /* What the flex scanner keeps between tokens (its "extra" data). */
@@ -487,7 +506,9 @@ typedef struct zr_sdl_parser {
   int nested_depth; /* parsers running, for ZR_SDL_MAX_NESTED_PARSE */
   int macro_depth;
   int include_depth;
-  unsigned long long loop_iterations; /* bodies repeated, all loops */
+  /* Steps taken against the context's work budget: directives run,
+     macro calls, loop passes (zr__sdl_spend). */
+  unsigned long long work;
   /* POV-Ray radiosity items of the current block that mean nothing
      here, one bit each (lib/sdl/build_radiosity.c); object radiosity
      keywords already warned about, so a scene gets one warning. */
@@ -528,6 +549,7 @@ typedef struct zr_sdl_parser {
        meshes in an array of cap_meshes. */
     zr_mesh_camera *mesh;
     zr_sdl_loc mesh_at;
+    zr_sdl_loc look_at_at; /* where look_at was written */
     size_t cap_meshes;
   } camera;
 } zr_sdl_parser;
@@ -540,6 +562,13 @@ zr_status zr__sdl_error(zr_sdl_parser *p, zr_status status,
 void zr__sdl_warning(zr_sdl_parser *p, const zr_sdl_loc *loc,
                      const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
+/* One step of the parse's work budget, spent by the directive or macro
+   call at at (what names it for the message: "'#while'", "macro 'M'");
+   false after a located error once the budget is used up. */
+bool zr__sdl_spend(zr_sdl_parser *p, const zr_sdl_loc *at,
+                   const char *what);
+/* The grammar's name of a token kind ("#declare", "sphere"). */
+const char *zr__sdl_kind_name(int kind);
 /* Arena memory, reporting ZR_ENOMEM when there is none. */
 void *zr__sdl_alloc(zr_sdl_parser *p, size_t size);
 /* A built-in float constant's value (clock, image_width, version ...;
@@ -734,13 +763,29 @@ zr_sdl_array *zr__sdl_array_copy(zr_sdl_parser *p, const zr_sdl_array *a);
 bool zr__sdl_dimension_size(zr_sdl_parser *p, const zr_sdl_array *a,
                             double dim, const zr_sdl_loc *loc,
                             zr_sdl_expr *out);
-/* The element of a at the indices, checked; NULL after an error. */
+/* The element of a at the indices, checked, to be assigned (marked as
+   set, its page made if needed); NULL after an error. */
 zr_sdl_value *zr__sdl_array_at(zr_sdl_parser *p, const char *name,
                                zr_sdl_array *a, const int *index, int n,
                                const zr_sdl_loc *loc);
+/* The element at the indices, checked, to be read: NULL after an error;
+   otherwise *set tells whether it was ever assigned (when it was not,
+   the value returned must not be used). */
+const zr_sdl_value *zr__sdl_array_get(zr_sdl_parser *p, const char *name,
+                                      const zr_sdl_array *a,
+                                      const int *index, int n,
+                                      const zr_sdl_loc *loc, bool *set);
 
 /* ---- building the scene (build.c) ---- */
 
+/* Warns, as POV-Ray 3.7 does ("Degenerate triangle. Please remove.",
+   measured), about a triangle whose corners are on one line. */
+void zr__sdl_degenerate_triangle(zr_sdl_parser *p, const zr_vec3 *corners,
+                                 const zr_sdl_loc *at);
+/* A cylinder's or cone's axis must have a length: POV-Ray 3.7 stops on
+   base point = apex point (measured); false after the error at at. */
+bool zr__sdl_axis_given(zr_sdl_parser *p, zr_vec3 base, zr_vec3 cap,
+                        const char *shape, const zr_sdl_loc *at);
 zr_object *zr__sdl_object_new(zr_sdl_parser *p, zr_object_kind kind,
                               const zr_sdl_loc *loc);
 zr_object *zr__sdl_object_copy(zr_sdl_parser *p, const zr_object *o);

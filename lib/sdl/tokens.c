@@ -13,6 +13,7 @@
  * partner.  The plain items of a mesh2 list become a single token whose
  * bytes are read later (numlist.c): they are the bulk of big files.
  */
+#include "core/budget.h"
 #include "config.h"
 
 #include <stdarg.h>
@@ -111,6 +112,12 @@ static zr_status push_token(zr_sdl_file *f, size_t *cap,
                             const zr_sdl_token *t) {
   if (f->n_tokens == *cap) {
     size_t new_cap = *cap ? *cap * 2 : 256;
+    /* The token array and the block links made after it. */
+    size_t more = (new_cap - *cap) * (sizeof *f->tokens + sizeof(size_t));
+    if (!zr__budget_charge(f->budget, more))
+      return ZR_ELIMIT;
+    if (f->budget)
+      f->charged += more;
     zr_sdl_token *tokens = realloc(f->tokens, new_cap * sizeof *tokens);
     if (!tokens)
       return ZR_ENOMEM;
@@ -231,11 +238,29 @@ static zr_status link_blocks(zr_sdl_file *f) {
 zr_status zr__sdl_file_lex(zr_sdl_file *f, int file_index, char *path,
                            char *bytes, size_t size, zr_sdl_loc *err_loc,
                            char *err, size_t err_size) {
+  return zr__sdl_file_lex_budget(f, file_index, path, bytes, size, NULL,
+                                 err_loc, err, err_size);
+}
+
+zr_status zr__sdl_file_lex_budget(zr_sdl_file *f, int file_index,
+                                  char *path, char *bytes, size_t size,
+                                  struct zr_budget *budget,
+                                  zr_sdl_loc *err_loc, char *err,
+                                  size_t err_size) {
   memset(f, 0, sizeof *f);
   f->path = path;
   f->bytes = bytes;
   f->size = size;
   zr__arena_init(&f->strings);
+  f->strings.budget = budget;
+  f->budget = budget;
+  if (!zr__budget_charge(budget, size)) {
+    snprintf(err, err_size, "the file's %zu bytes do not fit in the "
+             "memory budget (raise it with --memory-limit)", size);
+    return ZR_ELIMIT;
+  }
+  if (budget)
+    f->charged = size;
   if (index_lines(f) != ZR_OK)
     return ZR_ENOMEM;
 
@@ -259,7 +284,9 @@ zr_status zr__sdl_file_lex(zr_sdl_file *f, int file_index, char *path,
     memset(&value, 0, sizeof value);
     int kind = zr__scan_lex(&value, &loc, scanner);
     if (lx.failed) {
-      status = lx.out_of_memory ? ZR_ENOMEM : ZR_ESYNTAX;
+      status = !lx.out_of_memory         ? ZR_ESYNTAX
+               : f->strings.over_budget ? ZR_ELIMIT
+                                        : ZR_ENOMEM;
       break;
     }
     zr_sdl_token t;
@@ -286,6 +313,8 @@ zr_status zr__sdl_file_lex(zr_sdl_file *f, int file_index, char *path,
       status = number_list(f, &cap, &lx, scanner);
   }
   zr__scan_lex_destroy(scanner);
+  if (status == ZR_OK && f->strings.over_budget)
+    status = ZR_ELIMIT;
   if (status == ZR_OK)
     status = link_blocks(f);
   if (status == ZR_ESYNTAX) {
@@ -294,6 +323,9 @@ zr_status zr__sdl_file_lex(zr_sdl_file *f, int file_index, char *path,
     snprintf(err, err_size, "%s", lx.error);
   } else if (status == ZR_ENOMEM) {
     snprintf(err, err_size, "out of memory");
+  } else if (status == ZR_ELIMIT) {
+    snprintf(err, err_size, "the tokens of '%s' do not fit in the memory "
+             "budget (raise it with --memory-limit)", path);
   }
   return status;
 }
@@ -307,5 +339,6 @@ void zr__sdl_file_free(zr_sdl_file *f) {
   free(f->tokens);
   free(f->links);
   zr__arena_free(&f->strings);
+  zr__budget_release(f->budget, f->charged);
   memset(f, 0, sizeof *f);
 }

@@ -7,10 +7,12 @@
  * reader refuses every file, so "#include" and friends never touch the
  * disk and a run depends on nothing but its input.  Diagnostics go to a
  * callback that only touches the formatted text, so the message and
- * caret formatting are exercised too.  Loops may repeat their bodies
- * 2,000 times in all (zr_context_set_loop_limit), so that an endless
- * "#while" ends with its error in milliseconds rather than after the
- * default limit's half minute, which the fuzzer would report as a hang.
+ * caret formatting are exercised too.  The work budget is 20,000 steps
+ * (directives, macro calls and loop passes; zr_context_set_work_limit),
+ * so that an endless "#while" or a macro tree ends with its error in
+ * milliseconds rather than after the default budget's minute, which the
+ * fuzzer would report as a hang; the memory budget is 512 MiB, below
+ * libFuzzer's default RSS limit of 2 GiB.
  * The parse runs on a thread of its own with a 64 MiB stack: nested
  * parses stop at ZR_SDL_MAX_NESTED_PARSE levels, which an ordinary build
  * reaches in under 2 MiB, but the sanitizers' frames are several times
@@ -62,7 +64,8 @@ static void *parse_one(void *arg) {
     return NULL;
   size_t sum = 0;
   zr_context_set_reader(ctx, refuse, NULL);
-  zr_context_set_loop_limit(ctx, 2000);
+  zr_context_set_work_limit(ctx, 20000);
+  zr_context_set_memory_limit(ctx, 512ULL << 20);
   zr_context_set_diag(ctx, on_diag, &sum);
   zr_scene *scene = NULL;
   if (zr_scene_parse_string(ctx, "fuzz.pov", (const char *)data, size,
