@@ -203,6 +203,7 @@ typedef zr_status (*zr_read_observer_fn)(const char *path,
 ZR_API void zr_context_set_read_observer(zr_context *ctx,
                                          zr_read_observer_fn fn, void *user);
 
+/*
  * The memory budget of everything made with ctx (scenes, their token
  * arrays, arrays, meshes and images, radiosity solutions): the large
  * allocations are charged to it before they are made, and one that does
