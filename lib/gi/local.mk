@@ -1,0 +1,12 @@
+# lib/gi/local.mk - global illumination other than hierarchical
+# radiosity: the irradiance cache (POV-Ray's radiosity block), the sky
+# as light, and the choice of model per scene.
+lib_libzrcube_la_SOURCES += \
+	lib/gi/gi.h lib/gi/cache.c lib/gi/cachefile.c lib/gi/choose.c
+
+check_PROGRAMS += tests/test_gi
+TESTS += tests/test_gi
+tests_test_gi_SOURCES = tests/test_gi.c
+tests_test_gi_CPPFLAGS = $(TEST_CPPFLAGS)
+tests_test_gi_LDADD = $(TEST_LDADD)
+tests_test_gi_LDFLAGS = -static
