@@ -6,7 +6,9 @@ lib_libzrcube_la_SOURCES += \
 
 check_PROGRAMS += tests/test_gi
 TESTS += tests/test_gi
-tests_test_gi_SOURCES = tests/test_gi.c
-tests_test_gi_CPPFLAGS = $(TEST_CPPFLAGS)
+tests_test_gi_SOURCES = tests/test_gi.c \
+	tests/parse_fixture.c tests/parse_fixture.h bin/options.c bin/options.h
+tests_test_gi_CPPFLAGS = $(TEST_CPPFLAGS) -I$(top_srcdir)/bin
 tests_test_gi_LDADD = $(TEST_LDADD)
 tests_test_gi_LDFLAGS = -static
+$(tests_test_gi_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
