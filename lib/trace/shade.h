@@ -77,6 +77,8 @@ typedef struct zr_tracer {
   int gi_depth;
   double path;
   bool no_media;
+  /* A pretrace: camera-visible points (gi_depth 0) skip direct light. */
+  bool skip_direct;
 } zr_tracer;
 
 enum { ZR_HIDE_IMAGE = 1u << 0, ZR_HIDE_REFLECTION = 1u << 1 };
