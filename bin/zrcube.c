@@ -396,7 +396,9 @@ static int build_cache(run *r, int sky_only) {
   double start = zr__par_now();
   zr_status s = load ? zr_gi_cache_load(r->ctx, r->scene, &gp, load, &r->gi)
                      : zr_gi_cache_new(r->ctx, r->scene, &gp, &r->gi);
-  if (s == ZR_OK)
+  /* A loaded cache is used as it is (its render is the saved one's);
+     the final pass gathers where it has no record. */
+  if (s == ZR_OK && !load)
     s = zr_gi_cache_pretrace(r->gi, &r->opts.params);
   r->gi_seconds = zr__par_now() - start;
   if (s != ZR_OK && r->rank == 0 && !*zr_context_last_error(r->ctx))

@@ -141,9 +141,11 @@ bool zr__gi_cache_add(zr_gi_cache *c, const zr__gi_record *r) {
     c->next = v;
     c->next_cap = c->records.cap;
   }
-  /* Down to the smallest node whose half-size still covers the
+  /* Down to the smallest node whose half-size is still twice the
      record's farthest reach (error_bound R), while the point is inside
-     it; a record outside the root stays at the root. */
+     it; a record outside the root stays at the root.  A lookup then
+     visits a node when the point lies within 1.5 half-sizes of its
+     centre: at most two nodes a side at each level. */
   double reach = c->params.error_bound * ldexp(r->r, d); /* see blend */
   int32_t at = 0;
   zr_vec3 q = r->p;
@@ -154,7 +156,7 @@ bool zr__gi_cache_add(zr_gi_cache *c, const zr__gi_record *r) {
   for (int level = 0; inside && level < MAX_LEVEL; level++) {
     zr__gi_node *n = &c->nodes[d][at];
     double hc = 0.5 * n->h;
-    if (hc < reach)
+    if (hc < 2.0 * reach)
       break;
     int k = (q.x > n->c.x) | ((q.y > n->c.y) << 1) | ((q.z > n->c.z) << 2);
     if (n->child[k] < 0) {
@@ -184,10 +186,13 @@ typedef struct blend {
 } blend;
 
 static void blend_record(blend *b, const zr__gi_record *r) {
+  zr_vec3 d = zr_v3_sub(b->p, r->p);
+  double reach = b->a * r->r;
+  if (!(zr_v3_dot(d, d) < reach * reach))
+    return; /* the cheap test first: most records are far */
   double nn = zr_v3_dot(b->n, r->n);
   if (!(nn > 0.0))
     return;
-  zr_vec3 d = zr_v3_sub(b->p, r->p);
   /* A record in front of the point (the point lies below the record's
      plane) sees light the point may not: Ward's test. */
   if (zr_v3_dot(d, zr_v3_scale(zr_v3_add(b->n, r->n), 0.5)) < -0.05 * r->r)
@@ -218,7 +223,7 @@ static void blend_tree(blend *b, const zr_gi_cache *c, int d, int32_t at) {
     if (ch < 0)
       continue;
     const zr__gi_node *m = &c->nodes[d][ch];
-    double reach = 2.0 * m->h; /* the box, grown by its records' reach */
+    double reach = 1.5 * m->h; /* the box, grown by its records' reach */
     if (fabs(b->p.x - m->c.x) <= reach && fabs(b->p.y - m->c.y) <= reach &&
         fabs(b->p.z - m->c.z) <= reach)
       blend_tree(b, c, d, ch);

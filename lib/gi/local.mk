@@ -12,3 +12,8 @@ tests_test_gi_CPPFLAGS = $(TEST_CPPFLAGS) -I$(top_srcdir)/bin
 tests_test_gi_LDADD = $(TEST_LDADD)
 tests_test_gi_LDFLAGS = -static
 $(tests_test_gi_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
+
+# The irradiance cache end to end: threads, ranks, save and load, the
+# model options (bin/zrcube).
+TESTS += tests/test_gi_cli.sh
+EXTRA_DIST += tests/test_gi_cli.sh bench/gi.sh scenes/sky_outdoor.pov

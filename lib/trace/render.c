@@ -346,6 +346,7 @@ ZR_API zr_status zr_render_pixels(const zr_scene *scene,
   job.tracer.gi_depth = 0;
   job.tracer.path = 0.0;
   job.tracer.no_media = false;
+  job.tracer.skip_direct = false;
   zr__camera_media(scene, &job.camera_media);
   /* POV-Ray compares colours after undoing the scene's working gamma and
      applying its antialiasing gamma, 2.5 by default (reference,
