@@ -14,7 +14,8 @@
  *      the same bytes from memory;
  *   4. the model of global illumination is chosen (zr_gi_choose); for
  *      the irradiance cache every rank runs the same deterministic
- *      pretrace; for hierarchical radiosity every rank solves the same radiosity solution
+ *      pretrace; for hierarchical radiosity every rank solves the
+ *      same radiosity solution
  *      (the solver is deterministic: the same scene and settings give
  *      the same bytes, so no solution travels between ranks) or loads
  *      it from --radiosity-load's file, which every rank must then see;

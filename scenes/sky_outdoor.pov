@@ -1,3 +1,4 @@
+// golden: skip compared with povray's render in tests/test_gi_cli.sh (SSIM)
 // sky_outdoor.pov - an open scene lit by a sky and the sun: a ground
 // plane, a few objects, a sky_sphere and POV-Ray's radiosity block with
 // its defaults (issue 11).  Shadows take the sky's blue, and the objects

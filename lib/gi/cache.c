@@ -64,6 +64,9 @@
 /* Stratification: at most this many bands and sectors. */
 #define MAX_BANDS 64
 #define MAX_SECTORS 256
+/* The translational gradient's factor on the published terms (see
+   gather()). */
+#define TRANS_SCALE (2.0 / (M_PI * M_PI))
 /* The deepest octree level. */
 #define MAX_LEVEL 40
 
@@ -387,7 +390,14 @@ static void gather(const zr_gi_cache *c, const zr_tracer *tracer,
   r = fmin(fmax(r, rmin), rmax);
   rec->r = r > 0.0 ? r : 1e-9;
 
-  /* Gradients (Ward and Heckbert 1992). */
+  /* Gradients (Ward and Heckbert 1992).  Checked against the exact
+   irradiance of a point on a floor beside a black wall under a white
+   sky (the polygon form factor, differentiated numerically): the
+   rotational gradient with +tan(theta) agrees to 2% in both
+   directions of tilt; the translational terms as printed, divided by
+   pi for mean radiance, came out pi/2 too steep at every distance
+   tried, hence 2 / pi^2; they then agree to about 20%, the sample
+   noise of 1000 rays. */
   for (int k = 0; k < nn; k++) {
     double phi = 2.0 * M_PI * (k + v0) / nn;
     double phi_m = 2.0 * M_PI * k / nn;
@@ -406,7 +416,7 @@ static void gather(const zr_gi_cache *c, const zr_tracer *tracer,
       double l[3] = {lum[i].r, lum[i].g, lum[i].b};
       for (int ch = 0; ch < 3; ch++)
         rec->grad_r[ch] = zr_v3_madd(rec->grad_r[ch], vk,
-                                     -tan_t * l[ch] / total);
+                                     tan_t * l[ch] / total);
       /* Between bands j - 1 and j along sector k. */
       if (j > 0) {
         int im = (j - 1) * nn + k;
@@ -414,7 +424,7 @@ static void gather(const zr_gi_cache *c, const zr_tracer *tracer,
         double sm = sqrt(sm2), cm2 = 1.0 - sm2;
         double rr = fmin(dist[i], dist[im]);
         if (isfinite(rr) && rr > 0.0) {
-          double f = (2.0 * M_PI / nn) * sm * cm2 / rr / M_PI;
+          double f = (2.0 * M_PI / nn) * sm * cm2 / rr * TRANS_SCALE;
           double lm[3] = {lum[im].r, lum[im].g, lum[im].b};
           for (int ch = 0; ch < 3; ch++)
             rec->grad_t[ch] = zr_v3_madd(rec->grad_t[ch], uk,
@@ -428,7 +438,7 @@ static void gather(const zr_gi_cache *c, const zr_tracer *tracer,
         double cp = sqrt(fmax(0.0, 1.0 - (double)(j + 1) / m));
         double rr = fmin(dist[i], dist[ik]);
         if (isfinite(rr) && rr > 0.0 && st > 1e-6) {
-          double f = (cm - cp) / (st * rr) / M_PI;
+          double f = (cm - cp) / (st * rr) * TRANS_SCALE;
           double lk[3] = {lum[ik].r, lum[ik].g, lum[ik].b};
           for (int ch = 0; ch < 3; ch++)
             rec->grad_t[ch] = zr_v3_madd(rec->grad_t[ch], vkm,
@@ -436,6 +446,16 @@ static void gather(const zr_gi_cache *c, const zr_tracer *tracer,
         }
       }
     }
+  }
+  /* The translational gradient may not change the value by more than
+     itself across the reuse radius (the clamped R can be far above the
+     distance of a close occluder, where the gradient is steep):
+     Krivanek et al.'s gradient limit, |grad| R <= E. */
+  for (int ch = 0; ch < 3; ch++) {
+    double g = zr_v3_len(rec->grad_t[ch]);
+    if (g * rec->r > rec->e[ch])
+      rec->grad_t[ch] = zr_v3_scale(rec->grad_t[ch],
+                                    g > 0.0 ? rec->e[ch] / (g * rec->r) : 0.0);
   }
   free(lum);
   free(dist);

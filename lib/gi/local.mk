@@ -16,4 +16,5 @@ $(tests_test_gi_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
 # The irradiance cache end to end: threads, ranks, save and load, the
 # model options (bin/zrcube).
 TESTS += tests/test_gi_cli.sh
-EXTRA_DIST += tests/test_gi_cli.sh bench/gi.sh scenes/sky_outdoor.pov
+EXTRA_DIST += tests/test_gi_cli.sh bench/gi.sh scenes/sky_outdoor.pov \
+	tests/ref/sky_outdoor.png

@@ -317,7 +317,8 @@ static zr_status add_primitive(zr_radiosity *rad, zr_context *ctx,
              "radiosity: this %s has %zu faces, more than the %d radiosity "
              "takes (zr_radiosity_params.max_mesh_faces); it takes no part "
              "in the radiosity solution",
-             zr__rad_kind_name(o->kind), faces->n_faces, rad->params.max_mesh_faces);
+             zr__rad_kind_name(o->kind), faces->n_faces,
+             rad->params.max_mesh_faces);
     return ZR_OK;
   }
   if (!modelled(o)) {
