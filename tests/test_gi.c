@@ -35,11 +35,12 @@
 #define H 18
 
 /* Renders scene with a cache built on threads threads; rgb gets W*H*3. */
-static zr_gi_cache *render_cached(const zr_scene *scene, int threads,
-                                  float *rgb) {
+static zr_gi_cache *render_cached_sky(const zr_scene *scene, int threads,
+                                      int sky_only, float *rgb) {
   zr_gi_params gp;
   zr_gi_params_init(&gp, scene);
   gp.threads = threads;
+  gp.sky_only = sky_only;
   zr_gi_cache *c = NULL;
   assert_int_equal(zr_gi_cache_new(NULL, scene, &gp, &c), ZR_OK);
   zr_render_params rp;
@@ -50,6 +51,11 @@ static zr_gi_cache *render_cached(const zr_scene *scene, int threads,
   rp.gi_cache = c;
   assert_int_equal(zr_render_image(scene, &rp, rgb, NULL), ZR_OK);
   return c;
+}
+
+static zr_gi_cache *render_cached(const zr_scene *scene, int threads,
+                                  float *rgb) {
+  return render_cached_sky(scene, threads, 0, rgb);
 }
 
 static const float *centre(const float *rgb) {
@@ -74,6 +80,10 @@ static void test_gi_furnace(void **state) {
   assert_true(fabs(c[0] - 0.48) < 1e-6);
   assert_true(fabs(c[1] - 0.24) < 1e-6);
   assert_true(fabs(c[2] - 0.12) < 1e-6);
+  /* The sky-only cache (the sky's light beside a hierarchical solution)
+     gives the same where only the sky is seen. */
+  zr_gi_cache_free(render_cached_sky(s, 1, 1, rgb));
+  assert_true(fabs(centre(rgb)[0] - 0.48) < 1e-6);
   /* A background lights as a sky does; and brightness scales it. */
   s = good(f, "global_settings { radiosity { brightness 0.5 } }"
               "camera { location <0, 0, -4> look_at 0 angle 40 }"
