@@ -30,9 +30,10 @@
  * of media; the pretrace goes over the image in mosaic blocks from
  * pretrace_start to pretrace_end of the image width with error_bound
  * lowered by low_error_factor and adds a record wherever fewer than
- * nearest_count records serve a point; the final pass then only reads
- * the cache unless always_sample is on, which adds a pretrace pass over
- * every pixel at the full error_bound first.  Rays that leave the
+ * nearest_count records serve a point; a last pass over every pixel at
+ * the full error_bound adds a record where none serves (nearest_count
+ * with always_sample on), as povray's final pass does, so that the
+ * final pass itself only reads the cache.  Rays that leave the
  * scene see the sky_sphere or background, so the sky lights the scene
  * (measured: a sphere of diffuse 0.6 inside a white sky_sphere renders
  * 0.6 in povray, and here, tests/test_gi.c).
@@ -501,7 +502,10 @@ static bool cache_irradiance(const zr_indirect *self,
     for (size_t i = 0; i < sc->local.n; i++)
       if (sc->local.v[i].depth == d)
         blend_record(&b, &sc->local.v[i]);
-  int want = pretrace && d == 0 ? gp->nearest_count : 1;
+  int want = d == 0 && (pretrace || (c->pretracing == 2 &&
+                                     gp->always_sample))
+                 ? gp->nearest_count
+                 : 1;
   if (b.count < want) {
     gi_scratch tmp;
     memset(&tmp, 0, sizeof tmp);
@@ -706,9 +710,13 @@ ZR_API zr_status zr_gi_cache_pretrace(zr_gi_cache *c,
       break;
     block *= 0.5;
   }
-  if (s == ZR_OK && c->params.always_sample) {
+  if (s == ZR_OK) {
     /* The final pass's new samples, gathered before it at every pixel
-       with the full error_bound, so the final pass only reads. */
+       with the full error_bound, in batches as above, so the final
+       pass only reads.  povray 3.7 adds records in its final pass too
+       (radiosity2.pov: 650 in the pretrace, 3121 in the final pass,
+       always_sample off); with always_sample on a point there wants
+       nearest_count records, as in the pretrace. */
     c->pretracing = 2;
     size_t n = mosaic(w, h, 1.0, pixels);
     s = run_pass(c, render, &camera_media, pixels, n);
