@@ -43,7 +43,9 @@ print('%.4f' % structural_similarity(a, b, channel_axis=2, data_range=255))
 PY
 }
 now() { date +%s.%N; }
-cpu() { awk '{ printf "%.2f", $1 + $2 }' "$1"; }
+# /usr/bin/time puts "Command exited with non-zero status N" first when
+# the render fails or times out: the times are the last line.
+cpu() { tail -n 1 "$1" | awk '{ printf "%.2f", $1 + $2 }'; }
 printf 'scene\tpovray_cpu\tzrcube_cpu\tratio\tssim\tmodel\tpovray_wall\tzrcube_wall\n'
 scenes=${GI_SCENES:-"radiosity/cornell.pov radiosity/patio-radio_36.pov
 radiosity/patio-radio_37.pov radiosity/radiosity_36.pov
