@@ -362,7 +362,7 @@ static void test_gi_choose(void **state) {
   fixture *f = *state;
   assert_int_equal(choose(f, CLOSED, "no radiosity block"), ZR_GI_OFF);
   assert_int_equal(choose(f, "global_settings { radiosity { } }" CLOSED,
-                          "a closed room lit by emitting surfaces"),
+                          "lit by emitting surfaces under a black sky"),
                    ZR_GI_HIERARCHICAL);
   assert_int_equal(choose(f, "global_settings { radiosity { } }" CLOSED
                           "sky_sphere { pigment { rgb 1 } }",
@@ -383,8 +383,8 @@ static void test_gi_choose(void **state) {
                           "camera { location <0, 0, -5> look_at z }"
                           "box { -1, 1 pigment { rgb 1 } finish { "
                           "emission 1 } }",
-                          "the scene is open"),
-                   ZR_GI_CACHE);
+                          "lit by emitting surfaces under a black sky"),
+                   ZR_GI_HIERARCHICAL); /* open, but nothing comes in */
   char why[64];
   assert_int_equal(zr_gi_choose(f->scene, ZR_GI_OFF, why, sizeof why),
                    ZR_GI_OFF);
