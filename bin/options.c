@@ -73,7 +73,13 @@ typedef enum opt_key {
   K_RAD_MESH,
   K_READ_PATH,
   K_WRITE_PATH,
-  K_IO_RESTRICTIONS
+  K_IO_RESTRICTIONS,
+  K_GI,           /* --gi=auto|hierarchical|cache|path|off */
+  K_NO_RADIOSITY, /* --no-radiosity, Radiosity=off */
+  K_RADIOSITY_ON, /* Radiosity=on: the scene decides, as without it */
+  K_QUALITY,      /* +Qn, Quality=n */
+  K_GI_SAVE,
+  K_GI_LOAD
 } opt_key;
 
 /* Where the option being applied came from, for messages. */
@@ -106,11 +112,10 @@ void zr__cli_init(zr_cli_options *o, const zr_render_params *defaults) {
   o->write_output = 1;
   o->loop_limit = ZR_DEFAULT_WORK_LIMIT;
   o->file_limit = ZR_DEFAULT_FILE_LIMIT;
+  /* The library's defaults are the command line's (issue 11). */
   zr_radiosity_params_init(&o->rad, NULL);
-  /* A lamp emits from its front only: with two-sided emission the
-     Cornell box's lamp, hung 0.01 below the ceiling, pours half its
-     power into the gap above it (zrcube(1) explains the choice). */
-  o->rad.one_sided_emission = 1;
+  o->gi = ZR_GI_AUTO;
+  o->quality = 9;
 }
 
 void zr__cli_free(zr_cli_options *o) {
@@ -121,6 +126,8 @@ void zr__cli_free(zr_cli_options *o) {
   free(o->rad_save);
   free(o->rad_load);
   free(o->rad_mesh);
+  free(o->gi_save);
+  free(o->gi_load);
   for (size_t i = 0; i < o->n_include_paths; i++)
     free(o->include_paths[i]);
   free(o->include_paths);
@@ -482,6 +489,43 @@ void zr__cli_radiosity_params(const zr_cli_options *o, const zr_scene *scene,
   out->brightness = sp.brightness;
 }
 
+zr_gi_method zr__cli_gi_asked(const zr_cli_options *o) {
+  if (o->gi != ZR_GI_AUTO)
+    return o->gi;
+  if (o->quality <= 8)
+    return ZR_GI_OFF;
+  if (o->radiosity)
+    return ZR_GI_HIERARCHICAL;
+  return ZR_GI_AUTO;
+}
+
+/* --gi=MODEL; the last of --gi, --no-radiosity and Radiosity= wins. */
+static int set_gi(const arg_ctx *c, const char *value) {
+  static const zr_gi_method all[] = {ZR_GI_AUTO, ZR_GI_OFF,
+                                     ZR_GI_HIERARCHICAL, ZR_GI_CACHE,
+                                     ZR_GI_PATH};
+  for (size_t i = 0; i < sizeof all / sizeof *all; i++)
+    if (value && !strcmp(value, zr_gi_method_name(all[i]))) {
+      if (all[i] == ZR_GI_PATH)
+        return fail(c, "'%s': the path-traced reference is not built yet "
+                       "(issue 11); use auto, hierarchical, cache or off",
+                    c->what);
+      c->o->gi = all[i];
+      return 0;
+    }
+  return fail(c, "'%s': --gi takes auto, hierarchical, cache, path or "
+                 "off", c->what);
+}
+
+static int set_quality(const arg_ctx *c, const char *value) {
+  long v;
+  if (!parse_int(value, 0, 11, &v))
+    return fail(c, "'%s': the quality must be a whole number from 0 to "
+                   "11", c->what);
+  c->o->quality = (int)v;
+  return 0;
+}
+
 static int apply(const arg_ctx *c, opt_key key, const char *value) {
   zr_cli_options *o = c->o;
   long v;
@@ -610,6 +654,21 @@ static int apply(const arg_ctx *c, opt_key key, const char *value) {
   case K_RAD_LOAD:
   case K_RAD_MESH:
     return apply_radiosity(c, key, value);
+  case K_GI:
+    return set_gi(c, value);
+  case K_NO_RADIOSITY:
+    o->gi = ZR_GI_OFF;
+    return 0;
+  case K_RADIOSITY_ON:
+    if (o->gi == ZR_GI_OFF)
+      o->gi = ZR_GI_AUTO;
+    return 0;
+  case K_QUALITY:
+    return set_quality(c, value);
+  case K_GI_SAVE:
+    return set_string(c, &o->gi_save, value);
+  case K_GI_LOAD:
+    return set_string(c, &o->gi_load, value);
   }
   return fail(c, "'%s': internal error: unhandled option", c->what);
 }
@@ -647,6 +706,7 @@ static const pov_switch pov_switches[] = {
     {"V", K_VERBOSE, K_NOVERBOSE, V_NONE, NULL},
     {"D", K_IGNORED, K_IGNORED, V_ANY, NULL},
     {"P", K_IGNORED, K_IGNORED, V_NONE, NULL},
+    {"Q", K_QUALITY, K_QUALITY, V_REQUIRED, "a quality, as in +Q9"},
 };
 
 static int parse_switch(arg_ctx *c, const char *arg) {
@@ -737,6 +797,11 @@ static const long_option long_options[] = {
     {"read-path", K_READ_PATH, L_REQUIRED},
     {"write-path", K_WRITE_PATH, L_REQUIRED},
     {"io-restrictions", K_IO_RESTRICTIONS, L_REQUIRED},
+    {"gi", K_GI, L_REQUIRED},
+    {"no-radiosity", K_NO_RADIOSITY, L_NONE},
+    {"quality", K_QUALITY, L_REQUIRED},
+    {"gi-save", K_GI_SAVE, L_REQUIRED},
+    {"gi-load", K_GI_LOAD, L_REQUIRED},
 };
 
 /* Returns how many extra arguments it used (0 or 1), or -1 on failure. */
@@ -815,6 +880,8 @@ static const ini_option ini_options[] = {
     {"Write_Path", K_WRITE_PATH, 0, K_WRITE_PATH},
     {"Write_Paths", K_WRITE_PATH, 0, K_WRITE_PATH},
     {"IO_Restrictions", K_IO_RESTRICTIONS, 0, K_IO_RESTRICTIONS},
+    {"Quality", K_QUALITY, 0, K_QUALITY},
+    {"Radiosity", K_RADIOSITY_ON, 1, K_NO_RADIOSITY},
 };
 
 /* arg is "Key=Value"; POV-Ray's keys are case-insensitive. */
@@ -1154,6 +1221,13 @@ const char *zr__cli_usage(void) {
       "\n"
       "Radiosity (hierarchical, on the exact surfaces; any of these turns\n"
       "it on):\n"
+      "  --gi=MODEL                   global illumination: auto (default:\n"
+      "                               by the scene, see zrcube(1)),\n"
+      "                               hierarchical, cache or off\n"
+      "  --no-radiosity, +Q8          no global illumination (classic\n"
+      "                               ambient; +Q0 to +Q8, Radiosity=off)\n"
+      "  --gi-save=FILE               save the irradiance cache\n"
+      "  --gi-load=FILE               start from a saved irradiance cache\n"
       "  --radiosity                  solve diffuse interreflection from\n"
       "                               emitting surfaces and light sources,\n"
       "                               then render with it\n"

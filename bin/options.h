@@ -54,6 +54,13 @@ typedef struct zr_cli_options {
   size_t n_read_paths;
   char **write_paths;     /* --write-path, as given */
   size_t n_write_paths;
+  /* Global illumination: --gi (ZR_GI_AUTO unless given), +Q / Quality
+     (9 when not given; 8 and below turn radiosity off), --no-radiosity
+     and Radiosity=off (gi = ZR_GI_OFF), the cache's files. */
+  zr_gi_method gi;
+  int quality;
+  char *gi_save;          /* --gi-save=FILE */
+  char *gi_load;          /* --gi-load=FILE */
 } zr_cli_options;
 
 /*
@@ -80,6 +87,12 @@ enum {
 void zr__cli_radiosity_params(const zr_cli_options *o, const zr_scene *scene,
                               zr_radiosity_params *out);
 void zr__cli_free(zr_cli_options *o);
+
+/* The model the options ask for before the scene is seen: --gi, or
+   off after --no-radiosity, Radiosity=off or +Q8 and below, or
+   hierarchical after a hierarchical solver option (--radiosity,
+   --bf-eps ...); else ZR_GI_AUTO. */
+zr_gi_method zr__cli_gi_asked(const zr_cli_options *o);
 
 /*
  * Parses argv[1 .. argc-1].  On failure returns -1 and writes a one-line

@@ -12,7 +12,10 @@
  *   3. if rank 0's parse failed every rank stops: only rank 0 has printed
  *      the library's diagnostics, once; otherwise every other rank parses
  *      the same bytes from memory;
- *   4. with --radiosity every rank solves the same radiosity solution
+ *   4. the model of global illumination is chosen (zr_gi_choose); for
+ *      the irradiance cache every rank runs the same deterministic
+ *      pretrace; for hierarchical radiosity every rank solves the
+ *      same radiosity solution
  *      (the solver is deterministic: the same scene and settings give
  *      the same bytes, so no solution travels between ranks) or loads
  *      it from --radiosity-load's file, which every rank must then see;
@@ -203,6 +206,9 @@ typedef struct run {
   zr_scene *scene;
   zr_image *image;
   zr_radiosity *rad;
+  zr_gi_cache *gi;
+  zr_gi_method gi_method;
+  double gi_seconds;
   double parse_seconds;
   double radiosity_seconds;
   double write_seconds;
@@ -429,11 +435,6 @@ static zr_status write_radiosity_mesh(run *r) {
 
 /* Step 4: the radiosity solution, on every rank. */
 static int solve_radiosity(run *r) {
-  /* A radiosity option or the scene's radiosity block turns it on. */
-  zr_scene_info info;
-  zr_scene_get_info(r->scene, &info);
-  if (!r->opts.radiosity && !info.has_radiosity)
-    return -1;
   zr_radiosity_params params;
   zr__cli_radiosity_params(&r->opts, r->scene, &params);
   params.threads = r->threads; /* +WT: the same solution for any count */
@@ -468,6 +469,79 @@ static int solve_radiosity(run *r) {
       s = write_radiosity_mesh(r);
   }
   return zr__par_agree(r->par, s) == ZR_OK ? -1 : EXIT_SCENE;
+}
+
+/*
+ * Step 4 for the irradiance cache: every rank runs the same pretrace
+ * (deterministic, lib/gi/cache.c), so every rank holds the same cache
+ * and no records travel.  sky_only: the sky's light beside a
+ * hierarchical solution.
+ */
+static int build_cache(run *r, int sky_only) {
+  zr_gi_params gp;
+  zr_gi_params_init(&gp, r->scene);
+  gp.threads = r->threads;
+  gp.sky_only = sky_only;
+  const char *load = sky_only ? NULL
+                     : r->opts.gi_load ? r->opts.gi_load : gp.load_file;
+  const char *save = sky_only ? NULL
+                     : r->opts.gi_save ? r->opts.gi_save : gp.save_file;
+  double start = zr__par_now();
+  zr_status s = load ? zr_gi_cache_load(r->ctx, r->scene, &gp, load, &r->gi)
+                     : zr_gi_cache_new(r->ctx, r->scene, &gp, &r->gi);
+  /* A loaded cache is used as it is (its render is the saved one's);
+     the final pass gathers where it has no record. */
+  if (s == ZR_OK && !load)
+    s = zr_gi_cache_pretrace(r->gi, &r->opts.params);
+  r->gi_seconds = zr__par_now() - start;
+  if (s != ZR_OK && r->rank == 0 && !*zr_context_last_error(r->ctx))
+    fprintf(stderr, "zrcube: irradiance cache failed: %s\n",
+            zr_status_str(s));
+  if (zr__par_agree(r->par, s) != ZR_OK)
+    return EXIT_SCENE;
+  r->opts.params.gi_cache = r->gi;
+  s = ZR_OK;
+  if (r->rank == 0 && r->opts.verbose) {
+    zr_gi_stats st;
+    zr_gi_cache_get_stats(r->gi, &st);
+    fprintf(stderr, "zrcube: irradiance cache%s: %zu records (%zu at "
+            "the first bounce), %d pretrace passes, %llu sample rays, "
+            "%.3f s\n", sky_only ? " (sky light)" : "", st.records,
+            st.records_depth0, st.pretrace_passes,
+            (unsigned long long)st.sample_rays, r->gi_seconds);
+  }
+  if (r->rank == 0 && save) {
+    unsigned before = r->diag.errors_printed;
+    s = zr_gi_cache_save(r->ctx, r->gi, save);
+    if (s != ZR_OK && r->diag.errors_printed == before)
+      fprintf(stderr, "zrcube: cannot save the irradiance cache to '%s': "
+              "%s\n", save, zr_status_str(s));
+  }
+  return zr__par_agree(r->par, s) == ZR_OK ? -1 : EXIT_SCENE;
+}
+
+/* Step 4: the model of global illumination (zr_gi_choose, zrcube(1)
+   "Global illumination"), then what it needs before the render. */
+static int set_up_gi(run *r) {
+  zr_gi_method asked = zr__cli_gi_asked(&r->opts);
+  if (asked == ZR_GI_AUTO && r->opts.rad_load)
+    asked = ZR_GI_HIERARCHICAL; /* a saved solution asks for it */
+  char why[256];
+  r->gi_method = zr_gi_choose(r->scene, asked, why, sizeof why);
+  if (r->rank == 0 && r->opts.verbose)
+    fprintf(stderr, "zrcube: global illumination: %s (%s%s)\n",
+            zr_gi_method_name(r->gi_method),
+            asked == ZR_GI_AUTO ? "auto: " : "", why);
+  if (r->gi_method == ZR_GI_CACHE)
+    return build_cache(r, 0);
+  if (r->gi_method != ZR_GI_HIERARCHICAL)
+    return -1;
+  int status = solve_radiosity(r);
+  /* The solver carries no sky light: a sky-only cache adds it. */
+  if (status < 0 && !r->opts.params.radiosity_only &&
+      zr_gi_has_sky(r->scene))
+    status = build_cache(r, 1);
+  return status;
 }
 
 /* Step 5: render and write. */
@@ -581,7 +655,7 @@ int main(int argc, char **argv) {
     status = EXIT_SUCCESS;
   }
   if (status < 0)
-    status = solve_radiosity(&r);
+    status = set_up_gi(&r);
   if (status < 0)
     status = render_and_write(&r);
   if (status < 0) {
@@ -591,6 +665,7 @@ int main(int argc, char **argv) {
   }
   zr_image_free(r.image);
   zr_radiosity_free(r.rad);
+  zr_gi_cache_free(r.gi);
   zr_scene_free(r.scene);
   zr__bundle_free(&r.bundle);
   zr_context_free(r.ctx);

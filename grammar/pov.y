@@ -3722,9 +3722,9 @@ radiosity_body:
 | radiosity_body rad_kw expr ',' expr
     { TRY(zr__sdl_radiosity_item(p, $2, &$3, &$5, &@5)); }
 | radiosity_body T_SAVE_FILE str_expr
-    { zr__sdl_radiosity_file(p, T_SAVE_FILE, &@2); }
+    { TRY(zr__sdl_radiosity_file(p, T_SAVE_FILE, $3, &@3)); }
 | radiosity_body T_LOAD_FILE str_expr
-    { zr__sdl_radiosity_file(p, T_LOAD_FILE, &@2); }
+    { TRY(zr__sdl_radiosity_file(p, T_LOAD_FILE, $3, &@3)); }
 ;
 
 rad_kw:

@@ -302,10 +302,11 @@ typedef struct zr_radiosity_params {
      visibility is partial, or its source is uneven (per unit area);
      tighter per element, but many more links. */
   int criterion;
-  /* 0 (default): emission leaves both sides of a surface, as POV-Ray
-     shows it from both; 1: only the front side, along the outward
-     normal (for a triangle (p1 - p0) x (p2 - p0)), so a lamp hung
-     just under a ceiling does not pour light into the gap. */
+  /* 1 (default, library and command line alike): emission leaves
+     only the front side, along the outward normal (for a triangle
+     (p1 - p0) x (p2 - p0)), so a lamp hung just under a ceiling does
+     not pour light into the gap; 0: both sides, as POV-Ray shows an
+     emitting surface from both. */
   int one_sided_emission;
   /* How a ray hit reads the solution.  0 (default): a final gather at
      the hit point over the links its element and the element's
@@ -377,6 +378,113 @@ ZR_API zr_status zr_radiosity_load(zr_context *ctx, const zr_scene *scene,
                                    const char *path, zr_radiosity **out);
 
 /* ------------------------------------------------------------------ */
+/* Global illumination: the model per scene, the irradiance cache      */
+/* ------------------------------------------------------------------ */
+
+/* Which model lights a scene's diffuse interreflection (zrcube(1),
+   "Global illumination"). */
+typedef enum zr_gi_method {
+  ZR_GI_AUTO = 0,      /* chosen per scene by zr_gi_choose() */
+  ZR_GI_OFF,           /* POV-Ray's classic ambient term */
+  ZR_GI_HIERARCHICAL,  /* zr_radiosity: closed rooms, local emitters */
+  ZR_GI_CACHE,         /* zr_gi_cache: POV-Ray's radiosity block */
+  ZR_GI_PATH           /* reserved for the path-traced reference */
+} zr_gi_method;
+
+/* "auto", "off", "hierarchical", "cache", "path". */
+ZR_API const char *zr_gi_method_name(zr_gi_method m);
+
+/*
+ * The model for scene when asked is ZR_GI_AUTO, else asked itself.
+ * Without a radiosity block: off.  With one: hierarchical when the
+ * scene is lit by emitting surfaces, has no sky (no sky_sphere, a black
+ * background), only kinds of object the hierarchical solver models and
+ * no mesh over its face limit; the irradiance cache otherwise.  why (may be NULL) receives a sentence
+ * saying which test decided.
+ */
+ZR_API zr_gi_method zr_gi_choose(const zr_scene *scene, zr_gi_method asked,
+                                 char *why, size_t why_size);
+
+/*
+ * POV-Ray's radiosity block as Ward's irradiance cache (lib/gi/cache.c),
+ * with the meaning the POV-Ray 3.7 manual gives each item.  Sky_sphere
+ * and background light the scene through the rays that escape.
+ */
+typedef struct zr_gi_params {
+  int count;             /* rays per new record; 35 */
+  int recursion_limit;   /* diffuse bounces; 2 */
+  int nearest_count;     /* records a pretrace point wants; 5 */
+  double error_bound;    /* 1.8 */
+  double low_error_factor; /* error_bound's factor in the pretrace; 0.5 */
+  double gray_threshold; /* 0: full colour bleeding */
+  double brightness;     /* 1 */
+  double minimum_reuse;  /* of the distance from the eye; 0.015 */
+  double maximum_reuse;  /* 0.2 */
+  double pretrace_start; /* mosaic block, fraction of the image; 0.08 */
+  double pretrace_end;   /* 0.04 */
+  double adc_bailout;    /* for the sample rays; 0.01 */
+  double max_sample;     /* <= 0: samples are not limited (default) */
+  int normal;            /* 1: records see normal perturbation; 0 */
+  int media;             /* 1: sample rays pass media; 0 */
+  int always_sample;     /* 1: the final pass may add records; 0 */
+  /* 1: only the sky lights (rays that hit anything bring nothing
+     back): the sky light added to a hierarchical solution. */
+  int sky_only;
+  /* Threads of the pretrace (0 or 1: the caller's alone); the cache is
+     the same bytes for any number. */
+  int threads;
+  /* The block's save_file and load_file (owned by the scene), NULL
+     when not written: the command line loads and saves them. */
+  const char *save_file, *load_file;
+} zr_gi_params;
+
+/* Whether a sky_sphere or a background that is not black lights the
+   scene. */
+ZR_API int zr_gi_has_sky(const zr_scene *scene);
+
+/* POV-Ray's defaults, then the scene's radiosity block (scene may be
+   NULL). */
+ZR_API void zr_gi_params_init(zr_gi_params *p, const zr_scene *scene);
+
+typedef struct zr_gi_cache zr_gi_cache;
+struct zr_render_params;
+
+typedef struct zr_gi_stats {
+  size_t records;           /* all depths */
+  size_t records_depth0;    /* gathered at camera-visible points */
+  int pretrace_passes;
+  uint64_t sample_rays;     /* rays shot to make records */
+} zr_gi_stats;
+
+/* An empty cache for scene (which must outlive it); params may be NULL
+   for zr_gi_params_init(scene). */
+ZR_API zr_status zr_gi_cache_new(zr_context *ctx, const zr_scene *scene,
+                                 const zr_gi_params *params,
+                                 zr_gi_cache **out);
+/*
+ * The pretrace: mosaic passes over an image of render's size, block
+ * sizes from pretrace_start down to pretrace_end of the image's larger
+ * side (and a last pass over every pixel with always_sample on), each
+ * adding the records its pixels ask for.  Pixels of a pass are taken
+ * in fixed batches, each batch sees the cache as the batch before left
+ * it, and records join in pixel order: the cache is the same bytes for
+ * any number of threads, ranks or runs.
+ */
+ZR_API zr_status zr_gi_cache_pretrace(zr_gi_cache *cache,
+                                      const struct zr_render_params *render);
+ZR_API void zr_gi_cache_free(zr_gi_cache *cache);
+ZR_API void zr_gi_cache_get_stats(const zr_gi_cache *cache,
+                                  zr_gi_stats *stats);
+/* Writes the records (POV-Ray 3.6's save_file, 3.7's +RFO). */
+ZR_API zr_status zr_gi_cache_save(zr_context *ctx, const zr_gi_cache *cache,
+                                  const char *path);
+/* Reads records saved by zr_gi_cache_save into a new cache for scene;
+   a pretrace after it adds only what the file lacks. */
+ZR_API zr_status zr_gi_cache_load(zr_context *ctx, const zr_scene *scene,
+                                  const zr_gi_params *params,
+                                  const char *path, zr_gi_cache **out);
+
+/* ------------------------------------------------------------------ */
 /* Rendering                                                          */
 /* ------------------------------------------------------------------ */
 
@@ -401,6 +509,10 @@ typedef struct zr_render_params {
      emission from (NULL: none, the default). */
   const zr_radiosity *radiosity;
   int radiosity_only; /* 1: show the radiosity solution alone */
+  /* An irradiance cache for this scene (NULL: none, the default): the
+     diffuse light arriving at each surface, from the sky too; with a
+     radiosity solution, a sky-only cache adds the sky's light. */
+  const zr_gi_cache *gi_cache;
 } zr_render_params;
 
 /* Fills p with POV-Ray's defaults. */

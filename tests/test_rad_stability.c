@@ -36,6 +36,7 @@
 static zr_radiosity *solve(fixture *f, double bf_eps, double area_eps) {
   zr_radiosity_params p;
   zr_radiosity_params_init(&p, f->scene);
+  p.one_sided_emission = 0; /* as written before the default became 1 */
   p.bf_eps = bf_eps;
   p.area_eps = area_eps;
   zr_radiosity *rad = NULL;
@@ -261,6 +262,7 @@ static void test_rad_stability_zero_area_and_plane(void **state) {
   good(f, "plane { y, 0 pigment { rgb 1 } finish { emission 1 } }\n");
   zr_radiosity_params p;
   zr_radiosity_params_init(&p, f->scene);
+  p.one_sided_emission = 0; /* as written before the default became 1 */
   rad = NULL;
   zr_status s = zr_radiosity_solve(f->ctx, f->scene, &p, &rad);
   if (s == ZR_OK) {
@@ -350,6 +352,7 @@ static void check_box_on_floor(fixture *f, bool light) {
   good(f, box_on_floor(light));
   zr_radiosity_params p;
   zr_radiosity_params_init(&p, f->scene);
+  p.one_sided_emission = 0; /* as written before the default became 1 */
   zr_radiosity *hier = NULL, *truth = NULL, *coarse = NULL;
   assert_int_equal(zr_radiosity_solve(f->ctx, f->scene, &p, &hier), ZR_OK);
   p.uniform = 3;

@@ -58,7 +58,7 @@ static zr_diag_place object_place(const zr_object *obj) {
 }
 
 /* POV-Ray's keyword for each kind, in zr_object_kind's order. */
-static const char *kind_name(zr_object_kind kind) {
+const char *zr__rad_kind_name(zr_object_kind kind) {
   static const char *const names[] = {
       "sphere",       "box",         "plane",    "triangle",
       "cylinder",     "cone",        "disc",     "union",
@@ -95,6 +95,12 @@ static bool modelled(const zr_object *o) {
   default:
     return false;
   }
+}
+
+bool zr__rad_models(const zr_object *o, size_t *faces) {
+  const struct zr_mesh *m = object_mesh(o);
+  *faces = m ? m->n_faces : 0;
+  return modelled(o);
 }
 
 /* The bounds that clip infinite planes; false when nothing bounds them. */
@@ -311,7 +317,8 @@ static zr_status add_primitive(zr_radiosity *rad, zr_context *ctx,
              "radiosity: this %s has %zu faces, more than the %d radiosity "
              "takes (zr_radiosity_params.max_mesh_faces); it takes no part "
              "in the radiosity solution",
-             kind_name(o->kind), faces->n_faces, rad->params.max_mesh_faces);
+             zr__rad_kind_name(o->kind), faces->n_faces,
+             rad->params.max_mesh_faces);
     return ZR_OK;
   }
   if (!modelled(o)) {
@@ -325,7 +332,7 @@ static zr_status add_primitive(zr_radiosity *rad, zr_context *ctx,
     zr__diag(ctx, ZR_DIAG_WARNING, ZR_OK, &where,
              "radiosity: this %s has no area (or no bounds); it takes no "
              "part in the radiosity solution",
-             kind_name(o->kind));
+             zr__rad_kind_name(o->kind));
     return ZR_OK;
   }
   zr__rad_object_entry *e = &rad->objects[rad->n_objects++];
@@ -442,7 +449,7 @@ zr_status zr__rad_mesh_build(zr_radiosity *rad, zr_context *ctx) {
     zr__diag(ctx, ZR_DIAG_WARNING, ZR_OK, &where,
              "radiosity: %zu %s object%s%s take%s no part (they neither "
              "receive nor give radiosity light; the first is here)",
-             tally.count[k], kind_name((zr_object_kind)k),
+             tally.count[k], zr__rad_kind_name((zr_object_kind)k),
              tally.count[k] == 1 ? "" : "s", why,
              tally.count[k] == 1 ? "s" : "");
   }

@@ -53,6 +53,11 @@ ZR_API void zr_radiosity_params_init(zr_radiosity_params *p,
   p->shooting = 0;
   p->brightness = 1.0;
   p->max_mesh_faces = 1024;
+  /* A lamp emits from its front only: with two-sided emission the
+     Cornell box's lamp, hung 0.01 below the ceiling, pours half its
+     power into the gap above it (zrcube(1) explains the choice).  The
+     command line takes this default too (issue 11). */
+  p->one_sided_emission = 1;
   if (scene == NULL)
     return;
   /* The scene's radiosity block (lib/sdl/build_radiosity.c): zRcube's

@@ -292,6 +292,11 @@ zr_status zr__rad_index_links(zr_radiosity *rad);
  * units, as emission.  Returns
  * false (out black) when the object has no surface in the solution.
  */
+/* Whether the solver models objects of o's kind; *faces is the number
+   of mesh faces o brings (0 for other kinds).  lib/gi/choose.c asks. */
+bool zr__rad_models(const zr_object *o, size_t *faces);
+/* POV-Ray's keyword for an object kind ("sphere", "isosurface"). */
+const char *zr__rad_kind_name(zr_object_kind kind);
 bool zr__radiosity_radiance(const zr_radiosity *rad, const zr_object *object,
                             zr_vec3 point, zr_vec3 dir, zr_rgb *out);
 

@@ -877,11 +877,12 @@ struct zr_rainbow {
 
 /*
  * global_settings { radiosity { ... } } (lib/sdl/build_radiosity.c).
- * POV-Ray's own items drive its irradiance cache, which zRcube does not
- * have: the parser reads them all, keeps brightness, and warns about
- * the rest.  zRcube's items (bf_bound, minimum_area, visibility_count,
- * max_iterations, residual_bound) are 0 when not given, so the
- * library's defaults and the command line decide.
+ * POV-Ray's own items drive the irradiance cache (lib/gi/cache.c); an
+ * item not written is 0 (or -1 for max_sample and the switches), so
+ * zr_gi_params_init() puts POV-Ray's default in its place.  zRcube's
+ * items (bf_bound, minimum_area, visibility_count, max_iterations,
+ * residual_bound) set the hierarchical solver and are 0 when not
+ * given, so the library's defaults and the command line decide.
  */
 typedef struct zr_radiosity_settings {
   bool on;            /* a radiosity block was read */
@@ -891,6 +892,20 @@ typedef struct zr_radiosity_settings {
   double residual;    /* .residual when > 0 */
   int visibility_rays; /* .visibility_rays when > 0 */
   int max_iterations;  /* .max_iterations when > 0 */
+  /* POV-Ray's items (zr_gi_params), 0 when not written. */
+  int count, count_pool;
+  int nearest_count, nearest_count_max;
+  int recursion_limit;
+  double error_bound, low_error_factor, gray_threshold;
+  double minimum_reuse, maximum_reuse;
+  double pretrace_start, pretrace_end;
+  double adc_bailout;
+  bool gray_given, adc_given, max_sample_given;
+  double max_sample;
+  /* normal, media, always_sample: -1 not written, else 0 or 1. */
+  int normal, media, always_sample;
+  /* save_file and load_file (in the scene's arena), NULL if none. */
+  const char *save_file, *load_file;
 } zr_radiosity_settings;
 
 typedef struct zr_settings {
@@ -906,6 +921,11 @@ typedef struct zr_settings {
   zr_rgb irid_wavelength;
   zr_colour background; /* default black, transmit 0 */
   double version;       /* the last #version; the parser sets 3.7 if none */
+  /* A #version directive was read: POV-Ray 3.7 drops ambient under
+     radiosity only for scenes that declare 3.7 (measured: a sphere of
+     ambient 0.3 diffuse 0.6 under a white sky renders 0.9 without
+     #version and 0.6 with "#version 3.7;"). */
+  bool version_given;
   zr_radiosity_settings radiosity;
   /* Atmospheric effects (lib/trace/atmosphere.c): lists in the order
      written, NULL when absent. */

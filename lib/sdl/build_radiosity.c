@@ -4,30 +4,19 @@
  * no_radiosity, and zRcube's finish { energy P } (issue 4).
  *
  * POV-Ray 3.7's radiosity (reference manual r3_4, 3.4.4.3 "Radiosity")
- * is Ward's irradiance cache: count, error_bound, nearest_count,
- * pretrace_start and the rest tune how many hemisphere samples it takes
- * and how far it reuses them.  zRcube has no cache: its radiosity is
- * Hanrahan, Salzman and Aupperle's hierarchical method on the scene's
- * exact surfaces, solved once for every view over every bounce.  So:
- *
- *   - the block turns zRcube's radiosity on (as it turns POV-Ray's on);
- *   - brightness keeps its meaning: it scales the diffuse light that
- *     radiosity carries between surfaces;
- *   - recursion_limit would be a bounce limit, which the hierarchical
- *     solver cannot honour (it gathers over links to convergence, and
- *     refinement depends on the converged light): it is read and a
- *     warning names it;
- *   - the cache's own items (adc_bailout, always_sample, count,
- *     error_bound, gray_threshold, low_error_factor, max_sample,
- *     maximum_reuse, minimum_reuse, nearest_count, pretrace_start,
- *     pretrace_end) and the switches media, normal and subsurface are
- *     read, checked, and named in one warning per block;
- *   - POV-Ray 3.6's save_file and load_file get a warning pointing to
- *     --radiosity-save and --radiosity-load;
- *   - zRcube's own items set the solver's parameters, which the command
- *     line overrides: bf_bound (zr_radiosity_params.bf_eps), minimum_area
- *     (area_eps), visibility_count (visibility_rays), max_iterations and
- *     residual_bound (residual).
+ * is Ward's irradiance cache, which lib/gi/cache.c implements: count,
+ * error_bound, nearest_count, pretrace_start and the rest are read,
+ * checked against the ranges the manual gives and kept in the scene's
+ * settings for zr_gi_params_init().  brightness also scales what the
+ * hierarchical solver (lib/radiosity) carries between surfaces, and
+ * zRcube's own items set that solver's parameters, which the command
+ * line overrides: bf_bound (zr_radiosity_params.bf_eps), minimum_area
+ * (area_eps), visibility_count (visibility_rays), max_iterations and
+ * residual_bound (residual).  subsurface is read and named in a
+ * warning (zRcube has no subsurface light transport).  save_file and
+ * load_file (POV-Ray 3.6's spelling of what 3.7 moved to the command
+ * line) name the irradiance cache's file: loaded before the pretrace,
+ * written after it.
  *
  * finish { energy P } gives an emitter by its power instead of its
  * exitance, as the seed's energy keyword did: each object wearing the
@@ -53,6 +42,15 @@ static const struct {
   int token;
   const char *name;
 } ignored_items[] = {
+    {T_SUBSURFACE, "subsurface"},
+};
+#define N_IGNORED (sizeof ignored_items / sizeof ignored_items[0])
+
+/* POV-Ray's items the irradiance cache takes. */
+static const struct {
+  int token;
+  const char *name;
+} cache_items[] = {
     {T_ADC_BAILOUT, "adc_bailout"},
     {T_ALWAYS_SAMPLE, "always_sample"},
     {T_COUNT, "count"},
@@ -67,15 +65,17 @@ static const struct {
     {T_PRETRACE_END, "pretrace_end"},
     {T_MEDIA, "media"},
     {T_NORMAL, "normal"},
-    {T_SUBSURFACE, "subsurface"},
     {T_RECURSION_LIMIT, "recursion_limit"},
 };
-#define N_IGNORED (sizeof ignored_items / sizeof ignored_items[0])
+#define N_CACHE (sizeof cache_items / sizeof cache_items[0])
 
 static const char *item_name(int kw) {
   for (size_t i = 0; i < N_IGNORED; i++)
     if (ignored_items[i].token == kw)
       return ignored_items[i].name;
+  for (size_t i = 0; i < N_CACHE; i++)
+    if (cache_items[i].token == kw)
+      return cache_items[i].name;
   switch (kw) {
   case T_BRIGHTNESS:
     return "brightness";
@@ -108,6 +108,8 @@ static int ignored_bit(int kw) {
 void zr__sdl_radiosity_begin(zr_sdl_parser *p) {
   /* A later block overrides an earlier one item by item, as a later
      global_settings does in POV-Ray. */
+  if (!RADIOSITY->on)
+    RADIOSITY->normal = RADIOSITY->media = RADIOSITY->always_sample = -1;
   RADIOSITY->on = true;
   p->radiosity_ignored = 0;
 }
@@ -123,8 +125,98 @@ static bool whole(zr_sdl_parser *p, int kw, double v, double lo, double hi,
   return false;
 }
 
+/* A number in (lo, hi] (lo_open) or [lo, hi], or an error naming the
+   item and the range the manual gives. */
+static bool in_range(zr_sdl_parser *p, int kw, double v, double lo,
+                     double hi, bool lo_open, const zr_sdl_loc *loc) {
+  if ((lo_open ? v > lo : v >= lo) && v <= hi)
+    return true;
+  zr__sdl_error(p, ZR_ESCENE, loc, "radiosity: %s must be %s %g and at "
+                "most %g", item_name(kw), lo_open ? "above" : "at least",
+                lo, hi);
+  return false;
+}
+
+/* POV-Ray's items, for the irradiance cache (lib/gi/cache.c); the
+   ranges are the manual's (count, nearest_count up to 20,
+   recursion_limit up to 20, pretrace sizes in (0, 1]). */
+static bool cache_item(zr_sdl_parser *p, int kw, double v, double w,
+                       const zr_sdl_loc *loc) {
+  zr_radiosity_settings *r = RADIOSITY;
+  switch (kw) {
+  case T_COUNT:
+    if (!whole(p, kw, v, 1, 1e6, loc) || !whole(p, kw, w, 1, 1e6, loc))
+      return false;
+    r->count = (int)v;
+    r->count_pool = (int)w; /* 1 when no second value: none */
+    return true;
+  case T_NEAREST_COUNT:
+    if (!whole(p, kw, v, 1, 20, loc) || !whole(p, kw, w, 1, 20, loc))
+      return false;
+    r->nearest_count = (int)v;
+    r->nearest_count_max = (int)w;
+    return true;
+  case T_RECURSION_LIMIT:
+    if (!whole(p, kw, v, 1, 20, loc))
+      return false;
+    r->recursion_limit = (int)v;
+    return true;
+  case T_ERROR_BOUND:
+    if (!in_range(p, kw, v, 0.0, 1e6, true, loc))
+      return false;
+    r->error_bound = v;
+    return true;
+  case T_LOW_ERROR_FACTOR:
+    if (!in_range(p, kw, v, 0.0, 1.0, true, loc))
+      return false;
+    r->low_error_factor = v;
+    return true;
+  case T_GRAY_THRESHOLD:
+    if (!in_range(p, kw, v, 0.0, 1.0, false, loc))
+      return false;
+    r->gray_threshold = v;
+    r->gray_given = true;
+    return true;
+  case T_MINIMUM_REUSE:
+    if (!in_range(p, kw, v, 0.0, 1.0, false, loc))
+      return false;
+    r->minimum_reuse = v;
+    return true;
+  case T_MAXIMUM_REUSE:
+    if (!in_range(p, kw, v, 0.0, 1e6, true, loc))
+      return false;
+    r->maximum_reuse = v;
+    return true;
+  case T_PRETRACE_START:
+  case T_PRETRACE_END:
+    if (!in_range(p, kw, v, 0.0, 1.0, true, loc))
+      return false;
+    *(kw == T_PRETRACE_START ? &r->pretrace_start : &r->pretrace_end) = v;
+    return true;
+  case T_ADC_BAILOUT:
+    if (!in_range(p, kw, v, 0.0, 1.0, false, loc))
+      return false;
+    r->adc_bailout = v;
+    r->adc_given = true;
+    return true;
+  case T_MAX_SAMPLE:
+    r->max_sample = v; /* not positive: no limit, as the manual says */
+    r->max_sample_given = true;
+    return true;
+  case T_MEDIA:
+    r->media = v != 0.0;
+    return true;
+  case T_NORMAL:
+    r->normal = v != 0.0;
+    return true;
+  default: /* T_ALWAYS_SAMPLE */
+    r->always_sample = v != 0.0;
+    return true;
+  }
+}
+
 /* zRcube's items: the value goes to the scene's settings. */
-static bool own_item(zr_sdl_parser *p, int kw, double v,
+static bool own_item(zr_sdl_parser *p, int kw, double v, double w,
                      const zr_sdl_loc *loc) {
   zr_radiosity_settings *r = RADIOSITY;
   switch (kw) {
@@ -165,7 +257,7 @@ static bool own_item(zr_sdl_parser *p, int kw, double v,
     }
     r->residual = v;
     return true;
-  default: /* T_BRIGHTNESS */
+  case T_BRIGHTNESS:
     if (!(v >= 0.0 && isfinite(v))) {
       zr__sdl_error(p, ZR_ESCENE, loc,
                     "radiosity: brightness must be a number >= 0");
@@ -173,6 +265,8 @@ static bool own_item(zr_sdl_parser *p, int kw, double v,
     }
     r->brightness = v;
     return true;
+  default:
+    return cache_item(p, kw, v, w, loc);
   }
 }
 
@@ -202,50 +296,43 @@ bool zr__sdl_radiosity_item(zr_sdl_parser *p, int kw, const zr_sdl_expr *a,
   }
   int bit = ignored_bit(kw);
   if (bit < 0)
-    return own_item(p, kw, v, loc);
-  /* POV-Ray's counts and the recursion limit are whole numbers >= 1;
-     checked so a scene zRcube accepts is one POV-Ray accepts. */
-  if ((kw == T_COUNT || kw == T_NEAREST_COUNT || kw == T_RECURSION_LIMIT)
-      && (!whole(p, kw, v, 1, 1e9, loc) || !whole(p, kw, w, 1, 1e9, loc)))
-    return false;
+    return own_item(p, kw, v, b ? w : (kw == T_NEAREST_COUNT ? v : 1.0),
+                    loc);
   p->radiosity_ignored |= 1u << bit;
   return true;
 }
 
-void zr__sdl_radiosity_file(zr_sdl_parser *p, int kw,
+bool zr__sdl_radiosity_file(zr_sdl_parser *p, int kw, const char *name,
                             const zr_sdl_loc *loc) {
-  zr__sdl_warning(p, loc, "radiosity: %s is ignored; zRcube saves and "
-                  "loads its solution with --radiosity-save and "
-                  "--radiosity-load", item_name(kw));
+  if (!name || !*name) {
+    zr__sdl_error(p, ZR_ESCENE, loc, "radiosity: %s needs a file name",
+                  item_name(kw));
+    return false;
+  }
+  char *copy = zr__arena_strdup(&p->scene->arena, name);
+  if (!copy) {
+    zr__sdl_error(p, ZR_ENOMEM, loc, "out of memory");
+    return false;
+  }
+  if (kw == T_SAVE_FILE)
+    RADIOSITY->save_file = copy;
+  else
+    RADIOSITY->load_file = copy;
+  return true;
 }
 
 void zr__sdl_radiosity_end(zr_sdl_parser *p, const zr_sdl_loc *loc) {
+  zr_radiosity_settings *r = RADIOSITY;
+  if (r->minimum_reuse > 0.0 && r->maximum_reuse > 0.0 &&
+      r->minimum_reuse >= r->maximum_reuse)
+    zr__sdl_warning(p, loc, "radiosity: minimum_reuse %g is not below "
+                    "maximum_reuse %g; the cache uses maximum_reuse for "
+                    "both", r->minimum_reuse, r->maximum_reuse);
   unsigned bits = p->radiosity_ignored;
   p->radiosity_ignored = 0;
-  int limit = ignored_bit(T_RECURSION_LIMIT);
-  if (bits & (1u << limit)) {
-    zr__sdl_warning(p, loc, "radiosity: recursion_limit is ignored; "
-                    "zRcube carries light over every bounce until "
-                    "residual_bound is met");
-    bits &= ~(1u << limit);
-  }
-  if (!bits)
-    return;
-  char list[512];
-  size_t n = 0;
-  list[0] = '\0';
-  for (size_t i = 0; i < N_IGNORED; i++)
-    if (bits & (1u << i)) {
-      int w = snprintf(list + n, sizeof list - n, "%s%s", n ? ", " : "",
-                       ignored_items[i].name);
-      if (w > 0 && (size_t)w < sizeof list - n)
-        n += (size_t)w;
-    }
-  zr__sdl_warning(p, loc, "radiosity: %s ignored: they tune POV-Ray's "
-                  "irradiance cache, and zRcube's hierarchical radiosity "
-                  "has its own settings (bf_bound, minimum_area, "
-                  "visibility_count, max_iterations, residual_bound)",
-                  list);
+  if (bits & 1u)
+    zr__sdl_warning(p, loc, "radiosity: subsurface ignored: zRcube has no "
+                    "subsurface light transport");
 }
 
 void zr__sdl_radiosity_object(zr_sdl_parser *p, int kw,

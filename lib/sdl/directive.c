@@ -649,6 +649,7 @@ static bool do_version(zr_sdl_parser *p, const zr_sdl_loc *directive) {
   zr_sdl_expr e;
   zr_status s = zr__sdl_parse_expr(p, T_START_VERSION, &e);
   p->version_given = true;
+  p->scene->settings.version_given = true;
   return s == ZR_OK && zr__sdl_want_float(p, &e, directive, &p->version);
 }
 

@@ -1011,7 +1011,7 @@ void zr__sdl_radiosity_begin(zr_sdl_parser *p);
 bool zr__sdl_radiosity_item(zr_sdl_parser *p, int kw, const zr_sdl_expr *a,
                             const zr_sdl_expr *b, const zr_sdl_loc *loc);
 /* save_file or load_file (POV-Ray 3.6), read and warned about. */
-void zr__sdl_radiosity_file(zr_sdl_parser *p, int kw,
+bool zr__sdl_radiosity_file(zr_sdl_parser *p, int kw, const char *name,
                             const zr_sdl_loc *loc);
 /* The block's closing brace: one warning naming the ignored items. */
 void zr__sdl_radiosity_end(zr_sdl_parser *p, const zr_sdl_loc *loc);

@@ -671,6 +671,8 @@ zr_rgb zr__media_along(const zr_tracer *tracer, const zr_media *inside,
                        zr_vec3 origin, zr_vec3 dir, double t,
                        zr_rgb colour) {
   const zr_settings *settings = &tracer->scene->settings;
+  if (tracer->no_media)
+    return colour; /* radiosity { media off }'s sample rays */
   const zr_medium *list[ZR_MEDIA_LIST_MAX];
   size_t n = 0;
   for (int i = 0; inside && i < inside->n; i++) {

@@ -52,6 +52,7 @@ ZR_API void zr_render_params_init(zr_render_params *p) {
   p->jitter_amount = 1.0;
   p->radiosity = NULL;
   p->radiosity_only = 0;
+  p->gi_cache = NULL;
 }
 
 ZR_API void zr_render_stats_add(zr_render_stats *a,
@@ -315,6 +316,8 @@ static zr_status check_params(const zr_scene *scene,
     return ZR_EINVAL;
   if (p->radiosity_only && !p->radiosity)
     return ZR_EINVAL;
+  if (p->gi_cache && !zr__gi_indirect_for(p->gi_cache, scene))
+    return ZR_EINVAL;
   return ZR_OK;
 }
 
@@ -339,6 +342,13 @@ ZR_API zr_status zr_render_pixels(const zr_scene *scene,
   job.tracer.radiosity = params->radiosity;
   job.tracer.radiosity_only = params->radiosity_only;
   job.tracer.hide = ZR_HIDE_IMAGE;
+  job.tracer.indirect = params->gi_cache
+                            ? zr__gi_indirect_for(params->gi_cache, scene)
+                            : NULL;
+  job.tracer.gi_depth = 0;
+  job.tracer.path = 0.0;
+  job.tracer.no_media = false;
+  job.tracer.skip_direct = false;
   zr__camera_media(scene, &job.camera_media);
   /* POV-Ray compares colours after undoing the scene's working gamma and
      applying its antialiasing gamma, 2.5 by default (reference,

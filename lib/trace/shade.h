@@ -29,6 +29,34 @@ typedef struct zr_media {
   int passes;
 } zr_media;
 
+struct zr_tracer;
+
+/*
+ * The one narrow interface through which the tracer asks for indirect
+ * light: a model of global illumination (lib/gi: the irradiance cache,
+ * the sky) answers for a surface point what the tracer cannot see from
+ * the point itself.  The tracer knows no model; a model traces its own
+ * rays through the tracer it is handed.
+ */
+typedef struct zr_indirect_query {
+  zr_vec3 p;      /* the point */
+  zr_vec3 n;      /* shading normal, on the side the ray came from */
+  zr_vec3 n_geo;  /* the normal before any normal { } perturbation */
+  double path;    /* distance from the eye along the ray path */
+  const zr_object *object;
+} zr_indirect_query;
+
+typedef struct zr_indirect {
+  /* The cosine-weighted mean radiance arriving at q (irradiance / pi),
+     scaled by the model's brightness; false: the model has nothing
+     for this point. */
+  bool (*irradiance)(const struct zr_indirect *self,
+                     const struct zr_tracer *tracer,
+                     const zr_indirect_query *q, zr_rgb *out);
+  const void *provider; /* the model, shared by threads, read-only */
+  void *scratch;        /* this thread's state for the model, or NULL */
+} zr_indirect;
+
 /* What one thread needs to trace rays in a scene. */
 typedef struct zr_tracer {
   const zr_scene *scene;
@@ -41,6 +69,16 @@ typedef struct zr_tracer {
      camera's rays hide no_image objects, reflected rays no_reflection
      ones (ZR_HIDE_*; 0 for rays of other origins). */
   unsigned hide;
+  /* Indirect light (NULL: none): see zr_indirect above.  gi_depth is 0
+     for rays from the camera and d for rays a model shot to gather at
+     bounce d; path is the length of the path before this ray's origin
+     (for a model's sample rays), no_media makes rays ignore media. */
+  const zr_indirect *indirect;
+  int gi_depth;
+  double path;
+  bool no_media;
+  /* A pretrace: camera-visible points (gi_depth 0) skip direct light. */
+  bool skip_direct;
 } zr_tracer;
 
 enum { ZR_HIDE_IMAGE = 1u << 0, ZR_HIDE_REFLECTION = 1u << 1 };
@@ -54,6 +92,15 @@ enum { ZR_HIDE_IMAGE = 1u << 0, ZR_HIDE_REFLECTION = 1u << 1 };
  */
 zr_rgb zr__trace_ray(const zr_tracer *tracer, const zr_ray *ray, int level,
                      double weight, const zr_media *media);
+/* zr__trace_ray(), and the ray parameter of the first surface it met
+   in *t_hit (INFINITY when it escaped). */
+zr_rgb zr__trace_ray_hit(const zr_tracer *tracer, const zr_ray *ray,
+                         int level, double weight, const zr_media *media,
+                         double *t_hit);
+/* The indirect light provider of an irradiance cache made for scene
+   (lib/gi/cache.c), or NULL when the cache is for another scene. */
+const zr_indirect *zr__gi_indirect_for(const zr_gi_cache *cache,
+                                       const zr_scene *scene);
 /* A camera ray that sees surfaces only within distance (world units)
    of its origin (mesh_camera's max_distance). */
 zr_rgb zr__trace_camera_ray_within(const zr_tracer *tracer,

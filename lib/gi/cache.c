@@ -1,0 +1,727 @@
+/*
+ * cache.c - POV-Ray's radiosity block as Ward's irradiance cache.
+ *
+ * POV-Ray 3.7's manual ("Radiosity", r3_4 3.4.4.3) describes its
+ * radiosity as Greg Ward's method: the ambient term of a surface is
+ * replaced by the light arriving from every direction of the hemisphere
+ * above the point, estimated by `count` rays, kept in a cache and
+ * reused nearby while the estimated error stays below `error_bound`.
+ * This follows the published method:
+ *   - Ward, Rubinstein and Clear, "A Ray Tracing Solution for Diffuse
+ *     Interreflection" (1988): a record holds the irradiance E at p
+ *     with normal n and the harmonic mean distance R of the surfaces its
+ *     rays met; it serves a point p' with normal n' while
+ *       eps = |p' - p| / R + sqrt(1 - n.n')  <  error_bound,
+ *     and records blend with weights 1/eps - 1/error_bound (zero at the
+ *     edge of reuse, so no seam shows where a record stops).
+ *   - Ward and Heckbert, "Irradiance Gradients" (1992): the rays are
+ *     cosine-weighted and stratified in M x N cells (sin^2 theta in
+ *     M bands, phi in N sectors, N about pi M), which gives E and its
+ *     rotational and translational gradients from the same rays; a
+ *     record extrapolates with them to the point it serves.
+ * POV-Ray's items keep their manual meaning: R is clamped between
+ * minimum_reuse and maximum_reuse times the distance from the eye;
+ * recursion_limit bounces are gathered (a sample ray's hit is shaded
+ * with the cache one depth further, the last depth with no indirect
+ * light); brightness scales what a depth returns; gray_threshold
+ * desaturates it towards its grey (the mean of the channels);
+ * max_sample limits each sample's brightest channel, keeping its hue;
+ * normal on uses the perturbed normal; media off keeps sample rays out
+ * of media; the pretrace goes over the image in mosaic blocks from
+ * pretrace_start to pretrace_end of the image width with error_bound
+ * lowered by low_error_factor and adds a record wherever fewer than
+ * nearest_count records serve a point; a last pass over every pixel at
+ * the full error_bound adds a record where none serves (nearest_count
+ * with always_sample on), as povray's final pass does, so that the
+ * final pass itself only reads the cache.  Rays that leave the
+ * scene see the sky_sphere or background, so the sky lights the scene
+ * (measured: a sphere of diffuse 0.6 inside a white sky_sphere renders
+ * 0.6 in povray, and here, tests/test_gi.c).
+ *
+ * Determinism (ARCHITECTURE.md): a pass's pixels are taken in fixed
+ * batches of BATCH pixels; every pixel of a batch sees the cache as the
+ * batches before left it plus its own new records, and at the end of
+ * the batch the new records join in pixel order.  Sample directions are
+ * jittered by a hash of the record's point.  So the cache, and the
+ * picture, are the same bytes for any number of threads, and every rank
+ * builds the same cache.  In the final pass a point no record serves
+ * gets a record of its own that is used and dropped (as are the deeper
+ * records made for it), so the pass never writes to the cache.
+ */
+#include "gi/gi.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "radiosity/workers.h"
+#include "trace/bvh.h"
+#include "trace/atmosphere.h"
+#include "trace/render.h"
+#include "core/context.h"
+
+/* Pixels per batch of a pretrace pass (see the essay). */
+#define BATCH 16
+/* Stratification: at most this many bands and sectors. */
+#define MAX_BANDS 64
+#define MAX_SECTORS 256
+/* The translational gradient's factor on the published terms (see
+   gather()). */
+#define TRANS_SCALE (2.0 / (M_PI * M_PI))
+/* The deepest octree level. */
+#define MAX_LEVEL 40
+
+bool zr__gi_list_push(zr__gi_list *l, const zr__gi_record *r) {
+  if (l->n == l->cap) {
+    size_t cap = l->cap ? 2 * l->cap : 16;
+    zr__gi_record *v = realloc(l->v, cap * sizeof *v);
+    if (!v)
+      return false;
+    l->v = v;
+    l->cap = cap;
+  }
+  l->v[l->n++] = *r;
+  return true;
+}
+
+void zr__gi_list_free(zr__gi_list *l) {
+  free(l->v);
+  memset(l, 0, sizeof *l);
+}
+
+/* ---- the octree ---------------------------------------------------- */
+
+static int32_t new_node(zr_gi_cache *c, int d, zr_vec3 centre, double h) {
+  if (c->n_nodes[d] == c->cap_nodes[d]) {
+    size_t cap = c->cap_nodes[d] ? 2 * c->cap_nodes[d] : 64;
+    zr__gi_node *v = realloc(c->nodes[d], cap * sizeof *v);
+    if (!v)
+      return -1;
+    c->nodes[d] = v;
+    c->cap_nodes[d] = cap;
+  }
+  zr__gi_node *n = &c->nodes[d][c->n_nodes[d]];
+  n->c = centre;
+  n->h = h;
+  for (int k = 0; k < 8; k++)
+    n->child[k] = -1;
+  n->first = -1;
+  return (int32_t)c->n_nodes[d]++;
+}
+
+void zr__gi_cache_extent(zr_gi_cache *c) {
+  const zr_scene *s = c->scene;
+  zr_vec3 lo = s->camera.location, hi = lo;
+  for (size_t i = 0; i < s->n_primitives; i++) {
+    zr_vec3 a, b;
+    if (!zr__object_bounds(s->primitives[i], &a, &b))
+      continue; /* infinite: records outside the root stay at the root */
+    if (!(isfinite(a.x) && isfinite(a.y) && isfinite(a.z) &&
+          isfinite(b.x) && isfinite(b.y) && isfinite(b.z)))
+      continue;
+    lo = zr_v3(fmin(lo.x, a.x), fmin(lo.y, a.y), fmin(lo.z, a.z));
+    hi = zr_v3(fmax(hi.x, b.x), fmax(hi.y, b.y), fmax(hi.z, b.z));
+  }
+  c->root_c = zr_v3_scale(zr_v3_add(lo, hi), 0.5);
+  double h = fmax(hi.x - lo.x, fmax(hi.y - lo.y, hi.z - lo.z));
+  c->root_h = h > 0.0 ? h : 1.0; /* twice the half extent */
+}
+
+bool zr__gi_cache_add(zr_gi_cache *c, const zr__gi_record *r) {
+  int d = r->depth;
+  if (d < 0 || d >= 20)
+    return false;
+  if (c->n_nodes[d] == 0 && new_node(c, d, c->root_c, c->root_h) < 0)
+    return false;
+  size_t idx = c->records.n;
+  if (!zr__gi_list_push(&c->records, r))
+    return false;
+  if (c->next_cap < c->records.cap) {
+    int32_t *v = realloc(c->next, c->records.cap * sizeof *v);
+    if (!v) {
+      c->records.n--;
+      return false;
+    }
+    c->next = v;
+    c->next_cap = c->records.cap;
+  }
+  /* Down to the smallest node whose half-size is still twice the
+     record's farthest reach (error_bound R), while the point is inside
+     it; a record outside the root stays at the root.  A lookup then
+     visits a node when the point lies within 1.5 half-sizes of its
+     centre: at most two nodes a side at each level. */
+  double reach = c->params.error_bound * ldexp(r->r, d); /* see blend */
+  int32_t at = 0;
+  zr_vec3 q = r->p;
+  const zr__gi_node *root = &c->nodes[d][0];
+  bool inside = fabs(q.x - root->c.x) <= root->h &&
+                fabs(q.y - root->c.y) <= root->h &&
+                fabs(q.z - root->c.z) <= root->h;
+  for (int level = 0; inside && level < MAX_LEVEL; level++) {
+    zr__gi_node *n = &c->nodes[d][at];
+    double hc = 0.5 * n->h;
+    if (hc < 2.0 * reach)
+      break;
+    int k = (q.x > n->c.x) | ((q.y > n->c.y) << 1) | ((q.z > n->c.z) << 2);
+    if (n->child[k] < 0) {
+      zr_vec3 cc = zr_v3(n->c.x + (k & 1 ? hc : -hc),
+                         n->c.y + (k & 2 ? hc : -hc),
+                         n->c.z + (k & 4 ? hc : -hc));
+      int32_t child = new_node(c, d, cc, hc);
+      if (child < 0)
+        return false;
+      c->nodes[d][at].child[k] = child;
+    }
+    at = c->nodes[d][at].child[k];
+  }
+  c->next[idx] = c->nodes[d][at].first;
+  c->nodes[d][at].first = (int32_t)idx;
+  return true;
+}
+
+/* ---- interpolation ----------------------------------------------- */
+
+typedef struct blend {
+  zr_vec3 p, n;
+  double a;        /* the error bound in force */
+  double sum[3];
+  double wsum;
+  int count;
+} blend;
+
+static void blend_record(blend *b, const zr__gi_record *r) {
+  zr_vec3 d = zr_v3_sub(b->p, r->p);
+  double reach = b->a * r->r;
+  if (!(zr_v3_dot(d, d) < reach * reach))
+    return; /* the cheap test first: most records are far */
+  double nn = zr_v3_dot(b->n, r->n);
+  if (!(nn > 0.0))
+    return;
+  /* A record in front of the point (the point lies below the record's
+     plane) sees light the point may not: Ward's test. */
+  if (zr_v3_dot(d, zr_v3_scale(zr_v3_add(b->n, r->n), 0.5)) < -0.05 * r->r)
+    return;
+  double eps = zr_v3_len(d) / r->r + sqrt(fmax(0.0, 1.0 - nn));
+  if (!(eps < b->a))
+    return;
+  double w = 1.0 / fmax(eps, 1e-9) - 1.0 / b->a;
+  zr_vec3 axis = zr_v3_cross(r->n, b->n);
+  for (int c = 0; c < 3; c++) {
+    double v = r->e[c] + zr_v3_dot(r->grad_r[c], axis) +
+               zr_v3_dot(r->grad_t[c], d);
+    /* Gradients extrapolate; they must not turn light negative or
+       more than double it. */
+    v = fmin(fmax(v, 0.0), 2.0 * r->e[c] + 1e-12);
+    b->sum[c] += w * v;
+  }
+  b->wsum += w;
+  b->count++;
+}
+
+static void blend_tree(blend *b, const zr_gi_cache *c, int d, int32_t at) {
+  const zr__gi_node *n = &c->nodes[d][at];
+  for (int32_t i = n->first; i >= 0; i = c->next[i])
+    blend_record(b, &c->records.v[i]);
+  for (int k = 0; k < 8; k++) {
+    int32_t ch = n->child[k];
+    if (ch < 0)
+      continue;
+    const zr__gi_node *m = &c->nodes[d][ch];
+    double reach = 1.5 * m->h; /* the box, grown by its records' reach */
+    if (fabs(b->p.x - m->c.x) <= reach && fabs(b->p.y - m->c.y) <= reach &&
+        fabs(b->p.z - m->c.z) <= reach)
+      blend_tree(b, c, d, ch);
+  }
+}
+
+/* ---- gathering a record ------------------------------------------ */
+
+/* Per-thread state while a pixel is traced: the records it made. */
+typedef struct gi_scratch {
+  zr__gi_list local;
+  uint64_t rays;
+} gi_scratch;
+
+static bool cache_irradiance(const zr_indirect *self,
+                             const zr_tracer *tracer,
+                             const zr_indirect_query *q, zr_rgb *out);
+
+static uint64_t mix64(uint64_t x) {
+  x ^= x >> 30;
+  x *= 0xbf58476d1ce4e5b9u;
+  x ^= x >> 27;
+  x *= 0x94d049bb133111ebu;
+  x ^= x >> 31;
+  return x;
+}
+
+/* A seed from the point's bits and the depth. */
+static uint64_t point_seed(zr_vec3 p, int depth) {
+  double v[3] = {p.x, p.y, p.z};
+  uint64_t h = 0x243f6a8885a308d3u + (uint64_t)depth;
+  for (int i = 0; i < 3; i++) {
+    uint64_t bits;
+    memcpy(&bits, &v[i], sizeof bits);
+    h = mix64(h ^ bits);
+  }
+  return h;
+}
+
+static double next_uniform(uint64_t *state) {
+  *state += 0x9e3779b97f4a7c15u;
+  return (double)(mix64(*state) >> 11) * (1.0 / 9007199254740992.0);
+}
+
+/* Two unit vectors that make an orthonormal frame with n. */
+static void frame(zr_vec3 n, zr_vec3 *t1, zr_vec3 *t2) {
+  zr_vec3 a = fabs(n.x) < 0.6 ? zr_v3(1, 0, 0)
+              : fabs(n.y) < 0.6 ? zr_v3(0, 1, 0)
+                                : zr_v3(0, 0, 1);
+  *t1 = zr_v3_norm(zr_v3_cross(a, n));
+  *t2 = zr_v3_cross(n, *t1);
+}
+
+/* The light a sample's colour stands for, limited by max_sample. */
+static zr_rgb limit_sample(const zr_gi_params *gp, zr_rgb l) {
+  double m = fmax(l.r, fmax(l.g, l.b));
+  if (gp->max_sample > 0.0 && m > gp->max_sample)
+    l = zr_rgb_scale(l, gp->max_sample / m);
+  return l;
+}
+
+/*
+ * Gathers a new record at q for depth d: M x N cosine-weighted,
+ * stratified rays, E, R and the gradients of Ward and Heckbert (1992,
+ * equations for the cosine-weighted case; everything is divided by pi
+ * to keep mean radiance).
+ */
+static void gather(const zr_gi_cache *c, const zr_tracer *tracer,
+                   const zr_indirect_query *q, zr_vec3 n, gi_scratch *sc,
+                   zr__gi_record *rec) {
+  const zr_gi_params *gp = &c->params;
+  int d = tracer->gi_depth;
+  /* Each depth takes half the rays of the one above, at least 16:
+     povray's statistics for radiosity/cornell.pov (count 200) show 200
+     rays a record at depth 0 and 94 on average at depths 1 and 2. */
+  double count = fmax(fmin(16.0, gp->count), ldexp(gp->count, -d));
+  int m = (int)floor(sqrt(count / M_PI) + 0.5);
+  m = m < 1 ? 1 : m > MAX_BANDS ? MAX_BANDS : m;
+  int nn = (int)floor(count / m + 0.5);
+  nn = nn < 3 ? 3 : nn > MAX_SECTORS ? MAX_SECTORS : nn;
+  zr_vec3 t1, t2;
+  frame(n, &t1, &t2);
+  uint64_t rng = point_seed(q->p, d);
+  double u0 = next_uniform(&rng); /* one jitter of the whole pattern */
+  double v0 = next_uniform(&rng);
+
+  zr_indirect deeper = {cache_irradiance, c, sc};
+  zr_tracer sub = *tracer;
+  sub.indirect = &deeper;
+  sub.skip_direct = false;
+  sub.gi_depth = d + 1;
+  sub.path = q->path;
+  sub.hide = 0;
+  sub.no_media = tracer->no_media || !gp->media;
+  zr_vec3 origin = zr_v3_madd(q->p, q->n_geo, zr__surface_offset(q->p));
+  if (zr_v3_dot(q->n_geo, n) < 0.0)
+    origin = zr_v3_madd(q->p, n, zr__surface_offset(q->p));
+
+  /* Each depth's gather has its own arrays: gathering recurses. */
+  zr_rgb *lum = malloc((size_t)(m * nn) * sizeof *lum);
+  double *dist = malloc((size_t)(m * nn) * sizeof *dist);
+  if (!lum || !dist) {
+    free(lum);
+    free(dist);
+    memset(rec, 0, sizeof *rec);
+    rec->p = q->p;
+    rec->n = n;
+    rec->depth = d;
+    rec->r = 1e-9; /* out of memory: a dark record nobody reuses */
+    return;
+  }
+  double sum[3] = {0, 0, 0}, inv_r = 0.0;
+  for (int j = 0; j < m; j++)
+    for (int k = 0; k < nn; k++) {
+      double s2 = (j + u0) / m;
+      double phi = 2.0 * M_PI * (k + v0) / nn;
+      double st = sqrt(s2), ct = sqrt(fmax(0.0, 1.0 - s2));
+      zr_vec3 dir = zr_v3_add(
+          zr_v3_add(zr_v3_scale(t1, st * cos(phi)),
+                    zr_v3_scale(t2, st * sin(phi))),
+          zr_v3_scale(n, ct));
+      zr_ray ray = {origin, dir};
+      double t = INFINITY;
+      zr_rgb l;
+      if (gp->sky_only) {
+        zr_hit hit;
+        if (zr__bvh_nearest(c->scene->bvh, &ray, 0.0, INFINITY, &hit)) {
+          t = hit.t;
+          l = zr_rgb3(0, 0, 0);
+        } else {
+          l = zr__sky_colour(c->scene, dir);
+        }
+      } else {
+        l = zr__trace_ray_hit(&sub, &ray, 1, 1.0, NULL, &t);
+      }
+      l = limit_sample(gp, l);
+      int i = j * nn + k;
+      lum[i] = l;
+      dist[i] = t;
+      sum[0] += l.r, sum[1] += l.g, sum[2] += l.b;
+      if (isfinite(t) && t > 0.0)
+        inv_r += 1.0 / t;
+    }
+  if (sc)
+    sc->rays += (uint64_t)(m * nn);
+  int total = m * nn;
+  memset(rec, 0, sizeof *rec);
+  rec->p = q->p;
+  rec->n = n;
+  rec->depth = d;
+  for (int ch = 0; ch < 3; ch++)
+    rec->e[ch] = sum[ch] / total;
+
+  /* The reuse radius: harmonic mean distance, clamped by the reuse
+     bounds times the distance from the eye. */
+  double r = inv_r > 0.0 ? total / inv_r : INFINITY;
+  double eye = q->path > 0.0 ? q->path : 1.0;
+  double rmin = gp->minimum_reuse * eye, rmax = gp->maximum_reuse * eye;
+  if (rmin > rmax)
+    rmin = rmax;
+  r = fmin(fmax(r, rmin), rmax);
+  rec->r = r > 0.0 ? r : 1e-9;
+
+  /* Gradients (Ward and Heckbert 1992).  Checked against the exact
+   irradiance of a point on a floor beside a black wall under a white
+   sky (the polygon form factor, differentiated numerically): the
+   rotational gradient with +tan(theta) agrees to 2% in both
+   directions of tilt; the translational terms as printed, divided by
+   pi for mean radiance, came out pi/2 too steep at every distance
+   tried, hence 2 / pi^2; they then agree to about 20%, the sample
+   noise of 1000 rays. */
+  for (int k = 0; k < nn; k++) {
+    double phi = 2.0 * M_PI * (k + v0) / nn;
+    double phi_m = 2.0 * M_PI * k / nn;
+    zr_vec3 uk = zr_v3_add(zr_v3_scale(t1, cos(phi)),
+                           zr_v3_scale(t2, sin(phi)));
+    zr_vec3 vk = zr_v3_add(zr_v3_scale(t1, -sin(phi)),
+                           zr_v3_scale(t2, cos(phi)));
+    zr_vec3 vkm = zr_v3_add(zr_v3_scale(t1, -sin(phi_m)),
+                            zr_v3_scale(t2, cos(phi_m)));
+    int kp = (k + nn - 1) % nn;
+    for (int j = 0; j < m; j++) {
+      int i = j * nn + k;
+      double s2 = (j + u0) / m;
+      double st = sqrt(s2), ct = sqrt(fmax(0.0, 1.0 - s2));
+      double tan_t = st / fmax(ct, 1e-6);
+      double l[3] = {lum[i].r, lum[i].g, lum[i].b};
+      for (int ch = 0; ch < 3; ch++)
+        rec->grad_r[ch] = zr_v3_madd(rec->grad_r[ch], vk,
+                                     tan_t * l[ch] / total);
+      /* Between bands j - 1 and j along sector k. */
+      if (j > 0) {
+        int im = (j - 1) * nn + k;
+        double sm2 = (double)j / m;
+        double sm = sqrt(sm2), cm2 = 1.0 - sm2;
+        double rr = fmin(dist[i], dist[im]);
+        if (isfinite(rr) && rr > 0.0) {
+          double f = (2.0 * M_PI / nn) * sm * cm2 / rr * TRANS_SCALE;
+          double lm[3] = {lum[im].r, lum[im].g, lum[im].b};
+          for (int ch = 0; ch < 3; ch++)
+            rec->grad_t[ch] = zr_v3_madd(rec->grad_t[ch], uk,
+                                         f * (l[ch] - lm[ch]));
+        }
+      }
+      /* Between sectors k - 1 and k in band j. */
+      {
+        int ik = j * nn + kp;
+        double cm = sqrt(fmax(0.0, 1.0 - (double)j / m));
+        double cp = sqrt(fmax(0.0, 1.0 - (double)(j + 1) / m));
+        double rr = fmin(dist[i], dist[ik]);
+        if (isfinite(rr) && rr > 0.0 && st > 1e-6) {
+          double f = (cm - cp) / (st * rr) * TRANS_SCALE;
+          double lk[3] = {lum[ik].r, lum[ik].g, lum[ik].b};
+          for (int ch = 0; ch < 3; ch++)
+            rec->grad_t[ch] = zr_v3_madd(rec->grad_t[ch], vkm,
+                                         f * (l[ch] - lk[ch]));
+        }
+      }
+    }
+  }
+  /* The translational gradient may not change the value by more than
+     itself across the reuse radius (the clamped R can be far above the
+     distance of a close occluder, where the gradient is steep):
+     Krivanek et al.'s gradient limit, |grad| R <= E. */
+  for (int ch = 0; ch < 3; ch++) {
+    double g = zr_v3_len(rec->grad_t[ch]);
+    if (g * rec->r > rec->e[ch])
+      rec->grad_t[ch] = zr_v3_scale(rec->grad_t[ch],
+                                    g > 0.0 ? rec->e[ch] / (g * rec->r) : 0.0);
+  }
+  free(lum);
+  free(dist);
+}
+
+/* What a depth hands upwards: grey-shifted and brightened. */
+static zr_rgb finish_light(const zr_gi_params *gp, const double e[3]) {
+  double grey = (e[0] + e[1] + e[2]) / 3.0, g = gp->gray_threshold;
+  return zr_rgb3(gp->brightness * (g * grey + (1.0 - g) * e[0]),
+                 gp->brightness * (g * grey + (1.0 - g) * e[1]),
+                 gp->brightness * (g * grey + (1.0 - g) * e[2]));
+}
+
+static bool cache_irradiance(const zr_indirect *self,
+                             const zr_tracer *tracer,
+                             const zr_indirect_query *q, zr_rgb *out) {
+  const zr_gi_cache *c = self->provider;
+  const zr_gi_params *gp = &c->params;
+  int d = tracer->gi_depth;
+  if (d >= gp->recursion_limit || d >= 20)
+    return false; /* the last depth: no indirect light */
+  gi_scratch *sc = self->scratch;
+  blend b;
+  memset(&b, 0, sizeof b);
+  b.p = q->p;
+  b.n = gp->normal ? q->n : q->n_geo;
+  if (zr_v3_dot(b.n, q->n) < 0.0)
+    b.n = zr_v3_neg(b.n);
+  /* The pretrace lowers the bound (low_error_factor) and wants
+     nearest_count records; the final pass takes any. */
+  bool pretrace = c->pretracing == 1;
+  b.a = gp->error_bound * (pretrace ? gp->low_error_factor : 1.0);
+  /* Deeper bounces are seen only through the diffuse blur of the ones
+     above: each depth doubles the bound and takes one record where
+     POV-Ray's nearest_count asks several at the first (zRcube's
+     choice, after Ward's relaxed accuracy for interreflected light;
+     bench/gi.sh measures what it costs in SSIM against povray). */
+  for (int k = 0; k < d; k++)
+    b.a *= 2.0;
+  if (d < 20 && c->n_nodes[d] > 0)
+    blend_tree(&b, c, d, 0);
+  if (sc)
+    for (size_t i = 0; i < sc->local.n; i++)
+      if (sc->local.v[i].depth == d)
+        blend_record(&b, &sc->local.v[i]);
+  int want = d == 0 && (pretrace || (c->pretracing == 2 &&
+                                     gp->always_sample))
+                 ? gp->nearest_count
+                 : 1;
+  if (b.count < want) {
+    gi_scratch tmp;
+    memset(&tmp, 0, sizeof tmp);
+    gi_scratch *use = sc ? sc : &tmp;
+    zr__gi_record rec;
+    gather(c, tracer, q, b.n, use, &rec);
+    if (!zr__gi_list_push(&use->local, &rec)) {
+      /* Out of memory: use the record once without keeping it. */
+    }
+    zr__gi_list_free(&tmp.local);
+    blend_record(&b, &rec);
+    if (!(b.wsum > 0.0)) {
+      *out = finish_light(gp, rec.e);
+      return true;
+    }
+  }
+  if (!(b.wsum > 0.0))
+    return false;
+  double e[3] = {b.sum[0] / b.wsum, b.sum[1] / b.wsum, b.sum[2] / b.wsum};
+  *out = finish_light(gp, e);
+  return true;
+}
+
+/* ---- the public side ---------------------------------------------- */
+
+const zr_indirect *zr__gi_indirect_for(const zr_gi_cache *cache,
+                                       const zr_scene *scene) {
+  return cache && cache->scene == scene ? &cache->indirect : NULL;
+}
+
+static zr_status check_params(zr_context *ctx, const zr_gi_params *p) {
+  const char *what = NULL;
+  if (p->count < 1 || p->count > 1000000)
+    what = "count must be 1 to 1000000";
+  else if (p->recursion_limit < 1 || p->recursion_limit > 20)
+    what = "recursion_limit must be 1 to 20";
+  else if (p->nearest_count < 1 || p->nearest_count > 20)
+    what = "nearest_count must be 1 to 20";
+  else if (!(p->error_bound > 0.0) || !isfinite(p->error_bound))
+    what = "error_bound must be a number > 0";
+  else if (!(p->low_error_factor > 0.0 && p->low_error_factor <= 1.0))
+    what = "low_error_factor must be in (0, 1]";
+  else if (!(p->gray_threshold >= 0.0 && p->gray_threshold <= 1.0))
+    what = "gray_threshold must be in [0, 1]";
+  else if (!(p->brightness >= 0.0) || !isfinite(p->brightness))
+    what = "brightness must be a number >= 0";
+  else if (!(p->minimum_reuse >= 0.0 && p->maximum_reuse > 0.0))
+    what = "minimum_reuse must be >= 0 and maximum_reuse > 0";
+  else if (!(p->pretrace_start > 0.0 && p->pretrace_start <= 1.0 &&
+             p->pretrace_end > 0.0 && p->pretrace_end <= 1.0))
+    what = "pretrace_start and pretrace_end must be in (0, 1]";
+  if (!what)
+    return ZR_OK;
+  return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, NULL,
+                  "irradiance cache: %s", what);
+}
+
+ZR_API zr_status zr_gi_cache_new(zr_context *ctx, const zr_scene *scene,
+                                 const zr_gi_params *params,
+                                 zr_gi_cache **out) {
+  if (!scene || !out)
+    return ZR_EINVAL;
+  *out = NULL;
+  zr_gi_params defaults;
+  if (!params) {
+    zr_gi_params_init(&defaults, scene);
+    params = &defaults;
+  }
+  zr_status s = check_params(ctx, params);
+  if (s != ZR_OK)
+    return s;
+  zr_gi_cache *c = calloc(1, sizeof *c);
+  if (!c)
+    return ZR_ENOMEM;
+  c->scene = scene;
+  c->params = *params;
+  c->indirect.irradiance = cache_irradiance;
+  c->indirect.provider = c;
+  c->indirect.scratch = NULL;
+  zr__gi_cache_extent(c);
+  *out = c;
+  return ZR_OK;
+}
+
+ZR_API void zr_gi_cache_free(zr_gi_cache *c) {
+  if (!c)
+    return;
+  zr__gi_list_free(&c->records);
+  free(c->next);
+  for (int d = 0; d < 20; d++)
+    free(c->nodes[d]);
+  free(c);
+}
+
+ZR_API void zr_gi_cache_get_stats(const zr_gi_cache *c, zr_gi_stats *st) {
+  memset(st, 0, sizeof *st);
+  if (!c)
+    return;
+  st->records = c->records.n;
+  for (size_t i = 0; i < c->records.n; i++)
+    if (c->records.v[i].depth == 0)
+      st->records_depth0++;
+  st->pretrace_passes = c->pretrace_passes;
+  st->sample_rays = c->sample_rays;
+}
+
+/* One batch of a pretrace pass: its pixels and what each made. */
+typedef struct batch_job {
+  const zr_gi_cache *cache;
+  const zr_render_params *render;
+  const zr_media *camera_media;
+  const uint32_t *pixels;
+  gi_scratch *slots;
+} batch_job;
+
+static void trace_batch(void *user, size_t begin, size_t end, int worker) {
+  (void)worker;
+  batch_job *job = user;
+  const zr_gi_cache *c = job->cache;
+  for (size_t i = begin; i < end; i++) {
+    gi_scratch *sc = &job->slots[i];
+    zr_indirect ind = {cache_irradiance, c, sc};
+    zr_render_stats stats;
+    memset(&stats, 0, sizeof stats);
+    zr_tracer tr;
+    memset(&tr, 0, sizeof tr);
+    tr.scene = c->scene;
+    tr.stats = &stats;
+    tr.indirect = &ind;
+    tr.hide = ZR_HIDE_IMAGE;
+    tr.skip_direct = true;
+    int w = job->render->width, h = job->render->height;
+    uint32_t px = job->pixels[i];
+    double x = px % (uint32_t)w + 0.5, y = px / (uint32_t)w + 0.5;
+    zr_ray ray = zr__camera_ray(&c->scene->camera, w, h, x, y);
+    if (zr_v3_len(ray.dir) > 0.0)
+      (void)zr__trace_ray(&tr, &ray, 1, 1.0, job->camera_media);
+  }
+}
+
+/* The pixels at the centres of a mosaic of blocks of side `block`. */
+static size_t mosaic(int w, int h, double block, uint32_t *out) {
+  size_t n = 0;
+  int nx = (int)ceil(w / block), ny = (int)ceil(h / block);
+  for (int j = 0; j < ny; j++)
+    for (int i = 0; i < nx; i++) {
+      int x = (int)floor((i + 0.5) * block), y = (int)floor((j + 0.5) * block);
+      if (x >= w || y >= h)
+        continue;
+      out[n++] = (uint32_t)y * (uint32_t)w + (uint32_t)x;
+    }
+  return n;
+}
+
+static zr_status run_pass(zr_gi_cache *c, const zr_render_params *render,
+                          const zr_media *camera_media,
+                          const uint32_t *pixels, size_t n) {
+  gi_scratch slots[BATCH];
+  for (size_t at = 0; at < n; at += BATCH) {
+    size_t m = n - at < BATCH ? n - at : BATCH;
+    memset(slots, 0, sizeof slots);
+    batch_job job = {c, render, camera_media, pixels + at, slots};
+    zr__rad_parallel(c->params.threads, m, 1, trace_batch, &job);
+    zr_status s = ZR_OK;
+    for (size_t i = 0; i < m; i++) {
+      for (size_t k = 0; k < slots[i].local.n && s == ZR_OK; k++)
+        if (!zr__gi_cache_add(c, &slots[i].local.v[k]))
+          s = ZR_ENOMEM;
+      c->sample_rays += slots[i].rays;
+      zr__gi_list_free(&slots[i].local);
+    }
+    if (s != ZR_OK)
+      return s;
+  }
+  c->pretrace_passes++;
+  return ZR_OK;
+}
+
+ZR_API zr_status zr_gi_cache_pretrace(zr_gi_cache *c,
+                                      const zr_render_params *render) {
+  if (!c || !render || render->width <= 0 || render->height <= 0)
+    return ZR_EINVAL;
+  if (!c->scene->bvh && c->scene->n_primitives > 0)
+    return ZR_ESCENE;
+  int w = render->width, h = render->height;
+  uint32_t *pixels = malloc((size_t)w * (size_t)h * sizeof *pixels);
+  if (!pixels)
+    return ZR_ENOMEM;
+  zr_media camera_media;
+  zr__camera_media(c->scene, &camera_media);
+  zr_status s = ZR_OK;
+  c->pretracing = 1;
+  /* Blocks of pretrace_start of the image width, halved until they
+     are pretrace_end (POV-Ray's mosaic preview). */
+  double block = c->params.pretrace_start * w;
+  double last = c->params.pretrace_end * w;
+  for (;;) {
+    double b = fmax(block, 1.0);
+    size_t n = mosaic(w, h, b, pixels);
+    s = run_pass(c, render, &camera_media, pixels, n);
+    if (s != ZR_OK || b <= 1.0 || block * 0.5 < last * (1.0 - 1e-9))
+      break;
+    block *= 0.5;
+  }
+  if (s == ZR_OK) {
+    /* The final pass's new samples, gathered before it at every pixel
+       with the full error_bound, in batches as above, so the final
+       pass only reads.  povray 3.7 adds records in its final pass too
+       (radiosity2.pov: 650 in the pretrace, 3121 in the final pass,
+       always_sample off); with always_sample on a point there wants
+       nearest_count records, as in the pretrace. */
+    c->pretracing = 2;
+    size_t n = mosaic(w, h, 1.0, pixels);
+    s = run_pass(c, render, &camera_media, pixels, n);
+  }
+  c->pretracing = 0;
+  free(pixels);
+  return s;
+}

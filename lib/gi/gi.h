@@ -1,0 +1,73 @@
+/*
+ * gi.h - the global illumination models other than hierarchical
+ * radiosity: Ward's irradiance cache for POV-Ray's radiosity block
+ * (cache.c, cachefile.c), sky and background as light (the cache's
+ * rays that escape see them), and the choice of model per scene
+ * (choose.c).  The tracer reaches a model only through zr_indirect
+ * (lib/trace/shade.h).
+ */
+#ifndef ZR_GI_GI_H
+#define ZR_GI_GI_H
+
+#include <stdint.h>
+
+#include "scene/scene.h"
+#include "trace/shade.h"
+
+/* One cached irradiance value (Ward, Rubinstein and Clear 1988) with
+   its gradients (Ward and Heckbert 1992), per colour channel. */
+typedef struct zr__gi_record {
+  zr_vec3 p, n;      /* where it was gathered; unit normal */
+  double e[3];       /* mean incoming radiance (irradiance / pi) */
+  zr_vec3 grad_r[3]; /* rotational gradient of e */
+  zr_vec3 grad_t[3]; /* translational gradient of e */
+  double r;          /* reuse radius: clamped harmonic mean distance */
+  int32_t depth;     /* the bounce it serves: 0 for camera hits */
+} zr__gi_record;
+
+/* A growing list of records. */
+typedef struct zr__gi_list {
+  zr__gi_record *v;
+  size_t n, cap;
+} zr__gi_list;
+
+bool zr__gi_list_push(zr__gi_list *l, const zr__gi_record *r);
+void zr__gi_list_free(zr__gi_list *l);
+
+/* The records of one bounce depth, indexed by an octree whose node of
+   half-size h holds records with reuse reach at most h. */
+typedef struct zr__gi_node {
+  zr_vec3 c;
+  double h;
+  int32_t child[8]; /* -1: none */
+  int32_t first;    /* first record (index into the cache), -1 */
+} zr__gi_node;
+
+struct zr_gi_cache {
+  zr_indirect indirect;    /* what the final pass hands the tracer */
+  const zr_scene *scene;
+  zr_gi_params params;
+  zr__gi_list records;     /* all depths, in the order they joined */
+  int32_t *next;           /* the next record of the same node */
+  size_t next_cap;
+  /* One octree per depth: nodes[d], roots are node 0 of each. */
+  zr__gi_node *nodes[20];
+  size_t n_nodes[20], cap_nodes[20];
+  zr_vec3 root_c;
+  double root_h;
+  /* The camera at the pretrace's image size, for reuse distances. */
+  int pretrace_passes;
+  uint64_t sample_rays;
+  int pretracing;          /* 1 while the pretrace runs */
+};
+
+/* Whether a sky_sphere or a background that is not black lights the
+   scene (lib/gi/choose.c). */
+bool zr__gi_has_sky(const zr_scene *scene);
+
+/* Adds the record to the cache and its depth's octree. */
+bool zr__gi_cache_add(zr_gi_cache *cache, const zr__gi_record *r);
+/* The octree's extent for scene: its bounds and camera, doubled. */
+void zr__gi_cache_extent(zr_gi_cache *cache);
+
+#endif /* ZR_GI_GI_H */

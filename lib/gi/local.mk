@@ -1,0 +1,20 @@
+# lib/gi/local.mk - global illumination other than hierarchical
+# radiosity: the irradiance cache (POV-Ray's radiosity block), the sky
+# as light, and the choice of model per scene.
+lib_libzrcube_la_SOURCES += \
+	lib/gi/gi.h lib/gi/cache.c lib/gi/cachefile.c lib/gi/choose.c
+
+check_PROGRAMS += tests/test_gi
+TESTS += tests/test_gi
+tests_test_gi_SOURCES = tests/test_gi.c \
+	tests/parse_fixture.c tests/parse_fixture.h bin/options.c bin/options.h
+tests_test_gi_CPPFLAGS = $(TEST_CPPFLAGS) -I$(top_srcdir)/bin
+tests_test_gi_LDADD = $(TEST_LDADD)
+tests_test_gi_LDFLAGS = -static
+$(tests_test_gi_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
+
+# The irradiance cache end to end: threads, ranks, save and load, the
+# model options (bin/zrcube).
+TESTS += tests/test_gi_cli.sh
+EXTRA_DIST += tests/test_gi_cli.sh bench/gi.sh scenes/sky_outdoor.pov \
+	tests/ref/sky_outdoor.png

@@ -1,0 +1,467 @@
+/*
+ * test_gi.c - the irradiance cache and the choice of model (lib/gi,
+ * issue 11):
+ *   - the furnace: a diffuse sphere inside a uniform sky of radiance L
+ *     receives irradiance pi L, so it shows albedo * diffuse * L; every
+ *     sample ray reaches the sky, so the value is exact (1e-6);
+ *   - POV-Ray's ambient rule under radiosity, measured on povray 3.7:
+ *     a sphere of ambient 0.3 diffuse 0.6 under a white sky renders 0.9
+ *     without #version, 0.6 with "#version 3.7;" (ambient dropped), and
+ *     emission always adds;
+ *   - the cache is the same bytes for 1 and 3 threads, and so is the
+ *     picture; it saves and loads to the same records and picture, and
+ *     a cut file is refused with a message;
+ *   - POV-Ray's items reach zr_gi_params, and bad values are refused;
+ *   - zr_gi_choose() follows the rule of zrcube(1), and the command
+ *     line's --gi, --no-radiosity, +Q and Radiosity= set what is asked.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "options.h"
+#include "parse_fixture.h"
+#include "zrcube.h"
+
+#define W 24
+#define H 18
+
+/* Renders scene with a cache built on threads threads; rgb gets W*H*3. */
+static zr_gi_cache *render_cached_sky(const zr_scene *scene, int threads,
+                                      int sky_only, float *rgb) {
+  zr_gi_params gp;
+  zr_gi_params_init(&gp, scene);
+  gp.threads = threads;
+  gp.sky_only = sky_only;
+  zr_gi_cache *c = NULL;
+  assert_int_equal(zr_gi_cache_new(NULL, scene, &gp, &c), ZR_OK);
+  zr_render_params rp;
+  zr_render_params_init(&rp);
+  rp.width = W;
+  rp.height = H;
+  assert_int_equal(zr_gi_cache_pretrace(c, &rp), ZR_OK);
+  rp.gi_cache = c;
+  assert_int_equal(zr_render_image(scene, &rp, rgb, NULL), ZR_OK);
+  return c;
+}
+
+static zr_gi_cache *render_cached(const zr_scene *scene, int threads,
+                                  float *rgb) {
+  return render_cached_sky(scene, threads, 0, rgb);
+}
+
+static const float *centre(const float *rgb) {
+  return rgb + 3 * ((H / 2) * W + W / 2);
+}
+
+#define FURNACE(sky, version, finish)                                   \
+  version "global_settings { radiosity { } }"                           \
+  "camera { location <0, 0, -4> look_at 0 angle 40 }"                  \
+  sky "sphere { 0, 1 pigment { rgb <1, 0.5, 0.25> } finish { " finish   \
+  " } }"
+
+static void test_gi_furnace(void **state) {
+  fixture *f = *state;
+  float rgb[W * H * 3];
+  const zr_scene *s = good(
+      f, FURNACE("sky_sphere { pigment { rgb 0.8 } }", "",
+                 "ambient 0 diffuse 0.6"));
+  zr_gi_cache_free(render_cached(s, 1, rgb));
+  const float *c = centre(rgb);
+  /* diffuse * pigment * L: 0.6 * <1, 0.5, 0.25> * 0.8 */
+  assert_true(fabs(c[0] - 0.48) < 1e-6);
+  assert_true(fabs(c[1] - 0.24) < 1e-6);
+  assert_true(fabs(c[2] - 0.12) < 1e-6);
+  /* The sky-only cache (the sky's light beside a hierarchical solution)
+     gives the same where only the sky is seen. */
+  zr_gi_cache_free(render_cached_sky(s, 1, 1, rgb));
+  assert_true(fabs(centre(rgb)[0] - 0.48) < 1e-6);
+  /* A background lights as a sky does; and brightness scales it. */
+  s = good(f, "global_settings { radiosity { brightness 0.5 } }"
+              "camera { location <0, 0, -4> look_at 0 angle 40 }"
+              "background { rgb 1 }"
+              "sphere { 0, 1 pigment { rgb 1 } finish { ambient 0 "
+              "diffuse 0.6 } }");
+  zr_gi_cache_free(render_cached(s, 1, rgb));
+  assert_true(fabs(centre(rgb)[0] - 0.3) < 1e-6);
+}
+
+static void test_gi_ambient_rule(void **state) {
+  fixture *f = *state;
+  float rgb[W * H * 3];
+  const zr_scene *s = good(f, FURNACE("background { rgb 1 }", "",
+                                      "ambient 0.3 diffuse 0.6"));
+  zr_gi_cache_free(render_cached(s, 1, rgb));
+  assert_true(fabs(centre(rgb)[0] - 0.9) < 1e-6);
+  s = good(f, FURNACE("background { rgb 1 }", "#version 3.7;",
+                      "ambient 0.3 diffuse 0.6"));
+  zr_gi_cache_free(render_cached(s, 1, rgb));
+  assert_true(fabs(centre(rgb)[0] - 0.6) < 1e-6);
+  s = good(f, FURNACE("background { rgb 1 }", "#version 3.7;",
+                      "ambient 0.3 emission 0.2 diffuse 0.6"));
+  zr_gi_cache_free(render_cached(s, 1, rgb));
+  assert_true(fabs(centre(rgb)[0] - 0.8) < 1e-6);
+}
+
+/* A scene with interreflection, a sky and a light: records at two
+   depths, gradients in use. */
+#define ROOM                                                            \
+  "#version 3.7; global_settings { radiosity { count 20 } }"           \
+  "camera { location <0, 2, -6> look_at <0, 1, 0> }"                   \
+  "light_source { <4, 8, -3> rgb 1 }"                                  \
+  "sky_sphere { pigment { gradient y color_map { [0 rgb <0.8, 0.9, 1>]" \
+  " [1 rgb <0.2, 0.4, 0.9>] } } }"                                     \
+  "plane { y, 0 pigment { rgb 0.7 } }"                                 \
+  "box { <-2, 0, 1>, <2, 3, 1.5> pigment { rgb <0.9, 0.3, 0.2> } }"    \
+  "sphere { <0.5, 0.8, -0.5>, 0.8 pigment { rgb <0.2, 0.8, 0.3> } }"
+
+static void test_gi_threads_same_bytes(void **state) {
+  fixture *f = *state;
+  static float a[W * H * 3], b[W * H * 3];
+  const zr_scene *s = good(f, ROOM);
+  zr_gi_cache *c1 = render_cached(s, 1, a);
+  zr_gi_cache *c3 = render_cached(s, 3, b);
+  assert_memory_equal(a, b, sizeof a);
+  zr_gi_stats s1, s3;
+  zr_gi_cache_get_stats(c1, &s1);
+  zr_gi_cache_get_stats(c3, &s3);
+  assert_true(s1.records > s1.records_depth0); /* two depths */
+  assert_true(s1.records_depth0 > 0);
+  assert_int_equal(s1.records, s3.records);
+  assert_true(s1.sample_rays == s3.sample_rays);
+  /* The saved files are the same bytes too. */
+  char p1[] = "/tmp/zr_test_gi_XXXXXX", p3[] = "/tmp/zr_test_gi_XXXXXX";
+  int fd1 = mkstemp(p1), fd3 = mkstemp(p3);
+  assert_true(fd1 >= 0 && fd3 >= 0);
+  close(fd1);
+  close(fd3);
+  assert_int_equal(zr_gi_cache_save(NULL, c1, p1), ZR_OK);
+  assert_int_equal(zr_gi_cache_save(NULL, c3, p3), ZR_OK);
+  FILE *x = fopen(p1, "rb"), *y = fopen(p3, "rb");
+  int cx, cy;
+  do {
+    cx = fgetc(x);
+    cy = fgetc(y);
+    assert_int_equal(cx, cy);
+  } while (cx != EOF);
+  fclose(x);
+  fclose(y);
+  remove(p1);
+  remove(p3);
+  zr_gi_cache_free(c1);
+  zr_gi_cache_free(c3);
+  /* The room is lit by more than the light: a shadowed point of the
+     floor is not black, and bluish from the sky. */
+}
+
+static void test_gi_save_load(void **state) {
+  fixture *f = *state;
+  static float a[W * H * 3], b[W * H * 3];
+  const zr_scene *s = good(f, ROOM);
+  zr_gi_cache *c = render_cached(s, 2, a);
+  char path[] = "/tmp/zr_test_gi_XXXXXX";
+  int fd = mkstemp(path);
+  assert_true(fd >= 0);
+  close(fd);
+  assert_int_equal(zr_gi_cache_save(f->ctx, c, path), ZR_OK);
+  zr_gi_cache *l = NULL;
+  assert_int_equal(zr_gi_cache_load(f->ctx, s, NULL, path, &l), ZR_OK);
+  zr_gi_stats sc, sl;
+  zr_gi_cache_get_stats(c, &sc);
+  zr_gi_cache_get_stats(l, &sl);
+  assert_int_equal(sc.records, sl.records);
+  assert_int_equal(sc.records_depth0, sl.records_depth0);
+  /* The loaded records render the same bytes. */
+  zr_render_params rp;
+  zr_render_params_init(&rp);
+  rp.width = W;
+  rp.height = H;
+  rp.gi_cache = l;
+  assert_int_equal(zr_render_image(s, &rp, b, NULL), ZR_OK);
+  assert_memory_equal(a, b, sizeof a);
+  /* A pretrace over them adds little: a point with fewer than
+     nearest_count records gathers one more each pass. */
+  rp.gi_cache = NULL;
+  assert_int_equal(zr_gi_cache_pretrace(l, &rp), ZR_OK);
+  zr_gi_cache_get_stats(l, &sl);
+  assert_true(sl.records >= sc.records);
+  assert_true(sl.records < sc.records + sc.records / 5);
+  zr_gi_cache_free(l);
+  /* Cut short: refused with a message. */
+  FILE *fp = fopen(path, "r+b");
+  assert_non_null(fp);
+  assert_int_equal(ftruncate(fileno(fp), 60), 0);
+  fclose(fp);
+  l = NULL;
+  assert_int_equal(zr_gi_cache_load(f->ctx, s, NULL, path, &l),
+                   ZR_EFORMAT);
+  assert_null(l);
+  assert_non_null(strstr(zr_context_last_error(f->ctx),
+                         "is not an irradiance cache zRcube wrote, or it "
+                         "is cut short"));
+  remove(path);
+  zr_gi_cache_free(c);
+}
+
+static void test_gi_params_from_block(void **state) {
+  fixture *f = *state;
+  zr_gi_params d, p;
+  zr_gi_params_init(&d, NULL);
+  assert_int_equal(d.count, 35);
+  assert_true(d.error_bound == 1.8);
+  assert_int_equal(d.recursion_limit, 2);
+  assert_int_equal(d.nearest_count, 5);
+  assert_true(d.pretrace_start == 0.08 && d.pretrace_end == 0.04);
+  assert_true(d.minimum_reuse == 0.015 && d.maximum_reuse == 0.2);
+  assert_true(d.low_error_factor == 0.5 && d.adc_bailout == 0.01);
+  assert_int_equal(d.always_sample, 0);
+  good(f, "global_settings { radiosity {\n"
+          "  pretrace_start 0.16 pretrace_end 0.02 count 100, 1000\n"
+          "  nearest_count 8 error_bound 0.5 recursion_limit 3\n"
+          "  low_error_factor 0.7 gray_threshold 0.4 minimum_reuse 0.01\n"
+          "  maximum_reuse 0.1 adc_bailout 0.005 always_sample on\n"
+          "  max_sample 2 media on normal on brightness 1.5\n"
+          "  save_file \"a.rad\" load_file \"b.rad\"\n"
+          "} }");
+  assert_int_equal(f->diag.warnings, 0);
+  zr_gi_params_init(&p, f->scene);
+  assert_int_equal(p.count, 100);
+  assert_int_equal(p.nearest_count, 8);
+  assert_int_equal(p.recursion_limit, 3);
+  assert_true(p.error_bound == 0.5 && p.low_error_factor == 0.7);
+  assert_true(p.gray_threshold == 0.4 && p.brightness == 1.5);
+  assert_true(p.minimum_reuse == 0.01 && p.maximum_reuse == 0.1);
+  assert_true(p.pretrace_start == 0.16 && p.pretrace_end == 0.02);
+  assert_true(p.adc_bailout == 0.005 && p.max_sample == 2.0);
+  assert_true(p.always_sample == 1 && p.media == 1 && p.normal == 1);
+  assert_string_equal(p.save_file, "a.rad");
+  assert_string_equal(p.load_file, "b.rad");
+  bad(f, "global_settings { radiosity { nearest_count 21 } }", ZR_ESCENE,
+      "radiosity: nearest_count must be a whole number from 1 to 20",
+      NULL);
+  bad(f, "global_settings { radiosity { pretrace_end 0 } }", ZR_ESCENE,
+      "radiosity: pretrace_end must be above 0 and at most 1", NULL);
+  bad(f, "global_settings { radiosity { recursion_limit 21 } }",
+      ZR_ESCENE,
+      "radiosity: recursion_limit must be a whole number from 1 to 20",
+      NULL);
+}
+
+/* The share of the cosine-weighted hemisphere over p (normal n) that
+   the quadrilateral q covers: the polygon form factor (Lambert). */
+static double quad_factor(const double q[4][3], const double p[3],
+                          const double n[3]) {
+  double sum = 0.0;
+  for (int i = 0; i < 4; i++) {
+    double a[3], b[3], c[3];
+    for (int k = 0; k < 3; k++) {
+      a[k] = q[i][k] - p[k];
+      b[k] = q[(i + 1) % 4][k] - p[k];
+    }
+    c[0] = a[1] * b[2] - a[2] * b[1];
+    c[1] = a[2] * b[0] - a[0] * b[2];
+    c[2] = a[0] * b[1] - a[1] * b[0];
+    double la = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+    double lb = sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
+    double lc = sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+    double g = acos((a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / (la * lb));
+    sum += g * (n[0] * c[0] + n[1] * c[1] + n[2] * c[2]) / lc;
+  }
+  return fabs(sum) / (2.0 * M_PI);
+}
+
+/* Little-endian double i of a record in a saved cache. */
+static double saved_double(const unsigned char *b, int i) {
+  uint64_t u = 0;
+  for (int k = 0; k < 8; k++)
+    u |= (uint64_t)b[8 * i + k] << (8 * k);
+  double x;
+  memcpy(&x, &u, sizeof x);
+  return x;
+}
+
+/*
+ * One record at the origin of a white floor under a white sky, beside
+ * a black wall (x = 1, 0 <= y <= 1, |z| <= 5): its value and its
+ * gradients against the exact irradiance, differentiated numerically
+ * (this is the measurement that fixed the sign of the rotational term
+ * and the factor of the translational one in lib/gi/cache.c).
+ * Tolerances: 2% on the value (1000 rays), 10% on the rotational and
+ * 30% on the translational gradient (their sample noise, measured).
+ */
+static void test_gi_gradients(void **state) {
+  fixture *f = *state;
+  const zr_scene *s = good(
+      f, "global_settings { radiosity { count 1000 nearest_count 1 "
+         "pretrace_start 1 pretrace_end 1 recursion_limit 1 } }"
+         "camera { orthographic location <0, 5, 0> look_at 0 "
+         "right 0.001 * x up 0.001 * y }"
+         "background { rgb 1 }"
+         "plane { y, 0 pigment { rgb 1 } }"
+         "box { <1, -1, -5>, <2, 1, 5> pigment { rgb 0 } }");
+  zr_gi_cache *c = NULL;
+  assert_int_equal(zr_gi_cache_new(f->ctx, s, NULL, &c), ZR_OK);
+  zr_render_params rp;
+  zr_render_params_init(&rp);
+  rp.width = rp.height = 1;
+  assert_int_equal(zr_gi_cache_pretrace(c, &rp), ZR_OK);
+  char path[] = "/tmp/zr_test_gi_XXXXXX";
+  int fd = mkstemp(path);
+  assert_true(fd >= 0);
+  close(fd);
+  assert_int_equal(zr_gi_cache_save(f->ctx, c, path), ZR_OK);
+  zr_gi_cache_free(c);
+  FILE *fp = fopen(path, "rb");
+  char line[128];
+  assert_non_null(fgets(line, sizeof line, fp));
+  assert_string_equal(line, "zRcube irradiance cache 1 1\n");
+  unsigned char rec[29 * 8];
+  assert_int_equal(fread(rec, 1, sizeof rec, fp), sizeof rec);
+  fclose(fp);
+  remove(path);
+  /* Fields: p 0-2, n 3-5, e 6-8, rotational 9-17, translational
+     18-26 (three per channel), radius, depth. */
+  const double wall[4][3] = {{1, 0, -5}, {1, 1, -5}, {1, 1, 5}, {1, 0, 5}};
+  const double up[3] = {0, 1, 0}, h = 1e-4;
+  double o[3] = {0, 0, 0}, px[3] = {h, 0, 0}, mx[3] = {-h, 0, 0};
+  double e = 1.0 - quad_factor(wall, o, up);
+  double de_dx = -(quad_factor(wall, px, up) - quad_factor(wall, mx, up)) /
+                 (2 * h);
+  double tp[3] = {sin(h), cos(h), 0}, tm[3] = {-sin(h), cos(h), 0};
+  /* Tilting the normal towards +x by a turns n x n' into (0, 0, -a). */
+  double de_da = -(quad_factor(wall, o, tp) - quad_factor(wall, o, tm)) /
+                 (2 * h);
+  assert_true(fabs(saved_double(rec, 6) - e) < 0.02 * e);
+  assert_true(fabs(-saved_double(rec, 11) - de_da) < 0.1 * fabs(de_da));
+  assert_true(fabs(saved_double(rec, 18) - de_dx) < 0.3 * fabs(de_dx));
+  assert_true(fabs(saved_double(rec, 20)) < 0.1 * fabs(de_dx)); /* z: 0 */
+}
+
+static zr_gi_method choose(fixture *f, const char *text, const char *why) {
+  char got[256];
+  zr_gi_method m = zr_gi_choose(good(f, text), ZR_GI_AUTO, got, sizeof got);
+  assert_non_null(strstr(got, why));
+  return m;
+}
+
+#define CLOSED                                                          \
+  "camera { location 0 look_at z }"                                    \
+  "box { -2, 2 pigment { rgb 0.7 } }"                                  \
+  "box { <-0.5, 1.9, -0.5>, <0.5, 1.95, 0.5> pigment { rgb 1 } "       \
+  "finish { emission 5 } }"
+
+static void test_gi_choose(void **state) {
+  fixture *f = *state;
+  assert_int_equal(choose(f, CLOSED, "no radiosity block"), ZR_GI_OFF);
+  assert_int_equal(choose(f, "global_settings { radiosity { } }" CLOSED,
+                          "lit by emitting surfaces under a black sky"),
+                   ZR_GI_HIERARCHICAL);
+  assert_int_equal(choose(f, "global_settings { radiosity { } }" CLOSED
+                          "sky_sphere { pigment { rgb 1 } }",
+                          "the sky"),
+                   ZR_GI_CACHE);
+  assert_int_equal(choose(f, "global_settings { radiosity { } }" CLOSED
+                          "isosurface { function { x*x+y*y+z*z-0.01 } "
+                          "contained_by { box { -1, 1 } } }",
+                          "isosurface, which the hierarchical"),
+                   ZR_GI_CACHE);
+  assert_int_equal(choose(f, "global_settings { radiosity { } }"
+                          "camera { location 0 look_at z }"
+                          "box { -2, 2 pigment { rgb 0.7 } }"
+                          "light_source { 1 rgb 1 }",
+                          "no surface emits light"),
+                   ZR_GI_CACHE);
+  assert_int_equal(choose(f, "global_settings { radiosity { } }"
+                          "camera { location <0, 0, -5> look_at z }"
+                          "box { -1, 1 pigment { rgb 1 } finish { "
+                          "emission 1 } }",
+                          "lit by emitting surfaces under a black sky"),
+                   ZR_GI_HIERARCHICAL); /* open, but nothing comes in */
+  char why[64];
+  assert_int_equal(zr_gi_choose(f->scene, ZR_GI_OFF, why, sizeof why),
+                   ZR_GI_OFF);
+  assert_string_equal(why, "asked for");
+}
+
+static int cli(zr_cli_options *o, const char *a, const char *b,
+               char *err, size_t size) {
+  zr_render_params rp;
+  zr_render_params_init(&rp);
+  zr__cli_init(o, &rp);
+  char arg0[] = "zrcube", x[64], y[64];
+  snprintf(x, sizeof x, "%s", a);
+  snprintf(y, sizeof y, "%s", b ? b : "t.pov");
+  char *argv[] = {arg0, x, y, NULL};
+  return zr__cli_parse(o, 3, argv, err, size);
+}
+
+static void test_gi_command_line(void **state) {
+  (void)state;
+  zr_cli_options o;
+  char err[512];
+  static const struct {
+    const char *a, *b;
+    zr_gi_method want;
+  } cases[] = {
+      {"t.pov", NULL, ZR_GI_AUTO},
+      {"--gi=cache", NULL, ZR_GI_CACHE},
+      {"--gi=hierarchical", NULL, ZR_GI_HIERARCHICAL},
+      {"--gi=off", NULL, ZR_GI_OFF},
+      {"--no-radiosity", NULL, ZR_GI_OFF},
+      {"+Q8", NULL, ZR_GI_OFF},
+      {"+Q9", NULL, ZR_GI_AUTO},
+      {"--radiosity", NULL, ZR_GI_HIERARCHICAL},
+      {"--no-radiosity", "--gi=cache", ZR_GI_CACHE},
+  };
+  for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
+    assert_int_equal(cli(&o, cases[i].a, cases[i].b, err, sizeof err), 0);
+    assert_int_equal(zr__cli_gi_asked(&o), cases[i].want);
+    zr__cli_free(&o);
+  }
+  assert_int_equal(cli(&o, "--gi=fast", NULL, err, sizeof err), -1);
+  assert_string_equal(err, "zrcube: '--gi=fast': --gi takes auto, "
+                           "hierarchical, cache, path or off");
+  zr__cli_free(&o);
+  assert_int_equal(cli(&o, "+Q12", NULL, err, sizeof err), -1);
+  assert_string_equal(err, "zrcube: '+Q12': the quality must be a whole "
+                           "number from 0 to 11");
+  zr__cli_free(&o);
+  /* Radiosity=off in an INI file. */
+  char ini[] = "/tmp/zr_test_gi_XXXXXX.ini";
+  int fd = mkstemps(ini, 4);
+  assert_true(fd >= 0);
+  assert_int_equal(write(fd, "Radiosity=off\n", 14), 14);
+  close(fd);
+  assert_int_equal(cli(&o, ini, NULL, err, sizeof err), 0);
+  assert_int_equal(zr__cli_gi_asked(&o), ZR_GI_OFF);
+  zr__cli_free(&o);
+  remove(ini);
+  /* The library and the command line share one set of defaults. */
+  zr_radiosity_params lib;
+  zr_radiosity_params_init(&lib, NULL);
+  assert_int_equal(cli(&o, "t.pov", NULL, err, sizeof err), 0);
+  assert_memory_equal(&o.rad, &lib, sizeof lib);
+  zr__cli_free(&o);
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test(test_gi_furnace),
+      cmocka_unit_test(test_gi_ambient_rule),
+      cmocka_unit_test(test_gi_threads_same_bytes),
+      cmocka_unit_test(test_gi_save_load),
+      cmocka_unit_test(test_gi_params_from_block),
+      cmocka_unit_test(test_gi_gradients),
+      cmocka_unit_test(test_gi_choose),
+      cmocka_unit_test(test_gi_command_line),
+  };
+  return cmocka_run_group_tests(tests, setup, teardown);
+}
