@@ -32,17 +32,19 @@
  *     spotlight or the tube of a cylinder light that lights the media
  *     (a ray-cone or ray-cylinder intersection), so a beam is never
  *     stepped over, and a piece's samples ask only the beams that hold
- *     its middle for their light.  Each piece gets one interval, and the rest of the
- *     `intervals` are dealt out one at a time to the piece whose share
- *     is then the smallest for its weight: length times ratio for lit
- *     pieces, length times (1 - ratio) for the others.
+ *     its middle for their light.  Each piece gets one interval, and
+ *     the rest of the `intervals` are dealt out one at a time to the
+ *     piece whose share is then the smallest for its weight: length
+ *     times ratio for lit pieces, length times (1 - ratio) for the
+ *     others.
  *   - method 3: `min samples` samples spread evenly over an interval,
  *     its two ends among them (at least those two), cut it into cells,
- *     each halved once more on rays that gather light; jitter moves each inner one by up to jitter / 2 of a cell.  With
- *     min samples 3 or more (the manual: adaptive sampling only then),
- *     and on rays that are not shadow rays, a cell whose two
- *     end samples differ by more than aa_threshold (the largest channel
- *     of |j_a - j_b| + |k_a - k_b| times the length of the cell that
+ *     each halved once more on rays that gather light; jitter moves
+ *     each inner sample by up to jitter / 2 of a cell.  With min
+ *     samples 3 or more (the manual: adaptive sampling only then), and
+ *     on rays that are not shadow rays, a cell whose two end samples
+ *     differ by more than aa_threshold (the largest channel of
+ *     |j_a - j_b| + |k_a - k_b| times the length of the cell that
  *     shows, h (1 - exp(-k h)) / (k h), and the transmittance up to the
  *     cell: about how far the cell's light, as seen from the origin, may
  *     be off) is halved, recursively, up to aa_level times.  A shadow
@@ -52,7 +54,8 @@
  *     1: min samples at random.  Then, up to max samples, more random
  *     ones while the spread of the samples leaves the interval's mean
  *     unsure: with n samples of spread s^2 (of the largest channel of j
- *     plus that of k, times the interval's length) the variance of the mean is below, with probability `confidence`,
+ *     plus that of k, times the interval's length) the variance of the
+ *     mean is below, with probability `confidence`,
  *     (n - 1) s^2 / (n chi2_(1 - confidence)(n - 1)), the usual upper
  *     confidence bound of a normal variance; sampling stops once that
  *     bound is under `variance`.
