@@ -520,6 +520,7 @@ static void test_gif_in_scenes(void **state) {
   write_bytes(in_dir(fx, "m.gif"), magick_gif, MAGICK_GIF_LEN);
   char text[2048];
   snprintf(text, sizeof text,
+           "#version 3.7;\n"
            "camera { orthographic location <0.5, 0.5, -1> "
            "look_at <0.5, 0.5, 0> right x up y }\n"
            "plane { z, 0 pigment { image_map { gif \"%s/m.gif\" } }\n"

@@ -396,7 +396,10 @@ static const char *write_file(char *buf, size_t size, const char *name,
 static const zr_pigment *image_pigment(fixture *f, const char *path,
                                        const char *mods) {
   char text[1024];
+  /* A 3.7 scene: a legacy one works in gamma 2.2 (directive.c), which
+     takes image colours there too. */
   snprintf(text, sizeof text,
+           "#version 3.7;\n"
            "sphere { 0, 1 pigment { image_map { png \"%s\" %s } } }", path,
            mods);
   const zr_pigment *pg = first_texture(good(f, text))->pigment;
