@@ -64,6 +64,8 @@ static double case_value(const char *name, zr_vec3 p) {
     return zr__noise(p);
   if (strcmp(name, "noise1") == 0)
     return zr__noise_gen(p, 1);
+  if (strcmp(name, "noise3") == 0)
+    return zr__noise_gen(p, 3);
   static const struct {
     const char *name;
     zr_pattern_kind kind;
@@ -74,7 +76,9 @@ static double case_value(const char *name, zr_vec3 p) {
       {"dents", ZR_PAT_DENTS, 0},       {"dents1", ZR_PAT_DENTS, 1},
       {"wrinkles", ZR_PAT_WRINKLES, 0}, {"granite", ZR_PAT_GRANITE, 0},
       {"wrinkles1", ZR_PAT_WRINKLES, 1}, {"granite1", ZR_PAT_GRANITE, 1},
-      {"agate1", ZR_PAT_AGATE, 1},
+      {"agate1", ZR_PAT_AGATE, 1},      {"bozo3", ZR_PAT_BOZO, 3},
+      {"dents3", ZR_PAT_DENTS, 3},      {"wrinkles3", ZR_PAT_WRINKLES, 3},
+      {"granite3", ZR_PAT_GRANITE, 3},  {"agate3", ZR_PAT_AGATE, 3},
       {"agate", ZR_PAT_AGATE, 0},       {"agate04", ZR_PAT_AGATE, 0},
       {"turbx", ZR_PAT_GRADIENT, 0},    {"turby", ZR_PAT_GRADIENT, 0},
       {"turbz", ZR_PAT_GRADIENT, 0},    {"bozoturb", ZR_PAT_BOZO, 0},
@@ -139,12 +143,12 @@ static double case_value(const char *name, zr_vec3 p) {
   return 0;
 }
 
-/* Every recorded point of every case (marble and wood to 2e-4, see
-   below).  The formulas are POV-Ray's to
-   double rounding (1e-13 in the probes) but the tables hold values fitted
-   to 1e-12 and printed with 11 to 14 digits, and single-precision omega
-   and agate_turb follow the float's rounding: 1e-9 is far below anything
-   a picture shows and far above what the reconstruction leaves. */
+/* Every recorded point of every case (generator 3 to 1e-7, marble and
+   wood to 2e-4, see below).  The formulas are POV-Ray's to double
+   rounding (1e-13 in the probes) but the tables hold values fitted to
+   1e-12 and printed with 11 to 14 digits, and single-precision omega and
+   agate_turb follow the float's rounding: 1e-9 is far below anything a
+   picture shows and far above what the reconstruction leaves. */
 static void test_noise_patterns(void **state) {
   (void)state;
   FILE *f = open_data("patterns.txt");
@@ -165,6 +169,10 @@ static void test_noise_patterns(void **state) {
                          strncmp(name, "wood", 4) == 0
                      ? 2e-4
                      : 1e-9;
+    /* Generator 3 carries POV-Ray's rounding (about 1e-8 at random
+       points; bench/noise/probe_gen3.py): its values pass to 1e-7. */
+    if (name[strlen(name) - 1] == '3' && strncmp(name, "crackle", 7) != 0)
+      tol = 1e-7;
     if (!(err <= tol)) {
       if (strcmp(name, last_bad) != 0) /* the first of each case */
         print_error("%s at <%g, %g, %g>: %.17g, POV-Ray %.17g\n", name, x,
@@ -172,13 +180,13 @@ static void test_noise_patterns(void **state) {
       snprintf(last_bad, sizeof last_bad, "%s", name);
       bad++;
     }
-    if (err > worst && tol < 1e-6)
+    if (err > worst && tol < 1e-8)
       worst = err;
     n++;
   }
   fclose(f);
-  print_message("%d points, largest difference %.3g (marble and wood "
-                "aside)\n",
+  print_message("%d points, largest difference %.3g (generator 3, marble "
+                "and wood aside)\n",
                 n, worst);
   assert_int_equal(bad, 0);
   assert_true(n > 8000);

@@ -41,6 +41,12 @@ from povprobe import function  # noqa: E402
 CASES = [
     ("noise", "f_noise3d(x, y, z)"),
     ("noise1", "f_noise_generator(x, y, z, 1)"),
+    ("noise3", "f_noise_generator(x, y, z, 3)"),
+    ("bozo3", "pattern { bozo noise_generator 3 }"),
+    ("dents3", "pattern { dents noise_generator 3 }"),
+    ("wrinkles3", "pattern { wrinkles noise_generator 3 }"),
+    ("granite3", "pattern { granite noise_generator 3 }"),
+    ("agate3", "pattern { agate noise_generator 3 }"),
     ("bozo", "pattern { bozo }"),
     ("bozo1", "pattern { bozo noise_generator 1 }"),
     ("spotted", "pattern { spotted }"),

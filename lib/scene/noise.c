@@ -17,6 +17,13 @@
  * ("the noise that was used in POV-Ray 3.1") is the same noise mapped by
  * a + b n and clamped to [0, 1] (a and b measured by the same probe).
  *
+ * noise_generator 3 ("Perlin noise", bench/noise/probe_gen3.py) is a
+ * gradient noise on the lattice shifted by -0.0232: a constant (0.4925)
+ * plus the same cubic blend of g(c) . (q - c), q = p + 0.0232, with
+ * 2048 gradients of length 0.795; the gradient of corner (x, y, z) is
+ * G[(S[(R[x] + y) mod 2048] + z) mod 2048], S and R tables of 2048
+ * entries read from povray's output (matched to 1e-8).
+ *
  * Turbulence's vector noise has three components of the same form and
  * hash, each with its own table (step 6 of the probe): a point moves by
  * the turbulence vector times the sum over octaves i of omega^i
@@ -27,6 +34,7 @@
 #include <math.h>
 #include <stdint.h>
 
+#include "../../bench/noise/gen3_tables.h"
 #include "../../bench/noise/noise_tables.h"
 
 static double smooth(double t) { return t * t * (3 - 2 * t); }
@@ -84,7 +92,34 @@ zr_vec3 zr__dnoise_lattice(zr_vec3 p) {
   return zr_v3(d[0], d[1], d[2]);
 }
 
+double zr__noise_gen3(zr_vec3 p) {
+  zr_vec3 q = zr_v3(p.x + GEN3_OFFSET, p.y + GEN3_OFFSET, p.z + GEN3_OFFSET);
+  double fx = floor(q.x), fy = floor(q.y), fz = floor(q.z);
+  int64_t ix = (int64_t)fx, iy = (int64_t)fy, iz = (int64_t)fz;
+  double t[3] = {q.x - fx, q.y - fy, q.z - fz};
+  double w[3][2];
+  for (int a = 0; a < 3; a++) {
+    w[a][1] = smooth(t[a]);
+    w[a][0] = 1 - w[a][1];
+  }
+  double sum = GEN3_CONSTANT;
+  for (int i = 0; i < 2; i++)
+    for (int j = 0; j < 2; j++)
+      for (int k = 0; k < 2; k++) {
+        unsigned a = gen3_r[(ix + i) & 2047];
+        unsigned h = (unsigned)((gen3_s[(a + (uint64_t)(iy + j)) & 2047] +
+                                 (uint64_t)(iz + k)) &
+                                2047);
+        const double *g = gen3_gradient[h];
+        sum += w[0][i] * w[1][j] * w[2][k] *
+               (g[0] * (t[0] - i) + g[1] * (t[1] - j) + g[2] * (t[2] - k));
+      }
+  return sum;
+}
+
 double zr__noise_generator(zr_vec3 p, int generator) {
+  if (generator == 3)
+    return zr__noise_gen3(p);
   double n = zr__noise_lattice(p);
   if (generator == 1) {
     n = NOISE_GEN1_A + NOISE_GEN1_B * n;

@@ -16,7 +16,9 @@ double zr__noise_lattice(zr_vec3 p);
 unsigned zr__noise_hash(int64_t x, int64_t y, int64_t z, int offset);
 /* Turbulence's vector noise at p, each component in about [-1, 1]. */
 zr_vec3 zr__dnoise_lattice(zr_vec3 p);
-/* The noise of generator 1 or 2 (any other number: 2). */
+/* noise_generator 3's noise at p, about [0.1, 0.9]. */
+double zr__noise_gen3(zr_vec3 p);
+/* The noise of generator 1, 2 or 3 (any other number: 2). */
 double zr__noise_generator(zr_vec3 p, int generator);
 
 #endif /* ZR_SCENE_NOISE_H */

@@ -45,7 +45,7 @@
  *              form weighs the three nearest distances, metric m
  *              measures them as (|dx|^m + |dy|^m + |dz|^m)^(1/m),
  *              offset is a fourth coordinate of every distance, solid
- *              gives each cell its own random value ("Crackle");
+ *              gives the noise at the nearest point ("Crackle");
  *   ripples, waves  the mean over 10 random centres in the unit cube of
  *              0.5 + 0.5 sin (ripples) or cos (waves) of 2 pi (distance
  *              * frequency + phase), so they consume frequency and phase
@@ -54,9 +54,9 @@
  * over octaves of omega^i D(p lambda^i), D POV-Ray's vector noise
  * (measured), before the pattern's transforms, as the manual's
  * "Turbulence versus Turbulence Warp" says; marble and wood have
- * turbulences of their own (measured, see turbulent_point()).  noise_generator 1 and 2
- * are POV-Ray's for every noise pattern (measured); generator 3 is our
- * own Perlin improved noise, not yet measured.
+ * turbulences of their own (measured, see turbulent_point()).
+ * noise_generator 1, 2 and 3 are POV-Ray's for every noise pattern
+ * (measured; generator 3 to 1e-7).
  *
  * Patterns the manual describes only in words, with our definitions:
  *   cells      one random value per unit cube ("Cells Pattern");
@@ -149,58 +149,9 @@ static uint32_t hash3(int64_t x, int64_t y, int64_t z) {
   return h;
 }
 
-/* Dot product of the offset with one of Perlin's 12 edge gradients. */
-static double grad(uint32_t h, double x, double y, double z) {
-  switch (h % 12) {
-  case 0: return x + y;
-  case 1: return -x + y;
-  case 2: return x - y;
-  case 3: return -x - y;
-  case 4: return x + z;
-  case 5: return -x + z;
-  case 6: return x - z;
-  case 7: return -x - z;
-  case 8: return y + z;
-  case 9: return -y + z;
-  case 10: return y - z;
-  default: return -y - z;
-  }
-}
-
-static double fade(double t) {
-  return t * t * t * (t * (t * 6 - 15) + 10);
-}
-
-static double lerp(double t, double a, double b) { return a + t * (b - a); }
-
-/* Perlin's improved noise in about [-1, 1], zero at lattice points: what
-   noise_generator 3 ("generates Perlin noise") gives until that generator
-   is measured as the other two were. */
-static double raw_noise(zr_vec3 p) {
-  double fx = floor(p.x), fy = floor(p.y), fz = floor(p.z);
-  int64_t ix = (int64_t)fx, iy = (int64_t)fy, iz = (int64_t)fz;
-  double x = p.x - fx, y = p.y - fy, z = p.z - fz;
-  double u = fade(x), v = fade(y), w = fade(z);
-  double c[2][2][2];
-  for (int i = 0; i < 2; i++)
-    for (int j = 0; j < 2; j++)
-      for (int k = 0; k < 2; k++)
-        c[i][j][k] = grad(hash3(ix + i, iy + j, iz + k), x - i, y - j,
-                          z - k);
-  return lerp(w,
-              lerp(v, lerp(u, c[0][0][0], c[1][0][0]),
-                   lerp(u, c[0][1][0], c[1][1][0])),
-              lerp(v, lerp(u, c[0][0][1], c[1][0][1]),
-                   lerp(u, c[0][1][1], c[1][1][1])));
-}
-
 double zr__noise(zr_vec3 p) { return zr__noise_lattice(p); }
 
 double zr__noise_gen(zr_vec3 p, int generator) {
-  if (generator == 3) {
-    double n = 0.5 + 0.5 * raw_noise(p);
-    return n < 0 ? 0 : n > 1 ? 1 : n;
-  }
   return zr__noise_generator(p, generator);
 }
 
@@ -236,7 +187,7 @@ static double octave(zr_vec3 p, int generator, bool clamp) {
 }
 
 /* wrinkles: half the sum over 10 octaves i of octave(2^i p) / 2^i
-   (measured to 1e-14 for noise_generators 1 and 2). */
+   (measured to 1e-14 for noise_generators 1 and 2, 1e-7 for 3). */
 static double wrinkles(zr_vec3 p, int generator) {
   double sum = 0, amp = 1, f = 1;
   for (int i = 0; i < 10; i++) {
@@ -248,7 +199,7 @@ static double wrinkles(zr_vec3 p, int generator) {
 }
 
 /* granite: the sum over 6 octaves i of |octave(4 2^i p) - 0.5| / 2^i
-   (measured to 1e-14 for noise_generators 1 and 2). */
+   (measured to 1e-14 for noise_generators 1 and 2, 1e-7 for 3). */
 static double granite(zr_vec3 p, int generator) {
   double sum = 0, amp = 1, f = 4;
   for (int i = 0; i < 6; i++) {
@@ -261,7 +212,8 @@ static double granite(zr_vec3 p, int generator) {
 
 /* agate: (0.5 + 0.5 sin(2 pi (1.1 z + 1.3 agate_turb s)))^0.77, s the sum
    over 6 octaves i of octave(2^i p) / 2^i with only the first octave
-   clamped for generator 2 (measured to 1e-13 for generators 1 and 2;
+   clamped for generators 2 and 3 (measured to 1e-13 for generators 1
+   and 2, 1e-7 for 3;
    agate_turb acts as a single-precision number). */
 static double agate(zr_vec3 p, double agate_turb, int generator) {
   double s = octave(p, generator, true), amp = 0.5, f = 2;

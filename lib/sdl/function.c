@@ -222,8 +222,8 @@ static double field(double v) { return v < -10 ? -10 : v > 10 ? 10 : v; }
  * f_snoise3d is "just like f_noise3d(), but returns values in the range
  * [-1, 1]", and functions.inc defines it as 2 f_noise3d - 1).  That noise
  * is POV-Ray's default noise_generator 2, reconstructed from measurements
- * (lib/scene/noise.c); f_noise_generator's generators 1 and 2 are
- * POV-Ray's, 3 is our own Perlin noise (see pattern.c).
+ * (lib/scene/noise.c); f_noise_generator's generators 1, 2 and 3 are
+ * POV-Ray's too.
  *
  * f_ridged_mf and f_hetero_mf are F. K. Musgrave's ridged multifractal
  * and heterogeneous terrain ("Texturing and Modeling: A Procedural
@@ -386,7 +386,7 @@ static double eval_internal(int number, const double *a) {
     return ridged_mf(a);
   case 76: /* f_noise3d */
     return zr__noise(zr_v3(x, y, z));
-  case 78: /* f_noise_generator: generators 1 and 2 measured, 3 our own */
+  case 78: /* f_noise_generator: generators 1, 2 and 3, measured */
     return zr__noise_gen(zr_v3(x, y, z), (int)a[3]);
   case 17: /* f_ellipsoid: inverse scales; threshold 1 */
     return sqrt(x * x * a[3] * a[3] + y * y * a[4] * a[4] +
