@@ -197,3 +197,27 @@ probe far_fine 1e18 'warp { repeat x offset 1e14*y }' \
     '999.5,0,0' '1000.5,0,0' '1001.5,0,0'
 probe far_exp 1e18 'warp { cylindrical dist_exp 20 }' \
     '0,0,-7' '0,0,-7.2' '0,0,-30'
+
+# Cubic (manual: "maps an area in the x-y plane between <0,0> and <1,1>
+# around the origin in the same way as uv-mapping an origin-centered
+# cube-shaped box would"): a point on each face, two distances, inside
+# the cube, and the ties between faces (edges and corners), which tell
+# which face wins.  (The origin itself gives NaN in POV-Ray: left out.)
+probe cubic 1000 'warp { cubic }' \
+    '-1,0.2,0.3' '1,0.2,0.3' '0.2,-1,0.3' '0.2,1,0.3' '0.2,0.3,-1' \
+    '0.2,0.3,1' '-2,0.2,0.3' '2,0.2,0.3' '0.2,-2,0.3' '0.2,2,0.3' \
+    '0.2,0.3,-2' '0.2,0.3,2' '-0.5,0.2,0.3' '0.5,0.2,0.3' \
+    '0.1,0.7,-0.4' '-3,-1,2' '-1,0.9,-0.9' '0,0,1e-9' '1e-300,0,0'
+probe cubic_tie 1000 'warp { cubic }' \
+    '0.5,0.5,0.5' '1,1,0.5' '1,0.5,1' '0.5,1,1' '-1,-1,0.5' '-1,0.5,-1' \
+    '0.5,-1,-1' '1,-1,1' '-1,1,-1' '0.5,-1,1' '-1,0.5,1' '0.5,1,-1' \
+    '1,0.5,-1' '1,1,1' '-1,-1,-1' '1,-1,-1' '-1,1,1'
+probe cubic_frame 1000 'warp { cubic } scale 2' \
+    '1,0.2,0.3' '0.2,0.3,-3'
+probe cubic_turb 1000 'warp { cubic } warp { turbulence 0.3 }' \
+    '1,0.2,0.3' '0.2,0.3,-3' '-0.7,0.4,0.1'
+
+# No warp at all: the pattern still gets coordinates cut to +-1e17
+# (lib/scene/warp.c, PATTERN_COORD_MAX).
+probe far_nowarp 1e18 '' \
+    '1,2e17,0' '1,-3e17,0' '4e17,0,1' '1,0,9e16'

@@ -2643,6 +2643,8 @@ warp_body:
     { TRY(zr__sdl_warp_new(p, ZR_WARP_SPHERICAL, NULL, NULL, &@3, &$$)); }
 | T_WARP '{' T_TOROIDAL
     { TRY(zr__sdl_warp_new(p, ZR_WARP_TOROIDAL, NULL, NULL, &@3, &$$)); }
+| T_WARP '{' T_CUBIC
+    { TRY(zr__sdl_warp_new(p, ZR_WARP_CUBIC, NULL, NULL, &@3, &$$)); }
 | warp_body warp_item
     { $$ = $1; TRY(zr__sdl_warp_item(p, &$$, &$2)); }
 ;

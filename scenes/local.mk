@@ -8,6 +8,7 @@ dist_scenes_DATA = \
 	scenes/bicubic.pov \
 	scenes/julia.pov \
 	scenes/warps.pov \
+	scenes/warp_image.pov \
 	scenes/sphere_sweep.pov \
 	scenes/camera.pov \
 	scenes/cornell.pov \

@@ -36,6 +36,7 @@ EXTRA_DIST += tests/golden.sh tests/ref/README.md tests/ref/make-refs.sh \
 	tests/ref/bicubic.png \
 	tests/ref/julia.png \
 	tests/ref/warps.png \
+	tests/ref/warp_image.png \
 	tests/ref/sphere_sweep.png \
 	tests/ref/camera.png \
 	tests/ref/lights.png \

@@ -368,6 +368,9 @@ static void test_pattern_more_warp_errors(void **state) {
       ZR_ESCENE, "orientation must not be zero", NULL);
   bad(f, "box { 0, 1 pigment { bozo warp { spherical major_radius 2 } } }",
       ZR_ESCENE, "'major_radius' is not an item of a spherical warp", NULL);
+  /* cubic takes no items (POV-Ray 3.7 stops there too). */
+  bad(f, "box { 0, 1 pigment { bozo warp { cubic orientation y } } }",
+      ZR_ESCENE, "'orientation' is not an item of a cubic warp", NULL);
 }
 
 /* tiling 1 to 13, 15 and 18 against povray 3.7.0's values, printed by

@@ -436,6 +436,37 @@ static void test_texture_image_map_palette_filter_transmit(void **state) {
   unlink(path);
 }
 
+/* The pigment's warps and turbulence move the point before the picture
+   is read (textures/pigments/warp1.pov and warp2.pov in POV-Ray 3.7). */
+static void test_texture_image_map_warped(void **state) {
+  fixture *f = *state;
+  char path[256], text[1024];
+  write_file(path, sizeof path, "pal.png", palette_png, sizeof palette_png);
+  /* repeat 0.25*x: every quarter repeats the first, red pixel. */
+  snprintf(text, sizeof text, "sphere { 0, 1 pigment { image_map { png "
+           "\"%s\" } warp { repeat 0.25*x } } }", path);
+  const zr_pigment *pg = first_texture(good(f, text))->pigment;
+  for (int k = 0; k < 4; k++)
+    assert_colour(palette_pixel(pg, k), 1, 0, 0, 0, 0);
+  /* Turbulence: some pixel centre along the row reads another pixel. */
+  snprintf(text, sizeof text, "sphere { 0, 1 pigment { image_map { png "
+           "\"%s\" } turbulence 0.6 } }", path);
+  pg = first_texture(good(f, text))->pigment;
+  /* Without turbulence the pixel centres read their own pixel. */
+  const zr_colour own[4] = {
+      zr_colour5(1, 0, 0, 0, 0), zr_colour5(0, 1, 0, 0, 0),
+      zr_colour5(0, 0, 1, 0, 0), zr_colour5(1, 1, 1, 0, 0)};
+  int moved = 0;
+  for (int k = 0; k < 4; k++)
+    for (int j = 0; j < 8; j++) {
+      zr_vec3 p = zr_v3((k + 0.5) / 4, (j + 0.5) / 8, 0.37 * j);
+      zr_colour a = zr__pigment_eval(pg, p);
+      moved += a.r != own[k].r || a.g != own[k].g || a.b != own[k].b;
+    }
+  assert_true(moved > 0);
+  unlink(path);
+}
+
 static void test_texture_image_map_bad_palette_index(void **state) {
   fixture *f = *state;
   char pal[256], rgb[256], text[1024];
@@ -654,6 +685,7 @@ int main(void) {
       cmocka_unit_test(test_texture_uv_mapping_mesh2),
       cmocka_unit_test(test_texture_uv_mapping_without_uv),
       cmocka_unit_test(test_texture_image_map_palette_filter_transmit),
+      cmocka_unit_test(test_texture_image_map_warped),
       cmocka_unit_test(test_texture_image_map_bad_palette_index),
       cmocka_unit_test(test_texture_image_map_gamma),
   };

@@ -15,6 +15,7 @@
 
 #include <math.h>
 
+#include "scene/pattern.h"
 #include "scene/warp.h"
 #include "test_util.h"
 
@@ -294,6 +295,40 @@ static void test_warp_frames_and_limit(void **state) {
   zr_warp none = repeat_warp(0, 1e30);
   assert_vec(zr__warp_point(&none, 1, zr_v3(1, 2e17, -3e17)), 1, 1e17,
              -1e17, 0);
+  /* No warp at all: the pattern still sees the cut point (far_nowarp). */
+  zr_pattern pt;
+  zr__pattern_init(&pt, ZR_PAT_GRADIENT);
+  assert_vec(zr__pattern_point(&pt, zr_v3(4e17, 2e17, -3e17)), 1e17, 1e17,
+             -1e17, 0);
+  assert_vec(zr__pattern_point(&pt, zr_v3(1, 9e16, 0)), 1, 9e16, 0, 0);
+}
+
+/* warp_probe.sh: cubic, cubic_tie (POV-Ray 3.7's values). */
+static void test_warp_cubic(void **state) {
+  (void)state;
+  zr_warp w = make(ZR_WARP_CUBIC);
+  /* One point on each face of the cube, then twice as far out. */
+  expect(&w, zr_v3(-1, 0.2, 0.3), 0.1625, 0.533333333, 1);
+  expect(&w, zr_v3(1, 0.2, 0.3), 0.5875, 0.533333333, 1);
+  expect(&w, zr_v3(0.2, -1, 0.3), 0.4, 0.216666667, 1);
+  expect(&w, zr_v3(0.2, 1, 0.3), 0.4, 0.783333333, 1);
+  expect(&w, zr_v3(0.2, 0.3, -1), 0.85, 0.55, 1);
+  expect(&w, zr_v3(0.2, 0.3, 1), 0.4, 0.55, 1);
+  expect(&w, zr_v3(0.2, 0.3, -2), 0.8625, 0.525, 2);
+  expect(&w, zr_v3(-3, -1, 2), 0.208333333, 0.444444444, 3);
+  expect(&w, zr_v3(0.1, 0.7, -0.4), 0.392857143, 0.928571429, 0.7);
+  expect(&w, zr_v3(0, 0, 1e-9), 0.375, 0.5, 1e-9);
+  /* Ties across the cuts of the unfolded cross: +x before +y, +y
+     before -x, -x before -y and -z, -y before -z, +y before -z. */
+  expect(&w, zr_v3(1, 1, 0.5), 0.5625, 0.666666667, 1);
+  expect(&w, zr_v3(-1, 1, -1), 0.25, 1, 1);
+  expect(&w, zr_v3(-1, -1, 0.5), 0.1875, 0.333333333, 1);
+  expect(&w, zr_v3(-1, -1, -1), 0, 0.333333333, 1);
+  expect(&w, zr_v3(0.5, -1, -1), 0.4375, 0, 1);
+  expect(&w, zr_v3(0.5, 1, -1), 0.4375, 1, 1);
+  /* The origin has no face (POV-Ray: NaN); it stays finite here. */
+  zr_vec3 o = zr__warp_apply(&w, zr_v3(0, 0, 0));
+  assert_true(isfinite(o.x) && isfinite(o.y) && isfinite(o.z));
 }
 
 int main(void) {
@@ -307,6 +342,7 @@ int main(void) {
       cmocka_unit_test(test_warp_toroidal),
       cmocka_unit_test(test_warp_orientation),
       cmocka_unit_test(test_warp_frames_and_limit),
+      cmocka_unit_test(test_warp_cubic),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

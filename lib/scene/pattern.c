@@ -622,12 +622,18 @@ static zr_vec3 turbulent_point(const zr_pattern *pt, zr_vec3 p) {
   return zr_v3_add(p, zr_v3_mul(t, d));
 }
 
-double zr__pattern_eval(const zr_pattern *pt, zr_vec3 p) {
-  if (pt->n_warps > 0)
-    p = zr__warp_point(pt->warps, pt->n_warps, p); /* lib/scene/warp.c */
+zr_vec3 zr__pattern_point(const zr_pattern *pt, zr_vec3 p) {
+  /* Warps, or without them the cut to +-1e17 (lib/scene/warp.c). */
+  p = pt->n_warps > 0 ? zr__warp_point(pt->warps, pt->n_warps, p)
+                      : zr__warp_cut(p);
   zr_vec3 t = pt->turbulence;
   if (t.x != 0 || t.y != 0 || t.z != 0)
     p = turbulent_point(pt, p);
+  return p;
+}
+
+double zr__pattern_eval(const zr_pattern *pt, zr_vec3 p) {
+  p = zr__pattern_point(pt, p);
   switch (pt->kind) {
   case ZR_PAT_CHECKER:
     return checker(p);

@@ -38,6 +38,9 @@ double zr__pattern_wave(const zr_pattern *pt, double value);
  * brick 0 for mortar, 1 for brick).
  */
 double zr__pattern_eval(const zr_pattern *pt, zr_vec3 p);
+/* The point the pattern function sees for p (pattern space): after the
+   pattern's warps and its turbulence. */
+zr_vec3 zr__pattern_point(const zr_pattern *pt, zr_vec3 p);
 /* The same at a surface point whose unit normal in world space is n,
    for the patterns that use it (slope); others ignore n. */
 double zr__pattern_eval_n(const zr_pattern *pt, zr_vec3 p, zr_vec3 n);

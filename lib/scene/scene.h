@@ -123,7 +123,8 @@ typedef enum zr_warp_kind {
   ZR_WARP_PLANAR,
   ZR_WARP_CYLINDRICAL,
   ZR_WARP_SPHERICAL,
-  ZR_WARP_TOROIDAL
+  ZR_WARP_TOROIDAL,
+  ZR_WARP_CUBIC
 } zr_warp_kind;
 
 typedef struct zr_warp {

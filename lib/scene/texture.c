@@ -323,8 +323,12 @@ zr_colour zr__pigment_eval_n(const zr_pigment *pg, zr_vec3 world,
   if (pg->kind == ZR_PIGMENT_SOLID)
     return pg->colour;
   zr_vec3 p = to_pattern(pg->transform, world);
+  /* An image_map takes the pigment's warps and turbulence like any
+     pattern (the manual's "Warps" apply to "any pattern", and
+     textures/pigments/warp1.pov shows the picture bent): the point
+     moves first, then the picture is looked up. */
   if (pg->kind == ZR_PIGMENT_IMAGE)
-    return zr__image_map_eval(pg->image, p);
+    return zr__image_map_eval(pg->image, zr__pattern_point(&pg->pattern, p));
   if (pg->pigment_map && pg->pigment_map->n > 0)
     return pigment_map_eval(pg, p, n);
   double v = value_at(&pg->pattern, p, n);

@@ -36,9 +36,10 @@
  * to [-1e17, 1e17].  Measured (warp_probe.sh, far, far_fine, far_in,
  * far_exp): offsets of 1e14 per block reach 9.99e16 unchanged in block
  * 999 and stop at 1e17 from block 1000 on; 2e17, -3e17 and 4e17 come
- * back as +-1e17 even where the warp leaves them alone.  (POV-Ray cuts
- * them without any warp too, as a function pattern at y = 2e17 shows;
- * lib/scene/pattern.c does not, which only matters that far away.)
+ * back as +-1e17 even where the warp leaves them alone.  POV-Ray cuts
+ * them without any warp too (far_nowarp: a function pattern at
+ * y = 2e17 reads 1e17), which lib/scene/pattern.c does with
+ * zr__warp_cut.
  */
 #define PATTERN_COORD_MAX 1e17
 
@@ -289,6 +290,49 @@ static zr_vec3 planar(const zr_warp *w, zr_vec3 p) {
   return place(w->orientation, m);
 }
 
+/*
+ * cubic: the manual maps "an area in the x-y plane between <0,0> and
+ * <1,1> around the origin in the same way as uv-mapping an
+ * origin-centered cube-shaped box would" (its box map: the faces
+ * unfolded as a cross, as lib/trace/intersect.c does for a box).
+ * Measured (warp_probe.sh, cubic, cubic_tie, cubic_tie2): the point is
+ * pushed out to the cube <-1,-1,-1> to <1,1,1> along its ray from the
+ * origin (divided by m, the largest of |x|, |y|, |z|), the face it
+ * reaches gives <u, v> with each coordinate c read as (c + 1) / 2, and
+ * the third coordinate is m.  Where two faces are equally far the
+ * faces win in the order +x, +y, -x, -y, +z, -z (only the ties across
+ * the cross's cuts tell: <-1,1,-1> reads from +y, <-1,-1,0.5> from -x,
+ * <1,1,0.5> from +x).  At the origin POV-Ray's three values are NaN;
+ * here the origin stays where it is.
+ */
+static zr_vec3 cubic(zr_vec3 p) {
+  double m = fmax(fabs(p.x), fmax(fabs(p.y), fabs(p.z)));
+  if (!(m > 0) || !isfinite(m))
+    return p;
+  double x = (p.x / m + 1) / 2, y = (p.y / m + 1) / 2, z = (p.z / m + 1) / 2;
+  double u, v;
+  if (p.x == m) { /* +x */
+    u = 0.75 - z / 4;
+    v = (1 + y) / 3;
+  } else if (p.y == m) { /* +y */
+    u = 0.25 + x / 4;
+    v = 1 - z / 3;
+  } else if (-p.x == m) { /* -x */
+    u = z / 4;
+    v = (1 + y) / 3;
+  } else if (-p.y == m) { /* -y */
+    u = 0.25 + x / 4;
+    v = z / 3;
+  } else if (p.z == m) { /* +z */
+    u = 0.25 + x / 4;
+    v = (1 + y) / 3;
+  } else { /* -z */
+    u = 1 - x / 4;
+    v = (1 + y) / 3;
+  }
+  return zr_v3(u, v, m);
+}
+
 zr_vec3 zr__warp_apply(const zr_warp *w, zr_vec3 p) {
   map_coords m;
   switch (w->kind) {
@@ -308,12 +352,18 @@ zr_vec3 zr__warp_apply(const zr_warp *w, zr_vec3 p) {
     return sphere_coords(w, p, &m) ? place(w->orientation, m) : p;
   case ZR_WARP_TOROIDAL:
     return torus_coords(w, p, &m) ? place(w->orientation, m) : p;
+  case ZR_WARP_CUBIC:
+    return cubic(p);
   }
   return p;
 }
 
 static double cut(double c) {
   return fmax(-PATTERN_COORD_MAX, fmin(PATTERN_COORD_MAX, c));
+}
+
+zr_vec3 zr__warp_cut(zr_vec3 p) {
+  return zr_v3(cut(p.x), cut(p.y), cut(p.z));
 }
 
 zr_vec3 zr__warp_point(const zr_warp *warps, int n, zr_vec3 p) {
@@ -323,5 +373,5 @@ zr_vec3 zr__warp_point(const zr_warp *warps, int n, zr_vec3 p) {
     q = zr__warp_apply(w, q);
     p = zr__xform_point(w->frame.inv, q);
   }
-  return zr_v3(cut(p.x), cut(p.y), cut(p.z));
+  return zr__warp_cut(p);
 }

@@ -28,7 +28,7 @@
 static const char *kind_name(zr_warp_kind k) {
   static const char *const names[] = {"turbulence", "repeat", "black_hole",
                                       "planar", "cylindrical", "spherical",
-                                      "toroidal"};
+                                      "toroidal", "cubic"};
   return names[k];
 }
 
