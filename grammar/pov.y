@@ -484,6 +484,10 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %token T_RGBF "rgbf"
 %token T_RGBFT "rgbft"
 %token T_RGBT "rgbt"
+%token T_SRGB "srgb"
+%token T_SRGBF "srgbf"
+%token T_SRGBT "srgbt"
+%token T_SRGBFT "srgbft"
 %token T_RIGHT "right"
 %token T_ROTATE "rotate"
 %token T_ROUGHNESS "roughness"
@@ -855,6 +859,15 @@ items:
 
 item:
   object               { TRY(zr__sdl_add_object(p, $1, &@1)); }
+/* An object identifier alone as a statement: POV-Ray 3.7 renders the
+   object, with or without #version, and does not warn (measured:
+   tests/legacy/bare_object.pov). */
+| T_OBJECT_ID
+    {
+      zr_object *copy = zr__sdl_object_copy(p, $1.ptr);
+      TRY(copy);
+      TRY(zr__sdl_add_object(p, copy, &@1));
+    }
 | camera
 | light
 | background
@@ -1395,6 +1408,14 @@ colour_whole:
     { $$.token = T_RGBT; $$.value = $2; $$.loc = @2; }
 | T_RGBFT expr %prec OPTIONAL_COMMA
     { $$.token = T_RGBFT; $$.value = $2; $$.loc = @2; }
+| T_SRGB expr %prec OPTIONAL_COMMA
+    { $$.token = T_SRGB; $$.value = $2; $$.loc = @2; }
+| T_SRGBF expr %prec OPTIONAL_COMMA
+    { $$.token = T_SRGBF; $$.value = $2; $$.loc = @2; }
+| T_SRGBT expr %prec OPTIONAL_COMMA
+    { $$.token = T_SRGBT; $$.value = $2; $$.loc = @2; }
+| T_SRGBFT expr %prec OPTIONAL_COMMA
+    { $$.token = T_SRGBFT; $$.value = $2; $$.loc = @2; }
 ;
 
 colour_item:

@@ -626,6 +626,7 @@ static bool continues(int kind) {
   case '{': case '?': case ':': case '<': case '>': case '=': case '&':
   case '|': case T_LE: case T_GE: case T_NE:
   case T_RGB: case T_RGBF: case T_RGBT: case T_RGBFT: case T_RED:
+  case T_SRGB: case T_SRGBF: case T_SRGBT: case T_SRGBFT:
   case T_GREEN: case T_BLUE: case T_FILTER: case T_TRANSMIT:
     return true;
   default:
@@ -954,6 +955,11 @@ int zr__sdl_next(zr_sdl_lexval *val, zr_sdl_loc *loc, zr_sdl_parser *p) {
       continue;
     case T_DECLARE:
     case T_LOCAL:
+      /* "declare" without '#' (POV-Ray 2.x-3.0 syntax, which 3.7
+         accepts; measured: tests/legacy/declare.pov). */
+      if (t->kind == T_DECLARE && t->length == 7)
+        zr__sdl_warning(p, &tl, "'declare' without '#' is old syntax: "
+                                "write '#declare'");
       if (!do_declare(p, t->kind))
         return ZR__POV_error;
       continue;
