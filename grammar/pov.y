@@ -2588,6 +2588,10 @@ colour_list_items:
     { $$ = $1; TRY(zr__sdl_clist_add(p, $$, &$3, &@3)); }
 | colour_list_items colour_rgb
     { $$ = $1; TRY(zr__sdl_clist_add(p, $$, &$2, &@2)); }
+/* "checker Black White": a colour identifier after another colour
+   without a comma (POV-Ray 3.7 renders it without a warning). */
+| colour_list_items T_COLOUR_ID
+    { $$ = $1; TRY(zr__sdl_clist_add(p, $$, &$2.num, &@2)); }
 ;
 
 pattern_mod:
@@ -3076,6 +3080,24 @@ layered_texture:
 texture_start:
   %empty               { TRY($$ = zr__sdl_texture_new(p, NULL)); }
 | T_TEXTURE_ID         { TRY($$ = zr__sdl_texture_new(p, $1.ptr)); }
+/* A pigment, finish or normal identifier first in a texture (older
+   syntax that POV-Ray 3.7 renders without a warning; later in the
+   texture it refuses them; measured: tests/legacy/texture_ids.pov). */
+| T_PIGMENT_ID
+    {
+      TRY($$ = zr__sdl_texture_new(p, NULL));
+      TRY($$->pigment = zr__sdl_pigment_new(p, $1.ptr));
+    }
+| T_FINISH_ID
+    {
+      TRY($$ = zr__sdl_texture_new(p, NULL));
+      TRY($$->finish = zr__sdl_finish_new(p, $1.ptr));
+    }
+| T_NORMAL_ID
+    {
+      TRY($$ = zr__sdl_texture_new(p, NULL));
+      TRY($$->normal = zr__sdl_normal_new(p, $1.ptr));
+    }
 ;
 
 /* A pattern with a texture_map or a block pattern's textures makes a

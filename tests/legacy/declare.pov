@@ -2,6 +2,7 @@
 // (old syntax POV-Ray 3.7 accepts).
 #version 3.7;
 global_settings { assumed_gamma 1 }
+// expect: Should have '#' before 'declare'.
 declare R = 1.5;
 #declare S = sphere { 0, R pigment { rgb <1,0.2,0.1> } }
 camera { location <0,0,-5> look_at 0 }
