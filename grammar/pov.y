@@ -2965,6 +2965,30 @@ finish_head:
 
 finish_body:
   finish_head
+/* POV-Ray 3.0's refraction and ior in a finish: POV-Ray 3.7 moves the
+   ior to the interior and reads refraction 1 as no change, each with a
+   warning (measured: tests/legacy/finish_ior.pov). */
+| finish_body T_IOR expr
+    {
+      TRY(zr__sdl_want_float(p, &$3, &@3, &$1->legacy_ior));
+      zr__sdl_warning(p, &@2, "Index of refraction value should be "
+                      "specified in 'interior{...}' statement.");
+      $$ = $1;
+    }
+| finish_body T_REFRACTION expr
+    {
+      double r;
+      TRY(zr__sdl_want_float(p, &$3, &@3, &r));
+      zr__sdl_warning(p, &@2, "Refraction value unnecessary to turn on "
+                      "refraction. To attenuate, the fade_power and "
+                      "fade_distance keywords should be specified in "
+                      "'interior{...}' statement.");
+      if (r != 1.0 && r != 0.0)
+        zr__sdl_warning(p, &@2, "zRcube renders 'refraction %g' as "
+                        "'refraction 1': POV-Ray dims the light through "
+                        "the object", r);
+      $$ = $1;
+    }
 | finish_body T_AMBIENT colour_value
     { TRY(zr__sdl_want_rgb(p, &$3, &@3, &$1->ambient)); $$ = $1; }
 | finish_body T_EMISSION colour_value
