@@ -124,6 +124,13 @@ static zr_sdl_mod make_mod(zr_sdl_mod_kind kind, const void *ptr) {
   return m;
 }
 
+/* no_bump_scale ("Scaling normals"): read, not applied; bump depth
+   under scaling belongs to the normal perturbation's own rules. */
+static void no_bump_scale_warning(zr_sdl_parser *p, const zr_sdl_loc *loc) {
+  zr__sdl_warning(p, loc, "'no_bump_scale' is ignored: scaling changes "
+                          "the bumps' depth as it would without it");
+}
+
 /* A pattern modifier; e NULL for the keywords without a value. */
 static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
                              const zr_sdl_loc *loc) {
@@ -454,6 +461,7 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %token T_MOD "mod"
 %token T_NO "no"
 %token T_NO_SHADOW "no_shadow"
+%token T_NO_BUMP_SCALE "no_bump_scale"
 %token T_NO_IMAGE "no_image"
 %token T_CHARSET "charset"
 %token T_ASCII "ascii"
@@ -2704,6 +2712,8 @@ normal_start:
 
 normal_body:
   normal_start
+| normal_body T_NO_BUMP_SCALE
+    { no_bump_scale_warning(p, &@2); $$ = $1; }
 | normal_body T_DENSITY_FILE T_DF3 str_expr
     { TRY(zr__sdl_normal_density_file(p, $1, $4, NULL, &@4)); $$ = $1; }
 | normal_body T_DENSITY_FILE T_DF3 str_expr ',' expr
@@ -3233,6 +3243,8 @@ texture_body:
     }
 | texture_body transform
     { TRY(zr__sdl_texture_transform(p, $1, $2)); $$ = $1; }
+| texture_body T_NO_BUMP_SCALE
+    { no_bump_scale_warning(p, &@2); $$ = $1; }
 ;
 
 interior:

@@ -300,7 +300,7 @@ static const zr_sdl_keyword keywords[] = {
     {"natural_spline", T_NATURAL_SPLINE},
     {"nearest_count", T_NEAREST_COUNT},
     {"no", T_NO},
-    {"no_bump_scale", T_UNSUPPORTED},
+    {"no_bump_scale", T_NO_BUMP_SCALE},
     {"no_image", T_NO_IMAGE},
     {"no_radiosity", T_NO_RADIOSITY},
     {"no_reflection", T_NO_REFLECTION},
