@@ -2214,6 +2214,22 @@ clip_objects:
       TRY(zr__sdl_union_add(p, $$, $1));
     }
 | clip_objects object  { TRY(zr__sdl_union_add(p, $1, $2)); $$ = $1; }
+/* "clipped_by { Id }": an object identifier alone, which POV-Ray 3.7
+   reads without a warning (tests/legacy/clip_id.pov). */
+| T_OBJECT_ID
+    {
+      zr_object *copy = zr__sdl_object_copy(p, $1.ptr);
+      TRY(copy);
+      TRY($$ = zr__sdl_object_new(p, ZR_OBJ_INTERSECTION, &@1));
+      TRY(zr__sdl_union_add(p, $$, copy));
+    }
+| clip_objects T_OBJECT_ID
+    {
+      zr_object *copy = zr__sdl_object_copy(p, $2.ptr);
+      TRY(copy);
+      TRY(zr__sdl_union_add(p, $1, copy));
+      $$ = $1;
+    }
 ;
 
 transform:

@@ -80,7 +80,7 @@ EXTRA_DIST += tests/test_legacy_povray.sh tests/legacy/camera_angle0.pov \
 	tests/legacy/camera_angle0p.pov tests/legacy/declare.pov \
 	tests/legacy/srgb.pov tests/legacy/texture_ids.pov \
 	tests/legacy/finish_ior.pov tests/legacy/no_bump_scale.pov \
-	tests/legacy/blocks.pov \
+	tests/legacy/blocks.pov tests/legacy/clip_id.pov \
 	tests/legacy/include_semicolon.inc
 
 # Media against POV-Ray's pictures (skipped without povray).
