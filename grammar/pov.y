@@ -124,6 +124,13 @@ static zr_sdl_mod make_mod(zr_sdl_mod_kind kind, const void *ptr) {
   return m;
 }
 
+/* no_bump_scale ("Scaling normals"): read, not applied; bump depth
+   under scaling belongs to the normal perturbation's own rules. */
+static void no_bump_scale_warning(zr_sdl_parser *p, const zr_sdl_loc *loc) {
+  zr__sdl_warning(p, loc, "'no_bump_scale' is ignored: scaling changes "
+                          "the bumps' depth as it would without it");
+}
+
 /* A pattern modifier; e NULL for the keywords without a value. */
 static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
                              const zr_sdl_loc *loc) {
@@ -454,6 +461,7 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %token T_MOD "mod"
 %token T_NO "no"
 %token T_NO_SHADOW "no_shadow"
+%token T_NO_BUMP_SCALE "no_bump_scale"
 %token T_NO_IMAGE "no_image"
 %token T_CHARSET "charset"
 %token T_ASCII "ascii"
@@ -484,6 +492,10 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %token T_RGBF "rgbf"
 %token T_RGBFT "rgbft"
 %token T_RGBT "rgbt"
+%token T_SRGB "srgb"
+%token T_SRGBF "srgbf"
+%token T_SRGBT "srgbt"
+%token T_SRGBFT "srgbft"
 %token T_RIGHT "right"
 %token T_ROTATE "rotate"
 %token T_ROUGHNESS "roughness"
@@ -855,6 +867,15 @@ items:
 
 item:
   object               { TRY(zr__sdl_add_object(p, $1, &@1)); }
+/* An object identifier alone as a statement: POV-Ray 3.7 renders the
+   object, with or without #version, and does not warn (measured:
+   tests/legacy/bare_object.pov). */
+| T_OBJECT_ID
+    {
+      zr_object *copy = zr__sdl_object_copy(p, $1.ptr);
+      TRY(copy);
+      TRY(zr__sdl_add_object(p, copy, &@1));
+    }
 | camera
 | light
 | background
@@ -1395,6 +1416,14 @@ colour_whole:
     { $$.token = T_RGBT; $$.value = $2; $$.loc = @2; }
 | T_RGBFT expr %prec OPTIONAL_COMMA
     { $$.token = T_RGBFT; $$.value = $2; $$.loc = @2; }
+| T_SRGB expr %prec OPTIONAL_COMMA
+    { $$.token = T_SRGB; $$.value = $2; $$.loc = @2; }
+| T_SRGBF expr %prec OPTIONAL_COMMA
+    { $$.token = T_SRGBF; $$.value = $2; $$.loc = @2; }
+| T_SRGBT expr %prec OPTIONAL_COMMA
+    { $$.token = T_SRGBT; $$.value = $2; $$.loc = @2; }
+| T_SRGBFT expr %prec OPTIONAL_COMMA
+    { $$.token = T_SRGBFT; $$.value = $2; $$.loc = @2; }
 ;
 
 colour_item:
@@ -2195,6 +2224,22 @@ clip_objects:
       TRY(zr__sdl_union_add(p, $$, $1));
     }
 | clip_objects object  { TRY(zr__sdl_union_add(p, $1, $2)); $$ = $1; }
+/* "clipped_by { Id }": an object identifier alone, which POV-Ray 3.7
+   reads without a warning (tests/legacy/clip_id.pov). */
+| T_OBJECT_ID
+    {
+      zr_object *copy = zr__sdl_object_copy(p, $1.ptr);
+      TRY(copy);
+      TRY($$ = zr__sdl_object_new(p, ZR_OBJ_INTERSECTION, &@1));
+      TRY(zr__sdl_union_add(p, $$, copy));
+    }
+| clip_objects T_OBJECT_ID
+    {
+      zr_object *copy = zr__sdl_object_copy(p, $2.ptr);
+      TRY(copy);
+      TRY(zr__sdl_union_add(p, $1, copy));
+      $$ = $1;
+    }
 ;
 
 transform:
@@ -2589,6 +2634,10 @@ colour_list_items:
     { $$ = $1; TRY(zr__sdl_clist_add(p, $$, &$3, &@3)); }
 | colour_list_items colour_rgb
     { $$ = $1; TRY(zr__sdl_clist_add(p, $$, &$2, &@2)); }
+/* "checker Black White": a colour identifier after another colour
+   without a comma (POV-Ray 3.7 renders it without a warning). */
+| colour_list_items T_COLOUR_ID
+    { $$ = $1; TRY(zr__sdl_clist_add(p, $$, &$2.num, &@2)); }
 ;
 
 pattern_mod:
@@ -2709,6 +2758,8 @@ normal_start:
 
 normal_body:
   normal_start
+| normal_body T_NO_BUMP_SCALE
+    { no_bump_scale_warning(p, &@2); $$ = $1; }
 | normal_body T_DENSITY_FILE T_DF3 str_expr
     { TRY(zr__sdl_normal_density_file(p, $1, $4, NULL, &@4)); $$ = $1; }
 | normal_body T_DENSITY_FILE T_DF3 str_expr ',' expr
@@ -2978,6 +3029,30 @@ finish_open:
 
 finish_body:
   finish_head
+/* POV-Ray 3.0's refraction and ior in a finish: POV-Ray 3.7 moves the
+   ior to the interior and reads refraction 1 as no change, each with a
+   warning (measured: tests/legacy/finish_ior.pov). */
+| finish_body T_IOR expr
+    {
+      TRY(zr__sdl_want_float(p, &$3, &@3, &$1->legacy_ior));
+      zr__sdl_warning(p, &@2, "Index of refraction value should be "
+                      "specified in 'interior{...}' statement.");
+      $$ = $1;
+    }
+| finish_body T_REFRACTION expr
+    {
+      double r;
+      TRY(zr__sdl_want_float(p, &$3, &@3, &r));
+      zr__sdl_warning(p, &@2, "Refraction value unnecessary to turn on "
+                      "refraction. To attenuate, the fade_power and "
+                      "fade_distance keywords should be specified in "
+                      "'interior{...}' statement.");
+      if (r != 1.0 && r != 0.0)
+        zr__sdl_warning(p, &@2, "zRcube renders 'refraction %g' as "
+                        "'refraction 1': POV-Ray dims the light through "
+                        "the object", r);
+      $$ = $1;
+    }
 | finish_body T_AMBIENT colour_value
     { TRY(zr__sdl_want_rgb(p, &$3, &@3, &$1->ambient)); $$ = $1; }
 | finish_body T_EMISSION colour_value
@@ -3093,6 +3168,24 @@ layered_texture:
 texture_start:
   %empty               { TRY($$ = zr__sdl_texture_new(p, NULL)); }
 | T_TEXTURE_ID         { TRY($$ = zr__sdl_texture_new(p, $1.ptr)); }
+/* A pigment, finish or normal identifier first in a texture (older
+   syntax that POV-Ray 3.7 renders without a warning; later in the
+   texture it refuses them; measured: tests/legacy/texture_ids.pov). */
+| T_PIGMENT_ID
+    {
+      TRY($$ = zr__sdl_texture_new(p, NULL));
+      TRY($$->pigment = zr__sdl_pigment_new(p, $1.ptr));
+    }
+| T_FINISH_ID
+    {
+      TRY($$ = zr__sdl_texture_new(p, NULL));
+      TRY($$->finish = zr__sdl_finish_new(p, $1.ptr));
+    }
+| T_NORMAL_ID
+    {
+      TRY($$ = zr__sdl_texture_new(p, NULL));
+      TRY($$->normal = zr__sdl_normal_new(p, $1.ptr));
+    }
 ;
 
 /* A pattern with a texture_map or a block pattern's textures makes a
@@ -3204,6 +3297,8 @@ texture_body:
     }
 | texture_body transform
     { TRY(zr__sdl_texture_transform(p, $1, $2)); $$ = $1; }
+| texture_body T_NO_BUMP_SCALE
+    { no_bump_scale_warning(p, &@2); $$ = $1; }
 ;
 
 interior:

@@ -87,6 +87,15 @@ EXTRA_DIST += bench/run.sh bench/README.md bench/conformance.sh \
 TESTS += tests/test_cornell_truth.sh
 EXTRA_DIST += tests/test_cornell_truth.sh
 
+# Old syntax against POV-Ray's pictures (skipped without povray).
+TESTS += tests/test_legacy_povray.sh
+EXTRA_DIST += tests/test_legacy_povray.sh tests/legacy/camera_angle0.pov \
+	tests/legacy/camera_angle0p.pov tests/legacy/declare.pov \
+	tests/legacy/srgb.pov tests/legacy/texture_ids.pov \
+	tests/legacy/finish_ior.pov tests/legacy/no_bump_scale.pov \
+	tests/legacy/blocks.pov tests/legacy/clip_id.pov \
+	tests/legacy/include_semicolon.inc
+
 # Media against POV-Ray's pictures (skipped without povray).
 TESTS += tests/test_media_povray.sh
 EXTRA_DIST += tests/test_media_povray.sh tests/media_check.pov

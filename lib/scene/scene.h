@@ -346,6 +346,10 @@ typedef struct zr_finish {
      interference tints the light from light sources (lib/trace/shade.c);
      amount 0 (the default) is off, thickness in microns. */
   double irid, irid_thickness, irid_turbulence;
+  /* finish { ior N } (POV-Ray 3.0 syntax, which 3.7 renders as the
+     interior's ior, with a warning): 0 when absent; the object that
+     wears the finish gets it as its interior's ior (lib/sdl/build.c). */
+  double legacy_ior;
 } zr_finish;
 
 typedef struct zr_interior {

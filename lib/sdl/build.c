@@ -1075,6 +1075,19 @@ static void set_interior(zr_object *o, const zr_interior *in, bool force) {
       set_interior(o->u.csg.children[i], in, false);
 }
 
+/* A finish with POV-Ray 3.0's "ior N" gives its object that ior. */
+static bool legacy_ior(zr_sdl_parser *p, zr_object *o,
+                       const zr_finish *f) {
+  if (!f || f->legacy_ior <= 0)
+    return true;
+  zr_interior *in = zr__sdl_interior_new(p, o->interior);
+  if (!in)
+    return false;
+  in->ior = f->legacy_ior;
+  set_interior(o, in, true);
+  return true;
+}
+
 static void set_flag(zr_object *o, zr_sdl_mod_kind kind) {
   if (kind == ZR_SDL_MOD_INVERSE) {
     zr__sdl_object_invert(o); /* De Morgan for CSG: build_object.c */
@@ -1177,12 +1190,13 @@ bool zr__sdl_object_mod(zr_sdl_parser *p, zr_object *o,
     if (!(tx = own_texture(p, o)))
       return false;
     tx->finish = mod->ptr;
-    return true;
+    return legacy_ior(p, o, tx->finish);
   case ZR_SDL_MOD_TEXTURE:
     /* A texture on a textured object goes on top as a layer, as in
        POV-Ray (build_texture.c). */
     o->texture = zr__sdl_texture_layer(p, o->texture, mod->ptr);
-    return o->texture != NULL;
+    return o->texture != NULL &&
+           legacy_ior(p, o, ((const zr_texture *)mod->ptr)->finish);
   case ZR_SDL_MOD_MATERIAL: {
     const zr_sdl_material *m = mod->ptr;
     if (m->texture &&

@@ -241,6 +241,19 @@ bool zr__sdl_camera_type(zr_sdl_parser *p, zr_camera_kind kind,
 bool zr__sdl_camera_angle(zr_sdl_parser *p, double degrees,
                           const double *v, const zr_sdl_loc *loc) {
   zr_camera_kind kind = p->scene->camera.kind;
+  /* "angle 0" (old scenes write it): POV-Ray 3.7 renders a perspective
+     camera as if no angle were given, and sizes an orthographic one at
+     the look_at distance from its direction and right vectors, as any
+     angle does, without changing the direction (measured: tests/
+     camera_angle0.sh). No warning. */
+  if (degrees == 0 && kind == ZR_CAMERA_PERSPECTIVE)
+    return true;
+  if (degrees == 0 && kind == ZR_CAMERA_ORTHOGRAPHIC) {
+    p->camera.angle_given = true;
+    p->camera.angle = 0;
+    p->camera.v_angle_given = false;
+    return true;
+  }
   if (kind == ZR_CAMERA_PERSPECTIVE && !(degrees > 0 && degrees < 180)) {
     zr__sdl_error(p, ZR_ESCENE, loc,
                   "a perspective camera's angle must be between 0 and 180 "
@@ -318,7 +331,7 @@ static void look_at(zr_camera *c, zr_vec3 target) {
 /* The projections' angles: given, or each kind's default. */
 static void camera_angles(zr_sdl_parser *p, zr_camera *c) {
   if (p->camera.from_id) {
-    if (p->camera.angle_given)
+    if (p->camera.angle_given && p->camera.angle > 0)
       c->h_angle = p->camera.angle;
     if (p->camera.v_angle_given)
       c->v_angle = p->camera.v_angle;
@@ -329,7 +342,9 @@ static void camera_angles(zr_sdl_parser *p, zr_camera *c) {
     c->v_angle = p->camera.v_angle_given ? p->camera.v_angle
                                          : 0.5 * c->h_angle;
   } else {
-    c->h_angle = p->camera.angle_given ? p->camera.angle : 90.0;
+    c->h_angle = p->camera.angle_given && p->camera.angle > 0
+                     ? p->camera.angle
+                     : 90.0;
     c->v_angle = p->camera.v_angle_given ? p->camera.v_angle : c->h_angle;
   }
 }
@@ -353,7 +368,7 @@ bool zr__sdl_camera_end(zr_sdl_parser *p) {
   }
   bool perspective_like = c->kind == ZR_CAMERA_PERSPECTIVE ||
                           c->kind == ZR_CAMERA_ORTHOGRAPHIC;
-  if (p->camera.angle_given && perspective_like) {
+  if (p->camera.angle_given && p->camera.angle > 0 && perspective_like) {
     double half = p->camera.angle * PI / 360.0;
     double length = 0.5 * zr_v3_len(c->right) / tan(half);
     c->direction = zr_v3_scale(zr_v3_norm(c->direction), length);

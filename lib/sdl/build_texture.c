@@ -144,6 +144,27 @@ bool zr__sdl_pigment_map_set(zr_sdl_parser *p, zr_pigment *pg,
     pg->kind = ZR_PIGMENT_PATTERN;
   if (!block_fits(p, pg->pattern.kind, m, loc))
     return false;
+  size_t want = pg->pattern.kind == ZR_PAT_HEXAGON ? 3 : 2;
+  if (zr__pattern_is_block(pg->pattern.kind) && m->n < want) {
+    /* Blocks left out are black: POV-Ray 3.7 renders "checker pigment
+       { Green }" green and black (measured: tests/legacy/blocks.pov). */
+    zr_map *full = zr__sdl_map_new(p);
+    if (!full)
+      return false;
+    for (size_t i = 0; i < want; i++) {
+      zr_map_entry e;
+      if (i < m->n) {
+        e = m->entries[i];
+      } else {
+        memset(&e, 0, sizeof e);
+        if (!(e.u.pigment = zr__sdl_pigment_new(p, NULL)))
+          return false;
+      }
+      if (!append(p, full, &e))
+        return false;
+    }
+    m = full;
+  }
   pg->pigment_map = m;
   return true;
 }

@@ -517,6 +517,10 @@ static bool do_include(zr_sdl_parser *p, const zr_sdl_loc *directive) {
       return false;
     name = p->nested_rvalue.ptr;
   }
+  /* "#include "x.inc";": POV-Ray 3.7 reads the ';' (measured:
+     tests/legacy/include_semicolon.pov). */
+  if (zr__sdl_peek(p, 0)->kind == ';')
+    top(p)->pos++;
   if (p->include_depth >= ZR_SDL_MAX_INCLUDE_DEPTH) {
     zr__sdl_error(p, ZR_ELIMIT, directive,
                   "#include nested more than %d levels deep "
@@ -685,6 +689,7 @@ static bool continues(int kind) {
   case '{': case '?': case ':': case '<': case '>': case '=': case '&':
   case '|': case T_LE: case T_GE: case T_NE:
   case T_RGB: case T_RGBF: case T_RGBT: case T_RGBFT: case T_RED:
+  case T_SRGB: case T_SRGBF: case T_SRGBT: case T_SRGBFT:
   case T_GREEN: case T_BLUE: case T_FILTER: case T_TRANSMIT:
     return true;
   default:
@@ -1020,6 +1025,10 @@ int zr__sdl_next(zr_sdl_lexval *val, zr_sdl_loc *loc, zr_sdl_parser *p) {
       continue;
     case T_DECLARE:
     case T_LOCAL:
+      /* "declare" without '#' (POV-Ray 2.x-3.0 syntax, which 3.7
+         accepts; measured: tests/legacy/declare.pov). */
+      if (t->kind == T_DECLARE && t->length == 7)
+        zr__sdl_warning(p, &tl, "Should have '#' before 'declare'.");
       if (!do_declare(p, t->kind))
         return ZR__POV_error;
       continue;

@@ -419,6 +419,18 @@ static bool item_components(zr_sdl_parser *p, const zr_sdl_colour_mod *m,
   return true;
 }
 
+/* An sRGB-encoded component (the manual's "sRGB Colors": srgb, srgbf,
+   srgbt, srgbft) in the working space: the sRGB standard's decoding to
+   linear light, then the working space's exponent 1/assumed_gamma.
+   Negative values decode as the mirror image of positive ones. */
+static double srgb_to_working(double s, double assumed_gamma) {
+  double a = fabs(s);
+  double linear = a <= 0.04045 ? a / 12.92 : pow((a + 0.055) / 1.055, 2.4);
+  if (assumed_gamma > 0 && assumed_gamma != 1.0)
+    linear = pow(linear, 1.0 / assumed_gamma);
+  return s < 0 ? -linear : linear;
+}
+
 bool zr__sdl_colour_apply(zr_sdl_parser *p, zr_sdl_expr *colour,
                           const zr_sdl_colour_mod *mod) {
   if (colour->dim != 5) {
@@ -432,6 +444,23 @@ bool zr__sdl_colour_apply(zr_sdl_parser *p, zr_sdl_expr *colour,
   switch (mod->token) {
   case 0:
     return true;
+  case T_SRGB:
+  case T_SRGBF:
+  case T_SRGBT:
+  case T_SRGBFT: {
+    int n = mod->token == T_SRGB ? 3 : mod->token == T_SRGBFT ? 5 : 4;
+    if (!item_components(p, mod, n, v))
+      return false;
+    for (int i = 0; i < 3; i++)
+      c[i] = srgb_to_working(v[i], p->scene->settings.assumed_gamma);
+    if (mod->token == T_SRGBF || mod->token == T_SRGBFT)
+      c[3] = v[3];
+    if (mod->token == T_SRGBT)
+      c[4] = v[3];
+    if (mod->token == T_SRGBFT)
+      c[4] = v[4];
+    return true;
+  }
   case T_RGB:
     if (!item_components(p, mod, 3, v))
       return false;
