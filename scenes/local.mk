@@ -13,6 +13,7 @@ dist_scenes_DATA = \
 	scenes/camera.pov \
 	scenes/cornell.pov \
 	scenes/csg_difference.pov \
+	scenes/csg_clip.pov \
 	scenes/csg_union.pov \
 	scenes/default.pov \
 	scenes/default.ref.pov \

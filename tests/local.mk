@@ -46,6 +46,7 @@ EXTRA_DIST += tests/golden.sh tests/ref/README.md tests/ref/make-refs.sh \
 	tests/ref/fisheye.png \
 	tests/ref/ortho.png \
 	tests/ref/csg_difference.png \
+	tests/ref/csg_clip.png \
 	tests/ref/csg_union.png \
 	tests/ref/default.png \
 	tests/ref/expressions.png \

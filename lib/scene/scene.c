@@ -156,12 +156,41 @@ static zr_object *resolve_part(zr_scene *scene, const zr_object *object,
   return copy;
 }
 
+/* Both clips at once: their intersection (NULL when neither clips).  The
+   clip objects are only read, so they are shared, not copied. */
+static const zr_object *clip_both(zr_scene *scene, const zr_object *a,
+                                  const zr_object *b) {
+  if (!a || !b)
+    return a ? a : b;
+  zr_object *both = zr__arena_alloc(&scene->arena, sizeof *both);
+  zr_object **children =
+      zr__arena_alloc(&scene->arena, 2 * sizeof *children);
+  if (!both || !children)
+    return NULL;
+  children[0] = (zr_object *)a;
+  children[1] = (zr_object *)b;
+  both->kind = ZR_OBJ_INTERSECTION;
+  both->u.csg.children = children;
+  both->u.csg.n_children = 2;
+  both->where = b->where;
+  return both;
+}
+
+/* A union's clipped_by ("Clipped_By": only the part inside the clipping
+   object is seen) is handed down to every primitive under it, joined to
+   the clip each may have of its own, since the union itself is gone once
+   flattened; clip is that inherited clip (NULL: none). */
 static zr_status flatten(zr_scene *scene, zr_object *object,
-                         const zr_texture *inherited, flat_list *out) {
+                         const zr_texture *inherited, const zr_object *clip,
+                         flat_list *out) {
   const zr_texture *texture = object->texture ? object->texture : inherited;
   if (object->kind == ZR_OBJ_UNION) {
+    const zr_object *inner = clip_both(scene, clip, object->clip);
+    if ((clip || object->clip) && !inner)
+      return ZR_ENOMEM;
     for (size_t i = 0; i < object->u.csg.n_children; i++) {
-      zr_status s = flatten(scene, object->u.csg.children[i], texture, out);
+      zr_status s =
+          flatten(scene, object->u.csg.children[i], texture, inner, out);
       if (s != ZR_OK)
         return s;
     }
@@ -172,10 +201,12 @@ static zr_status flatten(zr_scene *scene, zr_object *object,
   if (s != ZR_OK)
     return s;
   const zr_object *prim = object;
+  zr_object *own = object;
   if (zr__is_csg(object->kind)) {
     /* Intersections and merges stay whole: one primitive. */
-    if (!(prim = resolve_part(scene, object, texture, NULL)))
+    if (!(own = resolve_part(scene, object, texture, NULL)))
       return ZR_ENOMEM;
+    prim = own;
   } else {
     /* Every object of the tree is its own (the parser copies a declared
        object where it is used), so it takes what it inherits itself: a
@@ -184,6 +215,8 @@ static zr_status flatten(zr_scene *scene, zr_object *object,
     if (!object->interior)
       object->interior = scene->default_interior;
   }
+  if (clip && !(own->clip = clip_both(scene, own->clip, clip)))
+    return ZR_ENOMEM;
   /* A mesh with a texture list gets one copy per texture, each placed
      and textured like this one (lib/trace/obj_mesh.c). */
   if ((s = zr__mesh_instance(&scene->arena, &prim)) != ZR_OK)
@@ -196,7 +229,7 @@ zr_status zr__scene_finish(zr_scene *scene, zr_context *ctx) {
   flat_list list = {0};
   for (size_t i = 0; i < scene->n_objects; i++) {
     zr_status s = flatten(scene, scene->objects[i], scene->default_texture,
-                          &list);
+                          NULL, &list);
     if (s != ZR_OK) {
       free(list.items);
       return zr__diag(ctx, ZR_DIAG_ERROR, s, NULL,
