@@ -590,7 +590,7 @@ static void test_directives_file_io(void **state) {
   bad(f, "#fopen F \"/etc/x.txt\" write\n", ZR_EACCESS,
       "'#fopen' cannot open a file for writing: '/etc/x.txt' is outside "
       "the folders a scene may write (the working directory and the write "
-      "paths)", NULL);
+      "paths; --write-path=DIR adds one)", NULL);
   assert_int_equal(parse(f, "#fopen F \"../x.txt\" append\n"),
                    ZR_EACCESS);
   assert_non_null(strstr(f->diag.message, "'../x.txt' leads to '"));
@@ -599,7 +599,7 @@ static void test_directives_file_io(void **state) {
   bad(f, "#fopen F \"/etc/passwd\" read\n", ZR_EACCESS,
       "cannot read data file: '/etc/passwd' is outside the folders a "
       "scene may read (the scene's folder, the working directory, the "
-      "include paths and the read paths)", NULL);
+      "include paths and the read paths; --read-path=DIR adds one)", NULL);
   bad(f, "#fopen F \"no_such_file.txt\" read\n", ZR_ENOTFOUND,
       "cannot find data file 'no_such_file.txt'", NULL);
 }

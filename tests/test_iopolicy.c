@@ -163,7 +163,7 @@ static void test_iopolicy_read_default_folders(void **state) {
   char want[2048];
   snprintf(want, sizeof want, "'%s' is outside the folders a scene may "
            "read (the scene's folder, the working directory, the include "
-           "paths and the read paths)", secret);
+           "paths and the read paths; --read-path=DIR adds one)", secret);
   assert_string_equal(why, want);
   assert_null(strstr(why, "secret-first-line"));
   /* ".." out of the working directory: resolved, then refused. */

@@ -148,9 +148,9 @@ static zr_status refuse_outside(const char *path, const char *resolved,
   const char *what = access == ZR_IO_ACCESS_READ
                          ? "read (the scene's folder, the working "
                            "directory, the include paths and the read "
-                           "paths)"
+                           "paths; --read-path=DIR adds one)"
                          : "write (the working directory and the write "
-                           "paths)";
+                           "paths; --write-path=DIR adds one)";
   if (strcmp(path, resolved) != 0)
     return say(why, why_size, ZR_EACCESS,
                "'%s' leads to '%s', outside the folders a scene may %s",
