@@ -81,6 +81,10 @@ EXTRA_DIST += tests/golden.sh tests/ref/README.md tests/ref/make-refs.sh \
 
 # The benchmark against POV-Ray (run by `make bench` in the top Makefile).
 EXTRA_DIST += bench/run.sh bench/README.md bench/conformance.sh \
+	bench/results/stock-2026-12-02-before.tsv \
+	bench/results/stock-2026-12-02-after.tsv \
+	bench/results/corpus-2026-12-02-before.tsv \
+	bench/results/corpus-2026-12-02-after.tsv \
 	bench/conformance.py
 
 # The radiosity benchmark's footing: imgcmp reads POV-Ray's Radiance HDR
