@@ -15,7 +15,7 @@ tests_test_cli_options_LDADD = $(TEST_LDADD)
 
 # End-to-end: mpirun with 1 to 3 ranks, bad input, option handling.
 TESTS += tests/test_cli.sh
-EXTRA_DIST += tests/test_cli.sh
+EXTRA_DIST += tests/test_cli.sh tests/cli_env.sh
 # Every POV-Ray 3.7 include file parses (skipped without povray-includes).
 TESTS += tests/test_includes.sh
 EXTRA_DIST += tests/test_includes.sh

@@ -13,20 +13,8 @@
 # build.
 
 set -u
-ZRCUBE="${ZR_BUILDDIR:-$(pwd)}/bin/zrcube"
-MPIRUN="${MPIRUN:-mpirun}"
-: "${OMPI_ALLOW_RUN_AS_ROOT:=1}" "${OMPI_ALLOW_RUN_AS_ROOT_CONFIRM:=1}"
-: "${OMPI_MCA_rmaps_base_oversubscribe:=1}"
-export OMPI_ALLOW_RUN_AS_ROOT OMPI_ALLOW_RUN_AS_ROOT_CONFIRM \
-  OMPI_MCA_rmaps_base_oversubscribe
-MPI_ASAN="detect_leaks=0${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
-
-if [ ! -x "$ZRCUBE" ]; then
-  echo "test_cli.sh: no zrcube at $ZRCUBE" >&2
-  exit 99
-fi
-work=$(mktemp -d "${TMPDIR:-/tmp}/zr_test_cli.XXXXXX") || exit 99
-trap 'rm -rf "$work"' EXIT
+TEST_NAME=test_cli
+. "$(dirname "$0")/cli_env.sh"
 cd "$work" || exit 99
 
 failures=0

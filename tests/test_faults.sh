@@ -20,23 +20,10 @@
 # Environment: ZR_BUILDDIR (where bin/zrcube is), MPIRUN, ZR_TEST_CFLAGS
 # (to tell a sanitizer build).
 set -u
-ZRCUBE="${ZR_BUILDDIR:-$(pwd)}/bin/zrcube"
-MPIRUN="${MPIRUN:-mpirun}"
-: "${OMPI_ALLOW_RUN_AS_ROOT:=1}" "${OMPI_ALLOW_RUN_AS_ROOT_CONFIRM:=1}"
-: "${OMPI_MCA_rmaps_base_oversubscribe:=1}"
-export OMPI_ALLOW_RUN_AS_ROOT OMPI_ALLOW_RUN_AS_ROOT_CONFIRM \
-  OMPI_MCA_rmaps_base_oversubscribe
 sanitized=0
 case "${ZR_TEST_CFLAGS:-}" in *-fsanitize*) sanitized=1 ;; esac
-# OpenMPI leaks at exit: LeakSanitizer off under mpirun only.
-MPI_ASAN="detect_leaks=0${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
-
-if [ ! -x "$ZRCUBE" ]; then
-  echo "test_faults.sh: no zrcube at $ZRCUBE" >&2
-  exit 99
-fi
-work=$(mktemp -d "${TMPDIR:-/tmp}/zr_test_faults.XXXXXX") || exit 99
-[ -n "${ZR_KEEP:-}" ] || trap 'rm -rf "$work"' EXIT
+TEST_NAME=test_faults
+. "$(dirname "$0")/cli_env.sh"
 cd "$work" || exit 99
 
 failures=0

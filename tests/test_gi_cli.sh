@@ -10,20 +10,9 @@
 #
 # Environment: ZR_BUILDDIR, ZR_SRCDIR, MPIRUN, as for test_cli.sh.
 set -u
-ZRCUBE="${ZR_BUILDDIR:-$(pwd)}/bin/zrcube"
 SRCDIR="${ZR_SRCDIR:-$(cd "$(dirname "$0")/.." && pwd)}"
-MPIRUN="${MPIRUN:-mpirun}"
-: "${OMPI_ALLOW_RUN_AS_ROOT:=1}" "${OMPI_ALLOW_RUN_AS_ROOT_CONFIRM:=1}"
-: "${OMPI_MCA_rmaps_base_oversubscribe:=1}"
-export OMPI_ALLOW_RUN_AS_ROOT OMPI_ALLOW_RUN_AS_ROOT_CONFIRM \
-  OMPI_MCA_rmaps_base_oversubscribe
-MPI_ASAN="detect_leaks=0${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
-if [ ! -x "$ZRCUBE" ]; then
-  echo "test_gi_cli.sh: no zrcube at $ZRCUBE" >&2
-  exit 99
-fi
-work=$(mktemp -d "${TMPDIR:-/tmp}/zr_test_gi_cli.XXXXXX") || exit 99
-trap 'rm -rf "$work"' EXIT
+TEST_NAME=test_gi_cli
+. "$(dirname "$0")/cli_env.sh"
 cd "$work" || exit 99
 cp "$SRCDIR/scenes/sky_outdoor.pov" sky.pov || exit 99
 failures=0

@@ -15,21 +15,9 @@
 # Environment: ZR_BUILDDIR (where bin/zrcube is), MPIRUN (mpirun).
 
 set -u
-ZRCUBE="${ZR_BUILDDIR:-$(pwd)}/bin/zrcube"
-MPIRUN="${MPIRUN:-mpirun}"
-: "${OMPI_ALLOW_RUN_AS_ROOT:=1}" "${OMPI_ALLOW_RUN_AS_ROOT_CONFIRM:=1}"
-: "${OMPI_MCA_rmaps_base_oversubscribe:=1}"
-export OMPI_ALLOW_RUN_AS_ROOT OMPI_ALLOW_RUN_AS_ROOT_CONFIRM \
-  OMPI_MCA_rmaps_base_oversubscribe
-MPI_ASAN="detect_leaks=0${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
-
-if [ ! -x "$ZRCUBE" ]; then
-  echo "test_iopolicy.sh: no zrcube at $ZRCUBE" >&2
-  exit 99
-fi
-top=$(mktemp -d "${TMPDIR:-/tmp}/zr_test_iopolicy.XXXXXX") || exit 99
-trap 'rm -rf "$top"' EXIT
-top=$(cd "$top" && pwd -P)
+TEST_NAME=test_iopolicy
+. "$(dirname "$0")/cli_env.sh"
+top=$(cd "$work" && pwd -P)
 mkdir -p "$top/work/outdir" "$top/outside" "$top/extra" "$top/logs" ||
   exit 99
 cd "$top/work" || exit 99
