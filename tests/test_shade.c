@@ -315,6 +315,27 @@ static void test_shade_texture_map_after_transform(void **state) {
   assert_rgb(c, 0.75, 0.75, 0.75, 1e-9);
 }
 
+/* A bump that turns the shading normal away from the viewer still lets
+   the lights on the viewer's side shine (shadow rays leave from the
+   side the unperturbed normal gives): POV-Ray 3.7 renders
+   bench/conform/normal_probe.pov with wrinkles 1.5, scale 0.3 (16-bit,
+   linear) as these, at points whose perturbed normal faces +z. */
+static void test_shade_bump_facing_away_is_lit(void **state) {
+  (void)state;
+  const char *scene =
+      "global_settings { ambient_light 0 }\n"
+      "light_source { <100, 0, -100> rgb <1, 0, 0> parallel point_at 0 }\n"
+      "light_source { <-100, 0, -100> rgb <0, 1, 0> parallel point_at 0 }\n"
+      "light_source { <0, 100, -100> rgb <0, 0, 1> parallel point_at 0 }\n"
+      "plane { -z, 0 pigment { rgb 1 }\n"
+      "  finish { ambient 0 diffuse 1 specular 0 phong 0 }\n"
+      "  normal { wrinkles 1.5 scale 0.3 } }\n";
+  assert_rgb(parse_and_trace(scene, 0.4765625, 0.9921875), 0.30998, 0,
+             0.47623, 2e-4);
+  assert_rgb(parse_and_trace(scene, 0.7734375, 0.9921875), 0.66454, 0,
+             0.16239, 2e-4);
+}
+
 /* The slope pattern sees the hit's normal in pigments and texture_maps:
    a plane facing -z, slope { <0, -1, -1> } at 45 degrees gives 0.75
    (1 - 45 / 180), and a texture_map picks by it (hand values). */
@@ -832,6 +853,7 @@ int main(void) {
       cmocka_unit_test(test_shade_irid_matches_povray),
       cmocka_unit_test(test_shade_irid_slope_double_illuminate_parse),
       cmocka_unit_test(test_shade_texture_map_after_transform),
+      cmocka_unit_test(test_shade_bump_facing_away_is_lit),
       cmocka_unit_test(test_shade_slope_uses_the_surface_normal),
       cmocka_unit_test(test_shade_metallic_curve_matches_povray),
       cmocka_unit_test(test_shade_reflection_of_background),

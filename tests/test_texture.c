@@ -305,6 +305,58 @@ static void test_texture_slope_map_hermite(void **state) {
   assert_true(fabs(zr__slope_map_eval(&m, 0.3) - 0.3) < EPS);
 }
 
+/* POV-Ray 3.7's normals of a plane wearing bumps 0.5, dents 0.5 and
+   wrinkles 0.5 (scale 0.3), read back from its renders by bench/conform/bump_fit.py
+   (normal_probe.pov, 128x128, pixels (10,20), (64,64), (100,37),
+   (77,110)): the world point and the tilt (nx, ny) / n_z of the normal
+   towards the viewer.  The read-back is good to about 1e-4. */
+static const struct {
+  const char *normal;
+  double side, x, y, tx, ty;
+} bump_cases[] = {
+    {"bumps 0.5", 1, -0.83593750, 0.67968750, 0.33828, -0.03779},
+    {"bumps 0.5", 1, 0.00781250, -0.00781250, -0.16571, 0.14483},
+    {"bumps 0.5", 1, 0.57031250, 0.41406250, 0.00515, 0.17820},
+    {"bumps 0.5", 1, 0.21093750, -0.72656250, -0.00839, 0.04588},
+    {"dents 0.5", 1, -0.83593750, 0.67968750, 0.14780, -0.01653},
+    {"dents 0.5", 1, 0.00781250, -0.00781250, -0.00644, 0.00559},
+    {"dents 0.5", 1, 0.57031250, 0.41406250, 0.00086, 0.02947},
+    {"dents 0.5", 1, 0.21093750, -0.72656250, -0.00120, 0.00655},
+    {"bumps 0.5", -1, 0.83593750, 0.67968750, 0.03193, -0.03638},
+    {"bumps 0.5", -1, -0.00781250, -0.00781250, -0.28944, 0.23396},
+    {"bumps 0.5", -1, -0.57031250, 0.41406250, -0.09752, 0.05418},
+    {"bumps 0.5", -1, -0.21093750, -0.72656250, 0.07486, -0.14876},
+    {"wrinkles 0.5", -1, 0.83593750, 0.67968750, 0.11517, 0.20334},
+    {"wrinkles 0.5", -1, -0.00781250, -0.00781250, 0.29310, 0.23823},
+    {"wrinkles 0.5", -1, -0.57031250, 0.41406250, 0.12501, 0.14140},
+    {"wrinkles 0.5", -1, -0.21093750, -0.72656250, 0.20033, 0.23291},
+    {"wrinkles 0.5", 1, -0.83593750, 0.67968750, 0.47277, 0.14626},
+    {"wrinkles 0.5", 1, 0.00781250, -0.00781250, 0.54933, 0.50602},
+    {"wrinkles 0.5", 1, 0.57031250, 0.41406250, 0.30813, 0.50125},
+    {"wrinkles 0.5", 1, 0.21093750, -0.72656250, 0.14172, 0.15519},
+};
+
+static void test_texture_noise_normals_match_povray(void **state) {
+  fixture *f = *state;
+  for (size_t k = 0; k < sizeof bump_cases / sizeof bump_cases[0]; k++) {
+    char text[128];
+    snprintf(text, sizeof text, "plane { -z, 0 normal { %s scale 0.3 } }",
+             bump_cases[k].normal);
+    zr_scene *s = good(f, text);
+    assert_true(s->n_objects >= 1);
+    const zr_normal *nm = s->objects[0]->texture->normal;
+    assert_non_null(nm);
+    double side = bump_cases[k].side;
+    zr_vec3 n = zr__normal_perturb(nm, zr_v3(bump_cases[k].x,
+                                             bump_cases[k].y, 0),
+                                   zr_v3(0, 0, -side));
+    double nz = -side * n.z;
+    assert_true(nz > 0);
+    assert_true(fabs(n.x / nz - bump_cases[k].tx) < 2e-4);
+    assert_true(fabs(n.y / nz - bump_cases[k].ty) < 2e-4);
+  }
+}
+
 static void test_texture_new_patterns(void **state) {
   (void)state;
   zr_pattern pt;
@@ -675,6 +727,7 @@ int main(void) {
       cmocka_unit_test(test_texture_block_textures_and_material),
       cmocka_unit_test(test_texture_average_texture_map),
       cmocka_unit_test(test_texture_slope_map_hermite),
+      cmocka_unit_test(test_texture_noise_normals_match_povray),
       cmocka_unit_test(test_texture_new_patterns),
       cmocka_unit_test(test_texture_normal_forms_parse),
       cmocka_unit_test(test_texture_noise_and_waves_settings),

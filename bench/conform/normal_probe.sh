@@ -6,10 +6,10 @@
 # parallel lights, 128x128, orthographic, 16-bit PNG) with POV-Ray and
 # with zRcube, and normal_probe.py reads the normals back.  The gains in
 # lib/scene/texture.c (tilt_gain) come from these lines: gradient's
-# median tilt at bump size A is 0.13333 A; for bumps, dents, ripples,
-# waves and wrinkles the gain is POV-Ray's tilt_rms over zRcube's with
-# gain 1 at bump size 0.1 (small tilts, where the read-back is linear),
-# tilt_dev (the spread about the mean tilt) for wrinkles.  Run from anywhere; needs povray and /usr/bin/python3 (numpy).
+# median tilt at bump size A is 0.13333 A; for ripples and waves the
+# gain is POV-Ray's tilt_rms over zRcube's with
+# gain 1 at bump size 0.1 (small tilts, where the read-back is linear).
+# bumps, dents and wrinkles: see bump_fit.py.  Run from anywhere; needs povray and /usr/bin/python3 (numpy).
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 zr=${1:-$here/../../build/bin/zrcube}
