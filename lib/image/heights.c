@@ -39,6 +39,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/budget.h"
 #include "core/context.h"
 #include "image/image.h"
 
@@ -301,7 +302,21 @@ static zr_status read_gif(zr_context *ctx, const char *name,
                     "but this one is %d pixels wide", name, g.width);
   }
   int width = pot ? g.width / 2 : g.width;
+  /* The samples beside the indices must fit in what is left of the
+     memory budget (a GIF header may declare 2^27 pixels in a few bytes;
+     found by tests/fuzz/fuzz_image); the caller owns them after. */
+  size_t need = (size_t)width * (size_t)g.height * sizeof(float) +
+                (size_t)g.width * (size_t)g.height;
+  if (ctx && !zr__budget_charge(ctx->budget, need)) {
+    free(g.indices);
+    char what[200];
+    snprintf(what, sizeof what, "the %dx%d height field '%.120s'", width,
+             g.height, name);
+    return zr__context_over_budget(ctx, need, NULL, what);
+  }
   float *heights = malloc((size_t)width * (size_t)g.height * sizeof *heights);
+  if (ctx)
+    zr__budget_release(ctx->budget, need);
   if (!heights) {
     free(g.indices);
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s", name,
