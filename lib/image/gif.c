@@ -25,9 +25,11 @@
  */
 #include <stdbool.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/budget.h"
 #include "core/context.h"
 #include "image/image.h"
 
@@ -269,10 +271,24 @@ zr_status zr__gif_decode_indices(zr_context *ctx, const char *name,
       return bad(ctx, name, "truncated GIF image data");
     if (*min < 2 || *min > 8)
       return bad(ctx, name, "damaged GIF image data (LZW code size)");
+    /* The index buffers (two while an interlaced image is reordered)
+       are charged to the memory budget while they are built: a header
+       may declare 2^27 pixels in a few bytes (found by
+       tests/fuzz/fuzz_image).  The indices handed back are small beside
+       what the callers then charge for the picture or height field. */
+    size_t need = interlaced ? 2 * count : count;
+    if (ctx && !zr__budget_charge(ctx->budget, need)) {
+      char what[200];
+      snprintf(what, sizeof what, "the %dx%d GIF image '%.120s'", width,
+               height, name);
+      return zr__context_over_budget(ctx, need, NULL, what);
+    }
     unsigned char *stored = calloc(count, 1);
     lzw_table *table = malloc(sizeof *table);
     unsigned char *indices = interlaced ? malloc(count) : stored;
     if (!stored || !table || !indices) {
+      if (ctx)
+        zr__budget_release(ctx->budget, need);
       free(stored);
       free(table);
       if (interlaced)
@@ -282,6 +298,8 @@ zr_status zr__gif_decode_indices(zr_context *ctx, const char *name,
     }
     long got = lzw_decode(&c, *min, stored, count, table);
     free(table);
+    if (ctx)
+      zr__budget_release(ctx->budget, need);
     if (got < 0) {
       free(stored);
       if (interlaced)

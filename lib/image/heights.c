@@ -39,6 +39,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/budget.h"
 #include "core/context.h"
 #include "image/image.h"
 
@@ -58,6 +59,7 @@ static void read_memory(png_structp png, png_bytep data, size_t length) {
 /* What libpng's error handler leaves for the message. */
 typedef struct png_failure {
   char text[200];
+  size_t over_budget; /* bytes the memory budget refused, else 0 */
 } png_failure;
 
 static void on_error(png_structp png, png_const_charp msg) {
@@ -76,8 +78,8 @@ static float colour_height(unsigned r, unsigned g) {
 }
 
 /* Decodes rows into heights[w * h]; the png structs are the caller's. */
-static bool png_heights(png_structp png, png_infop info, png_source *src,
-                        float **out, int *w, int *h) {
+static bool png_heights(zr_context *ctx, png_structp png, png_infop info,
+                        png_source *src, float **out, int *w, int *h) {
   png_bytep rows = NULL;
   png_bytepp row_ptrs = NULL;
   float *heights = NULL;
@@ -85,7 +87,10 @@ static bool png_heights(png_structp png, png_infop info, png_source *src,
   png_bytep volatile rows_v = NULL;
   png_bytepp volatile ptrs_v = NULL;
   float *volatile heights_v = NULL;
+  volatile size_t charged_v = 0;
   if (setjmp(png_jmpbuf(png))) {
+    if (ctx)
+      zr__budget_release(ctx->budget, charged_v);
     free(rows_v);
     free(ptrs_v);
     free(heights_v);
@@ -106,6 +111,18 @@ static bool png_heights(png_structp png, png_infop info, png_source *src,
   size_t rowbytes = png_get_rowbytes(png, info);
   if ((size_t)width * (size_t)height > ZR_IMAGE_MAX_PIXELS)
     png_error(png, "image too large");
+  /* The decoded rows and the samples are charged to the memory budget
+     while they are made: a header of a few bytes may declare 2^27
+     pixels (found by tests/fuzz/fuzz_image); the caller owns the
+     samples after. */
+  size_t need = rowbytes * (size_t)height +
+                (size_t)height * sizeof *row_ptrs +
+                (size_t)width * (size_t)height * sizeof *heights;
+  if (ctx && !zr__budget_charge(ctx->budget, need)) {
+    ((png_failure *)png_get_error_ptr(png))->over_budget = need;
+    png_error(png, "over the memory budget");
+  }
+  charged_v = need;
   rows = malloc(rowbytes * (size_t)height);
   rows_v = rows;
   row_ptrs = malloc((size_t)height * sizeof *row_ptrs);
@@ -139,6 +156,8 @@ static bool png_heights(png_structp png, png_infop info, png_source *src,
   }
   free(rows);
   free(row_ptrs);
+  if (ctx)
+    zr__budget_release(ctx->budget, need);
   *out = heights;
   *w = width;
   *h = height;
@@ -148,7 +167,7 @@ static bool png_heights(png_structp png, png_infop info, png_source *src,
 static zr_status read_png(zr_context *ctx, const char *name,
                           const unsigned char *bytes, size_t size,
                           float **out, int *w, int *h) {
-  png_failure failure = {"cannot decode"};
+  png_failure failure = {"cannot decode", 0};
   png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &failure,
                                            on_error, on_warning);
   png_infop info = png ? png_create_info_struct(png) : NULL;
@@ -158,8 +177,13 @@ static zr_status read_png(zr_context *ctx, const char *name,
                     zr_status_str(ZR_ENOMEM));
   }
   png_source src = {bytes, size, 0};
-  bool ok = png_heights(png, info, &src, out, w, h);
+  bool ok = png_heights(ctx, png, info, &src, out, w, h);
   png_destroy_read_struct(&png, &info, NULL);
+  if (!ok && failure.over_budget) {
+    char what[200];
+    snprintf(what, sizeof what, "the height field '%.120s'", name);
+    return zr__context_over_budget(ctx, failure.over_budget, NULL, what);
+  }
   if (!ok)
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL, "%s: %s", name,
                     failure.text);
@@ -301,7 +325,21 @@ static zr_status read_gif(zr_context *ctx, const char *name,
                     "but this one is %d pixels wide", name, g.width);
   }
   int width = pot ? g.width / 2 : g.width;
+  /* The samples beside the indices must fit in what is left of the
+     memory budget (a GIF header may declare 2^27 pixels in a few bytes;
+     found by tests/fuzz/fuzz_image); the caller owns them after. */
+  size_t need = (size_t)width * (size_t)g.height * sizeof(float) +
+                (size_t)g.width * (size_t)g.height;
+  if (ctx && !zr__budget_charge(ctx->budget, need)) {
+    free(g.indices);
+    char what[200];
+    snprintf(what, sizeof what, "the %dx%d height field '%.120s'", width,
+             g.height, name);
+    return zr__context_over_budget(ctx, need, NULL, what);
+  }
   float *heights = malloc((size_t)width * (size_t)g.height * sizeof *heights);
+  if (ctx)
+    zr__budget_release(ctx->budget, need);
   if (!heights) {
     free(g.indices);
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s", name,

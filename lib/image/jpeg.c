@@ -83,7 +83,13 @@ static zr_status decode_rows(jpeg_job *job, const unsigned char *bytes,
                     "%s: CMYK JPEG files are not supported", job->name);
   if (ci->num_components != 1)
     ci->out_color_space = JCS_RGB;
-  jpeg_start_decompress(ci);
+  /* The picture is allocated, and so charged to the memory budget,
+     before the decoder starts: libjpeg's own buffers for a progressive
+     or multi-scan file hold every coefficient of the picture (about as
+     large as the picture), and a damaged header declaring 65500 x 65500
+     made them grow to a gigabyte although the budget would have refused
+     the picture (found by tests/fuzz/fuzz_image). */
+  jpeg_calc_output_dimensions(ci);
   int comps = ci->output_components;
   if (comps != 1 && comps != 3)
     return zr__diag(job->ctx, ZR_DIAG_ERROR, ZR_EUNSUPPORTED, NULL,
@@ -94,6 +100,7 @@ static zr_status decode_rows(jpeg_job *job, const unsigned char *bytes,
                                     (int)ci->output_height, &job->image);
   if (s != ZR_OK)
     return s;
+  jpeg_start_decompress(ci);
   job->table = zr__decode_table(255, ZR_TRANSFER_SRGB, 0.0);
   job->row = malloc((size_t)ci->output_width * (size_t)comps);
   if (!job->table || !job->row)

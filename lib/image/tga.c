@@ -86,6 +86,10 @@ zr_status zr__tga_decode(zr_context *ctx, const char *name,
     return bad(ctx, name, "damaged TGA file (grey pixels of 8 or 16 bits "
                           "only)");
   size_t pos = 18 + id_len;
+  /* The image ID may claim more bytes than the file has: every later
+     "bytes left" test computes n - pos, which must not wrap. */
+  if (pos > n)
+    return bad(ctx, name, "truncated TGA file (image ID)");
   const unsigned char *cmap = NULL;
   size_t cmap_bytes = (cmap_depth + 7) / 8;
   if (cmap_type == 1) {

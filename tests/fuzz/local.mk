@@ -33,3 +33,34 @@ tests_fuzz_fuzz_parse_LDFLAGS = -fsanitize=fuzzer,address,undefined
 tests_fuzz_fuzz_parse_LDADD = $(PNG_LIBS) $(JPEG_LIBS) $(PTHREAD_LIBS) -lm
 $(tests_fuzz_fuzz_parse_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
 endif
+
+# The image decoders' target (fuzz_image.c): the same flags, the seeds in
+# tests/fuzz/image-seeds (tests/fuzz/make-image-seeds.sh), its saved
+# inputs in tests/fuzz/regress-image, replayed by tests/fuzz/replay_image
+# in every `make check`.
+#   make tests/fuzz/fuzz_image
+#   tests/fuzz/fuzz_image -max_len=4096 -timeout=10 -rss_limit_mb=2048 \
+#     CORPUS_DIR $(srcdir)/tests/fuzz/image-seeds \
+#     $(srcdir)/tests/fuzz/regress-image
+EXTRA_DIST += tests/fuzz/regress-image tests/fuzz/image-seeds \
+	tests/fuzz/make-image-seeds.sh
+check_PROGRAMS += tests/fuzz/replay_image
+TESTS += tests/fuzz/replay_image
+tests_fuzz_replay_image_SOURCES = tests/fuzz/replay.c tests/fuzz/fuzz_image.c
+tests_fuzz_replay_image_CPPFLAGS = $(TEST_CPPFLAGS) \
+	-DZR_REPLAY_DIR='"tests/fuzz/regress-image"'
+tests_fuzz_replay_image_LDADD = $(TEST_LDADD) $(PNG_LIBS) $(JPEG_LIBS)
+# zr__ functions are hidden in the shared library: link the archive.
+tests_fuzz_replay_image_LDFLAGS = -static
+
+if ZR_FUZZ
+noinst_PROGRAMS += tests/fuzz/fuzz_image
+tests_fuzz_fuzz_image_SOURCES = tests/fuzz/fuzz_image.c \
+	$(lib_libzrcube_la_SOURCES)
+nodist_tests_fuzz_fuzz_image_SOURCES = $(GRAMMAR_GENERATED)
+tests_fuzz_fuzz_image_CPPFLAGS = $(tests_fuzz_fuzz_parse_CPPFLAGS)
+tests_fuzz_fuzz_image_CFLAGS = $(tests_fuzz_fuzz_parse_CFLAGS)
+tests_fuzz_fuzz_image_LDFLAGS = $(tests_fuzz_fuzz_parse_LDFLAGS)
+tests_fuzz_fuzz_image_LDADD = $(tests_fuzz_fuzz_parse_LDADD)
+$(tests_fuzz_fuzz_image_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
+endif

@@ -4,7 +4,8 @@
  * input that once crashed, leaked or hung the parser.
  *
  * With arguments it replays those files; without, every file in
- * $ZR_SRCDIR/tests/fuzz/regress.  An input that still crashes takes the
+ * $ZR_SRCDIR/tests/fuzz/regress (ZR_REPLAY_DIR: another folder, for the
+ * image decoders' target).  An input that still crashes takes the
  * test down with it (and AddressSanitizer names the fault in the
  * --enable-sanitizers build); one that still hangs is caught by the
  * test driver's timeout.
@@ -16,6 +17,10 @@
 #include <string.h>
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+#ifndef ZR_REPLAY_DIR
+#define ZR_REPLAY_DIR "tests/fuzz/regress"
+#endif
 
 static int replay(const char *path) {
   FILE *fp = fopen(path, "rb");
@@ -53,7 +58,7 @@ int main(int argc, char **argv) {
   } else {
     const char *src = getenv("ZR_SRCDIR");
     char dir[4096];
-    snprintf(dir, sizeof dir, "%s/tests/fuzz/regress", src ? src : ".");
+    snprintf(dir, sizeof dir, "%s/" ZR_REPLAY_DIR, src ? src : ".");
     DIR *d = opendir(dir);
     if (!d) {
       fprintf(stderr, "replay: cannot open %s\n", dir);
