@@ -337,6 +337,16 @@ static zr_status check_open(const zr_context *ctx, int fd, const char *path,
   return ZR_OK;
 }
 
+/* Why an open of a resolved path with O_NOFOLLOW failed: ELOOP means the
+   name became a symbolic link after it was judged. */
+static zr_status open_failed(const char *path, int err, char *why,
+                             size_t why_size) {
+  if (err == ELOOP)
+    return say(why, why_size, ZR_EACCESS, "'%s' changed into a symbolic "
+               "link while being opened", path);
+  return cannot(path, err, why, why_size);
+}
+
 /* The message for a file over the file size limit (0: no limit). */
 static zr_status too_large(const char *path, unsigned long long limit,
                            char *why, size_t why_size) {
@@ -409,10 +419,7 @@ zr_status zr__io_read_scene(zr_context *ctx, const char *path,
                               O_CLOEXEC);
   free(resolved);
   if (fd < 0)
-    return errno == ELOOP
-               ? say(why, why_size, ZR_EACCESS, "'%s' changed into a "
-                     "symbolic link while being opened", path)
-               : cannot(path, errno, why, why_size);
+    return open_failed(path, errno, why, why_size);
   bool confined = (!ctx || ctx->io_mode == ZR_IO_RESTRICTED) && !trusted;
   s = check_open(ctx, fd, path, scene_dir, ZR_IO_ACCESS_READ, confined, why,
                  why_size);
@@ -477,10 +484,7 @@ zr_status zr__io_open_scene_write(zr_context *ctx, const char *path,
   int fd = open(resolved, flags, 0666);
   free(resolved);
   if (fd < 0)
-    return errno == ELOOP
-               ? say(why, why_size, ZR_EACCESS, "'%s' changed into a "
-                     "symbolic link while being opened", path)
-               : cannot(path, errno, why, why_size);
+    return open_failed(path, errno, why, why_size);
   bool confined = !ctx || ctx->io_mode != ZR_IO_NONE;
   s = check_open(ctx, fd, path, NULL, access, confined, why, why_size);
   /* Truncated only now that the file is known to be the one judged. */
