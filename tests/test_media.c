@@ -313,10 +313,10 @@ static void test_media_shadows(void **state) {
   zr_tracer tr = {.scene = s, .stats = &stats};
   /* From the origin to the light the ray crosses 2 units of media whose
      extinction is 0.25 + 0.5 * 0.5. */
-  zr_rgb c = zr__shadow_transmission(&tr, zr_v3(0, 10, 0), zr_v3(0, 0, 0));
+  zr_rgb c = zr__shadow_transmission(&tr, NULL, zr_v3(0, 10, 0), zr_v3(0, 0, 0));
   assert_near(c.r, exp(-2.0 * 0.5), EPS);
   /* A shadow ray that starts inside the container. */
-  c = zr__shadow_transmission(&tr, zr_v3(0, 10, 0), zr_v3(0, 5, 0));
+  c = zr__shadow_transmission(&tr, NULL, zr_v3(0, 10, 0), zr_v3(0, 5, 0));
   assert_near(c.g, exp(-0.5), EPS);
 }
 
