@@ -1528,7 +1528,7 @@ static int parse_ini_file(arg_ctx *c, const char *spec) {
   FILE *f = path ? fopen(path, "r") : NULL;
   if (!f) {
     int rc = fail(c, "cannot open INI file '%s': %s", name,
-                  path ? strerror(errno) : "no such file");
+                  strerror(path ? errno : ENOENT));
     free(path);
     free(name);
     return rc;
