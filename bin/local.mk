@@ -1,6 +1,7 @@
 # bin/local.mk - the zrcube command and its tests.
 bin_PROGRAMS += bin/zrcube
-bin_zrcube_SOURCES = bin/zrcube.c bin/options.c bin/options.h
+bin_zrcube_SOURCES = bin/zrcube.c bin/options.c bin/options.h \
+	bin/state.c bin/state.h
 bin_zrcube_CPPFLAGS = $(AM_CPPFLAGS) -I$(top_srcdir)/bin
 bin_zrcube_CFLAGS = $(AM_CFLAGS) $(PTHREAD_CFLAGS)
 bin_zrcube_LDADD = lib/par/libzrpar.la lib/libzrcube.la $(MPI_LIBS) \

@@ -991,7 +991,8 @@ typedef struct pov_switch {
  * from +H480 and +WT2 from +W640: a switch is its letters, then its
  * value.  Switches for work zrcube does differently are read and named
  * in a warning (K_NOTE) rather than refused, because stock INI files
- * carry them.
+ * carry them; those that only tune speed or memory (+B, +MB, +X ...)
+ * are read and ignored silently.
  */
 static const pov_switch pov_switches[] = {
     {"WT", K_THREADS, K_THREADS, V_REQUIRED, "a number of threads, as in +WT4"},
@@ -1006,12 +1007,9 @@ static const pov_switch pov_switches[] = {
     {"L", K_INCLUDE, K_INCLUDE, V_REQUIRED, "a directory, as in +Linclude"},
     {"AM", K_SAMPLING, K_SAMPLING, V_REQUIRED, "a method, as in +AM1"},
     {"A", K_AA_ON, K_AA_OFF, V_OPTIONAL, NULL},
-    {"RVP", K_NOTE, K_NOTE, V_NONE,
-     "ignored: the irradiance cache's pretrace is fixed by the scene"},
-    {"RP", K_NOTE, K_NOTE, V_ANY,
-     "ignored: the render pattern changes only the order of the work"},
-    {"RS", K_NOTE, K_NOTE, V_ANY,
-     "ignored: the render block step changes only the order of the work"},
+    {"RVP", K_IGNORED, K_IGNORED, V_NONE, NULL},
+    {"RP", K_IGNORED, K_IGNORED, V_ANY, NULL},
+    {"RS", K_IGNORED, K_IGNORED, V_ANY, NULL},
     {"R", K_AA_DEPTH, K_AA_DEPTH, V_REQUIRED, "a depth, as in +R3"},
     {"J", K_JITTER_ON, K_JITTER_OFF, V_OPTIONAL, NULL},
     {"F", K_OUTPUT_ON, K_OUTPUT_OFF, V_OPTIONAL, NULL},
@@ -1036,8 +1034,7 @@ static const pov_switch pov_switches[] = {
     {"STP", K_FRAME_STEP, K_FRAME_STEP, V_REQUIRED, "a step, as in +STP2"},
     {"SP", K_NOTE, K_NOTE, V_ANY,
      "ignored: zrcube shows no mosaic preview"},
-    {"SU", K_NOTE, K_NOTE, V_NONE,
-     "ignored: zrcube's bounding splits unions by itself"},
+    {"SU", K_IGNORED, K_IGNORED, V_NONE, NULL},
     {"ER", K_END_ROW, K_END_ROW, V_REQUIRED, "a row, as in +ER100"},
     {"EC", K_END_COL, K_END_COL, V_REQUIRED, "a column, as in +EC100"},
     {"EF", K_SUBSET_END, K_SUBSET_END, V_REQUIRED, "a frame, as in +EF10"},
@@ -1051,29 +1048,22 @@ static const pov_switch pov_switches[] = {
     STREAM_SWITCH("GA", ZR_CLI_STREAMS),
     {"GI", K_NOTE, K_NOTE, V_ANY,
      "ignored: zrcube does not write INI files (Create_Ini)"},
-    {"GP", K_NOTE, K_NOTE, V_NONE,
-     "ignored: stream files are always rewritten"},
+    {"GP", K_IGNORED, K_IGNORED, V_NONE, NULL},
     {"MV", K_LANG_VERSION, K_LANG_VERSION, V_REQUIRED,
      "a version, as in +MV3.7"},
-    {"MB", K_NOTE, K_NOTE, V_ANY,
-     "ignored: zrcube always builds its bounding hierarchy"},
-    {"MI", K_NOTE, K_NOTE, V_ANY,
-     "ignored: the image is held in memory (see --memory-limit)"},
+    {"MB", K_IGNORED, K_IGNORED, V_ANY, NULL},
+    {"MI", K_IGNORED, K_IGNORED, V_ANY, NULL},
     {"UD", K_NOTE, K_NOTE, V_NONE, "ignored: zrcube does not dither"},
     {"UF", K_NOTE, K_NOTE, V_NONE,
      "ignored: field rendering is not supported"},
     {"UO", K_NOTE, K_NOTE, V_NONE,
      "ignored: field rendering is not supported"},
-    {"UL", K_NOTE, K_NOTE, V_NONE, "ignored: no light buffer is needed"},
-    {"UV", K_NOTE, K_NOTE, V_NONE, "ignored: no vista buffer is needed"},
-    {"UR", K_NOTE, K_NOTE, V_NONE,
-     "ignored: zrcube keeps the bounds of the scene"},
-    {"X", K_NOTE, K_NOTE, V_ANY,
-     "ignored: a render is always stopped by a signal (and +C continues "
-     "it)"},
-    {"BS", K_NOTE, K_NOTE, V_ANY,
-     "ignored: zrcube hands rows, not blocks, to its threads"},
-    {"B", K_NOTE, K_NOTE, V_ANY, "ignored: the output file is not buffered"},
+    {"UL", K_IGNORED, K_IGNORED, V_NONE, NULL},
+    {"UV", K_IGNORED, K_IGNORED, V_NONE, NULL},
+    {"UR", K_IGNORED, K_IGNORED, V_NONE, NULL},
+    {"X", K_IGNORED, K_IGNORED, V_ANY, NULL},
+    {"BS", K_IGNORED, K_IGNORED, V_ANY, NULL},
+    {"B", K_IGNORED, K_IGNORED, V_ANY, NULL},
 };
 
 static const char *unquote(const char *value, char *buf, size_t size);
@@ -1235,7 +1225,10 @@ typedef struct ini_option {
   {file, (opt_key)(K_STREAM_FILE + (i)), 0,                              \
    (opt_key)(K_STREAM_FILE + (i)), NULL}
 
-/* Keys read and named in a warning: zrcube works otherwise. */
+/* Keys read and named in a warning: zrcube works otherwise, and the
+   picture may differ from POV-Ray's.  Keys that only tune speed,
+   memory or the user interface (bounding, block sizes, abort tests) are
+   read and ignored silently (K_IGNORED), like the display options. */
 #define NOTE(name, why) {name, K_NOTE, 0, K_NOTE, why}
 #define SHELL_NOTE(name)                                                  \
   NOTE(name, "ignored: zrcube runs no shell commands (reference 3.2.6)")
@@ -1292,12 +1285,9 @@ static const ini_option ini_options[] = {
     {"End_Column", K_END_COL, 0, K_END_COL, NULL},
     {"Continue_Trace", K_CONTINUE_ON, 1, K_CONTINUE_OFF, NULL},
     NOTE("Create_Ini", "ignored: zrcube does not write INI files"),
-    NOTE("Test_Abort", "ignored: a render is always stopped by a signal "
-                       "(and +C continues it)"),
-    NOTE("Test_Abort_Count", "ignored: a render is always stopped by a "
-                             "signal (and +C continues it)"),
-    NOTE("Max_Image_Buffer_Memory",
-         "ignored: the image is held in memory (see --memory-limit)"),
+    {"Test_Abort", K_IGNORED, 0, K_IGNORED, NULL},
+    {"Test_Abort_Count", K_IGNORED, 0, K_IGNORED, NULL},
+    {"Max_Image_Buffer_Memory", K_IGNORED, 0, K_IGNORED, NULL},
     /* Display (3.2.3): zrcube opens no window. */
     {"Video_Mode", K_IGNORED, 0, K_IGNORED, NULL},
     {"Palette", K_IGNORED, 0, K_IGNORED, NULL},
@@ -1340,33 +1330,24 @@ static const ini_option ini_options[] = {
                 ZR_CLI_STREAM_STATISTICS),
     STREAM_KEYS("Warning_Console", "Warning_File", ZR_CLI_STREAM_WARNING),
     STREAM_KEYS("All_Console", "All_File", ZR_CLI_STREAMS),
-    NOTE("Append_File", "ignored: stream files are always rewritten"),
+    {"Append_File", K_IGNORED, 0, K_IGNORED, NULL},
     {"Warning_Level", K_WARNING_LEVEL, 0, K_WARNING_LEVEL, NULL},
     /* Tracing (3.2.8). */
-    NOTE("Render_Block_Size",
-         "ignored: zrcube hands rows, not blocks, to its threads"),
-    NOTE("Render_Pattern",
-         "ignored: the render pattern changes only the order of the work"),
-    NOTE("Render_Block_Step", "ignored: the render block step changes "
-                              "only the order of the work"),
-    NOTE("Bounding", "ignored: zrcube always builds its bounding "
-                     "hierarchy"),
-    NOTE("Bounding_Method", "ignored: zrcube always builds its bounding "
-                            "hierarchy"),
-    NOTE("Bounding_Threshold", "ignored: zrcube always builds its "
-                               "bounding hierarchy"),
-    NOTE("Light_Buffer", "ignored: no light buffer is needed"),
-    NOTE("Vista_Buffer", "ignored: no vista buffer is needed"),
-    NOTE("Remove_Bounds", "ignored: zrcube keeps the bounds of the scene"),
-    NOTE("Split_Unions", "ignored: zrcube's bounding splits unions by "
-                         "itself"),
+    {"Render_Block_Size", K_IGNORED, 0, K_IGNORED, NULL},
+    {"Render_Pattern", K_IGNORED, 0, K_IGNORED, NULL},
+    {"Render_Block_Step", K_IGNORED, 0, K_IGNORED, NULL},
+    {"Bounding", K_IGNORED, 0, K_IGNORED, NULL},
+    {"Bounding_Method", K_IGNORED, 0, K_IGNORED, NULL},
+    {"Bounding_Threshold", K_IGNORED, 0, K_IGNORED, NULL},
+    {"Light_Buffer", K_IGNORED, 0, K_IGNORED, NULL},
+    {"Vista_Buffer", K_IGNORED, 0, K_IGNORED, NULL},
+    {"Remove_Bounds", K_IGNORED, 0, K_IGNORED, NULL},
+    {"Split_Unions", K_IGNORED, 0, K_IGNORED, NULL},
     NOTE("Antialias_Gamma", "ignored: antialiasing compares colours in "
                             "the working space"),
     /* Radiosity (3.2.9). */
-    NOTE("High_Reproducibility", "ignored: zrcube's radiosity is always "
-                                 "reproducible"),
-    NOTE("Radiosity_Vain_Pretrace", "ignored: the irradiance cache's "
-                                    "pretrace is fixed by the scene"),
+    {"High_Reproducibility", K_IGNORED, 0, K_IGNORED, NULL},
+    {"Radiosity_Vain_Pretrace", K_IGNORED, 0, K_IGNORED, NULL},
     NOTE("Radiosity_File_Name", "ignored: use --gi-save=FILE or "
                                 "--gi-load=FILE"),
     NOTE("Radiosity_From_File", "ignored: use --gi-load=FILE"),

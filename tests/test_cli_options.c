@@ -550,7 +550,7 @@ static void test_cli_options_prefixes_and_more(void **state) {
   assert_int_equal(PARSE(&o, err, "+HIhead.inc", "+H90", "+WT2", "+WL5",
                          "+W120", "+MV3.5", "Declare=RAD=0",
                          "--declare=Big=1e3", "+C", "+O-", "-GW",
-                         "+GSstats.txt", "+KC", "+UL"), 0);
+                         "+GSstats.txt", "+KC", "+UL", "+UD"), 0);
   assert_string_equal(o.header_include, "head.inc");
   assert_int_equal(o.params.height, 90);
   assert_int_equal(o.params.width, 120);
@@ -567,10 +567,10 @@ static void test_cli_options_prefixes_and_more(void **state) {
   assert_int_equal(o.stream_console[ZR_CLI_STREAM_STATISTICS], 1);
   assert_string_equal(o.stream_file[ZR_CLI_STREAM_STATISTICS], "stats.txt");
   assert_int_equal(o.cyclic, 1);
-  /* +UL is read and named in a warning. */
+  /* +UL (speed only) is read silently, +UD named in a warning. */
   assert_int_equal(o.n_notes, 1);
-  assert_string_equal(o.notes[0], "'+UL': ignored: no light buffer is "
-                                  "needed");
+  assert_string_equal(o.notes[0], "'+UD': ignored: zrcube does not "
+                                  "dither");
   zr__cli_free(&o);
   assert_int_equal(PARSE(&o, err, "+GA", "All_File=on"), 0);
   assert_string_equal(o.stream_file[ZR_CLI_STREAM_DEBUG], "ALLTEXT.OUT");
