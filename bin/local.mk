@@ -25,3 +25,8 @@ EXTRA_DIST += tests/test_includes.sh
 # save and load, radiosity-only, one-sided emission, option errors.
 TESTS += tests/test_rad_cli.sh
 EXTRA_DIST += tests/test_rad_cli.sh
+
+# Animation, partial renders, +O-, Declare=, streams, stock INI files
+# (issue 12); +C after kill -9.
+TESTS += tests/test_anim.sh tests/test_continue.sh
+EXTRA_DIST += tests/test_anim.sh tests/test_continue.sh
