@@ -307,13 +307,7 @@ static int read_command_line(run *r, int argc, char **argv) {
   /* The scene and the image name matter on rank 0 only. */
   int usage = 0, unusable = 0;
   if (r->rank == 0) {
-    if (r->opts.header_include) {
-      fprintf(stderr, "zrcube: '+HI%s': the header include "
-                      "(Include_Header) is not supported; add #include "
-                      "\"%s\" at the top of the scene\n",
-              r->opts.header_include, r->opts.header_include);
-      usage = 1;
-    } else if (r->opts.to_stdout && r->opts.continue_trace) {
+    if (r->opts.to_stdout && r->opts.continue_trace) {
       fprintf(stderr, "zrcube: +C continues a render written to a file; "
                       "it cannot be used with +O-\n");
       usage = 1;
@@ -426,6 +420,8 @@ static zr_status make_context(run *r) {
   /* The frame's clock and +MV (zr_parse_options), Declare= floats. */
   if (s == ZR_OK)
     s = zr_context_set_parse_options(r->ctx, &r->frame->clock);
+  if (s == ZR_OK && r->opts.header_include)
+    s = zr_context_set_header_include(r->ctx, r->opts.header_include);
   for (size_t i = 0; i < r->opts.n_declares && s == ZR_OK; i++)
     s = zr_context_declare(r->ctx, r->opts.declare_names[i],
                            r->opts.declare_values[i]);

@@ -170,6 +170,13 @@ ZR_API zr_status zr_context_set_parse_options(zr_context *ctx,
 ZR_API zr_status zr_context_declare(zr_context *ctx, const char *name,
                                     double value);
 /*
+ * A file read before the scene, as if its first line were #include
+ * "path" (POV-Ray's Include_Header=file, +HIfile): found where #include
+ * looks.  NULL removes it.
+ */
+ZR_API zr_status zr_context_set_header_include(zr_context *ctx,
+                                               const char *path);
+/*
  * The work budget of one parse: every directive run, every macro call
  * and every pass through a #while, #for or #zfor body is one step.  A
  * scene that takes more steps stops with ZR_ELIMIT and a located error

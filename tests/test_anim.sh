@@ -123,6 +123,11 @@ grep -q "RAD is 2.5" declare.err || fail "declare: $(cat declare.err)"
 grep -q "a warning" declare.err && fail "-GW: the warning was shown"
 grep -q "rays:" stats.txt || fail "+GSstats.txt: no statistics in the file"
 
+# +HIfile: a header include, not +H (found where #include looks).
+echo '#declare HeaderColour = rgb <0, 1, 0>;' >head.inc
+echo 'camera { location -3 * z look_at 0 } sphere { 0, 1 pigment { HeaderColour } }' >header.pov
+run header "$ZRCUBE" header.pov +HIhead.inc +W8 +H6 +Oheader.png
+
 # Every INI file POV-Ray ships, tiny (later options win).
 inidir=/usr/share/povray-3.7/ini
 if [ -d "$inidir" ]; then

@@ -115,6 +115,7 @@ ZR_API void zr_context_free(zr_context *ctx) {
     free(ctx->declared_names[i]);
   free(ctx->declared_names);
   free(ctx->declared_values);
+  free(ctx->header_include);
   zr__budget_unref(ctx->budget);
   free(ctx);
 }
@@ -158,6 +159,18 @@ ZR_API zr_status zr_context_set_parse_options(zr_context *ctx,
   if (!(copy.version > 0) || !isfinite(copy.version))
     return ZR_EINVAL;
   ctx->parse = copy;
+  return ZR_OK;
+}
+
+ZR_API zr_status zr_context_set_header_include(zr_context *ctx,
+                                               const char *path) {
+  if (!ctx)
+    return ZR_EINVAL;
+  char *copy = NULL;
+  if (path && !(copy = strdup(path)))
+    return ZR_ENOMEM;
+  free(ctx->header_include);
+  ctx->header_include = copy;
   return ZR_OK;
 }
 

@@ -23,6 +23,7 @@ struct zr_context {
   char **declared_names;           /* zr_context_declare, in order */
   double *declared_values;
   size_t n_declared;
+  char *header_include;            /* +HI, NULL: none */
   /* I/O restrictions (iopolicy.c): the mode and the folders added to the
      defaults, each resolved (realpath) when added. */
   zr_io_restrictions io_mode;

@@ -1157,6 +1157,20 @@ static void parser_free(zr_sdl_parser *p) {
   zr__sdl_symtab_free(&p->globals);
 }
 
+/* The caller's header include (POV-Ray's Include_Header, +HI): read
+   as if the scene's first line were #include "header", found where
+   #include looks. */
+static bool push_header(zr_sdl_parser *p) {
+  if (!p->ctx || !p->ctx->header_include)
+    return true;
+  int file = open_include(p, p->ctx->header_include, NULL, NULL,
+                          "header include file");
+  if (file < 0 || !zr__sdl_push_frame(p, file, NULL))
+    return false;
+  p->include_depth++;
+  return true;
+}
+
 /* The caller's zr_context_declare() floats, as "#declare name = value;"
    before the scene's first line (POV-Ray's Declare=IDENTIFIER=FLOAT). */
 static bool declare_from_context(zr_sdl_parser *p) {
@@ -1210,7 +1224,8 @@ static zr_status parse(zr_context *ctx, char *path, char *bytes, size_t size,
                          sizeof err);
   if (s != ZR_OK)
     zr__sdl_error(&p, s, s == ZR_ESYNTAX ? &err_loc : NULL, "%s", err);
-  else if (declare_from_context(&p) && zr__sdl_push_frame(&p, index, NULL)) {
+  else if (declare_from_context(&p) && zr__sdl_push_frame(&p, index, NULL) &&
+           push_header(&p)) {
     p.start_token = T_START_SCENE;
     if (zr__pov_parse(&p) != 0 && p.status == ZR_OK)
       zr__sdl_error(&p, ZR_ENOMEM, NULL, "out of memory");
