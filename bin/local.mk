@@ -28,5 +28,6 @@ EXTRA_DIST += tests/test_rad_cli.sh
 
 # Animation, partial renders, +O-, Declare=, streams, stock INI files
 # (issue 12); +C after kill -9.
-TESTS += tests/test_anim.sh tests/test_continue.sh
-EXTRA_DIST += tests/test_anim.sh tests/test_continue.sh
+TESTS += tests/test_anim.sh tests/test_continue.sh tests/test_quality.sh
+EXTRA_DIST += tests/test_anim.sh tests/test_continue.sh \
+	tests/test_quality.sh tests/quality/quality.pov

@@ -582,6 +582,7 @@ static int set_quality(const arg_ctx *c, const char *value) {
     return fail(c, "'%s': the quality must be a whole number from 0 to "
                    "11", c->what);
   c->o->quality = (int)v;
+  c->o->params.quality = (int)v; /* shadows, rays, media (zrcube(1)) */
   return 0;
 }
 

@@ -558,6 +558,10 @@ typedef struct zr_render_params {
      diffuse light arriving at each surface, from the sky too; with a
      radiosity solution, a sky-only cache adds the sky's light. */
   const zr_gi_cache *gi_cache;
+  /* POV-Ray's +Q, 0 to 11 (default 9): below 4 no shadows, below 5 area
+     lights cast hard shadows, below 6 no transmitted rays, below 8 no
+     reflected rays, below 9 no media. */
+  int quality;
 } zr_render_params;
 
 /* Fills p with POV-Ray's defaults. */
