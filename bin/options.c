@@ -1633,6 +1633,10 @@ int zr__cli_parse(zr_cli_options *o, int argc, char **argv, char *err,
   arg_ctx c = {o, err, err_size, "", "", NULL, 0};
   if (err_size)
     err[0] = '\0';
+  /* "+H alone is a help switch if it is the only switch on the command
+     line" (reference 3.2.7.5). */
+  if (argc == 2 && (!strcasecmp(argv[1], "+H") || !strcasecmp(argv[1], "-H")))
+    return apply(&c, K_HELP, NULL);
   int only_files = 0;
   for (int i = 1; i < argc; i++) {
     if (only_files) {

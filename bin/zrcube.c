@@ -245,6 +245,7 @@ typedef struct run {
   int row0, row1, col0, col1; /* the window of a partial render */
   uint64_t fingerprint;       /* of the scene's files and the options */
   double last_state_write;
+  double state_write_seconds; /* how long the last one took */
   int state_failed;           /* a state write failed (warned once) */
   FILE *stream_files[ZR_CLI_STREAMS];
   zr_image_format format;
@@ -720,11 +721,18 @@ static void band_done(const zr_par_progress *pr, void *user) {
   if (!r->state_path || r->state_failed)
     return;
   double now = zr__par_now();
-  if (now - r->last_state_write < r->opts.state_interval)
+  /* A big image's state takes a while to write: keep that under 5% of
+     the render (unless asked for every band). */
+  double gap = r->opts.state_interval;
+  if (gap > 0 && gap < 20 * r->state_write_seconds)
+    gap = 20 * r->state_write_seconds;
+  if (now - r->last_state_write < gap)
     return;
-  r->last_state_write = now;
-  if (zr__state_write(r->state_path, r->fingerprint, r->opts.params.width,
-                      r->opts.params.height, pr) != 0) {
+  int rc = zr__state_write(r->state_path, r->fingerprint,
+                           r->opts.params.width, r->opts.params.height, pr);
+  r->last_state_write = zr__par_now();
+  r->state_write_seconds = r->last_state_write - now;
+  if (rc != 0) {
     say(&r->diag, ZR_CLI_STREAM_WARNING, "zrcube: warning: cannot write "
         "the state file '%s' (+C will not be able to continue): %s\n",
         r->state_path, strerror(errno));
