@@ -119,6 +119,8 @@ typedef struct progress_state {
 static void print_progress(size_t done, size_t total, void *user) {
   progress_state *p = user;
   int percent = total ? (int)(100 * done / total) : 100;
+  if (percent > 100)
+    percent = 100; /* the count of rows to do is an estimate */
   if (percent == p->last_percent)
     return;
   p->last_percent = percent;
@@ -838,6 +840,7 @@ static int render_and_write(run *r) {
   r->render.col1 = r->col1;
   r->render.band_done = r->rank == 0 ? band_done : NULL;
   r->render.band_user = r;
+  r->render.band_seconds = r->opts.state_interval;
   r->render.resume = NULL;
   r->last_state_write = zr__par_now();
   r->state_failed = 0;

@@ -23,6 +23,7 @@
 #define _GNU_SOURCE /* sched_getaffinity, CPU_COUNT */
 #include "par/par.h"
 
+#include <math.h>
 #include <mpi.h>
 #include <sched.h>
 #include <stdio.h>
@@ -366,9 +367,12 @@ zr_status zr__par_solo(const zr_par *par, zr_par **out) {
   return ZR_OK;
 }
 
-/* The bands of a render: at most 64 a pass, so a state file is written
-   at most 64 times a pass, and their size depends on the image only, so
-   a state file serves any number of ranks. */
+/* The bands of a render: at most 64 a pass, their size set by the
+   image only, so a state file serves any number of ranks.  The ranks
+   render runs of bands (chunks) between two meetings, sized so a chunk
+   takes about job->band_seconds: every meeting makes ranks wait for
+   the slowest, which cost 80% on two busy ranks when each band was
+   one. */
 #define MAX_BANDS 64
 
 void zr__par_render_layout(const zr_par *par, const zr_par_render *job,
@@ -405,6 +409,13 @@ static zr_status render_band(zr_par *par, zr_par_render *job,
       .end_col = x1,
   };
   return zr__par_agree(par, zr__pool_render(&pool));
+}
+
+/* Rank 0's n on every rank. */
+static zr_status share_int(zr_par *par, int *n) {
+  if (!par->uses_mpi || par->size == 1)
+    return ZR_OK;
+  return mpi_status(MPI_Bcast(n, 1, MPI_INT, 0, par->comm));
 }
 
 /* Copies a band's rows (x1 - x0 pixels each) into the full image. */
@@ -478,8 +489,8 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
   int p1c0 = aa && c0 > 0 ? c0 - 1 : c0, p1c1 = aa && c1 < width ? c1 + 1 : c1;
   size_t image_floats = (size_t)(width > 0 ? width : 0) *
                         (size_t)(height > 0 ? height : 0) * 3;
-  size_t band_floats = (size_t)pr.band_rows * (size_t)(width > 0 ? width : 0)
-                       * 3;
+  /* A chunk may hold every row. */
+  size_t band_floats = image_floats;
   float *mine = NULL, *band = NULL, *rank_major = NULL;
   /* Rank 0 keeps the picture; every rank keeps the centres (pass 2
      reads each pixel's neighbours). */
@@ -502,6 +513,8 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
   if (s == ZR_OK)
     s = zr__par_agree(par, share_resume(par, job, &pr, image_floats));
   /* This rank's rows still to render, for the progress line. */
+  /* This rank's share of the rows still to render, for the progress
+     line (the chunks' interleaving may make it a row or two off). */
   size_t total = 0, done_rows = 0;
   for (int p = 0; p < pr.passes && s == ZR_OK; p++)
     for (int b = 0; b < pr.bands; b++) {
@@ -510,19 +523,40 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
       y0 = y0 < lo ? lo : y0;
       y1 = y1 > hi ? hi : y1;
       if (y1 > y0 && !pr.done[p][b])
-        total += (size_t)zr__rows_count(y1 - y0, par->rank, par->size);
+        total += (size_t)(y1 - y0);
     }
+  total = (total + (size_t)par->size - 1) / (size_t)par->size;
+  int chunk = 1;          /* bands in the next chunk (rank 0 decides) */
+  double band_time = 0;   /* seconds a band took, last chunk */
   for (int p = 0; p < pr.passes && s == ZR_OK; p++) {
     int lo = p == 0 ? p1r0 : r0, hi = p == 0 ? p1r1 : r1;
     int x0 = p == 0 ? p1c0 : c0, x1 = p == 0 ? p1c1 : c1;
     int everyone = p == 0 && aa;
     float *target = everyone ? pr.centres : pr.image;
-    for (int b = 0; b < pr.bands && s == ZR_OK; b++) {
-      int y0 = b * pr.band_rows, y1 = y0 + pr.band_rows;
+    int b = 0;
+    while (b < pr.bands && s == ZR_OK) {
+      if (pr.done[p][b]) {
+        b++;
+        continue;
+      }
+      /* The chunk: up to chunk bands not yet done, from b on. */
+      if (par->rank == 0) {
+        if (job->band_seconds <= 0)
+          chunk = 1;
+        else if (band_time > 0)
+          chunk = (int)fmin(pr.bands, fmax(1.0, job->band_seconds /
+                                                    band_time));
+      }
+      s = zr__par_agree(par, share_int(par, &chunk));
+      if (s != ZR_OK)
+        break;
+      int e = b;
+      while (e < pr.bands && e - b < chunk && !pr.done[p][e])
+        e++;
+      int y0 = b * pr.band_rows, y1 = e * pr.band_rows;
       y0 = y0 < lo ? lo : y0;
       y1 = y1 > hi ? hi : y1;
-      if (pr.done[p][b])
-        continue;
+      double t0 = zr__par_now();
       if (y1 > y0) {
         s = render_band(par, job, p == 1 ? pr.centres : NULL, mine, y0, y1,
                         x0, x1, done_rows, total);
@@ -533,7 +567,10 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
         if (s == ZR_OK && target)
           place_band(band, target, width, y0, y1, x0, x1);
       }
-      pr.done[p][b] = 1;
+      band_time = (zr__par_now() - t0) / (double)(e - b);
+      for (int k = b; k < e; k++)
+        pr.done[p][k] = 1;
+      b = e;
       if (s == ZR_OK && par->rank == 0 && job->band_done)
         job->band_done(&pr, job->band_user);
     }

@@ -115,6 +115,9 @@ typedef struct zr_par_render {
      start afresh), with the same passes, bands and band_rows as this
      render has (zr__par_render_layout). */
   const zr_par_progress *resume;
+  /* Rank 0: about how long the runs of bands between two calls of
+     band_done should take (0: one band at a time). */
+  double band_seconds;
 } zr_par_render;
 
 /* The passes, bands and band rows job will use (for a state file). */
