@@ -431,17 +431,22 @@ static void place_band(const float *band, float *image, int width, int y0,
    the centres every rank needs for the antialiasing pass. */
 static zr_status share_resume(zr_par *par, zr_par_render *job,
                               zr_par_progress *pr, size_t image_floats) {
-  int have = par->rank == 0 && job->resume != NULL;
+  /* 1: a state to continue from; -1: one of another layout (every
+     rank fails); 0: none. */
+  int have = 0;
+  if (par->rank == 0 && job->resume) {
+    const zr_par_progress *r = job->resume;
+    have = r->passes == pr->passes && r->bands == pr->bands &&
+                   r->band_rows == pr->band_rows
+               ? 1 : -1;
+  }
   if (par->uses_mpi && par->size > 1 &&
       MPI_Bcast(&have, 1, MPI_INT, 0, par->comm) != MPI_SUCCESS)
     return ZR_EMPI;
-  if (!have)
-    return ZR_OK;
+  if (have <= 0)
+    return have < 0 ? ZR_EINVAL : ZR_OK;
   if (par->rank == 0) {
     const zr_par_progress *r = job->resume;
-    if (r->passes != pr->passes || r->bands != pr->bands ||
-        r->band_rows != pr->band_rows)
-      return ZR_EINVAL;
     for (int p = 0; p < pr->passes; p++)
       memcpy(pr->done[p], r->done[p], (size_t)pr->bands);
     if (pr->centres)
