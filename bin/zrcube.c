@@ -496,6 +496,7 @@ static int read_scene(run *r) {
                     r->frame->clock.initial_clock,
                     r->frame->clock.final_clock, r->frame->clock.version};
   int ints[] = {p->width, p->height, p->antialias, p->aa_depth, p->jitter,
+                p->aa_method, p->quality,
                 p->radiosity_only, r->opts.quality, (int)r->opts.gi,
                 (int)zr__cli_gi_asked(&r->opts), r->opts.radiosity,
                 (int)r->opts.rad_given, r->frame->clock.frame_number,

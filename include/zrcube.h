@@ -558,6 +558,12 @@ typedef struct zr_render_params {
      diffuse light arriving at each surface, from the sky too; with a
      radiosity solution, a sky-only cache adds the sky's light. */
   const zr_gi_cache *gi_cache;
+  /* +AM: the antialiasing method.  1 (default): a pixel that differs
+     from a neighbour gets an aa_depth x aa_depth grid of samples.  2:
+     every pixel is the mean of its four corners, and a square whose
+     corners differ by more than aa_threshold is split into four, down
+     to aa_depth levels ((2^aa_depth + 1)^2 samples at most). */
+  int aa_method;
   /* POV-Ray's +Q, 0 to 11 (default 9): below 4 no shadows, below 5 area
      lights cast hard shadows, below 6 no transmitted rays, below 8 no
      reflected rays, below 9 no media. */
