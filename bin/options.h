@@ -61,6 +61,8 @@ typedef struct zr_cli_options {
   int quality;
   char *gi_save;          /* --gi-save=FILE */
   char *gi_load;          /* --gi-load=FILE */
+  int spp;                /* --spp: path tracer's samples a pixel (64) */
+  uint32_t path_seed;     /* --path-seed (0) */
 } zr_cli_options;
 
 /*
