@@ -7,6 +7,8 @@
  *     in ../shared/reference): every bounce, Russian roulette and the
  *     sky-free escape are in it; 1% allows the Monte Carlo noise of
  *     this image's 27,648 samples, whose standard error is 0.2%;
+ *   - an area light shines from one random point of its grid a vertex,
+ *     which averages to the tracer's full grid (1%);
  *   - samples taken in pieces give the mean of all of them (float
  *     rounding, 1e-6), and the bytes do not depend on which pixels one
  *     call renders or in which order (ranks and threads);
@@ -36,6 +38,20 @@
 
 #define W 24
 #define H 18
+
+static double rms(const float *a, const float *b, size_t n) {
+  double s = 0.0;
+  for (size_t i = 0; i < n; i++)
+    s += ((double)a[i] - b[i]) * ((double)a[i] - b[i]);
+  return sqrt(s / n);
+}
+
+static double mean(const float *a, size_t n) {
+  double s = 0.0;
+  for (size_t i = 0; i < n; i++)
+    s += a[i];
+  return s / n;
+}
 
 static void render_path(const zr_scene *s, const zr_path *p, int w, int h,
                         int first, int samples, float *rgb) {
@@ -139,6 +155,39 @@ static void test_path_pieces_and_order(void **state) {
   zr_path_free(p);
 }
 
+/* An area light's soft shadow: the path tracer's one random grid point a
+   vertex averages to the classic tracer's full grid (every point, no
+   jitter), where nothing else lights the floor (black sky, an occluder
+   that reflects nothing).  1% of the mean: the noise of 64 samples a
+   pixel over the image, measured 0.2%. */
+static void test_path_area_light(void **state) {
+  fixture *f = *state;
+  const zr_scene *s = good(
+      f, "#version 3.7; global_settings { radiosity { } }"
+         "camera { location <0, 4, -4> look_at 0 angle 50 }"
+         "light_source { <0, 3, 0> rgb 1 area_light 2*x, 2*z, 5, 5 }"
+         "plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 0.7 } }"
+         "box { <-0.6, 0.8, -0.6>, <0.6, 1, 0.6> pigment { rgb 0 }"
+         " finish { ambient 0 diffuse 0 } }");
+  zr_path *p = new_path(s, 0, 1);
+  float path[W * H * 3], classic[W * H * 3];
+  render_path(s, p, W, H, 0, 64, path);
+  zr_render_params rp;
+  zr_render_params_init(&rp);
+  rp.width = W;
+  rp.height = H;
+  /* The classic render supersamples every pixel (threshold 0, a 9 x 9
+     grid) to take the pixel's mean as the path tracer does. */
+  rp.antialias = 1;
+  rp.aa_threshold = 0.0;
+  rp.aa_depth = 9;
+  assert_int_equal(zr_render_image(s, &rp, classic, NULL), ZR_OK);
+  double a = mean(path, W * H * 3), b = mean(classic, W * H * 3);
+  print_message("area light: path %.5f classic %.5f\n", a, b);
+  assert_true(fabs(a / b - 1.0) < 0.01);
+  zr_path_free(p);
+}
+
 /* ../shared/reference's Cornell box, or NULL when it is not there. */
 static float *read_truth(void) {
   const char *dir = getenv("ZR_SRCDIR");
@@ -163,20 +212,6 @@ static float *read_truth(void) {
             px[3 * (y * 256 + x) + k] / 16.0f;
   zr_image_free(img);
   return t;
-}
-
-static double rms(const float *a, const float *b, size_t n) {
-  double s = 0.0;
-  for (size_t i = 0; i < n; i++)
-    s += ((double)a[i] - b[i]) * ((double)a[i] - b[i]);
-  return sqrt(s / n);
-}
-
-static double mean(const float *a, size_t n) {
-  double s = 0.0;
-  for (size_t i = 0; i < n; i++)
-    s += a[i];
-  return s / n;
 }
 
 static void test_path_cornell_truth(void **state) {
@@ -230,6 +265,7 @@ int main(void) {
       cmocka_unit_test(test_path_furnace),
       cmocka_unit_test(test_path_closed_sphere),
       cmocka_unit_test(test_path_pieces_and_order),
+      cmocka_unit_test(test_path_area_light),
       cmocka_unit_test(test_path_cornell_truth),
   };
   return cmocka_run_group_tests(tests, setup, teardown);

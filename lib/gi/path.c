@@ -27,8 +27,12 @@
  *     followed by the tracer's own mirror and refracted rays at every
  *     vertex, up to max_trace_level and adc_bailout as the scene says;
  *   - light sources (point, spot, cylinder, area) are the tracer's
- *     direct light at every vertex: next-event estimation with POV-Ray's
- *     own sampling of an area light's grid;
+ *     direct light at every vertex (next-event estimation); an area
+ *     light, which the manual defines as a grid of point lights, shines
+ *     from one point of its grid picked at random (jittered as the
+ *     scene says), an unbiased estimate of the grid's mean where the
+ *     tracer samples the grid adaptively at camera hits and from its
+ *     centre for an irradiance cache's rays (lib/trace/lights.c);
  *   - emission (times the pigment and the opacity) is light the surface
  *     sends from either side, as the tracer shows it; under a scene
  *     without "#version 3.7" ambient * ambient_light counts as emission
@@ -112,6 +116,10 @@ static uint64_t mix64(uint64_t z) {
 static double next_uniform(path_sample *s) {
   uint64_t h = mix64(s->key + 0x9e3779b97f4a7c15u * ++s->drawn);
   return (double)(h >> 11) * (1.0 / 9007199254740992.0);
+}
+
+static double path_uniform(const zr_indirect *self) {
+  return next_uniform(self->scratch);
 }
 
 static double rgb_max(zr_rgb c) { return fmax(c.r, fmax(c.g, c.b)); }
@@ -356,6 +364,7 @@ ZR_API zr_status zr_path_new(zr_context *ctx, const zr_scene *scene,
   pt->indirect.provider = pt;
   pt->indirect.scratch = NULL;
   pt->indirect.samples_emission = path_samples_emission;
+  pt->indirect.next_uniform = path_uniform;
   if (ctx)
     warn_energy(ctx, scene);
   *out = pt;

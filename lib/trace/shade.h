@@ -64,6 +64,12 @@ typedef struct zr_indirect {
      that emission out at its first hit, not to count it twice. */
   bool (*samples_emission)(const struct zr_indirect *self,
                            const zr_object *object);
+  /* NULL, or the next number in [0, 1) of the model's random stream
+     for this sample: an area light then shines from one point of its
+     grid picked with it, an unbiased estimate of the grid's mean
+     (lib/trace/lights.c), in place of the grid's deterministic
+     sampling. */
+  double (*next_uniform)(const struct zr_indirect *self);
 } zr_indirect;
 
 /* What one thread needs to trace rays in a scene. */
