@@ -17,6 +17,8 @@ $(tests_test_gi_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
 # The irradiance cache end to end: threads, ranks, save and load, the
 # model options (bin/zrcube).
 TESTS += tests/test_gi_cli.sh
+EXTRA_DIST += bench/gi_error.sh bench/gi_error.awk bench/gi_error.gp \
+	bench/gi_convergence.gp bench/radiosity/with_block.awk
 EXTRA_DIST += tests/test_gi_cli.sh bench/gi.sh scenes/sky_outdoor.pov \
 	tests/ref/sky_outdoor.png
 
