@@ -14,7 +14,7 @@
  * from 0 to huge within a hair.  The ray is clipped to the box and cut
  * where it crosses the planes x = 0, y = 0, z = 0 and x = +-y, on which
  * the shape's pieces meet; between those cuts each piece is sampled at
- * equal steps, a change of sign is refined by bisection, and a sample
+ * equal steps, a change of sign is refined by regula falsi (Illinois), and a sample
  * that is a local minimum is followed down by a golden-section search, so
  * a ray that clips a corner between two samples is not lost.  The normal
  * is the gradient of F, computed through logarithms so that the large
@@ -74,15 +74,40 @@ static double value_at(const search *s, double x) {
   return zr__superellipsoid_value(s->e, s->n, zr_v3_madd(s->org, s->dir, x));
 }
 
-/* The root between a and b, whose values have opposite signs. */
-static double bisect(const search *s, double a, double b, double fa) {
+/*
+ * The root between a and b, whose values fa and fb have opposite signs,
+ * by the Illinois variant of regula falsi (Dowell and Jarratt 1971):
+ * the secant through the bracket's ends, with the value kept at an end
+ * that stays twice in a row halved, which converges superlinearly where
+ * bisection halves the bracket a step (the value is smooth inside a
+ * piece: radiosity2.pov's superellipsoids took 25% of its render time
+ * in bisection's ~50 evaluations a root).  A secant point outside the
+ * bracket falls back to its midpoint.  It stops when the bracket is as
+ * narrow as bisection left it or a value is within 1e-15 of zero (the
+ * function grows at a slope of order one: a distance of 1e-15).
+ */
+static double bisect(const search *s, double a, double b, double fa,
+                     double fb) {
+  int side = 0;
   for (int i = 0; i < 100 && b - a > 1e-15 * (1.0 + fabs(a)); i++) {
-    double m = 0.5 * (a + b), fm = value_at(s, m);
-    if ((fm < 0.0) == (fa < 0.0)) {
-      a = m;
-      fa = fm;
+    double c = fb != fa ? (a * fb - b * fa) / (fb - fa) : 0.5 * (a + b);
+    if (!(c > a && c < b))
+      c = 0.5 * (a + b);
+    double fc = value_at(s, c);
+    if (fabs(fc) < 1e-15)
+      return c;
+    if ((fc < 0.0) == (fa < 0.0)) {
+      a = c;
+      fa = fc;
+      if (side == -1)
+        fb *= 0.5;
+      side = -1;
     } else {
-      b = m;
+      b = c;
+      fb = fc;
+      if (side == 1)
+        fa *= 0.5;
+      side = 1;
     }
   }
   return 0.5 * (a + b);
@@ -132,7 +157,7 @@ static void search_piece(const search *s, double a, double b,
   }
   for (int i = 0; i < SAMPLES; i++) {
     if ((f[i] < 0.0) != (f[i + 1] < 0.0)) {
-      add_root(r, bisect(s, x[i], x[i + 1], f[i]));
+      add_root(r, bisect(s, x[i], x[i + 1], f[i], f[i + 1]));
       continue;
     }
     if (f[i] < 0.0)
@@ -150,8 +175,8 @@ static void search_piece(const search *s, double a, double b,
     double lo = x[i], hi = x[i + 1];
     double at, fmin_v = dip(s, lo, hi, &at);
     if (fmin_v < 0.0) {
-      add_root(r, bisect(s, x[i], at, f[i]));
-      add_root(r, bisect(s, at, x[i + 1], fmin_v));
+      add_root(r, bisect(s, x[i], at, f[i], fmin_v));
+      add_root(r, bisect(s, at, x[i + 1], fmin_v, f[i + 1]));
     }
   }
 }
