@@ -26,10 +26,13 @@
 #
 # Ladders, one after the other, in the same run:
 #   povray   POV-Ray's radiosity: "default" (radiosity { }, its
-#            defaults), "scene" (the block as the scene writes it),
-#            then q1 .. q6 raising count, recursion_limit and
-#            nearest_count while lowering error_bound and pretrace_end
-#            (the values are in the rung table below); +FH output.
+#            defaults), "scene" (radiosity/cornell.pov's own block; the
+#            emissive box's, count 1600 and recursion_limit 8, costs
+#            minutes and sky_outdoor's is the default), then q1 .. q4
+#            raising count, recursion_limit and nearest_count while
+#            lowering error_bound and pretrace_end (the values are in
+#            the rung table below; GIERR_RUNGS="q1 ... q6" runs more);
+#            +FH output.
 #   cache    zRcube's irradiance cache (--gi=cache) with the same blocks.
 #   hier     zRcube's hierarchical radiosity (--gi=hierarchical) at a
 #            ladder of --bf-eps, for the two closed boxes.
@@ -57,7 +60,8 @@
 # and the cheaper rungs.  Exit 77 without povray.
 #
 # Environment: POVRAY, GIERR_OUT, GIERR_TIMEOUT (seconds a render may
-# take, default 900), GIERR_SCENES (a subset of "cbox cornell sky").
+# take, default 900), GIERR_SCENES (a subset of "cbox cornell sky"),
+# GIERR_RUNGS (default "q1 q2 q3 q4").
 # Timings are printed, never asserted.
 set -eu
 usage() {
@@ -97,7 +101,7 @@ if [ $quick -eq 1 ]; then
   conv_ladder="1 4 16 64"
 else
   truth_spp=1024
-  rungs="q1 q2 q3 q4 q5 q6"
+  rungs=${GIERR_RUNGS:-"q1 q2 q3 q4"}
   bf_ladder="0.01 0.001 0.0001"
   spp_ladder="1 4 16 64"
   conv_ladder="1 4 16 64 256"
@@ -161,8 +165,9 @@ measure() {
   row "$m" "$set" "$t" "$(rel_rmse "$img" "$truth")"
 }
 
-bench_scene() { # name, scene file, width, height, hierarchical (0/1)
-  name=$1 scene=$2 w=$3 h=$4 hier=$5
+bench_scene() { # name, scene file, width, height, hierarchical (0/1),
+                # the "scene" rung (0/1)
+  name=$1 scene=$2 w=$3 h=$4 hier=$5 own=$6
   inc_scene=$(dirname "$scene")
   res="+W$w +H$h -D +WT1"
   aa="+A0.05 +R3"
@@ -193,12 +198,14 @@ bench_scene() { # name, scene file, width, height, hierarchical (0/1)
   printf '  %-8s %-8s %9s %9s\n' method setting seconds rel_rmse
   measure off - "$out/$name-off.pfm" "$zrcube" "$name-scene.pov" \
     +L"$inc_scene" $res $aa -q --gi=off +O"$out/$name-off.pfm" || true
-  for r in default scene $rungs; do
+  blocks="default $rungs"
+  [ "$own" = 0 ] || blocks="default scene $rungs"
+  for r in $blocks; do
     measure povray "$r" "$out/$name-pov-$r.hdr" "$povray" \
       +I"$name-$r.pov" +L"$inc_scene" +L"$inc" $res $aa -GA -V +FH \
       +O"$out/$name-pov-$r.hdr" || break
   done
-  for r in default scene $rungs; do
+  for r in $blocks; do
     measure cache "$r" "$out/$name-cache-$r.pfm" "$zrcube" "$name-$r.pov" \
       +L"$inc_scene" $res $aa -q --gi=cache +O"$out/$name-cache-$r.pfm" ||
       break
@@ -229,17 +236,17 @@ for s in $scenes; do
   case $s in
   cbox)
     if [ $quick -eq 1 ]; then sz="64 64"; else sz="128 128"; fi
-    bench_scene cbox "$top/scenes/cornell.pov" $sz 1 || true ;;
+    bench_scene cbox "$top/scenes/cornell.pov" $sz 1 0 || true ;;
   cornell)
     if [ -f "$stock" ]; then
       if [ $quick -eq 1 ]; then sz="48 48"; else sz="96 96"; fi
-      bench_scene cornell "$stock" $sz 1 || true
+      bench_scene cornell "$stock" $sz 1 1 || true
     else
       echo "gi_error.sh: no $stock, cornell skipped" >&2
     fi ;;
   sky)
     if [ $quick -eq 1 ]; then sz="80 60"; else sz="160 120"; fi
-    bench_scene sky "$top/scenes/sky_outdoor.pov" $sz 0 || true ;;
+    bench_scene sky "$top/scenes/sky_outdoor.pov" $sz 0 0 || true ;;
   *) echo "gi_error.sh: unknown scene $s" >&2 ;;
   esac
 done
