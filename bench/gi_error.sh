@@ -9,7 +9,8 @@
 #   cbox     the emissive Cornell box of ../shared/reference
 #            (scenes/cornell.pov), 128x128
 #   cornell  POV-Ray's stock radiosity/cornell.pov (nine area lights
-#            under an emitting-looking panel), 96x96
+#            under an emitting-looking panel), 64x64, truth at half the
+#            samples
 #   sky      scenes/sky_outdoor.pov, lit by the sun and a sky_sphere,
 #            160x120
 # For each: the truth is zrcube --gi=path at TRUTH_SPP samples a pixel
@@ -166,8 +167,8 @@ measure() {
 }
 
 bench_scene() { # name, scene file, width, height, hierarchical (0/1),
-                # the "scene" rung (0/1)
-  name=$1 scene=$2 w=$3 h=$4 hier=$5 own=$6
+                # the "scene" rung (0/1), a title
+  name=$1 scene=$2 w=$3 h=$4 hier=$5 own=$6 desc=$7
   inc_scene=$(dirname "$scene")
   res="+W$w +H$h -D +WT1"
   aa="+A0.05 +R3"
@@ -226,7 +227,7 @@ bench_scene() { # name, scene file, width, height, hierarchical (0/1),
     "$tsv"
   if command -v gnuplot >/dev/null; then
     gnuplot -e "tsv='$tsv'; png='$out/gi-error-$name.png';" \
-      -e "title='$name: $(basename "$scene"), ${w}x$h, one thread'" \
+      -e "title='$name: $desc, ${w}x$h, one thread'" \
       "$here/gi_error.gp" || echo "gi_error.sh: gnuplot failed" >&2
   fi
 }
@@ -236,17 +237,24 @@ for s in $scenes; do
   case $s in
   cbox)
     if [ $quick -eq 1 ]; then sz="64 64"; else sz="128 128"; fi
-    bench_scene cbox "$top/scenes/cornell.pov" $sz 1 0 || true ;;
+    bench_scene cbox "$top/scenes/cornell.pov" $sz 1 0 \
+      "the emissive Cornell box (../shared/reference)" || true ;;
   cornell)
     if [ -f "$stock" ]; then
-      if [ $quick -eq 1 ]; then sz="48 48"; else sz="96 96"; fi
-      bench_scene cornell "$stock" $sz 1 1 || true
+      # Nine 4 x 4 area lights: a path costs about ten times the
+    # emissive box's, so a smaller picture and half the truth's samples.
+    if [ $quick -eq 1 ]; then sz="48 48"; else sz="64 64"; fi
+    truth_spp=$((truth_spp / 2))
+      bench_scene cornell "$stock" $sz 1 1 \
+        "POV-Ray stock radiosity/cornell.pov" || true
+      truth_spp=$((truth_spp * 2))
     else
       echo "gi_error.sh: no $stock, cornell skipped" >&2
     fi ;;
   sky)
     if [ $quick -eq 1 ]; then sz="80 60"; else sz="160 120"; fi
-    bench_scene sky "$top/scenes/sky_outdoor.pov" $sz 0 0 || true ;;
+    bench_scene sky "$top/scenes/sky_outdoor.pov" $sz 0 0 \
+      "scenes/sky_outdoor.pov" || true ;;
   *) echo "gi_error.sh: unknown scene $s" >&2 ;;
   esac
 done

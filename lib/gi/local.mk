@@ -18,7 +18,9 @@ $(tests_test_gi_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
 # model options (bin/zrcube).
 TESTS += tests/test_gi_cli.sh
 EXTRA_DIST += bench/gi_error.sh bench/gi_error.awk bench/gi_error.gp \
-	bench/gi_convergence.gp bench/radiosity/with_block.awk
+	bench/gi_convergence.gp bench/radiosity/with_block.awk \
+	bench/gi/gi-error-cbox.png bench/gi/gi-error-cornell.png \
+	bench/gi/gi-error-sky.png bench/gi/path-convergence.png
 EXTRA_DIST += tests/test_gi_cli.sh bench/gi.sh scenes/sky_outdoor.pov \
 	tests/ref/sky_outdoor.png
 
