@@ -86,6 +86,8 @@ typedef enum opt_key {
   K_QUALITY,      /* +Qn, Quality=n */
   K_GI_SAVE,
   K_GI_LOAD,
+  K_SPP,          /* --spp=N: the path tracer's samples per pixel */
+  K_PATH_SEED,    /* --path-seed=N */
   /* Animation (reference 3.2.1). */
   K_CLOCK,
   K_INITIAL_FRAME,
@@ -165,6 +167,7 @@ void zr__cli_init(zr_cli_options *o, const zr_render_params *defaults) {
   o->state_interval = 10;
   for (int i = 0; i < ZR_CLI_STREAMS; i++)
     o->stream_console[i] = 1;
+  o->spp = 64;
 }
 
 void zr__cli_free(zr_cli_options *o) {
@@ -563,10 +566,6 @@ static int set_gi(const arg_ctx *c, const char *value) {
                                      ZR_GI_PATH};
   for (size_t i = 0; i < sizeof all / sizeof *all; i++)
     if (value && !strcmp(value, zr_gi_method_name(all[i]))) {
-      if (all[i] == ZR_GI_PATH)
-        return fail(c, "'%s': the path-traced reference is not built yet "
-                       "(issue 11); use auto, hierarchical, cache or off",
-                    c->what);
       c->o->gi = all[i];
       return 0;
     }
@@ -955,6 +954,25 @@ static int apply(const arg_ctx *c, opt_key key, const char *value) {
     return set_string(c, &o->gi_save, value);
   case K_GI_LOAD:
     return set_string(c, &o->gi_load, value);
+  case K_SPP:
+  case K_PATH_SEED: {
+    char *end = NULL;
+    errno = 0;
+    unsigned long n = value && isdigit((unsigned char)*value)
+                          ? strtoul(value, &end, 10) : 0;
+    if (key == K_SPP) {
+      if (!end || *end || errno || n < 1 || n > (1ul << 24))
+        return fail(c, "'%s': --spp must be a whole number from 1 to "
+                       "16777216", c->what);
+      o->spp = (int)n;
+    } else {
+      if (!end || *end || errno || n > 0xfffffffful)
+        return fail(c, "'%s': --path-seed must be a whole number from 0 "
+                       "to 4294967295", c->what);
+      o->path_seed = (uint32_t)n;
+    }
+    return 0;
+  }
   default:
     break;
   }
@@ -1166,6 +1184,8 @@ static const long_option long_options[] = {
     {"frames-per-rank", K_FRAMES_PER_RANK, L_OPTIONAL},
     {"state-interval", K_STATE_INTERVAL, L_REQUIRED},
     {"declare", K_DECLARE, L_REQUIRED},
+    {"spp", K_SPP, L_REQUIRED},
+    {"path-seed", K_PATH_SEED, L_REQUIRED},
 };
 
 /* Returns how many extra arguments it used (0 or 1), or -1 on failure. */
@@ -1880,7 +1900,11 @@ const char *zr__cli_usage(void) {
       "it on):\n"
       "  --gi=MODEL                   global illumination: auto (default:\n"
       "                               by the scene, see zrcube(1)),\n"
-      "                               hierarchical, cache or off\n"
+      "                               hierarchical, cache, path (the\n"
+      "                               path-traced reference) or off\n"
+      "  --spp=N                      path: samples per pixel (64),\n"
+      "                               written after 1, 2, 4 ... of them\n"
+      "  --path-seed=N                path: another set of samples (0)\n"
       "  --no-radiosity, +Q8          no global illumination (classic\n"
       "                               ambient; +Q0 to +Q8, Radiosity=off)\n"
       "  --gi-save=FILE               save the irradiance cache\n"

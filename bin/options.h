@@ -108,6 +108,8 @@ typedef struct zr_cli_options {
   char **notes;
   size_t n_notes;
   int ini_read;           /* how many INI files were read */
+  int spp;                /* --spp: path tracer's samples a pixel (64) */
+  uint32_t path_seed;     /* --path-seed (0) */
 } zr_cli_options;
 
 /* One frame of an animation: its number and the scene's clock values. */

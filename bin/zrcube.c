@@ -259,6 +259,7 @@ typedef struct run {
   zr_image *image;
   zr_radiosity *rad;
   zr_gi_cache *gi;
+  zr_path *path; /* --gi=path */
   zr_gi_method gi_method;
   double gi_seconds;
   double parse_seconds;
@@ -692,6 +693,93 @@ static int build_cache(run *r, int sky_only) {
   return zr__par_agree(r->par, s) == ZR_OK ? -1 : EXIT_SCENE;
 }
 
+/* Step 4 for the path-traced reference (lib/gi/path.c): every rank
+   makes the same table of emitters; antialiasing is the tracer's own
+   sampling of the pixel. */
+static int set_up_path(run *r) {
+  zr_path_params pp;
+  zr_path_params_init(&pp);
+  pp.seed = r->opts.path_seed;
+  zr_status s = zr_path_new(r->rank == 0 ? r->ctx : NULL, r->scene, &pp,
+                            &r->path);
+  if (s != ZR_OK && r->rank == 0)
+    fprintf(stderr, "zrcube: path tracer failed: %s\n", zr_status_str(s));
+  if (zr__par_agree(r->par, s) != ZR_OK)
+    return EXIT_SCENE;
+  r->opts.params.path = r->path;
+  r->opts.params.path_samples = r->opts.spp;
+  r->opts.params.path_first_sample = 0;
+  r->opts.params.antialias = 0;
+  if (r->rank == 0 && r->opts.verbose)
+    fprintf(stderr, "zrcube: path tracer: %d samples a pixel, %zu "
+            "emitting triangles sampled directly\n", r->opts.spp,
+            zr_path_emitters(r->path));
+  return -1;
+}
+
+/*
+ * The path tracer's samples in rounds of 1, 1, 2, 4 ... (each as many
+ * as all before it), each round's mean added into the image with its
+ * weight, and the image written after every round but the last (which
+ * the caller writes): a run stopped early leaves the last complete
+ * estimate.  The rounds depend only on --spp, so the bytes do too.
+ */
+static zr_status render_path(run *r) {
+  zr_render_params params = r->opts.params;
+  const int total = params.path_samples;
+  zr_image *round_image = NULL;
+  double *sum = NULL;
+  size_t n = (size_t)params.width * (size_t)params.height * 3;
+  zr_status s = ZR_OK;
+  if (r->rank == 0) {
+    s = zr_image_new(params.width, params.height, &round_image);
+    sum = s == ZR_OK ? calloc(n, sizeof *sum) : NULL;
+    if (s == ZR_OK && !sum)
+      s = ZR_ENOMEM;
+  }
+  if (zr__par_agree(r->par, s) != ZR_OK) {
+    zr_image_free(round_image);
+    free(sum);
+    return ZR_ENOMEM;
+  }
+  zr_render_stats stats = {0};
+  double seconds = 0.0;
+  zr_par_render job = r->render;
+  job.params = &params;
+  job.image = round_image;
+  for (int done = 0; done < total && s == ZR_OK;) {
+    int k = done == 0 ? 1 : done;
+    if (k > total - done)
+      k = total - done;
+    params.path_first_sample = done;
+    params.path_samples = k;
+    s = zr__par_render(r->par, &job);
+    if (s != ZR_OK)
+      break;
+    zr_render_stats_add(&stats, &job.stats);
+    seconds += job.render_seconds;
+    done += k;
+    if (r->rank != 0)
+      continue;
+    const float *round = zr_image_pixels_const(round_image);
+    float *out = zr_image_pixels(r->image);
+    for (size_t i = 0; i < n; i++) {
+      sum[i] += (double)round[i] * k;
+      out[i] = (float)(sum[i] / done);
+    }
+    if (done < total && r->opts.write_output &&
+        zr_image_write(r->ctx, r->image, r->output_path, r->format,
+                       zr_scene_assumed_gamma(r->scene)) != ZR_OK)
+      fprintf(stderr, "zrcube: cannot write '%s' after %d samples\n",
+              r->output_path, done);
+  }
+  r->render.stats = stats;
+  r->render.render_seconds = seconds;
+  zr_image_free(round_image);
+  free(sum);
+  return s;
+}
+
 /* Step 4: the model of global illumination (zr_gi_choose, zrcube(1)
    "Global illumination"), then what it needs before the render. */
 static int set_up_gi(run *r) {
@@ -706,6 +794,8 @@ static int set_up_gi(run *r) {
             asked == ZR_GI_AUTO ? "auto: " : "", why);
   if (r->gi_method == ZR_GI_CACHE)
     return build_cache(r, 0);
+  if (r->gi_method == ZR_GI_PATH)
+    return set_up_path(r);
   if (r->gi_method != ZR_GI_HIERARCHICAL)
     return -1;
   int status = solve_radiosity(r);
@@ -855,7 +945,7 @@ static int render_and_write(run *r) {
     return EXIT_SCENE;
   if (have)
     r->render.resume = &resume;
-  s = zr__par_render(r->par, &r->render);
+  s = r->path ? render_path(r) : zr__par_render(r->par, &r->render);
   zr__state_free(&resume);
   if (show_progress)
     fputs(s == ZR_OK ? "\n" : "\r\033[K", stderr);
@@ -941,16 +1031,19 @@ static void end_frame(run *r) {
   zr_image_free(r->image);
   zr_radiosity_free(r->rad);
   zr_gi_cache_free(r->gi);
+  zr_path_free(r->path);
   zr_scene_free(r->scene);
   zr__bundle_free(&r->bundle);
   zr_context_free(r->ctx);
   r->image = NULL;
   r->rad = NULL;
   r->gi = NULL;
+  r->path = NULL;
   r->scene = NULL;
   r->ctx = NULL;
   r->opts.params.radiosity = NULL;
   r->opts.params.gi_cache = NULL;
+  r->opts.params.path = NULL;
   free(r->output_path);
   free(r->state_path);
   r->output_path = NULL;

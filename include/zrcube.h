@@ -433,7 +433,7 @@ typedef enum zr_gi_method {
   ZR_GI_OFF,           /* POV-Ray's classic ambient term */
   ZR_GI_HIERARCHICAL,  /* zr_radiosity: closed rooms, local emitters */
   ZR_GI_CACHE,         /* zr_gi_cache: POV-Ray's radiosity block */
-  ZR_GI_PATH           /* reserved for the path-traced reference */
+  ZR_GI_PATH           /* zr_path: the path-traced reference */
 } zr_gi_method;
 
 /* "auto", "off", "hierarchical", "cache", "path". */
@@ -529,6 +529,37 @@ ZR_API zr_status zr_gi_cache_load(zr_context *ctx, const zr_scene *scene,
                                   const zr_gi_params *params,
                                   const char *path, zr_gi_cache **out);
 
+/*
+ * The path-traced reference (lib/gi/path.c, zrcube(1) "Path-traced
+ * reference"): an unbiased Monte Carlo estimate of the light the other
+ * models approximate, with the tracer's materials, light sources, sky
+ * and emission, for measuring their error.  Pixel (x, y)'s sample k
+ * draws its random numbers from a hash of (seed, pixel, k) only, so an
+ * image is the same bytes for any number of ranks and threads, and the
+ * samples of a render may be taken in pieces (zr_render_params'
+ * path_first_sample): the mean of [0, a) and of [a, b), weighted a and
+ * b - a, is the estimate of [0, b).
+ */
+typedef struct zr_path zr_path;
+
+typedef struct zr_path_params {
+  uint32_t seed;      /* mixed into every sample's hash; 0 */
+  /* 1 (default): emitting triangles are sampled directly at each
+     diffuse bounce (next-event estimation); 0: only the paths that
+     happen to hit them see their light.  Both estimate the same image;
+     1 has far less noise where emitters are small. */
+  int light_sampling;
+} zr_path_params;
+
+ZR_API void zr_path_params_init(zr_path_params *p);
+/* A path tracer for scene (which must outlive it); params may be NULL
+   for zr_path_params_init()'s. */
+ZR_API zr_status zr_path_new(zr_context *ctx, const zr_scene *scene,
+                             const zr_path_params *params, zr_path **out);
+ZR_API void zr_path_free(zr_path *path);
+/* How many emitting triangles the tracer samples directly. */
+ZR_API size_t zr_path_emitters(const zr_path *path);
+
 /* ------------------------------------------------------------------ */
 /* Rendering                                                          */
 /* ------------------------------------------------------------------ */
@@ -568,6 +599,13 @@ typedef struct zr_render_params {
      lights cast hard shadows, below 6 no transmitted rays, below 8 no
      reflected rays, below 9 no media. */
   int quality;
+  /* The path-traced reference for this scene (NULL: none, the default;
+     not with radiosity or gi_cache): each pixel is the mean of
+     path_samples samples spread over its area, numbered from
+     path_first_sample; antialiasing is not needed and not done. */
+  const zr_path *path;
+  int path_samples;      /* default 16 */
+  int path_first_sample; /* default 0 */
 } zr_render_params;
 
 /* Fills p with POV-Ray's defaults. */

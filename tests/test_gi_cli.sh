@@ -6,7 +6,9 @@
 #     save_file writes the cache too;
 #   - +V names the model and why; --gi=off, --no-radiosity and +Q8 render
 #     the classic picture (the same bytes as each other, not the cached);
-#   - a bad --gi value is refused with exit status 2.
+#   - a bad --gi value is refused with exit status 2;
+#   - the path tracer (--gi=path) gives the same bytes for any number
+#     of threads and ranks, and a bad --spp is refused.
 #
 # Environment: ZR_BUILDDIR, ZR_SRCDIR, MPIRUN, as for test_cli.sh.
 set -u
@@ -67,5 +69,24 @@ if [ -x "$IMGCMP" ] && [ -f "$SRCDIR/tests/ref/sky_outdoor.png" ]; then
   "$IMGCMP" ref.png "$SRCDIR/tests/ref/sky_outdoor.png" --ssim-min 0.98 \
     --delta-max 0.08 >cmp.out && ok || fail "against povray: $(cat cmp.out)"
 fi
+# The path-traced reference (--gi=path): the same bytes for +WT1 and
+# +WT2 and for 2 ranks; +V names it; --spp is checked.
+"$ZRCUBE" sky.pov $size --gi=path --spp=4 +WT1 +Op1.png +V 2>pv.err ||
+  fail "--gi=path"
+"$ZRCUBE" sky.pov $size --gi=path --spp=4 +WT2 +Op2.png 2>/dev/null ||
+  fail "--gi=path +WT2"
+cmp -s p1.png p2.png && ok || fail "path: +WT1 and +WT2 differ"
+grep -q "global illumination: path (asked for)" pv.err &&
+  grep -q "path tracer: 4 samples a pixel" pv.err && ok ||
+  fail "+V does not name the path tracer: $(cat pv.err)"
+if command -v "$MPIRUN" >/dev/null 2>&1; then
+  ASAN_OPTIONS="$MPI_ASAN" "$MPIRUN" -n 2 "$ZRCUBE" sky.pov $size \
+    --gi=path --spp=4 +WT1 +Op3.png >/dev/null 2>&1 || fail "path: mpirun"
+  cmp -s p1.png p3.png && ok || fail "path: 1 and 2 ranks differ"
+fi
+cmp -s p1.png t1.png && fail "--gi=path renders the cached picture" || ok
+"$ZRCUBE" sky.pov $size --gi=path --spp=x 2>bad.err
+[ $? -eq 2 ] && grep -q "'--spp=x': --spp must be a whole number from 1 to 16777216" bad.err && ok ||
+  fail "bad --spp: $(cat bad.err)"
 echo "$passed passed, $failures failed"
 [ "$failures" -eq 0 ]

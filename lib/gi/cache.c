@@ -314,7 +314,7 @@ static void gather(const zr_gi_cache *c, const zr_tracer *tracer,
   double u0 = next_uniform(&rng); /* one jitter of the whole pattern */
   double v0 = next_uniform(&rng);
 
-  zr_indirect deeper = {cache_irradiance, c, sc};
+  zr_indirect deeper = {cache_irradiance, c, sc, NULL, NULL};
   zr_tracer sub = *tracer;
   sub.indirect = &deeper;
   sub.skip_direct = false;
@@ -627,7 +627,7 @@ static void trace_batch(void *user, size_t begin, size_t end, int worker) {
   const zr_gi_cache *c = job->cache;
   for (size_t i = begin; i < end; i++) {
     gi_scratch *sc = &job->slots[i];
-    zr_indirect ind = {cache_irradiance, c, sc};
+    zr_indirect ind = {cache_irradiance, c, sc, NULL, NULL};
     zr_render_stats stats;
     memset(&stats, 0, sizeof stats);
     zr_tracer tr;

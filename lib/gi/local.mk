@@ -2,7 +2,8 @@
 # radiosity: the irradiance cache (POV-Ray's radiosity block), the sky
 # as light, and the choice of model per scene.
 lib_libzrcube_la_SOURCES += \
-	lib/gi/gi.h lib/gi/cache.c lib/gi/cachefile.c lib/gi/choose.c
+	lib/gi/gi.h lib/gi/cache.c lib/gi/cachefile.c lib/gi/choose.c \
+	lib/gi/path.c
 
 check_PROGRAMS += tests/test_gi
 TESTS += tests/test_gi
@@ -16,5 +17,20 @@ $(tests_test_gi_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
 # The irradiance cache end to end: threads, ranks, save and load, the
 # model options (bin/zrcube).
 TESTS += tests/test_gi_cli.sh
+EXTRA_DIST += bench/gi_error.sh bench/gi_error.awk bench/gi_error.gp \
+	bench/gi_convergence.gp bench/radiosity/with_block.awk \
+	bench/gi/gi-error-cbox.png bench/gi/gi-error-cornell.png \
+	bench/gi/gi-error-sky.png bench/gi/path-convergence.png
 EXTRA_DIST += tests/test_gi_cli.sh bench/gi.sh scenes/sky_outdoor.pov \
 	tests/ref/sky_outdoor.png
+
+# The path-traced reference: exact furnaces, samples in pieces, and the
+# Cornell box against ../shared/reference's ground truth.
+check_PROGRAMS += tests/test_path
+TESTS += tests/test_path
+tests_test_path_SOURCES = tests/test_path.c \
+	tests/parse_fixture.c tests/parse_fixture.h
+tests_test_path_CPPFLAGS = $(TEST_CPPFLAGS)
+tests_test_path_LDADD = $(TEST_LDADD)
+tests_test_path_LDFLAGS = -static
+$(tests_test_path_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h

@@ -55,6 +55,9 @@ ZR_API void zr_render_params_init(zr_render_params *p) {
   p->gi_cache = NULL;
   p->aa_method = 1;
   p->quality = 9;
+  p->path = NULL;
+  p->path_samples = 16;
+  p->path_first_sample = 0;
 }
 
 ZR_API void zr_render_stats_add(zr_render_stats *a,
@@ -401,6 +404,10 @@ static zr_status check_params(const zr_scene *scene,
     return ZR_EINVAL;
   if (p->gi_cache && !zr__gi_indirect_for(p->gi_cache, scene))
     return ZR_EINVAL;
+  if (p->path && (!zr__path_for(p->path, scene) || p->radiosity ||
+                  p->gi_cache || p->path_samples < 1 ||
+                  p->path_first_sample < 0))
+    return ZR_EINVAL;
   return ZR_OK;
 }
 
@@ -433,6 +440,7 @@ ZR_API zr_status zr_render_pixels(const zr_scene *scene,
   job.tracer.no_media = false;
   job.tracer.skip_direct = false;
   zr__tracer_quality(&job.tracer, params->quality);
+  job.tracer.skip_sampled_emission = false;
   zr__camera_media(scene, &job.camera_media);
   /* POV-Ray compares colours after undoing the scene's working gamma and
      applying its antialiasing gamma, 2.5 by default (reference,
@@ -444,7 +452,14 @@ ZR_API zr_status zr_render_pixels(const zr_scene *scene,
     int x = (int)(pixel % (uint32_t)params->width);
     int y = (int)(pixel / (uint32_t)params->width);
     float *out = rgb + 3 * i;
-    if (!centres) {
+    if (params->path && !centres) {
+      /* The path tracer samples the pixel's area itself (lib/gi). */
+      store(out, zr__path_pixel(params->path, &job.tracer,
+                                &job.camera_media, params, pixel, x, y));
+      local.camera_rays += (uint64_t)params->path_samples;
+    } else if (params->path) {
+      memcpy(out, centres + 3 * (size_t)pixel, 3 * sizeof *out);
+    } else if (!centres) {
       zr_rgb c;
       trace_point(&job, params, x + 0.5, y + 0.5, &c);
       local.camera_rays++;

@@ -625,6 +625,13 @@ static zr_rgb trace_secondary(const zr_tracer *tr, zr_vec3 origin,
                               zr_vec3 dir, int level, double weight,
                               const zr_media *media) {
   zr_ray ray = {origin, dir};
+  if (tr->skip_sampled_emission) {
+    /* Only the first surface a path tracer's ray meets had its
+       emission sampled (lib/gi/path.c). */
+    zr_tracer t = *tr;
+    t.skip_sampled_emission = false;
+    return zr__trace_ray(&t, &ray, level + 1, weight, media);
+  }
   return zr__trace_ray(tr, &ray, level + 1, weight, media);
 }
 
@@ -660,6 +667,7 @@ static zr_rgb indirect_light(const zr_tracer *tr, const surface *s,
   q.n_geo = s->ng;
   q.path = s->path;
   q.object = s->object;
+  q.reflectance = zr_rgb_scale(c, f->diffuse * opacity);
   if (!tr->indirect->irradiance(tr->indirect, tr, &q, &e))
     return zr_rgb3(0, 0, 0);
   return zr_rgb_scale(zr_rgb_mul(e, c), f->diffuse * opacity);
@@ -706,6 +714,9 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
        #version 3.7 (measured: zr_settings.version_given); emission
        stays, and the gathered light replaces ambient. */
     zr_rgb own = f->emission;
+    if (tr->skip_sampled_emission && tr->indirect->samples_emission &&
+        tr->indirect->samples_emission(tr->indirect, s->object))
+      own = zr_rgb3(0, 0, 0); /* the path tracer sampled it already */
     if (!gs->version_given || gs->version < 3.7)
       own = zr_rgb_add(own, zr_rgb_mul(f->ambient, gs->ambient_light));
     sum = zr_rgb_scale(zr_rgb_mul(own, c), opacity);

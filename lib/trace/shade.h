@@ -44,6 +44,9 @@ typedef struct zr_indirect_query {
   zr_vec3 n_geo;  /* the normal before any normal { } perturbation */
   double path;    /* distance from the eye along the ray path */
   const zr_object *object;
+  /* What the surface reflects of the light answered: diffuse * pigment
+     * opacity (a path tracer's Russian roulette weighs by it). */
+  zr_rgb reflectance;
 } zr_indirect_query;
 
 typedef struct zr_indirect {
@@ -55,6 +58,18 @@ typedef struct zr_indirect {
                      const zr_indirect_query *q, zr_rgb *out);
   const void *provider; /* the model, shared by threads, read-only */
   void *scratch;        /* this thread's state for the model, or NULL */
+  /* NULL, or whether the model samples object's emission itself at the
+     points it answers (a path tracer's next-event estimation): a ray
+     the model shot with zr_tracer.skip_sampled_emission then leaves
+     that emission out at its first hit, not to count it twice. */
+  bool (*samples_emission)(const struct zr_indirect *self,
+                           const zr_object *object);
+  /* NULL, or the next number in [0, 1) of the model's random stream
+     for this sample: an area light then shines from one point of its
+     grid picked with it, an unbiased estimate of the grid's mean
+     (lib/trace/lights.c), in place of the grid's deterministic
+     sampling. */
+  double (*next_uniform)(const struct zr_indirect *self);
 } zr_indirect;
 
 /* What one thread needs to trace rays in a scene. */
@@ -84,6 +99,10 @@ typedef struct zr_tracer {
      area lights as such (below 5, one shadow ray to the centre),
      transmitted rays (below 6), reflected rays (below 8). */
   bool no_shadows, point_area_lights, no_transmitted, no_reflected;
+  /* The surface this ray meets first leaves out the emission that
+     indirect->samples_emission says the model sampled; the rays it
+     spawns do not (lib/gi/path.c). */
+  bool skip_sampled_emission;
 } zr_tracer;
 
 /* Sets the tracer's quality flags and no_media for POV-Ray's +Q: 0 to 11
@@ -112,6 +131,15 @@ zr_rgb zr__trace_ray_hit(const zr_tracer *tracer, const zr_ray *ray,
    (lib/gi/cache.c), or NULL when the cache is for another scene. */
 const zr_indirect *zr__gi_indirect_for(const zr_gi_cache *cache,
                                        const zr_scene *scene);
+/* The mean of params->path_samples path-traced samples over pixel
+   (x, y), pixel = y * width + x (lib/gi/path.c); base is the caller's
+   camera tracer, camera_media the objects around the camera. */
+zr_rgb zr__path_pixel(const zr_path *path, const zr_tracer *base,
+                      const zr_media *camera_media,
+                      const zr_render_params *params, uint32_t pixel,
+                      int x, int y);
+/* Whether path is a path tracer made for scene. */
+bool zr__path_for(const zr_path *path, const zr_scene *scene);
 /* A camera ray that sees surfaces only within distance (world units)
    of its origin (mesh_camera's max_distance). */
 zr_rgb zr__trace_camera_ray_within(const zr_tracer *tracer,

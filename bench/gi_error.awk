@@ -1,0 +1,59 @@
+# gi_error.awk - the verdicts of bench/gi_error.sh, from one scene's table.
+#
+#   awk -v truth_spp=1024 -v name=cbox -f gi_error.awk NAME.tsv
+#
+# Rows: method, setting, cpu_seconds, rel_rmse.  Issue 11's targets for
+# the outdoor sky scene and radiosity/cornell.pov, against POV-Ray's
+# default settings (the "default" rung: radiosity { }, taking t_d
+# seconds for an error e_d):
+#   at t_d, zRcube's error is at most e_d: printed per method as the
+#           lowest error of its rungs taking <= t_d, over e_d;
+#   at e_d, zRcube takes at most half of t_d: printed per method as the
+#           time of its fastest rung with error <= e_d, over t_d.
+# Also the truth's own noise (see bench/gi_error.sh), below which no
+# error can be read.  Nothing is asserted; failed rungs are left out.
+BEGIN { FS = "\t" }
+NR == 1 { next }
+function num(v) { return v != "" && v != "-" && v != "fail" }
+num($3) && num($4) {
+  n++
+  m[n] = $1; s[n] = $2; t[n] = $3 + 0; e[n] = $4 + 0
+  if ($1 == "povray" && $2 == "default") { td = $3 + 0; ed = $4 + 0 }
+  if ($1 == "povray" && (best_p == 0 || $4 + 0 < e[best_p])) best_p = n
+  if ($1 == "path" && $2 == "64") e64 = $4 + 0
+}
+END {
+  if (e64 > 0) {
+    r = 64 / truth_spp
+    printf "  truth noise (from the 64-sample rung): %.4f\n", \
+      e64 * sqrt(r / (1 + r))
+  }
+  if (!td) {
+    print "  no POV-Ray default rung: no verdicts"
+    exit 0
+  }
+  printf "  POV-Ray default: error %.4f in %.2f s; its best: %s, %.4f in" \
+    " %.2f s\n", ed, td, s[best_p], e[best_p], t[best_p]
+  split("cache hier path", ms, " ")
+  for (k = 1; k <= 3; k++) {
+    mm = ms[k]; at = -1; fast = -1; any = 0
+    for (i = 1; i <= n; i++) {
+      if (m[i] != mm) continue
+      any = 1
+      if (t[i] <= td && (at < 0 || e[i] < e[at])) at = i
+      if (e[i] <= ed && (fast < 0 || t[i] < t[fast])) fast = i
+    }
+    if (!any) continue
+    if (at < 0)
+      line = "no rung within its time"
+    else
+      line = sprintf("at its time %s %s: error %.4f = %.2fx POV-Ray's", \
+        mm, s[at], e[at], e[at] / ed)
+    if (fast < 0)
+      line = line "; no rung reaches its error"
+    else
+      line = line sprintf("; at its error %s %s: %.2f s = %.2fx its time", \
+        mm, s[fast], t[fast], t[fast] / td)
+    printf "  %-6s %s\n", mm ":", line
+  }
+}
