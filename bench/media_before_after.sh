@@ -4,17 +4,17 @@
 # one thread, SSIM after a 2x2 box filter (as ../shared/corpus/compare.py).
 #
 # Usage: bench/media_before_after.sh BEFORE AFTER [OUTDIR]
-#   BEFORE, AFTER: zrcube binaries (a command, e.g. "env
-#   LD_LIBRARY_PATH=/tmp/old /tmp/old/zrcube", is allowed for BEFORE).
+#   BEFORE, AFTER: zrcube commands (words split on blanks, so "env
+#   LD_LIBRARY_PATH=/tmp/old /tmp/old/zrcube" works; absolute paths).
 # POV-Ray's pictures are kept in OUTDIR/ref (default bench/out/media_ba)
-# and reused.  Prints "scene before after" a line.
+# and reused.  Prints "scene before after" a line
+# (bench/results/media-ssim-2026-12-02-fin.tsv).
 set -u
 before=$1
 after=$2
 out=${3:-bench/out/media_ba}
 mkdir -p "$out/ref" "$out/before" "$out/after"
 out=$(cd "$out" && pwd)
-here=$(cd "$(dirname "$0")" && pwd)
 ex=/usr/share/doc/povray/examples
 inc=/usr/share/povray-3.7/include
 command -v povray >/dev/null 2>&1 || { echo "no povray" >&2; exit 77; }
@@ -55,8 +55,9 @@ for rel in $scenes; do
             +W160 +H120 -D -A +WT1 -GA +L"$inc" </dev/null >/dev/null 2>&1)
     for which in before after; do
         eval "bin=\$$which"
-        (cd "$dir" && timeout 600 $bin +I"$ex/$rel" +O"$out/$which/$name.png" \
-            +W160 +H120 -D +WT1 -q </dev/null >/dev/null 2>&1)
+        (cd "$dir" && timeout 600 $bin +I"$ex/$rel" \
+            +O"$out/$which/$name.png" +W160 +H120 -D +WT1 -q \
+            </dev/null >/dev/null 2>&1)
     done
     printf '%s\t%s\t%s\n' "$rel" \
         "$(ssim "$out/ref/$name.png" "$out/before/$name.png")" \

@@ -470,6 +470,9 @@ static int read_scene(run *r) {
     return EXIT_SCENE;
   if (r->rank != 0 && local == ZR_OK) {
     zr_context_set_reader(r->ctx, zr__bundle_serve_reader, &r->bundle);
+    /* Rank 0 has written the scene's #fopen files; what it read back
+       comes from the bundle. */
+    zr_context_set_scene_writes(r->ctx, 0);
     local = zr_scene_parse_file(r->ctx, r->opts.input, &r->scene);
     if (local != ZR_OK && r->diag.errors_printed == 0)
       fprintf(stderr, "zrcube: rank %d: cannot read scene '%s': %s\n",

@@ -249,6 +249,16 @@ ZR_API void zr_context_set_read_observer(zr_context *ctx,
                                          zr_read_observer_fn fn, void *user);
 
 /*
+ * Whether a scene's #fopen ... write/append and #write reach the disk
+ * (default 1).  With 0 the directives are still parsed, their values
+ * computed and their file names checked for the same errors of syntax,
+ * but no file is created or changed: a parallel program parses the
+ * scene on every process and lets only one of them write.  What the
+ * scene reads back is whatever the reader serves.
+ */
+ZR_API void zr_context_set_scene_writes(zr_context *ctx, int enabled);
+
+/*
  * The memory budget of everything made with ctx (scenes, their token
  * arrays, arrays, meshes and images, radiosity solutions): the large
  * allocations are charged to it before they are made, and one that does

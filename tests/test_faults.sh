@@ -131,15 +131,24 @@ expect fillarray "fillarray.pov:2:"
 expect fillarray "past the memory budget of 16 MiB"
 expect fillarray "--memory-limit"
 
-# A 4000 x 4000 image map (48 MB of pixels) against a 32 MiB budget.
-{ printf 'P5\n4000 4000\n255\n'; head -c 16000000 /dev/zero; } > big.pgm
+# A 4000 x 4000 colour image map (48 MB of codes) against a 32 MiB
+# budget; the same picture in grey is kept one byte a pixel (16 MB, and
+# its copy in the scene), so it fits in 40 MiB (28 bytes a pixel before).
+{ printf 'P6\n4000 4000\n255\n'; head -c 48000000 /dev/zero; } > big.ppm
 cat > bigimage.pov <<EOF
 $scene_head
-plane { z, 1 pigment { image_map { ppm "big.pgm" } } }
+plane { z, 1 pigment { image_map { ppm "big.ppm" } } }
 EOF
 run bigimage 1 bigimage.pov --parse-only --memory-limit=32M
 expect bigimage "4000x4000 image"
 expect bigimage "past the memory budget"
+{ printf 'P5\n4000 4000\n255\n'; head -c 16000000 /dev/zero; } > big.pgm
+printf '%s\nplane { z, 1 pigment { image_map { ppm "big.pgm" } } }\n' \
+  "$scene_head" > grey_image.pov
+run grey_image 0 grey_image.pov --parse-only --memory-limit=40M
+printf '%s\nplane { z, 1 normal { bump_map { ppm "big.pgm" } } }\n' \
+  "$scene_head" > grey_bump.pov
+run grey_bump 0 grey_bump.pov --parse-only --memory-limit=40M
 
 # ---- 5 and 6: messages -------------------------------------------------
 printf 'sphere { 0, 1 \033[2J }\n' > escape.pov

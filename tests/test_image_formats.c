@@ -404,9 +404,10 @@ static void test_gif_magick_file(void **state) {
   assert_int_equal(im->maxval, 255);
   unsigned v = magick_v(5, 17);
   size_t i = 17 * MAGICK_W + 5;
-  assert_int_equal(im->codes[3 * i], v);
-  assert_int_equal(im->codes[3 * i + 1], 255 - v);
-  assert_true(fabs(im->pixels[3 * i] - zr__srgb_decode(v / 255.0)) < 1e-6);
+  assert_int_equal(zr__image_stored(im, 3 * i), v);
+  assert_int_equal(zr__image_stored(im, 3 * i + 1), 255 - v);
+  assert_true(fabs(zr__image_linear(im, 3 * i) - zr__srgb_decode(v / 255.0)) <
+              1e-6);
   zr_image_free(im);
   assert_int_equal(fx->errors, 0);
   assert_int_equal(fx->warnings, 0);
@@ -749,15 +750,16 @@ static void tga_case(fixture *fx, unsigned type, unsigned depth,
         if (base == 2)
           want = (want >> 3) * 255 / 31;
       }
-      if (im->codes[3 * i + c] != want)
+      if (zr__image_stored(im, 3 * i + c) != want)
         fail_msg("type %u depth %u: pixel %zu channel %d is %u, not %u",
-                 type, depth, i, c, im->codes[3 * i + c], want);
+                 type, depth, i, c, zr__image_stored(im, 3 * i + c), want);
     }
   if (base == 1) {
     assert_non_null(im->indices);
     assert_int_equal(im->indices[5], rgb[15]);
   }
-  assert_true(fabs(im->pixels[3] - zr__srgb_decode(rgb[3] / 255.0)) < 1e-6);
+  assert_true(fabs(zr__image_linear(im, 3) -
+                   zr__srgb_decode(rgb[3] / 255.0)) < 1e-6);
   zr_image_free(im);
   free(o.b);
   free(rgb);

@@ -334,6 +334,32 @@ if command -v "$MPIRUN" >/dev/null 2>&1; then
   run mpi_ok 0 env ASAN_OPTIONS="$MPI_ASAN" $MPIRUN -n 2 "$ZRCUBE" \
     stock.pov $SIZE +Ompi.png
   cmp -s mpi.png stock.png || fail "mpi_ok: image differs from one rank's"
+  # Every rank parses the scene, but only rank 0 writes its #fopen
+  # files: an appended line appears once, and what rank 0 wrote and read
+  # back reaches the others (the sphere's radius), so their parse and
+  # picture agree with one rank's.
+  cat >mpi_write.pov <<'EOF2'
+#fopen L "mpi_log.txt" append
+#write (L, "parsed\n")
+#fclose L
+#fopen W "mpi_data.txt" write
+#write (W, "0.75")
+#fclose W
+#fopen R "mpi_data.txt" read
+#read (R, Radius)
+camera { location <0, 0, -3> look_at 0 }
+light_source { <2, 3, -4> rgb 1 }
+sphere { 0, Radius pigment { rgb 1 } }
+EOF2
+  rm -f mpi_log.txt mpi_data.txt
+  run mpi_write1 0 "$ZRCUBE" mpi_write.pov $SIZE +Ompi_write1.png
+  rm -f mpi_log.txt mpi_data.txt
+  run mpi_write 0 env ASAN_OPTIONS="$MPI_ASAN" $MPIRUN -n 2 "$ZRCUBE" \
+    mpi_write.pov $SIZE +Ompi_write.png
+  lines=$(grep -c parsed mpi_log.txt 2>/dev/null)
+  [ "$lines" = 1 ] || fail "mpi_write: '$lines' lines appended, expected 1"
+  cmp -s mpi_write.png mpi_write1.png ||
+    fail "mpi_write: image differs from one rank's"
 fi
 
 if [ "$failures" -ne 0 ]; then

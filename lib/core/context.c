@@ -276,6 +276,11 @@ ZR_API void zr_context_set_read_observer(zr_context *ctx,
   ctx->observer_user = user;
 }
 
+ZR_API void zr_context_set_scene_writes(zr_context *ctx, int enabled) {
+  if (ctx)
+    ctx->no_scene_writes = !enabled;
+}
+
 ZR_API const char *zr_context_last_error(const zr_context *ctx) {
   return ctx ? ctx->last_error : "";
 }

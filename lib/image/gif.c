@@ -332,42 +332,23 @@ zr_status zr__gif_decode(zr_context *ctx, const char *name,
   if (s != ZR_OK)
     return s;
   zr_image *image = NULL;
-  s = zr__image_new_named(ctx, name, g.width, g.height, &image);
-  float *table = s == ZR_OK ? zr__decode_table(255, ZR_TRANSFER_SRGB, 0.0)
-                            : NULL;
-  size_t n = (size_t)g.width * (size_t)g.height;
-  if (s == ZR_OK) {
-    image->codes = malloc(n * 3 * sizeof *image->codes);
-    image->maxval = 255;
-    image->palette_size = g.palette_size;
-    image->indices = g.indices;
-    g.indices = NULL;
-  }
-  if (s == ZR_OK && (!table || !image->codes)) {
-    s = zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s", name,
-                 zr_status_str(ZR_ENOMEM));
-  }
+  s = zr__image_new_coded(ctx, name, g.width, g.height, ZR_LAYOUT_INDEX,
+                          255, ZR_TRANSFER_SRGB, 0.0, 0, &image);
   if (s != ZR_OK) {
-    free(table);
     free(g.indices);
-    zr_image_free(image);
     return s;
   }
-  size_t past = 0;
-  for (size_t i = 0; i < n; i++) {
-    unsigned k = image->indices[i];
-    const unsigned char *rgb = g.palette + 3 * k;
-    static const unsigned char black[3] = {0, 0, 0};
-    if ((int)k >= g.palette_size) {
-      rgb = black;
-      past++;
-    }
-    for (size_t ch = 0; ch < 3; ch++) {
-      image->codes[3 * i + ch] = rgb[ch];
-      image->pixels[3 * i + ch] = table[rgb[ch]];
-    }
-  }
-  free(table);
+  /* The image takes the decoded indices (the same size as its own). */
+  free(image->indices);
+  image->indices = g.indices;
+  image->stored_codes = true;
+  image->palette_size = g.palette_size;
+  for (int k = 0; k < g.palette_size && k < 256; k++)
+    for (int ch = 0; ch < 3; ch++)
+      image->palette[3 * k + ch] = g.palette[3 * k + ch];
+  size_t n = (size_t)g.width * (size_t)g.height, past = 0;
+  for (size_t i = 0; i < n; i++)
+    past += (int)image->indices[i] >= g.palette_size;
   if (past)
     zr__diag(ctx, ZR_DIAG_WARNING, ZR_EFORMAT, NULL,
              "%s: %zu pixel(s) with a palette index past the %d entries "

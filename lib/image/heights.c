@@ -24,9 +24,8 @@
  *     the stock mtmand.pot, whose halves join without a seam.
  *
  * PNG files are decoded by libpng with no conversion but the unpacking
- * of 1, 2 and 4-bit samples.  Netpbm and JPEG files go through the
- * codecs (pnm.c, jpeg.c), whose sRGB decoding is exactly undone: it is
- * a table of every stored code, so the nearest code is the one stored.
+ * of 1, 2 and 4-bit samples.  Netpbm, JPEG and TGA files go through the
+ * codecs (pnm.c, jpeg.c, tga.c), which keep the stored codes.
  */
 #include "config.h"
 
@@ -219,13 +218,25 @@ static bool pnm_header(const unsigned char *b, size_t n, char *magic,
   return *maxval >= 1 && *maxval <= 65535;
 }
 
-/* An array for a decoded image's heights; on failure the image is
-   freed and the message given. */
+/* An array for a decoded image's heights, charged to the memory budget
+   while the caller fills it (heights_done gives the charge back: the
+   caller owns the heights after, as for PNG and GIF files); on failure
+   the image is freed and the message given. */
 static float *heights_for(zr_context *ctx, const char *name,
                           zr_image *image) {
   size_t n = (size_t)image->width * (size_t)image->height;
+  if (ctx && !zr__budget_charge(ctx->budget, n * sizeof(float))) {
+    char what[200];
+    snprintf(what, sizeof what, "the %dx%d height field '%.120s'",
+             image->width, image->height, name);
+    zr_image_free(image);
+    zr__context_over_budget(ctx, n * sizeof(float), NULL, what);
+    return NULL;
+  }
   float *heights = malloc(n * sizeof *heights);
   if (!heights) {
+    if (ctx)
+      zr__budget_release(ctx->budget, n * sizeof(float));
     zr_image_free(image);
     zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s", name,
              zr_status_str(ZR_ENOMEM));
@@ -233,13 +244,15 @@ static float *heights_for(zr_context *ctx, const char *name,
   return heights;
 }
 
-/* The stored code of a linear value that an sRGB table decoded. */
-static unsigned stored_code(float linear, unsigned long maxval) {
-  double v = zr__srgb_encode(fmin(fmax((double)linear, 0.0), 1.0));
-  return (unsigned)lround(v * (double)maxval);
+static void heights_done(zr_context *ctx, zr_image *image) {
+  if (ctx)
+    zr__budget_release(ctx->budget, (size_t)image->width *
+                                        (size_t)image->height *
+                                        sizeof(float));
+  zr_image_free(image);
 }
 
-/* Netpbm and JPEG: decoded as colours, then taken back to codes. */
+/* Netpbm and JPEG: the codes the codecs keep (image.h). */
 static zr_status read_coded(zr_context *ctx, const char *name,
                             const unsigned char *bytes, size_t size,
                             bool jpeg, float **out, int *w, int *h) {
@@ -261,13 +274,12 @@ static zr_status read_coded(zr_context *ctx, const char *name,
     return ZR_ENOMEM;
   bool grey = magic == '2' || magic == '5';
   for (size_t i = 0; i < n; i++) {
-    const float *px = image->pixels + 3 * i;
-    unsigned r = stored_code(px[0], maxval);
+    unsigned r = zr__image_stored(image, 3 * i);
     if (grey) {
       heights[i] = (float)(r / (double)maxval);
       continue;
     }
-    unsigned g = stored_code(px[1], maxval);
+    unsigned g = zr__image_stored(image, 3 * i + 1);
     if (maxval > 255) {
       r >>= 8;
       g >>= 8;
@@ -277,7 +289,7 @@ static zr_status read_coded(zr_context *ctx, const char *name,
   *w = image->width;
   *h = image->height;
   *out = heights;
-  zr_image_free(image);
+  heights_done(ctx, image);
   return ZR_OK;
 }
 
@@ -295,18 +307,18 @@ static zr_status read_tga(zr_context *ctx, const char *name,
     return ZR_ENOMEM;
   bool grey = (bytes[2] & 7) == 3;
   for (size_t i = 0; i < n; i++) {
-    const unsigned short *c = image->codes + 3 * i;
     if (image->indices)
       heights[i] = (float)(image->indices[i] / 255.0);
     else if (grey)
-      heights[i] = (float)(c[0] / 255.0);
+      heights[i] = (float)(zr__image_stored(image, 3 * i) / 255.0);
     else
-      heights[i] = colour_height(c[0], c[1]);
+      heights[i] = colour_height(zr__image_stored(image, 3 * i),
+                                 zr__image_stored(image, 3 * i + 1));
   }
   *w = image->width;
   *h = image->height;
   *out = heights;
-  zr_image_free(image);
+  heights_done(ctx, image);
   return ZR_OK;
 }
 

@@ -45,11 +45,21 @@ static zr_status check_size(int width, int height) {
   return ZR_OK;
 }
 
+static zr_image *image_alloc(int width, int height) {
+  zr_image *image = calloc(1, sizeof *image);
+  if (image) {
+    image->width = width;
+    image->height = height;
+    image->layout = ZR_LAYOUT_FLOAT;
+  }
+  return image;
+}
+
 ZR_API zr_status zr_image_new(int width, int height, zr_image **out) {
   zr_status s = check_size(width, height);
   if (s != ZR_OK)
     return s;
-  zr_image *image = malloc(sizeof *image);
+  zr_image *image = image_alloc(width, height);
   if (!image)
     return ZR_ENOMEM;
   image->pixels = calloc((size_t)width * (size_t)height * 3, sizeof(float));
@@ -57,47 +67,13 @@ ZR_API zr_status zr_image_new(int width, int height, zr_image **out) {
     free(image);
     return ZR_ENOMEM;
   }
-  image->width = width;
-  image->height = height;
-  image->indices = NULL;
-  image->palette_size = 0;
-  image->codes = NULL;
-  image->maxval = 0;
-  image->budget = NULL;
-  image->charged = 0;
   *out = image;
   return ZR_OK;
 }
 
-/* What a decoded image costs per pixel: its three floats (12 bytes),
-   the codes and palette indices a PNG keeps (7), and the decoder's rows
-   of up to 8 bytes a pixel (16-bit RGBA), which are charged for the
-   image's life: an over-estimate of 8 bytes a pixel while it lasts. */
-enum { DECODED_BYTES_PER_PIXEL = 28 };
-
-zr_status zr__image_new_named(zr_context *ctx, const char *name, int width,
-                              int height, zr_image **out) {
-  zr_status s = check_size(width, height);
-  size_t bytes = s == ZR_OK ? (size_t)width * (size_t)height *
-                                  DECODED_BYTES_PER_PIXEL
-                            : 0;
-  if (s == ZR_OK && ctx && !zr__budget_charge(ctx->budget, bytes)) {
-    char what[200];
-    snprintf(what, sizeof what, "the %dx%d image '%.120s'", width, height,
-             name);
-    return zr__context_over_budget(ctx, bytes, NULL, what);
-  }
-  if (s == ZR_OK)
-    s = zr_image_new(width, height, out);
-  if (s == ZR_OK && ctx) {
-    (*out)->budget = zr__budget_ref(ctx->budget);
-    (*out)->charged = bytes;
-  } else if (ctx) {
-    zr__budget_release(ctx->budget, bytes);
-  }
+static zr_status size_error(zr_context *ctx, zr_status s, const char *name,
+                            int width, int height) {
   switch (s) {
-  case ZR_OK:
-    return ZR_OK;
   case ZR_EINVAL:
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
                     "%s: invalid image size %dx%d", name, width, height);
@@ -113,12 +89,149 @@ zr_status zr__image_new_named(zr_context *ctx, const char *name, int width,
   }
 }
 
+/* Charges bytes for the image called name, or says why not. */
+static zr_status charge(zr_context *ctx, const char *name, int width,
+                        int height, size_t bytes) {
+  if (!ctx || zr__budget_charge(ctx->budget, bytes))
+    return ZR_OK;
+  char what[200];
+  snprintf(what, sizeof what, "the %dx%d image '%.120s'", width, height,
+           name);
+  return zr__context_over_budget(ctx, bytes, NULL, what);
+}
+
+static void attach_budget(zr_context *ctx, zr_image *image, size_t bytes) {
+  if (ctx) {
+    image->budget = zr__budget_ref(ctx->budget);
+    image->charged = bytes;
+  }
+}
+
+zr_status zr__image_new_named(zr_context *ctx, const char *name, int width,
+                              int height, zr_image **out) {
+  zr_status s = check_size(width, height);
+  if (s != ZR_OK)
+    return size_error(ctx, s, name, width, height);
+  size_t bytes = (size_t)width * (size_t)height * 3 * sizeof(float);
+  if ((s = charge(ctx, name, width, height, bytes)) != ZR_OK)
+    return s;
+  s = zr_image_new(width, height, out);
+  if (s != ZR_OK) {
+    if (ctx)
+      zr__budget_release(ctx->budget, bytes);
+    return size_error(ctx, s, name, width, height);
+  }
+  attach_budget(ctx, *out, bytes);
+  return ZR_OK;
+}
+
+int zr__image_channels(const zr_image *image) {
+  return image->layout == ZR_LAYOUT_RGB ? 3 : 1;
+}
+
+size_t zr__image_bytes(const zr_image *image) {
+  size_t n = (size_t)image->width * (size_t)image->height, bytes = 0;
+  if (image->pixels)
+    bytes += n * 3 * sizeof(float);
+  if (image->codes)
+    bytes += n * (size_t)zr__image_channels(image) *
+             (image->maxval > 255 ? 2 : 1);
+  if (image->indices)
+    bytes += n;
+  if (image->palette)
+    bytes += 3 * 256 * sizeof *image->palette;
+  if (image->table)
+    bytes += ((size_t)image->maxval + 1) * sizeof *image->table;
+  return bytes;
+}
+
+zr_status zr__image_new_coded(zr_context *ctx, const char *name, int width,
+                              int height, zr_image_layout layout,
+                              unsigned maxval, zr_transfer transfer,
+                              double exponent, size_t extra,
+                              zr_image **out) {
+  *out = NULL;
+  zr_status s = check_size(width, height);
+  if (s != ZR_OK)
+    return size_error(ctx, s, name, width, height);
+  zr_image *image = image_alloc(width, height);
+  if (!image)
+    return size_error(ctx, ZR_ENOMEM, name, width, height);
+  image->layout = layout;
+  image->maxval = maxval;
+  size_t n = (size_t)width * (size_t)height;
+  /* Charged before anything large is allocated. */
+  size_t bytes = (layout == ZR_LAYOUT_INDEX
+                      ? n + 3 * 256 * sizeof *image->palette
+                      : n * (size_t)zr__image_channels(image) *
+                            (maxval > 255 ? 2 : 1)) +
+                 ((size_t)maxval + 1) * sizeof(float);
+  if (extra > SIZE_MAX - bytes ||
+      (s = charge(ctx, name, width, height, bytes + extra)) != ZR_OK) {
+    free(image);
+    return s != ZR_OK ? s : size_error(ctx, ZR_ELIMIT, name, width, height);
+  }
+  attach_budget(ctx, image, bytes + extra);
+  image->table = zr__decode_table(maxval, transfer, exponent);
+  bool ok = image->table != NULL;
+  if (layout == ZR_LAYOUT_INDEX) {
+    image->indices = calloc(n, 1);
+    image->palette = calloc(3 * 256, sizeof *image->palette);
+    ok = ok && image->indices && image->palette;
+  } else {
+    image->codes = calloc(n * (size_t)zr__image_channels(image),
+                          maxval > 255 ? 2 : 1);
+    ok = ok && image->codes;
+  }
+  if (!ok) {
+    zr_image_free(image);
+    return size_error(ctx, ZR_ENOMEM, name, width, height);
+  }
+  *out = image;
+  return ZR_OK;
+}
+
+void zr__image_release_extra(zr_image *image, size_t extra) {
+  if (image && extra <= image->charged) {
+    zr__budget_release(image->budget, extra);
+    image->charged -= extra;
+  }
+}
+
+zr_status zr__image_add_floats(zr_context *ctx, const char *name,
+                               zr_image *image) {
+  if (image->pixels)
+    return ZR_OK;
+  size_t n = (size_t)image->width * (size_t)image->height * 3;
+  size_t bytes = n * sizeof(float);
+  zr_status s = charge(ctx, name, image->width, image->height, bytes);
+  if (s != ZR_OK)
+    return s;
+  float *pixels = malloc(bytes);
+  if (!pixels) {
+    if (ctx)
+      zr__budget_release(ctx->budget, bytes);
+    return size_error(ctx, ZR_ENOMEM, name, image->width, image->height);
+  }
+  for (size_t k = 0; k < n; k++)
+    pixels[k] = zr__image_linear(image, k);
+  image->pixels = pixels;
+  if (ctx) {
+    if (!image->budget)
+      image->budget = zr__budget_ref(ctx->budget);
+    image->charged += bytes;
+  }
+  return ZR_OK;
+}
+
 ZR_API void zr_image_free(zr_image *image) {
   if (!image)
     return;
   free(image->pixels);
-  free(image->indices);
   free(image->codes);
+  free(image->table);
+  free(image->indices);
+  free(image->palette);
   zr__budget_release(image->budget, image->charged);
   zr__budget_unref(image->budget);
   free(image);
@@ -258,6 +371,11 @@ ZR_API zr_status zr_image_read(zr_context *ctx, const char *path,
   }
   s = zr__image_decode(ctx, path, bytes, size, out);
   free(bytes);
+  /* The public picture is floats (zr_image_pixels). */
+  if (s == ZR_OK && (s = zr__image_add_floats(ctx, path, *out)) != ZR_OK) {
+    zr_image_free(*out);
+    *out = NULL;
+  }
   return s;
 }
 

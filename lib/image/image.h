@@ -2,7 +2,15 @@
  * image.h - the private side of zr_image: its layout, the transfer
  * functions shared by every codec and the codec entry points.
  *
- * A zr_image holds linear floats, three per pixel, rows top to bottom.
+ * A zr_image made by zr_image_new (a render's picture) holds linear
+ * floats, three per pixel, rows top to bottom.  A decoded file keeps its
+ * samples in the smallest faithful form instead (issue 10: an 8-bit grey
+ * PNG costs one byte a pixel, not 28): its stored codes, one or three a
+ * pixel of one or two bytes, or palette indices, with a table giving the
+ * linear value of each code; samplers convert per lookup
+ * (zr__image_linear, lib/scene/bitmap.c).  zr_image_read adds the floats
+ * for the public API (zr_image_pixels).
+ *
  * Codecs decode from a byte array (so files served by the MPI reader work
  * the same as local ones) and encode to an open stdio stream that
  * image.c has created beside the final file.
@@ -16,20 +24,39 @@
 
 #include "zrcube.h"
 
+/* How a decoded image keeps its samples. */
+typedef enum zr_image_layout {
+  ZR_LAYOUT_FLOAT = 0, /* pixels only: three linear floats a pixel */
+  ZR_LAYOUT_GREY,      /* codes: one a pixel, grey */
+  ZR_LAYOUT_RGB,       /* codes: red, green, blue a pixel */
+  ZR_LAYOUT_INDEX      /* indices: a palette entry a pixel */
+} zr_image_layout;
+
 struct zr_image {
   int width;
   int height;
-  float *pixels; /* width * height * 3 linear floats */
-  /* Palette files (PNG colour type 3) only, else NULL and 0: the palette
-     entry of each pixel, which image_map's "filter INDEX, AMOUNT" and
-     "transmit INDEX, AMOUNT" refer to. */
+  /* width * height * 3 linear floats: images made by zr_image_new, float
+     files (PFM) and images zr_image_read returns; else NULL. */
+  float *pixels;
+  zr_image_layout layout;
+  /* GREY and RGB: the stored samples, rows top to bottom, unsigned char
+     when maxval <= 255, else unsigned short; alpha is not kept. */
+  void *codes;
+  unsigned maxval;
+  /* maxval + 1 floats: the linear value of each code (non-FLOAT). */
+  float *table;
+  /* The codes are the file's own samples (PNG, GIF, TGA), which
+     image_map's "gamma G" may decode again; JPEG and Netpbm codes are
+     kept too, but that option is refused for them. */
+  bool stored_codes;
+  /* Palette files (PNG colour type 3, GIF, colour-mapped TGA) only, else
+     NULL and 0: the palette entry of each pixel, which image_map's
+     "filter INDEX, AMOUNT" and "transmit INDEX, AMOUNT" refer to, and
+     (INDEX layout) the codes of every byte value's entry, 3 * 256, black
+     past the palette. */
   unsigned char *indices;
   int palette_size;
-  /* PNG files only, else NULL: the stored code of each sample (three per
-     pixel, 0 .. maxval) before decoding, so that image_map's "gamma G"
-     can decode them again with the transfer it names. */
-  unsigned short *codes;
-  unsigned maxval;
+  unsigned short *palette;
   /* A decoded file's memory, charged to the budget of the context that
      read it (NULL: none) until the image is freed. */
   struct zr_budget *budget;
@@ -126,8 +153,66 @@ zr_status zr__image_decode_heights(zr_context *ctx, const char *name,
 zr_status zr__image_decode(zr_context *ctx, const char *name,
                            const char *bytes, size_t size, zr_image **out);
 
-/* zr_image_new with a message through ctx on failure. */
+/* zr_image_new with a message through ctx on failure, charged to ctx's
+   budget: a float image for decoders of float files. */
 zr_status zr__image_new_named(zr_context *ctx, const char *name, int width,
                               int height, zr_image **out);
+
+/*
+ * An image of stored codes (GREY, RGB) or palette indices (INDEX, maxval
+ * of the palette's codes), without floats, charged to ctx's budget with
+ * the bytes it holds plus extra bytes the decoder needs while it runs
+ * (released by zr__image_release_extra).  The table is filled with
+ * transfer (exponent for ZR_TRANSFER_POWER); the INDEX palette is black.
+ */
+zr_status zr__image_new_coded(zr_context *ctx, const char *name, int width,
+                              int height, zr_image_layout layout,
+                              unsigned maxval, zr_transfer transfer,
+                              double exponent, size_t extra,
+                              zr_image **out);
+void zr__image_release_extra(zr_image *image, size_t extra);
+
+/* Channels a pixel of the layout holds in codes (1 or 3; INDEX 1). */
+int zr__image_channels(const zr_image *image);
+
+/* Code k of a GREY or RGB image's codes array. */
+static inline unsigned zr__image_code_at(const zr_image *im, size_t k) {
+  return im->maxval > 255 ? ((const unsigned short *)im->codes)[k]
+                          : ((const unsigned char *)im->codes)[k];
+}
+static inline void zr__image_set_code(zr_image *im, size_t k, unsigned v) {
+  if (im->maxval > 255)
+    ((unsigned short *)im->codes)[k] = (unsigned short)v;
+  else
+    ((unsigned char *)im->codes)[k] = (unsigned char)v;
+}
+
+/* The stored code of sample k = 3 * pixel + channel, seen as RGB
+   (non-FLOAT layouts). */
+static inline unsigned zr__image_stored(const zr_image *im, size_t k) {
+  switch (im->layout) {
+  case ZR_LAYOUT_GREY:
+    return zr__image_code_at(im, k / 3);
+  case ZR_LAYOUT_INDEX:
+    return im->palette[3 * (size_t)im->indices[k / 3] + k % 3];
+  default:
+    return zr__image_code_at(im, k);
+  }
+}
+
+/* The linear value of sample k = 3 * pixel + channel. */
+static inline float zr__image_linear(const zr_image *im, size_t k) {
+  if (im->pixels)
+    return im->pixels[k];
+  return im->table[zr__image_stored(im, k)];
+}
+
+/* Adds the floats (pixels) to a coded image. */
+zr_status zr__image_add_floats(zr_context *ctx, const char *name,
+                               zr_image *image);
+
+/* The bytes an image's samples take (codes, indices, palette, table,
+   floats): what the budget is charged for it. */
+size_t zr__image_bytes(const zr_image *image);
 
 #endif /* ZR_IMAGE_IMAGE_H */

@@ -12,8 +12,8 @@
  * texture, so "premature end of JPEG file" becomes "truncated JPEG
  * file".
  *
- * Greyscale files are widened to RGB here rather than by libjpeg, because
- * only newer libjpeg versions can convert grey to RGB.  CMYK/YCCK files
+ * Greyscale files stay one sample a pixel (image.h), colour files three;
+ * libjpeg decodes the rows straight into the image's codes.  CMYK/YCCK files
  * are rejected by name.  JPEG pixels are taken as sRGB, as JFIF files are
  * in practice.
  */
@@ -37,8 +37,6 @@ typedef struct jpeg_job {
   char message[JMSG_LENGTH_MAX];
   struct jpeg_decompress_struct cinfo;
   int cinfo_ready;
-  unsigned char *row;
-  float *table;
   zr_image *image;
   zr_context *ctx;
   const char *name;
@@ -95,29 +93,37 @@ static zr_status decode_rows(jpeg_job *job, const unsigned char *bytes,
     return zr__diag(job->ctx, ZR_DIAG_ERROR, ZR_EUNSUPPORTED, NULL,
                     "%s: JPEG with %d components is not supported",
                     job->name, comps);
-  zr_status s = zr__image_new_named(job->ctx, job->name,
-                                    (int)ci->output_width,
-                                    (int)ci->output_height, &job->image);
+  /* libjpeg's own memory is charged while it decodes: a progressive or
+     multi-scan file keeps every DCT coefficient of the picture (64
+     JCOEFs a block of each component, libjpeg.txt "Buffered-image
+     mode"), a sequential one a strip of MCU rows (the largest vertical
+     sampling factor times 8 lines of every component, twice for the
+     context rows upsampling uses) and the output row. */
+  size_t extra = 0;
+  for (int c = 0; c < ci->num_components; c++) {
+    const jpeg_component_info *comp = &ci->comp_info[c];
+    if (jpeg_has_multiple_scans(ci))
+      extra += (size_t)comp->width_in_blocks *
+               (size_t)comp->height_in_blocks * DCTSIZE2 * sizeof(JCOEF);
+    extra += 2 * (size_t)comp->width_in_blocks * DCTSIZE *
+             (size_t)ci->max_v_samp_factor * DCTSIZE;
+  }
+  zr_status s = zr__image_new_coded(
+      job->ctx, job->name, (int)ci->output_width, (int)ci->output_height,
+      comps == 3 ? ZR_LAYOUT_RGB : ZR_LAYOUT_GREY, 255, ZR_TRANSFER_SRGB,
+      0.0, extra, &job->image);
   if (s != ZR_OK)
     return s;
   jpeg_start_decompress(ci);
-  job->table = zr__decode_table(255, ZR_TRANSFER_SRGB, 0.0);
-  job->row = malloc((size_t)ci->output_width * (size_t)comps);
-  if (!job->table || !job->row)
-    return zr__diag(job->ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s",
-                    job->name, zr_status_str(ZR_ENOMEM));
+  unsigned char *codes = job->image->codes;
+  size_t rowbytes = (size_t)ci->output_width * (size_t)comps;
   while (ci->output_scanline < ci->output_height) {
-    size_t y = ci->output_scanline;
-    JSAMPROW rows[1] = {job->row};
+    JSAMPROW rows[1] = {codes + ci->output_scanline * rowbytes};
     if (jpeg_read_scanlines(ci, rows, 1) != 1)
       break;
-    float *dst = job->image->pixels + y * ci->output_width * 3;
-    for (size_t x = 0; x < ci->output_width; x++)
-      for (int c = 0; c < 3; c++)
-        dst[3 * x + c] =
-            job->table[job->row[x * comps + (comps == 3 ? c : 0)]];
   }
   jpeg_finish_decompress(ci);
+  zr__image_release_extra(job->image, extra);
   return ZR_OK;
 }
 
@@ -142,8 +148,6 @@ zr_status zr__jpeg_decode(zr_context *ctx, const char *name,
                  "%s: invalid JPEG file: %s", name, job->message);
   if (job->cinfo_ready)
     jpeg_destroy_decompress(&job->cinfo);
-  free(job->row);
-  free(job->table);
   if (s == ZR_OK)
     *out = job->image;
   else

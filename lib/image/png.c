@@ -2,10 +2,11 @@
  * png.c - PNG reading and writing through libpng 1.6.
  *
  * Reading accepts every PNG colour type and depth (PNG specification,
- * section 11.2.2): palettes and grey are expanded to RGB (a palette
- * image keeps its indices too, for image_map's per-index filter and
- * transmit), 1/2/4-bit
- * samples widened to 8, 16-bit samples kept at full precision.  Alpha,
+ * section 11.2.2) into the smallest faithful form (image.h): grey stays
+ * one sample a pixel, colour three, a palette image one index a pixel
+ * (also for image_map's per-index filter and transmit) beside its
+ * palette; libpng decodes the rows straight into that store.  1/2/4-bit
+ * samples are widened to 8, 16-bit samples kept at full precision.  Alpha,
  * including a palette's tRNS transparency, is dropped, not composited:
  * a zr_image has no alpha and the colour of a transparent pixel is still
  * the colour its author stored; compositing over an arbitrary background
@@ -41,9 +42,8 @@ typedef struct png_job {
   char message[256];
   png_structp png;
   png_infop info;
-  unsigned char *rows;
+  unsigned char *rows; /* writing: one row of samples */
   png_bytep *row_ptrs;
-  float *table;
   zr_image *image;
 } png_job;
 
@@ -69,73 +69,69 @@ static void read_memory(png_structp png, png_bytep data, size_t length) {
   job->pos += length;
 }
 
-/* Sets libpng's transformations so that every row is RGB (or RGBA, the
-   alpha to be skipped), 8 or 16 bit, or for a palette image one 8-bit
-   index a pixel. */
-static void request_rgb(png_structp png, png_infop info) {
+/* Sets libpng's transformations so that every row is grey or RGB, 8 or
+   16 bit, the way the file stores them (without alpha), or for a palette
+   image one 8-bit index a pixel: the rows are the image's codes. */
+static void request_codes(png_structp png, png_infop info) {
   int color_type = png_get_color_type(png, info);
   int depth = png_get_bit_depth(png, info);
   if (color_type == PNG_COLOR_TYPE_PALETTE) {
-    /* Palette rows stay indices, one byte each: decode_rows looks the
-       colours up itself and keeps the indices. */
+    /* Palette rows stay indices, one byte each: the palette's colours
+       are looked up per pixel from the image's palette. */
     png_set_packing(png);
     png_set_interlace_handling(png);
     return;
   }
   if (color_type == PNG_COLOR_TYPE_GRAY && depth < 8)
     png_set_expand_gray_1_2_4_to_8(png);
-  /* Alpha is dropped: stripped where libpng can, and skipped while
-     converting where it cannot (a palette's tRNS chunk becomes alpha
-     after the stripping: POV-Ray's bumpmap_.png). */
+  /* Alpha is dropped: stripped where libpng can (a palette's tRNS chunk
+     becomes alpha after the stripping: POV-Ray's bumpmap_.png). */
   if ((color_type & PNG_COLOR_MASK_ALPHA) ||
       png_get_valid(png, info, PNG_INFO_tRNS))
     png_set_strip_alpha(png);
-  if (color_type == PNG_COLOR_TYPE_GRAY ||
-      color_type == PNG_COLOR_TYPE_GRAY_ALPHA)
-    png_set_gray_to_rgb(png);
+  /* 16-bit samples are big-endian in the file; the codes array holds
+     them as native unsigned shorts. */
+  const unsigned short one = 1;
+  if (depth == 16 && *(const unsigned char *)&one == 1)
+    png_set_swap(png);
   png_set_interlace_handling(png);
 }
 
-static float *transfer_table(png_structp png, png_infop info, int depth) {
-  unsigned maxval = depth == 16 ? 65535u : 255u;
+/* The file's transfer function: its sRGB chunk, else its gAMA, else
+   sRGB. */
+static zr_transfer file_transfer(png_structp png, png_infop info,
+                                 double *exponent) {
   double gamma = 0.0;
+  *exponent = 0.0;
   if (!png_get_valid(png, info, PNG_INFO_sRGB) &&
       png_get_valid(png, info, PNG_INFO_gAMA) &&
-      png_get_gAMA(png, info, &gamma) && gamma > 0.0)
-    return zr__decode_table(maxval, ZR_TRANSFER_POWER, 1.0 / gamma);
-  return zr__decode_table(maxval, ZR_TRANSFER_SRGB, 0.0);
+      png_get_gAMA(png, info, &gamma) && gamma > 0.0) {
+    *exponent = 1.0 / gamma;
+    return ZR_TRANSFER_POWER;
+  }
+  return ZR_TRANSFER_SRGB;
 }
 
-/* Looks the colour of each palette index up, keeping the index.  An
-   index past the palette breaks the PNG specification (11.2.3) but
-   libpng and POV-Ray read it as black, and so do we, with a warning. */
-static zr_status expand_palette(png_job *job, png_const_colorp palette,
-                                int palette_size) {
+/* Copies the palette's codes and warns of indices past it.  An index
+   past the palette breaks the PNG specification (11.2.3) but libpng and
+   POV-Ray read it as black, and so do we, with a warning. */
+static void keep_palette(png_job *job, png_const_colorp palette,
+                         int palette_size) {
   zr_image *image = job->image;
-  size_t n = (size_t)image->width * (size_t)image->height;
-  size_t past = 0;
-  for (size_t i = 0; i < n; i++) {
-    unsigned k = job->rows[i];
-    unsigned rgb[3] = {0, 0, 0};
-    if (k < (unsigned)palette_size) {
-      rgb[0] = palette[k].red;
-      rgb[1] = palette[k].green;
-      rgb[2] = palette[k].blue;
-    } else {
-      past++;
-    }
-    image->indices[i] = (unsigned char)k;
-    for (size_t c = 0; c < 3; c++) {
-      image->codes[3 * i + c] = (unsigned short)rgb[c];
-      image->pixels[3 * i + c] = job->table[rgb[c]];
-    }
+  for (int k = 0; k < palette_size && k < 256; k++) {
+    image->palette[3 * k] = palette[k].red;
+    image->palette[3 * k + 1] = palette[k].green;
+    image->palette[3 * k + 2] = palette[k].blue;
   }
+  image->palette_size = palette_size;
+  size_t n = (size_t)image->width * (size_t)image->height, past = 0;
+  for (size_t i = 0; i < n; i++)
+    past += image->indices[i] >= palette_size;
   if (past)
     zr__diag(job->ctx, ZR_DIAG_WARNING, ZR_EFORMAT, NULL,
              "%s: %zu pixel(s) with a palette index past the %d entries "
              "of the palette, read as black", job->name, past,
              palette_size);
-  return ZR_OK;
 }
 
 /* Runs libpng; returns ZR_OK or leaves a message in job and says so. */
@@ -145,7 +141,7 @@ static zr_status decode_rows(png_job *job) {
   png_set_read_fn(job->png, job, read_memory);
   png_set_user_limits(job->png, ZR_IMAGE_MAX_SIDE, ZR_IMAGE_MAX_SIDE);
   png_read_info(job->png, job->info);
-  request_rgb(job->png, job->info);
+  request_codes(job->png, job->info);
   png_read_update_info(job->png, job->info);
   int width = (int)png_get_image_width(job->png, job->info);
   int height = (int)png_get_image_height(job->png, job->info);
@@ -160,49 +156,41 @@ static zr_status decode_rows(png_job *job) {
              "a PLTE chunk");
     return ZR_EFORMAT;
   }
-  if ((palette ? channels != 1 : channels != 3 && channels != 4) ||
+  if ((palette ? channels != 1 || depth != 8
+               : channels != 1 && channels != 3) ||
       (depth != 8 && depth != 16) ||
       rowbytes != (size_t)width * channels * (depth == 16 ? 2 : 1)) {
     snprintf(job->message, sizeof job->message,
              "unexpected row layout after conversion");
     return ZR_EFORMAT;
   }
-  zr_status s = zr__image_new_named(job->ctx, job->name, width, height,
-                                    &job->image);
+  double exponent;
+  zr_transfer transfer = file_transfer(job->png, job->info, &exponent);
+  zr_image_layout layout = palette         ? ZR_LAYOUT_INDEX
+                           : channels == 1 ? ZR_LAYOUT_GREY
+                                           : ZR_LAYOUT_RGB;
+  /* The rows are decoded straight into the image's codes; the row
+     pointers are charged while the decoder runs. */
+  size_t extra = (size_t)height * sizeof *job->row_ptrs;
+  zr_status s = zr__image_new_coded(
+      job->ctx, job->name, width, height, layout,
+      depth == 16 ? 65535u : 255u, transfer, exponent, extra, &job->image);
   if (s != ZR_OK)
     return s;
-  job->table = transfer_table(job->png, job->info, depth);
-  size_t n = (size_t)width * (size_t)height;
-  job->image->codes = malloc(n * 3 * sizeof *job->image->codes);
-  job->image->maxval = depth == 16 ? 65535u : 255u;
-  if (palette) {
-    job->image->indices = malloc(n);
-    job->image->palette_size = palette_size;
-  }
-  job->rows = malloc(rowbytes * (size_t)height);
+  job->image->stored_codes = true;
+  unsigned char *rows = palette ? job->image->indices
+                                : (unsigned char *)job->image->codes;
   job->row_ptrs = malloc((size_t)height * sizeof *job->row_ptrs);
-  if (!job->table || !job->rows || !job->row_ptrs || !job->image->codes ||
-      (palette && !job->image->indices))
+  if (!job->row_ptrs)
     return zr__diag(job->ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s",
                     job->name, zr_status_str(ZR_ENOMEM));
   for (int y = 0; y < height; y++)
-    job->row_ptrs[y] = job->rows + (size_t)y * rowbytes;
+    job->row_ptrs[y] = rows + (size_t)y * rowbytes;
   png_read_image(job->png, job->row_ptrs);
   png_read_end(job->png, NULL);
-
+  zr__image_release_extra(job->image, extra);
   if (palette)
-    return expand_palette(job, palette, palette_size);
-  float *px = job->image->pixels;
-  unsigned short *codes = job->image->codes;
-  for (size_t i = 0; i < n; i++)
-    for (size_t c = 0; c < 3; c++) {
-      size_t k = i * channels + c;
-      const png_byte *r = job->rows;
-      unsigned v = depth == 16 ? (unsigned)(r[2 * k] << 8 | r[2 * k + 1])
-                               : r[k];
-      codes[3 * i + c] = (unsigned short)v;
-      px[3 * i + c] = job->table[v];
-    }
+    keep_palette(job, palette, palette_size);
   return ZR_OK;
 }
 
@@ -234,9 +222,7 @@ zr_status zr__png_decode(zr_context *ctx, const char *name,
                  "%s: invalid PNG file: %s", name, job.message);
   png_destroy_read_struct(job.png ? &job.png : NULL,
                           job.info ? &job.info : NULL, NULL);
-  free(job.rows);
   free(job.row_ptrs);
-  free(job.table);
   if (s == ZR_OK)
     *out = job.image;
   else

@@ -108,14 +108,18 @@ static unsigned binary_sample(const unsigned char *raster, size_t i,
 
 static zr_status read_samples(zr_context *ctx, const char *name,
                               cursor *c, int binary, unsigned maxval,
-                              size_t count, unsigned *samples) {
+                              size_t count, zr_image *image) {
   if (binary) {
     int wide = maxval > 255;
     size_t need = count * (wide ? 2 : 1);
     if ((size_t)(c->end - c->p) < need)
       return truncated(ctx, name, "PPM");
-    for (size_t i = 0; i < count; i++)
-      samples[i] = binary_sample(c->p, i, wide);
+    for (size_t i = 0; i < count; i++) {
+      unsigned v = binary_sample(c->p, i, wide);
+      if (v > maxval)
+        return malformed(ctx, name, "PPM", "sample larger than maxval");
+      zr__image_set_code(image, i, v);
+    }
     c->p += need;
   } else {
     for (size_t i = 0; i < count; i++) {
@@ -125,12 +129,11 @@ static zr_status read_samples(zr_context *ctx, const char *name,
         return truncated(ctx, name, "PPM");
       if (r < 0)
         return malformed(ctx, name, "PPM", "bad sample");
-      samples[i] = (unsigned)v;
+      if (v > maxval)
+        return malformed(ctx, name, "PPM", "sample larger than maxval");
+      zr__image_set_code(image, i, (unsigned)v);
     }
   }
-  for (size_t i = 0; i < count; i++)
-    if (samples[i] > maxval)
-      return malformed(ctx, name, "PPM", "sample larger than maxval");
   return ZR_OK;
 }
 
@@ -160,29 +163,17 @@ zr_status zr__pnm_decode(zr_context *ctx, const char *name,
     return truncated(ctx, name, "PPM");
   c.p++;
   zr_image *image;
-  if ((s = zr__image_new_named(ctx, name, (int)w, (int)h, &image)) != ZR_OK)
+  if ((s = zr__image_new_coded(
+           ctx, name, (int)w, (int)h,
+           channels == 3 ? ZR_LAYOUT_RGB : ZR_LAYOUT_GREY, (unsigned)maxval,
+           ZR_TRANSFER_SRGB, 0.0, 0, &image)) != ZR_OK)
     return s;
   size_t count = (size_t)w * h * (size_t)channels;
-  unsigned *samples = malloc(count * sizeof *samples);
-  float *table = zr__decode_table((unsigned)maxval, ZR_TRANSFER_SRGB, 0.0);
-  if (!samples || !table)
-    s = zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s", name,
-                 zr_status_str(ZR_ENOMEM));
-  else
-    s = read_samples(ctx, name, &c, binary, (unsigned)maxval, count,
-                     samples);
-  if (s == ZR_OK) {
-    size_t n = (size_t)w * h;
-    for (size_t i = 0; i < n; i++)
-      for (int k = 0; k < 3; k++)
-        image->pixels[3 * i + k] =
-            table[samples[channels == 3 ? 3 * i + k : i]];
+  s = read_samples(ctx, name, &c, binary, (unsigned)maxval, count, image);
+  if (s == ZR_OK)
     *out = image;
-  } else {
+  else
     zr_image_free(image);
-  }
-  free(samples);
-  free(table);
   return s;
 }
 

@@ -101,24 +101,28 @@ zr_status zr__tga_decode(zr_context *ctx, const char *name,
     cmap = b + pos;
     pos += (size_t)cmap_len * cmap_bytes;
   }
-  zr_image *image = NULL;
-  zr_status s = zr__image_new_named(ctx, name, width, height, &image);
-  if (s != ZR_OK)
-    return s;
+  /* A colour map of at most 256 entries keeps its indices; grey stays
+     one sample a pixel (image.h). */
   size_t count = (size_t)width * (size_t)height;
   bool keep_indices = base == 1 && cmap_first + cmap_len <= 256;
-  image->codes = malloc(count * 3 * sizeof *image->codes);
-  image->maxval = 255;
+  zr_image *image = NULL;
+  zr_status s = zr__image_new_coded(
+      ctx, name, width, height,
+      keep_indices ? ZR_LAYOUT_INDEX
+                   : base == 3 ? ZR_LAYOUT_GREY : ZR_LAYOUT_RGB,
+      255, ZR_TRANSFER_SRGB, 0.0, 0, &image);
+  if (s != ZR_OK)
+    return s;
+  image->stored_codes = true;
   if (keep_indices) {
-    image->indices = malloc(count);
     image->palette_size = (int)(cmap_first + cmap_len);
-  }
-  float *table = zr__decode_table(255, ZR_TRANSFER_SRGB, 0.0);
-  if (!image->codes || !table || (keep_indices && !image->indices)) {
-    free(table);
-    zr_image_free(image);
-    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s", name,
-                    zr_status_str(ZR_ENOMEM));
+    for (unsigned k = cmap_first; k < cmap_first + cmap_len; k++) {
+      unsigned rgb[3];
+      colour_of(cmap + (size_t)(k - cmap_first) * cmap_bytes, cmap_depth,
+                rgb);
+      for (int ch = 0; ch < 3; ch++)
+        image->palette[3 * k + ch] = (unsigned short)rgb[ch];
+    }
   }
   const size_t px_bytes = (depth + 7) / 8;
   bool rle = type >= 9;
@@ -177,13 +181,13 @@ zr_status zr__tga_decode(zr_context *ctx, const char *name,
     size_t at = y * (size_t)width + x;
     if (keep_indices)
       image->indices[at] = (unsigned char)k;
-    for (int ch = 0; ch < 3; ch++) {
-      image->codes[3 * at + ch] = (unsigned short)rgb[ch];
-      image->pixels[3 * at + ch] = table[rgb[ch]];
-    }
+    else if (base == 3)
+      zr__image_set_code(image, at, rgb[0]);
+    else
+      for (int ch = 0; ch < 3; ch++)
+        zr__image_set_code(image, 3 * at + ch, rgb[ch]);
     done++;
   }
-  free(table);
   if (done < count) {
     zr_image_free(image);
     return bad(ctx, name, "truncated TGA file (pixels)");

@@ -119,8 +119,29 @@ static int index_of(double c, int n, bool repeat) {
   return (int)(i < 0 ? 0 : i >= n ? n - 1 : i);
 }
 
+/* The number of pixel (x, y), from the picture's codes: the same float
+   a per-pixel array held before pictures were kept compact. */
 static double value(const zr_image_map *im, int x, int y) {
-  return im->values[(size_t)y * (size_t)im->width + (size_t)x];
+  size_t i = (size_t)y * (size_t)im->width + (size_t)x;
+  switch (im->value_kind) {
+  case ZR_BITMAP_VALUE_INDEX:
+    return im->indices[i];
+  case ZR_BITMAP_VALUE_GREY: {
+    const double *v = im->code_value;
+    if (im->layout == ZR_LAYOUT_GREY) {
+      double s = v[zr__bitmap_code(im, i, 0)];
+      return (float)(0.297 * s + 0.589 * s + 0.114 * s);
+    }
+    return (float)(0.297 * v[zr__bitmap_code(im, i, 0)] +
+                   0.589 * v[zr__bitmap_code(im, i, 1)] +
+                   0.114 * v[zr__bitmap_code(im, i, 2)]);
+  }
+  case ZR_BITMAP_VALUE_RED:
+    return (float)floor(im->code_value[zr__bitmap_code(im, i, 0)] * 255 +
+                        0.5);
+  default:
+    return im->values[i];
+  }
 }
 
 double zr__bitmap_value(const zr_image_map *im, double px, double py,

@@ -9,7 +9,44 @@
 #include <stdbool.h>
 
 #include "core/vec.h"
+#include "image/image.h"
 #include "scene/scene.h"
+
+/* How a bump_map's or material_map's per-pixel number is found
+   (zr_image_map.value_kind). */
+enum {
+  ZR_BITMAP_VALUE_ARRAY = 0, /* values[] (float pictures) */
+  ZR_BITMAP_VALUE_INDEX,     /* the palette index */
+  ZR_BITMAP_VALUE_GREY,      /* 0.297 r + 0.589 g + 0.114 b, by code_value */
+  ZR_BITMAP_VALUE_RED        /* the red sample on a 0 .. 255 scale */
+};
+
+/* The code of channel c (0 red, 1 green, 2 blue) of pixel i of a map
+   whose picture is not floats. */
+static inline unsigned zr__bitmap_code(const zr_image_map *im, size_t i,
+                                       int c) {
+  size_t k = 3 * i + (size_t)c;
+  if (im->layout == ZR_LAYOUT_INDEX)
+    return im->palette[3 * (size_t)im->indices[i] + (size_t)c];
+  if (im->layout == ZR_LAYOUT_GREY)
+    k = i;
+  return im->maxval > 255 ? ((const unsigned short *)im->codes)[k]
+                          : ((const unsigned char *)im->codes)[k];
+}
+
+/* The colour of pixel i of an image map (working space). */
+static inline void zr__bitmap_rgb(const zr_image_map *im, size_t i,
+                                  float rgb[3]) {
+  if (im->pixels) {
+    for (int c = 0; c < 3; c++)
+      rgb[c] = im->pixels[3 * i + (size_t)c];
+  } else if (im->layout == ZR_LAYOUT_GREY) {
+    rgb[0] = rgb[1] = rgb[2] = im->table[zr__bitmap_code(im, i, 0)];
+  } else {
+    for (int c = 0; c < 3; c++)
+      rgb[c] = im->table[zr__bitmap_code(im, i, c)];
+  }
+}
 
 /* The point p of the map's own space in picture coordinates: *px from
    0 at the left edge to width at the right, *py from 0 at the top row
@@ -19,7 +56,7 @@
 bool zr__bitmap_where(const zr_image_map *im, zr_vec3 p, double *px,
                       double *py, bool *repeat_x, bool *repeat_y);
 
-/* The per-pixel number (im->values) at picture coordinates px, py: the
+/* The per-pixel number (value_kind) at picture coordinates px, py: the
    pixel's own without interpolation, else bilinear between pixel
    centres; wrapped or clamped at the edges as the flags say. */
 double zr__bitmap_value(const zr_image_map *im, double px, double py,

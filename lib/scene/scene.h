@@ -238,7 +238,20 @@ typedef struct zr_map {
 typedef struct zr_image_map {
   const char *path; /* as written, for messages */
   int width, height;
-  const float *pixels; /* width * height * 3 linear floats, top row first */
+  /* The picture's samples in the form the file was decoded to
+     (lib/image/image.h), top row first, so a grey 8-bit picture costs a
+     byte a pixel: float files width * height * 3 linear floats in
+     pixels, else stored codes (one or three a pixel, of one byte, or two
+     when maxval > 255) or palette indices (indices, with each entry's
+     three codes in palette), and in table the colour of each code, in
+     the working space for image maps (lib/scene/bitmap.c converts per
+     lookup).  layout is a zr_image_layout. */
+  const float *pixels;
+  int layout;
+  const void *codes;
+  unsigned maxval;
+  const float *table;
+  const unsigned short *palette;
   int map_type;        /* 0 planar, 1 spherical, 2 cylindrical, 5 torus */
   bool once;
   int interpolate;     /* 0 none, 2 bilinear (others act as 2) */
@@ -250,10 +263,14 @@ typedef struct zr_image_map {
   const unsigned char *indices;
   int palette_size;
   float *palette_ft;
-  /* bump_map and material_map only, else NULL: one number a pixel, the
-     bump map's height (lib/scene/bitmap.c) or the material map's
-     texture index. */
+  /* bump_map and material_map only: one number a pixel, the bump map's
+     height (lib/scene/bitmap.c) or the material map's texture index,
+     computed per lookup from code_value (maxval + 1 numbers: each code's
+     stored or decoded value) by value_kind, or for a float picture
+     (values != NULL) kept one float a pixel. */
   const float *values;
+  const double *code_value;
+  int value_kind; /* ZR_BITMAP_VALUE_* (bitmap.h) */
   bool use_index; /* bump_map: the heights are the palette indices */
 } zr_image_map;
 
@@ -1017,6 +1034,11 @@ struct zr_scene {
   const zr_object **primitives;
   size_t n_primitives;
   struct zr_bvh *bvh;
+  /* Also by zr__scene_finish(): the first primitives (in their order)
+     whose inside holds the camera's location, found once rather than
+     on every render call (lib/trace/render.c, zr__camera_media). */
+  const zr_object *camera_inside[16];
+  int n_camera_inside;
   /* The caustic photons (NULL: no photons block, or none stored). */
   struct zr_photon_map *photons;
   unsigned long long parse_steps; /* the work budget the parse used */

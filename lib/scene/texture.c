@@ -199,7 +199,8 @@ static double frac(double v) { return v - floor(v); }
 
 static zr_colour pixel(const zr_image_map *im, int x, int y) {
   size_t i = (size_t)y * (size_t)im->width + (size_t)x;
-  const float *px = im->pixels + i * 3;
+  float px[3];
+  zr__bitmap_rgb(im, i, px);
   if (im->indices) {
     const float *ft = im->palette_ft + 2 * (size_t)im->indices[i];
     return zr_colour5(px[0], px[1], px[2], ft[0], ft[1]);

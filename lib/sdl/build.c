@@ -36,6 +36,7 @@
 #include "image/image.h"
 #include "trace/obj_mesh.h"
 #include "pov-parse.h"
+#include "scene/bitmap.h"
 #include "scene/pattern.h"
 #include "scene/texture.h"
 #include "sdl/sdl.h"
@@ -711,7 +712,8 @@ zr_status zr__sdl_read_image(zr_sdl_parser *p, const char *name,
 /*
  * "gamma G" after an image_map's file name ("Image File Gamma"): the
  * stored codes are decoded again with linear = code ^ G instead of the
- * transfer the file asks for.  Only PNG files keep their codes.
+ * transfer the file asks for.  Only PNG, GIF and TGA files keep the
+ * codes they store (JPEG and Netpbm codes are re-quantised).
  */
 static bool image_gamma(zr_sdl_parser *p, zr_image *image,
                         const char *what, const char *name, double g,
@@ -721,7 +723,7 @@ static bool image_gamma(zr_sdl_parser *p, zr_image *image,
                   g);
     return false;
   }
-  if (!image->codes) {
+  if (!image->stored_codes) {
     zr__sdl_error(p, ZR_EUNSUPPORTED, loc,
                   "%s gamma is supported for PNG files only, not '%s'",
                   what, name);
@@ -732,10 +734,8 @@ static bool image_gamma(zr_sdl_parser *p, zr_image *image,
     zr__sdl_error(p, ZR_ENOMEM, loc, "out of memory");
     return false;
   }
-  size_t n = (size_t)image->width * (size_t)image->height * 3;
-  for (size_t i = 0; i < n; i++)
-    image->pixels[i] = table[image->codes[i]];
-  free(table);
+  free(image->table);
+  image->table = table;
   return true;
 }
 
@@ -757,49 +757,50 @@ static bool keep_palette(zr_sdl_parser *p, zr_image_map *im,
   return true;
 }
 
-/* A sample as stored, over its maximum: PNG files keep their codes; the
-   other codecs' sRGB decoding is undone. */
-static double stored(const zr_image *image, size_t k) {
-  if (image->codes)
-    return image->codes[k] / (double)image->maxval;
-  return zr__srgb_encode(image->pixels[k]);
-}
-
 /*
- * The number of each pixel a bump_map or material_map reads
- * (lib/scene/bitmap.c): a bump map's height is the grey of the stored
- * samples, 0.297 red + 0.589 green + 0.114 blue (the manual's grey,
- * 2.3.3.3.7, and POV-Ray 3.7 renders of pure red, green and blue steps
- * measure these weights), or of the
- * decoded ones under a "gamma"; use_index replaces it later
+ * What a bump_map or material_map reads of each code
+ * (lib/scene/bitmap.c), one number a code: the code over its maximum for
+ * files that keep their stored codes, the sRGB encoding of its colour
+ * for the others (whose codes the sRGB decoding would round back to
+ * the same), or under a "gamma" the decoded colour.  A bump map's
+ * height is then the grey 0.297 red + 0.589 green + 0.114 blue (the
+ * manual's grey, 2.3.3.3.7, and POV-Ray 3.7 renders of pure red, green
+ * and blue steps measure these weights); use_index replaces it later
  * (zr__sdl_bump_map_end).  A material map's is the palette index, else
  * the red sample on a 0 .. 255 scale ("Material Maps").
  */
 static bool bitmap_values(zr_sdl_parser *p, zr_image_map *im,
                           const zr_image *image, bool material,
                           bool decoded) {
+  im->value_kind = material && image->indices ? ZR_BITMAP_VALUE_INDEX
+                   : material                 ? ZR_BITMAP_VALUE_RED
+                                              : ZR_BITMAP_VALUE_GREY;
+  if (image->layout != ZR_LAYOUT_FLOAT) {
+    double *v = zr__sdl_alloc(p, ((size_t)image->maxval + 1) * sizeof *v);
+    if (!v)
+      return false;
+    for (unsigned c = 0; c <= image->maxval; c++)
+      v[c] = decoded ? (double)image->table[c]
+             : image->stored_codes ? c / (double)image->maxval
+                                   : zr__srgb_encode(image->table[c]);
+    im->code_value = v;
+    return true;
+  }
+  /* Float pictures keep one number a pixel. */
   size_t n = (size_t)image->width * (size_t)image->height;
   float *values = zr__sdl_alloc(p, n * sizeof *values);
   if (!values)
     return false;
   for (size_t i = 0; i < n; i++) {
-    double r, g, b;
-    if (decoded) {
-      r = image->pixels[3 * i];
-      g = image->pixels[3 * i + 1];
-      b = image->pixels[3 * i + 2];
-    } else {
-      r = stored(image, 3 * i);
-      g = stored(image, 3 * i + 1);
-      b = stored(image, 3 * i + 2);
-    }
-    if (!material)
-      values[i] = (float)(0.297 * r + 0.589 * g + 0.114 * b);
-    else if (image->indices)
-      values[i] = image->indices[i];
-    else
-      values[i] = (float)floor(r * 255 + 0.5);
+    double rgb[3];
+    for (int c = 0; c < 3; c++)
+      rgb[c] = decoded ? image->pixels[3 * i + c]
+                       : zr__srgb_encode(image->pixels[3 * i + c]);
+    values[i] = material ? (float)floor(rgb[0] * 255 + 0.5)
+                         : (float)(0.297 * rgb[0] + 0.589 * rgb[1] +
+                                   0.114 * rgb[2]);
   }
+  im->value_kind = ZR_BITMAP_VALUE_ARRAY;
   im->values = values;
   return true;
 }
@@ -817,7 +818,8 @@ zr_image_map *zr__sdl_image_map_new(zr_sdl_parser *p, const char *name,
  * assumed_gamma G they are raised to 1/G: POV-Ray 3.7 shows a picture
  * with ambient 1 under assumed_gamma 2.2 as it is, not darker
  * (advanced/sunsethf.pov, drums2; scenes/image_gamma.pov).  G is known
- * only when the parse ends: the buffers wait in the parser.
+ * only when the parse ends: the buffers (a float picture's pixels, or
+ * the table of a coded picture's colours) wait in the parser.
  */
 static bool remember_image(zr_sdl_parser *p, float *pixels, size_t n) {
   if (p->n_images == p->cap_images) {
@@ -836,6 +838,57 @@ static bool remember_image(zr_sdl_parser *p, float *pixels, size_t n) {
   }
   p->image_pixels[p->n_images] = pixels;
   p->image_sizes[p->n_images++] = n;
+  return true;
+}
+
+/* An image map's colours into the scene: a float picture's pixels, or
+   a coded one's codes or indices and its table of colours. */
+static bool image_samples(zr_sdl_parser *p, zr_image_map *im,
+                          const zr_image *image) {
+  size_t n = (size_t)image->width * (size_t)image->height;
+  if (image->layout == ZR_LAYOUT_FLOAT) {
+    float *pixels = zr__sdl_alloc(p, 3 * n * sizeof *pixels);
+    if (!pixels || !remember_image(p, pixels, 3 * n))
+      return false;
+    memcpy(pixels, image->pixels, 3 * n * sizeof *pixels);
+    im->pixels = pixels;
+    return true;
+  }
+  size_t ntable = (size_t)image->maxval + 1;
+  float *table = zr__sdl_alloc(p, ntable * sizeof *table);
+  if (!table || !remember_image(p, table, ntable))
+    return false;
+  memcpy(table, image->table, ntable * sizeof *table);
+  im->table = table;
+  return true;
+}
+
+/* The codes (or the palette's) of a coded picture, shared by every kind
+   of map. */
+static bool picture_codes(zr_sdl_parser *p, zr_image_map *im,
+                          const zr_image *image) {
+  im->layout = (int)image->layout;
+  im->maxval = image->maxval;
+  if (image->layout == ZR_LAYOUT_FLOAT)
+    return true;
+  if (image->palette) {
+    size_t bytes = 3 * 256 * sizeof *image->palette;
+    unsigned short *palette = zr__sdl_alloc(p, bytes);
+    if (!palette)
+      return false;
+    memcpy(palette, image->palette, bytes);
+    im->palette = palette;
+  }
+  if (image->codes) {
+    size_t bytes = (size_t)image->width * (size_t)image->height *
+                   (size_t)zr__image_channels(image) *
+                   (image->maxval > 255 ? 2 : 1);
+    void *codes = zr__sdl_alloc(p, bytes);
+    if (!codes)
+      return false;
+    memcpy(codes, image->codes, bytes);
+    im->codes = codes;
+  }
   return true;
 }
 
@@ -868,27 +921,28 @@ zr_image_map *zr__sdl_bitmap_new(zr_sdl_parser *p, const char *what,
     zr_image_free(image);
     return NULL;
   }
+  bool is_image = strcmp(what, "image_map") == 0;
   zr_image_map *im = zr__sdl_alloc(p, sizeof *im);
-  size_t n = (size_t)image->width * (size_t)image->height * 3;
-  float *pixels = im ? zr__sdl_alloc(p, n * sizeof *pixels) : NULL;
-  if (pixels && image->indices && !keep_palette(p, im, image))
-    pixels = NULL;
-  if (pixels && strcmp(what, "image_map") != 0 &&
-      !bitmap_values(p, im, image, strcmp(what, "material_map") == 0,
-                     gamma != NULL))
-    pixels = NULL;
-  if (pixels && strcmp(what, "image_map") == 0 &&
-      !remember_image(p, pixels, n))
-    pixels = NULL;
-  if (pixels) {
-    memcpy(pixels, image->pixels, n * sizeof *pixels);
+  bool ok = im != NULL;
+  if (ok && image->indices)
+    ok = keep_palette(p, im, image);
+  /* Bump and material maps read only their numbers (bitmap_values);
+     image maps their colours. */
+  if (ok && (is_image || image->layout != ZR_LAYOUT_FLOAT))
+    ok = picture_codes(p, im, image);
+  if (ok)
+    ok = is_image ? image_samples(p, im, image)
+                  : bitmap_values(p, im, image,
+                                  strcmp(what, "material_map") == 0,
+                                  gamma != NULL);
+  if (ok) {
     im->path = zr__sdl_strdup(p, name, strlen(name));
     im->width = image->width;
     im->height = image->height;
-    im->pixels = pixels;
+    ok = im->path != NULL;
   }
   zr_image_free(image);
-  return pixels && im->path ? im : NULL;
+  return ok ? im : NULL;
 }
 
 void zr__sdl_images_to_working_gamma(zr_sdl_parser *p, double gamma) {

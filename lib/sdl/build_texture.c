@@ -35,6 +35,7 @@
 
 #include "pov-parse.h"
 #include "scene/pattern.h"
+#include "scene/bitmap.h"
 #include "sdl/sdl.h"
 
 /* ---- maps ---- */
@@ -465,13 +466,7 @@ bool zr__sdl_bump_map_end(zr_sdl_parser *p, zr_normal *nm,
     /* The index itself is the height: POV-Ray 3.7 tilts by 5 times the
        bump size at a step from index 0 to 5, whatever the palette's
        size (measured with 6 and 256 entries). */
-    size_t n = (size_t)im->width * (size_t)im->height;
-    float *values = zr__sdl_alloc(p, n * sizeof *values);
-    if (!values)
-      return false;
-    for (size_t i = 0; i < n; i++)
-      values[i] = im->indices[i];
-    im->values = values;
+    im->value_kind = ZR_BITMAP_VALUE_INDEX;
   }
   zr__pattern_init(&nm->pattern, ZR_PAT_NONE);
   nm->normal_map = NULL;

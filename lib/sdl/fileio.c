@@ -117,9 +117,14 @@ static bool do_fopen(zr_sdl_parser *p, const zr_sdl_loc *at) {
       free(h);
       return false;
     }
+  } else if (p->ctx && p->ctx->no_scene_writes) {
+    /* Another process writes this file (zr_context_set_scene_writes):
+       the handle takes the #write directives and discards them. */
+    h->writing = true;
   } else {
     char why[1024];
     FILE *out = NULL;
+    h->writing = true;
     zr_status s = zr__io_open_scene_write(
         p->ctx, path, m[0] == 'w' ? ZR_IO_ACCESS_WRITE : ZR_IO_ACCESS_APPEND,
         &out, why, sizeof why);
@@ -287,7 +292,7 @@ static bool do_write(zr_sdl_parser *p) {
   zr_sdl_fhandle *h = name ? handle(p, name, &nl) : NULL;
   if (!h)
     return false;
-  if (!h->out) {
+  if (!h->writing) {
     zr__sdl_error(p, ZR_ESYNTAX, &nl, "'%s' is open for reading", name);
     return false;
   }
@@ -300,19 +305,22 @@ static bool do_write(zr_sdl_parser *p) {
     if (zr__sdl_parse_nested(p, T_START_ARG) != ZR_OK)
       return false;
     const zr_sdl_value *v = &p->nested_rvalue;
+    FILE *out = h->out;
     switch (v->kind) {
     case ZR_SDL_STRING:
-      fputs(v->ptr, h->out);
+      if (out)
+        fputs(v->ptr, out);
       break;
     case ZR_SDL_FLOAT:
-      fprintf(h->out, "%g", v->num.v[0]);
+      if (out)
+        fprintf(out, "%g", v->num.v[0]);
       break;
     case ZR_SDL_VECTOR:
     case ZR_SDL_COLOUR:
-      fputc('<', h->out);
-      for (int i = 0; i < v->num.dim; i++)
-        fprintf(h->out, i ? ",%g" : "%g", v->num.v[i]);
-      fputs("> ", h->out);
+      for (int i = 0; out && i < v->num.dim; i++)
+        fprintf(out, i ? ",%g" : "<%g", v->num.v[i]);
+      if (out)
+        fputs("> ", out);
       break;
     default:
       zr__sdl_error(p, ZR_ESYNTAX, &il,

@@ -173,6 +173,7 @@ typedef struct zr_sdl_fhandle {
   int file;   /* read: index into the parser's files; write: -1 */
   size_t pos; /* read: the next token */
   void *out;  /* write: the FILE * */
+  bool writing; /* opened for write or append (out NULL: discarded) */
   struct zr_sdl_fhandle *next; /* the parser's open files */
 } zr_sdl_fhandle;
 

@@ -38,7 +38,10 @@
  *     times ratio for lit pieces, length times (1 - ratio) for the
  *     others.
  *   - method 3: `min samples` samples spread evenly over an interval,
- *     its two ends among them (at least those two), cut it into cells,
+ *     its two ends among them (at least those two), cut it into cells
+ *     (on rays that gather light the samples take the coefficients of
+ *     the first n / (n + 1) of the interval stretched over all of it,
+ *     n = floor(min samples / 2) + 1, as measured of POV-Ray: reach()),
  *     each halved once more on rays that gather light; jitter moves
  *     each inner sample by up to jitter / 2 of a cell.  With min
  *     samples 3 or more (the manual: adaptive sampling only then), and
@@ -146,6 +149,8 @@ typedef struct march {
   uint64_t seed;
   uint64_t draws;
   plan pl;
+  double reach;          /* method 3: see reach() */
+  double interval_start; /* method 3: s0 of the interval being sampled */
   /* What is known so far: transmittance from the origin to the end of
      the last span, and the light gathered. */
   zr_rgb t, light;
@@ -336,6 +341,34 @@ static double measure(const sample *a, double len) {
 
 /* ----- method 3 ---------------------------------------------------------- */
 
+/*
+ * How far into an interval POV-Ray 3.7's method 3 looks, measured
+ * black-box by bench/media_steps.py (bench/results/media_steps.txt): a
+ * camera ray through an emitting slab whose density steps from 1 to 0
+ * at a depth T shows, as T runs over the slab, a staircase whose steps
+ * are the samples.  With intervals 1 and min samples 3, 5, 9 and 17 the
+ * last step lies at 2/3, 3/4, 5/6 and 9/10 of the slab and the staircase
+ * still sums to the whole slab: the samples cover the first
+ * n / (n + 1) of the interval, n = floor(min samples / 2) + 1, and
+ * stand for all of it.  Rays that gather light do the same here (the
+ * coefficients of the point at s0 + reach (s - s0) are used at s), so
+ * media whose density varies along the ray look as in POV-Ray's
+ * pictures at the scenes' own settings; constant media are unchanged.
+ * Shadow rays (not measured) sample the whole interval.
+ */
+static double reach(const march *m) {
+  if (m->shadow)
+    return 1.0;
+  double n = floor(m->pl.min_samples / 2) + 1;
+  return n / (n + 1);
+}
+
+static sample reach_sample(const march *m, double s0, double s) {
+  sample out = sample_at(m, s0 + m->reach * (s - s0));
+  out.s = s;
+  return out;
+}
+
 /* The cell from a to b, halved while its ends differ by more than the
    threshold and levels remain. */
 static void cell(march *m, const sample *a, const sample *b, int levels) {
@@ -343,7 +376,7 @@ static void cell(march *m, const sample *a, const sample *b, int levels) {
      before the cell: deep in fog a difference is not seen. */
   if (levels > 0 &&
       change(a, b, b->s - a->s) * rgb_max(m->t) > m->pl.aa_threshold) {
-    sample mid = sample_at(m, 0.5 * (a->s + b->s));
+    sample mid = reach_sample(m, m->interval_start, 0.5 * (a->s + b->s));
     cell(m, a, &mid, levels - 1);
     cell(m, &mid, b, levels - 1);
     return;
@@ -353,6 +386,8 @@ static void cell(march *m, const sample *a, const sample *b, int levels) {
 
 static void adaptive_interval(march *m, double s0, double s1) {
   double len = s1 - s0;
+  m->reach = reach(m);
+  m->interval_start = s0;
   /* A shadow ray takes min samples points, the interval's ends among
      them (at least the two ends).  A ray that gathers light takes twice
      as many cells: what lies between two samples (a beam, a shadow, the
@@ -371,7 +406,7 @@ static void adaptive_interval(march *m, double s0, double s1) {
      light's grid of them). */
   int levels = m->pl.min_samples >= 3 && !m->shadow ? m->pl.aa_level : 0;
   double h = len / cells;
-  sample a = sample_at(m, s0);
+  sample a = reach_sample(m, s0, s0);
   for (int i = 1; i <= cells; i++) {
     /* A shadow ray that keeps less than 1e-6 of the light stops. */
     if (m->shadow && rgb_max(m->t) < 1e-6)
@@ -379,7 +414,7 @@ static void adaptive_interval(march *m, double s0, double s1) {
     double s = i == cells ? s1 : s0 + i * h;
     if (i < cells && m->pl.jitter > 0.0)
       s += m->pl.jitter * h * (uniform(m) - 0.5);
-    sample b = sample_at(m, s);
+    sample b = reach_sample(m, s0, s);
     cell(m, &a, &b, levels);
     a = b;
   }

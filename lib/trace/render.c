@@ -127,12 +127,10 @@ void zr__camera_media(const zr_scene *scene, zr_media *media) {
   /* A mesh camera's rays start on its faces, not at its location. */
   if (scene->camera.kind == ZR_CAMERA_MESH)
     return;
-  for (size_t i = 0; i < scene->n_primitives; i++) {
-    const zr_object *o = scene->primitives[i];
-    if (media->n < ZR_MEDIA_MAX && zr__has_inside(o) &&
-        zr__inside(o, scene->camera.location))
-      media->objects[media->n++] = o;
-  }
+  /* zr__scene_finish found them. */
+  for (int i = 0; i < scene->n_camera_inside && media->n < ZR_MEDIA_MAX;
+       i++)
+    media->objects[media->n++] = scene->camera_inside[i];
 }
 
 /* The normal quantile for a two-sided confidence c (0.9 -> 1.645), by

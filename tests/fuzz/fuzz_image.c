@@ -52,14 +52,15 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
       image) {
     size_t n = (size_t)image->width * (size_t)image->height;
     float acc = 0.0f;
+    /* Every sample as the samplers read it (image.h). */
     for (size_t i = 0; i < 3 * n; i++)
-      acc += image->pixels[i];
+      acc += zr__image_linear(image, i);
     if (image->indices)
       for (size_t i = 0; i < n; i++)
         acc += (float)image->indices[i];
-    if (image->codes)
+    if (image->layout != ZR_LAYOUT_FLOAT)
       for (size_t i = 0; i < 3 * n; i++)
-        acc += (float)image->codes[i];
+        acc += (float)zr__image_stored(image, i);
     sink = acc;
   }
   zr_image_free(image);
