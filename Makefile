@@ -90,6 +90,7 @@ distcheck: build
 bench: build
 	bench/run.sh $(BUILD)
 	bench/conformance.sh $(BUILD) all || test $$? = 77
+	bench/peers.sh $(BUILD) || test $$? = 77
 
 clean:
 	-$(MAKE) -C $(BUILD) clean
