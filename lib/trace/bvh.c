@@ -45,6 +45,8 @@ struct zr_bvh {
   size_t n_prims;
   const zr_object **unbounded;
   size_t n_unbounded;
+  /* Where each of prims and of unbounded is in scene->primitives. */
+  uint32_t *prim_index, *unbounded_index;
   int depth;
 };
 
@@ -52,6 +54,7 @@ struct zr_bvh {
 typedef struct build_item {
   double lo[3], hi[3], centre[3];
   const zr_object *object;
+  uint32_t index; /* in scene->primitives */
 } build_item;
 
 typedef struct box3 {
@@ -334,10 +337,16 @@ zr_status zr__bvh_build(zr_scene *scene, zr_context *ctx) {
   bvh->prims = bvh ? malloc((n ? n : 1) * sizeof *bvh->prims) : NULL;
   bvh->unbounded = bvh ? malloc((n ? n : 1) * sizeof *bvh->unbounded)
                        : NULL;
+  if (bvh) {
+    bvh->prim_index = malloc((n ? n : 1) * sizeof *bvh->prim_index);
+    bvh->unbounded_index =
+        malloc((n ? n : 1) * sizeof *bvh->unbounded_index);
+  }
   builder b = {0};
   b.items = items;
   zr_status s = ZR_ENOMEM;
-  if (!bvh || !items || !bvh->prims || !bvh->unbounded)
+  if (!bvh || !items || !bvh->prims || !bvh->unbounded ||
+      !bvh->prim_index || !bvh->unbounded_index)
     goto fail;
   if (n > UINT32_MAX / 2) {
     s = ZR_ELIMIT;
@@ -348,6 +357,7 @@ zr_status zr__bvh_build(zr_scene *scene, zr_context *ctx) {
     const zr_object *o = scene->primitives[i];
     zr_vec3 lo, hi;
     if (!zr__object_bounds(o, &lo, &hi)) {
+      bvh->unbounded_index[bvh->n_unbounded] = (uint32_t)i;
       bvh->unbounded[bvh->n_unbounded++] = o;
       continue;
     }
@@ -357,14 +367,17 @@ zr_status zr__bvh_build(zr_scene *scene, zr_context *ctx) {
     for (int a = 0; a < 3; a++)
       it->centre[a] = 0.5 * (it->lo[a] + it->hi[a]);
     it->object = o;
+    it->index = (uint32_t)i;
   }
   if (nb > 0) {
     s = build_node(&b, 0, nb, 0, NULL);
     if (s != ZR_OK)
       goto fail;
   }
-  for (size_t i = 0; i < nb; i++)
+  for (size_t i = 0; i < nb; i++) {
     bvh->prims[i] = items[i].object;
+    bvh->prim_index[i] = items[i].index;
+  }
   bvh->n_prims = nb;
   bvh->nodes = b.nodes;
   bvh->n_nodes = b.n_nodes;
@@ -387,7 +400,51 @@ void zr__bvh_free(struct zr_bvh *bvh) {
   free(bvh->nodes);
   free(bvh->prims);
   free(bvh->unbounded);
+  free(bvh->prim_index);
+  free(bvh->unbounded_index);
   free(bvh);
+}
+
+static bool box_holds(const bvh_node *node, zr_vec3 p) {
+  return p.x >= node->lo[0] && p.x <= node->hi[0] && p.y >= node->lo[1] &&
+         p.y <= node->hi[1] && p.z >= node->lo[2] && p.z <= node->hi[2];
+}
+
+static int cmp_index(const void *pa, const void *pb) {
+  uint32_t a = *(const uint32_t *)pa, b = *(const uint32_t *)pb;
+  return (a > b) - (a < b);
+}
+
+size_t zr__bvh_point_candidates(const struct zr_bvh *bvh, zr_vec3 p,
+                                uint32_t *out, size_t cap) {
+  if (!bvh)
+    return 0;
+  size_t n = 0;
+  for (size_t i = 0; i < bvh->n_unbounded; i++, n++)
+    if (n < cap)
+      out[n] = bvh->unbounded_index[i];
+  uint32_t stack[STACK_MAX];
+  int sp = 0;
+  if (bvh->n_nodes > 0)
+    stack[sp++] = 0;
+  while (sp > 0) {
+    const bvh_node *node = &bvh->nodes[stack[--sp]];
+    if (!box_holds(node, p))
+      continue;
+    if (node->count > 0) {
+      for (uint32_t i = node->first; i < node->first + node->count; i++, n++)
+        if (n < cap)
+          out[n] = bvh->prim_index[i];
+      continue;
+    }
+    if (sp + 2 <= STACK_MAX) {
+      stack[sp++] = node->first;
+      stack[sp++] = (uint32_t)(node - bvh->nodes) + 1;
+    }
+  }
+  if (n <= cap)
+    qsort(out, n, sizeof *out, cmp_index);
+  return n;
 }
 
 void zr__bvh_get_info(const struct zr_bvh *bvh, zr_bvh_info *info) {
