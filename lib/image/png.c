@@ -22,6 +22,7 @@
  * calls setjmp, so no automatic variable of that function is relied upon
  * after the jump (C11 7.13.2.1).
  */
+#include <errno.h>
 #include <png.h>
 #include <setjmp.h>
 #include <stdlib.h>
@@ -310,7 +311,14 @@ zr_status zr__png_encode(zr_context *ctx, const char *name,
   } else {
     s = encode_rows(&job, image, bits, assumed_gamma, stream);
   }
-  if (s != ZR_OK)
+  int write_errno = errno;
+  /* A failed write (a full disk, ulimit -f) says why, as a failed flush
+     does (image.c): with fast compression the data outgrow the stream's
+     buffer and reach the file while the rows are written. */
+  if (s != ZR_OK && ferror(stream) && write_errno != 0)
+    s = zr__diag(ctx, ZR_DIAG_ERROR, s, NULL, "%s: write failed: %s", name,
+                 strerror(write_errno));
+  else if (s != ZR_OK)
     s = zr__diag(ctx, ZR_DIAG_ERROR, s, NULL, "%s: cannot write PNG: %s",
                  name, job.message);
   png_destroy_write_struct(job.png ? &job.png : NULL,
