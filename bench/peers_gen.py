@@ -8,8 +8,9 @@ writes OUT_DIR/flake.pov and flake.dat (the sphereflake: 7,381 spheres,
 four levels of nine children below one root, on a plane, three lights,
 reflective spheres), OUT_DIR/terrain.pov and terrain.dat (a height field
 of 256 x 256 vertices as 130,050 flat triangles: a POV `mesh` of
-`triangle`s, Tachyon `TRI`s) and OUT_DIR/csg.pov (CSG-heavy, POV-Ray and
-zRcube only: Tachyon has no CSG).  The resolution is given on each
+`triangle`s, Tachyon `TRI`s), OUT_DIR/csg.pov (CSG-heavy, POV-Ray and
+zRcube only: Tachyon has no CSG), and OUT_DIR/empty.pov and empty.dat (a
+camera and a light, for the start-up memory).  The resolution is given on each
 renderer's command line, not in the files.
 
 The two formats describe the same geometry seen by the same camera.  The
@@ -234,6 +235,20 @@ def write_csg(dirname):
                 "  #declare I = I + 1;\n#end\n")
 
 
+def write_empty(dirname):
+    """The camera and a light alone: the start-up memory of each
+    renderer, which peers.sh subtracts to state bytes per primitive."""
+    with open(dirname + "/empty.pov", "w") as f:
+        f.write("#version 3.7;\nglobal_settings { assumed_gamma 1 }\n")
+        f.write(camera_pov(FLAKE_EYE, FLAKE_AT))
+        f.write("light_source { <0, 10, 0>, rgb 1 }\n")
+    with open(dirname + "/empty.dat", "w") as f:
+        f.write("BEGIN_SCENE\n  RESOLUTION 512 512\n")
+        f.write(camera_dat(FLAKE_EYE, FLAKE_AT))
+        f.write("LIGHT CENTER 0 10 0 RAD 0.01 COLOR 1 1 1\n")
+        f.write("END_SCENE\n")
+
+
 def main():
     if len(sys.argv) != 2:
         sys.stderr.write("usage: peers_gen.py OUT_DIR\n")
@@ -241,6 +256,7 @@ def main():
     write_flake(sys.argv[1])
     write_terrain(sys.argv[1])
     write_csg(sys.argv[1])
+    write_empty(sys.argv[1])
     return 0
 
 
