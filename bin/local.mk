@@ -1,6 +1,7 @@
 # bin/local.mk - the zrcube command and its tests.
 bin_PROGRAMS += bin/zrcube
-bin_zrcube_SOURCES = bin/zrcube.c bin/options.c bin/options.h
+bin_zrcube_SOURCES = bin/zrcube.c bin/options.c bin/options.h \
+	bin/state.c bin/state.h
 bin_zrcube_CPPFLAGS = $(AM_CPPFLAGS) -I$(top_srcdir)/bin
 bin_zrcube_CFLAGS = $(AM_CFLAGS) $(PTHREAD_CFLAGS)
 bin_zrcube_LDADD = lib/par/libzrpar.la lib/libzrcube.la $(MPI_LIBS) \
@@ -24,3 +25,9 @@ EXTRA_DIST += tests/test_includes.sh
 # save and load, radiosity-only, one-sided emission, option errors.
 TESTS += tests/test_rad_cli.sh
 EXTRA_DIST += tests/test_rad_cli.sh
+
+# Animation, partial renders, +O-, Declare=, streams, stock INI files
+# (issue 12); +C after kill -9.
+TESTS += tests/test_anim.sh tests/test_continue.sh tests/test_quality.sh
+EXTRA_DIST += tests/test_anim.sh tests/test_continue.sh \
+	tests/test_quality.sh tests/quality/quality.pov

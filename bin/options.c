@@ -27,6 +27,12 @@
 #include <strings.h>
 #include <sys/stat.h>
 
+/* Where POV-Ray for Unix keeps the system's povray.ini (Debian's
+   povray package; README.unix "INI files"). */
+#ifndef ZR_POVRAY_SYSCONF_INI
+#define ZR_POVRAY_SYSCONF_INI "/etc/povray/3.7/povray.ini"
+#endif
+
 /* What an option does, whatever its spelling. */
 typedef enum opt_key {
   K_INPUT,
@@ -80,7 +86,38 @@ typedef enum opt_key {
   K_RADIOSITY_ON, /* Radiosity=on: the scene decides, as without it */
   K_QUALITY,      /* +Qn, Quality=n */
   K_GI_SAVE,
-  K_GI_LOAD
+  K_GI_LOAD,
+  /* Animation (reference 3.2.1). */
+  K_CLOCK,
+  K_INITIAL_FRAME,
+  K_FINAL_FRAME,
+  K_INITIAL_CLOCK,
+  K_FINAL_CLOCK,
+  K_CYCLIC_ON,
+  K_CYCLIC_OFF,
+  K_SUBSET_START,
+  K_SUBSET_END,
+  K_FRAME_STEP,
+  K_FRAMES_PER_RANK, /* optional yes|no|auto */
+  /* Partial renders and continuing (3.2.2.3, 3.2.2.5). */
+  K_START_ROW,
+  K_END_ROW,
+  K_START_COL,
+  K_END_COL,
+  K_CONTINUE_ON,
+  K_CONTINUE_OFF,
+  K_STATE_INTERVAL,
+  /* Scene parsing (3.2.5). */
+  K_DECLARE,
+  K_LANG_VERSION,
+  K_HEADER,
+  /* Text streams (3.2.7): console on and off, file; each for debug,
+     fatal, render, statistics, warning and all five, in that order. */
+  K_CONSOLE_ON,
+  K_CONSOLE_OFF = K_CONSOLE_ON + ZR_CLI_STREAMS + 1,
+  K_STREAM_FILE = K_CONSOLE_OFF + ZR_CLI_STREAMS + 1,
+  K_WARNING_LEVEL = K_STREAM_FILE + ZR_CLI_STREAMS + 1,
+  K_NOTE /* read, not acted on: a warning names it (o->notes) */
 } opt_key;
 
 /* Where the option being applied came from, for messages. */
@@ -90,6 +127,8 @@ typedef struct arg_ctx {
   size_t err_size;
   const char *where; /* "file.ini:3: " or "" */
   const char *what;  /* the option as written: "+Wabc", "--width=abc" */
+  const char *why;   /* K_NOTE: why zrcube does not act on it */
+  int depth;         /* INI files open (an INI names another) */
 } arg_ctx;
 
 static int fail(const arg_ctx *c, const char *fmt, ...)
@@ -118,6 +157,16 @@ void zr__cli_init(zr_cli_options *o, const zr_render_params *defaults) {
   zr_radiosity_params_init(&o->rad, NULL);
   o->gi = ZR_GI_AUTO;
   o->quality = 9;
+  o->initial_frame = 1;
+  o->final_frame = 1;
+  o->final_clock = 1;
+  o->subset_start = o->subset_end = -1;
+  o->frame_step = 1;
+  o->frames_per_rank = -1;
+  o->start_row = o->end_row = o->start_col = o->end_col = -1;
+  o->state_interval = 10;
+  for (int i = 0; i < ZR_CLI_STREAMS; i++)
+    o->stream_console[i] = 1;
 }
 
 void zr__cli_free(zr_cli_options *o) {
@@ -139,6 +188,16 @@ void zr__cli_free(zr_cli_options *o) {
   for (size_t i = 0; i < o->n_write_paths; i++)
     free(o->write_paths[i]);
   free(o->write_paths);
+  for (size_t i = 0; i < o->n_declares; i++)
+    free(o->declare_names[i]);
+  free(o->declare_names);
+  free(o->declare_values);
+  for (int i = 0; i < ZR_CLI_STREAMS; i++)
+    free(o->stream_file[i]);
+  free(o->header_include);
+  for (size_t i = 0; i < o->n_notes; i++)
+    free(o->notes[i]);
+  free(o->notes);
   memset(o, 0, sizeof *o);
 }
 
@@ -523,7 +582,232 @@ static int set_quality(const arg_ctx *c, const char *value) {
     return fail(c, "'%s': the quality must be a whole number from 0 to "
                    "11", c->what);
   c->o->quality = (int)v;
+  c->o->params.quality = (int)v; /* shadows, rays, media (zrcube(1)) */
   return 0;
+}
+
+/* A message for the caller to print as a warning after parsing: a key
+   zrcube reads but does not act on. */
+static int add_note(const arg_ctx *c, const char *why) {
+  zr_cli_options *o = c->o;
+  size_t n = strlen(c->where) + strlen(c->what) + strlen(why) + 8;
+  char *text = malloc(n);
+  char **grown = realloc(o->notes, (o->n_notes + 1) * sizeof *grown);
+  if (!text || !grown) {
+    free(text);
+    if (grown)
+      o->notes = grown;
+    return fail(c, "out of memory");
+  }
+  snprintf(text, n, "%s'%s': %s", c->where, c->what, why);
+  o->notes = grown;
+  o->notes[o->n_notes++] = text;
+  return 0;
+}
+
+static int set_frame(const arg_ctx *c, const char *value, long *out,
+                     int *given) {
+  long v;
+  if (!parse_int(value, -1000000000L, 1000000000L, &v))
+    return fail(c, "'%s': a frame number must be a whole number",
+                c->what);
+  *out = v;
+  if (given)
+    *given = 1;
+  return 0;
+}
+
+static int set_clock_value(const arg_ctx *c, const char *value,
+                           double *out) {
+  if (!parse_real(value, out))
+    return fail(c, "'%s': the clock must be a number", c->what);
+  return 0;
+}
+
+/* A subset frame, a row or a column: a fraction when below 1 (0.n), a
+   1-based number otherwise (reference 3.2.1.3 and 3.2.2.3). */
+static int set_position(const arg_ctx *c, const char *value, double *out,
+                        const char *what) {
+  double v;
+  if (!parse_real(value, &v) || v < 0 || (v >= 1 && v != floor(v)))
+    return fail(c, "'%s': the %s must be a whole number from 1, or a "
+                   "fraction from 0.0 to 1.0", c->what, what);
+  *out = v;
+  return 0;
+}
+
+/* Declare=NAME=VALUE: a float the scene sees as if #declared first. */
+static int add_declare(const arg_ctx *c, const char *value) {
+  zr_cli_options *o = c->o;
+  const char *eq = strchr(value, '=');
+  const char *p = value;
+  if (isalpha((unsigned char)*p) || *p == '_')
+    for (p++; isalnum((unsigned char)*p) || *p == '_'; p++)
+      ;
+  const char *name_end = p;
+  while (p < (eq ? eq : p) && isspace((unsigned char)*p))
+    p++;
+  double v;
+  const char *num = eq ? eq + 1 : "";
+  while (isspace((unsigned char)*num))
+    num++;
+  if (!eq || name_end == value || p != eq || !parse_real(num, &v))
+    return fail(c, "'%s': expected Declare=IDENTIFIER=FLOAT, as in "
+                   "Declare=MyValue=24", c->what);
+  size_t len = (size_t)(name_end - value);
+  for (size_t i = 0; i < o->n_declares; i++)
+    if (strlen(o->declare_names[i]) == len &&
+        !strncmp(o->declare_names[i], value, len)) {
+      o->declare_values[i] = v;
+      return 0;
+    }
+  char **names = realloc(o->declare_names,
+                         (o->n_declares + 1) * sizeof *names);
+  if (!names)
+    return fail(c, "out of memory");
+  o->declare_names = names;
+  double *values = realloc(o->declare_values,
+                           (o->n_declares + 1) * sizeof *values);
+  if (!values)
+    return fail(c, "out of memory");
+  o->declare_values = values;
+  names[o->n_declares] = strndup(value, len);
+  if (!names[o->n_declares])
+    return fail(c, "out of memory");
+  values[o->n_declares++] = v;
+  return 0;
+}
+
+/* POV-Ray's default file of each stream (reference 3.2.7.3). */
+static const char *const stream_default_file[ZR_CLI_STREAMS + 1] = {
+    "DEBUG.OUT", "FATAL.OUT", "RENDER.OUT", "STATS.OUT", "WARNING.OUT",
+    "ALLTEXT.OUT"};
+
+/* Stream i (ZR_CLI_STREAMS: all five) to a file: a name, or true for
+   the default name, or false for none. */
+static int set_stream_file(const arg_ctx *c, int i, const char *value) {
+  zr_cli_options *o = c->o;
+  int on = 1;
+  const char *name = value;
+  if (parse_bool(value, &on))
+    name = on ? stream_default_file[i] : NULL;
+  int first = i == ZR_CLI_STREAMS ? 0 : i;
+  int last = i == ZR_CLI_STREAMS ? ZR_CLI_STREAMS - 1 : i;
+  for (int k = first; k <= last; k++) {
+    free(o->stream_file[k]);
+    o->stream_file[k] = NULL;
+    if (name && !(o->stream_file[k] = strdup(name)))
+      return fail(c, "out of memory");
+  }
+  return 0;
+}
+
+static int set_console(const arg_ctx *c, int i, int on) {
+  int first = i == ZR_CLI_STREAMS ? 0 : i;
+  int last = i == ZR_CLI_STREAMS ? ZR_CLI_STREAMS - 1 : i;
+  for (int k = first; k <= last; k++)
+    c->o->stream_console[k] = on;
+  return 0;
+}
+
+static int apply_more(const arg_ctx *c, opt_key key, const char *value) {
+  zr_cli_options *o = c->o;
+  long v;
+  double d;
+  if (key >= K_CONSOLE_ON && key <= K_CONSOLE_ON + ZR_CLI_STREAMS) {
+    int i = (int)(key - K_CONSOLE_ON);
+    set_console(c, i, 1);
+    return value ? set_stream_file(c, i, value) : 0;
+  }
+  if (key >= K_CONSOLE_OFF && key <= K_CONSOLE_OFF + ZR_CLI_STREAMS) {
+    int i = (int)(key - K_CONSOLE_OFF);
+    set_console(c, i, 0);
+    return value ? set_stream_file(c, i, value) : 0;
+  }
+  if (key >= K_STREAM_FILE && key <= K_STREAM_FILE + ZR_CLI_STREAMS)
+    return set_stream_file(c, (int)(key - K_STREAM_FILE), value);
+  switch (key) {
+  case K_CLOCK:
+    o->clock_given = 1;
+    return set_clock_value(c, value, &o->clock);
+  case K_INITIAL_FRAME:
+    return set_frame(c, value, &o->initial_frame, &o->initial_frame_given);
+  case K_FINAL_FRAME:
+    return set_frame(c, value, &o->final_frame, &o->final_frame_given);
+  case K_INITIAL_CLOCK:
+    return set_clock_value(c, value, &o->initial_clock);
+  case K_FINAL_CLOCK:
+    return set_clock_value(c, value, &o->final_clock);
+  case K_CYCLIC_ON:
+  case K_CYCLIC_OFF:
+    o->cyclic = key == K_CYCLIC_ON;
+    return 0;
+  case K_SUBSET_START:
+    return set_position(c, value, &o->subset_start, "subset frame");
+  case K_SUBSET_END:
+    return set_position(c, value, &o->subset_end, "subset frame");
+  case K_FRAME_STEP:
+    if (!parse_int(value, 1, 1000000000L, &v))
+      return fail(c, "'%s': the frame step must be a whole number from 1",
+                  c->what);
+    o->frame_step = v;
+    return 0;
+  case K_FRAMES_PER_RANK: {
+    int on;
+    if (!value)
+      o->frames_per_rank = 1;
+    else if (!strcasecmp(value, "auto"))
+      o->frames_per_rank = -1;
+    else if (parse_bool(value, &on))
+      o->frames_per_rank = on;
+    else
+      return fail(c, "'%s': --frames-per-rank takes yes, no or auto",
+                  c->what);
+    return 0;
+  }
+  case K_START_ROW:
+    return set_position(c, value, &o->start_row, "row");
+  case K_END_ROW:
+    return set_position(c, value, &o->end_row, "row");
+  case K_START_COL:
+    return set_position(c, value, &o->start_col, "column");
+  case K_END_COL:
+    return set_position(c, value, &o->end_col, "column");
+  case K_CONTINUE_ON:
+  case K_CONTINUE_OFF:
+    o->continue_trace = key == K_CONTINUE_ON;
+    return 0;
+  case K_STATE_INTERVAL:
+    if (!parse_real(value, &d) || d < 0)
+      return fail(c, "'%s': --state-interval takes seconds (0: after "
+                     "every band of rows)", c->what);
+    o->state_interval = d;
+    return 0;
+  case K_DECLARE:
+    return add_declare(c, value);
+  case K_LANG_VERSION:
+    if (!parse_real(value, &d) || d < 1 || d > 3.8)
+      return fail(c, "'%s': the language version must be a number from "
+                     "1.0 to 3.7", c->what);
+    o->lang_version = d;
+    return 0;
+  case K_HEADER:
+    return set_string(c, &o->header_include, value);
+  case K_WARNING_LEVEL:
+    if (!parse_int(value, 0, 10, &v))
+      return fail(c, "'%s': the warning level must be a whole number "
+                     "from 0 to 10", c->what);
+    /* Level 0 turns all warnings off; zrcube has no classes of
+       warnings to tell the others apart. */
+    if (v == 0)
+      set_console(c, ZR_CLI_STREAM_WARNING, 0);
+    return 0;
+  case K_NOTE:
+    return add_note(c, c->why ? c->why : "ignored");
+  default:
+    break;
+  }
+  return fail(c, "'%s': internal error: unhandled option", c->what);
 }
 
 static int apply(const arg_ctx *c, opt_key key, const char *value) {
@@ -533,9 +817,13 @@ static int apply(const arg_ctx *c, opt_key key, const char *value) {
   case K_INPUT:
     return set_input(c, value);
   case K_OUTPUT:
-    if (!strcmp(value, "-"))
-      return fail(c, "'%s': writing the image to standard output is not "
-                     "supported", c->what);
+    /* +O- : the image goes to standard output (reference 3.2.4.2). */
+    o->to_stdout = !strcmp(value, "-");
+    if (o->to_stdout) {
+      free(o->output);
+      o->output = NULL;
+      return 0;
+    }
     return set_string(c, &o->output, value);
   case K_WIDTH:
     return set_side(c, value, "the width", &o->params.width);
@@ -674,8 +962,10 @@ static int apply(const arg_ctx *c, opt_key key, const char *value) {
     return set_string(c, &o->gi_save, value);
   case K_GI_LOAD:
     return set_string(c, &o->gi_load, value);
+  default:
+    break;
   }
-  return fail(c, "'%s': internal error: unhandled option", c->what);
+  return apply_more(c, key, value);
 }
 
 /* ---- POV-Ray switches: +X / -X ------------------------------------- */
@@ -693,18 +983,39 @@ typedef struct pov_switch {
   opt_key on;          /* after + */
   opt_key off;         /* after - */
   value_rule rule;
-  const char *needs; /* what a missing value should have been */
+  const char *needs; /* what a missing value should have been; for
+                        K_NOTE, why zrcube does not act on it */
 } pov_switch;
 
+#define STREAM_SWITCH(l, i)                                              \
+  {l, (opt_key)(K_CONSOLE_ON + (i)), (opt_key)(K_CONSOLE_OFF + (i)),     \
+   V_OPTIONAL, NULL}
+
+/*
+ * POV-Ray's switches (reference 3.2), matched on their letters with the
+ * longest family first, as POV-Ray tells +HIfile.inc (a header include)
+ * from +H480 and +WT2 from +W640: a switch is its letters, then its
+ * value.  Switches for work zrcube does differently are read and named
+ * in a warning (K_NOTE) rather than refused, because stock INI files
+ * carry them; those that only tune speed or memory (+B, +MB, +X ...)
+ * are read and ignored silently.
+ */
 static const pov_switch pov_switches[] = {
     {"WT", K_THREADS, K_THREADS, V_REQUIRED, "a number of threads, as in +WT4"},
+    {"WL", K_WARNING_LEVEL, K_WARNING_LEVEL, V_REQUIRED,
+     "a warning level, as in +WL10"},
     {"W", K_WIDTH, K_WIDTH, V_REQUIRED, "a width, as in +W640"},
+    {"HI", K_HEADER, K_HEADER, V_REQUIRED,
+     "a file name, as in +HIheader.inc"},
     {"H", K_HEIGHT, K_HEIGHT, V_REQUIRED, "a height, as in +H480"},
     {"I", K_INPUT, K_INPUT, V_REQUIRED, "a file name, as in +Iscene.pov"},
     {"O", K_OUTPUT, K_OUTPUT, V_REQUIRED, "a file name, as in +Oimage.png"},
     {"L", K_INCLUDE, K_INCLUDE, V_REQUIRED, "a directory, as in +Linclude"},
     {"AM", K_SAMPLING, K_SAMPLING, V_REQUIRED, "a method, as in +AM1"},
     {"A", K_AA_ON, K_AA_OFF, V_OPTIONAL, NULL},
+    {"RVP", K_IGNORED, K_IGNORED, V_NONE, NULL},
+    {"RP", K_IGNORED, K_IGNORED, V_ANY, NULL},
+    {"RS", K_IGNORED, K_IGNORED, V_ANY, NULL},
     {"R", K_AA_DEPTH, K_AA_DEPTH, V_REQUIRED, "a depth, as in +R3"},
     {"J", K_JITTER_ON, K_JITTER_OFF, V_OPTIONAL, NULL},
     {"F", K_OUTPUT_ON, K_OUTPUT_OFF, V_OPTIONAL, NULL},
@@ -712,7 +1023,56 @@ static const pov_switch pov_switches[] = {
     {"D", K_IGNORED, K_IGNORED, V_ANY, NULL},
     {"P", K_IGNORED, K_IGNORED, V_NONE, NULL},
     {"Q", K_QUALITY, K_QUALITY, V_REQUIRED, "a quality, as in +Q9"},
+    {"KFI", K_INITIAL_FRAME, K_INITIAL_FRAME, V_REQUIRED,
+     "a frame number, as in +KFI1"},
+    {"KFF", K_FINAL_FRAME, K_FINAL_FRAME, V_REQUIRED,
+     "a frame number, as in +KFF10"},
+    {"KI", K_INITIAL_CLOCK, K_INITIAL_CLOCK, V_REQUIRED,
+     "a clock value, as in +KI0.0"},
+    {"KF", K_FINAL_CLOCK, K_FINAL_CLOCK, V_REQUIRED,
+     "a clock value, as in +KF1.0"},
+    {"KC", K_CYCLIC_ON, K_CYCLIC_OFF, V_NONE, NULL},
+    {"K", K_CLOCK, K_CLOCK, V_REQUIRED, "a clock value, as in +K0.5"},
+    {"SR", K_START_ROW, K_START_ROW, V_REQUIRED, "a row, as in +SR10"},
+    {"SC", K_START_COL, K_START_COL, V_REQUIRED, "a column, as in +SC10"},
+    {"SF", K_SUBSET_START, K_SUBSET_START, V_REQUIRED,
+     "a frame, as in +SF5"},
+    {"STP", K_FRAME_STEP, K_FRAME_STEP, V_REQUIRED, "a step, as in +STP2"},
+    {"SP", K_NOTE, K_NOTE, V_ANY,
+     "ignored: zrcube shows no mosaic preview"},
+    {"SU", K_IGNORED, K_IGNORED, V_NONE, NULL},
+    {"ER", K_END_ROW, K_END_ROW, V_REQUIRED, "a row, as in +ER100"},
+    {"EC", K_END_COL, K_END_COL, V_REQUIRED, "a column, as in +EC100"},
+    {"EF", K_SUBSET_END, K_SUBSET_END, V_REQUIRED, "a frame, as in +EF10"},
+    {"EP", K_NOTE, K_NOTE, V_ANY, "ignored: zrcube shows no mosaic preview"},
+    {"C", K_CONTINUE_ON, K_CONTINUE_OFF, V_NONE, NULL},
+    STREAM_SWITCH("GD", ZR_CLI_STREAM_DEBUG),
+    STREAM_SWITCH("GF", ZR_CLI_STREAM_FATAL),
+    STREAM_SWITCH("GR", ZR_CLI_STREAM_RENDER),
+    STREAM_SWITCH("GS", ZR_CLI_STREAM_STATISTICS),
+    STREAM_SWITCH("GW", ZR_CLI_STREAM_WARNING),
+    STREAM_SWITCH("GA", ZR_CLI_STREAMS),
+    {"GI", K_NOTE, K_NOTE, V_ANY,
+     "ignored: zrcube does not write INI files (Create_Ini)"},
+    {"GP", K_IGNORED, K_IGNORED, V_NONE, NULL},
+    {"MV", K_LANG_VERSION, K_LANG_VERSION, V_REQUIRED,
+     "a version, as in +MV3.7"},
+    {"MB", K_IGNORED, K_IGNORED, V_ANY, NULL},
+    {"MI", K_IGNORED, K_IGNORED, V_ANY, NULL},
+    {"UD", K_NOTE, K_NOTE, V_NONE, "ignored: zrcube does not dither"},
+    {"UF", K_NOTE, K_NOTE, V_NONE,
+     "ignored: field rendering is not supported"},
+    {"UO", K_NOTE, K_NOTE, V_NONE,
+     "ignored: field rendering is not supported"},
+    {"UL", K_IGNORED, K_IGNORED, V_NONE, NULL},
+    {"UV", K_IGNORED, K_IGNORED, V_NONE, NULL},
+    {"UR", K_IGNORED, K_IGNORED, V_NONE, NULL},
+    {"X", K_IGNORED, K_IGNORED, V_ANY, NULL},
+    {"BS", K_IGNORED, K_IGNORED, V_ANY, NULL},
+    {"B", K_IGNORED, K_IGNORED, V_ANY, NULL},
 };
+
+static const char *unquote(const char *value, char *buf, size_t size);
 
 static int parse_switch(arg_ctx *c, const char *arg) {
   int plus = arg[0] == '+';
@@ -733,21 +1093,24 @@ static int parse_switch(arg_ctx *c, const char *arg) {
     size_t n = strlen(sw->letters);
     if (strncasecmp(body, sw->letters, n) != 0)
       continue;
-    const char *value = body + n;
+    char buf[4096];
+    const char *value = unquote(body + n, buf, sizeof buf);
     opt_key key = plus ? sw->on : sw->off;
+    arg_ctx sub = *c;
+    sub.why = sw->needs;
     switch (sw->rule) {
     case V_NONE:
       if (*value)
         break; /* +Vx: not this switch; an unknown one */
-      return apply(c, key, NULL);
+      return apply(&sub, key, NULL);
     case V_OPTIONAL:
-      return apply(c, key, *value ? value : NULL);
+      return apply(&sub, key, *value ? value : NULL);
     case V_REQUIRED:
       if (!*value)
         return fail(c, "'%s' needs %s", arg, sw->needs);
-      return apply(c, key, value);
+      return apply(&sub, key, value);
     case V_ANY:
-      return apply(c, key, NULL);
+      return apply(&sub, key, NULL);
     }
     break;
   }
@@ -808,6 +1171,9 @@ static const long_option long_options[] = {
     {"quality", K_QUALITY, L_REQUIRED},
     {"gi-save", K_GI_SAVE, L_REQUIRED},
     {"gi-load", K_GI_LOAD, L_REQUIRED},
+    {"frames-per-rank", K_FRAMES_PER_RANK, L_OPTIONAL},
+    {"state-interval", K_STATE_INTERVAL, L_REQUIRED},
+    {"declare", K_DECLARE, L_REQUIRED},
 };
 
 /* Returns how many extra arguments it used (0 or 1), or -1 on failure. */
@@ -857,40 +1223,161 @@ typedef struct ini_option {
   opt_key key;   /* with a value */
   int boolean;   /* 1: on/off selects between key and off */
   opt_key off;
+  const char *why; /* K_NOTE: why zrcube does not act on the key */
 } ini_option;
 
+#define STREAM_KEYS(console, file, i)                                     \
+  {console, (opt_key)(K_CONSOLE_ON + (i)), 1,                            \
+   (opt_key)(K_CONSOLE_OFF + (i)), NULL},                                \
+  {file, (opt_key)(K_STREAM_FILE + (i)), 0,                              \
+   (opt_key)(K_STREAM_FILE + (i)), NULL}
+
+/* Keys read and named in a warning: zrcube works otherwise, and the
+   picture may differ from POV-Ray's.  Keys that only tune speed,
+   memory or the user interface (bounding, block sizes, abort tests) are
+   read and ignored silently (K_IGNORED), like the display options. */
+#define NOTE(name, why) {name, K_NOTE, 0, K_NOTE, why}
+#define SHELL_NOTE(name)                                                  \
+  NOTE(name, "ignored: zrcube runs no shell commands (reference 3.2.6)")
+
 static const ini_option ini_options[] = {
-    {"Input_File_Name", K_INPUT, 0, K_INPUT},
-    {"Output_File_Name", K_OUTPUT, 0, K_OUTPUT},
-    {"Width", K_WIDTH, 0, K_WIDTH},
-    {"Height", K_HEIGHT, 0, K_HEIGHT},
-    {"Antialias", K_AA_ON, 1, K_AA_OFF},
-    {"Antialias_Threshold", K_AA_THRESHOLD, 0, K_AA_THRESHOLD},
-    {"Antialias_Depth", K_AA_DEPTH, 0, K_AA_DEPTH},
-    {"Sampling_Method", K_SAMPLING, 0, K_SAMPLING},
-    {"Jitter", K_JITTER_ON, 1, K_JITTER_OFF},
-    {"Jitter_Amount", K_JITTER_AMOUNT, 0, K_JITTER_AMOUNT},
-    {"Work_Threads", K_THREADS, 0, K_THREADS},
-    {"Library_Path", K_INCLUDE, 0, K_INCLUDE},
-    {"Verbose", K_VERBOSE, 1, K_NOVERBOSE},
-    {"Display", K_IGNORED, 1, K_IGNORED},
-    {"Pause_When_Done", K_IGNORED, 1, K_IGNORED},
-    {"Output_To_File", K_OUTPUT_ON, 1, K_OUTPUT_OFF},
-    {"Output_File_Type", K_FORMAT, 0, K_FORMAT},
-    {"Bits_Per_Color", K_BITS, 0, K_BITS},
+    {"Input_File_Name", K_INPUT, 0, K_INPUT, NULL},
+    {"Output_File_Name", K_OUTPUT, 0, K_OUTPUT, NULL},
+    {"Width", K_WIDTH, 0, K_WIDTH, NULL},
+    {"Height", K_HEIGHT, 0, K_HEIGHT, NULL},
+    {"Antialias", K_AA_ON, 1, K_AA_OFF, NULL},
+    {"Antialias_Threshold", K_AA_THRESHOLD, 0, K_AA_THRESHOLD, NULL},
+    {"Antialias_Depth", K_AA_DEPTH, 0, K_AA_DEPTH, NULL},
+    {"Sampling_Method", K_SAMPLING, 0, K_SAMPLING, NULL},
+    {"Jitter", K_JITTER_ON, 1, K_JITTER_OFF, NULL},
+    {"Jitter_Amount", K_JITTER_AMOUNT, 0, K_JITTER_AMOUNT, NULL},
+    {"Work_Threads", K_THREADS, 0, K_THREADS, NULL},
+    {"Library_Path", K_INCLUDE, 0, K_INCLUDE, NULL},
+    {"Verbose", K_VERBOSE, 1, K_NOVERBOSE, NULL},
+    {"Display", K_IGNORED, 1, K_IGNORED, NULL},
+    {"Pause_When_Done", K_IGNORED, 1, K_IGNORED, NULL},
+    {"Output_To_File", K_OUTPUT_ON, 1, K_OUTPUT_OFF, NULL},
+    {"Output_File_Type", K_FORMAT, 0, K_FORMAT, NULL},
+    {"Bits_Per_Color", K_BITS, 0, K_BITS, NULL},
     /* zrcube's own keys for what POV-Ray 3.7 sets in povray.conf
        ([Permitted Paths] read= and read+write=, [File I/O Security]);
        the plural spellings are accepted too. */
-    {"Read_Path", K_READ_PATH, 0, K_READ_PATH},
-    {"Read_Paths", K_READ_PATH, 0, K_READ_PATH},
-    {"Write_Path", K_WRITE_PATH, 0, K_WRITE_PATH},
-    {"Write_Paths", K_WRITE_PATH, 0, K_WRITE_PATH},
-    {"IO_Restrictions", K_IO_RESTRICTIONS, 0, K_IO_RESTRICTIONS},
-    {"Quality", K_QUALITY, 0, K_QUALITY},
-    {"Radiosity", K_RADIOSITY_ON, 1, K_NO_RADIOSITY},
+    {"Read_Path", K_READ_PATH, 0, K_READ_PATH, NULL},
+    {"Read_Paths", K_READ_PATH, 0, K_READ_PATH, NULL},
+    {"Write_Path", K_WRITE_PATH, 0, K_WRITE_PATH, NULL},
+    {"Write_Paths", K_WRITE_PATH, 0, K_WRITE_PATH, NULL},
+    {"IO_Restrictions", K_IO_RESTRICTIONS, 0, K_IO_RESTRICTIONS, NULL},
+    {"Quality", K_QUALITY, 0, K_QUALITY, NULL},
+    {"Radiosity", K_RADIOSITY_ON, 1, K_NO_RADIOSITY, NULL},
+    /* Animation (3.2.1). */
+    {"Clock", K_CLOCK, 0, K_CLOCK, NULL},
+    {"Initial_Frame", K_INITIAL_FRAME, 0, K_INITIAL_FRAME, NULL},
+    {"Final_Frame", K_FINAL_FRAME, 0, K_FINAL_FRAME, NULL},
+    {"Initial_Clock", K_INITIAL_CLOCK, 0, K_INITIAL_CLOCK, NULL},
+    {"Final_Clock", K_FINAL_CLOCK, 0, K_FINAL_CLOCK, NULL},
+    {"Cyclic_Animation", K_CYCLIC_ON, 1, K_CYCLIC_OFF, NULL},
+    {"Subset_Start_Frame", K_SUBSET_START, 0, K_SUBSET_START, NULL},
+    {"Subset_End_Frame", K_SUBSET_END, 0, K_SUBSET_END, NULL},
+    {"Frame_Step", K_FRAME_STEP, 0, K_FRAME_STEP, NULL},
+    NOTE("Field_Render", "ignored: field rendering is not supported"),
+    NOTE("Odd_Field", "ignored: field rendering is not supported"),
+    NOTE("Clockless_Animation",
+         "ignored: every frame is parsed with its own clock"),
+    NOTE("Real_Time_Raytracing",
+         "ignored: zrcube shows no window to play frames in"),
+    /* Partial output and continuing (3.2.2). */
+    {"Start_Row", K_START_ROW, 0, K_START_ROW, NULL},
+    {"End_Row", K_END_ROW, 0, K_END_ROW, NULL},
+    {"Start_Column", K_START_COL, 0, K_START_COL, NULL},
+    {"End_Column", K_END_COL, 0, K_END_COL, NULL},
+    {"Continue_Trace", K_CONTINUE_ON, 1, K_CONTINUE_OFF, NULL},
+    NOTE("Create_Ini", "ignored: zrcube does not write INI files"),
+    {"Test_Abort", K_IGNORED, 0, K_IGNORED, NULL},
+    {"Test_Abort_Count", K_IGNORED, 0, K_IGNORED, NULL},
+    {"Max_Image_Buffer_Memory", K_IGNORED, 0, K_IGNORED, NULL},
+    /* Display (3.2.3): zrcube opens no window. */
+    {"Video_Mode", K_IGNORED, 0, K_IGNORED, NULL},
+    {"Palette", K_IGNORED, 0, K_IGNORED, NULL},
+    {"Display_Gamma", K_IGNORED, 0, K_IGNORED, NULL},
+    {"Preview_Start_Size", K_IGNORED, 0, K_IGNORED, NULL},
+    {"Preview_End_Size", K_IGNORED, 0, K_IGNORED, NULL},
+    {"Draw_Vistas", K_IGNORED, 0, K_IGNORED, NULL},
+    /* File output (3.2.4). */
+    NOTE("Output_Alpha", "ignored: the image is written without alpha"),
+    NOTE("Dither", "ignored: zrcube does not dither"),
+    NOTE("Dither_Method", "ignored: zrcube does not dither"),
+    NOTE("File_Gamma", "ignored: the file gamma follows the scene's "
+                       "assumed_gamma"),
+    NOTE("Grayscale_Output", "ignored: the image is written in colour"),
+    NOTE("Histogram_Type", "ignored: POV-Ray 3.7 has no histogram"),
+    NOTE("Histogram_Name", "ignored: POV-Ray 3.7 has no histogram"),
+    NOTE("Histogram_Grid_Size", "ignored: POV-Ray 3.7 has no histogram"),
+    /* Scene parsing (3.2.5). */
+    {"Declare", K_DECLARE, 0, K_DECLARE, NULL},
+    {"Version", K_LANG_VERSION, 0, K_LANG_VERSION, NULL},
+    {"Include_Header", K_HEADER, 0, K_HEADER, NULL},
+    /* Shell commands (3.2.6). */
+    SHELL_NOTE("Pre_Scene_Command"),
+    SHELL_NOTE("Pre_Frame_Command"),
+    SHELL_NOTE("Post_Scene_Command"),
+    SHELL_NOTE("Post_Frame_Command"),
+    SHELL_NOTE("User_Abort_Command"),
+    SHELL_NOTE("Fatal_Error_Command"),
+    SHELL_NOTE("Pre_Scene_Return"),
+    SHELL_NOTE("Pre_Frame_Return"),
+    SHELL_NOTE("Post_Scene_Return"),
+    SHELL_NOTE("Post_Frame_Return"),
+    SHELL_NOTE("User_Abort_Return"),
+    SHELL_NOTE("Fatal_Error_Return"),
+    /* Text streams (3.2.7). */
+    STREAM_KEYS("Debug_Console", "Debug_File", ZR_CLI_STREAM_DEBUG),
+    STREAM_KEYS("Fatal_Console", "Fatal_File", ZR_CLI_STREAM_FATAL),
+    STREAM_KEYS("Render_Console", "Render_File", ZR_CLI_STREAM_RENDER),
+    STREAM_KEYS("Statistic_Console", "Statistic_File",
+                ZR_CLI_STREAM_STATISTICS),
+    STREAM_KEYS("Warning_Console", "Warning_File", ZR_CLI_STREAM_WARNING),
+    STREAM_KEYS("All_Console", "All_File", ZR_CLI_STREAMS),
+    {"Append_File", K_IGNORED, 0, K_IGNORED, NULL},
+    {"Warning_Level", K_WARNING_LEVEL, 0, K_WARNING_LEVEL, NULL},
+    /* Tracing (3.2.8). */
+    {"Render_Block_Size", K_IGNORED, 0, K_IGNORED, NULL},
+    {"Render_Pattern", K_IGNORED, 0, K_IGNORED, NULL},
+    {"Render_Block_Step", K_IGNORED, 0, K_IGNORED, NULL},
+    {"Bounding", K_IGNORED, 0, K_IGNORED, NULL},
+    {"Bounding_Method", K_IGNORED, 0, K_IGNORED, NULL},
+    {"Bounding_Threshold", K_IGNORED, 0, K_IGNORED, NULL},
+    {"Light_Buffer", K_IGNORED, 0, K_IGNORED, NULL},
+    {"Vista_Buffer", K_IGNORED, 0, K_IGNORED, NULL},
+    {"Remove_Bounds", K_IGNORED, 0, K_IGNORED, NULL},
+    {"Split_Unions", K_IGNORED, 0, K_IGNORED, NULL},
+    NOTE("Antialias_Gamma", "ignored: antialiasing compares colours in "
+                            "the working space"),
+    /* Radiosity (3.2.9). */
+    {"High_Reproducibility", K_IGNORED, 0, K_IGNORED, NULL},
+    {"Radiosity_Vain_Pretrace", K_IGNORED, 0, K_IGNORED, NULL},
+    NOTE("Radiosity_File_Name", "ignored: use --gi-save=FILE or "
+                                "--gi-load=FILE"),
+    NOTE("Radiosity_From_File", "ignored: use --gi-load=FILE"),
+    NOTE("Radiosity_To_File", "ignored: use --gi-save=FILE"),
 };
 
-/* arg is "Key=Value"; POV-Ray's keys are case-insensitive. */
+/* A value as written: POV-Ray lets a value be quoted
+   (Library_Path="/usr/share/povray-3.7"); the quotes go. */
+static const char *unquote(const char *value, char *buf, size_t size) {
+  size_t n = strlen(value);
+  if (n >= 2 && (value[0] == '"' || value[0] == '\'') &&
+      value[n - 1] == value[0] && n - 2 < size) {
+    memcpy(buf, value + 1, n - 2);
+    buf[n - 2] = '\0';
+    return buf;
+  }
+  return value;
+}
+
+/* arg is "Key=Value"; POV-Ray's keys are case-insensitive.  A key
+   zrcube does not know is named in a warning when it comes from an INI
+   file (POV-Ray's files carry keys of other versions and platforms),
+   and refused on the command line, where it is most likely a typo. */
 static int parse_ini_option(arg_ctx *c, const char *arg) {
   const char *eq = strchr(arg, '=');
   size_t len = (size_t)(eq - arg);
@@ -899,19 +1386,35 @@ static int parse_ini_option(arg_ctx *c, const char *arg) {
   const char *value = eq + 1;
   while (isspace((unsigned char)*value))
     value++;
+  char buf[4096];
+  value = unquote(value, buf, sizeof buf);
   for (size_t i = 0; i < sizeof ini_options / sizeof *ini_options; i++) {
     const ini_option *io = &ini_options[i];
     if (strlen(io->name) != len || strncasecmp(arg, io->name, len) != 0)
       continue;
-    if (!*value)
+    arg_ctx sub = *c;
+    sub.why = io->why;
+    if (io->key == K_NOTE)
+      return apply(&sub, K_NOTE, NULL);
+    if (!*value) {
+      /* POV-Ray's stock files leave some keys empty (Pre_Frame_Command=
+         in pngflc.ini): nothing to set. */
+      if (*c->where)
+        return 0;
       return fail(c, "'%s' needs a value", arg);
+    }
     if (io->boolean) {
       int on;
       if (!parse_bool(value, &on))
         return fail(c, "'%s': expected on or off", arg);
-      return apply(c, on ? io->key : io->off, NULL);
+      return apply(&sub, on ? io->key : io->off, NULL);
     }
-    return apply(c, io->key, value);
+    return apply(&sub, io->key, value);
+  }
+  if (*c->where) {
+    arg_ctx sub = *c;
+    sub.why = "unknown key, ignored";
+    return apply(&sub, K_NOTE, NULL);
   }
   return fail(c, "unknown option '%.*s' (try 'zrcube --help')", (int)len,
               arg);
@@ -924,17 +1427,103 @@ static int has_suffix(const char *s, const char *suffix) {
   return n >= m && !strcasecmp(s + n - m, suffix);
 }
 
+/* POV-Ray reads INI files nested up to ten deep (user's guide 2.2.8.2). */
+#define MAX_INI_DEPTH 10
+
 /*
- * Reads an INI file: one option per line (Key=Value or switches), ';'
- * starts a comment.  As POV-Ray does without a [section] request, only
- * the lines before the first [section] header are read.
+ * The file an INI name refers to: the name as given, with ".ini" added
+ * when it has no extension, in the working directory or else in one of
+ * the library paths given so far (POV-Ray for Unix's own povray.ini
+ * lists its ini folder there).  malloc'ed, or NULL when none exists.
  */
-static int parse_ini_file(arg_ctx *c, const char *path) {
-  FILE *f = fopen(path, "r");
-  if (!f)
-    return fail(c, "cannot open '%s': %s", path, strerror(errno));
+static char *find_ini(const zr_cli_options *o, const char *name) {
+  const char *slash = strrchr(name, '/');
+  const char *dot = strrchr(slash ? slash : name, '.');
+  size_t n = strlen(name) + 5;
+  char *file = malloc(n);
+  if (!file)
+    return NULL;
+  snprintf(file, n, "%s%s", name, dot ? "" : ".ini");
+  struct stat st;
+  if (stat(file, &st) == 0 && S_ISREG(st.st_mode))
+    return file;
+  if (name[0] != '/')
+    for (size_t i = 0; i < o->n_include_paths; i++) {
+      size_t m = strlen(o->include_paths[i]) + strlen(file) + 2;
+      char *there = malloc(m);
+      if (!there)
+        break;
+      snprintf(there, m, "%s/%s", o->include_paths[i], file);
+      if (stat(there, &st) == 0 && S_ISREG(st.st_mode)) {
+        free(file);
+        return there;
+      }
+      free(there);
+    }
+  free(file);
+  return NULL;
+}
+
+/* Splits "file.ini[Section]" into the name and the section; *section
+   is NULL without brackets.  name is modified in place. */
+static void split_section(char *name, char **section) {
+  *section = NULL;
+  size_t n = strlen(name);
+  char *open = strchr(name, '[');
+  if (open && n > 0 && name[n - 1] == ']') {
+    name[n - 1] = '\0';
+    *open = '\0';
+    *section = open + 1;
+  }
+}
+
+/* The same label, ignoring case and the blanks around it. */
+static int same_label(const char *a, const char *b) {
+  while (isspace((unsigned char)*a))
+    a++;
+  while (isspace((unsigned char)*b))
+    b++;
+  size_t na = strlen(a), nb = strlen(b);
+  while (na > 0 && isspace((unsigned char)a[na - 1]))
+    na--;
+  while (nb > 0 && isspace((unsigned char)b[nb - 1]))
+    nb--;
+  return na == nb && strncasecmp(a, b, na) == 0;
+}
+
+static int parse_ini_line(arg_ctx *c, char *s);
+
+/*
+ * Reads an INI file (user's guide 2.2.8.2): one option per line
+ * (Key=Value, or switches separated by blanks, or the name of another
+ * INI file), ';' starts a comment.  Without a section, only the lines
+ * before the first [label] are read; with one, only the lines after
+ * that label up to the next label.  Labels ignore case.
+ */
+static int parse_ini_file(arg_ctx *c, const char *spec) {
+  char *name = strdup(spec);
+  if (!name)
+    return fail(c, "out of memory");
+  char *section;
+  split_section(name, &section);
+  if (c->depth >= MAX_INI_DEPTH) {
+    int rc = fail(c, "'%s': INI files nested more than %d deep", name,
+                  MAX_INI_DEPTH);
+    free(name);
+    return rc;
+  }
+  char *path = find_ini(c->o, name);
+  FILE *f = path ? fopen(path, "r") : NULL;
+  if (!f) {
+    int rc = fail(c, "cannot open INI file '%s': %s", name,
+                  strerror(path ? errno : ENOENT));
+    free(path);
+    free(name);
+    return rc;
+  }
+  c->o->ini_read++;
   char line[4096];
-  int lineno = 0, rc = 0;
+  int lineno = 0, rc = 0, reading = section == NULL, found = !section;
   while (rc == 0 && fgets(line, sizeof line, f)) {
     lineno++;
     char *semi = strchr(line, ';');
@@ -948,8 +1537,16 @@ static int parse_ini_file(arg_ctx *c, const char *path) {
       s[--n] = '\0';
     if (!*s)
       continue;
-    if (*s == '[')
-      break;
+    if (*s == '[') {
+      char *close = strchr(s, ']');
+      if (close)
+        *close = '\0';
+      reading = section && same_label(s + 1, section);
+      found |= reading;
+      continue;
+    }
+    if (!reading)
+      continue;
     size_t where_size = strlen(path) + 32;
     char *where = malloc(where_size);
     if (!where) {
@@ -960,19 +1557,15 @@ static int parse_ini_file(arg_ctx *c, const char *path) {
     arg_ctx sub = *c;
     sub.where = where;
     sub.what = s;
-    if (*s == '+' || *s == '-') {
-      /* A line may hold several switches separated by blanks. */
-      for (char *tok = strtok(s, " \t"); tok && rc == 0;
-           tok = strtok(NULL, " \t")) {
-        sub.what = tok;
-        rc = parse_word(&sub, tok, NULL) < 0 ? -1 : 0;
-      }
-    } else {
-      rc = parse_word(&sub, s, NULL) < 0 ? -1 : 0;
-    }
+    sub.depth = c->depth + 1;
+    rc = parse_ini_line(&sub, s);
     free(where);
   }
   fclose(f);
+  if (rc == 0 && !found)
+    rc = fail(c, "INI file '%s' has no section [%s]", path, section);
+  free(path);
+  free(name);
   return rc;
 }
 
@@ -987,6 +1580,46 @@ static int is_ini_option(const char *word) {
   return p > word && *p == '=';
 }
 
+/* One line of an INI file, blanks trimmed. */
+static int parse_ini_line(arg_ctx *c, char *s) {
+  if (*s == '+' || *s == '-') {
+    /* A line may hold several switches separated by blanks. */
+    for (char *tok = strtok(s, " \t"); tok; tok = strtok(NULL, " \t")) {
+      c->what = tok;
+      if (parse_word(c, tok, NULL) < 0)
+        return -1;
+    }
+    return 0;
+  }
+  if (is_ini_option(s))
+    return parse_ini_option(c, s);
+  /* A name alone on its line is another INI file. */
+  return parse_ini_file(c, s);
+}
+
+/* A bare word of the command line names an INI file when it ends in
+   .ini or .ini[Section], or has no extension and NAME.ini exists (as
+   "povray res[Med]" or "povray myopts"); otherwise it is the scene. */
+static int names_ini(const zr_cli_options *o, const char *word) {
+  char *name = strdup(word);
+  if (!name)
+    return 0;
+  char *section;
+  split_section(name, &section);
+  int yes = has_suffix(name, ".ini");
+  if (!yes) {
+    const char *slash = strrchr(name, '/');
+    struct stat st;
+    if (!strchr(slash ? slash : name, '.') && stat(name, &st) != 0) {
+      char *found = find_ini(o, name);
+      yes = found != NULL;
+      free(found);
+    }
+  }
+  free(name);
+  return yes;
+}
+
 /* One word of the command line; returns extra words used, or -1. */
 static int parse_word(arg_ctx *c, const char *word, const char *next) {
   c->what = word;
@@ -996,16 +1629,20 @@ static int parse_word(arg_ctx *c, const char *word, const char *next) {
     return parse_switch(c, word);
   if (is_ini_option(word))
     return parse_ini_option(c, word);
-  if (has_suffix(word, ".ini"))
+  if (names_ini(c->o, word))
     return parse_ini_file(c, word);
   return set_input(c, word);
 }
 
 int zr__cli_parse(zr_cli_options *o, int argc, char **argv, char *err,
                   size_t err_size) {
-  arg_ctx c = {o, err, err_size, "", ""};
+  arg_ctx c = {o, err, err_size, "", "", NULL, 0};
   if (err_size)
     err[0] = '\0';
+  /* "+H alone is a help switch if it is the only switch on the command
+     line" (reference 3.2.7.5). */
+  if (argc == 2 && (!strcasecmp(argv[1], "+H") || !strcasecmp(argv[1], "-H")))
+    return apply(&c, K_HELP, NULL);
   int only_files = 0;
   for (int i = 1; i < argc; i++) {
     if (only_files) {
@@ -1102,7 +1739,7 @@ static int same_file(const char *a, const char *b) {
 int zr__cli_output_path(const zr_cli_options *o, char **path,
                         zr_image_format *format, char *err,
                         size_t err_size) {
-  arg_ctx c = {(zr_cli_options *)o, err, err_size, "", ""};
+  arg_ctx c = {(zr_cli_options *)o, err, err_size, "", "", NULL, 0};
   *path = NULL;
   if (!o->input)
     return fail(&c, "no scene file given (try 'zrcube --help')");
@@ -1160,7 +1797,7 @@ int zr__cli_output_path(const zr_cli_options *o, char **path,
 
 int zr__cli_check_size(const zr_cli_options *o, char *err,
                        size_t err_size) {
-  arg_ctx c = {(zr_cli_options *)o, err, err_size, "", ""};
+  arg_ctx c = {(zr_cli_options *)o, err, err_size, "", "", NULL, 0};
   unsigned long long w = (unsigned long long)o->params.width;
   unsigned long long h = (unsigned long long)o->params.height;
   if (w * h > (unsigned long long)ZR_IMAGE_MAX_PIXELS)
@@ -1226,6 +1863,28 @@ const char *zr__cli_usage(void) {
       "                               write below the working directory),\n"
       "                               read-only or none\n"
       "  +D, -D, +P, -P               accepted and ignored (no display)\n"
+      "  +K<c>, Clock=C               the clock of a still image\n"
+      "  +KFF<n>, +KFI<n>             animate frames initial..final, each\n"
+      "                               to a numbered image (out01.png..)\n"
+      "  +KI<c>, +KF<c>, +KC          the clock range, cyclic animation\n"
+      "  +SF<n>, +EF<n>, +STP<n>      render a subset of the frames\n"
+      "  --frames-per-rank[=yes|no|auto]  whole frames to MPI ranks\n"
+      "  +SR, +ER, +SC, +EC           render only rows/columns (1-based or\n"
+      "                               fractions); the rest is black\n"
+      "  +C, -C                       continue an interrupted render from\n"
+      "                               its state file (IMAGE.zrstate)\n"
+      "  --state-interval=SECONDS     how often the state file is written\n"
+      "  +O-                          the image on standard output\n"
+      "  Declare=NAME=VALUE           a float the scene sees, declared\n"
+      "  +HI<file>, +MV<v>            header include, language version\n"
+      "  +GD +GF +GR +GS +GW +GA[file]  text streams on (+) or off (-) the\n"
+      "                               console, copied to FILE\n"
+      "  +Q<n>, Quality=N             0..11 (default 9): below 9 no media\n"
+      "                               or radiosity, 8 no reflection, 6 no\n"
+      "                               refraction, 5 hard area shadows, 4\n"
+      "                               no shadows\n"
+      "  FILE.ini[Section]            read options from an INI file\n"
+      "                               (povray.ini is read first: $POVINI)\n"
       "\n"
       "Radiosity (hierarchical, on the exact surfaces; any of these turns\n"
       "it on):\n"
@@ -1265,4 +1924,179 @@ const char *zr__cli_usage(void) {
       "Exit status: 0 on success, 1 when the scene cannot be read, parsed\n"
       "or rendered or the image cannot be written, 2 for a command line\n"
       "error.  See zrcube(1).\n";
+}
+
+/* ---- animation frames, partial renders, povray.ini ---------------- */
+
+/* A subset frame as given (+SF, +EF): a fraction of the frames when
+   below 1, else a frame number.  The fraction counts frames from the
+   initial one: with Initial_Frame=1 and 10 frames, 0.5 is frame 5 and
+   0.7 frame 7, as povray 3.7.0 renders them (measured; for other
+   initial frames povray clamps the result to the initial frame, which
+   the manual's "fraction of the whole animation" does not say, so
+   zrcube keeps the proportion). */
+static long subset_frame(double v, long first, long count) {
+  if (v < 1)
+    return first - 1 + (long)floor(v * (double)count);
+  return (long)v;
+}
+
+int zr__cli_frames(const zr_cli_options *o, zr_cli_frame **frames,
+                   size_t *n, int *digits, char *err, size_t err_size) {
+  arg_ctx c = {(zr_cli_options *)o, err, err_size, "", "", NULL, 0};
+  *frames = NULL;
+  *n = 0;
+  *digits = 0;
+  zr_parse_options base;
+  zr_parse_options_init(&base);
+  if (o->lang_version > 0)
+    base.version = o->lang_version;
+  if (!o->initial_frame_given && !o->final_frame_given) {
+    /* A still: +K sets the clock and clock_on, the frame values stay 0
+       (measured with povray 3.7.0: +K0.5 gives clock_on 1). */
+    *frames = malloc(sizeof **frames);
+    if (!*frames)
+      return fail(&c, "out of memory");
+    (*frames)[0].number = 0;
+    (*frames)[0].clock = base;
+    if (o->clock_given) {
+      (*frames)[0].clock.clock = o->clock;
+      (*frames)[0].clock.clock_on = 1;
+    }
+    *n = 1;
+    return 0;
+  }
+  /* The internal loop (reference 3.2.1.2).  Measured with povray 3.7.0:
+     a negative initial frame counts as 0; a final frame before the
+     initial one (or none) is the initial one; +KC counts one frame more
+     for the clock (final_frame reads final + 1, clock_delta is the
+     clock range over that many steps) but renders the same frames. */
+  long first = o->initial_frame < 0 ? 0 : o->initial_frame;
+  long last = o->final_frame_given ? o->final_frame : first;
+  if (last < first)
+    last = first;
+  long clock_last = o->cyclic ? last + 1 : last;
+  long count = last - first + 1;
+  double delta = clock_last > first
+                     ? (o->final_clock - o->initial_clock) /
+                           (double)(clock_last - first)
+                     : 0; /* povray 3.7.0 gives NaN: one frame has no step */
+  long from = first, to = last;
+  if (o->subset_start >= 0)
+    from = subset_frame(o->subset_start, first, count);
+  if (o->subset_end >= 0)
+    to = subset_frame(o->subset_end, first, count);
+  if (from < first)
+    from = first;
+  if (from > last)
+    return fail(&c, "the subset starts at frame %ld, after the final "
+                    "frame %ld", from, last);
+  if (to > last)
+    to = last;
+  if (to < from)
+    to = from; /* povray 3.7.0 renders the start frame alone */
+  size_t total = (size_t)((to - from) / o->frame_step + 1);
+  *frames = calloc(total, sizeof **frames);
+  if (!*frames)
+    return fail(&c, "out of memory");
+  for (size_t i = 0; i < total; i++) {
+    long f = from + (long)i * o->frame_step;
+    zr_cli_frame *fr = &(*frames)[i];
+    fr->number = f;
+    fr->clock = base;
+    fr->clock.clock_on = 1;
+    fr->clock.frame_number = (int)f;
+    fr->clock.initial_frame = (int)first;
+    fr->clock.final_frame = (int)clock_last;
+    fr->clock.initial_clock = o->initial_clock;
+    fr->clock.final_clock = o->final_clock;
+    fr->clock.clock_delta = delta;
+    fr->clock.clock = o->initial_clock + (double)(f - first) * delta;
+  }
+  *n = total;
+  /* The frame number's width is the final frame's: +KFF10 writes
+     out01.png .. out10.png, +KFF100 out001.png .. (reference 3.2.1.2). */
+  int d = 1;
+  for (long v = last; v >= 10; v /= 10)
+    d++;
+  *digits = d;
+  return 0;
+}
+
+char *zr__cli_frame_name(const char *path, long number, int digits) {
+  const char *slash = strrchr(path, '/');
+  const char *dot = strrchr(slash ? slash + 1 : path, '.');
+  size_t stem = dot ? (size_t)(dot - path) : strlen(path);
+  size_t n = strlen(path) + (size_t)digits + 24;
+  char *name = malloc(n);
+  if (name)
+    snprintf(name, n, "%.*s%0*ld%s", (int)stem, path, digits, number,
+             dot ? dot : "");
+  return name;
+}
+
+/* One end of the window on a side of size pixels: a fraction is a
+   boundary at floor(v * size); a number n is pixel n (1-based).
+   Measured with povray 3.7.0 on 10 rows: +SR0.25 +ER0.55 and +SR3
+   +ER5 both render rows 3 to 5. */
+static int window_start(double v, int size) {
+  return v < 1 ? (int)floor(v * size) : (int)v - 1;
+}
+static int window_end(double v, int size) {
+  return v < 1 ? (int)floor(v * size) : (int)v;
+}
+
+int zr__cli_window(const zr_cli_options *o, int *row0, int *row1,
+                   int *col0, int *col1, char *err, size_t err_size) {
+  arg_ctx c = {(zr_cli_options *)o, err, err_size, "", "", NULL, 0};
+  int w = o->params.width, h = o->params.height;
+  *row0 = o->start_row >= 0 ? window_start(o->start_row, h) : 0;
+  *row1 = o->end_row >= 0 ? window_end(o->end_row, h) : h;
+  *col0 = o->start_col >= 0 ? window_start(o->start_col, w) : 0;
+  *col1 = o->end_col >= 0 ? window_end(o->end_col, w) : w;
+  if (*row1 > h)
+    *row1 = h;
+  if (*col1 > w)
+    *col1 = w;
+  if (*row0 >= h || *col0 >= w)
+    return fail(&c, "the partial render starts outside the %dx%d image "
+                    "(+SR/+SC are 1-based, or fractions below 1)", w, h);
+  if (*row1 <= *row0 || *col1 <= *col0)
+    return fail(&c, "the partial render holds no pixel: rows %d to %d, "
+                    "columns %d to %d", *row0 + 1, *row1, *col0 + 1,
+                *col1);
+  return 0;
+}
+
+int zr__cli_read_povray_ini(zr_cli_options *o, char *err, size_t err_size) {
+  arg_ctx c = {o, err, err_size, "", "", NULL, 0};
+  const char *env = getenv("POVINI");
+  if (env && !*env)
+    return 0;
+  if (env) {
+    /* POV-Ray for Unix falls through to the next place when $POVINI
+       names no file it can read. */
+    struct stat st;
+    if (stat(env, &st) == 0 && S_ISREG(st.st_mode))
+      return parse_ini_file(&c, env);
+  }
+  const char *home = getenv("HOME");
+  char user[4096], rc_file[4096];
+  snprintf(user, sizeof user, "%s/.povray/3.7/povray.ini",
+           home ? home : "");
+  snprintf(rc_file, sizeof rc_file, "%s/.povrayrc", home ? home : "");
+  const char *places[] = {"povray.ini", home ? user : NULL,
+                          ZR_POVRAY_SYSCONF_INI, home ? rc_file : NULL};
+  for (size_t i = 0; i < sizeof places / sizeof *places; i++) {
+    struct stat st;
+    if (places[i] && stat(places[i], &st) == 0 && S_ISREG(st.st_mode)) {
+      /* An explicit path: a file named "povray.ini" is not searched for
+         in the library paths. */
+      char spec[4200];
+      snprintf(spec, sizeof spec, "%s%s",
+               strchr(places[i], '/') ? "" : "./", places[i]);
+      return parse_ini_file(&c, spec);
+    }
+  }
+  return 0;
 }

@@ -18,6 +18,16 @@
 #define ZR_CLI_MAX_THREADS 512
 #define ZR_CLI_MAX_AA_DEPTH 9
 
+/* The text streams of POV-Ray's +G options, in this order. */
+enum {
+  ZR_CLI_STREAM_DEBUG,
+  ZR_CLI_STREAM_FATAL,
+  ZR_CLI_STREAM_RENDER,
+  ZR_CLI_STREAM_STATISTICS,
+  ZR_CLI_STREAM_WARNING,
+  ZR_CLI_STREAMS
+};
+
 typedef struct zr_cli_options {
   char *input;            /* scene file, NULL until given */
   char *output;           /* +O as given, NULL for the default name */
@@ -62,7 +72,83 @@ typedef struct zr_cli_options {
   int quality;
   char *gi_save;          /* --gi-save=FILE */
   char *gi_load;          /* --gi-load=FILE */
+  /* Animation (reference 3.2.1): +K, +KFI, +KFF, +KI, +KF, +KC, +SF,
+     +EF, +STP and their INI keys; zr__cli_frames() turns them into the
+     frames to render. */
+  int clock_given;        /* +K / Clock= */
+  double clock;
+  int initial_frame_given, final_frame_given;
+  long initial_frame;     /* default 1 */
+  long final_frame;       /* default 1 */
+  double initial_clock;   /* default 0 */
+  double final_clock;     /* default 1 */
+  int cyclic;             /* +KC */
+  double subset_start;    /* +SF as given; < 0 when not given */
+  double subset_end;      /* +EF as given; < 0 when not given */
+  long frame_step;        /* +STP, default 1 */
+  int frames_per_rank;    /* --frames-per-rank: -1 auto, 0 no, 1 yes */
+  /* Partial renders (3.2.2.3): as given, a fraction when below 1, a
+     1-based pixel number otherwise; negative when not given. */
+  double start_row, end_row, start_col, end_col;
+  int continue_trace;     /* +C */
+  double state_interval;  /* --state-interval seconds, default 10 */
+  int to_stdout;          /* +O- */
+  /* Declare=NAME=VALUE, in order. */
+  char **declare_names;
+  double *declare_values;
+  size_t n_declares;
+  double lang_version;    /* +MV / Version=; 0 when not given */
+  /* Text streams (3.2.6): debug, fatal, render, statistics, warning:
+     shown on the console (1, the default) or not, and copied to a file
+     (NULL: none). */
+  int stream_console[ZR_CLI_STREAMS];
+  char *stream_file[ZR_CLI_STREAMS];
+  char *header_include;   /* +HI / Include_Header= */
+  /* INI keys zrcube reads and does not act on, each warned about once
+     (file:line: key: why) by the caller after parsing. */
+  char **notes;
+  size_t n_notes;
+  int ini_read;           /* how many INI files were read */
 } zr_cli_options;
+
+/* One frame of an animation: its number and the scene's clock values. */
+typedef struct zr_cli_frame {
+  long number;
+  zr_parse_options clock;
+} zr_cli_frame;
+
+/*
+ * The frames the options ask for (POV-Ray's internal animation loop,
+ * reference 3.2.1.2-3.2.1.4), in order, into a malloc'ed *frames; *n is
+ * 1 for a still image (frame_number 0, clock from +K or 0).  *digits is
+ * the width of the frame number in output names (the digits of the
+ * final frame), 0 for a still.  Returns -1 with a message in err for a
+ * subset outside the animation.
+ */
+int zr__cli_frames(const zr_cli_options *o, zr_cli_frame **frames,
+                   size_t *n, int *digits, char *err, size_t err_size);
+
+/* The image name of frame number (digits wide) for the still's name
+   path: "out.png" -> "out05.png"; malloc'ed. */
+char *zr__cli_frame_name(const char *path, long number, int digits);
+
+/*
+ * The render window of a partial render (+SR +ER +SC +EC) in pixels,
+ * 0-based, end exclusive; the whole image when none was given.  Returns
+ * -1 with a message in err when the window is empty or outside.
+ */
+int zr__cli_window(const zr_cli_options *o, int *row0, int *row1,
+                   int *col0, int *col1, char *err, size_t err_size);
+
+/*
+ * Reads the first povray.ini POV-Ray for Unix would read, before the
+ * command line: $POVINI, else ./povray.ini, else
+ * $HOME/.povray/3.7/povray.ini, else the system's
+ * (/etc/povray/3.7/povray.ini), else $HOME/.povrayrc.  POVINI set but
+ * empty reads none (a zrcube extension, used by the tests).  Returns 0,
+ * or -1 with a message in err.
+ */
+int zr__cli_read_povray_ini(zr_cli_options *o, char *err, size_t err_size);
 
 /*
  * Prepares o: zeroes it and copies the render defaults in, with the

@@ -32,6 +32,7 @@
 #include "config.h"
 
 #include <errno.h>
+#include <stdarg.h>
 #include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -40,18 +41,51 @@
 #include <unistd.h>
 
 #include "options.h"
+#include "state.h"
 #include "par/bundle.h"
 #include "par/par.h"
 #include "zrcube.h"
 
 enum { EXIT_SCENE = 1, EXIT_USAGE = 2 };
 
-/* What the diagnostics callback needs: who prints, and what it printed. */
+/* What the diagnostics callback needs: who prints, and what it printed;
+   and POV-Ray's text streams (+GD +GF +GR +GS +GW, reference 3.2.7):
+   each shown on the console or not, and copied to a file or not. */
 typedef struct diag_state {
   int rank;
   int quiet;
   unsigned errors_printed;
+  const int *console;  /* ZR_CLI_STREAMS flags */
+  FILE **files;        /* ZR_CLI_STREAMS files, NULL: none */
+  int last_stream;     /* where a note goes: with its message */
 } diag_state;
+
+/* Text of one stream: to the console unless turned off, and to the
+   stream's file.  Warnings also keep --quiet's meaning. */
+static void emit(diag_state *st, int stream, const char *text) {
+  st->last_stream = stream;
+  int console = !st->console || st->console[stream];
+  if (stream == ZR_CLI_STREAM_WARNING && st->quiet)
+    console = 0;
+  if (console)
+    fputs(text, stderr);
+  if (st->files && st->files[stream]) {
+    fputs(text, st->files[stream]);
+    fflush(st->files[stream]);
+  }
+}
+
+static void say(diag_state *st, int stream, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+
+static void say(diag_state *st, int stream, const char *fmt, ...) {
+  char text[2048];
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(text, sizeof text, fmt, ap);
+  va_end(ap);
+  emit(st, stream, text);
+}
 
 /*
  * Rank 0 prints everything the library says (warnings and #debug output
@@ -68,9 +102,11 @@ static void print_diag(const zr_diag *d, void *user) {
     }
     return;
   }
-  if (st->quiet && d->level == ZR_DIAG_WARNING)
-    return;
-  fputs(d->text, stderr);
+  int stream = d->level == ZR_DIAG_ERROR     ? ZR_CLI_STREAM_FATAL
+               : d->level == ZR_DIAG_WARNING ? ZR_CLI_STREAM_WARNING
+               : d->level == ZR_DIAG_DEBUG   ? ZR_CLI_STREAM_DEBUG
+                                             : st->last_stream;
+  emit(st, stream, d->text);
   if (d->level == ZR_DIAG_ERROR)
     st->errors_printed++;
 }
@@ -83,6 +119,8 @@ typedef struct progress_state {
 static void print_progress(size_t done, size_t total, void *user) {
   progress_state *p = user;
   int percent = total ? (int)(100 * done / total) : 100;
+  if (percent > 100)
+    percent = 100; /* the count of rows to do is an estimate */
   if (percent == p->last_percent)
     return;
   p->last_percent = percent;
@@ -194,10 +232,24 @@ static int check_outputs(const zr_cli_options *o, const char *image) {
 }
 
 typedef struct run {
-  zr_par *par;
+  zr_par *par;   /* the ranks rendering this frame: world, or solo */
+  zr_par *world; /* every rank of the job */
+  zr_par *solo;  /* this rank alone, for whole frames per rank */
   int rank;
   zr_cli_options opts;
-  char *output_path;
+  char *still_path;  /* the image name before frame numbers */
+  char *output_path; /* this frame's image, NULL for +O- */
+  char *state_path;  /* this frame's state file, NULL: none kept */
+  zr_cli_frame *frames;
+  size_t n_frames;
+  int digits;        /* of frame numbers in names; 0 for a still */
+  const zr_cli_frame *frame;
+  int row0, row1, col0, col1; /* the window of a partial render */
+  uint64_t fingerprint;       /* of the scene's files and the options */
+  double last_state_write;
+  double state_write_seconds; /* how long the last one took */
+  int state_failed;           /* a state write failed (warned once) */
+  FILE *stream_files[ZR_CLI_STREAMS];
   zr_image_format format;
   int threads;
   zr_context *ctx;
@@ -222,7 +274,16 @@ static int read_command_line(run *r, int argc, char **argv) {
   zr_render_params_init(&defaults);
   zr__cli_init(&r->opts, &defaults);
   char err[1024];
-  int rc = zr__cli_parse(&r->opts, argc, argv, err, sizeof err);
+  /* POV-Ray for Unix reads its povray.ini before the command line. */
+  int rc = zr__cli_read_povray_ini(&r->opts, err, sizeof err);
+  if (rc == 0)
+    rc = zr__cli_parse(&r->opts, argc, argv, err, sizeof err);
+  if (rc == 0)
+    rc = zr__cli_frames(&r->opts, &r->frames, &r->n_frames, &r->digits,
+                        err, sizeof err);
+  if (rc == 0)
+    rc = zr__cli_window(&r->opts, &r->row0, &r->row1, &r->col0, &r->col1,
+                        err, sizeof err);
   zr_status agreed = zr__par_agree(r->par, rc == 0 ? ZR_OK : ZR_EINVAL);
   if (rc != 0 && r->rank == 0)
     fprintf(stderr, "%s\n", err);
@@ -242,16 +303,29 @@ static int read_command_line(run *r, int argc, char **argv) {
     }
     return EXIT_SUCCESS;
   }
+  if (r->rank == 0)
+    for (size_t i = 0; i < r->opts.n_notes; i++)
+      if (!r->opts.quiet)
+        fprintf(stderr, "zrcube: warning: %s\n", r->opts.notes[i]);
   /* The scene and the image name matter on rank 0 only. */
   int usage = 0, unusable = 0;
   if (r->rank == 0) {
-    if (!r->opts.input) {
+    if (r->opts.to_stdout && r->opts.continue_trace) {
+      fprintf(stderr, "zrcube: +C continues a render written to a file; "
+                      "it cannot be used with +O-\n");
+      usage = 1;
+    } else if (r->opts.continue_trace && !r->opts.write_output) {
+      fprintf(stderr, "zrcube: +C continues a render written to a file; "
+                      "it cannot be used with -F (reference 3.2.2.5)\n");
+      usage = 1;
+    } else if (!r->opts.input) {
       fprintf(stderr, "zrcube: no scene file given (try 'zrcube "
                       "--help')\n");
       usage = 1;
     } else if (find_scene(&r->opts) < 0) {
       unusable = 1;
-    } else if (zr__cli_output_path(&r->opts, &r->output_path, &r->format,
+    } else if (!r->opts.to_stdout &&
+               zr__cli_output_path(&r->opts, &r->still_path, &r->format,
                                    err, sizeof err) < 0) {
       fprintf(stderr, "%s\n", err);
       usage = 1;
@@ -259,9 +333,13 @@ static int read_command_line(run *r, int argc, char **argv) {
                zr__cli_check_size(&r->opts, err, sizeof err) < 0) {
       fprintf(stderr, "%s\n", err);
       usage = 1;
-    } else if (check_outputs(&r->opts, r->output_path)) {
+    } else if (!r->opts.to_stdout &&
+               check_outputs(&r->opts, r->still_path)) {
       unusable = 1;
     }
+    if (r->opts.to_stdout)
+      r->format = r->opts.format == ZR_FORMAT_AUTO ? ZR_FORMAT_PNG8
+                                                   : r->opts.format;
   }
   zr_status s = zr__par_agree(r->par, usage      ? ZR_EINVAL
                                       : unusable ? ZR_ENOTFOUND
@@ -272,12 +350,19 @@ static int read_command_line(run *r, int argc, char **argv) {
     return EXIT_SCENE;
   /* Rank 0 may have found "scene" as "scene.pov": the other ranks must
      ask their bundle for the name rank 0 parsed. */
-  if (zr__par_share_string(r->par, &r->opts.input) != ZR_OK) {
+  /* Whole frames may be rendered on other ranks, which then need the
+     image name too. */
+  if (zr__par_share_string(r->par, &r->opts.input) != ZR_OK ||
+      zr__par_share_string(r->par, &r->still_path) != ZR_OK) {
     if (r->rank == 0)
       fprintf(stderr, "zrcube: cannot send the scene name to the other "
                       "ranks\n");
     return EXIT_SCENE;
   }
+  if (r->rank != 0 && r->still_path)
+    r->format = r->opts.format != ZR_FORMAT_AUTO
+                    ? r->opts.format
+                    : zr_image_format_from_name(r->still_path);
   r->threads = zr__par_threads(r->par, r->opts.threads);
   /* mpirun binds each rank to one core unless told otherwise, and then
      extra threads only take turns on it. */
@@ -336,6 +421,14 @@ static zr_status make_context(run *r) {
     zr_context_set_memory_limit(r->ctx, r->opts.memory_limit);
   s = zr_context_set_render_size(r->ctx, r->opts.params.width,
                                  r->opts.params.height);
+  /* The frame's clock and +MV (zr_parse_options), Declare= floats. */
+  if (s == ZR_OK)
+    s = zr_context_set_parse_options(r->ctx, &r->frame->clock);
+  if (s == ZR_OK && r->opts.header_include)
+    s = zr_context_set_header_include(r->ctx, r->opts.header_include);
+  for (size_t i = 0; i < r->opts.n_declares && s == ZR_OK; i++)
+    s = zr_context_declare(r->ctx, r->opts.declare_names[i],
+                           r->opts.declare_values[i]);
   for (size_t i = 0; i < r->opts.n_include_paths && s == ZR_OK; i++)
     s = zr_context_add_include_path(r->ctx, r->opts.include_paths[i]);
   /* POV-Ray's own include files come after the user's paths.  Every
@@ -389,6 +482,36 @@ static int read_scene(run *r) {
                       "rank\n");
     return EXIT_SCENE;
   }
+  /* A fingerprint of what the pixels depend on, for the state file: the
+     files rank 0 read and the options that change pixels. */
+  uint64_t h = ZR_STATE_HASH_START;
+  for (size_t i = 0; i < r->bundle.count; i++) {
+    const zr_bundle_file *f = &r->bundle.files[i];
+    h = zr__state_hash(h, f->path, strlen(f->path) + 1);
+    h = zr__state_hash(h, &f->size, sizeof f->size);
+    h = zr__state_hash(h, f->bytes, f->size);
+  }
+  const zr_render_params *p = &r->opts.params;
+  double reals[] = {p->aa_threshold, p->jitter_amount,
+                    r->frame->clock.clock, r->frame->clock.clock_delta,
+                    r->frame->clock.initial_clock,
+                    r->frame->clock.final_clock, r->frame->clock.version};
+  int ints[] = {p->width, p->height, p->antialias, p->aa_depth, p->jitter,
+                p->aa_method, p->quality,
+                p->radiosity_only, r->opts.quality, (int)r->opts.gi,
+                (int)zr__cli_gi_asked(&r->opts), r->opts.radiosity,
+                (int)r->opts.rad_given, r->frame->clock.frame_number,
+                r->frame->clock.clock_on, r->frame->clock.initial_frame,
+                r->frame->clock.final_frame, r->row0, r->row1, r->col0,
+                r->col1};
+  h = zr__state_hash(h, reals, sizeof reals);
+  h = zr__state_hash(h, ints, sizeof ints);
+  for (size_t i = 0; i < r->opts.n_declares; i++) {
+    h = zr__state_hash(h, r->opts.declare_names[i],
+                       strlen(r->opts.declare_names[i]) + 1);
+    h = zr__state_hash(h, &r->opts.declare_values[i], sizeof(double));
+  }
+  r->fingerprint = h;
   /* The files are in the scene now; the copies are no longer needed. */
   zr__bundle_free(&r->bundle);
   return -1;
@@ -439,12 +562,37 @@ static int solve_radiosity(run *r) {
   zr_radiosity_params params;
   zr__cli_radiosity_params(&r->opts, r->scene, &params);
   params.threads = r->threads; /* +WT: the same solution for any count */
+  /* The solution is saved beside the state file, so +C does not solve
+     again (state.h: path + ".rad"). */
+  char *state_rad = NULL;
+  if (!r->opts.rad_load && r->state_path) {
+    size_t n = strlen(r->state_path) + 5;
+    state_rad = malloc(n);
+    if (state_rad)
+      snprintf(state_rad, n, "%s.rad", r->state_path);
+  }
+  const char *load = r->opts.rad_load;
+  int resumed = 0;
+  if (state_rad && r->opts.continue_trace) {
+    struct stat st;
+    int there = r->rank == 0 && stat(state_rad, &st) == 0 &&
+                stat(r->state_path, &st) == 0;
+    resumed = zr__par_agree(r->par, there ? ZR_EINVAL : ZR_OK) != ZR_OK;
+    if (resumed)
+      load = state_rad;
+  }
   double start = zr__par_now();
   zr_status s;
-  if (r->opts.rad_load)
-    s = zr_radiosity_load(r->ctx, r->scene, r->opts.rad_load, &r->rad);
+  if (load)
+    s = zr_radiosity_load(r->ctx, r->scene, load, &r->rad);
   else
     s = zr_radiosity_solve(r->ctx, r->scene, &params, &r->rad);
+  if (r->rank == 0 && state_rad && !resumed && s == ZR_OK &&
+      zr_radiosity_save(r->ctx, r->rad, state_rad) != ZR_OK)
+    say(&r->diag, ZR_CLI_STREAM_WARNING, "zrcube: warning: cannot save "
+        "the radiosity solution beside the state file ('%s'); +C would "
+        "solve it again\n", state_rad);
+  free(state_rad);
   r->radiosity_seconds = zr__par_now() - start;
   if (s != ZR_OK && r->rank == 0 && !*zr_context_last_error(r->ctx))
     fprintf(stderr, "zrcube: radiosity failed: %s\n", zr_status_str(s));
@@ -487,6 +635,24 @@ static int build_cache(run *r, int sky_only) {
                      : r->opts.gi_load ? r->opts.gi_load : gp.load_file;
   const char *save = sky_only ? NULL
                      : r->opts.gi_save ? r->opts.gi_save : gp.save_file;
+  /* The cache is saved beside the state file, so +C does not redo the
+     pretrace (state.h: path + ".gi"). */
+  char *state_gi = NULL;
+  if (!sky_only && !load && r->state_path) {
+    size_t n = strlen(r->state_path) + 4;
+    state_gi = malloc(n);
+    if (state_gi)
+      snprintf(state_gi, n, "%s.gi", r->state_path);
+  }
+  int resumed = 0;
+  if (state_gi && r->opts.continue_trace) {
+    struct stat st;
+    int there = r->rank == 0 && stat(state_gi, &st) == 0 &&
+                stat(r->state_path, &st) == 0;
+    resumed = zr__par_agree(r->par, there ? ZR_EINVAL : ZR_OK) != ZR_OK;
+    if (resumed)
+      load = state_gi;
+  }
   double start = zr__par_now();
   zr_status s = load ? zr_gi_cache_load(r->ctx, r->scene, &gp, load, &r->gi)
                      : zr_gi_cache_new(r->ctx, r->scene, &gp, &r->gi);
@@ -518,6 +684,12 @@ static int build_cache(run *r, int sky_only) {
       fprintf(stderr, "zrcube: cannot save the irradiance cache to '%s': "
               "%s\n", save, zr_status_str(s));
   }
+  if (r->rank == 0 && state_gi && !resumed && s == ZR_OK &&
+      zr_gi_cache_save(r->ctx, r->gi, state_gi) != ZR_OK)
+    say(&r->diag, ZR_CLI_STREAM_WARNING, "zrcube: warning: cannot save "
+        "the irradiance cache beside the state file ('%s'); +C would "
+        "compute it again\n", state_gi);
+  free(state_gi);
   return zr__par_agree(r->par, s) == ZR_OK ? -1 : EXIT_SCENE;
 }
 
@@ -545,6 +717,105 @@ static int set_up_gi(run *r) {
   return status;
 }
 
+/* Rank 0, after each band: the state file, at most every
+   --state-interval seconds (0: after every band), so an interrupted
+   render (a kill -9 included) can continue with +C. */
+static void band_done(const zr_par_progress *pr, void *user) {
+  run *r = user;
+  if (!r->state_path || r->state_failed)
+    return;
+  double now = zr__par_now();
+  /* A big image's state takes a while to write: keep that under 5% of
+     the render (unless asked for every band). */
+  double gap = r->opts.state_interval;
+  if (gap > 0 && gap < 20 * r->state_write_seconds)
+    gap = 20 * r->state_write_seconds;
+  if (now - r->last_state_write < gap)
+    return;
+  int rc = zr__state_write(r->state_path, r->fingerprint,
+                           r->opts.params.width, r->opts.params.height, pr);
+  r->last_state_write = zr__par_now();
+  r->state_write_seconds = r->last_state_write - now;
+  if (rc != 0) {
+    say(&r->diag, ZR_CLI_STREAM_WARNING, "zrcube: warning: cannot write "
+        "the state file '%s' (+C will not be able to continue): %s\n",
+        r->state_path, strerror(errno));
+    r->state_failed = 1;
+  }
+}
+
+/* +O-: the image in the chosen format on standard output, by way of a
+   private temporary file (the library writes images to files). */
+static zr_status write_to_stdout(run *r) {
+  const char *dir = getenv("TMPDIR");
+  char path[4096];
+  snprintf(path, sizeof path, "%s/zrcube-XXXXXX.%s",
+           dir && *dir ? dir : "/tmp",
+           r->format == ZR_FORMAT_PPM ? "ppm"
+           : r->format == ZR_FORMAT_PFM ? "pfm" : "png");
+  int suffix = (int)strlen(strrchr(path, '.'));
+  int fd = mkstemps(path, suffix);
+  if (fd < 0) {
+    fprintf(stderr, "zrcube: cannot make a temporary file for +O-: %s\n",
+            strerror(errno));
+    return ZR_EIO;
+  }
+  close(fd);
+  unsigned before = r->diag.errors_printed;
+  zr_status s = zr_image_write(r->ctx, r->image, path, r->format,
+                               zr_scene_assumed_gamma(r->scene));
+  FILE *f = s == ZR_OK ? fopen(path, "rb") : NULL;
+  if (s == ZR_OK && !f)
+    s = ZR_EIO;
+  char buf[65536];
+  size_t n;
+  while (f && (n = fread(buf, 1, sizeof buf, f)) > 0)
+    if (fwrite(buf, 1, n, stdout) != n) {
+      s = ZR_EIO;
+      break;
+    }
+  if (f)
+    fclose(f);
+  if (fflush(stdout) != 0)
+    s = ZR_EIO;
+  unlink(path);
+  if (s != ZR_OK && r->diag.errors_printed == before)
+    fprintf(stderr, "zrcube: cannot write the image to standard output: "
+                    "%s\n", zr_status_str(s));
+  return s;
+}
+
+/* +C on rank 0: the state to continue from, or none.  Returns -1 (and
+   has printed why) when the state file must be refused. */
+static int load_state(run *r, zr_par_progress *resume, int *have) {
+  *have = 0;
+  if (!r->opts.continue_trace || !r->state_path)
+    return 0;
+  char err[1024];
+  int rc = zr__state_read(r->state_path, r->fingerprint,
+                          r->opts.params.width, r->opts.params.height,
+                          resume, err, sizeof err);
+  if (rc < 0) {
+    fprintf(stderr, "zrcube: %s\n", err);
+    return -1;
+  }
+  int passes, bands, band_rows;
+  zr__par_render_layout(r->par, &r->render, &passes, &bands, &band_rows);
+  if (rc == 0 && (resume->passes != passes || resume->bands != bands ||
+                  resume->band_rows != band_rows)) {
+    fprintf(stderr, "zrcube: refusing the state file '%s': it was made by "
+                    "another version of zrcube (remove it to render from "
+                    "the start)\n", r->state_path);
+    zr__state_free(resume);
+    return -1;
+  }
+  *have = rc == 0;
+  if (*have)
+    say(&r->diag, ZR_CLI_STREAM_RENDER, "zrcube: continuing '%s' from "
+        "'%s'\n", r->output_path, r->state_path);
+  return 0;
+}
+
 /* Step 5: render and write. */
 static int render_and_write(run *r) {
   const zr_render_params *params = &r->opts.params;
@@ -565,7 +836,28 @@ static int render_and_write(run *r) {
   r->render.progress = show_progress ? print_progress : NULL;
   r->render.progress_user = &progress;
   r->render.image = r->image;
+  r->render.row0 = r->row0;
+  r->render.row1 = r->row1;
+  r->render.col0 = r->col0;
+  r->render.col1 = r->col1;
+  r->render.band_done = r->rank == 0 ? band_done : NULL;
+  r->render.band_user = r;
+  r->render.band_seconds = r->opts.state_interval;
+  r->render.resume = NULL;
+  r->last_state_write = zr__par_now();
+  r->state_failed = 0;
+  zr_par_progress resume;
+  memset(&resume, 0, sizeof resume);
+  int have = 0;
+  s = ZR_OK;
+  if (r->rank == 0 && load_state(r, &resume, &have) < 0)
+    s = ZR_EFORMAT;
+  if (zr__par_agree(r->par, s) != ZR_OK)
+    return EXIT_SCENE;
+  if (have)
+    r->render.resume = &resume;
   s = zr__par_render(r->par, &r->render);
+  zr__state_free(&resume);
   if (show_progress)
     fputs(s == ZR_OK ? "\n" : "\r\033[K", stderr);
   if (s != ZR_OK) {
@@ -582,22 +874,29 @@ static int render_and_write(run *r) {
   if (r->rank == 0 && r->opts.write_output) {
     double start = zr__par_now();
     unsigned before = r->diag.errors_printed;
-    s = zr_image_write(r->ctx, r->image, r->output_path, r->format,
-                       zr_scene_assumed_gamma(r->scene));
-    if (s != ZR_OK && r->diag.errors_printed == before)
-      fprintf(stderr, "zrcube: cannot write '%s': %s\n", r->output_path,
-              zr_status_str(s));
+    if (r->opts.to_stdout) {
+      s = write_to_stdout(r);
+    } else {
+      s = zr_image_write(r->ctx, r->image, r->output_path, r->format,
+                         zr_scene_assumed_gamma(r->scene));
+      if (s != ZR_OK && r->diag.errors_printed == before)
+        fprintf(stderr, "zrcube: cannot write '%s': %s\n", r->output_path,
+                zr_status_str(s));
+    }
+    /* The image is whole: its state file has served. */
+    if (s == ZR_OK && r->state_path)
+      zr__state_remove(r->state_path);
     r->write_seconds = zr__par_now() - start;
   }
   return zr__par_agree(r->par, s) == ZR_OK ? -1 : EXIT_SCENE;
 }
 
-static void print_statistics(const run *r) {
+static void print_statistics(run *r) {
   const zr_render_stats *st = &r->render.stats;
   const zr_render_params *p = &r->opts.params;
   zr_scene_info info;
   zr_scene_get_info(r->scene, &info);
-  fprintf(stderr,
+  say(&r->diag, ZR_CLI_STREAM_STATISTICS,
           "zrcube: %s: %zu objects (%zu primitives), %zu lights\n"
           "zrcube: image %dx%d, antialiasing %s, %d rank%s x %d thread%s\n"
           "zrcube: time: parse %.3f s, render %.3f s, write %.3f s\n"
@@ -638,40 +937,180 @@ static void print_scene_info(const run *r) {
          info.parse_steps, zr_context_memory_peak(r->ctx));
 }
 
+/* Frees what one frame made. */
+static void end_frame(run *r) {
+  zr_image_free(r->image);
+  zr_radiosity_free(r->rad);
+  zr_gi_cache_free(r->gi);
+  zr_scene_free(r->scene);
+  zr__bundle_free(&r->bundle);
+  zr_context_free(r->ctx);
+  r->image = NULL;
+  r->rad = NULL;
+  r->gi = NULL;
+  r->scene = NULL;
+  r->ctx = NULL;
+  r->opts.params.radiosity = NULL;
+  r->opts.params.gi_cache = NULL;
+  free(r->output_path);
+  free(r->state_path);
+  r->output_path = NULL;
+  r->state_path = NULL;
+  memset(&r->diag, 0, sizeof r->diag);
+}
+
+/* One frame (or the still image): parse with its clock, light, render,
+   write.  Returns an exit status or -1 for success. */
+static int run_frame(run *r, const zr_cli_frame *frame) {
+  r->frame = frame;
+  r->diag.console = r->opts.stream_console;
+  r->diag.files = r->rank == 0 ? r->stream_files : NULL;
+  r->diag.last_stream = ZR_CLI_STREAM_WARNING;
+  if (r->still_path) {
+    r->output_path = r->digits ? zr__cli_frame_name(r->still_path,
+                                                    frame->number, r->digits)
+                               : strdup(r->still_path);
+    if (!r->output_path) {
+      fprintf(stderr, "zrcube: out of memory\n");
+      return EXIT_SCENE;
+    }
+    /* The state file of +C, beside the image: kept while a render
+       writes a file (not with +O- or -F, nor for --parse-only). */
+    if (r->opts.write_output && !r->opts.parse_only &&
+        !(r->state_path = zr__state_path(r->output_path))) {
+      fprintf(stderr, "zrcube: out of memory\n");
+      return EXIT_SCENE;
+    }
+  }
+  if (r->digits && r->rank == 0 && r->opts.verbose)
+    say(&r->diag, ZR_CLI_STREAM_RENDER, "zrcube: frame %ld (%zu of %zu), "
+        "clock %g -> %s\n", frame->number,
+        (size_t)(frame - r->frames) + 1, r->n_frames, frame->clock.clock,
+        r->output_path ? r->output_path : "standard output");
+  /* +C in an animation: a frame whose image is there and whose state
+     file is not was finished before. */
+  if (r->opts.continue_trace && r->digits && r->state_path) {
+    struct stat st;
+    int done = r->rank == 0 && stat(r->output_path, &st) == 0 &&
+               stat(r->state_path, &st) != 0;
+    if (zr__par_agree(r->par, done ? ZR_EINVAL : ZR_OK) != ZR_OK)
+      return -1;
+  }
+  int status = read_scene(r);
+  if (status < 0 && r->opts.parse_only) {
+    if (r->rank == 0)
+      print_scene_info(r);
+    return -1;
+  }
+  if (status < 0)
+    status = set_up_gi(r);
+  if (status < 0)
+    status = render_and_write(r);
+  if (status < 0 && r->rank == 0 && r->opts.verbose)
+    print_statistics(r);
+  return status;
+}
+
+/* The stream files of +GDfile ... (rank 0), rewritten for each run. */
+static int open_streams(run *r) {
+  for (int i = 0; i < ZR_CLI_STREAMS; i++) {
+    const char *name = r->opts.stream_file[i];
+    if (!name || r->rank != 0)
+      continue;
+    /* Streams sent to one file share it. */
+    for (int k = 0; k < i && !r->stream_files[i]; k++)
+      if (r->opts.stream_file[k] && !strcmp(r->opts.stream_file[k], name))
+        r->stream_files[i] = r->stream_files[k];
+    if (!r->stream_files[i] && !(r->stream_files[i] = fopen(name, "w"))) {
+      fprintf(stderr, "zrcube: cannot write the text stream file '%s': "
+                      "%s\n", name, strerror(errno));
+      return -1;
+    }
+  }
+  return 0;
+}
+
+static void close_streams(run *r) {
+  for (int i = 0; i < ZR_CLI_STREAMS; i++) {
+    if (!r->stream_files[i])
+      continue;
+    int shared = 0;
+    for (int k = i + 1; k < ZR_CLI_STREAMS; k++)
+      if (r->stream_files[k] == r->stream_files[i])
+        shared = 1;
+    if (!shared)
+      fclose(r->stream_files[i]);
+    r->stream_files[i] = NULL;
+  }
+}
+
+/*
+ * Whole frames per rank: with more frames than ranks (or when asked,
+ * --frames-per-rank), rank k renders frames k, k + n, ... alone, from
+ * the files as it finds them (a cluster's ranks share the scene's
+ * folder, as they share the INI files), and writes them itself; else
+ * every rank works on every frame, row by row.  A frame's pixels do not
+ * depend on how many ranks made it, so the bytes are the same.
+ */
+static int frames_per_rank(const run *r) {
+  int size = zr__par_size(r->world);
+  if (size < 2 || r->opts.parse_only || r->opts.to_stdout)
+    return 0;
+  if (r->opts.frames_per_rank >= 0)
+    return r->opts.frames_per_rank;
+  return r->digits > 0 && r->n_frames >= (size_t)size;
+}
+
 int main(int argc, char **argv) {
   run r;
   memset(&r, 0, sizeof r);
-  zr_status s = zr__par_init(&argc, &argv, &r.par);
+  zr_status s = zr__par_init(&argc, &argv, &r.world);
   if (s != ZR_OK) {
     fprintf(stderr, "zrcube: cannot start MPI: %s\n", zr_status_str(s));
     return EXIT_SCENE;
   }
+  r.par = r.world;
   r.rank = zr__par_rank(r.par);
   int status = read_command_line(&r, argc, argv);
-  if (status < 0)
-    status = read_scene(&r);
-  if (status < 0 && r.opts.parse_only) {
-    if (r.rank == 0)
-      print_scene_info(&r);
-    status = EXIT_SUCCESS;
-  }
-  if (status < 0)
-    status = set_up_gi(&r);
-  if (status < 0)
-    status = render_and_write(&r);
+  if (status < 0 &&
+      zr__par_agree(r.world, open_streams(&r) ? ZR_EIO : ZR_OK) != ZR_OK)
+    status = EXIT_USAGE;
   if (status < 0) {
-    if (r.rank == 0 && r.opts.verbose)
-      print_statistics(&r);
-    status = EXIT_SUCCESS;
+    int split = frames_per_rank(&r);
+    int me = zr__par_rank(r.world), size = zr__par_size(r.world);
+    if (split && zr__par_solo(r.world, &r.solo) != ZR_OK) {
+      fprintf(stderr, "zrcube: out of memory\n");
+      status = EXIT_SCENE;
+    }
+    int local = -1;
+    for (size_t i = 0; status < 0 && local < 0 && i < r.n_frames; i++) {
+      if (split && (int)(i % (size_t)size) != me)
+        continue;
+      r.par = split ? r.solo : r.world;
+      r.rank = zr__par_rank(r.par);
+      local = run_frame(&r, &r.frames[i]);
+      end_frame(&r);
+    }
+    r.par = r.world;
+    r.rank = zr__par_rank(r.world);
+    if (status < 0) {
+      /* With frames per rank, each rank stopped at its own failure; all
+         leave with the same status. */
+      if (split) {
+        zr_status agreed = zr__par_agree(r.world, local < 0 ? ZR_OK
+                                                            : ZR_EINVAL);
+        status = agreed == ZR_OK ? EXIT_SUCCESS : EXIT_SCENE;
+      } else {
+        status = local < 0 ? EXIT_SUCCESS : local;
+      }
+    }
   }
-  zr_image_free(r.image);
-  zr_radiosity_free(r.rad);
-  zr_gi_cache_free(r.gi);
-  zr_scene_free(r.scene);
-  zr__bundle_free(&r.bundle);
-  zr_context_free(r.ctx);
-  free(r.output_path);
+  end_frame(&r);
+  close_streams(&r);
+  free(r.still_path);
+  free(r.frames);
   zr__cli_free(&r.opts);
-  zr__par_finalize(r.par);
+  zr__par_finalize(r.solo);
+  zr__par_finalize(r.world);
   return status;
 }

@@ -132,6 +132,51 @@ ZR_API zr_status zr_context_add_include_path(zr_context *ctx, const char *dir);
 ZR_API zr_status zr_context_set_render_size(zr_context *ctx, int width,
                                             int height);
 /*
+ * What a scene reads while it is parsed besides the render size: the
+ * animation clock (POV-Ray's "Built-in Float Identifiers" clock,
+ * clock_delta, clock_on, frame_number, initial_frame, final_frame,
+ * initial_clock, final_clock; reference section 3.2.1, "Animation
+ * Options") and the language version the scene starts in (+MV).
+ * Size rule: size is sizeof (zr_parse_options) as the caller was
+ * compiled; the library reads only the fields that fit in size, and
+ * fields added later (always at the end) keep their defaults for
+ * callers built before them.  zr_parse_options_init() fills the
+ * defaults of a still image: every clock value 0, version 3.7.
+ */
+typedef struct zr_parse_options {
+  size_t size;          /* sizeof (zr_parse_options) */
+  double clock;         /* +K, or the frame's clock in an animation */
+  double clock_delta;   /* clock step between frames; 0 for a still */
+  int clock_on;         /* 1 when a clock was given or animating */
+  int frame_number;
+  int initial_frame, final_frame;
+  double initial_clock, final_clock;
+  double version;       /* +MV: 3.7 by default */
+} zr_parse_options;
+
+ZR_API void zr_parse_options_init(zr_parse_options *o);
+/* Copies o into ctx for the parses that follow; ZR_EINVAL when o->size
+   is too small to hold the size field itself or version is not
+   positive. */
+ZR_API zr_status zr_context_set_parse_options(zr_context *ctx,
+                                              const zr_parse_options *o);
+/*
+ * Declares a float for the parses that follow, as the first statement
+ * of the scene would ("#declare name = value;", POV-Ray's INI option
+ * Declare=IDENTIFIER=FLOAT).  A later call with the same name replaces
+ * the value.  ZR_EINVAL when name is not an identifier (a letter or '_'
+ * then letters, digits and '_') or value is not finite.
+ */
+ZR_API zr_status zr_context_declare(zr_context *ctx, const char *name,
+                                    double value);
+/*
+ * A file read before the scene, as if its first line were #include
+ * "path" (POV-Ray's Include_Header=file, +HIfile): found where #include
+ * looks.  NULL removes it.
+ */
+ZR_API zr_status zr_context_set_header_include(zr_context *ctx,
+                                               const char *path);
+/*
  * The work budget of one parse: every directive run, every macro call
  * and every pass through a #while, #for or #zfor body is one step.  A
  * scene that takes more steps stops with ZR_ELIMIT and a located error
@@ -527,6 +572,10 @@ typedef struct zr_render_params {
      corners differ by more than aa_threshold is split into four, down
      to aa_depth levels ((2^aa_depth + 1)^2 samples at most). */
   int aa_method;
+  /* POV-Ray's +Q, 0 to 11 (default 9): below 4 no shadows, below 5 area
+     lights cast hard shadows, below 6 no transmitted rays, below 8 no
+     reflected rays, below 9 no media. */
+  int quality;
 } zr_render_params;
 
 /* Fills p with POV-Ray's defaults. */

@@ -146,3 +146,7 @@ EXTRA_DIST += tests/test_photons.sh tests/photons_check.pov
 # +AM2, the recursive antialiasing method, against povray's.
 TESTS += tests/test_aa_method.sh
 EXTRA_DIST += tests/test_aa_method.sh tests/am2_check.pov
+
+# A mesh's texture_list moves with the object.
+TESTS += tests/test_mesh_textures.sh
+EXTRA_DIST += tests/test_mesh_textures.sh tests/mesh_texture_list.pov

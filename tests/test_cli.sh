@@ -217,8 +217,8 @@ done
 mpi badopt_mpi 2 2 scene.pov +H12x
 expect_once badopt_mpi \
   "zrcube: '+H12x': the height must be a whole number from 1 to 65535"
-serial unknown 2 "$ZRCUBE" scene.pov +UL
-expect unknown "zrcube: unknown option '+UL' (try 'zrcube --help')"
+serial unknown 2 "$ZRCUBE" scene.pov +Z1
+expect unknown "zrcube: unknown option '+Z1' (try 'zrcube --help')"
 serial noscene 2 "$ZRCUBE" +W10
 expect noscene "zrcube: no scene file given (try 'zrcube --help')"
 

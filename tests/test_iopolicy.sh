@@ -124,9 +124,12 @@ mkfifo pipe.png 2>/dev/null || fail "fifo: mkfifo failed"
 refused fifo 2 "$ZRCUBE" scene.pov $SIZE +Opipe.png
 expect fifo "zrcube: cannot write the image to 'pipe.png': it is a FIFO"
 rm -f pipe.png
-# Standard output is not a file name.
-refused stdout 2 "$ZRCUBE" scene.pov $SIZE +O-
-expect stdout "writing the image to standard output is not supported"
+# +O- is standard output (issue 12), never a file named "-".
+"$ZRCUBE" scene.pov $SIZE +O- >stdout.png 2>stdout.err ||
+  fail "stdout: +O- failed: $(cat stdout.err)"
+head -c 8 stdout.png | od -An -c | grep -q 'P   N   G' ||
+  fail "stdout: +O- wrote no PNG to standard output"
+[ -e ./- ] && fail "stdout: +O- made a file named '-'"
 # A symbolic link is followed: the link stays, its file gets the image.
 echo 'old image' >"$top/work/real.png"
 ln -s real.png linked.png

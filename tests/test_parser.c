@@ -906,9 +906,66 @@ static void test_parser_string_name_in_messages(void **state) {
                       "      |                 ^~~~~\n");
 }
 
+/* The clock identifiers come from zr_context_set_parse_options, a still
+   image reads 0 for all of them, Declare= floats are declared before the
+   scene; a caller's older, smaller struct keeps the defaults for the
+   fields it lacks (the size rule). */
+static void test_parser_clock_and_declare(void **state) {
+  fixture *f = *state;
+  zr_scene *scene = NULL;
+  const char *still =
+      "#if (clock != 0 | clock_delta != 0 | clock_on != 0 | "
+      "frame_number != 0 | initial_frame != 0 | final_frame != 0 | "
+      "initial_clock != 0 | final_clock != 0 | version != 3.7)\n"
+      "  #error \"still\"\n#end\nsphere { 0, 1 }";
+  assert_int_equal(zr_scene_parse_string(f->ctx, "still", still,
+                                         strlen(still), &scene), ZR_OK);
+  zr_scene_free(scene);
+  zr_parse_options o;
+  zr_parse_options_init(&o);
+  o.clock = 0.25;
+  o.clock_delta = 0.125;
+  o.clock_on = 1;
+  o.frame_number = 3;
+  o.initial_frame = 1;
+  o.final_frame = 9;
+  o.initial_clock = 0;
+  o.final_clock = 1;
+  o.version = 3.5;
+  assert_int_equal(zr_context_set_parse_options(f->ctx, &o), ZR_OK);
+  assert_int_equal(zr_context_declare(f->ctx, "Rad", 2), ZR_OK);
+  assert_int_equal(zr_context_declare(f->ctx, "Rad", 4), ZR_OK);
+  const char *frame =
+      "#if (clock != 0.25 | clock_delta != 0.125 | clock_on != 1 | "
+      "frame_number != 3 | initial_frame != 1 | final_frame != 9 | "
+      "final_clock != 1 | version != 3.5 | Rad != 4)\n"
+      "  #error \"frame\"\n#end\nsphere { 0, 1 }";
+  assert_int_equal(zr_scene_parse_string(f->ctx, "frame", frame,
+                                         strlen(frame), &scene), ZR_OK);
+  zr_scene_free(scene);
+  /* A caller that knew only the fields up to clock. */
+  zr_parse_options_init(&o);
+  o.size = offsetof(zr_parse_options, clock_delta);
+  o.clock = 0.5;
+  o.clock_on = 1; /* beyond size: not read */
+  assert_int_equal(zr_context_set_parse_options(f->ctx, &o), ZR_OK);
+  const char *old =
+      "#if (clock != 0.5 | clock_on != 0 | version != 3.7)\n"
+      "  #error \"old\"\n#end\nsphere { 0, 1 }";
+  assert_int_equal(zr_scene_parse_string(f->ctx, "old", old, strlen(old),
+                                         &scene), ZR_OK);
+  zr_scene_free(scene);
+  o.size = 1;
+  assert_int_equal(zr_context_set_parse_options(f->ctx, &o), ZR_EINVAL);
+  assert_int_equal(zr_context_declare(f->ctx, "2x", 1), ZR_EINVAL);
+  assert_int_equal(zr_context_declare(f->ctx, "x", NAN), ZR_EINVAL);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test_setup_teardown(test_parser_primitives, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_parser_clock_and_declare, setup,
                                       teardown),
       cmocka_unit_test_setup_teardown(test_parser_optional_commas, setup,
                                       teardown),

@@ -8,7 +8,9 @@
  */
 #include "core/context.h"
 
+#include <ctype.h>
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -39,6 +41,7 @@ ZR_API zr_status zr_context_new(zr_context **out) {
   ctx->work_limit = ZR_DEFAULT_WORK_LIMIT;
   ctx->file_limit = ZR_DEFAULT_FILE_LIMIT;
   ctx->png_level = ZR_DEFAULT_PNG_LEVEL;
+  zr_parse_options_init(&ctx->parse);
   ctx->budget = zr__budget_new(zr__budget_default_limit());
   if (!ctx->budget) {
     free(ctx);
@@ -116,6 +119,11 @@ ZR_API void zr_context_free(zr_context *ctx) {
   for (size_t i = 0; i < ctx->n_write_dirs; i++)
     free(ctx->write_dirs[i]);
   free(ctx->write_dirs);
+  for (size_t i = 0; i < ctx->n_declared; i++)
+    free(ctx->declared_names[i]);
+  free(ctx->declared_names);
+  free(ctx->declared_values);
+  free(ctx->header_include);
   zr__budget_unref(ctx->budget);
   free(ctx);
 }
@@ -137,6 +145,76 @@ ZR_API zr_status zr_context_set_render_size(zr_context *ctx, int width,
     return ZR_EINVAL;
   ctx->render_width = width;
   ctx->render_height = height;
+  return ZR_OK;
+}
+
+ZR_API void zr_parse_options_init(zr_parse_options *o) {
+  memset(o, 0, sizeof *o);
+  o->size = sizeof *o;
+  o->version = 3.7;
+}
+
+ZR_API zr_status zr_context_set_parse_options(zr_context *ctx,
+                                              const zr_parse_options *o) {
+  if (!ctx || !o || o->size < sizeof o->size)
+    return ZR_EINVAL;
+  /* The size rule: what the caller's struct holds, the rest default. */
+  zr_parse_options copy;
+  zr_parse_options_init(&copy);
+  size_t n = o->size < sizeof copy ? o->size : sizeof copy;
+  memcpy(&copy, o, n);
+  copy.size = sizeof copy;
+  if (!(copy.version > 0) || !isfinite(copy.version))
+    return ZR_EINVAL;
+  ctx->parse = copy;
+  return ZR_OK;
+}
+
+ZR_API zr_status zr_context_set_header_include(zr_context *ctx,
+                                               const char *path) {
+  if (!ctx)
+    return ZR_EINVAL;
+  char *copy = NULL;
+  if (path && !(copy = strdup(path)))
+    return ZR_ENOMEM;
+  free(ctx->header_include);
+  ctx->header_include = copy;
+  return ZR_OK;
+}
+
+static int is_identifier(const char *s) {
+  if (!s || !(isalpha((unsigned char)*s) || *s == '_'))
+    return 0;
+  for (s++; *s; s++)
+    if (!(isalnum((unsigned char)*s) || *s == '_'))
+      return 0;
+  return 1;
+}
+
+ZR_API zr_status zr_context_declare(zr_context *ctx, const char *name,
+                                    double value) {
+  if (!ctx || !is_identifier(name) || !isfinite(value))
+    return ZR_EINVAL;
+  for (size_t i = 0; i < ctx->n_declared; i++)
+    if (!strcmp(ctx->declared_names[i], name)) {
+      ctx->declared_values[i] = value;
+      return ZR_OK;
+    }
+  size_t n = ctx->n_declared + 1;
+  char **names = realloc(ctx->declared_names, n * sizeof *names);
+  if (!names)
+    return ZR_ENOMEM;
+  ctx->declared_names = names;
+  double *values = realloc(ctx->declared_values, n * sizeof *values);
+  if (!values)
+    return ZR_ENOMEM;
+  ctx->declared_values = values;
+  char *copy = strdup(name);
+  if (!copy)
+    return ZR_ENOMEM;
+  names[ctx->n_declared] = copy;
+  values[ctx->n_declared] = value;
+  ctx->n_declared = n;
   return ZR_OK;
 }
 

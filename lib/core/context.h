@@ -19,6 +19,11 @@ struct zr_context {
   char **include_paths;
   size_t n_include_paths;
   int render_width, render_height; /* 0 until set: the parser's defaults */
+  zr_parse_options parse;          /* clock, version (+MV) */
+  char **declared_names;           /* zr_context_declare, in order */
+  double *declared_values;
+  size_t n_declared;
+  char *header_include;            /* +HI, NULL: none */
   /* I/O restrictions (iopolicy.c): the mode and the folders added to the
      defaults, each resolved (realpath) when added. */
   zr_io_restrictions io_mode;

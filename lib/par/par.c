@@ -23,6 +23,7 @@
 #define _GNU_SOURCE /* sched_getaffinity, CPU_COUNT */
 #include "par/par.h"
 
+#include <math.h>
 #include <mpi.h>
 #include <sched.h>
 #include <stdio.h>
@@ -352,9 +353,43 @@ static float *float_alloc(size_t n) {
   return malloc((n ? n : 1) * sizeof(float));
 }
 
-static zr_status render_pass(zr_par *par, zr_par_render *job,
-                             const float *centres, float *rows_rgb,
-                             size_t progress_base, size_t progress_total) {
+zr_status zr__par_solo(const zr_par *par, zr_par **out) {
+  zr_par *solo = calloc(1, sizeof *solo);
+  if (!solo)
+    return ZR_ENOMEM;
+  solo->uses_mpi = 0;
+  solo->threads_allowed = par->threads_allowed;
+  solo->rank = 0;
+  solo->size = 1;
+  solo->local_size = par->local_size;
+  solo->comm = MPI_COMM_NULL;
+  *out = solo;
+  return ZR_OK;
+}
+
+/* The bands of a render: at most 64 a pass, their size set by the
+   image only, so a state file serves any number of ranks.  The ranks
+   render runs of bands (chunks) between two meetings, sized so a chunk
+   takes about job->band_seconds: every meeting makes ranks wait for
+   the slowest, which cost 80% on two busy ranks when each band was
+   one. */
+#define MAX_BANDS 64
+
+void zr__par_render_layout(const zr_par *par, const zr_par_render *job,
+                           int *passes, int *bands, int *band_rows) {
+  (void)par;
+  int height = job->params->height > 0 ? job->params->height : 1;
+  *passes = job->params->antialias ? 2 : 1;
+  *band_rows = (height + MAX_BANDS - 1) / MAX_BANDS;
+  *bands = (height + *band_rows - 1) / *band_rows;
+}
+
+/* One pass over the rows y0 .. y1 - 1 and columns x0 .. x1 - 1 of this
+   rank (y0 + rank, + size, ...), into rows_rgb. */
+static zr_status render_band(zr_par *par, zr_par_render *job,
+                             const float *centres, float *rows_rgb, int y0,
+                             int y1, int x0, int x1, size_t progress_base,
+                             size_t progress_total) {
   zr_pool_job pool = {
       .scene = job->scene,
       .params = job->params,
@@ -368,8 +403,64 @@ static zr_status render_pass(zr_par *par, zr_par_render *job,
       .progress_user = job->progress_user,
       .progress_base = progress_base,
       .progress_total = progress_total,
+      .first_row = y0,
+      .end_row = y1,
+      .first_col = x0,
+      .end_col = x1,
   };
   return zr__par_agree(par, zr__pool_render(&pool));
+}
+
+/* Rank 0's n on every rank. */
+static zr_status share_int(zr_par *par, int *n) {
+  if (!par->uses_mpi || par->size == 1)
+    return ZR_OK;
+  return mpi_status(MPI_Bcast(n, 1, MPI_INT, 0, par->comm));
+}
+
+/* Copies a band's rows (x1 - x0 pixels each) into the full image. */
+static void place_band(const float *band, float *image, int width, int y0,
+                       int y1, int x0, int x1) {
+  size_t n = (size_t)(x1 - x0) * 3;
+  for (int y = y0; y < y1; y++)
+    memcpy(image + ((size_t)y * (size_t)width + (size_t)x0) * 3,
+           band + (size_t)(y - y0) * n, n * sizeof *band);
+}
+
+/* Rank 0's state to continue from, sent to every rank: the flags, and
+   the centres every rank needs for the antialiasing pass. */
+static zr_status share_resume(zr_par *par, zr_par_render *job,
+                              zr_par_progress *pr, size_t image_floats) {
+  /* 1: a state to continue from; -1: one of another layout (every
+     rank fails); 0: none. */
+  int have = 0;
+  if (par->rank == 0 && job->resume) {
+    const zr_par_progress *r = job->resume;
+    have = r->passes == pr->passes && r->bands == pr->bands &&
+                   r->band_rows == pr->band_rows
+               ? 1 : -1;
+  }
+  if (par->uses_mpi && par->size > 1 &&
+      MPI_Bcast(&have, 1, MPI_INT, 0, par->comm) != MPI_SUCCESS)
+    return ZR_EMPI;
+  if (have <= 0)
+    return have < 0 ? ZR_EINVAL : ZR_OK;
+  if (par->rank == 0) {
+    const zr_par_progress *r = job->resume;
+    for (int p = 0; p < pr->passes; p++)
+      memcpy(pr->done[p], r->done[p], (size_t)pr->bands);
+    if (pr->centres)
+      memcpy(pr->centres, r->centres, image_floats * sizeof(float));
+    memcpy(pr->image, r->image, image_floats * sizeof(float));
+  }
+  if (!par->uses_mpi || par->size == 1)
+    return ZR_OK;
+  zr_status s = ZR_OK;
+  for (int p = 0; p < pr->passes && s == ZR_OK; p++)
+    s = bcast_bytes(par, (char *)pr->done[p], (size_t)pr->bands);
+  if (s == ZR_OK && pr->centres)
+    s = bcast_bytes(par, (char *)pr->centres, image_floats * sizeof(float));
+  return s;
 }
 
 zr_status zr__par_render(zr_par *par, zr_par_render *job) {
@@ -387,48 +478,117 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
            (!job->image || zr_image_width(job->image) != width ||
             zr_image_height(job->image) != height))
     s = ZR_EINVAL;
-  size_t row_floats = (size_t)(width > 0 ? width : 0) * 3;
-  int mine = s == ZR_OK ? zr__rows_count(height, par->rank, par->size) : 0;
-  int passes = job->params->antialias ? 2 : 1;
-  size_t total = (size_t)mine * (size_t)passes;
-  float *centre_rows = NULL, *final_rows = NULL, *centres = NULL;
-  float *rank_major = NULL;
-  int gather_here = par->rank == 0 || passes == 2;
-  int mpi_scratch = par->uses_mpi && par->size > 1 && gather_here;
+  int r0 = 0, r1 = height, c0 = 0, c1 = width;
+  if (s == ZR_OK && (job->row1 || job->col1)) {
+    r0 = job->row0, r1 = job->row1, c0 = job->col0, c1 = job->col1;
+    if (r0 < 0 || r1 > height || r0 >= r1 || c0 < 0 || c1 > width ||
+        c0 >= c1)
+      s = ZR_EINVAL;
+  }
+  zr_par_progress pr;
+  memset(&pr, 0, sizeof pr);
+  zr__par_render_layout(par, job, &pr.passes, &pr.bands, &pr.band_rows);
+  /* Pass 1 with antialiasing also covers the window's neighbours. */
+  int aa = pr.passes == 2;
+  int p1r0 = aa && r0 > 0 ? r0 - 1 : r0, p1r1 = aa && r1 < height ? r1 + 1 : r1;
+  int p1c0 = aa && c0 > 0 ? c0 - 1 : c0, p1c1 = aa && c1 < width ? c1 + 1 : c1;
+  size_t image_floats = (size_t)(width > 0 ? width : 0) *
+                        (size_t)(height > 0 ? height : 0) * 3;
+  /* A chunk may hold every row. */
+  size_t band_floats = image_floats;
+  float *mine = NULL, *band = NULL, *rank_major = NULL;
+  /* Rank 0 keeps the picture; every rank keeps the centres (pass 2
+     reads each pixel's neighbours). */
   if (s == ZR_OK) {
-    centre_rows = float_alloc((size_t)mine * row_floats);
-    final_rows = passes == 2 ? float_alloc((size_t)mine * row_floats)
-                             : centre_rows;
-    if (passes == 2)
-      centres = float_alloc((size_t)height * row_floats);
-    if (mpi_scratch)
-      rank_major = float_alloc((size_t)height * row_floats);
-    if (!centre_rows || !final_rows || (passes == 2 && !centres) ||
-        (mpi_scratch && !rank_major))
+    pr.done[0] = calloc((size_t)pr.bands, 1);
+    pr.done[1] = calloc((size_t)pr.bands, 1);
+    pr.image = par->rank == 0 ? zr_image_pixels(job->image) : NULL;
+    if (aa)
+      pr.centres = calloc(image_floats ? image_floats : 1, sizeof(float));
+    mine = float_alloc(band_floats);
+    band = float_alloc(band_floats);
+    rank_major = float_alloc(band_floats);
+    if (!pr.done[0] || !pr.done[1] || (aa && !pr.centres) || !mine ||
+        !band || !rank_major)
       s = ZR_ENOMEM;
+    if (pr.image)
+      memset(pr.image, 0, image_floats * sizeof(float));
   }
   s = zr__par_agree(par, s);
   if (s == ZR_OK)
-    s = render_pass(par, job, NULL, centre_rows, 0, total);
-  if (s == ZR_OK && passes == 2) {
-    s = collect_rows(par, centre_rows, centres, rank_major, width, height, 1);
-    s = zr__par_agree(par, s);
-    if (s == ZR_OK)
-      s = render_pass(par, job, centres, final_rows, (size_t)mine, total);
-  }
-  if (s == ZR_OK) {
-    float *image = par->rank == 0 ? zr_image_pixels(job->image) : NULL;
-    s = zr__par_agree(par, collect_rows(par, final_rows, image, rank_major,
-                                        width, height, 0));
+    s = zr__par_agree(par, share_resume(par, job, &pr, image_floats));
+  /* This rank's rows still to render, for the progress line. */
+  /* This rank's share of the rows still to render, for the progress
+     line (the chunks' interleaving may make it a row or two off). */
+  size_t total = 0, done_rows = 0;
+  for (int p = 0; p < pr.passes && s == ZR_OK; p++)
+    for (int b = 0; b < pr.bands; b++) {
+      int y0 = b * pr.band_rows, y1 = y0 + pr.band_rows;
+      int lo = p == 0 ? p1r0 : r0, hi = p == 0 ? p1r1 : r1;
+      y0 = y0 < lo ? lo : y0;
+      y1 = y1 > hi ? hi : y1;
+      if (y1 > y0 && !pr.done[p][b])
+        total += (size_t)(y1 - y0);
+    }
+  total = (total + (size_t)par->size - 1) / (size_t)par->size;
+  int chunk = 1;          /* bands in the next chunk (rank 0 decides) */
+  double band_time = 0;   /* seconds a band took, last chunk */
+  for (int p = 0; p < pr.passes && s == ZR_OK; p++) {
+    int lo = p == 0 ? p1r0 : r0, hi = p == 0 ? p1r1 : r1;
+    int x0 = p == 0 ? p1c0 : c0, x1 = p == 0 ? p1c1 : c1;
+    int everyone = p == 0 && aa;
+    float *target = everyone ? pr.centres : pr.image;
+    int b = 0;
+    while (b < pr.bands && s == ZR_OK) {
+      if (pr.done[p][b]) {
+        b++;
+        continue;
+      }
+      /* The chunk: up to chunk bands not yet done, from b on. */
+      if (par->rank == 0) {
+        if (job->band_seconds <= 0)
+          chunk = 1;
+        else if (band_time > 0)
+          chunk = (int)fmin(pr.bands, fmax(1.0, job->band_seconds /
+                                                    band_time));
+      }
+      s = zr__par_agree(par, share_int(par, &chunk));
+      if (s != ZR_OK)
+        break;
+      int e = b;
+      while (e < pr.bands && e - b < chunk && !pr.done[p][e])
+        e++;
+      int y0 = b * pr.band_rows, y1 = e * pr.band_rows;
+      y0 = y0 < lo ? lo : y0;
+      y1 = y1 > hi ? hi : y1;
+      double t0 = zr__par_now();
+      if (y1 > y0) {
+        s = render_band(par, job, p == 1 ? pr.centres : NULL, mine, y0, y1,
+                        x0, x1, done_rows, total);
+        done_rows += (size_t)zr__rows_count(y1 - y0, par->rank, par->size);
+        if (s == ZR_OK)
+          s = zr__par_agree(par, collect_rows(par, mine, band, rank_major,
+                                              x1 - x0, y1 - y0, everyone));
+        if (s == ZR_OK && target)
+          place_band(band, target, width, y0, y1, x0, x1);
+      }
+      band_time = (zr__par_now() - t0) / (double)(e - b);
+      for (int k = b; k < e; k++)
+        pr.done[p][k] = 1;
+      b = e;
+      if (s == ZR_OK && par->rank == 0 && job->band_done)
+        job->band_done(&pr, job->band_user);
+    }
   }
   job->render_seconds = zr__par_now() - start;
   if (s == ZR_OK)
     s = zr__par_agree(par, reduce_stats(par, &job->stats,
                                         &job->render_seconds));
-  if (final_rows != centre_rows)
-    free(final_rows);
-  free(centre_rows);
-  free(centres);
+  free(pr.done[0]);
+  free(pr.done[1]);
+  free(pr.centres);
+  free(mine);
+  free(band);
   free(rank_major);
   return s;
 }

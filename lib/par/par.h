@@ -73,6 +73,27 @@ zr_status zr__par_share_string(zr_par *par, char **text);
  */
 zr_status zr__par_agree(zr_par *par, zr_status local);
 
+/*
+ * What a render has done so far, band by band, for a state file that
+ * lets an interrupted render continue (zrcube +C).  The image's rows are
+ * cut in bands of band_rows rows; pass 1 (one ray through each pixel
+ * centre) runs over every band, then, with antialiasing, pass 2.
+ * done[p][b] is 1 when pass p + 1 of band b is complete: its pixels are
+ * in centres (pass 1 with antialiasing, width * height * 3 floats) or in
+ * image (the final pixels, width * height * 3 floats).
+ */
+typedef struct zr_par_progress {
+  int passes;     /* 1, or 2 with antialiasing */
+  int bands;
+  int band_rows;
+  unsigned char *done[2]; /* bands flags each */
+  float *centres;         /* NULL with one pass */
+  float *image;
+} zr_par_progress;
+
+/* Rank 0, after each band: the render's state so far. */
+typedef void (*zr_par_band_fn)(const zr_par_progress *progress, void *user);
+
 typedef struct zr_par_render {
   const zr_scene *scene;
   const zr_render_params *params;
@@ -82,7 +103,32 @@ typedef struct zr_par_render {
   zr_image *image;         /* rank 0: receives the picture; others NULL */
   zr_render_stats stats;   /* out: summed over all ranks, on rank 0 */
   double render_seconds;   /* out: the slowest rank's, on rank 0 */
+  /* A partial render (+SR +ER +SC +EC): rows row0 .. row1 - 1 and
+     columns col0 .. col1 - 1 are rendered, the other pixels are black.
+     All 0: the whole image.  With antialiasing, pass 1 also covers a
+     margin of one pixel, so the window's pixels are those of a whole
+     render. */
+  int row0, row1, col0, col1;
+  zr_par_band_fn band_done; /* rank 0; may be NULL */
+  void *band_user;
+  /* Rank 0: the state of an interrupted render to continue from (NULL:
+     start afresh), with the same passes, bands and band_rows as this
+     render has (zr__par_render_layout). */
+  const zr_par_progress *resume;
+  /* Rank 0: about how long the runs of bands between two calls of
+     band_done should take (0: one band at a time). */
+  double band_seconds;
 } zr_par_render;
+
+/* The passes, bands and band rows job will use (for a state file). */
+void zr__par_render_layout(const zr_par *par, const zr_par_render *job,
+                           int *passes, int *bands, int *band_rows);
+
+/*
+ * A world of one rank seen from this rank, for work a rank does alone
+ * (whole frames of an animation): collectives on it return at once.
+ */
+zr_status zr__par_solo(const zr_par *par, zr_par **out);
 
 /*
  * Renders the image over all ranks and their threads: pass 1 on the

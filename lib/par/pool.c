@@ -55,8 +55,11 @@ static void work(worker *w) {
   shared_state *sh = w->shared;
   const zr_pool_job *job = sh->job;
   int width = job->params->width;
-  size_t row_floats = (size_t)width * 3;
-  uint32_t *pixels = malloc((size_t)width * sizeof *pixels);
+  int first_row = job->end_row ? job->first_row : 0;
+  int first_col = job->end_row ? job->first_col : 0;
+  int cols = job->end_row ? job->end_col - first_col : width;
+  size_t row_floats = (size_t)cols * 3;
+  uint32_t *pixels = malloc((size_t)(cols > 0 ? cols : 1) * sizeof *pixels);
   if (!pixels) {
     int ok = ZR_OK;
     atomic_compare_exchange_strong(&sh->failure, &ok, ZR_ENOMEM);
@@ -68,11 +71,12 @@ static void work(worker *w) {
     int index = atomic_fetch_add(&sh->next_row, 1);
     if (index >= sh->row_count)
       break;
-    uint32_t y = (uint32_t)zr__rows_row(index, job->rank, job->nranks);
-    for (int x = 0; x < width; x++)
-      pixels[x] = y * (uint32_t)width + (uint32_t)x;
+    uint32_t y = (uint32_t)(first_row +
+                            zr__rows_row(index, job->rank, job->nranks));
+    for (int x = 0; x < cols; x++)
+      pixels[x] = y * (uint32_t)width + (uint32_t)(first_col + x);
     zr_status s = zr_render_pixels(job->scene, job->params, pixels,
-                                   (size_t)width, job->centres,
+                                   (size_t)cols, job->centres,
                                    job->rows_rgb + (size_t)index * row_floats,
                                    &w->stats);
     if (s != ZR_OK) {
@@ -99,7 +103,9 @@ zr_status zr__pool_render(const zr_pool_job *job) {
   if (pthread_mutex_init(&sh.progress_lock, NULL) != 0)
     return ZR_ETHREAD;
   sh.job = job;
-  sh.row_count = zr__rows_count(job->params->height, job->rank, job->nranks);
+  sh.row_count = zr__rows_count(job->end_row ? job->end_row - job->first_row
+                                             : job->params->height,
+                                job->rank, job->nranks);
   /* No more threads than rows: an idle thread only costs its start-up. */
   if (threads > sh.row_count)
     threads = sh.row_count > 0 ? sh.row_count : 1;

@@ -33,6 +33,12 @@ typedef struct zr_pool_job {
   void *progress_user;
   size_t progress_base;
   size_t progress_total;
+  /* A band of the image: rows first_row .. end_row - 1 (the rank takes
+     first_row + rank, + nranks, ...) and columns first_col .. end_col -
+     1; rows_rgb then holds (end_col - first_col) * 3 floats a row.
+     end_row == 0: every row and column. */
+  int first_row, end_row;
+  int first_col, end_col;
 } zr_pool_job;
 
 /*

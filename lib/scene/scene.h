@@ -547,6 +547,10 @@ struct zr_object {
          so a hit on a textured triangle reports the copy that carries
          its texture. */
       const zr_object *textured;
+      /* The texture list moved with this object (NULL: the mesh's as
+         written): object { M scale 2 } carries M's listed textures
+         along, as any texture moves with its object. */
+      const struct zr_texture *const *textures;
     } mesh;
     struct {
       const struct zr_text *data;

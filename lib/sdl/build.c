@@ -34,6 +34,7 @@
 
 #include "core/strbuf.h"
 #include "image/image.h"
+#include "trace/obj_mesh.h"
 #include "pov-parse.h"
 #include "scene/pattern.h"
 #include "scene/texture.h"
@@ -1022,6 +1023,27 @@ static bool transform_blob_textures(zr_sdl_parser *p, zr_object *o,
   return true;
 }
 
+/* A mesh's texture_list moves with the object: into a new array, as
+   other objects made from the mesh share the old one. */
+static bool transform_mesh_textures(zr_sdl_parser *p, zr_object *o,
+                                    const zr_transform *t) {
+  const struct zr_mesh *m = o->u.mesh.data;
+  size_t n = m->n_textures;
+  const zr_texture **list = zr__sdl_alloc(p, n * sizeof *list);
+  if (!list)
+    return false;
+  for (size_t i = 0; i < n; i++) {
+    const zr_texture *from =
+        o->u.mesh.textures ? o->u.mesh.textures[i] : m->textures[i];
+    zr_texture *tx = zr__sdl_texture_new(p, from);
+    if (!tx || !zr__sdl_texture_transform(p, tx, t))
+      return false;
+    list[i] = tx;
+  }
+  o->u.mesh.textures = list;
+  return true;
+}
+
 static bool transform_object(zr_sdl_parser *p, zr_object *o,
                              const zr_transform *t) {
   if (!(o->transform = composed(p, o->transform, t)))
@@ -1033,6 +1055,9 @@ static bool transform_object(zr_sdl_parser *p, zr_object *o,
   bool was_moving = p->moving_object;
   p->moving_object = true;
   bool ok = transform_textures(p, o, t);
+  if (ok && o->kind == ZR_OBJ_MESH && o->u.mesh.data &&
+      o->u.mesh.data->n_textures > 0 && !o->uv_mapping)
+    ok = transform_mesh_textures(p, o, t);
   p->moving_object = was_moving;
   if (!ok)
     return false;

@@ -925,13 +925,29 @@ static int deliver(zr_sdl_parser *p, int kind, const zr_sdl_lexval *val,
 }
 
 /* The value of a built-in constant (reference manual, "Built-in Float
-   Identifiers"): the render size, and the clock of a still image, where
-   POV-Ray 3.7 gives 0 for all of clock, clock_delta, clock_on,
-   frame_number, initial_clock, final_clock, initial_frame and
-   final_frame (measured with povray 3.7.0). */
+   Identifiers"): the render size, and the animation clock the caller
+   set (zr_context_set_parse_options); for a still image POV-Ray 3.7
+   gives 0 for all of clock, clock_delta, clock_on, frame_number,
+   initial_clock, final_clock, initial_frame and final_frame (measured
+   with povray 3.7.0), the defaults of zr_parse_options_init(). */
 double zr__sdl_constant(const zr_sdl_parser *p, const char *name) {
+  const zr_parse_options *a = &p->anim;
   if (strcmp(name, "clock") == 0)
     return p->clock;
+  if (strcmp(name, "clock_delta") == 0)
+    return a->clock_delta;
+  if (strcmp(name, "clock_on") == 0)
+    return a->clock_on;
+  if (strcmp(name, "frame_number") == 0)
+    return a->frame_number;
+  if (strcmp(name, "initial_frame") == 0)
+    return a->initial_frame;
+  if (strcmp(name, "final_frame") == 0)
+    return a->final_frame;
+  if (strcmp(name, "initial_clock") == 0)
+    return a->initial_clock;
+  if (strcmp(name, "final_clock") == 0)
+    return a->final_clock;
   if (strcmp(name, "image_width") == 0)
     return p->image_width;
   if (strcmp(name, "image_height") == 0)
@@ -1141,6 +1157,40 @@ static void parser_free(zr_sdl_parser *p) {
   zr__sdl_symtab_free(&p->globals);
 }
 
+/* The caller's header include (POV-Ray's Include_Header, +HI): read
+   as if the scene's first line were #include "header", found where
+   #include looks. */
+static bool push_header(zr_sdl_parser *p) {
+  if (!p->ctx || !p->ctx->header_include)
+    return true;
+  int file = open_include(p, p->ctx->header_include, NULL, NULL,
+                          "header include file");
+  if (file < 0 || !zr__sdl_push_frame(p, file, NULL))
+    return false;
+  p->include_depth++;
+  return true;
+}
+
+/* The caller's zr_context_declare() floats, as "#declare name = value;"
+   before the scene's first line (POV-Ray's Declare=IDENTIFIER=FLOAT). */
+static bool declare_from_context(zr_sdl_parser *p) {
+  if (!p->ctx)
+    return true;
+  for (size_t i = 0; i < p->ctx->n_declared; i++) {
+    zr_sdl_value v;
+    memset(&v, 0, sizeof v);
+    v.kind = ZR_SDL_FLOAT;
+    v.num.dim = 1;
+    v.num.v[0] = p->ctx->declared_values[i];
+    if (zr__sdl_symtab_set(&p->globals, p->ctx->declared_names[i], &v) !=
+        ZR_OK) {
+      zr__sdl_error(p, ZR_ENOMEM, NULL, "out of memory");
+      return false;
+    }
+  }
+  return true;
+}
+
 static zr_status parse(zr_context *ctx, char *path, char *bytes, size_t size,
                        bool from_disk, zr_scene **out) {
   zr_sdl_parser p;
@@ -1149,6 +1199,12 @@ static zr_status parse(zr_context *ctx, char *path, char *bytes, size_t size,
   p.version = 3.7;
   p.image_width = ctx && ctx->render_width ? ctx->render_width : 320;
   p.image_height = ctx && ctx->render_height ? ctx->render_height : 240;
+  if (ctx)
+    p.anim = ctx->parse;
+  else
+    zr_parse_options_init(&p.anim);
+  p.clock = p.anim.clock;
+  p.version = p.anim.version;
   p.scene = zr__scene_new();
   if (!p.scene) {
     free(path);
@@ -1168,7 +1224,8 @@ static zr_status parse(zr_context *ctx, char *path, char *bytes, size_t size,
                          sizeof err);
   if (s != ZR_OK)
     zr__sdl_error(&p, s, s == ZR_ESYNTAX ? &err_loc : NULL, "%s", err);
-  else if (zr__sdl_push_frame(&p, index, NULL)) {
+  else if (declare_from_context(&p) && zr__sdl_push_frame(&p, index, NULL) &&
+           push_header(&p)) {
     p.start_token = T_START_SCENE;
     if (zr__pov_parse(&p) != 0 && p.status == ZR_OK)
       zr__sdl_error(&p, ZR_ENOMEM, NULL, "out of memory");

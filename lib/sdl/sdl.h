@@ -518,6 +518,7 @@ typedef struct zr_sdl_parser {
   /* Render settings the language can read (image_width, clock...). */
   int image_width, image_height;
   double clock;
+  zr_parse_options anim; /* the clock identifiers (zr_parse_options) */
   /* Where nested parses leave a value, a list or an argument's end. */
   zr_sdl_value nested_rvalue;
   zr_sdl_list nested_list;

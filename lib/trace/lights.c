@@ -341,7 +341,8 @@ static zr_rgb area_visibility(const zr_tracer *tr, const zr_light *light,
 
 zr_rgb zr__light_visibility(const zr_tracer *tracer, const zr_light *light,
                             zr_vec3 p, zr_vec3 lit_from) {
-  if (light->shadowless && !light->projected_through)
+  if ((light->shadowless || tracer->no_shadows) &&
+      !light->projected_through)
     return zr_rgb3(1, 1, 1);
   /* The rays an irradiance cache gathers with (gi_depth > 0) see an
      area light's shadow through the cache's blur: one ray to its
@@ -349,7 +350,7 @@ zr_rgb zr__light_visibility(const zr_tracer *tracer, const zr_light *light,
      area lights: 7.7 s of CPU against povray's 4.2 before, SSIM
      against povray unchanged to 0.001; bench/gi.sh). */
   if (light->area && (light->size1 > 1 || light->size2 > 1) &&
-      tracer->gi_depth == 0)
+      tracer->gi_depth == 0 && !tracer->point_area_lights)
     return area_visibility(tracer, light, p, lit_from);
   return sample_visibility(tracer, light, light->location, lit_from);
 }

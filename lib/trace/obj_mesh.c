@@ -571,7 +571,8 @@ zr_status zr__mesh_instance(zr_arena *arena, const zr_object **prim) {
   copy->u.mesh.textured = textured;
   for (size_t k = 0; k < m->n_textures; k++) {
     textured[k] = *copy;
-    textured[k].texture = m->textures[k];
+    textured[k].texture =
+        o->u.mesh.textures ? o->u.mesh.textures[k] : m->textures[k];
   }
   *prim = copy;
   return ZR_OK;

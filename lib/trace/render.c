@@ -55,6 +55,7 @@ ZR_API void zr_render_params_init(zr_render_params *p) {
   p->radiosity_only = 0;
   p->gi_cache = NULL;
   p->aa_method = 1;
+  p->quality = 9;
 }
 
 ZR_API void zr_render_stats_add(zr_render_stats *a,
@@ -457,6 +458,7 @@ ZR_API zr_status zr_render_pixels(const zr_scene *scene,
   job.tracer.path = 0.0;
   job.tracer.no_media = false;
   job.tracer.skip_direct = false;
+  zr__tracer_quality(&job.tracer, params->quality);
   zr__camera_media(scene, &job.camera_media);
   /* POV-Ray compares colours after undoing the scene's working gamma and
      applying its antialiasing gamma, 2.5 by default (reference,

@@ -456,6 +456,15 @@ zr_rgb zr__irid_tint(const zr_finish *f, const zr_settings *gs, zr_vec3 p,
 }
 
 /* Diffuse light and highlights from every light source. */
+void zr__tracer_quality(zr_tracer *tracer, int quality) {
+  tracer->no_shadows = quality < 4;
+  tracer->point_area_lights = quality < 5;
+  tracer->no_transmitted = quality < 6;
+  tracer->no_reflected = quality < 8;
+  if (quality < 9)
+    tracer->no_media = true;
+}
+
 static zr_rgb direct_light(const zr_tracer *tr, const surface *s,
                            double opacity) {
   const zr_finish *f = s->finish;
@@ -740,6 +749,8 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
     double tw = weight * rgb_max(trans);
     if (!(tw > gs->adc_bailout))
       return sum;
+    if (tr->no_transmitted)
+      return sum;
     tr->stats->reflected_rays++;
     zr_tracer rt = reflecting(tr);
     zr_rgb r = trace_secondary(&rt, above, mirror, level, tw, media);
@@ -747,7 +758,7 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
   }
 
   double rw = weight * rgb_max(refl);
-  if (rgb_max(refl) > 0.0 && rw > gs->adc_bailout) {
+  if (rgb_max(refl) > 0.0 && rw > gs->adc_bailout && !tr->no_reflected) {
     tr->stats->reflected_rays++;
     zr_tracer rt = reflecting(tr);
     zr_rgb r = trace_secondary(&rt, above, mirror, level, rw, media);
@@ -759,7 +770,7 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
     sum = zr_rgb_add(sum, zr_rgb_mul(refl, r));
   }
   double tw = weight * rgb_max(trans);
-  if (rgb_max(trans) > 0.0 && tw > gs->adc_bailout) {
+  if (rgb_max(trans) > 0.0 && tw > gs->adc_bailout && !tr->no_transmitted) {
     /* A ray that goes on unbent is not a new trace level (ZR_PASS_MAX),
        but like any secondary ray it is only spawned below the last
        level. */

@@ -79,7 +79,18 @@ typedef struct zr_tracer {
   bool no_media;
   /* A pretrace: camera-visible points (gi_depth 0) skip direct light. */
   bool skip_direct;
+  /* What a low quality leaves out (zr_render_params.quality, set by
+     zr__tracer_quality; all false at the default 9): shadows (below 4),
+     area lights as such (below 5, one shadow ray to the centre),
+     transmitted rays (below 6), reflected rays (below 8). */
+  bool no_shadows, point_area_lights, no_transmitted, no_reflected;
 } zr_tracer;
+
+/* Sets the tracer's quality flags and no_media for POV-Ray's +Q: 0 to 11
+   (reference 3.2.8.3; measured with povray 3.7.0, tests/test_quality.sh:
+   no shadows at 3, hard shadows at 4, area lights from 5, refraction
+   from 6 and reflection from 8; media from 9 as the reference says). */
+void zr__tracer_quality(zr_tracer *tracer, int quality);
 
 enum { ZR_HIDE_IMAGE = 1u << 0, ZR_HIDE_REFLECTION = 1u << 1 };
 
