@@ -91,6 +91,7 @@ bench: build
 	bench/run.sh $(BUILD)
 	bench/conformance.sh $(BUILD) all || test $$? = 77
 	bench/gi_error.sh $(BUILD) || test $$? = 77
+	bench/peers.sh $(BUILD) || test $$? = 77
 
 clean:
 	-$(MAKE) -C $(BUILD) clean

@@ -58,6 +58,7 @@ typedef enum opt_key {
   K_LOOP_LIMIT,
   K_MEMORY_LIMIT,
   K_FILE_LIMIT,
+  K_PNG_LEVEL,
   K_IGNORED,      /* display options: zrcube opens no window */
   K_OUTPUT_ON,    /* optional format */
   K_OUTPUT_OFF,   /* optional format, kept for later */
@@ -153,6 +154,7 @@ void zr__cli_init(zr_cli_options *o, const zr_render_params *defaults) {
   o->write_output = 1;
   o->loop_limit = ZR_DEFAULT_WORK_LIMIT;
   o->file_limit = ZR_DEFAULT_FILE_LIMIT;
+  o->png_level = ZR_DEFAULT_PNG_LEVEL;
   /* The library's defaults are the command line's (issue 11). */
   zr_radiosity_params_init(&o->rad, NULL);
   o->gi = ZR_GI_AUTO;
@@ -912,6 +914,11 @@ static int apply(const arg_ctx *c, opt_key key, const char *value) {
     }
     return 0;
   }
+  case K_PNG_LEVEL:
+    if (!value || value[0] < '0' || value[0] > '9' || value[1])
+      return fail(c, "'%s': --png-level must be 0 to 9", c->what);
+    o->png_level = value[0] - '0';
+    return 0;
   case K_IGNORED:
     return 0;
   case K_OUTPUT_ON:
@@ -1159,6 +1166,7 @@ static const long_option long_options[] = {
     {"max-work", K_LOOP_LIMIT, L_REQUIRED},
     {"memory-limit", K_MEMORY_LIMIT, L_REQUIRED},
     {"max-file-size", K_FILE_LIMIT, L_REQUIRED},
+    {"png-level", K_PNG_LEVEL, L_REQUIRED},
     {"radiosity", K_RADIOSITY, L_NONE},
     {"bf-eps", K_BF_EPS, L_REQUIRED},
     {"area-eps", K_AREA_EPS, L_REQUIRED},
@@ -1865,6 +1873,8 @@ const char *zr__cli_usage(void) {
       "                               physical memory; 0: no limit)\n"
       "  --max-file-size=SIZE         the largest file a scene may read\n"
       "                               (default 1G; 0: no limit)\n"
+      "  --png-level=N                PNG compression, 0 (none) to 9\n"
+      "                               (smallest); default 1\n"
       "  --read-path=DIR              let scenes read below DIR too\n"
       "  --write-path=DIR             let scenes write below DIR too\n"
       "  --io-restrictions=MODE       restricted (default: scenes read\n"

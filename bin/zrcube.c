@@ -417,6 +417,7 @@ static zr_status make_context(run *r) {
   /* Scenes read image_width and image_height while they are parsed. */
   zr_context_set_work_limit(r->ctx, r->opts.loop_limit);
   zr_context_set_file_limit(r->ctx, r->opts.file_limit);
+  zr_context_set_png_level(r->ctx, r->opts.png_level);
   if (r->opts.memory_limit_given)
     zr_context_set_memory_limit(r->ctx, r->opts.memory_limit);
   s = zr_context_set_render_size(r->ctx, r->opts.params.width,

@@ -209,6 +209,10 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %token <str> T_STRING "string"
 %token <str> T_IDENTIFIER "undeclared identifier"
 %token <str> T_UNSUPPORTED "unsupported keyword"
+/* The three plain vectors of "triangle { <a>, <b>, <c> }", read from
+   the file's bytes as one token (lib/sdl/tokens.c); the value points at
+   them in the file. */
+%token <str> T_TRIANGLE_RUN "triangle's vertices"
 %token <decl> T_DECL_NAME "identifier"
 %token <value> T_FLOAT_ID "float identifier"
 %token <value> T_VECTOR_ID "vector identifier"
@@ -1529,6 +1533,12 @@ object_head:
       /* A x + B y + C z = D |<A,B,C>| (reference manual, "Plane"). */
       $$->u.plane.normal = zr_v3_norm($$->u.plane.normal);
     }
+| T_TRIANGLE '{' T_TRIANGLE_RUN
+    {
+      TRY($$ = zr__sdl_object_new(p, ZR_OBJ_TRIANGLE, &@1));
+      TRY(zr__sdl_triangle_run(p, $3, &@3, $$->u.triangle.p));
+      zr__sdl_degenerate_triangle(p, $$->u.triangle.p, &@1);
+    }
 | T_TRIANGLE '{' expr comma expr comma expr
     {
       TRY($$ = zr__sdl_object_new(p, ZR_OBJ_TRIANGLE, &@1));
@@ -2003,6 +2013,8 @@ julia_function:
    the triangles, then the mesh's own modifiers, then the object's. */
 mesh_head:
   T_MESH '{'           { TRY($$ = zr__sdl_mesh_new(p, false, &@1)); }
+| mesh_head T_TRIANGLE '{' T_TRIANGLE_RUN '}'
+    { TRY(zr__sdl_mesh_triangle_run(p, $1, $4, &@4)); $$ = $1; }
 | mesh_head T_TRIANGLE '{' expr comma expr comma expr mesh_texture '}'
     {
       zr_sdl_expr v[3] = {$4, $6, $8};
@@ -3922,6 +3934,7 @@ int zr__pov_lex(ZR__POV_STYPE *lval, zr_sdl_loc *lloc, zr_sdl_parser *p) {
   case T_STRING:
   case T_IDENTIFIER:
   case T_UNSUPPORTED:
+  case T_TRIANGLE_RUN:
     lval->str = v.str;
     break;
   case T_DECL_NAME:

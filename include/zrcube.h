@@ -283,6 +283,14 @@ ZR_API unsigned long long zr_context_memory_peak(const zr_context *ctx);
 #define ZR_DEFAULT_FILE_LIMIT (1ULL << 30)
 ZR_API void zr_context_set_file_limit(zr_context *ctx,
                                       unsigned long long bytes);
+/*
+ * The zlib compression level of the PNG images written with ctx, 0 (no
+ * compression) to 9 (smallest, slowest); ZR_EINVAL outside.  Default
+ * ZR_DEFAULT_PNG_LEVEL, chosen so that writing costs a small part of a
+ * small render (issue 13, measured in bench/png_level.sh).
+ */
+#define ZR_DEFAULT_PNG_LEVEL 1
+ZR_API zr_status zr_context_set_png_level(zr_context *ctx, int level);
 /* The message of the last error reported through ctx ("" when none). */
 ZR_API const char *zr_context_last_error(const zr_context *ctx);
 

@@ -247,6 +247,22 @@ static void test_cli_options_bad_values(void **state) {
                "--verbose=1");
 }
 
+static void test_cli_options_png_level(void **state) {
+  (void)state;
+  zr_cli_options o;
+  char err[512];
+  assert_int_equal(PARSE(&o, err, "s.pov"), 0);
+  assert_int_equal(o.png_level, ZR_DEFAULT_PNG_LEVEL);
+  zr__cli_free(&o);
+  assert_int_equal(PARSE(&o, err, "s.pov", "--png-level=9"), 0);
+  assert_int_equal(o.png_level, 9);
+  zr__cli_free(&o);
+  EXPECT_ERROR("zrcube: '--png-level=10': --png-level must be 0 to 9",
+               "--png-level=10");
+  EXPECT_ERROR("zrcube: '--png-level=x': --png-level must be 0 to 9",
+               "--png-level=x");
+}
+
 static void test_cli_options_unknown_and_unsupported(void **state) {
   (void)state;
   EXPECT_ERROR("zrcube: unknown option '+Z1' (try 'zrcube --help')", "+Z1");
@@ -677,6 +693,7 @@ int main(void) {
       cmocka_unit_test(test_cli_options_long_options),
       cmocka_unit_test(test_cli_options_ini_style),
       cmocka_unit_test(test_cli_options_ini_file),
+      cmocka_unit_test(test_cli_options_png_level),
       cmocka_unit_test(test_cli_options_bad_values),
       cmocka_unit_test(test_cli_options_unknown_and_unsupported),
       cmocka_unit_test(test_cli_options_output_names),

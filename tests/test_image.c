@@ -812,6 +812,65 @@ static void test_image_write_is_atomic(void **state) {
   zr_image_free(img);
 }
 
+/* The 8-bit encoder gives zr__encode_sample's code for every float:
+   checked on a comb over all floats in (0, 1) and on every float within
+   300 of each code boundary, at gammas 1 and 2.2. */
+static void test_image_encoder8_same_codes(void **state) {
+  (void)state;
+  const double gammas[2] = {1.0, 2.2};
+  for (int g = 0; g < 2; g++) {
+    zr_encoder8 e;
+    zr__encoder8_init(&e, gammas[g]);
+    uint32_t one;
+    float f1 = 1.0f;
+    memcpy(&one, &f1, sizeof one);
+    for (uint32_t b = 0; b <= one + 8; b += 4093) {
+      float v;
+      memcpy(&v, &b, sizeof v);
+      assert_int_equal(zr__encoder8_code(&e, v),
+                       zr__encode_sample(v, gammas[g], 255));
+    }
+    for (int k = 1; k < 256; k++)
+      for (int d = -300; d <= 300; d++) {
+        uint32_t b = e.first[k] + (uint32_t)d;
+        float v;
+        memcpy(&v, &b, sizeof v);
+        assert_int_equal(zr__encoder8_code(&e, v),
+                         zr__encode_sample(v, gammas[g], 255));
+      }
+    const float odd[] = {-1.0f, 0.0f, -0.0f, 1.0f, 2.0f, NAN, INFINITY};
+    for (size_t i = 0; i < sizeof odd / sizeof *odd; i++)
+      assert_int_equal(zr__encoder8_code(&e, odd[i]),
+                       zr__encode_sample(odd[i], gammas[g], 255));
+  }
+}
+
+/* The PNG level changes the bytes' size, never the pixels: level 0
+   stores the rows, 9 compresses them (a smooth ramp shrinks a lot). */
+static void test_image_png_level(void **state) {
+  fixture *fx = *state;
+  assert_int_equal(zr_context_set_png_level(fx->ctx, 10), ZR_EINVAL);
+  assert_int_equal(zr_context_set_png_level(fx->ctx, -1), ZR_EINVAL);
+  zr_image *img = make_test_image(64, 64);
+  const char *names[2] = {"l0.png", "l9.png"};
+  long size[2];
+  for (int k = 0; k < 2; k++) {
+    assert_int_equal(zr_context_set_png_level(fx->ctx, 9 * k), ZR_OK);
+    const char *path = in_dir(fx, names[k]);
+    assert_int_equal(zr_image_write(fx->ctx, img, path, ZR_FORMAT_PNG8, 1.0),
+                     ZR_OK);
+    size[k] = file_size(path);
+    zr_image *back = NULL;
+    assert_int_equal(zr_image_read(fx->ctx, path, &back), ZR_OK);
+    assert_encoded_close(img, back, 1.0 / 255);
+    zr_image_free(back);
+  }
+  /* Level 0: the 64 rows of 1 + 192 bytes, stored, plus headers. */
+  assert_true(size[0] > 64 * 193);
+  assert_true(size[1] < size[0]);
+  zr_image_free(img);
+}
+
 static void test_image_null_context_is_silent(void **state) {
   (void)state;
   zr_image *img = NULL;
@@ -825,6 +884,9 @@ int main(void) {
       cmocka_unit_test(test_image_new_checks_size),
       cmocka_unit_test(test_image_format_from_name),
       cmocka_unit_test(test_image_srgb_known_values),
+      cmocka_unit_test(test_image_encoder8_same_codes),
+      cmocka_unit_test_setup_teardown(test_image_png_level, setup,
+                                      teardown),
       cmocka_unit_test_setup_teardown(test_image_png8_round_trip, setup,
                                       teardown),
       cmocka_unit_test_setup_teardown(test_image_png16_round_trip, setup,

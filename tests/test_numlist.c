@@ -282,11 +282,86 @@ static void test_numlist_error_places(void **state) {
   zr__strbuf_free(&b);
 }
 
+/* "triangle { <a>, <b>, <c> }" becomes triangle, '{', one run, '}';
+   any other body keeps its tokens. */
+static void test_numlist_triangle_run_token(void **state) {
+  (void)state;
+  const char *text = "mesh { triangle { <0,0,0>, <1,0,0>,\n <0,1,0> }\n"
+                     " triangle { <0,0,0>, <1,0,0>, <0,1,0> texture {} }\n"
+                     " triangle { <0,0,0>, <1,0,0>, <0,1,0>, } }\n";
+  size_t n = strlen(text);
+  char *bytes = malloc(n + 1);
+  char *path = strdup("t.pov");
+  assert_non_null(bytes);
+  assert_non_null(path);
+  memcpy(bytes, text, n + 1);
+  zr_sdl_file file;
+  zr_sdl_loc err_loc;
+  char err[200];
+  assert_int_equal(zr__sdl_file_lex(&file, 0, path, bytes, n, &err_loc, err,
+                                    sizeof err),
+                   ZR_OK);
+  assert_int_equal(file.tokens[0].kind, T_MESH);
+  assert_int_equal(file.tokens[2].kind, T_TRIANGLE);
+  assert_int_equal(file.tokens[4].kind, T_TRIANGLE_RUN);
+  assert_int_equal(file.tokens[4].line, 1);
+  assert_int_equal(file.tokens[4].column, 19);
+  assert_int_equal(file.tokens[5].kind, '}');
+  assert_int_equal(file.tokens[5].line, 2);
+  assert_int_equal(file.tokens[5].column, 10);
+  /* The second has a texture and the third a trailing comma: tokens. */
+  assert_int_equal(file.tokens[6].kind, T_TRIANGLE);
+  assert_int_equal(file.tokens[8].kind, '<');
+  for (size_t i = 9; i < file.n_tokens; i++)
+    assert_int_not_equal(file.tokens[i].kind, T_TRIANGLE_RUN);
+  zr__sdl_file_free(&file);
+}
+
+/* Triangles read as runs make the same mesh and the same triangle
+   objects, bit for bit, as the grammar's expressions (+0 defeats the
+   run), and their errors keep their places. */
+static void test_numlist_triangle_run_same_as_grammar(void **state) {
+  fixture *f = *state;
+  static const char *const fmt[2] = {
+      "mesh { triangle { <%d.1, -0.3e-2, %d>, <1.7, %d, - 2>,\n"
+      " <0.1, 0.2, %d> }\n"
+      "  triangle { <3,3,3>, <4,3,3>, <3,4,3> } }\n"
+      "triangle { <%d, 0.1, 0.2>, <1, 2, 3>, <4, 5, 6> }\n",
+      "mesh { triangle { <%d.1, -0.3e-2, %d>, <1.7, %d, - 2>,\n"
+      " <0.1, 0.2, %d> + 0 }\n"
+      "  triangle { <3,3,3>, <4,3,3>, <3,4,3> + 0 } }\n"
+      "triangle { <%d, 0.1, 0.2>, <1, 2, 3>, <4, 5, 6> + 0 }\n"};
+  zr_vec3 vertices[2][6], corners[2][3];
+  for (int k = 0; k < 2; k++) {
+    char text[400];
+    snprintf(text, sizeof text, fmt[k], 5, 6, 7, 8, 9);
+    zr_scene *s = good(f, text);
+    const struct zr_mesh *m = mesh_of(s, 0);
+    assert_int_equal(m->n_faces, 2);
+    assert_int_equal(m->n_vertices, 6);
+    memcpy(vertices[k], m->vertices, sizeof vertices[k]);
+    assert_int_equal(s->primitives[1]->kind, ZR_OBJ_TRIANGLE);
+    memcpy(corners[k], s->primitives[1]->u.triangle.p, sizeof corners[k]);
+  }
+  assert_memory_equal(vertices[0], vertices[1], sizeof vertices[0]);
+  assert_memory_equal(corners[0], corners[1], sizeof corners[0]);
+  assert_true(corners[0][0].x == 9.0 && corners[0][2].z == 6.0);
+  bad(f, "triangle { <0,0,0>, <1,0,0>, <0,1,0> }\n"
+         "bogus\n",
+      ZR_EUNDEFINED, "undefined identifier 'bogus'",
+      "t.pov:2:1: error: undefined identifier 'bogus'\n"
+      "    2 | bogus\n"
+      "      | ^~~~~\n");
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_numlist_numbers_like_strtod),
       cmocka_unit_test(test_numlist_stops_where_the_grammar_starts),
       cmocka_unit_test(test_numlist_lexer_keeps_one_token),
+      cmocka_unit_test(test_numlist_triangle_run_token),
+      cmocka_unit_test_setup_teardown(
+          test_numlist_triangle_run_same_as_grammar, setup, teardown),
       cmocka_unit_test_setup_teardown(test_numlist_same_mesh_as_the_grammar,
                                       setup, teardown),
       cmocka_unit_test_setup_teardown(

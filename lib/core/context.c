@@ -40,6 +40,7 @@ ZR_API zr_status zr_context_new(zr_context **out) {
     return ZR_ENOMEM;
   ctx->work_limit = ZR_DEFAULT_WORK_LIMIT;
   ctx->file_limit = ZR_DEFAULT_FILE_LIMIT;
+  ctx->png_level = ZR_DEFAULT_PNG_LEVEL;
   zr_parse_options_init(&ctx->parse);
   ctx->budget = zr__budget_new(zr__budget_default_limit());
   if (!ctx->budget) {
@@ -47,6 +48,13 @@ ZR_API zr_status zr_context_new(zr_context **out) {
     return ZR_ENOMEM;
   }
   *out = ctx;
+  return ZR_OK;
+}
+
+ZR_API zr_status zr_context_set_png_level(zr_context *ctx, int level) {
+  if (level < 0 || level > 9)
+    return ZR_EINVAL;
+  ctx->png_level = level;
   return ZR_OK;
 }
 

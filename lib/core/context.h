@@ -36,6 +36,7 @@ struct zr_context {
   unsigned long long work_limit;   /* parse steps; 0: none */
   unsigned long long file_limit;   /* bytes of one file read; 0: none */
   int no_scene_writes;             /* zr_context_set_scene_writes(0) */
+  int png_level;                   /* zlib level of PNG output, 0 to 9 */
   struct zr_budget *budget;        /* the run's memory (core/budget.h) */
   char last_error[1024];
   unsigned errors;   /* errors reported so far */

@@ -283,6 +283,62 @@ unsigned zr__encode_sample(float value, double assumed_gamma,
   return (unsigned)lround(zr__srgb_encode(v) * maxval);
 }
 
+static uint32_t float_bits(float f) {
+  uint32_t u;
+  memcpy(&u, &f, sizeof u);
+  return u;
+}
+
+static float bits_float(uint32_t u) {
+  float f;
+  memcpy(&f, &u, sizeof f);
+  return f;
+}
+
+void zr__encoder8_init(zr_encoder8 *e, double assumed_gamma) {
+  e->assumed_gamma = assumed_gamma;
+  e->zero = zr__encode_sample(0.0f, assumed_gamma, 255);
+  e->one = zr__encode_sample(1.0f, assumed_gamma, 255);
+  /* Positive floats order as their bits do. */
+  const uint32_t lo_bits = 1, one_bits = float_bits(1.0f);
+  e->first[0] = 0;
+  e->first[256] = one_bits;
+  for (unsigned k = 1; k < 256; k++) {
+    uint32_t lo = lo_bits, hi = one_bits; /* the answer is in [lo, hi] */
+    if (lo < e->first[k - 1])
+      lo = e->first[k - 1];
+    while (lo < hi) {
+      uint32_t mid = lo + (hi - lo) / 2;
+      if (zr__encode_sample(bits_float(mid), assumed_gamma, 255) >= k)
+        hi = mid;
+      else
+        lo = mid + 1;
+    }
+    e->first[k] = lo;
+  }
+  unsigned k = 0;
+  for (uint32_t i = 0; i < sizeof e->start; i++) {
+    while (k < 255 && e->first[k + 1] <= i << 16)
+      k++;
+    e->start[i] = (uint8_t)k;
+  }
+}
+
+unsigned zr__encoder8_code(const zr_encoder8 *e, float value) {
+  if (!(value > 0.0f))
+    return e->zero;
+  if (value >= 1.0f)
+    return e->one;
+  uint32_t b = float_bits(value);
+  /* The largest k with first[k] <= b. */
+  unsigned lo = e->start[b >> 16];
+  while (lo < 255 && e->first[lo + 1] <= b)
+    lo++;
+  if (b - e->first[lo] <= 2 || e->first[lo + 1] - b <= 2)
+    return zr__encode_sample(value, e->assumed_gamma, 255);
+  return lo;
+}
+
 /* ---- choosing a codec ---- */
 
 static const char *extension(const char *path) {

@@ -20,6 +20,7 @@
 
 #include <stdbool.h>
 #include <stddef.h>
+#include <stdint.h>
 #include <stdio.h>
 
 #include "zrcube.h"
@@ -91,6 +92,30 @@ float *zr__decode_table(unsigned maxval, zr_transfer transfer,
  */
 unsigned zr__encode_sample(float value, double assumed_gamma,
                            unsigned maxval);
+
+/*
+ * zr__encode_sample for 8-bit codes without a pow() per sample, giving
+ * the same code for every float: first[k] is the smallest float in
+ * (0, 1) whose code is at least k, found once by bisection over the
+ * floats' bits with zr__encode_sample itself, and a sample is placed
+ * between two of them from the code at the start of its run of 2^16
+ * floats (the top bits of the float index a table; a run spans a few
+ * codes at most), then a short walk.  The rounded computation can only
+ * disagree with the exact, increasing function for floats whose
+ * pre-rounding value is within ~1e-13 of a half code, far below one
+ * float step, so a sample within two floats of a boundary is simply
+ * encoded the slow way (issue 13: the per-sample pow() was most of a
+ * PNG write).
+ */
+typedef struct zr_encoder8 {
+  double assumed_gamma;
+  unsigned zero, one;       /* the codes of 0 and 1 */
+  uint32_t first[257];      /* bits of first[k]; first[256]: of 1.0f */
+  /* start[b >> 16]: the code of the float with bits b & ~0xffff. */
+  uint8_t start[(0x3f800000 >> 16) + 1];
+} zr_encoder8;
+void zr__encoder8_init(zr_encoder8 *e, double assumed_gamma);
+unsigned zr__encoder8_code(const zr_encoder8 *e, float value);
 
 /* Codecs.  name is the file name that messages quote. */
 zr_status zr__png_decode(zr_context *ctx, const char *name,

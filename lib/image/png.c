@@ -23,6 +23,7 @@
  * calls setjmp, so no automatic variable of that function is relied upon
  * after the jump (C11 7.13.2.1).
  */
+#include <errno.h>
 #include <png.h>
 #include <setjmp.h>
 #include <stdlib.h>
@@ -237,6 +238,8 @@ static zr_status encode_rows(png_job *job, const zr_image *image, int bits,
   if (setjmp(png_jmpbuf(job->png)))
     return ZR_EIO;
   png_init_io(job->png, stream);
+  png_set_compression_level(job->png, job->ctx ? job->ctx->png_level
+                                               : ZR_DEFAULT_PNG_LEVEL);
   png_set_IHDR(job->png, job->info, (png_uint_32)image->width,
                (png_uint_32)image->height, bits, PNG_COLOR_TYPE_RGB,
                PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
@@ -253,10 +256,15 @@ static zr_status encode_rows(png_job *job, const zr_image *image, int bits,
     return ZR_ENOMEM;
   }
   unsigned maxval = bits == 16 ? 65535u : 255u;
+  zr_encoder8 enc;
+  if (bits == 8)
+    zr__encoder8_init(&enc, assumed_gamma);
   for (int y = 0; y < image->height; y++) {
     const float *src = image->pixels + (size_t)y * image->width * 3;
     for (size_t i = 0; i < (size_t)image->width * 3; i++) {
-      unsigned code = zr__encode_sample(src[i], assumed_gamma, maxval);
+      unsigned code = bits == 8 ? zr__encoder8_code(&enc, src[i])
+                                : zr__encode_sample(src[i], assumed_gamma,
+                                                    maxval);
       if (bits == 16) {
         job->rows[2 * i] = (unsigned char)(code >> 8);
         job->rows[2 * i + 1] = (unsigned char)(code & 0xff);
@@ -289,7 +297,14 @@ zr_status zr__png_encode(zr_context *ctx, const char *name,
   } else {
     s = encode_rows(&job, image, bits, assumed_gamma, stream);
   }
-  if (s != ZR_OK)
+  int write_errno = errno;
+  /* A failed write (a full disk, ulimit -f) says why, as a failed flush
+     does (image.c): with fast compression the data outgrow the stream's
+     buffer and reach the file while the rows are written. */
+  if (s != ZR_OK && ferror(stream) && write_errno != 0)
+    s = zr__diag(ctx, ZR_DIAG_ERROR, s, NULL, "%s: write failed: %s", name,
+                 strerror(write_errno));
+  else if (s != ZR_OK)
     s = zr__diag(ctx, ZR_DIAG_ERROR, s, NULL, "%s: cannot write PNG: %s",
                  name, job.message);
   png_destroy_write_struct(job.png ? &job.png : NULL,

@@ -264,12 +264,14 @@ zr_status zr__ppm_encode(zr_context *ctx, const char *name,
   if (!row)
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s", name,
                     zr_status_str(ZR_ENOMEM));
+  zr_encoder8 enc;
+  zr__encoder8_init(&enc, assumed_gamma);
   int ok = fprintf(stream, "P6\n%d %d\n255\n", image->width,
                    image->height) > 0;
   for (int y = 0; ok && y < image->height; y++) {
     const float *src = image->pixels + (size_t)y * row_len;
     for (size_t i = 0; i < row_len; i++)
-      row[i] = (unsigned char)zr__encode_sample(src[i], assumed_gamma, 255);
+      row[i] = (unsigned char)zr__encoder8_code(&enc, src[i]);
     ok = fwrite(row, 1, row_len, stream) == row_len;
   }
   free(row);

@@ -194,6 +194,11 @@ static bool face_uvs(zr_sdl_parser *p, struct zr_mesh *m, size_t f,
   return true;
 }
 
+static bool add_triangle(zr_sdl_parser *p, struct zr_mesh *m,
+                         const zr_vec3 v[3], const zr_vec3 *n,
+                         const zr_vec3 *uv, const zr_texture *texture,
+                         const zr_sdl_loc *loc);
+
 bool zr__sdl_mesh_triangle(zr_sdl_parser *p, zr_object *o,
                            const zr_sdl_expr vertices[3],
                            const zr_sdl_loc vertex_locs[3],
@@ -201,7 +206,6 @@ bool zr__sdl_mesh_triangle(zr_sdl_parser *p, zr_object *o,
                            const zr_sdl_loc *normal_locs,
                            const zr_sdl_expr *uvs, const zr_sdl_loc *uv_locs,
                            const zr_texture *texture) {
-  struct zr_mesh *m = &build_of(o)->mesh;
   zr_vec3 v[3], n[3], uv[3];
   for (int k = 0; k < 3; k++) {
     if (!zr__sdl_want_vector(p, &vertices[k], &vertex_locs[k], &v[k]))
@@ -212,8 +216,46 @@ bool zr__sdl_mesh_triangle(zr_sdl_parser *p, zr_object *o,
     if (uvs && !zr__sdl_want_vector(p, &uvs[k], &uv_locs[k], &uv[k]))
       return false;
   }
+  return add_triangle(p, &build_of(o)->mesh, v, normals ? n : NULL,
+                      uvs ? uv : NULL, texture, &vertex_locs[0]);
+}
+
+bool zr__sdl_triangle_run(zr_sdl_parser *p, const char *run,
+                          const zr_sdl_loc *loc, zr_vec3 out[3]) {
+  /* The lexer found exactly three items here; the same reader takes
+     them again (numlist.c). */
+  const zr_sdl_file *f = &p->files[loc->file];
+  zr_sdl_numreader r = {f->bytes, (size_t)(run - f->bytes), f->size,
+                        loc->line, loc->column, false, false};
+  for (int k = 0; k < 3; k++) {
+    double v[3];
+    int dim, line, column;
+    if (!zr__sdl_numlist_item(&r, v, &dim, &line, &column)) {
+      zr__sdl_error(p, ZR_ESYNTAX, loc, "the lexer's triangle vertices "
+                    "do not read again");
+      return false;
+    }
+    out[k] = zr_v3(v[0], v[1], v[2]);
+  }
+  return true;
+}
+
+bool zr__sdl_mesh_triangle_run(zr_sdl_parser *p, zr_object *o,
+                               const char *run, const zr_sdl_loc *loc) {
+  zr_vec3 v[3];
+  return zr__sdl_triangle_run(p, run, loc, v) &&
+         add_triangle(p, &build_of(o)->mesh, v, NULL, NULL, NULL, loc);
+}
+
+/* Adds a face of corners v, with corner normals n and uv coordinates
+   uv when not NULL; loc is where "too many triangles" points. */
+static bool add_triangle(zr_sdl_parser *p, struct zr_mesh *m,
+                         const zr_vec3 v[3], const zr_vec3 *n,
+                         const zr_vec3 *uv, const zr_texture *texture,
+                         const zr_sdl_loc *loc) {
+  const bool normals = n != NULL;
   if (m->n_faces > UINT32_MAX / 4) {
-    zr__sdl_error(p, ZR_ELIMIT, &vertex_locs[0], "too many triangles");
+    zr__sdl_error(p, ZR_ELIMIT, loc, "too many triangles");
     return false;
   }
   size_t f = m->n_faces, old_cap = m->cap_faces;
@@ -235,7 +277,7 @@ bool zr__sdl_mesh_triangle(zr_sdl_parser *p, zr_object *o,
       if (!add_normal(p, m, flat, &m->face_normals[g][k]))
         return false;
   }
-  if (!face_uvs(p, m, f, old_cap, uvs ? uv : NULL))
+  if (!face_uvs(p, m, f, old_cap, uv))
     return false;
   if ((texture || m->face_textures) &&
       !face_extra(p, (uint32_t(**)[3])&m->face_textures, old_cap,

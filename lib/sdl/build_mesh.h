@@ -35,6 +35,13 @@ bool zr__sdl_mesh_triangle(zr_sdl_parser *p, zr_object *o,
                            const zr_sdl_loc *normal_locs,
                            const zr_sdl_expr *uvs, const zr_sdl_loc *uv_locs,
                            const zr_texture *texture);
+/* The corners of a T_TRIANGLE_RUN token (run points at its bytes, loc
+   is the token's), for a triangle object or, with the _mesh_ form, as a
+   face of mesh o with no texture of its own. */
+bool zr__sdl_triangle_run(zr_sdl_parser *p, const char *run,
+                          const zr_sdl_loc *loc, zr_vec3 out[3]);
+bool zr__sdl_mesh_triangle_run(zr_sdl_parser *p, zr_object *o,
+                               const char *run, const zr_sdl_loc *loc);
 bool zr__sdl_mesh_inside_vector(zr_sdl_parser *p, zr_object *o,
                                 const zr_sdl_expr *e, const zr_sdl_loc *loc);
 /* Checks the indices and builds the mesh's BVH; after the last item. */

@@ -662,8 +662,9 @@ static bool is_char(const zr_sdl_token *t, int ch) { return t->kind == ch; }
 /* A reserved word's spelling (keyword or directive), else NULL. */
 static const char *word_of(const zr_sdl_token *t) {
   if (t->kind < 256 || t->kind == T_NUMBER || t->kind == T_STRING ||
-      t->kind == T_IDENTIFIER)
-    return NULL;
+      t->kind == T_IDENTIFIER || t->kind == T_TRIANGLE_RUN ||
+      t->kind == ZR_SDL_NUMBER_LIST)
+    return NULL; /* runs of plain items point into the file's bytes */
   return t->v.str; /* NULL for "<=" and the like */
 }
 
@@ -688,6 +689,8 @@ static void describe(const zr_sdl_token *t, char *buf, size_t size) {
     snprintf(buf, size, "string");
   else if (t->kind == T_IDENTIFIER)
     snprintf(buf, size, "'%s'", t->v.str);
+  else if (t->kind == T_TRIANGLE_RUN || t->kind == ZR_SDL_NUMBER_LIST)
+    snprintf(buf, size, "vectors");
   else if (t->kind >= 256 && t->v.str)
     snprintf(buf, size, "'%s'", t->v.str);
   else if (t->kind >= 256)

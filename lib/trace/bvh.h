@@ -7,6 +7,7 @@
 #define ZR_TRACE_BVH_H
 
 #include <stdbool.h>
+#include <stdint.h>
 
 #include "scene/scene.h"
 #include "trace/intersect.h"
@@ -35,6 +36,16 @@ bool zr__bvh_nearest(const struct zr_bvh *bvh, const zr_ray *ray,
 typedef bool (*zr_crossing_fn)(const zr_hit *hit, void *user);
 bool zr__bvh_all(const struct zr_bvh *bvh, const zr_ray *ray, double tmin,
                  double tmax, zr_crossing_fn visit, void *user);
+
+/*
+ * The positions in scene->primitives of the primitives whose box holds
+ * p, and of every unbounded one, ascending: the only ones that can hold
+ * p inside (zr__inside), found in O(log n) rather than by asking all n.
+ * Writes at most cap of them to out and returns how many there are
+ * (more than cap: the caller asks again with room for them).
+ */
+size_t zr__bvh_point_candidates(const struct zr_bvh *bvh, zr_vec3 p,
+                                uint32_t *out, size_t cap);
 
 /*
  * The sweep of the binned surface area heuristic (Wald 2007), shared by

@@ -38,6 +38,7 @@
 #include <string.h>
 
 #include "radiosity/radiosity.h"
+#include "trace/bvh.h"
 #include "trace/render.h"
 #include "trace/shade.h"
 
