@@ -20,6 +20,9 @@ struct zr_image {
   int width;
   int height;
   float *pixels; /* width * height * 3 linear floats */
+  /* NULL, or width * height alpha values in [0, 1] (1 opaque), made by
+     zr_image_add_alpha for the writers that store it. */
+  float *alpha;
   /* Palette files (PNG colour type 3) only, else NULL and 0: the palette
      entry of each pixel, which image_map's "filter INDEX, AMOUNT" and
      "transmit INDEX, AMOUNT" refer to. */
@@ -70,7 +73,7 @@ zr_status zr__png_decode(zr_context *ctx, const char *name,
                          const unsigned char *bytes, size_t size,
                          zr_image **out);
 zr_status zr__png_encode(zr_context *ctx, const char *name,
-                         const zr_image *image, int bits,
+                         const zr_image *image, int bits, bool alpha,
                          double assumed_gamma, FILE *stream);
 zr_status zr__jpeg_decode(zr_context *ctx, const char *name,
                           const unsigned char *bytes, size_t size,
@@ -106,6 +109,41 @@ zr_status zr__ppm_encode(zr_context *ctx, const char *name,
                          FILE *stream);
 zr_status zr__pfm_encode(zr_context *ctx, const char *name,
                          const zr_image *image, FILE *stream);
+
+/* Writers added for issue 12, one file each.  e is the caller's
+   encoding (format already resolved, never AUTO). */
+zr_status zr__jpeg_encode(zr_context *ctx, const char *name,
+                          const zr_image *image, const zr_image_encoding *e,
+                          FILE *stream);
+zr_status zr__tga_encode(zr_context *ctx, const char *name,
+                         const zr_image *image, const zr_image_encoding *e,
+                         FILE *stream);
+zr_status zr__hdr_encode(zr_context *ctx, const char *name,
+                         const zr_image *image, const zr_image_encoding *e,
+                         FILE *stream);
+zr_status zr__exr_encode(zr_context *ctx, const char *name,
+                         const zr_image *image, const zr_image_encoding *e,
+                         FILE *stream);
+/* Readers added for issue 12 (hdr.c, exr.c, bmp.c, tiff.c). */
+bool zr__hdr_looks_like(const unsigned char *bytes, size_t size);
+zr_status zr__hdr_decode(zr_context *ctx, const char *name,
+                         const unsigned char *bytes, size_t size,
+                         zr_image **out);
+bool zr__exr_looks_like(const unsigned char *bytes, size_t size);
+zr_status zr__exr_decode(zr_context *ctx, const char *name,
+                         const unsigned char *bytes, size_t size,
+                         zr_image **out);
+/* Whether this build reads and writes OpenEXR (configure's check). */
+bool zr__exr_available(void);
+zr_status zr__bmp_decode(zr_context *ctx, const char *name,
+                         const unsigned char *bytes, size_t size,
+                         zr_image **out);
+zr_status zr__tiff_decode(zr_context *ctx, const char *name,
+                          const unsigned char *bytes, size_t size,
+                          zr_image **out);
+/* The value stored for linear light by the float formats (HDR, EXR):
+   the working value raised to assumed_gamma, negatives and NaN 0. */
+float zr__linear_sample(float value, double assumed_gamma);
 
 /*
  * A height field's samples (lib/image/heights.c): the stored values of
