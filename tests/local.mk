@@ -133,3 +133,16 @@ EXTRA_DIST += tests/test_iopolicy.sh
 # little memory, corrupt files, 10^6 objects.
 TESTS += tests/test_faults.sh
 EXTRA_DIST += tests/test_faults.sh
+
+# Issue 12's writers and readers (JPEG, TGA, HDR, OpenEXR, alpha, BMP,
+# TIFF) and encoding to memory and to a stream.
+check_PROGRAMS += tests/test_image_io
+TESTS += tests/test_image_io
+tests_test_image_io_SOURCES = tests/test_image_io.c
+tests_test_image_io_CPPFLAGS = $(TEST_CPPFLAGS) $(TIFF_CFLAGS)
+tests_test_image_io_LDADD = $(TEST_LDADD) $(TIFF_LIBS)
+tests_test_image_io_LDFLAGS = -static
+
+# Writing and reading each format against POV-Ray's (skipped without povray).
+TESTS += tests/test_formats_povray.sh
+EXTRA_DIST += tests/test_formats_povray.sh

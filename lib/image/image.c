@@ -188,6 +188,11 @@ float *zr__decode_table(unsigned maxval, zr_transfer transfer,
   return table;
 }
 
+unsigned zr__encode_linear(float value, unsigned maxval) {
+  double v = !(value > 0.0f) ? 0.0 : value >= 1.0f ? 1.0 : value;
+  return (unsigned)lround(v * maxval);
+}
+
 float zr__linear_sample(float value, double assumed_gamma) {
   if (!(value > 0.0f))
     return 0.0f; /* negatives and NaN */

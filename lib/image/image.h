@@ -141,6 +141,9 @@ zr_status zr__bmp_decode(zr_context *ctx, const char *name,
 zr_status zr__tiff_decode(zr_context *ctx, const char *name,
                           const unsigned char *bytes, size_t size,
                           zr_image **out);
+/* A coverage (alpha) value stored linearly: clamped to [0, 1], NaN 0,
+   rounded to 0 .. maxval. */
+unsigned zr__encode_linear(float value, unsigned maxval);
 /* The value stored for linear light by the float formats (HDR, EXR):
    the working value raised to assumed_gamma, negatives and NaN 0. */
 float zr__linear_sample(float value, double assumed_gamma);

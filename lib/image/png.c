@@ -278,7 +278,7 @@ static zr_status encode_rows(png_job *job, const zr_image *image, int bits,
     for (size_t i = 0; i < (size_t)image->width * channels; i++) {
       size_t x = i / channels, c = i % channels;
       unsigned code =
-          c == 3 ? zr__encode_sample(a[x], 1.0, maxval) /* linear */
+          c == 3 ? zr__encode_linear(a[x], maxval)
                  : zr__encode_sample(src[3 * x + c], assumed_gamma, maxval);
       if (bits == 16) {
         job->rows[2 * i] = (unsigned char)(code >> 8);

@@ -33,8 +33,8 @@ static void encode_row(const zr_image *image, int y, size_t channels,
                                              255);
     px[2] = (unsigned char)zr__encode_sample(src[3 * x], assumed_gamma, 255);
     if (channels == 4) /* alpha is linear coverage, not a colour */
-      px[3] = (unsigned char)zr__encode_sample(
-          image->alpha[(size_t)y * image->width + x], 1.0, 255);
+      px[3] = (unsigned char)zr__encode_linear(
+          image->alpha[(size_t)y * image->width + x], 255);
   }
 }
 
