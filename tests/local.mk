@@ -146,3 +146,8 @@ tests_test_image_io_LDFLAGS = -static
 # Writing and reading each format against POV-Ray's (skipped without povray).
 TESTS += tests/test_formats_povray.sh
 EXTRA_DIST += tests/test_formats_povray.sh
+
+# A newcomer's set-up (issue 12): the MPI wrapper as root and with more
+# ranks than cores; install, pkg-config (shared and --static), uninstall.
+TESTS += tests/test_mpirun_wrapper.sh tests/test_install.sh
+EXTRA_DIST += tests/test_mpirun_wrapper.sh tests/test_install.sh
