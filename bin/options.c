@@ -381,10 +381,13 @@ static int set_format(const arg_ctx *c, const char *value) {
     if (value[1] && (type == 'H' || type == 'E'))
       return fail(c, "'%s': %s files hold floats; they take no bits per "
                      "colour", c->what, type == 'H' ? "HDR" : "OpenEXR");
+  } else if (type == 'E') {
+    return fail(c, "'%s': OpenEXR output is not supported: this zrcube "
+                   "was built without OpenEXR", c->what);
   } else if (pov_type_name(type)) {
-    return fail(c, "'%s': %s output is not supported in this build (use "
-                   "N for PNG, J for JPEG, T or C for Targa, H for HDR, P "
-                   "for PPM, or an output name ending in .pfm)",
+    return fail(c, "'%s': %s output is not supported (use N for PNG, J "
+                   "for JPEG, T or C for Targa, H for HDR, E for OpenEXR, "
+                   "P for PPM, or an output name ending in .pfm)",
                 c->what, pov_type_name(type));
   } else {
     return fail(c, "'%s': unknown output file type '%c' (use N for PNG, "

@@ -29,7 +29,7 @@ trap 'rm -rf "$work"' EXIT INT TERM
 cd "$work" || exit 99
 inc=/usr/share/povray-3.7/include
 exr=yes
-"$zrcube" +I/dev/null +FE 2>&1 | grep -q "OpenEXR output is not supported" && exr=no
+"$zrcube" +I/dev/null +FE 2>&1 | grep -q "built without OpenEXR" && exr=no
 
 cat >scene.pov <<'POV'
 #version 3.7;
