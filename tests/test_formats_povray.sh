@@ -11,7 +11,9 @@
 #   - reading: povray writes a picture as TGA, BMP (+FB), JPEG, HDR and
 #     OpenEXR; a scene maps each one onto a plane with image_map and its
 #     type keyword (tga, bmp, jpeg, hdr, exr), and the two renders must
-#     agree as above.
+#     agree as above;
+#   - a height field from a BMP file povray wrote (colour pixels: the
+#     red and green bytes make the height).
 # 160x120, no antialiasing, one thread; skips (77) without povray.
 #
 # Environment: ZR_SRCDIR, ZR_BUILDDIR (set by `make check`).
@@ -113,5 +115,30 @@ POV
   fi
   check "read $kw ($file)" "zrmap_$kw.png" "povmap_$kw.png"
 done
+cat >hfpic.pov <<'POV'
+#version 3.7;
+global_settings { assumed_gamma 1.0 }
+camera { orthographic location <0.5, 0.5, -1> look_at <0.5, 0.5, 0>
+  right x up y }
+plane { z, 0 pigment { function { 0.5 + 0.5 * sin(x * 9) * cos(y * 7) }
+  color_map { [0 rgb 0] [1 rgb 1] } } finish { ambient 1 diffuse 0 } }
+POV
+cat >hf.pov <<'POV'
+#version 3.7;
+global_settings { assumed_gamma 1.0 }
+camera { location <0.5, 1.6, -0.9> look_at <0.5, 0.1, 0.5> }
+light_source { <3, 5, -2> rgb 1 }
+height_field { bmp "hf.bmp" smooth pigment { rgb <0.9, 0.8, 0.6> }
+  scale <1, 0.3, 1> }
+POV
+timeout 60 povray +Ihfpic.pov +Ohf.bmp +FB +W64 +H64 -D -A +WT1 -GA \
+  </dev/null >>pov.log 2>&1 || { echo "povray +FB failed" >&2; exit 99; }
+pov hf.pov hf_pov.png || { echo "povray hf.pov failed" >&2; exit 99; }
+if zr hf.pov hf_zr.png; then
+  check "height_field bmp" hf_zr.png hf_pov.png
+else
+  echo "height_field bmp: zrcube failed: $(tail -2 zr.log)"
+  failed=$((failed + 1))
+fi
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
