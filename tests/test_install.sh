@@ -7,7 +7,8 @@
 #     (libzrcube.a alone in the directory, so the linker must find every
 #     library it needs from the .pc file's Requires.private and
 #     Libs.private) and renders again;
-#   - uninstalls, after which no file is left.
+#   - uninstalls, after which no file is left, nor zRcube's own folder
+#     under share/.
 # The .pc file names the configured prefix; under DESTDIR it is moved
 # with pkg-config's --define-variable=prefix.
 #
@@ -70,6 +71,7 @@ if ! env -u MAKEFLAGS -u MFLAGS make -s -C "$ZR_BUILDDIR" uninstall \
   echo "make uninstall failed:"; tail -5 "$work/uninstall.log"; failed=1
 fi
 left=$(find "$dest" ! -type d)
+[ -d "$root/share/zrcube" ] && left="$left $root/share/zrcube/"
 if [ -n "$left" ]; then
   echo "uninstall left:"; echo "$left"; failed=1
 else
