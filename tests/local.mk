@@ -151,3 +151,8 @@ EXTRA_DIST += tests/test_formats_povray.sh
 # ranks than cores; install, pkg-config (shared and --static), uninstall.
 TESTS += tests/test_mpirun_wrapper.sh tests/test_install.sh
 EXTRA_DIST += tests/test_mpirun_wrapper.sh tests/test_install.sh
+
+# Simulated caustics against povray's measured law and picture.
+TESTS += tests/test_caustics.sh
+EXTRA_DIST += tests/test_caustics.sh tests/caustics_check.pov \
+	tests/caustics_bumps.pov
