@@ -70,8 +70,11 @@ static channel_mask mask_of(uint32_t mask) {
 static unsigned channel_value(uint32_t px, channel_mask m) {
   if (!m.bits)
     return 0;
+  /* Scaled by the whole mask, not its lowest run of ones: a damaged
+     file's mask with gaps must still give at most 255 (found by
+     tests/fuzz/fuzz_image). */
   uint32_t v = (px & m.mask) >> m.shift;
-  uint32_t top = m.bits >= 32 ? 0xffffffffu : (1u << m.bits) - 1;
+  uint32_t top = m.mask >> m.shift;
   return (unsigned)((uint64_t)v * 255 / top);
 }
 
