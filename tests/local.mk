@@ -156,3 +156,7 @@ EXTRA_DIST += tests/test_mpirun_wrapper.sh tests/test_install.sh
 TESTS += tests/test_caustics.sh
 EXTRA_DIST += tests/test_caustics.sh tests/caustics_check.pov \
 	tests/caustics_bumps.pov
+
+# Photon mapping: the power law, lights without photons, povray's picture.
+TESTS += tests/test_photons.sh
+EXTRA_DIST += tests/test_photons.sh tests/photons_check.pov
