@@ -6,6 +6,9 @@ bin_zrcube_CPPFLAGS = $(AM_CPPFLAGS) -I$(top_srcdir)/bin
 bin_zrcube_CFLAGS = $(AM_CFLAGS) $(PTHREAD_CFLAGS)
 bin_zrcube_LDADD = lib/par/libzrpar.la lib/libzrcube.la $(MPI_LIBS) \
 	$(PTHREAD_LIBS) -lm
+# zrcube under mpirun as root and with more ranks than cores (issue 12).
+bin_SCRIPTS = bin/zrcube-mpirun
+EXTRA_DIST += bin/zrcube-mpirun.in
 
 check_PROGRAMS += tests/test_cli_options
 TESTS += tests/test_cli_options

@@ -389,6 +389,14 @@ static int set_bits(const arg_ctx *c, const char *value) {
   if (o->format == ZR_FORMAT_PPM && bits != 8)
     return fail(c, "'%s': PPM files are written with 8 bits per colour",
                 c->what);
+  if (o->format != ZR_FORMAT_PPM && o->format != ZR_FORMAT_PNG8 &&
+      o->format != ZR_FORMAT_PNG16 && o->format != ZR_FORMAT_AUTO &&
+      bits != 8)
+    return fail(c, "'%s': only PNG files take 16 bits per colour",
+                c->what);
+  if (o->format != ZR_FORMAT_PPM && o->format != ZR_FORMAT_PNG8 &&
+      o->format != ZR_FORMAT_PNG16 && o->format != ZR_FORMAT_AUTO)
+    return 0; /* 8 bits: what TGA and JPEG store anyway */
   if (o->format != ZR_FORMAT_PPM)
     o->format = bits == 16 ? ZR_FORMAT_PNG16 : ZR_FORMAT_PNG8;
   return 0;
@@ -399,15 +407,8 @@ static const char *pov_type_name(char type) {
   switch (toupper((unsigned char)type)) {
   case 'B':
     return "BMP";
-  case 'C':
-  case 'T':
-    return "Targa";
   case 'E':
     return "OpenEXR";
-  case 'H':
-    return "Radiance HDR";
-  case 'J':
-    return "JPEG";
   case 'S':
     return "system-specific";
   default:
@@ -423,13 +424,39 @@ static int set_format(const arg_ctx *c, const char *value) {
     o->format = ZR_FORMAT_PNG8;
   } else if (type == 'P') {
     o->format = ZR_FORMAT_PPM;
+  } else if (type == 'J') {
+    /* POV-Ray 3.7 reference, "Output File Type": the JPEG quality, 0 to
+       100 (0 and 1 the default, 85), clipped to that range. */
+    o->format = ZR_FORMAT_JPEG;
+    if (!value[1])
+      return 0;
+    long q;
+    if (!parse_int(value + 1, -1000000, 1000000, &q))
+      return fail(c, "'%s': the JPEG quality must be a whole number, as "
+                     "in +FJ90", c->what);
+    o->jpeg_quality = q < 0 ? 0 : q > 100 ? 100 : (int)q;
+    return 0;
+  } else if (type == 'T' || type == 'C' || type == 'H' ||
+             (type == 'E' && zr_image_format_supported(ZR_FORMAT_EXR))) {
+    o->format = type == 'T'   ? ZR_FORMAT_TGA
+                : type == 'C' ? ZR_FORMAT_TGA_RLE
+                : type == 'H' ? ZR_FORMAT_HDR
+                              : ZR_FORMAT_EXR;
+    if (value[1] && (type == 'H' || type == 'E'))
+      return fail(c, "'%s': %s files hold floats; they take no bits per "
+                     "colour", c->what, type == 'H' ? "HDR" : "OpenEXR");
+  } else if (type == 'E') {
+    return fail(c, "'%s': OpenEXR output is not supported: this zrcube "
+                   "was built without OpenEXR", c->what);
   } else if (pov_type_name(type)) {
-    return fail(c, "'%s': %s output is not supported (use N for PNG, P "
-                   "for PPM, or an output name ending in .pfm)",
+    return fail(c, "'%s': %s output is not supported (use N for PNG, J "
+                   "for JPEG, T or C for Targa, H for HDR, E for OpenEXR, "
+                   "P for PPM, or an output name ending in .pfm)",
                 c->what, pov_type_name(type));
   } else {
-    return fail(c, "'%s': unknown output file type '%c' (use N for PNG "
-                   "or P for PPM)", c->what, value[0]);
+    return fail(c, "'%s': unknown output file type '%c' (use N for PNG, "
+                   "J for JPEG, T or C for Targa, H for HDR, E for "
+                   "OpenEXR or P for PPM)", c->what, value[0]);
   }
   return value[1] ? set_bits(c, value + 1) : 0;
 }
@@ -1691,6 +1718,15 @@ static const char *format_extension(zr_image_format format) {
     return ".ppm";
   case ZR_FORMAT_PFM:
     return ".pfm";
+  case ZR_FORMAT_JPEG:
+    return ".jpg";
+  case ZR_FORMAT_TGA:
+  case ZR_FORMAT_TGA_RLE:
+    return ".tga";
+  case ZR_FORMAT_HDR:
+    return ".hdr";
+  case ZR_FORMAT_EXR:
+    return ".exr";
   default:
     return ".png";
   }
@@ -1711,6 +1747,14 @@ static zr_image_format format_of_extension(const char *ext) {
     return ZR_FORMAT_PPM;
   if (!strcasecmp(ext, ".pfm"))
     return ZR_FORMAT_PFM;
+  if (!strcasecmp(ext, ".jpg") || !strcasecmp(ext, ".jpeg"))
+    return ZR_FORMAT_JPEG;
+  if (!strcasecmp(ext, ".tga"))
+    return ZR_FORMAT_TGA;
+  if (!strcasecmp(ext, ".hdr"))
+    return ZR_FORMAT_HDR;
+  if (!strcasecmp(ext, ".exr") && zr_image_format_supported(ZR_FORMAT_EXR))
+    return ZR_FORMAT_EXR;
   return ZR_FORMAT_AUTO;
 }
 
@@ -1788,8 +1832,8 @@ int zr__cli_output_path(const zr_cli_options *o, char **path,
     zr_image_format by_name = format_of_extension(ext);
     if (fmt == ZR_FORMAT_AUTO && *ext && by_name == ZR_FORMAT_AUTO)
       return fail(&c, "cannot write '%s': the output name must end in "
-                      ".png, .ppm or .pfm (or give the type with +FN or "
-                      "+FP)", out);
+                      ".png, .jpg, .tga, .hdr, .exr, .ppm or .pfm (or give "
+                      "the type with +F)", out);
     if (fmt == ZR_FORMAT_AUTO)
       fmt = by_name == ZR_FORMAT_AUTO ? ZR_FORMAT_PNG8 : by_name;
     /* As POV-Ray does, a name without an extension gets the type's, in
@@ -1837,11 +1881,15 @@ const char *zr__cli_usage(void) {
       "(--width=640); files ending in .ini hold more options.\n"
       "\n"
       "  +I<file>, --input=FILE       the scene (or give it as an argument)\n"
-      "  +O<file>, --output=FILE      the image: .png, .ppm or .pfm by its\n"
+      "  +O<file>, --output=FILE      the image: .png, .jpg, .tga, .hdr,\n"
+      "                               .exr, .ppm or .pfm by its\n"
       "                               extension (default: SCENE.png here);\n"
       "                               a directory puts SCENE.png in it, a\n"
       "                               name without extension gets .png\n"
       "  +FN, +FN16, +FP              PNG (8 or 16 bit) or PPM output\n"
+      "  +FJ[q], +FT, +FC, +FH, +FE   JPEG (quality q, default 85), Targa\n"
+      "                               (C: run-length encoded), Radiance\n"
+      "                               HDR, OpenEXR output\n"
       "  -F                           render without writing an image\n"
       "  +W<n>, --width=N             image width in pixels (default 320)\n"
       "  +H<n>, --height=N            image height in pixels (default 240);\n"

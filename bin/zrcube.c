@@ -970,8 +970,11 @@ static int render_and_write(run *r) {
     if (r->opts.to_stdout) {
       s = write_to_stdout(r);
     } else {
-      s = zr_image_write(r->ctx, r->image, r->output_path, r->format,
-                         zr_scene_assumed_gamma(r->scene));
+      zr_image_encoding enc;
+      zr_image_encoding_init(&enc, r->format);
+      enc.assumed_gamma = zr_scene_assumed_gamma(r->scene);
+      enc.quality = r->opts.jpeg_quality;
+      s = zr_image_save(r->ctx, r->image, r->output_path, &enc);
       if (s != ZR_OK && r->diag.errors_printed == before)
         fprintf(stderr, "zrcube: cannot write '%s': %s\n", r->output_path,
                 zr_status_str(s));

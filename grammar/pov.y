@@ -581,6 +581,10 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %token T_GIF "gif"
 %token T_POT "pot"
 %token T_TGA "tga"
+%token T_BMP "bmp"
+%token T_TIFF "tiff"
+%token T_HDR "hdr"
+%token T_EXR "exr"
 %token T_LIGHT_GROUP "light_group"
 %token T_GLOBAL_LIGHTS "global_lights"
 %token T_HF_GRAY_16 "hf_gray_16"
@@ -1890,6 +1894,10 @@ hf_file:
 | T_JPEG str_expr      { $$ = $2; }
 | T_GIF str_expr       { $$ = $2; }
 | T_TGA str_expr       { $$ = $2; }
+| T_BMP str_expr       { $$ = $2; }
+| T_TIFF str_expr      { $$ = $2; }
+| T_HDR str_expr       { $$ = $2; }
+| T_EXR str_expr       { $$ = $2; }
 ;
 
 /* sor { N, <Point>... } (reference manual, "Surface of Revolution"). */
@@ -2900,6 +2908,10 @@ image_map_file:
 | T_PGM str_expr       { $$ = $2; @$ = @2; }
 | T_GIF str_expr       { $$ = $2; @$ = @2; }
 | T_TGA str_expr       { $$ = $2; @$ = @2; }
+| T_BMP str_expr       { $$ = $2; @$ = @2; }
+| T_TIFF str_expr      { $$ = $2; @$ = @2; }
+| T_HDR str_expr       { $$ = $2; @$ = @2; }
+| T_EXR str_expr       { $$ = $2; @$ = @2; }
 ;
 
 image_map_body:

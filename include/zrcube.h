@@ -26,6 +26,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 
 #ifdef __cplusplus
 extern "C" {
@@ -685,7 +686,11 @@ typedef enum zr_image_format {
   ZR_FORMAT_PNG16,
   ZR_FORMAT_PPM,      /* binary P6, 8 bit */
   ZR_FORMAT_PFM,      /* linear float, no gamma */
-  ZR_FORMAT_JPEG      /* read only */
+  ZR_FORMAT_JPEG,     /* baseline, 4:4:4, quality 85 unless set */
+  ZR_FORMAT_TGA,      /* uncompressed, 24 bit (32 with alpha) */
+  ZR_FORMAT_TGA_RLE,  /* run-length encoded, 24 bit (32 with alpha) */
+  ZR_FORMAT_HDR,      /* Radiance RGBE, linear, run-length encoded */
+  ZR_FORMAT_EXR       /* OpenEXR, half floats, linear (if built with it) */
 } zr_image_format;
 
 /* An RGB image of linear floats, rows top to bottom. */
@@ -700,7 +705,8 @@ ZR_API float *zr_image_pixels(zr_image *image);
 ZR_API const float *zr_image_pixels_const(const zr_image *image);
 
 /*
- * Reads a PNG, JPEG, PPM/PGM (P3/P5/P6) or PFM file; 8 and 16 bit files
+ * Reads a PNG, JPEG, GIF, TGA, BMP, TIFF, PPM/PGM (P3/P5/P6), PFM,
+ * Radiance HDR or OpenEXR file; 8 and 16 bit files
  * are decoded from their gamma (sRGB unless the file says otherwise) into
  * linear floats.  Errors are reported through ctx (which may be NULL).
  */
@@ -719,6 +725,51 @@ ZR_API zr_status zr_image_write(zr_context *ctx, const zr_image *image,
 
 /* The format a file name asks for (ZR_FORMAT_AUTO when unknown). */
 ZR_API zr_image_format zr_image_format_from_name(const char *path);
+
+/*
+ * An alpha channel, one float a pixel in [0, 1] (1 opaque), rows top to
+ * bottom, made and owned by the image (all 1 when made).  PNG, TGA and
+ * OpenEXR files are written with it when the image has one (PNG RGBA,
+ * TGA 32 bit); the other formats leave it out.  Colours stay unmultiplied.
+ */
+ZR_API zr_status zr_image_add_alpha(zr_image *image);
+/* The alpha channel, or NULL when the image has none. */
+ZR_API float *zr_image_alpha(zr_image *image);
+
+/* How an image is encoded: zr_image_encoding_init() gives the defaults. */
+typedef struct zr_image_encoding {
+  zr_image_format format; /* not ZR_FORMAT_AUTO */
+  double assumed_gamma;   /* as zr_image_write's; default 1.0 */
+  int quality;            /* JPEG quality 2 .. 100; 0 or 1: 85 (default) */
+  int alpha;              /* 1 (default): write the alpha channel if any */
+} zr_image_encoding;
+
+ZR_API void zr_image_encoding_init(zr_image_encoding *e,
+                                   zr_image_format format);
+
+/*
+ * Encodes the image into a new buffer of *size bytes, *bytes (release it
+ * with free()).  On failure *bytes is NULL and *size 0.
+ */
+ZR_API zr_status zr_image_encode(zr_context *ctx, const zr_image *image,
+                                 const zr_image_encoding *e,
+                                 unsigned char **bytes, size_t *size);
+
+/*
+ * Encodes the image to an open stream at its current position (standard
+ * output, a pipe, a socket): the stream is flushed, not closed.
+ */
+ZR_API zr_status zr_image_write_file(zr_context *ctx, const zr_image *image,
+                                     const zr_image_encoding *e,
+                                     FILE *stream);
+
+/* zr_image_write with every encoding setting (e->format may be AUTO). */
+ZR_API zr_status zr_image_save(zr_context *ctx, const zr_image *image,
+                               const char *path,
+                               const zr_image_encoding *e);
+
+/* 1 when this build of the library writes and reads the format. */
+ZR_API int zr_image_format_supported(zr_image_format format);
 
 /* The scene's assumed_gamma (1.0 when the scene does not set it). */
 ZR_API double zr_scene_assumed_gamma(const zr_scene *scene);

@@ -134,6 +134,24 @@ EXTRA_DIST += tests/test_iopolicy.sh
 TESTS += tests/test_faults.sh
 EXTRA_DIST += tests/test_faults.sh
 
+# Issue 12's writers and readers (JPEG, TGA, HDR, OpenEXR, alpha, BMP,
+# TIFF) and encoding to memory and to a stream.
+check_PROGRAMS += tests/test_image_io
+TESTS += tests/test_image_io
+tests_test_image_io_SOURCES = tests/test_image_io.c
+tests_test_image_io_CPPFLAGS = $(TEST_CPPFLAGS) $(TIFF_CFLAGS)
+tests_test_image_io_LDADD = $(TEST_LDADD) $(TIFF_LIBS)
+tests_test_image_io_LDFLAGS = -static
+
+# Writing and reading each format against POV-Ray's (skipped without povray).
+TESTS += tests/test_formats_povray.sh
+EXTRA_DIST += tests/test_formats_povray.sh
+
+# A newcomer's set-up (issue 12): the MPI wrapper as root and with more
+# ranks than cores; install, pkg-config (shared and --static), uninstall.
+TESTS += tests/test_mpirun_wrapper.sh tests/test_install.sh
+EXTRA_DIST += tests/test_mpirun_wrapper.sh tests/test_install.sh
+
 # Simulated caustics against povray's measured law and picture.
 TESTS += tests/test_caustics.sh
 EXTRA_DIST += tests/test_caustics.sh tests/caustics_check.pov \

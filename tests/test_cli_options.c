@@ -271,10 +271,19 @@ static void test_cli_options_unknown_and_unsupported(void **state) {
   EXPECT_ERROR("zrcube: unknown option 'Bogus_Key' (try 'zrcube "
                "--help')", "Bogus_Key=on");
   EXPECT_ERROR("zrcube: unknown option '+Vx' (try 'zrcube --help')", "+Vx");
-  EXPECT_ERROR("zrcube: '+FT': Targa output is not supported (use N for "
-               "PNG, P for PPM, or an output name ending in .pfm)", "+FT");
-  EXPECT_ERROR("zrcube: '+FX': unknown output file type 'X' (use N for PNG "
-               "or P for PPM)", "+FX");
+  EXPECT_ERROR("zrcube: '+FB': BMP output is not supported (use N for "
+               "PNG, J for JPEG, T or C for Targa, H for HDR, E for "
+               "OpenEXR, P for PPM, or an output name ending in .pfm)",
+               "+FB");
+  EXPECT_ERROR("zrcube: '+FX': unknown output file type 'X' (use N for "
+               "PNG, J for JPEG, T or C for Targa, H for HDR, E for "
+               "OpenEXR or P for PPM)", "+FX");
+  EXPECT_ERROR("zrcube: '+FH16': HDR files hold floats; they take no bits "
+               "per colour", "+FH16");
+  EXPECT_ERROR("zrcube: '+FT16': only PNG files take 16 bits per colour",
+               "+FT16");
+  EXPECT_ERROR("zrcube: '+FJx': the JPEG quality must be a whole number, "
+               "as in +FJ90", "+FJx");
   EXPECT_ERROR("zrcube: '+FN12': only 8 and 16 bits per colour are "
                "supported", "+FN12");
   EXPECT_ERROR("zrcube: '+FP16': PPM files are written with 8 bits per "
@@ -348,11 +357,28 @@ static void test_cli_options_output_names(void **state) {
                            "or a directory");
   assert_null(path);
 
-  assert_int_equal(OUTPUT(&path, &fmt, err, "s.pov", "+Oimage.tga"), -1);
-  assert_string_equal(err, "zrcube: cannot write 'image.tga': the output "
-                           "name must end in .png, .ppm or .pfm (or give "
-                           "the type with +FN or +FP)");
+  assert_int_equal(OUTPUT(&path, &fmt, err, "s.pov", "+Oimage.bmp"), -1);
+  assert_string_equal(err, "zrcube: cannot write 'image.bmp': the output "
+                           "name must end in .png, .jpg, .tga, .hdr, .exr, "
+                           ".ppm or .pfm (or give the type with +F)");
   assert_null(path);
+  /* Issue 12's types: the extension they add, and the JPEG quality. */
+  assert_int_equal(OUTPUT(&path, &fmt, err, "s.pov", "+FJ90"), 0);
+  assert_string_equal(path, "s.jpg");
+  assert_int_equal(fmt, ZR_FORMAT_JPEG);
+  free(path);
+  assert_int_equal(OUTPUT(&path, &fmt, err, "s.pov", "+FC", "+Oa/b"), 0);
+  assert_string_equal(path, "a/b.tga");
+  assert_int_equal(fmt, ZR_FORMAT_TGA_RLE);
+  free(path);
+  assert_int_equal(OUTPUT(&path, &fmt, err, "s.pov", "+Opic.hdr"), 0);
+  assert_int_equal(fmt, ZR_FORMAT_HDR);
+  free(path);
+  if (zr_image_format_supported(ZR_FORMAT_EXR)) {
+    assert_int_equal(OUTPUT(&path, &fmt, err, "s.pov", "+FE"), 0);
+    assert_string_equal(path, "s.exr");
+    free(path);
+  }
   assert_int_equal(OUTPUT(&path, &fmt, err, "+W4"), -1);
   assert_string_equal(err, "zrcube: no scene file given (try 'zrcube "
                            "--help')");

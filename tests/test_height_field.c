@@ -118,15 +118,16 @@ static void test_height_field_water(void **state) {
 static void test_height_field_bad_input(void **state) {
   fixture *f = *state;
   f->files = files;
-  bad(f, "height_field { \"t.tif\" }\n", ZR_EUNSUPPORTED,
-      "height_field: 'tif' files are not supported yet (use png, gif, pot, "
-      "tga, pgm, ppm or jpeg)",
-      "t.pov:1:16: error: height_field: 'tif' files are not supported yet "
-      "(use png, gif, pot, tga, pgm, ppm or jpeg)\n"
-      "    1 | height_field { \"t.tif\" }\n"
+  bad(f, "height_field { \"t.exr\" }\n", ZR_EUNSUPPORTED,
+      "height_field: 'exr' files are not supported yet (use png, gif, pot, "
+      "tga, bmp, tiff, pgm, ppm or jpeg)",
+      "t.pov:1:16: error: height_field: 'exr' files are not supported yet "
+      "(use png, gif, pot, tga, bmp, tiff, pgm, ppm or jpeg)\n"
+      "    1 | height_field { \"t.exr\" }\n"
       "      |                ^~~~~~~\n");
-  bad(f, "height_field { tiff \"t.tif\" }\n", ZR_EUNSUPPORTED,
-      "'tiff' is not supported yet", NULL);
+  bad(f, "height_field { hdr \"t.hdr\" }\n", ZR_EUNSUPPORTED,
+      "height_field: 'hdr' files are not supported yet (use png, gif, pot, "
+      "tga, bmp, tiff, pgm, ppm or jpeg)", NULL);
   bad(f, "height_field { png \"none.png\" }\n", ZR_ENOTFOUND,
       "height_field file 'none.png' not found", NULL);
   bad(f, "height_field { function 1, 10 { x } }\n", ZR_ESCENE,

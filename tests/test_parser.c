@@ -803,11 +803,11 @@ static void test_parser_undefined_identifier(void **state) {
 
 static void test_parser_unsupported_keyword(void **state) {
   fixture *f = *state;
-  bad(f, "sphere { 0, 1 }\n  tiff { }\n", ZR_EUNSUPPORTED,
-      "'tiff' is not supported yet",
-      "t.pov:2:3: error: 'tiff' is not supported yet\n"
-      "    2 |   tiff { }\n"
-      "      |   ^~~~\n");
+  bad(f, "sphere { 0, 1 }\n  iff { }\n", ZR_EUNSUPPORTED,
+      "'iff' is not supported yet",
+      "t.pov:2:3: error: 'iff' is not supported yet\n"
+      "    2 |   iff { }\n"
+      "      |   ^~~\n");
   bad(f, "#statistics \"x\"", ZR_EUNSUPPORTED,
       "'#statistics' is not supported yet", NULL);
 }

@@ -16,6 +16,8 @@
  *     Samples of more than 8 bits are taken by their high byte here.
  *   - a GIF file is a palette image: index / 255; so is a colour-mapped
  *     TGA file, and TGA colour files follow the red/green rule above;
+ *     so do BMP files (palette or colour) and TIFF files (read as
+ *     8-bit colour; a grey TIFF has r = g = b, so v / 255);
  *   - a POT file (Fractint's "continuous potential", which the manual
  *     calls "essentially a GIF file with a 16 bit palette") is a GIF
  *     twice as wide as the field: the left half holds the high bytes of
@@ -322,6 +324,33 @@ static zr_status read_tga(zr_context *ctx, const char *name,
   return ZR_OK;
 }
 
+/* BMP and TIFF files: decoded, then read by their stored codes, a
+   palette image by its indices. */
+static zr_status read_decoded(zr_context *ctx, const char *name,
+                              const unsigned char *bytes, size_t size,
+                              bool tiff, float **out, int *w, int *h) {
+  zr_image *image = NULL;
+  zr_status s = tiff ? zr__tiff_decode(ctx, name, bytes, size, &image)
+                     : zr__bmp_decode(ctx, name, bytes, size, &image);
+  if (s != ZR_OK)
+    return s;
+  size_t n = (size_t)image->width * (size_t)image->height;
+  float *heights = heights_for(ctx, name, image);
+  if (!heights)
+    return ZR_ENOMEM;
+  for (size_t i = 0; i < n; i++)
+    heights[i] = image->indices
+                     ? (float)(image->indices[i] / 255.0)
+                     : colour_height(
+                           ((const unsigned char *)image->codes)[3 * i],
+                           ((const unsigned char *)image->codes)[3 * i + 1]);
+  *w = image->width;
+  *h = image->height;
+  *out = heights;
+  zr_image_free(image);
+  return ZR_OK;
+}
+
 /* GIF and POT files (see the top of the file). */
 static zr_status read_gif(zr_context *ctx, const char *name,
                           const unsigned char *bytes, size_t size, bool pot,
@@ -414,6 +443,10 @@ zr_status zr__image_decode_heights(zr_context *ctx, const char *path,
     s = read_png(ctx, path, b, size, heights, width, height);
   else if (size >= 3 && b[0] == 0xff && b[1] == 0xd8 && b[2] == 0xff)
     s = read_coded(ctx, path, b, size, true, heights, width, height);
+  else if (size >= 2 && b[0] == 'B' && b[1] == 'M')
+    s = read_decoded(ctx, path, b, size, false, heights, width, height);
+  else if (size >= 4 && (!memcmp(b, "II*\0", 4) || !memcmp(b, "MM\0*", 4)))
+    s = read_decoded(ctx, path, b, size, true, heights, width, height);
   else if (!(size >= 2 && b[0] == 'P') && zr__tga_looks_like(b, size))
     s = read_tga(ctx, path, b, size, heights, width, height);
   else

@@ -11,6 +11,13 @@
  * store the sRGB encoding, which is also what POV-Ray writes by default
  * (its PNGs carry an sRGB chunk).  PFM stores linear values untouched.
  *
+ * HDR and OpenEXR files hold linear light: the working value raised to
+ * assumed_gamma is stored, as the 8-bit formats store its sRGB code.
+ *
+ * Encoding goes to any stdio stream: a temporary file beside the target
+ * (zr_image_save), the caller's stream (zr_image_write_file) or a
+ * growing buffer from open_memstream (zr_image_encode, POSIX 2008).
+ *
  * A file is read by its first bytes, not its name, so a misnamed file
  * still loads; the name only makes the message for an unknown file more
  * useful ("x.png: not a PNG file").
@@ -228,6 +235,7 @@ ZR_API void zr_image_free(zr_image *image) {
   if (!image)
     return;
   free(image->pixels);
+  free(image->alpha);
   free(image->codes);
   free(image->table);
   free(image->indices);
@@ -245,6 +253,24 @@ ZR_API float *zr_image_pixels(zr_image *image) { return image->pixels; }
 
 ZR_API const float *zr_image_pixels_const(const zr_image *image) {
   return image->pixels;
+}
+
+ZR_API zr_status zr_image_add_alpha(zr_image *image) {
+  if (!image)
+    return ZR_EINVAL;
+  if (image->alpha)
+    return ZR_OK;
+  size_t n = (size_t)image->width * (size_t)image->height;
+  image->alpha = malloc(n * sizeof *image->alpha);
+  if (!image->alpha)
+    return ZR_ENOMEM;
+  for (size_t i = 0; i < n; i++)
+    image->alpha[i] = 1.0f;
+  return ZR_OK;
+}
+
+ZR_API float *zr_image_alpha(zr_image *image) {
+  return image ? image->alpha : NULL;
 }
 
 /* ---- transfer functions ---- */
@@ -272,6 +298,20 @@ float *zr__decode_table(unsigned maxval, zr_transfer transfer,
                                                      : pow(e, exponent));
   }
   return table;
+}
+
+unsigned zr__encode_linear(float value, unsigned maxval) {
+  double v = !(value > 0.0f) ? 0.0 : value >= 1.0f ? 1.0 : value;
+  return (unsigned)lround(v * maxval);
+}
+
+float zr__linear_sample(float value, double assumed_gamma) {
+  if (!(value > 0.0f))
+    return 0.0f; /* negatives and NaN */
+  if (!isfinite(value))
+    return value > 0.0f ? 65504.0f : 0.0f; /* half's largest finite */
+  return assumed_gamma == 1.0 ? value
+                              : (float)pow((double)value, assumed_gamma);
 }
 
 unsigned zr__encode_sample(float value, double assumed_gamma,
@@ -361,6 +401,12 @@ ZR_API zr_image_format zr_image_format_from_name(const char *path) {
     return ZR_FORMAT_PFM;
   if (!strcasecmp(ext, "jpg") || !strcasecmp(ext, "jpeg"))
     return ZR_FORMAT_JPEG;
+  if (!strcasecmp(ext, "tga"))
+    return ZR_FORMAT_TGA;
+  if (!strcasecmp(ext, "hdr") || !strcasecmp(ext, "pic"))
+    return ZR_FORMAT_HDR;
+  if (!strcasecmp(ext, "exr"))
+    return ZR_FORMAT_EXR;
   return ZR_FORMAT_AUTO;
 }
 
@@ -379,11 +425,20 @@ static zr_status not_an_image(zr_context *ctx, const char *path) {
   case ZR_FORMAT_PFM:
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
                     "%s: not a PFM file", path);
+  case ZR_FORMAT_HDR:
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
+                    "%s: not a Radiance HDR file", path);
+  case ZR_FORMAT_EXR:
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
+                    "%s: not an OpenEXR file", path);
+  case ZR_FORMAT_TGA:
+  case ZR_FORMAT_TGA_RLE:
   case ZR_FORMAT_AUTO:
     break;
   }
   return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
-                  "%s: not a PNG, JPEG, GIF, TGA, PPM or PFM file", path);
+                  "%s: not a PNG, JPEG, GIF, TGA, BMP, TIFF, PPM, PFM, "
+                  "HDR or OpenEXR file", path);
 }
 
 static zr_status decode(zr_context *ctx, const char *path,
@@ -400,6 +455,14 @@ static zr_status decode(zr_context *ctx, const char *path,
     return zr__pfm_decode(ctx, path, b, n, out);
   if (n >= 2 && b[0] == 'P' && b[1] >= '1' && b[1] <= '7')
     return zr__pnm_decode(ctx, path, b, n, out);
+  if (n >= 2 && b[0] == 'B' && b[1] == 'M')
+    return zr__bmp_decode(ctx, path, b, n, out);
+  if (n >= 4 && (!memcmp(b, "II*\0", 4) || !memcmp(b, "MM\0*", 4)))
+    return zr__tiff_decode(ctx, path, b, n, out);
+  if (zr__hdr_looks_like(b, n))
+    return zr__hdr_decode(ctx, path, b, n, out);
+  if (zr__exr_looks_like(b, n))
+    return zr__exr_decode(ctx, path, b, n, out);
   /* TGA has no signature: last, when the header makes sense as one. */
   if (zr__tga_looks_like(b, n) || !strcasecmp(extension(path), "tga"))
     return zr__tga_decode(ctx, path, b, n, out);
@@ -446,53 +509,171 @@ zr_status zr__image_decode(zr_context *ctx, const char *name,
   return s;
 }
 
-/* ---- atomic writing ---- */
+/* ---- encoding ---- */
 
-static zr_status encode(zr_context *ctx, const zr_image *image,
-                        const char *path, zr_image_format format,
-                        double assumed_gamma, FILE *f) {
+ZR_API void zr_image_encoding_init(zr_image_encoding *e,
+                                   zr_image_format format) {
+  e->format = format;
+  e->assumed_gamma = 1.0;
+  e->quality = 0;
+  e->alpha = 1;
+}
+
+ZR_API int zr_image_format_supported(zr_image_format format) {
   switch (format) {
   case ZR_FORMAT_PNG8:
-    return zr__png_encode(ctx, path, image, 8, assumed_gamma, f);
   case ZR_FORMAT_PNG16:
-    return zr__png_encode(ctx, path, image, 16, assumed_gamma, f);
   case ZR_FORMAT_PPM:
-    return zr__ppm_encode(ctx, path, image, assumed_gamma, f);
   case ZR_FORMAT_PFM:
-    return zr__pfm_encode(ctx, path, image, f);
   case ZR_FORMAT_JPEG:
+  case ZR_FORMAT_TGA:
+  case ZR_FORMAT_TGA_RLE:
+  case ZR_FORMAT_HDR:
+    return 1;
+  case ZR_FORMAT_EXR:
+    return zr__exr_available();
   case ZR_FORMAT_AUTO:
     break;
   }
-  return ZR_EINVAL; /* excluded by zr_image_write */
+  return 0;
 }
+
+static zr_status encode(zr_context *ctx, const zr_image *image,
+                        const char *path, const zr_image_encoding *e,
+                        FILE *f) {
+  double g = e->assumed_gamma;
+  switch (e->format) {
+  case ZR_FORMAT_PNG8:
+    return zr__png_encode(ctx, path, image, 8, e->alpha, g, f);
+  case ZR_FORMAT_PNG16:
+    return zr__png_encode(ctx, path, image, 16, e->alpha, g, f);
+  case ZR_FORMAT_PPM:
+    return zr__ppm_encode(ctx, path, image, g, f);
+  case ZR_FORMAT_PFM:
+    return zr__pfm_encode(ctx, path, image, f);
+  case ZR_FORMAT_JPEG:
+    return zr__jpeg_encode(ctx, path, image, e, f);
+  case ZR_FORMAT_TGA:
+  case ZR_FORMAT_TGA_RLE:
+    return zr__tga_encode(ctx, path, image, e, f);
+  case ZR_FORMAT_HDR:
+    return zr__hdr_encode(ctx, path, image, e, f);
+  case ZR_FORMAT_EXR:
+    return zr__exr_encode(ctx, path, image, e, f);
+  case ZR_FORMAT_AUTO:
+    break;
+  }
+  return ZR_EINVAL; /* excluded by check_encoding */
+}
+
+/* The checks every entry point makes; path names the output. */
+static zr_status check_encoding(zr_context *ctx, const zr_image *image,
+                                const char *path,
+                                const zr_image_encoding *e) {
+  if (!image || !e)
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, NULL,
+                    "%s: no image or no encoding", path);
+  if (!(e->assumed_gamma > 0.0) || !isfinite(e->assumed_gamma))
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, NULL,
+                    "%s: assumed_gamma must be positive, not %g", path,
+                    e->assumed_gamma);
+  if (e->format <= ZR_FORMAT_AUTO || e->format > ZR_FORMAT_EXR)
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, NULL,
+                    "%s: unknown image format %d", path, (int)e->format);
+  if (!zr_image_format_supported(e->format))
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EUNSUPPORTED, NULL,
+                    "%s: this zRcube was built without OpenEXR (configure "
+                    "found no libopenexr-dev)", path);
+  if (e->quality < 0 || e->quality > 100)
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, NULL,
+                    "%s: JPEG quality must be 0 to 100, not %d", path,
+                    e->quality);
+  return ZR_OK;
+}
+
+/* Encodes, then flushes and checks the stream for a write error. */
+static zr_status encode_flushed(zr_context *ctx, const zr_image *image,
+                                const char *path, const zr_image_encoding *e,
+                                FILE *f) {
+  zr_status s = encode(ctx, image, path, e, f);
+  if (s == ZR_OK && (fflush(f) != 0 || ferror(f)))
+    s = zr__diag(ctx, ZR_DIAG_ERROR, ZR_EIO, NULL, "%s: write failed: %s",
+                 path, strerror(errno));
+  return s;
+}
+
+ZR_API zr_status zr_image_write_file(zr_context *ctx, const zr_image *image,
+                                     const zr_image_encoding *e,
+                                     FILE *stream) {
+  const char *name = "(stream)";
+  zr_status s = check_encoding(ctx, image, name, e);
+  if (s == ZR_OK && !stream)
+    s = zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, NULL,
+                 "zr_image_write_file: no stream");
+  return s == ZR_OK ? encode_flushed(ctx, image, name, e, stream) : s;
+}
+
+ZR_API zr_status zr_image_encode(zr_context *ctx, const zr_image *image,
+                                 const zr_image_encoding *e,
+                                 unsigned char **bytes, size_t *size) {
+  const char *name = "(memory)";
+  if (!bytes || !size)
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, NULL,
+                    "zr_image_encode: no place for the bytes");
+  *bytes = NULL;
+  *size = 0;
+  zr_status s = check_encoding(ctx, image, name, e);
+  if (s != ZR_OK)
+    return s;
+  char *buffer = NULL;
+  size_t length = 0;
+  FILE *f = open_memstream(&buffer, &length);
+  if (!f)
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s", name,
+                    zr_status_str(ZR_ENOMEM));
+  s = encode_flushed(ctx, image, name, e, f);
+  /* The buffer and its length are final only after fclose. */
+  if (fclose(f) != 0 && s == ZR_OK)
+    s = zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s", name,
+                 zr_status_str(ZR_ENOMEM));
+  if (s != ZR_OK) {
+    free(buffer);
+    return s;
+  }
+  *bytes = (unsigned char *)buffer;
+  *size = length;
+  return ZR_OK;
+}
+
+/* ---- atomic writing ---- */
 
 ZR_API zr_status zr_image_write(zr_context *ctx, const zr_image *image,
                                 const char *path, zr_image_format format,
                                 double assumed_gamma) {
-  if (!image || !path)
+  zr_image_encoding e;
+  zr_image_encoding_init(&e, format);
+  e.assumed_gamma = assumed_gamma;
+  return zr_image_save(ctx, image, path, &e);
+}
+
+ZR_API zr_status zr_image_save(zr_context *ctx, const zr_image *image,
+                               const char *path,
+                               const zr_image_encoding *enc) {
+  if (!image || !path || !enc)
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, NULL,
                     "zr_image_write: no image or no path");
-  if (!(assumed_gamma > 0.0) || !isfinite(assumed_gamma))
-    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, NULL,
-                    "%s: assumed_gamma must be positive, not %g", path,
-                    assumed_gamma);
-  if (format == ZR_FORMAT_AUTO) {
-    format = zr_image_format_from_name(path);
-    if (format == ZR_FORMAT_AUTO)
+  zr_image_encoding e = *enc;
+  if (e.format == ZR_FORMAT_AUTO) {
+    e.format = zr_image_format_from_name(path);
+    if (e.format == ZR_FORMAT_AUTO)
       return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, NULL,
                       "%s: cannot tell the image format from the name "
-                      "(use .png, .ppm or .pfm)",
+                      "(use .png, .jpg, .tga, .hdr, .exr, .ppm or .pfm)",
                       path);
   }
-  if (format == ZR_FORMAT_JPEG)
-    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EUNSUPPORTED, NULL,
-                    "%s: writing JPEG is not supported (use .png, .ppm or "
-                    ".pfm)",
-                    path);
-  if (format < ZR_FORMAT_AUTO || format > ZR_FORMAT_JPEG)
-    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, NULL,
-                    "%s: unknown image format %d", path, (int)format);
+  zr_status cs = check_encoding(ctx, image, path, &e);
+  if (cs != ZR_OK)
+    return cs;
 
   /* The image goes to a new file beside the one it replaces, renamed
      over it once complete: a failure leaves the old file whole.  A
@@ -516,10 +697,7 @@ ZR_API zr_status zr_image_write(zr_context *ctx, const zr_image *image,
     free(target);
     return s;
   }
-  zr_status s = encode(ctx, image, path, format, assumed_gamma, f);
-  if (s == ZR_OK && (fflush(f) != 0 || ferror(f)))
-    s = zr__diag(ctx, ZR_DIAG_ERROR, ZR_EIO, NULL, "%s: write failed: %s",
-                 path, strerror(errno));
+  zr_status s = encode_flushed(ctx, image, path, &e, f);
   if (fclose(f) != 0 && s == ZR_OK)
     s = zr__diag(ctx, ZR_DIAG_ERROR, ZR_EIO, NULL, "%s: write failed: %s",
                  path, strerror(errno));

@@ -39,6 +39,9 @@ struct zr_image {
   /* width * height * 3 linear floats: images made by zr_image_new, float
      files (PFM) and images zr_image_read returns; else NULL. */
   float *pixels;
+  /* NULL, or width * height alpha values in [0, 1] (1 opaque), made by
+     zr_image_add_alpha for the writers that store it. */
+  float *alpha;
   zr_image_layout layout;
   /* GREY and RGB: the stored samples, rows top to bottom, unsigned char
      when maxval <= 255, else unsigned short; alpha is not kept. */
@@ -122,7 +125,7 @@ zr_status zr__png_decode(zr_context *ctx, const char *name,
                          const unsigned char *bytes, size_t size,
                          zr_image **out);
 zr_status zr__png_encode(zr_context *ctx, const char *name,
-                         const zr_image *image, int bits,
+                         const zr_image *image, int bits, bool alpha,
                          double assumed_gamma, FILE *stream);
 zr_status zr__jpeg_decode(zr_context *ctx, const char *name,
                           const unsigned char *bytes, size_t size,
@@ -158,6 +161,44 @@ zr_status zr__ppm_encode(zr_context *ctx, const char *name,
                          FILE *stream);
 zr_status zr__pfm_encode(zr_context *ctx, const char *name,
                          const zr_image *image, FILE *stream);
+
+/* Writers added for issue 12, one file each.  e is the caller's
+   encoding (format already resolved, never AUTO). */
+zr_status zr__jpeg_encode(zr_context *ctx, const char *name,
+                          const zr_image *image, const zr_image_encoding *e,
+                          FILE *stream);
+zr_status zr__tga_encode(zr_context *ctx, const char *name,
+                         const zr_image *image, const zr_image_encoding *e,
+                         FILE *stream);
+zr_status zr__hdr_encode(zr_context *ctx, const char *name,
+                         const zr_image *image, const zr_image_encoding *e,
+                         FILE *stream);
+zr_status zr__exr_encode(zr_context *ctx, const char *name,
+                         const zr_image *image, const zr_image_encoding *e,
+                         FILE *stream);
+/* Readers added for issue 12 (hdr.c, exr.c, bmp.c, tiff.c). */
+bool zr__hdr_looks_like(const unsigned char *bytes, size_t size);
+zr_status zr__hdr_decode(zr_context *ctx, const char *name,
+                         const unsigned char *bytes, size_t size,
+                         zr_image **out);
+bool zr__exr_looks_like(const unsigned char *bytes, size_t size);
+zr_status zr__exr_decode(zr_context *ctx, const char *name,
+                         const unsigned char *bytes, size_t size,
+                         zr_image **out);
+/* Whether this build reads and writes OpenEXR (configure's check). */
+bool zr__exr_available(void);
+zr_status zr__bmp_decode(zr_context *ctx, const char *name,
+                         const unsigned char *bytes, size_t size,
+                         zr_image **out);
+zr_status zr__tiff_decode(zr_context *ctx, const char *name,
+                          const unsigned char *bytes, size_t size,
+                          zr_image **out);
+/* A coverage (alpha) value stored linearly: clamped to [0, 1], NaN 0,
+   rounded to 0 .. maxval. */
+unsigned zr__encode_linear(float value, unsigned maxval);
+/* The value stored for linear light by the float formats (HDR, EXR):
+   the working value raised to assumed_gamma, negatives and NaN 0. */
+float zr__linear_sample(float value, double assumed_gamma);
 
 /*
  * A height field's samples (lib/image/heights.c): the stored values of

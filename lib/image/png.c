@@ -16,7 +16,9 @@
  * primaries).
  *
  * Writing produces 8 or 16-bit RGB with sRGB, gAMA and cHRM chunks, as
- * POV-Ray 3.7 does.
+ * POV-Ray 3.7 does, or RGBA when the image has an alpha channel (+UA):
+ * alpha is stored linearly and unassociated, as the PNG specification
+ * (section 4.3.2) defines it.
  *
  * libpng reports errors by longjmp.  Everything that must be released
  * after a jump lives in a struct owned by the caller of the function that
@@ -234,21 +236,24 @@ zr_status zr__png_decode(zr_context *ctx, const char *name,
 /* ---- writing ---- */
 
 static zr_status encode_rows(png_job *job, const zr_image *image, int bits,
-                             double assumed_gamma, FILE *stream) {
+                             bool alpha, double assumed_gamma,
+                             FILE *stream) {
+  const size_t channels = alpha ? 4 : 3;
   if (setjmp(png_jmpbuf(job->png)))
     return ZR_EIO;
   png_init_io(job->png, stream);
   png_set_compression_level(job->png, job->ctx ? job->ctx->png_level
                                                : ZR_DEFAULT_PNG_LEVEL);
   png_set_IHDR(job->png, job->info, (png_uint_32)image->width,
-               (png_uint_32)image->height, bits, PNG_COLOR_TYPE_RGB,
+               (png_uint_32)image->height, bits,
+               alpha ? PNG_COLOR_TYPE_RGB_ALPHA : PNG_COLOR_TYPE_RGB,
                PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
                PNG_FILTER_TYPE_DEFAULT);
   png_set_sRGB_gAMA_and_cHRM(job->png, job->info,
                              PNG_sRGB_INTENT_PERCEPTUAL);
   png_write_info(job->png, job->info);
   size_t bytes_per_sample = bits == 16 ? 2 : 1;
-  size_t rowbytes = (size_t)image->width * 3 * bytes_per_sample;
+  size_t rowbytes = (size_t)image->width * channels * bytes_per_sample;
   job->rows = malloc(rowbytes);
   if (!job->rows) {
     snprintf(job->message, sizeof job->message, "%s",
@@ -261,10 +266,14 @@ static zr_status encode_rows(png_job *job, const zr_image *image, int bits,
     zr__encoder8_init(&enc, assumed_gamma);
   for (int y = 0; y < image->height; y++) {
     const float *src = image->pixels + (size_t)y * image->width * 3;
-    for (size_t i = 0; i < (size_t)image->width * 3; i++) {
-      unsigned code = bits == 8 ? zr__encoder8_code(&enc, src[i])
-                                : zr__encode_sample(src[i], assumed_gamma,
-                                                    maxval);
+    const float *a = alpha ? image->alpha + (size_t)y * image->width : NULL;
+    for (size_t i = 0; i < (size_t)image->width * channels; i++) {
+      size_t x = i / channels, c = i % channels;
+      unsigned code =
+          c == 3      ? zr__encode_linear(a[x], maxval)
+          : bits == 8 ? zr__encoder8_code(&enc, src[3 * x + c])
+                      : zr__encode_sample(src[3 * x + c], assumed_gamma,
+                                          maxval);
       if (bits == 16) {
         job->rows[2 * i] = (unsigned char)(code >> 8);
         job->rows[2 * i + 1] = (unsigned char)(code & 0xff);
@@ -279,7 +288,7 @@ static zr_status encode_rows(png_job *job, const zr_image *image, int bits,
 }
 
 zr_status zr__png_encode(zr_context *ctx, const char *name,
-                         const zr_image *image, int bits,
+                         const zr_image *image, int bits, bool alpha,
                          double assumed_gamma, FILE *stream) {
   png_job job;
   memset(&job, 0, sizeof job);
@@ -295,7 +304,8 @@ zr_status zr__png_encode(zr_context *ctx, const char *name,
     snprintf(job.message, sizeof job.message, "%s",
              zr_status_str(ZR_ENOMEM));
   } else {
-    s = encode_rows(&job, image, bits, assumed_gamma, stream);
+    s = encode_rows(&job, image, bits, alpha && image->alpha != NULL,
+                    assumed_gamma, stream);
   }
   int write_errno = errno;
   /* A failed write (a full disk, ulimit -f) says why, as a failed flush

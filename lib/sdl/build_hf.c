@@ -52,8 +52,7 @@ static zr_object *hf_new(zr_sdl_parser *p, const zr_sdl_loc *loc, int w,
 /* The file's type from its name's extension, for a height_field without
    a type keyword; NULL when it is one zRcube reads. */
 static const char *unreadable_type(const char *name) {
-  static const char *const others[] = {"iff", "tif", "tiff", "sys",
-                                       "exr", "hdr"};
+  static const char *const others[] = {"iff", "sys", "exr", "hdr"};
   const char *dot = strrchr(name, '.');
   if (!dot)
     return NULL;
@@ -71,7 +70,7 @@ zr_object *zr__sdl_height_field_image(zr_sdl_parser *p,
   if (type) {
     zr__sdl_error(p, ZR_EUNSUPPORTED, name_loc,
                   "height_field: '%s' files are not supported yet (use "
-                  "png, gif, pot, tga, pgm, ppm or jpeg)", type);
+                  "png, gif, pot, tga, bmp, tiff, pgm, ppm or jpeg)", type);
     return NULL;
   }
   char *path = NULL, *bytes = NULL;

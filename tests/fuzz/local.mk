@@ -25,12 +25,13 @@ tests_fuzz_fuzz_parse_SOURCES = tests/fuzz/fuzz_parse.c \
 	$(lib_libzrcube_la_SOURCES)
 nodist_tests_fuzz_fuzz_parse_SOURCES = $(GRAMMAR_GENERATED)
 tests_fuzz_fuzz_parse_CPPFLAGS = $(AM_CPPFLAGS) -DZR_BUILDING_LIBRARY \
-	$(PNG_CFLAGS) $(PTHREAD_CFLAGS)
+	$(PNG_CFLAGS) $(PTHREAD_CFLAGS) $(TIFF_CFLAGS) $(EXR_CFLAGS)
 tests_fuzz_fuzz_parse_CFLAGS = $(AM_CFLAGS) $(PTHREAD_CFLAGS) \
 	-fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined \
 	-fno-omit-frame-pointer
 tests_fuzz_fuzz_parse_LDFLAGS = -fsanitize=fuzzer,address,undefined
-tests_fuzz_fuzz_parse_LDADD = $(PNG_LIBS) $(JPEG_LIBS) $(PTHREAD_LIBS) -lm
+tests_fuzz_fuzz_parse_LDADD = $(PNG_LIBS) $(JPEG_LIBS) $(TIFF_LIBS) \
+	$(EXR_LIBS) $(PTHREAD_LIBS) -lm
 $(tests_fuzz_fuzz_parse_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
 endif
 

@@ -4,7 +4,8 @@
 # 16-bit/alpha, GIF, POT, TGA raw and RLE, PPM/PGM/PBM ascii and binary,
 # PFM colour and grey, JPEG grey and colour) into tests/fuzz/image-seeds.
 # Usage: tests/fuzz/make-image-seeds.sh [OUTDIR]   (needs python3; the
-# JPEG seeds need pnmtojpeg from netpbm and are skipped without it).
+# JPEG seeds need pnmtojpeg from netpbm and are skipped without it; the
+# OpenEXR seed needs ZRCUBE=build/bin/zrcube).  Also BMP, HDR and TIFF.
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
 out=${1:-$here/image-seeds}
@@ -96,7 +97,45 @@ w("binary16.pgm", b"P5\n2 1\n1000\n\x00\x10\x03\xe8")
 w("binary.ppm", b"P6\n2 1\n255\n\xff\x00\x00\x00\xff\x00")
 w("colour.pfm", b"PF\n2 1\n-1.0\n" + struct.pack("<6f", 0, .5, 1, 2, 0.25, 0.125))
 w("grey-be.pfm", b"Pf\n1 2\n1.0\n" + struct.pack(">2f", .5, 1.5))
+
+# BMP (issue 12): 24-bit bottom-up, 8-bit palette, RLE8, 16-bit fields.
+def bmp(wd, ht, bits, comp, body, colours=0, extra=b""):
+    off = 54 + len(extra)
+    return (b"BM" + struct.pack("<IHHI", off + len(body), 0, 0, off) +
+            struct.pack("<IiiHHIIiiII", 40, wd, ht, 1, bits, comp,
+                        len(body), 2835, 2835, colours, 0) + extra + body)
+w("rgb24.bmp", bmp(2, 2, 24, 0, bytes([1, 2, 3, 4, 5, 6, 0, 0,
+                                       7, 8, 9, 10, 11, 12, 0, 0])))
+pal = bytes([10, 20, 30, 0, 40, 50, 60, 0])
+w("pal8.bmp", bmp(3, -1, 8, 0, bytes([1, 0, 1, 0]), 2, pal))
+w("rle8.bmp", bmp(4, 2, 8, 1, bytes([2, 1, 0, 3, 0, 1, 1, 0, 0, 0,
+                                     0, 2, 1, 0, 0, 1]), 2, pal))
+w("fields16.bmp", bmp(1, 1, 16, 3, b"\x1f\xf8\0\0", 0,
+                      struct.pack("<3I", 0xf800, 0x07e0, 0x001f)))
+
+# Radiance HDR (issue 12): flat and run-length encoded scanlines.
+w("flat.hdr", b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 2\n" +
+  bytes([128, 64, 32, 129, 1, 1, 1, 1]))
+rle = bytes([2, 2, 0, 8]) + b"".join(bytes([136, v]) for v in (128, 64, 0, 130))
+w("rle.hdr", b"#?RADIANCE\n\n+Y 1 +X 8\n" + rle)
+
+# TIFF (issue 12): baseline little-endian RGB, one strip, uncompressed.
+def tiff(wd, ht, pixels):
+    tags = [(256, 3, 1, wd), (257, 3, 1, ht), (258, 3, 1, 8), (259, 3, 1, 1),
+            (262, 3, 1, 2), (273, 4, 1, 8), (277, 3, 1, 3), (278, 3, 1, ht),
+            (279, 4, 1, len(pixels))]
+    ifd = struct.pack("<H", len(tags)) + b"".join(
+        struct.pack("<HHII", t, k, n, v) for t, k, n, v in tags) + b"\0" * 4
+    return b"II*\0" + struct.pack("<I", 8 + len(pixels)) + pixels + ifd
+w("rgb.tif", tiff(2, 1, bytes([255, 0, 0, 0, 0, 255])))
 PY
+# OpenEXR (issue 12): written by zRcube itself when a build is given.
+if [ -n "${ZRCUBE:-}" ] && [ -x "$ZRCUBE" ]; then
+  printf 'camera { location -z look_at 0 } background { rgb <2, 1, 0.5> }\n' \
+    >"$out/exr-seed.pov"
+  "$ZRCUBE" +I"$out/exr-seed.pov" +O"$out/tiny.exr" +W3 +H2 -D -A >/dev/null 2>&1 || true
+  rm -f "$out/exr-seed.pov"
+fi
 if command -v pnmtojpeg >/dev/null 2>&1; then
   printf 'P5\n4 4\n255\n\0\100\200\377\0\100\200\377\0\100\200\377\0\100\200\377' |
     pnmtojpeg --quality=50 >"$out/grey.jpg"

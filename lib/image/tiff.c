@@ -1,0 +1,188 @@
+/*
+ * tiff.c - TIFF files read from memory through libtiff (4.5 or newer),
+ * for the "tiff" image type of image maps (POV-Ray 3.7 reference,
+ * "Image Maps").
+ *
+ * libtiff's RGBA interface reads every kind of TIFF it knows (grey,
+ * palette, RGB, YCbCr, CMYK, 1 to 16 bits, strips or tiles, any
+ * compression it was built with) into 8-bit red, green, blue and alpha,
+ * which is the precision the other 8-bit formats have here; the first
+ * image of the file is read.  Samples are taken as sRGB.  Alpha is not
+ * kept (image_map takes transparency from filter and transmit).
+ *
+ * libtiff's default handlers print errors and warnings on stderr; they
+ * are replaced per file (TIFFOpenOptions, libtiff 4.5) so that the first
+ * error reaches the context and warnings are dropped.  Bytes are served
+ * from memory by client procedures, so files handed over by the MPI
+ * reader work as local ones.
+ */
+#include <stdarg.h>
+#include <stdbool.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <tiffio.h>
+
+#include "core/context.h"
+#include "image/image.h"
+
+/* The largest single allocation libtiff may make for a hostile file:
+   more than a strip or tile of the largest image read needs. */
+#define MAX_TIFF_ALLOC ((tmsize_t)1 << 29)
+
+typedef struct tiff_source {
+  const unsigned char *bytes;
+  size_t size, pos;
+  char message[256];
+} tiff_source;
+
+static tmsize_t on_read(thandle_t h, void *buf, tmsize_t n) {
+  tiff_source *src = (tiff_source *)h;
+  if (n < 0)
+    return -1;
+  size_t left = src->size - src->pos;
+  size_t k = (size_t)n < left ? (size_t)n : left;
+  memcpy(buf, src->bytes + src->pos, k);
+  src->pos += k;
+  return (tmsize_t)k;
+}
+
+static tmsize_t on_write(thandle_t h, void *buf, tmsize_t n) {
+  (void)h;
+  (void)buf;
+  (void)n;
+  return -1; /* read only */
+}
+
+static toff_t on_seek(thandle_t h, toff_t off, int whence) {
+  tiff_source *src = (tiff_source *)h;
+  uint64_t base = whence == SEEK_CUR   ? src->pos
+                  : whence == SEEK_END ? src->size
+                                       : 0;
+  uint64_t to = base + off;
+  if (to > src->size)
+    return (toff_t)-1;
+  src->pos = (size_t)to;
+  return to;
+}
+
+static int on_close(thandle_t h) {
+  (void)h;
+  return 0;
+}
+
+static toff_t on_size(thandle_t h) { return ((tiff_source *)h)->size; }
+
+static int on_map(thandle_t h, void **base, toff_t *size) {
+  (void)h;
+  (void)base;
+  (void)size;
+  return 0; /* no mapping: libtiff reads through on_read */
+}
+
+static void on_unmap(thandle_t h, void *base, toff_t size) {
+  (void)h;
+  (void)base;
+  (void)size;
+}
+
+static int on_error(TIFF *tif, void *user, const char *module,
+                    const char *fmt, va_list ap) {
+  (void)tif;
+  (void)module;
+  tiff_source *src = user;
+  if (!src->message[0])
+    vsnprintf(src->message, sizeof src->message, fmt, ap);
+  return 1; /* handled: nothing printed */
+}
+
+static int on_warning(TIFF *tif, void *user, const char *module,
+                      const char *fmt, va_list ap) {
+  (void)tif;
+  (void)user;
+  (void)module;
+  (void)fmt;
+  (void)ap;
+  return 1;
+}
+
+static zr_status failed(zr_context *ctx, const char *name,
+                        const tiff_source *src, const char *what) {
+  return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL, "%s: %s%s%s", name,
+                  what, src->message[0] ? ": " : "", src->message);
+}
+
+zr_status zr__tiff_decode(zr_context *ctx, const char *name,
+                          const unsigned char *bytes, size_t size,
+                          zr_image **out) {
+  *out = NULL;
+  tiff_source src = {bytes, size, 0, ""};
+  TIFFOpenOptions *opts = TIFFOpenOptionsAlloc();
+  if (!opts)
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s", name,
+                    zr_status_str(ZR_ENOMEM));
+  TIFFOpenOptionsSetErrorHandlerExtR(opts, on_error, &src);
+  TIFFOpenOptionsSetWarningHandlerExtR(opts, on_warning, &src);
+  TIFFOpenOptionsSetMaxSingleMemAlloc(opts, MAX_TIFF_ALLOC);
+  /* "rm": read, and never memory-map (the bytes are ours already). */
+  TIFF *tif = TIFFClientOpenExt(name, "rm", (thandle_t)&src, on_read,
+                                on_write, on_seek, on_close, on_size, on_map,
+                                on_unmap, opts);
+  TIFFOpenOptionsFree(opts);
+  if (!tif)
+    return failed(ctx, name, &src, "not a readable TIFF file");
+  uint32_t w = 0, h = 0;
+  TIFFGetField(tif, TIFFTAG_IMAGEWIDTH, &w);
+  TIFFGetField(tif, TIFFTAG_IMAGELENGTH, &h);
+  char why[1024] = "";
+  if (w == 0 || h == 0 || w > INT32_MAX || h > INT32_MAX ||
+      !TIFFRGBAImageOK(tif, why)) {
+    TIFFClose(tif);
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EUNSUPPORTED, NULL,
+                    "%s: this kind of TIFF is not supported%s%.200s", name,
+                    why[0] ? ": " : "", why);
+  }
+  zr_image *image = NULL;
+  zr_status s = zr__image_new_named(ctx, name, (int)w, (int)h, &image);
+  if (s != ZR_OK) {
+    TIFFClose(tif);
+    return s;
+  }
+  size_t count = (size_t)w * h;
+  uint32_t *raster = malloc(count * sizeof *raster);
+  float *table = zr__decode_table(255, ZR_TRANSFER_SRGB, 0.0);
+  image->codes = malloc(count * 3); /* 8-bit codes (image.h) */
+  image->maxval = 255;
+  if (!raster || !table || !image->codes) {
+    free(raster);
+    free(table);
+    zr_image_free(image);
+    TIFFClose(tif);
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s", name,
+                    zr_status_str(ZR_ENOMEM));
+  }
+  /* stop_on_error = 1: a damaged file is an error, not a grey patch. */
+  int ok = TIFFReadRGBAImageOriented(tif, w, h, raster, ORIENTATION_TOPLEFT,
+                                     1);
+  TIFFClose(tif);
+  if (ok) {
+    for (size_t i = 0; i < count; i++) {
+      unsigned rgb[3] = {TIFFGetR(raster[i]), TIFFGetG(raster[i]),
+                         TIFFGetB(raster[i])};
+      for (int c = 0; c < 3; c++) {
+        ((unsigned char *)image->codes)[3 * i + c] = (unsigned char)rgb[c];
+        image->pixels[3 * i + c] = table[rgb[c]];
+      }
+    }
+  }
+  free(raster);
+  free(table);
+  if (!ok) {
+    zr_image_free(image);
+    return failed(ctx, name, &src, "damaged TIFF file");
+  }
+  *out = image;
+  return ZR_OK;
+}

@@ -1,0 +1,47 @@
+#!/bin/sh
+# test_mpirun_wrapper.sh - the README's MPI command works as written:
+# build/bin/zrcube-mpirun runs 3 ranks (more than this machine's cores
+# when it has fewer) with none of OpenMPI's switches in the environment
+# (as root too, when the test runs as root), and the picture is the same
+# bytes as one process renders.
+#
+# Environment: ZR_SRCDIR, ZR_BUILDDIR (set by `make check`).
+set -u
+srcdir=${ZR_SRCDIR:-$(cd "$(dirname "$0")/.." && pwd)}
+builddir=${ZR_BUILDDIR:-$srcdir/build}
+wrapper=$builddir/bin/zrcube-mpirun
+[ -x "$wrapper" ] || { echo "test_mpirun_wrapper.sh: $wrapper is not built" >&2; exit 99; }
+work=$(mktemp -d "${TMPDIR:-/tmp}/zr_mpirun.XXXXXX") || exit 99
+trap 'rm -rf "$work"' EXIT INT TERM
+cd "$work" || exit 99
+cat >s.pov <<'POV'
+#version 3.7;
+camera { location <0, 1, -3> look_at 0 }
+light_source { <2, 4, -3> rgb 1 }
+sphere { 0, 1 pigment { rgb <1, 0.5, 0.2> } }
+POV
+failed=0
+# What make check exports for the other tests is taken away here.
+if env -u OMPI_ALLOW_RUN_AS_ROOT -u OMPI_ALLOW_RUN_AS_ROOT_CONFIRM \
+     -u OMPI_MCA_rmaps_base_oversubscribe -u MPIRUN \
+     timeout 120 "$wrapper" -n 3 +Is.pov +W40 +H30 -D +WT1 +Ompi.png \
+     </dev/null >mpi.log 2>&1; then
+  echo "zrcube-mpirun -n 3 (uid $(id -u), $(nproc) cores): ok"
+else
+  echo "zrcube-mpirun -n 3 failed:"; tail -5 mpi.log
+  failed=1
+fi
+timeout 120 "$builddir/bin/zrcube" +Is.pov +W40 +H30 -D +WT1 +Oone.png \
+  </dev/null >one.log 2>&1 || { echo "zrcube alone failed"; tail -3 one.log; exit 99; }
+if [ "$failed" = 0 ] && cmp -s mpi.png one.png; then
+  echo "3 ranks and one process: same bytes"
+else
+  echo "3 ranks and one process differ"; failed=1
+fi
+if "$wrapper" -n x s.pov 2>err.log; then
+  echo "a bad rank count was accepted"; failed=1
+else
+  grep -q "'x' is not a number of ranks" err.log || { echo "message: $(cat err.log)"; failed=1; }
+fi
+[ "$failed" = 0 ] && echo "1 passed, 0 failed" || echo "0 passed, 1 failed"
+exit "$failed"
