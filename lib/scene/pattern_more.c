@@ -37,7 +37,7 @@
 #include <math.h>
 
 #include "scene/pattern.h"
-#include "sdl/function.h"
+#include "fn/fn.h"
 #include "trace/intersect.h"
 
 /* How close (squared) to 1 a magnet orbit must come to count as gone:

@@ -100,7 +100,7 @@ typedef struct zr_fractal {
   double interior_factor, exterior_factor;
 } zr_fractal;
 
-struct zr_fn; /* a compiled user function (lib/sdl/function.h) */
+struct zr_fn; /* a compiled user function (lib/fn/fn.h) */
 
 /* The wave form applied after frequency and phase ("Waveforms"). */
 typedef enum zr_wave_kind {
@@ -467,7 +467,7 @@ static inline bool zr__is_csg(zr_object_kind kind) {
 }
 
 struct zr_mesh; /* triangles and their BVH, shared by every copy */
-struct zr_fn;   /* a compiled user function (lib/sdl/function.h) */
+struct zr_fn;   /* a compiled user function (lib/fn/fn.h) */
 
 /* One component of a blob ("Blob"): its field is
    strength (1 - d^2 / radius^2)^2 within radius of its centre (sphere)

@@ -35,7 +35,7 @@
 #include <float.h>
 #include <math.h>
 
-#include "sdl/function.h"
+#include "fn/fn.h"
 #include "trace/obj_shapes.h"
 
 /* The subdivision's stack: halving a stretch 100 times reaches the

@@ -26,7 +26,7 @@
 #include <float.h>
 #include <math.h>
 
-#include "sdl/function.h"
+#include "fn/fn.h"
 #include "trace/obj_shapes.h"
 
 /* The subdivision's depth limit and its stack (four children a level). */
