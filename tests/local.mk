@@ -133,3 +133,8 @@ EXTRA_DIST += tests/test_iopolicy.sh
 # little memory, corrupt files, 10^6 objects.
 TESTS += tests/test_faults.sh
 EXTRA_DIST += tests/test_faults.sh
+
+# The lib/ folders include one another only downward (issue 14;
+# bench/layering.sh, README "Layering").
+TESTS += tests/test_layering.sh
+EXTRA_DIST += tests/test_layering.sh bench/layering.sh

@@ -185,6 +185,10 @@ typedef struct zr_pattern {
   zr_fractal fractal;               /* mandel, julia */
   const struct zr_fn *fn;           /* function { }: f(x, y, z) */
   const struct zr_object *object;   /* object pattern */
+  /* The object pattern's inside test (the tracer's, lib/trace/
+     intersect.c), set with object by the parser, so the scene model
+     needs no tracer (README, "Layering"). */
+  bool (*object_inside)(const struct zr_object *object, zr_vec3 p);
   /* crackle's form (weights of the three nearest distances, default
      <-1,1,0>), metric (default 2), offset and solid ("Crackle"). */
   zr_vec3 crackle_form;
@@ -966,11 +970,14 @@ struct zr_scene {
   zr_settings settings;
   const zr_texture *default_texture;
   const zr_interior *default_interior;
-  /* Built by zr__scene_finish(): every primitive, unions flattened, each
-     with its texture resolved (never NULL). */
+  /* Built by zr__scene_finish() (lib/trace/prepare.c): every primitive,
+     unions flattened, each with its texture resolved (never NULL), how
+     many of them are bounded, and the tracer's BVH with the routine
+     that frees it (set with it, so the model needs no tracer). */
   const zr_object **primitives;
-  size_t n_primitives;
+  size_t n_primitives, n_finite_primitives;
   struct zr_bvh *bvh;
+  void (*bvh_free)(struct zr_bvh *bvh);
   unsigned long long parse_steps; /* the work budget the parse used */
 };
 
@@ -984,21 +991,5 @@ void zr__settings_init(zr_settings *s);
 zr_scene *zr__scene_new(void);
 zr_status zr__scene_add_object(zr_scene *scene, zr_object *object);
 zr_status zr__scene_add_light(zr_scene *scene, const zr_light *light);
-
-/*
- * Ends construction: flattens unions into scene->primitives, resolves
- * default textures, then builds the tracer's BVH.  Called once by the
- * parser after the last statement.
- */
-zr_status zr__scene_finish(zr_scene *scene, zr_context *ctx);
-
-/* Makes *prim's per-texture copies when it is a mesh with a texture
-   list (lib/trace/obj_mesh.c); *prim then points to a new copy.  A no-op
-   for other objects. */
-zr_status zr__mesh_instance(zr_arena *arena, const zr_object **prim);
-
-/* The object's world-space bounding box; false for unbounded objects
-   (planes, and anything inverse). */
-bool zr__object_bounds(const zr_object *object, zr_vec3 *lo, zr_vec3 *hi);
 
 #endif /* ZR_SCENE_SCENE_H */

@@ -1,7 +1,8 @@
 # lib/trace/local.mk - the tracer: bounds, BVH, intersections, shading,
 # camera rays and antialiasing.
 lib_libzrcube_la_SOURCES += \
-	lib/scene/bounds.c \
+	lib/trace/bounds.c \
+	lib/trace/prepare.c lib/trace/prepare.h \
 	lib/trace/bvh.c lib/trace/bvh.h \
 	lib/trace/csg.c \
 	lib/trace/obj_quadric.c lib/trace/obj_quadric.h \

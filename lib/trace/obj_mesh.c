@@ -32,6 +32,7 @@
 
 #include "trace/bvh.h"
 #include "trace/intersect.h"
+#include "trace/prepare.h"
 
 #include <math.h>
 #include <stdlib.h>

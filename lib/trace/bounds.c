@@ -16,7 +16,7 @@
  * reference, "Plane" and "Inverse"), so they report false and the BVH
  * keeps them in its list of unbounded primitives.
  */
-#include "scene/scene.h"
+#include "trace/intersect.h"
 
 #include <math.h>
 
