@@ -1,5 +1,5 @@
 lib_libzrcube_la_SOURCES += \
-	lib/scene/scene.c lib/scene/scene.h
+	lib/scene/scene.c lib/scene/scene.h lib/scene/shapes.h
 
 # Patterns, noise, colour maps, image maps and normals.
 lib_libzrcube_la_SOURCES += \

@@ -470,7 +470,8 @@ static inline bool zr__is_csg(zr_object_kind kind) {
          kind == ZR_OBJ_MERGE;
 }
 
-struct zr_mesh; /* triangles and their BVH, shared by every copy */
+struct zr_mesh; /* triangles and their BVH, shared by every copy
+                  (lib/scene/shapes.h) */
 struct zr_fn;   /* a compiled user function (lib/fn/fn.h) */
 
 /* One component of a blob ("Blob"): its field is
@@ -487,7 +488,7 @@ typedef struct zr_blob_component {
      field at the point (measured on POV-Ray 3.7's renders). */
   const struct zr_texture *texture;
 } zr_blob_component;
-struct zr_text; /* extruded glyph outlines, shared likewise */
+struct zr_text; /* extruded glyph outlines, shared likewise (shapes.h) */
 
 typedef struct zr_object zr_object;
 
@@ -630,11 +631,11 @@ struct zr_object {
     } sor;
     struct {
       /* sphere_sweep ("Sphere Sweep"): its spline pieces, shared by
-         every copy (lib/trace/obj_sweep.h). */
+         every copy (lib/scene/shapes.h). */
       const struct zr_sphere_sweep *data;
     } sweep;
     struct {
-      /* julia_fractal ("Julia Fractal"): lib/trace/obj_sweep.h. */
+      /* julia_fractal ("Julia Fractal"): lib/scene/shapes.h. */
       const struct zr_julia *data;
     } julia;
     struct {
