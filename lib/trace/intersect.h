@@ -74,12 +74,7 @@ bool zr__csg_inside(const zr_object *object, zr_vec3 p);
 /* Whether the object encloses a volume (triangles and discs do not, so
    rays crossing them stay in the medium they were in). */
 bool zr__mesh_has_inside(const zr_object *object); /* obj_mesh.c */
-static inline bool zr__has_inside(const zr_object *object) {
-  if (object->kind == ZR_OBJ_MESH)
-    return zr__mesh_has_inside(object);
-  return object->kind != ZR_OBJ_TRIANGLE && object->kind != ZR_OBJ_DISC &&
-         object->kind != ZR_OBJ_POLYGON && object->kind != ZR_OBJ_PARAMETRIC;
-}
+bool zr__has_inside(const zr_object *object);
 
 /*
  * The distance by which a secondary ray leaving point p is moved off the

@@ -17,6 +17,7 @@
 #include "core/context.h"
 #include "trace/bvh.h"
 #include "trace/intersect.h"
+#include "trace/shape.h"
 
 /* Grows *items (of *cap elements of size elem) to hold one more. */
 static zr_status grow(void **items, size_t *cap, size_t n, size_t elem) {
@@ -135,7 +136,8 @@ static zr_status flatten(zr_scene *scene, zr_object *object,
     return ZR_ENOMEM;
   /* A mesh with a texture list gets one copy per texture, each placed
      and textured like this one (lib/trace/obj_mesh.c). */
-  if ((s = zr__mesh_instance(&scene->arena, &prim)) != ZR_OK)
+  const zr_shape_ops *ops = zr__shape(prim->kind);
+  if (ops->prepare && (s = ops->prepare(&scene->arena, &prim)) != ZR_OK)
     return s;
   out->items[out->n++] = prim;
   return ZR_OK;
