@@ -57,6 +57,14 @@ void zr__settings_init(zr_settings *s) {
   s->background = zr_colour5(0, 0, 0, 0, 0);
   s->version = 3.7;
   s->radiosity.brightness = 1.0;
+  s->photons.gather_min = 20;
+  s->photons.gather_max = 100;
+  s->photons.jitter = 0.4;
+  s->photons.max_trace_level = -1;
+  s->photons.adc_bailout = -1.0;
+  s->photons.radius_multiplier = 1.0;
+  s->photons.expand_increase = 0.2;
+  s->photons.expand_min = 40;
 }
 
 zr_scene *zr__scene_new(void) {
@@ -118,6 +126,8 @@ ZR_API void zr_scene_free(zr_scene *scene) {
     return;
   if (scene->bvh_free)
     scene->bvh_free(scene->bvh);
+  if (scene->photons_free)
+    scene->photons_free(scene->photons);
   free(scene->primitives);
   free(scene->objects);
   free(scene->lights);

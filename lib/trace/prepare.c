@@ -17,6 +17,7 @@
 #include "core/context.h"
 #include "trace/bvh.h"
 #include "trace/intersect.h"
+#include "trace/photons.h"
 #include "trace/shape.h"
 
 /* Grows *items (of *cap elements of size elem) to hold one more. */
@@ -163,5 +164,10 @@ zr_status zr__scene_finish(zr_scene *scene, zr_context *ctx) {
       scene->n_finite_primitives++;
   }
   scene->bvh_free = zr__bvh_free;
-  return zr__bvh_build(scene, ctx);
+  zr_status s = zr__bvh_build(scene, ctx);
+  if (s == ZR_OK && scene->settings.photons.on) {
+    scene->photons_free = zr__photons_free;
+    s = zr__photons_build(scene, ctx); /* lib/trace/photons.c */
+  }
+  return s;
 }
