@@ -7,7 +7,7 @@
 # OLD_ZRCUBE and NEW_ZRCUBE are programs (a build's bin/zrcube, or a
 # copy kept before a change).  Each scenes/NAME.pov is rendered by both
 # as bench/run.sh renders it (one thread, no antialiasing), the two runs
-# alternating, best of REPEAT (default 3) wall-clock each; the table
+# alternating, best of REPEAT (default 3) CPU times each; the table
 # gives both times, their ratio new / old (below 1: the new is faster)
 # and "same" or "DIFFER" for the PNG bytes, then the geometric mean of
 # the ratios.  The exit status is 1 when some images differ.  Timings
@@ -27,12 +27,12 @@ repeat=${REPEAT:-3}
 work=$(mktemp -d "${TMPDIR:-/tmp}/zr-ab.XXXXXX")
 trap 'rm -rf "$work"' EXIT INT TERM
 
-# Wall-clock seconds of the command, or "fail".
+# CPU seconds (user + system) of the command, or "fail": on a shared
+# machine they vary far less than wall-clock time, and a render on one
+# thread uses one CPU.
 seconds() {
-  start=$(date +%s.%N)
-  if "$@" >"$work/log" 2>&1; then
-    end=$(date +%s.%N)
-    echo "$start $end" | awk '{ printf "%.3f\n", $2 - $1 }'
+  if /usr/bin/time -f '%U %S' -o "$work/time" "$@" >"$work/log" 2>&1; then
+    tail -n 1 "$work/time" | awk '{ printf "%.3f\n", $1 + $2 }'
   else
     echo fail
   fi
