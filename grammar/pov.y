@@ -2381,12 +2381,12 @@ pigment_item:
 | T_OBJECT '{' pattern_object colour_list '}'
     {
       TRY(zr__sdl_pigment_pattern(p, $<pigment>0, ZR_PAT_OBJECT, $4));
-      $<pigment>0->pattern.object = $3;
+      zr__sdl_pattern_object(&$<pigment>0->pattern, $3);
     }
 | T_OBJECT '{' pattern_object pigment_blocks '}'
     {
       TRY(zr__sdl_pigment_pattern(p, $<pigment>0, ZR_PAT_OBJECT, NULL));
-      $<pigment>0->pattern.object = $3;
+      zr__sdl_pattern_object(&$<pigment>0->pattern, $3);
       TRY(zr__sdl_pigment_map_set(p, $<pigment>0, $4, &@4));
     }
 | fn_pattern
@@ -3256,7 +3256,7 @@ texture_body:
 | texture_body T_OBJECT '{' pattern_object texture_blocks '}'
     {
       zr__sdl_texture_pattern($1, ZR_PAT_OBJECT);
-      $1->pattern.object = $4;
+      zr__sdl_pattern_object(&$1->pattern, $4);
       TRY(zr__sdl_texture_map_set(p, $1, $5, &@5));
       $$ = $1;
     }

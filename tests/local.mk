@@ -151,6 +151,10 @@ EXTRA_DIST += tests/test_formats_povray.sh
 # ranks than cores; install, pkg-config (shared and --static), uninstall.
 TESTS += tests/test_mpirun_wrapper.sh tests/test_install.sh
 EXTRA_DIST += tests/test_mpirun_wrapper.sh tests/test_install.sh
+# The lib/ folders include one another only downward (issue 14;
+# bench/layering.sh, README "Layering").
+TESTS += tests/test_layering.sh
+EXTRA_DIST += tests/test_layering.sh bench/layering.sh
 
 # Simulated caustics against povray's measured law and picture.
 TESTS += tests/test_caustics.sh

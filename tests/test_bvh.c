@@ -16,6 +16,7 @@
 #include "core/arena.h"
 #include "core/transform.h"
 #include "scene/scene.h"
+#include "trace/prepare.h"
 #include "trace/bvh.h"
 #include "trace/intersect.h"
 

@@ -16,6 +16,7 @@
 #include "core/transform.h"
 #include "scene/scene.h"
 #include "trace/intersect.h"
+#include "trace/shape.h"
 #include "test_util.h"
 
 /* Hits here are roots of low-degree polynomials with small integer or
@@ -336,9 +337,54 @@ static void test_intersect_no_self_hit_across_scales(void **state) {
   }
 }
 
+/* The table of shape operations (lib/trace/shape.h): every kind has an
+   entry with a name; every kind that is not CSG has exactly one form of
+   crossings, and the flags agree with what the tracer expects of the
+   kinds with no inside or a flat one. */
+static void test_intersect_shape_table_complete(void **state) {
+  (void)state;
+  for (int k = ZR_OBJ_SPHERE; k <= ZR_OBJ_PARAMETRIC; k++) {
+    const zr_shape_ops *ops = zr__shape((zr_object_kind)k);
+    assert_non_null(ops);
+    assert_non_null(ops->name);
+    if (zr__is_csg((zr_object_kind)k)) {
+      assert_null(ops->search);
+      assert_null(ops->crossings);
+      assert_non_null(ops->inside);
+      continue;
+    }
+    assert_true((ops->search != NULL) != (ops->crossings != NULL));
+  }
+  assert_string_equal(zr__shape(ZR_OBJ_SPHERE)->name, "a sphere");
+  assert_string_equal(zr__shape(ZR_OBJ_INTERSECTION)->name,
+                      "an intersection or difference");
+  assert_null(zr__shape(ZR_OBJ_TRIANGLE)->inside);
+  assert_null(zr__shape(ZR_OBJ_POLYGON)->inside);
+  assert_null(zr__shape(ZR_OBJ_PARAMETRIC)->inside);
+  assert_true(zr__shape(ZR_OBJ_DISC)->flat);
+  assert_null(zr__shape(ZR_OBJ_PLANE)->bounds);
+  assert_null(zr__shape(ZR_OBJ_QUADRIC)->bounds);
+  assert_null(zr__shape(ZR_OBJ_POLY)->bounds);
+  assert_true(zr__shape(ZR_OBJ_MESH)->uv_from_hit);
+  /* A disc has an inside test (its plane's) but encloses no volume. */
+  zr_object disc;
+  memset(&disc, 0, sizeof disc);
+  disc.kind = ZR_OBJ_DISC;
+  disc.u.disc.normal = zr_v3(0, 1, 0);
+  disc.u.disc.radius = 1;
+  assert_false(zr__has_inside(&disc));
+  assert_true(zr__inside(&disc, zr_v3(5, -1, 0)));
+  zr_object ball;
+  memset(&ball, 0, sizeof ball);
+  ball.kind = ZR_OBJ_SPHERE;
+  ball.u.sphere.radius = 1;
+  assert_true(zr__has_inside(&ball));
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_intersect_sphere_outside_and_inside),
+      cmocka_unit_test(test_intersect_shape_table_complete),
       cmocka_unit_test(test_intersect_sphere_tangent_and_miss),
       cmocka_unit_test(test_intersect_sphere_transformed_keeps_world_t),
       cmocka_unit_test(test_intersect_ellipsoid_normal_by_inverse_transpose),

@@ -16,7 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "scene/noise.h"
+#include "core/noise.h"
 #include "scene/pattern.h"
 #include "sdl/sdl.h"
 #include "test_util.h"

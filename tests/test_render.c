@@ -16,6 +16,7 @@
 
 #include "core/arena.h"
 #include "scene/scene.h"
+#include "trace/prepare.h"
 #include "trace/render.h"
 #include "test_util.h"
 

@@ -18,6 +18,7 @@
 #include "core/transform.h"
 #include "radiosity/radiosity.h"
 #include "scene/scene.h"
+#include "trace/prepare.h"
 #include "trace/render.h"
 #include "trace/shade.h"
 #include "zrcube.h"

@@ -8,12 +8,12 @@ Renders normal_probe.pov (a plane lit by three coloured parallel lights,
 (as normal_probe.py does: tilt t = (nx, ny) / nz towards the viewer) and
 compares it with candidate normals n0 + k B V(p) at the pixel's point
 p = (x, y, 0) / 0.3, n0 the normal on the viewer's side.  V is
-turbulence's vector noise (lib/scene/noise.c, tables measured by
+turbulence's vector noise (lib/core/noise.c, tables measured by
 bench/noise/probe_noise.py), alone or times the noise to a power, or the
 gradient of the noise (what lib/scene/texture.c used to take), or for
 wrinkles sums over N octaves (2^i p, weight 2^-i) of the vector noise or
 of its componentwise absolute value.  A small
-C helper, built here from lib/scene/noise.c, evaluates them.
+C helper, built here from lib/core/noise.c, evaluates them.
 
 Result (2026-12-02): bumps: V = vector noise, k = 1, per-pixel
 correlation 1.00000 for both tilt components, root mean square error
@@ -75,7 +75,7 @@ def run(tmp):
         f.write(HELPER)
     subprocess.run(["gcc", "-O2", "-std=c11", "-I" + os.path.join(top, "lib"),
                     "-I" + os.path.join(top, "include"), "-I" + top, "-o", ev,
-                    ev + ".c", os.path.join(top, "lib/scene/noise.c"), "-lm"],
+                    ev + ".c", os.path.join(top, "lib/core/noise.c"), "-lm"],
                    check=True)
 
     def evaluate(pts):

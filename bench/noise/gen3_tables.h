@@ -1,6 +1,6 @@
 /* gen3_tables.h - POV-Ray 3.7's noise_generator 3, written by
    bench/noise/probe_gen3.py from povray's output (do not edit).
-   See lib/scene/noise.c for their use. */
+   See lib/core/noise.c for their use. */
 
 /* The lattice is shifted by -GEN3_OFFSET; the noise is GEN3_CONSTANT at
    its points. */

@@ -1,6 +1,6 @@
 /* noise_tables.h - POV-Ray 3.7's lattice noise tables, written by
    bench/noise/probe_noise.py from povray's output (do not edit).
-   See lib/scene/noise.c for their use. */
+   See lib/core/noise.c for their use. */
 
 /* The offset added to lattice coordinates before the hash. */
 #define NOISE_HASH_OFFSET 784

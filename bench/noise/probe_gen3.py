@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """probe_gen3.py - reconstructs POV-Ray 3.7's noise_generator 3 from
 f_noise_generator(x, y, z, 3) values printed by povray and writes
-bench/noise/gen3_tables.h, which lib/scene/noise.c includes.  Rerunning
+bench/noise/gen3_tables.h, which lib/core/noise.c includes.  Rerunning
 it rewrites the header byte for byte.  Run: bench/noise/probe_gen3.py
 
 What the measurements show:
@@ -165,7 +165,7 @@ def main():
     with open(out, "w") as f:
         f.write("/* gen3_tables.h - POV-Ray 3.7's noise_generator 3, written "
                 "by\n   bench/noise/probe_gen3.py from povray's output (do "
-                "not edit).\n   See lib/scene/noise.c for their use. */\n\n")
+                "not edit).\n   See lib/core/noise.c for their use. */\n\n")
         f.write("/* The lattice is shifted by -GEN3_OFFSET; the noise is "
                 "GEN3_CONSTANT at\n   its points. */\n")
         f.write("#define GEN3_OFFSET %.9f\n#define GEN3_CONSTANT %.9f\n\n"

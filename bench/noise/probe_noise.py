@@ -2,7 +2,7 @@
 """probe_noise.py - reconstructs POV-Ray 3.7's lattice noise (the
 default noise_generator 2, and generator 1 from it) from f_noise3d values
 printed by povray, and writes bench/noise/noise_tables.h, which
-lib/scene/noise.c includes.  Rerunning it rewrites the header byte for
+lib/core/noise.c includes.  Rerunning it rewrites the header byte for
 byte.  Run: bench/noise/probe_noise.py [output.h]
 
 What the measurements show (each step checks its claim on every value it
@@ -218,7 +218,7 @@ def main():
     with open(out, "w") as f:
         f.write("/* noise_tables.h - POV-Ray 3.7's lattice noise tables, "
                 "written by\n   bench/noise/probe_noise.py from povray's "
-                "output (do not edit).\n   See lib/scene/noise.c for their "
+                "output (do not edit).\n   See lib/core/noise.c for their "
                 "use. */\n\n")
         f.write("/* The offset added to lattice coordinates before the "
                 "hash. */\n#define NOISE_HASH_OFFSET %d\n\n" % C)

@@ -45,6 +45,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "trace/intersect.h"
 #include "trace/obj_mesh.h"
 
 /* Where an object was written, for messages. */

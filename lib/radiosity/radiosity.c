@@ -116,6 +116,16 @@ static zr_status over_budget(zr_context *ctx) {
                   (unsigned long long)zr_context_memory_limit(ctx));
 }
 
+/* The tracer's view of a solution (lib/trace/shade.h). */
+_Static_assert(offsetof(struct zr_radiosity, source) == 0,
+               "the tracer reads a solution as its first member");
+static bool source_radiance(const zr_radiance_source *self,
+                            const zr_object *object, zr_vec3 p, zr_vec3 d,
+                            zr_rgb *out) {
+  return zr__radiosity_radiance((const zr_radiosity *)(const void *)self,
+                                object, p, d, out);
+}
+
 zr_status zr__rad_create(zr_context *ctx, const zr_scene *scene,
                          const zr_radiosity_params *params,
                          zr_radiosity **out) {
@@ -133,6 +143,8 @@ zr_status zr__rad_create(zr_context *ctx, const zr_scene *scene,
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL,
                     "radiosity: out of memory");
   rad->scene = scene;
+  rad->source.radiance = source_radiance;
+  rad->source.scene = scene;
   rad->params = *params;
   rad->budget = ctx ? zr__budget_ref(ctx->budget) : NULL;
   rad->fingerprint = zr__rad_fingerprint(scene);

@@ -39,6 +39,7 @@
 #include "radiosity/quadrature.h"
 #include "radiosity/surface.h"
 #include "scene/scene.h"
+#include "trace/shade.h"
 #include "zrcube.h"
 
 /* Quadtree cells live on a dyadic grid of 2^ZR__RAD_DEPTH steps per
@@ -115,6 +116,9 @@ typedef struct zr__rad_object_entry {
 } zr__rad_object_entry;
 
 struct zr_radiosity {
+  /* What the tracer reads (lib/trace/shade.h): the first member, so a
+     zr_radiosity * is a zr_radiance_source *. */
+  zr_radiance_source source;
   const zr_scene *scene;
   /* The nodes, vertices and links are charged to the budget of the
      context that solved (NULL: none) until the solution is freed;

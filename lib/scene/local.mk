@@ -1,10 +1,10 @@
 lib_libzrcube_la_SOURCES += \
-	lib/scene/scene.c lib/scene/scene.h
+	lib/scene/scene.c lib/scene/scene.h lib/scene/shapes.h
 
 # Patterns, noise, colour maps, image maps and normals.
 lib_libzrcube_la_SOURCES += \
 	lib/scene/pattern.c lib/scene/pattern.h lib/scene/pattern_more.c \
-	lib/scene/pattern_tiling.c lib/scene/noise.c lib/scene/noise.h \
+	lib/scene/pattern_tiling.c \
 	lib/scene/warp.c lib/scene/warp.h \
 	lib/scene/texture.c lib/scene/texture.h \
 	lib/scene/bitmap.c lib/scene/bitmap.h

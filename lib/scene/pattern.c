@@ -27,7 +27,7 @@
  * it does in POV-Ray, not rounding noise.
  *
  * Noise is POV-Ray's, reconstructed from measurements of the povray
- * binary without its source (lib/scene/noise.c; bench/noise/ holds the
+ * binary without its source (lib/core/noise.c; bench/noise/ holds the
  * probe scripts, tests/test_noise.c checks 6400 recorded values to
  * 1e-9).  The noise patterns, each formula found by
  * bench/noise/probe_patterns.py for noise_generator 2 (c(n) is 2 n - 0.5
@@ -79,7 +79,7 @@
 #include <stdint.h>
 
 #include "scene/df3.h"
-#include "scene/noise.h"
+#include "core/noise.h"
 
 #include "../../bench/noise/crackle_tables.h"
 #include "scene/texture.h"

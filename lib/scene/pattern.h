@@ -13,13 +13,13 @@
    gradient along x. */
 void zr__pattern_init(zr_pattern *pt, zr_pattern_kind kind);
 
-/* POV-Ray's noise (noise_generator 2, lib/scene/noise.c), about
+/* POV-Ray's noise (noise_generator 2, lib/core/noise.c), about
    [0.1, 0.9] with mean 0.5. */
 double zr__noise(zr_vec3 p);
 /* The noise of a noise_generator 1, 2 or 3, POV-Ray's (measured), 0 the
    default 2. */
 double zr__noise_gen(zr_vec3 p, int generator);
-/* Turbulence's vector noise (lib/scene/noise.c), each component in about
+/* Turbulence's vector noise (lib/core/noise.c), each component in about
    [-1, 1]. */
 zr_vec3 zr__dnoise(zr_vec3 p);
 /* The fractal sum of dnoise over octaves (omega, lambda): turbulence's

@@ -37,8 +37,7 @@
 #include <math.h>
 
 #include "scene/pattern.h"
-#include "sdl/function.h"
-#include "trace/intersect.h"
+#include "fn/fn.h"
 
 /* How close (squared) to 1 a magnet orbit must come to count as gone:
    povray 3.7's counts are matched by any value from 1e-5 to 1e-4 (the
@@ -161,17 +160,18 @@ double zr__pattern_fractal(const zr_pattern *pt, zr_vec3 p) {
 
 /* Inside an object, a union (not yet flattened when a pattern is made)
    by its children, each level's inverse applied once. */
-static bool object_inside(const zr_object *o, zr_vec3 p) {
+static bool object_inside(const zr_pattern *pt, const zr_object *o,
+                          zr_vec3 p) {
   if (o->kind != ZR_OBJ_UNION)
-    return zr__inside(o, p);
+    return pt->object_inside(o, p);
   bool in = false;
   for (size_t i = 0; i < o->u.csg.n_children && !in; i++)
-    in = object_inside(o->u.csg.children[i], p) != o->inverse;
+    in = object_inside(pt, o->u.csg.children[i], p) != o->inverse;
   return in != o->inverse;
 }
 
 double zr__pattern_object(const zr_pattern *pt, zr_vec3 p) {
-  return pt->object && object_inside(pt->object, p) ? 1 : 0;
+  return pt->object && object_inside(pt, pt->object, p) ? 1 : 0;
 }
 
 double zr__pigment_pattern_value(const zr_pigment *pg, zr_vec3 world) {

@@ -1,10 +1,9 @@
 /*
  * scene.c - building and finishing the scene model.
  *
- * The parser fills a zr_scene with objects as written; zr__scene_finish()
- * then flattens unions (a plain union has no inside test, so its children
- * are traced as independent primitives), gives every primitive a texture,
- * and hands the list to the tracer to build its bounding volume hierarchy.
+ * The parser fills a zr_scene with objects as written; the tracer then
+ * prepares it (zr__scene_finish(), lib/trace/prepare.c): unions
+ * flattened, textures resolved, its bounding volume hierarchy built.
  */
 #include "scene/scene.h"
 
@@ -14,9 +13,6 @@
 #include <string.h>
 
 #include "core/context.h"
-#include "trace/bvh.h"
-#include "trace/intersect.h"
-#include "trace/photons.h"
 
 void zr__finish_init(zr_finish *f) {
   memset(f, 0, sizeof *f);
@@ -125,179 +121,13 @@ zr_status zr__scene_add_light(zr_scene *scene, const zr_light *light) {
   return s;
 }
 
-typedef struct flat_list {
-  const zr_object **items;
-  size_t n, cap;
-} flat_list;
-
-/*
- * Appends the primitives under object.  Children without a texture take
- * the nearest enclosing union's; the parser has already pushed transforms
- * down, so each primitive carries its own complete transform.
- */
-/*
- * A copy of a CSG primitive's part (lib/trace/csg.c) and of everything
- * under it, with textures inherited as in a union and default interiors
- * filled in; every part records the primitive it belongs to.
- */
-/* The one interior the parts that have one share (depth first); NULL
-   when none has one, or when they differ (*mixed then). */
-static const zr_interior *parts_interior(const zr_object *o, bool *mixed) {
-  if (o->interior)
-    return o->interior;
-  const zr_interior *found = NULL;
-  if (zr__is_csg(o->kind))
-    for (size_t i = 0; i < o->u.csg.n_children && !*mixed; i++) {
-      const zr_interior *in = parts_interior(o->u.csg.children[i], mixed);
-      if (in && found && in != found)
-        *mixed = true;
-      else if (in)
-        found = in;
-    }
-  return *mixed ? NULL : found;
-}
-
-static zr_object *resolve_part(zr_scene *scene, const zr_object *object,
-                               const zr_texture *inherited,
-                               const zr_object *solid) {
-  zr_object *copy = zr__arena_memdup(&scene->arena, object, sizeof *copy);
-  if (!copy)
-    return NULL;
-  copy->texture = object->texture ? object->texture : inherited;
-  /* A ray inside the primitive travels in one interior.  When the CSG
-     has none of its own and its parts agree on one, that is it: povray
-     3.7 refracts a glass box with a sphere cut out of it (the box's
-     interior { ior 1.5 }) as the box alone, where the default interior
-     of the whole let the rays through unbent (advanced/glasschess.pov's
-     blocks vanished).  Parts with different interiors (wineglass.pov's
-     merge of rim, bowl, beads and stem) keep the default: one interior
-     per part is not modelled. */
-  if (!copy->interior && !solid) {
-    bool mixed = false;
-    copy->interior = parts_interior(object, &mixed);
-  }
-  if (!copy->interior)
-    copy->interior = scene->default_interior;
-  copy->solid = solid;
-  if (!zr__is_csg(object->kind) || object->u.csg.n_children == 0)
-    return copy;
-  size_t n = object->u.csg.n_children;
-  copy->u.csg.children =
-      zr__arena_alloc(&scene->arena, n * sizeof *copy->u.csg.children);
-  if (!copy->u.csg.children)
-    return NULL;
-  for (size_t i = 0; i < n; i++) {
-    copy->u.csg.children[i] = resolve_part(
-        scene, object->u.csg.children[i], copy->texture, solid ? solid : copy);
-    if (!copy->u.csg.children[i])
-      return NULL;
-  }
-  return copy;
-}
-
-/* Both clips at once: their intersection (NULL when neither clips).  The
-   clip objects are only read, so they are shared, not copied. */
-static const zr_object *clip_both(zr_scene *scene, const zr_object *a,
-                                  const zr_object *b) {
-  if (!a || !b)
-    return a ? a : b;
-  zr_object *both = zr__arena_alloc(&scene->arena, sizeof *both);
-  zr_object **children =
-      zr__arena_alloc(&scene->arena, 2 * sizeof *children);
-  if (!both || !children)
-    return NULL;
-  children[0] = (zr_object *)a;
-  children[1] = (zr_object *)b;
-  both->kind = ZR_OBJ_INTERSECTION;
-  both->u.csg.children = children;
-  both->u.csg.n_children = 2;
-  both->where = b->where;
-  return both;
-}
-
-/* A union's clipped_by ("Clipped_By": only the part inside the clipping
-   object is seen) is handed down to every primitive under it, joined to
-   the clip each may have of its own, since the union itself is gone once
-   flattened; clip is that inherited clip (NULL: none). */
-static zr_status flatten(zr_scene *scene, zr_object *object,
-                         const zr_texture *inherited, const zr_object *clip,
-                         flat_list *out) {
-  const zr_texture *texture = object->texture ? object->texture : inherited;
-  if (object->kind == ZR_OBJ_UNION) {
-    const zr_object *inner = clip_both(scene, clip, object->clip);
-    if ((clip || object->clip) && !inner)
-      return ZR_ENOMEM;
-    for (size_t i = 0; i < object->u.csg.n_children; i++) {
-      zr_status s =
-          flatten(scene, object->u.csg.children[i], texture, inner, out);
-      if (s != ZR_OK)
-        return s;
-    }
-    return ZR_OK;
-  }
-  zr_status s = grow((void **)&out->items, &out->cap, out->n,
-                     sizeof *out->items);
-  if (s != ZR_OK)
-    return s;
-  const zr_object *prim = object;
-  zr_object *own = object;
-  if (zr__is_csg(object->kind)) {
-    /* Intersections and merges stay whole: one primitive. */
-    if (!(own = resolve_part(scene, object, texture, NULL)))
-      return ZR_ENOMEM;
-    prim = own;
-  } else {
-    /* Every object of the tree is its own (the parser copies a declared
-       object where it is used), so it takes what it inherits itself: a
-       copy of each would double the memory of a million spheres. */
-    object->texture = texture;
-    if (!object->interior)
-      object->interior = scene->default_interior;
-  }
-  if (clip && !(own->clip = clip_both(scene, own->clip, clip)))
-    return ZR_ENOMEM;
-  /* A mesh with a texture list gets one copy per texture, each placed
-     and textured like this one (lib/trace/obj_mesh.c). */
-  if ((s = zr__mesh_instance(&scene->arena, &prim)) != ZR_OK)
-    return s;
-  out->items[out->n++] = prim;
-  return ZR_OK;
-}
-
-zr_status zr__scene_finish(zr_scene *scene, zr_context *ctx) {
-  flat_list list = {0};
-  for (size_t i = 0; i < scene->n_objects; i++) {
-    zr_status s = flatten(scene, scene->objects[i], scene->default_texture,
-                          NULL, &list);
-    if (s != ZR_OK) {
-      free(list.items);
-      return zr__diag(ctx, ZR_DIAG_ERROR, s, NULL,
-                      "cannot finish the scene: %s", zr_status_str(s));
-    }
-  }
-  scene->primitives = list.items;
-  scene->n_primitives = list.n;
-  /* The objects around the camera: a scan of every primitive, once (a
-     render of 10^6 spheres did it for each row). */
-  scene->n_camera_inside = 0;
-  int most = (int)(sizeof scene->camera_inside /
-                   sizeof *scene->camera_inside);
-  for (size_t i = 0; i < list.n && scene->n_camera_inside < most; i++) {
-    const zr_object *o = list.items[i];
-    if (zr__has_inside(o) && zr__inside(o, scene->camera.location))
-      scene->camera_inside[scene->n_camera_inside++] = o;
-  }
-  zr_status s = zr__bvh_build(scene, ctx);
-  if (s == ZR_OK && scene->settings.photons.on)
-    s = zr__photons_build(scene, ctx); /* lib/trace/photons.c */
-  return s;
-}
-
 ZR_API void zr_scene_free(zr_scene *scene) {
   if (!scene)
     return;
-  zr__bvh_free(scene->bvh);
-  zr__photons_free(scene->photons);
+  if (scene->bvh_free)
+    scene->bvh_free(scene->bvh);
+  if (scene->photons_free)
+    scene->photons_free(scene->photons);
   free(scene->primitives);
   free(scene->objects);
   free(scene->lights);
@@ -314,13 +144,8 @@ ZR_API void zr_scene_get_info(const zr_scene *scene, zr_scene_info *info) {
   info->parse_steps = scene->parse_steps;
   info->has_camera = scene->camera.given;
   info->has_radiosity = scene->settings.radiosity.on;
-  for (size_t i = 0; i < scene->n_primitives; i++) {
-    zr_vec3 lo, hi;
-    if (zr__object_bounds(scene->primitives[i], &lo, &hi))
-      info->finite_primitives++;
-    else
-      info->infinite_primitives++;
-  }
+  info->finite_primitives = scene->n_finite_primitives;
+  info->infinite_primitives = scene->n_primitives - scene->n_finite_primitives;
 }
 
 ZR_API double zr_scene_assumed_gamma(const zr_scene *scene) {

@@ -100,7 +100,7 @@ typedef struct zr_fractal {
   double interior_factor, exterior_factor;
 } zr_fractal;
 
-struct zr_fn; /* a compiled user function (lib/sdl/function.h) */
+struct zr_fn; /* a compiled user function (lib/fn/fn.h) */
 
 /* The wave form applied after frequency and phase ("Waveforms"). */
 typedef enum zr_wave_kind {
@@ -185,6 +185,10 @@ typedef struct zr_pattern {
   zr_fractal fractal;               /* mandel, julia */
   const struct zr_fn *fn;           /* function { }: f(x, y, z) */
   const struct zr_object *object;   /* object pattern */
+  /* The object pattern's inside test (the tracer's, lib/trace/
+     intersect.c), set with object by the parser, so the scene model
+     needs no tracer (README, "Layering"). */
+  bool (*object_inside)(const struct zr_object *object, zr_vec3 p);
   /* crackle's form (weights of the three nearest distances, default
      <-1,1,0>), metric (default 2), offset and solid ("Crackle"). */
   zr_vec3 crackle_form;
@@ -487,8 +491,9 @@ static inline bool zr__is_csg(zr_object_kind kind) {
          kind == ZR_OBJ_MERGE;
 }
 
-struct zr_mesh; /* triangles and their BVH, shared by every copy */
-struct zr_fn;   /* a compiled user function (lib/sdl/function.h) */
+struct zr_mesh; /* triangles and their BVH, shared by every copy
+                  (lib/scene/shapes.h) */
+struct zr_fn;   /* a compiled user function (lib/fn/fn.h) */
 
 /* One component of a blob ("Blob"): its field is
    strength (1 - d^2 / radius^2)^2 within radius of its centre (sphere)
@@ -504,7 +509,7 @@ typedef struct zr_blob_component {
      field at the point (measured on POV-Ray 3.7's renders). */
   const struct zr_texture *texture;
 } zr_blob_component;
-struct zr_text; /* extruded glyph outlines, shared likewise */
+struct zr_text; /* extruded glyph outlines, shared likewise (shapes.h) */
 
 typedef struct zr_object zr_object;
 
@@ -660,11 +665,11 @@ struct zr_object {
     } sor;
     struct {
       /* sphere_sweep ("Sphere Sweep"): its spline pieces, shared by
-         every copy (lib/trace/obj_sweep.h). */
+         every copy (lib/scene/shapes.h). */
       const struct zr_sphere_sweep *data;
     } sweep;
     struct {
-      /* julia_fractal ("Julia Fractal"): lib/trace/obj_sweep.h. */
+      /* julia_fractal ("Julia Fractal"): lib/scene/shapes.h. */
       const struct zr_julia *data;
     } julia;
     struct {
@@ -1029,18 +1034,23 @@ struct zr_scene {
   zr_settings settings;
   const zr_texture *default_texture;
   const zr_interior *default_interior;
-  /* Built by zr__scene_finish(): every primitive, unions flattened, each
-     with its texture resolved (never NULL). */
+  /* Built by zr__scene_finish() (lib/trace/prepare.c): every primitive,
+     unions flattened, each with its texture resolved (never NULL), how
+     many of them are bounded, and the tracer's BVH with the routine
+     that frees it (set with it, so the model needs no tracer). */
   const zr_object **primitives;
-  size_t n_primitives;
+  size_t n_primitives, n_finite_primitives;
   struct zr_bvh *bvh;
   /* Also by zr__scene_finish(): the first primitives (in their order)
      whose inside holds the camera's location, found once rather than
      on every render call (lib/trace/render.c, zr__camera_media). */
   const zr_object *camera_inside[16];
   int n_camera_inside;
-  /* The caustic photons (NULL: no photons block, or none stored). */
+  void (*bvh_free)(struct zr_bvh *bvh);
+  /* The caustic photons (NULL: no photons block, or none stored), and
+     the routine that frees them (lib/trace/photons.c, set with them). */
   struct zr_photon_map *photons;
+  void (*photons_free)(struct zr_photon_map *photons);
   unsigned long long parse_steps; /* the work budget the parse used */
 };
 
@@ -1054,21 +1064,5 @@ void zr__settings_init(zr_settings *s);
 zr_scene *zr__scene_new(void);
 zr_status zr__scene_add_object(zr_scene *scene, zr_object *object);
 zr_status zr__scene_add_light(zr_scene *scene, const zr_light *light);
-
-/*
- * Ends construction: flattens unions into scene->primitives, resolves
- * default textures, then builds the tracer's BVH.  Called once by the
- * parser after the last statement.
- */
-zr_status zr__scene_finish(zr_scene *scene, zr_context *ctx);
-
-/* Makes *prim's per-texture copies when it is a mesh with a texture
-   list (lib/trace/obj_mesh.c); *prim then points to a new copy.  A no-op
-   for other objects. */
-zr_status zr__mesh_instance(zr_arena *arena, const zr_object **prim);
-
-/* The object's world-space bounding box; false for unbounded objects
-   (planes, and anything inverse). */
-bool zr__object_bounds(const zr_object *object, zr_vec3 *lo, zr_vec3 *hi);
 
 #endif /* ZR_SCENE_SCENE_H */

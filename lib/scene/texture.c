@@ -57,7 +57,7 @@
 #include <stddef.h>
 
 #include "scene/bitmap.h"
-#include "scene/noise.h"
+#include "core/noise.h"
 #include "scene/pattern.h"
 #include "scene/warp.h"
 

@@ -43,65 +43,11 @@
 #include "sdl/build_camlight.h"
 #include "sdl/build_media.h"
 #include "sdl/build_pattern.h"
+#include "trace/shape.h"
 
+/* The object as messages name it (its table, lib/trace/shape.h). */
 static const char *kind_name(zr_object_kind kind) {
-  switch (kind) {
-  case ZR_OBJ_SPHERE:
-    return "a sphere";
-  case ZR_OBJ_BOX:
-    return "a box";
-  case ZR_OBJ_PLANE:
-    return "a plane";
-  case ZR_OBJ_TRIANGLE:
-    return "a triangle";
-  case ZR_OBJ_CYLINDER:
-    return "a cylinder";
-  case ZR_OBJ_CONE:
-    return "a cone";
-  case ZR_OBJ_DISC:
-    return "a disc";
-  case ZR_OBJ_UNION:
-    return "a union";
-  case ZR_OBJ_MESH:
-    return "a mesh";
-  case ZR_OBJ_TEXT:
-    return "a text";
-  case ZR_OBJ_INTERSECTION:
-    return "an intersection or difference";
-  case ZR_OBJ_MERGE:
-    return "a merge";
-  case ZR_OBJ_QUADRIC:
-    return "a quadric";
-  case ZR_OBJ_POLY:
-    return "a poly";
-  case ZR_OBJ_TORUS:
-    return "a torus";
-  case ZR_OBJ_POLYGON:
-    return "a polygon";
-  case ZR_OBJ_SUPERELLIPSOID:
-    return "a superellipsoid";
-  case ZR_OBJ_PRISM:
-    return "a prism";
-  case ZR_OBJ_LATHE:
-    return "a lathe";
-  case ZR_OBJ_BLOB:
-    return "a blob";
-  case ZR_OBJ_SOR:
-    return "a sor";
-  case ZR_OBJ_SPHERE_SWEEP:
-    return "a sphere_sweep";
-  case ZR_OBJ_JULIA:
-    return "a julia_fractal";
-  case ZR_OBJ_ISOSURFACE:
-    return "an isosurface";
-  case ZR_OBJ_HEIGHT_FIELD:
-    return "a height_field";
-  case ZR_OBJ_OVUS:
-    return "an ovus";
-  case ZR_OBJ_PARAMETRIC:
-    return "a parametric";
-  }
-  return "an object";
+  return zr__shape(kind)->name;
 }
 
 /* Degenerate means the corners span no area: the cross product of two

@@ -186,6 +186,11 @@ bool zr__sdl_fractal_magnet(zr_sdl_parser *p, zr_sdl_fractal_head *h,
   return want_int(p, type, loc, 1, 2, "the magnet type", &h->f.magnet);
 }
 
+void zr__sdl_pattern_object(zr_pattern *pt, const zr_object *object) {
+  pt->object = object;
+  pt->object_inside = zr__inside;
+}
+
 void zr__sdl_fractal_set(zr_pattern *pt, const zr_sdl_fractal_head *h) {
   pt->fractal = h->f;
 }

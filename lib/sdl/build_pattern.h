@@ -44,6 +44,8 @@ bool zr__sdl_fractal_magnet(zr_sdl_parser *p, zr_sdl_fractal_head *h,
                             const zr_sdl_expr *type, const zr_sdl_loc *loc);
 /* Gives pt, already of the head's kind, the fractal's settings. */
 void zr__sdl_fractal_set(zr_pattern *pt, const zr_sdl_fractal_head *h);
+/* object { OBJECT ... }: the object and the tracer's inside test. */
+void zr__sdl_pattern_object(zr_pattern *pt, const zr_object *object);
 /* interior Type, Factor or exterior Type, Factor as a pattern modifier
    (type and factor in out->value.v[0], v[1]). */
 bool zr__sdl_fractal_colouring(zr_sdl_parser *p, int token,

@@ -47,6 +47,7 @@
 #include "core/strbuf.h"
 #include "pov-parse.h"
 #include "sdl/sdl.h"
+#include "trace/prepare.h"
 
 /* ---- diagnostics ---- */
 

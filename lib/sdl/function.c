@@ -1,10 +1,12 @@
 /*
- * function.c - user-defined functions: compiler and evaluator.
+ * function.c - user-defined functions: the compiler.
  *
  * POV-Ray evaluates `function { ... }` bodies while rendering (patterns,
  * isosurfaces) and while parsing (`#declare V = F(3);`), so a body is
  * compiled once, when it is declared, into bytecode for a small stack
- * machine over doubles, and evaluated many times.  The language is the
+ * machine over doubles (lib/fn/code.h), and evaluated many times by the
+ * machine in lib/fn/vm.c, which sits below the scene model and the
+ * tracer that call it (README, "Layering").  The language is the
  * one the reference manual gives in 3.3.1.8 "Function": | lowest, then &,
  * one relational operator (< <= = != >= >), + -, * /, unary signs, and
  * the float functions it lists (abs ... tanh, min and max with any number
@@ -20,8 +22,7 @@
  * after its body is compiled), but chains of calls are limited to
  * ZR_FN_MAX_DEPTH, as POV-Ray documents, so runaway input cannot blow the
  * C stack.  Each function records how many doubles an evaluation needs,
- * callees included; the evaluator takes them from one array on its own C
- * stack, so evaluating never allocates and threads share nothing.
+ * callees included, so the machine never allocates.
  *
  * The body is read straight from the token array of the file being read
  * (the grammar hands over right after the 'function' keyword, before it
@@ -29,26 +30,20 @@
  * declared identifiers the way the directive engine does for bison.
  *
  * The compiler folds operations on constants and fuses an operator with
- * a lone right operand (x*y is two instructions, not three); the machine
- * dispatches by direct threading where the compiler allows it.
+ * a lone right operand (x*y is two instructions, not three).
  *
- * `internal(n)` bodies (functions.inc) map n to a routine: 17 f_ellipsoid,
- * 25 f_helix1, 26 f_helix2, 45 f_paraboloid, 47 f_ph, 57 f_r, 60
- * f_rounded_box, 61 f_sphere, 68 f_superellipsoid, 69 f_th, 70 f_torus
- * and 71 f_torus2, each fitted to povray 3.7's own values at several
- * points (see tests/test_function.c; its source was not consulted); 76
- * f_noise3d and 78 f_noise_generator
- * (the bozo pattern's noise), 59 f_ridged_mf and 29 f_hetero_mf
- * (Musgrave's multifractals over it), which have our noise's character
- * and ranges but not POV-Ray's exact values.  Any other n still
- * compiles, so functions.inc parses, but a function that uses one
- * reports it by name and number when it is called (zr__fn_unsupported()
- * tells later users the same).
+ * `internal(n)` bodies (functions.inc) map n to a routine of
+ * lib/fn/internal.c.  Any n still compiles, so functions.inc parses,
+ * but a function that uses one not implemented reports it by name and
+ * number when it is called (zr__fn_unsupported() tells later users the
+ * same).
  *
  * function { pattern { ... } } and function { pigment { ... } } are read
  * by the grammar (a nested parse) and become one instruction that
  * evaluates the pattern's value or the pigment's colour at (x, y, z)
- * ("Function Pattern"); another body uses a pigment function as
+ * ("Function Pattern") through a callback stored with the pigment
+ * (zr_fn_extern), as the machine knows no pigments; another body uses a
+ * pigment function as
  * F(x, y, z).red (or .x, .gray ...), one channel of the colour.
  * function { spline { ... } } and function { S } (S a declared spline)
  * are functions of one parameter whose value in a scene is the spline's
@@ -67,372 +62,20 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fn/code.h"
 #include "pov-parse.h"
 #include "scene/pattern.h"
 #include "scene/texture.h"
 #include "sdl/function.h"
 #include "sdl/spline.h"
 
-/* ---- the machine ---- */
 
-/*
- * The instructions.  CONST pushes consts[arg], LOAD pushes slot[arg],
- * STORE pops into slot[arg], INC adds 1 to slot[arg], JGT jumps to n
- * when slot[arg] > slot[arg + 1], JUMP jumps to n.  The arithmetic takes
- * its operands from the stack; the _S and _K forms take the right one
- * from slot[arg] or consts[arg] instead (most right operands are one,
- * and one dispatch instead of two is most of the speed).  CALL runs
- * callees[arg] and INTERNAL internal function arg on the top n values;
- * TEXTURE evaluates pigments[arg] at the top three values, giving its
- * pattern's value (n -1) or colour channel n (5: its grey);
- * RETURN ends every program with the top value.
- */
-#define OPS(X)                                                             \
-  X(OP_CONST) X(OP_LOAD) X(OP_STORE) X(OP_INC) X(OP_JGT) X(OP_JUMP)        \
-  X(OP_ADD) X(OP_SUB) X(OP_MUL) X(OP_DIV)                                  \
-  X(OP_ADD_S) X(OP_SUB_S) X(OP_MUL_S) X(OP_DIV_S)                          \
-  X(OP_ADD_K) X(OP_SUB_K) X(OP_MUL_K) X(OP_DIV_K)                          \
-  X(OP_LT) X(OP_LE) X(OP_EQ) X(OP_NE) X(OP_GE) X(OP_GT) X(OP_AND) X(OP_OR) \
-  X(OP_NEG) X(OP_NOT)                                                      \
-  X(OP_SIN) X(OP_COS) X(OP_TAN) X(OP_ASIN) X(OP_ACOS) X(OP_ATAN)           \
-  X(OP_SINH) X(OP_COSH) X(OP_TANH) X(OP_ASINH) X(OP_ACOSH) X(OP_ATANH)     \
-  X(OP_EXP) X(OP_LN) X(OP_LOG) X(OP_SQRT) X(OP_ABS) X(OP_FLOOR)            \
-  X(OP_CEIL) X(OP_INT) X(OP_DEGREES) X(OP_RADIANS)                         \
-  X(OP_ATAN2) X(OP_POW) X(OP_MOD) X(OP_MIN) X(OP_MAX)                      \
-  X(OP_SELECT3) X(OP_SELECT4) X(OP_CALL) X(OP_INTERNAL) X(OP_TEXTURE)    \
-  X(OP_SPLINE) X(OP_XFORM) X(OP_RETURN)
-
-#define AS_ENUM(o) o,
-typedef enum op { OPS(AS_ENUM) } op;
-#undef AS_ENUM
-
-typedef struct insn {
-  uint8_t op;
-  int32_t arg;
-  int32_t n;
-} insn;
-
-struct zr_fn {
-  int n_params;
-  int n_slots;  /* parameters, then sum/prod counters and limits */
-  int need;     /* doubles an evaluation uses, callees included */
-  int depth;    /* 1 + the deepest chain of calls below */
-  size_t n_code;
-  const insn *code;
-  const double *consts;
-  const zr_fn *const *callees;
-  const char *unsupported; /* NULL, or what is missing (see header) */
-  /* pattern { } and pigment { } bodies: what OP_TEXTURE evaluates. */
-  const zr_pigment *const *pigments;
-  int texture_kind; /* 0 plain or FN_PATTERN ... FN_TRANSFORM */
-  /* spline { } bodies and calls of spline functions: what OP_SPLINE
-     evaluates. */
-  const zr_sdl_spline *const *splines;
-  /* transform { } bodies and calls of transform functions: what
-     OP_XFORM applies. */
-  const zr_transform *const *transforms;
-};
-
-#define FN_PATTERN 1
-#define FN_PIGMENT 2
-#define FN_SPLINE 3
-#define FN_TRANSFORM 4
-/* The channel OP_TEXTURE gives for a pattern's value, and the grey. */
-#define TEXTURE_PATTERN (-1)
-#define TEXTURE_GREY 5
-
-/* ---- internal functions (functions.inc) ---- */
-
-typedef struct internal_fn {
-  int number;
-  const char *name;
-  int params; /* x, y, z and the extra parameters functions.inc lists */
-  bool implemented;
-} internal_fn;
-
-/* Numbers, names and parameter counts as functions.inc declares them. */
-static const internal_fn internals[] = {
-    {0, "f_algbr_cyl1", 8, false},    {1, "f_algbr_cyl2", 8, false},
-    {2, "f_algbr_cyl3", 8, false},    {3, "f_algbr_cyl4", 8, false},
-    {4, "f_bicorn", 5, false},        {5, "f_bifolia", 5, false},
-    {6, "f_blob", 8, false},          {7, "f_blob2", 7, false},
-    {8, "f_boy_surface", 5, false},   {9, "f_comma", 4, false},
-    {10, "f_cross_ellipsoids", 7, false},
-    {11, "f_crossed_trough", 4, false},
-    {12, "f_cubic_saddle", 4, false}, {13, "f_cushion", 4, false},
-    {14, "f_devils_curve", 4, false}, {15, "f_devils_curve_2d", 9, false},
-    {16, "f_dupin_cyclid", 9, false}, {17, "f_ellipsoid", 6, true},
-    {18, "f_enneper", 4, false},      {19, "f_flange_cover", 7, false},
-    {20, "f_folium_surface", 6, false},
-    {21, "f_folium_surface_2d", 9, false},
-    {22, "f_glob", 4, false},         {23, "f_heart", 4, false},
-    {24, "f_helical_torus", 13, false},
-    {25, "f_helix1", 10, true},       {26, "f_helix2", 10, true},
-    {27, "f_hex_x", 4, false},        {28, "f_hex_y", 4, false},
-    {29, "f_hetero_mf", 9, true},     {30, "f_hunt_surface", 4, false},
-    {31, "f_hyperbolic_torus", 6, false},
-    {32, "f_isect_ellipsoids", 7, false},
-    {33, "f_kampyle_of_eudoxus", 6, false},
-    {34, "f_kampyle_of_eudoxus_2d", 9, false},
-    {35, "f_klein_bottle", 4, false},
-    {36, "f_kummer_surface_v1", 4, false},
-    {37, "f_kummer_surface_v2", 7, false},
-    {38, "f_lemniscate_of_gerono", 4, false},
-    {39, "f_lemniscate_of_gerono_2d", 9, false},
-    {40, "f_mesh1", 8, false},        {41, "f_mitre", 4, false},
-    {42, "f_nodal_cubic", 4, false},  {43, "f_odd", 4, false},
-    {44, "f_ovals_of_cassini", 7, false},
-    {45, "f_paraboloid", 4, true},    {46, "f_parabolic_torus", 6, false},
-    {47, "f_ph", 3, true},            {48, "f_pillow", 4, false},
-    {49, "f_piriform", 4, false},     {50, "f_piriform_2d", 10, false},
-    {51, "f_poly4", 8, false},        {52, "f_polytubes", 9, false},
-    {53, "f_quantum", 4, false},      {54, "f_quartic_paraboloid", 4, false},
-    {55, "f_quartic_saddle", 4, false},
-    {56, "f_quartic_cylinder", 6, false},
-    {57, "f_r", 3, true},             {58, "f_ridge", 9, false},
-    {59, "f_ridged_mf", 9, true},     {60, "f_rounded_box", 7, true},
-    {61, "f_sphere", 4, true},        {62, "f_spikes", 8, false},
-    {63, "f_spikes_2d", 7, false},    {64, "f_spiral", 9, false},
-    {65, "f_steiners_roman", 4, false},
-    {66, "f_strophoid", 7, false},    {67, "f_strophoid_2d", 10, false},
-    {68, "f_superellipsoid", 5, true},
-    {69, "f_th", 3, true},            {70, "f_torus", 5, true},
-    {71, "f_torus2", 6, true},       {72, "f_torus_gumdrop", 4, false},
-    {73, "f_umbrella", 4, false},     {74, "f_witch_of_agnesi", 5, false},
-    {75, "f_witch_of_agnesi_2d", 9, false},
-    {76, "f_noise3d", 3, true},       {78, "f_noise_generator", 4, true},
-};
-
-static const internal_fn *internal_find(int number) {
-  for (size_t i = 0; i < sizeof internals / sizeof internals[0]; i++)
-    if (internals[i].number == number)
-      return &internals[i];
-  return NULL;
-}
-
-/* The functions with a "field strength" parameter give values clipped to
-   [-10, 10] in povray 3.7 (f_paraboloid(0, 11, 0, 1) is 10); the plain
-   distances (f_sphere, f_torus ...) are not clipped
-   (bench/provenance/probe.py field_clip). */
-static double field(double v) { return v < -10 ? -10 : v > 10 ? 10 : v; }
-
-/*
- * The noise functions.  f_noise3d is the noise the bozo pattern uses
- * (lib/scene/pattern.c), in [0, 1] as the manual documents ("Functions.inc":
- * f_snoise3d is "just like f_noise3d(), but returns values in the range
- * [-1, 1]", and functions.inc defines it as 2 f_noise3d - 1).  That noise
- * is POV-Ray's default noise_generator 2, reconstructed from measurements
- * (lib/scene/noise.c); f_noise_generator's generators 1, 2 and 3 are
- * POV-Ray's too.
- *
- * f_ridged_mf and f_hetero_mf are F. K. Musgrave's ridged multifractal
- * and heterogeneous terrain ("Texturing and Modeling: A Procedural
- * Approach", chapter "Procedural Fractal Terrains"), whose parameters the
- * manual names and describes: octave i has frequency lacunarity^i and
- * weight lacunarity^(-i H) (the manual's f^-H), both over signed noise.
- * The manual's T of f_hetero_mf blends Musgrave's heterogeneous scaling
- * (each octave scaled by the altitude so far: T = 1) with the plain 1/f
- * sum (T = 0).  Octaves are capped at MAX_OCTAVES so that a huge count
- * cannot stall a render: past that the frequencies are beyond what a
- * double's noise lattice resolves for any lacunarity above 1.5.
- */
-#define MAX_OCTAVES 100
-
-static double signed_noise(double x, double y, double z) {
-  return 2 * zr__noise(zr_v3(x, y, z)) - 1;
-}
-
-/* The whole octaves to sum; octave 0 is always there.  A NaN count is
-   one octave. */
-static int whole_octaves(double octaves) {
-  return octaves >= MAX_OCTAVES ? MAX_OCTAVES
-         : octaves >= 1         ? (int)octaves
-                                : 1;
-}
-
-/* Musgrave's ridge: offset less |noise|, squared. */
-static double ridge_signal(double offset, double x, double y, double z) {
-  double s = offset - fabs(signed_noise(x, y, z));
-  return s * s;
-}
-
-/* a: x, y, z, H, lacunarity, octaves, offset, gain, noise generator. */
-static double ridged_mf(const double *a) {
-  double h = a[3], lacunarity = a[4], offset = a[6], gain = a[7];
-  int octaves = whole_octaves(a[5]);
-  double x = a[0], y = a[1], z = a[2];
-  double signal = ridge_signal(offset, x, y, z), result = signal;
-  double step = pow(lacunarity, -h), weight_of_octave = 1;
-  for (int i = 1; i < octaves; i++) {
-    x *= lacunarity, y *= lacunarity, z *= lacunarity;
-    weight_of_octave *= step;
-    /* The previous octave's signal, times gain, weighs this one, so
-       ridges (high signal) get detail and valleys stay smooth. */
-    double weight = fmin(fmax(signal * gain, 0), 1);
-    signal = ridge_signal(offset, x, y, z) * weight;
-    result += signal * weight_of_octave;
-  }
-  return result;
-}
-
-/* a: x, y, z, H, lacunarity, octaves, offset, T, noise generator. */
-static double hetero_mf(const double *a) {
-  double h = a[3], lacunarity = a[4], offset = a[6], t = a[7];
-  int octaves = whole_octaves(a[5]);
-  double x = a[0], y = a[1], z = a[2];
-  double value = offset + signed_noise(x, y, z);
-  double step = pow(lacunarity, -h), weight_of_octave = 1;
-  for (int i = 1; i < octaves; i++) {
-    x *= lacunarity, y *= lacunarity, z *= lacunarity;
-    weight_of_octave *= step;
-    double increment = (signed_noise(x, y, z) + offset) * weight_of_octave;
-    value += increment * ((1 - t) + t * value);
-  }
-  /* A fractional octave count adds that fraction of one more octave, so
-     the result is continuous in the count (Musgrave's remainder). */
-  double remainder = a[5] - octaves;
-  if (remainder > 0 && remainder < 1) {
-    x *= lacunarity, y *= lacunarity, z *= lacunarity;
-    weight_of_octave *= step;
-    double increment = (signed_noise(x, y, z) + offset) * weight_of_octave;
-    value += remainder * increment * ((1 - t) + t * value);
-  }
-  return value;
-}
-
-/*
- * The helixes (functions.inc's f_helix1 and f_helix2, about the y axis).
- * The cross section type c picks the norm of a 2-D offset (u, v): the
- * reference manual's "Cross Section Type" lists 0 square, 1 circle, 2
- * diamond and 3 concave diamond, which are the unit balls of
- * (|u|^p + |v|^p)^(1/p) for p = 2 / c (infinity, 2, 1 and 2/3, the
- * astroid); povray 3.7's values follow that formula for every c we
- * measured, negative ones and its underflow for tiny c included.
- */
-static double section_norm(double u, double v, double c) {
-  u = fabs(u);
-  v = fabs(v);
-  if (c == 0)
-    return fmax(u, v);
-  double p = 2 / c;
-  return pow(pow(u, p) + pow(v, p), 1 / p);
-}
-
-/* (u, v) turned by angle radians. */
-static void turn(double *u, double *v, double angle) {
-  double c = cos(angle), s = sin(angle), t = *u;
-  *u = t * c - *v * s;
-  *v = t * s + *v * c;
-}
-
-/*
- * f_helix1: a: x, y, z, number of helixes n, period w, minor radius r,
- * major radius R, shape, cross section type and rotation (degrees).
- * Strand k runs at the angle atan2(z, x) = ((2k + 1) pi) / n - w y, so
- * n strands cross each meridian half plane every 2 pi / (n w) in y.  The
- * section is taken in that half plane: u = rho - R and v the distance in
- * y to the nearest crossing, divided by shape (a wider tube in y for
- * shape > 1), then turned by the rotation.  The value, less r, never
- * exceeds rho + R - r (measured: povray 3.7 bounds it so far from the
- * strands, and when n w or shape is 0).
- */
-static double helix1(const double *a) {
-  double x = a[0], y = a[1], z = a[2];
-  double n = a[3], w = a[4], r = a[5], big = a[6], shape = a[7];
-  double rho = sqrt(x * x + z * z);
-  double bound = rho + big;
-  if (n * w == 0 || shape == 0)
-    return bound - r;
-  double phase = n * (atan2(z, x) + w * y) - M_PI;
-  phase -= 2 * M_PI * floor((phase + M_PI) / (2 * M_PI));
-  double u = rho - big, v = phase / (n * w) / shape;
-  turn(&u, &v, a[9] * (M_PI / 180));
-  return fmin(section_norm(u, v, a[8]), bound) - r;
-}
-
-/*
- * f_helix2: one strand whose centre is R (cos w y, sin w y) in the plane
- * of constant y, a twisted bar when r > R ("needs a negated function").
- * The section is in that plane, in axes that turn with the strand; the
- * number of helixes, the shape and the rotation do not count (measured:
- * povray 3.7 gives the same values whatever they are).
- */
-static double helix2(const double *a) {
-  double x = a[0], y = a[1], z = a[2];
-  double w = a[4], r = a[5], big = a[6];
-  double u = x - big * cos(w * y), v = z - big * sin(w * y);
-  turn(&u, &v, -w * y);
-  return section_norm(u, v, a[8]) - r;
-}
-
-/*
- * The implemented internals.  Each formula was fitted to povray 3.7's
- * values at several points, signs, clipping and edge cases included
- * (tests/test_function.c quotes them): f_r, f_th and f_ph are spherical
- * coordinates (theta from +z towards +x, phi from +y), the others
- * implicit surfaces about the y axis.
- */
-static double eval_internal(int number, const double *a) {
-  double x = a[0], y = a[1], z = a[2];
-  double r = sqrt(x * x + y * y + z * z);
-  switch (number) {
-  case 25:
-    return helix1(a);
-  case 26:
-    return helix2(a);
-  case 29:
-    return hetero_mf(a);
-  case 59:
-    return ridged_mf(a);
-  case 76: /* f_noise3d */
-    return zr__noise(zr_v3(x, y, z));
-  case 78: /* f_noise_generator: generators 1, 2 and 3, measured */
-    return zr__noise_gen(zr_v3(x, y, z), (int)a[3]);
-  case 17: /* f_ellipsoid: inverse scales; threshold 1 */
-    return sqrt(x * x * a[3] * a[3] + y * y * a[4] * a[4] +
-                z * z * a[5] * a[5]);
-  case 45: /* f_paraboloid: field strength */
-    return field(a[3] * (y - x * x - z * z));
-  case 47: /* f_ph */
-    return r > 0 ? acos(y / r) : 0;
-  case 57: /* f_r */
-    return r;
-  case 60: { /* f_rounded_box: corner radius, then half sizes */
-    /* The distance to a box shrunk by the radius, less the radius;
-       povray's values are 1e-6 below it at every point we measured
-       (bench/provenance/probe.py rounded_box_offset). */
-    double dx = fmax(fabs(x) - (a[4] - a[3]), 0);
-    double dy = fmax(fabs(y) - (a[5] - a[3]), 0);
-    double dz = fmax(fabs(z) - (a[6] - a[3]), 0);
-    return sqrt(dx * dx + dy * dy + dz * dz) - a[3] - 1e-6;
-  }
-  case 61: /* f_sphere: radius */
-    return r - a[3];
-  case 68: { /* f_superellipsoid: east-west and north-south exponents */
-    double e = a[3], n = a[4];
-    double xy = pow(pow(fabs(x), 2 / e) + pow(fabs(y), 2 / e), e / n);
-    return 1 - pow(xy + pow(fabs(z), 2 / n), n / 2);
-  }
-  case 69: /* f_th */
-    return atan2(x, z);
-  case 70: { /* f_torus: major and minor radius, about the y axis */
-    double ring = sqrt(x * x + z * z) - a[3];
-    return sqrt(ring * ring + y * y) - a[4];
-  }
-  case 71: { /* f_torus2: field strength, major and minor radius */
-    double big = a[4] * a[4], q = r * r + big - a[5] * a[5];
-    return field(-a[3] * (q * q - 4 * big * (x * x + z * z)));
-  }
-  default:
-    return NAN; /* never: unimplemented numbers are refused earlier */
-  }
-}
-
-/* ---- evaluation ---- */
+/* ---- what bodies reach outside the machine (zr_fn_extern) ---- */
 
 /* A pattern or pigment function's value at the point at[0..2]. */
-static double texture_value(const zr_pigment *pg, int channel,
-                            const double *at) {
+static double pigment_extern(const void *what, int channel,
+                             const double *at) {
+  const zr_pigment *pg = what;
   zr_vec3 p = zr_v3(at[0], at[1], at[2]);
   if (channel == TEXTURE_PATTERN)
     return zr__pigment_pattern_value(pg, p);
@@ -448,170 +91,12 @@ static double texture_value(const zr_pigment *pg, int channel,
   }
 }
 
-static double truth(bool b) { return b ? 1.0 : 0.0; }
-
-/* POV-Ray's select(): the sign of a picks the value (Float Functions). */
-static double select3(double a, double b, double c) { return a < 0 ? b : c; }
-static double select4(double a, double b, double c, double d) {
-  return a < 0 ? b : a == 0 ? c : d;
+/* Component `which` of a spline at the parameter at[0]. */
+static double spline_extern(const void *what, int which, const double *at) {
+  double v[5];
+  zr__sdl_spline_eval(what, -1, at[0], v);
+  return v[which];
 }
-
-/*
- * Runs f with its parameters at base[0 .. n_params); its counters follow
- * and its operand stack is above them.  A call runs the callee with its
- * arguments, already on the stack, as the callee's parameters: no copy,
- * and f->need says the array is big enough.
- */
-/*
- * Dispatch.  With GCC and Clang each instruction jumps straight to the
- * code of the next ("labels as values", a GNU C extension both share):
- * no loop, no range check, and one indirect jump per instruction that
- * the processor predicts from its own history.  Other compilers get the
- * plain switch (as does -DZR_FN_SWITCH, to test it).  NEXT() and JUMP()
- * end a case.
- */
-#if defined(__GNUC__) && !defined(ZR_FN_SWITCH)
-#define VM_THREADED 1
-#define CASE(o) L_##o:
-#define NEXT() goto *dispatch[(++i)->op]
-#define JUMP(k) i = code + (k); goto *dispatch[i->op]
-#else
-#define CASE(o) case o:
-#define NEXT() i++; break
-#define JUMP(k) i = code + (k); break
-#endif
-
-static double run(const zr_fn *f, double *base) {
-  double *sp = base + f->n_slots;
-  const insn *code = f->code, *i = code;
-  /* No bound on i: the program ends with OP_RETURN (the compiler adds
-     it). */
-#ifdef VM_THREADED
-#define AS_LABEL(o) [o] = &&L_##o,
-  static const void *const dispatch[] = {OPS(AS_LABEL)};
-#undef AS_LABEL
-  goto *dispatch[i->op];
-#else
-  for (;;) {
-    switch ((op)i->op) {
-#endif
-    CASE(OP_CONST) *sp++ = f->consts[i->arg]; NEXT();
-    CASE(OP_LOAD) *sp++ = base[i->arg]; NEXT();
-    CASE(OP_STORE) base[i->arg] = *--sp; NEXT();
-    CASE(OP_INC) base[i->arg] += 1; NEXT();
-    CASE(OP_JGT)
-      if (base[i->arg] > base[i->arg + 1]) {
-        JUMP(i->n);
-      }
-      NEXT();
-    CASE(OP_JUMP) JUMP(i->n);
-    CASE(OP_ADD) sp--; sp[-1] += sp[0]; NEXT();
-    CASE(OP_SUB) sp--; sp[-1] -= sp[0]; NEXT();
-    CASE(OP_MUL) sp--; sp[-1] *= sp[0]; NEXT();
-    CASE(OP_DIV) sp--; sp[-1] /= sp[0]; NEXT();
-    CASE(OP_ADD_S) sp[-1] += base[i->arg]; NEXT();
-    CASE(OP_SUB_S) sp[-1] -= base[i->arg]; NEXT();
-    CASE(OP_MUL_S) sp[-1] *= base[i->arg]; NEXT();
-    CASE(OP_DIV_S) sp[-1] /= base[i->arg]; NEXT();
-    CASE(OP_ADD_K) sp[-1] += f->consts[i->arg]; NEXT();
-    CASE(OP_SUB_K) sp[-1] -= f->consts[i->arg]; NEXT();
-    CASE(OP_MUL_K) sp[-1] *= f->consts[i->arg]; NEXT();
-    CASE(OP_DIV_K) sp[-1] /= f->consts[i->arg]; NEXT();
-    CASE(OP_LT) sp--; sp[-1] = truth(sp[-1] < sp[0]); NEXT();
-    CASE(OP_LE) sp--; sp[-1] = truth(sp[-1] <= sp[0]); NEXT();
-    CASE(OP_EQ) sp--; sp[-1] = truth(sp[-1] == sp[0]); NEXT();
-    CASE(OP_NE) sp--; sp[-1] = truth(sp[-1] != sp[0]); NEXT();
-    CASE(OP_GE) sp--; sp[-1] = truth(sp[-1] >= sp[0]); NEXT();
-    CASE(OP_GT) sp--; sp[-1] = truth(sp[-1] > sp[0]); NEXT();
-    /* povray 3.7 treats any non-zero value, however small, as true in
-       functions (1e-11 & 1 is 1), unlike #if's 1e-10 tolerance. */
-    CASE(OP_AND) sp--; sp[-1] = truth(sp[-1] != 0 && sp[0] != 0); NEXT();
-    CASE(OP_OR) sp--; sp[-1] = truth(sp[-1] != 0 || sp[0] != 0); NEXT();
-    CASE(OP_NEG) sp[-1] = -sp[-1]; NEXT();
-    CASE(OP_NOT) sp[-1] = truth(sp[-1] == 0); NEXT();
-    CASE(OP_SIN) sp[-1] = sin(sp[-1]); NEXT();
-    CASE(OP_COS) sp[-1] = cos(sp[-1]); NEXT();
-    CASE(OP_TAN) sp[-1] = tan(sp[-1]); NEXT();
-    CASE(OP_ASIN) sp[-1] = asin(sp[-1]); NEXT();
-    CASE(OP_ACOS) sp[-1] = acos(sp[-1]); NEXT();
-    CASE(OP_ATAN) sp[-1] = atan(sp[-1]); NEXT();
-    CASE(OP_SINH) sp[-1] = sinh(sp[-1]); NEXT();
-    CASE(OP_COSH) sp[-1] = cosh(sp[-1]); NEXT();
-    CASE(OP_TANH) sp[-1] = tanh(sp[-1]); NEXT();
-    CASE(OP_ASINH) sp[-1] = asinh(sp[-1]); NEXT();
-    CASE(OP_ACOSH) sp[-1] = acosh(sp[-1]); NEXT();
-    CASE(OP_ATANH) sp[-1] = atanh(sp[-1]); NEXT();
-    CASE(OP_EXP) sp[-1] = exp(sp[-1]); NEXT();
-    CASE(OP_LN) sp[-1] = log(sp[-1]); NEXT();
-    CASE(OP_LOG) sp[-1] = log10(sp[-1]); NEXT();
-    CASE(OP_SQRT) sp[-1] = sqrt(sp[-1]); NEXT();
-    CASE(OP_ABS) sp[-1] = fabs(sp[-1]); NEXT();
-    CASE(OP_FLOOR) sp[-1] = floor(sp[-1]); NEXT();
-    CASE(OP_CEIL) sp[-1] = ceil(sp[-1]); NEXT();
-    CASE(OP_INT) sp[-1] = trunc(sp[-1]); NEXT();
-    CASE(OP_DEGREES) sp[-1] *= 180.0 / M_PI; NEXT();
-    CASE(OP_RADIANS) sp[-1] *= M_PI / 180.0; NEXT();
-    CASE(OP_ATAN2) sp--; sp[-1] = atan2(sp[-1], sp[0]); NEXT();
-    CASE(OP_POW) sp--; sp[-1] = pow(sp[-1], sp[0]); NEXT();
-    CASE(OP_MOD) sp--; sp[-1] = fmod(sp[-1], sp[0]); NEXT();
-    CASE(OP_MIN) sp--; sp[-1] = sp[0] < sp[-1] ? sp[0] : sp[-1]; NEXT();
-    CASE(OP_MAX) sp--; sp[-1] = sp[0] > sp[-1] ? sp[0] : sp[-1]; NEXT();
-    CASE(OP_SELECT3)
-      sp -= 2;
-      sp[-1] = select3(sp[-1], sp[0], sp[1]);
-      NEXT();
-    CASE(OP_SELECT4)
-      sp -= 3;
-      sp[-1] = select4(sp[-1], sp[0], sp[1], sp[2]);
-      NEXT();
-    CASE(OP_CALL)
-      sp -= i->n;
-      *sp = run(f->callees[i->arg], sp);
-      sp++;
-      NEXT();
-    CASE(OP_INTERNAL)
-      sp -= i->n;
-      *sp = eval_internal(i->arg, sp);
-      sp++;
-      NEXT();
-    CASE(OP_TEXTURE)
-      sp -= 3;
-      *sp = texture_value(f->pigments[i->arg], i->n, sp);
-      sp++;
-      NEXT();
-    CASE(OP_SPLINE) {
-      /* Component n of splines[arg] at the top value. */
-      double v[5];
-      zr__sdl_spline_eval(f->splines[i->arg], -1, sp[-1], v);
-      sp[-1] = v[i->n];
-      NEXT();
-    }
-    CASE(OP_XFORM) {
-      /* Component n of the top three values as a point moved by
-         transforms[arg]. */
-      zr_vec3 q = zr__xform_point(f->transforms[i->arg]->m,
-                                  zr_v3(sp[-3], sp[-2], sp[-1]));
-      sp -= 2;
-      sp[-1] = i->n == 0 ? q.x : i->n == 1 ? q.y : q.z;
-      NEXT();
-    }
-    CASE(OP_RETURN) return sp[-1];
-#ifndef VM_THREADED
-    default: return NAN; /* never: every opcode has its case */
-    }
-  }
-#endif
-}
-
-double zr__fn_eval(const zr_fn *fn, const double *args) {
-  double mem[ZR_FN_MAX_STACK];
-  memcpy(mem, args, (size_t)fn->n_params * sizeof *args);
-  return run(fn, mem);
-}
-
-int zr__fn_params(const zr_fn *fn) { return fn->n_params; }
-
-const char *zr__fn_unsupported(const zr_fn *fn) { return fn->unsupported; }
 
 /* ---- the compiler ---- */
 
@@ -633,10 +118,9 @@ typedef struct compiler {
   size_t n_consts, cap_consts;
   const zr_fn **callees;
   size_t n_callees, cap_callees;
-  const zr_pigment **pigments;
-  size_t n_pigments, cap_pigments;
-  const zr_sdl_spline **splines;
-  size_t n_splines, cap_splines;
+  /* Pigments and splines, with the routines that evaluate them. */
+  zr_fn_extern *externs;
+  size_t n_externs, cap_externs;
   const zr_transform **transforms;
   size_t n_transforms, cap_transforms;
   int texture_kind;
@@ -792,7 +276,7 @@ static bool fold(compiler *c, op o, int arity, size_t first_pc) {
   tmp.n_slots = arity;
   tmp.n_code = (size_t)arity + 2;
   tmp.code = prog;
-  double v = run(&tmp, mem);
+  double v = zr__fn_run(&tmp, mem);
   c->n_code = first_pc;
   c->n_consts -= (size_t)arity;
   c->height -= arity;
@@ -1015,13 +499,22 @@ static bool sum_or_prod(compiler *c, bool is_sum) {
   return want(c, ')', "')'");
 }
 
+/* Adds a pigment or spline and its routine to the body's pool; its
+   index, or -1. */
+static int add_extern(compiler *c,
+                      double (*eval)(const void *, int, const double *),
+                      const void *what) {
+  if (!grow(c, (void **)&c->externs, &c->cap_externs, c->n_externs,
+            sizeof *c->externs))
+    return -1;
+  c->externs[c->n_externs].eval = eval;
+  c->externs[c->n_externs].what = what;
+  return (int)c->n_externs++;
+}
+
 /* Adds a pigment to the body's pool; its index, or -1. */
 static int add_pigment(compiler *c, const zr_pigment *pg) {
-  if (!grow(c, (void **)&c->pigments, &c->cap_pigments, c->n_pigments,
-            sizeof *c->pigments))
-    return -1;
-  c->pigments[c->n_pigments] = pg;
-  return (int)c->n_pigments++;
+  return add_extern(c, pigment_extern, pg);
 }
 
 /* F(x, y, z).channel for a pigment function F ("Function Pattern":
@@ -1050,7 +543,7 @@ static bool call_pigment(compiler *c, const zr_fn *callee,
         (tok(c)->kind == T_IDENTIFIER && strcmp(tok(c)->v.str,
                                                 items[k]) == 0)) {
       c->pos++;
-      int at = add_pigment(c, callee->pigments[0]);
+      int at = add_pigment(c, callee->externs[0].what);
       if (at < 0)
         return false;
       return emit(c, OP_TEXTURE, at, channel[k], -2);
@@ -1061,11 +554,7 @@ static bool call_pigment(compiler *c, const zr_fn *callee,
 
 /* Adds a spline to the body's pool; its index, or -1. */
 static int add_spline(compiler *c, const zr_sdl_spline *s) {
-  if (!grow(c, (void **)&c->splines, &c->cap_splines, c->n_splines,
-            sizeof *c->splines))
-    return -1;
-  c->splines[c->n_splines] = s;
-  return (int)c->n_splines++;
+  return add_extern(c, spline_extern, s);
 }
 
 /* Adds a transform to the body's pool; its index, or -1. */
@@ -1132,7 +621,7 @@ static bool call_spline(compiler *c, const zr_fn *callee,
         (tok(c)->kind == T_IDENTIFIER && strcmp(tok(c)->v.str,
                                                 items[k]) == 0)) {
       c->pos++;
-      int at = add_spline(c, callee->splines[0]);
+      int at = add_spline(c, callee->externs[0].what);
       if (at < 0)
         return false;
       return emit(c, OP_SPLINE, at, channel[k], 0);
@@ -1479,8 +968,9 @@ static bool internal_body(compiler *c, bool have_params) {
   /* A number far outside int's range must not reach the conversion
      (undefined behaviour; the fuzzer found internal(6.8e96)). */
   double number = num->v.num;
-  const internal_fn *in =
-      number >= 0 && number <= 1000 ? internal_find((int)number) : NULL;
+  const zr_fn_internal *in =
+      number >= 0 && number <= 1000 ? zr__fn_internal_find((int)number)
+                                    : NULL;
   if (!in || number != in->number) {
     char n[32];
     snprintf(n, sizeof n, "%g", num->v.num);
@@ -1516,25 +1006,20 @@ static const zr_fn *finish(compiler *c) {
       zr__sdl_alloc(p, (c->n_consts ? c->n_consts : 1) * sizeof *consts);
   const zr_fn **callees = zr__sdl_alloc(
       p, (c->n_callees ? c->n_callees : 1) * sizeof *callees);
-  const zr_pigment **pigments = zr__sdl_alloc(
-      p, (c->n_pigments ? c->n_pigments : 1) * sizeof *pigments);
-  const zr_sdl_spline **splines = zr__sdl_alloc(
-      p, (c->n_splines ? c->n_splines : 1) * sizeof *splines);
+  zr_fn_extern *externs = zr__sdl_alloc(
+      p, (c->n_externs ? c->n_externs : 1) * sizeof *externs);
   const zr_transform **transforms = zr__sdl_alloc(
       p, (c->n_transforms ? c->n_transforms : 1) * sizeof *transforms);
-  if (!fn || !code || !consts || !callees || !pigments || !splines ||
+  if (!fn || !code || !consts || !callees || !externs ||
       !transforms)
     return NULL;
   if (c->n_transforms)
     memcpy(transforms, c->transforms,
            c->n_transforms * sizeof *transforms);
   fn->transforms = (const zr_transform *const *)transforms;
-  if (c->n_splines)
-    memcpy(splines, c->splines, c->n_splines * sizeof *splines);
-  fn->splines = (const zr_sdl_spline *const *)splines;
-  if (c->n_pigments)
-    memcpy(pigments, c->pigments, c->n_pigments * sizeof *pigments);
-  fn->pigments = (const zr_pigment *const *)pigments;
+  if (c->n_externs)
+    memcpy(externs, c->externs, c->n_externs * sizeof *externs);
+  fn->externs = externs;
   fn->texture_kind = c->texture_kind;
   /* An empty pool was never allocated, and memcpy from NULL is
      undefined even for no bytes. */
@@ -1621,8 +1106,7 @@ const zr_fn *zr__sdl_function_parse(zr_sdl_parser *p, const zr_sdl_loc *at) {
   free(c.code);
   free(c.consts);
   free(c.callees);
-  free(c.pigments);
-  free(c.splines);
+  free(c.externs);
   free(c.transforms);
   /* A pattern or pigment body ran a nested parse, which may have moved
      the frames (a macro called in it): take the frame anew. */
@@ -1671,7 +1155,7 @@ bool zr__sdl_function_call(zr_sdl_parser *p, const zr_fn *fn,
   }
   if (fn->texture_kind == FN_SPLINE) {
     /* A spline function gives the spline's vector there. */
-    *out = zr__sdl_spline_value(fn->splines[0], -1, args->v[0]);
+    *out = zr__sdl_spline_value(fn->externs[0].what, -1, args->v[0]);
     return true;
   }
   if (fn->texture_kind == FN_TRANSFORM) {
@@ -1684,7 +1168,7 @@ bool zr__sdl_function_call(zr_sdl_parser *p, const zr_fn *fn,
   if (fn->texture_kind == FN_PIGMENT) {
     /* A pigment function gives the pigment's colour there. */
     zr_vec3 at = zr_v3(args->v[0], args->v[1], args->v[2]);
-    *out = zr__sdl_colour_expr(zr__pigment_eval(fn->pigments[0], at));
+    *out = zr__sdl_colour_expr(zr__pigment_eval(fn->externs[0].what, at));
     return true;
   }
   *out = zr__sdl_float(zr__fn_eval(fn, args->v));

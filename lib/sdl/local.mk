@@ -59,7 +59,8 @@ tests_test_numlist_LDADD = $(TEST_LDADD)
 tests_test_numlist_LDFLAGS = -static
 $(tests_test_numlist_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
 
-# User-defined functions (lib/sdl/function.c) and their tests.
+# User-defined functions: the compiler (lib/sdl/function.c; the machine
+# is lib/fn) and their tests.
 lib_libzrcube_la_SOURCES += lib/sdl/function.h lib/sdl/function.c
 check_PROGRAMS += tests/test_function
 TESTS += tests/test_function

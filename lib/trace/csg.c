@@ -31,6 +31,8 @@
 
 #include <math.h>
 
+#include "trace/shape.h"
+
 /* The most crossings one CSG primitive gathers along a ray; more are
    dropped (a ray through over a hundred child surfaces at once). */
 #define CSG_MAX_GATHER 256
@@ -140,3 +142,19 @@ bool zr__csg_inside(const zr_object *object, zr_vec3 p) {
     in = zr__inside(object->clip, p);
   return in != object->inverse;
 }
+
+/* CSG objects are traced whole by the functions above, before any
+   transform (their children carry theirs); the table gives their names
+   and their inside test (lib/trace/shape.h). */
+const zr_shape_ops zr__shape_union = {
+    .name = "a union",
+    .inside = zr__csg_inside,
+};
+const zr_shape_ops zr__shape_intersection = {
+    .name = "an intersection or difference",
+    .inside = zr__csg_inside,
+};
+const zr_shape_ops zr__shape_merge = {
+    .name = "a merge",
+    .inside = zr__csg_inside,
+};

@@ -56,6 +56,10 @@ int zr__intersect_t(const zr_object *object, const zr_ray *ray, double tmin,
    object has none. */
 bool zr__hit_uv(const zr_hit *hit, zr_vec3 p, double *u, double *v);
 
+/* The object's world-space bounding box; false for unbounded objects
+   (planes, and anything inverse) (lib/trace/bounds.c). */
+bool zr__object_bounds(const zr_object *object, zr_vec3 *lo, zr_vec3 *hi);
+
 /* Whether the world point p lies inside the object (POV-Ray's inside, with
    inverse applied).  Triangles have no inside; a disc's is its plane's. */
 bool zr__inside(const zr_object *object, zr_vec3 p);
@@ -70,12 +74,7 @@ bool zr__csg_inside(const zr_object *object, zr_vec3 p);
 /* Whether the object encloses a volume (triangles and discs do not, so
    rays crossing them stay in the medium they were in). */
 bool zr__mesh_has_inside(const zr_object *object); /* obj_mesh.c */
-static inline bool zr__has_inside(const zr_object *object) {
-  if (object->kind == ZR_OBJ_MESH)
-    return zr__mesh_has_inside(object);
-  return object->kind != ZR_OBJ_TRIANGLE && object->kind != ZR_OBJ_DISC &&
-         object->kind != ZR_OBJ_POLYGON && object->kind != ZR_OBJ_PARAMETRIC;
-}
+bool zr__has_inside(const zr_object *object);
 
 /*
  * The distance by which a secondary ray leaving point p is moved off the

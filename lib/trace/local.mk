@@ -1,12 +1,16 @@
 # lib/trace/local.mk - the tracer: bounds, BVH, intersections, shading,
 # camera rays and antialiasing.
 lib_libzrcube_la_SOURCES += \
-	lib/scene/bounds.c \
+	lib/trace/bounds.c \
+	lib/trace/prepare.c lib/trace/prepare.h \
 	lib/trace/bvh.c lib/trace/bvh.h \
 	lib/trace/csg.c \
 	lib/trace/obj_quadric.c lib/trace/obj_quadric.h \
 	lib/trace/obj_poly.c lib/trace/obj_poly.h \
 	lib/trace/intersect.c lib/trace/intersect.h \
+	lib/trace/shape.c lib/trace/shape.h \
+	lib/trace/obj_sphere.c lib/trace/obj_box.c lib/trace/obj_plane.c \
+	lib/trace/obj_triangle.c lib/trace/obj_cone.c lib/trace/obj_disc.c \
 	lib/trace/render.c lib/trace/render.h \
 	lib/trace/shade.c lib/trace/shade.h \
 	lib/trace/photons.c lib/trace/photons.h

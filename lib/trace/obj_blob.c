@@ -22,6 +22,8 @@
 #include "trace/obj_shapes.h"
 
 #include <math.h>
+
+#include "trace/shape.h"
 #include <stdlib.h>
 
 #include "trace/roots.h"
@@ -296,3 +298,11 @@ int zr__blob_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
   }
   return found;
 }
+
+/* The operations the tracer calls through (lib/trace/shape.h). */
+const zr_shape_ops zr__shape_blob = {
+    .name = "a blob",
+    .search = zr__blob_crossings,
+    .inside = zr__blob_inside,
+    .bounds = zr__blob_bounds,
+};

@@ -15,6 +15,8 @@
 
 #include <math.h>
 
+#include "trace/shape.h"
+
 #include "trace/obj_mesh.h"
 
 int zr__height_field_crossings(const zr_object *o, zr_vec3 org,
@@ -86,3 +88,11 @@ bool zr__height_field_bounds(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi) {
   hi->y = fmax(hi->y, lo->y);
   return true;
 }
+
+/* The operations the tracer calls through (lib/trace/shape.h). */
+const zr_shape_ops zr__shape_height_field = {
+    .name = "a height_field",
+    .search = zr__height_field_crossings,
+    .inside = zr__height_field_inside,
+    .bounds = zr__height_field_bounds,
+};

@@ -35,7 +35,9 @@
 #include <float.h>
 #include <math.h>
 
-#include "sdl/function.h"
+#include "trace/shape.h"
+
+#include "fn/fn.h"
 #include "trace/obj_shapes.h"
 
 /* The subdivision's stack: halving a stretch 100 times reaches the
@@ -278,3 +280,16 @@ int zr__isosurface_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
   }
   return f.n;
 }
+
+static bool isosurface_box(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi) {
+  zr__isosurface_bounds(o, lo, hi);
+  return true;
+}
+
+/* The operations the tracer calls through (lib/trace/shape.h). */
+const zr_shape_ops zr__shape_isosurface = {
+    .name = "an isosurface",
+    .search = zr__isosurface_crossings,
+    .inside = zr__isosurface_inside,
+    .bounds = isosurface_box,
+};

@@ -47,6 +47,8 @@
 
 #include <complex.h>
 #include <math.h>
+
+#include "trace/shape.h"
 #include <string.h>
 
 /* C11's CMPLX, which glibc leaves out for compilers it does not know to
@@ -538,3 +540,16 @@ int zr__julia_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
   }
   return found;
 }
+
+static bool julia_box(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi) {
+  zr__julia_bounds(o, lo, hi);
+  return true;
+}
+
+/* The operations the tracer calls through (lib/trace/shape.h). */
+const zr_shape_ops zr__shape_julia = {
+    .name = "a julia_fractal",
+    .search = zr__julia_crossings,
+    .inside = zr__julia_inside,
+    .bounds = julia_box,
+};

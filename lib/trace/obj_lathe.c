@@ -22,6 +22,8 @@
 
 #include <math.h>
 
+#include "trace/shape.h"
+
 #include "trace/roots.h"
 
 static double cubic_at(const double *c, double s) {
@@ -216,3 +218,16 @@ int zr__lathe_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
   }
   return l.n;
 }
+
+static bool lathe_box(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi) {
+  zr__lathe_bounds(o, lo, hi);
+  return o->u.lathe.n_seg > 0;
+}
+
+/* The operations the tracer calls through (lib/trace/shape.h). */
+const zr_shape_ops zr__shape_lathe = {
+    .name = "a lathe",
+    .search = zr__lathe_crossings,
+    .inside = zr__lathe_inside,
+    .bounds = lathe_box,
+};

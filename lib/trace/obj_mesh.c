@@ -32,6 +32,8 @@
 
 #include "trace/bvh.h"
 #include "trace/intersect.h"
+#include "trace/prepare.h"
+#include "trace/shape.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -581,3 +583,42 @@ zr_status zr__mesh_instance(zr_arena *arena, const zr_object **prim) {
 bool zr__mesh_has_inside(const zr_object *object) {
   return object->u.mesh.data->has_inside;
 }
+
+/* ---- the operations the tracer calls through (lib/trace/shape.h) ---- */
+
+/* A mesh holds many surfaces, so it searches the interval itself and
+   gives the nearest two crossings in it, with their texture list index
+   and surface coordinates. */
+static void mesh_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
+                           double tmin, double tmax, zr_crossings *l) {
+  zr_mesh_crossing c[2];
+  int n = zr__mesh_crossings(o->u.mesh.data, org, dir, tmin, tmax, c);
+  for (int i = 0; i < n; i++) {
+    zr__crossings_add(l, c[i].t, c[i].normal);
+    l->texture[l->n - 1] = c[i].texture;
+    l->u[l->n - 1] = c[i].u;
+    l->v[l->n - 1] = c[i].v;
+  }
+}
+
+static bool mesh_inside(const zr_object *o, zr_vec3 p) {
+  return zr__mesh_inside(o->u.mesh.data, p);
+}
+
+/* The box of the mesh's vertices; an empty mesh has none. */
+static bool mesh_box(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi) {
+  *lo = o->u.mesh.data->lo;
+  *hi = o->u.mesh.data->hi;
+  return o->u.mesh.data->n_faces > 0;
+}
+
+const zr_shape_ops zr__shape_mesh = {
+    .name = "a mesh",
+    .crossings = mesh_crossings,
+    .inside = mesh_inside,
+    .has_inside = zr__mesh_has_inside,
+    .bounds = mesh_box,
+    .uv_from_hit = true,
+    .hit_object = zr__mesh_hit_object,
+    .prepare = zr__mesh_instance,
+};

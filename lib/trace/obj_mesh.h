@@ -1,7 +1,8 @@
 /*
- * obj_mesh.h - triangle meshes (mesh, mesh2, smooth_triangle): the shared
- * data of one mesh, its own bounding volume hierarchy, and the ray and
- * inside tests the tracer dispatches to (lib/trace/intersect.c).
+ * obj_mesh.h - triangle meshes (mesh, mesh2, smooth_triangle): building
+ * a mesh's own bounding volume hierarchy, and the ray and inside tests
+ * the tracer dispatches to (lib/trace/intersect.c).  The mesh's data is
+ * the scene model's (lib/scene/shapes.h).
  */
 #ifndef ZR_TRACE_OBJ_MESH_H
 #define ZR_TRACE_OBJ_MESH_H
@@ -10,41 +11,7 @@
 #include <stdint.h>
 
 #include "scene/scene.h"
-
-typedef struct zr_mesh_node zr_mesh_node;
-
-/*
- * One mesh.  Every index array has n_faces rows; the optional ones are
- * NULL when the mesh has no such data.  After zr__mesh_build() the faces
- * (and their rows in every array) are in the order of the BVH's leaves.
- * Objects made from the mesh (object { M ... }) point to the same
- * struct: the triangles are never copied.
- */
-struct zr_mesh {
-  zr_vec3 *vertices;
-  size_t n_vertices, cap_vertices;
-  zr_vec3 *normals;
-  size_t n_normals, cap_normals;
-  double (*uvs)[2]; /* uv_vectors, for uv_mapping */
-  size_t n_uvs, cap_uvs;
-  uint32_t (*faces)[3];
-  size_t n_faces, cap_faces;
-  uint32_t (*face_normals)[3]; /* NULL: every face is flat */
-  uint32_t (*face_uvs)[3];
-  /* Texture list indices of each face's corners, -1 for none (the
-     object's own texture); NULL when no face has one. */
-  int32_t (*face_textures)[3];
-  const zr_texture **textures; /* texture_list */
-  size_t n_textures;
-  bool has_inside; /* inside_vector given: the mesh encloses a volume */
-  zr_vec3 inside_vector;
-  /* face_row[i]: the row of the i-th face written, for mesh_camera,
-     which numbers faces in the order of the scene file. */
-  uint32_t *face_row;
-  zr_mesh_node *nodes;
-  size_t n_nodes;
-  zr_vec3 lo, hi; /* the box of every vertex the faces use */
-};
+#include "scene/shapes.h"
 
 /* One crossing of a ray with a mesh, in the mesh's own coordinates. */
 typedef struct zr_mesh_crossing {

@@ -18,6 +18,8 @@
 
 #include <math.h>
 
+#include "trace/shape.h"
+
 #include "trace/obj_shapes.h"
 #include "trace/roots.h"
 
@@ -152,3 +154,16 @@ int zr__ovus_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
     }
   return found;
 }
+
+static bool ovus_box(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi) {
+  zr__ovus_bounds(o, lo, hi);
+  return true;
+}
+
+/* The operations the tracer calls through (lib/trace/shape.h). */
+const zr_shape_ops zr__shape_ovus = {
+    .name = "an ovus",
+    .search = zr__ovus_crossings,
+    .inside = zr__ovus_inside,
+    .bounds = ovus_box,
+};

@@ -26,7 +26,9 @@
 #include <float.h>
 #include <math.h>
 
-#include "sdl/function.h"
+#include "trace/shape.h"
+
+#include "fn/fn.h"
 #include "trace/obj_shapes.h"
 
 /* The subdivision's depth limit and its stack (four children a level). */
@@ -242,3 +244,16 @@ int zr__parametric_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
   }
   return f.n;
 }
+
+/* A shell: no inside. */
+static bool parametric_box(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi) {
+  zr__parametric_bounds(o, lo, hi);
+  return true;
+}
+
+/* The operations the tracer calls through (lib/trace/shape.h). */
+const zr_shape_ops zr__shape_parametric = {
+    .name = "a parametric",
+    .search = zr__parametric_crossings,
+    .bounds = parametric_box,
+};

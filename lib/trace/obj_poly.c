@@ -22,6 +22,8 @@
 
 #include <math.h>
 
+#include "trace/shape.h"
+
 #include "trace/roots.h"
 
 /* Binomial coefficients up to ZR_POLY_MAX_DEGREE. */
@@ -148,3 +150,11 @@ zr_vec3 zr__poly_gradient(const zr_object *o, zr_vec3 p) {
 bool zr__poly_inside(const zr_object *o, zr_vec3 p) {
   return value(o, p) < 0.0;
 }
+
+/* No box: a poly is infinite unless clipped or intersected. */
+/* The operations the tracer calls through (lib/trace/shape.h). */
+const zr_shape_ops zr__shape_poly = {
+    .name = "a poly",
+    .search = zr__poly_crossings,
+    .inside = zr__poly_inside,
+};

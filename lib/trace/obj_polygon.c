@@ -18,6 +18,8 @@
 
 #include <math.h>
 
+#include "trace/shape.h"
+
 /* Whether (u, v) is inside by the even-odd rule. */
 static bool polygon_covers(const zr_object *o, double u, double v) {
   const double *e = o->u.polygon.edges;
@@ -57,3 +59,17 @@ int zr__polygon_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
   normal[0] = n;
   return 1;
 }
+
+/* The box of the points; none without edges. */
+static bool polygon_box(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi) {
+  *lo = o->u.polygon.lo;
+  *hi = o->u.polygon.hi;
+  return o->u.polygon.n_edges > 0;
+}
+
+/* The operations the tracer calls through (lib/trace/shape.h). */
+const zr_shape_ops zr__shape_polygon = {
+    .name = "a polygon",
+    .search = zr__polygon_crossings,
+    .bounds = polygon_box,
+};

@@ -30,6 +30,8 @@
 
 #include <math.h>
 
+#include "trace/shape.h"
+
 #include "trace/roots.h"
 
 /* The value and derivative of one coordinate's cubic at s. */
@@ -258,3 +260,16 @@ int zr__prism_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
   }
   return l.n;
 }
+
+static bool prism_box(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi) {
+  zr__prism_bounds(o, lo, hi);
+  return o->u.prism.n_seg > 0;
+}
+
+/* The operations the tracer calls through (lib/trace/shape.h). */
+const zr_shape_ops zr__shape_prism = {
+    .name = "a prism",
+    .search = zr__prism_crossings,
+    .inside = zr__prism_inside,
+    .bounds = prism_box,
+};

@@ -19,6 +19,8 @@
 
 #include <math.h>
 
+#include "trace/shape.h"
+
 static double value(const double q[10], zr_vec3 p) {
   return q[0] * p.x * p.x + q[1] * p.y * p.y + q[2] * p.z * p.z +
          q[3] * p.x * p.y + q[4] * p.x * p.z + q[5] * p.y * p.z +
@@ -60,3 +62,26 @@ int zr__quadric_crossings(const double q[10], zr_vec3 o, zr_vec3 d,
 bool zr__quadric_inside(const double q[10], zr_vec3 p) {
   return value(q, p) < 0.0;
 }
+
+static void quadric_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
+                              double tmin, double tmax, zr_crossings *l) {
+  (void)tmin;
+  (void)tmax;
+  double t[2];
+  zr_vec3 n[2];
+  int k = zr__quadric_crossings(o->u.quadric.coef, org, dir, t, n);
+  for (int i = 0; i < k; i++)
+    zr__crossings_add(l, t[i], n[i]);
+}
+
+static bool quadric_inside(const zr_object *o, zr_vec3 p) {
+  return zr__quadric_inside(o->u.quadric.coef, p);
+}
+
+/* No box: a quadric is infinite unless clipped or intersected. */
+/* The operations the tracer calls through (lib/trace/shape.h). */
+const zr_shape_ops zr__shape_quadric = {
+    .name = "a quadric",
+    .crossings = quadric_crossings,
+    .inside = quadric_inside,
+};

@@ -18,6 +18,8 @@
 
 #include <math.h>
 
+#include "trace/shape.h"
+
 #include "trace/roots.h"
 
 void zr__sor_bounds(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi) {
@@ -133,3 +135,16 @@ int zr__sor_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
   }
   return l.n;
 }
+
+static bool sor_box(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi) {
+  zr__sor_bounds(o, lo, hi);
+  return true;
+}
+
+/* The operations the tracer calls through (lib/trace/shape.h). */
+const zr_shape_ops zr__shape_sor = {
+    .name = "a sor",
+    .search = zr__sor_crossings,
+    .inside = zr__sor_inside,
+    .bounds = sor_box,
+};

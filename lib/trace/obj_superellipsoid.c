@@ -25,6 +25,8 @@
 
 #include <math.h>
 
+#include "trace/shape.h"
+
 /* The steps each piece of the ray is sampled in. */
 enum { SAMPLES = 8 };
 
@@ -258,3 +260,20 @@ int zr__superellipsoid_crossings(const zr_object *o, zr_vec3 org,
   }
   return n;
 }
+
+/* The unit cube holds it for any exponents. */
+static bool superellipsoid_box(const zr_object *o, zr_vec3 *lo,
+                               zr_vec3 *hi) {
+  (void)o;
+  *lo = zr_v3(-1, -1, -1);
+  *hi = zr_v3(1, 1, 1);
+  return true;
+}
+
+/* The operations the tracer calls through (lib/trace/shape.h). */
+const zr_shape_ops zr__shape_superellipsoid = {
+    .name = "a superellipsoid",
+    .search = zr__superellipsoid_crossings,
+    .inside = zr__superellipsoid_inside,
+    .bounds = superellipsoid_box,
+};

@@ -37,6 +37,8 @@
 #include "trace/obj_sweep.h"
 
 #include <math.h>
+
+#include "trace/shape.h"
 #include <stdlib.h>
 
 #include "trace/obj_shapes.h"
@@ -392,3 +394,16 @@ bool zr__sweep_inside(const zr_object *o, zr_vec3 p) {
       return true;
   return false;
 }
+
+static bool sweep_box(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi) {
+  zr__sweep_bounds(o, lo, hi);
+  return o->u.sweep.data->n_segments > 0;
+}
+
+/* The operations the tracer calls through (lib/trace/shape.h). */
+const zr_shape_ops zr__shape_sphere_sweep = {
+    .name = "a sphere_sweep",
+    .search = zr__sweep_crossings,
+    .inside = zr__sweep_inside,
+    .bounds = sweep_box,
+};

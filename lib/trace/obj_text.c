@@ -22,6 +22,8 @@
 
 #include <math.h>
 
+#include "trace/shape.h"
+
 /* Real roots of a s^2 + b s + c in r[], cancellation-free; a == 0 is
    the linear case.  Returns how many (0..2). */
 static int roots(double a, double b, double c, double r[2]) {
@@ -221,3 +223,34 @@ bool zr__text_inside(const struct zr_text *tx, zr_vec3 p) {
   }
   return false;
 }
+
+/* Text holds many surfaces, so it searches the interval itself and
+   gives the nearest two crossings in it. */
+static void text_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
+                           double tmin, double tmax, zr_crossings *l) {
+  zr_mesh_crossing c[2];
+  int n = zr__text_crossings(o->u.text.data, org, dir, tmin, tmax, c);
+  for (int i = 0; i < n; i++) {
+    zr__crossings_add(l, c[i].t, c[i].normal);
+    l->texture[l->n - 1] = c[i].texture;
+  }
+}
+
+static bool text_inside(const zr_object *o, zr_vec3 p) {
+  return zr__text_inside(o->u.text.data, p);
+}
+
+/* The box of every glyph; none without glyphs. */
+static bool text_box(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi) {
+  *lo = o->u.text.data->lo;
+  *hi = o->u.text.data->hi;
+  return o->u.text.data->n_glyphs > 0;
+}
+
+/* The operations the tracer calls through (lib/trace/shape.h). */
+const zr_shape_ops zr__shape_text = {
+    .name = "a text",
+    .crossings = text_crossings,
+    .inside = text_inside,
+    .bounds = text_box,
+};

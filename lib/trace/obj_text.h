@@ -8,29 +8,8 @@
 #include <stdbool.h>
 
 #include "scene/scene.h"
+#include "scene/shapes.h"
 #include "trace/obj_mesh.h"
-
-/* One piece of an outline in text coordinates: a quadratic Bezier curve
-   p0 p1 p2, or the line p0 p2 when line is set. */
-typedef struct zr_text_segment {
-  double p0[2], p1[2], p2[2];
-  bool line;
-} zr_text_segment;
-
-/* A placed glyph: segments[first .. first + n) and their 2D box. */
-typedef struct zr_text_glyph {
-  size_t first, n;
-  double lo[2], hi[2];
-} zr_text_glyph;
-
-struct zr_text {
-  zr_text_segment *segments;
-  size_t n_segments;
-  zr_text_glyph *glyphs;
-  size_t n_glyphs;
-  double thickness;
-  zr_vec3 lo, hi; /* the box of every glyph, empty when none */
-};
 
 /* The nearest two crossings with tmin < t < tmax, nearest first, in the
    text's own coordinates (texture always -1). */

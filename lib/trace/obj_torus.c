@@ -19,6 +19,8 @@
 
 #include <math.h>
 
+#include "trace/shape.h"
+
 #include "trace/roots.h"
 
 bool zr__ray_box_span(zr_vec3 lo, zr_vec3 hi, zr_vec3 org, zr_vec3 dir,
@@ -106,3 +108,28 @@ int zr__torus_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
   }
   return kept;
 }
+
+static bool torus_box(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi) {
+  zr__torus_bounds(o, lo, hi);
+  return true;
+}
+
+#define UV_PI 3.14159265358979323846
+
+/* u about the y axis from -x, v about the tube from its inner equator
+   (POV-Ray 3.7's torus; povray renders of uv_mapping gradient x and
+   gradient y on a torus agree). */
+static void torus_uv(const zr_object *o, zr_vec3 p, double *u, double *v) {
+  *u = 1.0 - (atan2(p.z, p.x) + UV_PI) / (2.0 * UV_PI);
+  double x = sqrt(p.x * p.x + p.z * p.z) - o->u.torus.major;
+  *v = (atan2(p.y, x) + UV_PI) / (2.0 * UV_PI);
+}
+
+/* The operations the tracer calls through (lib/trace/shape.h). */
+const zr_shape_ops zr__shape_torus = {
+    .name = "a torus",
+    .search = zr__torus_crossings,
+    .inside = zr__torus_inside,
+    .bounds = torus_box,
+    .uv = torus_uv,
+};

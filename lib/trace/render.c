@@ -37,8 +37,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "radiosity/radiosity.h"
-#include "trace/bvh.h"
 #include "trace/render.h"
 #include "trace/shade.h"
 
@@ -397,7 +395,7 @@ static zr_status check_params(const zr_scene *scene,
   if (!scene->bvh && scene->n_primitives > 0)
     return ZR_ESCENE; /* zr__scene_finish() was never called */
   /* A solution holds object addresses of the scene it was solved for. */
-  if (p->radiosity && p->radiosity->scene != scene)
+  if (p->radiosity && zr__radiance_source(p->radiosity)->scene != scene)
     return ZR_EINVAL;
   if (p->radiosity_only && !p->radiosity)
     return ZR_EINVAL;
@@ -428,7 +426,7 @@ ZR_API zr_status zr_render_pixels(const zr_scene *scene,
   pixel_job job;
   job.tracer.scene = scene;
   job.tracer.stats = &local;
-  job.tracer.radiosity = params->radiosity;
+  job.tracer.radiosity = zr__radiance_source(params->radiosity);
   job.tracer.radiosity_only = params->radiosity_only;
   job.tracer.hide = ZR_HIDE_IMAGE;
   job.tracer.indirect = params->gi_cache

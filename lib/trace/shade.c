@@ -65,7 +65,6 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "radiosity/radiosity.h"
 #include "scene/pattern.h"
 #include "scene/texture.h"
 #include "trace/atmosphere.h"
@@ -702,8 +701,8 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
   zr_rgb sum;
   zr_rgb diffuse_in;
   if (tr->radiosity &&
-      zr__radiosity_radiance(tr->radiosity, s->object, s->p, s->d,
-                             &diffuse_in)) {
+      tr->radiosity->radiance(tr->radiosity, s->object, s->p, s->d,
+                              &diffuse_in)) {
     /* The solution's radiance already includes the pigment. */
     sum = zr_rgb_scale(diffuse_in, opacity);
     /* A sky-only cache beside it adds the light of the sky, which the
@@ -1054,7 +1053,8 @@ static zr_rgb trace_upto(const zr_tracer *tracer, const zr_ray *ray,
   if (tracer->radiosity_only) {
     zr_rgb l;
     if (!tracer->radiosity ||
-        !zr__radiosity_radiance(tracer->radiosity, s.object, s.p, s.d, &l))
+        !tracer->radiosity->radiance(tracer->radiosity, s.object, s.p, s.d,
+                                     &l))
       l = zr_rgb3(0, 0, 0); /* no surface in the solution: black */
     return l;
   }

@@ -72,13 +72,34 @@ typedef struct zr_indirect {
   double (*next_uniform)(const struct zr_indirect *self);
 } zr_indirect;
 
+/*
+ * A radiosity solution as the tracer sees it (lib/radiosity implements
+ * it): the radiance leaving the surface point p of object towards
+ * direction d that the solution carries (false: the object is not in
+ * it), and the scene it was solved for.  It is the first member of
+ * struct zr_radiosity, so the tracer reads a solution through this
+ * alone and includes nothing of lib/radiosity (README, "Layering").
+ */
+typedef struct zr_radiance_source {
+  bool (*radiance)(const struct zr_radiance_source *self,
+                   const zr_object *object, zr_vec3 p, zr_vec3 d,
+                   zr_rgb *out);
+  const zr_scene *scene;
+} zr_radiance_source;
+
+/* The radiance source of a public radiosity solution (NULL: none). */
+static inline const zr_radiance_source *
+zr__radiance_source(const zr_radiosity *rad) {
+  return (const zr_radiance_source *)(const void *)rad;
+}
+
 /* What one thread needs to trace rays in a scene. */
 typedef struct zr_tracer {
   const zr_scene *scene;
   zr_render_stats *stats; /* never NULL */
   /* A radiosity solution of scene (NULL: none): it replaces ambient and
      emission with the diffuse light it carries (lib/radiosity). */
-  const zr_radiosity *radiosity;
+  const zr_radiance_source *radiosity;
   int radiosity_only; /* 1: a ray sees the solution at its first hit */
   /* Which objects this ray and the rays it spawns do not see: the
      camera's rays hide no_image objects, reflected rays no_reflection

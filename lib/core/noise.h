@@ -1,8 +1,8 @@
 /*
  * noise.h - POV-Ray 3.7's noise functions, measured (see noise.c).
  */
-#ifndef ZR_SCENE_NOISE_H
-#define ZR_SCENE_NOISE_H
+#ifndef ZR_CORE_NOISE_H
+#define ZR_CORE_NOISE_H
 
 #include <stdint.h>
 
@@ -21,4 +21,4 @@ double zr__noise_gen3(zr_vec3 p);
 /* The noise of generator 1, 2 or 3 (any other number: 2). */
 double zr__noise_generator(zr_vec3 p, int generator);
 
-#endif /* ZR_SCENE_NOISE_H */
+#endif /* ZR_CORE_NOISE_H */

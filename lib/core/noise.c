@@ -29,7 +29,7 @@
  * the turbulence vector times the sum over octaves i of omega^i
  * D(lambda^i p), which the probe's turbulence samples match to 1e-11.
  */
-#include "scene/noise.h"
+#include "core/noise.h"
 
 #include <math.h>
 #include <stdint.h>

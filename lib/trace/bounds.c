@@ -1,0 +1,130 @@
+/*
+ * bounds.c - world-space axis-aligned bounding boxes of primitives.
+ *
+ * The tracer's bounding volume hierarchy (lib/trace/bvh.c) needs a box
+ * around every finite primitive.  Each shape first gets a tight box in its
+ * own coordinates from its table of operations (lib/trace/shape.h): a
+ * sphere's cube, a box's corners, and for the round shapes with an axis
+ * (cylinder, cone, disc) the exact extent of a circle of radius r about a
+ * unit axis a, which along world axis i is r * sqrt(1 - a_i^2).  When the
+ * object carries a transform, the eight corners of that box are mapped to
+ * world space and boxed again, which is conservative for any affine map.
+ * Planes and anything marked `inverse` have no finite extent (POV-Ray
+ * reference, "Plane" and "Inverse"), so they report false and the BVH
+ * keeps them in its list of unbounded primitives.
+ */
+#include "trace/intersect.h"
+
+#include <math.h>
+
+#include "trace/shape.h"
+
+/* The box of the untransformed shape (its table's bounds); false when
+   it is unbounded. */
+static bool local_bounds(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi) {
+  const zr_shape_ops *ops = zr__shape(o->kind);
+  if (!ops->bounds) {
+    zr__bounds_empty(lo, hi);
+    return false;
+  }
+  return ops->bounds(o, lo, hi);
+}
+
+/*
+ * An intersection lies in each of its children, so its box is the
+ * overlap of the bounded children's boxes; unbounded ones (inverted
+ * children of a difference, quadrics) add no limit.  A clip limits an
+ * object the same way.
+ */
+static bool overlap_bounds(const zr_object *const *parts, size_t n,
+                           zr_vec3 *lo, zr_vec3 *hi) {
+  bool any = false;
+  zr_vec3 l = zr_v3(-INFINITY, -INFINITY, -INFINITY), h = zr_v3_neg(l);
+  for (size_t i = 0; i < n; i++) {
+    zr_vec3 cl, ch;
+    if (!zr__object_bounds(parts[i], &cl, &ch))
+      continue;
+    l = zr_v3_max(l, cl);
+    h = zr_v3_min(h, ch);
+    any = true;
+  }
+  if (!any)
+    return false;
+  /* Disjoint children leave an empty box: keep it a point, so the BVH
+     still holds the object (it has no surface anyway). */
+  *lo = l;
+  *hi = zr_v3_max(l, h);
+  return true;
+}
+
+static bool unclipped_bounds(const zr_object *object, zr_vec3 *lo,
+                             zr_vec3 *hi);
+
+bool zr__object_bounds(const zr_object *object, zr_vec3 *lo, zr_vec3 *hi) {
+  zr_vec3 l, h, cl, ch;
+  bool bounded = unclipped_bounds(object, &l, &h);
+  if (!object->clip || !zr__object_bounds(object->clip, &cl, &ch)) {
+    *lo = l;
+    *hi = h;
+    return bounded;
+  }
+  if (!bounded) {
+    *lo = cl;
+    *hi = ch;
+    return true;
+  }
+  *lo = zr_v3_max(l, cl);
+  *hi = zr_v3_max(*lo, zr_v3_min(h, ch));
+  return true;
+}
+
+static bool unclipped_bounds(const zr_object *object, zr_vec3 *lo,
+                             zr_vec3 *hi) {
+  if (object->inverse)
+    return false;
+  if (object->kind == ZR_OBJ_INTERSECTION)
+    return overlap_bounds((const zr_object *const *)object->u.csg.children,
+                          object->u.csg.n_children, lo, hi);
+  if (object->kind == ZR_OBJ_UNION || object->kind == ZR_OBJ_MERGE) {
+    /* Unions are flattened before the BVH is built; for completeness a
+       union's box is the box of its children's boxes. */
+    bool any = false;
+    zr_vec3 l = zr_v3(INFINITY, INFINITY, INFINITY), h = zr_v3_neg(l);
+    for (size_t i = 0; i < object->u.csg.n_children; i++) {
+      zr_vec3 cl, ch;
+      if (!zr__object_bounds(object->u.csg.children[i], &cl, &ch))
+        return false;
+      l = zr_v3_min(l, cl);
+      h = zr_v3_max(h, ch);
+      any = true;
+    }
+    if (!any)
+      return false;
+    *lo = l;
+    *hi = h;
+    return true;
+  }
+  zr_vec3 l, h;
+  if (!local_bounds(object, &l, &h))
+    return false;
+  if (object->transform) {
+    zr_vec3 wl = zr_v3(INFINITY, INFINITY, INFINITY), wh = zr_v3_neg(wl);
+    for (int c = 0; c < 8; c++) {
+      zr_vec3 p = zr_v3(c & 1 ? h.x : l.x, c & 2 ? h.y : l.y,
+                        c & 4 ? h.z : l.z);
+      p = zr__xform_point(object->transform->m, p);
+      wl = zr_v3_min(wl, p);
+      wh = zr_v3_max(wh, p);
+    }
+    l = wl;
+    h = wh;
+  }
+  /* A degenerate box (a flat triangle along an axis) is widened by a
+     relative hair so slab tests against it stay well defined. */
+  double pad = 1e-9 * fmax(1.0, fmax(zr_v3_max_comp(zr_v3_max(
+                                         zr_v3_neg(l), h)), 0.0));
+  *lo = zr_v3_sub(l, zr_v3(pad, pad, pad));
+  *hi = zr_v3_add(h, zr_v3(pad, pad, pad));
+  return isfinite(lo->x) && isfinite(lo->y) && isfinite(lo->z) &&
+         isfinite(hi->x) && isfinite(hi->y) && isfinite(hi->z);
+}
