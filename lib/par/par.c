@@ -24,6 +24,7 @@
 #include "par/par.h"
 
 #include <mpi.h>
+#include <limits.h>
 #include <sched.h>
 #include <stdio.h>
 #include <stdint.h>
@@ -41,6 +42,8 @@ struct zr_par {
   int size;
   int local_size;
   MPI_Comm comm;
+  int owns_mpi;     /* zr__par_init started MPI and finalises it */
+  zr_par_traffic traffic;
 };
 
 /* Environment variables that MPI launchers set in the processes they start
@@ -77,6 +80,7 @@ zr_status zr__par_init(int *argc, char ***argv, zr_par **out) {
       return ZR_EMPI;
     }
     par->uses_mpi = 1;
+    par->owns_mpi = 1;
     /* With MPI_THREAD_SINGLE even threads that never call MPI are not
        allowed, so such an MPI gets one thread per rank. */
     par->threads_allowed = provided >= MPI_THREAD_FUNNELED;
@@ -111,7 +115,8 @@ void zr__par_finalize(zr_par *par) {
   if (par->uses_mpi) {
     if (par->comm != MPI_COMM_NULL)
       MPI_Comm_free(&par->comm);
-    MPI_Finalize();
+    if (par->owns_mpi)
+      MPI_Finalize();
   }
   free(par);
 }
@@ -162,6 +167,12 @@ void zr__par_mpi_version(char *buf, size_t size) {
   snprintf(buf, size, "%.*s", first_line, version);
 }
 
+double zr__par_cpu(void) {
+  struct timespec ts;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
 double zr__par_now(void) {
   struct timespec ts;
   clock_gettime(CLOCK_MONOTONIC, &ts);
@@ -177,6 +188,8 @@ static zr_status bcast_bytes(zr_par *par, char *bytes, size_t size) {
     int rc = MPI_Bcast(bytes + off, (int)n, MPI_BYTE, 0, par->comm);
     if (rc != MPI_SUCCESS)
       return ZR_EMPI;
+    if (par->rank == 0)
+      par->traffic.bcast_bytes_sent += n;
   }
   return ZR_OK;
 }
@@ -310,6 +323,9 @@ static zr_status collect_rows(zr_par *par, const float *mine, float *image,
                                           layout.counts, layout.displs, row,
                                           0, par->comm));
   }
+  if (s == ZR_OK)
+    par->traffic.pixel_bytes_sent +=
+        (uint64_t)layout.counts[par->rank] * row_floats * sizeof(float);
   if (s == ZR_OK && (everyone || par->rank == 0))
     zr__rows_uninterleave(rank_major, image, height, par->size, row_floats);
   if (row != MPI_DATATYPE_NULL)
@@ -376,6 +392,7 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
   double start = zr__par_now();
   memset(&job->stats, 0, sizeof job->stats);
   job->render_seconds = 0;
+  job->gather_seconds = 0;
   int width = job->params->width, height = job->params->height;
   zr_status s = ZR_OK;
   if (width < 1 || height < 1)
@@ -418,8 +435,10 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
   }
   if (s == ZR_OK) {
     float *image = par->rank == 0 ? zr_image_pixels(job->image) : NULL;
+    double gather_start = zr__par_now();
     s = zr__par_agree(par, collect_rows(par, final_rows, image, rank_major,
                                         width, height, 0));
+    job->gather_seconds = zr__par_now() - gather_start;
   }
   job->render_seconds = zr__par_now() - start;
   if (s == ZR_OK)
@@ -431,4 +450,55 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
   free(centres);
   free(rank_major);
   return s;
+}
+
+/* ---- the team of a radiosity solve or cache pretrace (zr_team) ---- */
+
+/* MPI counts are ints: a part of 2 GiB or more cannot travel in one
+   MPI_Allgatherv.  Every member sees the same counts, so every member
+   refuses alike. */
+static zr_status team_allgather(void *user, const void *mine, void *all,
+                                const size_t *counts) {
+  zr_par *par = user;
+  int n = par->size;
+  int *c = malloc((size_t)n * sizeof *c);
+  int *d = malloc((size_t)n * sizeof *d);
+  zr_status s = c && d ? ZR_OK : ZR_ENOMEM;
+  size_t total = 0;
+  for (int r = 0; s == ZR_OK && r < n; r++) {
+    if (counts[r] > INT_MAX || total > INT_MAX - counts[r]) {
+      s = ZR_ELIMIT;
+      break;
+    }
+    c[r] = (int)counts[r];
+    d[r] = (int)total;
+    total += counts[r];
+  }
+  /* A member without room for two small arrays says so to the others
+     before any data moves (zr__par_agree is one int each). */
+  s = zr__par_agree(par, s);
+  double start = zr__par_now(), cpu = zr__par_cpu();
+  if (s == ZR_OK)
+    s = mpi_status(MPI_Allgatherv((void *)mine, c[par->rank], MPI_BYTE,
+                                  all, c, d, MPI_BYTE, par->comm));
+  par->traffic.team_seconds += zr__par_now() - start;
+  par->traffic.team_cpu_seconds += zr__par_cpu() - cpu;
+  if (s == ZR_OK) {
+    par->traffic.team_bytes_sent += counts[par->rank];
+    par->traffic.team_calls++;
+  }
+  free(c);
+  free(d);
+  return s;
+}
+
+void zr__par_team(zr_par *par, zr_team *team) {
+  team->rank = par->rank;
+  team->size = par->uses_mpi ? par->size : 1;
+  team->allgather = team_allgather;
+  team->user = par;
+}
+
+void zr__par_get_traffic(const zr_par *par, zr_par_traffic *out) {
+  *out = par->traffic;
 }

@@ -52,6 +52,8 @@ int zr__par_threads(const zr_par *par, int wanted);
 
 /* Seconds on a monotonic clock. */
 double zr__par_now(void);
+/* CPU seconds of this process, all its threads. */
+double zr__par_cpu(void);
 
 /*
  * Rank 0 passes the files it parsed and the parse status; every other
@@ -82,7 +84,31 @@ typedef struct zr_par_render {
   zr_image *image;         /* rank 0: receives the picture; others NULL */
   zr_render_stats stats;   /* out: summed over all ranks, on rank 0 */
   double render_seconds;   /* out: the slowest rank's, on rank 0 */
+  double gather_seconds;   /* out: this rank's wait in the last gather */
 } zr_par_render;
+
+/* What this rank sent, for bench/scale.sh's model: the scene files it
+   broadcast (rank 0), the rows of pixels it gathered to rank 0 (and, with
+   antialiasing, to every rank), and its parts of the radiosity solution
+   or irradiance cache (a team's exchanges, with their wall time). */
+typedef struct zr_par_traffic {
+  uint64_t bcast_bytes_sent;
+  uint64_t pixel_bytes_sent;
+  uint64_t team_bytes_sent;
+  uint64_t team_calls;
+  double team_seconds;
+  double team_cpu_seconds; /* the process's CPU time in those exchanges */
+} zr_par_traffic;
+
+void zr__par_get_traffic(const zr_par *par, zr_par_traffic *out);
+
+/*
+ * A team (zrcube.h) of all the ranks, for the radiosity solve and the
+ * irradiance cache: its allgather is MPI_Allgatherv on the private
+ * communicator.  Without MPI it is a team of one.  team refers to par,
+ * which must outlive it.
+ */
+void zr__par_team(zr_par *par, zr_team *team);
 
 /*
  * Renders the image over all ranks and their threads: pass 1 on the
