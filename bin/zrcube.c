@@ -677,7 +677,12 @@ int main(int argc, char **argv) {
     return EXIT_SCENE;
   }
   r.rank = zr__par_rank(r.par);
-  zr__par_team(r.par, &r.team);
+  if (zr__par_team(r.par, &r.team) != ZR_OK) {
+    if (r.rank == 0)
+      fprintf(stderr, "zrcube: out of memory\n");
+    zr__par_finalize(r.par);
+    return EXIT_SCENE;
+  }
   int status = read_command_line(&r, argc, argv);
   if (status < 0)
     status = read_scene(&r);

@@ -43,6 +43,7 @@ struct zr_par {
   int local_size;
   MPI_Comm comm;
   int owns_mpi;     /* zr__par_init started MPI and finalises it */
+  int *team_counts; /* the team's MPI_Allgatherv counts and offsets */
   zr_par_traffic traffic;
 };
 
@@ -112,6 +113,7 @@ zr_status zr__par_init(int *argc, char ***argv, zr_par **out) {
 void zr__par_finalize(zr_par *par) {
   if (!par)
     return;
+  free(par->team_counts);
   if (par->uses_mpi) {
     if (par->comm != MPI_COMM_NULL)
       MPI_Comm_free(&par->comm);
@@ -456,47 +458,50 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
 
 /* MPI counts are ints: a part of 2 GiB or more cannot travel in one
    MPI_Allgatherv.  Every member sees the same counts, so every member
-   refuses alike. */
+   refuses alike, and no agreement is needed first (the count arrays
+   were made with the team). */
 static zr_status team_allgather(void *user, const void *mine, void *all,
                                 const size_t *counts) {
   zr_par *par = user;
   int n = par->size;
-  int *c = malloc((size_t)n * sizeof *c);
-  int *d = malloc((size_t)n * sizeof *d);
-  zr_status s = c && d ? ZR_OK : ZR_ENOMEM;
+  if (par->team_counts == NULL)
+    return ZR_ENOMEM; /* on every rank: zr__par_team agreed on it */
+  int *c = par->team_counts, *d = par->team_counts + n;
   size_t total = 0;
-  for (int r = 0; s == ZR_OK && r < n; r++) {
-    if (counts[r] > INT_MAX || total > INT_MAX - counts[r]) {
-      s = ZR_ELIMIT;
-      break;
-    }
+  for (int r = 0; r < n; r++) {
+    if (counts[r] > INT_MAX || total > INT_MAX - counts[r])
+      return ZR_ELIMIT;
     c[r] = (int)counts[r];
     d[r] = (int)total;
     total += counts[r];
   }
-  /* A member without room for two small arrays says so to the others
-     before any data moves (zr__par_agree is one int each). */
-  s = zr__par_agree(par, s);
   double start = zr__par_now(), cpu = zr__par_cpu();
-  if (s == ZR_OK)
-    s = mpi_status(MPI_Allgatherv((void *)mine, c[par->rank], MPI_BYTE,
-                                  all, c, d, MPI_BYTE, par->comm));
+  zr_status s = mpi_status(MPI_Allgatherv((void *)mine, c[par->rank],
+                                          MPI_BYTE, all, c, d, MPI_BYTE,
+                                          par->comm));
   par->traffic.team_seconds += zr__par_now() - start;
   par->traffic.team_cpu_seconds += zr__par_cpu() - cpu;
   if (s == ZR_OK) {
     par->traffic.team_bytes_sent += counts[par->rank];
     par->traffic.team_calls++;
   }
-  free(c);
-  free(d);
   return s;
 }
 
-void zr__par_team(zr_par *par, zr_team *team) {
+zr_status zr__par_team(zr_par *par, zr_team *team) {
   team->rank = par->rank;
   team->size = par->uses_mpi ? par->size : 1;
   team->allgather = team_allgather;
   team->user = par;
+  if (team->size == 1 || par->team_counts != NULL)
+    return ZR_OK;
+  par->team_counts = malloc(2 * (size_t)par->size * sizeof(int));
+  zr_status s = zr__par_agree(par, par->team_counts ? ZR_OK : ZR_ENOMEM);
+  if (s != ZR_OK) {
+    free(par->team_counts);
+    par->team_counts = NULL;
+  }
+  return s;
 }
 
 void zr__par_get_traffic(const zr_par *par, zr_par_traffic *out) {

@@ -106,9 +106,10 @@ void zr__par_get_traffic(const zr_par *par, zr_par_traffic *out);
  * A team (zrcube.h) of all the ranks, for the radiosity solve and the
  * irradiance cache: its allgather is MPI_Allgatherv on the private
  * communicator.  Without MPI it is a team of one.  team refers to par,
- * which must outlive it.
+ * which must outlive it.  Collective; fails (on every rank) only when a
+ * rank has no room for its count arrays.
  */
-void zr__par_team(zr_par *par, zr_team *team);
+zr_status zr__par_team(zr_par *par, zr_team *team);
 
 /*
  * Renders the image over all ranks and their threads: pass 1 on the
