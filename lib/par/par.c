@@ -110,6 +110,47 @@ zr_status zr__par_init(int *argc, char ***argv, zr_par **out) {
   return ZR_OK;
 }
 
+zr_status zr__par_from_comm(void *comm_ptr, zr_par **out) {
+  MPI_Comm comm = *(MPI_Comm *)comm_ptr;
+  *out = NULL;
+  int initialized = 0, finalized = 0;
+  MPI_Initialized(&initialized);
+  MPI_Finalized(&finalized);
+  if (!initialized || finalized || comm == MPI_COMM_NULL)
+    return ZR_EINVAL;
+  zr_par *par = calloc(1, sizeof *par);
+  if (!par)
+    return ZR_ENOMEM;
+  par->uses_mpi = 1;
+  par->comm = MPI_COMM_NULL;
+  int provided = MPI_THREAD_SINGLE;
+  MPI_Query_thread(&provided);
+  par->threads_allowed = provided >= MPI_THREAD_FUNNELED;
+  MPI_Comm node = MPI_COMM_NULL;
+  /* The caller's communicator is duplicated, so our collectives never
+     match the caller's messages, and its error handler is left alone. */
+  int rc = MPI_Comm_dup(comm, &par->comm);
+  if (rc == MPI_SUCCESS)
+    rc = MPI_Comm_set_errhandler(par->comm, MPI_ERRORS_RETURN);
+  if (rc == MPI_SUCCESS)
+    rc = MPI_Comm_rank(par->comm, &par->rank);
+  if (rc == MPI_SUCCESS)
+    rc = MPI_Comm_size(par->comm, &par->size);
+  if (rc == MPI_SUCCESS)
+    rc = MPI_Comm_split_type(par->comm, MPI_COMM_TYPE_SHARED, par->rank,
+                             MPI_INFO_NULL, &node);
+  if (rc == MPI_SUCCESS)
+    rc = MPI_Comm_size(node, &par->local_size);
+  if (node != MPI_COMM_NULL)
+    MPI_Comm_free(&node);
+  if (rc != MPI_SUCCESS) {
+    zr__par_finalize(par);
+    return ZR_EMPI;
+  }
+  *out = par;
+  return ZR_OK;
+}
+
 void zr__par_finalize(zr_par *par) {
   if (!par)
     return;

@@ -21,6 +21,14 @@ typedef struct zr_par zr_par;
  * are returned as ZR_EMPI rather than aborting the job.
  */
 zr_status zr__par_init(int *argc, char ***argv, zr_par **out);
+/*
+ * A world of the ranks of a caller's communicator (comm points to an
+ * MPI_Comm; this header stays free of <mpi.h>), for a program that runs
+ * MPI itself (zrcube_mpi.h): the communicator is duplicated, and
+ * zr__par_finalize frees the duplicate but leaves MPI running.
+ * Collective over comm.  ZR_EINVAL when MPI is not initialised.
+ */
+zr_status zr__par_from_comm(void *comm, zr_par **out);
 /* Leaves MPI (if joined) and frees par; NULL is a no-op. */
 void zr__par_finalize(zr_par *par);
 
