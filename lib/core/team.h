@@ -13,6 +13,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <string.h>
 
 #include "zrcube.h"
 
@@ -68,8 +69,7 @@ static inline int zr__unpack(const char **at, const char *end, void *dst,
                              size_t n) {
   if ((size_t)(end - *at) < n)
     return 0;
-  for (size_t i = 0; i < n; i++)
-    ((char *)dst)[i] = (*at)[i];
+  memcpy(dst, *at, n);
   *at += n;
   return 1;
 }

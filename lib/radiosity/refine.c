@@ -683,13 +683,12 @@ static int threads_of(const zr_radiosity *rad) {
   return rad->params.threads > 1 ? rad->params.threads : 1;
 }
 
-/* The tasks in a batch: alone PLAN_BATCH; a team 4 PLAN_BATCH per
-   member, up to 64 PLAN_BATCH, so exchanges are few and large. */
+/* The tasks in a batch: alone PLAN_BATCH; a team 64 PLAN_BATCH, so
+   that a pass over the links of a scene like the Cornell box (1e5) is
+   one exchange: each exchange makes the members wait for the slowest. */
 static size_t batch_of(const zr_radiosity *rad) {
-  int n = zr__team_size(rad->params.team);
-  if (n == 1)
-    return PLAN_BATCH;
-  return PLAN_BATCH * (size_t)(n < 16 ? 4 * n : 64);
+  return zr__team_size(rad->params.team) == 1 ? PLAN_BATCH
+                                               : 64 * PLAN_BATCH;
 }
 
 /* link_all's task t joins surface t / n (receiver) to t % n. */
