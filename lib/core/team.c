@@ -8,6 +8,8 @@
  */
 #include "core/team.h"
 
+#include <assert.h>
+#include <stdbool.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -26,81 +28,100 @@ typedef struct header {
   uint64_t bytes;
 } header;
 
+/* Parts up to this size travel with the headers, in one allgather of
+   SLOT bytes a member, for teams of up to INLINE_MEMBERS (the room for
+   them is on the stack, so taking part cannot fail for memory). */
+#define SLOT 4096
+#define INLINE_MEMBERS 16
+/* Larger teams send headers alone first, from the stack up to this. */
+#define STACK_HEADERS 4096
+
 zr_status zr__team_exchange(const zr_team *t, zr_status local,
                             const void *mine, size_t bytes,
                             zr__team_parts *out) {
   out->bytes = NULL;
   out->offset = NULL;
   int n = zr__team_size(t);
+  size_t inline_cap = n <= INLINE_MEMBERS ? SLOT - sizeof(header) : 0;
+  size_t slot = sizeof(header) + inline_cap;
+  /* Room made before the first allgather: a member without it says so
+     in its header, and every member fails alike. */
   out->offset = malloc(((size_t)n + 1) * sizeof *out->offset);
-  header *heads = malloc((size_t)n * sizeof *heads);
-  size_t *counts = malloc((size_t)n * sizeof *counts);
+  size_t reserve = (size_t)n * inline_cap;
+  out->bytes = malloc(reserve ? reserve : 1);
   if (n == 1) {
     zr_status s = local;
-    if (s == ZR_OK && (!out->offset || !heads || !counts))
+    free(out->bytes);
+    out->bytes = NULL;
+    if (s == ZR_OK && out->offset)
+      out->bytes = malloc(bytes ? bytes : 1);
+    if (s == ZR_OK && (!out->offset || !out->bytes))
       s = ZR_ENOMEM;
     if (s == ZR_OK) {
-      out->bytes = malloc(bytes ? bytes : 1);
-      if (!out->bytes)
-        s = ZR_ENOMEM;
-      else if (bytes)
+      if (bytes)
         memcpy(out->bytes, mine, bytes);
       out->offset[0] = 0;
       out->offset[1] = bytes;
-    }
-    free(heads);
-    free(counts);
-    if (s != ZR_OK)
+    } else {
       zr__team_parts_free(out);
+    }
     return s;
   }
-  /* A member without room for the headers cannot take part at all;
-     that is a failure every member must see, yet the allgather needs
-     the room.  The three arrays are n small words each: with those
-     out of reach the team's transport has failed anyway. */
-  if (!out->offset || !heads || !counts) {
-    free(heads);
+  static_assert(INLINE_MEMBERS * SLOT <= 65536, "stack room");
+  static_assert(STACK_HEADERS * sizeof(header) <= 65536, "stack room");
+  char stack[65536];
+  char *recv = (size_t)n * slot <= sizeof stack ? stack
+                                                : malloc((size_t)n * slot);
+  size_t *counts = malloc((size_t)n * sizeof *counts);
+  header me = {local, bytes};
+  if (me.status == ZR_OK && (!out->offset || !out->bytes || !counts))
+    me.status = ZR_ENOMEM;
+  if (recv == NULL || counts == NULL) {
+    /* Only a team of more than STACK_HEADERS members gets here without
+       room to take part; its transport holds as much per member. */
+    if (recv != stack)
+      free(recv);
     free(counts);
     zr__team_parts_free(out);
     return ZR_ENOMEM;
   }
-  header me = {local, bytes};
+  char send[SLOT];
+  memcpy(send, &me, sizeof me);
+  if (bytes <= inline_cap && bytes > 0)
+    memcpy(send + sizeof me, mine, bytes);
   for (int r = 0; r < n; r++)
-    counts[r] = sizeof(header);
-  zr_status s = t->allgather(t->user, &me, heads, counts);
-  if (s == ZR_OK) {
-    for (int r = 0; r < n; r++)
-      if (heads[r].status < s)
-        s = (zr_status)heads[r].status;
-  }
+    counts[r] = slot;
+  zr_status s = t->allgather(t->user, send, recv, counts);
+  bool all_inline = true;
   size_t total = 0;
+  for (int r = 0; s == ZR_OK && r < n; r++) {
+    header h;
+    memcpy(&h, recv + (size_t)r * slot, sizeof h);
+    if (h.status < s)
+      s = (zr_status)h.status;
+    out->offset[r] = total;
+    counts[r] = (size_t)h.bytes;
+    total += counts[r];
+    all_inline = all_inline && counts[r] <= inline_cap;
+  }
   if (s == ZR_OK) {
-    for (int r = 0; r < n; r++) {
-      out->offset[r] = total;
-      counts[r] = (size_t)heads[r].bytes;
-      total += counts[r];
-    }
     out->offset[n] = total;
-    out->bytes = malloc(total ? total : 1);
-    /* Every member learns whether every other found the room. */
-    zr_status room = out->bytes ? ZR_OK : ZR_ENOMEM;
-    header ok = {room, 0};
-    size_t *c16 = malloc((size_t)n * sizeof *c16);
-    if (c16 == NULL) {
-      s = ZR_ENOMEM; /* see above: a transport that cannot hold n words */
-    } else {
+    if (all_inline) {
       for (int r = 0; r < n; r++)
-        c16[r] = sizeof(header);
-      s = t->allgather(t->user, &ok, heads, c16);
-      free(c16);
-      for (int r = 0; s == ZR_OK && r < n; r++)
-        if (heads[r].status < s)
-          s = (zr_status)heads[r].status;
+        if (counts[r] > 0)
+          memcpy(out->bytes + out->offset[r],
+                 recv + (size_t)r * slot + sizeof(header), counts[r]);
+    } else {
+      /* Larger parts: room for all of them, agreed, then the parts. */
+      free(out->bytes);
+      out->bytes = malloc(total ? total : 1);
+      s = zr__team_agree(t, out->bytes ? ZR_OK : ZR_ENOMEM);
+      if (s == ZR_OK)
+        s = t->allgather(t->user, mine, out->bytes, counts);
     }
   }
-  if (s == ZR_OK)
-    s = t->allgather(t->user, mine, out->bytes, counts);
-  free(heads);
+  if (recv != stack)
+    free(recv);
   free(counts);
   if (s != ZR_OK)
     zr__team_parts_free(out);
