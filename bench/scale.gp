@@ -21,8 +21,9 @@ set style data histograms
 set style histogram clustered gap 1
 set style fill solid 0.8 border -1
 set xlabel ''
-set title 'efficiency per phase on 2 processors (CPU measure)'
-set key top right
+set title 'efficiency per phase on 2 processors (CPU measure; gi: radiosity solve)'
+set key below horizontal
+set yrange [0:110]
 plot dir.'/phases.dat' index 0 using 2:xtic(1) title 'ray: 2 ranks', \
      '' index 0 using 3 title 'ray: 2 threads (work)', \
      '' index 1 using 2 title 'radiosity: 2 ranks', \

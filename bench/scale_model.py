@@ -229,7 +229,7 @@ def main():
         curves[scene + '_phases'] = [
             (ph, 100 * c1[ph] / (2 * c2[ph]) if c2[ph] > 0 else 0,
              100 * c1[ph] / cpu[(1, 2)][ph] if cpu[(1, 2)][ph] > 0 else 0)
-            for ph in ('parse', 'gi', 'render')] + [
+            for ph in ('gi', 'render')] + [
             ('whole', 100 * W1 / (2 * W2), 100 * W1 / Wt)]
     with open(os.path.join(outdir, 'summary.md'), 'w') as f:
         f.write('\n'.join(md) + '\n')
