@@ -133,3 +133,12 @@ EXTRA_DIST += tests/test_iopolicy.sh
 # little memory, corrupt files, 10^6 objects.
 TESTS += tests/test_faults.sh
 EXTRA_DIST += tests/test_faults.sh
+
+# Simulated caustics against povray's measured law and picture.
+TESTS += tests/test_caustics.sh
+EXTRA_DIST += tests/test_caustics.sh tests/caustics_check.pov \
+	tests/caustics_bumps.pov
+
+# Photon mapping: the power law, lights without photons, povray's picture.
+TESTS += tests/test_photons.sh
+EXTRA_DIST += tests/test_photons.sh tests/photons_check.pov

@@ -15,6 +15,7 @@
 
 #include "core/context.h"
 #include "trace/bvh.h"
+#include "trace/photons.h"
 
 void zr__finish_init(zr_finish *f) {
   memset(f, 0, sizeof *f);
@@ -59,6 +60,14 @@ void zr__settings_init(zr_settings *s) {
   s->background = zr_colour5(0, 0, 0, 0, 0);
   s->version = 3.7;
   s->radiosity.brightness = 1.0;
+  s->photons.gather_min = 20;
+  s->photons.gather_max = 100;
+  s->photons.jitter = 0.4;
+  s->photons.max_trace_level = -1;
+  s->photons.adc_bailout = -1.0;
+  s->photons.radius_multiplier = 1.0;
+  s->photons.expand_increase = 0.2;
+  s->photons.expand_min = 40;
 }
 
 zr_scene *zr__scene_new(void) {
@@ -238,13 +247,17 @@ zr_status zr__scene_finish(zr_scene *scene, zr_context *ctx) {
   }
   scene->primitives = list.items;
   scene->n_primitives = list.n;
-  return zr__bvh_build(scene, ctx);
+  zr_status s = zr__bvh_build(scene, ctx);
+  if (s == ZR_OK && scene->settings.photons.on)
+    s = zr__photons_build(scene, ctx); /* lib/trace/photons.c */
+  return s;
 }
 
 ZR_API void zr_scene_free(zr_scene *scene) {
   if (!scene)
     return;
   zr__bvh_free(scene->bvh);
+  zr__photons_free(scene->photons);
   free(scene->primitives);
   free(scene->objects);
   free(scene->lights);
