@@ -67,6 +67,7 @@
 #include "scene/texture.h"
 #include "trace/bvh.h"
 #include "trace/lights.h"
+#include "trace/render.h"
 #include "trace/shade.h"
 
 /* One stored photon; axis is its kd-tree node's split axis. */
@@ -109,20 +110,10 @@ typedef struct shooter {
   bool oom;
 } shooter;
 
-static uint32_t mix32(uint32_t x) {
-  x ^= x >> 16;
-  x *= 0x7feb352du;
-  x ^= x >> 15;
-  x *= 0x846ca68bu;
-  x ^= x >> 16;
-  return x;
-}
-
-/* A uniform number in [0, 1) from three indices and an axis. */
-static double hash01(uint32_t a, uint32_t b, uint32_t c, uint32_t axis) {
-  uint32_t h = mix32(a * 0x9e3779b9u ^ mix32(b + 0x632be5abu));
-  h = mix32(h ^ mix32(c * 0x85ebca6bu + axis * 0xc2b2ae35u));
-  return (h >> 8) * (1.0 / 16777216.0);
+/* A uniform number in [0, 1) from light li, target ti, photon k and an
+   axis: the tracer's hash (lib/trace/render.c). */
+static double hash01(uint32_t li, uint32_t ti, size_t k, uint32_t axis) {
+  return zr__hash_uniform((uint32_t)k, (li << 20) ^ ti, axis);
 }
 
 /* Two unit vectors that make a right-handed frame with unit w. */
