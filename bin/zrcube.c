@@ -14,12 +14,13 @@
  *      the same bytes from memory;
  *   4. the model of global illumination is chosen (zr_gi_choose); for
  *      the irradiance cache every rank runs the same deterministic
- *      pretrace; for hierarchical radiosity every rank solves the
- *      same radiosity solution
- *      (the solver is deterministic: the same scene and settings give
- *      the same bytes, so no solution travels between ranks) or loads
- *      it from --radiosity-load's file, which every rank must then see;
- *      rank 0 saves it and prints its statistics;
+ *      pretrace; for hierarchical radiosity the ranks solve one
+ *      radiosity solution together, as a team (zrcube.h, lib/par's
+ *      zr__par_team): each computes its share of the transfer factors,
+ *      visibility and refinement plans, they exchange them, and every
+ *      rank ends with the same bytes as one rank alone; or every rank
+ *      loads it from --radiosity-load's file, which every rank must then
+ *      see; rank 0 saves it and prints its statistics;
  *   5. all ranks render their interleaved rows with threads, rank 0
  *      gathers the picture and writes it.
  * Every step that may fail on one rank is followed by an agreement on the
@@ -260,11 +261,14 @@ typedef struct run {
   zr_radiosity *rad;
   zr_gi_cache *gi;
   zr_path *path; /* --gi=path */
+  zr_team team; /* all ranks, solving and pretracing together */
   zr_gi_method gi_method;
   double gi_seconds;
   double parse_seconds;
   double radiosity_seconds;
   double write_seconds;
+  /* This rank's CPU seconds in each phase (-v, bench/scale.sh). */
+  double parse_cpu, gi_cpu, radiosity_cpu, render_cpu;
   zr_par_render render;
 } run;
 
@@ -449,7 +453,7 @@ static int read_scene(run *r) {
   zr_status root = local;
   zr__bundle_init(&r->bundle);
   r->bundle.max_file_size = r->opts.file_limit;
-  double start = zr__par_now();
+  double start = zr__par_now(), cpu = zr__par_cpu();
   if (r->rank == 0 && local == ZR_OK) {
     /* Rank 0 reads with the library's own reader, which applies the
        I/O restrictions, and records what it read for the others. */
@@ -480,6 +484,7 @@ static int read_scene(run *r) {
               r->rank, r->opts.input, zr_status_str(local));
   }
   r->parse_seconds = zr__par_now() - start;
+  r->parse_cpu = zr__par_cpu() - cpu;
   if (zr__par_agree(r->par, local) != ZR_OK) {
     if (r->rank == 0)
       fprintf(stderr, "zrcube: the scene parsed here failed on another "
@@ -585,7 +590,8 @@ static int solve_radiosity(run *r) {
     if (resumed)
       load = state_rad;
   }
-  double start = zr__par_now();
+  params.team = &r->team;      /* and for any number of ranks */
+  double start = zr__par_now(), cpu = zr__par_cpu();
   zr_status s;
   if (load)
     s = zr_radiosity_load(r->ctx, r->scene, load, &r->rad);
@@ -598,6 +604,7 @@ static int solve_radiosity(run *r) {
         "solve it again\n", state_rad);
   free(state_rad);
   r->radiosity_seconds = zr__par_now() - start;
+  r->radiosity_cpu = zr__par_cpu() - cpu;
   if (s != ZR_OK && r->rank == 0 && !*zr_context_last_error(r->ctx))
     fprintf(stderr, "zrcube: radiosity failed: %s\n", zr_status_str(s));
   if (zr__par_agree(r->par, s) != ZR_OK) {
@@ -634,6 +641,7 @@ static int build_cache(run *r, int sky_only) {
   zr_gi_params gp;
   zr_gi_params_init(&gp, r->scene);
   gp.threads = r->threads;
+  gp.team = &r->team;
   gp.sky_only = sky_only;
   const char *load = sky_only ? NULL
                      : r->opts.gi_load ? r->opts.gi_load : gp.load_file;
@@ -657,7 +665,7 @@ static int build_cache(run *r, int sky_only) {
     if (resumed)
       load = state_gi;
   }
-  double start = zr__par_now();
+  double start = zr__par_now(), cpu = zr__par_cpu();
   zr_status s = load ? zr_gi_cache_load(r->ctx, r->scene, &gp, load, &r->gi)
                      : zr_gi_cache_new(r->ctx, r->scene, &gp, &r->gi);
   /* A loaded cache is used as it is (its render is the saved one's);
@@ -665,6 +673,7 @@ static int build_cache(run *r, int sky_only) {
   if (s == ZR_OK && !load)
     s = zr_gi_cache_pretrace(r->gi, &r->opts.params);
   r->gi_seconds = zr__par_now() - start;
+  r->gi_cpu = zr__par_cpu() - cpu;
   if (s != ZR_OK && r->rank == 0 && !*zr_context_last_error(r->ctx))
     fprintf(stderr, "zrcube: irradiance cache failed: %s\n",
             zr_status_str(s));
@@ -949,7 +958,9 @@ static int render_and_write(run *r) {
     return EXIT_SCENE;
   if (have)
     r->render.resume = &resume;
+  double cpu = zr__par_cpu();
   s = r->path ? render_path(r) : zr__par_render(r->par, &r->render);
+  r->render_cpu = zr__par_cpu() - cpu;
   zr__state_free(&resume);
   if (show_progress)
     fputs(s == ZR_OK ? "\n" : "\r\033[K", stderr);
@@ -985,6 +996,26 @@ static int render_and_write(run *r) {
     r->write_seconds = zr__par_now() - start;
   }
   return zr__par_agree(r->par, s) == ZR_OK ? -1 : EXIT_SCENE;
+}
+
+/* -v under mpirun: each phase's time and what this rank sent, one
+   line a rank on stderr, for bench/scale.sh's model. */
+static void print_rank_times(const run *r) {
+  zr_par_traffic t;
+  zr__par_get_traffic(r->par, &t);
+  fprintf(stderr,
+          "zrcube: rank %d: wall s: parse %.4f gi %.4f radiosity %.4f "
+          "render %.4f gather %.4f exchange %.4f; cpu s: parse %.4f "
+          "gi %.4f radiosity %.4f render %.4f exchange %.4f; sent B: "
+          "scene %llu solution %llu pixels %llu; exchanges %llu\n",
+          r->rank, r->parse_seconds, r->gi_seconds, r->radiosity_seconds,
+          r->render.render_seconds, r->render.gather_seconds,
+          t.team_seconds, r->parse_cpu, r->gi_cpu, r->radiosity_cpu,
+          r->render_cpu, t.team_cpu_seconds,
+          (unsigned long long)t.bcast_bytes_sent,
+          (unsigned long long)t.team_bytes_sent,
+          (unsigned long long)t.pixel_bytes_sent,
+          (unsigned long long)t.team_calls);
 }
 
 static void print_statistics(run *r) {
@@ -1107,6 +1138,8 @@ static int run_frame(run *r, const zr_cli_frame *frame) {
     status = render_and_write(r);
   if (status < 0 && r->rank == 0 && r->opts.verbose)
     print_statistics(r);
+  if (status < 0 && r->opts.verbose)
+    print_rank_times(r);
   return status;
 }
 
@@ -1170,6 +1203,12 @@ int main(int argc, char **argv) {
   }
   r.par = r.world;
   r.rank = zr__par_rank(r.par);
+  if (zr__par_team(r.par, &r.team) != ZR_OK) {
+    if (r.rank == 0)
+      fprintf(stderr, "zrcube: out of memory\n");
+    zr__par_finalize(r.par);
+    return EXIT_SCENE;
+  }
   int status = read_command_line(&r, argc, argv);
   if (status < 0 &&
       zr__par_agree(r.world, open_streams(&r) ? ZR_EIO : ZR_OK) != ZR_OK)
@@ -1187,6 +1226,11 @@ int main(int argc, char **argv) {
         continue;
       r.par = split ? r.solo : r.world;
       r.rank = zr__par_rank(r.par);
+      /* A frame a rank renders alone is solved by it alone. */
+      if (zr__par_team(r.par, &r.team) != ZR_OK) {
+        local = EXIT_SCENE;
+        break;
+      }
       local = run_frame(&r, &r.frames[i]);
       end_frame(&r);
     }

@@ -327,6 +327,35 @@ typedef struct zr_scene_info {
 ZR_API void zr_scene_get_info(const zr_scene *scene, zr_scene_info *info);
 
 /* ------------------------------------------------------------------ */
+/* Teams: processes that share one computation                        */
+/* ------------------------------------------------------------------ */
+
+/*
+ * A team is a group of processes (MPI ranks, typically) that compute one
+ * radiosity solution or irradiance cache together: each member does its
+ * share of the work, chosen by rank in a fixed order, and the members
+ * exchange their results through allgather, which the caller provides.
+ * The library never sees how the members talk (zrcube_mpi.h builds a
+ * team on an MPI communicator), and every member ends with the same
+ * bytes as one process alone would compute.
+ *
+ * allgather is collective: every member calls it at the same points with
+ * the same counts (counts[r]: the bytes member r contributes); mine holds
+ * counts[rank] bytes, and all receives every member's bytes one after
+ * the other in rank order.  It returns ZR_OK, or a failure on every
+ * member alike.  A team of size 1 (or no team) works alone.
+ */
+typedef zr_status (*zr_allgather_fn)(void *user, const void *mine,
+                                     void *all, const size_t *counts);
+
+typedef struct zr_team {
+  int rank; /* 0 .. size - 1 */
+  int size;
+  zr_allgather_fn allgather;
+  void *user;
+} zr_team;
+
+/* ------------------------------------------------------------------ */
 /* Radiosity                                                          */
 /* ------------------------------------------------------------------ */
 
@@ -392,6 +421,12 @@ typedef struct zr_radiosity_params {
      thousands of faces still takes minutes.  Default 1024; 0: no
      limit. */
   int max_mesh_faces;
+  /* The processes that solve together (NULL: this one alone): each
+     member computes its share of the transfer factors, visibility and
+     refinement, the members exchange them, and every member ends with
+     the same solution bytes as one process alone.  Every member must
+     call zr_radiosity_solve with the same scene and parameters. */
+  const zr_team *team;
 } zr_radiosity_params;
 
 /* Fills p with the defaults above, then takes the settings of the
@@ -497,6 +532,10 @@ typedef struct zr_gi_params {
   /* Threads of the pretrace (0 or 1: the caller's alone); the cache is
      the same bytes for any number. */
   int threads;
+  /* The processes that pretrace together (NULL: this one alone): the
+     cache is the same bytes on every member as one process alone
+     makes. */
+  const zr_team *team;
   /* The block's save_file and load_file (owned by the scene), NULL
      when not written: the command line loads and saves them. */
   const char *save_file, *load_file;

@@ -157,6 +157,18 @@ same save.pfm load.pfm
 same rad1.pfm load.pfm
 mpi loadmpi 0 2 cornell.pov $SIZE --radiosity-load=sol.zrr +Oloadmpi.pfm
 same rad1.pfm loadmpi.pfm
+# The ranks solve one solution together (issue 15: transfer factors,
+# refinement plans and gathering split among them and exchanged): with
+# 2 and 3 ranks, and 2 threads each, the saved solution and the image
+# are the bytes one rank alone makes.
+mpi solmpi2 0 2 cornell.pov $SIZE +WT1 --radiosity --radiosity-save=sol2.zrr \
+  +Osolmpi2.pfm
+mpi solmpi3 0 3 cornell.pov $SIZE +WT2 --radiosity --radiosity-save=sol3.zrr \
+  +Osolmpi3.pfm
+same sol.zrr sol2.zrr
+same sol.zrr sol3.zrr
+same rad1.pfm solmpi2.pfm
+same rad1.pfm solmpi3.pfm
 
 run only 0 "$ZRCUBE" cornell.pov $SIZE --radiosity-only +Oonly.pfm
 same rad1.pfm only.pfm

@@ -5,6 +5,7 @@ lib_libzrcube_la_SOURCES += \
 	lib/core/iopolicy.c lib/core/iopolicy.h \
 	lib/core/noise.c lib/core/noise.h \
 	lib/core/strbuf.c lib/core/strbuf.h \
+	lib/core/team.c lib/core/team.h \
 	lib/core/transform.c lib/core/transform.h \
 	lib/core/vec.h
 
@@ -14,3 +15,13 @@ tests_test_core_SOURCES = tests/test_core.c
 tests_test_core_CPPFLAGS = $(TEST_CPPFLAGS)
 tests_test_core_LDADD = $(TEST_LDADD)
 tests_test_core_LDFLAGS = -static
+
+# Teams: the exchange protocol, and a radiosity solve and a cache
+# pretrace shared by members (threads here) against one alone.
+check_PROGRAMS += tests/test_team
+TESTS += tests/test_team
+tests_test_team_SOURCES = tests/test_team.c
+tests_test_team_CPPFLAGS = $(TEST_CPPFLAGS)
+tests_test_team_CFLAGS = $(AM_CFLAGS) $(PTHREAD_CFLAGS)
+tests_test_team_LDADD = $(TEST_LDADD) $(PTHREAD_LIBS)
+tests_test_team_LDFLAGS = -static

@@ -54,6 +54,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/team.h"
 #include "radiosity/workers.h"
 #include "trace/bvh.h"
 #include "trace/atmosphere.h"
@@ -660,16 +661,101 @@ static size_t mosaic(int w, int h, double block, uint32_t *out) {
   return n;
 }
 
+/*
+ * A batch across a team (zr_team, core/team.h): member r of n traces the
+ * batch's pixels r, r + n, ... (each pixel's slot is its own, as with
+ * threads), sends each of its slots' records and ray count, and every
+ * member reads every slot back; the records then join in pixel order
+ * on every member as alone.  A pixel's records depend on the cache the
+ * batch started from and on the pixel alone, so they are the same bytes
+ * whoever traced them, and every member keeps the same cache.
+ */
+typedef struct team_batch {
+  batch_job job;
+  size_t mine[BATCH]; /* slots this member traces */
+} team_batch;
+
+static void trace_mine(void *user, size_t begin, size_t end, int worker) {
+  team_batch *tb = user;
+  for (size_t k = begin; k < end; k++)
+    trace_batch(&tb->job, tb->mine[k], tb->mine[k] + 1, worker);
+}
+
+/* pending: this member's failure in the batch before (a record it
+   could not add), which the exchange tells the others. */
+static zr_status team_slots(const zr_gi_cache *c, batch_job *job, size_t m,
+                            zr_status pending) {
+  const zr_team *team = c->params.team;
+  int n = zr__team_size(team), me = zr__team_rank(team);
+  team_batch tb;
+  tb.job = *job;
+  size_t n_mine = 0;
+  for (size_t i = (size_t)me; pending == ZR_OK && i < m; i += (size_t)n)
+    tb.mine[n_mine++] = i;
+  zr__rad_parallel(c->params.threads, n_mine, 1, trace_mine, &tb);
+  zr__pack pack = {0};
+  for (size_t k = 0; k < n_mine; k++) {
+    const gi_scratch *sc = &job->slots[tb.mine[k]];
+    uint64_t count = sc->local.n;
+    zr__pack_put(&pack, &sc->rays, sizeof sc->rays);
+    zr__pack_put(&pack, &count, sizeof count);
+    if (count > 0)
+      zr__pack_put(&pack, sc->local.v, sc->local.n * sizeof *sc->local.v);
+  }
+  zr__team_parts parts;
+  zr_status s = zr__team_exchange(team, pending != ZR_OK ? pending
+                                        : pack.nomem   ? ZR_ENOMEM
+                                                       : ZR_OK,
+                                  pack.bytes, pack.n, &parts);
+  zr__pack_free(&pack);
+  for (int r = 0; s == ZR_OK && r < n; r++) {
+    const char *at = parts.bytes + parts.offset[r];
+    const char *end = parts.bytes + parts.offset[r + 1];
+    for (size_t i = (size_t)r; s == ZR_OK && i < m; i += (size_t)n) {
+      gi_scratch *sc = &job->slots[i];
+      uint64_t count = 0;
+      if (!zr__unpack(&at, end, &sc->rays, sizeof sc->rays) ||
+          !zr__unpack(&at, end, &count, sizeof count) ||
+          (uint64_t)(end - at) / sizeof(zr__gi_record) < count) {
+        s = ZR_EMPI;
+        break;
+      }
+      if (r == me) {
+        at += count * sizeof(zr__gi_record); /* already in the slot */
+        continue;
+      }
+      for (uint64_t k = 0; k < count && s == ZR_OK; k++) {
+        zr__gi_record rec;
+        memcpy(&rec, at, sizeof rec);
+        at += sizeof rec;
+        if (!zr__gi_list_push(&sc->local, &rec))
+          s = ZR_ENOMEM;
+      }
+    }
+    if (s == ZR_OK && at != end)
+      s = ZR_EMPI;
+  }
+  zr__team_parts_free(&parts);
+  return s;
+}
+
 static zr_status run_pass(zr_gi_cache *c, const zr_render_params *render,
                           const zr_media *camera_media,
                           const uint32_t *pixels, size_t n) {
   gi_scratch slots[BATCH];
+  int team = zr__team_size(c->params.team) > 1;
+  zr_status pending = ZR_OK; /* a team member's failure to add */
   for (size_t at = 0; at < n; at += BATCH) {
     size_t m = n - at < BATCH ? n - at : BATCH;
     memset(slots, 0, sizeof slots);
     batch_job job = {c, render, camera_media, pixels + at, slots};
-    zr__rad_parallel(c->params.threads, m, 1, trace_batch, &job);
-    zr_status s = ZR_OK;
+    /* A team's exchange fails on every member alike. */
+    zr_status exchanged = ZR_OK;
+    if (team)
+      exchanged = team_slots(c, &job, m, pending);
+    else
+      zr__rad_parallel(c->params.threads, m, 1, trace_batch, &job);
+    zr_status s = exchanged;
     for (size_t i = 0; i < m; i++) {
       for (size_t k = 0; k < slots[i].local.n && s == ZR_OK; k++)
         if (!zr__gi_cache_add(c, &slots[i].local.v[k]))
@@ -677,9 +763,20 @@ static zr_status run_pass(zr_gi_cache *c, const zr_render_params *render,
       c->sample_rays += slots[i].rays;
       zr__gi_list_free(&slots[i].local);
     }
+    if (exchanged != ZR_OK)
+      return exchanged;
+    /* A member that could not add a record tells the others in the
+       next batch's exchange (or the agreement after the last one), and
+       all stop there together. */
+    if (team && s != ZR_OK) {
+      pending = s;
+      continue;
+    }
     if (s != ZR_OK)
       return s;
   }
+  if (team && zr__team_agree(c->params.team, pending) != ZR_OK)
+    return pending != ZR_OK ? pending : ZR_ENOMEM;
   c->pretrace_passes++;
   return ZR_OK;
 }

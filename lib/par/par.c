@@ -25,6 +25,7 @@
 
 #include <math.h>
 #include <mpi.h>
+#include <limits.h>
 #include <sched.h>
 #include <stdio.h>
 #include <stdint.h>
@@ -42,6 +43,9 @@ struct zr_par {
   int size;
   int local_size;
   MPI_Comm comm;
+  int owns_mpi;     /* zr__par_init started MPI and finalises it */
+  int *team_counts; /* the team's MPI_Allgatherv counts and offsets */
+  zr_par_traffic traffic;
 };
 
 /* Environment variables that MPI launchers set in the processes they start
@@ -78,6 +82,7 @@ zr_status zr__par_init(int *argc, char ***argv, zr_par **out) {
       return ZR_EMPI;
     }
     par->uses_mpi = 1;
+    par->owns_mpi = 1;
     /* With MPI_THREAD_SINGLE even threads that never call MPI are not
        allowed, so such an MPI gets one thread per rank. */
     par->threads_allowed = provided >= MPI_THREAD_FUNNELED;
@@ -106,13 +111,56 @@ zr_status zr__par_init(int *argc, char ***argv, zr_par **out) {
   return ZR_OK;
 }
 
+zr_status zr__par_from_comm(void *comm_ptr, zr_par **out) {
+  MPI_Comm comm = *(MPI_Comm *)comm_ptr;
+  *out = NULL;
+  int initialized = 0, finalized = 0;
+  MPI_Initialized(&initialized);
+  MPI_Finalized(&finalized);
+  if (!initialized || finalized || comm == MPI_COMM_NULL)
+    return ZR_EINVAL;
+  zr_par *par = calloc(1, sizeof *par);
+  if (!par)
+    return ZR_ENOMEM;
+  par->uses_mpi = 1;
+  par->comm = MPI_COMM_NULL;
+  int provided = MPI_THREAD_SINGLE;
+  MPI_Query_thread(&provided);
+  par->threads_allowed = provided >= MPI_THREAD_FUNNELED;
+  MPI_Comm node = MPI_COMM_NULL;
+  /* The caller's communicator is duplicated, so our collectives never
+     match the caller's messages, and its error handler is left alone. */
+  int rc = MPI_Comm_dup(comm, &par->comm);
+  if (rc == MPI_SUCCESS)
+    rc = MPI_Comm_set_errhandler(par->comm, MPI_ERRORS_RETURN);
+  if (rc == MPI_SUCCESS)
+    rc = MPI_Comm_rank(par->comm, &par->rank);
+  if (rc == MPI_SUCCESS)
+    rc = MPI_Comm_size(par->comm, &par->size);
+  if (rc == MPI_SUCCESS)
+    rc = MPI_Comm_split_type(par->comm, MPI_COMM_TYPE_SHARED, par->rank,
+                             MPI_INFO_NULL, &node);
+  if (rc == MPI_SUCCESS)
+    rc = MPI_Comm_size(node, &par->local_size);
+  if (node != MPI_COMM_NULL)
+    MPI_Comm_free(&node);
+  if (rc != MPI_SUCCESS) {
+    zr__par_finalize(par);
+    return ZR_EMPI;
+  }
+  *out = par;
+  return ZR_OK;
+}
+
 void zr__par_finalize(zr_par *par) {
   if (!par)
     return;
+  free(par->team_counts);
   if (par->uses_mpi) {
     if (par->comm != MPI_COMM_NULL)
       MPI_Comm_free(&par->comm);
-    MPI_Finalize();
+    if (par->owns_mpi)
+      MPI_Finalize();
   }
   free(par);
 }
@@ -163,6 +211,12 @@ void zr__par_mpi_version(char *buf, size_t size) {
   snprintf(buf, size, "%.*s", first_line, version);
 }
 
+double zr__par_cpu(void) {
+  struct timespec ts;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
 double zr__par_now(void) {
   struct timespec ts;
   clock_gettime(CLOCK_MONOTONIC, &ts);
@@ -178,6 +232,8 @@ static zr_status bcast_bytes(zr_par *par, char *bytes, size_t size) {
     int rc = MPI_Bcast(bytes + off, (int)n, MPI_BYTE, 0, par->comm);
     if (rc != MPI_SUCCESS)
       return ZR_EMPI;
+    if (par->rank == 0)
+      par->traffic.bcast_bytes_sent += n;
   }
   return ZR_OK;
 }
@@ -311,6 +367,9 @@ static zr_status collect_rows(zr_par *par, const float *mine, float *image,
                                           layout.counts, layout.displs, row,
                                           0, par->comm));
   }
+  if (s == ZR_OK)
+    par->traffic.pixel_bytes_sent +=
+        (uint64_t)layout.counts[par->rank] * row_floats * sizeof(float);
   if (s == ZR_OK && (everyone || par->rank == 0))
     zr__rows_uninterleave(rank_major, image, height, par->size, row_floats);
   if (row != MPI_DATATYPE_NULL)
@@ -467,6 +526,7 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
   double start = zr__par_now();
   memset(&job->stats, 0, sizeof job->stats);
   job->render_seconds = 0;
+  job->gather_seconds = 0;
   int width = job->params->width, height = job->params->height;
   zr_status s = ZR_OK;
   if (width < 1 || height < 1)
@@ -531,6 +591,7 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
         total += (size_t)(y1 - y0);
     }
   total = (total + (size_t)par->size - 1) / (size_t)par->size;
+  job->gather_seconds = 0;
   int chunk = 1;          /* bands in the next chunk (rank 0 decides) */
   double band_time = 0;   /* seconds a band took, last chunk */
   for (int p = 0; p < pr.passes && s == ZR_OK; p++) {
@@ -566,9 +627,11 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
         s = render_band(par, job, p == 1 ? pr.centres : NULL, mine, y0, y1,
                         x0, x1, done_rows, total);
         done_rows += (size_t)zr__rows_count(y1 - y0, par->rank, par->size);
+        double gather_start = zr__par_now();
         if (s == ZR_OK)
           s = zr__par_agree(par, collect_rows(par, mine, band, rank_major,
                                               x1 - x0, y1 - y0, everyone));
+        job->gather_seconds += zr__par_now() - gather_start;
         if (s == ZR_OK && target)
           place_band(band, target, width, y0, y1, x0, x1);
       }
@@ -591,4 +654,58 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
   free(band);
   free(rank_major);
   return s;
+}
+
+/* ---- the team of a radiosity solve or cache pretrace (zr_team) ---- */
+
+/* MPI counts are ints: a part of 2 GiB or more cannot travel in one
+   MPI_Allgatherv.  Every member sees the same counts, so every member
+   refuses alike, and no agreement is needed first (the count arrays
+   were made with the team). */
+static zr_status team_allgather(void *user, const void *mine, void *all,
+                                const size_t *counts) {
+  zr_par *par = user;
+  int n = par->size;
+  if (par->team_counts == NULL)
+    return ZR_ENOMEM; /* on every rank: zr__par_team agreed on it */
+  int *c = par->team_counts, *d = par->team_counts + n;
+  size_t total = 0;
+  for (int r = 0; r < n; r++) {
+    if (counts[r] > INT_MAX || total > INT_MAX - counts[r])
+      return ZR_ELIMIT;
+    c[r] = (int)counts[r];
+    d[r] = (int)total;
+    total += counts[r];
+  }
+  double start = zr__par_now(), cpu = zr__par_cpu();
+  zr_status s = mpi_status(MPI_Allgatherv((void *)mine, c[par->rank],
+                                          MPI_BYTE, all, c, d, MPI_BYTE,
+                                          par->comm));
+  par->traffic.team_seconds += zr__par_now() - start;
+  par->traffic.team_cpu_seconds += zr__par_cpu() - cpu;
+  if (s == ZR_OK) {
+    par->traffic.team_bytes_sent += counts[par->rank];
+    par->traffic.team_calls++;
+  }
+  return s;
+}
+
+zr_status zr__par_team(zr_par *par, zr_team *team) {
+  team->rank = par->rank;
+  team->size = par->uses_mpi ? par->size : 1;
+  team->allgather = team_allgather;
+  team->user = par;
+  if (team->size == 1 || par->team_counts != NULL)
+    return ZR_OK;
+  par->team_counts = malloc(2 * (size_t)par->size * sizeof(int));
+  zr_status s = zr__par_agree(par, par->team_counts ? ZR_OK : ZR_ENOMEM);
+  if (s != ZR_OK) {
+    free(par->team_counts);
+    par->team_counts = NULL;
+  }
+  return s;
+}
+
+void zr__par_get_traffic(const zr_par *par, zr_par_traffic *out) {
+  *out = par->traffic;
 }

@@ -21,6 +21,14 @@ typedef struct zr_par zr_par;
  * are returned as ZR_EMPI rather than aborting the job.
  */
 zr_status zr__par_init(int *argc, char ***argv, zr_par **out);
+/*
+ * A world of the ranks of a caller's communicator (comm points to an
+ * MPI_Comm; this header stays free of <mpi.h>), for a program that runs
+ * MPI itself (zrcube_mpi.h): the communicator is duplicated, and
+ * zr__par_finalize frees the duplicate but leaves MPI running.
+ * Collective over comm.  ZR_EINVAL when MPI is not initialised.
+ */
+zr_status zr__par_from_comm(void *comm, zr_par **out);
 /* Leaves MPI (if joined) and frees par; NULL is a no-op. */
 void zr__par_finalize(zr_par *par);
 
@@ -52,6 +60,8 @@ int zr__par_threads(const zr_par *par, int wanted);
 
 /* Seconds on a monotonic clock. */
 double zr__par_now(void);
+/* CPU seconds of this process, all its threads. */
+double zr__par_cpu(void);
 
 /*
  * Rank 0 passes the files it parsed and the parse status; every other
@@ -118,6 +128,7 @@ typedef struct zr_par_render {
   /* Rank 0: about how long the runs of bands between two calls of
      band_done should take (0: one band at a time). */
   double band_seconds;
+  double gather_seconds;   /* out: this rank's wait in the last gather */
 } zr_par_render;
 
 /* The passes, bands and band rows job will use (for a state file). */
@@ -129,6 +140,30 @@ void zr__par_render_layout(const zr_par *par, const zr_par_render *job,
  * (whole frames of an animation): collectives on it return at once.
  */
 zr_status zr__par_solo(const zr_par *par, zr_par **out);
+
+/* What this rank sent, for bench/scale.sh's model: the scene files it
+   broadcast (rank 0), the rows of pixels it gathered to rank 0 (and, with
+   antialiasing, to every rank), and its parts of the radiosity solution
+   or irradiance cache (a team's exchanges, with their wall time). */
+typedef struct zr_par_traffic {
+  uint64_t bcast_bytes_sent;
+  uint64_t pixel_bytes_sent;
+  uint64_t team_bytes_sent;
+  uint64_t team_calls;
+  double team_seconds;
+  double team_cpu_seconds; /* the process's CPU time in those exchanges */
+} zr_par_traffic;
+
+void zr__par_get_traffic(const zr_par *par, zr_par_traffic *out);
+
+/*
+ * A team (zrcube.h) of all the ranks, for the radiosity solve and the
+ * irradiance cache: its allgather is MPI_Allgatherv on the private
+ * communicator.  Without MPI it is a team of one.  team refers to par,
+ * which must outlive it.  Collective; fails (on every rank) only when a
+ * rank has no room for its count arrays.
+ */
+zr_status zr__par_team(zr_par *par, zr_team *team);
 
 /*
  * Renders the image over all ranks and their threads: pass 1 on the

@@ -37,6 +37,7 @@
 #include <string.h>
 
 #include "core/budget.h"
+#include "core/team.h"
 #include "radiosity/formfactor.h"
 #include "trace/obj_mesh.h"
 
@@ -191,6 +192,15 @@ static zr_status initial_split(zr_radiosity *rad) {
   return ZR_OK;
 }
 
+/* With a team, every member's status after a step that may fail on one
+   member alone (out of memory): all then go on, or all stop, and none
+   waits in an exchange the others have left.  Alone: st. */
+static zr_status agreed(const zr_radiosity *rad, zr_status st) {
+  return zr__team_size(rad->params.team) > 1
+             ? zr__team_agree(rad->params.team, st)
+             : st;
+}
+
 /* Link, then alternate solving and refining. */
 static zr_status solve_rounds(zr_radiosity *rad, zr_context *ctx) {
   zr_status st = initial_split(rad);
@@ -200,19 +210,22 @@ static zr_status solve_rounds(zr_radiosity *rad, zr_context *ctx) {
   /* Light sources first, so links start from lit sources (direct.c). */
   if (st == ZR_OK)
     st = zr__rad_direct_refine(rad);
+  st = agreed(rad, st);
   if (st == ZR_OK)
-    st = zr__rad_link_all(rad);
+    st = agreed(rad, zr__rad_link_all(rad));
   int round = 0;
   while (st == ZR_OK) {
     zr__rad_direct_update(rad);
-    zr__rad_finish_links(rad);
+    st = zr__rad_finish_links(rad);
+    if (st != ZR_OK)
+      break;
     zr__rad_compact_links(rad);
-    st = zr__rad_solve(rad, ctx);
+    st = agreed(rad, zr__rad_solve(rad, ctx));
     if (st != ZR_OK || rad->params.uniform > 0 ||
         round >= rad->params.refine_rounds)
       break;
     size_t changed = 0;
-    st = zr__rad_refine_links(rad, &changed);
+    st = agreed(rad, zr__rad_refine_links(rad, &changed));
     if (changed == 0)
       break;
     round++;
@@ -223,6 +236,10 @@ static zr_status solve_rounds(zr_radiosity *rad, zr_context *ctx) {
   if (st == ZR_ENOMEM)
     return zr__diag(ctx, ZR_DIAG_ERROR, st, NULL,
                     "radiosity: out of memory refining links");
+  if (st == ZR_EMPI)
+    return zr__diag(ctx, ZR_DIAG_ERROR, st, NULL,
+                    "radiosity: the processes solving together could not "
+                    "exchange their parts of the solution");
   return st;
 }
 
@@ -235,6 +252,16 @@ ZR_API zr_status zr_radiosity_solve(zr_context *ctx, const zr_scene *scene,
                     "radiosity: no scene");
   zr_radiosity *rad;
   zr_status st = zr__rad_create(ctx, scene, params, &rad);
+  const zr_team *team = params ? params->team : NULL;
+  if (zr__team_size(team) > 1) {
+    zr_status all = zr__team_agree(team, st);
+    if (all != ZR_OK && st == ZR_OK) {
+      zr_radiosity_free(rad);
+      return zr__diag(ctx, ZR_DIAG_ERROR, all, NULL,
+                      "radiosity: another process solving with this one "
+                      "failed: %s", zr_status_str(all));
+    }
+  }
   if (st != ZR_OK)
     return st;
   zr__rad_direct_power(rad);
@@ -255,7 +282,8 @@ ZR_API zr_status zr_radiosity_solve(zr_context *ctx, const zr_scene *scene,
   zr__rad_smooth(rad);
   zr__rad_count(rad);
   rad->stats.links = rad->n_links;
-  if (rad->params.lookup == 0 && zr__rad_index_links(rad) != ZR_OK) {
+  if (agreed(rad, rad->params.lookup == 0 ? zr__rad_index_links(rad)
+                                           : ZR_OK) != ZR_OK) {
     zr_radiosity_free(rad);
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL,
                     "radiosity: out of memory indexing links");

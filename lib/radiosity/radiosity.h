@@ -200,8 +200,9 @@ zr_status zr__rad_link_all(zr_radiosity *rad);
 /* Re-examines every link against BF_eps with the current radiosity;
    *changed counts the links split. */
 zr_status zr__rad_refine_links(zr_radiosity *rad, size_t *changed);
-/* Computes the transfer factors of links not yet final. */
-void zr__rad_finish_links(zr_radiosity *rad);
+/* Computes the transfer factors of links not yet final (shared among
+   params.team's members, which then exchange them). */
+zr_status zr__rad_finish_links(zr_radiosity *rad);
 /* Whether the segment from..to crosses any surface of the scene. */
 bool zr__rad_occluded(const zr_radiosity *rad, zr_vec3 from, zr_vec3 to);
 /* Drops dead links from the array. */

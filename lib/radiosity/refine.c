@@ -56,6 +56,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/team.h"
 #include "radiosity/formfactor.h"
 #include "radiosity/workers.h"
 #include "trace/bvh.h"
@@ -662,17 +663,32 @@ static zr_status replay(zr_radiosity *rad, const plan *pl) {
 }
 
 /* Plans are made this many at a time, then replayed: enough to keep
-   the threads busy, few enough that the plans stay small. */
+   the threads busy, few enough that the plans stay small.  A team
+   makes this many per member at a time (fewer exchanges); the batch
+   does not change the result, as no plan reads what another made. */
 #define PLAN_BATCH 2048
+/* A team deals tasks out in chunks of this many. */
+#define PLAN_CHUNK 8
 
 typedef struct planner {
   const zr_radiosity *rad;
   plan *plans;
   size_t first; /* the task of plans[0] */
+  zr__rad_work_fn make; /* plans tasks [begin, end) of the batch */
+  const uint32_t *chunks; /* a team member's chunks of the batch */
+  size_t count;           /* tasks in the batch */
 } planner;
 
 static int threads_of(const zr_radiosity *rad) {
   return rad->params.threads > 1 ? rad->params.threads : 1;
+}
+
+/* The tasks in a batch: alone PLAN_BATCH; a team 64 PLAN_BATCH, so
+   that a pass over the links of a scene like the Cornell box (1e5) is
+   one exchange: each exchange makes the members wait for the slowest. */
+static size_t batch_of(const zr_radiosity *rad) {
+  return zr__team_size(rad->params.team) == 1 ? PLAN_BATCH
+                                               : 64 * PLAN_BATCH;
 }
 
 /* link_all's task t joins surface t / n (receiver) to t % n. */
@@ -693,27 +709,142 @@ static void plan_pairs(void *user, size_t begin, size_t end, int worker) {
   }
 }
 
-static void free_plans(plan *plans) {
-  for (size_t i = 0; plans != NULL && i < PLAN_BATCH; i++)
+static void free_plans(plan *plans, size_t n) {
+  for (size_t i = 0; plans != NULL && i < n; i++)
     free(plans[i].ops);
   free(plans);
 }
 
+/* ---- plans across a team ----
+ *
+ * Member r of n makes the plans of the chunks r, r + n, ... of a batch
+ * (PLAN_CHUNK tasks each), sends them (each plan's choice, its length
+ * and its steps, which are plain values with their padding zeroed by
+ * plan_push), and every member reads every member's plans into the same
+ * slots; then each replays the whole batch in order as alone.  A plan
+ * depends on the cells and links as the pass found them and on nothing
+ * else, so it is the same bytes whoever makes it, and so are the cells
+ * and links every member makes from it. */
+static void plan_chunks(void *user, size_t begin, size_t end, int worker) {
+  planner *w = user;
+  for (size_t c = begin; c < end; c++) {
+    size_t t0 = (size_t)w->chunks[c] * PLAN_CHUNK;
+    size_t t1 = t0 + PLAN_CHUNK < w->count ? t0 + PLAN_CHUNK : w->count;
+    w->make(user, t0, t1, worker);
+  }
+}
+
+static zr_status plans_unpack(plan *pl, const char **at, const char *end) {
+  int32_t choice;
+  uint64_t n;
+  if (!zr__unpack(at, end, &choice, sizeof choice) ||
+      !zr__unpack(at, end, &n, sizeof n) ||
+      (uint64_t)(end - *at) / sizeof(plan_op) < n)
+    return ZR_EMPI;
+  pl->choice = choice;
+  pl->n = 0;
+  if (n > pl->cap) {
+    plan_op *ops = realloc(pl->ops, (size_t)n * sizeof *ops);
+    if (ops == NULL)
+      return ZR_ENOMEM;
+    pl->ops = ops;
+    pl->cap = (size_t)n;
+  }
+  if (n > 0)
+    memcpy(pl->ops, *at, (size_t)n * sizeof *pl->ops);
+  *at += (size_t)n * sizeof *pl->ops;
+  pl->n = (size_t)n;
+  return ZR_OK;
+}
+
+/* Makes the plans of tasks [0, w->count) of the batch on every member
+   of the team, each member making its chunks. */
+static zr_status make_plans_team(planner *w) {
+  const zr_team *team = w->rad->params.team;
+  size_t n_chunks = (w->count + PLAN_CHUNK - 1) / PLAN_CHUNK;
+  uint32_t *chunks = malloc((n_chunks + 1) * sizeof *chunks);
+  zr__pack pack = {0};
+  zr_status st = chunks ? ZR_OK : ZR_ENOMEM;
+  if (st == ZR_OK) {
+    size_t n_mine = 0;
+    for (size_t c = 0; c < n_chunks; c++)
+      if (zr__team_mine(team, c))
+        chunks[n_mine++] = (uint32_t)c;
+    w->chunks = chunks;
+    zr__rad_parallel(threads_of(w->rad), n_mine, 1, plan_chunks, w);
+    for (size_t k = 0; k < n_mine && !pack.nomem; k++) {
+      size_t t0 = (size_t)chunks[k] * PLAN_CHUNK;
+      for (size_t t = t0; t < t0 + PLAN_CHUNK && t < w->count; t++) {
+        const plan *pl = &w->plans[t];
+        if (pl->nomem) {
+          st = ZR_ENOMEM;
+          break;
+        }
+        int32_t choice = pl->choice;
+        uint64_t n = pl->n;
+        zr__pack_put(&pack, &choice, sizeof choice);
+        zr__pack_put(&pack, &n, sizeof n);
+        if (pl->n > 0)
+          zr__pack_put(&pack, pl->ops, pl->n * sizeof *pl->ops);
+      }
+    }
+    if (pack.nomem)
+      st = ZR_ENOMEM;
+  }
+  zr__team_parts parts;
+  st = zr__team_exchange(team, st, pack.bytes, pack.n, &parts);
+  zr__pack_free(&pack);
+  for (int r = 0; st == ZR_OK && r < team->size; r++) {
+    const char *at = parts.bytes + parts.offset[r];
+    const char *end = parts.bytes + parts.offset[r + 1];
+    for (size_t c = (size_t)r; st == ZR_OK && c < n_chunks;
+         c += (size_t)team->size)
+      for (size_t t = c * PLAN_CHUNK;
+           st == ZR_OK && t < (c + 1) * PLAN_CHUNK && t < w->count; t++)
+        st = plans_unpack(&w->plans[t], &at, end);
+    if (st == ZR_OK && at != end)
+      st = ZR_EMPI;
+  }
+  zr__team_parts_free(&parts);
+  free(chunks);
+  /* A member that failed to unpack (out of memory) replays nothing;
+     the others learn it after their replay (replayed()). */
+  return st;
+}
+
+/* After a batch's replay, which fails only for memory: a team's
+   members all go on to the next batch, or all stop. */
+static zr_status replayed(const zr_radiosity *rad, zr_status st) {
+  const zr_team *team = rad->params.team;
+  return zr__team_size(team) > 1 ? zr__team_agree(team, st) : st;
+}
+
+/* The plans of the batch's tasks [0, count): this process's threads
+   alone, or shared among the team. */
+static zr_status make_plans(planner *w) {
+  if (zr__team_size(w->rad->params.team) > 1)
+    return make_plans_team(w);
+  zr__rad_parallel(threads_of(w->rad), w->count, PLAN_CHUNK, w->make, w);
+  return ZR_OK;
+}
+
 zr_status zr__rad_link_all(zr_radiosity *rad) {
   size_t n_pairs = rad->n_surfs * rad->n_surfs;
-  plan *plans = calloc(PLAN_BATCH, sizeof *plans);
+  size_t batch = batch_of(rad);
+  plan *plans = calloc(batch, sizeof *plans);
   if (plans == NULL)
     return ZR_ENOMEM;
-  planner w = {rad, plans, 0};
+  planner w = {rad, plans, 0, plan_pairs, NULL, 0};
   zr_status st = ZR_OK;
-  for (size_t at = 0; st == ZR_OK && at < n_pairs; at += PLAN_BATCH) {
-    size_t count = n_pairs - at < PLAN_BATCH ? n_pairs - at : PLAN_BATCH;
+  for (size_t at = 0; st == ZR_OK && at < n_pairs; at += batch) {
+    w.count = n_pairs - at < batch ? n_pairs - at : batch;
     w.first = at;
-    zr__rad_parallel(threads_of(rad), count, 8, plan_pairs, &w);
-    for (size_t t = 0; st == ZR_OK && t < count; t++)
+    st = make_plans(&w);
+    for (size_t t = 0; st == ZR_OK && t < w.count; t++)
       st = replay(rad, &plans[t]);
+    st = replayed(rad, st);
   }
-  free_plans(plans);
+  free_plans(plans, batch);
   return st;
 }
 
@@ -741,16 +872,17 @@ static void plan_refinements(void *user, size_t begin, size_t end,
 zr_status zr__rad_refine_links(zr_radiosity *rad, size_t *changed) {
   size_t n = rad->n_links;
   *changed = 0;
-  plan *plans = calloc(PLAN_BATCH, sizeof *plans);
+  size_t batch = batch_of(rad);
+  plan *plans = calloc(batch, sizeof *plans);
   if (plans == NULL)
     return ZR_ENOMEM;
-  planner w = {rad, plans, 0};
+  planner w = {rad, plans, 0, plan_refinements, NULL, 0};
   zr_status st = ZR_OK;
-  for (size_t at = 0; st == ZR_OK && at < n; at += PLAN_BATCH) {
-    size_t count = n - at < PLAN_BATCH ? n - at : PLAN_BATCH;
+  for (size_t at = 0; st == ZR_OK && at < n; at += batch) {
+    w.count = n - at < batch ? n - at : batch;
     w.first = at;
-    zr__rad_parallel(threads_of(rad), count, 8, plan_refinements, &w);
-    for (size_t t = 0; st == ZR_OK && t < count; t++) {
+    st = make_plans(&w);
+    for (size_t t = 0; st == ZR_OK && t < w.count; t++) {
       /* A self link killed by an earlier plan of this pass (its cell's
          other self link split) is left alone, as one thread would. */
       if (rad->links[at + t].dead || plans[t].choice == 0)
@@ -759,8 +891,9 @@ zr_status zr__rad_refine_links(zr_radiosity *rad, size_t *changed) {
       (*changed)++;
       st = replay(rad, &plans[t]);
     }
+    st = replayed(rad, st);
   }
-  free_plans(plans);
+  free_plans(plans, batch);
   return st;
 }
 
@@ -1002,35 +1135,135 @@ typedef struct finisher {
   atomic_uint_fast64_t rays;
 } finisher;
 
+/* Link l's transfer factor and visibility, into l. */
+static void finish_one(const zr_radiosity *rad, zr__rad_link *l,
+                       uint64_t *rays) {
+  double f = link_factor(rad, l);
+  double vis = 1.0;
+  /* A cell sees all of itself unless its surface can hide part of
+     itself from itself, as a torus's tube does across the hole. */
+  bool self = l->recv == l->src;
+  if (f > 0.0 && (!self || self_hiding(rad, l->recv)))
+    vis = link_visibility(rad, l, rays);
+  f *= vis;
+  l->vis = vis;
+  l->ff = isfinite(f) ? f : 0.0;
+  l->final = 1;
+}
+
 static void finish_range(void *user, size_t begin, size_t end, int worker) {
   (void)worker;
   finisher *w = user;
-  const zr_radiosity *rad = w->rad;
   uint64_t rays = 0;
   for (size_t i = begin; i < end; i++) {
     zr__rad_link *l = &w->rad->links[i];
-    if (l->dead || l->final)
-      continue;
-    double f = link_factor(rad, l);
-    double vis = 1.0;
-    /* A cell sees all of itself unless its surface can hide part of
-       itself from itself, as a torus's tube does across the hole. */
-    bool self = l->recv == l->src;
-    if (f > 0.0 && (!self || self_hiding(rad, l->recv)))
-      vis = link_visibility(rad, l, &rays);
-    f *= vis;
-    l->vis = vis;
-    l->ff = isfinite(f) ? f : 0.0;
-    l->final = 1;
+    if (!l->dead && !l->final)
+      finish_one(w->rad, l, &rays);
   }
   /* A count has no summation order: any thread may add its share. */
   atomic_fetch_add(&w->rays, rays);
 }
 
-void zr__rad_finish_links(zr_radiosity *rad) {
+/* ---- transfer factors across a team (zr_team, core/team.h) ----
+ *
+ * The links still to finish are listed in link order and cut into
+ * chunks of FINISH_CHUNK; member r of n finishes chunks r, r + n, ...
+ * (interleaved, because the cost of a link varies a hundredfold and
+ * neighbouring links cost alike), with its threads.  Each member then
+ * sends the factor and visibility of its links, and every member writes
+ * every member's values into the same links: a link's values are
+ * computed by one member from the scene and the link alone, so they are
+ * the same bits whoever computes them. */
+#define FINISH_CHUNK 64
+
+typedef struct team_finisher {
+  zr_radiosity *rad;
+  const uint32_t *mine; /* the links this member finishes */
+  atomic_uint_fast64_t rays;
+} team_finisher;
+
+static void finish_list(void *user, size_t begin, size_t end, int worker) {
+  (void)worker;
+  team_finisher *w = user;
+  uint64_t rays = 0;
+  for (size_t i = begin; i < end; i++)
+    finish_one(w->rad, &w->rad->links[w->mine[i]], &rays);
+  atomic_fetch_add(&w->rays, rays);
+}
+
+static zr_status finish_team(zr_radiosity *rad, const zr_team *team) {
+  size_t n_todo = 0;
+  for (size_t i = 0; i < rad->n_links; i++)
+    n_todo += !rad->links[i].dead && !rad->links[i].final;
+  uint32_t *todo = malloc((n_todo + 1) * sizeof *todo);
+  uint32_t *mine = malloc((n_todo + 1) * sizeof *mine);
+  zr__pack pack = {0};
+  zr_status st = todo && mine ? ZR_OK : ZR_ENOMEM;
+  size_t n_mine = 0;
+  if (st == ZR_OK) {
+    size_t k = 0;
+    for (size_t i = 0; i < rad->n_links; i++)
+      if (!rad->links[i].dead && !rad->links[i].final)
+        todo[k++] = (uint32_t)i;
+    for (size_t k = 0; k < n_todo; k++)
+      if (zr__team_mine(team, k / FINISH_CHUNK))
+        mine[n_mine++] = todo[k];
+    team_finisher w;
+    w.rad = rad;
+    w.mine = mine;
+    atomic_init(&w.rays, 0);
+    zr__rad_parallel(threads_of(rad), n_mine, 16, finish_list, &w);
+    uint64_t rays = (uint64_t)atomic_load(&w.rays);
+    zr__pack_put(&pack, &rays, sizeof rays);
+    for (size_t k = 0; k < n_mine; k++) {
+      const zr__rad_link *l = &rad->links[mine[k]];
+      double v[2] = {l->ff, l->vis};
+      zr__pack_put(&pack, v, sizeof v);
+    }
+    if (pack.nomem)
+      st = ZR_ENOMEM;
+  }
+  zr__team_parts parts;
+  st = zr__team_exchange(team, st, pack.bytes, pack.n, &parts);
+  zr__pack_free(&pack);
+  for (int r = 0; st == ZR_OK && r < team->size; r++) {
+    const char *at = parts.bytes + parts.offset[r];
+    const char *end = parts.bytes + parts.offset[r + 1];
+    uint64_t rays = 0;
+    if (!zr__unpack(&at, end, &rays, sizeof rays))
+      st = ZR_EMPI;
+    rad->stats.visibility_rays += rays;
+    for (size_t k = (size_t)r * FINISH_CHUNK; st == ZR_OK && k < n_todo;
+         k += (size_t)team->size * FINISH_CHUNK) {
+      for (size_t j = k; j < n_todo && j < k + FINISH_CHUNK; j++) {
+        zr__rad_link *l = &rad->links[todo[j]];
+        double v[2];
+        if (!zr__unpack(&at, end, v, sizeof v)) {
+          st = ZR_EMPI;
+          break;
+        }
+        l->ff = v[0];
+        l->vis = v[1];
+        l->final = 1;
+      }
+    }
+    if (st == ZR_OK && at != end)
+      st = ZR_EMPI; /* a member sent what the others did not expect */
+  }
+  zr__team_parts_free(&parts);
+  free(todo);
+  free(mine);
+  return st;
+}
+
+zr_status zr__rad_finish_links(zr_radiosity *rad) {
+  const zr_team *team = rad->params.team;
+  if (zr__team_size(team) > 1)
+    return finish_team(rad, team);
   finisher w;
   w.rad = rad;
   atomic_init(&w.rays, 0);
   zr__rad_parallel(threads_of(rad), rad->n_links, 64, finish_range, &w);
   rad->stats.visibility_rays += (uint64_t)atomic_load(&w.rays);
+  return ZR_OK;
 }

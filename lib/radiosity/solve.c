@@ -42,6 +42,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/team.h"
 #include "radiosity/workers.h"
 
 /* Clears what links deposit at every node. */
@@ -208,12 +209,211 @@ static double push_pull_all(zr_radiosity *rad, double *change) {
   return sum;
 }
 
+/* ---- gathering across a team (zr_team, core/team.h) ----
+ *
+ * Each member owns whole surfaces (their quadtrees), dealt so that the
+ * links the members gather over are about equal: surfaces by falling
+ * link count, each to the member with the fewest links so far (ties to
+ * the lower rank), a rule every member evaluates alike.  A sweep
+ * gathers into the owned surfaces' nodes and pushes and pulls their
+ * trees, then the members exchange each owned surface's change and the
+ * radiosity b of its nodes, in surface and node order, so every member
+ * holds every node's new b before the next sweep reads it.  Gathering
+ * reads only the b of the sweep before (Jacobi), so the sweeps are the
+ * same bits as one process's, and so is the residual, summed over the
+ * surfaces in order from the same per-surface changes.  The links and
+ * nodes stay on every member: refinement replays on each, and the
+ * render's final gather at a ray hit may read any link. */
+typedef struct team_gather {
+  int32_t *owner;     /* member of each surface */
+  uint32_t *by_surf;  /* node indices grouped by surface, node order */
+  size_t *surf_start; /* nodes of surface s: by_surf[start[s]..[s+1]) */
+  uint32_t *mine;     /* nodes of this member's surfaces, node order */
+  size_t n_mine;
+} team_gather;
+
+static void team_gather_free(team_gather *tg) {
+  free(tg->owner);
+  free(tg->by_surf);
+  free(tg->surf_start);
+  free(tg->mine);
+}
+
+static zr_status team_gather_init(const zr_radiosity *rad,
+                                  const recv_index *ix, team_gather *tg) {
+  const zr_team *team = rad->params.team;
+  int n = zr__team_size(team), me = zr__team_rank(team);
+  size_t ns = rad->n_surfs;
+  memset(tg, 0, sizeof *tg);
+  tg->owner = malloc((ns + 1) * sizeof *tg->owner);
+  tg->by_surf = malloc((rad->n_nodes + 1) * sizeof *tg->by_surf);
+  tg->surf_start = calloc(ns + 2, sizeof *tg->surf_start);
+  tg->mine = malloc((rad->n_nodes + 1) * sizeof *tg->mine);
+  uint64_t *cost = calloc(ns + 1, sizeof *cost);
+  uint64_t *load = calloc((size_t)n, sizeof *load);
+  uint32_t *order = malloc((ns + 1) * sizeof *order);
+  zr_status st = ZR_OK;
+  if (!tg->owner || !tg->by_surf || !tg->surf_start || !tg->mine ||
+      !cost || !load || !order)
+    st = ZR_ENOMEM;
+  if (st == ZR_OK) {
+    for (size_t v = 0; v < rad->n_nodes; v++) {
+      size_t sf = (size_t)rad->nodes[v].surf;
+      cost[sf] += 1 + ix->start[v + 1] - ix->start[v];
+      tg->surf_start[sf + 2]++;
+    }
+    for (size_t k = 2; k < ns + 2; k++)
+      tg->surf_start[k] += tg->surf_start[k - 1];
+    for (size_t v = 0; v < rad->n_nodes; v++)
+      tg->by_surf[tg->surf_start[rad->nodes[v].surf + 1]++] = (uint32_t)v;
+    /* Surfaces by falling cost, ties by index (insertion sort: a scene
+       has tens to thousands of surfaces, sorted once a solve). */
+    for (size_t k = 0; k < ns; k++) {
+      size_t j = k;
+      while (j > 0 && cost[order[j - 1]] < cost[k]) {
+        order[j] = order[j - 1];
+        j--;
+      }
+      order[j] = (uint32_t)k;
+    }
+    for (size_t k = 0; k < ns; k++) {
+      int best = 0;
+      for (int r = 1; r < n; r++)
+        if (load[r] < load[best])
+          best = r;
+      tg->owner[order[k]] = best;
+      load[best] += cost[order[k]];
+    }
+    for (size_t v = 0; v < rad->n_nodes; v++)
+      if (tg->owner[rad->nodes[v].surf] == me)
+        tg->mine[tg->n_mine++] = (uint32_t)v;
+  }
+  free(cost);
+  free(load);
+  free(order);
+  if (st != ZR_OK)
+    team_gather_free(tg);
+  return st;
+}
+
+/* gather_range over a list of nodes. */
+typedef struct list_gatherer {
+  gatherer g;
+  const uint32_t *nodes;
+} list_gatherer;
+
+static void gather_list(void *user, size_t begin, size_t end, int worker) {
+  const list_gatherer *lg = user;
+  for (size_t k = begin; k < end; k++)
+    gather_range((void *)&lg->g, lg->nodes[k], lg->nodes[k] + 1, worker);
+}
+
+/* Push-pull of the member's surfaces; the others' changes stay 0. */
+typedef struct team_puller {
+  zr_radiosity *rad;
+  double *change;
+  const int32_t *owner;
+  int me;
+} team_puller;
+
+static void team_push_pull_range(void *user, size_t begin, size_t end,
+                                 int worker) {
+  const team_puller *w = user;
+  puller one = {w->rad, w->change};
+  for (size_t s = begin; s < end; s++)
+    if (w->owner[s] == w->me)
+      push_pull_range(&one, s, s + 1, worker);
+}
+
+/* One sweep across the team; *residual_power is the summed change. */
+static zr_status team_sweep(zr_radiosity *rad, const recv_index *ix,
+                            const team_gather *tg, double *change,
+                            double *residual_power) {
+  const zr_team *team = rad->params.team;
+  int me = zr__team_rank(team);
+  list_gatherer lg = {{rad, ix}, tg->mine};
+  zr__rad_parallel(rad->params.threads, tg->n_mine, 256, gather_list, &lg);
+  team_puller tp = {rad, change, tg->owner, me};
+  zr__rad_parallel(rad->params.threads, rad->n_surfs, 4,
+                   team_push_pull_range, &tp);
+  zr__pack pack = {0};
+  for (size_t sf = 0; sf < rad->n_surfs; sf++) {
+    if (tg->owner[sf] != me)
+      continue;
+    zr__pack_put(&pack, &change[sf], sizeof change[sf]);
+    for (size_t k = tg->surf_start[sf]; k < tg->surf_start[sf + 1]; k++)
+      zr__pack_put(&pack, rad->nodes[tg->by_surf[k]].b,
+                   sizeof rad->nodes[0].b);
+  }
+  zr__team_parts parts;
+  zr_status st = zr__team_exchange(team, pack.nomem ? ZR_ENOMEM : ZR_OK,
+                                   pack.bytes, pack.n, &parts);
+  zr__pack_free(&pack);
+  for (int r = 0; st == ZR_OK && r < team->size; r++) {
+    const char *at = parts.bytes + parts.offset[r];
+    const char *end = parts.bytes + parts.offset[r + 1];
+    for (size_t sf = 0; st == ZR_OK && sf < rad->n_surfs; sf++) {
+      if (tg->owner[sf] != r)
+        continue;
+      double c = 0.0;
+      if (!zr__unpack(&at, end, &c, sizeof c))
+        st = ZR_EMPI;
+      change[sf] = c;
+      for (size_t k = tg->surf_start[sf];
+           st == ZR_OK && k < tg->surf_start[sf + 1]; k++)
+        if (!zr__unpack(&at, end, rad->nodes[tg->by_surf[k]].b,
+                        sizeof rad->nodes[0].b))
+          st = ZR_EMPI;
+    }
+    if (st == ZR_OK && at != end)
+      st = ZR_EMPI;
+  }
+  zr__team_parts_free(&parts);
+  double sum = 0.0;
+  for (size_t sf = 0; sf < rad->n_surfs; sf++)
+    sum += change[sf];
+  *residual_power = sum;
+  return st;
+}
+
+static zr_status solve_gather_team(zr_radiosity *rad, recv_index *ix,
+                                   double *change) {
+  team_gather tg;
+  zr_status made = team_gather_init(rad, ix, &tg);
+  zr_status st = zr__team_agree(rad->params.team, made);
+  int it = 0;
+  double residual = 0.0;
+  while (st == ZR_OK && it < rad->params.max_iterations) {
+    double power = 0.0;
+    st = team_sweep(rad, ix, &tg, change, &power);
+    residual = power / rad->power_ref;
+    it++;
+    if (!(residual > rad->params.residual))
+      break;
+  }
+  rad->stats.iterations = it;
+  rad->stats.residual = residual;
+  if (made == ZR_OK)
+    team_gather_free(&tg);
+  return st;
+}
+
 static zr_status solve_gather(zr_radiosity *rad) {
   double *change = malloc((rad->n_surfs + 1) * sizeof *change);
   if (change == NULL)
     return ZR_ENOMEM;
   recv_index ix;
   index_by_receiver(rad, &ix);
+  if (zr__team_size(rad->params.team) > 1) {
+    /* Without the index (out of memory) the team fails together. */
+    zr_status st = ix.start ? ZR_OK : ZR_ENOMEM;
+    st = zr__team_agree(rad->params.team, st);
+    if (st == ZR_OK)
+      st = solve_gather_team(rad, &ix, change);
+    free_index(&ix);
+    free(change);
+    return st;
+  }
   int it = 0;
   double residual = 0.0;
   while (it < rad->params.max_iterations) {
@@ -377,6 +577,10 @@ zr_status zr__rad_solve(zr_radiosity *rad, zr_context *ctx) {
   }
   zr_status st =
       rad->params.shooting ? solve_shooting(rad) : solve_gather(rad);
+  if (st == ZR_EMPI)
+    return zr__diag(ctx, ZR_DIAG_ERROR, st, NULL,
+                    "radiosity: the processes solving together could not "
+                    "exchange their radiosities");
   if (st != ZR_OK)
     return zr__diag(ctx, ZR_DIAG_ERROR, st, NULL,
                     rad->params.shooting

@@ -1,0 +1,176 @@
+/*
+ * team.c - exchanging the parts of a shared computation among the
+ * members of a team (see team.h).  Every exchange starts with the
+ * members' statuses and sizes, so a member that failed (out of memory)
+ * makes the others fail with it instead of leaving them waiting in an
+ * allgather it never enters, and the parts' sizes need not be known in
+ * advance.
+ */
+#include "core/team.h"
+
+#include <assert.h>
+#include <stdbool.h>
+#include <stdlib.h>
+#include <string.h>
+
+void zr__team_parts_free(zr__team_parts *parts) {
+  if (parts == NULL)
+    return;
+  free(parts->bytes);
+  free(parts->offset);
+  parts->bytes = NULL;
+  parts->offset = NULL;
+}
+
+/* The header each member sends first. */
+typedef struct header {
+  int64_t status;
+  uint64_t bytes;
+} header;
+
+/* Parts up to this size travel with the headers, in one allgather of
+   SLOT bytes a member, for teams of up to INLINE_MEMBERS (the room for
+   them is on the stack, so taking part cannot fail for memory). */
+#define SLOT 4096
+#define INLINE_MEMBERS 16
+/* Larger teams send headers alone first, from the stack up to this. */
+#define STACK_HEADERS 4096
+
+zr_status zr__team_exchange(const zr_team *t, zr_status local,
+                            const void *mine, size_t bytes,
+                            zr__team_parts *out) {
+  out->bytes = NULL;
+  out->offset = NULL;
+  int n = zr__team_size(t);
+  size_t inline_cap = n <= INLINE_MEMBERS ? SLOT - sizeof(header) : 0;
+  size_t slot = sizeof(header) + inline_cap;
+  /* Room made before the first allgather: a member without it says so
+     in its header, and every member fails alike. */
+  out->offset = malloc(((size_t)n + 1) * sizeof *out->offset);
+  size_t reserve = (size_t)n * inline_cap;
+  out->bytes = malloc(reserve ? reserve : 1);
+  if (n == 1) {
+    zr_status s = local;
+    free(out->bytes);
+    out->bytes = NULL;
+    if (s == ZR_OK && out->offset)
+      out->bytes = malloc(bytes ? bytes : 1);
+    if (s == ZR_OK && (!out->offset || !out->bytes))
+      s = ZR_ENOMEM;
+    if (s == ZR_OK) {
+      if (bytes)
+        memcpy(out->bytes, mine, bytes);
+      out->offset[0] = 0;
+      out->offset[1] = bytes;
+    } else {
+      zr__team_parts_free(out);
+    }
+    return s;
+  }
+  static_assert(INLINE_MEMBERS * SLOT <= 65536, "stack room");
+  static_assert(STACK_HEADERS * sizeof(header) <= 65536, "stack room");
+  char stack[65536];
+  char *recv = (size_t)n * slot <= sizeof stack ? stack
+                                                : malloc((size_t)n * slot);
+  size_t *counts = malloc((size_t)n * sizeof *counts);
+  header me = {local, bytes};
+  if (me.status == ZR_OK && (!out->offset || !out->bytes || !counts))
+    me.status = ZR_ENOMEM;
+  if (recv == NULL || counts == NULL) {
+    /* Only a team of more than STACK_HEADERS members gets here without
+       room to take part; its transport holds as much per member. */
+    if (recv != stack)
+      free(recv);
+    free(counts);
+    zr__team_parts_free(out);
+    return ZR_ENOMEM;
+  }
+  char send[SLOT];
+  memcpy(send, &me, sizeof me);
+  if (bytes <= inline_cap && bytes > 0)
+    memcpy(send + sizeof me, mine, bytes);
+  for (int r = 0; r < n; r++)
+    counts[r] = slot;
+  zr_status s = t->allgather(t->user, send, recv, counts);
+  bool all_inline = true;
+  size_t total = 0;
+  for (int r = 0; s == ZR_OK && r < n; r++) {
+    header h;
+    memcpy(&h, recv + (size_t)r * slot, sizeof h);
+    if (h.status < s)
+      s = (zr_status)h.status;
+    out->offset[r] = total;
+    counts[r] = (size_t)h.bytes;
+    total += counts[r];
+    all_inline = all_inline && counts[r] <= inline_cap;
+  }
+  if (s == ZR_OK) {
+    out->offset[n] = total;
+    if (all_inline) {
+      for (int r = 0; r < n; r++)
+        if (counts[r] > 0)
+          memcpy(out->bytes + out->offset[r],
+                 recv + (size_t)r * slot + sizeof(header), counts[r]);
+    } else {
+      /* Larger parts: room for all of them, agreed, then the parts. */
+      free(out->bytes);
+      out->bytes = malloc(total ? total : 1);
+      s = zr__team_agree(t, out->bytes ? ZR_OK : ZR_ENOMEM);
+      if (s == ZR_OK)
+        s = t->allgather(t->user, mine, out->bytes, counts);
+    }
+  }
+  if (recv != stack)
+    free(recv);
+  free(counts);
+  if (s != ZR_OK)
+    zr__team_parts_free(out);
+  return s;
+}
+
+zr_status zr__team_agree(const zr_team *t, zr_status local) {
+  int n = zr__team_size(t);
+  if (n == 1)
+    return local;
+  /* One allgather of the headers alone. */
+  header *heads = malloc((size_t)n * sizeof *heads);
+  size_t *counts = malloc((size_t)n * sizeof *counts);
+  zr_status s = ZR_ENOMEM;
+  if (heads && counts) {
+    header me = {local, 0};
+    for (int r = 0; r < n; r++)
+      counts[r] = sizeof(header);
+    s = t->allgather(t->user, &me, heads, counts);
+    for (int r = 0; s == ZR_OK && r < n; r++)
+      if (heads[r].status < s)
+        s = (zr_status)heads[r].status;
+  }
+  free(heads);
+  free(counts);
+  return s;
+}
+
+void zr__pack_put(zr__pack *p, const void *bytes, size_t n) {
+  if (p->nomem)
+    return;
+  if (p->cap - p->n < n) {
+    size_t cap = p->cap ? p->cap : 256;
+    while (cap - p->n < n)
+      cap *= 2;
+    char *b = realloc(p->bytes, cap);
+    if (b == NULL) {
+      p->nomem = 1;
+      return;
+    }
+    p->bytes = b;
+    p->cap = cap;
+  }
+  memcpy(p->bytes + p->n, bytes, n);
+  p->n += n;
+}
+
+void zr__pack_free(zr__pack *p) {
+  free(p->bytes);
+  p->bytes = NULL;
+  p->n = p->cap = 0;
+}

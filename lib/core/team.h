@@ -1,0 +1,77 @@
+/*
+ * team.h - the library's side of a team (zr_team in zrcube.h): members
+ * that share one computation and exchange their parts of it.
+ *
+ * Work is dealt to members by a rule every member evaluates alike (a
+ * fixed order of items, member r taking the chunks r, r + n, ...), so no
+ * member has to be told what to do; after the work, one exchange gives
+ * every member every part, and each member combines them in the same
+ * order.  Nothing here talks to a network: the caller's allgather does.
+ */
+#ifndef ZR_CORE_TEAM_H
+#define ZR_CORE_TEAM_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "zrcube.h"
+
+/* The members' parts after an exchange: member r's part is
+   bytes[offset[r] .. offset[r + 1]). */
+typedef struct zr__team_parts {
+  char *bytes;
+  size_t *offset; /* size + 1 entries */
+} zr__team_parts;
+
+/* Members and this member's rank; NULL is a team of one. */
+static inline int zr__team_size(const zr_team *t) {
+  return t != NULL && t->size > 1 ? t->size : 1;
+}
+static inline int zr__team_rank(const zr_team *t) {
+  return zr__team_size(t) > 1 ? t->rank : 0;
+}
+
+/* Whether chunk (of a fixed sequence of chunks) is this member's: the
+   chunks are dealt round robin. */
+static inline int zr__team_mine(const zr_team *t, size_t chunk) {
+  return (int)(chunk % (size_t)zr__team_size(t)) == zr__team_rank(t);
+}
+
+/*
+ * Collective.  Every member passes its status and its part (bytes long);
+ * every member gets the same answer: ZR_OK with every part in *out (free
+ * with zr__team_parts_free) when all succeeded, else the lowest failure
+ * code among the members, so all take the same branch.  Two calls of
+ * allgather: the members' statuses and sizes (16 bytes each), then the
+ * parts.  A team of one copies its part.
+ */
+zr_status zr__team_exchange(const zr_team *t, zr_status local,
+                            const void *mine, size_t bytes,
+                            zr__team_parts *out);
+void zr__team_parts_free(zr__team_parts *parts);
+
+/* The status all members agree on (a status-only exchange). */
+zr_status zr__team_agree(const zr_team *t, zr_status local);
+
+/* A growable byte buffer for packing a part. */
+typedef struct zr__pack {
+  char *bytes;
+  size_t n, cap;
+  int nomem;
+} zr__pack;
+
+void zr__pack_put(zr__pack *p, const void *bytes, size_t n);
+void zr__pack_free(zr__pack *p);
+
+/* Reads n bytes at *at from a part ending at end; 0 when it runs out. */
+static inline int zr__unpack(const char **at, const char *end, void *dst,
+                             size_t n) {
+  if ((size_t)(end - *at) < n)
+    return 0;
+  memcpy(dst, *at, n);
+  *at += n;
+  return 1;
+}
+
+#endif /* ZR_CORE_TEAM_H */

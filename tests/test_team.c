@@ -1,0 +1,371 @@
+/*
+ * test_team.c - teams (zr_team, lib/core/team.c): members that share a
+ * computation and exchange its parts.  The members here are threads of
+ * this process with an allgather over shared memory, so the library's
+ * side of a team is tested without MPI (lib/par's MPI allgather is
+ * tested end to end by test_rad_cli.sh, test_gi_cli.sh and
+ * test_mpi_example.sh): the exchange protocol (small parts with the
+ * headers, large parts after, failures agreed on every member), and a
+ * radiosity solve and an irradiance cache pretrace shared by 3 members
+ * giving the same bytes as one process alone.
+ */
+#include <pthread.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include <cmocka.h>
+
+#include "core/team.h"
+#include "zrcube.h"
+
+#define MEMBERS 3
+
+/* An allgather among threads: each writes its part into the shared
+   buffer at its offset, all wait, each copies everything out, all wait
+   again before the buffer is reused. */
+typedef struct hall {
+  pthread_barrier_t barrier;
+  char *shared;
+  size_t cap;
+  pthread_mutex_t lock;
+  int calls[MEMBERS];
+} hall;
+
+typedef struct member {
+  hall *hall;
+  int rank;
+  zr_team team;
+} member;
+
+static zr_status thread_allgather(void *user, const void *mine, void *all,
+                                  const size_t *counts) {
+  member *m = user;
+  hall *h = m->hall;
+  size_t total = 0, at = 0;
+  for (int r = 0; r < MEMBERS; r++) {
+    if (r == m->rank)
+      at = total;
+    total += counts[r];
+  }
+  if (m->rank == 0) {
+    pthread_mutex_lock(&h->lock);
+    if (total > h->cap) {
+      free(h->shared);
+      h->shared = malloc(total);
+      h->cap = total;
+    }
+    pthread_mutex_unlock(&h->lock);
+  }
+  pthread_barrier_wait(&h->barrier);
+  if (counts[m->rank] > 0)
+    memcpy(h->shared + at, mine, counts[m->rank]);
+  pthread_barrier_wait(&h->barrier);
+  if (total > 0)
+    memcpy(all, h->shared, total);
+  h->calls[m->rank]++;
+  pthread_barrier_wait(&h->barrier);
+  return ZR_OK;
+}
+
+static void hall_init(hall *h, member *ms) {
+  memset(h, 0, sizeof *h);
+  pthread_barrier_init(&h->barrier, NULL, MEMBERS);
+  pthread_mutex_init(&h->lock, NULL);
+  for (int r = 0; r < MEMBERS; r++) {
+    ms[r].hall = h;
+    ms[r].rank = r;
+    ms[r].team.rank = r;
+    ms[r].team.size = MEMBERS;
+    ms[r].team.allgather = thread_allgather;
+    ms[r].team.user = &ms[r];
+  }
+}
+
+static void hall_free(hall *h) {
+  pthread_barrier_destroy(&h->barrier);
+  pthread_mutex_destroy(&h->lock);
+  free(h->shared);
+}
+
+static void run_members(member *ms, void *(*fn)(void *)) {
+  pthread_t tid[MEMBERS];
+  for (int r = 0; r < MEMBERS; r++)
+    assert_int_equal(pthread_create(&tid[r], NULL, fn, &ms[r]), 0);
+  for (int r = 0; r < MEMBERS; r++)
+    pthread_join(tid[r], NULL);
+}
+
+/* ---- the exchange protocol ---- */
+
+typedef struct exchange_result {
+  zr_status small, large, failed, agreed;
+  int small_ok, large_ok;
+} exchange_result;
+
+static exchange_result results[MEMBERS];
+
+/* Member r's part of size n: bytes (r * 31 + i) mod 251. */
+static char *part(int r, size_t n) {
+  char *p = malloc(n ? n : 1);
+  for (size_t i = 0; i < n; i++)
+    p[i] = (char)((r * 31 + i) % 251);
+  return p;
+}
+
+static int parts_ok(const zr__team_parts *parts, size_t (*size)(int)) {
+  for (int r = 0; r < MEMBERS; r++) {
+    size_t n = size(r);
+    if (parts->offset[r + 1] - parts->offset[r] != n)
+      return 0;
+    char *want = part(r, n);
+    int same = memcmp(parts->bytes + parts->offset[r], want, n) == 0;
+    free(want);
+    if (!same)
+      return 0;
+  }
+  return 1;
+}
+
+/* Sizes: small parts travel with the headers; member 1 sends nothing. */
+static size_t small_size(int r) { return r == 1 ? 0 : 100 + 7 * (size_t)r; }
+/* One part over the inline room (4 KB) sends all by the long way. */
+static size_t large_size(int r) { return r == 2 ? 100000 : 50; }
+
+static void *exchange_member(void *p) {
+  member *m = p;
+  exchange_result *res = &results[m->rank];
+  zr__team_parts parts;
+  char *mine = part(m->rank, small_size(m->rank));
+  res->small = zr__team_exchange(&m->team, ZR_OK, mine,
+                                 small_size(m->rank), &parts);
+  res->small_ok = res->small == ZR_OK && parts_ok(&parts, small_size);
+  zr__team_parts_free(&parts);
+  free(mine);
+  mine = part(m->rank, large_size(m->rank));
+  res->large = zr__team_exchange(&m->team, ZR_OK, mine,
+                                 large_size(m->rank), &parts);
+  res->large_ok = res->large == ZR_OK && parts_ok(&parts, large_size);
+  zr__team_parts_free(&parts);
+  free(mine);
+  /* Member 1 fails with ZR_EIO, member 2 with ZR_ENOMEM: every member
+     gets the lowest code, ZR_EIO (-2 < -1). */
+  zr_status local = m->rank == 1 ? ZR_EIO : m->rank == 2 ? ZR_ENOMEM : ZR_OK;
+  res->failed = zr__team_exchange(&m->team, local, "x", 1, &parts);
+  zr__team_parts_free(&parts);
+  res->agreed = zr__team_agree(&m->team, m->rank == 2 ? ZR_ELIMIT : ZR_OK);
+  return NULL;
+}
+
+static void test_team_exchange(void **state) {
+  (void)state;
+  hall h;
+  member ms[MEMBERS];
+  hall_init(&h, ms);
+  run_members(ms, exchange_member);
+  for (int r = 0; r < MEMBERS; r++) {
+    assert_int_equal(results[r].small, ZR_OK);
+    assert_true(results[r].small_ok);
+    assert_int_equal(results[r].large, ZR_OK);
+    assert_true(results[r].large_ok);
+    assert_int_equal(results[r].failed, ZR_EIO);
+    assert_int_equal(results[r].agreed, ZR_ELIMIT);
+  }
+  /* Small parts: one allgather; large: headers, room, parts; a failed
+     exchange stops after the headers; an agreement is one. */
+  for (int r = 0; r < MEMBERS; r++)
+    assert_int_equal(h.calls[r], 1 + 3 + 1 + 1);
+  hall_free(&h);
+}
+
+/* A team of one (or none) copies its part. */
+static void test_team_of_one(void **state) {
+  (void)state;
+  zr__team_parts parts;
+  assert_int_equal(zr__team_exchange(NULL, ZR_OK, "abc", 3, &parts), ZR_OK);
+  assert_int_equal(parts.offset[0], 0);
+  assert_int_equal(parts.offset[1], 3);
+  assert_memory_equal(parts.bytes, "abc", 3);
+  zr__team_parts_free(&parts);
+  assert_int_equal(zr__team_exchange(NULL, ZR_EIO, "abc", 3, &parts),
+                   ZR_EIO);
+  assert_null(parts.bytes);
+  assert_int_equal(zr__team_agree(NULL, ZR_EINVAL), ZR_EINVAL);
+  zr_team one = {0, 1, NULL, NULL};
+  assert_int_equal(zr__team_size(&one), 1);
+  assert_true(zr__team_mine(&one, 5));
+}
+
+/* ---- a radiosity solve and a cache pretrace shared by the members ---- */
+
+/* A room lit by an emitting panel, with a box in it (planar surfaces,
+   shadows: refinement, visibility and several gathering sweeps). */
+static const char *const room_text =
+    "#declare W = texture { pigment { rgb 0.7 } finish { diffuse 1 "
+    "ambient 0 } }\n"
+    "box { <-1, 0, -1>, <1, 2, 1> texture { W } }\n"
+    "box { <-0.3, 1.98, -0.3>, <0.3, 1.999, 0.3> texture { pigment { "
+    "rgb 1 } finish { emission 8 diffuse 0 ambient 0 } } }\n"
+    "box { <-0.2, 0, -0.2>, <0.3, 0.6, 0.3> texture { pigment { rgb "
+    "<0.8, 0.2, 0.1> } finish { diffuse 1 ambient 0 } } }\n"
+    "camera { location <0, 1, -0.9> look_at <0, 1, 0> }\n";
+
+/* A sphere under a sky (the irradiance cache). */
+static const char *const sky_text =
+    "global_settings { radiosity { } }\n"
+    "camera { location <0, 1.2, -3> look_at <0, 0.4, 0> }\n"
+    "sky_sphere { pigment { rgb <0.6, 0.7, 1> } }\n"
+    "sphere { <0, 0.5, 0>, 0.5 pigment { rgb 0.8 } finish { diffuse 0.8 "
+    "} }\n"
+    "plane { y, 0 pigment { rgb 0.6 } }\n";
+
+static const zr_scene *shared_scene;
+static char saved[MEMBERS + 1][64];
+static zr_status solved[MEMBERS + 1];
+
+static void solve_and_save(const zr_team *team, int slot) {
+  zr_context *ctx = NULL;
+  zr_radiosity *rad = NULL;
+  zr_status s = zr_context_new(&ctx);
+  zr_radiosity_params p;
+  zr_radiosity_params_init(&p, shared_scene);
+  p.bf_eps = 1e-3;
+  p.threads = slot == 1 ? 2 : 1; /* threads inside a member too */
+  p.team = team;
+  if (s == ZR_OK)
+    s = zr_radiosity_solve(ctx, shared_scene, &p, &rad);
+  if (s == ZR_OK)
+    s = zr_radiosity_save(ctx, rad, saved[slot]);
+  solved[slot] = s;
+  zr_radiosity_free(rad);
+  zr_context_free(ctx);
+}
+
+static void *solve_member(void *p) {
+  member *m = p;
+  solve_and_save(&m->team, m->rank);
+  return NULL;
+}
+
+static void assert_same_file(const char *a, const char *b) {
+  FILE *fa = fopen(a, "rb"), *fb = fopen(b, "rb");
+  assert_non_null(fa);
+  assert_non_null(fb);
+  size_t n = 0;
+  int ca, cb;
+  do {
+    ca = fgetc(fa);
+    cb = fgetc(fb);
+    assert_int_equal(ca, cb);
+    n++;
+  } while (ca != EOF);
+  assert_true(n > 100);
+  fclose(fa);
+  fclose(fb);
+}
+
+static void test_team_radiosity(void **state) {
+  (void)state;
+  zr_context *ctx = NULL;
+  zr_scene *scene = NULL;
+  assert_int_equal(zr_context_new(&ctx), ZR_OK);
+  assert_int_equal(zr_scene_parse_string(ctx, "<room>", room_text,
+                                         strlen(room_text), &scene),
+                   ZR_OK);
+  shared_scene = scene;
+  for (int r = 0; r <= MEMBERS; r++)
+    snprintf(saved[r], sizeof saved[r], "test_team_%d_%ld.zrrad", r,
+             (long)getpid());
+  solve_and_save(NULL, MEMBERS); /* alone */
+  assert_int_equal(solved[MEMBERS], ZR_OK);
+  hall h;
+  member ms[MEMBERS];
+  hall_init(&h, ms);
+  run_members(ms, solve_member);
+  for (int r = 0; r < MEMBERS; r++) {
+    assert_int_equal(solved[r], ZR_OK);
+    assert_same_file(saved[MEMBERS], saved[r]);
+    assert_true(h.calls[r] > 3); /* they did exchange */
+  }
+  for (int r = 0; r <= MEMBERS; r++)
+    remove(saved[r]);
+  hall_free(&h);
+  zr_scene_free(scene);
+  zr_context_free(ctx);
+}
+
+static float *pictures[MEMBERS + 1];
+
+static void pretrace_and_render(const zr_team *team, int slot) {
+  zr_context *ctx = NULL;
+  zr_gi_cache *cache = NULL;
+  zr_status s = zr_context_new(&ctx);
+  zr_gi_params gp;
+  zr_gi_params_init(&gp, shared_scene);
+  gp.threads = 1;
+  gp.team = team;
+  zr_render_params rp;
+  zr_render_params_init(&rp);
+  rp.width = 40;
+  rp.height = 30;
+  if (s == ZR_OK)
+    s = zr_gi_cache_new(ctx, shared_scene, &gp, &cache);
+  if (s == ZR_OK)
+    s = zr_gi_cache_pretrace(cache, &rp);
+  rp.gi_cache = cache;
+  pictures[slot] = calloc((size_t)rp.width * rp.height * 3, sizeof(float));
+  if (s == ZR_OK)
+    s = zr_render_image(shared_scene, &rp, pictures[slot], NULL);
+  solved[slot] = s;
+  zr_gi_cache_free(cache);
+  zr_context_free(ctx);
+}
+
+static void *pretrace_member(void *p) {
+  member *m = p;
+  pretrace_and_render(&m->team, m->rank);
+  return NULL;
+}
+
+static void test_team_cache(void **state) {
+  (void)state;
+  zr_context *ctx = NULL;
+  zr_scene *scene = NULL;
+  assert_int_equal(zr_context_new(&ctx), ZR_OK);
+  assert_int_equal(zr_scene_parse_string(ctx, "<sky>", sky_text,
+                                         strlen(sky_text), &scene),
+                   ZR_OK);
+  shared_scene = scene;
+  pretrace_and_render(NULL, MEMBERS);
+  assert_int_equal(solved[MEMBERS], ZR_OK);
+  hall h;
+  member ms[MEMBERS];
+  hall_init(&h, ms);
+  run_members(ms, pretrace_member);
+  for (int r = 0; r < MEMBERS; r++) {
+    assert_int_equal(solved[r], ZR_OK);
+    assert_memory_equal(pictures[r], pictures[MEMBERS],
+                        40 * 30 * 3 * sizeof(float));
+    assert_true(h.calls[r] > 3);
+  }
+  for (int r = 0; r <= MEMBERS; r++)
+    free(pictures[r]);
+  hall_free(&h);
+  zr_scene_free(scene);
+  zr_context_free(ctx);
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test(test_team_exchange),
+      cmocka_unit_test(test_team_of_one),
+      cmocka_unit_test(test_team_radiosity),
+      cmocka_unit_test(test_team_cache),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}
