@@ -133,3 +133,11 @@ EXTRA_DIST += tests/test_iopolicy.sh
 # little memory, corrupt files, 10^6 objects.
 TESTS += tests/test_faults.sh
 EXTRA_DIST += tests/test_faults.sh
+# The public API's contracts (issue 14): threads in zr_render_image,
+# progress and cancel in every phase, parameter sizes, diagnostic spans;
+# linked with the shared library, so it sees exported symbols only.
+check_PROGRAMS += tests/test_api
+TESTS += tests/test_api
+tests_test_api_SOURCES = tests/test_api.c
+tests_test_api_CPPFLAGS = $(TEST_CPPFLAGS)
+tests_test_api_LDADD = $(TEST_LDADD)

@@ -3,6 +3,7 @@ lib_libzrcube_la_SOURCES += \
 	lib/core/budget.c lib/core/budget.h \
 	lib/core/context.c lib/core/context.h \
 	lib/core/iopolicy.c lib/core/iopolicy.h \
+	lib/core/parallel.c lib/core/parallel.h \
 	lib/core/strbuf.c lib/core/strbuf.h \
 	lib/core/transform.c lib/core/transform.h \
 	lib/core/vec.h

@@ -470,6 +470,10 @@ typedef struct zr_sdl_autoend {
   int last;     /* the last token's kind */
 } zr_sdl_autoend;
 
+/* How often the parse reports progress and looks for a cancel: every
+   this many tokens (a power of two). */
+#define ZR_SDL_PROGRESS_TOKENS 4096
+
 typedef struct zr_sdl_parser {
   zr_context *ctx;
   zr_scene *scene;
@@ -509,6 +513,8 @@ typedef struct zr_sdl_parser {
   /* Steps taken against the context's work budget: directives run,
      macro calls, loop passes (zr__sdl_spend). */
   unsigned long long work;
+  /* Tokens delivered so far, for progress (zr__sdl_next). */
+  unsigned long long tokens_read;
   /* POV-Ray radiosity items of the current block that mean nothing
      here, one bit each (lib/sdl/build_radiosity.c); object radiosity
      keywords already warned about, so a scene gets one warning. */
