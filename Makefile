@@ -99,3 +99,9 @@ distclean:
 	rm -rf $(BUILD) $(ASAN_BUILD) autom4te.cache build-aux aclocal.m4 \
 	  configure config.h.in config.h.in~ Makefile.in m4/libtool.m4 \
 	  m4/lt*.m4 demo.png
+
+# The library's ABI against the previous release tag (abidiff; see
+# tests/abi-check.sh).
+.PHONY: abi-check
+abi-check: build
+	$(MAKE) -C $(BUILD) abi-check

@@ -141,3 +141,8 @@ TESTS += tests/test_api
 tests_test_api_SOURCES = tests/test_api.c
 tests_test_api_CPPFLAGS = $(TEST_CPPFLAGS)
 tests_test_api_LDADD = $(TEST_LDADD)
+# The exported symbols are lib/libzrcube.sym's list and zrcube.h's, and
+# every public function is named in a section-3 page (issue 14).
+TESTS += tests/test_symbols.sh tests/test_manpages.sh
+EXTRA_DIST += tests/test_symbols.sh tests/test_manpages.sh \
+	tests/public_names.sh lib/libzrcube.sym

@@ -23,7 +23,12 @@
 #define _GNU_SOURCE /* sched_getaffinity, CPU_COUNT */
 #include "par/par.h"
 
+#include "config.h"
+#ifdef ZR_HAVE_MPI
 #include <mpi.h>
+#else
+#include "par/nompi.h" /* configure --without-mpi: one process */
+#endif
 #include <sched.h>
 #include <stdio.h>
 #include <stdint.h>

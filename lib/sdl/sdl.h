@@ -27,6 +27,7 @@
 #ifndef ZR_SDL_SDL_H
 #define ZR_SDL_SDL_H
 
+#include <setjmp.h>
 #include <stdbool.h>
 #include <stddef.h>
 
@@ -366,7 +367,15 @@ typedef struct zr_sdl_lexer {
   bool out_of_memory;
   zr_sdl_loc error_at;
   char error[160];
+  /* Where a fatal error of the scanner itself returns to (its own
+     allocations failing): flex would print and exit(), and a library
+     never does (zr__sdl_lex_fatal). */
+  jmp_buf fatal;
 } zr_sdl_lexer;
+
+/* The scanner's YY_FATAL_ERROR (grammar/pov.l): marks the lexer failed
+   with msg and returns to its jmp_buf, never to the scanner. */
+_Noreturn void zr__sdl_lex_fatal(void *scanner, const char *msg);
 
 /* Called by the scanner's actions (grammar/pov.l). */
 int zr__sdl_lex_input(zr_sdl_lexer *lx, char *buf, int max);
