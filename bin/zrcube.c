@@ -148,7 +148,9 @@ static void show_progress(progress_state *p, int phase, uint64_t done,
                      "%s", phase_names[phase], (unsigned long long)done,
                      (unsigned long long)total, phase_units[phase], percent,
                      duration(elapsed, a, sizeof a));
-    if (done > 0 && !finished && n > 0 && (size_t)n < sizeof line)
+    /* What is left, once a second of work says how fast it goes. */
+    if (done > 0 && !finished && elapsed >= 1.0 && n > 0 &&
+        (size_t)n < sizeof line)
       snprintf(line + n, sizeof line - (size_t)n, ", about %s left",
                duration(elapsed * (double)(total - done) / (double)done, b,
                         sizeof b));

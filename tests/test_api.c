@@ -408,6 +408,40 @@ static void test_api_diag_offset(void **state) {
   zr_context_free(ctx);
 }
 
+/* zr_render_image says why it refuses through params.context, and
+   that it was cancelled. */
+static void test_api_render_diagnostics(void **state) {
+  (void)state;
+  zr_context *ctx = NULL;
+  assert_int_equal(zr_context_new(&ctx), ZR_OK);
+  heard h = {0};
+  zr_context_set_diag(ctx, listen, &h);
+  zr_scene *scene = parse(ctx, SCENE);
+  float rgb[3];
+  zr_render_params p;
+  zr_render_params_init(&p);
+  p.context = ctx;
+  p.width = 0;
+  assert_int_equal(zr_render_image(scene, &p, rgb, NULL), ZR_EINVAL);
+  assert_int_equal(h.errors, 1);
+  assert_string_equal(h.message, "render: the image size must be at least "
+                                 "1 x 1 and at most 2^32 pixels");
+  p.width = p.height = 1;
+  zr_context_cancel(ctx, 1);
+  assert_int_equal(zr_render_image(scene, &p, rgb, NULL), ZR_ECANCELLED);
+  zr_context_cancel(ctx, 0);
+  p.threads = 2;
+  seen s = {0};
+  s.phase = ZR_PHASE_RENDER;
+  s.cancel_at_first = 1;
+  zr_context_set_progress(ctx, watch, &s);
+  assert_int_equal(zr_render_image(scene, &p, rgb, NULL), ZR_ECANCELLED);
+  assert_int_equal(h.status, ZR_ECANCELLED);
+  assert_string_equal(h.message, "render: cancelled");
+  zr_scene_free(scene);
+  zr_context_free(ctx);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_api_threads_same_bytes),
@@ -418,6 +452,7 @@ int main(void) {
       cmocka_unit_test(test_api_pretrace_progress_and_cancel),
       cmocka_unit_test(test_api_params_size),
       cmocka_unit_test(test_api_diag_offset),
+      cmocka_unit_test(test_api_render_diagnostics),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

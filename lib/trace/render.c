@@ -306,25 +306,34 @@ static zr_rgb supersample(const pixel_job *job, const zr_render_params *p,
   return zr_rgb_scale(sum, 1.0 / (n * n + 1));
 }
 
+/* Whether the parameters can render scene: ZR_OK, or the status with
+   why in *what. */
 static zr_status check_params(const zr_scene *scene,
-                              const zr_render_params *p) {
-  if (!scene || !p)
-    return ZR_EINVAL;
-  if (p->width <= 0 || p->height <= 0 ||
-      (uint64_t)p->width * (uint64_t)p->height > UINT32_MAX)
-    return ZR_EINVAL;
-  if (p->antialias && (p->aa_depth < 1 || p->aa_depth > 9 ||
-                       !(p->aa_threshold >= 0.0)))
-    return ZR_EINVAL;
-  if (!scene->bvh && scene->n_primitives > 0)
-    return ZR_ESCENE; /* zr__scene_finish() was never called */
+                              const zr_render_params *p, const char **what) {
+  *what = NULL;
+  if (!scene)
+    *what = "no scene";
+  else if (p->width <= 0 || p->height <= 0 ||
+           (uint64_t)p->width * (uint64_t)p->height > UINT32_MAX)
+    *what = "the image size must be at least 1 x 1 and at most 2^32 pixels";
+  else if (p->antialias && (p->aa_depth < 1 || p->aa_depth > 9 ||
+                            !(p->aa_threshold >= 0.0)))
+    *what = "antialiasing needs a depth of 1 to 9 and a threshold >= 0";
+  else if (p->threads < 0)
+    *what = "threads must be >= 0";
   /* A solution holds object addresses of the scene it was solved for. */
-  if (p->radiosity && p->radiosity->scene != scene)
+  else if (p->radiosity && p->radiosity->scene != scene)
+    *what = "the radiosity solution was solved for another scene";
+  else if (p->radiosity_only && !p->radiosity)
+    *what = "radiosity_only needs a radiosity solution";
+  else if (p->gi_cache && !zr__gi_indirect_for(p->gi_cache, scene))
+    *what = "the irradiance cache was made for another scene";
+  if (*what)
     return ZR_EINVAL;
-  if (p->radiosity_only && !p->radiosity)
-    return ZR_EINVAL;
-  if (p->gi_cache && !zr__gi_indirect_for(p->gi_cache, scene))
-    return ZR_EINVAL;
+  if (!scene->bvh && scene->n_primitives > 0) {
+    *what = "the scene was not finished"; /* zr__scene_finish() */
+    return ZR_ESCENE;
+  }
   return ZR_OK;
 }
 
@@ -333,17 +342,23 @@ static zr_status check_params(const zr_scene *scene,
    added after this release. */
 #define RENDER_PARAMS_MIN_SIZE sizeof(zr_render_params)
 
-/* The caller's parameters, taken into p and checked. */
+/* The caller's parameters, taken into p and checked; report: say why
+   not through p->context (zr_render_pixels runs on the caller's threads,
+   several at once, so it only returns the status). */
 static zr_status take_params(const zr_scene *scene,
                              const zr_render_params *params,
-                             zr_render_params *p) {
+                             zr_render_params *p, bool report) {
   zr_render_params_init(p);
-  zr_status s = zr__params_take(p, sizeof *p, params, RENDER_PARAMS_MIN_SIZE);
-  if (s != ZR_OK)
-    return s;
-  if (p->threads < 0)
+  if (zr__params_take(p, sizeof *p, params, RENDER_PARAMS_MIN_SIZE) !=
+      ZR_OK) {
+    /* No context to tell (it is a member): the status says it. */
     return ZR_EINVAL;
-  return check_params(scene, p);
+  }
+  const char *what;
+  zr_status s = check_params(scene, p, &what);
+  if (s != ZR_OK && report)
+    zr__diag(p->context, ZR_DIAG_ERROR, s, NULL, "render: %s", what);
+  return s;
 }
 
 /* zr_render_pixels() on parameters checked and taken already. */
@@ -415,7 +430,7 @@ ZR_API zr_status zr_render_pixels(const zr_scene *scene,
                                   const float *centres, float *rgb,
                                   zr_render_stats *stats) {
   zr_render_params p;
-  zr_status s = take_params(scene, params, &p);
+  zr_status s = take_params(scene, params, &p, false);
   if (s != ZR_OK)
     return s;
   if (zr__cancelled(p.context))
@@ -515,7 +530,7 @@ ZR_API zr_status zr_render_image(const zr_scene *scene,
                                  const zr_render_params *params, float *rgb,
                                  zr_render_stats *stats) {
   zr_render_params p;
-  zr_status s = take_params(scene, params, &p);
+  zr_status s = take_params(scene, params, &p, true);
   if (s != ZR_OK)
     return s;
   if (!rgb)
@@ -558,6 +573,8 @@ ZR_API zr_status zr_render_image(const zr_scene *scene,
   if (s == ZR_OK)
     s = zr__progress(p.context, ZR_PHASE_RENDER, job.rows_total,
                      job.rows_total);
+  if (s == ZR_ECANCELLED)
+    zr__diag(p.context, ZR_DIAG_ERROR, s, NULL, "render: cancelled");
   if (stats)
     for (int i = 0; i < threads; i++)
       zr_render_stats_add(stats, &slots[i].stats);
