@@ -3343,12 +3343,7 @@ interior_body:
     }
 | interior_body T_DISPERSION_SAMPLES expr  { $$ = $1; }
 | interior_body T_CAUSTICS expr
-    {
-      zr__sdl_warning(p, &@2, "'caustics' is not rendered yet: shadows "
-                              "through the object have no fake "
-                              "caustics");
-      $$ = $1;
-    }
+    { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->caustics)); $$ = $1; }
 | interior_body T_FADE_POWER expr
     { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->fade_power)); $$ = $1; }
 | interior_body T_FADE_COLOUR colour_value

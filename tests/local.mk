@@ -133,6 +133,11 @@ EXTRA_DIST += tests/test_iopolicy.sh
 # little memory, corrupt files, 10^6 objects.
 TESTS += tests/test_faults.sh
 EXTRA_DIST += tests/test_faults.sh
+
+# Simulated caustics against povray's measured law and picture.
+TESTS += tests/test_caustics.sh
+EXTRA_DIST += tests/test_caustics.sh tests/caustics_check.pov \
+	tests/caustics_bumps.pov
 # The public API's contracts (issue 14): threads in zr_render_image,
 # progress and cancel in every phase, parameter sizes, diagnostic spans;
 # linked with the shared library, so it sees exported symbols only.

@@ -360,6 +360,10 @@ typedef struct zr_interior {
      of 1000 and above; off while either is 0 (lib/trace/shade.c). */
   double fade_distance, fade_power;
   zr_rgb fade_colour; /* default black */
+  /* Simulated caustics' power ("Simulated Caustics"; 0: none): light
+     through the surface gains by |cos|^(45 power), the cosine of the
+     shadow ray and the (perturbed) normal (lib/trace/shade.c). */
+  double caustics;
   /* media { } inside (lib/trace/media.c); they add where they overlap. */
   const struct zr_medium *const *media;
   size_t n_media;

@@ -164,6 +164,34 @@ static zr_rgb shadow_fade(const shadow_walk *w) {
   return light;
 }
 
+/*
+ * Simulated caustics ("Simulated Caustics" in the manual: a shadow gets
+ * brighter where the light ray and the surface normal are nearly
+ * parallel, tighter as power grows).  The law is measured, not given:
+ * povray 3.7 multiplies the light through each surface crossing by
+ * 1 + |cos|^(45 power), cos between the shadow ray and the normal
+ * (perturbed by the texture's normal { }), independent of ior and of
+ * filter (bench/conform/caustics_probe.sh prints the ratios: 2.000 at
+ * normal incidence for every power, 1.2467 at 20 degrees for power
+ * 0.5, 1.0609 for power 1, squared through a slab's two faces).
+ */
+static double fake_caustics(const zr_ray *ray, const zr_hit *hit,
+                            zr_vec3 p, double power) {
+  zr_hit hs[ZR_MAX_CROSSINGS];
+  double eps = 1e-6 * (1.0 + fabs(hit->t));
+  int n = zr__intersect(hit->object, ray, hit->t - eps, hit->t + eps, hs);
+  if (n <= 0)
+    return 1.0;
+  zr_vec3 normal = hs[0].normal;
+  if (zr_v3_dot(normal, ray->dir) > 0.0)
+    normal = zr_v3_neg(normal);
+  const zr_texture *tx = hit->object->texture;
+  if (tx && !tx->map && !tx->over && tx->normal)
+    normal = zr__normal_perturb(tx->normal, p, normal);
+  double c = fabs(zr_v3_dot(zr_v3_norm(normal), zr_v3_norm(ray->dir)));
+  return 1.0 + pow(c, 45.0 * power);
+}
+
 static bool shadow_visit(const zr_hit *hit, void *user) {
   shadow_walk *w = user;
   const zr_object *o = hit->object;
@@ -205,6 +233,11 @@ static bool shadow_visit(const zr_hit *hit, void *user) {
     zr_colour c = zr__pigment_at(tx->pigment, p);
     w->light = zr_rgb_mul(w->light, see_through(c));
   }
+  if (solid->interior && solid->interior->caustics > 0.0 &&
+      rgb_max(w->light) > 0.0)
+    w->light = zr_rgb_scale(w->light,
+                            fake_caustics(w->ray, hit, p,
+                                          solid->interior->caustics));
   return rgb_max(w->light) > 0.0;
 }
 
