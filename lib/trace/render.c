@@ -361,8 +361,8 @@ static zr_status take_params(const zr_scene *scene,
   return s;
 }
 
-/* zr_render_pixels() on parameters checked and taken already. */
-/* camera_media: zr__camera_media() of the scene, or NULL to find it
+/* zr_render_pixels() on parameters checked and taken already.
+   camera_media: zr__camera_media() of the scene, or NULL to find it
    here (it looks at every primitive, so a loop over rows finds it
    once). */
 static zr_status render_pixels(const zr_scene *scene,
@@ -422,7 +422,6 @@ static zr_status render_pixels(const zr_scene *scene,
     zr_render_stats_add(stats, &local);
   return ZR_OK;
 }
-
 
 ZR_API zr_status zr_render_pixels(const zr_scene *scene,
                                   const zr_render_params *params,
