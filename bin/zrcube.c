@@ -33,6 +33,7 @@
 
 #include <errno.h>
 #include <fcntl.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -45,6 +46,38 @@
 #include "zrcube.h"
 
 enum { EXIT_SCENE = 1, EXIT_USAGE = 2 };
+
+/*
+ * Ctrl-C and SIGTERM in a run without mpirun: the handler cancels the
+ * context (zr_context_cancel is safe in a handler), the phase running
+ * stops within a row or a sweep, everything is freed and nothing is
+ * written, and main raises the signal again so the exit status still
+ * says what ended the run.  Under mpirun the launcher owns the signals.
+ */
+static zr_context *volatile signal_ctx;
+static volatile sig_atomic_t signal_caught;
+
+static void on_signal(int sig) {
+  signal_caught = sig;
+  if (signal_ctx)
+    zr_context_cancel(signal_ctx, 1);
+}
+
+static void catch_signals(zr_context *ctx) {
+  signal_ctx = ctx;
+  struct sigaction sa;
+  memset(&sa, 0, sizeof sa);
+  sa.sa_handler = on_signal;
+  sigemptyset(&sa.sa_mask);
+  int sigs[] = {SIGINT, SIGTERM};
+  for (int i = 0; i < 2; i++) {
+    struct sigaction old;
+    /* A signal the shell set to be ignored (a job started with &) stays
+       ignored, as it would without the handler. */
+    if (sigaction(sigs[i], NULL, &old) == 0 && old.sa_handler != SIG_IGN)
+      sigaction(sigs[i], &sa, NULL);
+  }
+}
 
 /*
  * The progress line (rank 0): on a terminal one line that each phase
@@ -441,6 +474,8 @@ static zr_status make_context(run *r) {
     s = zr_context_add_include_path(r->ctx, ZR_POVRAY_INCLUDE_DIR);
   if (s == ZR_OK)
     s = set_io_restrictions(r);
+  if (s == ZR_OK && !zr__par_uses_mpi(r->par))
+    catch_signals(r->ctx);
   return s;
 }
 
@@ -794,10 +829,17 @@ int main(int argc, char **argv) {
   zr_gi_cache_free(r.gi);
   zr_scene_free(r.scene);
   zr__bundle_free(&r.bundle);
+  signal_ctx = NULL;
   zr_context_free(r.ctx);
   free(r.output_path);
   zr__cli_free(&r.opts);
   clear_progress_line(&r.progress);
   zr__par_finalize(r.par);
+  if (signal_caught) {
+    /* Cancelled by a signal: end as the signal would have. */
+    int sig = signal_caught;
+    signal(sig, SIG_DFL);
+    raise(sig);
+  }
   return status;
 }
