@@ -262,17 +262,20 @@ ZR_API const char *zr_context_last_error(const zr_context *ctx);
  * context's progress callback how far it is, and stops with
  * ZR_ECANCELLED, freeing what it made, when the callback returns
  * non-zero or zr_context_cancel() was called.  Phases and their units:
- *   ZR_PHASE_PARSE      tokens read; total 0 (not known in advance);
- *   ZR_PHASE_RADIOSITY  steps of the solve: link-and-solve rounds and
- *                       the sweeps of each; total is the most it takes;
+ *   ZR_PHASE_PARSE      tokens read and directive steps taken; total 0
+ *                       (not known in advance);
+ *   ZR_PHASE_RADIOSITY  refine-and-solve rounds done of the most there
+ *                       may be (the solve may end sooner), told again
+ *                       at every sweep (or 64th shot) of each round;
  *   ZR_PHASE_PRETRACE   pixels of the irradiance cache's passes done of
  *                       total;
  *   ZR_PHASE_RENDER     rows rendered of total (both passes when
  *                       antialiasing is on).
  * The callback is called at most once per row, per pretrace batch, per
- * solver sweep and per 4096 tokens, from the calling thread or, with
- * threads, from any of the call's threads but never two at once; it
- * must not call back into the library on the same objects.  A call
+ * solver sweep and per 4096 tokens or steps, from the calling thread
+ * or, with threads, from any of the call's threads but never two at
+ * once; it must not call back into the library on the same objects.  A
+ * call
  * cancelled this way returns within one row of each of its threads (the
  * render), one batch (the pretrace), one sweep (the solve) or 4096
  * tokens (the parse).
@@ -396,7 +399,8 @@ typedef struct zr_radiosity_params {
   int uniform;
   zr_rad_solver shooting; /* ZR_RAD_SHOOTING or ZR_RAD_GATHERING (0) */
   /* ZR_RAD_CRITERION_BF (default): Hanrahan's BF criterion, B_q F A_p
-     with the oracle factor.  ZR_RAD_CRITERION_ERROR: an error estimate: the light a link may misplace
+     with the oracle factor.  ZR_RAD_CRITERION_ERROR: an error
+     estimate: the light a link may misplace
      because its factor varies over the receiver (B_q dF A_p), its
      visibility is partial, or its source is uneven (per unit area);
      tighter per element, but many more links. */
