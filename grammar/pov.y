@@ -27,6 +27,7 @@
 
 %code requires {
 #include "sdl/sdl.h"
+#include "sdl/build_media.h"
 #include "sdl/build_pattern.h"
 #include "sdl/spline.h"
 }
@@ -191,6 +192,8 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
   zr_medium *medium;
   zr_sdl_spline *spline;
   zr_slope *slope;
+  zr_sdl_photons *photons;
+  zr_sdl_photon_args phargs;
   int token;
 }
 
@@ -719,6 +722,8 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %type <pigment> density
 %type <map> density_map density_blocks
 %type <token> photon_kw
+%type <photons> photon_items
+%type <phargs> photon_args
 %type <fog> fog_body
 %type <sky> sky_body
 %type <rainbow> rainbow_body
@@ -2178,9 +2183,9 @@ object_mod:
       TRY(zr__sdl_texture_done(p, $3));
       $$ = make_mod(ZR_SDL_MOD_INTERIOR_TEXTURE, $3);
     }
-/* zRcube has no photon mapping, and POV-Ray ignores an object's photons
-   block without global photons settings (which warn). */
-| T_PHOTONS '{' photon_items '}'  { $$ = make_mod(ZR_SDL_MOD_IGNORED, NULL); }
+/* photons { } (lib/sdl/build_media.c): POV-Ray ignores an object's
+   block when global_settings has none. */
+| T_PHOTONS '{' photon_items '}'  { $$ = make_mod(ZR_SDL_MOD_PHOTONS, $3); }
 | T_OPEN               { $$ = make_mod(ZR_SDL_MOD_OPEN, NULL); }
 | T_HOLLOW             { $$ = make_mod(ZR_SDL_MOD_HOLLOW, NULL); }
 | T_HOLLOW expr
@@ -3439,20 +3444,40 @@ density_blocks:
 | density_blocks ','   { $$ = $1; }
 ;
 
-/* ---- photons blocks: read, not simulated (lib/sdl/build_media.c) ---- */
+/* ---- photons blocks (lib/sdl/build_media.c, lib/trace/photons.c) ---- */
 
 /* An object's or a light's photons { }, and global_settings' one. */
 photon_items:
-  %empty
+  %empty               { TRY($$ = zr__sdl_photons_new(p)); }
 | photon_items photon_kw
+    { TRY(zr__sdl_photons_item(p, $1, $2, NULL, &@2)); $$ = $1; }
 | photon_items photon_kw photon_args
+    { TRY(zr__sdl_photons_item(p, $1, $2, &$3, &@2)); $$ = $1; }
+| photon_items photon_kw ',' photon_args
+    {
+      $4.skip_first = true;
+      TRY(zr__sdl_photons_item(p, $1, $2, &$4, &@2));
+      $$ = $1;
+    }
 | photon_items T_LOAD_FILE str_expr
+    { TRY(zr__sdl_photons_file(p, $1, false, &@2)); $$ = $1; }
 | photon_items T_SAVE_FILE str_expr
+    { TRY(zr__sdl_photons_file(p, $1, true, &@2)); $$ = $1; }
 ;
 
 photon_args:
-  expr                 {}
-| photon_args ',' expr {}
+  expr
+    {
+      $$.n = 1;
+      $$.skip_first = false;
+      TRY(zr__sdl_want_float(p, &$1, &@1, &$$.v[0]));
+    }
+| photon_args ',' expr
+    {
+      $$ = $1;
+      if ($$.n < 4)
+        TRY(zr__sdl_want_float(p, &$3, &@3, &$$.v[$$.n++]));
+    }
 ;
 
 photon_kw:
@@ -3633,7 +3658,8 @@ light_body:
     { $1->media_attenuation = true; $$ = $1; }
 | light_body T_MEDIA_ATTENUATION expr
     { TRY(zr__sdl_light_bool(p, &$3, &@3, &$1->media_attenuation)); $$ = $1; }
-| light_body T_PHOTONS '{' photon_items '}'  { $$ = $1; }
+| light_body T_PHOTONS '{' photon_items '}'
+    { TRY(zr__sdl_photons_light(p, $1, $4, &@2)); $$ = $1; }
 /* The object may be an identifier alone ("looks_like { LightShape }",
    qtvrpanorama.pov), as in an object pattern. */
 | light_body T_LOOKS_LIKE '{' pattern_object '}'
@@ -3799,7 +3825,7 @@ global_body:
 | global_body radiosity_body '}'
     { zr__sdl_radiosity_end(p, &@3); }
 | global_body T_PHOTONS '{' photon_items '}'
-    { zr__sdl_photons_global(p, &@2); }
+    { TRY(zr__sdl_photons_global(p, $4, &@2)); }
 ;
 
 /* global_settings { radiosity { ... } }; the items' meaning here is in

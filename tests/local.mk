@@ -138,6 +138,10 @@ EXTRA_DIST += tests/test_faults.sh
 TESTS += tests/test_caustics.sh
 EXTRA_DIST += tests/test_caustics.sh tests/caustics_check.pov \
 	tests/caustics_bumps.pov
+
+# Photon mapping: the power law, lights without photons, povray's picture.
+TESTS += tests/test_photons.sh
+EXTRA_DIST += tests/test_photons.sh tests/photons_check.pov
 # The public API's contracts (issue 14): threads in zr_render_image,
 # progress and cancel in every phase, parameter sizes, diagnostic spans;
 # linked with the shared library, so it sees exported symbols only.

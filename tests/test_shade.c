@@ -448,21 +448,21 @@ static void test_shade_shadows_through_filter_and_transmit(void **state) {
   zr_tracer tr = {.scene = s, .stats = &stats};
   zr_vec3 light = zr_v3(0, 0, -10), point = zr_v3(0, 0, 10);
   /* Two crossings of transmit 0.5. */
-  assert_rgb(zr__shadow_transmission(&tr, light, point), 0.25, 0.25, 0.25,
+  assert_rgb(zr__shadow_transmission(&tr, NULL, light, point), 0.25, 0.25, 0.25,
              EPS);
   /* Filter 0.5 on orange: (0.5 * C)^2 per channel. */
   ((zr_pigment *)b->texture->pigment)->colour =
       zr_colour5(1, 0.5, 0.25, 0.5, 0);
-  assert_rgb(zr__shadow_transmission(&tr, light, point), 0.25, 0.0625,
+  assert_rgb(zr__shadow_transmission(&tr, NULL, light, point), 0.25, 0.0625,
              0.015625, EPS);
   /* Opaque blocks; no_shadow lets everything through. */
   ((zr_pigment *)b->texture->pigment)->colour = ORANGE;
-  assert_rgb(zr__shadow_transmission(&tr, light, point), 0, 0, 0, 0);
+  assert_rgb(zr__shadow_transmission(&tr, NULL, light, point), 0, 0, 0, 0);
   ((zr_object *)s->primitives[0])->no_shadow = true;
-  assert_rgb(zr__shadow_transmission(&tr, light, point), 1, 1, 1, 0);
+  assert_rgb(zr__shadow_transmission(&tr, NULL, light, point), 1, 1, 1, 0);
   /* A point beside the box sees the light. */
   ((zr_object *)s->primitives[0])->no_shadow = false;
-  assert_rgb(zr__shadow_transmission(&tr, light, zr_v3(3, 0, 10)), 1, 1, 1,
+  assert_rgb(zr__shadow_transmission(&tr, NULL, light, zr_v3(3, 0, 10)), 1, 1, 1,
              0);
   assert_true(stats.shadow_rays == 5);
   zr_scene_free(s);

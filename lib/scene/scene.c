@@ -15,6 +15,7 @@
 
 #include "core/context.h"
 #include "trace/bvh.h"
+#include "trace/photons.h"
 
 void zr__finish_init(zr_finish *f) {
   memset(f, 0, sizeof *f);
@@ -59,6 +60,14 @@ void zr__settings_init(zr_settings *s) {
   s->background = zr_colour5(0, 0, 0, 0, 0);
   s->version = 3.7;
   s->radiosity.brightness = 1.0;
+  s->photons.gather_min = 20;
+  s->photons.gather_max = 100;
+  s->photons.jitter = 0.4;
+  s->photons.max_trace_level = -1;
+  s->photons.adc_bailout = -1.0;
+  s->photons.radius_multiplier = 1.0;
+  s->photons.expand_increase = 0.2;
+  s->photons.expand_min = 40;
 }
 
 zr_scene *zr__scene_new(void) {
@@ -130,6 +139,23 @@ typedef struct flat_list {
  * under it, with textures inherited as in a union and default interiors
  * filled in; every part records the primitive it belongs to.
  */
+/* The one interior the parts that have one share (depth first); NULL
+   when none has one, or when they differ (*mixed then). */
+static const zr_interior *parts_interior(const zr_object *o, bool *mixed) {
+  if (o->interior)
+    return o->interior;
+  const zr_interior *found = NULL;
+  if (zr__is_csg(o->kind))
+    for (size_t i = 0; i < o->u.csg.n_children && !*mixed; i++) {
+      const zr_interior *in = parts_interior(o->u.csg.children[i], mixed);
+      if (in && found && in != found)
+        *mixed = true;
+      else if (in)
+        found = in;
+    }
+  return *mixed ? NULL : found;
+}
+
 static zr_object *resolve_part(zr_scene *scene, const zr_object *object,
                                const zr_texture *inherited,
                                const zr_object *solid) {
@@ -137,6 +163,18 @@ static zr_object *resolve_part(zr_scene *scene, const zr_object *object,
   if (!copy)
     return NULL;
   copy->texture = object->texture ? object->texture : inherited;
+  /* A ray inside the primitive travels in one interior.  When the CSG
+     has none of its own and its parts agree on one, that is it: povray
+     3.7 refracts a glass box with a sphere cut out of it (the box's
+     interior { ior 1.5 }) as the box alone, where the default interior
+     of the whole let the rays through unbent (advanced/glasschess.pov's
+     blocks vanished).  Parts with different interiors (wineglass.pov's
+     merge of rim, bowl, beads and stem) keep the default: one interior
+     per part is not modelled. */
+  if (!copy->interior && !solid) {
+    bool mixed = false;
+    copy->interior = parts_interior(object, &mixed);
+  }
   if (!copy->interior)
     copy->interior = scene->default_interior;
   copy->solid = solid;
@@ -238,13 +276,17 @@ zr_status zr__scene_finish(zr_scene *scene, zr_context *ctx) {
   }
   scene->primitives = list.items;
   scene->n_primitives = list.n;
-  return zr__bvh_build(scene, ctx);
+  zr_status s = zr__bvh_build(scene, ctx);
+  if (s == ZR_OK && scene->settings.photons.on)
+    s = zr__photons_build(scene, ctx); /* lib/trace/photons.c */
+  return s;
 }
 
 ZR_API void zr_scene_free(zr_scene *scene) {
   if (!scene)
     return;
   zr__bvh_free(scene->bvh);
+  zr__photons_free(scene->photons);
   free(scene->primitives);
   free(scene->objects);
   free(scene->lights);

@@ -491,6 +491,15 @@ struct zr_text; /* extruded glyph outlines, shared likewise */
 
 typedef struct zr_object zr_object;
 
+/* An object's photons { } block ("Shooting Photons at an Object"). */
+typedef struct zr_photon_object {
+  bool target;       /* light sources shoot photons at it */
+  double spacing;    /* target's spacing multiplier; default 1 */
+  bool refraction, reflection; /* it bends / mirrors photons; off */
+  bool collect;      /* photons are stored and gathered on it; on */
+  bool pass_through; /* photons cross it unchanged; default no_shadow */
+} zr_photon_object;
+
 struct zr_object {
   zr_object_kind kind;
   union {
@@ -718,6 +727,11 @@ struct zr_object {
      bound, which POV-Ray allows since a bound never changes the
      picture. */
   const zr_object *bound;
+  /* photons { } ("Photons"): NULL for the defaults (collects photons,
+     neither a target nor reflecting or refracting them, passes them
+     through when no_shadow).  A union's block is pushed down into its
+     children like its other modifiers. */
+  const struct zr_photon_object *photons;
   /* In a finished scene, the CSG primitive this object is a part of
      (NULL for a primitive itself): rays enter and leave its interior,
      not the part's. */
@@ -768,6 +782,13 @@ typedef struct zr_light {
      cross this object, which is not one of the scene's objects and
      casts no shadow (lib/trace/lights.c); NULL: none. */
   zr_object *projected_through;
+  /* photons { } in the light: whether its photons may be refracted and
+     reflected (both on unless switched off: povray 3.7 renders the
+     caustic of a target lens under a light without a photons block as
+     under one with "refraction on"), and whether the area light's
+     extent is used (area_light; not simulated: photons leave from
+     location). */
+  bool photon_refraction, photon_reflection, photon_area;
   /* The light_group the light is in, 0 for none: it then lights only
      the objects of that group and of the groups inside it. */
   uint32_t light_group;
@@ -917,6 +938,21 @@ typedef struct zr_radiosity_settings {
   const char *save_file, *load_file;
 } zr_radiosity_settings;
 
+/* global_settings { photons { } } ("Photon Global Settings"). */
+typedef struct zr_photon_settings {
+  bool on;           /* a block was given: photons are shot */
+  double spacing;    /* > 0: photons this far apart at the targets */
+  double count;      /* > 0: about this many photons in all */
+  int gather_min, gather_max; /* photons gathered per point; 20, 100 */
+  double jitter;     /* of the shooting directions, in cells; 0.4 */
+  int max_trace_level;        /* -1: the scene's */
+  double adc_bailout;         /* < 0: the scene's */
+  double radius, radius_multiplier; /* gather radius (0: found), 1 */
+  double autostop;   /* read; every target is covered whole */
+  double expand_increase;     /* 0.2 */
+  int expand_min;             /* 40 */
+} zr_photon_settings;
+
 typedef struct zr_settings {
   int max_trace_level;  /* default 5 */
   double adc_bailout;   /* default 1/255 */
@@ -936,6 +972,7 @@ typedef struct zr_settings {
      #version and 0.6 with "#version 3.7;"). */
   bool version_given;
   zr_radiosity_settings radiosity;
+  zr_photon_settings photons;
   /* Atmospheric effects (lib/trace/atmosphere.c): lists in the order
      written, NULL when absent. */
   const zr_fog *fogs;
@@ -949,6 +986,7 @@ typedef struct zr_settings {
 /* ---- the scene ---- */
 
 struct zr_bvh; /* the tracer's acceleration structure (lib/trace) */
+struct zr_photon_map; /* photons stored by lib/trace/photons.c */
 
 struct zr_scene {
   zr_arena arena;
@@ -975,6 +1013,8 @@ struct zr_scene {
   const zr_object **primitives;
   size_t n_primitives;
   struct zr_bvh *bvh;
+  /* The caustic photons (NULL: no photons block, or none stored). */
+  struct zr_photon_map *photons;
   unsigned long long parse_steps; /* the work budget the parse used */
 };
 

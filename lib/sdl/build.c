@@ -1246,6 +1246,8 @@ bool zr__sdl_object_mod(zr_sdl_parser *p, zr_object *o,
                   "'open' is for cylinders and cones, not for %s",
                   kind_name(o->kind));
     return false;
+  case ZR_SDL_MOD_PHOTONS:
+    return zr__sdl_photons_object(p, o, mod->ptr); /* build_media.c */
   case ZR_SDL_MOD_IGNORED:
     return true; /* warned about as it was read */
   default:

@@ -46,6 +46,7 @@ bool zr__sdl_light(zr_sdl_parser *p, zr_light *l, const zr_sdl_loc *loc) {
   l->adaptive = -1;
   l->size1 = l->size2 = 1;
   l->media_interaction = true;
+  l->photon_refraction = l->photon_reflection = true;
   l->where.file = p->files[loc->file].scene_path;
   l->where.line = loc->line;
   l->where.column = loc->column;

@@ -24,13 +24,14 @@
  * carry the object's transformations (lib/sdl/build.c calls
  * zr__sdl_interior_transform for every transform of an object).
  *
- * zRcube does not simulate photon mapping.  POV-Ray ignores objects'
- * and lights' photons { } blocks unless global_settings holds a photons
- * block, so those are read and dropped silently; the global block
- * itself draws one warning that caustics are not simulated.
+ * photons { } blocks are read here into the scene's settings, the
+ * lights and the objects (zr_photon_object); lib/trace/photons.c shoots
+ * and gathers the photons.  POV-Ray ignores objects' and lights' blocks
+ * unless global_settings holds one, and so does the tracer.
  */
 #include "config.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -359,8 +360,329 @@ bool zr__sdl_density_interpolate(zr_sdl_parser *p, zr_pattern *pt,
   return true;
 }
 
-void zr__sdl_photons_global(zr_sdl_parser *p, const zr_sdl_loc *loc) {
-  zr__sdl_warning(p, loc, "'photons' is not simulated: zRcube renders "
-                          "without photon mapping, so there are no "
-                          "caustics");
+/* ---- photons { } blocks ("Photons") ---- */
+
+zr_sdl_photons *zr__sdl_photons_new(zr_sdl_parser *p) {
+  zr_sdl_photons *ph = zr__sdl_alloc(p, sizeof *ph);
+  if (!ph)
+    return NULL;
+  memset(ph, 0, sizeof *ph);
+  zr_settings defaults;
+  zr__settings_init(&defaults);
+  ph->global = defaults.photons;
+  return ph;
+}
+
+static const char *photon_kw_name(int kw) {
+  switch (kw) {
+  case T_TARGET: return "target";
+  case T_REFRACTION: return "refraction";
+  case T_REFLECTION: return "reflection";
+  case T_COLLECT: return "collect";
+  case T_PASS_THROUGH: return "pass_through";
+  case T_AREA_LIGHT: return "area_light";
+  case T_SPACING: return "spacing";
+  case T_COUNT: return "count";
+  case T_GATHER: return "gather";
+  case T_MEDIA: return "media";
+  case T_JITTER: return "jitter";
+  case T_RADIUS: return "radius";
+  case T_MAX_TRACE_LEVEL: return "max_trace_level";
+  case T_ADC_BAILOUT: return "adc_bailout";
+  case T_AUTOSTOP: return "autostop";
+  case T_EXPAND_THRESHOLDS: return "expand_thresholds";
+  default: return "photons item";
+  }
+}
+
+/* The item's numbers: at least min and at most max of them. */
+static bool photon_count(zr_sdl_parser *p, int kw,
+                         const zr_sdl_photon_args *a, int min, int max,
+                         const zr_sdl_loc *loc) {
+  int n = a ? a->n + (a->skip_first ? 1 : 0) : 0;
+  if (n >= min && n <= max && !(a && a->skip_first && kw != T_RADIUS))
+    return true;
+  zr__sdl_error(p, ZR_ESYNTAX, loc,
+                "'%s' in photons { } takes %s%d number%s", photon_kw_name(kw),
+                min == max ? "" : "up to ", max, max == 1 ? "" : "s");
+  return false;
+}
+
+static bool photon_positive(zr_sdl_parser *p, int kw, double v,
+                            bool zero_ok, const zr_sdl_loc *loc) {
+  if (isfinite(v) && (v > 0.0 || (zero_ok && v == 0.0)))
+    return true;
+  zr__sdl_error(p, ZR_EINVAL, loc, "'%s' in photons { } must be %s, not %g",
+                photon_kw_name(kw), zero_ok ? "0 or more" : "above 0", v);
+  return false;
+}
+
+bool zr__sdl_photons_item(zr_sdl_parser *p, zr_sdl_photons *ph, int kw,
+                          const zr_sdl_photon_args *a,
+                          const zr_sdl_loc *loc) {
+  const double *v = a ? a->v : NULL;
+  bool on = !a || fabs(v[0]) >= 1e-10; /* a flag alone means on */
+  zr_photon_settings *g = &ph->global;
+  bool object_item = false, global_item = true;
+  switch (kw) {
+  case T_TARGET:
+    if (!photon_count(p, kw, a, 0, 1, loc))
+      return false;
+    ph->has_target = true;
+    ph->obj.target = true;
+    ph->obj.spacing = a ? v[0] : 1.0;
+    if (a && !photon_positive(p, kw, v[0], false, loc))
+      return false;
+    object_item = true, global_item = false;
+    break;
+  case T_REFRACTION:
+  case T_REFLECTION:
+    if (!photon_count(p, kw, a, 1, 1, loc))
+      return false;
+    if (kw == T_REFRACTION)
+      ph->has_refraction = true, ph->refraction = on;
+    else
+      ph->has_reflection = true, ph->reflection = on;
+    global_item = false; /* objects and lights */
+    break;
+  case T_COLLECT:
+    if (!photon_count(p, kw, a, 1, 1, loc))
+      return false;
+    ph->has_collect = true, ph->collect = on;
+    object_item = true, global_item = false;
+    break;
+  case T_PASS_THROUGH:
+    if (!photon_count(p, kw, a, 0, 1, loc))
+      return false;
+    ph->has_pass_through = true, ph->pass_through = on;
+    object_item = true, global_item = false;
+    break;
+  case T_AREA_LIGHT:
+    if (!photon_count(p, kw, a, 0, 1, loc))
+      return false;
+    ph->has_area_light = true, ph->area_light = on;
+    global_item = false;
+    break;
+  case T_SPACING:
+    if (!photon_count(p, kw, a, 1, 1, loc) ||
+        !photon_positive(p, kw, v[0], false, loc))
+      return false;
+    g->spacing = v[0], ph->has_spacing = true;
+    break;
+  case T_COUNT:
+    if (!photon_count(p, kw, a, 1, 1, loc) ||
+        !photon_positive(p, kw, v[0], false, loc))
+      return false;
+    g->count = v[0], ph->has_count = true;
+    break;
+  case T_GATHER:
+    if (!photon_count(p, kw, a, 2, 2, loc) ||
+        !photon_positive(p, kw, v[0], false, loc) ||
+        !photon_positive(p, kw, v[1], false, loc))
+      return false;
+    if (v[0] > v[1] || v[1] > 1e6) {
+      zr__sdl_error(p, ZR_EINVAL, loc,
+                    "'gather %g, %g': the minimum must not exceed the "
+                    "maximum, at most 1e6",
+                    v[0], v[1]);
+      return false;
+    }
+    g->gather_min = (int)v[0];
+    g->gather_max = (int)v[1];
+    break;
+  case T_MEDIA:
+    if (!photon_count(p, kw, a, 1, 2, loc))
+      return false;
+    ph->has_media = v[0] > 0.0;
+    ph->media_loc = *loc;
+    break;
+  case T_JITTER:
+    if (!photon_count(p, kw, a, 1, 1, loc) ||
+        !photon_positive(p, kw, v[0], true, loc))
+      return false;
+    g->jitter = v[0];
+    break;
+  case T_RADIUS: {
+    int n = a ? a->n + (a->skip_first ? 1 : 0) : 0;
+    if (!photon_count(p, kw, a, 1, 4, loc))
+      return false;
+    int first = a->skip_first ? 1 : 0;
+    for (int i = 0; i < a->n; i++) {
+      int slot = first + i;
+      if (!photon_positive(p, kw, v[i], true, loc))
+        return false;
+      if (slot == 0)
+        g->radius = v[i];
+      else if (slot == 1)
+        g->radius_multiplier = v[i] > 0.0 ? v[i] : 1.0;
+    }
+    (void)n;
+    break;
+  }
+  case T_MAX_TRACE_LEVEL:
+    if (!photon_count(p, kw, a, 1, 1, loc) ||
+        !photon_positive(p, kw, v[0], false, loc))
+      return false;
+    g->max_trace_level = v[0] > 256 ? 256 : (int)v[0];
+    break;
+  case T_ADC_BAILOUT:
+    if (!photon_count(p, kw, a, 1, 1, loc) ||
+        !photon_positive(p, kw, v[0], true, loc))
+      return false;
+    g->adc_bailout = v[0];
+    break;
+  case T_AUTOSTOP:
+    if (!photon_count(p, kw, a, 1, 1, loc) ||
+        !photon_positive(p, kw, v[0], true, loc))
+      return false;
+    g->autostop = v[0];
+    break;
+  case T_EXPAND_THRESHOLDS:
+    if (!photon_count(p, kw, a, 2, 2, loc) ||
+        !photon_positive(p, kw, v[0], true, loc) ||
+        !photon_positive(p, kw, v[1], true, loc))
+      return false;
+    g->expand_increase = v[0];
+    g->expand_min = v[1] > 1e6 ? 1000000 : (int)v[1];
+    break;
+  default:
+    break;
+  }
+  if (object_item && !ph->any_object_item)
+    ph->any_object_item = true, ph->first_object_item = *loc,
+    ph->first_object_kw = kw;
+  if (global_item && !ph->any_global_item)
+    ph->any_global_item = true, ph->first_global_item = *loc,
+    ph->first_global_kw = kw;
+  return true;
+}
+
+bool zr__sdl_photons_file(zr_sdl_parser *p, zr_sdl_photons *ph, bool save,
+                          const zr_sdl_loc *loc) {
+  if (save)
+    ph->has_save = true;
+  else
+    ph->has_load = true;
+  ph->file_loc = *loc;
+  if (!ph->any_global_item)
+    ph->any_global_item = true, ph->first_global_item = *loc,
+    ph->first_global_kw = 0;
+  (void)p;
+  return true;
+}
+
+/* An item that does not belong in this block. */
+static bool photons_misplaced(zr_sdl_parser *p, const zr_sdl_loc *loc,
+                              int kw, const char *where,
+                              const char *belongs) {
+  zr__sdl_error(p, ZR_ESYNTAX, loc,
+                "'%s' does not belong in %s photons { } (it belongs in "
+                "%s)",
+                kw ? photon_kw_name(kw) : "save_file/load_file", where,
+                belongs);
+  return false;
+}
+
+bool zr__sdl_photons_global(zr_sdl_parser *p, const zr_sdl_photons *ph,
+                            const zr_sdl_loc *loc) {
+  if (ph->any_object_item)
+    return photons_misplaced(p, &ph->first_object_item,
+                             ph->first_object_kw, "global_settings'",
+                             "an object's");
+  if (ph->has_refraction || ph->has_reflection || ph->has_area_light)
+    return photons_misplaced(p, loc,
+                             ph->has_refraction   ? T_REFRACTION
+                             : ph->has_reflection ? T_REFLECTION
+                                                  : T_AREA_LIGHT,
+                             "global_settings'", "an object's or a light's");
+  if (!ph->has_spacing && !ph->has_count && !ph->has_load) {
+    zr__sdl_error(p, ZR_ESYNTAX, loc,
+                  "global_settings' photons { } needs 'spacing' or "
+                  "'count'");
+    return false;
+  }
+  zr_photon_settings *g = &p->scene->settings.photons;
+  *g = ph->global;
+  if (!ph->has_spacing)
+    g->spacing = 0.0;
+  if (!ph->has_count || ph->has_spacing)
+    g->count = 0.0;
+  g->on = true;
+  if (ph->has_media)
+    zr__sdl_warning(p, &ph->media_loc,
+                    "photons in media are not simulated: media are lit "
+                    "by the lights directly");
+  if (ph->has_load || ph->has_save)
+    zr__sdl_warning(p, &ph->file_loc,
+                    "photon maps are not saved or loaded: the photons are "
+                    "shot anew");
+  return true;
+}
+
+bool zr__sdl_photons_light(zr_sdl_parser *p, zr_light *l,
+                           const zr_sdl_photons *ph, const zr_sdl_loc *loc) {
+  if (ph->any_object_item && !ph->has_area_light)
+    return photons_misplaced(p, &ph->first_object_item,
+                             ph->first_object_kw, "a light's",
+                             "an object's");
+  if (ph->any_global_item)
+    return photons_misplaced(p, &ph->first_global_item,
+                             ph->first_global_kw, "a light's",
+                             "global_settings'");
+  if (ph->has_refraction)
+    l->photon_refraction = ph->refraction;
+  if (ph->has_reflection)
+    l->photon_reflection = ph->reflection;
+  if (ph->has_area_light) {
+    l->photon_area = ph->area_light;
+    if (ph->area_light)
+      zr__sdl_warning(p, loc,
+                      "photons { area_light }: photons leave from the "
+                      "light's centre, as without it");
+  }
+  return true;
+}
+
+/* The block applied to o, and pushed into a CSG's parts. */
+static bool photons_apply(zr_sdl_parser *p, zr_object *o,
+                          const zr_sdl_photons *ph) {
+  zr_photon_object *po = zr__sdl_alloc(p, sizeof *po);
+  if (!po)
+    return false;
+  if (o->photons) {
+    *po = *o->photons;
+  } else {
+    memset(po, 0, sizeof *po);
+    po->spacing = 1.0;
+    po->collect = true;
+    po->pass_through = o->no_shadow;
+  }
+  if (ph->has_target)
+    po->target = true, po->spacing = ph->obj.spacing;
+  if (ph->has_refraction)
+    po->refraction = ph->refraction;
+  if (ph->has_reflection)
+    po->reflection = ph->reflection;
+  if (ph->has_collect)
+    po->collect = ph->collect;
+  if (ph->has_pass_through)
+    po->pass_through = ph->pass_through;
+  o->photons = po;
+  if (zr__is_csg(o->kind))
+    for (size_t i = 0; i < o->u.csg.n_children; i++)
+      if (!photons_apply(p, o->u.csg.children[i], ph))
+        return false;
+  return true;
+}
+
+bool zr__sdl_photons_object(zr_sdl_parser *p, zr_object *o,
+                            const zr_sdl_photons *ph) {
+  if (ph->any_global_item)
+    return photons_misplaced(p, &ph->first_global_item,
+                             ph->first_global_kw, "an object's",
+                             "global_settings'");
+  if (ph->has_area_light)
+    return photons_misplaced(p, &ph->first_object_item, T_AREA_LIGHT,
+                             "an object's", "a light's");
+  return photons_apply(p, o, ph);
 }

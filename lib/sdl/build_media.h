@@ -55,7 +55,48 @@ bool zr__sdl_normal_density_file(zr_sdl_parser *p, zr_normal *nm,
 bool zr__sdl_density_interpolate(zr_sdl_parser *p, zr_pattern *pt,
                                  const zr_sdl_expr *e,
                                  const zr_sdl_loc *loc);
-/* global_settings { photons { } } was read at loc: warns. */
-void zr__sdl_photons_global(zr_sdl_parser *p, const zr_sdl_loc *loc);
+/*
+ * photons { } blocks ("Photons"): the items of one block as read, for
+ * an object, a light or global_settings (which keywords each may hold
+ * is checked when the block is applied).
+ */
+typedef struct zr_sdl_photon_args {
+  double v[4];
+  int n;
+  bool skip_first; /* "radius , 0.5": the first value left out */
+} zr_sdl_photon_args;
+
+typedef struct zr_sdl_photons {
+  /* Which items were given: bit (token - base) is not used; instead
+     one flag per field below. */
+  bool target, refraction, reflection, collect, pass_through, area_light;
+  bool has_target, has_refraction, has_reflection, has_collect,
+      has_pass_through, has_area_light;
+  zr_photon_object obj;
+  zr_photon_settings global;
+  bool has_spacing, has_count, has_media, has_load, has_save,
+      has_split_union;
+  zr_sdl_loc first_object_item, first_global_item, media_loc, file_loc;
+  bool any_object_item, any_global_item;
+  int first_object_kw, first_global_kw; /* tokens; 0 for a file item */
+} zr_sdl_photons;
+
+zr_sdl_photons *zr__sdl_photons_new(zr_sdl_parser *p);
+/* One item: keyword token kw with its numbers (args may be NULL). */
+bool zr__sdl_photons_item(zr_sdl_parser *p, zr_sdl_photons *ph, int kw,
+                          const zr_sdl_photon_args *args,
+                          const zr_sdl_loc *loc);
+/* save_file / load_file "name" (save is true for save_file). */
+bool zr__sdl_photons_file(zr_sdl_parser *p, zr_sdl_photons *ph, bool save,
+                          const zr_sdl_loc *loc);
+/* global_settings { photons { } } */
+bool zr__sdl_photons_global(zr_sdl_parser *p, const zr_sdl_photons *ph,
+                            const zr_sdl_loc *loc);
+/* light_source { photons { } } */
+bool zr__sdl_photons_light(zr_sdl_parser *p, zr_light *l,
+                           const zr_sdl_photons *ph, const zr_sdl_loc *loc);
+/* An object's photons { }: the block applied to o (and a CSG's parts). */
+bool zr__sdl_photons_object(zr_sdl_parser *p, zr_object *o,
+                            const zr_sdl_photons *ph);
 
 #endif /* ZR_SDL_BUILD_MEDIA_H */

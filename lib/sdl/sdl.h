@@ -215,6 +215,7 @@ typedef enum zr_sdl_mod_kind {
   ZR_SDL_MOD_UV_MAPPING, /* the textures after it use surface (u, v) */
   /* Read and warned about, no effect: radiosity { importance },
      no_radiosity (lib/sdl/build_radiosity.c). */
+  ZR_SDL_MOD_PHOTONS,       /* ptr: a zr_sdl_photons */
   ZR_SDL_MOD_IGNORED
 } zr_sdl_mod_kind;
 

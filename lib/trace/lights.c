@@ -259,7 +259,7 @@ static zr_rgb sample_visibility(const zr_tracer *tr, const zr_light *light,
   }
   if (light->shadowless)
     return zr_rgb3(1, 1, 1);
-  return zr__shadow_transmission(tr, target, lit_from);
+  return zr__shadow_transmission(tr, light, target, lit_from);
 }
 
 /* The grid's visibilities, filled on demand (cells share corners). */

@@ -8,7 +8,8 @@ lib_libzrcube_la_SOURCES += \
 	lib/trace/obj_poly.c lib/trace/obj_poly.h \
 	lib/trace/intersect.c lib/trace/intersect.h \
 	lib/trace/render.c lib/trace/render.h \
-	lib/trace/shade.c lib/trace/shade.h
+	lib/trace/shade.c lib/trace/shade.h \
+	lib/trace/photons.c lib/trace/photons.h
 
 # The tracer's tests call zr__ functions, which the shared library hides
 # (-fvisibility=hidden): they link the static archive.

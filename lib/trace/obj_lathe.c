@@ -70,6 +70,31 @@ static void multiply_add(const double *a, const double *b, double k,
       out[i + j] += k * a[i] * b[j];
 }
 
+/*
+ * Whether the sextic may vanish on [0, 1]: its coefficients in the
+ * Bernstein basis of degree 6 bound it there (the curve lies in their
+ * convex hull), so when all have one strict sign it has no root and the
+ * root search is skipped; b_k = sum over i <= k of C(k, i) / C(6, i) a_i.
+ */
+static bool bernstein_may_vanish(const double a[7]) {
+  static const double binom[7][7] = {
+      {1},          {1, 1},           {1, 2, 1},          {1, 3, 3, 1},
+      {1, 4, 6, 4, 1}, {1, 5, 10, 10, 5, 1}, {1, 6, 15, 20, 15, 6, 1}};
+  bool pos = false, neg = false;
+  for (int k = 0; k <= 6; k++) {
+    double b = 0.0;
+    for (int i = 0; i <= k; i++)
+      b += binom[k][i] / binom[6][i] * a[i];
+    if (b >= 0.0)
+      pos = true;
+    if (b <= 0.0)
+      neg = true;
+    if (pos && neg)
+      return true;
+  }
+  return false;
+}
+
 static void piece_crossings(const zr_object *o, const double *seg,
                             zr_vec3 org, zr_vec3 dir, double tmin,
                             double tmax, zr_hit_list *l) {
@@ -87,6 +112,8 @@ static void piece_crossings(const zr_object *o, const double *seg,
     multiply_add(a, a, 1.0, poly);
     multiply_add(b, b, 1.0, poly);
     multiply_add(r, r, -dir.y * dir.y, poly);
+    if (!bernstein_may_vanish(poly))
+      return;
     n = zr__poly_roots(poly, 6, 0.0, 1.0, s);
     for (int k = 0; k < n; k++) {
       double t = (cubic_at(y, s[k]) - org.y) / dir.y;
@@ -121,6 +148,51 @@ static void piece_crossings(const zr_object *o, const double *seg,
   }
 }
 
+/*
+ * Whether the ray can meet the surface one segment turns: it must pass
+ * through the slab of the segment's heights at a distance from the y
+ * axis within the segment's radii (pad widens both).  Skipping the
+ * others leaves the crossings as they were and spares most of the
+ * degree-six solves (a chess piece has a dozen segments, and a ray near
+ * its foot meets one or two).
+ */
+static bool piece_may_cross(const double *seg, zr_vec3 org, zr_vec3 dir,
+                            double pad) {
+  double ylo, yhi, rlo, rhi;
+  zr__cubic_range(seg + 4, &ylo, &yhi);
+  zr__cubic_range(seg, &rlo, &rhi);
+  ylo -= pad, yhi += pad;
+  double rmax = fmax(fabs(rlo), fabs(rhi)) + pad;
+  double rmin = (rlo > 0.0 || rhi < 0.0) ? fmin(fabs(rlo), fabs(rhi)) - pad
+                                         : 0.0;
+  double t0 = -INFINITY, t1 = INFINITY;
+  if (dir.y != 0.0) {
+    double a = (ylo - org.y) / dir.y, b = (yhi - org.y) / dir.y;
+    t0 = fmin(a, b);
+    t1 = fmax(a, b);
+  } else if (org.y < ylo || org.y > yhi) {
+    return false;
+  }
+  /* d(t) = |(org + t dir) across the axis|^2 = A t^2 + B t + C. */
+  double A = dir.x * dir.x + dir.z * dir.z;
+  double B = 2.0 * (org.x * dir.x + org.z * dir.z);
+  double C = org.x * org.x + org.z * org.z;
+  if (!(A > 0.0))
+    return C <= rmax * rmax && C >= (rmin > 0.0 ? rmin * rmin : 0.0);
+  if (!isfinite(t0) || !isfinite(t1))
+    return true;
+  double tv = fmin(fmax(-B / (2.0 * A), t0), t1);
+  double dmin = (A * tv + B) * tv + C;
+  if (dmin > rmax * rmax)
+    return false;
+  if (rmin > 0.0) {
+    double d0 = (A * t0 + B) * t0 + C, d1 = (A * t1 + B) * t1 + C;
+    if (fmax(d0, d1) < rmin * rmin)
+      return false;
+  }
+  return true;
+}
+
 int zr__lathe_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
                         double tmin, double tmax, double t[4],
                         zr_vec3 normal[4]) {
@@ -136,7 +208,8 @@ int zr__lathe_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
     return 0;
   zr_hit_list l = {0, {0}, {{0, 0, 0}}};
   for (size_t i = 0; i < o->u.lathe.n_seg; i++)
-    piece_crossings(o, o->u.lathe.seg + 8 * i, org, dir, tmin, tmax, &l);
+    if (piece_may_cross(o->u.lathe.seg + 8 * i, org, dir, pad))
+      piece_crossings(o, o->u.lathe.seg + 8 * i, org, dir, tmin, tmax, &l);
   for (int i = 0; i < l.n; i++) {
     t[i] = l.t[i];
     normal[i] = l.normal[i];

@@ -50,11 +50,50 @@ static int segment_roots(const double *c, double *roots) {
   return n + zr__poly_roots(c, 3, 0.0, 1.0, roots + n);
 }
 
+void zr__cubic_range(const double *c, double *lo, double *hi) {
+  double v0 = c[0], v1 = c[0] + c[1] + c[2] + c[3];
+  *lo = fmin(v0, v1);
+  *hi = fmax(v0, v1);
+  /* c' = c1 + 2 c2 s + 3 c3 s^2 */
+  double a = 3.0 * c[3], b = 2.0 * c[2], k = c[1];
+  double s[2];
+  int n = 0;
+  if (a != 0.0) {
+    double disc = b * b - 4.0 * a * k;
+    if (disc >= 0.0) {
+      double q = -0.5 * (b + copysign(sqrt(disc), b));
+      if (q != 0.0) {
+        s[n++] = q / a;
+        s[n++] = k / q;
+      } else {
+        s[n++] = 0.0;
+      }
+    }
+  } else if (b != 0.0) {
+    s[n++] = -k / b;
+  }
+  for (int i = 0; i < n; i++)
+    if (s[i] > 0.0 && s[i] < 1.0) {
+      double v = cubic_at(c, s[i]);
+      *lo = fmin(*lo, v);
+      *hi = fmax(*hi, v);
+    }
+}
+
 bool zr__curves_cover(const double *pieces, size_t n_pieces, double x,
                       double z) {
   bool in = false;
   for (size_t i = 0; i < n_pieces; i++) {
     const double *seg = pieces + 8 * i;
+    /* A piece wholly above or below the line z, or wholly at or left of
+       x, crosses nothing to the right of the point: skip its roots. */
+    double zlo, zhi, xlo, xhi;
+    zr__cubic_range(seg + 4, &zlo, &zhi);
+    if (z < zlo || z > zhi)
+      continue;
+    zr__cubic_range(seg, &xlo, &xhi);
+    if (xhi <= x)
+      continue;
     double zc[4] = {seg[4] - z, seg[5], seg[6], seg[7]};
     double s[4];
     int n = segment_roots(zc, s);

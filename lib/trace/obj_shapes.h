@@ -55,6 +55,9 @@ void zr__prism_bounds(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi);
 /* Whether (x, z) is inside the curves of n pieces (a prism's or a
    lathe's seg) by the even-odd rule. */
 bool zr__curves_cover(const double *seg, size_t n, double x, double z);
+/* The range of the cubic c[0] + c[1] s + c[2] s^2 + c[3] s^3 over s in
+   [0, 1] (its ends and turning points), in *lo and *hi. */
+void zr__cubic_range(const double *c, double *lo, double *hi);
 
 int zr__lathe_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
                         double tmin, double tmax, double t[4],

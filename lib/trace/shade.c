@@ -70,6 +70,7 @@
 #include "scene/texture.h"
 #include "trace/atmosphere.h"
 #include "trace/bvh.h"
+#include "trace/photons.h"
 #include "trace/lights.h"
 #include "trace/media.h"
 #include "trace/obj_shapes.h"
@@ -87,6 +88,8 @@ static zr_rgb see_through(zr_colour c) {
 
 typedef struct shadow_walk {
   const zr_ray *ray;
+  const zr_scene *scene;
+  const zr_light *source; /* NULL: not a light's shadow ray */
   zr_rgb light;
   /* Crossings of hollow containers with media (lib/trace/media.c). */
   zr_media_crossing crossings[ZR_MEDIA_LIST_MAX];
@@ -219,6 +222,11 @@ static bool shadow_visit(const zr_hit *hit, void *user) {
   }
   if (o->no_shadow)
     return true;
+  if (w->scene->settings.photons.on &&
+      zr__photons_block_shadow(w->scene, w->source, o)) {
+    w->light = zr_rgb3(0, 0, 0);
+    return false; /* the photons bring this light (lib/trace/photons.c) */
+  }
   zr_vec3 p = zr_v3_madd(w->ray->origin, w->ray->dir, hit->t);
   const zr_texture *tx = o->texture;
   if (tx->over || tx->map) {
@@ -241,11 +249,14 @@ static bool shadow_visit(const zr_hit *hit, void *user) {
   return rgb_max(w->light) > 0.0;
 }
 
-zr_rgb zr__shadow_transmission(const zr_tracer *tracer, zr_vec3 from,
+zr_rgb zr__shadow_transmission(const zr_tracer *tracer,
+                               const zr_light *light, zr_vec3 from,
                                zr_vec3 to) {
   zr_ray ray = {to, zr_v3_sub(from, to)};
   shadow_walk w;
   w.ray = &ray;
+  w.scene = tracer->scene;
+  w.source = light;
   w.light = zr_rgb3(1, 1, 1);
   w.n_crossings = 0;
   w.n_fades = 0;
@@ -290,15 +301,15 @@ double zr__fresnel(double cos_i, double n1, double n2) {
 }
 
 /* The ior of the medium a ray in media travels through. */
-static double media_ior(const zr_media *media) {
+double zr__media_ior(const zr_media *media) {
   if (!media || media->n == 0)
     return 1.0;
   return media->objects[media->n - 1]->interior->ior;
 }
 
 /* media with object added (entering) or removed (leaving). */
-static void media_change(const zr_media *in, const zr_object *object,
-                         bool entering, zr_media *out) {
+void zr__media_change(const zr_media *in, const zr_object *object,
+                      bool entering, zr_media *out) {
   out->n = 0;
   out->passes = 0;
   if (in)
@@ -539,14 +550,14 @@ static zr_rgb direct_light(const zr_tracer *tr, const surface *s,
  * falloff power of 1 - cos, or by Fresnel's law for the interior's ior
  * (reference, "Specular Reflection").
  */
-static zr_rgb reflection_amount(const surface *s, double n1, double n2) {
-  const zr_finish *f = s->finish;
+zr_rgb zr__reflection_amount(const zr_finish *f, zr_colour colour,
+                             zr_vec3 d, zr_vec3 n, double n1, double n2) {
   zr_rgb lo = f->reflection, hi = f->reflection_max;
   bool variable = f->reflection_fresnel || lo.r != hi.r || lo.g != hi.g ||
                   lo.b != hi.b;
   zr_rgb amount = lo;
   if (variable) {
-    double cos_i = fmin(1.0, fabs(zr_v3_dot(s->d, s->n)));
+    double cos_i = fmin(1.0, fabs(zr_v3_dot(d, n)));
     double w;
     if (f->reflection_fresnel) {
       w = zr__fresnel(cos_i, n1, n2);
@@ -559,9 +570,13 @@ static zr_rgb reflection_amount(const surface *s, double n1, double n2) {
   if (f->reflection_metallic != 0.0)
     amount = zr_rgb_mul(amount,
                         metallic_tint(f->reflection_metallic,
-                                      zr_colour_rgb(s->colour),
-                                      fabs(zr_v3_dot(s->d, s->n))));
+                                      zr_colour_rgb(colour),
+                                      fabs(zr_v3_dot(d, n))));
   return amount;
+}
+
+static zr_rgb reflection_amount(const surface *s, double n1, double n2) {
+  return zr__reflection_amount(s->finish, s->colour, s->d, s->n, n1, n2);
 }
 
 /*
@@ -573,7 +588,7 @@ static zr_rgb reflection_amount(const surface *s, double n1, double n2) {
  * fade_distance 1), with fade_colour + (1 - fade_colour) times that per
  * channel ("fade_color colorizes the attenuation").
  */
-static zr_rgb interior_fade(const zr_media *media, double d, zr_rgb c) {
+zr_rgb zr__interior_fade(const zr_media *media, double d, zr_rgb c) {
   if (!media || media->n == 0)
     return c;
   const zr_interior *in = media->objects[media->n - 1]->interior;
@@ -611,7 +626,7 @@ static void media_beyond(const surface *s, const zr_media *media,
      (its normal points out of the solid: lib/trace/csg.c). */
   const zr_object *solid = s->object->solid ? s->object->solid : s->object;
   if (zr__has_inside(solid))
-    media_change(media, solid, s->entering, next);
+    zr__media_change(media, solid, s->entering, next);
   else if (media)
     *next = *media; /* a flat object has no interior to enter */
   else
@@ -638,6 +653,21 @@ static zr_rgb indirect_light(const zr_tracer *tr, const surface *s,
   q.object = s->object;
   if (!tr->indirect->irradiance(tr->indirect, tr, &q, &e))
     return zr_rgb3(0, 0, 0);
+  return zr_rgb_scale(zr_rgb_mul(e, c), f->diffuse * opacity);
+}
+
+/* The caustics the photon map brings to s, lit as a light source's
+   diffuse light is (lib/trace/photons.c); objects with collect off get
+   none. */
+static zr_rgb photon_light(const zr_tracer *tr, const surface *s,
+                           zr_rgb c, double opacity) {
+  const zr_finish *f = s->finish;
+  const zr_photon_object *po = s->object->photons;
+  if (!tr->scene->photons || (po && !po->collect) || !(f->diffuse > 0.0) ||
+      !(opacity > 0.0))
+    return zr_rgb3(0, 0, 0);
+  zr_rgb e = zr__photons_gather(tr->scene->photons, s->p, s->n,
+                                f->brilliance);
   return zr_rgb_scale(zr_rgb_mul(e, c), f->diffuse * opacity);
 }
 
@@ -679,13 +709,15 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
   /* A pretrace wants the cache filled, not the camera's colours: the
      light sources' direct light at what the camera sees is left out
      (POV-Ray's -RVP, "Radiosity Vain Pretrace" off). */
-  if (!(tr->skip_direct && tr->gi_depth == 0))
+  if (!(tr->skip_direct && tr->gi_depth == 0)) {
     sum = zr_rgb_add(sum, direct_light(tr, s, opacity));
+    sum = zr_rgb_add(sum, photon_light(tr, s, c, opacity));
+  }
 
   /* The indices of refraction on this side (n1) and beyond (n2). */
   zr_media next;
   media_beyond(s, media, &next);
-  double n1 = media_ior(media), n2 = media_ior(&next);
+  double n1 = zr__media_ior(media), n2 = zr__media_ior(&next);
   zr_rgb refl = reflection_amount(s, n1, n2);
   zr_rgb trans = s->layer ? zr_rgb3(0, 0, 0) : see_through(col);
   if (f->conserve_energy)
@@ -953,7 +985,7 @@ static zr_rgb trace_upto(const zr_tracer *tracer, const zr_ray *ray,
        along a ray that meets nothing. */
     zr_rgb sky = zr__media_along(tracer, media, ray->origin, ray->dir,
                                  INFINITY, zr__sky_colour(scene, ray->dir));
-    return interior_fade(media, INFINITY,
+    return zr__interior_fade(media, INFINITY,
                          zr__atmosphere_apply(scene, ray->origin, ray->dir,
                                               INFINITY, sky));
   }
@@ -1008,7 +1040,7 @@ static zr_rgb trace_upto(const zr_tracer *tracer, const zr_ray *ray,
      the fading of the interior the ray crossed. */
   zr_rgb c = zr__media_along(tracer, media, ray->origin, ray->dir, hit.t,
                              shade(tracer, &s, level, weight, media));
-  return interior_fade(
+  return zr__interior_fade(
       media, hit.t * zr_v3_len(ray->dir),
       zr__atmosphere_apply(scene, ray->origin, ray->dir, hit.t, c));
 }

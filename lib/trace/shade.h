@@ -114,10 +114,26 @@ zr_colour zr__pigment_at(const zr_pigment *pigment, zr_vec3 p);
  * The light that reaches point `to` from a light at `from` (both world
  * points) through the scene: 1 when nothing is in the way, 0 behind an
  * opaque object, and filter * colour + transmit for each transparent
- * surface crossed.  Objects with no_shadow cast none.
+ * surface crossed.  Objects with no_shadow cast none.  light (NULL
+ * for none) is the light shining from `from`: with photons, objects
+ * that refract its photons stop it (lib/trace/photons.h).
  */
-zr_rgb zr__shadow_transmission(const zr_tracer *tracer, zr_vec3 from,
+zr_rgb zr__shadow_transmission(const zr_tracer *tracer,
+                               const zr_light *light, zr_vec3 from,
                                zr_vec3 to);
+
+/* The reflection amount of finish f at a point of colour colour, for
+   a ray of unit direction d meeting unit normal n (facing the ray)
+   from a medium of index n1 towards n2 ("Specular Reflection"). */
+zr_rgb zr__reflection_amount(const zr_finish *f, zr_colour colour,
+                             zr_vec3 d, zr_vec3 n, double n1, double n2);
+/* c after travelling distance d inside media's innermost object
+   (its interior's fade_distance, fade_power, fade_colour). */
+zr_rgb zr__interior_fade(const zr_media *media, double d, zr_rgb c);
+/* media with object added (entering) or removed; the ior inside. */
+void zr__media_change(const zr_media *in, const zr_object *object,
+                      bool entering, zr_media *out);
+double zr__media_ior(const zr_media *media);
 
 /* The mirror direction of unit d about unit n. */
 static inline zr_vec3 zr__reflect(zr_vec3 d, zr_vec3 n) {

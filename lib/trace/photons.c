@@ -1,0 +1,722 @@
+/*
+ * photons.c - caustics by photon mapping (Jensen, "Global Illumination
+ * using Photon Maps", 1996), with the meaning POV-Ray 3.7's reference
+ * gives the photons blocks ("Photons") and what its renders show.
+ *
+ * Shooting.  Each light whose photons may be reflected or refracted
+ * shoots at each target primitive (a union's block is pushed into its
+ * parts, so each part is a target of its own) through the sphere about
+ * the primitive's bounding box.  A point light's directions cover the
+ * cone that sphere subtends (every direction when the light is inside
+ * it), one per solid angle (spacing / distance)^2, on a Fibonacci
+ * lattice of the spherical cap (equal solid angle per point, rotated by
+ * the golden angle); a parallel light's rays leave its plane through a
+ * sunflower lattice of the sphere's disc, one per spacing^2.  jitter
+ * moves each direction or point by up to jitter cells, from a hash of
+ * light, target and index, so the photons are the same in every run.
+ * With count instead of spacing, one spacing for all targets is chosen
+ * so that the lattices hold about count photons together.
+ *
+ * Power.  POV-Ray's lights do not fall off with distance: a surface
+ * facing a light gets the light's colour at any distance unless
+ * fade_power says otherwise.  So a photon's power is the light's colour
+ * times the area its solid angle covers where it lands, omega D^2 for
+ * the whole path length D (parallel light: the cell's area), times the
+ * light's fading at D and its spot cone.  povray 3.7 agrees: behind a
+ * clear slab of ior 1 that is a target, the photons give the light the
+ * floor gets without the slab, both with the slab near the floor and
+ * with it three times nearer the light than the floor (measured, see
+ * tests/test_photons.sh), which photons of a fixed power would light
+ * nine times less.
+ *
+ * Tracing.  A photon follows the tracer's rules: an object that
+ * refracts photons (photons { refraction on }) passes it on through its
+ * ior with its filter and transmit (f * C + t) and its interior's
+ * fading; one that reflects photons passes on the reflection amount of
+ * its finish; both may split a photon in two.  Objects that neither
+ * reflect nor refract stop it.  pass_through objects (no_shadow ones by
+ * default) let photons that have not yet met a target cross unchanged.
+ * A photon is stored where it lands on a collecting object once it has
+ * been reflected or refracted: the light that arrives straight from a
+ * light is the light sources' business.  Its path ends after the
+ * photons' max_trace_level (the scene's by default) or when its
+ * strength falls below adc_bailout.  Photon rays do not see no_image
+ * objects (povray 3.7 shows neither a caustic nor a photon shadow
+ * behind a no_image target lens).
+ *
+ * Gathering.  The photons are kept in a balanced kd-tree.  At a point,
+ * up to gather_max of the nearest photons within the gather radius R
+ * that arrived on the side the normal faces are summed and divided by
+ * pi r^2 (r: R, or the distance of the farthest when gather_max were
+ * found).  When fewer than gather_min are found, the search is redone
+ * at 2R and kept when the density it finds is at most expand_increase
+ * above the first's, or when it found fewer than expand_min photons
+ * ("Adaptive Search Radius").  R is given by radius, or found: the
+ * median, over up to 1000 stored photons spread through the map, of
+ * the distance to the gather_max-th nearest photon, times the radius
+ * multiplier.
+ */
+#include "trace/photons.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/context.h"
+#include "scene/texture.h"
+#include "trace/bvh.h"
+#include "trace/lights.h"
+#include "trace/render.h"
+#include "trace/shade.h"
+
+/* One stored photon; axis is its kd-tree node's split axis. */
+typedef struct photon {
+  float p[3];
+  float power[3];
+  float dir[3]; /* direction of travel, unit */
+  uint8_t axis;
+} photon;
+
+typedef struct zr_photon_map zr_photon_map;
+struct zr_photon_map {
+  photon *v;
+  size_t n, cap;
+  double radius; /* gather radius R */
+  int gather_min, gather_max, expand_min;
+  double expand_increase;
+};
+
+/* The most photons one map holds (44 bytes each: 1.4 GB); beyond it the
+   shooting stops with a warning. */
+#define PHOTONS_MAX ((size_t)1 << 25)
+/* How far the search radius grows when too few photons are found. */
+#define EXPAND_FACTOR 2.0
+#define EXPANSIONS 3
+
+static const double GOLDEN_ANGLE = 2.39996322972865332; /* pi (3 - sqrt 5) */
+
+/* ---- shooting ---- */
+
+typedef struct shooter {
+  const zr_scene *scene;
+  zr_photon_map *map;
+  zr_tracer tracer;
+  zr_render_stats stats;
+  const zr_light *light;
+  int max_level;
+  double bailout;
+  bool full; /* PHOTONS_MAX reached */
+  bool oom;
+} shooter;
+
+/* A uniform number in [0, 1) from light li, target ti, photon k and an
+   axis: the tracer's hash (lib/trace/render.c). */
+static double hash01(uint32_t li, uint32_t ti, size_t k, uint32_t axis) {
+  return zr__hash_uniform((uint32_t)k, (li << 20) ^ ti, axis);
+}
+
+/* Two unit vectors that make a right-handed frame with unit w. */
+static void frame(zr_vec3 w, zr_vec3 *u, zr_vec3 *v) {
+  zr_vec3 a = fabs(w.x) < 0.6 ? zr_v3(1, 0, 0) : zr_v3(0, 1, 0);
+  *u = zr_v3_norm(zr_v3_cross(a, w));
+  *v = zr_v3_cross(w, *u);
+}
+
+static void store(shooter *sh, zr_vec3 p, zr_vec3 d, zr_rgb power) {
+  zr_photon_map *m = sh->map;
+  if (m->n == m->cap) {
+    if (m->cap >= PHOTONS_MAX) {
+      sh->full = true;
+      return;
+    }
+    size_t cap = m->cap ? 2 * m->cap : 4096;
+    photon *v = realloc(m->v, cap * sizeof *v);
+    if (!v) {
+      sh->oom = true;
+      return;
+    }
+    m->v = v;
+    m->cap = cap;
+  }
+  photon *ph = &m->v[m->n++];
+  ph->p[0] = (float)p.x, ph->p[1] = (float)p.y, ph->p[2] = (float)p.z;
+  ph->power[0] = (float)power.r, ph->power[1] = (float)power.g;
+  ph->power[2] = (float)power.b;
+  ph->dir[0] = (float)d.x, ph->dir[1] = (float)d.y, ph->dir[2] = (float)d.z;
+  ph->axis = 0;
+}
+
+static double rgb_max3(zr_rgb c) { return fmax(c.r, fmax(c.g, c.b)); }
+
+/* The nearest surface a photon ray meets (no_image objects unseen). */
+static bool photon_hit(const shooter *sh, const zr_ray *ray, zr_hit *hit) {
+  double from = 0.0;
+  for (int guard = 0; guard < 64; guard++) {
+    if (!zr__bvh_nearest(sh->scene->bvh, ray, from, INFINITY, hit))
+      return false;
+    if (!hit->object->no_image)
+      return true;
+    from = nextafter(hit->t, INFINITY);
+  }
+  return false;
+}
+
+/*
+ * Follows one photon from origin along unit dir.  power is what it
+ * carries per unit of flux (the light's colour times the filters met so
+ * far), flux the solid angle (point light: times D^2 when stored) or the
+ * area (parallel light) it stands for, path the distance it travelled,
+ * bounced whether it was reflected or refracted, level its depth.
+ */
+static void follow(shooter *sh, zr_vec3 origin, zr_vec3 dir, zr_rgb power,
+                   double flux, bool parallel, double path, bool bounced,
+                   int level, const zr_media *media) {
+  const zr_light *light = sh->light;
+  for (int passes = 0; passes < ZR_PASS_MAX; passes++) {
+    zr_ray ray = {origin, dir};
+    zr_hit hit;
+    if (!photon_hit(sh, &ray, &hit))
+      return;
+    const zr_object *o = hit.object;
+    const zr_photon_object *po = o->photons;
+    zr_vec3 p = zr_v3_madd(origin, dir, hit.t);
+    double d_total = path + hit.t;
+    if (media && media->n > 0)
+      power = zr__interior_fade(media, hit.t, power);
+    bool pass = po ? po->pass_through : o->no_shadow;
+    if (pass && !bounced) {
+      origin = zr_v3_madd(p, dir, zr__surface_offset(p));
+      path = d_total;
+      continue;
+    }
+    if (bounced && (!po || po->collect)) {
+      double area = parallel ? flux : flux * d_total * d_total;
+      double k = area * zr__light_fade(light, d_total);
+      store(sh, p, dir, zr_rgb_scale(power, k));
+      if (sh->full || sh->oom)
+        return;
+    }
+    if (!po || level >= sh->max_level)
+      return;
+    bool refracts = po->refraction && light->photon_refraction;
+    bool reflects = po->reflection && light->photon_reflection;
+    if (!refracts && !reflects)
+      return;
+    /* The surface as the shader sees it: normal facing the photon,
+       perturbed by normal { }, the pigment and finish there. */
+    bool entering = zr_v3_dot(hit.normal, dir) < 0.0;
+    zr_vec3 ng = entering ? hit.normal : zr_v3_neg(hit.normal);
+    const zr_texture *tx = o->texture;
+    if (!entering && o->interior_texture)
+      tx = o->interior_texture;
+    if (tx->map) {
+      const zr_texture *second;
+      double t;
+      tx = zr__texture_pick_n(tx, p, ng, &second, &t);
+      if (second && t > 0.5)
+        tx = second;
+    }
+    zr_vec3 n = ng;
+    if (tx->normal) {
+      zr_vec3 np = zr__normal_perturb(tx->normal, p, hit.normal);
+      n = entering ? np : zr_v3_neg(np);
+    }
+    zr_colour col = zr__pigment_eval_n(tx->pigment, p, n);
+    const zr_finish *f = tx->finish;
+    const zr_object *solid = o->solid ? o->solid : o;
+    zr_media next;
+    if (zr__has_inside(solid))
+      zr__media_change(media, solid, entering, &next);
+    else if (media)
+      next = *media;
+    else
+      next.n = next.passes = 0;
+    double n1 = zr__media_ior(media), n2 = zr__media_ior(&next);
+    zr_rgb refl = reflects ? zr__reflection_amount(f, col, dir, n, n1, n2)
+                           : zr_rgb3(0, 0, 0);
+    zr_rgb trans = zr_rgb3(0, 0, 0);
+    if (refracts)
+      trans = zr_rgb3(col.f * col.r + col.t, col.f * col.g + col.t,
+                      col.f * col.b + col.t);
+    if (f->conserve_energy)
+      trans = zr_rgb3(trans.r * (1.0 - refl.r), trans.g * (1.0 - refl.g),
+                      trans.b * (1.0 - refl.b));
+    double off = zr__surface_offset(p);
+    zr_vec3 mirror = zr__reflect(dir, n);
+    zr_vec3 above = zr_v3_madd(p, ng, off), below = zr_v3_madd(p, ng, -off);
+    if (rgb_max3(trans) > 0.0) {
+      zr_vec3 refr = dir;
+      if (n1 != n2 && !zr__refract(dir, n, n1 / n2, &refr)) {
+        /* Total internal reflection: the light stays inside. */
+        zr_rgb w = zr_rgb_mul(power, trans);
+        if (rgb_max3(w) > sh->bailout)
+          follow(sh, above, mirror, w, flux, parallel, d_total, true,
+                 level + 1, media);
+      } else {
+        zr_rgb w = zr_rgb_mul(power, trans);
+        if (rgb_max3(w) > sh->bailout)
+          follow(sh, below, refr, w, flux, parallel, d_total, true,
+                 level + 1, &next);
+      }
+    }
+    if (rgb_max3(refl) > 0.0) {
+      zr_rgb w = zr_rgb_mul(power, refl);
+      if (rgb_max3(w) > sh->bailout)
+        follow(sh, above, mirror, w, flux, parallel, d_total, true,
+               level + 1, media);
+    }
+    return;
+  }
+}
+
+/* The sphere about a target primitive's box; false when unbounded. */
+static bool target_sphere(const zr_object *o, zr_vec3 *c, double *r) {
+  zr_vec3 lo, hi;
+  if (!zr__object_bounds(o, &lo, &hi))
+    return false;
+  *c = zr_v3_scale(zr_v3_add(lo, hi), 0.5);
+  *r = 0.5 * zr_v3_len(zr_v3_sub(hi, lo));
+  return isfinite(*r) && *r > 0.0;
+}
+
+static bool shoots(const zr_light *l) {
+  return l->photon_refraction || l->photon_reflection;
+}
+
+static bool is_target(const zr_object *o) {
+  return o->photons && o->photons->target && !o->no_image;
+}
+
+/* A light's rays are parallel (parallel lights and cylinder lights). */
+static bool light_parallel(const zr_light *l) {
+  return l->parallel || l->kind == ZR_LIGHT_CYLINDER;
+}
+
+/* The measure a (light, target) pair's lattice covers, in units of
+   spacing^2 at spacing multiplier 1: solid angle times distance^2, or
+   the disc's area. */
+static double pair_measure(const zr_light *l, zr_vec3 c, double r,
+                           double mult) {
+  if (light_parallel(l))
+    return M_PI * r * r / (mult * mult);
+  double d = zr_v3_len(zr_v3_sub(c, l->location));
+  double cos_a = d > r ? sqrt(1.0 - (r / d) * (r / d)) : -1.0;
+  double scale = fmax(d, r);
+  return 2.0 * M_PI * (1.0 - cos_a) * scale * scale / (mult * mult);
+}
+
+static void shoot_pair(shooter *sh, uint32_t li, uint32_t ti, zr_vec3 c,
+                       double r, double spacing) {
+  const zr_light *l = sh->light;
+  const zr_photon_settings *ps = &sh->scene->settings.photons;
+  zr_rgb colour = l->colour;
+  if (light_parallel(l)) {
+    zr_vec3 w = zr_v3_sub(l->point_at, l->location);
+    if (!(zr_v3_len(w) > 0.0))
+      return;
+    w = zr_v3_norm(w);
+    zr_vec3 e1, e2;
+    frame(w, &e1, &e2);
+    double cell = spacing * spacing;
+    double n_real = M_PI * r * r / cell;
+    size_t n = n_real < 1.0 ? 1 : (size_t)ceil(n_real);
+    for (size_t k = 0; k < n && !sh->full && !sh->oom; k++) {
+      double rr = r * sqrt((k + 0.5) / (double)n);
+      double phi = k * GOLDEN_ANGLE;
+      double jx = ps->jitter * spacing * (hash01(li, ti, k, 0) - 0.5);
+      double jy = ps->jitter * spacing * (hash01(li, ti, k, 1) - 0.5);
+      zr_vec3 q = zr_v3_madd(zr_v3_madd(c, e1, rr * cos(phi) + jx), e2,
+                             rr * sin(phi) + jy);
+      /* From the light's plane (the plane through location, across w):
+         what lies behind it gets no light. */
+      double back = zr_v3_dot(zr_v3_sub(q, l->location), w);
+      if (back <= 0.0)
+        continue;
+      zr_vec3 origin = zr_v3_madd(q, w, -back);
+      double cone = zr__light_cone(l, q);
+      if (!(cone > 0.0))
+        continue;
+      follow(sh, origin, w, zr_rgb_scale(colour, cone), cell, true, 0.0,
+             false, 0, NULL);
+    }
+    return;
+  }
+  zr_vec3 to = zr_v3_sub(c, l->location);
+  double d = zr_v3_len(to);
+  double cos_a = d > r ? sqrt(1.0 - (r / d) * (r / d)) : -1.0;
+  zr_vec3 w = d > 0.0 ? zr_v3_scale(to, 1.0 / d) : zr_v3(0, 0, 1);
+  zr_vec3 e1, e2;
+  frame(w, &e1, &e2);
+  double scale = fmax(d, r);
+  double omega = (spacing / scale) * (spacing / scale);
+  double n_real = 2.0 * M_PI * (1.0 - cos_a) / omega;
+  size_t n = n_real < 1.0 ? 1 : (size_t)ceil(n_real);
+  double cell = sqrt(omega);
+  for (size_t k = 0; k < n && !sh->full && !sh->oom; k++) {
+    double z = 1.0 - (1.0 - cos_a) * (k + 0.5) / (double)n;
+    double s = sqrt(fmax(0.0, 1.0 - z * z));
+    double phi = k * GOLDEN_ANGLE;
+    zr_vec3 dir = zr_v3_add(zr_v3_scale(w, z),
+                            zr_v3_add(zr_v3_scale(e1, s * cos(phi)),
+                                      zr_v3_scale(e2, s * sin(phi))));
+    if (ps->jitter > 0.0) {
+      zr_vec3 t1, t2;
+      frame(dir, &t1, &t2);
+      double jx = ps->jitter * cell * (hash01(li, ti, k, 0) - 0.5);
+      double jy = ps->jitter * cell * (hash01(li, ti, k, 1) - 0.5);
+      dir = zr_v3_norm(zr_v3_madd(zr_v3_madd(dir, t1, jx), t2, jy));
+    }
+    double cone = zr__light_cone(l, zr_v3_add(l->location, dir));
+    if (!(cone > 0.0))
+      continue;
+    follow(sh, l->location, dir, zr_rgb_scale(colour, cone), omega, false,
+           0.0, false, 0, NULL);
+  }
+}
+
+/* ---- the kd-tree ---- */
+
+static float coord(const photon *ph, int axis) { return ph->p[axis]; }
+
+/* Reorders v[lo, hi) so that v[k] holds the k-th smallest on axis. */
+static void select_kth(photon *v, size_t lo, size_t hi, size_t k, int axis) {
+  while (hi - lo > 1) {
+    float pivot = coord(&v[lo + (hi - lo) / 2], axis);
+    size_t i = lo, j = hi - 1;
+    while (i <= j) {
+      while (coord(&v[i], axis) < pivot)
+        i++;
+      while (coord(&v[j], axis) > pivot)
+        j--;
+      if (i <= j) {
+        photon t = v[i];
+        v[i] = v[j];
+        v[j] = t;
+        i++;
+        if (j == 0)
+          break;
+        j--;
+      }
+    }
+    if (k <= j)
+      hi = j + 1;
+    else if (k >= i)
+      lo = i;
+    else
+      return;
+  }
+}
+
+/* Node of [lo, hi) at its middle, split on the box's longest axis. */
+static void build_tree(photon *v, size_t lo, size_t hi) {
+  while (hi - lo > 1) {
+    float mn[3] = {INFINITY, INFINITY, INFINITY};
+    float mx[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (size_t i = lo; i < hi; i++)
+      for (int a = 0; a < 3; a++) {
+        mn[a] = fminf(mn[a], v[i].p[a]);
+        mx[a] = fmaxf(mx[a], v[i].p[a]);
+      }
+    int axis = 0;
+    for (int a = 1; a < 3; a++)
+      if (mx[a] - mn[a] > mx[axis] - mn[axis])
+        axis = a;
+    size_t mid = lo + (hi - lo) / 2;
+    select_kth(v, lo, hi, mid, axis);
+    v[mid].axis = (uint8_t)axis;
+    build_tree(v, lo, mid);
+    lo = mid + 1;
+  }
+}
+
+/* The gathered photons: a max-heap on distance^2 of at most cap. */
+typedef struct heap {
+  const photon **ph;
+  float *d2;
+  int n, cap;
+  float max_d2; /* search radius^2, shrinking once the heap is full */
+} heap;
+
+static void heap_push(heap *h, const photon *ph, float d2) {
+  if (h->n < h->cap) {
+    int i = h->n++;
+    while (i > 0 && h->d2[(i - 1) / 2] < d2) {
+      h->ph[i] = h->ph[(i - 1) / 2];
+      h->d2[i] = h->d2[(i - 1) / 2];
+      i = (i - 1) / 2;
+    }
+    h->ph[i] = ph;
+    h->d2[i] = d2;
+    if (h->n == h->cap)
+      h->max_d2 = h->d2[0];
+    return;
+  }
+  if (d2 >= h->d2[0])
+    return;
+  int i = 0;
+  for (;;) {
+    int c = 2 * i + 1;
+    if (c >= h->n)
+      break;
+    if (c + 1 < h->n && h->d2[c + 1] > h->d2[c])
+      c++;
+    if (h->d2[c] <= d2)
+      break;
+    h->ph[i] = h->ph[c];
+    h->d2[i] = h->d2[c];
+    i = c;
+  }
+  h->ph[i] = ph;
+  h->d2[i] = d2;
+  h->max_d2 = h->d2[0];
+}
+
+static void search(const photon *v, size_t lo, size_t hi, const float q[3],
+                   const float n[3], heap *h) {
+  while (hi > lo) {
+    size_t mid = lo + (hi - lo) / 2;
+    const photon *ph = &v[mid];
+    int axis = ph->axis;
+    float delta = q[axis] - ph->p[axis];
+    float dx = q[0] - ph->p[0], dy = q[1] - ph->p[1], dz = q[2] - ph->p[2];
+    float d2 = dx * dx + dy * dy + dz * dz;
+    if (d2 < h->max_d2 &&
+        (!n || ph->dir[0] * n[0] + ph->dir[1] * n[1] + ph->dir[2] * n[2] <
+                   0.0f))
+      heap_push(h, ph, d2);
+    if (hi - lo == 1)
+      return;
+    size_t near_lo = delta < 0 ? lo : mid + 1;
+    size_t near_hi = delta < 0 ? mid : hi;
+    size_t far_lo = delta < 0 ? mid + 1 : lo;
+    size_t far_hi = delta < 0 ? hi : mid;
+    search(v, near_lo, near_hi, q, n, h);
+    if (delta * delta >= h->max_d2)
+      return;
+    lo = far_lo, hi = far_hi;
+  }
+}
+
+/* Gathers up to cap photons within r of q arriving against n (NULL:
+   any); returns how many, with their heap in h. */
+static int gather(const zr_photon_map *m, const float q[3], const float *n,
+                  double r, int cap, const photon **ph, float *d2, heap *h) {
+  h->ph = ph;
+  h->d2 = d2;
+  h->n = 0;
+  h->cap = cap;
+  h->max_d2 = (float)(r * r);
+  search(m->v, 0, m->n, q, n, h);
+  return h->n;
+}
+
+/* The median distance to the gather_max-th nearest photon, over up to
+   1000 photons spread through the map. */
+static double found_radius(const zr_photon_map *m) {
+  size_t samples = m->n < 1000 ? m->n : 1000;
+  int k = m->gather_max + 1; /* the photon itself is found too */
+  const photon **ph = malloc((size_t)k * sizeof *ph);
+  float *d2 = malloc((size_t)k * sizeof *d2);
+  double *dist = malloc(samples * sizeof *dist);
+  double r = 0.0;
+  if (ph && d2 && dist) {
+    size_t got = 0;
+    for (size_t i = 0; i < samples; i++) {
+      const photon *s = &m->v[i * m->n / samples];
+      heap h;
+      if (gather(m, s->p, NULL, INFINITY, k, ph, d2, &h) == k)
+        dist[got++] = sqrt(h.d2[0]);
+    }
+    if (got > 0) {
+      /* The median, by sorting (got is at most 1000). */
+      for (size_t i = 1; i < got; i++) {
+        double x = dist[i];
+        size_t j = i;
+        for (; j > 0 && dist[j - 1] > x; j--)
+          dist[j] = dist[j - 1];
+        dist[j] = x;
+      }
+      r = dist[got / 2];
+    }
+  }
+  free(ph);
+  free(d2);
+  free(dist);
+  return r;
+}
+
+/* ---- the map ---- */
+
+zr_status zr__photons_build(zr_scene *scene, zr_context *ctx) {
+  const zr_photon_settings *ps = &scene->settings.photons;
+  if (!ps->on || scene->photons)
+    return ZR_OK;
+  zr_photon_map *m = calloc(1, sizeof *m);
+  if (!m)
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL,
+                    "out of memory for the photon map");
+  m->gather_min = ps->gather_min > 0 ? ps->gather_min : 20;
+  m->gather_max = ps->gather_max >= m->gather_min ? ps->gather_max
+                                                  : m->gather_min;
+  m->expand_min = ps->expand_min;
+  m->expand_increase = ps->expand_increase;
+  shooter sh;
+  memset(&sh, 0, sizeof sh);
+  sh.scene = scene;
+  sh.map = m;
+  sh.tracer.scene = scene;
+  sh.tracer.stats = &sh.stats;
+  sh.max_level = ps->max_trace_level > 0 ? ps->max_trace_level
+                                         : scene->settings.max_trace_level;
+  sh.bailout = ps->adc_bailout >= 0.0 ? ps->adc_bailout
+                                      : scene->settings.adc_bailout;
+  /* One spacing for every target when count is given: the lattices'
+     measures (in spacing^2) add up to about count photons. */
+  double spacing = ps->spacing;
+  if (!(spacing > 0.0)) {
+    double total = 0.0;
+    for (size_t li = 0; li < scene->n_lights; li++) {
+      const zr_light *l = &scene->lights[li];
+      if (!shoots(l))
+        continue;
+      for (size_t ti = 0; ti < scene->n_primitives; ti++) {
+        const zr_object *o = scene->primitives[ti];
+        zr_vec3 c;
+        double r;
+        if (is_target(o) && target_sphere(o, &c, &r))
+          total += pair_measure(l, c, r, o->photons->spacing);
+      }
+    }
+    if (!(total > 0.0) || !(ps->count > 0.0)) {
+      free(m);
+      return ZR_OK;
+    }
+    spacing = sqrt(total / ps->count);
+  }
+  for (size_t li = 0; li < scene->n_lights && !sh.full && !sh.oom; li++) {
+    const zr_light *l = &scene->lights[li];
+    if (!shoots(l))
+      continue;
+    sh.light = l;
+    for (size_t ti = 0; ti < scene->n_primitives && !sh.full && !sh.oom;
+         ti++) {
+      const zr_object *o = scene->primitives[ti];
+      zr_vec3 c;
+      double r;
+      if (!is_target(o) || !target_sphere(o, &c, &r))
+        continue;
+      shoot_pair(&sh, (uint32_t)li, (uint32_t)ti, c, r,
+                 spacing * o->photons->spacing);
+    }
+  }
+  if (sh.oom) {
+    free(m->v);
+    free(m);
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL,
+                    "out of memory for the photon map");
+  }
+  if (sh.full)
+    zr__diag(ctx, ZR_DIAG_WARNING, ZR_OK, NULL,
+             "photons: the map is full at %zu photons; the rest were not "
+             "shot (raise spacing or lower count)",
+             m->n);
+  if (m->n == 0) {
+    free(m->v);
+    free(m);
+    return ZR_OK;
+  }
+  build_tree(m->v, 0, m->n);
+  m->radius = ps->radius > 0.0 ? ps->radius : found_radius(m);
+  m->radius *= ps->radius_multiplier > 0.0 ? ps->radius_multiplier : 1.0;
+  if (!(m->radius > 0.0)) {
+    free(m->v);
+    free(m);
+    return ZR_OK;
+  }
+  scene->photons = m;
+  return ZR_OK;
+}
+
+void zr__photons_free(zr_photon_map *map) {
+  if (!map)
+    return;
+  free(map->v);
+  free(map);
+}
+
+size_t zr__photons_stored(const zr_photon_map *map) {
+  return map ? map->n : 0;
+}
+
+double zr__photons_radius(const zr_photon_map *map) {
+  return map ? map->radius : 0.0;
+}
+
+/* The density estimate of the heap's photons over a disc of radius r. */
+static zr_rgb estimate(const heap *h, zr_vec3 n, double brilliance,
+                       double r) {
+  zr_rgb sum = zr_rgb3(0, 0, 0);
+  for (int i = 0; i < h->n; i++) {
+    const photon *ph = h->ph[i];
+    double w = 1.0;
+    if (brilliance != 1.0) {
+      double c = -(ph->dir[0] * n.x + ph->dir[1] * n.y + ph->dir[2] * n.z);
+      w = c > 0.0 ? pow(c, brilliance - 1.0) : 0.0;
+    }
+    sum.r += w * ph->power[0];
+    sum.g += w * ph->power[1];
+    sum.b += w * ph->power[2];
+  }
+  return zr_rgb_scale(sum, 1.0 / (M_PI * r * r));
+}
+
+zr_rgb zr__photons_gather(const zr_photon_map *m, zr_vec3 p, zr_vec3 n,
+                          double brilliance) {
+  if (!m || m->n == 0)
+    return zr_rgb3(0, 0, 0);
+  enum { STACK = 256 };
+  const photon *ph_stack[STACK];
+  float d2_stack[STACK];
+  const photon **ph = ph_stack;
+  float *d2 = d2_stack;
+  int cap = m->gather_max;
+  if (cap > STACK) {
+    ph = malloc((size_t)cap * sizeof *ph);
+    d2 = malloc((size_t)cap * sizeof *d2);
+    if (!ph || !d2) {
+      free(ph == ph_stack ? NULL : ph);
+      free(d2 == d2_stack ? NULL : d2);
+      return zr_rgb3(0, 0, 0);
+    }
+  }
+  float q[3] = {(float)p.x, (float)p.y, (float)p.z};
+  float nf[3] = {(float)n.x, (float)n.y, (float)n.z};
+  heap h;
+  double r = m->radius;
+  int found = gather(m, q, nf, r, cap, ph, d2, &h);
+  double r_used = found == cap ? sqrt(h.max_d2) : r;
+  zr_rgb e = found > 0 ? estimate(&h, n, brilliance, r_used)
+                       : zr_rgb3(0, 0, 0);
+  /* Too few: search again at EXPAND_FACTOR times the radius, up to
+     EXPANSIONS times, while the new search is not rejected. */
+  for (int x = 0; x < EXPANSIONS && found < m->gather_min; x++) {
+    r *= EXPAND_FACTOR;
+    heap h2;
+    int found2 = gather(m, q, nf, r, cap, ph, d2, &h2);
+    if (found2 <= found)
+      continue;
+    double r2_used = found2 == cap ? sqrt(h2.max_d2) : r;
+    zr_rgb e2 = estimate(&h2, n, brilliance, r2_used);
+    if (found2 >= m->expand_min &&
+        rgb_max3(e2) > rgb_max3(e) * (1.0 + m->expand_increase))
+      break; /* the wider search sees a brighter region: keep ours */
+    e = e2;
+    found = found2;
+  }
+  if (ph != ph_stack) {
+    free(ph);
+    free(d2);
+  }
+  return e;
+}
