@@ -374,9 +374,7 @@ static int set_sampling(const arg_ctx *c, const char *value) {
   long method;
   if (!parse_int(value, 1, 2, &method))
     return fail(c, "'%s': the sampling method must be 1 or 2", c->what);
-  if (method == 2)
-    return fail(c, "'%s': recursive antialiasing (method 2) is not "
-                   "supported; method 1 is used", c->what);
+  c->o->params.aa_method = (int)method;
   return 0;
 }
 

@@ -619,6 +619,12 @@ typedef struct zr_render_params {
      diffuse light arriving at each surface, from the sky too; with a
      radiosity solution, a sky-only cache adds the sky's light. */
   const zr_gi_cache *gi_cache;
+  /* +AM: the antialiasing method.  1 (default): a pixel that differs
+     from a neighbour gets an aa_depth x aa_depth grid of samples.  2:
+     every pixel is the mean of its four corners, and a square whose
+     corners differ by more than aa_threshold is split into four, down
+     to aa_depth levels ((2^aa_depth + 1)^2 samples at most). */
+  int aa_method;
   /* Threads of zr_render_image() (0 or 1: the caller's alone; default
      1; the pretrace takes zr_gi_params.threads), started per call; the
      image is the same bytes for any number.  zr_render_pixels() runs

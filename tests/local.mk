@@ -142,6 +142,10 @@ EXTRA_DIST += tests/test_caustics.sh tests/caustics_check.pov \
 # Photon mapping: the power law, lights without photons, povray's picture.
 TESTS += tests/test_photons.sh
 EXTRA_DIST += tests/test_photons.sh tests/photons_check.pov
+
+# +AM2, the recursive antialiasing method, against povray's.
+TESTS += tests/test_aa_method.sh
+EXTRA_DIST += tests/test_aa_method.sh tests/am2_check.pov
 # The public API's contracts (issue 14): threads in zr_render_image,
 # progress and cancel in every phase, parameter sizes, diagnostic spans;
 # linked with the shared library, so it sees exported symbols only.

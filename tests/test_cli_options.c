@@ -263,8 +263,8 @@ static void test_cli_options_unknown_and_unsupported(void **state) {
                "supported", "+FN12");
   EXPECT_ERROR("zrcube: '+FP16': PPM files are written with 8 bits per "
                "colour", "+FP16");
-  EXPECT_ERROR("zrcube: '+AM2': recursive antialiasing (method 2) is not "
-               "supported; method 1 is used", "+AM2");
+  EXPECT_ERROR("zrcube: '+AM3': the sampling method must be 1 or 2",
+               "+AM3");
   EXPECT_ERROR("zrcube: '+AG2.2': the antialiasing gamma (+AG) is not "
                "supported", "+AG2.2");
   EXPECT_ERROR("zrcube: '+O-': writing the image to standard output is not "

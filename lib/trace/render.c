@@ -58,6 +58,7 @@ ZR_API void zr_render_params_init(zr_render_params *p) {
   p->radiosity = NULL;
   p->radiosity_only = 0;
   p->gi_cache = NULL;
+  p->aa_method = 1;
   p->threads = 1;
   p->context = NULL;
 }
@@ -306,6 +307,85 @@ static zr_rgb supersample(const pixel_job *job, const zr_render_params *p,
   return zr_rgb_scale(sum, 1.0 / (n * n + 1));
 }
 
+/*
+ * +AM2 ("Anti-Aliasing Options": adaptive and recursive): the mean of the
+ * square's four corner samples, or, when two corners differ by more than
+ * the threshold and levels remain, the mean of its four quarters done
+ * the same way.  Corners are traced anew for each square (the manual's
+ * cache of shared corners changes the cost, not the result); jitter
+ * moves every sample but the pixel's corners by up to half the square.
+ */
+typedef struct aa_square {
+  const pixel_job *job;
+  const zr_render_params *p;
+  uint32_t pixel;
+  uint32_t samples;
+  double exponent;
+} aa_square;
+
+static zr_rgb corner(aa_square *q, double x, double y, double size,
+                     bool pixel_corner) {
+  const zr_render_params *p = q->p;
+  if (p->jitter && !pixel_corner) {
+    uint32_t k = q->samples;
+    x += (zr__hash_uniform(q->pixel, k, 0) - 0.5) * p->jitter_amount * size;
+    y += (zr__hash_uniform(q->pixel, k, 1) - 0.5) * p->jitter_amount * size;
+  }
+  q->samples++;
+  zr_rgb c;
+  trace_point(q->job, p, x, y, &c);
+  return c;
+}
+
+static zr_rgb recursive_square(aa_square *q, double x, double y,
+                               double size, int level, const zr_rgb c[4]) {
+  float f[4][3];
+  for (int i = 0; i < 4; i++)
+    f[i][0] = (float)c[i].r, f[i][1] = (float)c[i].g, f[i][2] = (float)c[i].b;
+  bool split = false;
+  for (int i = 0; i < 4 && !split; i++)
+    for (int j = i + 1; j < 4 && !split; j++)
+      split = zr__colour_difference(f[i], f[j], q->exponent) >
+              q->p->aa_threshold;
+  if (!split || level >= q->p->aa_depth) {
+    zr_rgb sum = zr_rgb_add(zr_rgb_add(c[0], c[1]), zr_rgb_add(c[2], c[3]));
+    return zr_rgb_scale(sum, 0.25);
+  }
+  /* The five new points: the edges' middles and the centre. */
+  double h = 0.5 * size;
+  zr_rgb top = corner(q, x + h, y, h, false);
+  zr_rgb left = corner(q, x, y + h, h, false);
+  zr_rgb mid = corner(q, x + h, y + h, h, false);
+  zr_rgb right = corner(q, x + size, y + h, h, false);
+  zr_rgb bottom = corner(q, x + h, y + size, h, false);
+  zr_rgb q0[4] = {c[0], top, left, mid};
+  zr_rgb q1[4] = {top, c[1], mid, right};
+  zr_rgb q2[4] = {left, mid, c[2], bottom};
+  zr_rgb q3[4] = {mid, right, bottom, c[3]};
+  zr_rgb sum = recursive_square(q, x, y, h, level + 1, q0);
+  sum = zr_rgb_add(sum, recursive_square(q, x + h, y, h, level + 1, q1));
+  sum = zr_rgb_add(sum, recursive_square(q, x, y + h, h, level + 1, q2));
+  sum = zr_rgb_add(sum,
+                   recursive_square(q, x + h, y + h, h, level + 1, q3));
+  return zr_rgb_scale(sum, 0.25);
+}
+
+static zr_rgb supersample_recursive(const pixel_job *job,
+                                    const zr_render_params *p,
+                                    uint32_t pixel, int x, int y,
+                                    double exponent) {
+  aa_square q = {job, p, pixel, 0, exponent};
+  zr_rgb c[4] = {corner(&q, x, y, 1.0, true), corner(&q, x + 1, y, 1.0, true),
+                 corner(&q, x, y + 1, 1.0, true),
+                 corner(&q, x + 1, y + 1, 1.0, true)};
+  zr_rgb v = recursive_square(&q, x, y, 1.0, 0, c);
+  const zr_tracer *tr = &job->tracer;
+  tr->stats->supersample_rays += q.samples;
+  if (q.samples > 4)
+    tr->stats->supersampled_pixels++;
+  return v;
+}
+
 /* Whether the parameters can render scene: ZR_OK, or the status with
    why in *what. */
 static zr_status check_params(const zr_scene *scene,
@@ -319,6 +399,8 @@ static zr_status check_params(const zr_scene *scene,
   else if (p->antialias && (p->aa_depth < 1 || p->aa_depth > 9 ||
                             !(p->aa_threshold >= 0.0)))
     *what = "antialiasing needs a depth of 1 to 9 and a threshold >= 0";
+  else if (p->aa_method != 1 && p->aa_method != 2)
+    *what = "the antialiasing method must be 1 or 2";
   else if (p->threads < 0)
     *what = "threads must be >= 0";
   /* A solution holds object addresses of the scene it was solved for. */
@@ -410,6 +492,8 @@ static zr_status render_pixels(const zr_scene *scene,
       trace_point(&job, params, x + 0.5, y + 0.5, &c);
       local.camera_rays++;
       store(out, c);
+    } else if (params->antialias && params->aa_method == 2) {
+      store(out, supersample_recursive(&job, params, pixel, x, y, exponent));
     } else if (params->antialias &&
                needs_supersampling(params, centres, x, y, exponent)) {
       store(out, supersample(&job, params, centres + 3 * (size_t)pixel,
