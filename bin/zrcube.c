@@ -35,6 +35,7 @@
 #include <errno.h>
 #include <stdarg.h>
 #include <fcntl.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -49,6 +50,54 @@
 
 enum { EXIT_SCENE = 1, EXIT_USAGE = 2 };
 
+/*
+ * Ctrl-C and SIGTERM in a run without mpirun: the handler cancels the
+ * context (zr_context_cancel is safe in a handler), the phase running
+ * stops within a row or a sweep, everything is freed and nothing is
+ * written, and main raises the signal again so the exit status still
+ * says what ended the run.  Under mpirun the launcher owns the signals.
+ */
+static zr_context *volatile signal_ctx;
+static volatile sig_atomic_t signal_caught;
+
+static void on_signal(int sig) {
+  signal_caught = sig;
+  if (signal_ctx)
+    zr_context_cancel(signal_ctx, 1);
+}
+
+static void catch_signals(zr_context *ctx) {
+  signal_ctx = ctx;
+  struct sigaction sa;
+  memset(&sa, 0, sizeof sa);
+  sa.sa_handler = on_signal;
+  sigemptyset(&sa.sa_mask);
+  int sigs[] = {SIGINT, SIGTERM};
+  for (int i = 0; i < 2; i++) {
+    struct sigaction old;
+    /* A signal the shell set to be ignored (a job started with &) stays
+       ignored, as it would without the handler. */
+    if (sigaction(sigs[i], NULL, &old) == 0 && old.sa_handler != SIG_IGN)
+      sigaction(sigs[i], &sa, NULL);
+  }
+}
+
+/*
+ * The progress line (rank 0): on a terminal one line that each phase
+ * (parse, radiosity or pretrace, render) overwrites with its percent,
+ * elapsed time and what is left, as POV-Ray's "Rendered N of M pixels";
+ * with +V and stderr not a terminal, a plain line at every tenth of a
+ * phase instead; otherwise nothing.
+ */
+typedef struct progress_state {
+  int mode;          /* 0 none, 1 terminal line, 2 plain lines (+V) */
+  int line_open;     /* the terminal line holds text */
+  int phase;         /* the phase shown, -1 before the first */
+  double phase_start;
+  double last_print;
+  int last_tenth;    /* mode 2: the last tenth printed */
+} progress_state;
+
 /* What the diagnostics callback needs: who prints, and what it printed;
    and POV-Ray's text streams (+GD +GF +GR +GS +GW, reference 3.2.7):
    each shown on the console or not, and copied to a file or not. */
@@ -59,7 +108,17 @@ typedef struct diag_state {
   const int *console;  /* ZR_CLI_STREAMS flags */
   FILE **files;        /* ZR_CLI_STREAMS files, NULL: none */
   int last_stream;     /* where a note goes: with its message */
+  progress_state *progress; /* a message first clears its line */
 } diag_state;
+
+/* Clears the terminal's progress line so a message starts clean. */
+static void clear_progress_line(progress_state *p) {
+  if (p && p->line_open) {
+    fputs("\r\033[K", stderr);
+    p->line_open = 0;
+  }
+}
+
 
 /* Text of one stream: to the console unless turned off, and to the
    stream's file.  Warnings also keep --quiet's meaning. */
@@ -68,8 +127,10 @@ static void emit(diag_state *st, int stream, const char *text) {
   int console = !st->console || st->console[stream];
   if (stream == ZR_CLI_STREAM_WARNING && st->quiet)
     console = 0;
-  if (console)
+  if (console) {
+    clear_progress_line(st->progress);
     fputs(text, stderr);
+  }
   if (st->files && st->files[stream]) {
     fputs(text, st->files[stream]);
     fflush(st->files[stream]);
@@ -112,21 +173,80 @@ static void print_diag(const zr_diag *d, void *user) {
     st->errors_printed++;
 }
 
-/* The progress line: rank 0, on a terminal, when the percentage moves. */
-typedef struct progress_state {
-  int last_percent;
-} progress_state;
+static const char *const phase_names[] = {"parse", "radiosity", "pretrace",
+                                           "render"};
+static const char *const phase_units[] = {"tokens", "rounds", "pixels",
+                                          "rows"};
 
-static void print_progress(size_t done, size_t total, void *user) {
-  progress_state *p = user;
-  int percent = total ? (int)(100 * done / total) : 100;
-  if (percent > 100)
-    percent = 100; /* the count of rows to do is an estimate */
-  if (percent == p->last_percent)
+/* A duration as POV-Ray's line shows it: seconds, or minutes and
+   seconds past a minute. */
+static const char *duration(double s, char *buf, size_t size) {
+  if (s < 60)
+    snprintf(buf, size, "%.1f s", s);
+  else
+    snprintf(buf, size, "%d min %02d s", (int)(s / 60), (int)s % 60);
+  return buf;
+}
+
+static void show_progress(progress_state *p, int phase, uint64_t done,
+                          uint64_t total) {
+  if (p->mode == 0)
     return;
-  p->last_percent = percent;
-  fprintf(stderr, "\rzrcube: rendering %3d%%", percent);
+  double now = zr__par_now();
+  if (phase != p->phase) {
+    p->phase = phase;
+    p->phase_start = now;
+    p->last_print = 0;
+    p->last_tenth = -1;
+  }
+  int finished = total && done >= total;
+  /* Ten updates a second are plenty for the eye. */
+  if (p->mode == 1 && !finished && now - p->last_print < 0.1)
+    return;
+  int tenth = total ? (int)(10 * done / total) : 0;
+  if (p->mode == 2 && (!total || tenth == p->last_tenth))
+    return;
+  p->last_print = now;
+  p->last_tenth = tenth;
+  double elapsed = now - p->phase_start;
+  char line[160], a[32], b[32];
+  if (!total) {
+    snprintf(line, sizeof line, "zrcube: %s: %llu %s, %s", phase_names[phase],
+             (unsigned long long)done, phase_units[phase],
+             duration(elapsed, a, sizeof a));
+  } else {
+    int percent = (int)(100 * done / total);
+    int n = snprintf(line, sizeof line, "zrcube: %s: %llu of %llu %s (%d%%), "
+                     "%s", phase_names[phase], (unsigned long long)done,
+                     (unsigned long long)total, phase_units[phase], percent,
+                     duration(elapsed, a, sizeof a));
+    /* What is left, once a second of work says how fast it goes. */
+    if (done > 0 && !finished && elapsed >= 1.0 && n > 0 &&
+        (size_t)n < sizeof line)
+      snprintf(line + n, sizeof line - (size_t)n, ", about %s left",
+               duration(elapsed * (double)(total - done) / (double)done, b,
+                        sizeof b));
+  }
+  if (p->mode == 1) {
+    fprintf(stderr, "\r%s\033[K", line);
+    p->line_open = 1;
+  } else {
+    fprintf(stderr, "%s\n", line);
+  }
   fflush(stderr);
+}
+
+/* The library's progress (parse, radiosity, pretrace); never cancels. */
+static int on_progress(const zr_progress *pr, void *user) {
+  show_progress(user, (int)pr->phase, pr->done, pr->total);
+  return 0;
+}
+
+/* lib/par's rows of this rank. */
+static void on_rows(size_t done, size_t total, void *user) {
+  if (done > total)
+    done = total; /* the count of rows to do is an estimate (lib/par) */
+  show_progress(user, ZR_PHASE_RENDER, done, total);
 }
 
 /*
@@ -270,6 +390,7 @@ typedef struct run {
   /* This rank's CPU seconds in each phase (-v, bench/scale.sh). */
   double parse_cpu, gi_cpu, radiosity_cpu, render_cpu;
   zr_par_render render;
+  progress_state progress;
 } run;
 
 /* Steps 1: the command line on every rank.  Returns an exit status or -1
@@ -278,6 +399,7 @@ static int read_command_line(run *r, int argc, char **argv) {
   zr_render_params defaults;
   zr_render_params_init(&defaults);
   zr__cli_init(&r->opts, &defaults);
+  r->progress.phase = -1;
   char err[1024];
   /* POV-Ray for Unix reads its povray.ini before the command line. */
   int rc = zr__cli_read_povray_ini(&r->opts, err, sizeof err);
@@ -417,7 +539,16 @@ static zr_status make_context(run *r) {
     return s;
   r->diag.rank = r->rank;
   r->diag.quiet = r->opts.quiet;
+  r->diag.progress = &r->progress;
   zr_context_set_diag(r->ctx, print_diag, &r->diag);
+  /* Progress on rank 0: a line on a terminal, plain lines with +V. */
+  if (r->rank == 0 && !r->opts.quiet)
+    r->progress.mode = isatty(2) ? 1 : r->opts.verbose ? 2 : 0;
+  if (r->progress.mode)
+    zr_context_set_progress(r->ctx, on_progress, &r->progress);
+  /* The library's calls report through the context (the pretrace
+     takes the render's parameters). */
+  r->opts.params.context = r->ctx;
   /* Scenes read image_width and image_height while they are parsed. */
   zr_context_set_work_limit(r->ctx, r->opts.loop_limit);
   zr_context_set_file_limit(r->ctx, r->opts.file_limit);
@@ -444,6 +575,8 @@ static zr_status make_context(run *r) {
     s = zr_context_add_include_path(r->ctx, ZR_POVRAY_INCLUDE_DIR);
   if (s == ZR_OK)
     s = set_io_restrictions(r);
+  if (s == ZR_OK && !zr__par_uses_mpi(r->par))
+    catch_signals(r->ctx);
   return s;
 }
 
@@ -930,13 +1063,11 @@ static int render_and_write(run *r) {
   }
   if (zr__par_agree(r->par, s) != ZR_OK)
     return EXIT_SCENE;
-  progress_state progress = {-1};
-  int show_progress = r->rank == 0 && !r->opts.quiet && isatty(2);
   r->render.scene = r->scene;
   r->render.params = params;
   r->render.threads = r->threads;
-  r->render.progress = show_progress ? print_progress : NULL;
-  r->render.progress_user = &progress;
+  r->render.progress = r->progress.mode ? on_rows : NULL;
+  r->render.progress_user = &r->progress;
   r->render.image = r->image;
   r->render.row0 = r->row0;
   r->render.row1 = r->row1;
@@ -962,8 +1093,11 @@ static int render_and_write(run *r) {
   s = r->path ? render_path(r) : zr__par_render(r->par, &r->render);
   r->render_cpu = zr__par_cpu() - cpu;
   zr__state_free(&resume);
-  if (show_progress)
-    fputs(s == ZR_OK ? "\n" : "\r\033[K", stderr);
+  if (r->progress.line_open && s == ZR_OK) {
+    fputs("\n", stderr);
+    r->progress.line_open = 0;
+  }
+  clear_progress_line(&r->progress);
   if (s != ZR_OK) {
     if (r->rank == 0) {
       const char *why = zr_context_last_error(r->ctx);
@@ -1018,29 +1152,58 @@ static void print_rank_times(const run *r) {
           (unsigned long long)t.team_calls);
 }
 
-static void print_statistics(run *r) {
+/* A time as POV-Ray's statistics give it. */
+static void print_time(const char *label, double seconds) {
+  long whole = (long)seconds;
+  fprintf(stderr, "  %-18s%ld hours %2ld minutes %2ld seconds (%.3f seconds)\n",
+          label, whole / 3600, whole / 60 % 60, whole % 60, seconds);
+}
+
+/*
+ * +V: the statistics at the end, in the layout POV-Ray 3.7 prints them
+ * (measured: `povray +V` on a small scene; its per-shape intersection
+ * table and the counts zRcube does not keep are left out), with the
+ * ranks and threads of the run.
+ */
+static void print_statistics(const run *r) {
   const zr_render_stats *st = &r->render.stats;
   const zr_render_params *p = &r->opts.params;
   zr_scene_info info;
   zr_scene_get_info(r->scene, &info);
-  say(&r->diag, ZR_CLI_STREAM_STATISTICS,
-          "zrcube: %s: %zu objects (%zu primitives), %zu lights\n"
-          "zrcube: image %dx%d, antialiasing %s, %d rank%s x %d thread%s\n"
-          "zrcube: time: parse %.3f s, render %.3f s, write %.3f s\n"
-          "zrcube: rays: camera %llu, supersample %llu, reflected %llu, "
-          "refracted %llu, shadow %llu\n"
-          "zrcube: supersampled pixels: %llu\n",
-          r->opts.input, info.objects, info.primitives, info.lights,
-          p->width, p->height, p->antialias ? "on" : "off",
-          zr__par_size(r->par), zr__par_size(r->par) == 1 ? "" : "s",
-          r->threads, r->threads == 1 ? "" : "s", r->parse_seconds,
-          r->render.render_seconds, r->write_seconds,
-          (unsigned long long)st->camera_rays,
-          (unsigned long long)st->supersample_rays,
-          (unsigned long long)st->reflected_rays,
-          (unsigned long long)st->refracted_rays,
-          (unsigned long long)st->shadow_rays,
-          (unsigned long long)st->supersampled_pixels);
+  static const char rule[] = "-------------------------------------------"
+                             "---------------------------------";
+  unsigned long long pixels = st->camera_rays,
+                     samples = st->supersample_rays,
+                     rays = st->camera_rays + st->supersample_rays +
+                            st->reflected_rays + st->refracted_rays;
+  int ranks = zr__par_size(r->par);
+  fprintf(stderr, "%s\nParser Statistics\n%s\n", rule, rule);
+  fprintf(stderr, "%-18s%9zu\n%-18s%9zu\n%-18s%9zu\n%-18s%9zu\n",
+          "Finite Objects:", info.finite_primitives, "Infinite Objects:",
+          info.infinite_primitives, "Light Sources:", info.lights, "Total:",
+          info.finite_primitives + info.infinite_primitives + info.lights);
+  fprintf(stderr, "%s\nParser Time\n", rule);
+  print_time("Parse Time:", r->parse_seconds);
+  fprintf(stderr, "%s\nRender Statistics\nImage Resolution %d x %d\n%s\n",
+          rule, p->width, p->height, rule);
+  fprintf(stderr, "%-10s%14llu   %-10s%14llu   Smpls/Pxl: %.2f\n",
+          "Pixels:", pixels, "Samples:", samples,
+          pixels ? (double)samples / (double)pixels : 0.0);
+  fprintf(stderr, "%-10s%14llu   %-10s%14llu\n", "Rays:", rays,
+          "Supersampled pixels:", (unsigned long long)st->supersampled_pixels);
+  fprintf(stderr, "%s\n%-24s%10llu\n%-24s%10llu\n%-24s%10llu\n%s\n",
+          rule, "Shadow Ray Tests:", (unsigned long long)st->shadow_rays,
+          "Reflected Rays:", (unsigned long long)st->reflected_rays,
+          "Refracted Rays:", (unsigned long long)st->refracted_rays, rule);
+  fprintf(stderr, "Render Time:\n");
+  if (r->gi_method == ZR_GI_HIERARCHICAL || r->gi_method == ZR_GI_CACHE)
+    print_time("Radiosity Time:", r->radiosity_seconds + r->gi_seconds);
+  else
+    fprintf(stderr, "  %-18sNo radiosity\n", "Radiosity Time:");
+  print_time("Trace Time:", r->render.render_seconds);
+  fprintf(stderr, "              using %d rank%s x %d thread%s\n", ranks,
+          ranks == 1 ? "" : "s", r->threads, r->threads == 1 ? "" : "s");
+  print_time("Write Time:", r->write_seconds);
 }
 
 /* --parse-only: what the scene holds, on stdout, one "key: value" a
@@ -1066,6 +1229,7 @@ static void print_scene_info(const run *r) {
 
 /* Frees what one frame made. */
 static void end_frame(run *r) {
+  signal_ctx = NULL; /* the context goes: no signal may cancel it now */
   zr_image_free(r->image);
   zr_radiosity_free(r->rad);
   zr_gi_cache_free(r->gi);
@@ -1248,12 +1412,20 @@ int main(int argc, char **argv) {
       }
     }
   }
+  signal_ctx = NULL;
   end_frame(&r);
   close_streams(&r);
   free(r.still_path);
   free(r.frames);
   zr__cli_free(&r.opts);
+  clear_progress_line(&r.progress);
   zr__par_finalize(r.solo);
   zr__par_finalize(r.world);
+  if (signal_caught) {
+    /* Cancelled by a signal: end as the signal would have. */
+    int sig = signal_caught;
+    signal(sig, SIG_DFL);
+    raise(sig);
+  }
   return status;
 }

@@ -1,34 +1,59 @@
-/* render.c - the smallest program using libzrcube: parse a scene, render
- * it on this thread, write a PNG.
+/* render.c - a small program using libzrcube: parse a scene, render it
+ * with 4 threads, show progress, stop cleanly on Ctrl-C, write a PNG.
  *   cc render.c $(pkg-config --cflags --libs libzrcube) -o render
- *   ./render scene.pov out.png
+ *   ./render scene.pov out.png [stop-at-percent]
  */
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <zrcube.h>
+
+static zr_context *ctx; /* for the signal handler */
+
+static void on_interrupt(int sig) {
+  (void)sig;
+  zr_context_cancel(ctx, 1); /* safe in a signal handler */
+}
 
 static void print_diag(const zr_diag *d, void *user) {
   (void)user;
   fputs(d->text, stderr);
 }
 
+/* Called from the render's threads, one at a time; non-zero cancels. */
+static int print_progress(const zr_progress *p, void *user) {
+  int stop_at = *(int *)user;
+  if (p->total == 0)
+    return 0; /* the parse: tokens, no total */
+  int percent = (int)(100 * p->done / p->total);
+  fprintf(stderr, "\rphase %d: %3d%%", (int)p->phase, percent);
+  if (p->done == p->total)
+    fputc('\n', stderr);
+  return p->phase == ZR_PHASE_RENDER && percent >= stop_at;
+}
+
 int main(int argc, char **argv) {
-  if (argc != 3) {
-    fprintf(stderr, "usage: %s scene.pov out.png\n", argv[0]);
+  if (argc != 3 && argc != 4) {
+    fprintf(stderr, "usage: %s scene.pov out.png [stop-at-percent]\n",
+            argv[0]);
     return 2;
   }
-  zr_context *ctx = NULL;
+  int stop_at = argc == 4 ? atoi(argv[3]) : 101;
   zr_scene *scene = NULL;
   zr_image *image = NULL;
   zr_status s = zr_context_new(&ctx);
   if (s == ZR_OK) {
     zr_context_set_diag(ctx, print_diag, NULL);
+    zr_context_set_progress(ctx, print_progress, &stop_at);
+    signal(SIGINT, on_interrupt);
     s = zr_scene_parse_file(ctx, argv[1], &scene);
   }
   zr_render_params params;
   zr_render_params_init(&params);
   params.width = 160;
   params.height = 120;
+  params.threads = 4;    /* the same bytes as 1 thread */
+  params.context = ctx;  /* progress, cancel and diagnostics */
   if (s == ZR_OK)
     s = zr_image_new(params.width, params.height, &image);
   if (s == ZR_OK)
@@ -37,7 +62,8 @@ int main(int argc, char **argv) {
     s = zr_image_write(ctx, image, argv[2], ZR_FORMAT_AUTO,
                        zr_scene_assumed_gamma(scene));
   if (s != ZR_OK)
-    fprintf(stderr, "render: %s\n", zr_status_str(s));
+    fprintf(stderr, "\nrender: %s\n", zr_status_str(s));
+  signal(SIGINT, SIG_DFL);
   zr_image_free(image);
   zr_scene_free(scene);
   zr_context_free(ctx);

@@ -18,8 +18,25 @@
  *   2. when antialiasing is on, zr_render_pixels() with the complete image
  *      of centres from pass 1 supersamples the pixels that differ from
  *      their neighbours by more than the threshold.
- * zr_render_image() does both passes for a whole image on the calling
- * thread.
+ * zr_render_image() does both passes for a whole image with
+ * zr_render_params.threads threads.
+ *
+ * Threads, object by object:
+ *   zr_context   one thread at a time (set-up, then the calls that take
+ *                it); zr_context_cancel() from any thread at any time;
+ *                the diagnostics and progress callbacks are called from
+ *                the call's threads, never two at once.
+ *   zr_scene     immutable once parsed: any number of threads may render
+ *                it, solve radiosity for it and read its info at once.
+ *   zr_radiosity, zr_gi_cache  read-only once solved or pretraced: any
+ *                number of renders may share one; solve, pretrace, load
+ *                and free are one thread's.
+ *   zr_image     plain memory: one writer, or any number of readers.
+ *   parameter and stats structs  the caller's; the library reads
+ *                params during the call and adds to stats from the
+ *                calling thread only.
+ * Calls on different objects never share state: two scenes may be
+ * parsed and rendered at once on two contexts.
  */
 #ifndef ZRCUBE_H
 #define ZRCUBE_H
@@ -59,7 +76,8 @@ extern "C" {
   X(EMPI, -11, "message passing error")                                    \
   X(ETHREAD, -12, "thread error")                                          \
   X(EEXIST, -13, "file exists")                                           \
-  X(EACCESS, -14, "file refused by the I/O restrictions")
+  X(EACCESS, -14, "file refused by the I/O restrictions")                \
+  X(ECANCELLED, -15, "cancelled by the caller")
 
 typedef enum zr_status {
 #define ZR_STATUS_ENUM_(name, value, text) ZR_##name = value,
@@ -93,7 +111,12 @@ typedef enum zr_diag_level {
  * bytes that are not UTF-8 from the scene show as \xNN, an error's or
  * warning's message stops after 2048 bytes with "...", and a long source
  * line is quoted as a window of 70 columns each side of the caret.  All
- * pointers are valid only during the callback.
+ * pointers are valid only during the callback.  offset is the byte offset
+ * in file of line:column (0 when there is no place), length the number
+ * of bytes the message points at there (the token; 0 when unknown), so
+ * an editor can underline the span without counting columns itself.
+ * New members are only ever added at the end: the library allocates
+ * this struct, so a caller built against an older header reads a prefix.
  */
 typedef struct zr_diag {
   zr_diag_level level;
@@ -103,6 +126,8 @@ typedef struct zr_diag {
   int column;
   const char *message;
   const char *text;
+  size_t offset;
+  size_t length;
 } zr_diag;
 
 typedef void (*zr_diag_fn)(const zr_diag *diag, void *user);
@@ -295,6 +320,55 @@ ZR_API zr_status zr_context_set_png_level(zr_context *ctx, int level);
 /* The message of the last error reported through ctx ("" when none). */
 ZR_API const char *zr_context_last_error(const zr_context *ctx);
 
+/*
+ * Progress and cancel.  A long call (zr_scene_parse_file and _string,
+ * zr_radiosity_solve, zr_gi_cache_pretrace, zr_render_image) tells the
+ * context's progress callback how far it is, and stops with
+ * ZR_ECANCELLED, freeing what it made, when the callback returns
+ * non-zero or zr_context_cancel() was called.  Phases and their units:
+ *   ZR_PHASE_PARSE      tokens read and directive steps taken; total 0
+ *                       (not known in advance);
+ *   ZR_PHASE_RADIOSITY  refine-and-solve rounds done of the most there
+ *                       may be (the solve may end sooner), told again
+ *                       at every sweep (or 64th shot) of each round;
+ *   ZR_PHASE_PRETRACE   pixels of the irradiance cache's passes done of
+ *                       total;
+ *   ZR_PHASE_RENDER     rows rendered of total (both passes when
+ *                       antialiasing is on).
+ * The callback is called at most once per row, per pretrace batch, per
+ * solver sweep and per 4096 tokens or steps, from the calling thread
+ * or, with threads, from any of the call's threads but never two at
+ * once; it must not call back into the library on the same objects.  A
+ * call
+ * cancelled this way returns within one row of each of its threads (the
+ * render), one batch (the pretrace), one sweep (the solve) or 4096
+ * tokens (the parse).
+ */
+typedef enum zr_phase {
+  ZR_PHASE_PARSE = 0,
+  ZR_PHASE_RADIOSITY = 1,
+  ZR_PHASE_PRETRACE = 2,
+  ZR_PHASE_RENDER = 3
+} zr_phase;
+
+typedef struct zr_progress {
+  zr_phase phase;
+  uint64_t done;
+  uint64_t total; /* 0: not known in advance */
+} zr_progress;
+
+/* Returns 0 to go on, non-zero to cancel the call. */
+typedef int (*zr_progress_fn)(const zr_progress *progress, void *user);
+ZR_API void zr_context_set_progress(zr_context *ctx, zr_progress_fn fn,
+                                    void *user);
+/*
+ * cancel != 0 asks every call running with ctx to stop with
+ * ZR_ECANCELLED, and every later one to stop at once, until
+ * zr_context_cancel(ctx, 0).  Safe from any thread and from a signal
+ * handler (it stores one atomic flag).
+ */
+ZR_API void zr_context_cancel(zr_context *ctx, int cancel);
+
 /* ------------------------------------------------------------------ */
 /* Scenes                                                             */
 /* ------------------------------------------------------------------ */
@@ -367,7 +441,35 @@ typedef struct zr_team {
  */
 typedef struct zr_radiosity zr_radiosity;
 
+/* Which rule refines links (zr_radiosity_params.criterion). */
+typedef enum zr_rad_criterion {
+  ZR_RAD_CRITERION_BF = 0,   /* Hanrahan's B F A with the oracle factor */
+  ZR_RAD_CRITERION_ERROR = 1 /* the light a link may misplace */
+} zr_rad_criterion;
+
+/* How a ray hit reads the solution (zr_radiosity_params.lookup). */
+typedef enum zr_rad_lookup {
+  ZR_RAD_LOOKUP_GATHER = 0, /* final gather over the element's links */
+  ZR_RAD_LOOKUP_SMOOTH = 1  /* elements smoothed over their corners */
+} zr_rad_lookup;
+
+/* The solver (zr_radiosity_params.shooting). */
+typedef enum zr_rad_solver {
+  ZR_RAD_GATHERING = 0, /* Jacobi-style gathering sweeps */
+  ZR_RAD_SHOOTING = 1   /* progressive Southwell shooting */
+} zr_rad_solver;
+
+/*
+ * Parameter structs (zr_radiosity_params, zr_gi_params,
+ * zr_render_params) start with their size: the _init function sets it
+ * to sizeof the struct the caller was compiled with, and the library
+ * takes the members that size covers and its defaults for members added
+ * after it, so the structs can grow without breaking programs built
+ * against an older header.  A struct not made by its _init function
+ * (size 0) is refused with ZR_EINVAL.
+ */
 typedef struct zr_radiosity_params {
+  size_t size;          /* sizeof (zr_radiosity_params), set by _init */
   /* Refine a link while B_source * F * A_receiver (see criterion)
      exceeds bf_eps times the scene's reference power (largest
      channel): the power emitted plus the power light sources put on
@@ -388,26 +490,28 @@ typedef struct zr_radiosity_params {
   /* > 0: split every surface into 2^uniform x 2^uniform elements and
      do no refinement (links stay at the elements); default 0. */
   int uniform;
-  int shooting;         /* 1: progressive Southwell shooting; 0 gather */
-  /* 0 (default): Hanrahan's BF criterion, B_q F A_p with the oracle
-     factor.  1: an error estimate: the light a link may misplace
+  zr_rad_solver shooting; /* ZR_RAD_SHOOTING or ZR_RAD_GATHERING (0) */
+  /* ZR_RAD_CRITERION_BF (default): Hanrahan's BF criterion, B_q F A_p
+     with the oracle factor.  ZR_RAD_CRITERION_ERROR: an error
+     estimate: the light a link may misplace
      because its factor varies over the receiver (B_q dF A_p), its
      visibility is partial, or its source is uneven (per unit area);
      tighter per element, but many more links. */
-  int criterion;
+  zr_rad_criterion criterion;
   /* 1 (default, library and command line alike): emission leaves
      only the front side, along the outward normal (for a triangle
      (p1 - p0) x (p2 - p0)), so a lamp hung just under a ceiling does
      not pour light into the gap; 0: both sides, as POV-Ray shows an
      emitting surface from both. */
   int one_sided_emission;
-  /* How a ray hit reads the solution.  0 (default): a final gather at
+  /* How a ray hit reads the solution.  ZR_RAD_LOOKUP_GATHER (default):
+     a final gather at
      the hit point over the links its element and the element's
      ancestors gather from, each with the exact point-to-source form
-     factor, so the picture has no element seams; 1: the elements'
-     values smoothed over their corners (Gouraud), cheaper per pixel.
-     A saved solution keeps its links and its lookup. */
-  int lookup;
+     factor, so the picture has no element seams; ZR_RAD_LOOKUP_SMOOTH:
+     the elements' values smoothed over their corners (Gouraud), cheaper
+     per pixel.  A saved solution keeps its links and its lookup. */
+  zr_rad_lookup lookup;
   /* POV-Ray's radiosity { brightness }: scales the diffuse light the
      solution carries between surfaces where a ray reads it (not the
      surfaces' own emission, not the solve); default 1. */
@@ -510,6 +614,7 @@ ZR_API zr_gi_method zr_gi_choose(const zr_scene *scene, zr_gi_method asked,
  * and background light the scene through the rays that escape.
  */
 typedef struct zr_gi_params {
+  size_t size;           /* sizeof (zr_gi_params), set by _init */
   int count;             /* rays per new record; 35 */
   int recursion_limit;   /* diffuse bounces; 2 */
   int nearest_count;     /* records a pretrace point wants; 5 */
@@ -632,6 +737,7 @@ ZR_API size_t zr_path_emitters(const zr_path *path);
 #define ZR_IMAGE_MAX_PIXELS ((size_t)1 << 27)
 
 typedef struct zr_render_params {
+  size_t size;          /* sizeof (zr_render_params), set by _init */
   int width;            /* pixels; default 320 */
   int height;           /* pixels; default 240 */
   int antialias;        /* POV-Ray +A: 0 off (default), 1 on */
@@ -664,9 +770,19 @@ typedef struct zr_render_params {
   const zr_path *path;
   int path_samples;      /* default 16 */
   int path_first_sample; /* default 0 */
+  /* Threads of zr_render_image() (0 or 1: the caller's alone; default
+     1; the pretrace takes zr_gi_params.threads), started per call; the
+     image is the same bytes for any number.  zr_render_pixels() runs
+     on the calling thread whatever this says: a program with its own
+     threads or processes calls it from each. */
+  int threads;
+  /* Diagnostics, progress and cancel of the calls taking these
+     parameters (NULL: none, the default).  It must outlive the call. */
+  zr_context *context;
 } zr_render_params;
 
-/* Fills p with POV-Ray's defaults. */
+/* Fills p with POV-Ray's defaults (and the command line's: zrcube(1)
+   starts from them). */
 ZR_API void zr_render_params_init(zr_render_params *p);
 
 typedef struct zr_render_stats {
@@ -696,7 +812,12 @@ ZR_API zr_status zr_render_pixels(const zr_scene *scene,
                                   const float *centres, float *rgb,
                                   zr_render_stats *stats);
 
-/* Both passes over the whole image on the calling thread. */
+/*
+ * Both passes over the whole image (rgb: width * height * 3 floats),
+ * rows shared among params->threads threads (the caller's among them),
+ * with progress (ZR_PHASE_RENDER, rows) and cancel through
+ * params->context.  The image is the same bytes for any thread count.
+ */
 ZR_API zr_status zr_render_image(const zr_scene *scene,
                                  const zr_render_params *params, float *rgb,
                                  zr_render_stats *stats);

@@ -17,6 +17,11 @@ export OMPI_ALLOW_RUN_AS_ROOT OMPI_ALLOW_RUN_AS_ROOT_CONFIRM \
 POVINI=
 export POVINI
 MPI_ASAN="detect_leaks=0${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
+# configure --without-mpi: these scripts run ranks under mpirun.
+if [ "${ZR_WITH_MPI:-yes}" = no ]; then
+  echo "$TEST_NAME: skipped: zrcube was built --without-mpi"
+  exit 77
+fi
 if [ ! -x "$ZRCUBE" ]; then
   echo "$TEST_NAME: no zrcube at $ZRCUBE" >&2
   exit 99

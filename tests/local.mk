@@ -172,3 +172,17 @@ EXTRA_DIST += tests/test_aa_method.sh tests/am2_check.pov
 # A mesh's texture_list moves with the object.
 TESTS += tests/test_mesh_textures.sh
 EXTRA_DIST += tests/test_mesh_textures.sh tests/mesh_texture_list.pov
+
+# The public API's contracts (issue 14): threads in zr_render_image,
+# progress and cancel in every phase, parameter sizes, diagnostic spans;
+# linked with the shared library, so it sees exported symbols only.
+check_PROGRAMS += tests/test_api
+TESTS += tests/test_api
+tests_test_api_SOURCES = tests/test_api.c
+tests_test_api_CPPFLAGS = $(TEST_CPPFLAGS)
+tests_test_api_LDADD = $(TEST_LDADD)
+# The exported symbols are lib/libzrcube.sym's list and zrcube.h's, and
+# every public function is named in a section-3 page (issue 14).
+TESTS += tests/test_symbols.sh tests/test_manpages.sh
+EXTRA_DIST += tests/test_symbols.sh tests/test_manpages.sh \
+	tests/public_names.sh lib/libzrcube.sym

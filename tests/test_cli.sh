@@ -139,10 +139,13 @@ serial nodir 1 "$ZRCUBE" scene.pov +Linc $SIZE +Ono_such_dir/x.png
 expect nodir "zrcube: cannot write the image to 'no_such_dir/x.png': \
 cannot create a file in 'no_such_dir': No such file or directory"
 serial verbose 0 "$ZRCUBE" scene.pov +Linc $SIZE +V -F
-expect verbose "zrcube: rays: camera 3072,"
+# POV-Ray's statistics layout (bin/zrcube.c, print_statistics).
+pixels_line=$(printf '%-10s%14s' 'Pixels:' 3072)
+expect verbose "$pixels_line"
+expect verbose "Render Statistics"
 # Statistics are summed over the ranks and printed by rank 0.
 mpi verbose_mpi 0 3 scene.pov +Linc $SIZE +V -F
-expect_once verbose_mpi "zrcube: rays: camera 3072,"
+expect_once verbose_mpi "$pixels_line"
 expect verbose_mpi "3 ranks x "
 # No progress line when stderr is not a terminal.
 grep -q 'rendering' ref.err && fail "progress line printed to a file"

@@ -27,6 +27,19 @@ LD_LIBRARY_PATH="$ZR_BUILDDIR/lib/.libs" "$tmp/render" "$tmp/scene.pov" \
 # The picture must exist and hold the 8-byte PNG signature.
 test "$(head -c 8 "$tmp/out.png" | od -An -tx1 | tr -d ' \n')" = \
   "89504e470d0a1a0a"
+# Its 4 threads give the bytes of the command line's one thread, with the
+# same defaults (zr_render_params_init).
+(cd "$tmp" && "$ZR_BUILDDIR/bin/zrcube" scene.pov +W160 +H120 +WT1 \
+   +Ocli.png 2> /dev/null)
+cmp "$tmp/out.png" "$tmp/cli.png"
+# Cancelled at 30% of the render: the distinct status, no image.
+if LD_LIBRARY_PATH="$ZR_BUILDDIR/lib/.libs" "$tmp/render" "$tmp/scene.pov" \
+     "$tmp/cancel.png" 30 2> "$tmp/cancel.err"; then
+  echo "a cancelled render succeeded" >&2; exit 1
+fi
+grep -q "render: cancelled by the caller" "$tmp/cancel.err"
+grep -q "phase 3:  30%" "$tmp/cancel.err"
+test ! -e "$tmp/cancel.png"
 # A bad scene must fail with a message that names the file and line.
 printf 'sphere { <0,0,0>, 1 pigment { rgb foo } }\n' > "$tmp/bad.pov"
 if LD_LIBRARY_PATH="$ZR_BUILDDIR/lib/.libs" "$tmp/render" "$tmp/bad.pov" \
@@ -35,4 +48,4 @@ if LD_LIBRARY_PATH="$ZR_BUILDDIR/lib/.libs" "$tmp/render" "$tmp/bad.pov" \
 fi
 grep -q "bad.pov:1:" "$tmp/err"
 test ! -e "$tmp/bad.png"
-echo "example: 1 passed, 0 failed"
+echo "example: 3 passed, 0 failed"

@@ -128,6 +128,50 @@ ZR_API void zr_context_free(zr_context *ctx) {
   free(ctx);
 }
 
+ZR_API void zr_context_set_progress(zr_context *ctx, zr_progress_fn fn,
+                                    void *user) {
+  ctx->progress_fn = fn;
+  ctx->progress_user = user;
+}
+
+ZR_API void zr_context_cancel(zr_context *ctx, int cancel) {
+  if (ctx)
+    atomic_store(&ctx->cancel, cancel != 0);
+}
+
+zr_status zr__params_take(void *out, size_t out_size, const void *in,
+                          size_t min_size) {
+  if (!in)
+    return ZR_EINVAL;
+  size_t size;
+  memcpy(&size, in, sizeof size);
+  if (size < min_size)
+    return ZR_EINVAL;
+  const unsigned char *bytes = in;
+  for (size_t i = out_size; i < size; i++)
+    if (bytes[i] != 0)
+      return ZR_EINVAL;
+  memcpy(out, in, size < out_size ? size : out_size);
+  memcpy(out, &out_size, sizeof out_size);
+  return ZR_OK;
+}
+
+bool zr__cancelled(zr_context *ctx) {
+  return ctx && atomic_load_explicit(&ctx->cancel, memory_order_relaxed);
+}
+
+zr_status zr__progress(zr_context *ctx, zr_phase phase, uint64_t done,
+                       uint64_t total) {
+  if (!ctx)
+    return ZR_OK;
+  if (ctx->progress_fn) {
+    zr_progress p = {phase, done, total};
+    if (ctx->progress_fn(&p, ctx->progress_user) != 0)
+      return ZR_ECANCELLED;
+  }
+  return zr__cancelled(ctx) ? ZR_ECANCELLED : ZR_OK;
+}
+
 ZR_API void zr_context_set_diag(zr_context *ctx, zr_diag_fn fn, void *user) {
   ctx->diag_fn = fn;
   ctx->diag_user = user;
@@ -482,7 +526,9 @@ zr_status zr__vdiag(zr_context *ctx, zr_diag_level level, zr_status status,
                  place ? place->line : 0,
                  place ? place->column : 0,
                  zr__strbuf_cstr(&shown),
-                 zr__strbuf_cstr(&text)};
+                 zr__strbuf_cstr(&text),
+                 place ? place->offset : 0,
+                 place ? place->length : 0};
     ctx->diag_fn(&d, ctx->diag_user);
   }
   zr__strbuf_free(&shown);

@@ -7,7 +7,10 @@
 #define ZR_CORE_CONTEXT_H
 
 #include <stdarg.h>
+#include <stdatomic.h>
+#include <stdbool.h>
 #include <stddef.h>
+#include <stdint.h>
 
 #include "zrcube.h"
 
@@ -41,7 +44,32 @@ struct zr_context {
   char last_error[1024];
   unsigned errors;   /* errors reported so far */
   unsigned warnings; /* warnings reported so far */
+  zr_progress_fn progress_fn; /* zr_context_set_progress */
+  void *progress_user;
+  atomic_int cancel;          /* zr_context_cancel: any thread, signals */
 };
+
+/*
+ * Copies a caller's parameter struct that starts with its size (the
+ * public *_params structs) into out, which holds the library's
+ * defaults: the members in->size covers replace them.  ZR_EINVAL when
+ * in is NULL, its size is below min_size (the struct's first release)
+ * or it is larger than out_size with bytes past out_size that are not
+ * zero (members this library does not know were set).
+ */
+zr_status zr__params_take(void *out, size_t out_size, const void *in,
+                          size_t min_size);
+
+/* Whether ctx (may be NULL) was cancelled with zr_context_cancel(). */
+bool zr__cancelled(zr_context *ctx);
+
+/*
+ * Tells ctx's progress callback (ctx may be NULL) where a call is.
+ * Returns ZR_ECANCELLED when the callback asks to stop or ctx was
+ * cancelled, else ZR_OK.  The caller serialises the calls.
+ */
+zr_status zr__progress(zr_context *ctx, zr_phase phase, uint64_t done,
+                       uint64_t total);
 
 /*
  * Where a diagnostic points.  source_line is the text of that line (no
@@ -56,6 +84,10 @@ typedef struct zr_diag_place {
   size_t source_line_len;
   int caret_len; /* columns to underline with ~ after the ^; 0 for none */
   const char *notes; /* "in file included from ...\n..." or NULL */
+  /* Byte offset of line:column in the file and the bytes pointed at
+     (zr_diag.offset and .length); 0 when not known. */
+  size_t offset;
+  size_t length;
 } zr_diag_place;
 
 /*

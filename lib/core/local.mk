@@ -4,6 +4,7 @@ lib_libzrcube_la_SOURCES += \
 	lib/core/context.c lib/core/context.h \
 	lib/core/iopolicy.c lib/core/iopolicy.h \
 	lib/core/noise.c lib/core/noise.h \
+	lib/core/parallel.c lib/core/parallel.h \
 	lib/core/strbuf.c lib/core/strbuf.h \
 	lib/core/team.c lib/core/team.h \
 	lib/core/transform.c lib/core/transform.h \

@@ -570,11 +570,17 @@ ZR_API zr_status zr_gi_cache_new(zr_context *ctx, const zr_scene *scene,
   if (!scene || !out)
     return ZR_EINVAL;
   *out = NULL;
-  zr_gi_params defaults;
-  if (!params) {
-    zr_gi_params_init(&defaults, scene);
-    params = &defaults;
-  }
+  /* The caller's parameters over the defaults (zrcube.h: a struct's
+     size says which members it has). */
+  zr_gi_params taken;
+  zr_gi_params_init(&taken, scene);
+  if (params &&
+      zr__params_take(&taken, sizeof taken, params, sizeof taken) != ZR_OK)
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, NULL,
+                    "irradiance cache: the parameters were not made by "
+                    "zr_gi_params_init() (their size is %zu)",
+                    params->size);
+  params = &taken;
   zr_status s = check_params(ctx, params);
   if (s != ZR_OK)
     return s;
@@ -656,7 +662,9 @@ static size_t mosaic(int w, int h, double block, uint32_t *out) {
       int x = (int)floor((i + 0.5) * block), y = (int)floor((j + 0.5) * block);
       if (x >= w || y >= h)
         continue;
-      out[n++] = (uint32_t)y * (uint32_t)w + (uint32_t)x;
+      if (out)
+        out[n] = (uint32_t)y * (uint32_t)w + (uint32_t)x;
+      n++;
     }
   return n;
 }
@@ -739,13 +747,24 @@ static zr_status team_slots(const zr_gi_cache *c, batch_job *job, size_t m,
   return s;
 }
 
+/* The pretrace's progress: pixels of all passes, done of total. */
+typedef struct pretrace_progress {
+  zr_context *ctx;
+  uint64_t done, total;
+} pretrace_progress;
+
 static zr_status run_pass(zr_gi_cache *c, const zr_render_params *render,
                           const zr_media *camera_media,
-                          const uint32_t *pixels, size_t n) {
+                          const uint32_t *pixels, size_t n,
+                          pretrace_progress *progress) {
   gi_scratch slots[BATCH];
   int team = zr__team_size(c->params.team) > 1;
   zr_status pending = ZR_OK; /* a team member's failure to add */
   for (size_t at = 0; at < n; at += BATCH) {
+    zr_status ps = zr__progress(progress->ctx, ZR_PHASE_PRETRACE,
+                                progress->done, progress->total);
+    if (ps != ZR_OK)
+      return ps;
     size_t m = n - at < BATCH ? n - at : BATCH;
     memset(slots, 0, sizeof slots);
     batch_job job = {c, render, camera_media, pixels + at, slots};
@@ -774,6 +793,7 @@ static zr_status run_pass(zr_gi_cache *c, const zr_render_params *render,
     }
     if (s != ZR_OK)
       return s;
+    progress->done += m;
   }
   if (team && zr__team_agree(c->params.team, pending) != ZR_OK)
     return pending != ZR_OK ? pending : ZR_ENOMEM;
@@ -781,9 +801,30 @@ static zr_status run_pass(zr_gi_cache *c, const zr_render_params *render,
   return ZR_OK;
 }
 
+/* The pixels of every pass of the pretrace (the passes below). */
+static uint64_t pretrace_pixels(const zr_gi_cache *c, int w, int h) {
+  uint64_t total = 0;
+  double block = c->params.pretrace_start * w;
+  double last = c->params.pretrace_end * w;
+  for (;;) {
+    double b = fmax(block, 1.0);
+    total += mosaic(w, h, b, NULL);
+    if (b <= 1.0 || block * 0.5 < last * (1.0 - 1e-9))
+      break;
+    block *= 0.5;
+  }
+  return total + (uint64_t)w * (uint64_t)h;
+}
+
 ZR_API zr_status zr_gi_cache_pretrace(zr_gi_cache *c,
-                                      const zr_render_params *render) {
-  if (!c || !render || render->width <= 0 || render->height <= 0)
+                                      const zr_render_params *params) {
+  zr_render_params taken;
+  zr_render_params_init(&taken);
+  if (!c || zr__params_take(&taken, sizeof taken, params, sizeof taken) !=
+                ZR_OK)
+    return ZR_EINVAL;
+  const zr_render_params *render = &taken;
+  if (render->width <= 0 || render->height <= 0)
     return ZR_EINVAL;
   if (!c->scene->bvh && c->scene->n_primitives > 0)
     return ZR_ESCENE;
@@ -793,6 +834,8 @@ ZR_API zr_status zr_gi_cache_pretrace(zr_gi_cache *c,
     return ZR_ENOMEM;
   zr_media camera_media;
   zr__camera_media(c->scene, &camera_media);
+  pretrace_progress progress = {render->context, 0,
+                                pretrace_pixels(c, w, h)};
   zr_status s = ZR_OK;
   c->pretracing = 1;
   /* Blocks of pretrace_start of the image width, halved until they
@@ -802,7 +845,7 @@ ZR_API zr_status zr_gi_cache_pretrace(zr_gi_cache *c,
   for (;;) {
     double b = fmax(block, 1.0);
     size_t n = mosaic(w, h, b, pixels);
-    s = run_pass(c, render, &camera_media, pixels, n);
+    s = run_pass(c, render, &camera_media, pixels, n, &progress);
     if (s != ZR_OK || b <= 1.0 || block * 0.5 < last * (1.0 - 1e-9))
       break;
     block *= 0.5;
@@ -816,8 +859,14 @@ ZR_API zr_status zr_gi_cache_pretrace(zr_gi_cache *c,
        nearest_count records, as in the pretrace. */
     c->pretracing = 2;
     size_t n = mosaic(w, h, 1.0, pixels);
-    s = run_pass(c, render, &camera_media, pixels, n);
+    s = run_pass(c, render, &camera_media, pixels, n, &progress);
   }
+  if (s == ZR_OK)
+    s = zr__progress(progress.ctx, ZR_PHASE_PRETRACE, progress.total,
+                     progress.total);
+  if (s == ZR_ECANCELLED)
+    zr__diag(progress.ctx, ZR_DIAG_ERROR, s, NULL,
+             "irradiance cache: the pretrace was cancelled");
   c->pretracing = 0;
   free(pixels);
   return s;

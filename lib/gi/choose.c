@@ -22,6 +22,7 @@
 /* POV-Ray 3.7's defaults (manual, "Adjusting Radiosity"). */
 ZR_API void zr_gi_params_init(zr_gi_params *p, const zr_scene *scene) {
   memset(p, 0, sizeof *p);
+  p->size = sizeof *p;
   p->count = 35;
   p->recursion_limit = 2;
   p->nearest_count = 5;

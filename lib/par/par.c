@@ -23,9 +23,14 @@
 #define _GNU_SOURCE /* sched_getaffinity, CPU_COUNT */
 #include "par/par.h"
 
-#include <math.h>
-#include <mpi.h>
+#include "config.h"
 #include <limits.h>
+#include <math.h>
+#ifdef ZR_HAVE_MPI
+#include <mpi.h>
+#else
+#include "par/nompi.h" /* configure --without-mpi: one process */
+#endif
 #include <sched.h>
 #include <stdio.h>
 #include <stdint.h>

@@ -108,7 +108,7 @@ typedef struct zr_par_render {
   const zr_scene *scene;
   const zr_render_params *params;
   int threads;
-  zr_progress_fn progress; /* may be NULL; give it on rank 0 only */
+  zr__rows_progress_fn progress; /* may be NULL; give it on rank 0 only */
   void *progress_user;
   zr_image *image;         /* rank 0: receives the picture; others NULL */
   zr_render_stats stats;   /* out: summed over all ranks, on rank 0 */

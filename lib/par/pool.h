@@ -18,7 +18,7 @@
  * progress_base) out of progress_total.  Calls are serialised by the pool
  * and come from worker threads.
  */
-typedef void (*zr_progress_fn)(size_t done, size_t total, void *user);
+typedef void (*zr__rows_progress_fn)(size_t done, size_t total, void *user);
 
 typedef struct zr_pool_job {
   const zr_scene *scene;
@@ -29,7 +29,7 @@ typedef struct zr_pool_job {
   float *rows_rgb;       /* out: the rank's rows, in order, width * 3 each */
   int threads;           /* at least 1 */
   zr_render_stats *stats; /* added to; may be NULL */
-  zr_progress_fn progress; /* may be NULL */
+  zr__rows_progress_fn progress; /* may be NULL */
   void *progress_user;
   size_t progress_base;
   size_t progress_total;

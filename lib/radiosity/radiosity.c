@@ -44,6 +44,7 @@
 ZR_API void zr_radiosity_params_init(zr_radiosity_params *p,
                                      const zr_scene *scene) {
   memset(p, 0, sizeof *p);
+  p->size = sizeof *p;
   p->bf_eps = 1e-4;
   p->area_eps = 1e-4;
   p->visibility_rays = 4;
@@ -93,9 +94,9 @@ static zr_status check_params(zr_context *ctx, const zr_radiosity_params *p) {
     what = "refine_rounds must be >= 0";
   else if (p->uniform < 0 || p->uniform > 10)
     what = "uniform must be 0 to 10";
-  else if (p->criterion < 0 || p->criterion > 1)
+  else if ((int)p->criterion < 0 || (int)p->criterion > 1)
     what = "criterion must be 0 (BF) or 1 (error estimate)";
-  else if (p->lookup < 0 || p->lookup > 1)
+  else if ((int)p->lookup < 0 || (int)p->lookup > 1)
     what = "lookup must be 0 (final gather) or 1 (smoothed elements)";
   else if (!(p->brightness >= 0.0) || !isfinite(p->brightness))
     what = "brightness must be a finite number >= 0";
@@ -131,11 +132,17 @@ zr_status zr__rad_create(zr_context *ctx, const zr_scene *scene,
                          const zr_radiosity_params *params,
                          zr_radiosity **out) {
   *out = NULL;
-  zr_radiosity_params defaults;
-  if (params == NULL) {
-    zr_radiosity_params_init(&defaults, scene);
-    params = &defaults;
-  }
+  /* The caller's parameters over the defaults (zrcube.h: a struct's
+     size says which members it has). */
+  zr_radiosity_params taken;
+  zr_radiosity_params_init(&taken, scene);
+  if (params &&
+      zr__params_take(&taken, sizeof taken, params, sizeof taken) != ZR_OK)
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, NULL,
+                    "radiosity: the parameters were not made by "
+                    "zr_radiosity_params_init() (their size is %zu)",
+                    params->size);
+  params = &taken;
   zr_status st = check_params(ctx, params);
   if (st != ZR_OK)
     return st;
@@ -201,9 +208,20 @@ static zr_status agreed(const zr_radiosity *rad, zr_status st) {
              : st;
 }
 
+zr_status zr__rad_progress(zr_radiosity *rad) {
+  return zr__progress(rad->progress_ctx, ZR_PHASE_RADIOSITY,
+                      rad->progress_done, rad->progress_total);
+}
+
 /* Link, then alternate solving and refining. */
 static zr_status solve_rounds(zr_radiosity *rad, zr_context *ctx) {
-  zr_status st = initial_split(rad);
+  rad->progress_ctx = ctx;
+  rad->progress_done = 0;
+  rad->progress_total =
+      rad->params.uniform > 0 ? 1 : (uint64_t)rad->params.refine_rounds + 1;
+  zr_status st = zr__rad_progress(rad);
+  if (st == ZR_OK)
+    st = initial_split(rad);
   /* Cells a CSG trim crosses go down to A_eps (trim.c). */
   if (st == ZR_OK && rad->params.uniform == 0)
     st = zr__rad_trim_split(rad);
@@ -224,13 +242,21 @@ static zr_status solve_rounds(zr_radiosity *rad, zr_context *ctx) {
     if (st != ZR_OK || rad->params.uniform > 0 ||
         round >= rad->params.refine_rounds)
       break;
+    rad->progress_done = (uint64_t)round + 1;
+    st = zr__rad_progress(rad);
+    if (st != ZR_OK)
+      break;
     size_t changed = 0;
     st = agreed(rad, zr__rad_refine_links(rad, &changed));
     if (changed == 0)
       break;
     round++;
   }
+  rad->progress_ctx = NULL;
   rad->stats.refine_rounds = round;
+  if (st == ZR_ECANCELLED)
+    return zr__diag(ctx, ZR_DIAG_ERROR, st, NULL,
+                    "radiosity: the solve was cancelled");
   if (st != ZR_OK && rad->over_budget)
     return over_budget(ctx);
   if (st == ZR_ENOMEM)

@@ -120,6 +120,11 @@ struct zr_radiosity {
      zr_radiosity * is a zr_radiance_source *. */
   zr_radiance_source source;
   const zr_scene *scene;
+  /* During zr_radiosity_solve: the context told of progress (rounds
+     done of the most there may be; zr__rad_progress) and asked about a
+     cancel.  NULL once solved. */
+  zr_context *progress_ctx;
+  uint64_t progress_done, progress_total;
   /* The nodes, vertices and links are charged to the budget of the
      context that solved (NULL: none) until the solution is freed;
      over_budget tells that a growth failed for the budget. */
@@ -213,6 +218,9 @@ zr_status zr__rad_uniform(zr_radiosity *rad, int n_levels);
 /* ---- solve.c ---- */
 /* Solves for B on the current links; fills iterations and residual. */
 zr_status zr__rad_solve(zr_radiosity *rad, zr_context *ctx);
+/* Tells the solve's context how far it is (ZR_PHASE_RADIOSITY);
+   ZR_ECANCELLED when the solve must stop. */
+zr_status zr__rad_progress(zr_radiosity *rad);
 /* Emission, absorption and closure figures into rad->stats. */
 void zr__rad_energy(zr_radiosity *rad);
 /* The largest channel of a radiosity triple. */

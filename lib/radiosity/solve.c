@@ -416,7 +416,9 @@ static zr_status solve_gather(zr_radiosity *rad) {
   }
   int it = 0;
   double residual = 0.0;
-  while (it < rad->params.max_iterations) {
+  zr_status st = ZR_OK;
+  while (it < rad->params.max_iterations &&
+         (st = zr__rad_progress(rad)) == ZR_OK) {
     gather(rad, &ix);
     residual = push_pull_all(rad, change) / rad->power_ref;
     it++;
@@ -427,7 +429,7 @@ static zr_status solve_gather(zr_radiosity *rad) {
   rad->stats.residual = residual;
   free_index(&ix);
   free(change);
-  return ZR_OK;
+  return st;
 }
 
 /* ---- Southwell shooting ---- */
@@ -555,6 +557,9 @@ static zr_status solve_shooting(zr_radiosity *rad) {
         break;
       shoot(rad, order, start, s, side);
       it++;
+      /* A shot is quick: ask every 64th. */
+      if ((it & 63) == 0 && (st = zr__rad_progress(rad)) != ZR_OK)
+        break;
     }
     for (size_t s = 0; s < rad->n_surfs; s++)
       pull(rad, rad->surfs[s].root, false);
@@ -577,6 +582,8 @@ zr_status zr__rad_solve(zr_radiosity *rad, zr_context *ctx) {
   }
   zr_status st =
       rad->params.shooting ? solve_shooting(rad) : solve_gather(rad);
+  if (st == ZR_ECANCELLED)
+    return st; /* solve_rounds says so */
   if (st == ZR_EMPI)
     return zr__diag(ctx, ZR_DIAG_ERROR, st, NULL,
                     "radiosity: the processes solving together could not "

@@ -2,8 +2,9 @@
  * workers.h - the threads of one rank for the radiosity solve: a
  * parallel loop over an index range.
  *
- * lib/par's pool belongs to the command line, not to libzrcube, so the
- * library runs its own few POSIX threads here.  Workers take chunks of
+ * The threads are the library's own loop (lib/core/parallel.c, shared
+ * with the render and the pretrace; lib/par's pool belongs to the
+ * command line, not to libzrcube).  Workers take chunks of
  * the range from a shared counter, so which thread does which index
  * varies from run to run; callers keep the results identical anyway by
  * writing each index's result into a slot of its own and combining the

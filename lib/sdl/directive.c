@@ -95,6 +95,11 @@ static void vreport(zr_sdl_parser *p, zr_diag_level level, zr_status status,
     place.source_line = zr__sdl_file_line(f, loc->line,
                                           &place.source_line_len);
     place.caret_len = loc->length > 0 ? loc->length : 1;
+    if (loc->line >= 1 && (size_t)loc->line <= f->n_lines &&
+        loc->column >= 1) {
+      place.offset = f->line_starts[loc->line - 1] + (size_t)loc->column - 1;
+      place.length = loc->length > 0 ? (size_t)loc->length : 0;
+    }
     chain_notes(p, loc->file, &notes);
     place.notes = notes.len ? zr__strbuf_cstr(&notes) : NULL;
   }
@@ -124,10 +129,27 @@ void zr__sdl_warning(zr_sdl_parser *p, const zr_sdl_loc *loc,
   va_end(ap);
 }
 
+/* Progress and cancel every ZR_SDL_PROGRESS_TOKENS tokens the parse
+   reads (replays of loops and macros included): false, with the error
+   reported at the token, when the caller cancelled. */
+static bool report_progress(zr_sdl_parser *p, const zr_sdl_loc *at) {
+  if (zr__progress(p->ctx, ZR_PHASE_PARSE, p->tokens_read + p->work, 0) ==
+      ZR_OK)
+    return true;
+  zr__sdl_error(p, ZR_ECANCELLED, at, "the parse was cancelled");
+  return false;
+}
+
 bool zr__sdl_spend(zr_sdl_parser *p, const zr_sdl_loc *at,
                    const char *what) {
   unsigned long long limit = p->ctx ? p->ctx->work_limit : 0;
-  if (limit == 0 || ++p->work <= limit)
+  ++p->work;
+  /* Loops of simple #declares run without tokens reaching the
+     grammar: their steps report progress too. */
+  if ((p->work & (ZR_SDL_PROGRESS_TOKENS - 1)) == 0 &&
+      !report_progress(p, at))
+    return false;
+  if (limit == 0 || p->work <= limit)
     return true;
   zr__sdl_error(p, ZR_ELIMIT, at,
                 "the parse used up its work budget of %llu steps (each "
@@ -1029,6 +1051,9 @@ int zr__sdl_next(zr_sdl_lexval *val, zr_sdl_loc *loc, zr_sdl_parser *p) {
       return deliver(p, 0, &v, &tl, NULL, val, loc);
     }
     fr->pos++;
+    if ((++p->tokens_read & (ZR_SDL_PROGRESS_TOKENS - 1)) == 0 &&
+        !report_progress(p, &tl))
+      return ZR__POV_error;
     if (is_directive(t->kind)) {
       char what[48];
       snprintf(what, sizeof what, "'%s'", zr__sdl_kind_name(t->kind));
@@ -1194,6 +1219,12 @@ static bool declare_from_context(zr_sdl_parser *p) {
 
 static zr_status parse(zr_context *ctx, char *path, char *bytes, size_t size,
                        bool from_disk, zr_scene **out) {
+  if (zr__cancelled(ctx)) {
+    free(path);
+    free(bytes);
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ECANCELLED, NULL,
+                    "the parse was cancelled");
+  }
   zr_sdl_parser p;
   memset(&p, 0, sizeof p);
   p.ctx = ctx;

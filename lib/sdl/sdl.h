@@ -27,6 +27,7 @@
 #ifndef ZR_SDL_SDL_H
 #define ZR_SDL_SDL_H
 
+#include <setjmp.h>
 #include <stdbool.h>
 #include <stddef.h>
 
@@ -368,7 +369,15 @@ typedef struct zr_sdl_lexer {
   bool out_of_memory;
   zr_sdl_loc error_at;
   char error[160];
+  /* Where a fatal error of the scanner itself returns to (its own
+     allocations failing): flex would print and exit(), and a library
+     never does (zr__sdl_lex_fatal). */
+  jmp_buf fatal;
 } zr_sdl_lexer;
+
+/* The scanner's YY_FATAL_ERROR (grammar/pov.l): marks the lexer failed
+   with msg and returns to its jmp_buf, never to the scanner. */
+_Noreturn void zr__sdl_lex_fatal(void *scanner, const char *msg);
 
 /* Called by the scanner's actions (grammar/pov.l). */
 int zr__sdl_lex_input(zr_sdl_lexer *lx, char *buf, int max);
@@ -472,6 +481,10 @@ typedef struct zr_sdl_autoend {
   int last;     /* the last token's kind */
 } zr_sdl_autoend;
 
+/* How often the parse reports progress and looks for a cancel: every
+   this many tokens (a power of two). */
+#define ZR_SDL_PROGRESS_TOKENS 4096
+
 typedef struct zr_sdl_parser {
   zr_context *ctx;
   zr_scene *scene;
@@ -511,6 +524,8 @@ typedef struct zr_sdl_parser {
   /* Steps taken against the context's work budget: directives run,
      macro calls, loop passes (zr__sdl_spend). */
   unsigned long long work;
+  /* Tokens delivered so far, for progress (zr__sdl_next). */
+  unsigned long long tokens_read;
   /* POV-Ray radiosity items of the current block that mean nothing
      here, one bit each (lib/sdl/build_radiosity.c); object radiosity
      keywords already warned about, so a scene gets one warning. */

@@ -153,6 +153,37 @@ static bool number_list_keyword(int kind) {
  * tens of millions.  The run's bytes stay in the file, where build_mesh.c
  * reads them again with the same reader.
  */
+/*
+ * The scanner's calls, each under the lexer's jmp_buf, so a fatal error
+ * of the scanner (zr__sdl_lex_fatal: flex's own allocations failing)
+ * comes back here as a failure rather than exit().  Nothing here is
+ * changed between setjmp and longjmp, so no local needs volatile.
+ */
+static int scan_guarded(zr_sdl_lexer *lx, yyscan_t scanner,
+                        ZR__POV_STYPE *value, zr_sdl_loc *loc) {
+  if (setjmp(lx->fatal) != 0)
+    return 0; /* lx->failed is set */
+  return zr__scan_lex(value, loc, scanner);
+}
+
+static bool restart_guarded(zr_sdl_lexer *lx, yyscan_t scanner) {
+  if (setjmp(lx->fatal) != 0)
+    return false;
+  zr__scan_restart(NULL, scanner);
+  return true;
+}
+
+_Noreturn void zr__sdl_lex_fatal(void *scanner, const char *msg) {
+  zr_sdl_lexer *lx = zr__scan_get_extra(scanner);
+  lx->failed = true;
+  lx->out_of_memory = strstr(msg, "memory") != NULL;
+  lx->error_at.line = lx->line;
+  lx->error_at.column = lx->column;
+  lx->error_at.length = 1;
+  snprintf(lx->error, sizeof lx->error, "the scanner failed: %s", msg);
+  longjmp(lx->fatal, 1);
+}
+
 static zr_status number_list(zr_sdl_file *f, size_t *cap, zr_sdl_lexer *lx,
                              yyscan_t scanner) {
   size_t n = f->n_tokens;
@@ -191,7 +222,8 @@ static zr_status number_list(zr_sdl_file *f, size_t *cap, zr_sdl_lexer *lx,
   lx->offset = lx->read_pos = r.pos;
   lx->line = r.line;
   lx->column = r.column;
-  zr__scan_restart(NULL, scanner);
+  if (!restart_guarded(lx, scanner) && status == ZR_OK)
+    status = ZR_ENOMEM;
   return status;
 }
 
@@ -331,7 +363,7 @@ zr_status zr__sdl_file_lex_budget(zr_sdl_file *f, int file_index,
     ZR__POV_STYPE value;
     zr_sdl_loc loc;
     memset(&value, 0, sizeof value);
-    int kind = zr__scan_lex(&value, &loc, scanner);
+    int kind = scan_guarded(&lx, scanner, &value, &loc);
     if (lx.failed) {
       status = !lx.out_of_memory         ? ZR_ESYNTAX
                : f->strings.over_budget ? ZR_ELIMIT

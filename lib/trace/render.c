@@ -34,14 +34,19 @@
  * so the picture does not depend on how pixels are split among threads
  * and processes.
  */
+#include <stdalign.h>
+#include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/context.h"
+#include "core/parallel.h"
 #include "trace/render.h"
 #include "trace/shade.h"
 
 ZR_API void zr_render_params_init(zr_render_params *p) {
   memset(p, 0, sizeof *p);
+  p->size = sizeof *p;
   p->width = 320;
   p->height = 240;
   p->antialias = 0;
@@ -57,6 +62,8 @@ ZR_API void zr_render_params_init(zr_render_params *p) {
   p->path = NULL;
   p->path_samples = 16;
   p->path_first_sample = 0;
+  p->threads = 1;
+  p->context = NULL;
 }
 
 ZR_API void zr_render_stats_add(zr_render_stats *a,
@@ -380,42 +387,79 @@ static zr_rgb supersample_recursive(const pixel_job *job,
   return v;
 }
 
+/* Whether the parameters can render scene: ZR_OK, or the status with
+   why in *what. */
 static zr_status check_params(const zr_scene *scene,
-                              const zr_render_params *p) {
-  if (!scene || !p)
-    return ZR_EINVAL;
-  if (p->width <= 0 || p->height <= 0 ||
-      (uint64_t)p->width * (uint64_t)p->height > UINT32_MAX)
-    return ZR_EINVAL;
-  if (p->antialias && (p->aa_depth < 1 || p->aa_depth > 9 ||
-                       !(p->aa_threshold >= 0.0)))
-    return ZR_EINVAL;
-  if (p->aa_method != 1 && p->aa_method != 2)
-    return ZR_EINVAL;
-  if (!scene->bvh && scene->n_primitives > 0)
-    return ZR_ESCENE; /* zr__scene_finish() was never called */
+                              const zr_render_params *p, const char **what) {
+  *what = NULL;
+  if (!scene)
+    *what = "no scene";
+  else if (p->width <= 0 || p->height <= 0 ||
+           (uint64_t)p->width * (uint64_t)p->height > UINT32_MAX)
+    *what = "the image size must be at least 1 x 1 and at most 2^32 pixels";
+  else if (p->antialias && (p->aa_depth < 1 || p->aa_depth > 9 ||
+                            !(p->aa_threshold >= 0.0)))
+    *what = "antialiasing needs a depth of 1 to 9 and a threshold >= 0";
+  else if (p->aa_method != 1 && p->aa_method != 2)
+    *what = "the antialiasing method must be 1 or 2";
+  else if (p->threads < 0)
+    *what = "threads must be >= 0";
   /* A solution holds object addresses of the scene it was solved for. */
-  if (p->radiosity && zr__radiance_source(p->radiosity)->scene != scene)
+  else if (p->radiosity &&
+           zr__radiance_source(p->radiosity)->scene != scene)
+    *what = "the radiosity solution was solved for another scene";
+  else if (p->radiosity_only && !p->radiosity)
+    *what = "radiosity_only needs a radiosity solution";
+  else if (p->gi_cache && !zr__gi_indirect_for(p->gi_cache, scene))
+    *what = "the irradiance cache was made for another scene";
+  else if (p->path && (!zr__path_for(p->path, scene) || p->radiosity ||
+                       p->gi_cache || p->path_samples < 1 ||
+                       p->path_first_sample < 0))
+    *what = "the path tracer is for another scene, is combined with "
+            "radiosity or a cache, or has no samples";
+  if (*what)
     return ZR_EINVAL;
-  if (p->radiosity_only && !p->radiosity)
-    return ZR_EINVAL;
-  if (p->gi_cache && !zr__gi_indirect_for(p->gi_cache, scene))
-    return ZR_EINVAL;
-  if (p->path && (!zr__path_for(p->path, scene) || p->radiosity ||
-                  p->gi_cache || p->path_samples < 1 ||
-                  p->path_first_sample < 0))
-    return ZR_EINVAL;
+  if (!scene->bvh && scene->n_primitives > 0) {
+    *what = "the scene was not finished"; /* zr__scene_finish() */
+    return ZR_ESCENE;
+  }
   return ZR_OK;
 }
 
-ZR_API zr_status zr_render_pixels(const zr_scene *scene,
-                                  const zr_render_params *params,
-                                  const uint32_t *pixels, size_t count,
-                                  const float *centres, float *rgb,
-                                  zr_render_stats *stats) {
-  zr_status s = check_params(scene, params);
-  if (s != ZR_OK)
-    return s;
+/* The size of zr_render_params in the first release that had a size
+   member (zr__params_take): freeze it at the offset of the first member
+   added after this release. */
+#define RENDER_PARAMS_MIN_SIZE sizeof(zr_render_params)
+
+/* The caller's parameters, taken into p and checked; report: say why
+   not through p->context (zr_render_pixels runs on the caller's threads,
+   several at once, so it only returns the status). */
+static zr_status take_params(const zr_scene *scene,
+                             const zr_render_params *params,
+                             zr_render_params *p, bool report) {
+  zr_render_params_init(p);
+  if (zr__params_take(p, sizeof *p, params, RENDER_PARAMS_MIN_SIZE) !=
+      ZR_OK) {
+    /* No context to tell (it is a member): the status says it. */
+    return ZR_EINVAL;
+  }
+  const char *what;
+  zr_status s = check_params(scene, p, &what);
+  if (s != ZR_OK && report)
+    zr__diag(p->context, ZR_DIAG_ERROR, s, NULL, "render: %s", what);
+  return s;
+}
+
+/* zr_render_pixels() on parameters checked and taken already.
+   camera_media: zr__camera_media() of the scene, or NULL to find it
+   here (it looks at every primitive, so a loop over rows finds it
+   once). */
+static zr_status render_pixels(const zr_scene *scene,
+                               const zr_render_params *params,
+                               const uint32_t *pixels, size_t count,
+                               const float *centres, float *rgb,
+                               zr_render_stats *stats,
+                               const zr_media *camera_media) {
   if (count > 0 && (!pixels || !rgb))
     return ZR_EINVAL;
   uint32_t total = (uint32_t)params->width * (uint32_t)params->height;
@@ -438,7 +482,10 @@ ZR_API zr_status zr_render_pixels(const zr_scene *scene,
   job.tracer.skip_direct = false;
   zr__tracer_quality(&job.tracer, params->quality);
   job.tracer.skip_sampled_emission = false;
-  zr__camera_media(scene, &job.camera_media);
+  if (camera_media)
+    job.camera_media = *camera_media;
+  else
+    zr__camera_media(scene, &job.camera_media);
   /* POV-Ray compares colours after undoing the scene's working gamma and
      applying its antialiasing gamma, 2.5 by default (reference,
      "Anti-Aliasing Options"), so dark edges are refined as readily as
@@ -476,33 +523,161 @@ ZR_API zr_status zr_render_pixels(const zr_scene *scene,
   return ZR_OK;
 }
 
+ZR_API zr_status zr_render_pixels(const zr_scene *scene,
+                                  const zr_render_params *params,
+                                  const uint32_t *pixels, size_t count,
+                                  const float *centres, float *rgb,
+                                  zr_render_stats *stats) {
+  zr_render_params p;
+  zr_status s = take_params(scene, params, &p, false);
+  if (s != ZR_OK)
+    return s;
+  if (zr__cancelled(p.context))
+    return ZR_ECANCELLED;
+  return render_pixels(scene, &p, pixels, count, centres, rgb, stats,
+                       NULL);
+}
+
+/*
+ * zr_render_image's rows: each thread takes rows from the loop's
+ * counter and renders them into their own place of out, so the picture
+ * does not depend on which thread took which row; statistics go to the
+ * thread's own slot (padded against false sharing) and are added in
+ * thread order at the end, integers, so their sum has no order either.
+ */
+typedef struct row_stats {
+  alignas(64) zr_render_stats stats;
+} row_stats;
+
+typedef struct image_job {
+  const zr_scene *scene;
+  const zr_render_params *params;
+  const float *centres; /* NULL in pass 1 */
+  float *out;
+  row_stats *slots;
+  zr_media camera_media;
+  atomic_int stop;      /* non-zero: no thread starts another row */
+  atomic_int failure;   /* the first failure */
+  atomic_ullong rows_done;
+  atomic_flag reporting; /* one thread at a time tells the callback */
+  uint64_t rows_total;
+} image_job;
+
+static void fail(image_job *job, zr_status s) {
+  int ok = ZR_OK;
+  atomic_compare_exchange_strong(&job->failure, &ok, (int)s);
+  atomic_store(&job->stop, 1);
+}
+
+/* Tells the callback how many rows are done, unless another thread is
+   telling it now (it will say as much or more soon). */
+static void report_rows(image_job *job) {
+  zr_context *ctx = job->params->context;
+  if (!ctx)
+    return;
+  if (atomic_flag_test_and_set(&job->reporting))
+    return;
+  uint64_t done = atomic_load(&job->rows_done);
+  zr_status s = zr__progress(ctx, ZR_PHASE_RENDER, done, job->rows_total);
+  atomic_flag_clear(&job->reporting);
+  if (s != ZR_OK)
+    fail(job, s);
+}
+
+static void render_rows(void *user, size_t begin, size_t end, int worker) {
+  image_job *job = user;
+  int width = job->params->width;
+  uint32_t pixels[256];
+  for (size_t y = begin; y < end; y++) {
+    if (atomic_load_explicit(&job->stop, memory_order_relaxed))
+      return;
+    if (zr__cancelled(job->params->context)) {
+      fail(job, ZR_ECANCELLED);
+      return;
+    }
+    /* A row in pieces of 256 pixels: no allocation per row. */
+    for (int x0 = 0; x0 < width; x0 += 256) {
+      int n = width - x0 < 256 ? width - x0 : 256;
+      for (int k = 0; k < n; k++)
+        pixels[k] = (uint32_t)(y * (size_t)width + (size_t)(x0 + k));
+      float *dst = job->out + 3 * (y * (size_t)width + (size_t)x0);
+      zr_status s = render_pixels(job->scene, job->params, pixels,
+                                  (size_t)n, job->centres, dst,
+                                  &job->slots[worker].stats,
+                                  &job->camera_media);
+      if (s != ZR_OK) {
+        fail(job, s);
+        return;
+      }
+    }
+    atomic_fetch_add(&job->rows_done, 1);
+    report_rows(job);
+  }
+}
+
+/* One pass over every row with the params' threads. */
+static zr_status image_pass(image_job *job, const float *centres,
+                            float *out, int threads) {
+  job->centres = centres;
+  job->out = out;
+  (void)zr__parallel_for(threads, (size_t)job->params->height, 1,
+                         render_rows, job, &job->stop);
+  return (zr_status)atomic_load(&job->failure);
+}
+
 ZR_API zr_status zr_render_image(const zr_scene *scene,
                                  const zr_render_params *params, float *rgb,
                                  zr_render_stats *stats) {
-  zr_status s = check_params(scene, params);
+  zr_render_params p;
+  zr_status s = take_params(scene, params, &p, true);
   if (s != ZR_OK)
     return s;
   if (!rgb)
     return ZR_EINVAL;
-  size_t n = (size_t)params->width * (size_t)params->height;
-  uint32_t *pixels = malloc(n * sizeof *pixels);
-  float *centres = params->antialias ? malloc(n * 3 * sizeof *centres)
-                                     : NULL;
-  if (!pixels || (params->antialias && !centres)) {
-    free(pixels);
+  if (zr__cancelled(p.context))
+    return ZR_ECANCELLED;
+  int threads = p.threads < 1 ? 1
+                : p.threads > ZR__MAX_THREADS ? ZR__MAX_THREADS
+                                               : p.threads;
+  size_t n = (size_t)p.width * (size_t)p.height;
+  float *centres = p.antialias ? malloc(n * 3 * sizeof *centres) : NULL;
+  row_stats *slots = aligned_alloc(64, (size_t)threads * sizeof *slots);
+  if ((p.antialias && !centres) || !slots) {
     free(centres);
+    free(slots);
     return ZR_ENOMEM;
   }
-  for (size_t i = 0; i < n; i++)
-    pixels[i] = (uint32_t)i;
-  if (!params->antialias) {
-    s = zr_render_pixels(scene, params, pixels, n, NULL, rgb, stats);
-  } else {
-    s = zr_render_pixels(scene, params, pixels, n, NULL, centres, stats);
+  memset(slots, 0, (size_t)threads * sizeof *slots);
+  image_job job;
+  memset(&job, 0, sizeof job);
+  job.scene = scene;
+  job.params = &p;
+  job.slots = slots;
+  zr__camera_media(scene, &job.camera_media);
+  atomic_init(&job.stop, 0);
+  atomic_init(&job.failure, ZR_OK);
+  atomic_init(&job.rows_done, 0);
+  atomic_flag_clear(&job.reporting);
+  job.rows_total = (uint64_t)p.height * (p.antialias ? 2u : 1u);
+  s = zr__progress(p.context, ZR_PHASE_RENDER, 0, job.rows_total);
+  if (s == ZR_OK && !p.antialias) {
+    s = image_pass(&job, NULL, rgb, threads);
+  } else if (s == ZR_OK) {
+    s = image_pass(&job, NULL, centres, threads);
     if (s == ZR_OK)
-      s = zr_render_pixels(scene, params, pixels, n, centres, rgb, stats);
+      s = image_pass(&job, centres, rgb, threads);
   }
-  free(pixels);
+  /* The last row's report may have met another thread's: say the
+     end once more. */
+  if (s == ZR_OK)
+    s = zr__progress(p.context, ZR_PHASE_RENDER, job.rows_total,
+                     job.rows_total);
+  if (s == ZR_ECANCELLED)
+    zr__diag(p.context, ZR_DIAG_ERROR, s, NULL, "render: cancelled");
+  if (stats)
+    for (int i = 0; i < threads; i++)
+      zr_render_stats_add(stats, &slots[i].stats);
+  free(slots);
   free(centres);
   return s;
 }
