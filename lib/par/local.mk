@@ -18,6 +18,7 @@ tests_test_par_CFLAGS = $(AM_CFLAGS) $(PTHREAD_CFLAGS)
 tests_test_par_LDADD = lib/par/libzrpar.la $(TEST_LDADD) $(MPI_LIBS) \
 	$(PTHREAD_LIBS)
 
+if ZR_MPI
 # libzrcube_mpi: the MPI driver above on a caller's communicator
 # (include/zrcube_mpi.h), for programs that run MPI themselves.
 lib_LTLIBRARIES += lib/par/libzrcube_mpi.la
@@ -38,3 +39,4 @@ examples_mpi_render_LDADD = lib/par/libzrcube_mpi.la lib/libzrcube.la \
 	$(MPI_LIBS)
 TESTS += tests/test_mpi_example.sh
 EXTRA_DIST += tests/test_mpi_example.sh
+endif

@@ -116,6 +116,7 @@ zr_status zr__par_init(int *argc, char ***argv, zr_par **out) {
   return ZR_OK;
 }
 
+#ifdef ZR_HAVE_MPI
 zr_status zr__par_from_comm(void *comm_ptr, zr_par **out) {
   MPI_Comm comm = *(MPI_Comm *)comm_ptr;
   *out = NULL;
@@ -156,6 +157,15 @@ zr_status zr__par_from_comm(void *comm_ptr, zr_par **out) {
   *out = par;
   return ZR_OK;
 }
+#else
+/* Built without MPI (configure --without-mpi): there is no caller's
+   communicator to join; libzrcube_mpi is not built then. */
+zr_status zr__par_from_comm(void *comm_ptr, zr_par **out) {
+  (void)comm_ptr;
+  *out = NULL;
+  return ZR_EINVAL;
+}
+#endif
 
 void zr__par_finalize(zr_par *par) {
   if (!par)
