@@ -19,7 +19,8 @@
 #include "options.h"
 
 /* Parses a NULL-terminated list of words into o (initialised here). */
-static int parse_words(zr_cli_options *o, char *err, const char **words) {
+static int parse_words(zr_cli_options *o, char *err,
+                       const char *const *words) {
   zr_render_params defaults;
   zr_render_params_init(&defaults);
   zr__cli_init(o, &defaults);

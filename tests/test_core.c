@@ -123,7 +123,7 @@ static void test_core_diag_format(void **state) {
   captured c = {{0}, 0};
   zr_context_set_diag(ctx, capture, &c);
   const char *line = "sphere { <0,0,0>, foo }";
-  zr_diag_place place = {"scene.pov", 3, 19, line, strlen(line), 3, NULL};
+  zr_diag_place place = {"scene.pov", 3, 19, line, strlen(line), 3, NULL, 0, 0};
   zr_status s = zr__diag(ctx, ZR_DIAG_ERROR, ZR_EUNDEFINED, &place,
                          "undefined identifier '%s'", "foo");
   assert_int_equal(s, ZR_EUNDEFINED);

@@ -627,7 +627,7 @@ static void test_nurbs_bad_input_messages(void **state) {
                "error: radiosity surface: singular or non-finite "
                "transform\n");
   /* The place of the object, when given, leads the message. */
-  zr_diag_place where = {"scene.pov", 7, 3, NULL, 0, 0, NULL};
+  zr_diag_place where = {"scene.pov", 7, 3, NULL, 0, 0, NULL, 0, 0};
   expect_error(ctx, zr__surface_sphere(&s, o, -2.0, NULL, ctx, &where),
                "scene.pov:7:3: error: sphere radius must be positive and "
                "finite (got -2)\n");

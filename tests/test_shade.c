@@ -740,7 +740,7 @@ static zr_radiosity *solve(zr_scene *s) {
 static zr_rgb trace_rad(zr_scene *s, const zr_radiosity *rad, int only,
                         zr_vec3 from, zr_vec3 dir) {
   zr_render_stats stats = {0};
-  zr_tracer tr = {.scene = s, .stats = &stats, .radiosity = rad,
+  zr_tracer tr = {.scene = s, .stats = &stats, .radiosity = zr__radiance_source(rad),
                   .radiosity_only = only};
   zr_ray r = {from, dir};
   return zr__trace_ray(&tr, &r, 1, 1.0, NULL);
