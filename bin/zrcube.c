@@ -1153,9 +1153,9 @@ static void print_rank_times(const run *r) {
 }
 
 /* A time as POV-Ray's statistics give it. */
-static void print_time(const char *label, double seconds) {
+static void print_time(FILE *out, const char *label, double seconds) {
   long whole = (long)seconds;
-  fprintf(stderr, "  %-18s%ld hours %2ld minutes %2ld seconds (%.3f seconds)\n",
+  fprintf(out, "  %-18s%ld hours %2ld minutes %2ld seconds (%.3f seconds)\n",
           label, whole / 3600, whole / 60 % 60, whole % 60, seconds);
 }
 
@@ -1165,7 +1165,7 @@ static void print_time(const char *label, double seconds) {
  * table and the counts zRcube does not keep are left out), with the
  * ranks and threads of the run.
  */
-static void print_statistics(const run *r) {
+static void print_statistics(run *r) {
   const zr_render_stats *st = &r->render.stats;
   const zr_render_params *p = &r->opts.params;
   zr_scene_info info;
@@ -1177,33 +1177,42 @@ static void print_statistics(const run *r) {
                      rays = st->camera_rays + st->supersample_rays +
                             st->reflected_rays + st->refracted_rays;
   int ranks = zr__par_size(r->par);
-  fprintf(stderr, "%s\nParser Statistics\n%s\n", rule, rule);
-  fprintf(stderr, "%-18s%9zu\n%-18s%9zu\n%-18s%9zu\n%-18s%9zu\n",
+  /* Through the statistics stream (+GS, -GS), which may go to a file. */
+  char *text = NULL;
+  size_t len = 0;
+  FILE *out = open_memstream(&text, &len);
+  if (!out)
+    return;
+  fprintf(out, "%s\nParser Statistics\n%s\n", rule, rule);
+  fprintf(out, "%-18s%9zu\n%-18s%9zu\n%-18s%9zu\n%-18s%9zu\n",
           "Finite Objects:", info.finite_primitives, "Infinite Objects:",
           info.infinite_primitives, "Light Sources:", info.lights, "Total:",
           info.finite_primitives + info.infinite_primitives + info.lights);
-  fprintf(stderr, "%s\nParser Time\n", rule);
-  print_time("Parse Time:", r->parse_seconds);
-  fprintf(stderr, "%s\nRender Statistics\nImage Resolution %d x %d\n%s\n",
+  fprintf(out, "%s\nParser Time\n", rule);
+  print_time(out, "Parse Time:", r->parse_seconds);
+  fprintf(out, "%s\nRender Statistics\nImage Resolution %d x %d\n%s\n",
           rule, p->width, p->height, rule);
-  fprintf(stderr, "%-10s%14llu   %-10s%14llu   Smpls/Pxl: %.2f\n",
+  fprintf(out, "%-10s%14llu   %-10s%14llu   Smpls/Pxl: %.2f\n",
           "Pixels:", pixels, "Samples:", samples,
           pixels ? (double)samples / (double)pixels : 0.0);
-  fprintf(stderr, "%-10s%14llu   %-10s%14llu\n", "Rays:", rays,
+  fprintf(out, "%-10s%14llu   %-10s%14llu\n", "Rays:", rays,
           "Supersampled pixels:", (unsigned long long)st->supersampled_pixels);
-  fprintf(stderr, "%s\n%-24s%10llu\n%-24s%10llu\n%-24s%10llu\n%s\n",
+  fprintf(out, "%s\n%-24s%10llu\n%-24s%10llu\n%-24s%10llu\n%s\n",
           rule, "Shadow Ray Tests:", (unsigned long long)st->shadow_rays,
           "Reflected Rays:", (unsigned long long)st->reflected_rays,
           "Refracted Rays:", (unsigned long long)st->refracted_rays, rule);
-  fprintf(stderr, "Render Time:\n");
+  fprintf(out, "Render Time:\n");
   if (r->gi_method == ZR_GI_HIERARCHICAL || r->gi_method == ZR_GI_CACHE)
-    print_time("Radiosity Time:", r->radiosity_seconds + r->gi_seconds);
+    print_time(out, "Radiosity Time:", r->radiosity_seconds + r->gi_seconds);
   else
-    fprintf(stderr, "  %-18sNo radiosity\n", "Radiosity Time:");
-  print_time("Trace Time:", r->render.render_seconds);
-  fprintf(stderr, "              using %d rank%s x %d thread%s\n", ranks,
+    fprintf(out, "  %-18sNo radiosity\n", "Radiosity Time:");
+  print_time(out, "Trace Time:", r->render.render_seconds);
+  fprintf(out, "              using %d rank%s x %d thread%s\n", ranks,
           ranks == 1 ? "" : "s", r->threads, r->threads == 1 ? "" : "s");
-  print_time("Write Time:", r->write_seconds);
+  print_time(out, "Write Time:", r->write_seconds);
+  if (fclose(out) == 0 && text)
+    emit(&r->diag, ZR_CLI_STREAM_STATISTICS, text);
+  free(text);
 }
 
 /* --parse-only: what the scene holds, on stdout, one "key: value" a

@@ -121,7 +121,8 @@ run declare "$ZRCUBE" declare.pov +W8 +H6 Declare=RAD=2.5 -GW +V \
   +GSstats.txt +Odeclare.png
 grep -q "RAD is 2.5" declare.err || fail "declare: $(cat declare.err)"
 grep -q "a warning" declare.err && fail "-GW: the warning was shown"
-grep -q "rays:" stats.txt || fail "+GSstats.txt: no statistics in the file"
+grep -q "Render Statistics" stats.txt ||
+  fail "+GSstats.txt: no statistics in the file"
 
 # +HIfile: a header include, not +H (found where #include looks).
 echo '#declare HeaderColour = rgb <0, 1, 0>;' >head.inc
