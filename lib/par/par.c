@@ -70,6 +70,30 @@ static zr_status mpi_status(int rc) {
   return rc == MPI_SUCCESS ? ZR_OK : ZR_EMPI;
 }
 
+/*
+ * par's own duplicate of comm, returning errors instead of aborting, with
+ * its rank, size and the number of ranks on this node; an MPI error code
+ * when any step fails (par->comm is then freed by zr__par_finalize).
+ */
+static int join_comm(zr_par *par, MPI_Comm comm) {
+  MPI_Comm node = MPI_COMM_NULL;
+  int rc = MPI_Comm_dup(comm, &par->comm);
+  if (rc == MPI_SUCCESS)
+    rc = MPI_Comm_set_errhandler(par->comm, MPI_ERRORS_RETURN);
+  if (rc == MPI_SUCCESS)
+    rc = MPI_Comm_rank(par->comm, &par->rank);
+  if (rc == MPI_SUCCESS)
+    rc = MPI_Comm_size(par->comm, &par->size);
+  if (rc == MPI_SUCCESS)
+    rc = MPI_Comm_split_type(par->comm, MPI_COMM_TYPE_SHARED, par->rank,
+                             MPI_INFO_NULL, &node);
+  if (rc == MPI_SUCCESS)
+    rc = MPI_Comm_size(node, &par->local_size);
+  if (node != MPI_COMM_NULL)
+    MPI_Comm_free(&node);
+  return rc;
+}
+
 zr_status zr__par_init(int *argc, char ***argv, zr_par **out) {
   zr_par *par = calloc(1, sizeof *par);
   if (!par)
@@ -91,23 +115,7 @@ zr_status zr__par_init(int *argc, char ***argv, zr_par **out) {
     /* With MPI_THREAD_SINGLE even threads that never call MPI are not
        allowed, so such an MPI gets one thread per rank. */
     par->threads_allowed = provided >= MPI_THREAD_FUNNELED;
-    MPI_Comm node = MPI_COMM_NULL;
-    /* A private communicator, returning errors instead of aborting. */
-    int rc = MPI_Comm_dup(MPI_COMM_WORLD, &par->comm);
-    if (rc == MPI_SUCCESS)
-      rc = MPI_Comm_set_errhandler(par->comm, MPI_ERRORS_RETURN);
-    if (rc == MPI_SUCCESS)
-      rc = MPI_Comm_rank(par->comm, &par->rank);
-    if (rc == MPI_SUCCESS)
-      rc = MPI_Comm_size(par->comm, &par->size);
-    if (rc == MPI_SUCCESS)
-      rc = MPI_Comm_split_type(par->comm, MPI_COMM_TYPE_SHARED, par->rank,
-                               MPI_INFO_NULL, &node);
-    if (rc == MPI_SUCCESS)
-      rc = MPI_Comm_size(node, &par->local_size);
-    if (node != MPI_COMM_NULL)
-      MPI_Comm_free(&node);
-    if (rc != MPI_SUCCESS) {
+    if (join_comm(par, MPI_COMM_WORLD) != MPI_SUCCESS) {
       zr__par_finalize(par);
       return ZR_EMPI;
     }
@@ -133,24 +141,10 @@ zr_status zr__par_from_comm(void *comm_ptr, zr_par **out) {
   int provided = MPI_THREAD_SINGLE;
   MPI_Query_thread(&provided);
   par->threads_allowed = provided >= MPI_THREAD_FUNNELED;
-  MPI_Comm node = MPI_COMM_NULL;
-  /* The caller's communicator is duplicated, so our collectives never
-     match the caller's messages, and its error handler is left alone. */
-  int rc = MPI_Comm_dup(comm, &par->comm);
-  if (rc == MPI_SUCCESS)
-    rc = MPI_Comm_set_errhandler(par->comm, MPI_ERRORS_RETURN);
-  if (rc == MPI_SUCCESS)
-    rc = MPI_Comm_rank(par->comm, &par->rank);
-  if (rc == MPI_SUCCESS)
-    rc = MPI_Comm_size(par->comm, &par->size);
-  if (rc == MPI_SUCCESS)
-    rc = MPI_Comm_split_type(par->comm, MPI_COMM_TYPE_SHARED, par->rank,
-                             MPI_INFO_NULL, &node);
-  if (rc == MPI_SUCCESS)
-    rc = MPI_Comm_size(node, &par->local_size);
-  if (node != MPI_COMM_NULL)
-    MPI_Comm_free(&node);
-  if (rc != MPI_SUCCESS) {
+  /* The caller's communicator is duplicated (join_comm), so our
+     collectives never match the caller's messages, and its error
+     handler is left alone. */
+  if (join_comm(par, comm) != MPI_SUCCESS) {
     zr__par_finalize(par);
     return ZR_EMPI;
   }
