@@ -221,8 +221,7 @@ static bool shadow_visit(const zr_hit *hit, void *user) {
   }
   if (o->no_shadow)
     return true;
-  if (w->scene->settings.photons.on &&
-      zr__photons_block_shadow(w->scene, w->source, o)) {
+  if (zr__photons_block_shadow(w->scene, w->source, o)) {
     w->light = zr_rgb3(0, 0, 0);
     return false; /* the photons bring this light (lib/trace/photons.c) */
   }
