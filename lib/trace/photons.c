@@ -88,9 +88,14 @@ struct zr_photon_map {
 };
 
 /* The most photons one map holds (44 bytes each: 1.4 GB); beyond it the
-   shooting stops with a warning. */
+   shooting stops with a warning.  Our own bound, not POV-Ray's. */
 #define PHOTONS_MAX ((size_t)1 << 25)
-/* How far the search radius grows when too few photons are found. */
+/* How far the search radius grows when too few photons are found, and
+   how often.  The manual says the radius is expanded but not by how
+   much; these are our choice, judged on tests/photons_check.pov's lens
+   (SSIM 0.97 against povray, which is the spread povray's own pictures
+   show between radius settings there; one expansion left the sparse
+   edge of the caustic dotted: 0.82). */
 #define EXPAND_FACTOR 2.0
 #define EXPANSIONS 3
 
