@@ -850,7 +850,8 @@ typedef enum zr_image_format {
   ZR_FORMAT_TGA,      /* uncompressed, 24 bit (32 with alpha) */
   ZR_FORMAT_TGA_RLE,  /* run-length encoded, 24 bit (32 with alpha) */
   ZR_FORMAT_HDR,      /* Radiance RGBE, linear, run-length encoded */
-  ZR_FORMAT_EXR       /* OpenEXR, half floats, linear (if built with it) */
+  ZR_FORMAT_EXR,      /* OpenEXR, half floats, linear (if built with it) */
+  ZR_FORMAT_BMP       /* Windows bitmap, 24 bit (32 with alpha) */
 } zr_image_format;
 
 /* An RGB image of linear floats, rows top to bottom. */
@@ -888,9 +889,10 @@ ZR_API zr_image_format zr_image_format_from_name(const char *path);
 
 /*
  * An alpha channel, one float a pixel in [0, 1] (1 opaque), rows top to
- * bottom, made and owned by the image (all 1 when made).  PNG, TGA and
- * OpenEXR files are written with it when the image has one (PNG RGBA,
- * TGA 32 bit); the other formats leave it out.  Colours stay unmultiplied.
+ * bottom, made and owned by the image (all 1 when made).  PNG, TGA, BMP
+ * and OpenEXR files are written with it when the image has one (PNG
+ * RGBA, TGA and BMP 32 bit); the other formats leave it out.  Colours
+ * stay unmultiplied.
  */
 ZR_API zr_status zr_image_add_alpha(zr_image *image);
 /* The alpha channel, or NULL when the image has none. */
