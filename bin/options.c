@@ -108,6 +108,8 @@ typedef enum opt_key {
   K_START_COL,
   K_END_COL,
   K_CONTINUE_ON,
+  K_ALPHA_ON,     /* +UA, Output_Alpha=on */
+  K_ALPHA_OFF,
   K_CONTINUE_OFF,
   K_STATE_INTERVAL,
   /* Scene parsing (3.2.5). */
@@ -812,6 +814,10 @@ static int apply_more(const arg_ctx *c, opt_key key, const char *value) {
   case K_CONTINUE_OFF:
     o->continue_trace = key == K_CONTINUE_ON;
     return 0;
+  case K_ALPHA_ON:
+  case K_ALPHA_OFF:
+    o->params.alpha = key == K_ALPHA_ON;
+    return 0;
   case K_STATE_INTERVAL:
     if (!parse_real(value, &d) || d < 0)
       return fail(c, "'%s': --state-interval takes seconds (0: after "
@@ -1123,6 +1129,7 @@ static const pov_switch pov_switches[] = {
      "a version, as in +MV3.7"},
     {"MB", K_IGNORED, K_IGNORED, V_ANY, NULL},
     {"MI", K_IGNORED, K_IGNORED, V_ANY, NULL},
+    {"UA", K_ALPHA_ON, K_ALPHA_OFF, V_NONE, NULL},
     {"UD", K_NOTE, K_NOTE, V_NONE, "ignored: zrcube does not dither"},
     {"UF", K_NOTE, K_NOTE, V_NONE,
      "ignored: field rendering is not supported"},
@@ -1370,7 +1377,7 @@ static const ini_option ini_options[] = {
     {"Preview_End_Size", K_IGNORED, 0, K_IGNORED, NULL},
     {"Draw_Vistas", K_IGNORED, 0, K_IGNORED, NULL},
     /* File output (3.2.4). */
-    NOTE("Output_Alpha", "ignored: the image is written without alpha"),
+    {"Output_Alpha", K_ALPHA_ON, 1, K_ALPHA_OFF, NULL},
     NOTE("Dither", "ignored: zrcube does not dither"),
     NOTE("Dither_Method", "ignored: zrcube does not dither"),
     NOTE("File_Gamma", "ignored: the file gamma follows the scene's "

@@ -779,6 +779,16 @@ typedef struct zr_render_params {
   /* Diagnostics, progress and cancel of the calls taking these
      parameters (NULL: none, the default).  It must outlive the call. */
   zr_context *context;
+  /* POV-Ray's +UA (Output_Alpha).  0 (default): rgb and centres hold 3
+     floats a pixel.  1: 4 floats a pixel, the colour seen with the
+     background clear (transparent black, so the colour is premultiplied
+     by alpha) and the alpha, 0 where only background shows: in scenes
+     of #version 3.7 the background's and sky_sphere's filter and
+     transmit make it clear, older scenes have it clear and black; what
+     the camera sees through filter and transmit is clear in proportion,
+     reflections of the background are not (zrcube(1), "+UA").  Not
+     with a path tracer. */
+  int alpha;
 } zr_render_params;
 
 /* Fills p with POV-Ray's defaults (and the command line's: zrcube(1)
@@ -799,7 +809,8 @@ ZR_API void zr_render_stats_add(zr_render_stats *a, const zr_render_stats *b);
 
 /*
  * Renders count pixels, pixels[i] = y * width + x, into rgb[3 * i ..] as
- * linear floats in the scene's working colour space.  With centres == NULL
+ * linear floats in the scene's working colour space (rgb[4 * i ..],
+ * colour and alpha, with params->alpha; centres alike).  With centres == NULL
  * this is pass 1 (one ray per pixel centre).  With centres pointing at a
  * complete width * height * 3 image of pass 1, this is the antialiasing
  * pass: pixels whose centre differs from a neighbour's by more than the
@@ -813,7 +824,8 @@ ZR_API zr_status zr_render_pixels(const zr_scene *scene,
                                   zr_render_stats *stats);
 
 /*
- * Both passes over the whole image (rgb: width * height * 3 floats),
+ * Both passes over the whole image (rgb: width * height * 3 floats, 4
+ * with params->alpha),
  * rows shared among params->threads threads (the caller's among them),
  * with progress (ZR_PHASE_RENDER, rows) and cancel through
  * params->context.  The image is the same bytes for any thread count.

@@ -990,7 +990,7 @@ typedef struct zr_settings {
   /* irid_wavelength: iridescence's red, green and blue wavelengths in
      microns ("Irid_Wavelength"); default <0.70, 0.52, 0.48>. */
   zr_rgb irid_wavelength;
-  zr_colour background; /* default black, transmit 0 */
+  zr_colour background; /* default black, transmit 1 (clear) */
   double version;       /* the last #version; the parser sets 3.7 if none */
   /* A #version directive was read: POV-Ray 3.7 drops ambient under
      radiosity only for scenes that declare 3.7 (measured: a sphere of
