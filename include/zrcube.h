@@ -904,7 +904,8 @@ ZR_API zr_image_format zr_image_format_from_name(const char *path);
  * bottom, made and owned by the image (all 1 when made).  PNG, TGA, BMP
  * and OpenEXR files are written with it when the image has one (PNG
  * RGBA, TGA and BMP 32 bit); the other formats leave it out.  Colours
- * stay unmultiplied.
+ * stay unmultiplied (OpenEXR files store them premultiplied, as that
+ * format and povray do).
  */
 ZR_API zr_status zr_image_add_alpha(zr_image *image);
 /* The alpha channel, or NULL when the image has none. */

@@ -295,14 +295,18 @@ static void test_image_io_exr(void **state) {
     assert_true(fabs(back->pixels[i] - im->pixels[i]) <=
                 im->pixels[i] / 2048.0 + 1e-7);
   zr_image_free(back);
-  /* With alpha: four channels, and the colours read back the same. */
+  /* With alpha: four channels, the colours premultiplied by it (as
+     OpenEXR and povray keep them), the others read back the same. */
   assert_int_equal(zr_image_add_alpha(im), ZR_OK);
   zr_image_alpha(im)[0] = 0.25f;
   size_t n4 = 0;
   unsigned char *b4 = encode(fx, im, ZR_FORMAT_EXR, 0, &n4);
   assert_true(n4 > n);
   back = decode(fx, b4, n4);
-  assert_memory_equal(back->pixels, im->pixels, 3 * sizeof(float));
+  for (int k = 0; k < 6; k++) {
+    float want = k < 3 ? 0.25f * im->pixels[k] : im->pixels[k];
+    assert_true(fabs(back->pixels[k] - want) <= want / 2048.0 + 1e-7);
+  }
   zr_image_free(back);
   free(b4);
   /* A damaged file is an error, not a crash. */
