@@ -5,7 +5,8 @@
 # averaged over supersamples); PNG is RGBA (colour type 6), Targa and
 # BMP are 32 bits a pixel; the background of a scene without #version
 # is clear; a format without alpha (PPM) is written without it, with a
-# warning, and so is Output_Alpha=off.  tests/test_alpha_povray.sh
+# warning, and so is Output_Alpha=off; OpenEXR colours are
+# premultiplied.  tests/test_alpha_povray.sh
 # compares the alpha with povray's.
 set -u
 TEST_NAME=test_alpha
@@ -59,6 +60,22 @@ grep -q "warning: +UA: this output format holds no alpha channel" ppm.err ||
   fail "+UA +FP: no warning"
 zr +WT1 +FP +Oplain2.ppm 2>/dev/null || fail "+FP"
 cmp -s plain.ppm plain2.ppm || fail "+UA +FP differs from +FP"
+
+# OpenEXR keeps colours premultiplied (as povray's +UA +FE): in this
+# scene of no #version, black behind, the colours equal those of the
+# render without +UA.
+imgcmp="${ZR_BUILDDIR:-$(pwd)}/tests/imgcmp"
+if "$ZRCUBE" +I/dev/null +FE 2>&1 | grep -q "built without OpenEXR"; then
+  echo "no OpenEXR in this build: +FE skipped"
+elif [ -x "$imgcmp" ]; then
+  sed '/^background/d' scene.pov >black.pov
+  timeout 120 "$ZRCUBE" black.pov +W48 +H36 -D +WT1 +UA +FE +Oa.exr \
+    2>/dev/null || fail "+UA +FE"
+  timeout 120 "$ZRCUBE" black.pov +W48 +H36 -D +WT1 +FE +Ob.exr \
+    2>/dev/null || fail "+FE"
+  "$imgcmp" a.exr b.exr --ssim-min 1 --delta-max 0 >/dev/null ||
+    fail "+UA +FE: the colours are not premultiplied"
+fi
 
 [ "$failures" -eq 0 ] || exit 1
 echo "test_alpha: ok"

@@ -224,12 +224,14 @@ zr_status zr__exr_encode(zr_context *ctx, const char *name,
   for (size_t i = 0; i < count; i++) {
     /* OpenEXR keeps colours premultiplied by alpha, and povray 3.7 +UA
        +FE writes them so (measured: the colours of a +UA file are those
-       of the same render on black without +UA). */
+       of the same render on black without +UA, also where the working
+       gamma is not 1: the working colour is premultiplied, then made
+       linear). */
     float a = alpha ? image->alpha[i] : 1.0f;
     a = !(a > 0.0f) ? 0.0f : a > 1 ? 1 : a;
     for (int c = 0; c < 3; c++)
-      half[i * channels + c] = half_of((float)(
-          a * zr__linear_sample(image->pixels[3 * i + c], e->assumed_gamma)));
+      half[i * channels + c] = half_of(zr__linear_sample(
+          a * image->pixels[3 * i + c], e->assumed_gamma));
     if (alpha)
       half[i * channels + 3] = half_of(a);
   }
