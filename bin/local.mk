@@ -36,4 +36,4 @@ TESTS += tests/test_anim.sh tests/test_continue.sh tests/test_quality.sh
 TESTS += tests/test_alpha.sh tests/test_alpha_povray.sh
 EXTRA_DIST += tests/test_alpha.sh tests/test_alpha_povray.sh
 EXTRA_DIST += tests/test_anim.sh tests/test_continue.sh \
-	tests/test_quality.sh tests/quality/quality.pov
+	tests/test_quality.sh tests/quality/quality.pov tests/quality/quick.pov

@@ -759,9 +759,10 @@ typedef struct zr_render_params {
      corners differ by more than aa_threshold is split into four, down
      to aa_depth levels ((2^aa_depth + 1)^2 samples at most). */
   int aa_method;
-  /* POV-Ray's +Q, 0 to 11 (default 9): below 4 no shadows, below 5 area
-     lights cast hard shadows, below 6 no transmitted rays, below 8 no
-     reflected rays, below 9 no media. */
+  /* POV-Ray's +Q, 0 to 11 (default 9): below 2 no lighting (each
+     surface in its pigment's colour), below 4 no shadows, below 5 area
+     lights cast hard shadows, below 6 no transmitted rays and quick_color
+     replaces pigments, below 8 no reflected rays, below 9 no media. */
   int quality;
   /* The path-traced reference for this scene (NULL: none, the default;
      not with radiosity or gi_cache): each pixel is the mean of

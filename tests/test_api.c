@@ -13,6 +13,7 @@
 
 #include <cmocka.h>
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -188,6 +189,49 @@ static void test_api_alpha(void **state) {
   free(rgba);
   free(other);
   free(rgb);
+}
+
+/* quality 0 and 1 show each surface's colour unlit (the bottom layer of
+   a layered texture), quick_color replaces the pigment up to quality 5
+   (measured against povray: tests/test_quality.sh, quick.pov). */
+static void test_api_quick_colours(void **state) {
+  (void)state;
+  static const char text[] =
+      "camera { location <0, 0, -4> look_at 0 }\n"
+      "light_source { <5, 5, -5> rgb 1 }\n"
+      "sphere { <-1, 0, 0>, 0.6 pigment { gradient x color_map "
+      "{ [0 rgb 1] [1 rgb 0] } quick_color rgb <1, 0.2, 0.6> } }\n"
+      "sphere { <1, 0, 0>, 0.6 texture { pigment { rgb <0.5, 0.25, 1> } "
+      "finish { ambient 0.3 } } texture { pigment { rgbt <0, 1, 0, 0.5> } "
+      "} }\n";
+  zr_scene *scene = parse(NULL, text);
+  enum { W = 40, H = 30 };
+  float rgb[W * H * 3];
+  zr_render_params p;
+  zr_render_params_init(&p);
+  p.width = W;
+  p.height = H;
+  const float *quick = rgb + 3 * (15 * W + 12);
+  const float *layered = rgb + 3 * (15 * W + 27);
+  for (int q = 0; q <= 1; q++) {
+    p.quality = q;
+    assert_int_equal(zr_render_image(scene, &p, rgb, NULL), ZR_OK);
+    assert_float_equal(quick[0], 1.0, 1e-6);
+    assert_float_equal(quick[1], 0.2, 1e-6);
+    assert_float_equal(quick[2], 0.6, 1e-6);
+    assert_float_equal(layered[0], 0.5, 1e-6);
+    assert_float_equal(layered[1], 0.25, 1e-6);
+    assert_float_equal(layered[2], 1.0, 1e-6);
+  }
+  /* Lit from quality 2; the quick colour's hue up to 5, not from 6. */
+  p.quality = 5;
+  assert_int_equal(zr_render_image(scene, &p, rgb, NULL), ZR_OK);
+  assert_true(quick[0] < 1.0f && quick[0] > 0.0f);
+  assert_float_equal(quick[1] / quick[0], 0.2, 1e-4);
+  p.quality = 6;
+  assert_int_equal(zr_render_image(scene, &p, rgb, NULL), ZR_OK);
+  assert_true(fabs(quick[1] / quick[0] - 0.2) > 0.1);
+  zr_scene_free(scene);
 }
 
 static void test_api_render_progress(void **state) {
@@ -527,6 +571,7 @@ int main(void) {
       cmocka_unit_test(test_api_diag_offset),
       cmocka_unit_test(test_api_render_diagnostics),
       cmocka_unit_test(test_api_alpha),
+      cmocka_unit_test(test_api_quick_colours),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

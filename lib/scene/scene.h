@@ -305,6 +305,10 @@ typedef struct zr_pigment {
   /* uv_mapping ("UV Mapping"): the pattern is evaluated at (u, v, 0),
      the hit's surface coordinates, instead of the 3-D point. */
   bool uv_mapping;
+  /* quick_color ("Quick Color"): the colour shown instead at +Q5 and
+     below (lib/trace/shade.c). */
+  bool has_quick;
+  zr_colour quick;
 } zr_pigment;
 
 /* normal { Pattern [Bump_Size] ... }: the shading normal tilts against

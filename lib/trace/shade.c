@@ -459,6 +459,13 @@ void zr__tracer_quality(zr_tracer *tracer, int quality) {
   tracer->point_area_lights = quality < 5;
   tracer->no_transmitted = quality < 6;
   tracer->no_reflected = quality < 8;
+  /* Measured with povray 3.7.0 (tests/test_quality.sh, quick.pov):
+     quick_color shows up to +Q5 and not from +Q6, as the reference
+     says; +Q0 and +Q1 show each surface in its colour as it is, without
+     ambient, diffuse, highlights, emission or transparency, and a
+     layered texture in its bottom layer's. */
+  tracer->quick_colours = quality <= 5;
+  tracer->flat = quality <= 1;
   if (quality < 9)
     tracer->no_media = true;
 }
@@ -707,8 +714,18 @@ static zr_rgb photon_light(const zr_tracer *tr, const surface *s,
   return zr_rgb_scale(zr_rgb_mul(e, c), f->diffuse * opacity);
 }
 
+/* The pigment's colour at p, or its quick_color at +Q5 and below. */
+static zr_colour pigment_colour(const zr_tracer *tr, const zr_pigment *pg,
+                                zr_vec3 p, zr_vec3 n) {
+  if (tr->quick_colours && pg->has_quick)
+    return pg->quick;
+  return zr__pigment_eval_n(pg, p, n);
+}
+
 static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
                     double weight, const zr_media *media) {
+  if (tr->flat) /* +Q0, +Q1: the colour as it is */
+    return zr_colour_rgb(s->colour);
   const zr_finish *f = s->finish;
   const zr_settings *gs = &tr->scene->settings;
   zr_colour col = s->colour;
@@ -905,8 +922,9 @@ static zr_rgb shade_layer(const zr_tracer *tr, const surface *s,
                   s->entering);
   ls.n = s->entering ? n : zr_v3_neg(n);
   ls.finish = tx->finish;
-  ls.colour = zr__pigment_eval_n(
-      tx->pigment, pattern_point(&ls, uv || tx->pigment->uv_mapping), ls.n);
+  ls.colour = pigment_colour(
+      tr, tx->pigment, pattern_point(&ls, uv || tx->pigment->uv_mapping),
+      ls.n);
   ls.layer = upper;
   return shade(tr, &ls, level, weight, media);
 }
@@ -923,7 +941,9 @@ static zr_rgb shade_layers(const zr_tracer *tr, const surface *s,
                            double weight, const zr_media *media) {
   const zr_texture *layers[MAX_LAYERS];
   int n = 0;
-  for (const zr_texture *l = tx; l && n < MAX_LAYERS; l = l->over)
+  /* +Q0, +Q1 show the bottom layer alone. */
+  for (const zr_texture *l = tx; l && n < (tr->flat ? 1 : MAX_LAYERS);
+       l = l->over)
     layers[n++] = l;
   zr_rgb sum = zr_rgb3(0, 0, 0);
   zr_rgb through = zr_rgb3(1, 1, 1);
@@ -939,8 +959,11 @@ static zr_rgb shade_layers(const zr_tracer *tr, const surface *s,
     surface us = *s;
     zr_vec3 at = pattern_point(&us, layers[i]->uv_mapping ||
                                         layers[i]->pigment->uv_mapping);
-    through = zr_rgb_mul(through,
-                         zr__texture_see_through_layer(layers[i], at));
+    const zr_pigment *pg = layers[i]->pigment;
+    through = zr_rgb_mul(
+        through, !layers[i]->map && tr->quick_colours && pg->has_quick
+                     ? see_through(pg->quick) /* +Q5 and below */
+                     : zr__texture_see_through_layer(layers[i], at));
     if (rgb_max(through) <= 0.0)
       break;
   }
@@ -1119,8 +1142,9 @@ static zr_rgb trace_upto(const zr_tracer *tracer, const zr_ray *ray,
                   s.entering);
   s.n = s.entering ? n : zr_v3_neg(n);
   s.finish = tx->finish;
-  s.colour = zr__pigment_eval_n(
-      tx->pigment, pattern_point(&s, uv || tx->pigment->uv_mapping), s.n);
+  s.colour = pigment_colour(
+      tracer, tx->pigment, pattern_point(&s, uv || tx->pigment->uv_mapping),
+      s.n);
   s.offset = zr__surface_offset(s.p);
   s.layer = false;
   if (tracer->radiosity_only) {

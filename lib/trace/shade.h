@@ -120,6 +120,10 @@ typedef struct zr_tracer {
      area lights as such (below 5, one shadow ray to the centre),
      transmitted rays (below 6), reflected rays (below 8). */
   bool no_shadows, point_area_lights, no_transmitted, no_reflected;
+  /* +Q5 and below: pigments with a quick_color show it; +Q1 and below
+     (flat): no lighting at all, a surface shows its pigment's colour
+     (the bottom layer's), filter, transmit and finish ignored. */
+  bool quick_colours, flat;
   /* The surface this ray meets first leaves out the emission that
      indirect->samples_emission says the model sampled; the rays it
      spawns do not (lib/gi/path.c). */
