@@ -640,6 +640,14 @@ static void test_cli_options_prefixes_and_more(void **state) {
   assert_int_equal(PARSE(&o, err, "+FJ", "Compression=40"), 0);
   assert_int_equal(o.jpeg_quality, 40);
   zr__cli_free(&o);
+  /* +UA and Output_Alpha: the renderer's alpha. */
+  assert_int_equal(PARSE(&o, err, "+UA"), 0);
+  assert_int_equal(o.params.alpha, 1);
+  assert_int_equal(o.n_notes, 0);
+  zr__cli_free(&o);
+  assert_int_equal(PARSE(&o, err, "+UA", "Output_Alpha=off"), 0);
+  assert_int_equal(o.params.alpha, 0);
+  zr__cli_free(&o);
   assert_int_equal(PARSE(&o, err, "+GA", "All_File=on"), 0);
   assert_string_equal(o.stream_file[ZR_CLI_STREAM_DEBUG], "ALLTEXT.OUT");
   zr__cli_free(&o);

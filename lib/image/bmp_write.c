@@ -5,12 +5,13 @@
  * those povray 3.7 writes (measured: `povray +FB` of a 5 x 3 scene;
  * tests/test_formats_povray.sh compares the headers): a 14-byte
  * BITMAPFILEHEADER ("BM", the file size, two reserved zero words, pixel
- * offset 54), a 40-byte BITMAPINFOHEADER (width, positive height: rows bottom to top, one
- * plane, 24 bits a pixel, or 32 with an alpha channel (+UA), compression
- * 0, the size of the pixels, resolution 0, no colour table), then the
- * rows, blue, green, red[, alpha], each padded to four bytes with
- * zeros.  Colours get the sRGB encoding every 8-bit format here gets
- * (image.c) and stay unmultiplied by alpha, as in povray's 32-bit BMP.
+ * offset 54), a 40-byte BITMAPINFOHEADER (width, positive height: rows
+ * bottom to top, one plane, 24 bits a pixel, or 32 with an alpha channel
+ * (+UA), compression 0, the size of the pixels, resolution 0, no colour
+ * table), then the rows, blue, green, red[, alpha], each padded to four
+ * bytes with zeros.  Colours get the sRGB encoding every 8-bit format
+ * here gets (image.c) and stay unmultiplied by alpha, as in povray's
+ * 32-bit BMP.
  */
 #include <stdint.h>
 #include <stdlib.h>
