@@ -28,6 +28,7 @@ dist_scenes_DATA = \
 	scenes/ortho_id.pov \
 	scenes/spirals.pov \
 	scenes/waves_quilted.pov \
+	scenes/camera_sky.pov \
 	scenes/transmit_over.pov \
 	scenes/texture_modify.pov \
 	scenes/gamma.pov \
