@@ -31,6 +31,8 @@ EXTRA_DIST += tests/golden.sh tests/ref/README.md tests/ref/make-refs.sh \
 	tests/ref/normal_tilt.png \
 	tests/ref/ortho_id.png \
 	tests/ref/spirals.png \
+	tests/ref/waves_quilted.png \
+	tests/ref/camera_sky.png \
 	tests/ref/transmit_over.png \
 	tests/ref/texture_modify.png \
 	tests/ref/bicubic.png \
