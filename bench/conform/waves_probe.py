@@ -2,7 +2,7 @@
 """waves_probe.py - recovers POV-Ray 3.7's ripples and waves patterns from
 the povray binary's values (functions of `pattern { ripples }` and
 `pattern { waves }`, read with #debug by bench/noise/povprobe.py) and
-writes bench/conform/waves_tables.h, which lib/scene/pattern.c includes.
+writes lib/scene/waves_tables.h, which lib/scene/pattern.c includes.
 Rerunning it rewrites the header byte for byte (seeded random numbers,
 values rounded to 10 decimals).
 Run: bench/conform/waves_probe.py [output.h]
@@ -78,7 +78,7 @@ def far_line(u, s):
 
 def main():
     out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(
-        here, "waves_tables.h")
+        here, "..", "..", "lib", "scene", "waves_tables.h")
     # 1. waves' frequencies along one far ray.
     x = np.arange(0, 128, 0.05)
     u = np.array([0.6, 0.48, 0.64])

@@ -69,5 +69,5 @@ EXTRA_DIST += tests/noise/rand.txt bench/noise/probe_rand.sh \
 	bench/noise/crackle_tables.h bench/noise/README.md \
 	bench/noise/ssim_scenes.sh bench/noise/ssim-160x120.tsv \
 	bench/noise/probe_gen3.py bench/noise/gen3_tables.h \
-	bench/conform/waves_tables.h bench/conform/waves_probe.py \
+	lib/scene/waves_tables.h bench/conform/waves_probe.py \
 	bench/conform/quilted_probe.py

@@ -79,7 +79,7 @@
 #include "scene/df3.h"
 #include "core/noise.h"
 
-#include "../../bench/conform/waves_tables.h"
+#include "scene/waves_tables.h" /* made by bench/conform/waves_probe.py */
 #include "../../bench/noise/crackle_tables.h"
 #include "scene/texture.h"
 #include "scene/warp.h"
