@@ -1219,13 +1219,17 @@ bool zr__sdl_object_mod(zr_sdl_parser *p, zr_object *o,
   case ZR_SDL_MOD_TEXTURE:
     /* A texture on a textured object goes on top as a layer, as in
        POV-Ray (build_texture.c). */
-    o->texture = zr__sdl_texture_layer(p, o->texture, mod->ptr);
+    /* The first texture is shared, not copied: textures never change
+       once made (the changes above copy them). */
+    o->texture = o->texture ? zr__sdl_texture_layer(p, o->texture, mod->ptr)
+                            : (const zr_texture *)mod->ptr;
     return o->texture != NULL &&
            legacy_ior(p, o, ((const zr_texture *)mod->ptr)->finish);
   case ZR_SDL_MOD_MATERIAL: {
     const zr_sdl_material *m = mod->ptr;
-    if (m->texture &&
-        !(o->texture = zr__sdl_texture_layer(p, o->texture, m->texture)))
+    if (m->texture && !(o->texture = o->texture ? zr__sdl_texture_layer(
+                                          p, o->texture, m->texture)
+                                                 : m->texture))
       return false;
     if (m->interior)
       set_interior(o, m->interior, true);

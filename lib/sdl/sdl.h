@@ -517,6 +517,11 @@ typedef struct zr_sdl_parser {
   const zr_normal *normal_base;
   const zr_finish *finish_base;
   int base_set;         /* bits 1, 2, 4: pigment, normal, finish base set */
+  /* The copy texture { T ... } started from, and T: a texture that
+     changed nothing of T is T itself, not a copy (a million spheres
+     with texture { T } share one; build_texture.c). */
+  zr_texture *texture_copy;
+  const zr_texture *texture_copied;
   bool default_changed; /* a #default was read */
   int nested_depth; /* parsers running, for ZR_SDL_MAX_NESTED_PARSE */
   int macro_depth;
@@ -960,6 +965,10 @@ void zr__sdl_texture_pattern(zr_texture *tx, int kind);
    copied, above's shared. */
 zr_texture *zr__sdl_texture_layer(zr_sdl_parser *p, const zr_texture *below,
                                   const zr_texture *above);
+/* tx, or the texture identifier's texture it was copied from when it is
+   still the same bytes: textures are never changed once made (changes
+   copy them), so objects can share one. */
+zr_texture *zr__sdl_texture_shared(zr_sdl_parser *p, zr_texture *tx);
 /* The top layer of tx, a private copy: the chain above tx is copied
    (tx itself must be one already); NULL when out of memory. */
 zr_texture *zr__sdl_texture_top(zr_sdl_parser *p, zr_texture *tx);
