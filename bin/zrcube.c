@@ -376,6 +376,16 @@ typedef struct run {
   zr_context *ctx;
   diag_state diag;
   zr_bundle bundle;
+  /* A rank alone keeps no copy of the files it read (a second 15 MB for
+     a big mesh): it hashes them as they come, into files_hash, and
+     keeps each one's size and hash to check a second reading. */
+  struct file_digest {
+    char *path;
+    size_t size;
+    uint64_t hash;
+  } *digests;
+  size_t n_digests;
+  uint64_t files_hash;
   zr_scene *scene;
   zr_image *image;
   zr_radiosity *rad;
@@ -580,6 +590,42 @@ static zr_status make_context(run *r) {
   return s;
 }
 
+/* The read observer of a rank alone: files_hash takes each file as the
+   bundle's fingerprint loop below would (path, size, bytes, in the order
+   first read); a file read again must be the same bytes, as the
+   bundle's recorder checks. */
+static zr_status digest_observer(const char *path, const char *bytes,
+                                 size_t size, void *user) {
+  run *r = user;
+  uint64_t hash = zr__state_hash(ZR_STATE_HASH_START, bytes, size);
+  for (size_t i = 0; i < r->n_digests; i++)
+    if (strcmp(r->digests[i].path, path) == 0)
+      return r->digests[i].size == size && r->digests[i].hash == hash
+                 ? ZR_OK
+                 : ZR_EIO;
+  struct file_digest *d =
+      realloc(r->digests, (r->n_digests + 1) * sizeof *d);
+  if (!d)
+    return ZR_ENOMEM;
+  r->digests = d;
+  if (!(d[r->n_digests].path = strdup(path)))
+    return ZR_ENOMEM;
+  d[r->n_digests].size = size;
+  d[r->n_digests++].hash = hash;
+  r->files_hash = zr__state_hash(r->files_hash, path, strlen(path) + 1);
+  r->files_hash = zr__state_hash(r->files_hash, &size, sizeof size);
+  r->files_hash = zr__state_hash(r->files_hash, bytes, size);
+  return ZR_OK;
+}
+
+static void free_digests(run *r) {
+  for (size_t i = 0; i < r->n_digests; i++)
+    free(r->digests[i].path);
+  free(r->digests);
+  r->digests = NULL;
+  r->n_digests = 0;
+}
+
 /* Steps 2 and 3: the scene, parsed on rank 0 first, then everywhere. */
 static int read_scene(run *r) {
   zr_status local = make_context(r);
@@ -590,8 +636,12 @@ static int read_scene(run *r) {
   if (r->rank == 0 && local == ZR_OK) {
     /* Rank 0 reads with the library's own reader, which applies the
        I/O restrictions, and records what it read for the others. */
-    zr_context_set_read_observer(r->ctx, zr__bundle_record_observer,
-                                 &r->bundle);
+    r->files_hash = ZR_STATE_HASH_START;
+    if (zr__par_size(r->par) == 1)
+      zr_context_set_read_observer(r->ctx, digest_observer, r);
+    else
+      zr_context_set_read_observer(r->ctx, zr__bundle_record_observer,
+                                   &r->bundle);
     root = zr_scene_parse_file(r->ctx, r->opts.input, &r->scene);
     if (root != ZR_OK && r->diag.errors_printed == 0)
       fprintf(stderr, "zrcube: cannot read scene '%s': %s\n",
@@ -626,7 +676,8 @@ static int read_scene(run *r) {
   }
   /* A fingerprint of what the pixels depend on, for the state file: the
      files rank 0 read and the options that change pixels. */
-  uint64_t h = ZR_STATE_HASH_START;
+  uint64_t h = r->n_digests > 0 ? r->files_hash : ZR_STATE_HASH_START;
+  free_digests(r);
   for (size_t i = 0; i < r->bundle.count; i++) {
     const zr_bundle_file *f = &r->bundle.files[i];
     h = zr__state_hash(h, f->path, strlen(f->path) + 1);
@@ -1245,6 +1296,7 @@ static void end_frame(run *r) {
   zr_path_free(r->path);
   zr_scene_free(r->scene);
   zr__bundle_free(&r->bundle);
+  free_digests(r);
   zr_context_free(r->ctx);
   r->image = NULL;
   r->rad = NULL;

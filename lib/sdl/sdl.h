@@ -331,8 +331,13 @@ typedef struct zr_sdl_file {
   size_t n_tokens;
   /* For each block directive, the index of the next directive of its
      block: #if -> #elseif/#else/#end, #switch -> #case..., #while,
-     #for and #macro -> #end; (size_t)-1 where there is none. */
-  size_t *links;
+     #for and #macro -> #end; zr__sdl_link() finds it.  Only the
+     directives that have one are listed, by ascending index: a word per
+     token cost as much as the tokens of a file of spheres. */
+  struct zr_sdl_link {
+    size_t from, to;
+  } *links;
+  size_t n_links;
   zr_arena strings; /* identifier and string texts */
   /* The token array and the file's bytes are charged to this budget
      (NULL: none) while the file is held. */
@@ -356,6 +361,9 @@ zr_status zr__sdl_file_lex_budget(zr_sdl_file *f, int file_index,
                                   zr_sdl_loc *err_loc, char *err,
                                   size_t err_size);
 void zr__sdl_file_free(zr_sdl_file *f);
+/* The next directive of the block of the directive at token i (see
+   links above), (size_t)-1 when there is none. */
+size_t zr__sdl_link(const zr_sdl_file *f, size_t i);
 
 /* What the flex scanner keeps between tokens (its "extra" data). */
 typedef struct zr_sdl_lexer {

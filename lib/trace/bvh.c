@@ -483,6 +483,11 @@ zr_status zr__bvh_build(zr_scene *scene, zr_context *ctx) {
       goto fail;
     }
     collapse(bvh, b.nodes, 0);
+    /* About a third of the room is used (a wide node takes up to three
+       inner binary nodes): give the rest back. */
+    wide_node *fit = realloc(bvh->wide, bvh->n_wide * sizeof *fit);
+    if (fit)
+      bvh->wide = fit;
   }
   free(b.nodes);
   free(items);
