@@ -482,6 +482,11 @@ static zr_status render_pixels(const zr_scene *scene,
   job.tracer.skip_direct = false;
   zr__tracer_quality(&job.tracer, params->quality);
   job.tracer.skip_sampled_emission = false;
+  /* One cache for this call's pixels: a row's neighbours tend to be
+     shadowed by the same object. */
+  zr_shadow_cache shadow_cache;
+  memset(&shadow_cache, 0, sizeof shadow_cache);
+  job.tracer.shadow_cache = &shadow_cache;
   if (camera_media)
     job.camera_media = *camera_media;
   else
