@@ -27,6 +27,7 @@
 #include <string.h>
 
 #include "core/context.h"
+#include "trace/obj_mesh.h"
 #include "trace/shape.h"
 
 enum {
@@ -661,13 +662,23 @@ static inline int crossings_t(const zr_object *o, const zr_ray *ray,
                          : zr__intersect_t(o, ray, tmin, tmax, hits);
 }
 
+/* The first of crossings_t's crossings, all the search for the nearest
+   surface keeps: a mesh then prunes at its best crossing so far. */
+static inline int first_crossing_t(const zr_object *o, const zr_ray *ray,
+                                   double tmin, double tmax,
+                                   zr_hit hits[ZR_MAX_CROSSINGS]) {
+  if (o->kind == ZR_OBJ_MESH && !o->clip)
+    return zr__mesh_nearest_t(o, ray, tmin, tmax, hits);
+  return crossings_t(o, ray, tmin, tmax, hits);
+}
+
 /* The nearest crossing without its normal. */
 static bool nearest_t(const struct zr_bvh *bvh, const zr_ray *ray,
                       double tmin, double tmax, zr_hit *hit) {
   bool found = false;
   zr_hit h[ZR_MAX_CROSSINGS];
   for (size_t i = 0; i < bvh->n_unbounded; i++)
-    if (zr__intersect_t(bvh->unbounded[i], ray, tmin, tmax, h) > 0) {
+    if (first_crossing_t(bvh->unbounded[i], ray, tmin, tmax, h) > 0) {
       *hit = h[0];
       tmax = h[0].t;
       found = true;
@@ -686,7 +697,7 @@ static bool nearest_t(const struct zr_bvh *bvh, const zr_ray *ray,
       continue;
     if (e.count > 0) {
       for (uint32_t i = e.child; i < e.child + e.count; i++)
-        if (crossings_t(bvh->prims[i], ray, tmin, tmax, h) > 0) {
+        if (first_crossing_t(bvh->prims[i], ray, tmin, tmax, h) > 0) {
           *hit = h[0];
           tmax = h[0].t;
           found = true;
@@ -732,9 +743,15 @@ bool zr__bvh_nearest(const struct zr_bvh *bvh, const zr_ray *ray,
      object whose first crossings the CSG rules removed (lib/trace/csg.c),
      and a part reports only its nearest two. */
   zr_hit h[ZR_MAX_CROSSINGS];
-  double from = hit->t - 1e-9 * fmax(1.0, fabs(hit->t));
-  int n = zr__intersect(hit->object, ray, from > t0 ? from : t0, INFINITY,
-                        h);
+  double margin = 1e-9 * fmax(1.0, fabs(hit->t));
+  double from = hit->t - margin;
+  /* A mesh finds the winner's crossing again at exactly its t (its
+     crossings do not depend on the interval), so a crossing past t
+     could never be nearer to it: the search stops just past t rather
+     than opening every box behind it. */
+  double upto = hit->object->kind == ZR_OBJ_MESH ? hit->t + margin
+                                                 : INFINITY;
+  int n = zr__intersect(hit->object, ray, from > t0 ? from : t0, upto, h);
   /* The crossing nearest the one found: shapes whose roots are refined
      inside the interval searched (lib/trace/roots.c) may place it a
      rounding away from before. */
