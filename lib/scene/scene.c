@@ -72,6 +72,30 @@ void zr__settings_init(zr_settings *s) {
   s->photons.expand_min = 40;
 }
 
+size_t zr__object_size(zr_object_kind kind) {
+  size_t common = offsetof(zr_object, u);
+  /* The union's end keeps the alignment its largest member needs. */
+  size_t part;
+  switch (kind) {
+  case ZR_OBJ_SPHERE:
+    part = sizeof ((zr_object *)0)->u.sphere;
+    break;
+  case ZR_OBJ_PLANE:
+    part = sizeof ((zr_object *)0)->u.plane;
+    break;
+  case ZR_OBJ_TRIANGLE:
+    part = sizeof ((zr_object *)0)->u.triangle;
+    break;
+  case ZR_OBJ_BOX:
+    part = sizeof ((zr_object *)0)->u.box;
+    break;
+  default:
+    return sizeof(zr_object);
+  }
+  size_t size = common + part;
+  return size < sizeof(zr_object) ? size : sizeof(zr_object);
+}
+
 zr_scene *zr__scene_new(void) {
   zr_scene *scene = calloc(1, sizeof *scene);
   if (!scene)

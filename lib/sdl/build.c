@@ -73,7 +73,7 @@ bool zr__sdl_axis_given(zr_sdl_parser *p, zr_vec3 base, zr_vec3 cap,
 
 zr_object *zr__sdl_object_new(zr_sdl_parser *p, zr_object_kind kind,
                               const zr_sdl_loc *loc) {
-  zr_object *o = zr__sdl_alloc(p, sizeof *o);
+  zr_object *o = zr__sdl_alloc(p, zr__object_size(kind));
   if (!o)
     return NULL;
   o->kind = kind;
@@ -93,10 +93,11 @@ static size_t children_room(size_t n) {
 }
 
 zr_object *zr__sdl_object_copy(zr_sdl_parser *p, const zr_object *o) {
-  zr_object *copy = zr__sdl_alloc(p, sizeof *copy);
+  size_t size = zr__object_size(o->kind);
+  zr_object *copy = zr__sdl_alloc(p, size);
   if (!copy)
     return NULL;
-  *copy = *o;
+  memcpy(copy, o, size); /* an object may be smaller than zr_object */
   /* Clipping and bounding objects follow the object's later transforms,
      so each copy needs its own. */
   if (o->clip && !(copy->clip = zr__sdl_object_copy(p, o->clip)))
@@ -1228,13 +1229,17 @@ bool zr__sdl_object_mod(zr_sdl_parser *p, zr_object *o,
   case ZR_SDL_MOD_TEXTURE:
     /* A texture on a textured object goes on top as a layer, as in
        POV-Ray (build_texture.c). */
-    o->texture = zr__sdl_texture_layer(p, o->texture, mod->ptr);
+    /* The first texture is shared, not copied: textures never change
+       once made (the changes above copy them). */
+    o->texture = o->texture ? zr__sdl_texture_layer(p, o->texture, mod->ptr)
+                            : (const zr_texture *)mod->ptr;
     return o->texture != NULL &&
            legacy_ior(p, o, ((const zr_texture *)mod->ptr)->finish);
   case ZR_SDL_MOD_MATERIAL: {
     const zr_sdl_material *m = mod->ptr;
-    if (m->texture &&
-        !(o->texture = zr__sdl_texture_layer(p, o->texture, m->texture)))
+    if (m->texture && !(o->texture = o->texture ? zr__sdl_texture_layer(
+                                          p, o->texture, m->texture)
+                                                 : m->texture))
       return false;
     if (m->interior)
       set_interior(o, m->interior, true);

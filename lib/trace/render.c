@@ -531,6 +531,11 @@ static zr_status render_pixels(const zr_scene *scene,
   job.clear = 0.0;
   job.tracer.clear = params->alpha ? &job.clear : NULL;
   job.tracer.clear_weight = 1.0;
+  /* One cache for this call's pixels: a row's neighbours tend to be
+     shadowed by the same object. */
+  zr_shadow_cache shadow_cache;
+  memset(&shadow_cache, 0, sizeof shadow_cache);
+  job.tracer.shadow_cache = &shadow_cache;
   if (camera_media)
     job.camera_media = *camera_media;
   else

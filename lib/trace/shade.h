@@ -94,6 +94,20 @@ zr__radiance_source(const zr_radiosity *rad) {
 }
 
 /* What one thread needs to trace rays in a scene. */
+/*
+ * The last object that blocked each light's shadow rays, for one thread
+ * (ZR_SHADOW_CACHE_SLOTS lights, by their address): the next shadow ray
+ * to that light tries it first, and when it blocks the ray again the
+ * walk of the hierarchy is skipped.  The answer is the walk's (an
+ * opaque blocker makes any walk black), so the image bytes do not
+ * depend on what the cache held.
+ */
+enum { ZR_SHADOW_CACHE_SLOTS = 16 };
+typedef struct zr_shadow_cache {
+  const zr_light *light[ZR_SHADOW_CACHE_SLOTS];
+  const zr_object *blocker[ZR_SHADOW_CACHE_SLOTS];
+} zr_shadow_cache;
+
 typedef struct zr_tracer {
   const zr_scene *scene;
   zr_render_stats *stats; /* never NULL */
@@ -136,6 +150,9 @@ typedef struct zr_tracer {
      rays and the indirect model's rays carry none. */
   double *clear;
   double clear_weight;
+  /* This thread's last shadow blockers (NULL: none kept); the tracer is
+     otherwise read-only, this is a hint that changes no result. */
+  zr_shadow_cache *shadow_cache;
 } zr_tracer;
 
 /* Sets the tracer's quality flags and no_media for POV-Ray's +Q: 0 to 11
