@@ -150,6 +150,28 @@ printf '%s\nplane { z, 1 normal { bump_map { ppm "big.pgm" } } }\n' \
   "$scene_head" > grey_bump.pov
 run grey_bump 0 grey_bump.pov --parse-only --memory-limit=40M
 
+# An 11000 x 11000 grey PNG (about 150 KB) as a height field: its
+# samples stay one byte each (121 MB) and the tracer walks a block
+# hierarchy over them (2.5 MB), so it renders within a 256 MiB budget
+# (it took 3.55 GB, then 16.9 GB, as triangles); 64 MiB stops it.
+if "${ZR_BUILDDIR:-.}/tests/mkhfpng" hf.png 11000; then
+  printf '%s\n%s\n' 'camera { location <0.5, 1.5, -1> look_at <0.5, 0, 0.5> }
+light_source { <5, 5, -5> rgb 1 }' \
+    'height_field { png "hf.png" pigment { rgb 1 } }' > hfbig.pov
+  start=$(date +%s)
+  run hfbig 0 hfbig.pov +W64 +H48 -q +WT1 --memory-limit=256M +Ohfbig.png
+  [ -s hfbig.png ] || fail "hfbig: no image"
+  echo "11000 x 11000 height field: $(( $(date +%s) - start )) s"
+  run hfbig_budget 1 hfbig.pov +W64 +H48 -q --memory-limit=64M \
+    +Ohfbig2.png
+  expect hfbig_budget "the 11000x11000 height field 'hf.png'"
+  expect hfbig_budget "past the memory budget of 64 MiB"
+  [ -e hfbig2.png ] && fail "hfbig_budget: an image was written"
+  rm -f hf.png
+else
+  fail "mkhfpng: no picture"
+fi
+
 # ---- 5 and 6: messages -------------------------------------------------
 printf 'sphere { 0, 1 \033[2J }\n' > escape.pov
 run escape 1 escape.pov --parse-only
