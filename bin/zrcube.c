@@ -1251,7 +1251,11 @@ static int render_and_write(run *r) {
   if (s != ZR_OK) {
     if (r->rank == 0) {
       const char *why = zr_context_last_error(r->ctx);
-      if (*why)
+      if (s == ZR_ECANCELLED && signal_caught)
+        fprintf(stderr, "zrcube: rendering stopped by %s; the image was "
+                "not written\n", signal_caught == SIGINT ? "SIGINT"
+                                                          : "SIGTERM");
+      else if (*why)
         fputs(why, stderr);
       else
         fprintf(stderr, "zrcube: rendering failed: %s\n", zr_status_str(s));

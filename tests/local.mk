@@ -135,6 +135,11 @@ EXTRA_DIST += tests/test_iopolicy.sh
 # little memory, corrupt files, 10^6 objects.
 TESTS += tests/test_faults.sh
 EXTRA_DIST += tests/test_faults.sh
+# mkhfpng writes test_faults.sh's 11000 x 11000 height field picture.
+check_PROGRAMS += tests/mkhfpng
+tests_mkhfpng_SOURCES = tests/mkhfpng.c
+tests_mkhfpng_CPPFLAGS = $(AM_CPPFLAGS) $(PNG_CFLAGS)
+tests_mkhfpng_LDADD = $(PNG_LIBS) -lm
 
 # Issue 12's writers and readers (JPEG, TGA, HDR, OpenEXR, alpha, BMP,
 # TIFF) and encoding to memory and to a stream.

@@ -218,6 +218,25 @@ zr_status zr__image_decode_heights(zr_context *ctx, const char *name,
                                    float **heights, int *width,
                                    int *height);
 
+/* A height field's samples as the file stores them: w x h codes, rows
+   top to bottom, of 8 bits (height code / 255) or 16 bits (code /
+   65535), in an arena. */
+typedef struct zr_height_codes {
+  void *codes;
+  int bits;
+  int width, height;
+} zr_height_codes;
+
+struct zr_arena;
+/* Decodes a height field's file into codes allocated in arena (charged
+   to the arena's budget); the message is given on failure. */
+zr_status zr__image_decode_height_codes(zr_context *ctx, const char *name,
+                                        bool pot, const char *bytes,
+                                        size_t size, struct zr_arena *arena,
+                                        zr_height_codes *out);
+/* Code k of c as a height in [0, 1]. */
+double zr__height_code_value(const zr_height_codes *c, size_t k);
+
 /* zr_image_read from a file's bytes already read (name for messages). */
 zr_status zr__image_decode(zr_context *ctx, const char *name,
                            const char *bytes, size_t size, zr_image **out);

@@ -504,6 +504,7 @@ static inline bool zr__is_csg(zr_object_kind kind) {
 
 struct zr_mesh; /* triangles and their BVH, shared by every copy
                   (lib/scene/shapes.h) */
+struct zr_hf_grid; /* a height field's samples (lib/scene/shapes.h) */
 struct zr_fn;   /* a compiled user function (lib/fn/fn.h) */
 
 /* One component of a blob ("Blob"): its field is
@@ -744,10 +745,10 @@ struct zr_object {
     } isosurface;
     struct {
       /* height_field ("Height Field"): a w x h grid of heights in
-         [0, 1] over the unit square of the x-z plane, drawn as the
-         triangles of data; water_level hides what lies below it. */
-      const struct zr_mesh *data;
-      const float *heights; /* w * h, row j at z = j / (h - 1) */
+         [0, 1] over the unit square of the x-z plane, each square cut
+         into two triangles, found through the grid's block hierarchy
+         (lib/scene/shapes.h); water_level hides what lies below it. */
+      const struct zr_hf_grid *grid;
       int w, h;
       double water_level;
       bool smooth;
