@@ -104,6 +104,8 @@ EXTRA_DIST += tests/test_legacy_povray.sh tests/legacy/camera_angle0.pov \
 # Media against POV-Ray's pictures (skipped without povray).
 TESTS += tests/test_media_povray.sh
 EXTRA_DIST += tests/test_media_povray.sh tests/media_check.pov
+TESTS += tests/test_media_shadow_povray.sh
+EXTRA_DIST += tests/test_media_shadow_povray.sh bench/media_shadow.py
 
 # The radiosity benchmark (bench/radiosity.sh; not run by `make check`).
 EXTRA_DIST += bench/radiosity.sh bench/radiosity/charts.gp \
