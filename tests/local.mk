@@ -104,7 +104,8 @@ EXTRA_DIST += tests/test_legacy_povray.sh tests/legacy/camera_angle0.pov \
 # Media against POV-Ray's pictures (skipped without povray).
 TESTS += tests/test_media_povray.sh
 EXTRA_DIST += tests/test_media_povray.sh tests/media_check.pov
-TESTS += tests/test_media_shadow_povray.sh
+TESTS += tests/test_media_shadow_povray.sh tests/test_fog_povray.sh
+EXTRA_DIST += tests/test_fog_povray.sh tests/fog/solid_fog.pov
 EXTRA_DIST += tests/test_media_shadow_povray.sh bench/media_shadow.py
 
 # The radiosity benchmark (bench/radiosity.sh; not run by `make check`).

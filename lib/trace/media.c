@@ -107,6 +107,7 @@
 #include <string.h>
 
 #include "scene/texture.h"
+#include "trace/atmosphere.h"
 #include "trace/lights.h"
 
 /* Measured by bench/media_sky.sh (see above). */
@@ -776,15 +777,20 @@ zr_rgb zr__media_light_attenuation(const zr_tracer *tracer,
                                    const zr_light *light, zr_vec3 p) {
   const zr_settings *settings = &tracer->scene->settings;
   zr_rgb one = zr_rgb3(1, 1, 1);
-  if (!light->media_attenuation || settings->n_media == 0)
+  if (!light->media_attenuation ||
+      (settings->n_media == 0 && !settings->fogs))
     return one;
   zr_vec3 to_light = zr_v3_sub(light->location, p);
   double len = zr_v3_len(to_light);
   if (!(len > 0.0))
     return one;
+  zr_vec3 unit = zr_v3_scale(to_light, 1.0 / len);
+  /* Fog dims the light too (lib/trace/atmosphere.c). */
+  one = zr__fog_attenuate(tracer->scene, p, unit, len, one);
+  if (settings->n_media == 0)
+    return one;
   return zr__media_integrate(tracer, settings->media, settings->n_media, p,
-                             zr_v3_scale(to_light, 1.0 / len), len, true,
-                             one);
+                             unit, len, true, one);
 }
 
 static int by_crossing(const void *a, const void *b) {
