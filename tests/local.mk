@@ -189,3 +189,7 @@ tests_test_api_LDADD = $(TEST_LDADD)
 TESTS += tests/test_symbols.sh tests/test_manpages.sh
 EXTRA_DIST += tests/test_symbols.sh tests/test_manpages.sh \
 	tests/public_names.sh lib/libzrcube.sym
+
+# One-value reflection forms (fresnel from none up to R), povray's picture.
+TESTS += tests/test_reflection_forms.sh
+EXTRA_DIST += tests/test_reflection_forms.sh
