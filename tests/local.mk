@@ -106,7 +106,8 @@ TESTS += tests/test_media_povray.sh
 EXTRA_DIST += tests/test_media_povray.sh tests/media_check.pov
 TESTS += tests/test_media_shadow_povray.sh tests/test_fog_povray.sh
 EXTRA_DIST += tests/test_fog_povray.sh tests/fog/solid_fog.pov
-EXTRA_DIST += tests/test_media_shadow_povray.sh bench/media_shadow.py
+EXTRA_DIST += tests/test_media_shadow_povray.sh bench/media_shadow.py \
+	bench/media_warp_ssim.sh bench/media_more_samples.py
 
 # The radiosity benchmark (bench/radiosity.sh; not run by `make check`).
 EXTRA_DIST += bench/radiosity.sh bench/radiosity/charts.gp \
