@@ -104,8 +104,10 @@ EXTRA_DIST += tests/test_legacy_povray.sh tests/legacy/camera_angle0.pov \
 # Media against POV-Ray's pictures (skipped without povray).
 TESTS += tests/test_media_povray.sh
 EXTRA_DIST += tests/test_media_povray.sh tests/media_check.pov
-TESTS += tests/test_media_shadow_povray.sh tests/test_fog_povray.sh
-EXTRA_DIST += tests/test_fog_povray.sh tests/fog/solid_fog.pov
+TESTS += tests/test_media_shadow_povray.sh tests/test_fog_povray.sh \
+	tests/test_image_gamma_povray.sh
+EXTRA_DIST += tests/test_fog_povray.sh tests/fog/solid_fog.pov \
+	tests/test_image_gamma_povray.sh
 EXTRA_DIST += tests/test_media_shadow_povray.sh bench/media_shadow.py \
 	bench/media_warp_ssim.sh bench/media_more_samples.py
 
