@@ -106,6 +106,14 @@ EXTRA_DIST += tests/test_legacy_povray.sh tests/legacy/camera_angle0.pov \
 # Media against POV-Ray's pictures (skipped without povray).
 TESTS += tests/test_media_povray.sh
 EXTRA_DIST += tests/test_media_povray.sh tests/media_check.pov
+TESTS += tests/test_media_shadow_povray.sh tests/test_fog_povray.sh \
+	tests/test_image_gamma_povray.sh
+EXTRA_DIST += tests/test_fog_povray.sh tests/fog/solid_fog.pov \
+	tests/test_image_gamma_povray.sh
+EXTRA_DIST += tests/test_media_shadow_povray.sh bench/media_shadow.py \
+	bench/media_warp_ssim.sh bench/media_more_samples.py \
+	bench/results/media-warp-ssim-2026-12-02.tsv \
+	bench/results/media-shadow-2026-12-02.txt
 
 # The radiosity benchmark (bench/radiosity.sh; not run by `make check`).
 EXTRA_DIST += bench/radiosity.sh bench/radiosity/charts.gp \

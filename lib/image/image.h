@@ -53,6 +53,9 @@ struct zr_image {
      image_map's "gamma G" may decode again; JPEG and Netpbm codes are
      kept too, but that option is refused for them. */
   bool stored_codes;
+  /* The file states how its codes map to light (a PNG sRGB or gAMA
+     chunk); false when the transfer is only presumed. */
+  bool transfer_stated;
   /* Palette files (PNG colour type 3, GIF, colour-mapped TGA) only, else
      NULL and 0: the palette entry of each pixel, which image_map's
      "filter INDEX, AMOUNT" and "transmit INDEX, AMOUNT" refer to, and

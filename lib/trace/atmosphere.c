@@ -273,3 +273,17 @@ zr_rgb zr__atmosphere_apply(const zr_scene *scene, zr_vec3 origin,
     colour = zr_rgb_add(behind, added);
   return colour;
 }
+
+zr_rgb zr__fog_attenuate(const zr_scene *scene, zr_vec3 origin, zr_vec3 dir,
+                         double t, zr_rgb colour) {
+  double len = zr_v3_len(dir);
+  if (!scene->settings.fogs || len == 0.0)
+    return colour;
+  zr_vec3 unit = zr_v3_scale(dir, 1.0 / len);
+  double d = isinf(t) ? t : t * len;
+  for (const zr_fog *f = scene->settings.fogs; f; f = f->next)
+    colour = fog_dim(colour, f->colour,
+                     fog_amount(f->colour, fog_share(f, origin, unit, d),
+                                1.0));
+  return colour;
+}

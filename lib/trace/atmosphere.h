@@ -35,4 +35,13 @@ double zr__grey(zr_rgb c);
 zr_rgb zr__atmosphere_apply(const zr_scene *scene, zr_vec3 origin,
                             zr_vec3 dir, double t, zr_rgb colour);
 
+/*
+ * colour (a light's) dimmed by the scene's fogs along the same path, no
+ * fog colour added: the manual's "Atmospheric Attenuation" (a light
+ * with media_attenuation on is "diminished as it travels through the
+ * fog or media"); tests/test_fog_povray.sh compares with povray.
+ */
+zr_rgb zr__fog_attenuate(const zr_scene *scene, zr_vec3 origin, zr_vec3 dir,
+                         double t, zr_rgb colour);
+
 #endif /* ZR_TRACE_ATMOSPHERE_H */

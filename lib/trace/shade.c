@@ -1147,6 +1147,20 @@ static void clear_through_way(const zr_tracer *tracer, double before,
 /* What zr__trace_ray() sees, with the first surface looked for only up
    to tmax along the ray (a mesh camera's max_distance); beyond it the
    ray sees the background, as in povray. */
+/* Fog and rainbows along a ray, unless the ray runs inside a solid
+   (not hollow) object: the manual's "Empty and Solid Objects" leaves
+   "no room for any other particles like those used by fog" there, and
+   povray renders a plane seen from inside a solid plane unfogged and
+   from inside the same plane made hollow fogged
+   (tests/test_fog_povray.sh). */
+static zr_rgb fogged(const zr_scene *scene, const zr_media *media,
+                     zr_vec3 origin, zr_vec3 dir, double t, zr_rgb c) {
+  for (int i = 0; media && i < media->n; i++)
+    if (!media->objects[i]->hollow)
+      return c;
+  return zr__atmosphere_apply(scene, origin, dir, t, c);
+}
+
 static zr_rgb trace_upto(const zr_tracer *tracer, const zr_ray *ray,
                          int level, double weight, const zr_media *media,
                          double tmax, double *t_hit) {
@@ -1171,7 +1185,7 @@ static zr_rgb trace_upto(const zr_tracer *tracer, const zr_ray *ray,
     sky = zr__media_along(tracer, media, ray->origin, ray->dir, INFINITY,
                           sky);
     return zr__interior_fade(media, INFINITY,
-                         zr__atmosphere_apply(scene, ray->origin, ray->dir,
+                         fogged(scene, media, ray->origin, ray->dir,
                                               INFINITY, sky));
   }
   surface s;
@@ -1203,7 +1217,7 @@ static zr_rgb trace_upto(const zr_tracer *tracer, const zr_ray *ray,
     if (tracer->clear)
       clear_through_way(tracer, before, media, ray, hit.t, false);
     c = zr__media_along(tracer, media, ray->origin, ray->dir, hit.t, c);
-    return zr__atmosphere_apply(scene, ray->origin, ray->dir, hit.t, c);
+    return fogged(scene, media, ray->origin, ray->dir, hit.t, c);
   }
   s.object = hit.object;
   bool uv = tx->uv_mapping;
@@ -1236,7 +1250,7 @@ static zr_rgb trace_upto(const zr_tracer *tracer, const zr_ray *ray,
                              lit);
   return zr__interior_fade(
       media, hit.t * zr_v3_len(ray->dir),
-      zr__atmosphere_apply(scene, ray->origin, ray->dir, hit.t, c));
+      fogged(scene, media, ray->origin, ray->dir, hit.t, c));
 }
 
 zr_rgb zr__trace_ray(const zr_tracer *tracer, const zr_ray *ray, int level,
