@@ -186,3 +186,7 @@ tests_test_api_LDADD = $(TEST_LDADD)
 TESTS += tests/test_symbols.sh tests/test_manpages.sh
 EXTRA_DIST += tests/test_symbols.sh tests/test_manpages.sh \
 	tests/public_names.sh lib/libzrcube.sym
+
+# Total internal reflection under a layered texture: one mirrored ray.
+TESTS += tests/test_layer_tir.sh
+EXTRA_DIST += tests/test_layer_tir.sh tests/layer_tir.pov
