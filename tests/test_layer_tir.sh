@@ -26,7 +26,7 @@ if command -v povray >/dev/null 2>&1; then
     +GS +GR -GD </dev/null >pov.log 2>&1 || { tail -3 pov.log >&2; exit 99; }
   pov_reflected=$(awk '/^Reflected Rays:/ { print $3 }' pov.log)
 fi
-timeout 120 "$zrcube" +Ilayer_tir.pov +Ozr.png +W160 +H120 -D +WT1 \
+timeout 120 "$zrcube" +Ilayer_tir.pov +Ozr.png +W160 +H120 -D +WT1 +V +GS \
   >zr.log 2>&1 || { cat zr.log >&2; exit 1; }
 zr_reflected=$(awk '/^Reflected Rays:/ { print $3 }' zr.log)
 fail=0
