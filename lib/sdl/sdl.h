@@ -137,11 +137,14 @@ typedef struct zr_sdl_decl_name {
    pages of ZR_SDL_ARRAY_PAGE elements that are made when one of their
    elements is first assigned, so an array costs for what it holds:
    array[100000000] is a table of page pointers until it is filled.
-   set[i] of a page tells whether its element i was ever assigned. */
+   set[i] of a page tells whether its element i was ever assigned.  A
+   page has room for the elements of the array that fall in it, no
+   more: array[4]{...} costs four values, not a thousand (a scene that
+   copies a small array 100 000 times in a macro kept 6 GB before). */
 #define ZR_SDL_ARRAY_PAGE 1024
 typedef struct zr_sdl_array_page {
-  struct zr_sdl_value elems[ZR_SDL_ARRAY_PAGE];
-  bool set[ZR_SDL_ARRAY_PAGE];
+  struct zr_sdl_value *elems; /* in the same block, after the page */
+  bool *set;
 } zr_sdl_array_page;
 
 typedef struct zr_sdl_array {
