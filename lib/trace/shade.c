@@ -746,6 +746,14 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
     trans = zr_rgb3(trans.r * (1.0 - refl.r), trans.g * (1.0 - refl.g),
                     trans.b * (1.0 - refl.b));
   zr_vec3 mirror = zr__reflect(s->d, s->n);
+  /* A normal tilted by normal { } can mirror a grazing ray into the
+     surface; the ray is then turned back out of it, mirrored in the
+     geometric surface (templates/Basic_Scenes/Sea_blue_sky.pov: bumps
+     on a chrome plane seen at a grazing angle showed black specks
+     where povray 3.7 shows the sky). */
+  double into = zr_v3_dot(mirror, s->ng);
+  if (into < 0.0)
+    mirror = zr_v3_madd(mirror, s->ng, -2.0 * into);
   zr_vec3 above = zr_v3_madd(s->p, s->n, s->offset);
   zr_vec3 below = zr_v3_madd(s->p, s->n, -s->offset);
   zr_vec3 refr_dir = s->d;
