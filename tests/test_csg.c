@@ -313,6 +313,12 @@ static void unboxed_free(zr_object *c) {
   free(c);
 }
 
+/* A number in [0, 1) from a linear congruential stream. */
+static double rnd(unsigned *seed) {
+  *seed = *seed * 1103515245u + 12345u;
+  return *seed / 4294967296.0;
+}
+
 /* The children's boxes only skip work: a difference of unions of many
    parts (the corpus' spacecraft cells) gives the same crossings and
    inside tests with and without them, for rays and points all over. */
@@ -335,12 +341,14 @@ static void test_csg_child_boxes_skip_work_only(void **state) {
   assert_non_null(o->u.csg.boxes);
   zr_object *plain = unboxed(o);
   unsigned seed = 12345u;
-#define RND() ((seed = seed * 1103515245u + 12345u) / 4294967296.0)
+#define RND() rnd(&seed)
   int crossings = 0;
   for (int k = 0; k < 4000; k++) {
-    zr_vec3 org = zr_v3(6 * RND() - 3, 6 * RND() - 3, 6 * RND() - 3);
+    double ox = 6 * RND() - 3, oy = 6 * RND() - 3, oz = 6 * RND() - 3;
+    zr_vec3 org = zr_v3(ox, oy, oz);
     /* Towards a point near the object, so most rays meet it. */
-    zr_vec3 at = zr_v3(3 * RND() - 1.5, 3 * RND() - 1.5, 3 * RND() - 1.5);
+    double ax = 3 * RND() - 1.5, ay = 3 * RND() - 1.5, az = 3 * RND() - 1.5;
+    zr_vec3 at = zr_v3(ax, ay, az);
     zr_vec3 dir = zr_v3_sub(at, org);
     zr_hit a[ZR_MAX_CROSSINGS], b[ZR_MAX_CROSSINGS];
     int na = cross(o, org, dir, 0.0, a), nb = cross(plain, org, dir, 0.0, b);

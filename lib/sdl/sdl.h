@@ -534,6 +534,7 @@ typedef struct zr_sdl_parser {
      keywords already warned about, so a scene gets one warning. */
   unsigned radiosity_ignored;
   unsigned radiosity_object_warned;
+  bool facets_warned; /* normal { facets }: grammar/pov.y */
   /* Render settings the language can read (image_width, clock...). */
   int image_width, image_height;
   double clock;
