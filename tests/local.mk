@@ -187,6 +187,15 @@ TESTS += tests/test_symbols.sh tests/test_manpages.sh
 EXTRA_DIST += tests/test_symbols.sh tests/test_manpages.sh \
 	tests/public_names.sh lib/libzrcube.sym
 
+# One-value reflection forms (fresnel from none up to R), povray's picture.
+TESTS += tests/test_reflection_forms.sh
+EXTRA_DIST += tests/test_reflection_forms.sh
+
+# Subsurface light transport against povray's measured slab, plane and edge.
+TESTS += tests/test_subsurface.sh
+EXTRA_DIST += tests/test_subsurface.sh tests/subsurface_check.pov \
+	bench/conform/sslt_probe.py
+
 # Total internal reflection under a layered texture: one mirrored ray.
 TESTS += tests/test_layer_tir.sh
 EXTRA_DIST += tests/test_layer_tir.sh tests/layer_tir.pov
