@@ -132,6 +132,17 @@ static void no_bump_scale_warning(zr_sdl_parser *p, const zr_sdl_loc *loc) {
                           "the bumps' depth as it would without it");
 }
 
+/* normal { facets [coords F | size F] } ("Facets"): read, not rendered;
+   the surface keeps the rest of the normal (the corpus'
+   GSprites_Walls_textures.inc stopped here).  One warning a parse. */
+static void facets_warning(zr_sdl_parser *p, const zr_sdl_loc *loc) {
+  if (p->facets_warned)
+    return;
+  p->facets_warned = true;
+  zr__sdl_warning(p, loc, "the 'facets' normal pattern is not rendered: "
+                          "the surface is shaded without its facets");
+}
+
 /* A pattern modifier; e NULL for the keywords without a value. */
 static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
                              const zr_sdl_loc *loc) {
@@ -469,6 +480,9 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %token T_NO "no"
 %token T_NO_SHADOW "no_shadow"
 %token T_NO_BUMP_SCALE "no_bump_scale"
+%token T_FACETS "facets"
+%token T_COORDS "coords"
+%token T_SIZE "size"
 %token T_NO_IMAGE "no_image"
 %token T_CHARSET "charset"
 %token T_ASCII "ascii"
@@ -2792,6 +2806,12 @@ normal_body:
   normal_start
 | normal_body T_NO_BUMP_SCALE
     { no_bump_scale_warning(p, &@2); $$ = $1; }
+| normal_body T_FACETS
+    { facets_warning(p, &@2); $$ = $1; }
+| normal_body T_COORDS expr
+    { $$ = $1; }
+| normal_body T_SIZE expr
+    { $$ = $1; }
 | normal_body T_DENSITY_FILE T_DF3 str_expr
     { TRY(zr__sdl_normal_density_file(p, $1, $4, NULL, &@4)); $$ = $1; }
 | normal_body T_DENSITY_FILE T_DF3 str_expr ',' expr

@@ -210,3 +210,11 @@ EXTRA_DIST += tests/test_reflection_forms.sh
 TESTS += tests/test_subsurface.sh
 EXTRA_DIST += tests/test_subsurface.sh tests/subsurface_check.pov \
 	bench/conform/sslt_probe.py
+
+# Total internal reflection under a layered texture: one mirrored ray.
+TESTS += tests/test_layer_tir.sh
+EXTRA_DIST += tests/test_layer_tir.sh tests/layer_tir.pov
+
+# A tilted normal that mirrors a grazing ray into the surface.
+TESTS += tests/test_grazing_normal.sh
+EXTRA_DIST += tests/test_grazing_normal.sh tests/grazing_normal.pov

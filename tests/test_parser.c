@@ -258,6 +258,19 @@ static void test_parser_transforms_in_order(void **state) {
   assert_vec(to_world(s->objects[0], zr_v3(1, 1, 1)), 1, 2, 1, EPS);
 }
 
+/* normal { facets [coords F | size F] } is read and warned about once
+   ("Facets": not rendered), so the scene renders without its facets. */
+static void test_parser_facets_warned(void **state) {
+  fixture *f = *state;
+  good(f, "#declare N = normal { facets coords 0.5 scale 8 }\n"
+          "sphere { 0, 1 normal { facets size 0.2 } }\n"
+          "sphere { 0, 1 normal { N } }");
+  assert_int_equal(f->diag.warnings, 1);
+  assert_non_null(strstr(f->diag.warning,
+                         "t.pov:1:23: warning: the 'facets' normal pattern "
+                         "is not rendered"));
+}
+
 static void test_parser_union_pushes_modifiers(void **state) {
   fixture *f = *state;
   zr_scene *s = good(f,
@@ -963,6 +976,8 @@ static void test_parser_clock_and_declare(void **state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
+      cmocka_unit_test_setup_teardown(test_parser_facets_warned, setup,
+                                      teardown),
       cmocka_unit_test_setup_teardown(test_parser_primitives, setup,
                                       teardown),
       cmocka_unit_test_setup_teardown(test_parser_clock_and_declare, setup,

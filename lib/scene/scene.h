@@ -618,6 +618,14 @@ struct zr_object {
          (lib/sdl/build_object.c), as in POV-Ray. */
       struct zr_light **lights;
       size_t n_lights;
+      /* The world box of each child, set on the parts of a CSG
+         primitive when the scene is prepared (lib/trace/prepare.c) and
+         NULL elsewhere: the tracer skips a child whose box the ray
+         misses, or that does not hold the point it tests. */
+      struct zr_csg_box {
+        zr_vec3 lo, hi;
+        bool bounded;
+      } *boxes;
     } csg;
     struct {
       const struct zr_mesh *data;

@@ -343,12 +343,37 @@ static zr_sdl_array *array_alloc(zr_sdl_parser *p, int n_dims,
   return a->pages ? a : NULL;
 }
 
+/* The elements page k of an array of n holds. */
+static size_t page_room(size_t n, size_t k) {
+  size_t left = n - k * ZR_SDL_ARRAY_PAGE;
+  return left < ZR_SDL_ARRAY_PAGE ? left : ZR_SDL_ARRAY_PAGE;
+}
+
+/* The bytes of a page block: the page, its values, its set flags. */
+static size_t page_bytes(size_t room) {
+  size_t head = (sizeof(zr_sdl_array_page) + sizeof(max_align_t) - 1) /
+                sizeof(max_align_t) * sizeof(max_align_t);
+  return head + room * (sizeof(struct zr_sdl_value) + sizeof(bool));
+}
+
+/* A new page of room elements, none set (the arena zeroes it). */
+static zr_sdl_array_page *page_alloc(zr_sdl_parser *p, size_t room) {
+  zr_sdl_array_page *pg = zr__sdl_alloc(p, page_bytes(room));
+  if (!pg)
+    return NULL;
+  size_t head = page_bytes(0);
+  pg->elems = (struct zr_sdl_value *)((char *)pg + head);
+  pg->set = (bool *)(pg->elems + room);
+  return pg;
+}
+
 /* The page holding element i, made when missing. */
 static zr_sdl_array_page *page_for(zr_sdl_parser *p, zr_sdl_array *a,
                                    size_t i) {
-  zr_sdl_array_page **slot = &a->pages[i / ZR_SDL_ARRAY_PAGE];
+  size_t k = i / ZR_SDL_ARRAY_PAGE;
+  zr_sdl_array_page **slot = &a->pages[k];
   if (!*slot)
-    *slot = zr__sdl_alloc(p, sizeof **slot);
+    *slot = page_alloc(p, page_room(a->n, k));
   return *slot;
 }
 
@@ -420,10 +445,14 @@ zr_sdl_array *zr__sdl_array_copy(zr_sdl_parser *p, const zr_sdl_array *a) {
   for (size_t k = 0; k < page_count(a->n); k++) {
     if (!a->pages[k])
       continue;
-    c->pages[k] = zr__sdl_alloc(p, sizeof *c->pages[k]);
+    size_t room = page_room(a->n, k);
+    c->pages[k] = page_alloc(p, room);
     if (!c->pages[k])
       return NULL;
-    memcpy(c->pages[k], a->pages[k], sizeof *c->pages[k]);
+    memcpy(c->pages[k]->elems, a->pages[k]->elems,
+           room * sizeof *a->pages[k]->elems);
+    memcpy(c->pages[k]->set, a->pages[k]->set,
+           room * sizeof *a->pages[k]->set);
   }
   return c;
 }

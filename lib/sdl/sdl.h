@@ -137,11 +137,14 @@ typedef struct zr_sdl_decl_name {
    pages of ZR_SDL_ARRAY_PAGE elements that are made when one of their
    elements is first assigned, so an array costs for what it holds:
    array[100000000] is a table of page pointers until it is filled.
-   set[i] of a page tells whether its element i was ever assigned. */
+   set[i] of a page tells whether its element i was ever assigned.  A
+   page has room for the elements of the array that fall in it, no
+   more: array[4]{...} costs four values, not a thousand (a scene that
+   copies a small array 100 000 times in a macro kept 6 GB before). */
 #define ZR_SDL_ARRAY_PAGE 1024
 typedef struct zr_sdl_array_page {
-  struct zr_sdl_value elems[ZR_SDL_ARRAY_PAGE];
-  bool set[ZR_SDL_ARRAY_PAGE];
+  struct zr_sdl_value *elems; /* in the same block, after the page */
+  bool *set;
 } zr_sdl_array_page;
 
 typedef struct zr_sdl_array {
@@ -544,6 +547,7 @@ typedef struct zr_sdl_parser {
      keywords already warned about, so a scene gets one warning. */
   unsigned radiosity_ignored;
   unsigned radiosity_object_warned;
+  bool facets_warned; /* normal { facets }: grammar/pov.y */
   /* Render settings the language can read (image_width, clock...). */
   int image_width, image_height;
   double clock;

@@ -49,6 +49,49 @@ static zr_vec3 point_at(const zr_ray *ray, double t) {
   return zr_v3_madd(ray->origin, ray->dir, t);
 }
 
+/* Whether the ray may meet something inside box b within (tmin, tmax):
+   an unbounded child always may. */
+static bool ray_meets(const struct zr_csg_box *b, const zr_ray *ray,
+                      double tmin, double tmax) {
+  if (!b->bounded)
+    return true;
+  double a = tmin, z = tmax;
+  for (int axis = 0; axis < 3; axis++) {
+    double o = zr_v3_get(ray->origin, axis), d = zr_v3_get(ray->dir, axis);
+    double l = zr_v3_get(b->lo, axis), h = zr_v3_get(b->hi, axis);
+    if (d == 0.0) {
+      if (o < l || o > h)
+        return false;
+      continue;
+    }
+    double t0 = (l - o) / d, t1 = (h - o) / d;
+    if (t0 > t1) {
+      double tt = t0;
+      t0 = t1;
+      t1 = tt;
+    }
+    a = fmax(a, t0);
+    z = fmin(z, t1);
+    if (a > z)
+      return false;
+  }
+  return true;
+}
+
+/* Whether p may be inside the child of box b: never outside its box. */
+static bool may_hold(const struct zr_csg_box *b, zr_vec3 p) {
+  return !b->bounded ||
+         (p.x >= b->lo.x && p.x <= b->hi.x && p.y >= b->lo.y &&
+          p.y <= b->hi.y && p.z >= b->lo.z && p.z <= b->hi.z);
+}
+
+/* zr__inside() of child j of a CSG node, with its box first. */
+static bool child_inside(const zr_object *node, size_t j, zr_vec3 p) {
+  if (node->u.csg.boxes && !may_hold(&node->u.csg.boxes[j], p))
+    return false;
+  return zr__inside(node->u.csg.children[j], p);
+}
+
 /* Every crossing of a leaf primitive in (tmin, tmax). */
 static void gather_leaf(gather *g, const zr_object *leaf, double tmin) {
   zr_hit h[ZR_MAX_CROSSINGS];
@@ -70,7 +113,7 @@ static bool keep(const zr_object *node, size_t self, zr_vec3 p) {
     return true;
   bool want_inside = node->kind == ZR_OBJ_INTERSECTION;
   for (size_t j = 0; j < node->u.csg.n_children; j++)
-    if (j != self && zr__inside(node->u.csg.children[j], p) != want_inside)
+    if (j != self && child_inside(node, j, p) != want_inside)
       return false;
   return true;
 }
@@ -82,6 +125,9 @@ static void gather_node(gather *g, const zr_object *o, double tmin) {
     return; /* a leaf's own clip is applied by zr__intersect */
   }
   for (size_t i = 0; i < o->u.csg.n_children; i++) {
+    if (o->u.csg.boxes &&
+        !ray_meets(&o->u.csg.boxes[i], g->ray, tmin, g->tmax))
+      continue;
     int first = g->n;
     gather_node(g, o->u.csg.children[i], tmin);
     /* Compact the child's crossings to those on this node's surface. */
@@ -132,11 +178,11 @@ bool zr__csg_inside(const zr_object *object, zr_vec3 p) {
   if (object->kind == ZR_OBJ_INTERSECTION) {
     in = object->u.csg.n_children > 0;
     for (size_t i = 0; in && i < object->u.csg.n_children; i++)
-      in = zr__inside(object->u.csg.children[i], p);
+      in = child_inside(object, i, p);
   } else {
     in = false;
     for (size_t i = 0; !in && i < object->u.csg.n_children; i++)
-      in = zr__inside(object->u.csg.children[i], p);
+      in = child_inside(object, i, p);
   }
   if (in && object->clip)
     in = zr__inside(object->clip, p);
