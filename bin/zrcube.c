@@ -490,6 +490,22 @@ static int read_command_line(run *r, int argc, char **argv) {
     r->format = r->opts.format != ZR_FORMAT_AUTO
                     ? r->opts.format
                     : zr_image_format_from_name(r->still_path);
+  /* +UA with a format that holds no alpha: povray warns and writes the
+     pixels it writes without +UA (measured with +FP), and so does this,
+     on every rank alike. */
+  zr_image_format written =
+      !r->opts.to_stdout ? r->format
+      : r->opts.format == ZR_FORMAT_AUTO ? ZR_FORMAT_PNG8 : r->opts.format;
+  if (r->opts.params.alpha && written != ZR_FORMAT_PNG8 &&
+      written != ZR_FORMAT_PNG16 && written != ZR_FORMAT_TGA &&
+      written != ZR_FORMAT_TGA_RLE && written != ZR_FORMAT_BMP &&
+      written != ZR_FORMAT_EXR && r->opts.write_output) {
+    if (r->rank == 0)
+      say(&r->diag, ZR_CLI_STREAM_WARNING, "zrcube: warning: +UA: this "
+          "output format holds no alpha channel; the image is written "
+          "without one (use PNG, Targa, BMP or OpenEXR)\n");
+    r->opts.params.alpha = 0;
+  }
   r->threads = zr__par_threads(r->par, r->opts.threads);
   /* mpirun binds each rank to one core unless told otherwise, and then
      extra threads only take turns on it. */
@@ -648,6 +664,8 @@ static int read_scene(run *r) {
                 r->col1};
   h = zr__state_hash(h, reals, sizeof reals);
   h = zr__state_hash(h, ints, sizeof ints);
+  if (p->alpha) /* +UA: another pixel layout (4 floats) */
+    h = zr__state_hash(h, "alpha", 6);
   for (size_t i = 0; i < r->opts.n_declares; i++) {
     h = zr__state_hash(h, r->opts.declare_names[i],
                        strlen(r->opts.declare_names[i]) + 1);
@@ -853,6 +871,11 @@ static int set_up_path(run *r) {
   if (zr__par_agree(r->par, s) != ZR_OK)
     return EXIT_SCENE;
   r->opts.params.path = r->path;
+  if (r->opts.params.alpha && r->rank == 0)
+    say(&r->diag, ZR_CLI_STREAM_WARNING, "zrcube: warning: +UA is not "
+        "supported with the path tracer (--gi=path); the image is written "
+        "without alpha\n");
+  r->opts.params.alpha = 0;
   r->opts.params.path_samples = r->opts.spp;
   r->opts.params.path_first_sample = 0;
   r->opts.params.antialias = 0;
@@ -1027,6 +1050,7 @@ static int load_state(run *r, zr_par_progress *resume, int *have) {
   if (!r->opts.continue_trace || !r->state_path)
     return 0;
   char err[1024];
+  resume->channels = r->opts.params.alpha ? 4 : 3;
   int rc = zr__state_read(r->state_path, r->fingerprint,
                           r->opts.params.width, r->opts.params.height,
                           resume, err, sizeof err);

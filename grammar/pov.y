@@ -2443,8 +2443,13 @@ pigment_item:
 | colour_map  { $<pigment>0->colour_map = $1; }
 /* uv_mapping ("UV Mapping"): the pattern takes the surface's (u, v, 0). */
 | T_UV_MAPPING  { $<pigment>0->uv_mapping = true; }
-/* quick_color only matters to POV-Ray's low quality previews. */
+/* quick_color: the colour of POV-Ray's previews at +Q5 and below. */
 | T_QUICK_COLOUR colour_value
+    {
+      zr_pigment *pg = $<pigment>0;
+      TRY(zr__sdl_want_colour(p, &$2, &@2, &pg->quick));
+      pg->has_quick = true;
+    }
 ;
 
 /* ---- patterns (reference manual, "Pattern") ---- */

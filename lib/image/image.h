@@ -176,6 +176,9 @@ zr_status zr__hdr_encode(zr_context *ctx, const char *name,
 zr_status zr__exr_encode(zr_context *ctx, const char *name,
                          const zr_image *image, const zr_image_encoding *e,
                          FILE *stream);
+zr_status zr__bmp_encode(zr_context *ctx, const char *name,
+                         const zr_image *image, const zr_image_encoding *e,
+                         FILE *stream);
 /* Readers added for issue 12 (hdr.c, exr.c, bmp.c, tiff.c). */
 bool zr__hdr_looks_like(const unsigned char *bytes, size_t size);
 zr_status zr__hdr_decode(zr_context *ctx, const char *name,

@@ -56,7 +56,10 @@ void zr__settings_init(zr_settings *s) {
   s->assumed_gamma = 1.0;
   s->ambient_light = zr_rgb3(1, 1, 1);
   s->irid_wavelength = zr_rgb3(0.70, 0.52, 0.48);
-  s->background = zr_colour5(0, 0, 0, 0, 0);
+  /* Black and clear: povray 3.7 +UA leaves a #version 3.7 scene
+     without a background transparent (lib/trace/atmosphere.c); the
+     colour ignores transmit. */
+  s->background = zr_colour5(0, 0, 0, 0, 1);
   s->version = 3.7;
   s->radiosity.brightness = 1.0;
   s->photons.gather_min = 20;

@@ -305,6 +305,10 @@ typedef struct zr_pigment {
   /* uv_mapping ("UV Mapping"): the pattern is evaluated at (u, v, 0),
      the hit's surface coordinates, instead of the 3-D point. */
   bool uv_mapping;
+  /* quick_color ("Quick Color"): the colour shown instead at +Q5 and
+     below (lib/trace/shade.c). */
+  bool has_quick;
+  zr_colour quick;
 } zr_pigment;
 
 /* normal { Pattern [Bump_Size] ... }: the shading normal tilts against
@@ -997,7 +1001,7 @@ typedef struct zr_settings {
   /* irid_wavelength: iridescence's red, green and blue wavelengths in
      microns ("Irid_Wavelength"); default <0.70, 0.52, 0.48>. */
   zr_rgb irid_wavelength;
-  zr_colour background; /* default black, transmit 0 */
+  zr_colour background; /* default black, transmit 1 (clear) */
   double version;       /* the last #version; the parser sets 3.7 if none */
   /* A #version directive was read: POV-Ray 3.7 drops ambient under
      radiosity only for scenes that declare 3.7 (measured: a sphere of

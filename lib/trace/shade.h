@@ -120,10 +120,22 @@ typedef struct zr_tracer {
      area lights as such (below 5, one shadow ray to the centre),
      transmitted rays (below 6), reflected rays (below 8). */
   bool no_shadows, point_area_lights, no_transmitted, no_reflected;
+  /* +Q5 and below: pigments with a quick_color show it; +Q1 and below
+     (flat): no lighting at all, a surface shows its pigment's colour
+     (the bottom layer's), filter, transmit and finish ignored. */
+  bool quick_colours, flat;
   /* The surface this ray meets first leaves out the emission that
      indirect->samples_emission says the model sampled; the rays it
      spawns do not (lib/gi/path.c). */
   bool skip_sampled_emission;
+  /* +UA (zr_render_params.alpha): NULL, or where a camera ray adds the
+     share of its pixel left clear: clear_weight (1 for the camera ray,
+     times filter * grey + transmit of each surface it went through)
+     times what the background leaves clear (zr__sky_clear), and that
+     ray sees the background as zr__sky_clear colours it.  Reflected
+     rays and the indirect model's rays carry none. */
+  double *clear;
+  double clear_weight;
 } zr_tracer;
 
 /* Sets the tracer's quality flags and no_media for POV-Ray's +Q: 0 to 11
