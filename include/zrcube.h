@@ -521,9 +521,9 @@ typedef struct zr_radiosity_params {
      number. */
   int threads;
   /* A mesh (mesh, mesh2, height_field) with more faces than this takes
-     no part in the solution, with a warning: refining links between
-     thousands of faces still takes minutes.  Default 1024; 0: no
-     limit. */
+     no part in the solution, with a warning.  Default 0: no limit (a
+     mesh's faces link as clusters; 100k faces solve in about 20 CPU
+     seconds, bench/radiosity_scale.sh). */
   int max_mesh_faces;
   /* The processes that solve together (NULL: this one alone): each
      member computes its share of the transfer factors, visibility and

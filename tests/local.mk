@@ -119,6 +119,9 @@ EXTRA_DIST += tests/test_media_shadow_povray.sh bench/media_shadow.py \
 EXTRA_DIST += bench/radiosity.sh bench/radiosity/charts.gp \
 	bench/radiosity/cornell.pov bench/radiosity/check_truth.py \
 	bench/radiosity/summary.awk bench/radiosity/error-time.png
+# Hierarchical radiosity as scenes grow (bench/radiosity_scale.sh).
+EXTRA_DIST += bench/radiosity_scale.sh bench/radiosity/scale_scene.py \
+	bench/radiosity/scale.gp bench/radiosity/scale.png
 
 # GIF, POT and TGA files (lib/image/gif.c, tga.c, heights.c).
 check_PROGRAMS += tests/test_image_formats

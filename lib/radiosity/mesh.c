@@ -376,6 +376,15 @@ static zr_status add_primitive(zr_radiosity *rad, zr_context *ctx,
     memset(s, 0, sizeof *s);
     s->geom = geo[i];
     s->object = o;
+    /* A mesh's faces and clusters are read at every node, link and
+       sample: made once here (surface.c). */
+    size_t bytes;
+    if (zr__surface_mesh_cache(&s->geom, &bytes) != ZR_OK)
+      return ZR_ENOMEM;
+    if (!zr__rad_charge(rad, bytes)) {
+      zr__surface_mesh_cache_free(&s->geom);
+      return ZR_ENOMEM;
+    }
     /* A polygon trims its own rectangle (trim.c). */
     s->trim = trim ? trim : o->kind == ZR_OBJ_POLYGON ? o : NULL;
     surface_light(s, o, rad->params.one_sided_emission != 0, &clamped);

@@ -378,6 +378,10 @@ void zr__rad_free_arrays(zr_radiosity *rad) {
   free(rad->links);
   free(rad->verts);
   free(rad->vhash);
+  /* The slot after the last surface (there is always one, mesh.c) may
+     hold a cache its surface's failed build left. */
+  for (size_t s = 0; rad->surfs != NULL && s <= rad->n_surfs; s++)
+    zr__surface_mesh_cache_free(&rad->surfs[s].geom);
   free(rad->surfs);
   free(rad->objects);
   zr__arena_free(&rad->hf_meshes);

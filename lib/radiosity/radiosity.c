@@ -54,7 +54,7 @@ ZR_API void zr_radiosity_params_init(zr_radiosity_params *p,
   p->uniform = 0;
   p->shooting = 0;
   p->brightness = 1.0;
-  p->max_mesh_faces = 1024;
+  p->max_mesh_faces = 0;
   /* A lamp emits from its front only: with two-sided emission the
      Cornell box's lamp, hung 0.01 below the ceiling, pours half its
      power into the gap above it (zrcube(1) explains the choice).  The

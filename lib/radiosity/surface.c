@@ -37,6 +37,7 @@
 #include "radiosity/surface.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "trace/obj_mesh.h"
@@ -620,7 +621,25 @@ zr_status zr__surface_mesh(zr__surface *s, const struct zr_mesh *mesh,
   return ZR_OK;
 }
 
+/* A cluster's aggregate, as zr__surface_mesh_aggregate gives it. */
+typedef struct zr__mesh_cluster {
+  double area, spread;
+  zr_vec3 centre, normal;
+} zr__mesh_cluster;
+
+/* The clusters of level d (cells 4^(slot_depth - d) faces wide) start at
+   clusters[level[d]], in face order; levels 0 .. slot_depth - 1. */
+struct zr__mesh_cache {
+  zr__mesh_face *faces;
+  zr__mesh_cluster *clusters;
+  size_t level[13];
+};
+
 bool zr__surface_mesh_tri(const zr__surface *s, size_t f, zr__mesh_face *out) {
+  if (s->cache != NULL) {
+    *out = s->cache->faces[f];
+    return out->area > 0.0;
+  }
   const uint32_t *idx = s->mesh->faces[f];
   for (int i = 0; i < 3; i++)
     out->p[i] = map_point(s->mesh_xf, s->mesh->vertices[idx[i]]);
@@ -672,9 +691,86 @@ bool zr__surface_mesh_cluster(const zr__surface *s, const double cell[4],
   return side > 1;
 }
 
+static void aggregate(const zr__surface *s, size_t f0, size_t f1,
+                      double *area, zr_vec3 *centre, zr_vec3 *normal,
+                      double *spread);
+
 void zr__surface_mesh_aggregate(const zr__surface *s, size_t f0, size_t f1,
                                 double *area, zr_vec3 *centre,
                                 zr_vec3 *normal, double *spread) {
+  const struct zr__mesh_cache *c = s->cache;
+  if (c != NULL && f1 > f0) {
+    /* A whole cluster (the last one of a level may be cut short by the
+       end of the faces) is in the table. */
+    for (int d = 0; d < s->slot_depth; d++) {
+      size_t width = (size_t)1 << (2 * (s->slot_depth - d));
+      if (f0 % width != 0 ||
+          (f1 - f0 != width && !(f1 == s->n_faces && f1 - f0 < width)))
+        continue;
+      const zr__mesh_cluster *k = &c->clusters[c->level[d] + f0 / width];
+      *area = k->area;
+      *centre = k->centre;
+      *normal = k->normal;
+      *spread = k->spread;
+      return;
+    }
+  }
+  aggregate(s, f0, f1, area, centre, normal, spread);
+}
+
+void zr__surface_mesh_cache_free(zr__surface *s) {
+  if (s->cache == NULL)
+    return;
+  free(s->cache->faces);
+  free(s->cache->clusters);
+  free(s->cache);
+  s->cache = NULL;
+}
+
+zr_status zr__surface_mesh_cache(zr__surface *s, size_t *bytes) {
+  *bytes = 0;
+  if (s->kind != ZR__SURFACE_MESH || s->cache != NULL)
+    return ZR_OK;
+  size_t n_clusters = 0, level[13] = {0};
+  for (int d = 0; d < s->slot_depth; d++) {
+    size_t width = (size_t)1 << (2 * (s->slot_depth - d));
+    level[d] = n_clusters;
+    n_clusters += (s->n_faces + width - 1) / width;
+  }
+  struct zr__mesh_cache *c = calloc(1, sizeof *c);
+  if (c != NULL) {
+    c->faces = malloc(s->n_faces * sizeof *c->faces);
+    c->clusters = malloc((n_clusters + 1) * sizeof *c->clusters);
+  }
+  if (c == NULL || c->faces == NULL || c->clusters == NULL) {
+    if (c != NULL) {
+      free(c->faces);
+      free(c->clusters);
+    }
+    free(c);
+    return ZR_ENOMEM;
+  }
+  memcpy(c->level, level, sizeof level);
+  for (size_t f = 0; f < s->n_faces; f++)
+    zr__surface_mesh_tri(s, f, &c->faces[f]);
+  /* From here on the faces come from the table, bit for bit the same. */
+  s->cache = c;
+  for (int d = 0; d < s->slot_depth; d++) {
+    size_t width = (size_t)1 << (2 * (s->slot_depth - d));
+    for (size_t f0 = 0, i = level[d]; f0 < s->n_faces; f0 += width, i++) {
+      size_t f1 = f0 + width < s->n_faces ? f0 + width : s->n_faces;
+      zr__mesh_cluster *k = &c->clusters[i];
+      aggregate(s, f0, f1, &k->area, &k->centre, &k->normal, &k->spread);
+    }
+  }
+  *bytes = sizeof *c + s->n_faces * sizeof *c->faces +
+           (n_clusters + 1) * sizeof *c->clusters;
+  return ZR_OK;
+}
+
+static void aggregate(const zr__surface *s, size_t f0, size_t f1,
+                      double *area, zr_vec3 *centre, zr_vec3 *normal,
+                      double *spread) {
   double a = 0.0;
   zr_vec3 c = zr_v3(0, 0, 0), n = zr_v3(0, 0, 0);
   zr__mesh_face tri;

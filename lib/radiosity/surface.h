@@ -63,6 +63,10 @@ typedef struct zr__surface {
   const zr_transform *mesh_xf;
   size_t n_faces;
   int slot_depth;
+  /* The faces in world space and the aggregates of every cluster,
+     made once by zr__surface_mesh_cache (NULL: computed when asked);
+     owned by whoever made it, zr__surface_mesh_cache_free frees it. */
+  struct zr__mesh_cache *cache;
 } zr__surface;
 
 /* One evaluated point. */
@@ -159,6 +163,18 @@ typedef struct zr__mesh_face {
 } zr__mesh_face;
 /* Face f of a mesh surface; false for a face with no area. */
 bool zr__surface_mesh_tri(const zr__surface *s, size_t f, zr__mesh_face *out);
+/*
+ * Makes s's cache: the world-space faces and, for each level of the
+ * quadtree above the faces', the aggregate of each cluster, the same
+ * values zr__surface_mesh_tri and zr__surface_mesh_aggregate compute
+ * without it (so a solution is the same bytes with or without), but
+ * each read once instead of at every node, link and sample (with 100k
+ * faces the aggregates of large clusters were most of a solve).  *bytes
+ * is its size.  ZR_ENOMEM on failure (s keeps no cache); a no-op for
+ * other kinds.
+ */
+zr_status zr__surface_mesh_cache(zr__surface *s, size_t *bytes);
+void zr__surface_mesh_cache_free(zr__surface *s);
 /* The (u,v) of point p on face f of a mesh surface. */
 void zr__surface_mesh_locate_face(const zr__surface *s, size_t f, zr_vec3 p,
                                   double *u, double *v);
