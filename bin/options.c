@@ -154,6 +154,7 @@ void zr__cli_init(zr_cli_options *o, const zr_render_params *defaults) {
   memset(o, 0, sizeof *o);
   o->params = *defaults;
   o->format = ZR_FORMAT_AUTO;
+  o->ini_format = ZR_FORMAT_AUTO;
   o->write_output = 1;
   o->loop_limit = ZR_DEFAULT_WORK_LIMIT;
   o->file_limit = ZR_DEFAULT_FILE_LIMIT;
@@ -1853,7 +1854,7 @@ int zr__cli_output_path(const zr_cli_options *o, char **path,
       (stat(out, &st) == 0 && S_ISDIR(st.st_mode))) {
     /* POV-Ray: no name, or a directory, means the scene's base name. */
     if (fmt == ZR_FORMAT_AUTO)
-      fmt = ZR_FORMAT_PNG8;
+      fmt = o->ini_format != ZR_FORMAT_AUTO ? o->ini_format : ZR_FORMAT_PNG8;
     name = default_name(out, o->input, format_extension(fmt));
   } else {
     if (same_file(out, o->input))
@@ -1866,7 +1867,9 @@ int zr__cli_output_path(const zr_cli_options *o, char **path,
                       ".png, .jpg, .tga, .bmp, .hdr, .exr, .ppm or .pfm (or "
                       "give the type with +F)", out);
     if (fmt == ZR_FORMAT_AUTO)
-      fmt = by_name == ZR_FORMAT_AUTO ? ZR_FORMAT_PNG8 : by_name;
+      fmt = by_name != ZR_FORMAT_AUTO        ? by_name
+             : o->ini_format != ZR_FORMAT_AUTO ? o->ini_format
+                                               : ZR_FORMAT_PNG8;
     /* As POV-Ray does, a name without an extension gets the type's, in
        the folder the name gives (+Odir/abc writes dir/abc.png). */
     name = *ext ? strdup(out) : with_extension(out, format_extension(fmt));
@@ -2172,6 +2175,23 @@ int zr__cli_window(const zr_cli_options *o, int *row0, int *row1,
   return 0;
 }
 
+/*
+ * Reads the default povray.ini.  Its Output_File_Type (Debian's says N8)
+ * is kept aside: an output name whose extension names a type
+ * (+Oimage.pfm) is written in that type, as zrcube(1) says, where
+ * POV-Ray would write PNG bytes under that name; +F on the command line
+ * or in a scene's ini still wins over the extension.
+ */
+static int default_ini(arg_ctx *c, const char *path) {
+  zr_image_format before = c->o->format;
+  int rc = parse_ini_file(c, path);
+  if (c->o->format != before) {
+    c->o->ini_format = c->o->format;
+    c->o->format = before;
+  }
+  return rc;
+}
+
 int zr__cli_read_povray_ini(zr_cli_options *o, char *err, size_t err_size) {
   arg_ctx c = {o, err, err_size, "", "", NULL, 0};
   const char *env = getenv("POVINI");
@@ -2182,7 +2202,7 @@ int zr__cli_read_povray_ini(zr_cli_options *o, char *err, size_t err_size) {
        names no file it can read. */
     struct stat st;
     if (stat(env, &st) == 0 && S_ISREG(st.st_mode))
-      return parse_ini_file(&c, env);
+      return default_ini(&c, env);
   }
   const char *home = getenv("HOME");
   char user[4096], rc_file[4096];
@@ -2199,7 +2219,7 @@ int zr__cli_read_povray_ini(zr_cli_options *o, char *err, size_t err_size) {
       char spec[4200];
       snprintf(spec, sizeof spec, "%s%s",
                strchr(places[i], '/') ? "" : "./", places[i]);
-      return parse_ini_file(&c, spec);
+      return default_ini(&c, spec);
     }
   }
   return 0;

@@ -32,6 +32,9 @@ typedef struct zr_cli_options {
   char *input;            /* scene file, NULL until given */
   char *output;           /* +O as given, NULL for the default name */
   zr_image_format format; /* from +F, ZR_FORMAT_AUTO when not given */
+  /* Output_File_Type from the default povray.ini: used only when the
+     output name's extension names no type (AUTO: none given). */
+  zr_image_format ini_format;
   int jpeg_quality;       /* +FJn: 0 .. 100 (0 and 1: 85), 0 if not given */
   int write_output;       /* 0 after -F */
   char **include_paths;   /* +L, in the order given, duplicates dropped */

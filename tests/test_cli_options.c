@@ -713,6 +713,59 @@ static void test_cli_options_ini_sections(void **state) {
 
 /* Every INI file POV-Ray 3.7 ships reads without an error (skipped
    without them); its keys are read or named in a warning. */
+/* The default povray.ini's Output_File_Type (Debian's says N8) yields to
+   an output name whose extension names a type; +F on the command line
+   still wins over the extension. */
+static void test_cli_options_default_ini_format(void **state) {
+  (void)state;
+  char path[] = "/tmp/zr_test_povini_XXXXXX.ini";
+  int fd = mkstemps(path, 4);
+  assert_true(fd >= 0);
+  FILE *f = fdopen(fd, "w");
+  fputs("Output_File_Type=N8\n", f);
+  fclose(f);
+  const char *old = getenv("POVINI");
+  char *saved = old ? strdup(old) : NULL;
+  setenv("POVINI", path, 1);
+  const char *cases[][3] = {
+      /* +O name, +F or NULL, the expected type as a string */
+      {"+Oa.pfm", NULL, "pfm"},
+      {"+Oa.hdr", NULL, "hdr"},
+      {"+Oa", NULL, "png"},
+      {"+Oa.pfm", "+FN", "png"},
+  };
+  for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
+    zr_cli_options o;
+    char err[512];
+    char *argv[] = {"zrcube", "s.pov", (char *)cases[i][0],
+                    (char *)cases[i][1], NULL};
+    zr_render_params defaults;
+    zr_render_params_init(&defaults);
+    zr__cli_init(&o, &defaults);
+    assert_int_equal(zr__cli_read_povray_ini(&o, err, sizeof err), 0);
+    assert_int_equal(o.ini_format, ZR_FORMAT_PNG8);
+    assert_int_equal(o.format, ZR_FORMAT_AUTO);
+    int argc = cases[i][1] ? 4 : 3;
+    assert_int_equal(zr__cli_parse(&o, argc, argv, err, sizeof err), 0);
+    char *out;
+    zr_image_format fmt;
+    assert_int_equal(zr__cli_output_path(&o, &out, &fmt, err, sizeof err), 0);
+    zr_image_format want = !strcmp(cases[i][2], "pfm")   ? ZR_FORMAT_PFM
+                           : !strcmp(cases[i][2], "hdr") ? ZR_FORMAT_HDR
+                                                         : ZR_FORMAT_PNG8;
+    assert_int_equal(fmt, want);
+    free(out);
+    zr__cli_free(&o);
+  }
+  if (saved) {
+    setenv("POVINI", saved, 1);
+    free(saved);
+  } else {
+    unsetenv("POVINI");
+  }
+  unlink(path);
+}
+
 static void test_cli_options_stock_ini(void **state) {
   (void)state;
   static const char *const names[] = {
@@ -763,6 +816,7 @@ int main(void) {
       cmocka_unit_test(test_cli_options_prefixes_and_more),
       cmocka_unit_test(test_cli_options_ini_sections),
       cmocka_unit_test(test_cli_options_stock_ini),
+      cmocka_unit_test(test_cli_options_default_ini_format),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
