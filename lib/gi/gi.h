@@ -59,6 +59,7 @@ struct zr_gi_cache {
   int pretrace_passes;
   uint64_t sample_rays;
   int pretracing;          /* 1 while the pretrace runs */
+  int pretrace_pass;       /* its pass, from 0 */
 };
 
 /* Whether a sky_sphere or a background that is not black lights the

@@ -741,6 +741,8 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
   if (f->conserve_energy)
     trans = zr_rgb3(trans.r * (1.0 - refl.r), trans.g * (1.0 - refl.g),
                     trans.b * (1.0 - refl.b));
+  /* A model's sample rays carry the bailout of its block (zr_tracer). */
+  double bailout = tr->bailout > 0.0 ? tr->bailout : gs->adc_bailout;
   zr_vec3 mirror = zr__reflect(s->d, s->n);
   zr_vec3 above = zr_v3_madd(s->p, s->n, s->offset);
   zr_vec3 below = zr_v3_madd(s->p, s->n, -s->offset);
@@ -756,7 +758,7 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
        glass box with filter 0.3 on a colour whose largest component is
        0.8, adc_bailout 0.05 stops the bouncing after three faces. */
     double tw = weight * rgb_max(trans);
-    if (!(tw > gs->adc_bailout))
+    if (!(tw > bailout))
       return sum;
     if (tr->no_transmitted)
       return sum;
@@ -767,7 +769,7 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
   }
 
   double rw = weight * rgb_max(refl);
-  if (rgb_max(refl) > 0.0 && rw > gs->adc_bailout && !tr->no_reflected) {
+  if (rgb_max(refl) > 0.0 && rw > bailout && !tr->no_reflected) {
     tr->stats->reflected_rays++;
     zr_tracer rt = reflecting(tr);
     zr_rgb r = trace_secondary(&rt, above, mirror, level, rw, media);
@@ -779,7 +781,7 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
     sum = zr_rgb_add(sum, zr_rgb_mul(refl, r));
   }
   double tw = weight * rgb_max(trans);
-  if (rgb_max(trans) > 0.0 && tw > gs->adc_bailout && !tr->no_transmitted) {
+  if (rgb_max(trans) > 0.0 && tw > bailout && !tr->no_transmitted) {
     /* A ray that goes on unbent is not a new trace level (ZR_PASS_MAX),
        but like any secondary ray it is only spawned below the last
        level. */

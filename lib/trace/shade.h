@@ -124,6 +124,10 @@ typedef struct zr_tracer {
      indirect->samples_emission says the model sampled; the rays it
      spawns do not (lib/gi/path.c). */
   bool skip_sampled_emission;
+  /* > 0: the adc_bailout this ray and the rays it spawns compare their
+     weight with (a radiosity block's, for its sample rays); 0: the
+     scene's global_settings one. */
+  double bailout;
 } zr_tracer;
 
 /* Sets the tracer's quality flags and no_media for POV-Ray's +Q: 0 to 11
