@@ -482,6 +482,7 @@ static zr_status render_pixels(const zr_scene *scene,
   job.tracer.skip_direct = false;
   zr__tracer_quality(&job.tracer, params->quality);
   job.tracer.skip_sampled_emission = false;
+  job.tracer.bailout = 0.0; /* the scene's adc_bailout */
   if (camera_media)
     job.camera_media = *camera_media;
   else
