@@ -75,8 +75,10 @@
 /* The translational gradient's factor on the published terms (see
    gather()). */
 #define TRANS_SCALE (2.0 / (M_PI * M_PI))
-/* The deepest octree level. */
-#define MAX_LEVEL 40
+/* The deepest octree level below the root, and the most times a root
+   doubles (2^64 times the scene's size). */
+#define MAX_LEVEL 64
+#define MAX_GROW 64
 /* The weight a sample ray starts with, against which the block's
    adc_bailout is compared where it spawns reflected or transmitted
    rays: 0.5, measured by bench/gi_adc_probe.sh (povray 3.7 lights a
@@ -143,6 +145,33 @@ void zr__gi_cache_extent(zr_gi_cache *c) {
   c->root_h = h > 0.0 ? h : 1.0; /* twice the half extent */
 }
 
+/* Makes tree d's root (node 0) twice as large, towards q, with the old
+   root as the octant that holds its centre. */
+static bool grow_root(zr_gi_cache *c, int d, zr_vec3 q) {
+  if (!(isfinite(q.x) && isfinite(q.y) && isfinite(q.z)))
+    return false;
+  zr__gi_node old = c->nodes[d][0];
+  if (!isfinite(2.0 * old.h))
+    return false;
+  zr_vec3 centre = zr_v3(old.c.x + (q.x > old.c.x ? old.h : -old.h),
+                         old.c.y + (q.y > old.c.y ? old.h : -old.h),
+                         old.c.z + (q.z > old.c.z ? old.h : -old.h));
+  int32_t moved = new_node(c, d, old.c, old.h);
+  if (moved < 0)
+    return false;
+  c->nodes[d][moved] = old;
+  zr__gi_node *root = &c->nodes[d][0];
+  root->c = centre;
+  root->h = 2.0 * old.h;
+  root->first = -1;
+  for (int k = 0; k < 8; k++)
+    root->child[k] = -1;
+  int k = (old.c.x > centre.x) | ((old.c.y > centre.y) << 1) |
+          ((old.c.z > centre.z) << 2);
+  root->child[k] = moved;
+  return true;
+}
+
 bool zr__gi_cache_add(zr_gi_cache *c, const zr__gi_record *r) {
   int d = r->depth;
   if (d < 0 || d >= 20)
@@ -163,16 +192,25 @@ bool zr__gi_cache_add(zr_gi_cache *c, const zr__gi_record *r) {
   }
   /* Down to the smallest node whose half-size is still twice the
      record's farthest reach (error_bound R), while the point is inside
-     it; a record outside the root stays at the root.  A lookup then
-     visits a node when the point lies within 1.5 half-sizes of its
-     centre: at most two nodes a side at each level. */
+     it.  A lookup then visits a node when the point lies within 1.5
+     half-sizes of its centre: at most two nodes a side at each level. */
   double reach = c->params.error_bound * ldexp(r->r, d); /* see blend */
   int32_t at = 0;
   zr_vec3 q = r->p;
-  const zr__gi_node *root = &c->nodes[d][0];
-  bool inside = fabs(q.x - root->c.x) <= root->h &&
-                fabs(q.y - root->c.y) <= root->h &&
-                fabs(q.z - root->c.z) <= root->h;
+  /* A record outside the root (an infinite plane seen to the horizon
+     has no bounds) grows it: the root doubles towards the point, the
+     old root becoming one of its octants, as often as needed.  A
+     record left at the root would be tested by every lookup (the
+     outdoor scene's far floor: 97% of the lookup time before). */
+  bool inside = false;
+  for (int grow = 0; grow <= MAX_GROW; grow++) {
+    const zr__gi_node *root = &c->nodes[d][0];
+    inside = fabs(q.x - root->c.x) <= root->h &&
+             fabs(q.y - root->c.y) <= root->h &&
+             fabs(q.z - root->c.z) <= root->h;
+    if (inside || grow == MAX_GROW || !grow_root(c, d, q))
+      break;
+  }
   for (int level = 0; inside && level < MAX_LEVEL; level++) {
     zr__gi_node *n = &c->nodes[d][at];
     double hc = 0.5 * n->h;
