@@ -31,7 +31,7 @@ END {
   # Issue 11's curved-surface target: relative error 0.10 in at most 5x
   # the time of POV-Ray's cheapest rung that reaches it.
   tp = -1
-  for (i = 1; i <= n; i++)
+  for (i = 1; name == "curved" && i <= n; i++)
     if (m[i] == "povray" && e[i] <= 0.10 && (tp < 0 || t[i] < t[tp]))
       tp = i
   if (tp >= 0) {
