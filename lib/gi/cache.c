@@ -183,13 +183,17 @@ bool zr__gi_cache_add(zr_gi_cache *c, const zr__gi_record *r) {
     return false;
   if (c->next_cap < c->records.cap) {
     int32_t *v = realloc(c->next, c->records.cap * sizeof *v);
-    if (!v) {
+    if (v)
+      c->next = v;
+    zr__gi_near *w = v ? realloc(c->near, c->records.cap * sizeof *w) : NULL;
+    if (!w) {
       c->records.n--;
       return false;
     }
-    c->next = v;
+    c->near = w;
     c->next_cap = c->records.cap;
   }
+  c->near[idx] = (zr__gi_near){r->p, r->r};
   /* Down to the smallest node whose half-size is still twice the
      record's farthest reach (error_bound R), while the point is inside
      it.  A lookup then visits a node when the point lies within 1.5
@@ -274,8 +278,16 @@ static void blend_record(blend *b, const zr__gi_record *r) {
 
 static void blend_tree(blend *b, const zr_gi_cache *c, int d, int32_t at) {
   const zr__gi_node *n = &c->nodes[d][at];
-  for (int32_t i = n->first; i >= 0; i = c->next[i])
-    blend_record(b, &c->records.v[i]);
+  /* The distance test on the compact copy first: a lookup rejects most
+     of the records it meets (about 6 in 7 on sky_outdoor.pov), and a
+     whole record is seven times the bytes. */
+  for (int32_t i = n->first; i >= 0; i = c->next[i]) {
+    const zr__gi_near *q = &c->near[i];
+    zr_vec3 d = zr_v3_sub(b->p, q->p);
+    double reach = b->a * q->r;
+    if (zr_v3_dot(d, d) < reach * reach)
+      blend_record(b, &c->records.v[i]);
+  }
   for (int k = 0; k < 8; k++) {
     int32_t ch = n->child[k];
     if (ch < 0)
@@ -695,6 +707,7 @@ ZR_API void zr_gi_cache_free(zr_gi_cache *c) {
     return;
   zr__gi_list_free(&c->records);
   free(c->next);
+  free(c->near);
   for (int d = 0; d < 20; d++)
     free(c->nodes[d]);
   free(c);
