@@ -691,6 +691,8 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %token T_PRETRACE_START "pretrace_start"
 %token T_RECURSION_LIMIT "recursion_limit"
 %token T_SUBSURFACE "subsurface"
+%token T_MM_PER_UNIT "mm_per_unit"
+%token T_TRANSLUCENCY "translucency"
 %token T_SAVE_FILE "save_file"
 %token T_LOAD_FILE "load_file"
 %token T_ENERGY "energy"
@@ -3115,6 +3117,14 @@ finish_body:
     { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->crand)); $$ = $1; }
 | finish_body T_CONSERVE_ENERGY
     { $1->conserve_energy = true; $$ = $1; }
+/* subsurface { translucency C } ("Subsurface Light Transport"; a float
+   C means that value in every channel). */
+| finish_body T_SUBSURFACE '{' T_TRANSLUCENCY colour_value '}'
+    {
+      TRY(zr__sdl_want_rgb(p, &$5, &@5, &$1->translucency));
+      $1->subsurface = true;
+      $$ = $1;
+    }
 | finish_body T_REFLECTION colour_value
     {
       TRY(zr__sdl_want_rgb(p, &$3, &@3, &$1->reflection));
@@ -3850,6 +3860,54 @@ global_body:
     { zr__sdl_radiosity_end(p, &@3); }
 | global_body T_PHOTONS '{' photon_items '}'
     { TRY(zr__sdl_photons_global(p, $4, &@2)); }
+/* mm_per_unit and subsurface { samples D, S radiosity B } ("Subsurface
+   Light Transport"; lib/trace/subsurface.c). */
+| global_body T_MM_PER_UNIT expr
+    {
+      double mm;
+      TRY(zr__sdl_want_float(p, &$3, &@3, &mm));
+      if (!(mm > 0.0) || !isfinite(mm)) {
+        zr__sdl_error(p, ZR_ESCENE, &@3, "mm_per_unit must be positive");
+        YYABORT;
+      }
+      SETTINGS->mm_per_unit = mm;
+    }
+| global_body subsurface_body '}'
+;
+
+subsurface_body:
+  T_SUBSURFACE '{'
+    { SETTINGS->subsurface_on = true; }
+| subsurface_body T_SAMPLES expr ',' expr
+    {
+      double d, s;
+      TRY(zr__sdl_want_float(p, &$3, &@3, &d));
+      TRY(zr__sdl_want_float(p, &$5, &@5, &s));
+      if (!(d >= 1.0 && d <= 1e6) || !(s >= 1.0 && s <= 1e6)) {
+        zr__sdl_error(p, ZR_ESCENE, &@3,
+                      "subsurface samples must be between 1 and 1000000");
+        YYABORT;
+      }
+      SETTINGS->subsurface_samples[0] = (int)d;
+      SETTINGS->subsurface_samples[1] = (int)s;
+    }
+| subsurface_body T_RADIOSITY expr
+    {
+      double on;
+      TRY(zr__sdl_want_float(p, &$3, &@3, &on));
+      SETTINGS->subsurface_radiosity = on != 0.0;
+      if (on != 0.0)
+        zr__sdl_warning(p, &@2, "subsurface { radiosity on } is not "
+                        "simulated: subsurface light comes from light "
+                        "sources only");
+    }
+| subsurface_body T_RADIOSITY
+    {
+      SETTINGS->subsurface_radiosity = true;
+      zr__sdl_warning(p, &@2, "subsurface { radiosity on } is not "
+                      "simulated: subsurface light comes from light "
+                      "sources only");
+    }
 ;
 
 /* global_settings { radiosity { ... } }; the items' meaning here is in

@@ -186,3 +186,12 @@ tests_test_api_LDADD = $(TEST_LDADD)
 TESTS += tests/test_symbols.sh tests/test_manpages.sh
 EXTRA_DIST += tests/test_symbols.sh tests/test_manpages.sh \
 	tests/public_names.sh lib/libzrcube.sym
+
+# One-value reflection forms (fresnel from none up to R), povray's picture.
+TESTS += tests/test_reflection_forms.sh
+EXTRA_DIST += tests/test_reflection_forms.sh
+
+# Subsurface light transport against povray's measured slab, plane and edge.
+TESTS += tests/test_subsurface.sh
+EXTRA_DIST += tests/test_subsurface.sh tests/subsurface_check.pov \
+	bench/conform/sslt_probe.py

@@ -186,8 +186,9 @@ static void test_lexer_keyword_table(void **state) {
     supported += k[i].token != T_UNSUPPORTED;
   }
   /* srgb, srgbf, srgbt, srgbft, declare and no_bump_scale: issue 16;
-     bmp, exr, hdr and tiff: issue 12 */
-  assert_int_equal(supported, 447);
+     bmp, exr, hdr and tiff: issue 12; mm_per_unit and translucency:
+     subsurface light transport */
+  assert_int_equal(supported, 449);
   assert_int_equal(zr__sdl_keyword_find("color", 5)->token, T_COLOUR);
   assert_int_equal(zr__sdl_keyword_find("colour", 6)->token, T_COLOUR);
   assert_int_equal(zr__sdl_keyword_find("use_alpha", 9)->token,

@@ -54,6 +54,16 @@ static inline zr_vec3 zr_v3_cross(zr_vec3 a, zr_vec3 b) {
                a.x * b.y - a.y * b.x);
 }
 static inline double zr_v3_len(zr_vec3 a) { return sqrt(zr_v3_dot(a, a)); }
+/* Two unit vectors making an orthonormal frame with unit n (the branch-
+   free construction of Duff et al., "Building an Orthonormal Basis,
+   Revisited", JCGT 2017). */
+static inline void zr_v3_frame(zr_vec3 n, zr_vec3 *t1, zr_vec3 *t2) {
+  double sign = copysign(1.0, n.z);
+  double a = -1.0 / (sign + n.z);
+  double b = n.x * n.y * a;
+  *t1 = (zr_vec3){1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x};
+  *t2 = (zr_vec3){b, sign + n.y * n.y * a, -n.y};
+}
 /* The unit vector along a; a zero vector stays zero rather than NaN. */
 static inline zr_vec3 zr_v3_norm(zr_vec3 a) {
   double l = zr_v3_len(a);

@@ -50,6 +50,8 @@ void zr__settings_init(zr_settings *s) {
   memset(s, 0, sizeof *s);
   s->max_trace_level = 5;
   s->number_of_waves = 10;
+  s->mm_per_unit = 10.0;
+  s->subsurface_samples[0] = s->subsurface_samples[1] = 50;
   s->adc_bailout = 1.0 / 255.0;
   s->assumed_gamma = 1.0;
   s->ambient_light = zr_rgb3(1, 1, 1);

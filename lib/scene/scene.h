@@ -371,6 +371,13 @@ typedef struct zr_finish {
      interior's ior, with a warning): 0 when absent; the object that
      wears the finish gets it as its interior's ior (lib/sdl/build.c). */
   double legacy_ior;
+  /* finish { subsurface { translucency C } } ("Subsurface Light
+     Transport"): the mean free path of light inside, per channel, in mm
+     (mm_per_unit sets the scene's scale); lit only with a
+     global_settings subsurface block (lib/trace/subsurface.c).
+     subsurface is false when absent. */
+  bool subsurface;
+  zr_rgb translucency;
 } zr_finish;
 
 typedef struct zr_interior {
@@ -999,6 +1006,14 @@ typedef struct zr_settings {
   bool version_given;
   zr_radiosity_settings radiosity;
   zr_photon_settings photons;
+  /* Subsurface light transport ("Subsurface Light Transport"):
+     mm_per_unit (default 10) is the scene's scale; a subsurface { }
+     block (subsurface_on) turns the finishes' translucency on, with
+     samples (default 50, 50: diffuse and single-scattering samples per
+     point) and radiosity (default off). */
+  double mm_per_unit;
+  bool subsurface_on, subsurface_radiosity;
+  int subsurface_samples[2];
   /* Atmospheric effects (lib/trace/atmosphere.c): lists in the order
      written, NULL when absent. */
   const zr_fog *fogs;

@@ -234,9 +234,18 @@ zr_finish *zr__sdl_finish_new(zr_sdl_parser *p, const zr_finish *from) {
   return f;
 }
 
+/*
+ * "reflection { R fresnel }", one value: povray 3.7 renders it exactly as
+ * "reflection { 0, R fresnel }" (Fresnel's law from none up to R;
+ * measured on a dark plane under a sky, ior 1.5 and 1: identical pixels,
+ * tests/test_reflection_forms.sh).  One value without fresnel stays a
+ * constant R, with or without falloff (same measurement).
+ */
 void zr__sdl_finish_reflection(zr_finish *f, const zr_sdl_reflection *r) {
   f->reflection = r->min;
   f->reflection_max = r->max;
+  if (r->fresnel_given && r->fresnel && !r->max_given)
+    f->reflection = zr_rgb3(0.0, 0.0, 0.0);
   if (r->falloff_given)
     f->reflection_falloff = r->falloff;
   if (r->fresnel_given)

@@ -297,7 +297,7 @@ static const zr_sdl_keyword keywords[] = {
     {"min_extent", T_MIN_EXTENT},
     {"minimum_area", T_MINIMUM_AREA}, /* zRcube */
     {"minimum_reuse", T_MINIMUM_REUSE},
-    {"mm_per_unit", T_UNSUPPORTED},
+    {"mm_per_unit", T_MM_PER_UNIT},
     {"mod", T_MOD},
     {"mortar", T_MORTAR},
     {"natural_spline", T_NATURAL_SPLINE},
@@ -480,7 +480,7 @@ static const zr_sdl_keyword keywords[] = {
     {"trace", T_TRACE},
     {"transform", T_TRANSFORM},
     {"translate", T_TRANSLATE},
-    {"translucency", T_UNSUPPORTED},
+    {"translucency", T_TRANSLUCENCY},
     {"transmit", T_TRANSMIT},
     {"triangle", T_TRIANGLE},
     {"triangle_wave", T_TRIANGLE_WAVE},

@@ -469,6 +469,11 @@ static zr_rgb direct_light(const zr_tracer *tr, const surface *s,
   const zr_scene *scene = tr->scene;
   zr_rgb sum = zr_rgb3(0, 0, 0);
   zr_rgb c = zr_colour_rgb(s->colour);
+  /* Subsurface light transport takes the place of the diffuse term. */
+  bool sslt = zr__subsurface_on(tr, f);
+  if (sslt && f->diffuse != 0.0 && opacity > 0.0)
+    sum = zr__subsurface_light(tr, s->object, f, s->p, s->n, s->d,
+                               zr_rgb_scale(c, f->diffuse * opacity));
   for (size_t i = 0; i < scene->n_lights; i++) {
     const zr_light *light = &scene->lights[i];
     zr_vec3 l;
@@ -519,7 +524,7 @@ static zr_rgb direct_light(const zr_tracer *tr, const surface *s,
     if (f->irid > 0.0)
       lc = zr_rgb_mul(lc, zr__irid_tint(f, &scene->settings, s->p, n_dot_l,
                                         -zr_v3_dot(n, s->d)));
-    if (f->diffuse != 0.0 && opacity > 0.0) {
+    if (f->diffuse != 0.0 && opacity > 0.0 && !sslt) {
       double d = f->diffuse * opacity *
                  (f->brilliance == 1.0 ? n_dot_l
                                        : pow(n_dot_l, f->brilliance));

@@ -217,6 +217,16 @@ bool zr__refract(zr_vec3 d, zr_vec3 n, double eta, zr_vec3 *out);
    reflection. */
 double zr__fresnel(double cos_i, double n1, double n2);
 
+/* Subsurface light transport (lib/trace/subsurface.c): whether finish f
+   takes it here (a translucency, a global subsurface block, quality 9 or
+   above), and the light it brings to p (normal n facing the viewer, d
+   the incoming ray) for a total diffuse reflectance per channel; it
+   replaces the light sources' diffuse term there. */
+bool zr__subsurface_on(const zr_tracer *tr, const zr_finish *f);
+zr_rgb zr__subsurface_light(const zr_tracer *tr, const zr_object *object,
+                            const zr_finish *f, zr_vec3 p, zr_vec3 n,
+                            zr_vec3 d, zr_rgb reflectance);
+
 /* The share of the light's own colour in a metallic highlight or
    reflection at an angle with cosine cos_angle (0 facing, 1 grazing). */
 double zr__metallic_white(double cos_angle);
