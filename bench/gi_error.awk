@@ -44,7 +44,7 @@ END {
         if (m[i] == ms[k] && e[i] <= 0.10 && (fast < 0 || t[i] < t[fast]))
           fast = i
       if (fast >= 0)
-        printf "    %-6s %s: %.2f s = %.2fx\n", ms[k] ":", s[fast], \
+        printf "    %-6s %s: %.2f s = %.3gx\n", ms[k] ":", s[fast], \
           t[fast], t[fast] / t[tp]
     }
   }
