@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Copy of a scene with more media samples, to learn whether POV-Ray's own
-picture of it is converged (bench/media_ssim.sh).
+picture of it is converged (bench/media_warp_ssim.sh).
 
 Usage: media_more_samples.py IN.pov OUT.pov [FACTOR]
 

@@ -32,5 +32,8 @@ EXTRA_DIST += tests/test_rad_cli.sh
 # Animation, partial renders, +O-, Declare=, streams, stock INI files
 # (issue 12); +C after kill -9.
 TESTS += tests/test_anim.sh tests/test_continue.sh tests/test_quality.sh
+# +UA (issue 12): tests/test_alpha.sh alone, and against povray.
+TESTS += tests/test_alpha.sh tests/test_alpha_povray.sh
+EXTRA_DIST += tests/test_alpha.sh tests/test_alpha_povray.sh
 EXTRA_DIST += tests/test_anim.sh tests/test_continue.sh \
-	tests/test_quality.sh tests/quality/quality.pov
+	tests/test_quality.sh tests/quality/quality.pov tests/quality/quick.pov

@@ -85,6 +85,7 @@ typedef enum opt_key {
   K_NO_RADIOSITY, /* --no-radiosity, Radiosity=off */
   K_RADIOSITY_ON, /* Radiosity=on: the scene decides, as without it */
   K_QUALITY,      /* +Qn, Quality=n */
+  K_COMPRESSION,  /* Compression=n: the JPEG quality */
   K_GI_SAVE,
   K_GI_LOAD,
   K_SPP,          /* --spp=N: the path tracer's samples per pixel */
@@ -107,6 +108,8 @@ typedef enum opt_key {
   K_START_COL,
   K_END_COL,
   K_CONTINUE_ON,
+  K_ALPHA_ON,     /* +UA, Output_Alpha=on */
+  K_ALPHA_OFF,
   K_CONTINUE_OFF,
   K_STATE_INTERVAL,
   /* Scene parsing (3.2.5). */
@@ -405,8 +408,6 @@ static int set_bits(const arg_ctx *c, const char *value) {
 /* The names of POV-Ray's other output types, to refuse them by name. */
 static const char *pov_type_name(char type) {
   switch (toupper((unsigned char)type)) {
-  case 'B':
-    return "BMP";
   case 'E':
     return "OpenEXR";
   case 'S':
@@ -415,6 +416,8 @@ static const char *pov_type_name(char type) {
     return NULL;
   }
 }
+
+static int add_note(const arg_ctx *c, const char *why);
 
 /* +F's value: a type letter, then optionally the bits per colour. */
 static int set_format(const arg_ctx *c, const char *value) {
@@ -425,16 +428,23 @@ static int set_format(const arg_ctx *c, const char *value) {
   } else if (type == 'P') {
     o->format = ZR_FORMAT_PPM;
   } else if (type == 'J') {
-    /* POV-Ray 3.7 reference, "Output File Type": the JPEG quality, 0 to
-       100 (0 and 1 the default, 85), clipped to that range. */
+    /* The digits after +FJ are bits per colour, as after every type
+       letter; povray 3.7 ignores them for JPEG (measured: +FJ, +FJ2 and
+       +FJ100 write the same bytes) and takes the quality from
+       Compression= alone. */
     o->format = ZR_FORMAT_JPEG;
     if (!value[1])
       return 0;
-    long q;
-    if (!parse_int(value + 1, -1000000, 1000000, &q))
-      return fail(c, "'%s': the JPEG quality must be a whole number, as "
-                     "in +FJ90", c->what);
-    o->jpeg_quality = q < 0 ? 0 : q > 100 ? 100 : (int)q;
+    long bits;
+    if (!parse_int(value + 1, 0, 1000000, &bits))
+      return fail(c, "'%s': bits per colour must be a whole number",
+                  c->what);
+    return add_note(c, "ignored: JPEG files take no bits per colour (set "
+                       "the JPEG quality with Compression=N)");
+  } else if (type == 'B') {
+    o->format = ZR_FORMAT_BMP;
+    if (value[1])
+      return set_bits(c, value + 1);
     return 0;
   } else if (type == 'T' || type == 'C' || type == 'H' ||
              (type == 'E' && zr_image_format_supported(ZR_FORMAT_EXR))) {
@@ -450,13 +460,14 @@ static int set_format(const arg_ctx *c, const char *value) {
                    "was built without OpenEXR", c->what);
   } else if (pov_type_name(type)) {
     return fail(c, "'%s': %s output is not supported (use N for PNG, J "
-                   "for JPEG, T or C for Targa, H for HDR, E for OpenEXR, "
-                   "P for PPM, or an output name ending in .pfm)",
+                   "for JPEG, T or C for Targa, B for BMP, H for HDR, E "
+                   "for OpenEXR, P for PPM, or an output name ending in "
+                   ".pfm)",
                 c->what, pov_type_name(type));
   } else {
     return fail(c, "'%s': unknown output file type '%c' (use N for PNG, "
-                   "J for JPEG, T or C for Targa, H for HDR, E for "
-                   "OpenEXR or P for PPM)", c->what, value[0]);
+                   "J for JPEG, T or C for Targa, B for BMP, H for HDR, E "
+                   "for OpenEXR or P for PPM)", c->what, value[0]);
   }
   return value[1] ? set_bits(c, value + 1) : 0;
 }
@@ -803,6 +814,10 @@ static int apply_more(const arg_ctx *c, opt_key key, const char *value) {
   case K_CONTINUE_OFF:
     o->continue_trace = key == K_CONTINUE_ON;
     return 0;
+  case K_ALPHA_ON:
+  case K_ALPHA_OFF:
+    o->params.alpha = key == K_ALPHA_ON;
+    return 0;
   case K_STATE_INTERVAL:
     if (!parse_real(value, &d) || d < 0)
       return fail(c, "'%s': --state-interval takes seconds (0: after "
@@ -984,6 +999,16 @@ static int apply(const arg_ctx *c, opt_key key, const char *value) {
     return 0;
   case K_QUALITY:
     return set_quality(c, value);
+  case K_COMPRESSION: {
+    /* POV-Ray 3.7 reference, "Output File Type": 0 to 100, 0 and 1 the
+       default (85), values outside clipped to that range. */
+    long q;
+    if (!parse_int(value, -1000000, 1000000, &q))
+      return fail(c, "'%s': the JPEG quality must be a whole number, as "
+                     "in Compression=90", c->what);
+    o->jpeg_quality = q < 0 ? 0 : q > 100 ? 100 : (int)q;
+    return 0;
+  }
   case K_GI_SAVE:
     return set_string(c, &o->gi_save, value);
   case K_GI_LOAD:
@@ -1104,6 +1129,7 @@ static const pov_switch pov_switches[] = {
      "a version, as in +MV3.7"},
     {"MB", K_IGNORED, K_IGNORED, V_ANY, NULL},
     {"MI", K_IGNORED, K_IGNORED, V_ANY, NULL},
+    {"UA", K_ALPHA_ON, K_ALPHA_OFF, V_NONE, NULL},
     {"UD", K_NOTE, K_NOTE, V_NONE, "ignored: zrcube does not dither"},
     {"UF", K_NOTE, K_NOTE, V_NONE,
      "ignored: field rendering is not supported"},
@@ -1306,6 +1332,7 @@ static const ini_option ini_options[] = {
     {"Output_To_File", K_OUTPUT_ON, 1, K_OUTPUT_OFF, NULL},
     {"Output_File_Type", K_FORMAT, 0, K_FORMAT, NULL},
     {"Bits_Per_Color", K_BITS, 0, K_BITS, NULL},
+    {"Compression", K_COMPRESSION, 0, K_COMPRESSION, NULL},
     /* zrcube's own keys for what POV-Ray 3.7 sets in povray.conf
        ([Permitted Paths] read= and read+write=, [File I/O Security]);
        the plural spellings are accepted too. */
@@ -1350,7 +1377,7 @@ static const ini_option ini_options[] = {
     {"Preview_End_Size", K_IGNORED, 0, K_IGNORED, NULL},
     {"Draw_Vistas", K_IGNORED, 0, K_IGNORED, NULL},
     /* File output (3.2.4). */
-    NOTE("Output_Alpha", "ignored: the image is written without alpha"),
+    {"Output_Alpha", K_ALPHA_ON, 1, K_ALPHA_OFF, NULL},
     NOTE("Dither", "ignored: zrcube does not dither"),
     NOTE("Dither_Method", "ignored: zrcube does not dither"),
     NOTE("File_Gamma", "ignored: the file gamma follows the scene's "
@@ -1727,6 +1754,8 @@ static const char *format_extension(zr_image_format format) {
     return ".hdr";
   case ZR_FORMAT_EXR:
     return ".exr";
+  case ZR_FORMAT_BMP:
+    return ".bmp";
   default:
     return ".png";
   }
@@ -1755,6 +1784,8 @@ static zr_image_format format_of_extension(const char *ext) {
     return ZR_FORMAT_HDR;
   if (!strcasecmp(ext, ".exr") && zr_image_format_supported(ZR_FORMAT_EXR))
     return ZR_FORMAT_EXR;
+  if (!strcasecmp(ext, ".bmp"))
+    return ZR_FORMAT_BMP;
   return ZR_FORMAT_AUTO;
 }
 
@@ -1832,8 +1863,8 @@ int zr__cli_output_path(const zr_cli_options *o, char **path,
     zr_image_format by_name = format_of_extension(ext);
     if (fmt == ZR_FORMAT_AUTO && *ext && by_name == ZR_FORMAT_AUTO)
       return fail(&c, "cannot write '%s': the output name must end in "
-                      ".png, .jpg, .tga, .hdr, .exr, .ppm or .pfm (or give "
-                      "the type with +F)", out);
+                      ".png, .jpg, .tga, .bmp, .hdr, .exr, .ppm or .pfm (or "
+                      "give the type with +F)", out);
     if (fmt == ZR_FORMAT_AUTO)
       fmt = by_name == ZR_FORMAT_AUTO ? ZR_FORMAT_PNG8 : by_name;
     /* As POV-Ray does, a name without an extension gets the type's, in
@@ -1881,15 +1912,16 @@ const char *zr__cli_usage(void) {
       "(--width=640); files ending in .ini hold more options.\n"
       "\n"
       "  +I<file>, --input=FILE       the scene (or give it as an argument)\n"
-      "  +O<file>, --output=FILE      the image: .png, .jpg, .tga, .hdr,\n"
-      "                               .exr, .ppm or .pfm by its\n"
+      "  +O<file>, --output=FILE      the image: .png, .jpg, .tga, .bmp,\n"
+      "                               .hdr, .exr, .ppm or .pfm by its\n"
       "                               extension (default: SCENE.png here);\n"
       "                               a directory puts SCENE.png in it, a\n"
       "                               name without extension gets .png\n"
       "  +FN, +FN16, +FP              PNG (8 or 16 bit) or PPM output\n"
-      "  +FJ[q], +FT, +FC, +FH, +FE   JPEG (quality q, default 85), Targa\n"
-      "                               (C: run-length encoded), Radiance\n"
-      "                               HDR, OpenEXR output\n"
+      "  +FJ, +FT, +FC, +FB, +FH, +FE JPEG, Targa (C: run-length\n"
+      "                               encoded), BMP, Radiance HDR,\n"
+      "                               OpenEXR output\n"
+      "  Compression=N                JPEG quality 2..100 (0, 1: 85)\n"
       "  -F                           render without writing an image\n"
       "  +W<n>, --width=N             image width in pixels (default 320)\n"
       "  +H<n>, --height=N            image height in pixels (default 240);\n"

@@ -12,6 +12,9 @@
  *   done flags                      passes x bands bytes
  *   centres (with 2 passes)         width x height x 3 f32
  *   image                           width x height x 3 f32
+ *
+ * (4 f32 a pixel, colour and alpha, with +UA, which the fingerprint
+ * holds)
  *   checksum                        u64, FNV-1a of all the above
  *
  * in the host's byte order (a state file continues a render on the
@@ -81,7 +84,8 @@ int zr__state_write(const char *path, uint64_t fingerprint, int width,
   }
   uint64_t sum = ZR_STATE_HASH_START;
   int32_t head[5] = {width, height, pr->passes, pr->bands, pr->band_rows};
-  size_t floats = (size_t)width * (size_t)height * 3;
+  size_t floats = (size_t)width * (size_t)height *
+                  (size_t)(pr->channels == 4 ? 4 : 3);
   int rc = put(fd, magic, sizeof magic, &sum);
   if (rc == 0)
     rc = put(fd, &fingerprint, sizeof fingerprint, &sum);
@@ -150,7 +154,9 @@ static int take(const char *bytes, size_t total, size_t *at, void *out,
 int zr__state_read(const char *path, uint64_t fingerprint, int width,
                    int height, zr_par_progress *pr, char *err,
                    size_t err_size) {
+  int channels = pr->channels == 4 ? 4 : 3;
   memset(pr, 0, sizeof *pr);
+  pr->channels = channels;
   FILE *f = fopen(path, "rb");
   if (!f) {
     if (errno == ENOENT)
@@ -194,7 +200,8 @@ int zr__state_read(const char *path, uint64_t fingerprint, int width,
     why = "it was made by another scene or other options (scene and "
           "included files, size, antialiasing, clock, quality, global "
           "illumination must all be the same)";
-  size_t floats = (size_t)width * (size_t)height * 3;
+  /* The caller's channels: the fingerprint holds +UA. */
+  size_t floats = (size_t)width * (size_t)height * (size_t)channels;
   if (!why) {
     pr->passes = head[2];
     pr->bands = head[3];

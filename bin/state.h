@@ -34,7 +34,8 @@ int zr__state_write(const char *path, uint64_t fingerprint, int width,
 
 /*
  * Reads a state file into *progress (its arrays malloc'ed; free with
- * zr__state_free).  Returns 0; 1 when there is no such file; -1 with a
+ * zr__state_free) with progress->channels floats a pixel (3 unless the
+ * caller set 4).  Returns 0; 1 when there is no such file; -1 with a
  * message in err when the file is damaged or was made by another scene,
  * other options or another image size.
  */

@@ -104,6 +104,7 @@ typedef struct progress_state {
 typedef struct diag_state {
   int rank;
   int quiet;
+  int silent; /* a rank other than 0 tries a parse: nothing is printed */
   unsigned errors_printed;
   const int *console;  /* ZR_CLI_STREAMS flags */
   FILE **files;        /* ZR_CLI_STREAMS files, NULL: none */
@@ -157,6 +158,8 @@ static void say(diag_state *st, int stream, const char *fmt, ...) {
  */
 static void print_diag(const zr_diag *d, void *user) {
   diag_state *st = user;
+  if (st->rank != 0 && st->silent)
+    return;
   if (st->rank != 0) {
     if (d->level == ZR_DIAG_ERROR) {
       fprintf(stderr, "zrcube: rank %d: %s", st->rank, d->text);
@@ -376,6 +379,16 @@ typedef struct run {
   zr_context *ctx;
   diag_state diag;
   zr_bundle bundle;
+  /* A rank alone keeps no copy of the files it read (a second 15 MB for
+     a big mesh): it hashes them as they come, into files_hash, and
+     keeps each one's size and hash to check a second reading. */
+  struct file_digest {
+    char *path;
+    size_t size;
+    uint64_t hash;
+  } *digests;
+  size_t n_digests;
+  uint64_t files_hash;
   zr_scene *scene;
   zr_image *image;
   zr_radiosity *rad;
@@ -490,6 +503,22 @@ static int read_command_line(run *r, int argc, char **argv) {
     r->format = r->opts.format != ZR_FORMAT_AUTO
                     ? r->opts.format
                     : zr_image_format_from_name(r->still_path);
+  /* +UA with a format that holds no alpha: povray warns and writes the
+     pixels it writes without +UA (measured with +FP), and so does this,
+     on every rank alike. */
+  zr_image_format written =
+      !r->opts.to_stdout ? r->format
+      : r->opts.format == ZR_FORMAT_AUTO ? ZR_FORMAT_PNG8 : r->opts.format;
+  if (r->opts.params.alpha && written != ZR_FORMAT_PNG8 &&
+      written != ZR_FORMAT_PNG16 && written != ZR_FORMAT_TGA &&
+      written != ZR_FORMAT_TGA_RLE && written != ZR_FORMAT_BMP &&
+      written != ZR_FORMAT_EXR && r->opts.write_output) {
+    if (r->rank == 0)
+      say(&r->diag, ZR_CLI_STREAM_WARNING, "zrcube: warning: +UA: this "
+          "output format holds no alpha channel; the image is written "
+          "without one (use PNG, Targa, BMP or OpenEXR)\n");
+    r->opts.params.alpha = 0;
+  }
   r->threads = zr__par_threads(r->par, r->opts.threads);
   /* mpirun binds each rank to one core unless told otherwise, and then
      extra threads only take turns on it. */
@@ -580,41 +609,151 @@ static zr_status make_context(run *r) {
   return s;
 }
 
-/* Steps 2 and 3: the scene, parsed on rank 0 first, then everywhere. */
+/* One file into the fingerprint of the files read: its path, size and
+   the hash of its bytes (hash), in the order first read. */
+static uint64_t fold_file(uint64_t h, const char *path, size_t size,
+                          uint64_t hash) {
+  h = zr__state_hash(h, path, strlen(path) + 1);
+  h = zr__state_hash(h, &size, sizeof size);
+  return zr__state_hash(h, &hash, sizeof hash);
+}
+
+/* The read observer of every rank that reads the disk: files_hash
+   takes each file as it comes; a file read again must be the same
+   bytes, as the bundle's recorder checks. */
+static zr_status digest_observer(const char *path, const char *bytes,
+                                 size_t size, void *user) {
+  run *r = user;
+  uint64_t hash = zr__state_hash(ZR_STATE_HASH_START, bytes, size);
+  for (size_t i = 0; i < r->n_digests; i++)
+    if (strcmp(r->digests[i].path, path) == 0)
+      return r->digests[i].size == size && r->digests[i].hash == hash
+                 ? ZR_OK
+                 : ZR_EIO;
+  struct file_digest *d =
+      realloc(r->digests, (r->n_digests + 1) * sizeof *d);
+  if (!d)
+    return ZR_ENOMEM;
+  r->digests = d;
+  if (!(d[r->n_digests].path = strdup(path)))
+    return ZR_ENOMEM;
+  d[r->n_digests].size = size;
+  d[r->n_digests++].hash = hash;
+  r->files_hash = fold_file(r->files_hash, path, size, hash);
+  return ZR_OK;
+}
+
+/* Rank 0 of several also keeps what it read, for ranks that could not
+   read the same files themselves. */
+static zr_status root_observer(const char *path, const char *bytes,
+                               size_t size, void *user) {
+  run *r = user;
+  zr_status s = zr__bundle_record_observer(path, bytes, size, &r->bundle);
+  return s == ZR_OK ? digest_observer(path, bytes, size, user) : s;
+}
+
+static void free_digests(run *r) {
+  for (size_t i = 0; i < r->n_digests; i++)
+    free(r->digests[i].path);
+  free(r->digests);
+  r->digests = NULL;
+  r->n_digests = 0;
+}
+
+/*
+ * Under mpirun every rank parses at once, each reading the files from
+ * its own disk (a rank that waited for rank 0's parse and then parsed
+ * its copy took 1.6 times one rank's time on bench/peers.sh's terrain):
+ * then rank 0 tells its status, the fingerprint of the files it read
+ * and their number, and a rank that read other bytes, or could not
+ * read them (another host, a file rank 0 wrote meanwhile), or failed
+ * where rank 0 did not, parses again from the files rank 0 sends, as
+ * ARCHITECTURE.md's broadcast has it.  Only rank 0 prints what the
+ * parse says; rank 0's failure is everyone's.
+ */
+static int same_files_as_root(run *r, zr_status local, zr_status *root) {
+  char *text = NULL;
+  if (r->rank == 0) {
+    char buf[96];
+    snprintf(buf, sizeof buf, "%d %llu %zu", (int)local,
+             (unsigned long long)r->files_hash, r->n_digests);
+    text = strdup(buf);
+  }
+  int root_status = ZR_EMPI;
+  unsigned long long root_hash = 0;
+  size_t root_files = 0;
+  zr_status s = zr__par_share_string(r->par, &text);
+  if (s != ZR_OK || !text ||
+      sscanf(text, "%d %llu %zu", &root_status, &root_hash, &root_files) !=
+          3)
+    root_status = s != ZR_OK ? (int)s : ZR_EMPI;
+  free(text);
+  *root = (zr_status)root_status;
+  return r->rank == 0 || (local == ZR_OK && root_hash == r->files_hash &&
+                          root_files == r->n_digests);
+}
+
+/* Steps 2 and 3: the scene, parsed on every rank at once. */
 static int read_scene(run *r) {
   zr_status local = make_context(r);
+  int have_context = local == ZR_OK;
   zr_status root = local;
+  int several = zr__par_size(r->par) > 1;
   zr__bundle_init(&r->bundle);
   r->bundle.max_file_size = r->opts.file_limit;
+  r->files_hash = ZR_STATE_HASH_START;
   double start = zr__par_now(), cpu = zr__par_cpu();
-  if (r->rank == 0 && local == ZR_OK) {
-    /* Rank 0 reads with the library's own reader, which applies the
-       I/O restrictions, and records what it read for the others. */
-    zr_context_set_read_observer(r->ctx, zr__bundle_record_observer,
-                                 &r->bundle);
-    root = zr_scene_parse_file(r->ctx, r->opts.input, &r->scene);
-    if (root != ZR_OK && r->diag.errors_printed == 0)
-      fprintf(stderr, "zrcube: cannot read scene '%s': %s\n",
-              r->opts.input, zr_status_str(root));
-  }
-  zr_status s = zr__par_share_bundle(r->par, &r->bundle, &root);
-  if (s != ZR_OK) {
-    if (r->rank == 0)
-      fprintf(stderr, "zrcube: cannot send the scene to the other ranks: "
-                      "%s\n", zr_status_str(s));
-    return EXIT_SCENE;
-  }
-  if (root != ZR_OK)
-    return EXIT_SCENE;
-  if (r->rank != 0 && local == ZR_OK) {
-    zr_context_set_reader(r->ctx, zr__bundle_serve_reader, &r->bundle);
-    /* Rank 0 has written the scene's #fopen files; what it read back
-       comes from the bundle. */
-    zr_context_set_scene_writes(r->ctx, 0);
+  if (have_context) {
+    /* The library's own reader applies the I/O restrictions. */
+    zr_context_set_read_observer(r->ctx,
+                                 r->rank == 0 && several ? root_observer
+                                                         : digest_observer,
+                                 r);
+    if (r->rank != 0) {
+      /* Rank 0 writes the scene's #fopen files; the others say nothing
+         unless they must parse again (below). */
+      zr_context_set_scene_writes(r->ctx, 0);
+      r->diag.silent = 1;
+    }
     local = zr_scene_parse_file(r->ctx, r->opts.input, &r->scene);
-    if (local != ZR_OK && r->diag.errors_printed == 0)
-      fprintf(stderr, "zrcube: rank %d: cannot read scene '%s': %s\n",
-              r->rank, r->opts.input, zr_status_str(local));
+    r->diag.silent = 0;
+    if (r->rank == 0 && local != ZR_OK && r->diag.errors_printed == 0)
+      fprintf(stderr, "zrcube: cannot read scene '%s': %s\n",
+              r->opts.input, zr_status_str(local));
+  }
+  root = local;
+  int from_bundle = 0;
+  if (several) {
+    int same = same_files_as_root(r, local, &root);
+    if (root != ZR_OK)
+      return EXIT_SCENE;
+    zr_status agreed = zr__par_agree(r->par, same ? ZR_OK : ZR_EIO);
+    if (agreed != ZR_OK && agreed != ZR_EIO)
+      return EXIT_SCENE;
+    if (agreed == ZR_EIO) {
+      zr_status s = zr__par_share_bundle(r->par, &r->bundle, &root);
+      if (s != ZR_OK) {
+        if (r->rank == 0)
+          fprintf(stderr, "zrcube: cannot send the scene to the other "
+                          "ranks: %s\n", zr_status_str(s));
+        return EXIT_SCENE;
+      }
+      if (root != ZR_OK)
+        return EXIT_SCENE;
+      if (!same && have_context) {
+        zr_scene_free(r->scene);
+        r->scene = NULL;
+        zr_context_set_read_observer(r->ctx, NULL, NULL);
+        zr_context_set_reader(r->ctx, zr__bundle_serve_reader, &r->bundle);
+        local = zr_scene_parse_file(r->ctx, r->opts.input, &r->scene);
+        from_bundle = 1;
+        if (local != ZR_OK && r->diag.errors_printed == 0)
+          fprintf(stderr, "zrcube: rank %d: cannot read scene '%s': %s\n",
+                  r->rank, r->opts.input, zr_status_str(local));
+      }
+    }
+  } else if (root != ZR_OK) {
+    return EXIT_SCENE;
   }
   r->parse_seconds = zr__par_now() - start;
   r->parse_cpu = zr__par_cpu() - cpu;
@@ -626,13 +765,16 @@ static int read_scene(run *r) {
   }
   /* A fingerprint of what the pixels depend on, for the state file: the
      files rank 0 read and the options that change pixels. */
-  uint64_t h = ZR_STATE_HASH_START;
-  for (size_t i = 0; i < r->bundle.count; i++) {
-    const zr_bundle_file *f = &r->bundle.files[i];
-    h = zr__state_hash(h, f->path, strlen(f->path) + 1);
-    h = zr__state_hash(h, &f->size, sizeof f->size);
-    h = zr__state_hash(h, f->bytes, f->size);
+  uint64_t h = r->files_hash;
+  if (from_bundle) {
+    h = ZR_STATE_HASH_START;
+    for (size_t i = 0; i < r->bundle.count; i++) {
+      const zr_bundle_file *f = &r->bundle.files[i];
+      h = fold_file(h, f->path, f->size,
+                    zr__state_hash(ZR_STATE_HASH_START, f->bytes, f->size));
+    }
   }
+  free_digests(r);
   const zr_render_params *p = &r->opts.params;
   double reals[] = {p->aa_threshold, p->jitter_amount,
                     r->frame->clock.clock, r->frame->clock.clock_delta,
@@ -648,6 +790,8 @@ static int read_scene(run *r) {
                 r->col1};
   h = zr__state_hash(h, reals, sizeof reals);
   h = zr__state_hash(h, ints, sizeof ints);
+  if (p->alpha) /* +UA: another pixel layout (4 floats) */
+    h = zr__state_hash(h, "alpha", 6);
   for (size_t i = 0; i < r->opts.n_declares; i++) {
     h = zr__state_hash(h, r->opts.declare_names[i],
                        strlen(r->opts.declare_names[i]) + 1);
@@ -853,6 +997,11 @@ static int set_up_path(run *r) {
   if (zr__par_agree(r->par, s) != ZR_OK)
     return EXIT_SCENE;
   r->opts.params.path = r->path;
+  if (r->opts.params.alpha && r->rank == 0)
+    say(&r->diag, ZR_CLI_STREAM_WARNING, "zrcube: warning: +UA is not "
+        "supported with the path tracer (--gi=path); the image is written "
+        "without alpha\n");
+  r->opts.params.alpha = 0;
   r->opts.params.path_samples = r->opts.spp;
   r->opts.params.path_first_sample = 0;
   r->opts.params.antialias = 0;
@@ -1027,6 +1176,7 @@ static int load_state(run *r, zr_par_progress *resume, int *have) {
   if (!r->opts.continue_trace || !r->state_path)
     return 0;
   char err[1024];
+  resume->channels = r->opts.params.alpha ? 4 : 3;
   int rc = zr__state_read(r->state_path, r->fingerprint,
                           r->opts.params.width, r->opts.params.height,
                           resume, err, sizeof err);
@@ -1101,7 +1251,11 @@ static int render_and_write(run *r) {
   if (s != ZR_OK) {
     if (r->rank == 0) {
       const char *why = zr_context_last_error(r->ctx);
-      if (*why)
+      if (s == ZR_ECANCELLED && signal_caught)
+        fprintf(stderr, "zrcube: rendering stopped by %s; the image was "
+                "not written\n", signal_caught == SIGINT ? "SIGINT"
+                                                          : "SIGTERM");
+      else if (*why)
         fputs(why, stderr);
       else
         fprintf(stderr, "zrcube: rendering failed: %s\n", zr_status_str(s));
@@ -1245,6 +1399,7 @@ static void end_frame(run *r) {
   zr_path_free(r->path);
   zr_scene_free(r->scene);
   zr__bundle_free(&r->bundle);
+  free_digests(r);
   zr_context_free(r->ctx);
   r->image = NULL;
   r->rad = NULL;

@@ -2443,8 +2443,13 @@ pigment_item:
 | colour_map  { $<pigment>0->colour_map = $1; }
 /* uv_mapping ("UV Mapping"): the pattern takes the surface's (u, v, 0). */
 | T_UV_MAPPING  { $<pigment>0->uv_mapping = true; }
-/* quick_color only matters to POV-Ray's low quality previews. */
+/* quick_color: the colour of POV-Ray's previews at +Q5 and below. */
 | T_QUICK_COLOUR colour_value
+    {
+      zr_pigment *pg = $<pigment>0;
+      TRY(zr__sdl_want_colour(p, &$2, &@2, &pg->quick));
+      pg->has_quick = true;
+    }
 ;
 
 /* ---- patterns (reference manual, "Pattern") ---- */
@@ -3194,7 +3199,10 @@ reflection:
 
 texture:
   T_TEXTURE '{' texture_body '}'
-    { TRY(zr__sdl_texture_done(p, $3)); $$ = $3; }
+    {
+      TRY(zr__sdl_texture_done(p, $3));
+      $$ = zr__sdl_texture_shared(p, $3);
+    }
 ;
 
 /* "texture {T1} texture {T2}": T2 layered on T1 ("Layered Textures"). */
@@ -3206,7 +3214,12 @@ layered_texture:
 
 texture_start:
   %empty               { TRY($$ = zr__sdl_texture_new(p, NULL)); }
-| T_TEXTURE_ID         { TRY($$ = zr__sdl_texture_new(p, $1.ptr)); }
+| T_TEXTURE_ID
+    {
+      TRY($$ = zr__sdl_texture_new(p, $1.ptr));
+      p->texture_copy = $$;
+      p->texture_copied = $1.ptr;
+    }
 /* A pigment, finish or normal identifier first in a texture (older
    syntax that POV-Ray 3.7 renders without a warning; later in the
    texture it refuses them; measured: tests/legacy/texture_ids.pov). */

@@ -768,9 +768,10 @@ typedef struct zr_render_params {
      corners differ by more than aa_threshold is split into four, down
      to aa_depth levels ((2^aa_depth + 1)^2 samples at most). */
   int aa_method;
-  /* POV-Ray's +Q, 0 to 11 (default 9): below 4 no shadows, below 5 area
-     lights cast hard shadows, below 6 no transmitted rays, below 8 no
-     reflected rays, below 9 no media. */
+  /* POV-Ray's +Q, 0 to 11 (default 9): below 2 no lighting (each
+     surface in its pigment's colour), below 4 no shadows, below 5 area
+     lights cast hard shadows, below 6 no transmitted rays and quick_color
+     replaces pigments, below 8 no reflected rays, below 9 no media. */
   int quality;
   /* The path-traced reference for this scene (NULL: none, the default;
      not with radiosity or gi_cache): each pixel is the mean of
@@ -788,6 +789,16 @@ typedef struct zr_render_params {
   /* Diagnostics, progress and cancel of the calls taking these
      parameters (NULL: none, the default).  It must outlive the call. */
   zr_context *context;
+  /* POV-Ray's +UA (Output_Alpha).  0 (default): rgb and centres hold 3
+     floats a pixel.  1: 4 floats a pixel, the colour seen with the
+     background clear (transparent black, so the colour is premultiplied
+     by alpha) and the alpha, 0 where only background shows: in scenes
+     of #version 3.7 the background's and sky_sphere's filter and
+     transmit make it clear, older scenes have it clear and black; what
+     the camera sees through filter and transmit is clear in proportion,
+     reflections of the background are not (zrcube(1), "+UA").  Not
+     with a path tracer. */
+  int alpha;
 } zr_render_params;
 
 /* Fills p with POV-Ray's defaults (and the command line's: zrcube(1)
@@ -808,7 +819,8 @@ ZR_API void zr_render_stats_add(zr_render_stats *a, const zr_render_stats *b);
 
 /*
  * Renders count pixels, pixels[i] = y * width + x, into rgb[3 * i ..] as
- * linear floats in the scene's working colour space.  With centres == NULL
+ * linear floats in the scene's working colour space (rgb[4 * i ..],
+ * colour and alpha, with params->alpha; centres alike).  With centres == NULL
  * this is pass 1 (one ray per pixel centre).  With centres pointing at a
  * complete width * height * 3 image of pass 1, this is the antialiasing
  * pass: pixels whose centre differs from a neighbour's by more than the
@@ -822,7 +834,8 @@ ZR_API zr_status zr_render_pixels(const zr_scene *scene,
                                   zr_render_stats *stats);
 
 /*
- * Both passes over the whole image (rgb: width * height * 3 floats),
+ * Both passes over the whole image (rgb: width * height * 3 floats, 4
+ * with params->alpha),
  * rows shared among params->threads threads (the caller's among them),
  * with progress (ZR_PHASE_RENDER, rows) and cancel through
  * params->context.  The image is the same bytes for any thread count.
@@ -859,7 +872,8 @@ typedef enum zr_image_format {
   ZR_FORMAT_TGA,      /* uncompressed, 24 bit (32 with alpha) */
   ZR_FORMAT_TGA_RLE,  /* run-length encoded, 24 bit (32 with alpha) */
   ZR_FORMAT_HDR,      /* Radiance RGBE, linear, run-length encoded */
-  ZR_FORMAT_EXR       /* OpenEXR, half floats, linear (if built with it) */
+  ZR_FORMAT_EXR,      /* OpenEXR, half floats, linear (if built with it) */
+  ZR_FORMAT_BMP       /* Windows bitmap, 24 bit (32 with alpha) */
 } zr_image_format;
 
 /* An RGB image of linear floats, rows top to bottom. */
@@ -897,9 +911,11 @@ ZR_API zr_image_format zr_image_format_from_name(const char *path);
 
 /*
  * An alpha channel, one float a pixel in [0, 1] (1 opaque), rows top to
- * bottom, made and owned by the image (all 1 when made).  PNG, TGA and
- * OpenEXR files are written with it when the image has one (PNG RGBA,
- * TGA 32 bit); the other formats leave it out.  Colours stay unmultiplied.
+ * bottom, made and owned by the image (all 1 when made).  PNG, TGA, BMP
+ * and OpenEXR files are written with it when the image has one (PNG
+ * RGBA, TGA and BMP 32 bit); the other formats leave it out.  Colours
+ * stay unmultiplied (OpenEXR files store them premultiplied, as that
+ * format and povray do).
  */
 ZR_API zr_status zr_image_add_alpha(zr_image *image);
 /* The alpha channel, or NULL when the image has none. */

@@ -27,6 +27,8 @@ dist_scenes_DATA = \
 	scenes/normal_tilt.pov \
 	scenes/ortho_id.pov \
 	scenes/spirals.pov \
+	scenes/waves_quilted.pov \
+	scenes/camera_sky.pov \
 	scenes/transmit_over.pov \
 	scenes/texture_modify.pov \
 	scenes/gamma.pov \

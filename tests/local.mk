@@ -31,6 +31,8 @@ EXTRA_DIST += tests/golden.sh tests/ref/README.md tests/ref/make-refs.sh \
 	tests/ref/normal_tilt.png \
 	tests/ref/ortho_id.png \
 	tests/ref/spirals.png \
+	tests/ref/waves_quilted.png \
+	tests/ref/camera_sky.png \
 	tests/ref/transmit_over.png \
 	tests/ref/texture_modify.png \
 	tests/ref/bicubic.png \
@@ -104,6 +106,14 @@ EXTRA_DIST += tests/test_legacy_povray.sh tests/legacy/camera_angle0.pov \
 # Media against POV-Ray's pictures (skipped without povray).
 TESTS += tests/test_media_povray.sh
 EXTRA_DIST += tests/test_media_povray.sh tests/media_check.pov
+TESTS += tests/test_media_shadow_povray.sh tests/test_fog_povray.sh \
+	tests/test_image_gamma_povray.sh
+EXTRA_DIST += tests/test_fog_povray.sh tests/fog/solid_fog.pov \
+	tests/test_image_gamma_povray.sh
+EXTRA_DIST += tests/test_media_shadow_povray.sh bench/media_shadow.py \
+	bench/media_warp_ssim.sh bench/media_more_samples.py \
+	bench/results/media-warp-ssim-2026-12-02.tsv \
+	bench/results/media-shadow-2026-12-02.txt
 
 # The radiosity benchmark (bench/radiosity.sh; not run by `make check`).
 EXTRA_DIST += bench/radiosity.sh bench/radiosity/charts.gp \
@@ -133,6 +143,11 @@ EXTRA_DIST += tests/test_iopolicy.sh
 # little memory, corrupt files, 10^6 objects.
 TESTS += tests/test_faults.sh
 EXTRA_DIST += tests/test_faults.sh
+# mkhfpng writes test_faults.sh's 11000 x 11000 height field picture.
+check_PROGRAMS += tests/mkhfpng
+tests_mkhfpng_SOURCES = tests/mkhfpng.c
+tests_mkhfpng_CPPFLAGS = $(AM_CPPFLAGS) $(PNG_CFLAGS)
+tests_mkhfpng_LDADD = $(PNG_LIBS) -lm
 
 # Issue 12's writers and readers (JPEG, TGA, HDR, OpenEXR, alpha, BMP,
 # TIFF) and encoding to memory and to a stream.

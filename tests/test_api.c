@@ -13,6 +13,7 @@
 
 #include <cmocka.h>
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -114,6 +115,122 @@ static void test_api_threads_same_bytes(void **state) {
   }
   free(one);
   free(four);
+  zr_scene_free(scene);
+}
+
+/* +UA through the API (alpha = 1): 4 floats a pixel, the colour with the
+   background clear and the alpha, as povray 3.7 makes them (measured:
+   tests/test_alpha_povray.sh): in a scene without #version the
+   background is clear and black, transmit 0.5 leaves half the pixel
+   clear, filter lets through its grey (0.297 r + 0.589 g + 0.114 b) of
+   it, an opaque surface keeps the colour of a render without alpha;
+   with #version 3.7 an opaque background colour is opaque. */
+static void test_api_alpha(void **state) {
+  (void)state;
+  static const char legacy[] =
+      "camera { location <0, 0, -4> look_at 0 }\n"
+      "light_source { <5, 5, -5> rgb 1 }\n"
+      "background { rgb <0.2, 0.4, 0.8> }\n"
+      "sphere { 0, 0.5 pigment { rgb <1, 0.5, 0.2> } }\n"
+      "disc { <-1, 0, 0>, -z, 0.4 pigment { rgbt <0, 0, 1, 0.5> } "
+      "finish { ambient 1 diffuse 0 } }\n"
+      "disc { <1, 0, 0>, -z, 0.4 pigment { rgbf <1, 0, 0, 1> } "
+      "finish { ambient 0 diffuse 0 } }\n";
+  zr_scene *scene = parse(NULL, legacy);
+  enum { W = 40, H = 30 };
+  float *rgba = malloc(W * H * 4 * sizeof *rgba);
+  float *other = malloc(W * H * 4 * sizeof *other);
+  float *rgb = malloc(W * H * 3 * sizeof *rgb);
+  assert_non_null(rgba);
+  assert_non_null(other);
+  assert_non_null(rgb);
+  zr_render_params p;
+  zr_render_params_init(&p);
+  assert_int_equal(p.alpha, 0);
+  p.width = W;
+  p.height = H;
+  assert_int_equal(zr_render_image(scene, &p, rgb, NULL), ZR_OK);
+  p.alpha = 1;
+  assert_int_equal(zr_render_image(scene, &p, rgba, NULL), ZR_OK);
+  const float *corner = rgba, *mid = rgba + 4 * (15 * W + 20);
+  assert_true(corner[0] == 0 && corner[1] == 0 && corner[2] == 0 &&
+              corner[3] == 0);
+  assert_true(mid[3] == 1.0f);
+  assert_memory_equal(mid, rgb + 3 * (15 * W + 20), 3 * sizeof *mid);
+  /* The discs' centres: x = +-1 at z = 0 is pixel 20 +- 7.5. */
+  const float *blue = rgba + 4 * (15 * W + 12), *red = rgba + 4 * (15 * W + 27);
+  assert_float_equal(blue[3], 0.5, 1e-6);
+  assert_float_equal(blue[2], 0.5, 1e-6);
+  assert_float_equal(red[3], 1.0 - 0.297, 1e-6);
+  assert_float_equal(red[0], 0.0, 1e-6);
+  /* The same bytes with threads and antialiasing. */
+  p.antialias = 1;
+  p.aa_threshold = 0.1;
+  assert_int_equal(zr_render_image(scene, &p, rgba, NULL), ZR_OK);
+  p.threads = 3;
+  assert_int_equal(zr_render_image(scene, &p, other, NULL), ZR_OK);
+  assert_memory_equal(rgba, other, W * H * 4 * sizeof *rgba);
+  zr_scene_free(scene);
+  /* #version 3.7: the background's own colour, opaque. */
+  char modern[sizeof legacy + 32];
+  snprintf(modern, sizeof modern, "#version 3.7;\n%s", legacy);
+  scene = parse(NULL, modern);
+  p.antialias = 0;
+  p.threads = 1;
+  p.alpha = 0;
+  assert_int_equal(zr_render_image(scene, &p, rgb, NULL), ZR_OK);
+  p.alpha = 1;
+  assert_int_equal(zr_render_image(scene, &p, rgba, NULL), ZR_OK);
+  assert_float_equal(rgba[3], 1.0, 0);
+  assert_memory_equal(rgba, rgb, 3 * sizeof *rgba);
+  p.alpha = 2;
+  assert_int_equal(zr_render_image(scene, &p, rgba, NULL), ZR_EINVAL);
+  zr_scene_free(scene);
+  free(rgba);
+  free(other);
+  free(rgb);
+}
+
+/* quality 0 and 1 show each surface's colour unlit (the bottom layer of
+   a layered texture), quick_color replaces the pigment up to quality 5
+   (measured against povray: tests/test_quality.sh, quick.pov). */
+static void test_api_quick_colours(void **state) {
+  (void)state;
+  static const char text[] =
+      "camera { location <0, 0, -4> look_at 0 }\n"
+      "light_source { <5, 5, -5> rgb 1 }\n"
+      "sphere { <-1, 0, 0>, 0.6 pigment { gradient x color_map "
+      "{ [0 rgb 1] [1 rgb 0] } quick_color rgb <1, 0.2, 0.6> } }\n"
+      "sphere { <1, 0, 0>, 0.6 texture { pigment { rgb <0.5, 0.25, 1> } "
+      "finish { ambient 0.3 } } texture { pigment { rgbt <0, 1, 0, 0.5> } "
+      "} }\n";
+  zr_scene *scene = parse(NULL, text);
+  enum { W = 40, H = 30 };
+  float rgb[W * H * 3];
+  zr_render_params p;
+  zr_render_params_init(&p);
+  p.width = W;
+  p.height = H;
+  const float *quick = rgb + 3 * (15 * W + 12);
+  const float *layered = rgb + 3 * (15 * W + 27);
+  for (int q = 0; q <= 1; q++) {
+    p.quality = q;
+    assert_int_equal(zr_render_image(scene, &p, rgb, NULL), ZR_OK);
+    assert_float_equal(quick[0], 1.0, 1e-6);
+    assert_float_equal(quick[1], 0.2, 1e-6);
+    assert_float_equal(quick[2], 0.6, 1e-6);
+    assert_float_equal(layered[0], 0.5, 1e-6);
+    assert_float_equal(layered[1], 0.25, 1e-6);
+    assert_float_equal(layered[2], 1.0, 1e-6);
+  }
+  /* Lit from quality 2; the quick colour's hue up to 5, not from 6. */
+  p.quality = 5;
+  assert_int_equal(zr_render_image(scene, &p, rgb, NULL), ZR_OK);
+  assert_true(quick[0] < 1.0f && quick[0] > 0.0f);
+  assert_float_equal(quick[1] / quick[0], 0.2, 1e-4);
+  p.quality = 6;
+  assert_int_equal(zr_render_image(scene, &p, rgb, NULL), ZR_OK);
+  assert_true(fabs(quick[1] / quick[0] - 0.2) > 0.1);
   zr_scene_free(scene);
 }
 
@@ -453,6 +570,8 @@ int main(void) {
       cmocka_unit_test(test_api_params_size),
       cmocka_unit_test(test_api_diag_offset),
       cmocka_unit_test(test_api_render_diagnostics),
+      cmocka_unit_test(test_api_alpha),
+      cmocka_unit_test(test_api_quick_colours),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

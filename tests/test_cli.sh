@@ -162,6 +162,27 @@ expect_once warn "warn.pov:3:29: warning:"
 serial warn_quiet 0 "$ZRCUBE" warn.pov $SIZE -q
 [ -s warn_quiet.err ] && fail "warn_quiet: --quiet still printed"
 
+# ---- ranks parse at once; one that read other bytes gets rank 0's -----
+
+# Rank 0 alone writes gen.inc, blue over the red left there, then
+# includes it: rank 1, reading its disk, finds the red one or the blue
+# one; with the red it must parse again from the files rank 0 read
+# (bin/zrcube.c, read_scene).  Either way the picture is rank 0's.
+cat >gen.pov <<'POV'
+#fopen Out "gen.inc" write
+#write (Out, "#declare C = rgb <0, 0, 1>;\n")
+#fclose Out
+#include "gen.inc"
+camera { location <0, 1, -4> look_at 0 }
+light_source { <4, 6, -5>, color rgb 1 }
+sphere { <0, 1, 0>, 1 pigment { C } }
+POV
+echo '#declare C = rgb <1, 0, 0>;' >gen.inc
+serial gen 0 "$ZRCUBE" gen.pov $SIZE +Ogen.png
+echo '#declare C = rgb <1, 0, 0>;' >gen.inc
+mpi gen_mpi 0 2 gen.pov $SIZE +Ogen_mpi.png
+same gen.png gen_mpi.png
+
 # ---- help and version -----------------------------------------------
 
 serial help 0 "$ZRCUBE" --help

@@ -272,19 +272,21 @@ static void test_cli_options_unknown_and_unsupported(void **state) {
   EXPECT_ERROR("zrcube: unknown option 'Bogus_Key' (try 'zrcube "
                "--help')", "Bogus_Key=on");
   EXPECT_ERROR("zrcube: unknown option '+Vx' (try 'zrcube --help')", "+Vx");
-  EXPECT_ERROR("zrcube: '+FB': BMP output is not supported (use N for "
-               "PNG, J for JPEG, T or C for Targa, H for HDR, E for "
-               "OpenEXR, P for PPM, or an output name ending in .pfm)",
-               "+FB");
+  EXPECT_ERROR("zrcube: '+FS': system-specific output is not supported "
+               "(use N for PNG, J for JPEG, T or C for Targa, B for BMP, H "
+               "for HDR, E for OpenEXR, P for PPM, or an output name "
+               "ending in .pfm)", "+FS");
   EXPECT_ERROR("zrcube: '+FX': unknown output file type 'X' (use N for "
-               "PNG, J for JPEG, T or C for Targa, H for HDR, E for "
-               "OpenEXR or P for PPM)", "+FX");
+               "PNG, J for JPEG, T or C for Targa, B for BMP, H for HDR, E "
+               "for OpenEXR or P for PPM)", "+FX");
   EXPECT_ERROR("zrcube: '+FH16': HDR files hold floats; they take no bits "
                "per colour", "+FH16");
   EXPECT_ERROR("zrcube: '+FT16': only PNG files take 16 bits per colour",
                "+FT16");
-  EXPECT_ERROR("zrcube: '+FJx': the JPEG quality must be a whole number, "
-               "as in +FJ90", "+FJx");
+  EXPECT_ERROR("zrcube: '+FJx': bits per colour must be a whole number",
+               "+FJx");
+  EXPECT_ERROR("zrcube: 'Compression=x': the JPEG quality must be a whole "
+               "number, as in Compression=90", "Compression=x");
   EXPECT_ERROR("zrcube: '+FN12': only 8 and 16 bits per colour are "
                "supported", "+FN12");
   EXPECT_ERROR("zrcube: '+FP16': PPM files are written with 8 bits per "
@@ -358,15 +360,22 @@ static void test_cli_options_output_names(void **state) {
                            "or a directory");
   assert_null(path);
 
-  assert_int_equal(OUTPUT(&path, &fmt, err, "s.pov", "+Oimage.bmp"), -1);
-  assert_string_equal(err, "zrcube: cannot write 'image.bmp': the output "
-                           "name must end in .png, .jpg, .tga, .hdr, .exr, "
-                           ".ppm or .pfm (or give the type with +F)");
+  assert_int_equal(OUTPUT(&path, &fmt, err, "s.pov", "+Oimage.gif"), -1);
+  assert_string_equal(err, "zrcube: cannot write 'image.gif': the output "
+                           "name must end in .png, .jpg, .tga, .bmp, .hdr, "
+                           ".exr, .ppm or .pfm (or give the type with +F)");
   assert_null(path);
   /* Issue 12's types: the extension they add, and the JPEG quality. */
   assert_int_equal(OUTPUT(&path, &fmt, err, "s.pov", "+FJ90"), 0);
   assert_string_equal(path, "s.jpg");
   assert_int_equal(fmt, ZR_FORMAT_JPEG);
+  free(path);
+  assert_int_equal(OUTPUT(&path, &fmt, err, "s.pov", "+FB"), 0);
+  assert_string_equal(path, "s.bmp");
+  assert_int_equal(fmt, ZR_FORMAT_BMP);
+  free(path);
+  assert_int_equal(OUTPUT(&path, &fmt, err, "s.pov", "+Oimage.bmp"), 0);
+  assert_int_equal(fmt, ZR_FORMAT_BMP);
   free(path);
   assert_int_equal(OUTPUT(&path, &fmt, err, "s.pov", "+FC", "+Oa/b"), 0);
   assert_string_equal(path, "a/b.tga");
@@ -614,6 +623,30 @@ static void test_cli_options_prefixes_and_more(void **state) {
   assert_int_equal(o.n_notes, 1);
   assert_string_equal(o.notes[0], "'+UD': ignored: zrcube does not "
                                   "dither");
+  zr__cli_free(&o);
+  /* JPEG quality: Compression= only, clipped to 0..100; the digits of
+     +FJ are bits per colour, which povray ignores for JPEG (measured). */
+  assert_int_equal(PARSE(&o, err, "+FJ90", "Compression=150"), 0);
+  assert_int_equal(o.jpeg_quality, 100);
+  assert_int_equal(o.n_notes, 1);
+  assert_string_equal(o.notes[0], "'+FJ90': ignored: JPEG files take no "
+                                  "bits per colour (set the JPEG quality "
+                                  "with Compression=N)");
+  zr__cli_free(&o);
+  assert_int_equal(PARSE(&o, err, "+FJ", "Compression=-4"), 0);
+  assert_int_equal(o.jpeg_quality, 0);
+  assert_int_equal(o.n_notes, 0);
+  zr__cli_free(&o);
+  assert_int_equal(PARSE(&o, err, "+FJ", "Compression=40"), 0);
+  assert_int_equal(o.jpeg_quality, 40);
+  zr__cli_free(&o);
+  /* +UA and Output_Alpha: the renderer's alpha. */
+  assert_int_equal(PARSE(&o, err, "+UA"), 0);
+  assert_int_equal(o.params.alpha, 1);
+  assert_int_equal(o.n_notes, 0);
+  zr__cli_free(&o);
+  assert_int_equal(PARSE(&o, err, "+UA", "Output_Alpha=off"), 0);
+  assert_int_equal(o.params.alpha, 0);
   zr__cli_free(&o);
   assert_int_equal(PARSE(&o, err, "+GA", "All_File=on"), 0);
   assert_string_equal(o.stream_file[ZR_CLI_STREAM_DEBUG], "ALLTEXT.OUT");

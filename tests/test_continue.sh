@@ -1,9 +1,9 @@
 #!/bin/sh
 # test_continue.sh - a render killed with SIGKILL about half-way and
 # continued with +C writes the same bytes as one never interrupted
-# (issue 12), with 1 rank and with 2 ranks under mpirun, and with the
-# irradiance cache saved beside the state file; a state file of other
-# options is refused with a message.
+# (issue 12), with 1 rank and with 2 ranks under mpirun (also with
+# +UA), and with the irradiance cache saved beside the state file; a
+# state file of other options is refused with a message.
 #
 # The render keeps its state file (image.png.zrstate) after every band
 # of rows here (--state-interval=0); the test reads the file's band
@@ -114,6 +114,9 @@ check serial scene.pov -- +W160 +H120 +A0.1 +WT1 -V
 check mpi scene.pov env ASAN_OPTIONS="$MPI_ASAN" $MPIRUN -n 2 -- \
   +W160 +H120 +A0.1 +WT1 -V
 check cache sky.pov -- +W160 +H120 +A0.1 +WT1 -V
+# +UA: 4 floats a pixel in the state file, across 2 ranks.
+check alpha scene.pov env ASAN_OPTIONS="$MPI_ASAN" $MPIRUN -n 2 -- \
+  +W160 +H120 +A0.1 +WT1 -V +UA
 [ -e cache.png.zrstate.gi ] && fail "cache: the saved cache is left"
 
 # A state file of other options is refused, and kept.

@@ -102,6 +102,12 @@ static void test_core_strbuf_and_arena(void **state) {
   char *big = zr__arena_alloc(&a, 1 << 20);
   assert_non_null(big);
   assert_string_equal(zr__arena_strdup(&a, "sphere"), "sphere");
+  /* Only the last allocation can be given back; the next one reuses it. */
+  char *x = zr__arena_alloc(&a, 40);
+  char *y = zr__arena_alloc(&a, 40);
+  assert_false(zr__arena_give_back(&a, x, 40));
+  assert_true(zr__arena_give_back(&a, y, 40));
+  assert_ptr_equal(zr__arena_alloc(&a, 40), y);
   zr__arena_free(&a);
 }
 

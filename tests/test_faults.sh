@@ -15,7 +15,8 @@
 #     disk (ulimit -f), too little memory (ulimit -v, normal build only:
 #     sanitizers reserve terabytes of address space), a corrupt radiosity
 #     file, a corrupt or truncated image of each format read (PNG JPEG GIF
-#     TGA PPM PFM POT), and a scene of 10^6 objects, which must render.
+#     TGA PPM PFM POT HDR EXR BMP TIFF), an 11000 x 11000 height field in
+#     a 256 MiB budget, and a scene of 10^6 objects, which must render.
 #
 # Environment: ZR_BUILDDIR (where bin/zrcube is), MPIRUN, ZR_TEST_CFLAGS
 # (to tell a sanitizer build).
@@ -150,6 +151,28 @@ printf '%s\nplane { z, 1 normal { bump_map { ppm "big.pgm" } } }\n' \
   "$scene_head" > grey_bump.pov
 run grey_bump 0 grey_bump.pov --parse-only --memory-limit=40M
 
+# An 11000 x 11000 grey PNG (about 150 KB) as a height field: its
+# samples stay one byte each (121 MB) and the tracer walks a block
+# hierarchy over them (2.5 MB), so it renders within a 256 MiB budget
+# (it took 3.55 GB, then 16.9 GB, as triangles); 64 MiB stops it.
+if "${ZR_BUILDDIR:-.}/tests/mkhfpng" hf.png 11000; then
+  printf '%s\n%s\n' 'camera { location <0.5, 1.5, -1> look_at <0.5, 0, 0.5> }
+light_source { <5, 5, -5> rgb 1 }' \
+    'height_field { png "hf.png" pigment { rgb 1 } }' > hfbig.pov
+  start=$(date +%s)
+  run hfbig 0 hfbig.pov +W64 +H48 -q +WT1 --memory-limit=256M +Ohfbig.png
+  [ -s hfbig.png ] || fail "hfbig: no image"
+  echo "11000 x 11000 height field: $(( $(date +%s) - start )) s"
+  run hfbig_budget 1 hfbig.pov +W64 +H48 -q --memory-limit=64M \
+    +Ohfbig2.png
+  expect hfbig_budget "the 11000x11000 height field 'hf.png'"
+  expect hfbig_budget "past the memory budget of 64 MiB"
+  [ -e hfbig2.png ] && fail "hfbig_budget: an image was written"
+  rm -f hf.png
+else
+  fail "mkhfpng: no picture"
+fi
+
 # ---- 5 and 6: messages -------------------------------------------------
 printf 'sphere { 0, 1 \033[2J }\n' > escape.pov
 run escape 1 escape.pov --parse-only
@@ -222,6 +245,9 @@ for sig in 2 15; do
   got=$?
   want=$((128 + sig))
   [ "$got" -eq "$want" ] || fail "SIG$sig: exit status $got, want $want"
+  signame=$( [ $sig = 2 ] && echo SIGINT || echo SIGTERM)
+  grep -q -F "zrcube: rendering stopped by $signame; the image was not written" \
+    sig.err || { fail "SIG$sig: stderr lacks the message"; cat sig.err >&2; }
   intact "SIG$sig"
 done
 
@@ -249,6 +275,9 @@ if command -v "$MPIRUN" >/dev/null 2>&1 && command -v ps >/dev/null 2>&1; then
     wait "$mpid"
     got=$?
     [ "$got" -ne 0 ] || fail "kill -9: mpirun exited 0"
+    # OpenMPI's launcher names the rank and the signal.
+    grep -q -e 'exited on signal 9' kill9.err kill9.out ||
+      { fail "kill -9: no message naming signal 9"; cat kill9.err >&2; }
     echo "kill -9 of rank pid $victim: job ended in $(( $(date +%s) - start )) s, status $got"
   else
     fail "kill -9: no rank found under mpirun $mpid"
@@ -328,28 +357,58 @@ printf '\000\000\002\000\000\000\000\000\000\000\000\000\144\000\144\000\030\000
 head -c 10 /dev/zero >> trunc.tga
 # POT: a GIF holding heights.
 cp trunc.gif trunc.pot
+# Radiance HDR and OpenEXR, as zrcube writes them, cut short; OpenEXR
+# only when zrcube was built with it.
+run mkhdr 0 small.pov +W64 +H48 -q +Ogood.hdr
+head -c 100 good.hdr > trunc.hdr
+head -c 11 good.hdr > junk.hdr
+head -c 4096 /dev/urandom >> junk.hdr
+exr=
+if "$ZRCUBE" small.pov +W64 +H48 -q +Ogood.exr >mkexr.out 2>&1; then
+  head -c 200 good.exr > trunc.exr
+  exr=trunc.exr
+fi
+rm -f good.exr
+# BMP: a 64x48 24-bit header and no pixels; a header of nonsense sizes.
+printf 'BM\066\000\000\000\000\000\000\000\066\000\000\000\050\000\000\000\100\000\000\000\060\000\000\000\001\000\030\000' \
+  > trunc.bmp
+printf 'BM\377\377\377\377\000\000\000\000\377\377\377\377\050\000\000\000\377\377\377\177\377\377\377\177\001\000\030\000' \
+  > junk.bmp
+# TIFF: a little-endian header whose directory lies past the end.
+printf 'II*\000\010\000\000\000\377\377' > junk.tif
 for img in trunc.png trunc.ppm trunc.pfm trunc.jpg junk.jpg trunc.gif \
-    junk.gif trunc.tga; do
+    junk.gif trunc.tga trunc.hdr junk.hdr $exr trunc.bmp junk.bmp \
+    junk.tif; do
   ext=${img##*.}
-  kind=$ext
-  [ "$ext" = jpg ] && kind=jpeg
-  [ "$ext" = pfm ] && kind=exr # read by extension below
   name=img_$(echo "$img" | tr . _)
   case $ext in
-    pfm) map="image_map { \"$img\" }" ;;
-    *) map="image_map { $( [ "$ext" = jpg ] && echo jpeg || echo "$ext") \"$img\" }" ;;
+    pfm) map="image_map { \"$img\" }" ;; # read by its extension
+    jpg) map="image_map { jpeg \"$img\" }" ;;
+    tif) map="image_map { tiff \"$img\" }" ;;
+    *) map="image_map { $ext \"$img\" }" ;;
   esac
   printf '%s\nplane { z, 1 pigment { %s } }\n' "$scene_head" "$map" \
     > "$name.pov"
   cp "$img" "$img.ref"
   run "$name" 1 "$name.pov" +W16 +H12 -q +O"$name.png"
   expect "$name" "$img"
+  expect "$name" "error: cannot use '$img' as an image_map"
   cmp -s "$img" "$img.ref" || fail "$name: the image file changed"
   [ -e "$name.png" ] && fail "$name: an image was written"
 done
 printf '%s\nheight_field { pot "trunc.pot" }\n' "$scene_head" > img_pot.pov
 run img_pot 1 img_pot.pov +W16 +H12 -q +Oimg_pot.png
 expect img_pot "trunc.pot"
+# The same files as height fields (their own decoding, lib/image/heights.c).
+for img in trunc.png trunc.ppm trunc.jpg trunc.gif trunc.tga trunc.bmp \
+    junk.bmp junk.tif; do
+  name=hf_$(echo "$img" | tr . _)
+  printf '%s\nheight_field { "%s" }\n' "$scene_head" "$img" > "$name.pov"
+  run "$name" 1 "$name.pov" +W16 +H12 -q +O"$name.png"
+  expect "$name" "error: cannot use '$img' as a height_field"
+  cmp -s "$img" "$img.ref" || fail "$name: the image file changed"
+  [ -e "$name.png" ] && fail "$name: an image was written"
+done
 
 # ---- a scene of 10^6 objects -------------------------------------------
 cat > million.pov <<EOF

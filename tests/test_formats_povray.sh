@@ -3,7 +3,7 @@
 # both ways:
 #   - writing: one scene (a light brighter than 1, so HDR and OpenEXR
 #     hold values above white) rendered by povray and by zrcube with
-#     +FJ, +FT, +FC, +FH and +FE; each zRcube file is read back by
+#     +FJ, +FT, +FC, +FB, +FH and +FE; each zRcube file is read back by
 #     zr_image_read (tests/imgcmp) and compared with POV-Ray's file of
 #     the same format: SSIM >= 0.98, no 8x8 block off by more than 0.02
 #     (the two renders match to 1.0000 in PNG; the margin is for JPEG's
@@ -70,7 +70,7 @@ check() { # label ours theirs
   fi
 }
 
-for f in J:jpg T:tga C:tga H:hdr E:exr; do
+for f in J:jpg T:tga C:tga B:bmp H:hdr E:exr; do
   t=${f%%:*} ext=${f#*:}
   [ "$t" = E ] && [ "$exr" = no ] && { echo "+FE: no OpenEXR in this build, skipped"; continue; }
   pov scene.pov "pov_$t.$ext" "+F$t" || { echo "povray +F$t failed" >&2; tail -3 pov.log >&2; exit 99; }
@@ -81,6 +81,16 @@ for f in J:jpg T:tga C:tga H:hdr E:exr; do
   fi
   check "write +F$t" "zr_$t.$ext" "pov_$t.$ext"
 done
+# BMP: the same 54 header bytes as povray's (24 bits, bottom up).
+if [ -f zr_B.bmp ] && [ -f pov_B.bmp ]; then
+  if cmp -s -n 54 zr_B.bmp pov_B.bmp; then
+    echo "+FB header: same as povray's ok"
+    passed=$((passed + 1))
+  else
+    echo "+FB header: differs from povray's FAIL"
+    failed=$((failed + 1))
+  fi
+fi
 
 # The picture to map: colours and a highlight above 1 for HDR and EXR.
 cat >pic.pov <<'POV'

@@ -14,7 +14,9 @@
 #include <string.h>
 
 #include "config.h"
+#include "core/arena.h"
 #include "scene/scene.h"
+#include "scene/shapes.h"
 #include "trace/intersect.h"
 #include "trace/obj_isosurface.h"
 #include "zrcube.h"
@@ -144,6 +146,121 @@ static void test_height_field_hf_gray_16(void **state) {
   assert_non_null(strstr(f->diag.warning, "'hf_gray_16' is ignored"));
 }
 
+
+/* The block hierarchy against every triangle: on grids of 8 and 16-bit
+   codes and floats whose sides are not multiples of the 8-square leaf
+   block (several levels), random rays from every side, the nearest
+   crossing from the walk equals the nearest of a brute-force test of
+   all 2 (w - 1)(h - 1) triangles (to 1e-9: the same arithmetic, but a
+   ray through an edge may be found in either triangle). */
+static bool tri_hit(zr_vec3 org, zr_vec3 dir, zr_vec3 p0, zr_vec3 p1,
+                    zr_vec3 p2, double *t) {
+  zr_vec3 e1 = zr_v3_sub(p1, p0), e2 = zr_v3_sub(p2, p0);
+  zr_vec3 pv = zr_v3_cross(dir, e2);
+  double det = zr_v3_dot(e1, pv);
+  if (det == 0.0)
+    return false;
+  zr_vec3 tv = zr_v3_sub(org, p0);
+  double u = zr_v3_dot(tv, pv) / det;
+  zr_vec3 qv = zr_v3_cross(tv, e1);
+  double v = zr_v3_dot(dir, qv) / det;
+  if (u < 0.0 || u > 1.0 || v < 0.0 || u + v > 1.0)
+    return false;
+  *t = zr_v3_dot(e2, qv) / det;
+  return *t > 0.0;
+}
+
+static double brute_nearest(int w, int h, const double *y, zr_vec3 org,
+                            zr_vec3 dir) {
+  double best = INFINITY, dx = 1.0 / (w - 1), dz = 1.0 / (h - 1);
+  for (int j = 0; j + 1 < h; j++)
+    for (int i = 0; i + 1 < w; i++) {
+      /* y[] is in z order (row j at z = j / (h - 1)). */
+      zr_vec3 a = zr_v3(i * dx, y[j * w + i], j * dz);
+      zr_vec3 b = zr_v3((i + 1) * dx, y[j * w + i + 1], j * dz);
+      zr_vec3 c = zr_v3(i * dx, y[(j + 1) * w + i], (j + 1) * dz);
+      zr_vec3 d = zr_v3((i + 1) * dx, y[(j + 1) * w + i + 1], (j + 1) * dz);
+      double t;
+      if (tri_hit(org, dir, a, c, b, &t))
+        best = fmin(best, t);
+      if (tri_hit(org, dir, b, c, d, &t))
+        best = fmin(best, t);
+    }
+  return best;
+}
+
+static void test_height_field_hierarchy_vs_brute(void **state) {
+  (void)state;
+  static const int sizes[][3] = {{2, 2, 8},   {9, 9, 16},  {70, 45, 8},
+                                 {17, 130, 16}, {33, 33, 32}};
+  uint64_t seed = 12345;
+  for (size_t c = 0; c < sizeof sizes / sizeof sizes[0]; c++) {
+    int w = sizes[c][0], h = sizes[c][1], bits = sizes[c][2];
+    zr_arena arena;
+    zr__arena_init(&arena);
+    void *codes = zr__arena_alloc(&arena, (size_t)w * h * 4);
+    double *y = zr__arena_alloc(&arena, (size_t)w * h * sizeof *y);
+    assert_non_null(codes);
+    for (int r = 0; r < h; r++) /* image row r is grid row h - 1 - r */
+      for (int i = 0; i < w; i++) {
+        seed = seed * 6364136223846793005ull + 1442695040888963407ull;
+        unsigned v = (unsigned)(seed >> 40);
+        size_t k = (size_t)r * w + i, g = (size_t)(h - 1 - r) * w + i;
+        if (bits == 8) {
+          ((uint8_t *)codes)[k] = (uint8_t)v;
+          y[g] = (uint8_t)v / 255.0;
+        } else if (bits == 16) {
+          ((uint16_t *)codes)[k] = (uint16_t)v;
+          y[g] = (uint16_t)v / 65535.0;
+        } else {
+          ((float *)codes)[k] = (float)((v & 0xffff) / 65536.0);
+          y[g] = ((float *)codes)[k];
+        }
+      }
+    const struct zr_hf_grid *grid = NULL;
+    assert_int_equal(zr__height_field_grid(&arena, codes, bits, w, h, &grid),
+                     ZR_OK);
+    zr_object o;
+    memset(&o, 0, sizeof o);
+    o.kind = ZR_OBJ_HEIGHT_FIELD;
+    o.u.height_field.grid = grid;
+    o.u.height_field.w = w;
+    o.u.height_field.h = h;
+    int hits = 0;
+    for (int k = 0; k < 3000; k++) {
+      double q[6];
+      for (int m = 0; m < 6; m++) {
+        seed = seed * 6364136223846793005ull + 1442695040888963407ull;
+        q[m] = (double)(seed >> 11) / 9007199254740992.0;
+      }
+      /* From a point around the unit cube toward a point inside it. */
+      zr_vec3 org = zr_v3(3 * q[0] - 1, 2.5 * q[1] - 0.5, 3 * q[2] - 1);
+      zr_vec3 to = zr_v3(q[3], q[4], q[5]);
+      if (k % 4 == 0) /* straight down */
+        org = zr_v3(q[3], 2, q[5]);
+      if (k % 4 == 1) /* nearly level */
+        org.y = to.y + 0.01 * (q[1] - 0.5);
+      zr_vec3 dir = zr_v3_sub(to, org);
+      double t[4];
+      zr_vec3 n[4];
+      int found =
+          zr__height_field_crossings(&o, org, dir, 0.0, INFINITY, t, n);
+      double want = brute_nearest(w, h, y, org, dir);
+      if (want == INFINITY) {
+        assert_int_equal(found, 0);
+        continue;
+      }
+      hits++;
+      assert_true(found >= 1);
+      assert_near(t[0], want, 1e-9);
+      if (found == 2)
+        assert_true(t[1] > t[0]);
+    }
+    assert_true(hits > 500);
+    zr__arena_free(&arena);
+  }
+}
+
 #define TEST(fn) cmocka_unit_test_setup_teardown(fn, setup, teardown)
 
 int main(void) {
@@ -153,6 +270,7 @@ int main(void) {
       TEST(test_height_field_water),
       TEST(test_height_field_bad_input),
       TEST(test_height_field_hf_gray_16),
+      cmocka_unit_test(test_height_field_hierarchy_vs_brute),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

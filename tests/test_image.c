@@ -264,7 +264,8 @@ static void test_image_format_from_name(void **state) {
   assert_int_equal(zr_image_format_from_name("x.tga"), ZR_FORMAT_TGA);
   assert_int_equal(zr_image_format_from_name("x.hdr"), ZR_FORMAT_HDR);
   assert_int_equal(zr_image_format_from_name("x.exr"), ZR_FORMAT_EXR);
-  assert_int_equal(zr_image_format_from_name("x.bmp"), ZR_FORMAT_AUTO);
+  assert_int_equal(zr_image_format_from_name("x.bmp"), ZR_FORMAT_BMP);
+  assert_int_equal(zr_image_format_from_name("x.gif"), ZR_FORMAT_AUTO);
   assert_int_equal(zr_image_format_from_name("dir.png/x"), ZR_FORMAT_AUTO);
   assert_int_equal(zr_image_format_from_name(NULL), ZR_FORMAT_AUTO);
 }
@@ -798,10 +799,10 @@ static void test_image_write_is_atomic(void **state) {
   assert_int_equal(file_size(path), 11 + 4 * 4 * 3);
   assert_int_equal(count_entries(fx->dir), 2);
 
-  path = in_dir(fx, "o.bmp");
+  path = in_dir(fx, "o.gif");
   snprintf(expect, sizeof expect,
            "%s: cannot tell the image format from the name (use .png, "
-           ".jpg, .tga, .hdr, .exr, .ppm or .pfm)",
+           ".jpg, .tga, .bmp, .hdr, .exr, .ppm or .pfm)",
            path);
   assert_int_equal(zr_image_write(fx->ctx, img, path, ZR_FORMAT_AUTO, 1.0),
                    ZR_EINVAL);

@@ -222,6 +222,29 @@ static void test_texture_layered_pigment_changes_top(void **state) {
   assert_colour(b->over->pigment->colour, 1, 1, 1, 0, 1);
 }
 
+/* texture { T } changes nothing of T: every object shares T itself (a
+   sphereflake's 7,381 spheres cost 1,450 bytes each with two copies of
+   T apiece, 473 without); anything added makes a copy, and T stays. */
+static void test_texture_identifier_alone_is_shared(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f, "#declare T = texture { pigment { rgb 1 } }\n"
+                        "sphere { 0, 1 texture { T } }\n"
+                        "sphere { 1, 1 texture { T } }\n"
+                        "sphere { 2, 1 texture { T pigment { rgb 0.5 } } }\n"
+                        "sphere { 3, 1 texture { T } scale 2 }\n"
+                        "sphere { 4, 1 texture { T } }");
+  const zr_texture *a = s->objects[0]->texture;
+  assert_ptr_equal(a, s->objects[1]->texture);
+  assert_ptr_equal(a, s->objects[4]->texture);
+  assert_ptr_not_equal(a, s->objects[2]->texture);
+  assert_ptr_not_equal(a, s->objects[3]->texture);
+  assert_colour(a->pigment->colour, 1, 1, 1, 0, 0);
+  assert_colour(s->objects[2]->texture->pigment->colour, 0.5, 0.5, 0.5, 0,
+                0);
+  assert_null(a->pigment->transform);
+  assert_non_null(s->objects[3]->texture->pigment->transform);
+}
+
 static void test_texture_texture_on_textured_object_layers(void **state) {
   fixture *f = *state;
   zr_scene *s = good(f, "#declare S = sphere { 0, 1 texture {"
@@ -365,10 +388,41 @@ static void test_texture_new_patterns(void **state) {
   assert_true(fabs(zr__pattern_eval(&pt, zr_v3(0.1, 0.2, 0.3)) -
                    zr__pattern_eval(&pt, zr_v3(0.9, 0.8, 0.7))) < EPS);
   zr__pattern_init(&pt, ZR_PAT_QUILTED);
-  /* The middle of a cube is the top of the quilt, its seams the bottom,
-     for the default controls. */
-  assert_true(fabs(zr__pattern_eval(&pt, zr_v3(0.5, 0.5, 0.5)) - 1) < EPS);
-  assert_true(zr__pattern_eval(&pt, zr_v3(0.01, 0.01, 0.01)) < 0.1);
+  /* POV-Ray 3.7's values (#debug of a quilted pattern function, six
+     decimals, bench/conform/quilted_probe.py): 0 in the middle of a
+     cube, 0.575962 at its corners, 0.055630 a quarter along an axis. */
+  assert_true(fabs(zr__pattern_eval(&pt, zr_v3(0.5, 0.5, 0.5))) < EPS);
+  assert_true(fabs(zr__pattern_eval(&pt, zr_v3(1, 1, 1)) - 0.575962) < 1e-6);
+  assert_true(fabs(zr__pattern_eval(&pt, zr_v3(0.75, 0.5, 0.5)) - 0.055630) <
+              1e-6);
+  pt.control0 = 0.3;
+  pt.control1 = 0.8;
+  assert_true(fabs(zr__pattern_eval(&pt, zr_v3(-0.5, 0.25, 0)) -
+                   0.17414873) < 1e-8);
+  /* ripples and waves at points of bench/conform/waves_probe.py's
+     sample, POV-Ray 3.7's values to 1e-8 (the table keeps 10
+     decimals). */
+  static const double waves_cases[2][3][4] = {
+      {{3.245026313708422, 3.2714671076284434, 0.6379300493792783,
+        0.5267584507666885},
+       {-1.4277875792067256, -3.5146236785650924, -0.5496800729303359,
+        0.6331144673199071},
+       {-0.3237411512200121, -3.5925232548779933, -3.5611806034554876,
+        0.7518193816293756}},
+      {{3.245026313708422, 3.2714671076284434, 0.6379300493792783,
+        0.5192858294465001},
+       {-1.4277875792067256, -3.5146236785650924, -0.5496800729303359,
+        0.3854529294937483},
+       {-0.3237411512200121, -3.5925232548779933, -3.5611806034554876,
+        0.3759747964058118}}};
+  for (int w = 0; w < 2; w++) {
+    zr__pattern_init(&pt, w == 0 ? ZR_PAT_RIPPLES : ZR_PAT_WAVES);
+    for (int i = 0; i < 3; i++) {
+      const double *c = waves_cases[w][i];
+      assert_true(fabs(zr__pattern_eval(&pt, zr_v3(c[0], c[1], c[2])) -
+                       c[3]) < 1e-8);
+    }
+  }
   zr__pattern_init(&pt, ZR_PAT_SPIRAL1);
   pt.arms = 2;
   for (int i = 0; i < 20; i++) {
@@ -741,6 +795,7 @@ int main(void) {
       cmocka_unit_test(test_texture_image_map_warped),
       cmocka_unit_test(test_texture_image_map_bad_palette_index),
       cmocka_unit_test(test_texture_image_map_gamma),
+      cmocka_unit_test(test_texture_identifier_alone_is_shared),
   };
   return cmocka_run_group_tests(tests, setup, teardown);
 }

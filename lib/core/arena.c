@@ -81,6 +81,19 @@ void *zr__arena_memdup(zr_arena *a, const void *p, size_t size) {
   return q;
 }
 
+bool zr__arena_give_back(zr_arena *a, void *p, size_t size) {
+  const size_t align = alignof(max_align_t);
+  size = (size + align - 1) & ~(align - 1);
+  if (size == 0)
+    size = align;
+  zr_arena_block *b = a->head;
+  if (!b || b->used < size || (unsigned char *)p != b->data + b->used - size)
+    return false;
+  b->used -= size;
+  a->used -= size;
+  return true;
+}
+
 char *zr__arena_strdup(zr_arena *a, const char *s) {
   return zr__arena_memdup(a, s, strlen(s) + 1);
 }

@@ -7,6 +7,7 @@
 #ifndef ZR_CORE_ARENA_H
 #define ZR_CORE_ARENA_H
 
+#include <stdbool.h>
 #include <stddef.h>
 
 typedef struct zr_arena_block zr_arena_block;
@@ -29,6 +30,9 @@ void zr__arena_free(zr_arena *a);
 /* Zeroed memory aligned for any type; NULL when out of memory. */
 void *zr__arena_alloc(zr_arena *a, size_t size);
 char *zr__arena_strdup(zr_arena *a, const char *s);
+/* Takes back p, of size bytes, when it is the arena's last allocation
+   (true then); anything else stays where it is (false). */
+bool zr__arena_give_back(zr_arena *a, void *p, size_t size);
 void *zr__arena_memdup(zr_arena *a, const void *p, size_t size);
 
 #endif /* ZR_CORE_ARENA_H */

@@ -369,7 +369,10 @@ static zr_status read_all(int fd, const char *path, unsigned long long limit,
       (unsigned long long)st.st_size > limit)
     return too_large(path, limit, why, why_size);
   if (have_stat && st.st_size > 0 && (uintmax_t)st.st_size < SIZE_MAX / 2)
-    cap = (size_t)st.st_size + 1;
+    /* Room for the NUL and for one more read to see the end of the
+       file: a buffer that fills up doubles, which a big scene cannot
+       afford. */
+    cap = (size_t)st.st_size + 2;
   char *buf = malloc(cap);
   if (!buf)
     return say(why, why_size, ZR_ENOMEM, "'%s': out of memory", path);

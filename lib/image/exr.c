@@ -222,13 +222,18 @@ zr_status zr__exr_encode(zr_context *ctx, const char *name,
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s", name,
                     zr_status_str(ZR_ENOMEM));
   for (size_t i = 0; i < count; i++) {
+    /* OpenEXR keeps colours premultiplied by alpha, and povray 3.7 +UA
+       +FE writes them so (measured: the colours of a +UA file are those
+       of the same render on black without +UA, also where the working
+       gamma is not 1: the working colour is premultiplied, then made
+       linear). */
+    float a = alpha ? image->alpha[i] : 1.0f;
+    a = !(a > 0.0f) ? 0.0f : a > 1 ? 1 : a;
     for (int c = 0; c < 3; c++)
-      half[i * channels + c] = half_of(
-          zr__linear_sample(image->pixels[3 * i + c], e->assumed_gamma));
-    if (alpha) {
-      float a = image->alpha[i];
-      half[i * channels + 3] = half_of(!(a > 0.0f) ? 0.0f : a > 1 ? 1 : a);
-    }
+      half[i * channels + c] = half_of(zr__linear_sample(
+          a * image->pixels[3 * i + c], e->assumed_gamma));
+    if (alpha)
+      half[i * channels + 3] = half_of(a);
   }
   exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
   init.error_handler_fn = keep_message;

@@ -26,8 +26,17 @@
  *     the stock mtmand.pot, whose halves join without a seam.
  *
  * PNG files are decoded by libpng with no conversion but the unpacking
- * of 1, 2 and 4-bit samples.  Netpbm, JPEG and TGA files go through the
- * codecs (pnm.c, jpeg.c, tga.c), which keep the stored codes.
+ * of 1, 2 and 4-bit samples, row by row unless interlaced.  Netpbm,
+ * JPEG and TGA files go through the codecs (pnm.c, jpeg.c, tga.c),
+ * which keep the stored codes.
+ *
+ * The samples are kept as codes in their smallest faithful form, in the
+ * caller's arena (charged to its budget): one byte for height k / 255
+ * (8-bit grey, palette indices, GIF), two bytes for k / 65535 (16-bit
+ * grey, the red/green rule, POT, and 1, 2 and 4-bit grey, whose maxval
+ * divides 65535).  A Netpbm grey file of another maxval is rounded to
+ * the nearest 16-bit code (an error below 1 / 131070 of the height).
+ * An 11000 x 11000 grey PNG thus costs 121 MB, not 484 as floats.
  */
 #include "config.h"
 
@@ -40,6 +49,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/arena.h"
 #include "core/budget.h"
 #include "core/context.h"
 #include "image/image.h"
@@ -61,6 +71,7 @@ static void read_memory(png_structp png, png_bytep data, size_t length) {
 typedef struct png_failure {
   char text[200];
   size_t over_budget; /* bytes the memory budget refused, else 0 */
+  zr_status reported; /* a message already given with this status */
 } png_failure;
 
 static void on_error(png_structp png, png_const_charp msg) {
@@ -74,27 +85,77 @@ static void on_warning(png_structp png, png_const_charp msg) {
   (void)msg;
 }
 
-static float colour_height(unsigned r, unsigned g) {
-  return (float)((256.0 * r + g) / 65535.0);
+/* The 16-bit code of a colour pixel: 256 r + g. */
+static unsigned colour_code(unsigned r, unsigned g) {
+  return (r & 255u) << 8 | (g & 255u);
 }
 
-/* Decodes rows into heights[w * h]; the png structs are the caller's. */
+/* Stores code k of the row-major sample array. */
+static void put_code(zr_height_codes *c, size_t k, unsigned code) {
+  if (c->bits == 8)
+    ((uint8_t *)c->codes)[k] = (uint8_t)code;
+  else
+    ((uint16_t *)c->codes)[k] = (uint16_t)code;
+}
+
+/* The code array of a w x h field of 8 or 16 bits, in arena; false (and
+   the message given) when the budget or the memory refuses it. */
+static bool codes_new(zr_context *ctx, zr_arena *arena, const char *name,
+                      int w, int h, int bits, zr_height_codes *out) {
+  size_t bytes = (size_t)w * (size_t)h * (size_t)(bits / 8);
+  arena->over_budget = 0;
+  out->codes = zr__arena_alloc(arena, bytes);
+  out->bits = bits;
+  out->width = w;
+  out->height = h;
+  if (out->codes)
+    return true;
+  if (arena->over_budget) {
+    char what[200];
+    snprintf(what, sizeof what, "the %dx%d height field '%.120s'", w, h,
+             name);
+    zr__context_over_budget(ctx, bytes, NULL, what);
+  } else {
+    zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s", name,
+             zr_status_str(ZR_ENOMEM));
+  }
+  return false;
+}
+
+/* The code of pixel x of a decoded row. */
+static unsigned png_code(const png_byte *r, int x, int channels, int depth,
+                         int type) {
+  unsigned s[2] = {0, 0};
+  for (int c = 0; c < channels && c < 2; c++)
+    s[c] = depth == 16 ? (unsigned)r[2 * (x * channels + c)] << 8 |
+                             r[2 * (x * channels + c) + 1]
+                       : r[x * channels + c];
+  if (type == PNG_COLOR_TYPE_PALETTE)
+    return s[0];
+  if (!(type & PNG_COLOR_MASK_COLOR))
+    /* 1, 2 and 4-bit grey: maxval 1, 3 or 15 divides 65535. */
+    return depth >= 8 ? s[0] : s[0] * (65535u / ((1u << depth) - 1));
+  return depth == 16 ? colour_code(s[0] >> 8, s[1] >> 8)
+                     : colour_code(s[0], s[1]);
+}
+
+/* Decodes the rows into codes; the png structs are the caller's.  A
+   non-interlaced file is read one row at a time. */
 static bool png_heights(zr_context *ctx, png_structp png, png_infop info,
-                        png_source *src, float **out, int *w, int *h) {
+                        png_source *src, const char *name, zr_arena *arena,
+                        zr_height_codes *out) {
   png_bytep rows = NULL;
   png_bytepp row_ptrs = NULL;
-  float *heights = NULL;
   /* volatile: changed between setjmp and a longjmp back to it. */
   png_bytep volatile rows_v = NULL;
   png_bytepp volatile ptrs_v = NULL;
-  float *volatile heights_v = NULL;
   volatile size_t charged_v = 0;
+  png_failure *failure = png_get_error_ptr(png);
   if (setjmp(png_jmpbuf(png))) {
     if (ctx)
       zr__budget_release(ctx->budget, charged_v);
     free(rows_v);
     free(ptrs_v);
-    free(heights_v);
     return false;
   }
   png_set_read_fn(png, src, read_memory);
@@ -104,7 +165,7 @@ static bool png_heights(zr_context *ctx, png_structp png, png_infop info,
   int depth = png_get_bit_depth(png, info);
   if (depth < 8)
     png_set_packing(png); /* one byte per sample, values kept */
-  png_set_interlace_handling(png);
+  int passes = png_set_interlace_handling(png);
   png_read_update_info(png, info);
   int width = (int)png_get_image_width(png, info);
   int height = (int)png_get_image_height(png, info);
@@ -112,63 +173,51 @@ static bool png_heights(zr_context *ctx, png_structp png, png_infop info,
   size_t rowbytes = png_get_rowbytes(png, info);
   if ((size_t)width * (size_t)height > ZR_IMAGE_MAX_PIXELS)
     png_error(png, "image too large");
-  /* The decoded rows and the samples are charged to the memory budget
-     while they are made: a header of a few bytes may declare 2^27
-     pixels (found by tests/fuzz/fuzz_image); the caller owns the
-     samples after. */
-  size_t need = rowbytes * (size_t)height +
-                (size_t)height * sizeof *row_ptrs +
-                (size_t)width * (size_t)height * sizeof *heights;
+  bool narrow = type == PNG_COLOR_TYPE_PALETTE ||
+                (!(type & PNG_COLOR_MASK_COLOR) && depth == 8);
+  /* The codes first (they are what is kept), then the decoded rows,
+     charged to the memory budget while they are made: a header of a
+     few bytes may declare 2^27 pixels (found by tests/fuzz/fuzz_image). */
+  if (!codes_new(ctx, arena, name, width, height, narrow ? 8 : 16, out)) {
+    failure->reported = arena->over_budget ? ZR_ELIMIT : ZR_ENOMEM;
+    png_error(png, "no memory for the samples");
+  }
+  size_t n_rows = passes > 1 ? (size_t)height : 1;
+  size_t need = rowbytes * n_rows + n_rows * sizeof *row_ptrs;
   if (ctx && !zr__budget_charge(ctx->budget, need)) {
-    ((png_failure *)png_get_error_ptr(png))->over_budget = need;
+    failure->over_budget = need;
     png_error(png, "over the memory budget");
   }
   charged_v = need;
-  rows = malloc(rowbytes * (size_t)height);
+  rows = malloc(rowbytes * n_rows);
   rows_v = rows;
-  row_ptrs = malloc((size_t)height * sizeof *row_ptrs);
+  row_ptrs = malloc(n_rows * sizeof *row_ptrs);
   ptrs_v = row_ptrs;
-  heights = malloc((size_t)width * (size_t)height * sizeof *heights);
-  heights_v = heights;
-  if (!rows || !row_ptrs || !heights)
+  if (!rows || !row_ptrs)
     png_error(png, "out of memory");
-  for (int y = 0; y < height; y++)
-    row_ptrs[y] = rows + (size_t)y * rowbytes;
-  png_read_image(png, row_ptrs);
-  double maxval = depth == 16 ? 65535.0 : (double)((1u << depth) - 1);
+  for (size_t y = 0; y < n_rows; y++)
+    row_ptrs[y] = rows + y * rowbytes;
+  if (passes > 1)
+    png_read_image(png, row_ptrs);
   for (int y = 0; y < height; y++) {
-    const png_byte *r = row_ptrs[y];
-    float *dst = heights + (size_t)y * width;
-    for (int x = 0; x < width; x++) {
-      unsigned s[4] = {0, 0, 0, 0};
-      for (int c = 0; c < channels && c < 4; c++)
-        s[c] = depth == 16 ? (unsigned)r[2 * (x * channels + c)] << 8 |
-                                 r[2 * (x * channels + c) + 1]
-                           : r[x * channels + c];
-      if (type == PNG_COLOR_TYPE_PALETTE)
-        dst[x] = (float)(s[0] / 255.0);
-      else if (!(type & PNG_COLOR_MASK_COLOR))
-        dst[x] = (float)(s[0] / maxval);
-      else if (depth == 16)
-        dst[x] = colour_height(s[0] >> 8, s[1] >> 8);
-      else
-        dst[x] = colour_height(s[0], s[1]);
-    }
+    const png_byte *r = row_ptrs[passes > 1 ? y : 0];
+    if (passes <= 1)
+      png_read_row(png, row_ptrs[0], NULL);
+    size_t k = (size_t)y * (size_t)width;
+    for (int x = 0; x < width; x++)
+      put_code(out, k + (size_t)x, png_code(r, x, channels, depth, type));
   }
   free(rows);
   free(row_ptrs);
   if (ctx)
     zr__budget_release(ctx->budget, need);
-  *out = heights;
-  *w = width;
-  *h = height;
   return true;
 }
 
 static zr_status read_png(zr_context *ctx, const char *name,
                           const unsigned char *bytes, size_t size,
-                          float **out, int *w, int *h) {
-  png_failure failure = {"cannot decode", 0};
+                          zr_arena *arena, zr_height_codes *out) {
+  png_failure failure = {"cannot decode", 0, ZR_OK};
   png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &failure,
                                            on_error, on_warning);
   png_infop info = png ? png_create_info_struct(png) : NULL;
@@ -178,8 +227,10 @@ static zr_status read_png(zr_context *ctx, const char *name,
                     zr_status_str(ZR_ENOMEM));
   }
   png_source src = {bytes, size, 0};
-  bool ok = png_heights(ctx, png, info, &src, out, w, h);
+  bool ok = png_heights(ctx, png, info, &src, name, arena, out);
   png_destroy_read_struct(&png, &info, NULL);
+  if (!ok && failure.reported != ZR_OK)
+    return failure.reported;
   if (!ok && failure.over_budget) {
     char what[200];
     snprintf(what, sizeof what, "the height field '%.120s'", name);
@@ -220,44 +271,11 @@ static bool pnm_header(const unsigned char *b, size_t n, char *magic,
   return *maxval >= 1 && *maxval <= 65535;
 }
 
-/* An array for a decoded image's heights, charged to the memory budget
-   while the caller fills it (heights_done gives the charge back: the
-   caller owns the heights after, as for PNG and GIF files); on failure
-   the image is freed and the message given. */
-static float *heights_for(zr_context *ctx, const char *name,
-                          zr_image *image) {
-  size_t n = (size_t)image->width * (size_t)image->height;
-  if (ctx && !zr__budget_charge(ctx->budget, n * sizeof(float))) {
-    char what[200];
-    snprintf(what, sizeof what, "the %dx%d height field '%.120s'",
-             image->width, image->height, name);
-    zr_image_free(image);
-    zr__context_over_budget(ctx, n * sizeof(float), NULL, what);
-    return NULL;
-  }
-  float *heights = malloc(n * sizeof *heights);
-  if (!heights) {
-    if (ctx)
-      zr__budget_release(ctx->budget, n * sizeof(float));
-    zr_image_free(image);
-    zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s", name,
-             zr_status_str(ZR_ENOMEM));
-  }
-  return heights;
-}
-
-static void heights_done(zr_context *ctx, zr_image *image) {
-  if (ctx)
-    zr__budget_release(ctx->budget, (size_t)image->width *
-                                        (size_t)image->height *
-                                        sizeof(float));
-  zr_image_free(image);
-}
-
 /* Netpbm and JPEG: the codes the codecs keep (image.h). */
 static zr_status read_coded(zr_context *ctx, const char *name,
                             const unsigned char *bytes, size_t size,
-                            bool jpeg, float **out, int *w, int *h) {
+                            bool jpeg, zr_arena *arena,
+                            zr_height_codes *out) {
   char magic = '6';
   unsigned long maxval = 255;
   if (!jpeg && !pnm_header(bytes, size, &magic, &maxval))
@@ -270,15 +288,21 @@ static zr_status read_coded(zr_context *ctx, const char *name,
     zr_image_free(image);
     return s;
   }
-  size_t n = (size_t)image->width * (size_t)image->height;
-  float *heights = heights_for(ctx, name, image);
-  if (!heights)
-    return ZR_ENOMEM;
   bool grey = magic == '2' || magic == '5';
+  int bits = grey && maxval == 255 ? 8 : 16;
+  if (!codes_new(ctx, arena, name, image->width, image->height, bits,
+                 out)) {
+    zr_image_free(image);
+    return arena->over_budget ? ZR_ELIMIT : ZR_ENOMEM;
+  }
+  size_t n = (size_t)image->width * (size_t)image->height;
   for (size_t i = 0; i < n; i++) {
     unsigned r = zr__image_stored(image, 3 * i);
     if (grey) {
-      heights[i] = (float)(r / (double)maxval);
+      /* v / maxval as a 16-bit code, exact when maxval divides 65535. */
+      put_code(out, i, bits == 8 ? r
+                                 : (unsigned)((r * 65535ul + maxval / 2) /
+                                              maxval));
       continue;
     }
     unsigned g = zr__image_stored(image, 3 * i + 1);
@@ -286,41 +310,38 @@ static zr_status read_coded(zr_context *ctx, const char *name,
       r >>= 8;
       g >>= 8;
     }
-    heights[i] = colour_height(r, g);
+    put_code(out, i, colour_code(r, g));
   }
-  *w = image->width;
-  *h = image->height;
-  *out = heights;
-  heights_done(ctx, image);
+  zr_image_free(image);
   return ZR_OK;
 }
 
 /* TGA files: decoded, then read by their stored codes. */
 static zr_status read_tga(zr_context *ctx, const char *name,
                           const unsigned char *bytes, size_t size,
-                          float **out, int *w, int *h) {
+                          zr_arena *arena, zr_height_codes *out) {
   zr_image *image = NULL;
   zr_status s = zr__tga_decode(ctx, name, bytes, size, &image);
   if (s != ZR_OK)
     return s;
-  size_t n = (size_t)image->width * (size_t)image->height;
-  float *heights = heights_for(ctx, name, image);
-  if (!heights)
-    return ZR_ENOMEM;
   bool grey = (bytes[2] & 7) == 3;
+  bool narrow = image->indices || grey;
+  if (!codes_new(ctx, arena, name, image->width, image->height,
+                 narrow ? 8 : 16, out)) {
+    zr_image_free(image);
+    return arena->over_budget ? ZR_ELIMIT : ZR_ENOMEM;
+  }
+  size_t n = (size_t)image->width * (size_t)image->height;
   for (size_t i = 0; i < n; i++) {
     if (image->indices)
-      heights[i] = (float)(image->indices[i] / 255.0);
+      put_code(out, i, image->indices[i]);
     else if (grey)
-      heights[i] = (float)(zr__image_stored(image, 3 * i) / 255.0);
+      put_code(out, i, zr__image_stored(image, 3 * i));
     else
-      heights[i] = colour_height(zr__image_stored(image, 3 * i),
-                                 zr__image_stored(image, 3 * i + 1));
+      put_code(out, i, colour_code(zr__image_stored(image, 3 * i),
+                                   zr__image_stored(image, 3 * i + 1)));
   }
-  *w = image->width;
-  *h = image->height;
-  *out = heights;
-  heights_done(ctx, image);
+  zr_image_free(image);
   return ZR_OK;
 }
 
@@ -328,25 +349,24 @@ static zr_status read_tga(zr_context *ctx, const char *name,
    palette image by its indices. */
 static zr_status read_decoded(zr_context *ctx, const char *name,
                               const unsigned char *bytes, size_t size,
-                              bool tiff, float **out, int *w, int *h) {
+                              bool tiff, zr_arena *arena,
+                              zr_height_codes *out) {
   zr_image *image = NULL;
   zr_status s = tiff ? zr__tiff_decode(ctx, name, bytes, size, &image)
                      : zr__bmp_decode(ctx, name, bytes, size, &image);
   if (s != ZR_OK)
     return s;
+  if (!codes_new(ctx, arena, name, image->width, image->height,
+                 image->indices ? 8 : 16, out)) {
+    zr_image_free(image);
+    return arena->over_budget ? ZR_ELIMIT : ZR_ENOMEM;
+  }
   size_t n = (size_t)image->width * (size_t)image->height;
-  float *heights = heights_for(ctx, name, image);
-  if (!heights)
-    return ZR_ENOMEM;
+  const unsigned char *codes = image->codes;
   for (size_t i = 0; i < n; i++)
-    heights[i] = image->indices
-                     ? (float)(image->indices[i] / 255.0)
-                     : colour_height(
-                           ((const unsigned char *)image->codes)[3 * i],
-                           ((const unsigned char *)image->codes)[3 * i + 1]);
-  *w = image->width;
-  *h = image->height;
-  *out = heights;
+    put_code(out, i, image->indices
+                         ? image->indices[i]
+                         : colour_code(codes[3 * i], codes[3 * i + 1]));
   zr_image_free(image);
   return ZR_OK;
 }
@@ -354,7 +374,7 @@ static zr_status read_decoded(zr_context *ctx, const char *name,
 /* GIF and POT files (see the top of the file). */
 static zr_status read_gif(zr_context *ctx, const char *name,
                           const unsigned char *bytes, size_t size, bool pot,
-                          float **out, int *w, int *h) {
+                          zr_arena *arena, zr_height_codes *out) {
   zr_gif_indices g;
   zr_status s = zr__gif_decode_indices(ctx, name, bytes, size, &g);
   if (s != ZR_OK)
@@ -366,38 +386,88 @@ static zr_status read_gif(zr_context *ctx, const char *name,
                     "but this one is %d pixels wide", name, g.width);
   }
   int width = pot ? g.width / 2 : g.width;
-  /* The samples beside the indices must fit in what is left of the
-     memory budget (a GIF header may declare 2^27 pixels in a few bytes;
-     found by tests/fuzz/fuzz_image); the caller owns them after. */
-  size_t need = (size_t)width * (size_t)g.height * sizeof(float) +
-                (size_t)g.width * (size_t)g.height;
-  if (ctx && !zr__budget_charge(ctx->budget, need)) {
+  /* The codes must fit in what is left of the memory budget beside the
+     indices (a GIF header may declare 2^27 pixels in a few bytes; found
+     by tests/fuzz/fuzz_image). */
+  if (!codes_new(ctx, arena, name, width, g.height, pot ? 16 : 8, out)) {
     free(g.indices);
-    char what[200];
-    snprintf(what, sizeof what, "the %dx%d height field '%.120s'", width,
-             g.height, name);
-    return zr__context_over_budget(ctx, need, NULL, what);
-  }
-  float *heights = malloc((size_t)width * (size_t)g.height * sizeof *heights);
-  if (ctx)
-    zr__budget_release(ctx->budget, need);
-  if (!heights) {
-    free(g.indices);
-    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s", name,
-                    zr_status_str(ZR_ENOMEM));
+    return arena->over_budget ? ZR_ELIMIT : ZR_ENOMEM;
   }
   for (int y = 0; y < g.height; y++) {
     const unsigned char *row = g.indices + (size_t)y * (size_t)g.width;
-    float *dst = heights + (size_t)y * (size_t)width;
+    size_t k = (size_t)y * (size_t)width;
     for (int x = 0; x < width; x++)
-      dst[x] = pot ? colour_height(row[x], row[x + width])
-                   : (float)(row[x] / 255.0);
+      put_code(out, k + (size_t)x,
+               pot ? colour_code(row[x], row[x + width]) : row[x]);
   }
   free(g.indices);
-  *out = heights;
-  *w = width;
-  *h = g.height;
   return ZR_OK;
+}
+
+zr_status zr__image_decode_height_codes(zr_context *ctx, const char *path,
+                                        bool pot, const char *bytes,
+                                        size_t size, zr_arena *arena,
+                                        zr_height_codes *out) {
+  zr_status s;
+  memset(out, 0, sizeof *out);
+  static const unsigned char png_sig[8] = {0x89, 'P', 'N', 'G',
+                                           '\r', '\n', 0x1a, '\n'};
+  const unsigned char *b = (const unsigned char *)bytes;
+  bool gif = size >= 6 && (!memcmp(b, "GIF87a", 6) ||
+                           !memcmp(b, "GIF89a", 6));
+  if (pot && !gif)
+    s = zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
+                 "%s: not a POT file (a POT file is a GIF file)", path);
+  else if (gif)
+    s = read_gif(ctx, path, b, size, pot, arena, out);
+  else if (size >= 8 && !memcmp(b, png_sig, 8))
+    s = read_png(ctx, path, b, size, arena, out);
+  else if (size >= 3 && b[0] == 0xff && b[1] == 0xd8 && b[2] == 0xff)
+    s = read_coded(ctx, path, b, size, true, arena, out);
+  else if (size >= 2 && b[0] == 'B' && b[1] == 'M')
+    s = read_decoded(ctx, path, b, size, false, arena, out);
+  else if (size >= 4 && (!memcmp(b, "II*\0", 4) || !memcmp(b, "MM\0*", 4)))
+    s = read_decoded(ctx, path, b, size, true, arena, out);
+  else if (!(size >= 2 && b[0] == 'P') && zr__tga_looks_like(b, size))
+    s = read_tga(ctx, path, b, size, arena, out);
+  else
+    s = read_coded(ctx, path, b, size, false, arena, out);
+  if (s != ZR_OK)
+    memset(out, 0, sizeof *out);
+  return s;
+}
+
+double zr__height_code_value(const zr_height_codes *c, size_t k) {
+  return c->bits == 8 ? ((const uint8_t *)c->codes)[k] / 255.0
+                      : ((const uint16_t *)c->codes)[k] / 65535.0;
+}
+
+zr_status zr__image_decode_heights(zr_context *ctx, const char *path,
+                                   bool pot, const char *bytes, size_t size,
+                                   float **heights, int *width,
+                                   int *height) {
+  *heights = NULL;
+  zr_arena arena;
+  zr__arena_init(&arena);
+  arena.budget = ctx ? ctx->budget : NULL;
+  zr_height_codes c;
+  zr_status s = zr__image_decode_height_codes(ctx, path, pot, bytes, size,
+                                              &arena, &c);
+  if (s == ZR_OK) {
+    size_t n = (size_t)c.width * (size_t)c.height;
+    *heights = malloc(n * sizeof **heights);
+    if (!*heights) {
+      s = zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s", path,
+                   zr_status_str(ZR_ENOMEM));
+    } else {
+      for (size_t k = 0; k < n; k++)
+        (*heights)[k] = (float)zr__height_code_value(&c, k);
+      *width = c.width;
+      *height = c.height;
+    }
+  }
+  zr__arena_free(&arena);
+  return s;
 }
 
 zr_status zr__image_read_heights(zr_context *ctx, const char *path, bool pot,
@@ -420,36 +490,5 @@ zr_status zr__image_read_heights(zr_context *ctx, const char *path, bool pot,
   s = zr__image_decode_heights(ctx, path, pot, bytes, size, heights, width,
                                height);
   free(bytes);
-  return s;
-}
-
-zr_status zr__image_decode_heights(zr_context *ctx, const char *path,
-                                   bool pot, const char *bytes, size_t size,
-                                   float **heights, int *width,
-                                   int *height) {
-  zr_status s;
-  *heights = NULL;
-  static const unsigned char png_sig[8] = {0x89, 'P', 'N', 'G',
-                                           '\r', '\n', 0x1a, '\n'};
-  const unsigned char *b = (const unsigned char *)bytes;
-  bool gif = size >= 6 && (!memcmp(b, "GIF87a", 6) ||
-                           !memcmp(b, "GIF89a", 6));
-  if (pot && !gif)
-    s = zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
-                 "%s: not a POT file (a POT file is a GIF file)", path);
-  else if (gif)
-    s = read_gif(ctx, path, b, size, pot, heights, width, height);
-  else if (size >= 8 && !memcmp(b, png_sig, 8))
-    s = read_png(ctx, path, b, size, heights, width, height);
-  else if (size >= 3 && b[0] == 0xff && b[1] == 0xd8 && b[2] == 0xff)
-    s = read_coded(ctx, path, b, size, true, heights, width, height);
-  else if (size >= 2 && b[0] == 'B' && b[1] == 'M')
-    s = read_decoded(ctx, path, b, size, false, heights, width, height);
-  else if (size >= 4 && (!memcmp(b, "II*\0", 4) || !memcmp(b, "MM\0*", 4)))
-    s = read_decoded(ctx, path, b, size, true, heights, width, height);
-  else if (!(size >= 2 && b[0] == 'P') && zr__tga_looks_like(b, size))
-    s = read_tga(ctx, path, b, size, heights, width, height);
-  else
-    s = read_coded(ctx, path, b, size, false, heights, width, height);
   return s;
 }

@@ -407,6 +407,8 @@ ZR_API zr_image_format zr_image_format_from_name(const char *path) {
     return ZR_FORMAT_HDR;
   if (!strcasecmp(ext, "exr"))
     return ZR_FORMAT_EXR;
+  if (!strcasecmp(ext, "bmp"))
+    return ZR_FORMAT_BMP;
   return ZR_FORMAT_AUTO;
 }
 
@@ -431,6 +433,9 @@ static zr_status not_an_image(zr_context *ctx, const char *path) {
   case ZR_FORMAT_EXR:
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
                     "%s: not an OpenEXR file", path);
+  case ZR_FORMAT_BMP:
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
+                    "%s: not a BMP file", path);
   case ZR_FORMAT_TGA:
   case ZR_FORMAT_TGA_RLE:
   case ZR_FORMAT_AUTO:
@@ -529,6 +534,7 @@ ZR_API int zr_image_format_supported(zr_image_format format) {
   case ZR_FORMAT_TGA:
   case ZR_FORMAT_TGA_RLE:
   case ZR_FORMAT_HDR:
+  case ZR_FORMAT_BMP:
     return 1;
   case ZR_FORMAT_EXR:
     return zr__exr_available();
@@ -560,6 +566,8 @@ static zr_status encode(zr_context *ctx, const zr_image *image,
     return zr__hdr_encode(ctx, path, image, e, f);
   case ZR_FORMAT_EXR:
     return zr__exr_encode(ctx, path, image, e, f);
+  case ZR_FORMAT_BMP:
+    return zr__bmp_encode(ctx, path, image, e, f);
   case ZR_FORMAT_AUTO:
     break;
   }
@@ -577,7 +585,7 @@ static zr_status check_encoding(zr_context *ctx, const zr_image *image,
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, NULL,
                     "%s: assumed_gamma must be positive, not %g", path,
                     e->assumed_gamma);
-  if (e->format <= ZR_FORMAT_AUTO || e->format > ZR_FORMAT_EXR)
+  if (e->format <= ZR_FORMAT_AUTO || e->format > ZR_FORMAT_BMP)
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, NULL,
                     "%s: unknown image format %d", path, (int)e->format);
   if (!zr_image_format_supported(e->format))
@@ -668,7 +676,8 @@ ZR_API zr_status zr_image_save(zr_context *ctx, const zr_image *image,
     if (e.format == ZR_FORMAT_AUTO)
       return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, NULL,
                       "%s: cannot tell the image format from the name "
-                      "(use .png, .jpg, .tga, .hdr, .exr, .ppm or .pfm)",
+                      "(use .png, .jpg, .tga, .bmp, .hdr, .exr, .ppm or "
+                      ".pfm)",
                       path);
   }
   zr_status cs = check_encoding(ctx, image, path, &e);

@@ -53,6 +53,9 @@ struct zr_image {
      image_map's "gamma G" may decode again; JPEG and Netpbm codes are
      kept too, but that option is refused for them. */
   bool stored_codes;
+  /* The file states how its codes map to light (a PNG sRGB or gAMA
+     chunk); false when the transfer is only presumed. */
+  bool transfer_stated;
   /* Palette files (PNG colour type 3, GIF, colour-mapped TGA) only, else
      NULL and 0: the palette entry of each pixel, which image_map's
      "filter INDEX, AMOUNT" and "transmit INDEX, AMOUNT" refer to, and
@@ -176,6 +179,9 @@ zr_status zr__hdr_encode(zr_context *ctx, const char *name,
 zr_status zr__exr_encode(zr_context *ctx, const char *name,
                          const zr_image *image, const zr_image_encoding *e,
                          FILE *stream);
+zr_status zr__bmp_encode(zr_context *ctx, const char *name,
+                         const zr_image *image, const zr_image_encoding *e,
+                         FILE *stream);
 /* Readers added for issue 12 (hdr.c, exr.c, bmp.c, tiff.c). */
 bool zr__hdr_looks_like(const unsigned char *bytes, size_t size);
 zr_status zr__hdr_decode(zr_context *ctx, const char *name,
@@ -214,6 +220,25 @@ zr_status zr__image_decode_heights(zr_context *ctx, const char *name,
                                    bool pot, const char *bytes, size_t size,
                                    float **heights, int *width,
                                    int *height);
+
+/* A height field's samples as the file stores them: w x h codes, rows
+   top to bottom, of 8 bits (height code / 255) or 16 bits (code /
+   65535), in an arena. */
+typedef struct zr_height_codes {
+  void *codes;
+  int bits;
+  int width, height;
+} zr_height_codes;
+
+struct zr_arena;
+/* Decodes a height field's file into codes allocated in arena (charged
+   to the arena's budget); the message is given on failure. */
+zr_status zr__image_decode_height_codes(zr_context *ctx, const char *name,
+                                        bool pot, const char *bytes,
+                                        size_t size, struct zr_arena *arena,
+                                        zr_height_codes *out);
+/* Code k of c as a height in [0, 1]. */
+double zr__height_code_value(const zr_height_codes *c, size_t k);
 
 /* zr_image_read from a file's bytes already read (name for messages). */
 zr_status zr__image_decode(zr_context *ctx, const char *name,

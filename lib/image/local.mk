@@ -8,6 +8,7 @@ lib_libzrcube_la_SOURCES += \
 	lib/image/gif.c \
 	lib/image/tga.c \
 	lib/image/tga_write.c \
+	lib/image/bmp_write.c \
 	lib/image/jpeg_write.c \
 	lib/image/hdr.c \
 	lib/image/exr.c \

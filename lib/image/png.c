@@ -181,6 +181,9 @@ static zr_status decode_rows(png_job *job) {
   if (s != ZR_OK)
     return s;
   job->image->stored_codes = true;
+  job->image->transfer_stated =
+      png_get_valid(job->png, job->info, PNG_INFO_sRGB) ||
+      png_get_valid(job->png, job->info, PNG_INFO_gAMA);
   unsigned char *rows = palette ? job->image->indices
                                 : (unsigned char *)job->image->codes;
   job->row_ptrs = malloc((size_t)height * sizeof *job->row_ptrs);

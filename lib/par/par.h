@@ -89,10 +89,11 @@ zr_status zr__par_agree(zr_par *par, zr_status local);
  * cut in bands of band_rows rows; pass 1 (one ray through each pixel
  * centre) runs over every band, then, with antialiasing, pass 2.
  * done[p][b] is 1 when pass p + 1 of band b is complete: its pixels are
- * in centres (pass 1 with antialiasing, width * height * 3 floats) or in
- * image (the final pixels, width * height * 3 floats).
+ * in centres (pass 1 with antialiasing, width * height * channels
+ * floats) or in image (the final pixels, as many floats).
  */
 typedef struct zr_par_progress {
+  int channels;   /* floats a pixel: 3, or 4 with alpha (+UA) */
   int passes;     /* 1, or 2 with antialiasing */
   int bands;
   int band_rows;

@@ -58,7 +58,7 @@ static void work(worker *w) {
   int first_row = job->end_row ? job->first_row : 0;
   int first_col = job->end_row ? job->first_col : 0;
   int cols = job->end_row ? job->end_col - first_col : width;
-  size_t row_floats = (size_t)cols * 3;
+  size_t row_floats = (size_t)cols * (job->params->alpha ? 4 : 3);
   uint32_t *pixels = malloc((size_t)(cols > 0 ? cols : 1) * sizeof *pixels);
   if (!pixels) {
     int ok = ZR_OK;

@@ -26,7 +26,8 @@ typedef struct zr_pool_job {
   int rank;              /* this rank takes rows rank, rank + nranks, ... */
   int nranks;
   const float *centres;  /* NULL for pass 1, else the whole centre image */
-  float *rows_rgb;       /* out: the rank's rows, in order, width * 3 each */
+  float *rows_rgb;       /* out: the rank's rows, in order, width * 3 each
+                            (4 with params->alpha) */
   int threads;           /* at least 1 */
   zr_render_stats *stats; /* added to; may be NULL */
   zr__rows_progress_fn progress; /* may be NULL */

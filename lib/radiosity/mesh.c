@@ -46,6 +46,7 @@
 #include <string.h>
 
 #include "trace/intersect.h"
+#include "trace/obj_isosurface.h"
 #include "trace/obj_mesh.h"
 
 /* Where an object was written, for messages. */
@@ -72,15 +73,18 @@ const char *zr__rad_kind_name(zr_object_kind kind) {
                                                        : "object";
 }
 
-/* The mesh whose faces are an object's radiosity surface, or NULL.  A
-   height field is its triangles unless water_level hides some of them
-   (the tracer drops what lies below it; radiosity cannot yet). */
-static const struct zr_mesh *object_mesh(const zr_object *o) {
+/* The faces radiosity would model for an object, 0 for none.  A height
+   field's are its triangles unless water_level hides some of them (the
+   tracer drops what lies below it; radiosity cannot yet); they are made
+   as a mesh only when it is modelled (hf_mesh). */
+static size_t object_faces(const zr_object *o) {
   if (o->kind == ZR_OBJ_MESH)
-    return o->u.mesh.data;
-  if (o->kind == ZR_OBJ_HEIGHT_FIELD && !(o->u.height_field.water_level > 0.0))
-    return o->u.height_field.data;
-  return NULL;
+    return o->u.mesh.data->n_faces;
+  if (o->kind == ZR_OBJ_HEIGHT_FIELD &&
+      !(o->u.height_field.water_level > 0.0))
+    return 2 * (size_t)(o->u.height_field.w - 1) *
+           (size_t)(o->u.height_field.h - 1);
+  return 0;
 }
 
 /* Whether radiosity models objects of this kind at all (others are
@@ -91,16 +95,17 @@ static bool modelled(const zr_object *o) {
   case ZR_OBJ_TRIANGLE: case ZR_OBJ_CYLINDER: case ZR_OBJ_CONE:
   case ZR_OBJ_DISC: case ZR_OBJ_TORUS: case ZR_OBJ_POLYGON:
     return true;
-  case ZR_OBJ_MESH: case ZR_OBJ_HEIGHT_FIELD:
-    return object_mesh(o) != NULL;
+  case ZR_OBJ_MESH:
+    return true;
+  case ZR_OBJ_HEIGHT_FIELD:
+    return object_faces(o) > 0;
   default:
     return false;
   }
 }
 
 bool zr__rad_models(const zr_object *o, size_t *faces) {
-  const struct zr_mesh *m = object_mesh(o);
-  *faces = m ? m->n_faces : 0;
+  *faces = object_faces(o);
   return modelled(o);
 }
 
@@ -144,7 +149,8 @@ static bool plane_bounds(const zr_scene *scene, zr_vec3 *lo, zr_vec3 *hi) {
 
 /* The surfaces of one primitive into out[] (room for 6); the count, or
    -1 when the object has no area. */
-static int primitive_surfaces(const zr_object *o, const zr_vec3 *lo,
+static int primitive_surfaces(const zr_object *o,
+                              const struct zr_mesh *mesh, const zr_vec3 *lo,
                               const zr_vec3 *hi, zr__surface out[6]) {
   const zr_transform *xf = o->transform;
   zr_status st = ZR_OK;
@@ -182,7 +188,7 @@ static int primitive_surfaces(const zr_object *o, const zr_vec3 *lo,
     return n > 0 ? n : -1;
   case ZR_OBJ_MESH:
   case ZR_OBJ_HEIGHT_FIELD:
-    st = zr__surface_mesh(&out[n++], object_mesh(o), xf, NULL, NULL);
+    st = zr__surface_mesh(&out[n++], mesh, xf, NULL, NULL);
     break;
   case ZR_OBJ_POLYGON: {
     /* The rectangle of the edges in the plane's (u, v) axes; trim.c
@@ -311,14 +317,14 @@ static zr_status add_primitive(zr_radiosity *rad, zr_context *ctx,
                                skip_tally *tally) {
   zr__surface geo[6];
   zr_diag_place where = object_place(o);
-  const struct zr_mesh *faces = object_mesh(o);
-  if (faces && rad->params.max_mesh_faces > 0 &&
-      faces->n_faces > (size_t)rad->params.max_mesh_faces) {
+  size_t n_faces = object_faces(o);
+  if (n_faces > 0 && rad->params.max_mesh_faces > 0 &&
+      n_faces > (size_t)rad->params.max_mesh_faces) {
     zr__diag(ctx, ZR_DIAG_WARNING, ZR_OK, &where,
              "radiosity: this %s has %zu faces, more than the %d radiosity "
              "takes (zr_radiosity_params.max_mesh_faces); it takes no part "
              "in the radiosity solution",
-             zr__rad_kind_name(o->kind), faces->n_faces,
+             zr__rad_kind_name(o->kind), n_faces,
              rad->params.max_mesh_faces);
     return ZR_OK;
   }
@@ -328,7 +334,21 @@ static zr_status add_primitive(zr_radiosity *rad, zr_context *ctx,
       tally->first[k] = o;
     return ZR_OK;
   }
-  int n = primitive_surfaces(o, lo, hi, geo);
+  const struct zr_mesh *mesh = NULL;
+  if (o->kind == ZR_OBJ_MESH)
+    mesh = o->u.mesh.data;
+  if (o->kind == ZR_OBJ_HEIGHT_FIELD) {
+    rad->hf_meshes.budget = rad->budget;
+    rad->hf_meshes.over_budget = 0;
+    zr_status st = zr__height_field_mesh(o, &rad->hf_meshes, &mesh);
+    if (st != ZR_OK && rad->hf_meshes.over_budget)
+      rad->over_budget = true;
+    if (st != ZR_OK)
+      return zr__diag(ctx, ZR_DIAG_ERROR, st, &where,
+                      "radiosity: cannot make the height_field's faces: %s",
+                      zr_status_str(st));
+  }
+  int n = primitive_surfaces(o, mesh, lo, hi, geo);
   if (n < 0) {
     zr__diag(ctx, ZR_DIAG_WARNING, ZR_OK, &where,
              "radiosity: this %s has no area (or no bounds); it takes no "

@@ -380,6 +380,7 @@ void zr__rad_free_arrays(zr_radiosity *rad) {
   free(rad->vhash);
   free(rad->surfs);
   free(rad->objects);
+  zr__arena_free(&rad->hf_meshes);
   zr__rad_free_poly_cache(rad);
   free(rad->recv_start);
   free(rad->recv_links);

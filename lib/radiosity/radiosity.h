@@ -35,6 +35,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "core/arena.h"
 #include "core/context.h"
 #include "radiosity/quadrature.h"
 #include "radiosity/surface.h"
@@ -139,6 +140,9 @@ struct zr_radiosity {
   size_t n_surfs;
   zr__rad_object_entry *objects;
   size_t n_objects;
+  /* The triangles of the height fields radiosity models (the scene
+     keeps only their samples), freed with the arrays. */
+  zr_arena hf_meshes;
 
   zr__rad_node *nodes;
   size_t n_nodes, cap_nodes;

@@ -68,4 +68,6 @@ EXTRA_DIST += tests/noise/rand.txt bench/noise/probe_rand.sh \
 	tests/noise/patterns.txt bench/noise/probe_crackle.py \
 	bench/noise/crackle_tables.h bench/noise/README.md \
 	bench/noise/ssim_scenes.sh bench/noise/ssim-160x120.tsv \
-	bench/noise/probe_gen3.py bench/noise/gen3_tables.h
+	bench/noise/probe_gen3.py bench/noise/gen3_tables.h \
+	lib/scene/waves_tables.h bench/conform/waves_probe.py \
+	bench/conform/quilted_probe.py

@@ -46,10 +46,12 @@
  *              measures them as (|dx|^m + |dy|^m + |dz|^m)^(1/m),
  *              offset is a fourth coordinate of every distance, solid
  *              gives the noise at the nearest point ("Crackle");
- *   ripples, waves  the mean over 10 random centres in the unit cube of
- *              0.5 + 0.5 sin (ripples) or cos (waves) of 2 pi (distance
- *              * frequency + phase), so they consume frequency and phase
- *              as the manual says.
+ *   ripples, waves  sines of the distance to ten centres on the unit
+ *              sphere, each wave of waves with a frequency of its own
+ *              (measured, see wave_sum());
+ *   quilted    a cubic Bezier of the distance to the middle of each unit
+ *              cube (control0, control1 its inner control points) times
+ *              the mean distance along the axes, see quilted().
  * Turbulence displaces the point by the turbulence vector times the sum
  * over octaves of omega^i D(p lambda^i), D POV-Ray's vector noise
  * (measured), before the pattern's transforms, as the manual's
@@ -62,10 +64,6 @@
  *   cells      one random value per unit cube ("Cells Pattern");
  *   pigment_pattern  the grey 0.297 r + 0.589 g + 0.114 b of a pigment
  *              evaluated at the point (the weights of POV-Ray's grey);
- *   quilted    the mean over the three axes of a cubic Bezier profile
- *              across each unit cube, 0 at the seam and 1 in the middle,
- *              with control0 and control1 as its inner control points
- *              (1, 1 by default: steep seams and a flat top);
  *   spiral1    arms around the z axis whose phase grows with the angle
  *              times the number of arms, with the distance from the axis
  *              and with z (a screw), through a triangle wave by default;
@@ -81,6 +79,7 @@
 #include "scene/df3.h"
 #include "core/noise.h"
 
+#include "scene/waves_tables.h" /* made by bench/conform/waves_probe.py */
 #include "../../bench/noise/crackle_tables.h"
 #include "scene/texture.h"
 #include "scene/warp.h"
@@ -236,13 +235,6 @@ static zr_vec3 crackle_point(int64_t x, int64_t y, int64_t z) {
   return zr_v3((double)x + o[0], (double)y + o[1], (double)z + o[2]);
 }
 
-/* A pseudo-random point of the unit cube from a hash. */
-static zr_vec3 hashed_point(int64_t x, int64_t y, int64_t z) {
-  uint32_t a = hash3(x, y, z), b = hash3(x + 7919, y, z),
-           c = hash3(x, y + 104729, z);
-  return zr_v3(a / 4294967296.0, b / 4294967296.0, c / 4294967296.0);
-}
-
 /* A distance in crackle's metric m, with its offset as a fourth
    coordinate ("Crackle": offset "displaces the pattern along a fourth
    dimension"). */
@@ -340,22 +332,72 @@ static double crackle(const zr_pattern *pt, zr_vec3 p) {
   return clamp01(d2 - d1);
 }
 
-/* Ripples and waves: the mean over number_of_waves (10) centres in the
-   unit cube. */
-static double wave_sum(const zr_pattern *pt, zr_vec3 p, bool cosine) {
+/* Ripples and waves (bench/conform/waves_probe.py, exact to 1e-15 at
+   1500 points of POV-Ray 3.7's values): ten centres c_k on the unit
+   sphere, the same for both, waves of centre k with a spatial frequency
+   s_k of its own:
+     ripples  0.5 + 0.05 sum_k sin(2 pi (f |p - c_k| + phase)),
+     waves    0.5 + 0.02 sum_k sin(2 pi (f s_k |p - c_k| + phase)) / s_k,
+   f and phase the pattern's frequency and phase; zr__pattern_wave()
+   applies them once more to the value, as POV-Ray does.  The weights
+   0.05 and 0.02 are the fit's.  global_settings { number_of_waves }
+   changes neither value (measured with 1, 3 and 20). */
+static double wave_sum(const zr_pattern *pt, zr_vec3 p, bool ripples) {
+  enum { N_WAVES = sizeof zr__wave_centres / sizeof zr__wave_centres[0] };
   double sum = 0;
-  int n = pt->waves > 0 ? pt->waves : 1;
-  for (int k = 0; k < n; k++) {
-    zr_vec3 c = hashed_point(k, 7, 13);
-    double d = zr_v3_len(zr_v3_sub(p, c));
-    double a = 2 * PI * (d * pt->frequency + pt->phase);
-    sum += 0.5 + 0.5 * (cosine ? cos(a) : sin(a));
+  for (int k = 0; k < N_WAVES; k++) {
+    const double *c = zr__wave_centres[k];
+    double s = ripples ? 1 : c[3];
+    double d = zr_v3_len(zr_v3_sub(p, zr_v3(c[0], c[1], c[2])));
+    sum += sin(2 * PI * (pt->frequency * s * d + pt->phase)) / s;
   }
-  return sum / n;
+  return 0.5 + (ripples ? 0.05 : 0.02) * sum;
 }
 
-/* Quilted: a Bezier profile from the seam (0) to the middle (1) of each
-   unit cube along every axis, averaged over the axes. */
+zr_vec3 zr__pattern_wave_normal(const zr_pattern *pt, zr_vec3 p) {
+  enum { N_WAVES = sizeof zr__wave_centres / sizeof zr__wave_centres[0] };
+  bool ripples = pt->kind == ZR_PAT_RIPPLES;
+  zr_vec3 sum = zr_v3(0, 0, 0);
+  for (int k = 0; k < N_WAVES; k++) {
+    const double *c = zr__wave_centres[k];
+    double s = ripples ? 1 : c[3];
+    zr_vec3 r = zr_v3_sub(p, zr_v3(c[0], c[1], c[2]));
+    double d = zr_v3_len(r);
+    if (d == 0)
+      continue;
+    double w = cos(2 * PI * (pt->frequency * s * d + pt->phase)) / s;
+    sum = zr_v3_madd(sum, r, w / d);
+  }
+  return zr_v3_scale(sum, 1.0 / N_WAVES);
+}
+
+/* Quilted (bench/conform/quilted_probe.py, exact to 1e-9 at 300 random
+   points for seven control pairs, probed with POV-Ray 3.7's functions of
+   a quilted pattern): each unit cube's offset d from its centre, of
+   length r, is scaled by the cubic Bezier B(r) with control points 0,
+   control0, control1, 1 and divided by the distance to a corner
+   (sqrt 3 / 2); the value is the mean of the absolute components:
+   |B(r)| (|dx| + |dy| + |dz|) 2 / (3 sqrt 3).  0 in the middle of a
+   cube, 3/8 at its corners with both controls 0; not clamped (controls
+   5, 5 give 1.118 at a corner), negative B counts as positive. */
+static double quilted(const zr_pattern *pt, zr_vec3 p) {
+  double c0 = pt->control0, c1 = pt->control1;
+  double dx = fabs(p.x - floor(p.x) - 0.5), dy = fabs(p.y - floor(p.y) - 0.5),
+         dz = fabs(p.z - floor(p.z) - 0.5);
+  double r = sqrt(dx * dx + dy * dy + dz * dz), u = 1 - r;
+  double b = 3 * c0 * r * u * u + 3 * c1 * r * r * u + r * r * r;
+  return fabs(b) * (dx + dy + dz) * 2 / (3 * sqrt(3.0));
+}
+
+/* The relief of a quilted normal: the manual says quilted normals use
+   "a specialized normal perturbation function" and that the pigment is
+   "similar ... but not identical", and POV-Ray's quilted normals are
+   not yet measured.  Until they are, a normal keeps this relief: the
+   mean over the axes of a cubic Bezier profile across each unit cube,
+   0 at the seam and 1 in the middle, control0 and control1 its inner
+   control points.  It scores SSIM 0.67 (advanced/quilt1.pov) and 0.91
+   (textures/patterns/quilt2.pov) against POV-Ray where the pigment's
+   exact value, differentiated, scores 0.35 and 0.53. */
 static double quilt_profile(double c, double c0, double c1) {
   double f = c - floor(c);
   double t = 2 * (f < 0.5 ? f : 1 - f); /* 0 at the seam, 1 mid-cell */
@@ -363,10 +405,11 @@ static double quilt_profile(double c, double c0, double c1) {
   return 3 * u * u * t * c0 + 3 * u * t * t * c1 + t * t * t;
 }
 
-static double quilted(const zr_pattern *pt, zr_vec3 p) {
+double zr__pattern_quilt_relief(const zr_pattern *pt, zr_vec3 p) {
   double c0 = pt->control0, c1 = pt->control1;
-  return clamp01((quilt_profile(p.x, c0, c1) + quilt_profile(p.y, c0, c1) +
-                  quilt_profile(p.z, c0, c1)) / 3);
+  return zr__pattern_wave(
+      pt, clamp01((quilt_profile(p.x, c0, c1) + quilt_profile(p.y, c0, c1) +
+                   quilt_profile(p.z, c0, c1)) / 3));
 }
 
 /* One spiral's phase: arms turns per revolution, the angle counted from
@@ -644,9 +687,9 @@ double zr__pattern_eval(const zr_pattern *pt, zr_vec3 p) {
   case ZR_PAT_OBJECT:
     return zr__pattern_object(pt, p);
   case ZR_PAT_RIPPLES:
-    return wave_sum(pt, p, false);
+    return zr__pattern_wave(pt, wave_sum(pt, p, true));
   case ZR_PAT_WAVES:
-    return wave_sum(pt, p, true);
+    return zr__pattern_wave(pt, wave_sum(pt, p, false));
   case ZR_PAT_AVERAGE:
     return 0;
   case ZR_PAT_SLOPE:

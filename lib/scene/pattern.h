@@ -41,6 +41,16 @@ double zr__pattern_eval(const zr_pattern *pt, zr_vec3 p);
 /* The point the pattern function sees for p (pattern space): after the
    pattern's warps and its turbulence. */
 zr_vec3 zr__pattern_point(const zr_pattern *pt, zr_vec3 p);
+
+/* For ripples and waves normals: the mean over the wave centres of the
+   unit vector from the centre to p (pattern space, after
+   zr__pattern_point) times the cosine of that wave's phase divided by
+   its spatial frequency (see pattern.c's wave_sum()). */
+zr_vec3 zr__pattern_wave_normal(const zr_pattern *pt, zr_vec3 p);
+
+/* The relief a quilted normal tilts by at p (pattern space, after
+   zr__pattern_point): not the quilted pigment's value, see pattern.c. */
+double zr__pattern_quilt_relief(const zr_pattern *pt, zr_vec3 p);
 /* The same at a surface point whose unit normal in world space is n,
    for the patterns that use it (slope); others ignore n. */
 double zr__pattern_eval_n(const zr_pattern *pt, zr_vec3 p, zr_vec3 n);

@@ -56,7 +56,10 @@ void zr__settings_init(zr_settings *s) {
   s->assumed_gamma = 1.0;
   s->ambient_light = zr_rgb3(1, 1, 1);
   s->irid_wavelength = zr_rgb3(0.70, 0.52, 0.48);
-  s->background = zr_colour5(0, 0, 0, 0, 0);
+  /* Black and clear: povray 3.7 +UA leaves a #version 3.7 scene
+     without a background transparent (lib/trace/atmosphere.c); the
+     colour ignores transmit. */
+  s->background = zr_colour5(0, 0, 0, 0, 1);
   s->version = 3.7;
   s->radiosity.brightness = 1.0;
   s->photons.gather_min = 20;
@@ -67,6 +70,30 @@ void zr__settings_init(zr_settings *s) {
   s->photons.radius_multiplier = 1.0;
   s->photons.expand_increase = 0.2;
   s->photons.expand_min = 40;
+}
+
+size_t zr__object_size(zr_object_kind kind) {
+  size_t common = offsetof(zr_object, u);
+  /* The union's end keeps the alignment its largest member needs. */
+  size_t part;
+  switch (kind) {
+  case ZR_OBJ_SPHERE:
+    part = sizeof ((zr_object *)0)->u.sphere;
+    break;
+  case ZR_OBJ_PLANE:
+    part = sizeof ((zr_object *)0)->u.plane;
+    break;
+  case ZR_OBJ_TRIANGLE:
+    part = sizeof ((zr_object *)0)->u.triangle;
+    break;
+  case ZR_OBJ_BOX:
+    part = sizeof ((zr_object *)0)->u.box;
+    break;
+  default:
+    return sizeof(zr_object);
+  }
+  size_t size = common + part;
+  return size < sizeof(zr_object) ? size : sizeof(zr_object);
 }
 
 zr_scene *zr__scene_new(void) {

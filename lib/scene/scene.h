@@ -305,6 +305,10 @@ typedef struct zr_pigment {
   /* uv_mapping ("UV Mapping"): the pattern is evaluated at (u, v, 0),
      the hit's surface coordinates, instead of the 3-D point. */
   bool uv_mapping;
+  /* quick_color ("Quick Color"): the colour shown instead at +Q5 and
+     below (lib/trace/shade.c). */
+  bool has_quick;
+  zr_colour quick;
 } zr_pigment;
 
 /* normal { Pattern [Bump_Size] ... }: the shading normal tilts against
@@ -500,6 +504,7 @@ static inline bool zr__is_csg(zr_object_kind kind) {
 
 struct zr_mesh; /* triangles and their BVH, shared by every copy
                   (lib/scene/shapes.h) */
+struct zr_hf_grid; /* a height field's samples (lib/scene/shapes.h) */
 struct zr_fn;   /* a compiled user function (lib/fn/fn.h) */
 
 /* One component of a blob ("Blob"): its field is
@@ -531,6 +536,51 @@ typedef struct zr_photon_object {
 
 struct zr_object {
   zr_object_kind kind;
+  /* Object to world (NULL: identity).  A union's modifiers are pushed down
+     into its children as they are applied, as POV-Ray does, so a union's
+     own transform and texture only matter for children added later. */
+  const zr_transform *transform;
+  const zr_texture *texture;   /* NULL: the default texture */
+  const zr_interior *interior; /* NULL: the default interior */
+  /* interior_texture { }: the texture of the inside (back) of the
+     surface; NULL: the same as outside. */
+  const zr_texture *interior_texture;
+  bool no_shadow;
+  /* no_image: unseen by camera rays (and what they pass straight
+     through); no_reflection: unseen in reflections.  Both still cast
+     shadows ("No_Image", "No_Reflection"). */
+  bool no_image, no_reflection;
+  /* double_illuminate: a light on either side of the surface lights it
+     ("Double_Illuminate"), the back as if the normal were turned. */
+  bool double_illuminate;
+  /* The innermost light_group the object is in (an index into the
+     scene's light_groups), 0 for none ("Light Group"). */
+  uint32_t light_group;
+  bool inverse;
+  bool hollow; /* stored for media; it changes nothing else */
+  /* uv_mapping as an object modifier: the textures given after it use
+     the surface's (u, v) and no longer move with the object. */
+  bool uv_mapping;
+  /* clipped_by: only the surface inside this object remains (an
+     intersection of the clipping objects); NULL when not clipped. */
+  const zr_object *clip;
+  /* bounded_by: kept only for clipped_by { bounded_by }; never used as a
+     bound, which POV-Ray allows since a bound never changes the
+     picture. */
+  const zr_object *bound;
+  /* photons { } ("Photons"): NULL for the defaults (collects photons,
+     neither a target nor reflecting or refracting them, passes them
+     through when no_shadow).  A union's block is pushed down into its
+     children like its other modifiers. */
+  const struct zr_photon_object *photons;
+  /* In a finished scene, the CSG primitive this object is a part of
+     (NULL for a primitive itself): rays enter and leave its interior,
+     not the part's. */
+  const zr_object *solid;
+  zr_source_loc where;
+  /* The shape's own data, last: an object of a small kind (sphere,
+     plane, triangle, box) is allocated with only its own part of the
+     union (zr__object_size), so copies must copy that many bytes. */
   union {
     struct {
       zr_vec3 centre;
@@ -695,10 +745,10 @@ struct zr_object {
     } isosurface;
     struct {
       /* height_field ("Height Field"): a w x h grid of heights in
-         [0, 1] over the unit square of the x-z plane, drawn as the
-         triangles of data; water_level hides what lies below it. */
-      const struct zr_mesh *data;
-      const float *heights; /* w * h, row j at z = j / (h - 1) */
+         [0, 1] over the unit square of the x-z plane, each square cut
+         into two triangles, found through the grid's block hierarchy
+         (lib/scene/shapes.h); water_level hides what lies below it. */
+      const struct zr_hf_grid *grid;
       int w, h;
       double water_level;
       bool smooth;
@@ -728,48 +778,6 @@ struct zr_object {
       double max_gradient, accuracy;
     } parametric;
   } u;
-  /* Object to world (NULL: identity).  A union's modifiers are pushed down
-     into its children as they are applied, as POV-Ray does, so a union's
-     own transform and texture only matter for children added later. */
-  const zr_transform *transform;
-  const zr_texture *texture;   /* NULL: the default texture */
-  const zr_interior *interior; /* NULL: the default interior */
-  /* interior_texture { }: the texture of the inside (back) of the
-     surface; NULL: the same as outside. */
-  const zr_texture *interior_texture;
-  bool no_shadow;
-  /* no_image: unseen by camera rays (and what they pass straight
-     through); no_reflection: unseen in reflections.  Both still cast
-     shadows ("No_Image", "No_Reflection"). */
-  bool no_image, no_reflection;
-  /* double_illuminate: a light on either side of the surface lights it
-     ("Double_Illuminate"), the back as if the normal were turned. */
-  bool double_illuminate;
-  /* The innermost light_group the object is in (an index into the
-     scene's light_groups), 0 for none ("Light Group"). */
-  uint32_t light_group;
-  bool inverse;
-  bool hollow; /* stored for media; it changes nothing else */
-  /* uv_mapping as an object modifier: the textures given after it use
-     the surface's (u, v) and no longer move with the object. */
-  bool uv_mapping;
-  /* clipped_by: only the surface inside this object remains (an
-     intersection of the clipping objects); NULL when not clipped. */
-  const zr_object *clip;
-  /* bounded_by: kept only for clipped_by { bounded_by }; never used as a
-     bound, which POV-Ray allows since a bound never changes the
-     picture. */
-  const zr_object *bound;
-  /* photons { } ("Photons"): NULL for the defaults (collects photons,
-     neither a target nor reflecting or refracting them, passes them
-     through when no_shadow).  A union's block is pushed down into its
-     children like its other modifiers. */
-  const struct zr_photon_object *photons;
-  /* In a finished scene, the CSG primitive this object is a part of
-     (NULL for a primitive itself): rays enter and leave its interior,
-     not the part's. */
-  const zr_object *solid;
-  zr_source_loc where;
 };
 
 /* ---- lights, camera, settings ---- */
@@ -997,7 +1005,7 @@ typedef struct zr_settings {
   /* irid_wavelength: iridescence's red, green and blue wavelengths in
      microns ("Irid_Wavelength"); default <0.70, 0.52, 0.48>. */
   zr_rgb irid_wavelength;
-  zr_colour background; /* default black, transmit 0 */
+  zr_colour background; /* default black, transmit 1 (clear) */
   double version;       /* the last #version; the parser sets 3.7 if none */
   /* A #version directive was read: POV-Ray 3.7 drops ambient under
      radiosity only for scenes that declare 3.7 (measured: a sphere of
@@ -1068,6 +1076,11 @@ struct zr_scene {
   void (*photons_free)(struct zr_photon_map *photons);
   unsigned long long parse_steps; /* the work budget the parse used */
 };
+
+/* The bytes an object of this kind is allocated with: the common fields
+   and its part of the union (a sphere's 32 bytes rather than the union's
+   160; issue 13's memory per sphere). */
+size_t zr__object_size(zr_object_kind kind);
 
 void zr__finish_init(zr_finish *f);
 void zr__pigment_init(zr_pigment *p);

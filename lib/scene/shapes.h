@@ -1,6 +1,6 @@
 /*
  * shapes.h - the data of the shapes that carry more than a few numbers:
- * meshes (mesh, mesh2, smooth_triangle, height fields' triangles), text,
+ * meshes (mesh, mesh2, smooth_triangle), height fields, text,
  * sphere sweeps and julia fractals.  It is part of the scene model
  * (zr_object points to it); the tracer's operations on it are in
  * lib/trace (obj_mesh.h, obj_text.h, obj_sweep.h), which the parser
@@ -50,6 +50,36 @@ struct zr_mesh {
   zr_mesh_node *nodes;
   size_t n_nodes;
   zr_vec3 lo, hi; /* the box of every vertex the faces use */
+};
+
+/* ---- height fields (lib/trace/obj_height_field.c) ---- */
+
+/* The most levels a height field's block hierarchy has: a side of 65536
+   samples is 8192 blocks, halved 13 times to one. */
+#define ZR_HF_MAX_LEVELS 20
+/* A leaf block is ZR_HF_BLOCK x ZR_HF_BLOCK squares of the grid. */
+#define ZR_HF_BLOCK 8
+
+/*
+ * A height field's samples, kept as the file stores them (8 or 16-bit
+ * codes, or floats for a function), and the least and greatest height
+ * of each block of the grid: level 0 holds the leaf blocks, each level
+ * above holds blocks of 2 x 2 of the one below, up to one block.  The
+ * triangles are made from the samples where a ray needs them: a grid of
+ * w x h samples costs w h (bits / 8) bytes and 8 bytes a leaf block
+ * (1/8 of a byte a square, 1/6 with the levels above).
+ */
+struct zr_hf_grid {
+  const void *samples; /* w * h, image order: row r at z = 1 - r/(h-1) */
+  int bits;            /* 8: code / 255, 16: code / 65535, 32: float */
+  int w, h;
+  float lo, hi; /* the least and greatest sample */
+  int levels;
+  struct {
+    size_t start; /* of the level's blocks in range (pairs) */
+    int nx, nz;
+  } level[ZR_HF_MAX_LEVELS];
+  float *range; /* least, greatest height of each block */
 };
 
 /* ---- text (lib/trace/obj_text.c) ---- */

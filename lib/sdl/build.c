@@ -73,7 +73,7 @@ bool zr__sdl_axis_given(zr_sdl_parser *p, zr_vec3 base, zr_vec3 cap,
 
 zr_object *zr__sdl_object_new(zr_sdl_parser *p, zr_object_kind kind,
                               const zr_sdl_loc *loc) {
-  zr_object *o = zr__sdl_alloc(p, sizeof *o);
+  zr_object *o = zr__sdl_alloc(p, zr__object_size(kind));
   if (!o)
     return NULL;
   o->kind = kind;
@@ -93,10 +93,11 @@ static size_t children_room(size_t n) {
 }
 
 zr_object *zr__sdl_object_copy(zr_sdl_parser *p, const zr_object *o) {
-  zr_object *copy = zr__sdl_alloc(p, sizeof *copy);
+  size_t size = zr__object_size(o->kind);
+  zr_object *copy = zr__sdl_alloc(p, size);
   if (!copy)
     return NULL;
-  *copy = *o;
+  memcpy(copy, o, size); /* an object may be smaller than zr_object */
   /* Clipping and bounding objects follow the object's later transforms,
      so each copy needs its own. */
   if (o->clip && !(copy->clip = zr__sdl_object_copy(p, o->clip)))
@@ -796,10 +797,31 @@ static bool remember_image(zr_sdl_parser *p, float *pixels, size_t n) {
   return true;
 }
 
+/*
+ * Whether an image_map's codes are taken as they are, in the scene's
+ * working space: in a legacy scene (no #version, or one below 3.7, in
+ * force where the image_map is read), for a coded file that does not
+ * state its transfer, unless "gamma G" was given.  The manual ("Gamma
+ * in Legacy Scenes") says so of every format but PNG, OpenEXR and HDR;
+ * for PNG, POV-Ray 3.7 measured does the same when the file has no sRGB
+ * or gAMA chunk: a #version 3.6 scene with assumed_gamma 1 shows code
+ * 85 with ambient 1 as linear 0.3333 (0.0908, the sRGB decoding, under
+ * #version 3.7; 85/255 raised to 2.2 under assumed_gamma 2.2), while
+ * files with either chunk are decoded by it in both versions
+ * (tests/test_image_gamma_povray.sh; interior/media/media3.pov's
+ * test.png).
+ */
+static bool codes_as_working(const zr_sdl_parser *p, const zr_image *image,
+                             bool gamma_given) {
+  bool legacy = !p->version_given || p->version < 3.7 - 1e-9;
+  return legacy && !gamma_given && image->layout != ZR_LAYOUT_FLOAT &&
+         !image->transfer_stated;
+}
+
 /* An image map's colours into the scene: a float picture's pixels, or
    a coded one's codes or indices and its table of colours. */
 static bool image_samples(zr_sdl_parser *p, zr_image_map *im,
-                          const zr_image *image) {
+                          const zr_image *image, bool gamma_given) {
   size_t n = (size_t)image->width * (size_t)image->height;
   if (image->layout == ZR_LAYOUT_FLOAT) {
     float *pixels = zr__sdl_alloc(p, 3 * n * sizeof *pixels);
@@ -811,6 +833,15 @@ static bool image_samples(zr_sdl_parser *p, zr_image_map *im,
   }
   size_t ntable = (size_t)image->maxval + 1;
   float *table = zr__sdl_alloc(p, ntable * sizeof *table);
+  if (codes_as_working(p, image, gamma_given)) {
+    /* Already in the working space: not raised at the parse's end. */
+    if (!table)
+      return false;
+    for (size_t k = 0; k < ntable; k++)
+      table[k] = (float)((double)k / image->maxval);
+    im->table = table;
+    return true;
+  }
   if (!table || !remember_image(p, table, ntable))
     return false;
   memcpy(table, image->table, ntable * sizeof *table);
@@ -886,7 +917,7 @@ zr_image_map *zr__sdl_bitmap_new(zr_sdl_parser *p, const char *what,
   if (ok && (is_image || image->layout != ZR_LAYOUT_FLOAT))
     ok = picture_codes(p, im, image);
   if (ok)
-    ok = is_image ? image_samples(p, im, image)
+    ok = is_image ? image_samples(p, im, image, gamma != NULL)
                   : bitmap_values(p, im, image,
                                   strcmp(what, "material_map") == 0,
                                   gamma != NULL);
@@ -1228,13 +1259,17 @@ bool zr__sdl_object_mod(zr_sdl_parser *p, zr_object *o,
   case ZR_SDL_MOD_TEXTURE:
     /* A texture on a textured object goes on top as a layer, as in
        POV-Ray (build_texture.c). */
-    o->texture = zr__sdl_texture_layer(p, o->texture, mod->ptr);
+    /* The first texture is shared, not copied: textures never change
+       once made (the changes above copy them). */
+    o->texture = o->texture ? zr__sdl_texture_layer(p, o->texture, mod->ptr)
+                            : (const zr_texture *)mod->ptr;
     return o->texture != NULL &&
            legacy_ior(p, o, ((const zr_texture *)mod->ptr)->finish);
   case ZR_SDL_MOD_MATERIAL: {
     const zr_sdl_material *m = mod->ptr;
-    if (m->texture &&
-        !(o->texture = zr__sdl_texture_layer(p, o->texture, m->texture)))
+    if (m->texture && !(o->texture = o->texture ? zr__sdl_texture_layer(
+                                          p, o->texture, m->texture)
+                                                 : m->texture))
       return false;
     if (m->interior)
       set_interior(o, m->interior, true);

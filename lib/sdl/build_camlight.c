@@ -321,8 +321,14 @@ static void look_at(zr_camera *c, zr_vec3 target) {
       zr_v3_dot(zr_v3_cross(c->up, c->direction), c->right) > 0 ? 1 : -1;
   zr_vec3 dn = zr_v3_norm(d);
   zr_vec3 rn = zr_v3_norm(zr_v3_cross(c->sky, dn));
-  if (zr_v3_len(rn) == 0) /* looking along the sky: keep the old right */
-    rn = zr_v3_norm(zr_v3_scale(c->right, handed));
+  /* Looking along the sky: up comes from the old right as given, then
+     the mirror of a right-handed (or degenerate) triple flips right, so
+     a mirrored camera looking down shows +x right and -z up where the
+     plain one shows +x right and +z up (POV-Ray 3.7 renders of ten
+     cameras looking along y and z, one kept as scenes/camera_sky.pov;
+     POV-Ray warns of none). */
+  if (zr_v3_len(rn) == 0)
+    rn = zr_v3_norm(c->right);
   zr_vec3 un = zr_v3_cross(dn, rn);
   c->direction = zr_v3_scale(dn, dl);
   c->right = zr_v3_scale(rn, rl * handed);

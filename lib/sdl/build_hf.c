@@ -12,11 +12,10 @@
  * x = i / (W - 1), y = j / (H - 1) is its image's pixel (i, j), clamped
  * to [0, 1].  Both were measured on POV-Ray 3.7's renderings.
  *
- * When the last item has been read the grid becomes a mesh: two
- * triangles per square of four samples, those wholly under the
- * water_level left out, with smooth normals from the grid's central
- * differences when smooth is given.  The mesh carries its own BVH, so
- * POV-Ray's hierarchy switch changes nothing and is only read.
+ * The samples are kept as read (8 or 16-bit codes, floats for a
+ * function) with a block hierarchy over them; the tracer makes the
+ * triangles from them where a ray needs them, so POV-Ray's hierarchy
+ * switch changes nothing and is only read.
  */
 #include "sdl/build_iso.h"
 
@@ -28,24 +27,38 @@
 
 #include "image/image.h"
 #include "pov-parse.h"
-#include "trace/obj_mesh.h"
+#include "trace/obj_isosurface.h"
 
 /* The grid's largest side and size: a height field bigger than this is
    surely a mistake in the resolution. */
 #define MAX_SIDE 65536
 #define MAX_SAMPLES ((size_t)1 << 26)
 
-/* A height field object holding a w x h grid (heights filled later). */
-static zr_object *hf_new(zr_sdl_parser *p, const zr_sdl_loc *loc, int w,
-                         int h, float **heights) {
+/* A height field object over w x h samples (image order, of bits 8,
+   16 or 32 = float), with the block hierarchy the tracer walks. */
+static zr_object *hf_new(zr_sdl_parser *p, const zr_sdl_loc *loc,
+                         const void *samples, int bits, int w, int h) {
   zr_object *o = zr__sdl_object_new(p, ZR_OBJ_HEIGHT_FIELD, loc);
-  float *g = o ? zr__sdl_alloc(p, (size_t)w * (size_t)h * sizeof *g) : NULL;
-  if (!g)
+  if (!o)
     return NULL;
   o->u.height_field.w = w;
   o->u.height_field.h = h;
-  o->u.height_field.heights = g;
-  *heights = g;
+  zr_arena *arena = &p->scene->arena;
+  arena->over_budget = 0;
+  zr_status s = zr__height_field_grid(arena, samples, bits, w, h,
+                                      &o->u.height_field.grid);
+  if (s != ZR_OK) {
+    if (arena->over_budget) {
+      char text[400];
+      zr__sdl_error(p, ZR_ELIMIT, loc, "%s",
+                    zr__context_budget_text(p->ctx, (size_t)w * (size_t)h / 32, "the height_field",
+                                            text, sizeof text));
+    } else {
+      zr__sdl_error(p, s, loc, "cannot build the height_field: %s",
+                    zr_status_str(s));
+    }
+    return NULL;
+  }
   return o;
 }
 
@@ -82,10 +95,9 @@ zr_object *zr__sdl_height_field_image(zr_sdl_parser *p,
                   "height_field file '%s' not found", name);
   if (s != ZR_OK)
     return NULL;
-  float *samples = NULL;
-  int w = 0, h = 0;
-  s = zr__image_decode_heights(p->ctx, path, pot, bytes, size, &samples, &w,
-                               &h);
+  zr_height_codes codes;
+  s = zr__image_decode_height_codes(p->ctx, path, pot, bytes, size,
+                                    &p->scene->arena, &codes);
   free(bytes);
   free(path);
   if (s != ZR_OK) {
@@ -93,20 +105,14 @@ zr_object *zr__sdl_height_field_image(zr_sdl_parser *p,
                   name);
     return NULL;
   }
-  if (w < 2 || h < 2) {
-    free(samples);
+  if (codes.width < 2 || codes.height < 2) {
     zr__sdl_error(p, ZR_ESCENE, name_loc,
                   "a height_field's image needs at least 2 x 2 pixels");
     return NULL;
   }
-  float *g;
-  zr_object *o = hf_new(p, loc, w, h, &g);
-  if (o)
-    for (int j = 0; j < h; j++) /* image row j at z = 1 - j / (h - 1) */
-      memcpy(g + (size_t)(h - 1 - j) * w, samples + (size_t)j * w,
-             (size_t)w * sizeof *g);
-  free(samples);
-  return o;
+  /* Image row j lies at z = 1 - j / (h - 1): the samples are kept in
+     the file's order. */
+  return hf_new(p, loc, codes.codes, codes.bits, codes.width, codes.height);
 }
 
 const zr_fn *zr__sdl_height_field_fn_body(zr_sdl_parser *p,
@@ -167,18 +173,18 @@ zr_object *zr__sdl_height_field_function(zr_sdl_parser *p,
                   "parameters", zr__fn_params(fn));
     return NULL;
   }
-  float *g;
-  zr_object *o = hf_new(p, loc, w, h, &g);
-  if (!o)
+  /* The function's sample (i, j) is image pixel (i, j), row j. */
+  float *g = zr__sdl_alloc(p, (size_t)w * (size_t)h * sizeof *g);
+  if (!g)
     return NULL;
   for (int j = 0; j < h; j++)
     for (int i = 0; i < w; i++) {
       double args[3] = {(double)i / (w - 1), (double)j / (h - 1), 0.0};
       double v = zr__fn_eval(fn, args);
       v = isfinite(v) ? fmin(fmax(v, 0.0), 1.0) : 0.0;
-      g[(size_t)(h - 1 - j) * w + i] = (float)v;
+      g[(size_t)j * w + i] = (float)v;
     }
-  return o;
+  return hf_new(p, loc, g, 32, w, h);
 }
 
 bool zr__sdl_height_field_item(zr_sdl_parser *p, zr_object *o, int token,
@@ -194,86 +200,11 @@ bool zr__sdl_height_field_item(zr_sdl_parser *p, zr_object *o, int token,
   return true;
 }
 
-/* The height at grid point (i, j), clamped to the grid. */
-static double sample(const zr_object *o, int i, int j) {
-  int w = o->u.height_field.w, h = o->u.height_field.h;
-  i = i < 0 ? 0 : i >= w ? w - 1 : i;
-  j = j < 0 ? 0 : j >= h ? h - 1 : j;
-  return o->u.height_field.heights[(size_t)j * w + i];
-}
-
-static bool add_face(struct zr_mesh *m, uint32_t a, uint32_t b,
-                     uint32_t c) {
-  size_t f = m->n_faces++;
-  m->faces[f][0] = a;
-  m->faces[f][1] = b;
-  m->faces[f][2] = c;
-  if (m->face_normals) {
-    m->face_normals[f][0] = a;
-    m->face_normals[f][1] = b;
-    m->face_normals[f][2] = c;
-  }
-  return true;
-}
-
 bool zr__sdl_height_field_done(zr_sdl_parser *p, zr_object *o,
                                const zr_sdl_loc *loc) {
-  int w = o->u.height_field.w, h = o->u.height_field.h;
-  bool smooth = o->u.height_field.smooth;
-  double water = o->u.height_field.water_level;
-  size_t nv = (size_t)w * (size_t)h;
-  size_t nf = 2 * (size_t)(w - 1) * (size_t)(h - 1);
-  struct zr_mesh *m = zr__sdl_alloc(p, sizeof *m);
-  if (!m)
-    return false;
-  memset(m, 0, sizeof *m);
-  m->vertices = zr__sdl_alloc(p, nv * sizeof *m->vertices);
-  m->faces = zr__sdl_alloc(p, nf * sizeof *m->faces);
-  if (smooth) {
-    m->normals = zr__sdl_alloc(p, nv * sizeof *m->normals);
-    m->face_normals = zr__sdl_alloc(p, nf * sizeof *m->face_normals);
-  }
-  if (!m->vertices || !m->faces ||
-      (smooth && (!m->normals || !m->face_normals)))
-    return false;
-  double dx = 1.0 / (w - 1), dz = 1.0 / (h - 1);
-  for (int j = 0; j < h; j++)
-    for (int i = 0; i < w; i++) {
-      size_t k = (size_t)j * w + i;
-      m->vertices[k] = zr_v3(i * dx, sample(o, i, j), j * dz);
-      if (smooth) {
-        /* Central differences, one-sided at the edges. */
-        int i0 = i > 0 ? i - 1 : i, i1 = i < w - 1 ? i + 1 : i;
-        int j0 = j > 0 ? j - 1 : j, j1 = j < h - 1 ? j + 1 : j;
-        double sx = (sample(o, i1, j) - sample(o, i0, j)) / ((i1 - i0) * dx);
-        double sz = (sample(o, i, j1) - sample(o, i, j0)) / ((j1 - j0) * dz);
-        m->normals[k] = zr_v3(-sx, 1.0, -sz);
-      }
-    }
-  m->n_vertices = m->cap_vertices = nv;
-  m->n_normals = m->cap_normals = smooth ? nv : 0;
-  m->cap_faces = nf;
-  /* Each square's diagonal runs from (i + 1, j) to (i, j + 1)
-     (zr__height_field_height() interpolates the same way); both
-     triangles are wound so that their normals point up. */
-  for (int j = 0; j + 1 < h; j++)
-    for (int i = 0; i + 1 < w; i++) {
-      uint32_t a = (uint32_t)((size_t)j * w + i), b = a + 1;
-      uint32_t c = a + (uint32_t)w, d = c + 1;
-      double ya = m->vertices[a].y, yb = m->vertices[b].y;
-      double yc = m->vertices[c].y, yd = m->vertices[d].y;
-      if (!(ya < water && yb < water && yc < water))
-        add_face(m, a, c, b);
-      if (!(yb < water && yc < water && yd < water))
-        add_face(m, b, c, d);
-    }
-  size_t bad = 0;
-  zr_status s = zr__mesh_build(m, &p->scene->arena, &bad);
-  if (s != ZR_OK) {
-    zr__sdl_error(p, s, loc, "cannot build the height_field: %s",
-                  zr_status_str(s));
-    return false;
-  }
-  o->u.height_field.data = m;
-  return true;
+  /* Everything was made with the samples: the tracer derives the
+     triangles from them (lib/trace/obj_height_field.c). */
+  (void)p;
+  (void)loc;
+  return o->u.height_field.grid != NULL;
 }

@@ -265,6 +265,17 @@ zr_texture *zr__sdl_texture_layer(zr_sdl_parser *p, const zr_texture *below,
   return bottom;
 }
 
+zr_texture *zr__sdl_texture_shared(zr_sdl_parser *p, zr_texture *tx) {
+  const zr_texture *from = p->texture_copied;
+  if (tx != p->texture_copy || !from || memcmp(tx, from, sizeof *tx) != 0)
+    return tx;
+  p->texture_copy = NULL;
+  p->texture_copied = NULL;
+  /* The copy was the last thing allocated when nothing changed it. */
+  zr__arena_give_back(&p->scene->arena, tx, sizeof *tx);
+  return (zr_texture *)from; /* the grammar's values are not const */
+}
+
 zr_texture *zr__sdl_texture_top(zr_sdl_parser *p, zr_texture *tx) {
   zr_texture *last = tx;
   while (last->over) {

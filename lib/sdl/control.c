@@ -81,7 +81,7 @@ static bool unmatched(zr_sdl_parser *p, size_t open) {
 /* The #end of the block whose directive is at i, or NONE. */
 static size_t block_end(const zr_sdl_file *f, size_t i) {
   while (i != NONE && f->tokens[i].kind != T_END)
-    i = f->links[i];
+    i = zr__sdl_link(f, i);
   return i;
 }
 
@@ -227,7 +227,7 @@ static bool next_branch(zr_sdl_parser *p, size_t open, size_t m) {
         return false;
       if (c)
         return true;
-      m = file_of(p)->links[m];
+      m = zr__sdl_link(file_of(p), m);
       break;
     }
     case T_ELSE:
@@ -258,7 +258,7 @@ static bool do_if(zr_sdl_parser *p, const zr_sdl_token *t,
   }
   if (!push_ctl(p, ZR_SDL_CTL_IF, open))
     return false;
-  return c || next_branch(p, open, file_of(p)->links[open]);
+  return c || next_branch(p, open, zr__sdl_link(file_of(p), open));
 }
 
 /* #else or #elseif reached while running the branch before it. */
@@ -319,7 +319,7 @@ static bool next_clause(zr_sdl_parser *p, size_t m) {
                     directive_name(t->kind));
       return false;
     }
-    m = file_of(p)->links[m];
+    m = zr__sdl_link(file_of(p), m);
   }
 }
 
@@ -330,7 +330,7 @@ static bool do_switch(zr_sdl_parser *p, const zr_sdl_loc *at) {
       !push_ctl(p, ZR_SDL_CTL_SWITCH, open))
     return false;
   top_ctl(p)->value = value;
-  return next_clause(p, file_of(p)->links[open]);
+  return next_clause(p, zr__sdl_link(file_of(p), open));
 }
 
 /* #case or #range reached while running a true clause: parsing falls

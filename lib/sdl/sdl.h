@@ -331,8 +331,13 @@ typedef struct zr_sdl_file {
   size_t n_tokens;
   /* For each block directive, the index of the next directive of its
      block: #if -> #elseif/#else/#end, #switch -> #case..., #while,
-     #for and #macro -> #end; (size_t)-1 where there is none. */
-  size_t *links;
+     #for and #macro -> #end; zr__sdl_link() finds it.  Only the
+     directives that have one are listed, by ascending index: a word per
+     token cost as much as the tokens of a file of spheres. */
+  struct zr_sdl_link {
+    size_t from, to;
+  } *links;
+  size_t n_links;
   zr_arena strings; /* identifier and string texts */
   /* The token array and the file's bytes are charged to this budget
      (NULL: none) while the file is held. */
@@ -356,6 +361,9 @@ zr_status zr__sdl_file_lex_budget(zr_sdl_file *f, int file_index,
                                   zr_sdl_loc *err_loc, char *err,
                                   size_t err_size);
 void zr__sdl_file_free(zr_sdl_file *f);
+/* The next directive of the block of the directive at token i (see
+   links above), (size_t)-1 when there is none. */
+size_t zr__sdl_link(const zr_sdl_file *f, size_t i);
 
 /* What the flex scanner keeps between tokens (its "extra" data). */
 typedef struct zr_sdl_lexer {
@@ -517,6 +525,11 @@ typedef struct zr_sdl_parser {
   const zr_normal *normal_base;
   const zr_finish *finish_base;
   int base_set;         /* bits 1, 2, 4: pigment, normal, finish base set */
+  /* The copy texture { T ... } started from, and T: a texture that
+     changed nothing of T is T itself, not a copy (a million spheres
+     with texture { T } share one; build_texture.c). */
+  zr_texture *texture_copy;
+  const zr_texture *texture_copied;
   bool default_changed; /* a #default was read */
   int nested_depth; /* parsers running, for ZR_SDL_MAX_NESTED_PARSE */
   int macro_depth;
@@ -960,6 +973,10 @@ void zr__sdl_texture_pattern(zr_texture *tx, int kind);
    copied, above's shared. */
 zr_texture *zr__sdl_texture_layer(zr_sdl_parser *p, const zr_texture *below,
                                   const zr_texture *above);
+/* tx, or the texture identifier's texture it was copied from when it is
+   still the same bytes: textures are never changed once made (changes
+   copy them), so objects can share one. */
+zr_texture *zr__sdl_texture_shared(zr_sdl_parser *p, zr_texture *tx);
 /* The top layer of tx, a private copy: the chain above tx is copied
    (tx itself must be one already); NULL when out of memory. */
 zr_texture *zr__sdl_texture_top(zr_sdl_parser *p, zr_texture *tx);

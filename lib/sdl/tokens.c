@@ -113,7 +113,8 @@ static zr_status push_token(zr_sdl_file *f, size_t *cap,
                             const zr_sdl_token *t) {
   if (f->n_tokens == *cap) {
     size_t new_cap = *cap ? *cap * 2 : 256;
-    /* The token array and the block links made after it. */
+    /* The token array and the block links made after it (at most a
+       pair of words per token; far fewer in practice). */
     size_t more = (new_cap - *cap) * (sizeof *f->tokens + sizeof(size_t));
     if (!zr__budget_charge(f->budget, more))
       return ZR_ELIMIT;
@@ -293,8 +294,13 @@ static bool continues_block(int kind) {
  * (size_t)-1; the engine reports them when it runs them.
  */
 static zr_status link_blocks(zr_sdl_file *f) {
-  f->links = malloc((f->n_tokens ? f->n_tokens : 1) * sizeof *f->links);
-  size_t *open = malloc((f->n_tokens ? f->n_tokens : 1) * sizeof *open);
+  /* Every directive that opens or continues a block may get a link. */
+  size_t n = 0;
+  for (size_t i = 0; i < f->n_tokens; i++)
+    n += opens_block(f->tokens[i].kind) || continues_block(f->tokens[i].kind);
+  f->links = malloc((n ? n : 1) * sizeof *f->links);
+  /* open[] holds positions in links of the blocks still open. */
+  size_t *open = malloc((n ? n : 1) * sizeof *open);
   if (!f->links || !open) {
     free(open);
     return ZR_ENOMEM;
@@ -302,18 +308,35 @@ static zr_status link_blocks(zr_sdl_file *f) {
   size_t depth = 0;
   for (size_t i = 0; i < f->n_tokens; i++) {
     int kind = f->tokens[i].kind;
-    f->links[i] = (size_t)-1;
     if (opens_block(kind)) {
-      open[depth++] = i;
-    } else if (continues_block(kind) && depth > 0) {
-      f->links[open[depth - 1]] = i;
-      open[depth - 1] = i;
+      f->links[f->n_links] = (struct zr_sdl_link){i, (size_t)-1};
+      open[depth++] = f->n_links++;
+    } else if (continues_block(kind)) {
+      f->links[f->n_links] = (struct zr_sdl_link){i, (size_t)-1};
+      if (depth > 0) {
+        f->links[open[depth - 1]].to = i;
+        open[depth - 1] = f->n_links;
+      }
+      f->n_links++;
     } else if (kind == T_END && depth > 0) {
-      f->links[open[--depth]] = i;
+      f->links[open[--depth]].to = i;
     }
   }
   free(open);
   return ZR_OK;
+}
+
+size_t zr__sdl_link(const zr_sdl_file *f, size_t i) {
+  size_t lo = 0, hi = f->n_links;
+  while (lo < hi) {
+    size_t mid = lo + (hi - lo) / 2;
+    if (f->links[mid].from < i)
+      lo = mid + 1;
+    else
+      hi = mid;
+  }
+  return lo < f->n_links && f->links[lo].from == i ? f->links[lo].to
+                                                   : (size_t)-1;
 }
 
 zr_status zr__sdl_file_lex(zr_sdl_file *f, int file_index, char *path,
@@ -398,6 +421,12 @@ zr_status zr__sdl_file_lex_budget(zr_sdl_file *f, int file_index,
   zr__scan_lex_destroy(scanner);
   if (status == ZR_OK && f->strings.over_budget)
     status = ZR_ELIMIT;
+  if (status == ZR_OK && f->n_tokens < cap) {
+    /* The array doubled as it grew: give back what is left over. */
+    zr_sdl_token *fit = realloc(f->tokens, f->n_tokens * sizeof *fit);
+    if (fit)
+      f->tokens = fit;
+  }
   if (status == ZR_OK)
     status = link_blocks(f);
   if (status == ZR_ESYNTAX) {

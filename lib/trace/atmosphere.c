@@ -77,6 +77,50 @@ zr_rgb zr__sky_colour(const zr_scene *scene, zr_vec3 dir) {
   return zr_rgb_mul(below, sky->emission);
 }
 
+double zr__grey(zr_rgb c) {
+  if (c.r == c.g && c.g == c.b)
+    return c.r; /* exactly, so white leaves a pixel wholly clear */
+  return 0.297 * c.r + 0.589 * c.g + 0.114 * c.b;
+}
+
+/*
+ * povray 3.7 +UA, measured (tests/test_alpha_povray.sh): in a #version
+ * 3.7 scene the background is a colour like any with filter f and
+ * transmit t over nothing: it adds (1 - f - t) C and leaves f grey(C) + t
+ * of the pixel clear (the default background is clear, rgbt <0,0,0,1>);
+ * each sky_sphere layer does the same over what is below it.  Older
+ * scenes leave the whole background clear and black ("Output_Alpha":
+ * the background is suppressed).
+ */
+zr_rgb zr__sky_clear(const zr_scene *scene, zr_vec3 dir, double *clear) {
+  const zr_settings *gs = &scene->settings;
+  if (!gs->version_given || gs->version < 3.7) {
+    *clear = 1.0;
+    return zr_rgb3(0, 0, 0);
+  }
+  zr_colour b = gs->background;
+  zr_rgb below = zr_rgb_scale(zr_colour_rgb(b), fmax(0.0, 1.0 - b.f - b.t));
+  double through = b.f * zr__grey(zr_colour_rgb(b)) + b.t;
+  const zr_sky_sphere *sky = gs->sky_sphere;
+  if (sky && sky->n_pigments > 0) {
+    zr_vec3 d = zr_v3_norm(dir);
+    if (sky->transform)
+      d = zr_v3_norm(zr__xform_dir(sky->transform->inv, d));
+    for (size_t i = 0; i < sky->n_pigments; i++) {
+      zr_colour c = zr__pigment_eval(sky->pigments[i], d);
+      double opacity = fmax(0.0, 1.0 - c.f - c.t);
+      zr_rgb pass = zr_rgb3(c.f * c.r + c.t, c.f * c.g + c.t,
+                            c.f * c.b + c.t);
+      below = zr_rgb_add(zr_rgb_scale(zr_colour_rgb(c), opacity),
+                         zr_rgb_mul(pass, below));
+      through *= c.f * zr__grey(zr_colour_rgb(c)) + c.t;
+    }
+    below = zr_rgb_mul(below, sky->emission);
+  }
+  *clear = fmin(1.0, fmax(0.0, through));
+  return below;
+}
+
 /* What is behind a fog of colour f and share kk (already limited by
    transmit): dimmed by 1 - kk and tinted by the filter. */
 static zr_rgb fog_dim(zr_rgb colour, zr_colour f, double kk) {
@@ -227,5 +271,19 @@ zr_rgb zr__atmosphere_apply(const zr_scene *scene, zr_vec3 origin,
   }
   if (s->fogs)
     colour = zr_rgb_add(behind, added);
+  return colour;
+}
+
+zr_rgb zr__fog_attenuate(const zr_scene *scene, zr_vec3 origin, zr_vec3 dir,
+                         double t, zr_rgb colour) {
+  double len = zr_v3_len(dir);
+  if (!scene->settings.fogs || len == 0.0)
+    return colour;
+  zr_vec3 unit = zr_v3_scale(dir, 1.0 / len);
+  double d = isinf(t) ? t : t * len;
+  for (const zr_fog *f = scene->settings.fogs; f; f = f->next)
+    colour = fog_dim(colour, f->colour,
+                     fog_amount(f->colour, fog_share(f, origin, unit, d),
+                                1.0));
   return colour;
 }

@@ -27,6 +27,8 @@
 #include <string.h>
 
 #include "core/context.h"
+#include "trace/obj_mesh.h"
+#include "trace/shape.h"
 
 enum {
   LEAF_MAX = 4,     /* a node this small is always a leaf */
@@ -483,6 +485,11 @@ zr_status zr__bvh_build(zr_scene *scene, zr_context *ctx) {
       goto fail;
     }
     collapse(bvh, b.nodes, 0);
+    /* About a third of the room is used (a wide node takes up to three
+       inner binary nodes): give the rest back. */
+    wide_node *fit = realloc(bvh->wide, bvh->n_wide * sizeof *fit);
+    if (fit)
+      bvh->wide = fit;
   }
   free(b.nodes);
   free(items);
@@ -615,13 +622,63 @@ typedef struct wide_entry {
   double t;
 } wide_entry;
 
+/*
+ * The crossings of a sphere that has no transform and no clip, without
+ * normals, as zr__intersect_t finds them through obj_sphere.c: the same
+ * arithmetic in the same order (the same roots, bit for bit), the same
+ * filter and order, but without the table call and the crossing list.
+ * Spheres are most of what a sphereflake's rays test.
+ */
+static inline bool plain_sphere(const zr_object *o) {
+  return o->kind == ZR_OBJ_SPHERE && !o->transform && !o->clip;
+}
+
+static int sphere_t(const zr_object *o, const zr_ray *ray, double tmin,
+                    double tmax, zr_hit hits[ZR_MAX_CROSSINGS]) {
+  zr_vec3 oc = zr_v3_sub(ray->origin, o->u.sphere.centre);
+  double r = o->u.sphere.radius;
+  double a = zr_v3_dot(ray->dir, ray->dir);
+  double b = 2.0 * zr_v3_dot(ray->dir, oc);
+  double c = zr_v3_dot(oc, oc) - r * r;
+  double t[2];
+  if (zr__solve_quadratic(a, b, c, t) != 2)
+    return 0;
+  int n = 0;
+  for (int i = 0; i < 2; i++)
+    if (isfinite(t[i]) && t[i] > tmin && t[i] < tmax) {
+      hits[n].t = t[i];
+      hits[n].normal = zr_v3(0, 0, 0);
+      hits[n].object = o;
+      hits[n].u = hits[n].v = 0.0;
+      n++;
+    }
+  return n;
+}
+
+static inline int crossings_t(const zr_object *o, const zr_ray *ray,
+                              double tmin, double tmax,
+                              zr_hit hits[ZR_MAX_CROSSINGS]) {
+  return plain_sphere(o) ? sphere_t(o, ray, tmin, tmax, hits)
+                         : zr__intersect_t(o, ray, tmin, tmax, hits);
+}
+
+/* The first of crossings_t's crossings, all the search for the nearest
+   surface keeps: a mesh then prunes at its best crossing so far. */
+static inline int first_crossing_t(const zr_object *o, const zr_ray *ray,
+                                   double tmin, double tmax,
+                                   zr_hit hits[ZR_MAX_CROSSINGS]) {
+  if (o->kind == ZR_OBJ_MESH && !o->clip)
+    return zr__mesh_nearest_t(o, ray, tmin, tmax, hits);
+  return crossings_t(o, ray, tmin, tmax, hits);
+}
+
 /* The nearest crossing without its normal. */
 static bool nearest_t(const struct zr_bvh *bvh, const zr_ray *ray,
                       double tmin, double tmax, zr_hit *hit) {
   bool found = false;
   zr_hit h[ZR_MAX_CROSSINGS];
   for (size_t i = 0; i < bvh->n_unbounded; i++)
-    if (zr__intersect_t(bvh->unbounded[i], ray, tmin, tmax, h) > 0) {
+    if (first_crossing_t(bvh->unbounded[i], ray, tmin, tmax, h) > 0) {
       *hit = h[0];
       tmax = h[0].t;
       found = true;
@@ -640,7 +697,7 @@ static bool nearest_t(const struct zr_bvh *bvh, const zr_ray *ray,
       continue;
     if (e.count > 0) {
       for (uint32_t i = e.child; i < e.child + e.count; i++)
-        if (zr__intersect_t(bvh->prims[i], ray, tmin, tmax, h) > 0) {
+        if (first_crossing_t(bvh->prims[i], ray, tmin, tmax, h) > 0) {
           *hit = h[0];
           tmax = h[0].t;
           found = true;
@@ -686,9 +743,15 @@ bool zr__bvh_nearest(const struct zr_bvh *bvh, const zr_ray *ray,
      object whose first crossings the CSG rules removed (lib/trace/csg.c),
      and a part reports only its nearest two. */
   zr_hit h[ZR_MAX_CROSSINGS];
-  double from = hit->t - 1e-9 * fmax(1.0, fabs(hit->t));
-  int n = zr__intersect(hit->object, ray, from > t0 ? from : t0, INFINITY,
-                        h);
+  double margin = 1e-9 * fmax(1.0, fabs(hit->t));
+  double from = hit->t - margin;
+  /* A mesh finds the winner's crossing again at exactly its t (its
+     crossings do not depend on the interval), so a crossing past t
+     could never be nearer to it: the search stops just past t rather
+     than opening every box behind it. */
+  double upto = hit->object->kind == ZR_OBJ_MESH ? hit->t + margin
+                                                 : INFINITY;
+  int n = zr__intersect(hit->object, ray, from > t0 ? from : t0, upto, h);
   /* The crossing nearest the one found: shapes whose roots are refined
      inside the interval searched (lib/trace/roots.c) may place it a
      rounding away from before. */
@@ -728,7 +791,7 @@ bool zr__bvh_all(const struct zr_bvh *bvh, const zr_ray *ray, double tmin,
     wide_entry e = stack[--sp];
     if (e.count > 0) {
       for (uint32_t i = e.child; i < e.child + e.count; i++) {
-        int n = zr__intersect_t(bvh->prims[i], ray, tmin, tmax, h);
+        int n = crossings_t(bvh->prims[i], ray, tmin, tmax, h);
         for (int k = 0; k < n; k++)
           if (!visit(&h[k], user))
             return false;

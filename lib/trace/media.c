@@ -50,8 +50,12 @@
  *     |j_a - j_b| + |k_a - k_b| times the length of the cell that
  *     shows, h (1 - exp(-k h)) / (k h), and the transmittance up to the
  *     cell: about how far the cell's light, as seen from the origin, may
- *     be off) is halved, recursively, up to aa_level times.  A shadow
- *     ray stops once it keeps less than 1e-6 of the light.
+ *     be off) is halved, recursively, up to aa_level times.  Shadow
+ *     rays take the same first n / (n + 1) of each interval with 2 n
+ *     cells and no halving, as measured of POV-Ray
+ *     (bench/media_shadow.py, see reach()).  A shadow ray stops once it
+ *     keeps less than 1e-6 of the light (our own cut: below what 16-bit
+ *     output resolves).
  *   - method 2: min samples evenly spread through the interval (each in
  *     the middle of its share, moved by up to jitter / 2 of it); method
  *     1: min samples at random.  Then, up to max samples, more random
@@ -107,6 +111,7 @@
 #include <string.h>
 
 #include "scene/texture.h"
+#include "trace/atmosphere.h"
 #include "trace/lights.h"
 
 /* Measured by bench/media_sky.sh (see above). */
@@ -354,17 +359,42 @@ static double measure(const sample *a, double len) {
  * coefficients of the point at s0 + reach (s - s0) are used at s), so
  * media whose density varies along the ray look as in POV-Ray's
  * pictures at the scenes' own settings; constant media are unchanged.
- * Shadow rays (not measured) sample the whole interval.
+ *
+ * Shadow rays do the same, measured by bench/media_shadow.py: light
+ * crossing a slab whose absorbing density rises linearly from 0 to 1
+ * along the shadow ray reaches a floor as if the mean density were
+ * 0.344, 0.382 and 0.421 (min samples 3, 5, 9; intervals 1), 0.422
+ * (intervals 2, samples 3) and 0.461 (intervals 3, samples 5), where
+ * the exact mean is 0.5 and samples over the first n / (n + 1) give
+ * 1/3, 3/8, 5/12, 0.417 and 0.458.  A density step scanned across the
+ * slab (the same script's step cases) puts povray's shadow samples at
+ * the ends and middles of n cells of 1 / (n + 1) of the interval:
+ * 2 n cells here.  What povray adds beyond that (about 0.01 of weight
+ * on the interval's far end, varying with the ray) is not reproduced.
+ * Min samples 1 and 2 give the same as 3 in povray's shadows, as n
+ * says.
  */
+static int reach_cells(const march *m) {
+  int least = m->shadow ? 3 : 1;
+  return (m->pl.min_samples < least ? least : m->pl.min_samples) / 2 + 1;
+}
+
 static double reach(const march *m) {
-  if (m->shadow)
-    return 1.0;
-  double n = floor(m->pl.min_samples / 2) + 1;
+  double n = reach_cells(m);
   return n / (n + 1);
 }
 
 static sample reach_sample(const march *m, double s0, double s) {
   sample out = sample_at(m, s0 + m->reach * (s - s0));
+  out.s = s;
+  return out;
+}
+
+/* reach_sample() with its coefficients taken up to shove further on. */
+static sample jittered(march *m, double s0, double s, double shove) {
+  if (!(shove > 0.0))
+    return reach_sample(m, s0, s);
+  sample out = sample_at(m, s0 + m->reach * (s - s0) + shove * uniform(m));
   out.s = s;
   return out;
 }
@@ -388,17 +418,19 @@ static void adaptive_interval(march *m, double s0, double s1) {
   double len = s1 - s0;
   m->reach = reach(m);
   m->interval_start = s0;
-  /* A shadow ray takes min samples points, the interval's ends among
-     them (at least the two ends).  A ray that gathers light takes twice
-     as many cells: what lies between two samples (a beam, a shadow, the
+  /* A shadow ray takes the ends and middles of reach_cells() cells
+     (measured, see reach()).  A ray that gathers light takes 2 (min
+     samples - 1) cells: what lies between two samples (a beam, a shadow, the
      edge of a density) is found by comparing them only when one of them
      falls on it, and with min samples alone the stock scenes' own
-     settings leave visible misses (bench/media_ssim.sh: media5.pov
+     settings leave visible misses (bench/media_warp_ssim.sh: media5.pov
      scores 0.97 against POV-Ray's converged picture with min samples -
      1 cells, 0.998 with twice that). */
   int cells = m->pl.min_samples < 2 ? 1 : m->pl.min_samples - 1;
   if (!m->shadow)
     cells *= 2;
+  else
+    cells = 2 * reach_cells(m);
   if (cells > MAX_CELLS)
     cells = MAX_CELLS;
   /* Shadow rays are not refined: their transmittance is smooth in the
@@ -406,15 +438,22 @@ static void adaptive_interval(march *m, double s0, double s1) {
      light's grid of them). */
   int levels = m->pl.min_samples >= 3 && !m->shadow ? m->pl.aa_level : 0;
   double h = len / cells;
-  sample a = reach_sample(m, s0, s0);
+  /* Shadow rays' jitter moves where each sample's coefficients are
+     taken forward by up to jitter / (n + 1) of the interval (n =
+     reach_cells()): bench/media_shadow.py's "jitter 0.5" case, where
+     povray's mean density rises from 0.344 to 0.429, a shift of 0.085
+     against 0.5 * 0.5 / 3 = 0.083 for samples 3. */
+  double shove = m->shadow ? m->pl.jitter * len / (reach_cells(m) + 1) : 0.0;
+  sample a = jittered(m, s0, s0, shove);
   for (int i = 1; i <= cells; i++) {
-    /* A shadow ray that keeps less than 1e-6 of the light stops. */
+    /* A shadow ray that keeps less than 1e-6 of the light stops (our
+       own cut: 1/65535 is 1.5e-5). */
     if (m->shadow && rgb_max(m->t) < 1e-6)
       return;
     double s = i == cells ? s1 : s0 + i * h;
-    if (i < cells && m->pl.jitter > 0.0)
+    if (!m->shadow && i < cells && m->pl.jitter > 0.0)
       s += m->pl.jitter * h * (uniform(m) - 0.5);
-    sample b = reach_sample(m, s0, s);
+    sample b = jittered(m, s0, s, shove);
     cell(m, &a, &b, levels);
     a = b;
   }
@@ -504,7 +543,7 @@ static int add_roots(double a, double b, double c, double depth,
                      double *cuts, int n) {
   double r[2];
   int k = 0;
-  if (fabs(a) < 1e-14) {
+  if (fabs(a) < 1e-14) { /* ours: a below rounding, the linear case */
     if (b != 0.0)
       r[k++] = -c / b;
   } else {
@@ -681,6 +720,8 @@ zr_rgb zr__media_integrate(const zr_tracer *tracer,
   for (int i = 0; i < np; i++) {
     count[i] = 1;
     double r = lit[i] ? m.pl.ratio : 1.0 - m.pl.ratio;
+    /* ratio 0 or 1 would leave a piece no weight: 1e-6 (ours) keeps
+       every piece in the deal without changing a real share. */
     weight[i] = (ends[i + 1] - ends[i]) * fmax(r, 1e-6);
   }
   if (m.varies)
@@ -743,15 +784,20 @@ zr_rgb zr__media_light_attenuation(const zr_tracer *tracer,
                                    const zr_light *light, zr_vec3 p) {
   const zr_settings *settings = &tracer->scene->settings;
   zr_rgb one = zr_rgb3(1, 1, 1);
-  if (!light->media_attenuation || settings->n_media == 0)
+  if (!light->media_attenuation ||
+      (settings->n_media == 0 && !settings->fogs))
     return one;
   zr_vec3 to_light = zr_v3_sub(light->location, p);
   double len = zr_v3_len(to_light);
   if (!(len > 0.0))
     return one;
+  zr_vec3 unit = zr_v3_scale(to_light, 1.0 / len);
+  /* Fog dims the light too (lib/trace/atmosphere.c). */
+  one = zr__fog_attenuate(tracer->scene, p, unit, len, one);
+  if (settings->n_media == 0)
+    return one;
   return zr__media_integrate(tracer, settings->media, settings->n_media, p,
-                             zr_v3_scale(to_light, 1.0 / len), len, true,
-                             one);
+                             unit, len, true, one);
 }
 
 static int by_crossing(const void *a, const void *b) {

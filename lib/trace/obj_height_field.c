@@ -2,58 +2,364 @@
  * obj_height_field.c - the height field (POV-Ray 3.7 reference, "Height
  * Field"): a grid of heights in [0, 1] over the unit square of the x-z
  * plane, each square of four neighbouring samples cut into two
- * triangles.  The triangles are an ordinary mesh (lib/trace/obj_mesh.c,
- * with its own BVH), built by lib/sdl/build_hf.c; smooth gives them
- * normals interpolated from the grid's slopes.
+ * triangles along the diagonal from (i + 1, j) to (i, j + 1).  The
+ * samples are built by lib/sdl/build_hf.c; smooth gives the triangles
+ * normals interpolated from the grid's central differences.
  *
- * What this file adds is the height field's own rules: water_level hides
- * the surface below it (crossings there are skipped), and the solid is
- * what lies under the surface, above y = 0, within the unit square, so
- * height fields take part in CSG.
+ * The triangles are never stored: a grid of w x h samples would make
+ * 2 (w - 1)(h - 1) of them, 50 bytes each with their BVH, where the
+ * samples take one or two bytes.  A ray walks instead a hierarchy of
+ * blocks over the grid (struct zr_hf_grid): a leaf block holds 8 x 8
+ * squares and the least and greatest height in it, each level above
+ * joins 2 x 2 blocks.  A block the ray's box test misses is skipped;
+ * within a leaf the ray steps from square to square in the x-z plane
+ * (a 2-D DDA), and the two triangles of a square are made from its four
+ * samples and tested as a mesh's faces are (Moller-Trumbore, with the
+ * same corners in the same order, so crossings are those of the mesh
+ * this file used to build).  Radiosity, which needs the faces, gets
+ * them as a mesh from zr__height_field_mesh().
+ *
+ * What the file adds to the triangles is the height field's own rules:
+ * water_level hides the surface below it (triangles wholly under it are
+ * left out, crossings under it are skipped), and the solid is what lies
+ * under the surface, above y = 0, within the unit square, so height
+ * fields take part in CSG.
  */
 #include "trace/obj_isosurface.h"
 
 #include <math.h>
+#include <string.h>
 
+#include "scene/shapes.h"
+#include "trace/obj_mesh.h"
 #include "trace/shape.h"
 
-#include "trace/obj_mesh.h"
+/* The sample at grid point (i, j), z = j / (h - 1); the samples are in
+   image order (row r at z = 1 - r / (h - 1)). */
+static inline double sample_at(const struct zr_hf_grid *g, int i, int j) {
+  size_t k = (size_t)(g->h - 1 - j) * (size_t)g->w + (size_t)i;
+  switch (g->bits) {
+  case 8:
+    return ((const uint8_t *)g->samples)[k] / 255.0;
+  case 16:
+    return ((const uint16_t *)g->samples)[k] / 65535.0;
+  default:
+    return ((const float *)g->samples)[k];
+  }
+}
+
+/* The same, clamped to the grid. */
+static double sample_clamped(const struct zr_hf_grid *g, int i, int j) {
+  i = i < 0 ? 0 : i >= g->w ? g->w - 1 : i;
+  j = j < 0 ? 0 : j >= g->h ? g->h - 1 : j;
+  return sample_at(g, i, j);
+}
+
+zr_status zr__height_field_grid(zr_arena *arena, const void *samples,
+                                int bits, int w, int h,
+                                const struct zr_hf_grid **out) {
+  *out = NULL;
+  struct zr_hf_grid *g = zr__arena_alloc(arena, sizeof *g);
+  if (!g)
+    return ZR_ENOMEM;
+  g->samples = samples;
+  g->bits = bits;
+  g->w = w;
+  g->h = h;
+  int nx = (w - 2) / ZR_HF_BLOCK + 1, nz = (h - 2) / ZR_HF_BLOCK + 1;
+  size_t total = 0;
+  int levels = 0;
+  for (;;) {
+    if (levels == ZR_HF_MAX_LEVELS)
+      return ZR_ELIMIT;
+    g->level[levels].start = total;
+    g->level[levels].nx = nx;
+    g->level[levels].nz = nz;
+    total += (size_t)nx * (size_t)nz;
+    levels++;
+    if (nx == 1 && nz == 1)
+      break;
+    nx = (nx + 1) / 2;
+    nz = (nz + 1) / 2;
+  }
+  g->levels = levels;
+  g->range = zr__arena_alloc(arena, 2 * total * sizeof *g->range);
+  if (!g->range)
+    return ZR_ENOMEM;
+  /* Leaf blocks: the samples of their squares, edges shared. */
+  float *r = g->range;
+  for (int bz = 0; bz < g->level[0].nz; bz++)
+    for (int bx = 0; bx < g->level[0].nx; bx++) {
+      int i0 = bx * ZR_HF_BLOCK, j0 = bz * ZR_HF_BLOCK;
+      int i1 = i0 + ZR_HF_BLOCK < w - 1 ? i0 + ZR_HF_BLOCK : w - 1;
+      int j1 = j0 + ZR_HF_BLOCK < h - 1 ? j0 + ZR_HF_BLOCK : h - 1;
+      double lo = INFINITY, hi = -INFINITY;
+      for (int j = j0; j <= j1; j++)
+        for (int i = i0; i <= i1; i++) {
+          double y = sample_at(g, i, j);
+          lo = fmin(lo, y);
+          hi = fmax(hi, y);
+        }
+      size_t k = (size_t)bz * (size_t)g->level[0].nx + (size_t)bx;
+      r[2 * k] = (float)lo;
+      r[2 * k + 1] = (float)hi;
+    }
+  for (int l = 1; l < levels; l++) {
+    const float *below = g->range + 2 * g->level[l - 1].start;
+    float *here = g->range + 2 * g->level[l].start;
+    int bnx = g->level[l - 1].nx, bnz = g->level[l - 1].nz;
+    for (int bz = 0; bz < g->level[l].nz; bz++)
+      for (int bx = 0; bx < g->level[l].nx; bx++) {
+        float lo = INFINITY, hi = -INFINITY;
+        for (int cz = 2 * bz; cz < 2 * bz + 2 && cz < bnz; cz++)
+          for (int cx = 2 * bx; cx < 2 * bx + 2 && cx < bnx; cx++) {
+            size_t c = (size_t)cz * (size_t)bnx + (size_t)cx;
+            lo = fminf(lo, below[2 * c]);
+            hi = fmaxf(hi, below[2 * c + 1]);
+          }
+        size_t k = (size_t)bz * (size_t)g->level[l].nx + (size_t)bx;
+        here[2 * k] = lo;
+        here[2 * k + 1] = hi;
+      }
+  }
+  const float *top = g->range + 2 * g->level[levels - 1].start;
+  g->lo = top[0];
+  g->hi = top[1];
+  *out = g;
+  return ZR_OK;
+}
+
+/* ---- crossings ---- */
+
+/* The nearest two crossings found so far, nearest first. */
+typedef struct hf_search {
+  const struct zr_hf_grid *g;
+  zr_vec3 org, dir;
+  double tmin, limit; /* limit: tmax, then the second crossing's t */
+  double water;
+  bool smooth;
+  double dx, dz;
+  int n;
+  double t[2];
+  zr_vec3 normal[2];
+} hf_search;
+
+/* The smooth normal at grid point (i, j): central differences, one-sided
+   at the edges. */
+static zr_vec3 vertex_normal(const hf_search *s, int i, int j) {
+  const struct zr_hf_grid *g = s->g;
+  int i0 = i > 0 ? i - 1 : i, i1 = i < g->w - 1 ? i + 1 : i;
+  int j0 = j > 0 ? j - 1 : j, j1 = j < g->h - 1 ? j + 1 : j;
+  double sx = (sample_clamped(g, i1, j) - sample_clamped(g, i0, j)) /
+              ((i1 - i0) * s->dx);
+  double sz = (sample_clamped(g, i, j1) - sample_clamped(g, i, j0)) /
+              ((j1 - j0) * s->dz);
+  return zr_v3(-sx, 1.0, -sz);
+}
+
+/* One triangle p0 p1 p2 (grid points vi[], vj[]), as a mesh's face. */
+static void face(hf_search *s, const zr_vec3 p[3], const int vi[3],
+                 const int vj[3]) {
+  if (p[0].y < s->water && p[1].y < s->water && p[2].y < s->water)
+    return; /* wholly under the water: no triangle */
+  zr_vec3 e1 = zr_v3_sub(p[1], p[0]);
+  zr_vec3 e2 = zr_v3_sub(p[2], p[0]);
+  zr_vec3 pv = zr_v3_cross(s->dir, e2);
+  double det = zr_v3_dot(e1, pv);
+  if (det == 0.0 || !isfinite(det))
+    return;
+  double inv = 1.0 / det;
+  zr_vec3 tv = zr_v3_sub(s->org, p[0]);
+  double u = zr_v3_dot(tv, pv) * inv;
+  if (u < 0.0 || u > 1.0)
+    return;
+  zr_vec3 qv = zr_v3_cross(tv, e1);
+  double v = zr_v3_dot(s->dir, qv) * inv;
+  if (v < 0.0 || u + v > 1.0)
+    return;
+  double t = zr_v3_dot(e2, qv) * inv;
+  if (!(t > s->tmin && t < s->limit))
+    return;
+  if (s->water > 0.0 && s->org.y + t * s->dir.y < s->water)
+    return;
+  /* A ray through an edge or corner meets the triangles that share it
+     at one t: one crossing. */
+  for (int k = 0; k < s->n; k++)
+    if (fabs(t - s->t[k]) <= 1e-12 * fmax(1.0, fabs(t)))
+      return;
+  zr_vec3 n = zr_v3_cross(e1, e2);
+  if (s->smooth) {
+    double w[3] = {1.0 - u - v, u, v};
+    zr_vec3 sn = zr_v3(0, 0, 0);
+    for (int k = 0; k < 3; k++)
+      sn = zr_v3_madd(sn, vertex_normal(s, vi[k], vj[k]), w[k]);
+    if (zr_v3_dot(sn, sn) > 0.0 && isfinite(zr_v3_dot(sn, sn)))
+      n = sn;
+  }
+  int at = s->n < 2 ? s->n++ : 1;
+  s->t[at] = t;
+  s->normal[at] = n;
+  if (s->n == 2 && s->t[1] < s->t[0]) {
+    double tt = s->t[0];
+    zr_vec3 nn = s->normal[0];
+    s->t[0] = s->t[1];
+    s->normal[0] = s->normal[1];
+    s->t[1] = tt;
+    s->normal[1] = nn;
+  }
+  if (s->n == 2)
+    s->limit = s->t[1];
+}
+
+/* The two triangles of square (i, j), as lib/sdl/build_hf.c made them:
+   a c b and b c d, a = (i, j), b = (i + 1, j), c = (i, j + 1),
+   d = (i + 1, j + 1), both facing up. */
+static void square(hf_search *s, int i, int j) {
+  const struct zr_hf_grid *g = s->g;
+  zr_vec3 a = zr_v3(i * s->dx, sample_at(g, i, j), j * s->dz);
+  zr_vec3 b = zr_v3((i + 1) * s->dx, sample_at(g, i + 1, j), j * s->dz);
+  zr_vec3 c = zr_v3(i * s->dx, sample_at(g, i, j + 1), (j + 1) * s->dz);
+  zr_vec3 d =
+      zr_v3((i + 1) * s->dx, sample_at(g, i + 1, j + 1), (j + 1) * s->dz);
+  const zr_vec3 f1[3] = {a, c, b}, f2[3] = {b, c, d};
+  const int i1[3] = {i, i, i + 1}, j1[3] = {j, j + 1, j};
+  const int i2[3] = {i + 1, i, i + 1}, j2[3] = {j, j + 1, j + 1};
+  face(s, f1, i1, j1);
+  face(s, f2, i2, j2);
+}
+
+/* The ray's entry into the box [lo, hi] within (tmin, limit), or
+   INFINITY when it misses; *exit gets where it leaves. */
+static double box_entry(const hf_search *s, zr_vec3 lo, zr_vec3 hi,
+                        double *exit) {
+  double t0 = s->tmin, t1 = s->limit;
+  const double o[3] = {s->org.x, s->org.y, s->org.z};
+  const double d[3] = {s->dir.x, s->dir.y, s->dir.z};
+  const double l[3] = {lo.x, lo.y, lo.z}, h[3] = {hi.x, hi.y, hi.z};
+  for (int k = 0; k < 3; k++) {
+    if (d[k] == 0.0) {
+      if (o[k] < l[k] || o[k] > h[k])
+        return INFINITY;
+      continue;
+    }
+    double a = (l[k] - o[k]) / d[k], b = (h[k] - o[k]) / d[k];
+    if (a > b) {
+      double t = a;
+      a = b;
+      b = t;
+    }
+    t0 = fmax(t0, a);
+    t1 = fmin(t1, b);
+    if (!(t0 <= t1))
+      return INFINITY;
+  }
+  *exit = t1;
+  return t0;
+}
+
+/* Steps through the squares [i0, i1) x [j0, j1) of a leaf block the ray
+   crosses in the x-z plane, from its entry at t = ta. */
+static void walk_leaf(hf_search *s, int i0, int i1, int j0, int j1,
+                      double ta) {
+  double px = s->org.x + ta * s->dir.x, pz = s->org.z + ta * s->dir.z;
+  int i = (int)floor(px / s->dx), j = (int)floor(pz / s->dz);
+  i = i < i0 ? i0 : i >= i1 ? i1 - 1 : i;
+  j = j < j0 ? j0 : j >= j1 ? j1 - 1 : j;
+  int si = s->dir.x > 0.0 ? 1 : s->dir.x < 0.0 ? -1 : 0;
+  int sj = s->dir.z > 0.0 ? 1 : s->dir.z < 0.0 ? -1 : 0;
+  double tx = si ? ((i + (si > 0)) * s->dx - s->org.x) / s->dir.x
+                 : INFINITY;
+  double tz = sj ? ((j + (sj > 0)) * s->dz - s->org.z) / s->dir.z
+                 : INFINITY;
+  double step_x = si ? s->dx / fabs(s->dir.x) : INFINITY;
+  double step_z = sj ? s->dz / fabs(s->dir.z) : INFINITY;
+  /* Bounded by the squares of the block (a diagonal step visits one). */
+  for (int left = 2 * ZR_HF_BLOCK + 2; left > 0; left--) {
+    square(s, i, j);
+    double next = fmin(tx, tz);
+    if (!(next < s->limit))
+      return;
+    if (tx <= tz) {
+      i += si;
+      tx += step_x;
+    } else {
+      j += sj;
+      tz += step_z;
+    }
+    if (i < i0 || i >= i1 || j < j0 || j >= j1)
+      return;
+  }
+}
 
 int zr__height_field_crossings(const zr_object *o, zr_vec3 org,
                                zr_vec3 dir, double tmin, double tmax,
                                double t[4], zr_vec3 normal[4]) {
-  const double water = o->u.height_field.water_level;
-  int found = 0;
-  if (o->u.height_field.data->n_faces == 0)
+  const struct zr_hf_grid *g = o->u.height_field.grid;
+  double water = o->u.height_field.water_level;
+  if (!g || g->hi < water)
     return 0;
-  /* Each round gives the mesh's next two crossings; those under the
-     water are dropped and the search goes on beyond them. */
-  for (int round = 0; round < 1000 && found < 2; round++) {
-    zr_mesh_crossing c[2];
-    int k = zr__mesh_crossings(o->u.height_field.data, org, dir, tmin, tmax,
-                               c);
-    for (int i = 0; i < k && found < 2; i++) {
-      if (water > 0.0 && org.y + c[i].t * dir.y < water)
-        continue;
-      /* A ray through an edge or corner meets the triangles that share
-         it at one t: one crossing. */
-      if (found > 0 &&
-          fabs(c[i].t - t[found - 1]) <= 1e-12 * fmax(1.0, fabs(c[i].t)))
-        continue;
-      t[found] = c[i].t;
-      normal[found] = c[i].normal;
-      found++;
+  hf_search s = {.g = g, .org = org, .dir = dir, .tmin = tmin,
+                 .limit = tmax, .water = water,
+                 .smooth = o->u.height_field.smooth,
+                 .dx = 1.0 / (g->w - 1), .dz = 1.0 / (g->h - 1)};
+  /* Blocks as (level, bx, bz); children are pushed far first so that
+     the nearest is walked first and the second crossing found early
+     narrows the rest. */
+  struct {
+    int level, bx, bz;
+  } stack[4 * ZR_HF_MAX_LEVELS];
+  int sp = 0;
+  stack[sp].level = g->levels - 1;
+  stack[sp].bx = stack[sp].bz = 0;
+  sp++;
+  /* Boxes grow by this much: the ranges are floats, the samples
+     doubles. */
+  const double pad = 1e-6;
+  int near_x = dir.x >= 0.0 ? 0 : 1, near_z = dir.z >= 0.0 ? 0 : 1;
+  while (sp > 0) {
+    sp--;
+    int l = stack[sp].level, bx = stack[sp].bx, bz = stack[sp].bz;
+    const float *r = g->range + 2 * (g->level[l].start +
+                                     (size_t)bz * (size_t)g->level[l].nx +
+                                     (size_t)bx);
+    if (r[1] < water)
+      continue; /* every triangle in it is under the water */
+    int side = ZR_HF_BLOCK << l;
+    int i0 = bx * side, j0 = bz * side;
+    int i1 = i0 + side < g->w - 1 ? i0 + side : g->w - 1;
+    int j1 = j0 + side < g->h - 1 ? j0 + side : g->h - 1;
+    zr_vec3 lo = zr_v3(i0 * s.dx - pad, r[0] - pad, j0 * s.dz - pad);
+    zr_vec3 hi = zr_v3(i1 * s.dx + pad, r[1] + pad, j1 * s.dz + pad);
+    double exit;
+    double ta = box_entry(&s, lo, hi, &exit);
+    if (ta == INFINITY)
+      continue;
+    if (l == 0) {
+      walk_leaf(&s, i0, i1, j0, j1, ta);
+      continue;
     }
-    if (k < 2 || !(c[1].t > tmin))
-      break;
-    tmin = c[1].t;
+    for (int k = 3; k >= 0; k--) {
+      /* k = 0 is the child nearest the ray's origin, 3 the farthest. */
+      int cx = 2 * bx + ((k & 1) ^ near_x);
+      int cz = 2 * bz + (((k >> 1) & 1) ^ near_z);
+      if (cx < g->level[l - 1].nx && cz < g->level[l - 1].nz) {
+        stack[sp].level = l - 1;
+        stack[sp].bx = cx;
+        stack[sp].bz = cz;
+        sp++;
+      }
+    }
   }
-  return found;
+  for (int k = 0; k < s.n; k++) {
+    t[k] = s.t[k];
+    normal[k] = s.normal[k];
+  }
+  return s.n;
 }
 
 double zr__height_field_height(const zr_object *o, double x, double z) {
-  int w = o->u.height_field.w, h = o->u.height_field.h;
-  const float *hs = o->u.height_field.heights;
+  const struct zr_hf_grid *g = o->u.height_field.grid;
+  int w = g->w, h = g->h;
   double fx = fmin(fmax(x, 0.0), 1.0) * (w - 1);
   double fz = fmin(fmax(z, 0.0), 1.0) * (h - 1);
   int i = (int)fx, j = (int)fz;
@@ -62,11 +368,10 @@ double zr__height_field_height(const zr_object *o, double x, double z) {
   if (j > h - 2)
     j = h - 2;
   double u = fx - i, v = fz - j;
-  double h00 = hs[(size_t)j * w + i], h10 = hs[(size_t)j * w + i + 1];
-  double h01 = hs[(size_t)(j + 1) * w + i];
-  double h11 = hs[(size_t)(j + 1) * w + i + 1];
-  /* The square's diagonal runs from (i + 1, j) to (i, j + 1), as
-     lib/sdl/build_hf.c cuts it. */
+  double h00 = sample_at(g, i, j), h10 = sample_at(g, i + 1, j);
+  double h01 = sample_at(g, i, j + 1), h11 = sample_at(g, i + 1, j + 1);
+  /* The square's diagonal runs from (i + 1, j) to (i, j + 1), as the
+     crossings cut it. */
   if (u + v <= 1.0)
     return h00 + u * (h10 - h00) + v * (h01 - h00);
   return h11 + (1.0 - u) * (h01 - h11) + (1.0 - v) * (h10 - h11);
@@ -79,14 +384,76 @@ bool zr__height_field_inside(const zr_object *o, zr_vec3 p) {
 }
 
 bool zr__height_field_bounds(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi) {
-  const struct zr_mesh *m = o->u.height_field.data;
-  if (m->n_faces == 0)
+  const struct zr_hf_grid *g = o->u.height_field.grid;
+  double water = o->u.height_field.water_level;
+  /* Every sample is a corner of a triangle: none is left when all lie
+     under the water. */
+  if (!g || g->hi < water)
     return false;
-  *lo = m->lo;
-  *hi = m->hi;
-  lo->y = fmax(lo->y, o->u.height_field.water_level);
-  hi->y = fmax(hi->y, lo->y);
+  *lo = zr_v3(0, fmax(g->lo, water), 0);
+  *hi = zr_v3(1, fmax(g->hi, lo->y), 1);
   return true;
+}
+
+/* ---- the triangles as a mesh, for radiosity ---- */
+
+zr_status zr__height_field_mesh(const zr_object *o, zr_arena *arena,
+                                const struct zr_mesh **out) {
+  *out = NULL;
+  const struct zr_hf_grid *g = o->u.height_field.grid;
+  int w = g->w, h = g->h;
+  bool smooth = o->u.height_field.smooth;
+  double water = o->u.height_field.water_level;
+  size_t nv = (size_t)w * (size_t)h;
+  size_t nf = 2 * (size_t)(w - 1) * (size_t)(h - 1);
+  if (nv > UINT32_MAX)
+    return ZR_ELIMIT;
+  struct zr_mesh *m = zr__arena_alloc(arena, sizeof *m);
+  if (!m)
+    return ZR_ENOMEM;
+  memset(m, 0, sizeof *m);
+  m->vertices = zr__arena_alloc(arena, nv * sizeof *m->vertices);
+  m->faces = zr__arena_alloc(arena, nf * sizeof *m->faces);
+  if (smooth) {
+    m->normals = zr__arena_alloc(arena, nv * sizeof *m->normals);
+    m->face_normals = zr__arena_alloc(arena, nf * sizeof *m->face_normals);
+  }
+  if (!m->vertices || !m->faces ||
+      (smooth && (!m->normals || !m->face_normals)))
+    return ZR_ENOMEM;
+  hf_search s = {.g = g, .dx = 1.0 / (w - 1), .dz = 1.0 / (h - 1)};
+  for (int j = 0; j < h; j++)
+    for (int i = 0; i < w; i++) {
+      size_t k = (size_t)j * w + i;
+      m->vertices[k] = zr_v3(i * s.dx, sample_at(g, i, j), j * s.dz);
+      if (smooth)
+        m->normals[k] = vertex_normal(&s, i, j);
+    }
+  m->n_vertices = m->cap_vertices = nv;
+  m->n_normals = m->cap_normals = smooth ? nv : 0;
+  m->cap_faces = nf;
+  for (int j = 0; j + 1 < h; j++)
+    for (int i = 0; i + 1 < w; i++) {
+      uint32_t a = (uint32_t)((size_t)j * w + i), b = a + 1;
+      uint32_t c = a + (uint32_t)w, d = c + 1;
+      const uint32_t tri[2][3] = {{a, c, b}, {b, c, d}};
+      for (int k = 0; k < 2; k++) {
+        const uint32_t *v = tri[k];
+        if (m->vertices[v[0]].y < water && m->vertices[v[1]].y < water &&
+            m->vertices[v[2]].y < water)
+          continue;
+        size_t f = m->n_faces++;
+        memcpy(m->faces[f], v, sizeof m->faces[f]);
+        if (m->face_normals)
+          memcpy(m->face_normals[f], v, sizeof m->face_normals[f]);
+      }
+    }
+  size_t bad = 0;
+  zr_status st = zr__mesh_build(m, arena, &bad);
+  if (st != ZR_OK)
+    return st;
+  *out = m;
+  return ZR_OK;
 }
 
 /* The operations the tracer calls through (lib/trace/shape.h). */

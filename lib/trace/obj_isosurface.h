@@ -29,6 +29,17 @@ bool zr__height_field_inside(const zr_object *o, zr_vec3 p);
 bool zr__height_field_bounds(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi);
 /* The height of the triangles at (x, z) in [0, 1]^2 (object space). */
 double zr__height_field_height(const zr_object *o, double x, double z);
+/* The samples (w x h, image order, 8 or 16-bit codes or floats, kept
+   by pointer) and their block hierarchy, made in arena. */
+struct zr_hf_grid;
+zr_status zr__height_field_grid(zr_arena *arena, const void *samples,
+                                int bits, int w, int h,
+                                const struct zr_hf_grid **out);
+/* The height field's triangles as a mesh with its BVH, in arena (for
+   radiosity, which models faces). */
+struct zr_mesh;
+zr_status zr__height_field_mesh(const zr_object *o, zr_arena *arena,
+                                const struct zr_mesh **out);
 
 /* A parametric surface has no inside (it is a shell). */
 int zr__parametric_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,

@@ -531,6 +531,91 @@ int zr__mesh_crossings(const struct zr_mesh *m, zr_vec3 org, zr_vec3 dir,
   return n;
 }
 
+/*
+ * The nearest crossing alone, for the tracer's search of the nearest
+ * surface: the first of zr__mesh_crossings' two, the least (t, face),
+ * found with nodes visited nearest first and pruned at the best t so far
+ * (the search for two prunes only at its second crossing, which a
+ * terrain seldom has: every box behind the hit was opened).  Faces are
+ * stored in leaf order, so the least face index among equal t is the
+ * one the search for two keeps first.
+ */
+int zr__mesh_nearest(const struct zr_mesh *m, zr_vec3 org, zr_vec3 dir,
+                     double tmin, double tmax, zr_mesh_crossing *out) {
+  if (m->n_nodes == 0)
+    return 0;
+  slab_ray sr;
+  make_slab(org, dir, &sr);
+  raw_hit best;
+  bool found = false;
+  double limit = tmax;
+  struct {
+    uint32_t node;
+    double entry;
+  } stack[STACK_MAX];
+  int sp = 0;
+  double root = node_entry(&m->nodes[0], &sr, tmin, limit);
+  if (root != INFINITY)
+    stack[sp++].node = 0, stack[0].entry = root;
+  while (sp > 0) {
+    sp--;
+    if (stack[sp].entry > limit)
+      continue;
+    const zr_mesh_node *node = &m->nodes[stack[sp].node];
+    if (node->count > 0) {
+      for (uint32_t f = node->first; f < node->first + node->count; f++) {
+        raw_hit h;
+        if (!face_hit(m, f, org, dir, &h.t, &h.u, &h.v) ||
+            !(h.t > tmin && h.t < tmax))
+          continue;
+        h.face = f;
+        if (!found || h.t < best.t || (h.t == best.t && h.face < best.face)) {
+          best = h;
+          found = true;
+          limit = h.t;
+        }
+      }
+      continue;
+    }
+    uint32_t kids[2] = {(uint32_t)(node - m->nodes) + 1, node->first};
+    double e[2];
+    for (int k = 0; k < 2; k++)
+      e[k] = node_entry(&m->nodes[kids[k]], &sr, tmin, limit);
+    /* The farther child goes on the stack first, to be opened last. */
+    int near = e[1] < e[0];
+    for (int k = 0; k < 2; k++) {
+      int c = k == 0 ? 1 - near : near;
+      if (e[c] != INFINITY && sp < STACK_MAX) {
+        stack[sp].node = kids[c];
+        stack[sp++].entry = e[c];
+      }
+    }
+  }
+  if (found)
+    *out = finish_hit(m, &best);
+  return found;
+}
+
+int zr__mesh_nearest_t(const zr_object *o, const zr_ray *ray, double tmin,
+                       double tmax, zr_hit *hit) {
+  /* As zr__intersect_t takes a mesh (intersect.c): in the mesh's own
+     space, the first crossing, no normal. */
+  zr_vec3 org = ray->origin, dir = ray->dir;
+  if (o->transform) {
+    org = zr__xform_point(o->transform->inv, org);
+    dir = zr__xform_dir(o->transform->inv, dir);
+  }
+  zr_mesh_crossing c;
+  if (!zr__mesh_nearest(o->u.mesh.data, org, dir, tmin, tmax, &c))
+    return 0;
+  hit->t = c.t;
+  hit->normal = zr_v3(0, 0, 0);
+  hit->object = zr__mesh_hit_object(o, c.texture);
+  hit->u = c.u;
+  hit->v = c.v;
+  return 1;
+}
+
 bool zr__mesh_inside(const struct zr_mesh *m, zr_vec3 p) {
   if (!m->has_inside || m->n_nodes == 0)
     return false;

@@ -30,6 +30,15 @@ zr_status zr__mesh_build(struct zr_mesh *mesh, zr_arena *arena,
 /* The nearest two crossings with tmin < t < tmax, nearest first. */
 int zr__mesh_crossings(const struct zr_mesh *mesh, zr_vec3 org, zr_vec3 dir,
                        double tmin, double tmax, zr_mesh_crossing out[2]);
+/* The first of those two alone (0 or 1 of them), found faster. */
+int zr__mesh_nearest(const struct zr_mesh *mesh, zr_vec3 org, zr_vec3 dir,
+                     double tmin, double tmax, zr_mesh_crossing *out);
+/* The same for a mesh object without clipped_by, as zr__intersect_t's
+   first hit (trace/intersect.h's zr_ray and zr_hit). */
+struct zr_ray;
+struct zr_hit;
+int zr__mesh_nearest_t(const zr_object *o, const struct zr_ray *ray,
+                       double tmin, double tmax, struct zr_hit *hit);
 
 /* Whether p (mesh coordinates) is inside: an odd number of crossings
    along the inside vector.  False when the mesh has no inside_vector. */

@@ -68,7 +68,8 @@ static const zr_interior *parts_interior(const zr_object *o, bool *mixed) {
 static zr_object *resolve_part(zr_scene *scene, const zr_object *object,
                                const zr_texture *inherited,
                                const zr_object *solid) {
-  zr_object *copy = zr__arena_memdup(&scene->arena, object, sizeof *copy);
+  zr_object *copy = zr__arena_memdup(&scene->arena, object,
+                                     zr__object_size(object->kind));
   if (!copy)
     return NULL;
   copy->texture = object->texture ? object->texture : inherited;

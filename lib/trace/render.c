@@ -64,6 +64,7 @@ ZR_API void zr_render_params_init(zr_render_params *p) {
   p->path_first_sample = 0;
   p->threads = 1;
   p->context = NULL;
+  p->alpha = 0;
 }
 
 ZR_API void zr_render_stats_add(zr_render_stats *a,
@@ -119,6 +120,9 @@ double zr__hash_uniform(uint32_t pixel, uint32_t sample, uint32_t axis) {
 typedef struct pixel_job {
   zr_tracer tracer;
   zr_media camera_media;
+  /* +UA: the clear share the sample being traced adds up
+     (tracer.clear points here). */
+  double clear;
 } pixel_job;
 
 /*
@@ -199,6 +203,8 @@ static zr_rgb focal_blur(const pixel_job *job, const zr_render_params *p,
     }
   }
   tr->stats->supersample_rays += (uint64_t)(n > 0 ? n - 1 : 0);
+  if (tr->clear) /* the samples' mean */
+    *tr->clear /= n;
   return zr_rgb_scale(sum, 1.0 / n);
 }
 
@@ -227,11 +233,15 @@ static zr_rgb mesh_sample(const pixel_job *job, const zr_render_params *p,
   }
   if (n > 1)
     tr->stats->supersample_rays += (uint64_t)(n - 1);
+  if (tr->clear) /* the mean of the rays, clear without any */
+    *tr->clear = n > 0 ? *tr->clear / n : 1.0;
   return n > 0 ? zr_rgb_scale(sum, 1.0 / n) : sum;
 }
 
-static void trace_point(const pixel_job *job, const zr_render_params *p,
-                        double x, double y, zr_rgb *out) {
+/* The colour at (x, y), and in *alpha its alpha (1 without +UA). */
+static void trace_point_clear(const pixel_job *job,
+                              const zr_render_params *p, double x,
+                              double y, zr_rgb *out) {
   const zr_tracer *tr = &job->tracer;
   const zr_camera *c = &tr->scene->camera;
   if (c->kind == ZR_CAMERA_MESH) {
@@ -244,16 +254,31 @@ static void trace_point(const pixel_job *job, const zr_render_params *p,
   }
   zr_ray ray = zr__camera_ray(c, p->width, p->height, x, y);
   if (zr_v3_len(ray.dir) == 0.0) {
-    *out = zr_rgb3(0, 0, 0); /* outside a fisheye's circle */
+    /* Outside a fisheye's circle: black, and clear (measured). */
+    *out = zr_rgb3(0, 0, 0);
+    if (tr->clear)
+      *tr->clear = 1.0;
     return;
   }
   *out = zr__trace_ray(tr, &ray, 1, 1.0, &job->camera_media);
 }
 
-static void store(float *dst, zr_rgb c) {
+static void trace_point(const pixel_job *job, const zr_render_params *p,
+                        double x, double y, zr_rgb *out, double *alpha) {
+  double *clear = job->tracer.clear;
+  if (clear)
+    *clear = 0.0;
+  trace_point_clear(job, p, x, y, out);
+  *alpha = clear ? 1.0 - fmin(1.0, fmax(0.0, *clear)) : 1.0;
+}
+
+/* A pixel's floats: the colour, then with +UA the alpha. */
+static void store(float *dst, zr_rgb c, double alpha, int channels) {
   dst[0] = (float)c.r;
   dst[1] = (float)c.g;
   dst[2] = (float)c.b;
+  if (channels == 4)
+    dst[3] = (float)alpha;
 }
 
 /* Whether the centre of pixel (x, y) differs from a neighbour's by more
@@ -262,7 +287,8 @@ static bool needs_supersampling(const zr_render_params *p,
                                 const float *centres, int x, int y,
                                 double exponent) {
   static const int dx[4] = {-1, 1, 0, 0}, dy[4] = {0, 0, -1, 1};
-  const float *c = centres + 3 * ((size_t)y * p->width + x);
+  size_t ch = p->alpha ? 4 : 3;
+  const float *c = centres + ch * ((size_t)y * p->width + x);
   for (int k = 0; k < 4; k++) {
     int nx = x + dx[k], ny = y + dy[k];
     if (nx < 0 || ny < 0 || nx >= p->width || ny >= p->height)
@@ -272,7 +298,7 @@ static bool needs_supersampling(const zr_render_params *p,
     if ((dx[k] > 0 && nx % ZR_AA_BLOCK == 0) ||
         (dy[k] > 0 && ny % ZR_AA_BLOCK == 0))
       continue;
-    const float *n = centres + 3 * ((size_t)ny * p->width + nx);
+    const float *n = centres + ch * ((size_t)ny * p->width + nx);
     if (zr__colour_difference(c, n, exponent) > p->aa_threshold)
       return true;
   }
@@ -287,9 +313,10 @@ static bool needs_supersampling(const zr_render_params *p,
  */
 static zr_rgb supersample(const pixel_job *job, const zr_render_params *p,
                           const float *centre, uint32_t pixel, int x,
-                          int y) {
+                          int y, double *alpha) {
   int n = p->aa_depth;
   zr_rgb sum = zr_rgb3(centre[0], centre[1], centre[2]);
+  double alpha_sum = p->alpha ? centre[3] : 1.0;
   for (int j = 0; j < n; j++)
     for (int i = 0; i < n; i++) {
       double sx = (i + 0.5) / n, sy = (j + 0.5) / n;
@@ -299,12 +326,15 @@ static zr_rgb supersample(const pixel_job *job, const zr_render_params *p,
         sy += (zr__hash_uniform(pixel, k, 1) - 0.5) * p->jitter_amount / n;
       }
       zr_rgb c;
-      trace_point(job, p, x + sx, y + sy, &c);
+      double a;
+      trace_point(job, p, x + sx, y + sy, &c, &a);
       sum = zr_rgb_add(sum, c);
+      alpha_sum += a;
     }
   const zr_tracer *tr = &job->tracer;
   tr->stats->supersample_rays += (uint64_t)n * (uint64_t)n;
   tr->stats->supersampled_pixels++;
+  *alpha = alpha_sum / (n * n + 1); /* povray averages it (measured) */
   return zr_rgb_scale(sum, 1.0 / (n * n + 1));
 }
 
@@ -325,7 +355,7 @@ typedef struct aa_square {
 } aa_square;
 
 static zr_rgb corner(aa_square *q, double x, double y, double size,
-                     bool pixel_corner) {
+                     bool pixel_corner, double *alpha) {
   const zr_render_params *p = q->p;
   if (p->jitter && !pixel_corner) {
     uint32_t k = q->samples;
@@ -334,12 +364,14 @@ static zr_rgb corner(aa_square *q, double x, double y, double size,
   }
   q->samples++;
   zr_rgb c;
-  trace_point(q->job, p, x, y, &c);
+  trace_point(q->job, p, x, y, &c, alpha);
   return c;
 }
 
+/* The square's colour, and its alpha in *alpha from the corners' a. */
 static zr_rgb recursive_square(aa_square *q, double x, double y,
-                               double size, int level, const zr_rgb c[4]) {
+                               double size, int level, const zr_rgb c[4],
+                               const double a[4], double *alpha) {
   float f[4][3];
   for (int i = 0; i < 4; i++)
     f[i][0] = (float)c[i].r, f[i][1] = (float)c[i].g, f[i][2] = (float)c[i].b;
@@ -350,36 +382,46 @@ static zr_rgb recursive_square(aa_square *q, double x, double y,
               q->p->aa_threshold;
   if (!split || level >= q->p->aa_depth) {
     zr_rgb sum = zr_rgb_add(zr_rgb_add(c[0], c[1]), zr_rgb_add(c[2], c[3]));
+    *alpha = 0.25 * (a[0] + a[1] + a[2] + a[3]);
     return zr_rgb_scale(sum, 0.25);
   }
   /* The five new points: the edges' middles and the centre. */
   double h = 0.5 * size;
-  zr_rgb top = corner(q, x + h, y, h, false);
-  zr_rgb left = corner(q, x, y + h, h, false);
-  zr_rgb mid = corner(q, x + h, y + h, h, false);
-  zr_rgb right = corner(q, x + size, y + h, h, false);
-  zr_rgb bottom = corner(q, x + h, y + size, h, false);
+  double at, al, am, ar, ab;
+  zr_rgb top = corner(q, x + h, y, h, false, &at);
+  zr_rgb left = corner(q, x, y + h, h, false, &al);
+  zr_rgb mid = corner(q, x + h, y + h, h, false, &am);
+  zr_rgb right = corner(q, x + size, y + h, h, false, &ar);
+  zr_rgb bottom = corner(q, x + h, y + size, h, false, &ab);
   zr_rgb q0[4] = {c[0], top, left, mid};
   zr_rgb q1[4] = {top, c[1], mid, right};
   zr_rgb q2[4] = {left, mid, c[2], bottom};
   zr_rgb q3[4] = {mid, right, bottom, c[3]};
-  zr_rgb sum = recursive_square(q, x, y, h, level + 1, q0);
-  sum = zr_rgb_add(sum, recursive_square(q, x + h, y, h, level + 1, q1));
-  sum = zr_rgb_add(sum, recursive_square(q, x, y + h, h, level + 1, q2));
-  sum = zr_rgb_add(sum,
-                   recursive_square(q, x + h, y + h, h, level + 1, q3));
+  double a0[4] = {a[0], at, al, am}, a1[4] = {at, a[1], am, ar};
+  double a2[4] = {al, am, a[2], ab}, a3[4] = {am, ar, ab, a[3]};
+  double s0, s1, s2, s3;
+  zr_rgb sum = recursive_square(q, x, y, h, level + 1, q0, a0, &s0);
+  sum = zr_rgb_add(sum, recursive_square(q, x + h, y, h, level + 1, q1, a1,
+                                         &s1));
+  sum = zr_rgb_add(sum, recursive_square(q, x, y + h, h, level + 1, q2, a2,
+                                         &s2));
+  sum = zr_rgb_add(sum, recursive_square(q, x + h, y + h, h, level + 1, q3,
+                                         a3, &s3));
+  *alpha = 0.25 * (s0 + s1 + s2 + s3);
   return zr_rgb_scale(sum, 0.25);
 }
 
 static zr_rgb supersample_recursive(const pixel_job *job,
                                     const zr_render_params *p,
                                     uint32_t pixel, int x, int y,
-                                    double exponent) {
+                                    double exponent, double *alpha) {
   aa_square q = {job, p, pixel, 0, exponent};
-  zr_rgb c[4] = {corner(&q, x, y, 1.0, true), corner(&q, x + 1, y, 1.0, true),
-                 corner(&q, x, y + 1, 1.0, true),
-                 corner(&q, x + 1, y + 1, 1.0, true)};
-  zr_rgb v = recursive_square(&q, x, y, 1.0, 0, c);
+  double a[4];
+  zr_rgb c[4] = {corner(&q, x, y, 1.0, true, &a[0]),
+                 corner(&q, x + 1, y, 1.0, true, &a[1]),
+                 corner(&q, x, y + 1, 1.0, true, &a[2]),
+                 corner(&q, x + 1, y + 1, 1.0, true, &a[3])};
+  zr_rgb v = recursive_square(&q, x, y, 1.0, 0, c, a, alpha);
   const zr_tracer *tr = &job->tracer;
   tr->stats->supersample_rays += q.samples;
   if (q.samples > 4)
@@ -417,6 +459,10 @@ static zr_status check_params(const zr_scene *scene,
                        p->path_first_sample < 0))
     *what = "the path tracer is for another scene, is combined with "
             "radiosity or a cache, or has no samples";
+  else if (p->alpha != 0 && p->alpha != 1)
+    *what = "alpha must be 0 or 1";
+  else if (p->alpha && p->path)
+    *what = "alpha (+UA) is not supported with the path tracer";
   if (*what)
     return ZR_EINVAL;
   if (!scene->bvh && scene->n_primitives > 0) {
@@ -483,6 +529,14 @@ static zr_status render_pixels(const zr_scene *scene,
   zr__tracer_quality(&job.tracer, params->quality);
   job.tracer.skip_sampled_emission = false;
   job.tracer.bailout = 0.0; /* the scene's adc_bailout */
+  job.clear = 0.0;
+  job.tracer.clear = params->alpha ? &job.clear : NULL;
+  job.tracer.clear_weight = 1.0;
+  /* One cache for this call's pixels: a row's neighbours tend to be
+     shadowed by the same object. */
+  zr_shadow_cache shadow_cache;
+  memset(&shadow_cache, 0, sizeof shadow_cache);
+  job.tracer.shadow_cache = &shadow_cache;
   if (camera_media)
     job.camera_media = *camera_media;
   else
@@ -492,31 +546,37 @@ static zr_status render_pixels(const zr_scene *scene,
      "Anti-Aliasing Options"), so dark edges are refined as readily as
      bright ones. */
   double exponent = scene->settings.assumed_gamma / ZR_AA_GAMMA;
+  int ch = params->alpha ? 4 : 3;
   for (size_t i = 0; i < count; i++) {
     uint32_t pixel = pixels[i];
     int x = (int)(pixel % (uint32_t)params->width);
     int y = (int)(pixel / (uint32_t)params->width);
-    float *out = rgb + 3 * i;
+    float *out = rgb + (size_t)ch * i;
+    const float *centre = centres ? centres + (size_t)ch * pixel : NULL;
+    double a = 1.0;
     if (params->path && !centres) {
       /* The path tracer samples the pixel's area itself (lib/gi). */
       store(out, zr__path_pixel(params->path, &job.tracer,
-                                &job.camera_media, params, pixel, x, y));
+                                &job.camera_media, params, pixel, x, y),
+            a, ch);
       local.camera_rays += (uint64_t)params->path_samples;
     } else if (params->path) {
-      memcpy(out, centres + 3 * (size_t)pixel, 3 * sizeof *out);
+      memcpy(out, centre, (size_t)ch * sizeof *out);
     } else if (!centres) {
       zr_rgb c;
-      trace_point(&job, params, x + 0.5, y + 0.5, &c);
+      trace_point(&job, params, x + 0.5, y + 0.5, &c, &a);
       local.camera_rays++;
-      store(out, c);
+      store(out, c, a, ch);
     } else if (params->antialias && params->aa_method == 2) {
-      store(out, supersample_recursive(&job, params, pixel, x, y, exponent));
+      zr_rgb c = supersample_recursive(&job, params, pixel, x, y, exponent,
+                                       &a);
+      store(out, c, a, ch);
     } else if (params->antialias &&
                needs_supersampling(params, centres, x, y, exponent)) {
-      store(out, supersample(&job, params, centres + 3 * (size_t)pixel,
-                             pixel, x, y));
+      zr_rgb c = supersample(&job, params, centre, pixel, x, y, &a);
+      store(out, c, a, ch);
     } else {
-      memcpy(out, centres + 3 * (size_t)pixel, 3 * sizeof *out);
+      memcpy(out, centre, (size_t)ch * sizeof *out);
     }
   }
   if (stats)
@@ -601,7 +661,8 @@ static void render_rows(void *user, size_t begin, size_t end, int worker) {
       int n = width - x0 < 256 ? width - x0 : 256;
       for (int k = 0; k < n; k++)
         pixels[k] = (uint32_t)(y * (size_t)width + (size_t)(x0 + k));
-      float *dst = job->out + 3 * (y * (size_t)width + (size_t)x0);
+      size_t ch = job->params->alpha ? 4 : 3;
+      float *dst = job->out + ch * (y * (size_t)width + (size_t)x0);
       zr_status s = render_pixels(job->scene, job->params, pixels,
                                   (size_t)n, job->centres, dst,
                                   &job->slots[worker].stats,
@@ -641,7 +702,8 @@ ZR_API zr_status zr_render_image(const zr_scene *scene,
                 : p.threads > ZR__MAX_THREADS ? ZR__MAX_THREADS
                                                : p.threads;
   size_t n = (size_t)p.width * (size_t)p.height;
-  float *centres = p.antialias ? malloc(n * 3 * sizeof *centres) : NULL;
+  size_t ch = p.alpha ? 4 : 3;
+  float *centres = p.antialias ? malloc(n * ch * sizeof *centres) : NULL;
   row_stats *slots = aligned_alloc(64, (size_t)threads * sizeof *slots);
   if ((p.antialias && !centres) || !slots) {
     free(centres);

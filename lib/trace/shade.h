@@ -94,6 +94,20 @@ zr__radiance_source(const zr_radiosity *rad) {
 }
 
 /* What one thread needs to trace rays in a scene. */
+/*
+ * The last object that blocked each light's shadow rays, for one thread
+ * (ZR_SHADOW_CACHE_SLOTS lights, by their address): the next shadow ray
+ * to that light tries it first, and when it blocks the ray again the
+ * walk of the hierarchy is skipped.  The answer is the walk's (an
+ * opaque blocker makes any walk black), so the image bytes do not
+ * depend on what the cache held.
+ */
+enum { ZR_SHADOW_CACHE_SLOTS = 16 };
+typedef struct zr_shadow_cache {
+  const zr_light *light[ZR_SHADOW_CACHE_SLOTS];
+  const zr_object *blocker[ZR_SHADOW_CACHE_SLOTS];
+} zr_shadow_cache;
+
 typedef struct zr_tracer {
   const zr_scene *scene;
   zr_render_stats *stats; /* never NULL */
@@ -120,6 +134,10 @@ typedef struct zr_tracer {
      area lights as such (below 5, one shadow ray to the centre),
      transmitted rays (below 6), reflected rays (below 8). */
   bool no_shadows, point_area_lights, no_transmitted, no_reflected;
+  /* +Q5 and below: pigments with a quick_color show it; +Q1 and below
+     (flat): no lighting at all, a surface shows its pigment's colour
+     (the bottom layer's), filter, transmit and finish ignored. */
+  bool quick_colours, flat;
   /* The surface this ray meets first leaves out the emission that
      indirect->samples_emission says the model sampled; the rays it
      spawns do not (lib/gi/path.c). */
@@ -128,6 +146,17 @@ typedef struct zr_tracer {
      weight with (a radiosity block's, for its sample rays); 0: the
      scene's global_settings one. */
   double bailout;
+  /* +UA (zr_render_params.alpha): NULL, or where a camera ray adds the
+     share of its pixel left clear: clear_weight (1 for the camera ray,
+     times filter * grey + transmit of each surface it went through)
+     times what the background leaves clear (zr__sky_clear), and that
+     ray sees the background as zr__sky_clear colours it.  Reflected
+     rays and the indirect model's rays carry none. */
+  double *clear;
+  double clear_weight;
+  /* This thread's last shadow blockers (NULL: none kept); the tracer is
+     otherwise read-only, this is a hint that changes no result. */
+  zr_shadow_cache *shadow_cache;
 } zr_tracer;
 
 /* Sets the tracer's quality flags and no_media for POV-Ray's +Q: 0 to 11
