@@ -644,6 +644,15 @@ typedef struct zr_gi_params {
   /* The block's save_file and load_file (owned by the scene), NULL
      when not written: the command line loads and saves them. */
   const char *save_file, *load_file;
+  /* count's second value: the directions a record's count rays are
+     drawn from (about count_pool / count patterns of count rays, one
+     per record by its position); 0 or <= count: every record shoots
+     the same directions, as POV-Ray's manual says of one value. */
+  int count_pool;
+  /* nearest_count's second value (adaptive pretrace): from the second
+     pretrace pass on, a point served by this many records gathers no
+     more; 0: off. */
+  int nearest_count_stop;
 } zr_gi_params;
 
 /* Whether a sky_sphere or a background that is not black lights the

@@ -12,6 +12,8 @@
  *     picture; it saves and loads to the same records and picture, and
  *     a cut file is refused with a message;
  *   - POV-Ray's items reach zr_gi_params, and bad values are refused;
+ *   - adc_bailout, count's and nearest_count's second values do what
+ *     POV-Ray's manual says (each test fails if the item is ignored);
  *   - zr_gi_choose() follows the rule of zrcube(1), and the command
  *     line's --gi, --no-radiosity, +Q and Radiosity= set what is asked.
  */
@@ -340,6 +342,7 @@ static void test_gi_gradients(void **state) {
   double de_da = -(quad_factor(wall, o, tp) - quad_factor(wall, o, tm)) /
                  (2 * h);
   assert_true(fabs(saved_double(rec, 6) - e) < 0.02 * e);
+  print_message("rot %g exact %g; trans %g exact %g; e %g exact %g\n", -saved_double(rec, 11), de_da, saved_double(rec, 18), de_dx, saved_double(rec, 6), e);
   assert_true(fabs(-saved_double(rec, 11) - de_da) < 0.1 * fabs(de_da));
   assert_true(fabs(saved_double(rec, 18) - de_dx) < 0.3 * fabs(de_dx));
   assert_true(fabs(saved_double(rec, 20)) < 0.1 * fabs(de_dx)); /* z: 0 */
@@ -452,6 +455,114 @@ static void test_gi_command_line(void **state) {
   zr__cli_free(&o);
 }
 
+/*
+ * The block's adc_bailout stops a sample ray's transmitted ray: a white
+ * floor lit by a white sky only through a black plane of transmit 0.5
+ * shows exactly 0.5 (every sample ray reaches the sky through it) while
+ * 0.5 times the sample ray's weight 0.5 is above adc_bailout, and black
+ * when it is not (bench/gi_adc_probe.sh measured povray's threshold
+ * between 0.24 and 0.26).  The scene's own adc_bailout does not stop
+ * sample rays.
+ */
+#define ADC(global, block)                                              \
+  "#version 3.7; global_settings { " global " radiosity { adc_bailout " \
+  block " } } camera { location <0, 1.5, -2> look_at <0, 0, 0> }"      \
+  "sky_sphere { pigment { rgb 1 } }"                                   \
+  "plane { y, 0 pigment { rgb 1 } finish { diffuse 1 } }"              \
+  "plane { y, 2 pigment { rgbt <0, 0, 0, 0.5> } finish { diffuse 0 } " \
+  "hollow }"
+
+static void test_gi_adc_bailout(void **state) {
+  fixture *f = *state;
+  float rgb[W * H * 3];
+  zr_gi_cache_free(render_cached(good(f, ADC("", "0.24")), 1, rgb));
+  assert_true(fabs(centre(rgb)[0] - 0.5) < 1e-6);
+  zr_gi_cache_free(render_cached(good(f, ADC("", "0.26")), 1, rgb));
+  assert_true(fabs(centre(rgb)[0]) < 1e-6);
+  zr_gi_cache_free(
+      render_cached(good(f, ADC("adc_bailout 0.9", "0.01")), 1, rgb));
+  assert_true(fabs(centre(rgb)[0] - 0.5) < 1e-6);
+}
+
+/*
+ * count's second value.  Under a sky of fine checks, a floor with one
+ * value shows one level all over (every record shoots the same
+ * directions, POV-Ray's manual, "count"); with a pool of 100 times the
+ * rays, records draw different directions and the floor varies, and its
+ * mean comes nearer the sky's true mean (0.5: half the checks white).
+ */
+#define CHECKED_SKY(count)                                              \
+  "#version 3.7; global_settings { radiosity { count " count " } }"    \
+  "camera { location <0, 3, -2> look_at <0, 0, 0> }"                   \
+  "sky_sphere { pigment { checker rgb 1 rgb 0 scale 0.07 } }"          \
+  "plane { y, 0 pigment { rgb 1 } finish { diffuse 1 } }"
+
+static void floor_levels(const float *rgb, double *lo, double *hi,
+                         double *mean) {
+  *lo = INFINITY, *hi = -INFINITY, *mean = 0.0;
+  for (int i = 0; i < W * H; i++) {
+    *lo = fmin(*lo, rgb[3 * i]);
+    *hi = fmax(*hi, rgb[3 * i]);
+    *mean += rgb[3 * i] / (W * H);
+  }
+}
+
+static void test_gi_count_pool(void **state) {
+  fixture *f = *state;
+  float rgb[W * H * 3];
+  double lo, hi, one, pooled;
+  zr_gi_cache_free(render_cached(good(f, CHECKED_SKY("20")), 1, rgb));
+  floor_levels(rgb, &lo, &hi, &one);
+  assert_true(hi - lo < 1e-6);
+  const zr_scene *s = good(f, CHECKED_SKY("20, 2000"));
+  zr_gi_params gp;
+  zr_gi_params_init(&gp, s);
+  assert_int_equal(gp.count, 20);
+  assert_int_equal(gp.count_pool, 2000);
+  zr_gi_cache_free(render_cached(s, 1, rgb));
+  floor_levels(rgb, &lo, &hi, &pooled);
+  assert_true(hi - lo > 0.01);
+  assert_true(fabs(pooled - 0.5) < fabs(one - 0.5));
+}
+
+/*
+ * nearest_count's second value: from the second pretrace pass on, a
+ * point already served by that many records gathers no more, so a
+ * pretrace asking for 20 records a point and stopping at 2 keeps fewer
+ * camera-depth records than one asking for 20 alone; "20, 20" is 20.
+ */
+#define NEAREST(n)                                                      \
+  "#version 3.7; global_settings { radiosity { count 20 nearest_count " \
+  n " pretrace_start 0.3 pretrace_end 0.05 recursion_limit 1 } }"       \
+  "camera { location <0, 2, -6> look_at <0, 1, 0> }"                   \
+  "sky_sphere { pigment { rgb 1 } }"                                   \
+  "plane { y, 0 pigment { rgb 0.7 } }"                                 \
+  "box { <-2, 0, 1>, <2, 3, 1.5> pigment { rgb <0.9, 0.3, 0.2> } }"
+
+static void test_gi_nearest_count_stop(void **state) {
+  fixture *f = *state;
+  static float rgb[W * H * 3];
+  size_t n[3];
+  const char *blocks[3] = {"20", "20, 2", "20, 20"};
+  for (int i = 0; i < 3; i++) {
+    const zr_scene *s = good(f, i == 0 ? NEAREST("20")
+                                : i == 1 ? NEAREST("20, 2")
+                                         : NEAREST("20, 20"));
+    zr_gi_params gp;
+    zr_gi_params_init(&gp, s);
+    assert_int_equal(gp.nearest_count, 20);
+    assert_int_equal(gp.nearest_count_stop, i == 1 ? 2 : 0);
+    zr_gi_cache *c = render_cached(s, 1, rgb);
+    zr_gi_stats st;
+    zr_gi_cache_get_stats(c, &st);
+    n[i] = st.records_depth0;
+    zr_gi_cache_free(c);
+    print_message("nearest_count %s: %zu records\n", blocks[i], n[i]);
+  }
+  assert_true(n[1] < n[0]);
+  assert_true(n[2] == n[0]);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_gi_furnace),
@@ -462,6 +573,9 @@ int main(void) {
       cmocka_unit_test(test_gi_gradients),
       cmocka_unit_test(test_gi_choose),
       cmocka_unit_test(test_gi_command_line),
+      cmocka_unit_test(test_gi_adc_bailout),
+      cmocka_unit_test(test_gi_count_pool),
+      cmocka_unit_test(test_gi_nearest_count_stop),
   };
   return cmocka_run_group_tests(tests, setup, teardown);
 }

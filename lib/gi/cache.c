@@ -26,6 +26,10 @@
  * light); brightness scales what a depth returns; gray_threshold
  * desaturates it towards its grey (the mean of the channels);
  * max_sample limits each sample's brightest channel, keeping its hue;
+ * adc_bailout stops a sample ray's reflected and transmitted rays as
+ * the scene's stops a camera ray's (a sample ray weighs 0.5, measured);
+ * count's second value widens the pool of directions and
+ * nearest_count's stops the pretrace's later passes (see below);
  * normal on uses the perturbed normal; media off keeps sample rays out
  * of media; the pretrace goes over the image in mosaic blocks from
  * pretrace_start to pretrace_end of the image width with error_bound
@@ -42,7 +46,8 @@
  * batches of BATCH pixels; every pixel of a batch sees the cache as the
  * batches before left it plus its own new records, and at the end of
  * the batch the new records join in pixel order.  Sample directions are
- * jittered by a hash of the record's point.  So the cache, and the
+ * the same for every record or, with count's second value, a shift of
+ * them that a hash of the record's point picks.  So the cache, and the
  * picture, are the same bytes for any number of threads, and every rank
  * builds the same cache.  In the final pass a point no record serves
  * gets a record of its own that is used and dropped (as are the deeper
@@ -50,6 +55,7 @@
  */
 #include "gi/gi.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -69,8 +75,19 @@
 /* The translational gradient's factor on the published terms (see
    gather()). */
 #define TRANS_SCALE (2.0 / (M_PI * M_PI))
-/* The deepest octree level. */
-#define MAX_LEVEL 40
+/* The deepest octree level below the root, and the most times a root
+   doubles (2^64 times the scene's size). */
+#define MAX_LEVEL 64
+#define MAX_GROW 64
+/* The weight a sample ray starts with, against which the block's
+   adc_bailout is compared where it spawns reflected or transmitted
+   rays: 0.5, measured by bench/gi_adc_probe.sh (povray 3.7 lights a
+   floor through a plane of transmit 0.5 up to adc_bailout 0.24, not
+   from 0.26, and through transmit 0.8 up to 0.35, not from 0.45,
+   whatever count, recursion_limit and the floor's diffuse). */
+#define SAMPLE_WEIGHT 0.5
+/* The most patterns count's second value makes. */
+#define MAX_PATTERNS 4096
 
 bool zr__gi_list_push(zr__gi_list *l, const zr__gi_record *r) {
   if (l->n == l->cap) {
@@ -128,6 +145,33 @@ void zr__gi_cache_extent(zr_gi_cache *c) {
   c->root_h = h > 0.0 ? h : 1.0; /* twice the half extent */
 }
 
+/* Makes tree d's root (node 0) twice as large, towards q, with the old
+   root as the octant that holds its centre. */
+static bool grow_root(zr_gi_cache *c, int d, zr_vec3 q) {
+  if (!(isfinite(q.x) && isfinite(q.y) && isfinite(q.z)))
+    return false;
+  zr__gi_node old = c->nodes[d][0];
+  if (!isfinite(2.0 * old.h))
+    return false;
+  zr_vec3 centre = zr_v3(old.c.x + (q.x > old.c.x ? old.h : -old.h),
+                         old.c.y + (q.y > old.c.y ? old.h : -old.h),
+                         old.c.z + (q.z > old.c.z ? old.h : -old.h));
+  int32_t moved = new_node(c, d, old.c, old.h);
+  if (moved < 0)
+    return false;
+  c->nodes[d][moved] = old;
+  zr__gi_node *root = &c->nodes[d][0];
+  root->c = centre;
+  root->h = 2.0 * old.h;
+  root->first = -1;
+  for (int k = 0; k < 8; k++)
+    root->child[k] = -1;
+  int k = (old.c.x > centre.x) | ((old.c.y > centre.y) << 1) |
+          ((old.c.z > centre.z) << 2);
+  root->child[k] = moved;
+  return true;
+}
+
 bool zr__gi_cache_add(zr_gi_cache *c, const zr__gi_record *r) {
   int d = r->depth;
   if (d < 0 || d >= 20)
@@ -139,25 +183,38 @@ bool zr__gi_cache_add(zr_gi_cache *c, const zr__gi_record *r) {
     return false;
   if (c->next_cap < c->records.cap) {
     int32_t *v = realloc(c->next, c->records.cap * sizeof *v);
-    if (!v) {
+    if (v)
+      c->next = v;
+    zr__gi_near *w = v ? realloc(c->near, c->records.cap * sizeof *w) : NULL;
+    if (!w) {
       c->records.n--;
       return false;
     }
-    c->next = v;
+    c->near = w;
     c->next_cap = c->records.cap;
   }
+  c->near[idx] = (zr__gi_near){r->p, r->r};
   /* Down to the smallest node whose half-size is still twice the
      record's farthest reach (error_bound R), while the point is inside
-     it; a record outside the root stays at the root.  A lookup then
-     visits a node when the point lies within 1.5 half-sizes of its
-     centre: at most two nodes a side at each level. */
+     it.  A lookup then visits a node when the point lies within 1.5
+     half-sizes of its centre: at most two nodes a side at each level. */
   double reach = c->params.error_bound * ldexp(r->r, d); /* see blend */
   int32_t at = 0;
   zr_vec3 q = r->p;
-  const zr__gi_node *root = &c->nodes[d][0];
-  bool inside = fabs(q.x - root->c.x) <= root->h &&
-                fabs(q.y - root->c.y) <= root->h &&
-                fabs(q.z - root->c.z) <= root->h;
+  /* A record outside the root (an infinite plane seen to the horizon
+     has no bounds) grows it: the root doubles towards the point, the
+     old root becoming one of its octants, as often as needed.  A
+     record left at the root would be tested by every lookup (the
+     outdoor scene's far floor: 97% of the lookup time before). */
+  bool inside = false;
+  for (int grow = 0; grow <= MAX_GROW; grow++) {
+    const zr__gi_node *root = &c->nodes[d][0];
+    inside = fabs(q.x - root->c.x) <= root->h &&
+             fabs(q.y - root->c.y) <= root->h &&
+             fabs(q.z - root->c.z) <= root->h;
+    if (inside || grow == MAX_GROW || !grow_root(c, d, q))
+      break;
+  }
   for (int level = 0; inside && level < MAX_LEVEL; level++) {
     zr__gi_node *n = &c->nodes[d][at];
     double hc = 0.5 * n->h;
@@ -221,8 +278,16 @@ static void blend_record(blend *b, const zr__gi_record *r) {
 
 static void blend_tree(blend *b, const zr_gi_cache *c, int d, int32_t at) {
   const zr__gi_node *n = &c->nodes[d][at];
-  for (int32_t i = n->first; i >= 0; i = c->next[i])
-    blend_record(b, &c->records.v[i]);
+  /* The distance test on the compact copy first: a lookup rejects most
+     of the records it meets (about 6 in 7 on sky_outdoor.pov), and a
+     whole record is seven times the bytes. */
+  for (int32_t i = n->first; i >= 0; i = c->next[i]) {
+    const zr__gi_near *q = &c->near[i];
+    zr_vec3 d = zr_v3_sub(b->p, q->p);
+    double reach = b->a * q->r;
+    if (zr_v3_dot(d, d) < reach * reach)
+      blend_record(b, &c->records.v[i]);
+  }
   for (int k = 0; k < 8; k++) {
     int32_t ch = n->child[k];
     if (ch < 0)
@@ -268,11 +333,6 @@ static uint64_t point_seed(zr_vec3 p, int depth) {
   return h;
 }
 
-static double next_uniform(uint64_t *state) {
-  *state += 0x9e3779b97f4a7c15u;
-  return (double)(mix64(*state) >> 11) * (1.0 / 9007199254740992.0);
-}
-
 /* Two unit vectors that make an orthonormal frame with n. */
 static void frame(zr_vec3 n, zr_vec3 *t1, zr_vec3 *t2) {
   zr_vec3 a = fabs(n.x) < 0.6 ? zr_v3(1, 0, 0)
@@ -288,6 +348,12 @@ static zr_rgb limit_sample(const zr_gi_params *gp, zr_rgb l) {
   if (gp->max_sample > 0.0 && m > gp->max_sample)
     l = zr_rgb_scale(l, gp->max_sample / m);
   return l;
+}
+
+/* The integral of tan(theta) d(sin^2 theta) from 0 to s = sin^2 theta. */
+static double tan_integral(double s) {
+  s = fmin(fmax(s, 0.0), 1.0);
+  return asin(sqrt(s)) - sqrt(s * (1.0 - s));
 }
 
 /*
@@ -311,9 +377,23 @@ static void gather(const zr_gi_cache *c, const zr_tracer *tracer,
   nn = nn < 3 ? 3 : nn > MAX_SECTORS ? MAX_SECTORS : nn;
   zr_vec3 t1, t2;
   frame(n, &t1, &t2);
-  uint64_t rng = point_seed(q->p, d);
-  double u0 = next_uniform(&rng); /* one jitter of the whole pattern */
-  double v0 = next_uniform(&rng);
+  /* The pattern of directions.  POV-Ray's manual ("count"): one
+     value, every record shoots the same set of directions; a second
+     value, the total number of directions they are drawn from.  Here
+     the pool is K = pool / count shifts (u0, v0) of the stratified
+     pattern, a rank-1 lattice in the cell, so the K patterns together
+     cover every cell evenly; a record takes the shift its position
+     hashes to (POV-Ray takes them in turn, which would make the cache
+     depend on the order threads add records). */
+  double u0 = 0.5, v0 = 0.5;
+  if (gp->count_pool > gp->count) {
+    long kk = lround((double)gp->count_pool / gp->count);
+    kk = kk < 1 ? 1 : kk > MAX_PATTERNS ? MAX_PATTERNS : kk;
+    uint64_t rng = point_seed(q->p, d);
+    long k = (long)(mix64(rng) % (uint64_t)kk);
+    u0 = (k + 0.5) / (double)kk;
+    v0 = fmod(0.5 + k * 0.6180339887498949, 1.0);
+  }
 
   zr_indirect deeper = {cache_irradiance, c, sc, NULL, NULL};
   zr_tracer sub = *tracer;
@@ -323,6 +403,8 @@ static void gather(const zr_gi_cache *c, const zr_tracer *tracer,
   sub.path = q->path;
   sub.hide = 0;
   sub.no_media = tracer->no_media || !gp->media;
+  /* The block's adc_bailout (0: no bailout at all). */
+  sub.bailout = gp->adc_bailout > 0.0 ? gp->adc_bailout : DBL_MIN;
   zr_vec3 origin = zr_v3_madd(q->p, q->n_geo, zr__surface_offset(q->p));
   if (zr_v3_dot(q->n_geo, n) < 0.0)
     origin = zr_v3_madd(q->p, n, zr__surface_offset(q->p));
@@ -362,7 +444,7 @@ static void gather(const zr_gi_cache *c, const zr_tracer *tracer,
           l = zr__sky_colour(c->scene, dir);
         }
       } else {
-        l = zr__trace_ray_hit(&sub, &ray, 1, 1.0, NULL, &t);
+        l = zr__trace_ray_hit(&sub, &ray, 1, SAMPLE_WEIGHT, NULL, &t);
       }
       l = limit_sample(gp, l);
       int i = j * nn + k;
@@ -413,8 +495,15 @@ static void gather(const zr_gi_cache *c, const zr_tracer *tracer,
     for (int j = 0; j < m; j++) {
       int i = j * nn + k;
       double s2 = (j + u0) / m;
-      double st = sqrt(s2), ct = sqrt(fmax(0.0, 1.0 - s2));
-      double tan_t = st / fmax(ct, 1e-6);
+      double st = sqrt(s2);
+      /* tan(theta) averaged over the band (sin^2 theta from j / m to
+         (j + 1) / m): the integral of sqrt(s / (1 - s)) is
+         asin(sqrt(s)) - sqrt(s (1 - s)).  The sample's own tan(theta)
+         is right only on average over a jitter, and at the band's
+         centre reads the grazing band, where it grows without bound,
+         13% low on the whole gradient (tests/test_gi.c). */
+      double tan_t = m * (tan_integral((double)(j + 1) / m) -
+                          tan_integral((double)j / m));
       double l[3] = {lum[i].r, lum[i].g, lum[i].b};
       for (int ch = 0; ch < 3; ch++)
         rec->grad_r[ch] = zr_v3_madd(rec->grad_r[ch], vk,
@@ -507,6 +596,16 @@ static bool cache_irradiance(const zr_indirect *self,
                                      gp->always_sample))
                  ? gp->nearest_count
                  : 1;
+  /* nearest_count's second value (POV-Ray's manual: the adaptive
+     pretrace "will stop re-iterating over areas where ... that many
+     ... samples are already present"): from the second pass on, a
+     camera-visible point served by that many records gathers no more,
+     however many the first value asks for.  (Per point, not averaged
+     over an area, and without POV-Ray's weighting by sample
+     quality.) */
+  if (d == 0 && pretrace && c->pretrace_pass > 0 &&
+      gp->nearest_count_stop > 0 && b.count >= gp->nearest_count_stop)
+    want = 0;
   if (b.count < want) {
     gi_scratch tmp;
     memset(&tmp, 0, sizeof tmp);
@@ -545,6 +644,12 @@ static zr_status check_params(zr_context *ctx, const zr_gi_params *p) {
     what = "recursion_limit must be 1 to 20";
   else if (p->nearest_count < 1 || p->nearest_count > 20)
     what = "nearest_count must be 1 to 20";
+  else if (p->nearest_count_stop < 0 || p->nearest_count_stop > 20)
+    what = "nearest_count's second value must be 1 to 20 (0: none)";
+  else if (p->count_pool < 0 || p->count_pool > 100000000)
+    what = "count's second value must be up to 100000000 (0: none)";
+  else if (!(p->adc_bailout >= 0.0 && p->adc_bailout <= 1.0))
+    what = "adc_bailout must be in [0, 1]";
   else if (!(p->error_bound > 0.0) || !isfinite(p->error_bound))
     what = "error_bound must be a number > 0";
   else if (!(p->low_error_factor > 0.0 && p->low_error_factor <= 1.0))
@@ -602,6 +707,7 @@ ZR_API void zr_gi_cache_free(zr_gi_cache *c) {
     return;
   zr__gi_list_free(&c->records);
   free(c->next);
+  free(c->near);
   for (int d = 0; d < 20; d++)
     free(c->nodes[d]);
   free(c);
@@ -838,6 +944,7 @@ ZR_API zr_status zr_gi_cache_pretrace(zr_gi_cache *c,
                                 pretrace_pixels(c, w, h)};
   zr_status s = ZR_OK;
   c->pretracing = 1;
+  c->pretrace_pass = 0;
   /* Blocks of pretrace_start of the image width, halved until they
      are pretrace_end (POV-Ray's mosaic preview). */
   double block = c->params.pretrace_start * w;
@@ -849,6 +956,7 @@ ZR_API zr_status zr_gi_cache_pretrace(zr_gi_cache *c,
     if (s != ZR_OK || b <= 1.0 || block * 0.5 < last * (1.0 - 1e-9))
       break;
     block *= 0.5;
+    c->pretrace_pass++;
   }
   if (s == ZR_OK) {
     /* The final pass's new samples, gathered before it at every pixel

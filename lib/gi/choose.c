@@ -51,6 +51,12 @@ ZR_API void zr_gi_params_init(zr_gi_params *p, const zr_scene *scene) {
     p->recursion_limit = r->recursion_limit;
   if (r->nearest_count > 0)
     p->nearest_count = r->nearest_count;
+  /* "nearest_count N, M": M stops the pretrace's passes; N, N is what
+     N alone does (a point served by N records gathers no more). */
+  if (r->nearest_count_max > 0 && r->nearest_count_max != r->nearest_count)
+    p->nearest_count_stop = r->nearest_count_max;
+  if (r->count_pool > p->count)
+    p->count_pool = r->count_pool;
   if (r->error_bound > 0.0)
     p->error_bound = r->error_bound;
   if (r->low_error_factor > 0.0)

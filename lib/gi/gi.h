@@ -43,12 +43,19 @@ typedef struct zr__gi_node {
   int32_t first;    /* first record (index into the cache), -1 */
 } zr__gi_node;
 
+/* A record's position and radius, for the lookup's first test. */
+typedef struct zr__gi_near {
+  zr_vec3 p;
+  double r;
+} zr__gi_near;
+
 struct zr_gi_cache {
   zr_indirect indirect;    /* what the final pass hands the tracer */
   const zr_scene *scene;
   zr_gi_params params;
   zr__gi_list records;     /* all depths, in the order they joined */
   int32_t *next;           /* the next record of the same node */
+  zr__gi_near *near;       /* each record's p and r (next_cap of them) */
   size_t next_cap;
   /* One octree per depth: nodes[d], roots are node 0 of each. */
   zr__gi_node *nodes[20];
@@ -59,6 +66,7 @@ struct zr_gi_cache {
   int pretrace_passes;
   uint64_t sample_rays;
   int pretracing;          /* 1 while the pretrace runs */
+  int pretrace_pass;       /* its pass, from 0 */
 };
 
 /* Whether a sky_sphere or a background that is not black lights the

@@ -528,6 +528,7 @@ static zr_status render_pixels(const zr_scene *scene,
   job.tracer.skip_direct = false;
   zr__tracer_quality(&job.tracer, params->quality);
   job.tracer.skip_sampled_emission = false;
+  job.tracer.bailout = 0.0; /* the scene's adc_bailout */
   job.clear = 0.0;
   job.tracer.clear = params->alpha ? &job.clear : NULL;
   job.tracer.clear_weight = 1.0;

@@ -854,6 +854,8 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
   if (f->conserve_energy)
     trans = zr_rgb3(trans.r * (1.0 - refl.r), trans.g * (1.0 - refl.g),
                     trans.b * (1.0 - refl.b));
+  /* A model's sample rays carry the bailout of its block (zr_tracer). */
+  double bailout = tr->bailout > 0.0 ? tr->bailout : gs->adc_bailout;
   zr_vec3 mirror = zr__reflect(s->d, s->n);
   /* A normal tilted by normal { } can mirror a grazing ray into the
      surface; the ray is then turned back out of it, mirrored in the
@@ -877,7 +879,7 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
        glass box with filter 0.3 on a colour whose largest component is
        0.8, adc_bailout 0.05 stops the bouncing after three faces. */
     double tw = weight * rgb_max(trans);
-    if (!(tw > gs->adc_bailout))
+    if (!(tw > bailout))
       return sum;
     if (tr->no_transmitted)
       return sum;
@@ -888,7 +890,7 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
   }
 
   double rw = weight * rgb_max(refl);
-  if (rgb_max(refl) > 0.0 && rw > gs->adc_bailout && !tr->no_reflected &&
+  if (rgb_max(refl) > 0.0 && rw > bailout && !tr->no_reflected &&
       !(s->layer && s->tir_below)) {
     tr->stats->reflected_rays++;
     zr_tracer rt = reflecting(tr);
@@ -901,7 +903,7 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
     sum = zr_rgb_add(sum, zr_rgb_mul(refl, r));
   }
   double tw = weight * rgb_max(trans);
-  if (rgb_max(trans) > 0.0 && tw > gs->adc_bailout && !tr->no_transmitted) {
+  if (rgb_max(trans) > 0.0 && tw > bailout && !tr->no_transmitted) {
     /* A ray that goes on unbent is not a new trace level (ZR_PASS_MAX),
        but like any secondary ray it is only spawned below the last
        level. */

@@ -142,6 +142,10 @@ typedef struct zr_tracer {
      indirect->samples_emission says the model sampled; the rays it
      spawns do not (lib/gi/path.c). */
   bool skip_sampled_emission;
+  /* > 0: the adc_bailout this ray and the rays it spawns compare their
+     weight with (a radiosity block's, for its sample rays); 0: the
+     scene's global_settings one. */
+  double bailout;
   /* +UA (zr_render_params.alpha): NULL, or where a camera ray adds the
      share of its pixel left clear: clear_weight (1 for the camera ray,
      times filter * grey + transmit of each surface it went through)
