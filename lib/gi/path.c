@@ -124,15 +124,6 @@ static double path_uniform(const zr_indirect *self) {
 
 static double rgb_max(zr_rgb c) { return fmax(c.r, fmax(c.g, c.b)); }
 
-/* An orthonormal frame about unit n (Duff et al. 2017). */
-static void frame(zr_vec3 n, zr_vec3 *t1, zr_vec3 *t2) {
-  double sign = copysign(1.0, n.z);
-  double a = -1.0 / (sign + n.z);
-  double b = n.x * n.y * a;
-  *t1 = zr_v3(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x);
-  *t2 = zr_v3(b, sign + n.y * n.y * a, -n.y);
-}
-
 static bool positive(zr_rgb c) { return c.r > 0.0 || c.g > 0.0 || c.b > 0.0; }
 
 /* Whether the emission of o is sampled directly (see the essay). */
@@ -245,7 +236,7 @@ static bool path_irradiance(const zr_indirect *self, const zr_tracer *tracer,
   double u = next_uniform(st), v = next_uniform(st);
   double r = sqrt(u), phi = 2.0 * M_PI * v;
   zr_vec3 t1, t2;
-  frame(n, &t1, &t2);
+  zr_v3_frame(n, &t1, &t2); /* lib/core/vec.h */
   zr_vec3 dir = zr_v3_add(zr_v3_add(zr_v3_scale(t1, r * cos(phi)),
                                     zr_v3_scale(t2, r * sin(phi))),
                           zr_v3_scale(n, sqrt(fmax(0.0, 1.0 - u))));
