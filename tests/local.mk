@@ -221,3 +221,6 @@ EXTRA_DIST += tests/test_layer_tir.sh tests/layer_tir.pov
 # A tilted normal that mirrors a grazing ray into the surface.
 TESTS += tests/test_grazing_normal.sh
 EXTRA_DIST += tests/test_grazing_normal.sh tests/grazing_normal.pov
+
+# The common start of the picture-comparing test scripts (sourced).
+EXTRA_DIST += tests/render_env.sh

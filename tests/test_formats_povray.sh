@@ -18,17 +18,8 @@
 #
 # Environment: ZR_SRCDIR, ZR_BUILDDIR (set by `make check`).
 set -u
-srcdir=${ZR_SRCDIR:-$(cd "$(dirname "$0")/.." && pwd)}
-builddir=${ZR_BUILDDIR:-$srcdir/build}
-zrcube=$builddir/bin/zrcube
-imgcmp=$builddir/tests/imgcmp
-command -v povray >/dev/null 2>&1 || { echo "no povray: skipped"; exit 77; }
-for tool in "$zrcube" "$imgcmp"; do
-  [ -x "$tool" ] || { echo "test_formats_povray.sh: $tool is not built" >&2; exit 99; }
-done
-work=$(mktemp -d "${TMPDIR:-/tmp}/zr_formats_povray.XXXXXX") || exit 99
-trap 'rm -rf "$work"' EXIT INT TERM
-cd "$work" || exit 99
+ZR_NEEDS_POVRAY=1
+. "${ZR_SRCDIR:-$(cd "$(dirname "$0")/.." && pwd)}/tests/render_env.sh"
 inc=/usr/share/povray-3.7/include
 exr=yes
 "$zrcube" +I/dev/null +FE 2>&1 | grep -q "built without OpenEXR" && exr=no

@@ -9,17 +9,8 @@
 #
 # Environment: ZR_SRCDIR, ZR_BUILDDIR (set by `make check`).
 set -u
-srcdir=${ZR_SRCDIR:-$(cd "$(dirname "$0")/.." && pwd)}
-builddir=${ZR_BUILDDIR:-$srcdir/build}
-zrcube=$builddir/bin/zrcube
-imgcmp=$builddir/tests/imgcmp
-for tool in "$zrcube" "$imgcmp"; do
-  [ -x "$tool" ] || { echo "test_grazing_normal.sh: $tool is not built" >&2; exit 99; }
-done
-command -v povray >/dev/null 2>&1 || { echo "no povray: skipped"; exit 77; }
-work=$(mktemp -d "${TMPDIR:-/tmp}/zr_grazing.XXXXXX") || exit 99
-trap 'rm -rf "$work"' EXIT INT TERM
-cd "$work" || exit 99
+ZR_NEEDS_POVRAY=1
+. "${ZR_SRCDIR:-$(cd "$(dirname "$0")/.." && pwd)}/tests/render_env.sh"
 cp "$srcdir/tests/grazing_normal.pov" . || exit 99
 timeout 120 povray +Igrazing_normal.pov +Opov.png +W160 +H120 -D -A +WT1 \
   -GA </dev/null >pov.log 2>&1 || { tail -3 pov.log >&2; exit 99; }

@@ -9,18 +9,9 @@
 #
 # Environment: ZR_SRCDIR, ZR_BUILDDIR (set by `make check`).
 set -u
-srcdir=${ZR_SRCDIR:-$(cd "$(dirname "$0")/.." && pwd)}
-builddir=${ZR_BUILDDIR:-$srcdir/build}
-zrcube=$builddir/bin/zrcube
-imgcmp=$builddir/tests/imgcmp
-command -v povray >/dev/null 2>&1 || { echo "no povray: skipped"; exit 77; }
-for tool in "$zrcube" "$imgcmp"; do
-  [ -x "$tool" ] || { echo "test_legacy_povray.sh: $tool is not built" >&2; exit 99; }
-done
-work=$(mktemp -d "${TMPDIR:-/tmp}/zr_legacy.XXXXXX") || exit 99
-trap 'rm -rf "$work"' EXIT INT TERM
-cp "$srcdir"/tests/legacy/*.pov "$srcdir"/tests/legacy/*.inc "$work"/ || exit 99
-cd "$work" || exit 99
+ZR_NEEDS_POVRAY=1
+. "${ZR_SRCDIR:-$(cd "$(dirname "$0")/.." && pwd)}/tests/render_env.sh"
+cp "$srcdir"/tests/legacy/*.pov "$srcdir"/tests/legacy/*.inc . || exit 99
 sed 's/^#ifndef (Gamma).*/#declare Gamma = 2.2;/' srgb.pov >srgb_gamma22.pov
 pass=0 fail=0
 for scene in *.pov; do

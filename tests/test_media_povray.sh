@@ -13,19 +13,10 @@
 #
 # Environment: ZR_SRCDIR, ZR_BUILDDIR (set by `make check`).
 set -u
-srcdir=${ZR_SRCDIR:-$(cd "$(dirname "$0")/.." && pwd)}
-builddir=${ZR_BUILDDIR:-$srcdir/build}
-zrcube=$builddir/bin/zrcube
-imgcmp=$builddir/tests/imgcmp
+ZR_NEEDS_POVRAY=1
+. "${ZR_SRCDIR:-$(cd "$(dirname "$0")/.." && pwd)}/tests/render_env.sh"
 scene=$srcdir/tests/media_check.pov
-command -v povray >/dev/null 2>&1 || { echo "no povray: skipped"; exit 77; }
-for tool in "$zrcube" "$imgcmp"; do
-  [ -x "$tool" ] || { echo "test_media_povray.sh: $tool is not built" >&2; exit 99; }
-done
-work=$(mktemp -d "${TMPDIR:-/tmp}/zr_media_povray.XXXXXX") || exit 99
-trap 'rm -rf "$work"' EXIT INT TERM
 inc=/usr/share/povray-3.7/include
-cd "$work" || exit 99
 timeout 300 povray +I"$scene" +Opov20.png +W160 +H120 -D -A +WT1 -GA \
   +L"$inc" </dev/null >pov20.log 2>&1 &&
 timeout 300 povray +I"$scene" +Opov80.png +W160 +H120 -D -A +WT1 -GA \

@@ -8,16 +8,7 @@
 #
 # Environment: ZR_SRCDIR, ZR_BUILDDIR (set by `make check`).
 set -u
-srcdir=${ZR_SRCDIR:-$(cd "$(dirname "$0")/.." && pwd)}
-builddir=${ZR_BUILDDIR:-$srcdir/build}
-zrcube=$builddir/bin/zrcube
-imgcmp=$builddir/tests/imgcmp
-for tool in "$zrcube" "$imgcmp"; do
-  [ -x "$tool" ] || { echo "test_mesh_textures.sh: $tool is not built" >&2; exit 99; }
-done
-work=$(mktemp -d "${TMPDIR:-/tmp}/zr_meshtex.XXXXXX") || exit 99
-trap 'rm -rf "$work"' EXIT INT TERM
-cd "$work" || exit 99
+. "${ZR_SRCDIR:-$(cd "$(dirname "$0")/.." && pwd)}/tests/render_env.sh"
 cp "$srcdir/tests/mesh_texture_list.pov" moved.pov || exit 99
 # The same picture built in place: vertices at their final positions,
 # the texture given the object's scale and translation itself.

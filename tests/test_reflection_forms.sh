@@ -10,16 +10,7 @@
 #
 # Environment: ZR_SRCDIR, ZR_BUILDDIR (set by `make check`).
 set -u
-srcdir=${ZR_SRCDIR:-$(cd "$(dirname "$0")/.." && pwd)}
-builddir=${ZR_BUILDDIR:-$srcdir/build}
-zrcube=$builddir/bin/zrcube
-imgcmp=$builddir/tests/imgcmp
-for tool in "$zrcube" "$imgcmp"; do
-  [ -x "$tool" ] || { echo "test_reflection_forms.sh: $tool is not built" >&2; exit 99; }
-done
-work=$(mktemp -d "${TMPDIR:-/tmp}/zr_reflforms.XXXXXX") || exit 99
-trap 'rm -rf "$work"' EXIT INT TERM
-cd "$work" || exit 99
+. "${ZR_SRCDIR:-$(cd "$(dirname "$0")/.." && pwd)}/tests/render_env.sh"
 scene() { # $1 = the reflection block
   cat <<POV
 #version 3.7;

@@ -15,16 +15,7 @@
 #
 # Environment: ZR_SRCDIR, ZR_BUILDDIR (set by `make check`).
 set -u
-srcdir=${ZR_SRCDIR:-$(cd "$(dirname "$0")/.." && pwd)}
-builddir=${ZR_BUILDDIR:-$srcdir/build}
-zrcube=$builddir/bin/zrcube
-imgcmp=$builddir/tests/imgcmp
-for tool in "$zrcube" "$imgcmp"; do
-  [ -x "$tool" ] || { echo "test_subsurface.sh: $tool is not built" >&2; exit 99; }
-done
-work=$(mktemp -d "${TMPDIR:-/tmp}/zr_subsurface.XXXXXX") || exit 99
-trap 'rm -rf "$work"' EXIT INT TERM
-cd "$work" || exit 99
+. "${ZR_SRCDIR:-$(cd "$(dirname "$0")/.." && pwd)}/tests/render_env.sh"
 cp "$srcdir/tests/subsurface_check.pov" . || exit 99
 fail=0
 render() { # name, declarations, options...
