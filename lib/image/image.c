@@ -413,34 +413,38 @@ ZR_API zr_image_format zr_image_format_from_name(const char *path) {
 }
 
 static zr_status not_an_image(zr_context *ctx, const char *path) {
+  const char *kind = NULL;
   switch (zr_image_format_from_name(path)) {
   case ZR_FORMAT_PNG8:
   case ZR_FORMAT_PNG16:
-    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
-                    "%s: not a PNG file", path);
+    kind = "a PNG";
+    break;
   case ZR_FORMAT_JPEG:
-    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
-                    "%s: not a JPEG file", path);
+    kind = "a JPEG";
+    break;
   case ZR_FORMAT_PPM:
-    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
-                    "%s: not a PPM file", path);
+    kind = "a PPM";
+    break;
   case ZR_FORMAT_PFM:
-    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
-                    "%s: not a PFM file", path);
+    kind = "a PFM";
+    break;
   case ZR_FORMAT_HDR:
-    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
-                    "%s: not a Radiance HDR file", path);
+    kind = "a Radiance HDR";
+    break;
   case ZR_FORMAT_EXR:
-    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
-                    "%s: not an OpenEXR file", path);
+    kind = "an OpenEXR";
+    break;
   case ZR_FORMAT_BMP:
-    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
-                    "%s: not a BMP file", path);
+    kind = "a BMP";
+    break;
   case ZR_FORMAT_TGA:
   case ZR_FORMAT_TGA_RLE:
   case ZR_FORMAT_AUTO:
     break;
   }
+  if (kind)
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL, "%s: not %s file",
+                    path, kind);
   return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EFORMAT, NULL,
                   "%s: not a PNG, JPEG, GIF, TGA, BMP, TIFF, PPM, PFM, "
                   "HDR or OpenEXR file", path);

@@ -31,6 +31,7 @@
 
 #include <math.h>
 
+#include "trace/obj_shapes.h" /* zr__ray_box_span */
 #include "trace/shape.h"
 
 /* The most crossings one CSG primitive gathers along a ray; more are
@@ -55,27 +56,11 @@ static bool ray_meets(const struct zr_csg_box *b, const zr_ray *ray,
                       double tmin, double tmax) {
   if (!b->bounded)
     return true;
-  double a = tmin, z = tmax;
-  for (int axis = 0; axis < 3; axis++) {
-    double o = zr_v3_get(ray->origin, axis), d = zr_v3_get(ray->dir, axis);
-    double l = zr_v3_get(b->lo, axis), h = zr_v3_get(b->hi, axis);
-    if (d == 0.0) {
-      if (o < l || o > h)
-        return false;
-      continue;
-    }
-    double t0 = (l - o) / d, t1 = (h - o) / d;
-    if (t0 > t1) {
-      double tt = t0;
-      t0 = t1;
-      t1 = tt;
-    }
-    a = fmax(a, t0);
-    z = fmin(z, t1);
-    if (a > z)
-      return false;
-  }
-  return true;
+  /* The box's span along the ray (obj_torus.c); left empty when the ray
+     runs beside the box parallel to an axis. */
+  double s0 = 0.0, s1 = -1.0;
+  zr__ray_box_span(b->lo, b->hi, ray->origin, ray->dir, &s0, &s1);
+  return fmax(s0, tmin) <= fmin(s1, tmax);
 }
 
 /* Whether p may be inside the child of box b: never outside its box. */
