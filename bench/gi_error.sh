@@ -73,19 +73,7 @@
 # four, "cbox cornell sky curved".
 # Timings are printed, never asserted.
 set -eu
-usage() {
-  echo "usage: bench/gi_error.sh BUILD_DIR [--quick]" >&2
-  exit 2
-}
-[ $# -ge 1 ] || usage
-quick=0
-[ $# -ge 2 ] && { [ "$2" = --quick ] || usage; quick=1; }
-[ $# -le 2 ] || usage
-here=$(cd "$(dirname "$0")" && pwd)
-top=$(cd "$here/.." && pwd)
-build=$(cd "$1" && pwd)
-zrcube=$build/bin/zrcube
-imgcmp=$build/tests/imgcmp
+. "$(dirname "$0")/build_args.sh"
 povray=${POVRAY:-povray}
 limit=${GIERR_TIMEOUT:-900}
 out=${GIERR_OUT:-$top/bench/out/gi_error}

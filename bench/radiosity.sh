@@ -52,19 +52,7 @@
 # ends its ladder: the rungs after it cost more.  Timings are printed,
 # never asserted.
 set -eu
-usage() {
-  echo "usage: bench/radiosity.sh BUILD_DIR [--quick]" >&2
-  exit 2
-}
-[ $# -ge 1 ] || usage
-quick=0
-[ $# -ge 2 ] && { [ "$2" = --quick ] || usage; quick=1; }
-[ $# -le 2 ] || usage
-here=$(cd "$(dirname "$0")" && pwd)
-top=$(cd "$here/.." && pwd)
-build=$(cd "$1" && pwd)
-zrcube=$build/bin/zrcube
-imgcmp=$build/tests/imgcmp
+. "$(dirname "$0")/build_args.sh"
 povray=${POVRAY:-povray}
 size=256
 limit=${RADBENCH_TIMEOUT:-900}

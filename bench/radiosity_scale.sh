@@ -31,17 +31,7 @@
 # Environment: RADSCALE_OUT, RADSCALE_TIMEOUT (seconds a run may take,
 # default 900), RADSCALE_CASES (e.g. "mesh:1000 boxes:100").
 set -eu
-usage() {
-  echo "usage: bench/radiosity_scale.sh BUILD_DIR [--quick]" >&2
-  exit 2
-}
-[ $# -ge 1 ] || usage
-quick=0
-[ $# -ge 2 ] && { [ "$2" = --quick ] || usage; quick=1; }
-[ $# -le 2 ] || usage
-here=$(cd "$(dirname "$0")" && pwd)
-build=$(cd "$1" && pwd)
-zrcube=$build/bin/zrcube
+. "$(dirname "$0")/build_args.sh"
 limit=${RADSCALE_TIMEOUT:-900}
 out=${RADSCALE_OUT:-$here/out/radiosity_scale}
 [ -x "$zrcube" ] || { echo "radiosity_scale.sh: $zrcube is not built" >&2; exit 1; }

@@ -116,7 +116,7 @@ EXTRA_DIST += tests/test_media_shadow_povray.sh bench/media_shadow.py \
 	bench/results/media-shadow-2026-12-02.txt
 
 # The radiosity benchmark (bench/radiosity.sh; not run by `make check`).
-EXTRA_DIST += bench/radiosity.sh bench/radiosity/charts.gp \
+EXTRA_DIST += bench/radiosity.sh bench/build_args.sh bench/radiosity/charts.gp \
 	bench/radiosity/cornell.pov bench/radiosity/check_truth.py \
 	bench/radiosity/summary.awk bench/radiosity/error-time.png
 # Hierarchical radiosity as scenes grow (bench/radiosity_scale.sh).
