@@ -12,6 +12,7 @@
 #include <cmocka.h>
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -227,6 +228,35 @@ static void test_csg_bounds_of_planes_and_quadrics(void **state) {
   assert_false(zr__object_bounds(o, &lo, &hi));
 }
 
+/* A part the tracer cannot box (a quartic torus, advanced/pawns.pov)
+   takes its union's bounded_by box, moved with the union; a part it can
+   box keeps its own, however loose the bound. */
+static void test_csg_bounded_by_boxes_unboundable_parts(void **state) {
+  fixture *f = *state;
+  const char *torus = /* (x^2+y^2+z^2+R^2-r^2)^2 - 4R^2(x^2+z^2), R 8 r 1.5 */
+      "quartic { <1, 0, 0, 0, 2, 0, 0, 2, 0, -132.5, 0, 0, 0, 0, 0, 0, 0,\n"
+      "  0, 0, 0, 1, 0, 0, 2, 0, 123.5, 0, 0, 0, 0, 1, 0, -132.5, 0,\n"
+      "  3813.0625> }\n";
+  char text[512];
+  snprintf(text, sizeof text,
+           "union { %s bounded_by { box { <-10, -2, -10>, <10, 2, 10> } }\n"
+           "  translate 5*x }\n", torus);
+  const zr_object *o = only(f, text);
+  assert_int_equal(o->kind, ZR_OBJ_POLY);
+  zr_vec3 lo, hi;
+  assert_true(zr__object_bounds(o, &lo, &hi));
+  assert_near(lo.x, -5, 1e-6);
+  assert_near(hi.x, 15, 1e-6);
+  assert_near(hi.y, 2, 1e-6);
+  /* Without the bound it has none. */
+  o = only(f, torus);
+  assert_false(zr__object_bounds(o, &lo, &hi));
+  /* A sphere keeps its own box under a loose bound. */
+  o = only(f, "union { sphere { 0, 1 } bounded_by { sphere { 0, 100 } } }\n");
+  assert_true(zr__object_bounds(o, &lo, &hi));
+  assert_near(hi.x, 1, 1e-6);
+}
+
 static void test_csg_quadric_cylinder_and_paraboloid(void **state) {
   fixture *f = *state;
   /* x^2 + z^2 - 1: shapes.inc's Cylinder_Y. */
@@ -432,6 +462,7 @@ int main(void) {
       TEST(test_csg_transforms_and_textures_reach_children),
       TEST(test_csg_bounds_of_intersection),
       TEST(test_csg_bounds_of_planes_and_quadrics),
+      TEST(test_csg_bounded_by_boxes_unboundable_parts),
       TEST(test_csg_quadric_cylinder_and_paraboloid),
       TEST(test_csg_clipped_by_keeps_the_inside_part),
       TEST(test_csg_hollow_is_stored),

@@ -39,6 +39,10 @@ static bool unclipped_bounds(const zr_object *object, zr_vec3 *lo,
 bool zr__object_bounds(const zr_object *object, zr_vec3 *lo, zr_vec3 *hi) {
   zr_vec3 l, h, cl, ch;
   bool bounded = unclipped_bounds(object, &l, &h);
+  /* What the tracer cannot box itself takes its bounded_by's box
+     (prepare.c hands a union's down to its parts). */
+  if (!bounded && object->bound)
+    bounded = zr__object_bounds(object->bound, &l, &h);
   if (!object->clip || !zr__object_bounds(object->clip, &cl, &ch)) {
     *lo = l;
     *hi = h;
