@@ -1146,7 +1146,7 @@ str_expr:
 | T_STR '(' cexpr ',' cexpr ',' cexpr ')'
     {
       double v, w, prec;
-      TRY(zr__sdl_want_float(p, &$3, &@3, &v));
+      TRY(zr__sdl_want_any_float(p, &$3, &@3, &v));
       TRY(zr__sdl_want_float(p, &$5, &@5, &w));
       TRY(zr__sdl_want_float(p, &$7, &@7, &prec));
       TRY($$ = zr__sdl_str(p, v, w, prec, &@$));
@@ -1538,8 +1538,8 @@ object_head:
 | T_BOX '{' expr comma expr
     {
       TRY($$ = zr__sdl_object_new(p, ZR_OBJ_BOX, &@1));
-      TRY(zr__sdl_want_vector(p, &$3, &@3, &$$->u.box.corner1));
-      TRY(zr__sdl_want_vector(p, &$5, &@5, &$$->u.box.corner2));
+      TRY(zr__sdl_want_extent(p, &$3, &@3, &$$->u.box.corner1));
+      TRY(zr__sdl_want_extent(p, &$5, &@5, &$$->u.box.corner2));
     }
 | T_PLANE '{' expr comma expr
     {

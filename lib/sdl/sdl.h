@@ -723,6 +723,15 @@ bool zr__sdl_call(zr_sdl_parser *p, int func, const zr_sdl_list *args,
                   const zr_sdl_loc *loc, zr_sdl_expr *out);
 bool zr__sdl_want_float(zr_sdl_parser *p, const zr_sdl_expr *e,
                         const zr_sdl_loc *loc, double *out);
+/* A float that may be infinite or not a number: what str() prints
+   (POV-Ray writes "inf", "-inf", "-nan" after a division by zero). */
+bool zr__sdl_want_any_float(zr_sdl_parser *p, const zr_sdl_expr *e,
+                            const zr_sdl_loc *loc, double *out);
+/* A box corner: a vector whose components may be +-inf (a division by
+   zero upstream: POV-Ray renders the box as reaching infinity), never
+   a NaN. */
+bool zr__sdl_want_extent(zr_sdl_parser *p, const zr_sdl_expr *e,
+                         const zr_sdl_loc *loc, zr_vec3 *out);
 bool zr__sdl_want_vector(zr_sdl_parser *p, const zr_sdl_expr *e,
                          const zr_sdl_loc *loc, zr_vec3 *out);
 bool zr__sdl_want_colour(zr_sdl_parser *p, const zr_sdl_expr *e,
