@@ -1,7 +1,7 @@
 // The .hf component of a pigment function ("Function Pattern":
 // hf = (Red + Green/255) * 0.996093), used by khayyam90's organ.pov in an
 // isosurface.  Values measured with povray 3.7's #debug.
-// expect: pigment_hf: 0.499023 0.249512 0.898241 0.250000
+// expect: pigment_hf: 0.499023 0.249512 0.598828 0.250000
 #version 3.7;
 global_settings { assumed_gamma 1 }
 #declare P = function { pigment { gradient x
@@ -9,7 +9,7 @@ global_settings { assumed_gamma 1 }
 #declare F = function { P(x,y,z).hf }
 #declare G = function { P(x,y,z).filter }
 #debug concat("pigment_hf: ", str(F(0.5,0,0),0,6), " ", str(F(0.25,0,0),0,6),
-  " ", str(F(0.9,0,0),0,6), " ", str(G(0.5,0,0),0,6), "\n")
+  " ", str(F(0.6,0,0),0,6), " ", str(G(0.5,0,0),0,6), "\n")
 camera { location <0,1,-4> look_at 0 }
 light_source { <5,10,-10> rgb 1 }
 #declare Q = function { pigment { function { (sin(x*3)+1)/2 }
