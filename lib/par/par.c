@@ -423,12 +423,12 @@ static zr_status collect_changes(zr_par *par, const float *mine, float *band,
   }
   zr_status s = ZR_OK;
   size_t bytes = mask_bytes + changed * px_bytes;
-  char *pack = NULL;
+  unsigned char *pack = NULL;
   if (bytes > (size_t)INT_MAX)
     s = ZR_ELIMIT;
   else if (!(pack = calloc(bytes ? bytes : 1, 1)))
     s = ZR_ENOMEM;
-  char *at = pack + mask_bytes;
+  unsigned char *at = pack + mask_bytes;
   for (int i = 0; s == ZR_OK && i < rows; i++) {
     int y = y0 + zr__rows_row(i, par->rank, n);
     for (int x = 0; x < width; x++) {
@@ -436,13 +436,13 @@ static zr_status collect_changes(zr_par *par, const float *mine, float *band,
       if (memcmp(mp, CENTRE(y, x), px_bytes) == 0)
         continue;
       size_t bit = (size_t)i * (size_t)width + (size_t)x;
-      pack[bit / 8] |= (char)(1u << (bit % 8));
+      pack[bit / 8] |= (unsigned char)(1u << (bit % 8));
       memcpy(at, mp, px_bytes);
       at += px_bytes;
     }
   }
   int *counts = NULL, *displs = NULL;
-  char *all = NULL;
+  unsigned char *all = NULL;
   if (par->rank == 0) {
     counts = calloc((size_t)n, sizeof *counts);
     displs = calloc((size_t)n, sizeof *displs);
@@ -479,8 +479,8 @@ static zr_status collect_changes(zr_par *par, const float *mine, float *band,
     /* Rank r's rows: the centres, then its changed pixels. */
     int r_rows = zr__rows_count(y1 - y0, r, n);
     size_t r_mask = ((size_t)r_rows * (size_t)width + 7) / 8;
-    const char *mask = all + displs[r], *end = mask + counts[r];
-    const char *from = mask + r_mask;
+    const unsigned char *mask = all + displs[r], *end = mask + counts[r];
+    const unsigned char *from = mask + r_mask;
     if (from > end) {
       s = ZR_EMPI;
       break;
