@@ -21,10 +21,14 @@
  */
 #include "trace/bvh.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
 
 #include "core/context.h"
 #include "trace/obj_mesh.h"
@@ -48,27 +52,33 @@ typedef struct bvh_node {
 
 /*
  * A node of the wide tree the tracer walks: up to WIDTH children, each a
- * node of the binary tree the builder made (their boxes, bit for bit),
- * found by opening the binary children with the largest surface area
- * until WIDTH are reached (the collapse of Wald, Benthin and Boulos,
- * "Getting rid of packets", 2008), kept in the binary tree's
- * left-to-right order.  The boxes are stored one axis and one side at a
- * time for the four children (structure of arrays), so the slab test of
- * all four is one loop over four lanes, in double precision and without
- * fused multiply-adds (-std=c11 keeps -ffp-contract=off): the entry
- * distances are the binary walk's, bit for bit.  On bench/peers.sh's
- * sphereflake at 1024^2 the whole run took 1.15 s of user time against
- * the binary walk's 1.31 s (best of three, a loaded 2-core VM).  An AVX2
- * clone of the walks, picked at load time with GCC's target_clones, took
- * 0.28 s against this plain x86-64 code's 0.21 s at 384^2 there, so
- * there is none.
+ * node of the binary tree the builder made, found by opening the binary
+ * children with the largest surface area until WIDTH are reached (the
+ * collapse of Wald, Benthin and Boulos, "Getting rid of packets", 2008),
+ * kept in the binary tree's left-to-right order.  The boxes are stored
+ * one axis and one side at a time for the four children (structure of
+ * arrays), in single precision rounded outward (each float box holds
+ * the double one), so a node is two cache lines and the slab test of
+ * all four children is one loop over four float lanes, which GCC makes
+ * one SSE instruction an operation (x86-64's baseline: no dispatch, and
+ * the same arithmetic on any machine, -std=c11 keeping
+ * -ffp-contract=off).  The test is made conservative by a margin (see
+ * slab_ray): it may open a box the exact test would skip, never skip
+ * one the exact test opens, so the primitives tested, hence the
+ * crossings found, are the double test's.  On bench/peers.sh's
+ * sphereflake this took the whole run from 1.00 to 0.xx (see
+ * bench/results/peers-cpu-2026-12-02-kernel.txt).
  */
 typedef struct wide_node {
-  double lo[3][WIDTH], hi[3][WIDTH];
+  float lo[3][WIDTH], hi[3][WIDTH];
   uint32_t child[WIDTH]; /* leaf: first primitive; inner: wide node */
-  uint32_t count[WIDTH]; /* leaf: number of primitives; inner: 0 */
-  uint32_t n;            /* children used, 1 to WIDTH */
+  /* Leaf: number of primitives (at most 16, build_node's leaves);
+     inner: 0; NO_CHILD: an unused lane. */
+  uint16_t count[WIDTH];
+  float extent; /* the largest magnitude of a coordinate of the boxes */
 } wide_node;
+
+enum { NO_CHILD = UINT16_MAX };
 
 struct zr_bvh {
   size_t n_nodes, n_leaves; /* of the binary tree, for statistics */
@@ -368,6 +378,32 @@ static double node_area(const bvh_node *node) {
   return box_area(&b);
 }
 
+/* The float after f (f itself for a NaN or +inf), without a call to
+   nextafterf: the tracer rounds each ray's interval this way. */
+static inline float float_after(float f) {
+  if (f != f || f == INFINITY)
+    return f;
+  if (f == 0.0f)
+    return FLT_TRUE_MIN;
+  uint32_t bits;
+  memcpy(&bits, &f, sizeof bits);
+  bits = f > 0.0f ? bits + 1 : bits - 1;
+  memcpy(&f, &bits, sizeof f);
+  return f;
+}
+
+/* Single precision bounds that still hold the double value (a value
+   beyond the largest float gets an infinity). */
+static inline float round_down(double x) {
+  float f = (float)x;
+  return (double)f > x ? -float_after(-f) : f;
+}
+
+static inline float round_up(double x) {
+  float f = (float)x;
+  return (double)f < x ? float_after(f) : f;
+}
+
 /* The wide node for binary node root and, recursively, those below it;
    returns its index.  bvh->wide has room for one per binary node. */
 static uint32_t collapse(struct zr_bvh *bvh, const bvh_node *nodes,
@@ -403,17 +439,26 @@ static uint32_t collapse(struct zr_bvh *bvh, const bvh_node *nodes,
   }
   wide_node *w = &bvh->wide[index];
   memset(w, 0, sizeof *w);
-  w->n = n;
-  for (uint32_t k = 0; k < n; k++)
+  float extent = 0.0f;
+  for (uint32_t k = 0; k < WIDTH; k++)
     for (int a = 0; a < 3; a++) {
-      w->lo[a][k] = nodes[kids[k]].lo[a];
-      w->hi[a][k] = nodes[kids[k]].hi[a];
+      /* An unused lane gets the empty box of the first child's low
+         corner; its count marks it unused anyway. */
+      double lo = k < n ? nodes[kids[k]].lo[a] : nodes[kids[0]].lo[a];
+      double hi = k < n ? nodes[kids[k]].hi[a] : nodes[kids[0]].lo[a];
+      w->lo[a][k] = round_down(lo);
+      w->hi[a][k] = round_up(hi);
+      extent = fmaxf(extent, fmaxf(fabsf(w->lo[a][k]),
+                                   fabsf(w->hi[a][k])));
     }
+  w->extent = extent;
+  for (uint32_t k = n; k < WIDTH; k++)
+    w->count[k] = NO_CHILD;
   for (uint32_t k = 0; k < n; k++) {
     const bvh_node *b = &nodes[kids[k]];
     if (b->count > 0) {
       bvh->wide[index].child[k] = b->first;
-      bvh->wide[index].count[k] = b->count;
+      bvh->wide[index].count[k] = (uint16_t)b->count;
     } else {
       uint32_t c = collapse(bvh, nodes, kids[k]);
       bvh->wide[index].child[k] = c;
@@ -539,8 +584,8 @@ size_t zr__bvh_point_candidates(const struct zr_bvh *bvh, zr_vec3 p,
     stack[sp++] = 0;
   while (sp > 0) {
     const wide_node *w = &bvh->wide[stack[--sp]];
-    for (uint32_t c = 0; c < w->n; c++) {
-      if (!box_holds(w, c, p))
+    for (uint32_t c = 0; c < WIDTH; c++) {
+      if (w->count[c] == NO_CHILD || !box_holds(w, c, p))
         continue;
       if (w->count[c] > 0) {
         for (uint32_t i = w->child[c]; i < w->child[c] + w->count[c];
@@ -568,51 +613,94 @@ void zr__bvh_get_info(const struct zr_bvh *bvh, zr_bvh_info *info) {
   info->depth = bvh->depth;
 }
 
-/* The ray in the form the slab test wants. */
+/*
+ * The ray in the form the float slab test wants, and that test's margin.
+ * The exact distances along axis a are (box - org) / dir; the test
+ * computes them from org and 1 / dir in float, the box's coordinates
+ * being floats already (that hold the double boxes).  Rounding org moves
+ * t by at most u |org| |inv| (u = 2^-24, float's unit roundoff); the
+ * subtraction, the product and 1 / dir (d rounded to float, then the
+ * division) by at most about 4u |t|, and |t| <= (|box| + |org|) |inv|.
+ * So every distance is within 5u (E + |org|) |inv| of the exact one, E
+ * the node's largest coordinate magnitude (wide_node.extent), and
+ * entries lowered and exits raised by 2^-19 (E + |org|) |inv| (32u,
+ * leaving room for the rounding of the margin's own arithmetic) give a
+ * test that never misses a box the exact test meets.  A direction
+ * component of 0 or nearly so gets +-1e30 for 1 / dir, which keeps the
+ * products finite (no 0 * inf = NaN) and makes the margin so wide that
+ * the axis limits nothing within any distance a scene has.
+ */
 typedef struct slab_ray {
-  double org[3], inv[3];
+  float org[3], inv[3];
+  float org_pad[3]; /* 2^-19 |org| |inv| */
+  float ext_pad[3]; /* 2^-19 |inv|, times a node's extent */
 } slab_ray;
 
-static void make_slab_ray(const zr_ray *ray, slab_ray *s) {
-  s->org[0] = ray->origin.x;
-  s->org[1] = ray->origin.y;
-  s->org[2] = ray->origin.z;
+static inline void make_slab_ray(const zr_ray *ray, slab_ray *s) {
+  double o[3] = {ray->origin.x, ray->origin.y, ray->origin.z};
   double d[3] = {ray->dir.x, ray->dir.y, ray->dir.z};
-  /* A huge finite stand-in for 1/0 keeps the slab test free of NaN: an
-     origin exactly on a slab's plane gives 0 * 1e300 = 0, where 0 * inf
-     would give NaN. */
-  for (int a = 0; a < 3; a++)
-    s->inv[a] = fabs(d[a]) > 1e-300 ? 1.0 / d[a] : copysign(1e300, d[a]);
+  for (int a = 0; a < 3; a++) {
+    float df = (float)d[a];
+    float inv = fabsf(df) > 1e-30f ? 1.0f / df : copysignf(1e30f, df);
+    s->org[a] = (float)o[a];
+    s->inv[a] = inv;
+    double scale = 0x1p-19 * fabs((double)inv);
+    s->org_pad[a] = (float)(scale * fabs(o[a]));
+    s->ext_pad[a] = (float)scale;
+  }
 }
+
+/* SSE's minps and maxps, lane by lane: the second operand when the
+   comparison fails (a NaN included), so the plain C path below gives
+   the SSE path's floats, bit for bit. */
+static inline float min_lane(float a, float b) { return a < b ? a : b; }
+static inline float max_lane(float a, float b) { return a > b ? a : b; }
 
 /*
  * The entry distances of the ray into the boxes of w's children within
- * (tmin, tmax), INFINITY for those it misses (and garbage past w->n).
- * Plain comparisons rather than fmin/fmax, which the C library must call
- * out of line for their NaN rules: this is the tracer's innermost loop,
- * and a loop over the four children that the compiler vectorizes.
+ * (tmin, tmax), lowered by the margin, INFINITY for those it misses and
+ * for unused lanes.  This is the tracer's innermost loop: with SSE
+ * (every x86-64) the four children are one instruction an operation;
+ * elsewhere the same operations run a lane at a time.
  */
 static inline void slab_entries(const wide_node *w, const slab_ray *r,
-                                double tmin, double tmax,
-                                double out[WIDTH]) {
-  double t0[WIDTH], t1[WIDTH];
+                                float tmin, float tmax, double out[WIDTH]) {
+#ifdef __SSE2__
+  __m128 t0 = _mm_set1_ps(tmin), t1 = _mm_set1_ps(tmax);
+  for (int a = 0; a < 3; a++) {
+    __m128 org = _mm_set1_ps(r->org[a]), inv = _mm_set1_ps(r->inv[a]);
+    __m128 pad = _mm_set1_ps(r->org_pad[a] + r->ext_pad[a] * w->extent);
+    __m128 ta = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(w->lo[a]), org), inv);
+    __m128 tb = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(w->hi[a]), org), inv);
+    __m128 near = _mm_sub_ps(_mm_min_ps(ta, tb), pad);
+    __m128 far = _mm_add_ps(_mm_max_ps(ta, tb), pad);
+    t0 = _mm_max_ps(near, t0);
+    t1 = _mm_min_ps(far, t1);
+  }
+  float e0[WIDTH], e1[WIDTH];
+  _mm_storeu_ps(e0, t0);
+  _mm_storeu_ps(e1, t1);
+#else
+  float e0[WIDTH], e1[WIDTH];
   for (int c = 0; c < WIDTH; c++) {
-    t0[c] = tmin;
-    t1[c] = tmax;
+    e0[c] = tmin;
+    e1[c] = tmax;
   }
   for (int a = 0; a < 3; a++) {
-    double org = r->org[a], inv = r->inv[a];
+    float pad = r->org_pad[a] + r->ext_pad[a] * w->extent;
     for (int c = 0; c < WIDTH; c++) {
-      double ta = (w->lo[a][c] - org) * inv;
-      double tb = (w->hi[a][c] - org) * inv;
-      double near = ta > tb ? tb : ta;
-      double far = ta > tb ? ta : tb;
-      t0[c] = near > t0[c] ? near : t0[c];
-      t1[c] = far < t1[c] ? far : t1[c];
+      float ta = (w->lo[a][c] - r->org[a]) * r->inv[a];
+      float tb = (w->hi[a][c] - r->org[a]) * r->inv[a];
+      float near = min_lane(ta, tb) - pad;
+      float far = max_lane(ta, tb) + pad;
+      e0[c] = max_lane(near, e0[c]);
+      e1[c] = min_lane(far, e1[c]);
     }
   }
+#endif
   for (int c = 0; c < WIDTH; c++)
-    out[c] = t0[c] <= t1[c] ? t0[c] : INFINITY;
+    out[c] = e0[c] <= e1[c] && w->count[c] != NO_CHILD ? (double)e0[c]
+                                                       : INFINITY;
 }
 
 /* A child waiting on the stack: a wide node (count 0) or a leaf's run of
@@ -687,6 +775,9 @@ static bool nearest_t(const struct zr_bvh *bvh, const zr_ray *ray,
     return found;
   slab_ray sr;
   make_slab_ray(ray, &sr);
+  /* The interval in floats that hold it: tmax_f follows tmax. */
+  const float tmin_f = round_down(tmin);
+  float tmax_f = round_up(tmax);
   /* Children beyond a crossing found meanwhile are skipped unopened. */
   wide_entry stack[WIDE_STACK_MAX];
   int sp = 0;
@@ -700,19 +791,20 @@ static bool nearest_t(const struct zr_bvh *bvh, const zr_ray *ray,
         if (first_crossing_t(bvh->prims[i], ray, tmin, tmax, h) > 0) {
           *hit = h[0];
           tmax = h[0].t;
+          tmax_f = round_up(tmax);
           found = true;
         }
       continue;
     }
     const wide_node *w = &bvh->wide[e.child];
     double t[WIDTH];
-    slab_entries(w, &sr, tmin, tmax, t);
+    slab_entries(w, &sr, tmin_f, tmax_f, t);
     /* The children met, nearest first (ties keep the tree's order), are
        pushed farthest first so the nearest is searched first and
        shrinks tmax for the others. */
     wide_entry met[WIDTH];
     int n = 0;
-    for (uint32_t c = 0; c < w->n; c++) {
+    for (uint32_t c = 0; c < WIDTH; c++) {
       if (t[c] == INFINITY)
         continue;
       wide_entry x = {w->child[c], w->count[c], t[c]};
@@ -782,6 +874,7 @@ bool zr__bvh_all(const struct zr_bvh *bvh, const zr_ray *ray, double tmin,
     return true;
   slab_ray sr;
   make_slab_ray(ray, &sr);
+  const float tmin_f = round_down(tmin), tmax_f = round_up(tmax);
   /* Leaves are visited in the tree's left-to-right order: children are
      pushed last to first. */
   wide_entry stack[WIDE_STACK_MAX];
@@ -800,8 +893,8 @@ bool zr__bvh_all(const struct zr_bvh *bvh, const zr_ray *ray, double tmin,
     }
     const wide_node *w = &bvh->wide[e.child];
     double t[WIDTH];
-    slab_entries(w, &sr, tmin, tmax, t);
-    for (int c = (int)w->n - 1; c >= 0 && sp < WIDE_STACK_MAX; c--)
+    slab_entries(w, &sr, tmin_f, tmax_f, t);
+    for (int c = WIDTH - 1; c >= 0 && sp < WIDE_STACK_MAX; c--)
       if (t[c] != INFINITY)
         stack[sp++] = (wide_entry){w->child[c], w->count[c], t[c]};
   }
