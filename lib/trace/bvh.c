@@ -442,12 +442,13 @@ static uint32_t collapse(struct zr_bvh *bvh, const bvh_node *nodes,
   float extent = 0.0f;
   for (uint32_t k = 0; k < WIDTH; k++)
     for (int a = 0; a < 3; a++) {
-      /* An unused lane gets the empty box of the first child's low
-         corner; its count marks it unused anyway. */
-      double lo = k < n ? nodes[kids[k]].lo[a] : nodes[kids[0]].lo[a];
-      double hi = k < n ? nodes[kids[k]].hi[a] : nodes[kids[0]].lo[a];
-      w->lo[a][k] = round_down(lo);
-      w->hi[a][k] = round_up(hi);
+      if (k >= n) {
+        /* An unused lane: a box no ray meets (slab_entries). */
+        w->lo[a][k] = w->hi[a][k] = NAN;
+        continue;
+      }
+      w->lo[a][k] = round_down(nodes[kids[k]].lo[a]);
+      w->hi[a][k] = round_up(nodes[kids[k]].hi[a]);
       extent = fmaxf(extent, fmaxf(fabsf(w->lo[a][k]),
                                    fabsf(w->hi[a][k])));
     }
@@ -657,14 +658,17 @@ static inline float min_lane(float a, float b) { return a < b ? a : b; }
 static inline float max_lane(float a, float b) { return a > b ? a : b; }
 
 /*
- * The entry distances of the ray into the boxes of w's children within
- * (tmin, tmax), lowered by the margin, INFINITY for those it misses and
- * for unused lanes.  This is the tracer's innermost loop: with SSE
- * (every x86-64) the four children are one instruction an operation;
- * elsewhere the same operations run a lane at a time.
+ * Which of w's children the ray meets within (tmin, tmax): bit c of the
+ * result for child c, with the entry distance, lowered by the margin, in
+ * t[c].  An unused lane's box is NaN, and the maxima and minima take the
+ * NaN (it is their second operand), so the lane never passes.  This is
+ * the tracer's innermost loop: with SSE (every x86-64) the four
+ * children are one instruction an operation; elsewhere the same
+ * operations run a lane at a time.
  */
-static inline void slab_entries(const wide_node *w, const slab_ray *r,
-                                float tmin, float tmax, double out[WIDTH]) {
+static inline unsigned slab_entries(const wide_node *w, const slab_ray *r,
+                                    float tmin, float tmax,
+                                    float t[WIDTH]) {
 #ifdef __SSE2__
   __m128 t0 = _mm_set1_ps(tmin), t1 = _mm_set1_ps(tmax);
   for (int a = 0; a < 3; a++) {
@@ -674,17 +678,16 @@ static inline void slab_entries(const wide_node *w, const slab_ray *r,
     __m128 tb = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(w->hi[a]), org), inv);
     __m128 near = _mm_sub_ps(_mm_min_ps(ta, tb), pad);
     __m128 far = _mm_add_ps(_mm_max_ps(ta, tb), pad);
-    t0 = _mm_max_ps(near, t0);
-    t1 = _mm_min_ps(far, t1);
+    t0 = _mm_max_ps(t0, near);
+    t1 = _mm_min_ps(t1, far);
   }
-  float e0[WIDTH], e1[WIDTH];
-  _mm_storeu_ps(e0, t0);
-  _mm_storeu_ps(e1, t1);
+  _mm_storeu_ps(t, t0);
+  return (unsigned)_mm_movemask_ps(_mm_cmple_ps(t0, t1));
 #else
-  float e0[WIDTH], e1[WIDTH];
+  float t1[WIDTH];
   for (int c = 0; c < WIDTH; c++) {
-    e0[c] = tmin;
-    e1[c] = tmax;
+    t[c] = tmin;
+    t1[c] = tmax;
   }
   for (int a = 0; a < 3; a++) {
     float pad = r->org_pad[a] + r->ext_pad[a] * w->extent;
@@ -693,21 +696,22 @@ static inline void slab_entries(const wide_node *w, const slab_ray *r,
       float tb = (w->hi[a][c] - r->org[a]) * r->inv[a];
       float near = min_lane(ta, tb) - pad;
       float far = max_lane(ta, tb) + pad;
-      e0[c] = max_lane(near, e0[c]);
-      e1[c] = min_lane(far, e1[c]);
+      t[c] = max_lane(t[c], near);
+      t1[c] = min_lane(t1[c], far);
     }
   }
-#endif
+  unsigned mask = 0;
   for (int c = 0; c < WIDTH; c++)
-    out[c] = e0[c] <= e1[c] && w->count[c] != NO_CHILD ? (double)e0[c]
-                                                       : INFINITY;
+    mask |= (unsigned)(t[c] <= t1[c]) << c;
+  return mask;
+#endif
 }
 
 /* A child waiting on the stack: a wide node (count 0) or a leaf's run of
    primitives, with the distance at which the ray enters its box. */
 typedef struct wide_entry {
   uint32_t child, count;
-  double t;
+  float t;
 } wide_entry;
 
 /*
@@ -781,7 +785,7 @@ static bool nearest_t(const struct zr_bvh *bvh, const zr_ray *ray,
   /* Children beyond a crossing found meanwhile are skipped unopened. */
   wide_entry stack[WIDE_STACK_MAX];
   int sp = 0;
-  stack[sp++] = (wide_entry){0, 0, tmin};
+  stack[sp++] = (wide_entry){0, 0, tmin_f};
   while (sp > 0) {
     wide_entry e = stack[--sp];
     if (e.t >= tmax)
@@ -797,15 +801,15 @@ static bool nearest_t(const struct zr_bvh *bvh, const zr_ray *ray,
       continue;
     }
     const wide_node *w = &bvh->wide[e.child];
-    double t[WIDTH];
-    slab_entries(w, &sr, tmin_f, tmax_f, t);
+    float t[WIDTH];
+    unsigned mask = slab_entries(w, &sr, tmin_f, tmax_f, t);
     /* The children met, nearest first (ties keep the tree's order), are
        pushed farthest first so the nearest is searched first and
        shrinks tmax for the others. */
     wide_entry met[WIDTH];
     int n = 0;
     for (uint32_t c = 0; c < WIDTH; c++) {
-      if (t[c] == INFINITY)
+      if (!(mask >> c & 1))
         continue;
       wide_entry x = {w->child[c], w->count[c], t[c]};
       int k = n++;
@@ -879,7 +883,7 @@ bool zr__bvh_all(const struct zr_bvh *bvh, const zr_ray *ray, double tmin,
      pushed last to first. */
   wide_entry stack[WIDE_STACK_MAX];
   int sp = 0;
-  stack[sp++] = (wide_entry){0, 0, tmin};
+  stack[sp++] = (wide_entry){0, 0, tmin_f};
   while (sp > 0) {
     wide_entry e = stack[--sp];
     if (e.count > 0) {
@@ -892,10 +896,10 @@ bool zr__bvh_all(const struct zr_bvh *bvh, const zr_ray *ray, double tmin,
       continue;
     }
     const wide_node *w = &bvh->wide[e.child];
-    double t[WIDTH];
-    slab_entries(w, &sr, tmin_f, tmax_f, t);
+    float t[WIDTH];
+    unsigned mask = slab_entries(w, &sr, tmin_f, tmax_f, t);
     for (int c = WIDTH - 1; c >= 0 && sp < WIDE_STACK_MAX; c--)
-      if (t[c] != INFINITY)
+      if (mask >> c & 1)
         stack[sp++] = (wide_entry){w->child[c], w->count[c], t[c]};
   }
   return true;
