@@ -747,11 +747,36 @@ static int sphere_t(const zr_object *o, const zr_ray *ray, double tmin,
   return n;
 }
 
+/* The same for a plane (obj_plane.c), the floor most scenes stand on,
+   which every ray tests. */
+static inline bool plain_plane(const zr_object *o) {
+  return o->kind == ZR_OBJ_PLANE && !o->transform && !o->clip;
+}
+
+static int plane_t(const zr_object *o, const zr_ray *ray, double tmin,
+                   double tmax, zr_hit hits[ZR_MAX_CROSSINGS]) {
+  zr_vec3 n = o->u.plane.normal;
+  double dn = zr_v3_dot(n, ray->dir);
+  if (dn == 0.0)
+    return 0;
+  double t = (o->u.plane.distance - zr_v3_dot(n, ray->origin)) / dn;
+  if (!(isfinite(t) && t > tmin && t < tmax))
+    return 0;
+  hits[0].t = t;
+  hits[0].normal = zr_v3(0, 0, 0);
+  hits[0].object = o;
+  hits[0].u = hits[0].v = 0.0;
+  return 1;
+}
+
 static inline int crossings_t(const zr_object *o, const zr_ray *ray,
                               double tmin, double tmax,
                               zr_hit hits[ZR_MAX_CROSSINGS]) {
-  return plain_sphere(o) ? sphere_t(o, ray, tmin, tmax, hits)
-                         : zr__intersect_t(o, ray, tmin, tmax, hits);
+  if (plain_sphere(o))
+    return sphere_t(o, ray, tmin, tmax, hits);
+  if (plain_plane(o))
+    return plane_t(o, ray, tmin, tmax, hits);
+  return zr__intersect_t(o, ray, tmin, tmax, hits);
 }
 
 /* The first of crossings_t's crossings, all the search for the nearest
@@ -833,6 +858,19 @@ bool zr__bvh_nearest(const struct zr_bvh *bvh, const zr_ray *ray,
   bool found = nearest_t(bvh, ray, tmin, tmax, hit);
   if (!found)
     return false;
+  /* A plain sphere or plane gives its normal as intersect.c would from
+     the crossing at hit->t (found again there by the same arithmetic):
+     the shape's normal at the point, normalized, turned for inverse. */
+  const zr_object *o = hit->object;
+  if (plain_sphere(o) || plain_plane(o)) {
+    zr_vec3 n = plain_plane(o)
+                    ? o->u.plane.normal
+                    : zr_v3_sub(zr_v3_madd(ray->origin, ray->dir, hit->t),
+                                o->u.sphere.centre);
+    n = zr_v3_norm(n);
+    hit->normal = o->inverse ? zr_v3_neg(n) : n;
+    return true;
+  }
   /* Only the winner's normal is needed: intersect it once more with
      normals, over an interval that still contains its crossing.  It
      starts just before that crossing: the winner may be a part of a CSG
@@ -869,7 +907,7 @@ bool zr__bvh_all(const struct zr_bvh *bvh, const zr_ray *ray, double tmin,
     return true;
   zr_hit h[ZR_MAX_CROSSINGS];
   for (size_t i = 0; i < bvh->n_unbounded; i++) {
-    int n = zr__intersect_t(bvh->unbounded[i], ray, tmin, tmax, h);
+    int n = crossings_t(bvh->unbounded[i], ray, tmin, tmax, h);
     for (int k = 0; k < n; k++)
       if (!visit(&h[k], user))
         return false;
