@@ -21,10 +21,14 @@
  */
 #include "trace/bvh.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
 
 #include "core/context.h"
 #include "trace/obj_mesh.h"
@@ -48,27 +52,35 @@ typedef struct bvh_node {
 
 /*
  * A node of the wide tree the tracer walks: up to WIDTH children, each a
- * node of the binary tree the builder made (their boxes, bit for bit),
- * found by opening the binary children with the largest surface area
- * until WIDTH are reached (the collapse of Wald, Benthin and Boulos,
- * "Getting rid of packets", 2008), kept in the binary tree's
- * left-to-right order.  The boxes are stored one axis and one side at a
- * time for the four children (structure of arrays), so the slab test of
- * all four is one loop over four lanes, in double precision and without
- * fused multiply-adds (-std=c11 keeps -ffp-contract=off): the entry
- * distances are the binary walk's, bit for bit.  On bench/peers.sh's
- * sphereflake at 1024^2 the whole run took 1.15 s of user time against
- * the binary walk's 1.31 s (best of three, a loaded 2-core VM).  An AVX2
- * clone of the walks, picked at load time with GCC's target_clones, took
- * 0.28 s against this plain x86-64 code's 0.21 s at 384^2 there, so
- * there is none.
+ * node of the binary tree the builder made, found by opening the binary
+ * children with the largest surface area until WIDTH are reached (the
+ * collapse of Wald, Benthin and Boulos, "Getting rid of packets", 2008),
+ * kept in the binary tree's left-to-right order.  The boxes are stored
+ * one axis and one side at a time for the four children (structure of
+ * arrays), in single precision rounded outward (each float box holds
+ * the double one), so a node is two cache lines and the slab test of
+ * all four children is one loop over four float lanes, which GCC makes
+ * one SSE instruction an operation (x86-64's baseline: no dispatch, and
+ * the same arithmetic on any machine, -std=c11 keeping
+ * -ffp-contract=off).  The test is made conservative by a margin (see
+ * slab_ray): it may open a box the exact test would skip, never skip
+ * one the exact test opens, so the primitives tested, hence the
+ * crossings found, are the double test's (test_bvh's
+ * float_boxes_never_miss fails without the margin).  With the two fast
+ * paths below (plane, normals), bench/peers.sh's sphereflake at 2048^2
+ * took 4.94 s of CPU against the double nodes' 6.63 s in one run
+ * (bench/results/peers-cpu-2026-12-02-kernel.txt).
  */
 typedef struct wide_node {
-  double lo[3][WIDTH], hi[3][WIDTH];
+  float lo[3][WIDTH], hi[3][WIDTH];
   uint32_t child[WIDTH]; /* leaf: first primitive; inner: wide node */
-  uint32_t count[WIDTH]; /* leaf: number of primitives; inner: 0 */
-  uint32_t n;            /* children used, 1 to WIDTH */
+  /* Leaf: number of primitives (at most 16, build_node's leaves);
+     inner: 0; NO_CHILD: an unused lane. */
+  uint16_t count[WIDTH];
+  float extent; /* the largest magnitude of a coordinate of the boxes */
 } wide_node;
+
+enum { NO_CHILD = UINT16_MAX };
 
 struct zr_bvh {
   size_t n_nodes, n_leaves; /* of the binary tree, for statistics */
@@ -368,6 +380,32 @@ static double node_area(const bvh_node *node) {
   return box_area(&b);
 }
 
+/* The float after f (f itself for a NaN or +inf), without a call to
+   nextafterf: the tracer rounds each ray's interval this way. */
+static inline float float_after(float f) {
+  if (f != f || f == INFINITY)
+    return f;
+  if (f == 0.0f)
+    return FLT_TRUE_MIN;
+  uint32_t bits;
+  memcpy(&bits, &f, sizeof bits);
+  bits = f > 0.0f ? bits + 1 : bits - 1;
+  memcpy(&f, &bits, sizeof f);
+  return f;
+}
+
+/* Single precision bounds that still hold the double value (a value
+   beyond the largest float gets an infinity). */
+static inline float round_down(double x) {
+  float f = (float)x;
+  return (double)f > x ? -float_after(-f) : f;
+}
+
+static inline float round_up(double x) {
+  float f = (float)x;
+  return (double)f < x ? float_after(f) : f;
+}
+
 /* The wide node for binary node root and, recursively, those below it;
    returns its index.  bvh->wide has room for one per binary node. */
 static uint32_t collapse(struct zr_bvh *bvh, const bvh_node *nodes,
@@ -403,17 +441,27 @@ static uint32_t collapse(struct zr_bvh *bvh, const bvh_node *nodes,
   }
   wide_node *w = &bvh->wide[index];
   memset(w, 0, sizeof *w);
-  w->n = n;
-  for (uint32_t k = 0; k < n; k++)
+  float extent = 0.0f;
+  for (uint32_t k = 0; k < WIDTH; k++)
     for (int a = 0; a < 3; a++) {
-      w->lo[a][k] = nodes[kids[k]].lo[a];
-      w->hi[a][k] = nodes[kids[k]].hi[a];
+      if (k >= n) {
+        /* An unused lane: a box no ray meets (slab_entries). */
+        w->lo[a][k] = w->hi[a][k] = NAN;
+        continue;
+      }
+      w->lo[a][k] = round_down(nodes[kids[k]].lo[a]);
+      w->hi[a][k] = round_up(nodes[kids[k]].hi[a]);
+      extent = fmaxf(extent, fmaxf(fabsf(w->lo[a][k]),
+                                   fabsf(w->hi[a][k])));
     }
+  w->extent = extent;
+  for (uint32_t k = n; k < WIDTH; k++)
+    w->count[k] = NO_CHILD;
   for (uint32_t k = 0; k < n; k++) {
     const bvh_node *b = &nodes[kids[k]];
     if (b->count > 0) {
       bvh->wide[index].child[k] = b->first;
-      bvh->wide[index].count[k] = b->count;
+      bvh->wide[index].count[k] = (uint16_t)b->count;
     } else {
       uint32_t c = collapse(bvh, nodes, kids[k]);
       bvh->wide[index].child[k] = c;
@@ -539,8 +587,8 @@ size_t zr__bvh_point_candidates(const struct zr_bvh *bvh, zr_vec3 p,
     stack[sp++] = 0;
   while (sp > 0) {
     const wide_node *w = &bvh->wide[stack[--sp]];
-    for (uint32_t c = 0; c < w->n; c++) {
-      if (!box_holds(w, c, p))
+    for (uint32_t c = 0; c < WIDTH; c++) {
+      if (w->count[c] == NO_CHILD || !box_holds(w, c, p))
         continue;
       if (w->count[c] > 0) {
         for (uint32_t i = w->child[c]; i < w->child[c] + w->count[c];
@@ -568,58 +616,104 @@ void zr__bvh_get_info(const struct zr_bvh *bvh, zr_bvh_info *info) {
   info->depth = bvh->depth;
 }
 
-/* The ray in the form the slab test wants. */
+/*
+ * The ray in the form the float slab test wants, and that test's margin.
+ * The exact distances along axis a are (box - org) / dir; the test
+ * computes them from org and 1 / dir in float, the box's coordinates
+ * being floats already (that hold the double boxes).  Rounding org moves
+ * t by at most u |org| |inv| (u = 2^-24, float's unit roundoff); the
+ * subtraction, the product and 1 / dir (d rounded to float, then the
+ * division) by at most about 4u |t|, and |t| <= (|box| + |org|) |inv|.
+ * So every distance is within 5u (E + |org|) |inv| of the exact one, E
+ * the node's largest coordinate magnitude (wide_node.extent), and
+ * entries lowered and exits raised by 2^-19 (E + |org|) |inv| (32u,
+ * leaving room for the rounding of the margin's own arithmetic) give a
+ * test that never misses a box the exact test meets.  A direction
+ * component of 0 or nearly so gets +-1e30 for 1 / dir, which keeps the
+ * products finite (no 0 * inf = NaN) and makes the margin so wide that
+ * the axis limits nothing within any distance a scene has.
+ */
 typedef struct slab_ray {
-  double org[3], inv[3];
+  float org[3], inv[3];
+  float org_pad[3]; /* 2^-19 |org| |inv| */
+  float ext_pad[3]; /* 2^-19 |inv|, times a node's extent */
 } slab_ray;
 
-static void make_slab_ray(const zr_ray *ray, slab_ray *s) {
-  s->org[0] = ray->origin.x;
-  s->org[1] = ray->origin.y;
-  s->org[2] = ray->origin.z;
+static inline void make_slab_ray(const zr_ray *ray, slab_ray *s) {
+  double o[3] = {ray->origin.x, ray->origin.y, ray->origin.z};
   double d[3] = {ray->dir.x, ray->dir.y, ray->dir.z};
-  /* A huge finite stand-in for 1/0 keeps the slab test free of NaN: an
-     origin exactly on a slab's plane gives 0 * 1e300 = 0, where 0 * inf
-     would give NaN. */
-  for (int a = 0; a < 3; a++)
-    s->inv[a] = fabs(d[a]) > 1e-300 ? 1.0 / d[a] : copysign(1e300, d[a]);
+  for (int a = 0; a < 3; a++) {
+    float df = (float)d[a];
+    float inv = fabsf(df) > 1e-30f ? 1.0f / df : copysignf(1e30f, df);
+    s->org[a] = (float)o[a];
+    s->inv[a] = inv;
+    double scale = 0x1p-19 * fabs((double)inv);
+    s->org_pad[a] = (float)(scale * fabs(o[a]));
+    s->ext_pad[a] = (float)scale;
+  }
 }
 
+/* SSE's minps and maxps, lane by lane: the second operand when the
+   comparison fails (a NaN included), so the plain C path below gives
+   the SSE path's floats, bit for bit. */
+static inline float min_lane(float a, float b) { return a < b ? a : b; }
+static inline float max_lane(float a, float b) { return a > b ? a : b; }
+
 /*
- * The entry distances of the ray into the boxes of w's children within
- * (tmin, tmax), INFINITY for those it misses (and garbage past w->n).
- * Plain comparisons rather than fmin/fmax, which the C library must call
- * out of line for their NaN rules: this is the tracer's innermost loop,
- * and a loop over the four children that the compiler vectorizes.
+ * Which of w's children the ray meets within (tmin, tmax): bit c of the
+ * result for child c, with the entry distance, lowered by the margin, in
+ * t[c].  An unused lane's box is NaN, and the maxima and minima take the
+ * NaN (it is their second operand), so the lane never passes.  This is
+ * the tracer's innermost loop: with SSE (every x86-64) the four
+ * children are one instruction an operation; elsewhere the same
+ * operations run a lane at a time.
  */
-static inline void slab_entries(const wide_node *w, const slab_ray *r,
-                                double tmin, double tmax,
-                                double out[WIDTH]) {
-  double t0[WIDTH], t1[WIDTH];
+static inline unsigned slab_entries(const wide_node *w, const slab_ray *r,
+                                    float tmin, float tmax,
+                                    float t[WIDTH]) {
+#ifdef __SSE2__
+  __m128 t0 = _mm_set1_ps(tmin), t1 = _mm_set1_ps(tmax);
+  for (int a = 0; a < 3; a++) {
+    __m128 org = _mm_set1_ps(r->org[a]), inv = _mm_set1_ps(r->inv[a]);
+    __m128 pad = _mm_set1_ps(r->org_pad[a] + r->ext_pad[a] * w->extent);
+    __m128 ta = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(w->lo[a]), org), inv);
+    __m128 tb = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(w->hi[a]), org), inv);
+    __m128 near = _mm_sub_ps(_mm_min_ps(ta, tb), pad);
+    __m128 far = _mm_add_ps(_mm_max_ps(ta, tb), pad);
+    t0 = _mm_max_ps(t0, near);
+    t1 = _mm_min_ps(t1, far);
+  }
+  _mm_storeu_ps(t, t0);
+  return (unsigned)_mm_movemask_ps(_mm_cmple_ps(t0, t1));
+#else
+  float t1[WIDTH];
   for (int c = 0; c < WIDTH; c++) {
-    t0[c] = tmin;
+    t[c] = tmin;
     t1[c] = tmax;
   }
   for (int a = 0; a < 3; a++) {
-    double org = r->org[a], inv = r->inv[a];
+    float pad = r->org_pad[a] + r->ext_pad[a] * w->extent;
     for (int c = 0; c < WIDTH; c++) {
-      double ta = (w->lo[a][c] - org) * inv;
-      double tb = (w->hi[a][c] - org) * inv;
-      double near = ta > tb ? tb : ta;
-      double far = ta > tb ? ta : tb;
-      t0[c] = near > t0[c] ? near : t0[c];
-      t1[c] = far < t1[c] ? far : t1[c];
+      float ta = (w->lo[a][c] - r->org[a]) * r->inv[a];
+      float tb = (w->hi[a][c] - r->org[a]) * r->inv[a];
+      float near = min_lane(ta, tb) - pad;
+      float far = max_lane(ta, tb) + pad;
+      t[c] = max_lane(t[c], near);
+      t1[c] = min_lane(t1[c], far);
     }
   }
+  unsigned mask = 0;
   for (int c = 0; c < WIDTH; c++)
-    out[c] = t0[c] <= t1[c] ? t0[c] : INFINITY;
+    mask |= (unsigned)(t[c] <= t1[c]) << c;
+  return mask;
+#endif
 }
 
 /* A child waiting on the stack: a wide node (count 0) or a leaf's run of
    primitives, with the distance at which the ray enters its box. */
 typedef struct wide_entry {
   uint32_t child, count;
-  double t;
+  float t;
 } wide_entry;
 
 /*
@@ -655,11 +749,36 @@ static int sphere_t(const zr_object *o, const zr_ray *ray, double tmin,
   return n;
 }
 
+/* The same for a plane (obj_plane.c), the floor most scenes stand on,
+   which every ray tests. */
+static inline bool plain_plane(const zr_object *o) {
+  return o->kind == ZR_OBJ_PLANE && !o->transform && !o->clip;
+}
+
+static int plane_t(const zr_object *o, const zr_ray *ray, double tmin,
+                   double tmax, zr_hit hits[ZR_MAX_CROSSINGS]) {
+  zr_vec3 n = o->u.plane.normal;
+  double dn = zr_v3_dot(n, ray->dir);
+  if (dn == 0.0)
+    return 0;
+  double t = (o->u.plane.distance - zr_v3_dot(n, ray->origin)) / dn;
+  if (!(isfinite(t) && t > tmin && t < tmax))
+    return 0;
+  hits[0].t = t;
+  hits[0].normal = zr_v3(0, 0, 0);
+  hits[0].object = o;
+  hits[0].u = hits[0].v = 0.0;
+  return 1;
+}
+
 static inline int crossings_t(const zr_object *o, const zr_ray *ray,
                               double tmin, double tmax,
                               zr_hit hits[ZR_MAX_CROSSINGS]) {
-  return plain_sphere(o) ? sphere_t(o, ray, tmin, tmax, hits)
-                         : zr__intersect_t(o, ray, tmin, tmax, hits);
+  if (plain_sphere(o))
+    return sphere_t(o, ray, tmin, tmax, hits);
+  if (plain_plane(o))
+    return plane_t(o, ray, tmin, tmax, hits);
+  return zr__intersect_t(o, ray, tmin, tmax, hits);
 }
 
 /* The first of crossings_t's crossings, all the search for the nearest
@@ -687,10 +806,13 @@ static bool nearest_t(const struct zr_bvh *bvh, const zr_ray *ray,
     return found;
   slab_ray sr;
   make_slab_ray(ray, &sr);
+  /* The interval in floats that hold it: tmax_f follows tmax. */
+  const float tmin_f = round_down(tmin);
+  float tmax_f = round_up(tmax);
   /* Children beyond a crossing found meanwhile are skipped unopened. */
   wide_entry stack[WIDE_STACK_MAX];
   int sp = 0;
-  stack[sp++] = (wide_entry){0, 0, tmin};
+  stack[sp++] = (wide_entry){0, 0, tmin_f};
   while (sp > 0) {
     wide_entry e = stack[--sp];
     if (e.t >= tmax)
@@ -700,20 +822,21 @@ static bool nearest_t(const struct zr_bvh *bvh, const zr_ray *ray,
         if (first_crossing_t(bvh->prims[i], ray, tmin, tmax, h) > 0) {
           *hit = h[0];
           tmax = h[0].t;
+          tmax_f = round_up(tmax);
           found = true;
         }
       continue;
     }
     const wide_node *w = &bvh->wide[e.child];
-    double t[WIDTH];
-    slab_entries(w, &sr, tmin, tmax, t);
+    float t[WIDTH];
+    unsigned mask = slab_entries(w, &sr, tmin_f, tmax_f, t);
     /* The children met, nearest first (ties keep the tree's order), are
        pushed farthest first so the nearest is searched first and
        shrinks tmax for the others. */
     wide_entry met[WIDTH];
     int n = 0;
-    for (uint32_t c = 0; c < w->n; c++) {
-      if (t[c] == INFINITY)
+    for (uint32_t c = 0; c < WIDTH; c++) {
+      if (!(mask >> c & 1))
         continue;
       wide_entry x = {w->child[c], w->count[c], t[c]};
       int k = n++;
@@ -737,6 +860,19 @@ bool zr__bvh_nearest(const struct zr_bvh *bvh, const zr_ray *ray,
   bool found = nearest_t(bvh, ray, tmin, tmax, hit);
   if (!found)
     return false;
+  /* A plain sphere or plane gives its normal as intersect.c would from
+     the crossing at hit->t (found again there by the same arithmetic):
+     the shape's normal at the point, normalized, turned for inverse. */
+  const zr_object *o = hit->object;
+  if (plain_sphere(o) || plain_plane(o)) {
+    zr_vec3 n = plain_plane(o)
+                    ? o->u.plane.normal
+                    : zr_v3_sub(zr_v3_madd(ray->origin, ray->dir, hit->t),
+                                o->u.sphere.centre);
+    n = zr_v3_norm(n);
+    hit->normal = o->inverse ? zr_v3_neg(n) : n;
+    return true;
+  }
   /* Only the winner's normal is needed: intersect it once more with
      normals, over an interval that still contains its crossing.  It
      starts just before that crossing: the winner may be a part of a CSG
@@ -773,7 +909,7 @@ bool zr__bvh_all(const struct zr_bvh *bvh, const zr_ray *ray, double tmin,
     return true;
   zr_hit h[ZR_MAX_CROSSINGS];
   for (size_t i = 0; i < bvh->n_unbounded; i++) {
-    int n = zr__intersect_t(bvh->unbounded[i], ray, tmin, tmax, h);
+    int n = crossings_t(bvh->unbounded[i], ray, tmin, tmax, h);
     for (int k = 0; k < n; k++)
       if (!visit(&h[k], user))
         return false;
@@ -782,11 +918,12 @@ bool zr__bvh_all(const struct zr_bvh *bvh, const zr_ray *ray, double tmin,
     return true;
   slab_ray sr;
   make_slab_ray(ray, &sr);
+  const float tmin_f = round_down(tmin), tmax_f = round_up(tmax);
   /* Leaves are visited in the tree's left-to-right order: children are
      pushed last to first. */
   wide_entry stack[WIDE_STACK_MAX];
   int sp = 0;
-  stack[sp++] = (wide_entry){0, 0, tmin};
+  stack[sp++] = (wide_entry){0, 0, tmin_f};
   while (sp > 0) {
     wide_entry e = stack[--sp];
     if (e.count > 0) {
@@ -799,10 +936,10 @@ bool zr__bvh_all(const struct zr_bvh *bvh, const zr_ray *ray, double tmin,
       continue;
     }
     const wide_node *w = &bvh->wide[e.child];
-    double t[WIDTH];
-    slab_entries(w, &sr, tmin, tmax, t);
-    for (int c = (int)w->n - 1; c >= 0 && sp < WIDE_STACK_MAX; c--)
-      if (t[c] != INFINITY)
+    float t[WIDTH];
+    unsigned mask = slab_entries(w, &sr, tmin_f, tmax_f, t);
+    for (int c = WIDTH - 1; c >= 0 && sp < WIDE_STACK_MAX; c--)
+      if (mask >> c & 1)
         stack[sp++] = (wide_entry){w->child[c], w->count[c], t[c]};
   }
   return true;
