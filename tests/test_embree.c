@@ -28,6 +28,7 @@
 #include "config.h"
 #include "core/strbuf.h"
 #include "scene/scene.h"
+#include "trace/embree.h"
 #include "trace/obj_mesh.h"
 #include "zrcube.h"
 
@@ -209,6 +210,23 @@ static void test_embree_crossings_match(void **state) {
     fail_msg("%d of %d rays found other crossings", differ, RAYS);
 }
 
+/* The rays handed back to the hierarchy (a candidate near an edge) must
+   be rare, or the backend would cost more than it saves: under 1%. */
+static void test_embree_few_handed_back(void **state) {
+  pair *p = *state;
+  uint64_t seed = 4242;
+  int back = 0;
+  for (int r = 0; r < RAYS; r++) {
+    zr_vec3 org, dir;
+    random_ray(&seed, &org, &dir);
+    zr_mesh_raw_hit h, two[2];
+    back += zr__embree_nearest(p->b, org, dir, 1e-6, INFINITY, &h) < 0;
+    back += zr__embree_crossings(p->b, org, dir, 1e-6, INFINITY, two) < 0;
+  }
+  print_message("handed back: %d of %d queries\n", back, 2 * RAYS);
+  assert_true(back < 2 * RAYS / 100);
+}
+
 /* A short interval around a crossing (how the tracer asks for the
    winner's normal, lib/trace/bvh.c) finds it again despite Embree's
    single precision; a negative tmin is the built-in search's. */
@@ -251,6 +269,7 @@ int main(void) {
       cmocka_unit_test(test_embree_nearest_matches),
       cmocka_unit_test(test_embree_crossings_match),
       cmocka_unit_test(test_embree_narrow_interval),
+      cmocka_unit_test(test_embree_few_handed_back),
   };
   failed += cmocka_run_group_tests(pair_tests, setup_pair, teardown_pair);
 #endif

@@ -24,12 +24,18 @@
  * rounding (SLACK times the size of the coordinates over the length of
  * the direction), and the filter applies the exact one.
  *
- * What can still differ from the built-in hierarchy: a ray through an
- * edge or a vertex, which both neighbours cross at the same t in
- * double, gets whichever Embree names (the built-in search keeps the
- * least face row); and a ray that grazes a silhouette within single
- * precision may hit in one backend only.  tests/embree.sh bounds what
- * that does to pictures.
+ * Near an edge the two precisions may disagree on which side a ray
+ * passes: Embree may name a triangle that our test finds just outside
+ * (its neighbour, which our test would take, unnamed), or name one of
+ * two neighbours that both meet the ray at the same t (where the
+ * built-in search keeps the least face row).  So a candidate whose
+ * barycentric coordinates come within EDGE of its border (scaled by the
+ * size of the coordinates over the triangle's) makes the answer unsure,
+ * and when that happens before the crossings kept, the ray is handed
+ * back (-1) to the mesh's own hierarchy, which gives the built-in
+ * answer.  What can still differ: a ray that grazes the outline of a
+ * mesh, which Embree's single precision misses altogether.
+ * tests/test_embree.c and tests/embree.sh bound what that does.
  *
  * For the nearest crossing the filter accepts every confirmed triangle,
  * so Embree shrinks the ray and prunes behind it, and keeps the least
@@ -53,6 +59,10 @@
    over the length of the direction: single precision rounds at 6e-8,
    and bench/embree.sh found differences up to 6e-6 relative to t. */
 #define SLACK 1e-4
+/* How near the border of a triangle, in barycentric units for a
+   triangle as large as the coordinates, a candidate makes the answer
+   unsure: some 16 units of single precision's last place. */
+#define EDGE 1e-6
 
 struct zr_embree_mesh {
   RTCScene scene;
@@ -74,6 +84,8 @@ typedef struct query {
   bool two; /* keep the nearest two and reject every triangle */
   int n;
   zr_mesh_raw_hit best[2];
+  double size;   /* the mesh's largest coordinate, or the origin's */
+  double unsure; /* the least t of a candidate near an edge */
 } query;
 
 static bool before(const zr_mesh_raw_hit *a, const zr_mesh_raw_hit *b) {
@@ -106,6 +118,28 @@ static void keep(query *q, const zr_mesh_raw_hit *h) {
   }
 }
 
+/* The margin in barycentric units within which face f's border is
+   unsure: EDGE times the size of the coordinates over the face's. */
+static double edge_margin(const query *q, size_t f) {
+  const struct zr_mesh *m = q->mesh;
+  const uint32_t *idx = m->faces[f];
+  zr_vec3 p0 = m->vertices[idx[0]];
+  zr_vec3 n = zr_v3_cross(zr_v3_sub(m->vertices[idx[1]], p0),
+                          zr_v3_sub(m->vertices[idx[2]], p0));
+  double area = sqrt(zr_v3_dot(n, n));
+  return area > 0.0 ? EDGE * q->size / sqrt(area) : INFINITY;
+}
+
+/* Marks the query unsure from t on when the crossing u, v with face f
+   lies within the face's margin of its border, inside or out. */
+static void check_edge(query *q, size_t f, double t, double u, double v) {
+  if (!(t > q->tmin && t < q->tmax) || !(t < q->unsure))
+    return;
+  double e = edge_margin(q, f), w = 1.0 - u - v;
+  if (u > -e && v > -e && w > -e && (u < e || v < e || w < e))
+    q->unsure = t;
+}
+
 /* The intersection filter: N rays' hits in Embree's RTCHitN layout
    (rtcore_ray.h: primID is the sixth of its N-wide rows). */
 static void confirm(const struct RTCFilterFunctionNArguments *args) {
@@ -117,13 +151,22 @@ static void confirm(const struct RTCFilterFunctionNArguments *args) {
       continue;
     zr_mesh_raw_hit h;
     h.face = prim[i];
-    if (h.face >= q->mesh->n_faces ||
-        !zr__mesh_face_hit(q->mesh, h.face, q->org, q->dir, &h.t, &h.u,
-                           &h.v) ||
-        !(h.t > q->tmin && h.t < q->tmax)) {
+    if (h.face >= q->mesh->n_faces) {
       args->valid[i] = 0;
       continue;
     }
+    if (!zr__mesh_face_hit(q->mesh, h.face, q->org, q->dir, &h.t, &h.u,
+                           &h.v) ||
+        !(h.t > q->tmin && h.t < q->tmax)) {
+      /* Refused: perhaps just outside, where a neighbour Embree did not
+         name would take the ray. */
+      if (zr__mesh_face_plane(q->mesh, h.face, q->org, q->dir, &h.t, &h.u,
+                              &h.v))
+        check_edge(q, h.face, h.t, h.u, h.v);
+      args->valid[i] = 0;
+      continue;
+    }
+    check_edge(q, h.face, h.t, h.u, h.v);
     keep(q, &h);
     if (q->two)
       args->valid[i] = 0;
@@ -140,8 +183,12 @@ static float round_up(double x) {
   return (double)f < x ? nextafterf(f, INFINITY) : f;
 }
 
+/* Plain comparisons: fmax is a call into the C library (perf showed
+   it), and NaN is refused by the callers' own tests. */
+static double larger(double a, double b) { return a > b ? a : b; }
+
 static double max_abs(zr_vec3 v) {
-  return fmax(fabs(v.x), fmax(fabs(v.y), fabs(v.z)));
+  return larger(fabs(v.x), larger(fabs(v.y), fabs(v.z)));
 }
 
 /* Asks Embree; false when the ray cannot be put in single precision
@@ -149,10 +196,12 @@ static double max_abs(zr_vec3 v) {
 static bool run(query *q) {
   const struct zr_embree_mesh *e = q->mesh->accel;
   double len = sqrt(zr_v3_dot(q->dir, q->dir));
-  double size = fmax(e->size, max_abs(q->org));
+  double size = larger(e->size, max_abs(q->org));
   if (!(len > 0.0) || !isfinite(len) || !(size < 1e30) ||
       !(q->tmin >= 0.0) || q->tmax != q->tmax)
     return false;
+  q->size = size;
+  q->unsure = INFINITY;
   double slack = SLACK * size / len;
   double lo = q->tmin - slack - SLACK * q->tmin;
   double hi = q->tmax + slack + SLACK * q->tmax;
@@ -182,6 +231,10 @@ int zr__embree_nearest(const struct zr_mesh *m, zr_vec3 org, zr_vec3 dir,
   query q = {.mesh = m, .org = org, .dir = dir, .tmin = tmin, .tmax = tmax};
   if (!run(&q))
     return -1;
+  /* An unsure candidate at or before the crossing found, or with none
+     found: the hierarchy decides. */
+  if (q.unsure < INFINITY && (q.n == 0 || q.unsure <= q.best[0].t))
+    return -1;
   if (q.n > 0)
     *out = q.best[0];
   return q.n;
@@ -192,6 +245,8 @@ int zr__embree_crossings(const struct zr_mesh *m, zr_vec3 org, zr_vec3 dir,
   query q = {.mesh = m, .org = org, .dir = dir, .tmin = tmin, .tmax = tmax,
              .two = true};
   if (!run(&q))
+    return -1;
+  if (q.unsure < INFINITY && (q.n < 2 || q.unsure <= q.best[1].t))
     return -1;
   for (int i = 0; i < q.n; i++)
     out[i] = q.best[i];
@@ -222,7 +277,7 @@ static struct zr_embree_mesh *build_mesh(RTCDevice dev,
     double a = max_abs(m->vertices[i]);
     if (!(a < 1e30))
       return NULL;
-    size = fmax(size, a);
+    size = larger(size, a);
   }
   if (m->n_vertices > UINT32_MAX)
     return NULL;

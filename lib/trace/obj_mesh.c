@@ -431,6 +431,25 @@ bool zr__mesh_face_hit(const struct zr_mesh *m, size_t f, zr_vec3 org,
   return face_hit(m, f, org, dir, t, u, v);
 }
 
+bool zr__mesh_face_plane(const struct zr_mesh *m, size_t f, zr_vec3 org,
+                         zr_vec3 dir, double *t, double *u, double *v) {
+  const uint32_t *idx = m->faces[f];
+  zr_vec3 p0 = m->vertices[idx[0]];
+  zr_vec3 e1 = zr_v3_sub(m->vertices[idx[1]], p0);
+  zr_vec3 e2 = zr_v3_sub(m->vertices[idx[2]], p0);
+  zr_vec3 pv = zr_v3_cross(dir, e2);
+  double det = zr_v3_dot(e1, pv);
+  if (det == 0.0 || !isfinite(det))
+    return false;
+  double inv = 1.0 / det;
+  zr_vec3 tv = zr_v3_sub(org, p0);
+  zr_vec3 qv = zr_v3_cross(tv, e1);
+  *u = zr_v3_dot(tv, pv) * inv;
+  *v = zr_v3_dot(dir, qv) * inv;
+  *t = zr_v3_dot(e2, qv) * inv;
+  return true;
+}
+
 static void make_slab(zr_vec3 org, zr_vec3 dir, slab_ray *r) {
   r->org[0] = org.x;
   r->org[1] = org.y;

@@ -34,6 +34,12 @@ typedef struct zr_mesh_raw_hit {
 bool zr__mesh_face_hit(const struct zr_mesh *mesh, size_t f, zr_vec3 org,
                        zr_vec3 dir, double *t, double *u, double *v);
 
+/* The barycentric u, v and the t at which the line crosses the plane of
+   face f, computed as that test computes them, whether or not they lie
+   in the triangle; false when the line is parallel to it. */
+bool zr__mesh_face_plane(const struct zr_mesh *mesh, size_t f, zr_vec3 org,
+                         zr_vec3 dir, double *t, double *u, double *v);
+
 /* Builds the BVH (reordering the faces) and checks the indices; the
    first bad index is reported in *bad_face (status ZR_ESCENE). */
 zr_status zr__mesh_build(struct zr_mesh *mesh, zr_arena *arena,
