@@ -6,6 +6,10 @@
 #
 #   bench/embree.sh BUILD_DIR [SIZE...]   (default sizes: 512 2048)
 #
+# Then the sphereflake's spheres as Embree user geometry with our
+# double-precision sphere test against zRcube's hierarchy, camera rays
+# (bench/embree_spheres.c).
+#
 # Links the probe against BUILD_DIR's static library (its internal
 # calls are hidden in the shared one).  Exits 77 when libembree-dev or
 # python3 is missing.  Timings are printed, never asserted.
@@ -29,8 +33,13 @@ deps=$(sed -n "s/^dependency_libs='\(.*\)'/\1/p" "$build/lib/libzrcube.la")
 ${CC:-cc} -O2 -std=c11 -I"$top/lib" -I"$top/include" -I"$build" \
   "$here/embree_probe.c" "$build/lib/.libs/libzrcube.a" -lembree3 $deps \
   -lm -lpthread -o "$work/embree_probe"
+# shellcheck disable=SC2086
+${CC:-cc} -O2 -std=c11 -I"$top/lib" -I"$top/include" -I"$build" \
+  "$here/embree_spheres.c" "$build/lib/.libs/libzrcube.a" -lembree3 $deps \
+  -lm -lpthread -o "$work/embree_spheres"
 "$python" "$here/peers_gen.py" "$work"
 echo "host: $(uname -m), $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg)"
 for size in $sizes; do
   "$work/embree_probe" "$work/terrain.pov" "$size"
+  "$work/embree_spheres" "$work/flake.pov" "$size"
 done

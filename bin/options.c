@@ -59,6 +59,7 @@ typedef enum opt_key {
   K_MEMORY_LIMIT,
   K_FILE_LIMIT,
   K_PNG_LEVEL,
+  K_ACCEL,
   K_IGNORED,      /* display options: zrcube opens no window */
   K_OUTPUT_ON,    /* optional format */
   K_OUTPUT_OFF,   /* optional format, kept for later */
@@ -159,6 +160,7 @@ void zr__cli_init(zr_cli_options *o, const zr_render_params *defaults) {
   o->loop_limit = ZR_DEFAULT_WORK_LIMIT;
   o->file_limit = ZR_DEFAULT_FILE_LIMIT;
   o->png_level = ZR_DEFAULT_PNG_LEVEL;
+  o->accel = ZR_ACCEL_DEFAULT;
   /* The library's defaults are the command line's (issue 11). */
   zr_radiosity_params_init(&o->rad, NULL);
   o->gi = ZR_GI_AUTO;
@@ -962,6 +964,14 @@ static int apply(const arg_ctx *c, opt_key key, const char *value) {
       return fail(c, "'%s': --png-level must be 0 to 9", c->what);
     o->png_level = value[0] - '0';
     return 0;
+  case K_ACCEL:
+    if (value && !strcmp(value, "builtin"))
+      o->accel = ZR_ACCEL_BUILTIN;
+    else if (value && !strcmp(value, "embree"))
+      o->accel = ZR_ACCEL_EMBREE;
+    else
+      return fail(c, "'%s': --accel must be builtin or embree", c->what);
+    return 0;
   case K_IGNORED:
     return 0;
   case K_OUTPUT_ON:
@@ -1221,6 +1231,7 @@ static const long_option long_options[] = {
     {"memory-limit", K_MEMORY_LIMIT, L_REQUIRED},
     {"max-file-size", K_FILE_LIMIT, L_REQUIRED},
     {"png-level", K_PNG_LEVEL, L_REQUIRED},
+    {"accel", K_ACCEL, L_REQUIRED},
     {"radiosity", K_RADIOSITY, L_NONE},
     {"bf-eps", K_BF_EPS, L_REQUIRED},
     {"area-eps", K_AREA_EPS, L_REQUIRED},
@@ -1958,6 +1969,10 @@ const char *zr__cli_usage(void) {
       "                               (default 1G; 0: no limit)\n"
       "  --png-level=N                PNG compression, 0 (none) to 9\n"
       "                               (smallest); default 1\n"
+      "  --accel=builtin|embree       what finds the triangles of meshes:\n"
+      "                               zRcube's hierarchy or Embree's\n"
+      "                               (builds configured --with-embree,\n"
+      "                               where it is the default)\n"
       "  --read-path=DIR              let scenes read below DIR too\n"
       "  --write-path=DIR             let scenes write below DIR too\n"
       "  --io-restrictions=MODE       restricted (default: scenes read\n"

@@ -52,6 +52,7 @@ typedef struct zr_cli_options {
   unsigned long long memory_limit; /* its bytes; 0: none */
   unsigned long long file_limit; /* --max-file-size; 0: none */
   int png_level;                 /* --png-level, zlib's 0 to 9 */
+  zr_accel accel;                /* --accel */
   /* Radiosity (issue 4): any radiosity option turns it on. */
   int radiosity;          /* solve (or load) a solution, render with it */
   zr_radiosity_params rad; /* the solver's settings */

@@ -582,6 +582,12 @@ static zr_status make_context(run *r) {
   zr_context_set_work_limit(r->ctx, r->opts.loop_limit);
   zr_context_set_file_limit(r->ctx, r->opts.file_limit);
   zr_context_set_png_level(r->ctx, r->opts.png_level);
+  if (zr_context_set_accel(r->ctx, r->opts.accel) != ZR_OK) {
+    if (r->rank == 0)
+      fprintf(stderr, "zrcube: --accel=embree: this zrcube was built "
+                      "without Embree (configure --with-embree)\n");
+    return ZR_EUNSUPPORTED;
+  }
   if (r->opts.memory_limit_given)
     zr_context_set_memory_limit(r->ctx, r->opts.memory_limit);
   s = zr_context_set_render_size(r->ctx, r->opts.params.width,

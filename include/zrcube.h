@@ -317,6 +317,24 @@ ZR_API void zr_context_set_file_limit(zr_context *ctx,
  */
 #define ZR_DEFAULT_PNG_LEVEL 1
 ZR_API zr_status zr_context_set_png_level(zr_context *ctx, int level);
+/*
+ * What finds a ray's triangles in the meshes (mesh, mesh2) of the
+ * scenes parsed next: ZR_ACCEL_BUILTIN, zRcube's own hierarchy; or
+ * ZR_ACCEL_EMBREE, Embree 3's (a build configured --with-embree), whose
+ * single-precision answer names the candidate triangles that zRcube's
+ * double-precision test then confirms, so t, the normal and the surface
+ * coordinates are the built-in ones; rays that graze an edge within
+ * single precision may find a neighbour or miss (issue 13).  Default
+ * ZR_ACCEL_DEFAULT: Embree when the library was built with it.
+ * ZR_EUNSUPPORTED for Embree in a build without it, ZR_EINVAL outside
+ * the enumeration.
+ */
+typedef enum zr_accel {
+  ZR_ACCEL_BUILTIN = 0,
+  ZR_ACCEL_EMBREE = 1,
+  ZR_ACCEL_DEFAULT = 2
+} zr_accel;
+ZR_API zr_status zr_context_set_accel(zr_context *ctx, zr_accel accel);
 /* The message of the last error reported through ctx ("" when none). */
 ZR_API const char *zr_context_last_error(const zr_context *ctx);
 

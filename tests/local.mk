@@ -224,3 +224,8 @@ EXTRA_DIST += tests/test_grazing_normal.sh tests/grazing_normal.pov
 
 # The common start of the picture-comparing test scripts (sourced).
 EXTRA_DIST += tests/render_env.sh
+
+# The Embree backend's pictures against the built-in hierarchy's (skips
+# in a build without Embree).
+TESTS += tests/embree.sh
+EXTRA_DIST += tests/embree.sh tests/embree_scene.pov

@@ -8,6 +8,8 @@
  */
 #include "core/context.h"
 
+#include "config.h"
+
 #include <ctype.h>
 #include <errno.h>
 #include <math.h>
@@ -41,6 +43,7 @@ ZR_API zr_status zr_context_new(zr_context **out) {
   ctx->work_limit = ZR_DEFAULT_WORK_LIMIT;
   ctx->file_limit = ZR_DEFAULT_FILE_LIMIT;
   ctx->png_level = ZR_DEFAULT_PNG_LEVEL;
+  zr_context_set_accel(ctx, ZR_ACCEL_DEFAULT);
   zr_parse_options_init(&ctx->parse);
   ctx->budget = zr__budget_new(zr__budget_default_limit());
   if (!ctx->budget) {
@@ -49,6 +52,29 @@ ZR_API zr_status zr_context_new(zr_context **out) {
   }
   *out = ctx;
   return ZR_OK;
+}
+
+ZR_API zr_status zr_context_set_accel(zr_context *ctx, zr_accel accel) {
+  switch (accel) {
+  case ZR_ACCEL_DEFAULT:
+#ifdef ZR_HAVE_EMBREE
+    ctx->accel = ZR_ACCEL_EMBREE;
+#else
+    ctx->accel = ZR_ACCEL_BUILTIN;
+#endif
+    return ZR_OK;
+  case ZR_ACCEL_BUILTIN:
+    ctx->accel = accel;
+    return ZR_OK;
+  case ZR_ACCEL_EMBREE:
+#ifdef ZR_HAVE_EMBREE
+    ctx->accel = accel;
+    return ZR_OK;
+#else
+    return ZR_EUNSUPPORTED;
+#endif
+  }
+  return ZR_EINVAL;
 }
 
 ZR_API zr_status zr_context_set_png_level(zr_context *ctx, int level) {

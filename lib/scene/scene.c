@@ -157,6 +157,8 @@ ZR_API void zr_scene_free(zr_scene *scene) {
     scene->bvh_free(scene->bvh);
   if (scene->photons_free)
     scene->photons_free(scene->photons);
+  if (scene->embree_free)
+    scene->embree_free(scene->embree);
   free(scene->primitives);
   free(scene->objects);
   free(scene->lights);

@@ -1046,6 +1046,7 @@ typedef struct zr_settings {
 
 struct zr_bvh; /* the tracer's acceleration structure (lib/trace) */
 struct zr_photon_map; /* photons stored by lib/trace/photons.c */
+struct zr_embree;     /* lib/trace/embree.c's meshes, when built with it */
 
 struct zr_scene {
   zr_arena arena;
@@ -1084,6 +1085,10 @@ struct zr_scene {
      the routine that frees them (lib/trace/photons.c, set with them). */
   struct zr_photon_map *photons;
   void (*photons_free)(struct zr_photon_map *photons);
+  /* The meshes' Embree scenes when the tracer uses that backend (NULL:
+     none), and the routine that frees them (lib/trace/embree.c). */
+  struct zr_embree *embree;
+  void (*embree_free)(struct zr_embree *embree);
   unsigned long long parse_steps; /* the work budget the parse used */
 };
 

@@ -49,6 +49,9 @@ struct zr_mesh {
   uint32_t *face_row;
   zr_mesh_node *nodes;
   size_t n_nodes;
+  /* The mesh's Embree scene when lib/trace/embree.c traces it (NULL:
+     the hierarchy above does); the scene's embree member owns it. */
+  const struct zr_embree_mesh *accel;
   zr_vec3 lo, hi; /* the box of every vertex the faces use */
 };
 

@@ -17,6 +17,13 @@ lib_libzrcube_la_SOURCES += \
 	lib/trace/photons.c lib/trace/photons.h \
 	lib/trace/subsurface.c
 
+# The Embree backend for meshes (configure --with-embree).
+if ZR_EMBREE
+lib_libzrcube_la_SOURCES += lib/trace/embree.c
+endif
+EXTRA_DIST += lib/trace/embree.c
+lib_libzrcube_la_SOURCES += lib/trace/embree.h
+
 # The tracer's tests call zr__ functions, which the shared library hides
 # (-fvisibility=hidden): they link the static archive.
 check_PROGRAMS += tests/test_intersect
@@ -208,3 +215,12 @@ EXTRA_DIST += tests/test_julia_probe.sh bench/julia_probe.sh
 TESTS += tests/test_metallic_probe.sh
 EXTRA_DIST += tests/test_metallic_probe.sh bench/metallic_probe.sh \
 	bench/metallic_fit.py
+
+# The Embree backend against the built-in hierarchy (issue 13); in a
+# build without Embree it checks zr_context_set_accel's refusal alone.
+check_PROGRAMS += tests/test_embree
+TESTS += tests/test_embree
+tests_test_embree_SOURCES = tests/test_embree.c
+tests_test_embree_CPPFLAGS = $(TEST_CPPFLAGS)
+tests_test_embree_LDADD = $(TEST_LDADD)
+tests_test_embree_LDFLAGS = -static

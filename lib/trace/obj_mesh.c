@@ -31,6 +31,7 @@
 #include "trace/obj_mesh.h"
 
 #include "trace/bvh.h"
+#include "trace/embree.h"
 #include "trace/intersect.h"
 #include "trace/prepare.h"
 #include "trace/shape.h"
@@ -425,6 +426,30 @@ static bool face_hit(const struct zr_mesh *m, size_t f, zr_vec3 org,
   return true;
 }
 
+bool zr__mesh_face_hit(const struct zr_mesh *m, size_t f, zr_vec3 org,
+                       zr_vec3 dir, double *t, double *u, double *v) {
+  return face_hit(m, f, org, dir, t, u, v);
+}
+
+bool zr__mesh_face_plane(const struct zr_mesh *m, size_t f, zr_vec3 org,
+                         zr_vec3 dir, double *t, double *u, double *v) {
+  const uint32_t *idx = m->faces[f];
+  zr_vec3 p0 = m->vertices[idx[0]];
+  zr_vec3 e1 = zr_v3_sub(m->vertices[idx[1]], p0);
+  zr_vec3 e2 = zr_v3_sub(m->vertices[idx[2]], p0);
+  zr_vec3 pv = zr_v3_cross(dir, e2);
+  double det = zr_v3_dot(e1, pv);
+  if (det == 0.0 || !isfinite(det))
+    return false;
+  double inv = 1.0 / det;
+  zr_vec3 tv = zr_v3_sub(org, p0);
+  zr_vec3 qv = zr_v3_cross(tv, e1);
+  *u = zr_v3_dot(tv, pv) * inv;
+  *v = zr_v3_dot(dir, qv) * inv;
+  *t = zr_v3_dot(e2, qv) * inv;
+  return true;
+}
+
 static void make_slab(zr_vec3 org, zr_vec3 dir, slab_ray *r) {
   r->org[0] = org.x;
   r->org[1] = org.y;
@@ -435,10 +460,7 @@ static void make_slab(zr_vec3 org, zr_vec3 dir, slab_ray *r) {
 }
 
 /* A crossing found during traversal, before its normal is made. */
-typedef struct raw_hit {
-  double t, u, v;
-  size_t face;
-} raw_hit;
+typedef zr_mesh_raw_hit raw_hit;
 
 static zr_mesh_crossing finish_hit(const struct zr_mesh *m,
                                    const raw_hit *h) {
@@ -486,6 +508,16 @@ int zr__mesh_crossings(const struct zr_mesh *m, zr_vec3 org, zr_vec3 dir,
                        double tmin, double tmax, zr_mesh_crossing out[2]) {
   if (m->n_nodes == 0)
     return 0;
+  if (m->accel) {
+    /* Embree names the triangles (lib/trace/embree.c); -1: a ray it
+       cannot take, which the hierarchy below searches. */
+    raw_hit h[2];
+    int n = zr__embree_crossings(m, org, dir, tmin, tmax, h);
+    for (int i = 0; i < n; i++)
+      out[i] = finish_hit(m, &h[i]);
+    if (n >= 0)
+      return n;
+  }
   slab_ray sr;
   make_slab(org, dir, &sr);
   raw_hit best[2];
@@ -544,6 +576,14 @@ int zr__mesh_nearest(const struct zr_mesh *m, zr_vec3 org, zr_vec3 dir,
                      double tmin, double tmax, zr_mesh_crossing *out) {
   if (m->n_nodes == 0)
     return 0;
+  if (m->accel) {
+    raw_hit h;
+    int n = zr__embree_nearest(m, org, dir, tmin, tmax, &h);
+    if (n > 0)
+      *out = finish_hit(m, &h);
+    if (n >= 0)
+      return n;
+  }
   slab_ray sr;
   make_slab(org, dir, &sr);
   raw_hit best;

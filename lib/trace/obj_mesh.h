@@ -22,6 +22,24 @@ typedef struct zr_mesh_crossing {
   size_t face;     /* which face (radiosity looks its cell up by it) */
 } zr_mesh_crossing;
 
+/* A crossing with one face before its normal is made: t and the
+   barycentric u, v of Moller and Trumbore's test. */
+typedef struct zr_mesh_raw_hit {
+  double t, u, v;
+  size_t face;
+} zr_mesh_raw_hit;
+
+/* That test in double precision: true with t, u, v when the line org +
+   t dir crosses face f (a row of the faces as the BVH ordered them). */
+bool zr__mesh_face_hit(const struct zr_mesh *mesh, size_t f, zr_vec3 org,
+                       zr_vec3 dir, double *t, double *u, double *v);
+
+/* The barycentric u, v and the t at which the line crosses the plane of
+   face f, computed as that test computes them, whether or not they lie
+   in the triangle; false when the line is parallel to it. */
+bool zr__mesh_face_plane(const struct zr_mesh *mesh, size_t f, zr_vec3 org,
+                         zr_vec3 dir, double *t, double *u, double *v);
+
 /* Builds the BVH (reordering the faces) and checks the indices; the
    first bad index is reported in *bad_face (status ZR_ESCENE). */
 zr_status zr__mesh_build(struct zr_mesh *mesh, zr_arena *arena,

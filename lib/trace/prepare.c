@@ -16,6 +16,7 @@
 
 #include "core/context.h"
 #include "trace/bvh.h"
+#include "trace/embree.h"
 #include "trace/intersect.h"
 #include "trace/photons.h"
 #include "trace/shape.h"
@@ -225,6 +226,8 @@ zr_status zr__scene_finish(zr_scene *scene, zr_context *ctx) {
   }
   scene->bvh_free = zr__bvh_free;
   zr_status s = zr__bvh_build(scene, ctx);
+  if (s == ZR_OK)
+    s = zr__embree_attach(scene, ctx); /* lib/trace/embree.c */
   if (s == ZR_OK && scene->settings.photons.on) {
     scene->photons_free = zr__photons_free;
     s = zr__photons_build(scene, ctx); /* lib/trace/photons.c */

@@ -31,7 +31,7 @@ tests_fuzz_fuzz_parse_CFLAGS = $(AM_CFLAGS) $(PTHREAD_CFLAGS) \
 	-fno-omit-frame-pointer
 tests_fuzz_fuzz_parse_LDFLAGS = -fsanitize=fuzzer,address,undefined
 tests_fuzz_fuzz_parse_LDADD = $(PNG_LIBS) $(JPEG_LIBS) $(TIFF_LIBS) \
-	$(EXR_LIBS) $(PTHREAD_LIBS) -lm
+	$(EXR_LIBS) $(EMBREE_LIBS) $(PTHREAD_LIBS) -lm
 $(tests_fuzz_fuzz_parse_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h
 endif
 
