@@ -2190,9 +2190,28 @@ difference_head:
     { TRY(zr__sdl_csg_add_light(p, $1, $2)); $$ = $1; }
 ;
 
+/* A declared object's name alone as the last child of a CSG (Voro++'s
+   irregular.pov: union { particles translate <-4,0,0> }): POV-Ray 3.7
+   reads it as object { particles }, the modifiers after it go to the
+   whole CSG as usual, and another object after it is refused (measured:
+   tests/legacy/bare_object_csg.pov). */
 union_body:
   union_head
 | difference_head
+| union_head T_OBJECT_ID
+    {
+      zr_object *copy = zr__sdl_object_copy(p, $2.ptr);
+      TRY(copy);
+      TRY(zr__sdl_union_add(p, $1, copy));
+      $$ = $1;
+    }
+| difference_head T_OBJECT_ID
+    {
+      zr_object *copy = zr__sdl_object_copy(p, $2.ptr);
+      TRY(copy);
+      TRY(zr__sdl_difference_add(p, $1, copy));
+      $$ = $1;
+    }
 | union_body object_mod
     { TRY(zr__sdl_object_mod(p, $1, &$2, &@2)); $$ = $1; }
 ;

@@ -538,7 +538,10 @@ static const zr_sdl_keyword keywords[] = {
 };
 
 /* Directives keep their '#' so that messages can show them as written.
-   #zfor and #zend are zRcube's own loop (see directive.c). */
+   #zfor and #zend are zRcube's own loop (see directive.c).  #render and
+   #statistics write to POV-Ray's render and statistics streams, which a
+   library has not got: their text goes where #debug's goes (Open Babel's
+   babel_povray3.inc prints its banner with #render). */
 static const zr_sdl_keyword directives[] = {
     {"#break", T_BREAK},    {"#case", T_CASE},
     {"#debug", T_DEBUG},    {"#declare", T_DECLARE},
@@ -550,7 +553,7 @@ static const zr_sdl_keyword directives[] = {
     {"#ifndef", T_IFNDEF},   {"#include", T_INCLUDE},
     {"#local", T_LOCAL},          {"#macro", T_MACRO},
     {"#range", T_RANGE},    {"#read", T_READ},
-    {"#render", T_UNSUPPORTED},   {"#statistics", T_UNSUPPORTED},
+    {"#render", T_DEBUG},         {"#statistics", T_DEBUG},
     {"#switch", T_SWITCH},   {"#undef", T_UNDEF},
     {"#version", T_VERSION},      {"#warning", T_WARNING},
     {"#while", T_WHILE},    {"#write", T_WRITE},
