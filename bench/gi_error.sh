@@ -192,7 +192,7 @@ bench_scene() { # name, scene file, width, height, hierarchical (0/1),
       "$scene" >"$work/$name-$r.pov"
   done
   echo "$name: $(basename "$scene"), ${w}x$h, one thread; truth:" \
-    "zrcube --gi=path --spp=$truth_spp --path-seed=1"
+    "zrcube --gi=path --spp=$truth_spp --path-seed=1 unless said"
   # The emissive box's truth is ../shared/reference's ground truth (4096
   # samples a pixel at 256x256) reduced to the picture's size by block
   # means (bench/gi_truth.py): 4x the samples per pixel at 128x128, where
