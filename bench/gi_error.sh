@@ -19,6 +19,8 @@
 #            target for it (at most 5x the time of POV-Ray's cheapest
 #            rung that reaches 0.10)
 # For each: the truth is zrcube --gi=path at TRUTH_SPP samples a pixel
+# (for cbox: ../shared/reference's truth reduced to the picture's size,
+# when it is there and /usr/bin/python3 has numpy)
 # (--path-seed=1, so no rung below shares its samples), kept in the
 # output folder and reused while it is there.  Every render is one
 # thread (+WT1); the radiosity renders (POV-Ray's and zRcube's cache and
@@ -43,7 +45,8 @@
 #            +FH output.
 #   cache    zRcube's irradiance cache (--gi=cache) with the same blocks.
 #   hier     zRcube's hierarchical radiosity (--gi=hierarchical) at a
-#            ladder of --bf-eps, for the two closed boxes.
+#            ladder of --bf-eps, for the two closed boxes, then settings
+#            EPSvK: --bf-eps=EPS --vis-rays=K.
 #   path     zRcube's path tracer at 1, 4, 16, 64 samples a pixel
 #            (seed 0), whose error is its noise.
 #   off      zRcube without global illumination (--gi=off), for scale.
@@ -94,12 +97,14 @@ if [ $quick -eq 1 ]; then
   truth_spp=256
   rungs="q1 q2 q3"
   bf_ladder="0.01 0.001"
+  hier_vis="0.001v3"
   spp_ladder="1 4 16 64"
   conv_ladder="1 4 16 64"
 else
   truth_spp=1024
   rungs=${GIERR_RUNGS:-"q1 q2 q3 q4"}
   bf_ladder="0.01 0.001 0.0001"
+  hier_vis="0.001v3 0.0003v3 0.0001v2 0.0001v3"
   spp_ladder="1 4 16 64"
   conv_ladder="1 4 16 64 256"
 fi
@@ -176,6 +181,7 @@ bench_scene() { # name, scene file, width, height, hierarchical (0/1),
   aa="+A0.05 +R3"
   truth=$out/$name-truth-${w}x$h-$truth_spp.pfm
   tsv=$out/$name.tsv
+  tspp=$truth_spp
   printf 'method\tsetting\tcpu_seconds\trel_rmse\n' >"$tsv"
   # The scene's copies: as written, and with each rung's block.
   cp "$scene" "$work/$name-scene.pov"
@@ -186,7 +192,23 @@ bench_scene() { # name, scene file, width, height, hierarchical (0/1),
       "$scene" >"$work/$name-$r.pov"
   done
   echo "$name: $(basename "$scene"), ${w}x$h, one thread; truth:" \
-    "zrcube --gi=path --spp=$truth_spp --path-seed=1"
+    "zrcube --gi=path --spp=$truth_spp --path-seed=1 unless said"
+  # The emissive box's truth is ../shared/reference's ground truth (4096
+  # samples a pixel at 256x256) reduced to the picture's size by block
+  # means (bench/gi_truth.py): 4x the samples per pixel at 128x128, where
+  # a 1024-sample truth of our own carries a noise of 0.025-0.04 (two
+  # seeds: 0.0246 and 0.0391 against it, the second with a firefly
+  # cluster on the tall block; 2026-12-02, fourth session).
+  if [ "$name" = cbox ] && [ -f "$shared/cbox_emissive-256.pfm" ] &&
+     [ $((256 % w)) = 0 ] && [ "$w" = "$h" ] && /usr/bin/python3 -c \
+       'import numpy' 2>/dev/null; then
+    truth=$out/$name-truth-${w}x$h-shared.pfm
+    tspp=$((4096 * (256 / w) * (256 / w)))
+    [ -f "$truth" ] || /usr/bin/python3 "$here/gi_truth.py" \
+      --truth "$shared/cbox_emissive-256.pfm" --reduce "${w}x$h" "$truth"
+    echo "  (truth: ../shared/reference's cbox_emissive-256.pfm reduced" \
+      "to ${w}x$h)"
+  fi
   if [ ! -f "$truth" ]; then
     t=$(cpu "$zrcube" "$name-scene.pov" +L"$inc_scene" $res -q --gi=path \
           --spp=$truth_spp --path-seed=1 +O"$truth.tmp.pfm")
@@ -219,13 +241,21 @@ bench_scene() { # name, scene file, width, height, hierarchical (0/1),
         "$name-scene.pov" +L"$inc_scene" $res $aa -q --gi=hierarchical \
         --bf-eps="$e" +O"$out/$name-hier-$e.pfm" || break
     done
+    # Fewer visibility rays a link (--vis-rays, 4 by default): on the
+    # emissive box 3 x 3 keeps 4 x 4's error at 2/3 of its time.
+    for ev in $hier_vis; do
+      e=${ev%v*} v=${ev#*v}
+      measure hier "$ev" "$out/$name-hier-$ev.pfm" "$zrcube" \
+        "$name-scene.pov" +L"$inc_scene" $res $aa -q --gi=hierarchical \
+        --bf-eps="$e" --vis-rays="$v" +O"$out/$name-hier-$ev.pfm" || break
+    done
   fi
   for n in $spp_ladder; do
     measure path "$n" "$out/$name-path-$n.pfm" "$zrcube" "$name-scene.pov" \
       +L"$inc_scene" $res -q --gi=path --spp="$n" \
       +O"$out/$name-path-$n.pfm" || break
   done
-  awk -v truth_spp="$truth_spp" -v name="$name" -f "$here/gi_error.awk" \
+  awk -v truth_spp="$tspp" -v name="$name" -f "$here/gi_error.awk" \
     "$tsv"
   if command -v gnuplot >/dev/null; then
     gnuplot -e "tsv='$tsv'; png='$out/gi-error-$name.png';" \
