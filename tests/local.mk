@@ -224,3 +224,12 @@ EXTRA_DIST += tests/test_grazing_normal.sh tests/grazing_normal.pov
 
 # The common start of the picture-comparing test scripts (sourced).
 EXTRA_DIST += tests/render_env.sh
+
+# A camera's normal { } at the screen point (u, v, 0), povray's values.
+TESTS += tests/test_camera_normal.sh
+EXTRA_DIST += tests/test_camera_normal.sh tests/camera_normal.pov \
+	tests/pixel_check.py
+
+# sky_sphere layers: filter passes untinted, povray's values.
+TESTS += tests/test_sky_layers.sh
+EXTRA_DIST += tests/test_sky_layers.sh tests/sky_layers.pov
