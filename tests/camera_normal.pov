@@ -2,7 +2,8 @@
 // (tests/test_camera_normal.sh).  The camera sits at the centre of a
 // large sphere whose colour is the direction of the ray that hits it
 // (red, green, blue = x, y, z from -1 to 1), so a picture is a map of
-// the camera's ray directions.  Declare=Case=N picks the normal.
+// the camera's ray directions.  Declare=Case=N picks the normal; cases 5
+// and 6 (waves, ripples) are tests/test_waves_normal.sh's.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 #ifndef (Case) #declare Case = 0; #end
@@ -17,6 +18,8 @@ camera {
     #case (2) normal { function { 0.5 + 0.8*y*y } 4 } #break
     #case (3) normal { function { 0.5 + 0.4*z + 0.4*x*y } 4 } #break
     #case (4) normal { bumps 0.5 } #break
+    #case (5) normal { waves 0.5 frequency 2 scale 0.2 } #break
+    #case (6) normal { ripples 0.6 phase 0.2 scale 0.3 } #break
   #end
 }
 #declare R = 1000;

@@ -233,3 +233,7 @@ EXTRA_DIST += tests/test_camera_normal.sh tests/camera_normal.pov \
 # sky_sphere layers: filter passes untinted, povray's values.
 TESTS += tests/test_sky_layers.sh
 EXTRA_DIST += tests/test_sky_layers.sh tests/sky_layers.pov
+
+# Ripples and waves normals: the sine of each wave's phase, povray's values.
+TESTS += tests/test_waves_normal.sh
+EXTRA_DIST += tests/test_waves_normal.sh bench/conform/waves_normal_fit.py

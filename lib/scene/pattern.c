@@ -365,7 +365,7 @@ zr_vec3 zr__pattern_wave_normal(const zr_pattern *pt, zr_vec3 p) {
     double d = zr_v3_len(r);
     if (d == 0)
       continue;
-    double w = cos(2 * PI * (pt->frequency * s * d + pt->phase)) / s;
+    double w = sin(2 * PI * (pt->frequency * s * d + pt->phase)) / s;
     sum = zr_v3_madd(sum, r, w / d);
   }
   return zr_v3_scale(sum, 1.0 / N_WAVES);

@@ -44,7 +44,7 @@ zr_vec3 zr__pattern_point(const zr_pattern *pt, zr_vec3 p);
 
 /* For ripples and waves normals: the mean over the wave centres of the
    unit vector from the centre to p (pattern space, after
-   zr__pattern_point) times the cosine of that wave's phase divided by
+   zr__pattern_point) times the sine of that wave's phase divided by
    its spatial frequency (see pattern.c's wave_sum()). */
 zr_vec3 zr__pattern_wave_normal(const zr_pattern *pt, zr_vec3 p);
 
