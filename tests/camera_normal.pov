@@ -3,10 +3,11 @@
 // large sphere whose colour is the direction of the ray that hits it
 // (red, green, blue = x, y, z from -1 to 1), so a picture is a map of
 // the camera's ray directions.  Declare=Case=N picks the normal; cases 5
-// and 6 (waves, ripples) are tests/test_waves_normal.sh's.
+// to 7 (waves, ripples, 3 waves) are tests/test_waves_normal.sh's.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 #ifndef (Case) #declare Case = 0; #end
+#if (Case = 7) global_settings { number_of_waves 3 } #end
 #declare Loc = <0, 0, 0>;
 #if (Case = 4) #declare Loc = <3.3, 1.7, -2.1>; #end
 #declare LX = Loc.x; #declare LY = Loc.y; #declare LZ = Loc.z;
@@ -20,6 +21,7 @@ camera {
     #case (4) normal { bumps 0.5 } #break
     #case (5) normal { waves 0.5 frequency 2 scale 0.2 } #break
     #case (6) normal { ripples 0.6 phase 0.2 scale 0.3 } #break
+    #case (7) normal { waves 0.6 scale 0.3 } #break
   #end
 }
 #declare R = 1000;
