@@ -237,3 +237,7 @@ EXTRA_DIST += tests/test_sky_layers.sh tests/sky_layers.pov
 # Ripples and waves normals: the sine of each wave's phase, povray's values.
 TESTS += tests/test_waves_normal.sh
 EXTRA_DIST += tests/test_waves_normal.sh bench/conform/waves_normal_fit.py
+
+# A negative transmit is traced: (1 - t) C + t B, povray's values.
+TESTS += tests/test_negative_transmit.sh
+EXTRA_DIST += tests/test_negative_transmit.sh tests/negative_transmit.pov
