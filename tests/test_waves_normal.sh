@@ -12,6 +12,9 @@
 # Before (the cosine, all ten waves), they were 25 to 65 levels off and
 # textures/patterns/waves.pov and ripples.pov scored SSIM 0.93 (1.00
 # now).  With povray installed the whole pictures are compared too.
+# More than 10 waves are not reproduced: a ripples or waves normal under
+# number_of_waves 12 is named in a warning at its place, and none is
+# given for 10 or for a waves pigment.
 #
 # Environment: ZR_SRCDIR, ZR_BUILDDIR (set by `make check`).
 set -u
@@ -38,5 +41,23 @@ for c in 5 6 7; do
   fi
   echo "case $c:"
   /usr/bin/python3 "$srcdir/tests/pixel_check.py" z$c.png $args $ref || fail=1
+done
+for n in 12 10; do
+  printf 'global_settings { number_of_waves %s }\nplane { y, 0 pigment { waves } }\nplane { z, 5 normal {\n  waves 0.3 } }\ncamera { location <0,1,-3> look_at 0 }\n' \
+    $n >nw$n.pov
+  timeout 60 "$zrcube" +Inw$n.pov +Onw$n.png +W8 +H6 -D </dev/null \
+    >nw$n.log 2>&1 || { cat nw$n.log >&2; fail=1; continue; }
+  got=$(grep -c 'warning: number_of_waves' nw$n.log)
+  if [ $n = 12 ]; then
+    if grep -q "^nw12.pov:4:9: warning: number_of_waves 12: this waves normal sums only 10 waves" nw12.log; then
+      echo "ok: number_of_waves 12 is named at nw12.pov:4:9"
+    else
+      echo "FAIL: no located warning for number_of_waves 12:"; cat nw12.log; fail=1
+    fi
+  elif [ "$got" != 0 ]; then
+    echo "FAIL: a warning for number_of_waves 10"; fail=1
+  else
+    echo "ok: no warning for number_of_waves 10"
+  fi
 done
 exit $fail
