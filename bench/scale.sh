@@ -44,9 +44,13 @@ mkdir -p "$out"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-# scene name, arguments (run from scenes/)
-ray_args="default.pov +W2048 +H1536 +A0.3"
-rad_args="cornell.pov --gi=hierarchical +W64 +H64 -D"
+# scene name, arguments (run from scenes/).  --state-interval=600: the
+# +C state file is written every 10 s of wall time by default, and under
+# this machine's load the renders take 10 times the wall time they take
+# on an idle machine with a core a rank (2 to 4 s, no state file at
+# all), so rank 0 wrote 75 MB files the measure stands for none of.
+ray_args="default.pov +W2048 +H1536 +A0.3 --state-interval=600"
+rad_args="cornell.pov --gi=hierarchical +W64 +H64 -D --state-interval=600"
 
 runs=$out/runs.tsv
 printf 'scene\tranks\tthreads\trep\twall\tload1\trank\tphase_wall\tphase_cpu\tsent\n' >"$runs"

@@ -28,8 +28,11 @@ The model (per scene) of the busiest rank's time with N ranks:
              (1 + cv sqrt(2 ln N / (H/N))): the slowest of N sums of H/N
              interleaved rows whose costs vary with coefficient cv,
              fitted to the 4-rank run's render CPU (busiest over mean)
-  gather(N)  = a log2 N + X/B (twice with antialiasing: centres go to
-             every rank), X = width * height * 12 bytes of float pixels
+  gather(N)  = a log2 N + X/B, X the pixel bytes all ranks send,
+             measured in the 2-rank run: the pass-1 centres every rank
+             receives with antialiasing (width * height * 12 bytes of
+             floats), then a bit a pixel and the pixels pass 2 changed
+             (without antialiasing: the floats of every pixel)
 Network: B = 10 Gb/s = 1.25e9 B/s and a = 20 us a message (MPI over TCP
 on 10 GbE); one rank a node; launch, parse and the solve's repeated
 share as measured here.  The check: the model, fitted to the 1- and
@@ -98,6 +101,7 @@ def cpu_phases(ranks):
         'gather': mx(lambda pw, pc, sb: pw['gather']),
         'calls': mx(lambda pw, pc, sb: sb['exchanges']),
         'V': sum(sb['solution'] for pw, pc, sb in ranks.values()),
+        'X': sum(sb['pixels'] for pw, pc, sb in ranks.values()),
         'S': mx(lambda pw, pc, sb: sb['scene']),
     }
 
@@ -166,7 +170,8 @@ def main():
                   f'(rank 0), solution exchanges {c2["V"]:.0f} in '
                   f'{c2["calls"]:.0f} allgathers (2 ranks, all ranks '
                   f'together; {c4["V"]:.0f} in {c4["calls"]:.0f} with 4), '
-                  f'pixels {w * h * 12 * (2 if aa else 1)} gathered.')
+                  f'pixels {c2["X"]:.0f} ({w * h * 12} bytes an image '
+                  f'of floats).')
         # ---- fit on 1 and 4 ranks ----
         P1, G1, R1 = c1['parse'], c1['gi'], c1['render']
         s = 0.0
@@ -200,7 +205,7 @@ def main():
             comm = (ALPHA + S / BW) * lg  # scene broadcast
             if G1 > 0:
                 comm += calls * ALPHA * lg + V / BW
-            comm += ALPHA * lg + w * h * 12 / BW * (2 if aa else 1)
+            comm += ALPHA * lg + c2['X'] / BW
             return t + comm
 
         pred2 = model(2, local=True)

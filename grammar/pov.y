@@ -1146,7 +1146,7 @@ str_expr:
 | T_STR '(' cexpr ',' cexpr ',' cexpr ')'
     {
       double v, w, prec;
-      TRY(zr__sdl_want_float(p, &$3, &@3, &v));
+      TRY(zr__sdl_want_any_float(p, &$3, &@3, &v));
       TRY(zr__sdl_want_float(p, &$5, &@5, &w));
       TRY(zr__sdl_want_float(p, &$7, &@7, &prec));
       TRY($$ = zr__sdl_str(p, v, w, prec, &@$));
@@ -1303,6 +1303,14 @@ primary:
       TRY(zr__sdl_dimension_size(p, $3.ptr, d, &@5, &$$));
     }
 | T_RAND '(' T_SEED_ID ')' { $$ = zr__sdl_float(zr__sdl_rand($3.ptr)); }
+| T_RAND '(' cexpr ')'
+    {
+      double n;
+      const zr_sdl_rand *r;
+      TRY(zr__sdl_want_float(p, &$3, &@3, &n));
+      TRY(r = zr__sdl_seed_numbered(p, n, &@3));
+      $$ = zr__sdl_float(zr__sdl_rand(r));
+    }
 | T_TRACE '(' T_OBJECT_ID ',' expr ',' expr ')'
     { TRY(zr__sdl_trace(p, $3.ptr, &$5, &$7, NULL, &@$, &$$)); }
 | T_TRACE '(' T_OBJECT_ID ',' expr ',' expr ',' trace_normal T_DECL_NAME ')'
@@ -1538,8 +1546,8 @@ object_head:
 | T_BOX '{' expr comma expr
     {
       TRY($$ = zr__sdl_object_new(p, ZR_OBJ_BOX, &@1));
-      TRY(zr__sdl_want_vector(p, &$3, &@3, &$$->u.box.corner1));
-      TRY(zr__sdl_want_vector(p, &$5, &@5, &$$->u.box.corner2));
+      TRY(zr__sdl_want_extent(p, &$3, &@3, &$$->u.box.corner1));
+      TRY(zr__sdl_want_extent(p, &$5, &@5, &$$->u.box.corner2));
     }
 | T_PLANE '{' expr comma expr
     {
@@ -2898,6 +2906,17 @@ normal_body:
 | normal_body T_GRADIENT expr ',' expr
     {
       TRY(zr__sdl_normal_pattern(p, $1, ZR_PAT_GRADIENT, &$5, &@5));
+      TRY(zr__sdl_gradient(p, &$1->pattern, &$3, &@3));
+      $$ = $1;
+    }
+/* "gradient x 0.6" without the comma (gliese1337's Flame1.pov): POV-Ray
+   3.7 takes the bump size after the vector (tests/legacy/
+   gradient_amount.pov).  Only a plain number can follow without a comma:
+   a '-' or '(' would continue the vector's expression. */
+| normal_body T_GRADIENT expr T_NUMBER
+    {
+      zr_sdl_expr amount = zr__sdl_float($4);
+      TRY(zr__sdl_normal_pattern(p, $1, ZR_PAT_GRADIENT, &amount, &@4));
       TRY(zr__sdl_gradient(p, &$1->pattern, &$3, &@3));
       $$ = $1;
     }

@@ -110,6 +110,31 @@ mpi aa_wt1 0 2 scene.pov +Linc $SIZE +A0.1 +WT1 +Oaa_wt1.png
 same ref_aa.png aa_wt1.png
 serial aa_wt3 0 "$ZRCUBE" scene.pov +Linc $SIZE +A0.1 +WT3 +Oaa_wt3.png
 same ref_aa.png aa_wt3.png
+# Pass 2 sends rank 0 only the pixels that differ from their centre
+# (issue 15): the same bytes with alpha, a window and +AM2, and far
+# fewer pixel bytes than pass 1's (every pixel of the rank's rows).
+for extra in "+UA" "+SR0.3 +ER0.7 +SC0.25 +EC0.6" "+AM2 +R2"; do
+  tag=$(echo "$extra" | tr -dc 'A-Za-z0-9')
+  # shellcheck disable=SC2086
+  serial "sparse_ref_$tag" 0 "$ZRCUBE" scene.pov +Linc $SIZE +A0.1 $extra \
+    +WT1 "+Osparse_ref_$tag.png"
+  for n in 2 3; do
+    # shellcheck disable=SC2086
+    mpi "sparse_${tag}_n$n" 0 "$n" scene.pov +Linc $SIZE +A0.1 $extra \
+      +WT1 "+Osparse_${tag}_n$n.png"
+    same "sparse_ref_$tag.png" "sparse_${tag}_n$n.png"
+  done
+done
+mpi sparse_bytes 0 2 scene.pov +Linc $SIZE +A0.1 +WT1 -v +Osparse_bytes.png
+same ref_aa.png sparse_bytes.png
+# rank 1 renders 23 or 24 of the 48 rows (the chunks follow the clock)
+# in each pass, 768 bytes of floats a row: pass 1 sends them all
+# (>= 17664 bytes), pass 2 a bit a pixel and the changed pixels, so the
+# total stays under the 35328 bytes whole rows in both passes would be.
+sent=$(sed -n 's/.*rank 1: .*pixels \([0-9]*\);.*/\1/p' sparse_bytes.err)
+if [ -z "$sent" ] || [ "$sent" -lt 17664 ] || [ "$sent" -ge 35328 ]; then
+  fail "sparse_bytes: rank 1 sent '$sent' pixel bytes, expected 17664 to 35327"
+fi
 # GNU spellings make the same picture.
 serial long 0 "$ZRCUBE" --input=scene.pov --include-path inc --width=64 \
   --height=48 --antialias=0.1 --threads=2 --output=long.png

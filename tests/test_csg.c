@@ -12,6 +12,7 @@
 #include <cmocka.h>
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -164,6 +165,98 @@ static void test_csg_bounds_of_intersection(void **state) {
   assert_false(zr__object_bounds(o, &lo, &hi));
 }
 
+/* A number in [0, 1) from a linear congruential stream. */
+static double rnd(unsigned *seed) {
+  *seed = *seed * 1103515245u + 12345u;
+  return *seed / 4294967296.0;
+}
+
+/* Intersections of planes and quadrics alone (a chess pawn's neck:
+   shapes.inc's Hyperboloid_Y between two planes) have a finite box,
+   found by narrowing (lib/trace/bounds_csg.c).  Its exact extent is
+   known: |x|, |z| <= 0.5 sqrt(1 + (y - 5)^2) for y in [2.5, 5.5], so
+   0.5 sqrt(1 + 2.5^2) at y = 2.5; and every crossing of random rays lies
+   in the box. */
+static void test_csg_bounds_of_planes_and_quadrics(void **state) {
+  fixture *f = *state;
+  const char *pawn_neck =
+      "intersection { plane { y, 5.5 }\n"
+      "  quadric { <1, -1, 1>, 0, 0, -1 translate 5*y scale <0.5, 1, 0.5> }\n"
+      "  plane { -y, -2.5 } rotate <10, 20, 30> translate <-28, 0, -20> }\n";
+  const char *slanted_slab =
+      "intersection { quadric { <1, 1, 0>, 0, 0, -1 }\n" /* Cylinder_Z */
+      "  plane { z, 1 rotate 30*x } plane { -z, 2 rotate 30*x } }\n";
+  const char *cases[] = {pawn_neck, slanted_slab};
+  for (int c = 0; c < 2; c++) {
+    const zr_object *o = only(f, cases[c]);
+    zr_vec3 lo, hi;
+    assert_true(zr__object_bounds(o, &lo, &hi));
+    if (c == 0) {
+      /* Rotation widens the box; it still holds the exact extent. */
+      double r = 0.5 * sqrt(1 + 2.5 * 2.5), ext = hi.x - lo.x;
+      assert_true(ext >= 2 * r - 1e-6);
+      assert_true(ext < 8.0);
+    }
+    unsigned seed = 7u + (unsigned)c;
+    zr_vec3 mid = zr_v3_scale(zr_v3_add(lo, hi), 0.5);
+    for (int k = 0; k < 2000; k++) {
+      zr_vec3 org = zr_v3_add(mid, zr_v3(40 * rnd(&seed) - 20,
+                                         40 * rnd(&seed) - 20,
+                                         40 * rnd(&seed) - 20));
+      zr_vec3 dir = zr_v3_norm(zr_v3_sub(
+          zr_v3_add(mid, zr_v3(4 * rnd(&seed) - 2, 4 * rnd(&seed) - 2,
+                               4 * rnd(&seed) - 2)),
+          org));
+      zr_hit h[2];
+      int n = cross(o, org, dir, 0.0, h);
+      for (int i = 0; i < n; i++) {
+        zr_vec3 p = zr_v3_madd(org, dir, h[i].t);
+        assert_true(p.x >= lo.x - 1e-9 && p.x <= hi.x + 1e-9);
+        assert_true(p.y >= lo.y - 1e-9 && p.y <= hi.y + 1e-9);
+        assert_true(p.z >= lo.z - 1e-9 && p.z <= hi.z + 1e-9);
+      }
+    }
+  }
+  /* Disjoint half-spaces: nothing is inside both, a point box. */
+  const zr_object *o =
+      only(f, "intersection { plane { y, -1 } plane { -y, -1 } }\n");
+  zr_vec3 lo, hi;
+  assert_true(zr__object_bounds(o, &lo, &hi));
+  assert_true(zr_v3_len(zr_v3_sub(hi, lo)) == 0.0);
+  /* A slab of two planes alone stays unbounded across it. */
+  o = only(f, "intersection { plane { y, 1 } plane { -y, 1 } }\n");
+  assert_false(zr__object_bounds(o, &lo, &hi));
+}
+
+/* A part the tracer cannot box (a quartic torus, advanced/pawns.pov)
+   takes its union's bounded_by box, moved with the union; a part it can
+   box keeps its own, however loose the bound. */
+static void test_csg_bounded_by_boxes_unboundable_parts(void **state) {
+  fixture *f = *state;
+  const char *torus = /* (x^2+y^2+z^2+R^2-r^2)^2 - 4R^2(x^2+z^2), R 8 r 1.5 */
+      "quartic { <1, 0, 0, 0, 2, 0, 0, 2, 0, -132.5, 0, 0, 0, 0, 0, 0, 0,\n"
+      "  0, 0, 0, 1, 0, 0, 2, 0, 123.5, 0, 0, 0, 0, 1, 0, -132.5, 0,\n"
+      "  3813.0625> }\n";
+  char text[512];
+  snprintf(text, sizeof text,
+           "union { %s bounded_by { box { <-10, -2, -10>, <10, 2, 10> } }\n"
+           "  translate 5*x }\n", torus);
+  const zr_object *o = only(f, text);
+  assert_int_equal(o->kind, ZR_OBJ_POLY);
+  zr_vec3 lo, hi;
+  assert_true(zr__object_bounds(o, &lo, &hi));
+  assert_near(lo.x, -5, 1e-6);
+  assert_near(hi.x, 15, 1e-6);
+  assert_near(hi.y, 2, 1e-6);
+  /* Without the bound it has none. */
+  o = only(f, torus);
+  assert_false(zr__object_bounds(o, &lo, &hi));
+  /* A sphere keeps its own box under a loose bound. */
+  o = only(f, "union { sphere { 0, 1 } bounded_by { sphere { 0, 100 } } }\n");
+  assert_true(zr__object_bounds(o, &lo, &hi));
+  assert_near(hi.x, 1, 1e-6);
+}
+
 static void test_csg_quadric_cylinder_and_paraboloid(void **state) {
   fixture *f = *state;
   /* x^2 + z^2 - 1: shapes.inc's Cylinder_Y. */
@@ -313,12 +406,6 @@ static void unboxed_free(zr_object *c) {
   free(c);
 }
 
-/* A number in [0, 1) from a linear congruential stream. */
-static double rnd(unsigned *seed) {
-  *seed = *seed * 1103515245u + 12345u;
-  return *seed / 4294967296.0;
-}
-
 /* The children's boxes only skip work: a difference of unions of many
    parts (the corpus' spacecraft cells) gives the same crossings and
    inside tests with and without them, for rays and points all over. */
@@ -374,6 +461,8 @@ int main(void) {
       TEST(test_csg_inverse_follows_de_morgan),
       TEST(test_csg_transforms_and_textures_reach_children),
       TEST(test_csg_bounds_of_intersection),
+      TEST(test_csg_bounds_of_planes_and_quadrics),
+      TEST(test_csg_bounded_by_boxes_unboundable_parts),
       TEST(test_csg_quadric_cylinder_and_paraboloid),
       TEST(test_csg_clipped_by_keeps_the_inside_part),
       TEST(test_csg_hollow_is_stored),

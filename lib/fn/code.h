@@ -94,6 +94,7 @@ struct zr_fn {
 /* The channel OP_TEXTURE gives for a pattern's value, and the grey. */
 #define TEXTURE_PATTERN (-1)
 #define TEXTURE_GREY 5
+#define TEXTURE_HF 6
 
 /* Runs f with its parameters (and room for the rest of f->need) at
    base: the compiler folds constants with it (lib/fn/vm.c). */

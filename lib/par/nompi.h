@@ -106,6 +106,13 @@ static inline int MPI_Gatherv(const void *in, int n, MPI_Datatype t,
   (void)rt, (void)root, (void)c;
   return MPI_ERR_OTHER;
 }
+static inline int MPI_Gather(const void *in, int n, MPI_Datatype t,
+                             void *out, int rn, MPI_Datatype rt, int root,
+                             MPI_Comm c) {
+  (void)in, (void)n, (void)t, (void)out, (void)rn, (void)rt, (void)root;
+  (void)c;
+  return MPI_ERR_OTHER;
+}
 static inline int MPI_Allgatherv(const void *in, int n, MPI_Datatype t,
                                  void *out, const int *counts,
                                  const int *displs, MPI_Datatype rt,

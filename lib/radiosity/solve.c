@@ -230,6 +230,13 @@ typedef struct team_gather {
   size_t *surf_start; /* nodes of surface s: by_surf[start[s]..[s+1]) */
   uint32_t *mine;     /* nodes of this member's surfaces, node order */
   size_t n_mine;
+  /* A sweep's part of each member is the same size every sweep (its
+     surfaces' changes and their nodes' b), known to every member from
+     the owners: one allgather a sweep into room made once, where a
+     general exchange (zr__team_exchange) takes three (statuses and
+     sizes, room agreed, parts). */
+  size_t *part_bytes; /* each member's part */
+  char *send, *recv;  /* this member's part; every part, rank after rank */
 } team_gather;
 
 static void team_gather_free(team_gather *tg) {
@@ -237,6 +244,9 @@ static void team_gather_free(team_gather *tg) {
   free(tg->by_surf);
   free(tg->surf_start);
   free(tg->mine);
+  free(tg->part_bytes);
+  free(tg->send);
+  free(tg->recv);
 }
 
 static zr_status team_gather_init(const zr_radiosity *rad,
@@ -287,6 +297,23 @@ static zr_status team_gather_init(const zr_radiosity *rad,
     for (size_t v = 0; v < rad->n_nodes; v++)
       if (tg->owner[rad->nodes[v].surf] == me)
         tg->mine[tg->n_mine++] = (uint32_t)v;
+    tg->part_bytes = calloc((size_t)n, sizeof *tg->part_bytes);
+    if (tg->part_bytes == NULL)
+      st = ZR_ENOMEM;
+    size_t total = 0;
+    for (size_t sf = 0; st == ZR_OK && sf < ns; sf++) {
+      size_t b = sizeof(double) + (tg->surf_start[sf + 1] -
+                                   tg->surf_start[sf]) *
+                                      sizeof rad->nodes[0].b;
+      tg->part_bytes[tg->owner[sf]] += b;
+      total += b;
+    }
+    if (st == ZR_OK) {
+      tg->send = malloc(tg->part_bytes[me] ? tg->part_bytes[me] : 1);
+      tg->recv = malloc(total ? total : 1);
+      if (tg->send == NULL || tg->recv == NULL)
+        st = ZR_ENOMEM;
+    }
   }
   free(cost);
   free(load);
@@ -336,39 +363,34 @@ static zr_status team_sweep(zr_radiosity *rad, const recv_index *ix,
   team_puller tp = {rad, change, tg->owner, me};
   zr__rad_parallel(rad->params.threads, rad->n_surfs, 4,
                    team_push_pull_range, &tp);
-  zr__pack pack = {0};
+  char *at = tg->send;
   for (size_t sf = 0; sf < rad->n_surfs; sf++) {
     if (tg->owner[sf] != me)
       continue;
-    zr__pack_put(&pack, &change[sf], sizeof change[sf]);
-    for (size_t k = tg->surf_start[sf]; k < tg->surf_start[sf + 1]; k++)
-      zr__pack_put(&pack, rad->nodes[tg->by_surf[k]].b,
-                   sizeof rad->nodes[0].b);
+    memcpy(at, &change[sf], sizeof change[sf]);
+    at += sizeof change[sf];
+    for (size_t k = tg->surf_start[sf]; k < tg->surf_start[sf + 1]; k++) {
+      memcpy(at, rad->nodes[tg->by_surf[k]].b, sizeof rad->nodes[0].b);
+      at += sizeof rad->nodes[0].b;
+    }
   }
-  zr__team_parts parts;
-  zr_status st = zr__team_exchange(team, pack.nomem ? ZR_ENOMEM : ZR_OK,
-                                   pack.bytes, pack.n, &parts);
-  zr__pack_free(&pack);
+  zr_status st = team->allgather(team->user, tg->send, tg->recv,
+                                 tg->part_bytes);
+  const char *from = tg->recv;
   for (int r = 0; st == ZR_OK && r < team->size; r++) {
-    const char *at = parts.bytes + parts.offset[r];
-    const char *end = parts.bytes + parts.offset[r + 1];
-    for (size_t sf = 0; st == ZR_OK && sf < rad->n_surfs; sf++) {
+    /* Member r's surfaces in order, as it packed them. */
+    for (size_t sf = 0; sf < rad->n_surfs; sf++) {
       if (tg->owner[sf] != r)
         continue;
-      double c = 0.0;
-      if (!zr__unpack(&at, end, &c, sizeof c))
-        st = ZR_EMPI;
-      change[sf] = c;
-      for (size_t k = tg->surf_start[sf];
-           st == ZR_OK && k < tg->surf_start[sf + 1]; k++)
-        if (!zr__unpack(&at, end, rad->nodes[tg->by_surf[k]].b,
-                        sizeof rad->nodes[0].b))
-          st = ZR_EMPI;
+      memcpy(&change[sf], from, sizeof change[sf]);
+      from += sizeof change[sf];
+      for (size_t k = tg->surf_start[sf]; k < tg->surf_start[sf + 1];
+           k++) {
+        memcpy(rad->nodes[tg->by_surf[k]].b, from, sizeof rad->nodes[0].b);
+        from += sizeof rad->nodes[0].b;
+      }
     }
-    if (st == ZR_OK && at != end)
-      st = ZR_EMPI;
   }
-  zr__team_parts_free(&parts);
   double sum = 0.0;
   for (size_t sf = 0; sf < rad->n_surfs; sf++)
     sum += change[sf];

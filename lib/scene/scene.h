@@ -564,9 +564,11 @@ struct zr_object {
   /* clipped_by: only the surface inside this object remains (an
      intersection of the clipping objects); NULL when not clipped. */
   const zr_object *clip;
-  /* bounded_by: kept only for clipped_by { bounded_by }; never used as a
-     bound, which POV-Ray allows since a bound never changes the
-     picture. */
+  /* bounded_by: for clipped_by { bounded_by }, and as the box of a
+     primitive the tracer cannot box itself (a quartic, a poly), its own
+     or its union's (lib/trace/prepare.c, bounds.c); objects it can box
+     keep their own box, which POV-Ray allows since a correct bound never
+     changes the picture. */
   const zr_object *bound;
   /* photons { } ("Photons"): NULL for the defaults (collects photons,
      neither a target nor reflecting or refracting them, passes them

@@ -230,11 +230,17 @@ zr_object *zr__sdl_parametric_new(zr_sdl_parser *p, const zr_sdl_loc *loc,
   if (!zr__sdl_want_vector(p, &uv[0], &uv_loc[0], &a) ||
       !zr__sdl_want_vector(p, &uv[1], &uv_loc[1], &b))
     return NULL;
-  if (!(a.x < b.x) || !(a.y < b.y)) {
+  if (!(a.x <= b.x) || !(a.y <= b.y)) {
     zr__sdl_error(p, ZR_ESCENE, &uv_loc[1],
                   "the parametric's <u2, v2> must exceed <u1, v1>");
     return NULL;
   }
+  /* POV-Ray 3.7 takes an empty range without a word and draws nothing
+     (measured: <0,0>, <2*pi,0>); so does the tracer here, with a
+     warning. */
+  if (a.x == b.x || a.y == b.y)
+    zr__sdl_warning(p, &uv_loc[1], "the parametric's u or v range is "
+                    "empty: it has no points and is not drawn");
   zr_object *o = zr__sdl_object_new(p, ZR_OBJ_PARAMETRIC, loc);
   if (!o)
     return NULL;

@@ -20,8 +20,9 @@
  *     bounding objects.
  *   - bounded_by may only make tracing faster and never changes the
  *     picture, so zRcube keeps it (for clipped_by { bounded_by }) and
- *     bounds objects itself.  bounded_by { clipped_by } is likewise only
- *     a bound.
+ *     bounds objects itself; only a part it cannot box (a quartic, a
+ *     poly) takes the bound's box (lib/trace/prepare.c).
+ *     bounded_by { clipped_by } is likewise only a bound.
  *   - hollow is stored: it matters for media only.
  *   - poly { Order, <A1, ..., An> }, cubic and quartic take exactly
  *     (Order+1)(Order+2)(Order+3)/6 coefficients, counted as they come.

@@ -223,9 +223,14 @@ bool zr__sdl_polygon_done(zr_sdl_parser *p, zr_object *o,
   each_edge(pt, n, count_edge, &n_edges);
   double len = zr_v3_len(nrm);
   if (!(len > 0.0) || !isfinite(len)) {
-    zr__sdl_error(p, ZR_ESCENE, loc,
-                  "the polygon's points are all on one line");
-    return false;
+    /* POV-Ray 3.7 draws nothing for it, without a word (measured:
+       magh's pyramid1.pov, tests/legacy/polygon_line.pov): the polygon
+       becomes an empty union. */
+    zr__sdl_warning(p, loc, "the polygon's points are all on one line: "
+                    "it has no area and is not drawn");
+    o->kind = ZR_OBJ_UNION;
+    memset(&o->u, 0, sizeof o->u);
+    return true;
   }
   nrm = zr_v3_scale(nrm, 1.0 / len);
   /* The plane through the points' centroid; u, v span it. */

@@ -228,11 +228,19 @@ bool zr__sdl_warp_item(zr_sdl_parser *p, zr_sdl_pmod *wm,
 
 bool zr__sdl_pattern_warp(zr_sdl_parser *p, zr_pattern *pt,
                           const zr_transform *frame, const zr_sdl_pmod *m) {
-  zr_warp *list = zr__sdl_alloc(p, (size_t)(pt->n_warps + 1) * sizeof *list);
-  if (!list)
-    return false;
-  if (pt->n_warps > 0)
-    memcpy(list, pt->warps, (size_t)pt->n_warps * sizeof *list);
+  zr_warp *list = p->warp_tail;
+  if (!(pt->warps && pt->warps == p->warp_tail &&
+        pt->n_warps == p->warp_tail_n && pt->n_warps < p->warp_tail_cap)) {
+    int cap = pt->n_warps < 4 ? 4 : 2 * pt->n_warps;
+    list = zr__sdl_alloc(p, (size_t)cap * sizeof *list);
+    if (!list)
+      return false;
+    if (pt->n_warps > 0)
+      memcpy(list, pt->warps, (size_t)pt->n_warps * sizeof *list);
+    p->warp_tail = list;
+    p->warp_tail_cap = cap;
+  }
+  p->warp_tail_n = pt->n_warps + 1;
   zr_warp *w = &list[pt->n_warps];
   *w = *m->warp;
   if (frame)

@@ -86,6 +86,9 @@ static double pigment_extern(const void *what, int channel,
   case 2: return c.b;
   case 3: return c.f;
   case 4: return c.t;
+  case TEXTURE_HF: /* .hf: the manual's (Red + Green/255) * 0.996093,
+                      which povray 3.7 follows (tests/legacy/pigment_hf.pov) */
+    return (c.r + c.g / 255.0) * 0.996093;
   default: /* .gray: the manual's weights (2.3.3.3.7) */
     return 0.297 * c.r + 0.589 * c.g + 0.114 * c.b;
   }
@@ -535,9 +538,9 @@ static bool call_pigment(compiler *c, const zr_fn *callee,
                        "function");
   static const char *const items[] = {"x", "y", "z", "t", "u", "v",
                                       "red", "green", "blue", "filter",
-                                      "transmit", "gray", "grey"};
+                                      "transmit", "gray", "grey", "hf"};
   static const int channel[] = {0, 1, 2, 3, 0, 1, 0, 1, 2, 3, 4,
-                                TEXTURE_GREY, TEXTURE_GREY};
+                                TEXTURE_GREY, TEXTURE_GREY, TEXTURE_HF};
   for (size_t k = 0; k < sizeof items / sizeof items[0]; k++) {
     if (is_word(tok(c), items[k]) ||
         (tok(c)->kind == T_IDENTIFIER && strcmp(tok(c)->v.str,

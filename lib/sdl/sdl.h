@@ -561,6 +561,19 @@ typedef struct zr_sdl_parser {
      may read below it (lib/core/iopolicy.c). */
   char *scene_dir;
   zr_sdl_list *free_lists; /* the grammar's lists, for reuse */
+  /* Every stream seed() made, in order: POV-Ray numbers them 0, 1, ...
+     (seed()'s value printed as a float), and rand(n) with a float n takes
+     stream n (rand.inc's VRand(1) in poliana-girl's glasstestreal.pov). */
+  zr_sdl_rand **seeds;
+  size_t n_seeds, cap_seeds;
+  /* The warp list a pattern last grew, its length then and its room:
+     the pattern that still has that length appends in place (the
+     HabitablePlanet scene writes 1536 warps in one pigment: copying the
+     list at each one cost 1.5 s of parse).  A copy of the pattern made
+     earlier has the same pointer but, once one of them appended, no
+     longer the same length, so it copies. */
+  zr_warp *warp_tail;
+  int warp_tail_n, warp_tail_cap;
   /* The elements of an array initialiser being parsed, in order. */
   zr_sdl_value *init;
   size_t n_init, cap_init;
@@ -723,6 +736,15 @@ bool zr__sdl_call(zr_sdl_parser *p, int func, const zr_sdl_list *args,
                   const zr_sdl_loc *loc, zr_sdl_expr *out);
 bool zr__sdl_want_float(zr_sdl_parser *p, const zr_sdl_expr *e,
                         const zr_sdl_loc *loc, double *out);
+/* A float that may be infinite or not a number: what str() prints
+   (POV-Ray writes "inf", "-inf", "-nan" after a division by zero). */
+bool zr__sdl_want_any_float(zr_sdl_parser *p, const zr_sdl_expr *e,
+                            const zr_sdl_loc *loc, double *out);
+/* A box corner: a vector whose components may be +-inf (a division by
+   zero upstream: POV-Ray renders the box as reaching infinity), never
+   a NaN. */
+bool zr__sdl_want_extent(zr_sdl_parser *p, const zr_sdl_expr *e,
+                         const zr_sdl_loc *loc, zr_vec3 *out);
 bool zr__sdl_want_vector(zr_sdl_parser *p, const zr_sdl_expr *e,
                          const zr_sdl_loc *loc, zr_vec3 *out);
 bool zr__sdl_want_colour(zr_sdl_parser *p, const zr_sdl_expr *e,
@@ -782,6 +804,10 @@ bool zr__sdl_file_exists(zr_sdl_parser *p, const char *name);
 /* seed(n) and rand(stream). */
 const zr_sdl_rand *zr__sdl_seed(zr_sdl_parser *p, double n);
 double zr__sdl_rand(const zr_sdl_rand *stream);
+/* The stream seed() made as its number n (from 0), or NULL after a
+   located error: POV-Ray's "Illegal random number generator." */
+const zr_sdl_rand *zr__sdl_seed_numbered(zr_sdl_parser *p, double n,
+                                         const zr_sdl_loc *loc);
 /* POV-Ray's generator: the state seed(n) starts from, and one step that
    returns the next value in [0, 1]. */
 unsigned long long zr__sdl_seed_state(double n);

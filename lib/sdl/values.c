@@ -95,8 +95,13 @@ bool zr__sdl_binop(zr_sdl_parser *p, int op, const zr_sdl_expr *a,
       break;
     default:
       if (y.v[i] == 0.0) {
-        zr__sdl_error(p, ZR_ESCENE, loc, "division by zero");
-        return false;
+        /* POV-Ray warns once a component and goes on with +inf whatever
+           the sign of the dividend, 0/0 included (measured with povray
+           3.7: 5/0, -5/0 and 0/0 all print "inf", -5/0 < 0 is false;
+           tests/sdl_divzero.sh). */
+        zr__sdl_warning(p, loc, "Divide by zero.");
+        x.v[i] = HUGE_VAL;
+        break;
       }
       x.v[i] /= y.v[i];
       break;
@@ -368,6 +373,30 @@ bool zr__sdl_want_float(zr_sdl_parser *p, const zr_sdl_expr *e,
   if (!finite_value(p, loc, e, 1))
     return false;
   *out = e->v[0];
+  return true;
+}
+
+bool zr__sdl_want_any_float(zr_sdl_parser *p, const zr_sdl_expr *e,
+                            const zr_sdl_loc *loc, double *out) {
+  if (e->dim != 1)
+    return mismatch(p, loc, "a float", e->dim);
+  *out = e->v[0];
+  return true;
+}
+
+bool zr__sdl_want_extent(zr_sdl_parser *p, const zr_sdl_expr *e,
+                         const zr_sdl_loc *loc, zr_vec3 *out) {
+  if (e->dim > 3)
+    return mismatch(p, loc, "a vector", e->dim);
+  zr_sdl_expr v = promote(e, 3);
+  for (int i = 0; i < 3; i++) {
+    if (isinf(v.v[i]))
+      v.v[i] = 0.0; /* only to pass the NaN test below */
+  }
+  if (!finite_value(p, loc, &v, 3))
+    return false;
+  v = promote(e, 3);
+  *out = zr_v3(v.v[0], v.v[1], v.v[2]);
   return true;
 }
 

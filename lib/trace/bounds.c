@@ -17,6 +17,7 @@
 
 #include <math.h>
 
+#include "trace/bounds_csg.h"
 #include "trace/shape.h"
 
 /* The box of the untransformed shape (its table's bounds); false when
@@ -30,39 +31,18 @@ static bool local_bounds(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi) {
   return ops->bounds(o, lo, hi);
 }
 
-/*
- * An intersection lies in each of its children, so its box is the
- * overlap of the bounded children's boxes; unbounded ones (inverted
- * children of a difference, quadrics) add no limit.  A clip limits an
- * object the same way.
- */
-static bool overlap_bounds(const zr_object *const *parts, size_t n,
-                           zr_vec3 *lo, zr_vec3 *hi) {
-  bool any = false;
-  zr_vec3 l = zr_v3(-INFINITY, -INFINITY, -INFINITY), h = zr_v3_neg(l);
-  for (size_t i = 0; i < n; i++) {
-    zr_vec3 cl, ch;
-    if (!zr__object_bounds(parts[i], &cl, &ch))
-      continue;
-    l = zr_v3_max(l, cl);
-    h = zr_v3_min(h, ch);
-    any = true;
-  }
-  if (!any)
-    return false;
-  /* Disjoint children leave an empty box: keep it a point, so the BVH
-     still holds the object (it has no surface anyway). */
-  *lo = l;
-  *hi = zr_v3_max(l, h);
-  return true;
-}
-
+/* An intersection's box: bounds_csg.c; a clip limits an object the way
+   an intersection's child does. */
 static bool unclipped_bounds(const zr_object *object, zr_vec3 *lo,
                              zr_vec3 *hi);
 
 bool zr__object_bounds(const zr_object *object, zr_vec3 *lo, zr_vec3 *hi) {
   zr_vec3 l, h, cl, ch;
   bool bounded = unclipped_bounds(object, &l, &h);
+  /* What the tracer cannot box itself takes its bounded_by's box
+     (prepare.c hands a union's down to its parts). */
+  if (!bounded && object->bound)
+    bounded = zr__object_bounds(object->bound, &l, &h);
   if (!object->clip || !zr__object_bounds(object->clip, &cl, &ch)) {
     *lo = l;
     *hi = h;
@@ -83,8 +63,9 @@ static bool unclipped_bounds(const zr_object *object, zr_vec3 *lo,
   if (object->inverse)
     return false;
   if (object->kind == ZR_OBJ_INTERSECTION)
-    return overlap_bounds((const zr_object *const *)object->u.csg.children,
-                          object->u.csg.n_children, lo, hi);
+    /* The children's constraints narrow an unbounded box, which also
+       bounds planes and quadrics cut by each other (bounds_csg.c). */
+    return zr__intersection_bounds(object, lo, hi);
   if (object->kind == ZR_OBJ_UNION || object->kind == ZR_OBJ_MERGE) {
     /* Unions are flattened before the BVH is built; for completeness a
        union's box is the box of its children's boxes. */

@@ -2,6 +2,7 @@
 # camera rays and antialiasing.
 lib_libzrcube_la_SOURCES += \
 	lib/trace/bounds.c \
+	lib/trace/bounds_csg.c \
 	lib/trace/prepare.c lib/trace/prepare.h \
 	lib/trace/bvh.c lib/trace/bvh.h \
 	lib/trace/csg.c \

@@ -178,6 +178,11 @@ static void leaf(const zr_object *o, zr_vec3 org, zr_vec3 dir,
 int zr__parametric_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
                              double tmin, double tmax, double t[4],
                              zr_vec3 normal[4]) {
+  /* An empty range (sep05.pov's <2*pi, pi*clock> at clock 0) has no
+     points: POV-Ray draws nothing (tests/legacy/parametric_empty.pov). */
+  if (!(o->u.parametric.u0 < o->u.parametric.u1) ||
+      !(o->u.parametric.v0 < o->u.parametric.v1))
+    return 0;
   zr_vec3 clo, chi;
   zr__parametric_bounds(o, &clo, &chi);
   double t0, t1;

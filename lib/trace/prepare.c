@@ -142,15 +142,22 @@ static const zr_object *clip_both(zr_scene *scene, const zr_object *a,
    flattened; clip is that inherited clip (NULL: none). */
 static zr_status flatten(zr_scene *scene, zr_object *object,
                          const zr_texture *inherited, const zr_object *clip,
-                         flat_list *out) {
+                         const zr_object *bound, flat_list *out) {
   const zr_texture *texture = object->texture ? object->texture : inherited;
+  /* A union's bounded_by ("Bounded_By": rays that miss the bound skip the
+     object) is handed down too: a part the tracer cannot box itself (a
+     quartic torus, a poly) takes the bound's box (bounds.c), as POV-Ray
+     tests such a part only for rays that meet the bound. */
+  if (object->bound)
+    bound = object->bound;
   if (object->kind == ZR_OBJ_UNION) {
     const zr_object *inner = clip_both(scene, clip, object->clip);
     if ((clip || object->clip) && !inner)
       return ZR_ENOMEM;
     for (size_t i = 0; i < object->u.csg.n_children; i++) {
       zr_status s =
-          flatten(scene, object->u.csg.children[i], texture, inner, out);
+          flatten(scene, object->u.csg.children[i], texture, inner, bound,
+                  out);
       if (s != ZR_OK)
         return s;
     }
@@ -177,6 +184,7 @@ static zr_status flatten(zr_scene *scene, zr_object *object,
   }
   if (clip && !(own->clip = clip_both(scene, own->clip, clip)))
     return ZR_ENOMEM;
+  own->bound = bound;
   /* A mesh with a texture list gets one copy per texture, each placed
      and textured like this one (lib/trace/obj_mesh.c). */
   const zr_shape_ops *ops = zr__shape(prim->kind);
@@ -190,7 +198,7 @@ zr_status zr__scene_finish(zr_scene *scene, zr_context *ctx) {
   flat_list list = {0};
   for (size_t i = 0; i < scene->n_objects; i++) {
     zr_status s = flatten(scene, scene->objects[i], scene->default_texture,
-                          NULL, &list);
+                          NULL, NULL, &list);
     if (s != ZR_OK) {
       free(list.items);
       return zr__diag(ctx, ZR_DIAG_ERROR, s, NULL,
