@@ -230,3 +230,20 @@ EXTRA_DIST += tests/render_env.sh
 # in a build without Embree).
 TESTS += tests/embree.sh
 EXTRA_DIST += tests/embree.sh tests/embree_scene.pov
+
+# A camera's normal { } at the screen point (u, v, 0), povray's values.
+TESTS += tests/test_camera_normal.sh
+EXTRA_DIST += tests/test_camera_normal.sh tests/camera_normal.pov \
+	tests/pixel_check.py
+
+# sky_sphere layers: filter passes untinted, povray's values.
+TESTS += tests/test_sky_layers.sh
+EXTRA_DIST += tests/test_sky_layers.sh tests/sky_layers.pov
+
+# Ripples and waves normals: the sine of each wave's phase, povray's values.
+TESTS += tests/test_waves_normal.sh
+EXTRA_DIST += tests/test_waves_normal.sh bench/conform/waves_normal_fit.py
+
+# A negative transmit is traced: (1 - t) C + t B, povray's values.
+TESTS += tests/test_negative_transmit.sh
+EXTRA_DIST += tests/test_negative_transmit.sh tests/negative_transmit.pov

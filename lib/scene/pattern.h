@@ -44,9 +44,13 @@ zr_vec3 zr__pattern_point(const zr_pattern *pt, zr_vec3 p);
 
 /* For ripples and waves normals: the mean over the wave centres of the
    unit vector from the centre to p (pattern space, after
-   zr__pattern_point) times the cosine of that wave's phase divided by
-   its spatial frequency (see pattern.c's wave_sum()). */
+   zr__pattern_point) times the sine of that wave's phase divided by
+   its spatial frequency (see pattern.c's wave_sum()), over the first
+   zr__pattern_wave_count() centres in povray's order. */
 zr_vec3 zr__pattern_wave_normal(const zr_pattern *pt, zr_vec3 p);
+/* The number of waves a ripples or waves normal sums: number_of_waves,
+   at most the 10 centres measured (more are not reproduced). */
+int zr__pattern_wave_count(const zr_pattern *pt);
 
 /* The relief a quilted normal tilts by at p (pattern space, after
    zr__pattern_point): not the quilted pigment's value, see pattern.c. */

@@ -70,13 +70,15 @@
 #define RIPPLES_GAIN 0.41
 #define WAVES_GAIN 0.95
 /* The same for ripples and waves normals without a slope map, which
-   tilt by zr__pattern_wave_normal(): bench/conform/normal_probe.sh gives
-   a root mean square tilt of 0.1223 against POV-Ray's 0.1224 (ripples
-   0.5, scale 0.1), 0.0239 against 0.0246 (ripples 0.1, scale 0.3), 0.287
-   against 0.283 (waves 0.5, scale 0.1) with gain 1; the sign makes
-   waves 0.5 at scale 1 lean to -x as POV-Ray's does (mean nx -0.07,
-   POV-Ray -0.18; at scale 1 POV-Ray tilts 1.4x to 1.6x more, not
-   modelled). */
+   tilt by zr__pattern_wave_normal(): povray 3.7 takes amount / 10 times
+   the sum over the ten waves of the unit vector from the centre times
+   the sine of the wave's phase, over the wave's spatial frequency for
+   waves, off the normal (bench/conform/waves_normal_fit.py: a least
+   squares fit to povray's tilts with a cosine and a sine term per wave
+   gives sines of -amount / 10 (/ s_k) and cosines of 0, residual 1e-5,
+   at frequencies 1 to 3, phases 0 to 0.3, scales 0.2 and 1;
+   tests/test_waves_normal.sh keeps povray's values).  Before, the cosine
+   stood there: waves 0.5 at scale 1 leaned the wrong way. */
 #define RIPPLES_WAVE_GAIN -1.0
 #define WAVES_WAVE_GAIN -1.0
 /* Octaves of wrinkles' vector noise (bench/conform/bump_fit.py: 10 fits
@@ -522,9 +524,8 @@ zr_vec3 zr__normal_perturb(const zr_normal *nm, zr_vec3 world, zr_vec3 n) {
   } else if (!sloped && (nm->pattern.kind == ZR_PAT_RIPPLES ||
                          nm->pattern.kind == ZR_PAT_WAVES)) {
     /* ripples and waves tilt along the sum of their waves' directions,
-       each weighed by the cosine of its phase (pattern.c), not by the
-       slope of their pigment value: POV-Ray's waves normal leans to one
-       side at scale 1 as the slow waves, weighed 1 / s, predict. */
+       each weighed by the sine of its phase (pattern.c), not by the
+       slope of their pigment value (measured, see WAVES_WAVE_GAIN). */
     zr_vec3 q = zr__pattern_point(&nm->pattern, p);
     double gain = nm->pattern.kind == ZR_PAT_RIPPLES ? RIPPLES_WAVE_GAIN
                                                       : WAVES_WAVE_GAIN;

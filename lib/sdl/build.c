@@ -604,6 +604,16 @@ bool zr__sdl_normal_pattern(zr_sdl_parser *p, zr_normal *nm, int kind,
   zr__pattern_init(&nm->pattern, (zr_pattern_kind)kind);
   nm->pattern.waves = p->scene->settings.number_of_waves;
   nm->pattern.noise_generator = p->scene->settings.noise_generator;
+  /* Only the ten wave centres povray makes by default are measured
+     (lib/scene/waves_tables.h): more are not reproduced. */
+  if ((kind == ZR_PAT_RIPPLES || kind == ZR_PAT_WAVES) &&
+      nm->pattern.waves > zr__pattern_wave_count(&nm->pattern))
+    zr__sdl_warning(p, loc,
+                    "number_of_waves %d: this %s normal sums only %d waves "
+                    "(povray's further wave centres are not reproduced)",
+                    nm->pattern.waves,
+                    kind == ZR_PAT_RIPPLES ? "ripples" : "waves",
+                    zr__pattern_wave_count(&nm->pattern));
   /* A normal pattern without an amount has bump size 0.5 (not in the
      manual; measured: bench/provenance/probe.py normal_amount). */
   nm->amount = 0.5;

@@ -64,17 +64,34 @@ zr_rgb zr__sky_colour(const zr_scene *scene, zr_vec3 dir) {
   zr_vec3 d = zr_v3_norm(dir);
   if (sky->transform)
     d = zr_v3_norm(zr__xform_dir(sky->transform->inv, d));
-  /* Bottom layer first; each layer lets (filter * C + transmit) of
-     what is below through and adds its own colour times opacity. */
-  for (size_t i = 0; i < sky->n_pigments; i++) {
+  /* Top layer (the last) first.  A sky layer's filter lets light
+     through as its transmit does, untinted, and povray 3.7 keeps the
+     products of the layers' filters and of their transmits apart: a
+     layer (or the background) is seen with weight F + T, F and T the
+     products of filter and of transmit over the layers above, and adds
+     its colour times that weight and its opacity 1 - f - t.  Measured
+     (tests/test_sky_layers.sh): over
+     rgb <0.2,0.4,0.8>, rgbf <0.5,0.5,0.5,0.5> under rgbft
+     <0.9,0.1,0.1,0.2,0.3> renders <0.596,0.216,0.255>, the bottom layer
+     weighed 0.2*0.5 + 0.3*0 = 0.1 (tinting filters, or one product of
+     f + t, would give 0.164 or 0.275 in green). */
+  zr_rgb sum = zr_rgb3(0, 0, 0);
+  double fprod = 1.0, tprod = 0.0;
+  for (size_t i = sky->n_pigments; i-- > 0;) {
     zr_colour c = zr__pigment_eval(sky->pigments[i], d);
     double opacity = fmax(0.0, 1.0 - c.f - c.t);
-    zr_rgb through = zr_rgb3(c.f * c.r + c.t, c.f * c.g + c.t,
-                             c.f * c.b + c.t);
-    below = zr_rgb_add(zr_rgb_scale(zr_colour_rgb(c), opacity),
-                       zr_rgb_mul(through, below));
+    double weight = i + 1 == sky->n_pigments ? 1.0 : fprod + tprod;
+    sum = zr_rgb_add(sum, zr_rgb_scale(zr_colour_rgb(c), weight * opacity));
+    if (i + 1 == sky->n_pigments) {
+      fprod = c.f;
+      tprod = c.t;
+    } else {
+      fprod *= c.f;
+      tprod *= c.t;
+    }
   }
-  return zr_rgb_mul(below, sky->emission);
+  sum = zr_rgb_add(sum, zr_rgb_scale(below, fprod + tprod));
+  return zr_rgb_mul(sum, sky->emission);
 }
 
 double zr__grey(zr_rgb c) {

@@ -79,6 +79,9 @@ zr_colour zr__pigment_at(const zr_pigment *pigment, zr_vec3 p) {
 }
 
 static double rgb_max(zr_rgb c) { return fmax(c.r, fmax(c.g, c.b)); }
+static double rgb_absmax(zr_rgb c) {
+  return fmax(fabs(c.r), fmax(fabs(c.g), fabs(c.b)));
+}
 
 /* f * C + t: the light a surface of colour c lets through. */
 static zr_rgb see_through(zr_colour c) {
@@ -902,8 +905,12 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
     }
     sum = zr_rgb_add(sum, zr_rgb_mul(refl, r));
   }
-  double tw = weight * rgb_max(trans);
-  if (rgb_max(trans) > 0.0 && tw > bailout && !tr->no_transmitted) {
+  /* A negative transmit is traced too: the surface then shows its own
+     colour less what is behind it (povray 3.7, textures/pigments/
+     transmitfx.pov: rgb 0.5 transmit -1 with ambient 1 shows 1 - C of
+     the scene behind; tests/test_negative_transmit.sh). */
+  double tw = weight * rgb_absmax(trans);
+  if (rgb_absmax(trans) > 0.0 && tw > bailout && !tr->no_transmitted) {
     /* A ray that goes on unbent is not a new trace level (ZR_PASS_MAX),
        but like any secondary ray it is only spawned below the last
        level. */
