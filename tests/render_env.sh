@@ -21,3 +21,32 @@ done
 work=$(mktemp -d "${TMPDIR:-/tmp}/zr_$(basename "$0" .sh).XXXXXX") || exit 99
 trap 'rm -rf "$work"' EXIT INT TERM
 cd "$work" || exit 99
+
+# pixel_case SCENE TAG DECLARE X,Y=R,G,B...: renders SCENE at 16x12
+# with Declare=DECLARE into zTAG.png and checks the given pixels (povray's
+# recorded values) with tests/pixel_check.py, each channel within 2
+# levels; with povray installed its own render is compared too.
+pixel_case() {
+  pc_scene=$1 pc_tag=$2 pc_declare=$3
+  shift 3
+  timeout 60 "$zrcube" +I"$pc_scene" +Oz$pc_tag.png +W16 +H12 -D +WT1 \
+    Declare=$pc_declare </dev/null >z$pc_tag.log 2>&1 ||
+    { cat z$pc_tag.log >&2; return 1; }
+  pc_ref=""
+  if command -v povray >/dev/null 2>&1 &&
+     timeout 60 povray +I"$pc_scene" +Op$pc_tag.png +W16 +H12 -D -A +WT1 \
+       -GA Declare=$pc_declare </dev/null >p$pc_tag.log 2>&1; then
+    pc_ref="--ref p$pc_tag.png"
+  fi
+  /usr/bin/python3 "$srcdir/tests/pixel_check.py" z$pc_tag.png "$@" $pc_ref
+}
+
+# pixel_args "X,Y X,Y..." "R,G,B R,G,B...": the X,Y=R,G,B words that
+# pixel_case takes, pairing the two lists in order.
+pixel_args() {
+  pa_at=$1
+  set -- $2
+  pa_out=""
+  for pa_p in $pa_at; do pa_out="$pa_out $pa_p=$1"; shift; done
+  echo $pa_out
+}

@@ -23,20 +23,9 @@ recorded_3="243,226,212 236,208,110 253,184,165 250,163,210 239,151,127 253,208,
 recorded_4="115,218,234 220,210,247 171,201,253 132,136,236 226,147,240 123,213,239 208,174,252"
 fail=0
 for c in 0 1 2 3 4; do
-  timeout 60 "$zrcube" +I"$srcdir/tests/camera_normal.pov" +Oz$c.png +W16 \
-    +H12 -D +WT1 Declare=Case=$c </dev/null >z$c.log 2>&1 ||
-    { cat z$c.log >&2; fail=1; continue; }
   eval "values=\$recorded_$c"
-  set -- $values
-  args=""
-  for p in $px; do args="$args $p=$1"; shift; done
-  ref=""
-  if command -v povray >/dev/null 2>&1 &&
-     timeout 60 povray +I"$srcdir/tests/camera_normal.pov" +Op$c.png +W16 \
-       +H12 -D -A +WT1 -GA Declare=Case=$c </dev/null >p$c.log 2>&1; then
-    ref="--ref p$c.png"
-  fi
   echo "case $c:"
-  /usr/bin/python3 "$srcdir/tests/pixel_check.py" z$c.png $args $ref || fail=1
+  pixel_case "$srcdir/tests/camera_normal.pov" $c Case=$c \
+    $(pixel_args "$px" "$values") || fail=1
 done
 exit $fail

@@ -19,18 +19,9 @@ recorded_3="5,0=231,149,89 5,2=0,143,255 5,6=255,63,0"
 fail=0
 for c in 1 2 3; do
   case $c in 1) t=-1 ;; 2) t=-0.4 ;; 3) t=1.5 ;; esac
-  timeout 60 "$zrcube" +I"$srcdir/tests/negative_transmit.pov" +Oz$c.png \
-    +W16 +H12 -D +WT1 Declare=T=$t </dev/null >z$c.log 2>&1 ||
-    { cat z$c.log >&2; fail=1; continue; }
   eval "values=\$recorded_$c"
-  ref=""
-  if command -v povray >/dev/null 2>&1 &&
-     timeout 60 povray +I"$srcdir/tests/negative_transmit.pov" +Op$c.png \
-       +W16 +H12 -D -A +WT1 -GA Declare=T=$t </dev/null >p$c.log 2>&1; then
-    ref="--ref p$c.png"
-  fi
   echo "transmit $t:"
-  /usr/bin/python3 "$srcdir/tests/pixel_check.py" z$c.png $values $ref ||
+  pixel_case "$srcdir/tests/negative_transmit.pov" $c T=$t $values ||
     fail=1
 done
 exit $fail

@@ -19,18 +19,9 @@ recorded_2="165,135,151"
 recorded_3="167,139,136"
 fail=0
 for c in 0 1 2 3; do
-  timeout 60 "$zrcube" +I"$srcdir/tests/sky_layers.pov" +Oz$c.png +W16 \
-    +H12 -D +WT1 Declare=Case=$c </dev/null >z$c.log 2>&1 ||
-    { cat z$c.log >&2; fail=1; continue; }
   eval "value=\$recorded_$c"
-  ref=""
-  if command -v povray >/dev/null 2>&1 &&
-     timeout 60 povray +I"$srcdir/tests/sky_layers.pov" +Op$c.png +W16 \
-       +H12 -D -A +WT1 -GA Declare=Case=$c </dev/null >p$c.log 2>&1; then
-    ref="--ref p$c.png"
-  fi
   echo "case $c:"
-  /usr/bin/python3 "$srcdir/tests/pixel_check.py" z$c.png "6,8=$value" \
-    $ref || fail=1
+  pixel_case "$srcdir/tests/sky_layers.pov" $c Case=$c "6,8=$value" ||
+    fail=1
 done
 exit $fail

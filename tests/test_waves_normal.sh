@@ -26,21 +26,10 @@ recorded_6="140,216,243 223,216,243 199,181,254 130,153,240 219,160,247 166,202,
 recorded_7="162,208,251 226,212,243 194,180,255 133,132,235 231,136,232 127,221,237 174,206,253"
 fail=0
 for c in 5 6 7; do
-  timeout 60 "$zrcube" +I"$srcdir/tests/camera_normal.pov" +Oz$c.png +W16 \
-    +H12 -D +WT1 Declare=Case=$c </dev/null >z$c.log 2>&1 ||
-    { cat z$c.log >&2; fail=1; continue; }
   eval "values=\$recorded_$c"
-  set -- $values
-  args=""
-  for p in $px; do args="$args $p=$1"; shift; done
-  ref=""
-  if command -v povray >/dev/null 2>&1 &&
-     timeout 60 povray +I"$srcdir/tests/camera_normal.pov" +Op$c.png +W16 \
-       +H12 -D -A +WT1 -GA Declare=Case=$c </dev/null >p$c.log 2>&1; then
-    ref="--ref p$c.png"
-  fi
   echo "case $c:"
-  /usr/bin/python3 "$srcdir/tests/pixel_check.py" z$c.png $args $ref || fail=1
+  pixel_case "$srcdir/tests/camera_normal.pov" $c Case=$c \
+    $(pixel_args "$px" "$values") || fail=1
 done
 for n in 12 10; do
   printf 'global_settings { number_of_waves %s }\nplane { y, 0 pigment { waves } }\nplane { z, 5 normal {\n  waves 0.3 } }\ncamera { location <0,1,-3> look_at 0 }\n' \
