@@ -229,8 +229,8 @@ static void test_csg_bounds_of_planes_and_quadrics(void **state) {
 }
 
 /* A part the tracer cannot box (a quartic torus, advanced/pawns.pov)
-   takes its union's bounded_by box, moved with the union; a part it can
-   box keeps its own, however loose the bound. */
+   takes its union's bounded_by box in the hierarchy, moved with the
+   union; a part it can box keeps its own, however loose the bound. */
 static void test_csg_bounded_by_boxes_unboundable_parts(void **state) {
   fixture *f = *state;
   const char *torus = /* (x^2+y^2+z^2+R^2-r^2)^2 - 4R^2(x^2+z^2), R 8 r 1.5 */
@@ -244,16 +244,26 @@ static void test_csg_bounded_by_boxes_unboundable_parts(void **state) {
   const zr_object *o = only(f, text);
   assert_int_equal(o->kind, ZR_OBJ_POLY);
   zr_vec3 lo, hi;
-  assert_true(zr__object_bounds(o, &lo, &hi));
+  assert_true(zr__primitive_bounds(o, &lo, &hi));
   assert_near(lo.x, -5, 1e-6);
   assert_near(hi.x, 15, 1e-6);
   assert_near(hi.y, 2, 1e-6);
+  /* Inside tests (a CSG child's box) never take the bound. */
+  assert_false(zr__object_bounds(o, &lo, &hi));
   /* Without the bound it has none. */
   o = only(f, torus);
-  assert_false(zr__object_bounds(o, &lo, &hi));
+  assert_false(zr__primitive_bounds(o, &lo, &hi));
+  /* A bounded intersection cut out of a box (shapes.inc's Supercone in
+     logo.inc's bevel): the inverted part's inside is all outside its
+     bound, so its CSG box must not be the bound's. */
+  o = only(f, "difference { box { -4, 4 }\n"
+              "  intersection { sphere { 0, 1 } sphere { 0.5, 1 }\n"
+              "    bounded_by { sphere { 0, 1 } } } }\n");
+  assert_true(zr__inside(o, zr_v3(3, 3, 3)));
+  assert_false(zr__inside(o, zr_v3(0.2, 0, 0)));
   /* A sphere keeps its own box under a loose bound. */
   o = only(f, "union { sphere { 0, 1 } bounded_by { sphere { 0, 100 } } }\n");
-  assert_true(zr__object_bounds(o, &lo, &hi));
+  assert_true(zr__primitive_bounds(o, &lo, &hi));
   assert_near(hi.x, 1, 1e-6);
 }
 

@@ -39,10 +39,6 @@ static bool unclipped_bounds(const zr_object *object, zr_vec3 *lo,
 bool zr__object_bounds(const zr_object *object, zr_vec3 *lo, zr_vec3 *hi) {
   zr_vec3 l, h, cl, ch;
   bool bounded = unclipped_bounds(object, &l, &h);
-  /* What the tracer cannot box itself takes its bounded_by's box
-     (prepare.c hands a union's down to its parts). */
-  if (!bounded && object->bound)
-    bounded = zr__object_bounds(object->bound, &l, &h);
   if (!object->clip || !zr__object_bounds(object->clip, &cl, &ch)) {
     *lo = l;
     *hi = h;
@@ -108,4 +104,18 @@ static bool unclipped_bounds(const zr_object *object, zr_vec3 *lo,
   *hi = zr_v3_add(h, zr_v3(pad, pad, pad));
   return isfinite(lo->x) && isfinite(lo->y) && isfinite(lo->z) &&
          isfinite(hi->x) && isfinite(hi->y) && isfinite(hi->z);
+}
+
+bool zr__primitive_bounds(const zr_object *object, zr_vec3 *lo,
+                          zr_vec3 *hi) {
+  if (zr__object_bounds(object, lo, hi))
+    return true;
+  /* What the tracer cannot box itself takes its bounded_by's box
+     (prepare.c hands a union's down to its parts), as the hierarchy's
+     box only: the bound holds the surface, which is all a ray test
+     needs, but not the inside of an inverted or CSG object, so CSG
+     children's boxes (inside tests) never use it. */
+  if (!object->bound || object->inverse || zr__is_csg(object->kind))
+    return false;
+  return zr__object_bounds(object->bound, lo, hi);
 }

@@ -499,7 +499,7 @@ zr_status zr__bvh_build(zr_scene *scene, zr_context *ctx) {
   for (size_t i = 0; i < n; i++) {
     const zr_object *o = scene->primitives[i];
     zr_vec3 lo, hi;
-    if (!zr__object_bounds(o, &lo, &hi)) {
+    if (!zr__primitive_bounds(o, &lo, &hi)) {
       bvh->unbounded_index[bvh->n_unbounded] = (uint32_t)i;
       bvh->unbounded[bvh->n_unbounded++] = o;
       continue;

@@ -59,6 +59,10 @@ bool zr__hit_uv(const zr_hit *hit, zr_vec3 p, double *u, double *v);
 /* The object's world-space bounding box; false for unbounded objects
    (planes, and anything inverse) (lib/trace/bounds.c). */
 bool zr__object_bounds(const zr_object *object, zr_vec3 *lo, zr_vec3 *hi);
+/* The box the hierarchy keeps a primitive in: zr__object_bounds(), or
+   else its bounded_by's box for a plain shape that is not inverted. */
+bool zr__primitive_bounds(const zr_object *object, zr_vec3 *lo,
+                          zr_vec3 *hi);
 
 /* Whether the world point p lies inside the object (POV-Ray's inside, with
    inverse applied).  Triangles have no inside; a disc's is its plane's. */
