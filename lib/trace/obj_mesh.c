@@ -400,18 +400,31 @@ static double node_entry(const zr_mesh_node *node, const slab_ray *r,
   return t0 <= t1 ? t0 : INFINITY;
 }
 
+/* Moller-Trumbore's start for face f: its edges from p0, dir x e2 and
+   the reciprocal determinant; false when the ray runs parallel to the
+   face (or the face is degenerate). */
+static inline bool face_start(const struct zr_mesh *m, size_t f,
+                              zr_vec3 dir, zr_vec3 *p0, zr_vec3 *e1,
+                              zr_vec3 *e2, zr_vec3 *pv, double *inv) {
+  const uint32_t *idx = m->faces[f];
+  *p0 = m->vertices[idx[0]];
+  *e1 = zr_v3_sub(m->vertices[idx[1]], *p0);
+  *e2 = zr_v3_sub(m->vertices[idx[2]], *p0);
+  *pv = zr_v3_cross(dir, *e2);
+  double det = zr_v3_dot(*e1, *pv);
+  if (det == 0.0 || !isfinite(det))
+    return false;
+  *inv = 1.0 / det;
+  return true;
+}
+
 /* Moller-Trumbore; true with t, u, v when the ray crosses face f. */
 static bool face_hit(const struct zr_mesh *m, size_t f, zr_vec3 org,
                      zr_vec3 dir, double *t, double *u, double *v) {
-  const uint32_t *idx = m->faces[f];
-  zr_vec3 p0 = m->vertices[idx[0]];
-  zr_vec3 e1 = zr_v3_sub(m->vertices[idx[1]], p0);
-  zr_vec3 e2 = zr_v3_sub(m->vertices[idx[2]], p0);
-  zr_vec3 pv = zr_v3_cross(dir, e2);
-  double det = zr_v3_dot(e1, pv);
-  if (det == 0.0 || !isfinite(det))
+  zr_vec3 p0, e1, e2, pv;
+  double inv;
+  if (!face_start(m, f, dir, &p0, &e1, &e2, &pv, &inv))
     return false;
-  double inv = 1.0 / det;
   zr_vec3 tv = zr_v3_sub(org, p0);
   double uu = zr_v3_dot(tv, pv) * inv;
   if (uu < 0.0 || uu > 1.0)
@@ -433,15 +446,10 @@ bool zr__mesh_face_hit(const struct zr_mesh *m, size_t f, zr_vec3 org,
 
 bool zr__mesh_face_plane(const struct zr_mesh *m, size_t f, zr_vec3 org,
                          zr_vec3 dir, double *t, double *u, double *v) {
-  const uint32_t *idx = m->faces[f];
-  zr_vec3 p0 = m->vertices[idx[0]];
-  zr_vec3 e1 = zr_v3_sub(m->vertices[idx[1]], p0);
-  zr_vec3 e2 = zr_v3_sub(m->vertices[idx[2]], p0);
-  zr_vec3 pv = zr_v3_cross(dir, e2);
-  double det = zr_v3_dot(e1, pv);
-  if (det == 0.0 || !isfinite(det))
+  zr_vec3 p0, e1, e2, pv;
+  double inv;
+  if (!face_start(m, f, dir, &p0, &e1, &e2, &pv, &inv))
     return false;
-  double inv = 1.0 / det;
   zr_vec3 tv = zr_v3_sub(org, p0);
   zr_vec3 qv = zr_v3_cross(tv, e1);
   *u = zr_v3_dot(tv, pv) * inv;
