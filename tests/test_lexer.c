@@ -161,9 +161,11 @@ static void test_lexer_bad_characters(void **state) {
   assert_string_equal(l.err, "unexpected character '$'");
   assert_int_equal(l.err_loc.column, 8);
   zr__sdl_file_free(&l.file);
+  /* A '#' before a word that is no directive is passed over, as povray
+     3.7 renders "#global_settings" and "#box { }" (measured): the word
+     is then read as it stands (the parser names it if it is unknown). */
   lex(&l, "#frobnicate");
-  assert_int_equal(l.status, ZR_ESYNTAX);
-  assert_string_equal(l.err, "unknown directive '#frobnicate'");
+  assert_int_equal(l.status, ZR_OK);
   zr__sdl_file_free(&l.file);
 }
 

@@ -825,8 +825,6 @@ static void test_parser_unsupported_keyword(void **state) {
       "t.pov:2:3: error: 'iff' is not supported yet\n"
       "    2 |   iff { }\n"
       "      |   ^~~\n");
-  bad(f, "#statistics \"x\"", ZR_EUNSUPPORTED,
-      "'#statistics' is not supported yet", NULL);
 }
 
 static void test_parser_missing_include_chain(void **state) {

@@ -373,7 +373,9 @@ static bool has_mesh(const zr_object *o) {
 }
 
 zr_status zr__embree_attach(zr_scene *scene, zr_context *ctx) {
-  if (ctx->accel != ZR_ACCEL_EMBREE || scene->embree)
+  /* A scene finished without a context (the library's own tests) keeps
+     the built-in hierarchy. */
+  if (!ctx || ctx->accel != ZR_ACCEL_EMBREE || scene->embree)
     return ZR_OK;
   /* No device (and none of its start-up) for a scene without meshes. */
   bool any = false;
