@@ -84,18 +84,8 @@ static bool unclipped_bounds(const zr_object *object, zr_vec3 *lo,
   zr_vec3 l, h;
   if (!local_bounds(object, &l, &h))
     return false;
-  if (object->transform) {
-    zr_vec3 wl = zr_v3(INFINITY, INFINITY, INFINITY), wh = zr_v3_neg(wl);
-    for (int c = 0; c < 8; c++) {
-      zr_vec3 p = zr_v3(c & 1 ? h.x : l.x, c & 2 ? h.y : l.y,
-                        c & 4 ? h.z : l.z);
-      p = zr__xform_point(object->transform->m, p);
-      wl = zr_v3_min(wl, p);
-      wh = zr_v3_max(wh, p);
-    }
-    l = wl;
-    h = wh;
-  }
+  if (object->transform)
+    zr__box_through(object->transform->m, &l, &h);
   /* A degenerate box (a flat triangle along an axis) is widened by a
      relative hair so slab tests against it stay well defined. */
   double pad = 1e-9 * fmax(1.0, fmax(zr_v3_max_comp(zr_v3_max(

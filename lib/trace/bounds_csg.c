@@ -285,9 +285,7 @@ static bool frame_form(const zr_object *o, const zr_transform *frame,
 static void narrow(const zr_object *o, const zr_transform *frame,
                    box3 *box);
 
-/* The box in frame coordinates (m: frame to world; NULL: world) of
-   world box [lo, hi] transformed by map: its eight corners boxed. */
-static void box_through(const double map[4][4], zr_vec3 *lo, zr_vec3 *hi) {
+void zr__box_through(const double map[4][4], zr_vec3 *lo, zr_vec3 *hi) {
   zr_vec3 l = zr_v3(INFINITY, INFINITY, INFINITY), h = zr_v3_neg(l);
   for (int c = 0; c < 8; c++) {
     zr_vec3 p = zr__xform_point(map, zr_v3(c & 1 ? hi->x : lo->x,
@@ -314,7 +312,7 @@ static void narrow_leaf(const zr_object *o, const zr_transform *frame,
   if (!zr__object_bounds(o, &lo, &hi))
     return;
   if (frame)
-    box_through(frame->inv, &lo, &hi);
+    zr__box_through(frame->inv, &lo, &hi);
   double l[3] = {lo.x, lo.y, lo.z}, h[3] = {hi.x, hi.y, hi.z};
   for (int i = 0; i < 3; i++) {
     box->x[i].lo = fmax(box->x[i].lo, l[i]);
@@ -381,7 +379,7 @@ static bool narrow_in(const zr_object *node, const zr_transform *frame,
   zr_vec3 l = zr_v3(box.x[0].lo, box.x[1].lo, box.x[2].lo);
   zr_vec3 h = zr_v3(box.x[0].hi, box.x[1].hi, box.x[2].hi);
   if (frame)
-    box_through(frame->m, &l, &h);
+    zr__box_through(frame->m, &l, &h);
   *lo = zr_v3_max(*lo, l);
   *hi = zr_v3_min(*hi, h);
   return true;
