@@ -141,7 +141,11 @@ def main():
             f'{c[0]}x{c[1]} {got[c][1]:.1f}' for c in got) +
             f'; mpirun launch alone: ' + ', '.join(
             f'{n} rank{"s" if n > 1 else ""} {launch[n]:.3f} s'
-            for n in sorted(launch)) + '.')
+            for n in sorted(launch)) + '.' +
+            (' Runs under the real-time round-robin policy (RT=1: the'
+             ' ranks are served before the other sessions\' processes,'
+             ' as on an idle machine).' if os.environ.get('RT') == '1'
+             else ''))
         md.append('')
         md.append('| phase | 1x1 CPU s | 2 ranks: busiest CPU s | '
                   'efficiency (CPU) | efficiency (wall) | 1 rank x 2 '
