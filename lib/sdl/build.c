@@ -591,10 +591,12 @@ zr_normal *zr__sdl_normal_new(zr_sdl_parser *p, const zr_normal *from) {
   if (from) {
     *nm = *from;
   } else {
+    const zr_normal *d = p->scene->default_texture->normal;
     zr__pattern_init(&nm->pattern, ZR_PAT_NONE);
-    nm->amount = 0.5;
+    nm->amount = d ? d->amount : 0.5;
     nm->accuracy = 0.02;
   }
+  p->normal_fresh = nm;
   return nm;
 }
 
@@ -615,8 +617,15 @@ bool zr__sdl_normal_pattern(zr_sdl_parser *p, zr_normal *nm, int kind,
                     kind == ZR_PAT_RIPPLES ? "ripples" : "waves",
                     zr__pattern_wave_count(&nm->pattern));
   /* A normal pattern without an amount has bump size 0.5 (not in the
-     manual; measured: bench/provenance/probe.py normal_amount). */
-  nm->amount = 0.5;
+     manual; measured: bench/provenance/probe.py normal_amount), but the
+     first one in a normal block keeps the bump size the block starts
+     from: under "#default { normal { bump_size 1.5 } }", "normal {
+     gradient x }" is gradient x, 1.5 in povray 3.7, in a normal_map's
+     entries too, and "normal { N gradient x }" keeps N's bump size
+     (tests/test_default_normal.sh; textures/normals/normmap.pov). */
+  if (p->normal_fresh != nm)
+    nm->amount = 0.5;
+  p->normal_fresh = NULL;
   return !amount || zr__sdl_want_float(p, amount, loc, &nm->amount);
 }
 
