@@ -480,15 +480,12 @@ bool zr__sdl_pattern_mod(zr_sdl_parser *p, zr_pattern *pt,
   case T_CONTROL1:
     return zr__sdl_want_float(p, &m->value, &m->loc, &pt->control1);
   case T_NUMBER_OF_WAVES:
-    if (!zr__sdl_want_float(p, &m->value, &m->loc, &v))
-      return false;
-    if (v < 1) {
-      zr__sdl_error(p, ZR_ESCENE, &m->loc,
-                    "number_of_waves must be at least 1");
-      return false;
-    }
-    pt->waves = (int)v;
-    return true;
+    /* povray 3.7 takes number_of_waves in global_settings only: in a
+       pattern it stops with "Cannot parse input". */
+    zr__sdl_error(p, ZR_ESYNTAX, &m->loc,
+                  "number_of_waves belongs in global_settings, not in a "
+                  "pattern");
+    return false;
   case T_NOISE_GENERATOR:
     if (!zr__sdl_want_float(p, &m->value, &m->loc, &v))
       return false;
