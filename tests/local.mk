@@ -247,3 +247,13 @@ EXTRA_DIST += tests/test_waves_normal.sh bench/conform/waves_normal_fit.py
 # A negative transmit is traced: (1 - t) C + t B, povray's values.
 TESTS += tests/test_negative_transmit.sh
 EXTRA_DIST += tests/test_negative_transmit.sh tests/negative_transmit.pov
+
+# Quilted normals: the cube offset times quilted's Bezier, povray's values.
+TESTS += tests/test_quilted_normal.sh
+EXTRA_DIST += tests/test_quilted_normal.sh tests/quilted_normal.pov \
+	bench/conform/quilted_normal_probe.py
+
+# A normal pattern's bump size when none is written: #default's, an
+# identifier's, else 0.5; povray's values.
+TESTS += tests/test_default_normal.sh
+EXTRA_DIST += tests/test_default_normal.sh tests/default_normal.pov

@@ -400,15 +400,12 @@ static double quilted(const zr_pattern *pt, zr_vec3 p) {
   return fabs(b) * (dx + dy + dz) * 2 / (3 * sqrt(3.0));
 }
 
-/* The relief of a quilted normal: the manual says quilted normals use
-   "a specialized normal perturbation function" and that the pigment is
-   "similar ... but not identical", and POV-Ray's quilted normals are
-   not yet measured.  Until they are, a normal keeps this relief: the
-   mean over the axes of a cubic Bezier profile across each unit cube,
-   0 at the seam and 1 in the middle, control0 and control1 its inner
-   control points.  It scores SSIM 0.67 (advanced/quilt1.pov) and 0.91
-   (textures/patterns/quilt2.pov) against POV-Ray where the pigment's
-   exact value, differentiated, scores 0.35 and 0.53. */
+/* The relief of a quilted normal under a slope_map, the only place it
+   is still taken: without one POV-Ray adds a vector to the normal
+   (lib/scene/texture.c quilt_push, measured), and a quilted normal with
+   a slope_map is not measured.  The mean over the axes of a cubic
+   Bezier profile across each unit cube, 0 at the seam and 1 in the
+   middle, control0 and control1 its inner control points. */
 static double quilt_profile(double c, double c0, double c1) {
   double f = c - floor(c);
   double t = 2 * (f < 0.5 ? f : 1 - f); /* 0 at the seam, 1 mid-cell */

@@ -458,6 +458,23 @@ static zr_vec3 slope_tilt(const zr_normal *nm, zr_vec3 p) {
   return g;
 }
 
+/* What a quilted normal adds to the normal at q (pattern space): the
+   offset d of q from the middle of its unit cube, times the cubic Bezier
+   B(r) of its length r (control points 0, control0, control1, 1, as the
+   quilted pigment's, pattern.c), divided by the distance to a corner,
+   sqrt 3 / 2.  bench/conform/quilted_normal_probe.py reads it back from
+   POV-Ray 3.7's renders to 1.6e-5 (the 16-bit read-back's error) for
+   four control pairs, two depths in the cube and either side; B keeps
+   its sign (control0 -2, control1 3 dent the middle of a cube). */
+static zr_vec3 quilt_push(const zr_pattern *pt, zr_vec3 q) {
+  zr_vec3 d = zr_v3(q.x - floor(q.x) - 0.5, q.y - floor(q.y) - 0.5,
+                    q.z - floor(q.z) - 0.5);
+  double r = zr_v3_len(d), u = 1 - r;
+  double b = 3 * pt->control0 * r * u * u + 3 * pt->control1 * r * r * u +
+             r * r * r;
+  return zr_v3_scale(d, b * 2 / sqrt(3.0));
+}
+
 zr_vec3 zr__normal_perturb(const zr_normal *nm, zr_vec3 world, zr_vec3 n) {
   if (nm->bump_map)
     return zr__bump_map_perturb(nm, world, n);
@@ -521,6 +538,9 @@ zr_vec3 zr__normal_perturb(const zr_normal *nm, zr_vec3 world, zr_vec3 n) {
       sum = zr_v3_madd(sum, zr_v3(fabs(d.x), fabs(d.y), fabs(d.z)), w);
     }
     g = zr_v3_scale(sum, -nm->amount);
+  } else if (!sloped && nm->pattern.kind == ZR_PAT_QUILTED) {
+    zr_vec3 q = zr__pattern_point(&nm->pattern, p);
+    g = zr_v3_scale(quilt_push(&nm->pattern, q), -nm->amount);
   } else if (!sloped && (nm->pattern.kind == ZR_PAT_RIPPLES ||
                          nm->pattern.kind == ZR_PAT_WAVES)) {
     /* ripples and waves tilt along the sum of their waves' directions,

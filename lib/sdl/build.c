@@ -480,15 +480,12 @@ bool zr__sdl_pattern_mod(zr_sdl_parser *p, zr_pattern *pt,
   case T_CONTROL1:
     return zr__sdl_want_float(p, &m->value, &m->loc, &pt->control1);
   case T_NUMBER_OF_WAVES:
-    if (!zr__sdl_want_float(p, &m->value, &m->loc, &v))
-      return false;
-    if (v < 1) {
-      zr__sdl_error(p, ZR_ESCENE, &m->loc,
-                    "number_of_waves must be at least 1");
-      return false;
-    }
-    pt->waves = (int)v;
-    return true;
+    /* povray 3.7 takes number_of_waves in global_settings only: in a
+       pattern it stops with "Cannot parse input". */
+    zr__sdl_error(p, ZR_ESYNTAX, &m->loc,
+                  "number_of_waves belongs in global_settings, not in a "
+                  "pattern");
+    return false;
   case T_NOISE_GENERATOR:
     if (!zr__sdl_want_float(p, &m->value, &m->loc, &v))
       return false;
@@ -591,10 +588,12 @@ zr_normal *zr__sdl_normal_new(zr_sdl_parser *p, const zr_normal *from) {
   if (from) {
     *nm = *from;
   } else {
+    const zr_normal *d = p->scene->default_texture->normal;
     zr__pattern_init(&nm->pattern, ZR_PAT_NONE);
-    nm->amount = 0.5;
+    nm->amount = d ? d->amount : 0.5;
     nm->accuracy = 0.02;
   }
+  p->normal_fresh = nm;
   return nm;
 }
 
@@ -615,8 +614,15 @@ bool zr__sdl_normal_pattern(zr_sdl_parser *p, zr_normal *nm, int kind,
                     kind == ZR_PAT_RIPPLES ? "ripples" : "waves",
                     zr__pattern_wave_count(&nm->pattern));
   /* A normal pattern without an amount has bump size 0.5 (not in the
-     manual; measured: bench/provenance/probe.py normal_amount). */
-  nm->amount = 0.5;
+     manual; measured: bench/provenance/probe.py normal_amount), but the
+     first one in a normal block keeps the bump size the block starts
+     from: under "#default { normal { bump_size 1.5 } }", "normal {
+     gradient x }" is gradient x, 1.5 in povray 3.7, in a normal_map's
+     entries too, and "normal { N gradient x }" keeps N's bump size
+     (tests/test_default_normal.sh; textures/normals/normmap.pov). */
+  if (p->normal_fresh != nm)
+    nm->amount = 0.5;
+  p->normal_fresh = NULL;
   return !amount || zr__sdl_want_float(p, amount, loc, &nm->amount);
 }
 

@@ -526,6 +526,10 @@ typedef struct zr_sdl_parser {
      current values).  Taken and cleared as the block starts. */
   const zr_pigment *pigment_base;
   const zr_normal *normal_base;
+  /* The normal block just begun, until its first pattern keyword:
+     that keyword keeps the bump size the block starts from (build.c,
+     zr__sdl_normal_pattern). */
+  const zr_normal *normal_fresh;
   const zr_finish *finish_base;
   int base_set;         /* bits 1, 2, 4: pigment, normal, finish base set */
   /* The copy texture { T ... } started from, and T: a texture that
