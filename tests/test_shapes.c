@@ -264,6 +264,57 @@ static void test_shapes_superellipsoid_star(void **state) {
   assert_near(h[1].t, 10.8 - first, SE_EPS);
 }
 
+/* Convex superellipsoids (e, n <= 2) are crossed by Newton steps that
+   walk in from each end of the ray's span in the box: on a fan of rays
+   across each shape, every crossing must lie on the surface, the middle
+   of the two crossings inside, and a ray that finds none must have no
+   point inside along it (sampled every 1/4000 of the box).  <2, 2> is
+   the octahedron, whose edges have no derivative; <0.01, 0.01> is nearly
+   the cube. */
+static void test_shapes_superellipsoid_convex_fan(void **state) {
+  fixture *f = *state;
+  static const char *shapes[] = {
+      "superellipsoid { <0.9, 0.9> }\n", "superellipsoid { <0.1, 0.5> }\n",
+      "superellipsoid { <2, 2> }\n", "superellipsoid { <1, 0.3> }\n",
+      "superellipsoid { <0.01, 0.01> }\n", "superellipsoid { <2, 0.2> }\n"};
+  for (size_t k = 0; k < sizeof shapes / sizeof *shapes; k++) {
+    const zr_object *o = only(f, shapes[k]);
+    double e = o->u.superellipsoid.e, n = o->u.superellipsoid.n;
+    int hits = 0;
+    for (int i = 0; i < 41; i++)
+      for (int j = 0; j < 41; j++) {
+        /* From a point off the corner towards the plane x + y + z = 0
+           (z a little tilted so no ray lies in a symmetry plane). */
+        zr_vec3 from = zr_v3(3.1, 2.3, 2.7);
+        zr_vec3 to = zr_v3(-1.25 + i / 16.0, -1.25 + j / 16.0,
+                           0.3 * (i - j) / 40.0);
+        zr_vec3 d = zr_v3_sub(to, from);
+        zr_hit h[ZR_MAX_CROSSINGS];
+        int c = cross(o, from, d, 0.0, h);
+        if (c == 0) {
+          for (int s = 0; s <= 8000; s++) {
+            zr_vec3 p = zr_v3_madd(from, d, s / 4000.0);
+            assert_true(zr__superellipsoid_value(e, n, p) > -1e-9);
+          }
+          continue;
+        }
+        assert_int_equal(c, 2);
+        hits++;
+        for (int m = 0; m < 2; m++)
+          assert_near(zr__superellipsoid_value(
+                          e, n, zr_v3_madd(from, d, h[m].t)),
+                      0.0, 1e-12);
+        if (h[1].t - h[0].t > 1e-9)
+          assert_true(zr__superellipsoid_value(
+                          e, n,
+                          zr_v3_madd(from, d, 0.5 * (h[0].t + h[1].t))) <
+                      0.0);
+      }
+    /* The fan is wider than every shape and narrower than the box. */
+    assert_true(hits > 100 && hits < 41 * 41);
+  }
+}
+
 static void test_shapes_superellipsoid_clamped(void **state) {
   fixture *f = *state;
   const zr_object *o = only(f, "superellipsoid { <0, 1> }\n");
@@ -571,6 +622,7 @@ int main(void) {
       TEST(test_shapes_polygon_bad_counts),
       TEST(test_shapes_superellipsoid_sphere_and_box),
       TEST(test_shapes_superellipsoid_star),
+      TEST(test_shapes_superellipsoid_convex_fan),
       TEST(test_shapes_superellipsoid_clamped),
       TEST(test_shapes_prism_linear_frame),
       TEST(test_shapes_prism_bezier_conic_open),
