@@ -85,6 +85,28 @@ static void test_shapes_roots_multiplicity(void **state) {
   assert_int_equal(zr__poly_roots(none, 4, -10.0, 10.0, out), 0);
 }
 
+/* Roots near 1 searched over an interval nine orders wider (a poly's
+   bound on its roots when its leading coefficient is small), a root far
+   out, and roots of both signs: the refinement splits such intervals
+   on the logarithmic scale and stops where the value is within its own
+   rounding, which for these simple roots is within 1e-12 relative. */
+static void test_shapes_roots_wide_interval(void **state) {
+  (void)state;
+  double r[4] = {-3.5, 0.25, 1.5, 2e7}, c[5], out[4];
+  from_roots(r, 4, c);
+  assert_int_equal(zr__poly_roots(c, 4, -1e9, 1e9, out), 4);
+  for (int i = 0; i < 4; i++)
+    assert_near(out[i] / r[i], 1.0, 1e-12);
+  /* The same roots near a start at 1e-6, as a shadow ray's. */
+  double s[3] = {0.03, 0.5, 0.97}, d[4];
+  from_roots(s, 3, d);
+  for (int i = 0; i <= 3; i++)
+    d[i] *= 1e-9; /* scale changes no root */
+  assert_int_equal(zr__poly_roots(d, 3, 1e-6, 1e6, out), 3);
+  for (int i = 0; i < 3; i++)
+    assert_near(out[i], s[i], 1e-12);
+}
+
 /* Torus crossings are roots of well-scaled quartics with simple roots:
    1e-9 covers their refinement, which stops within a few ulps. */
 #define TORUS_EPS 1e-9
@@ -614,6 +636,7 @@ int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_shapes_roots_clustered_quartic),
       cmocka_unit_test(test_shapes_roots_multiplicity),
+      cmocka_unit_test(test_shapes_roots_wide_interval),
       TEST(test_shapes_torus_crossings_and_normals),
       TEST(test_shapes_torus_thin_and_transformed),
       TEST(test_shapes_torus_bad_minor),
