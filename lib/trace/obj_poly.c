@@ -11,8 +11,9 @@
  * polynomial in t, expanded by the binomial theorem; the products give
  * P(t), a polynomial of degree n whose real roots are found by
  * lib/trace/roots.c.  That solver needs a finite interval: a poly is
- * unbounded, so the interval is cut to Cauchy's bound on the roots'
- * size, 1 + max |c_i / c_n|, outside which P(t) has no root.  Leading
+ * unbounded, so the interval is cut to the smaller of Cauchy's and
+ * Fujiwara's bounds on the roots' size, outside which P(t) has no root.
+ * Leading
  * coefficients that vanish against the others (rays along an asymptotic
  * direction) lower the degree first.  The normal is P's gradient.
  * Expanding P(t) costs digits, so roots nearer the ray's origin than a
