@@ -247,3 +247,7 @@ EXTRA_DIST += tests/test_waves_normal.sh bench/conform/waves_normal_fit.py
 # A negative transmit is traced: (1 - t) C + t B, povray's values.
 TESTS += tests/test_negative_transmit.sh
 EXTRA_DIST += tests/test_negative_transmit.sh tests/negative_transmit.pov
+
+# A no_shadow object's media and fading shadow nothing, povray's values.
+TESTS += tests/test_no_shadow_interior.sh
+EXTRA_DIST += tests/test_no_shadow_interior.sh tests/no_shadow_interior.pov
