@@ -576,7 +576,11 @@ static double inside_bound(const march_frame *f, const orbit *o) {
     if (!(b > 0.0))
       return 0.0;
   }
-  return b / f->lift_gain;
+  /* Nine tenths of it: a step of the whole bound may land on the
+     surface itself (a ray through the centre of the ball that
+     max_iteration 1 keeps does), where rounding tells outside from
+     inside by chance. */
+  return 0.9 * b / f->lift_gain;
 }
 
 /*
