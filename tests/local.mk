@@ -257,3 +257,7 @@ EXTRA_DIST += tests/test_quilted_normal.sh tests/quilted_normal.pov \
 # identifier's, else 0.5; povray's values.
 TESTS += tests/test_default_normal.sh
 EXTRA_DIST += tests/test_default_normal.sh tests/default_normal.pov
+
+# A no_shadow object's media and fading shadow nothing, povray's values.
+TESTS += tests/test_no_shadow_interior.sh
+EXTRA_DIST += tests/test_no_shadow_interior.sh tests/no_shadow_interior.pov

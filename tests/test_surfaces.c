@@ -396,6 +396,23 @@ static void test_surfaces_julia_unit_ball(void **state) {
     assert_near(h[1].t, 6.0, eps);
     assert_vec(h[0].normal, -1, 0, 0, 1e-6);
     assert_vec(h[1].normal, 1, 0, 0, 1e-6);
+    /* The nearest crossing alone, as the tracer asks for it, with and
+       without its normal: the same t to the last bit (the march's
+       points do not depend on what is asked), then the exit alone
+       from just past the entry. */
+    zr_ray ray = {zr_v3(-5, 0, 0), zr_v3(1, 0, 0)};
+    zr_hit g[2];
+    assert_int_equal(zr__intersect_first(o, &ray, 0.0, INFINITY, false, g),
+                     1);
+    assert_true(g[0].t == h[0].t);
+    assert_int_equal(zr__intersect_first(o, &ray, 0.0, INFINITY, true, g),
+                     1);
+    assert_true(g[0].t == h[0].t);
+    assert_vec(g[0].normal, -1, 0, 0, 1e-6);
+    assert_int_equal(
+        zr__intersect_first(o, &ray, h[0].t + 1e-3, INFINITY, true, g), 1);
+    assert_true(g[0].t == h[1].t);
+    assert_vec(g[0].normal, 1, 0, 0, 1e-6);
     assert_true(zr__inside(o, zr_v3(0.5, 0.2, 0.1)));
     assert_false(zr__inside(o, zr_v3(0.9, 0.9, 0)));
   }

@@ -782,13 +782,16 @@ static inline int crossings_t(const zr_object *o, const zr_ray *ray,
 }
 
 /* The first of crossings_t's crossings, all the search for the nearest
-   surface keeps: a mesh then prunes at its best crossing so far. */
+   surface keeps: a mesh then prunes at its best crossing so far, and a
+   julia_fractal's march stops at its first (zr__intersect_first). */
 static inline int first_crossing_t(const zr_object *o, const zr_ray *ray,
                                    double tmin, double tmax,
                                    zr_hit hits[ZR_MAX_CROSSINGS]) {
   if (o->kind == ZR_OBJ_MESH && !o->clip)
     return zr__mesh_nearest_t(o, ray, tmin, tmax, hits);
-  return crossings_t(o, ray, tmin, tmax, hits);
+  if (plain_sphere(o) || plain_plane(o))
+    return crossings_t(o, ray, tmin, tmax, hits);
+  return zr__intersect_first(o, ray, tmin, tmax, false, hits);
 }
 
 /* The nearest crossing without its normal. */
@@ -887,7 +890,8 @@ bool zr__bvh_nearest(const struct zr_bvh *bvh, const zr_ray *ray,
      than opening every box behind it. */
   double upto = hit->object->kind == ZR_OBJ_MESH ? hit->t + margin
                                                  : INFINITY;
-  int n = zr__intersect(hit->object, ray, from > t0 ? from : t0, upto, h);
+  int n = zr__intersect_first(hit->object, ray, from > t0 ? from : t0,
+                               upto, true, h);
   /* The crossing nearest the one found: shapes whose roots are refined
      inside the interval searched (lib/trace/roots.c) may place it a
      rounding away from before. */

@@ -39,10 +39,12 @@ static void clip_crossings(const zr_object *clip, const zr_ray *ray,
 
 /* The crossings in (tmin, tmax), sorted, with world normals only when
    asked for: traversal needs t alone, and normals cost a matrix product
-   and a square root each. */
+   and a square root each.  A shape that marches (search_upto) is asked
+   for no more than `wanted` (1 or ZR_MAX_CROSSINGS), or for all its
+   crossings when a clip may remove some. */
 static int crossings(const zr_object *object, const zr_ray *ray,
                      double tmin, double tmax, bool want_normals,
-                     zr_hit hits[ZR_MAX_CROSSINGS]) {
+                     int wanted, zr_hit hits[ZR_MAX_CROSSINGS]) {
   if (zr__is_csg(object->kind)) /* children carry their transforms */
     return zr__csg_crossings(object, ray, tmin, tmax, want_normals, hits);
   zr_vec3 org = ray->origin, dir = ray->dir;
@@ -53,7 +55,15 @@ static int crossings(const zr_object *object, const zr_ray *ray,
   const zr_shape_ops *ops = zr__shape(object->kind);
   zr_crossings l;
   l.n = 0;
-  if (ops->search) {
+  if (ops->search_upto) {
+    double t[ZR_SHAPE_MAX_CROSSINGS];
+    zr_vec3 n[ZR_SHAPE_MAX_CROSSINGS];
+    int k = ops->search_upto(object, org, dir, tmin, tmax,
+                             object->clip ? ZR_SHAPE_MAX_CROSSINGS : wanted,
+                             t, want_normals ? n : NULL);
+    for (int i = 0; i < k; i++)
+      zr__crossings_add(&l, t[i], want_normals ? n[i] : zr_v3(0, 0, 0));
+  } else if (ops->search) {
     double t[ZR_SHAPE_MAX_CROSSINGS];
     zr_vec3 n[ZR_SHAPE_MAX_CROSSINGS];
     int k = ops->search(object, org, dir, tmin, tmax, t, n);
@@ -102,12 +112,18 @@ static int crossings(const zr_object *object, const zr_ray *ray,
 
 int zr__intersect(const zr_object *object, const zr_ray *ray, double tmin,
                   double tmax, zr_hit hits[ZR_MAX_CROSSINGS]) {
-  return crossings(object, ray, tmin, tmax, true, hits);
+  return crossings(object, ray, tmin, tmax, true, ZR_MAX_CROSSINGS, hits);
 }
 
 int zr__intersect_t(const zr_object *object, const zr_ray *ray, double tmin,
                     double tmax, zr_hit hits[ZR_MAX_CROSSINGS]) {
-  return crossings(object, ray, tmin, tmax, false, hits);
+  return crossings(object, ray, tmin, tmax, false, ZR_MAX_CROSSINGS, hits);
+}
+
+int zr__intersect_first(const zr_object *object, const zr_ray *ray,
+                        double tmin, double tmax, bool want_normals,
+                        zr_hit hits[ZR_MAX_CROSSINGS]) {
+  return crossings(object, ray, tmin, tmax, want_normals, 1, hits);
 }
 
 bool zr__inside(const zr_object *object, zr_vec3 p) {

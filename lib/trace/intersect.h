@@ -51,6 +51,14 @@ int zr__intersect(const zr_object *object, const zr_ray *ray, double tmin,
 int zr__intersect_t(const zr_object *object, const zr_ray *ray, double tmin,
                     double tmax, zr_hit hits[ZR_MAX_CROSSINGS]);
 
+/* The nearest crossing in (tmin, tmax) first, with its normal when
+   want_normals: zr__intersect or zr__intersect_t for most shapes, which
+   may give a second crossing too; a shape that marches along the ray
+   (julia_fractal, shape.h's search_upto) stops at the first. */
+int zr__intersect_first(const zr_object *object, const zr_ray *ray,
+                        double tmin, double tmax, bool want_normals,
+                        zr_hit hits[ZR_MAX_CROSSINGS]);
+
 /* The surface coordinates (u, v) of hit at world point p, as POV-Ray
    3.7 defines them ("UV Mapping", "Supported Objects"); false when the
    object has none. */

@@ -373,87 +373,247 @@ static void rescale(double (*dh)[4]) {
       dh[k][m] = ldexp(dh[k][m], -e);
 }
 
-/* Whether the distance estimate applies: the iteration is a
-   polynomial (Hart, Sandin and Kauffman's estimate comes from the
-   Green's function of a polynomial Julia set).  The manual names the
-   estimate for quaternions; hypercomplex sqr and cube are polynomials
-   in each part (bicomplex), so it holds for them as well. */
+/* Whether distance bounds apply: the iteration is a polynomial (Hart,
+   Sandin and Kauffman's estimate comes from the Green's function of a
+   polynomial Julia set, and the bounds below from the difference of
+   two powers).  The manual names the estimate for quaternions;
+   hypercomplex sqr and cube are polynomials in each part (bicomplex),
+   so it holds for them as well. */
 static bool has_estimate(const struct zr_julia *j) {
   return j->function == ZR_JULIA_SQR || j->function == ZR_JULIA_CUBE;
 }
 
-/*
- * Iterates from s (with the derivative columns when n_cols is 3, kept
- * in range by rescale when asked); true when the point stays inside.
- * A point is inside when none of h_0 ... h_(N-1) lies beyond the
- * escape radius, N = max_iteration (the manual's sequence; h_N itself
- * is not tested, as POV-Ray's renders of p = <0.5, 0, 0, 0> with
- * max_iteration 2 show: their edge on the x axis is where h_1, not h_2,
- * reaches the radius).  For a point that escapes, s holds the first
- * iterate beyond the radius and *stretch, when not NULL, a bound on how
- * much the iteration up to it stretches small distances: the product
- * over the steps of each step's bound (quaternions: |d(q^n)| is at most
- * n |q|^(n-1) |dq|, since |a b| = |a| |b|; hypercomplex numbers: see
- * hypercomplex_step).
- */
-static bool iterate(const struct zr_julia *j, julia_state *s, int n_cols,
-                    bool keep_in_range, double *stretch, double slack) {
-  double limit2 = j->escape * j->escape * slack;
+/* The normal's iteration: from s with the three derivative columns,
+   kept in range by rescale, through all max_iteration steps unless an
+   iterate escapes (the test of orbit_escape below, without slack). */
+static void iterate_with_derivatives(const struct zr_julia *j,
+                                     julia_state *s) {
+  double limit2 = j->escape * j->escape;
   int power = j->function == ZR_JULIA_CUBE ? 3 : 2;
   bool quaternion = j->algebra == ZR_JULIA_QUATERNION;
-  if (stretch)
-    *stretch = 1.0;
   for (int i = 0; i < j->max_iteration; i++) {
     double n2 = s->h[0] * s->h[0] + s->h[1] * s->h[1] +
                 s->h[2] * s->h[2] + s->h[3] * s->h[3];
     if (n2 > limit2)
-      return false;
-    double next[4], k;
-    if (quaternion) {
-      quaternion_step(s->h, power, next, s->dh, n_cols);
-      k = power * (power == 2 ? sqrt(n2) : n2);
-    } else {
-      k = hypercomplex_step(j, s->h, next, s->dh, n_cols, stretch != NULL);
-    }
-    if (stretch)
-      *stretch *= k;
+      return;
+    double next[4];
+    if (quaternion)
+      quaternion_step(s->h, power, next, s->dh, 3);
+    else
+      hypercomplex_step(j, s->h, next, s->dh, 3, false);
     for (int m = 0; m < 4; m++)
       s->h[m] = next[m] + j->c[m];
-    if (n_cols && keep_in_range)
-      rescale(s->dh);
+    rescale(s->dh);
   }
-  return true;
+}
+
+/* The longest orbit whose radii a march sample keeps for the distance
+   bounds (max_iteration is 20 by default); a longer one steps by Hart,
+   Sandin and Kauffman's estimate alone outside, and by the precision's
+   step inside. */
+#define ORBIT_MAX 64
+
+/*
+ * The radii of an orbit h_0, h_1, ..., as the distance bounds need
+ * them.  The growth radius A_i bounds how much the step from h_i
+ * stretches a perturbation: for quaternions A_i = |h_i|, and a
+ * perturbation e of h_i becomes at most (A_i + e)^n - A_i^n after
+ * q -> q^n + p (n = 2, 3), because a^2 - b^2 = a (a - b) + (a - b) b
+ * and a^3 - b^3 = a^2 (a - b) + a (a - b) b + (a - b) b^2 in any
+ * algebra, and |a b| = |a| |b| for quaternions.  For hypercomplex
+ * numbers the same holds of each complex part (bicomplex) when A_i is
+ * the larger of the parts' moduli and e bounds both parts'
+ * perturbations (then |dh| <= e, since |h|^2 is the mean of the
+ * parts' |.|^2).
+ */
+typedef struct orbit {
+  int n;                     /* radii recorded, of h_0 ... h_(n-1) */
+  double radius[ORBIT_MAX];  /* |h_i| */
+  double growth[ORBIT_MAX];  /* A_i */
+  double growth2_product;    /* the product of A_i^2 over the steps */
+} orbit;
+
+/* The hypercomplex square or cube of h (power 2 or 3) by its complex
+   parts in real arithmetic, with the larger part's modulus squared. */
+static void bicomplex_power(const double h[4], int power, double out[4],
+                            double *growth2) {
+  /* P = A + B, M = A - B for A = x + iy, B = w - iz (bicomplex). */
+  double pr = h[0] + h[3], pi = h[1] - h[2];
+  double mr = h[0] - h[3], mi = h[1] + h[2];
+  double p2 = pr * pr + pi * pi, m2 = mr * mr + mi * mi;
+  *growth2 = fmax(p2, m2);
+  double fpr, fpi, fmr, fmi;
+  if (power == 2) {
+    fpr = pr * pr - pi * pi;
+    fpi = 2.0 * pr * pi;
+    fmr = mr * mr - mi * mi;
+    fmi = 2.0 * mr * mi;
+  } else {
+    fpr = pr * (pr * pr - 3.0 * pi * pi);
+    fpi = pi * (3.0 * pr * pr - pi * pi);
+    fmr = mr * (mr * mr - 3.0 * mi * mi);
+    fmi = mi * (3.0 * mr * mr - mi * mi);
+  }
+  /* Back: A = (P + M) / 2, B = (P - M) / 2 (join). */
+  out[0] = 0.5 * (fpr + fmr);
+  out[1] = 0.5 * (fpi + fmi);
+  out[2] = -0.5 * (fpi - fmi);
+  out[3] = 0.5 * (fpr - fmr);
+}
+
+/*
+ * Iterates h_0 = h to the first iterate beyond the escape radius
+ * (scaled by sqrt(slack); see ENTRY_SLACK) and returns its index, or
+ * max_iteration when none of h_0 ... h_(N-1) lies beyond (the point is
+ * inside: the manual's sequence; h_N itself is not tested, as
+ * POV-Ray's renders of p = <0.5, 0, 0, 0> with max_iteration 2 show:
+ * their edge on the x axis is where h_1, not h_2, reaches the radius).
+ * h ends as the last iterate computed.  When rec is given (sqr and
+ * cube only), it receives the orbit's radii up to ORBIT_MAX and the
+ * product of the growth radii over the steps taken.
+ */
+static int orbit_escape(const struct zr_julia *j, double h[4],
+                        double slack, orbit *rec) {
+  double limit2 = j->escape * j->escape * slack;
+  int power = j->function == ZR_JULIA_CUBE ? 3 : 2;
+  bool quaternion = j->algebra == ZR_JULIA_QUATERNION;
+  bool polynomial = has_estimate(j);
+  const double *c = j->c;
+  if (rec) {
+    rec->n = 0;
+    rec->growth2_product = 1.0;
+  }
+  int i = 0;
+  for (; i < j->max_iteration; i++) {
+    double n2 = h[0] * h[0] + h[1] * h[1] + h[2] * h[2] + h[3] * h[3];
+    if (n2 > limit2)
+      return i;
+    double next[4], growth2 = n2;
+    if (quaternion) {
+      double x = h[0], vv = n2 - x * x;
+      if (power == 2) {
+        next[0] = x * x - vv;
+        for (int m = 1; m < 4; m++)
+          next[m] = 2.0 * x * h[m];
+      } else {
+        double s = 3.0 * x * x - vv;
+        next[0] = x * (x * x - 3.0 * vv);
+        for (int m = 1; m < 4; m++)
+          next[m] = s * h[m];
+      }
+    } else if (polynomial) {
+      bicomplex_power(h, power, next, &growth2);
+    } else {
+      hypercomplex_step(j, h, next, NULL, 0, false);
+    }
+    if (rec) {
+      if (i < ORBIT_MAX) {
+        rec->radius[i] = sqrt(n2);
+        rec->growth[i] = sqrt(growth2);
+        rec->n = i + 1;
+      }
+      rec->growth2_product *= growth2;
+    }
+    for (int m = 0; m < 4; m++)
+      h[m] = next[m] + c[m];
+  }
+  return i;
 }
 
 static bool point_inside(const struct zr_julia *j, zr_vec3 p) {
   julia_state s;
   lift(j, p, &s, false);
-  return iterate(j, &s, 0, false, NULL, 1.0);
+  return orbit_escape(j, s.h, 1.0, NULL) == j->max_iteration;
+}
+
+/* The largest perturbation e of an iterate of growth radius a whose
+   image, at most (a + e)^n - a^n (see orbit), stays within y. */
+static double allowed_before(int power, double a, double y) {
+  if (!(y > 0.0))
+    return 0.0;
+  if (power == 2)
+    return y / (sqrt(a * a + y) + a);
+  double x = cbrt(a * a * a + y);
+  return y / (x * x + x * a + a * a);
+}
+
+/* What one march needs besides the fractal. */
+typedef struct march_frame {
+  const struct zr_julia *j;
+  int power;
+  bool estimate; /* has_estimate */
+  /* How far h_0 moves, at most, per unit of 3-D distance, times sqrt(2)
+     for hypercomplex numbers (a part moves up to sqrt(2) |dh|): the
+     slice's w follows x, y, z by -n.xyz / n.w. */
+  double lift_gain;
+} march_frame;
+
+static march_frame frame_of(const struct zr_julia *j) {
+  const double *n = j->slice;
+  double gain = sqrt(1.0 + (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) /
+                               (n[3] * n[3]));
+  if (j->algebra == ZR_JULIA_HYPERCOMPLEX)
+    gain *= sqrt(2.0);
+  return (march_frame){j, j->function == ZR_JULIA_CUBE ? 3 : 2,
+                       has_estimate(j), gain};
 }
 
 /*
- * A point of the march: whether it is inside, and in *dist how far the
- * march may step from it, 0 when no estimate applies.  For a point
- * that escapes a polynomial iteration, Hart, Sandin and Kauffman's
- * estimate ("Ray tracing deterministic 3-D fractals", SIGGRAPH 1989)
- * of the distance to the set: |h| ln |h| / (2 |h'|), with |h'| bounded
- * above by iterate's stretch, which only shortens the estimate.  Like
- * the manual's, it is not a proven bound in four dimensions, so the
- * march still checks every point it steps to.
+ * A lower bound on the distance from an inside point to the outside,
+ * from its orbit (all max_iteration radii recorded): every point p'
+ * closer than it has |h_i(p')| <= R for i < N, so it is inside too.
+ * Perturbations grow at most as orbit says, so b_i, the largest
+ * perturbation of h_i that keeps h_i ... h_(N-1) within R, is
+ * min(R - |h_i|, allowed_before(A_i, b_(i+1))) with b_(N-1) =
+ * R - |h_(N-1)|, and b_0 / lift_gain bounds the distance.
  */
-static bool march_sample(const struct zr_julia *j, zr_vec3 p,
-                         double *dist, double slack) {
+static double inside_bound(const march_frame *f, const orbit *o) {
+  double r = f->j->escape, b = INFINITY;
+  for (int i = o->n - 1; i >= 0; i--) {
+    if (i < o->n - 1)
+      b = allowed_before(f->power, o->growth[i], b);
+    b = fmin(b, r - o->radius[i]);
+    if (!(b > 0.0))
+      return 0.0;
+  }
+  /* Nine tenths of it: a step of the whole bound may land on the
+     surface itself (a ray through the centre of the ball that
+     max_iteration 1 keeps does), where rounding tells outside from
+     inside by chance. */
+  return 0.9 * b / f->lift_gain;
+}
+
+/*
+ * A march point: whether it is inside, and in *dist how far the march
+ * may step from it, 0 when no bound or estimate applies.  Inside, the
+ * proven bound of inside_bound.  Outside, for a point escaping a
+ * polynomial iteration, Hart, Sandin and Kauffman's estimate ("Ray
+ * tracing deterministic 3-D fractals", SIGGRAPH 1989) of the distance
+ * to the set: |h| ln |h| / (2 |h'|), with |h'| bounded above by the
+ * product over the steps of n A_i^(n-1) (orbit), which only shortens
+ * the estimate.  Like the manual's, it is not a proven bound in four
+ * dimensions, so the march still checks every point it steps to.
+ */
+static bool march_sample(const march_frame *f, zr_vec3 p, double *dist,
+                         double slack) {
+  const struct zr_julia *j = f->j;
   julia_state s;
-  double stretch;
-  bool estimate = has_estimate(j);
+  orbit o;
   lift(j, p, &s, false);
   *dist = 0.0;
-  if (iterate(j, &s, 0, false, estimate ? &stretch : NULL, slack))
+  int k = orbit_escape(j, s.h, slack, f->estimate ? &o : NULL);
+  if (k == j->max_iteration) {
+    if (f->estimate && o.n == k)
+      *dist = inside_bound(f, &o);
     return true;
-  if (!estimate)
+  }
+  if (!f->estimate)
     return false;
   double n = sqrt(s.h[0] * s.h[0] + s.h[1] * s.h[1] + s.h[2] * s.h[2] +
                   s.h[3] * s.h[3]);
+  double stretch = f->power == 2
+                       ? ldexp(sqrt(o.growth2_product), k)
+                       : pow(3.0, k) * o.growth2_product;
   if (n > 1.0 && stretch > 0.0 && isfinite(stretch))
     *dist = n * log(n) / (2.0 * stretch);
   return false;
@@ -467,7 +627,7 @@ bool zr__julia_inside(const zr_object *o, zr_vec3 p) {
 static zr_vec3 julia_normal(const struct zr_julia *j, zr_vec3 p) {
   julia_state s;
   lift(j, p, &s, true);
-  iterate(j, &s, 3, true, NULL, 1.0);
+  iterate_with_derivatives(j, &s);
   double g[3];
   for (int k = 0; k < 3; k++) {
     g[k] = 0.0;
@@ -485,9 +645,18 @@ static zr_vec3 julia_normal(const struct zr_julia *j, zr_vec3 p) {
   return zr_v3(g[0], g[1], g[2]);
 }
 
-int zr__julia_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
-                        double tmin, double tmax, double t[4],
-                        zr_vec3 normal[4]) {
+/*
+ * The march along a ray (see the top of the file): the first max_found
+ * crossings in (tmin, tmax), with their normals when normal is not
+ * NULL.  The march's points do not depend on tmin, tmax or max_found
+ * (it runs from the bounding sphere's entry, and its last point may lie
+ * beyond tmax), so a crossing found by one query is found again at the
+ * same t by another: the tracer asks for the nearest crossing without
+ * its normal, then for it alone again with the normal.
+ */
+static int julia_march(const zr_object *o, zr_vec3 org, zr_vec3 dir,
+                       double tmin, double tmax, int max_found,
+                       double t[4], zr_vec3 normal[4]) {
   const struct zr_julia *j = o->u.julia.data;
   double len = zr_v3_len(dir);
   if (!(len > 0.0) || !isfinite(len))
@@ -504,16 +673,18 @@ int zr__julia_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
      leaving the surface does not find it again. */
   double step = 1.0 / j->precision, tol = TOLERANCE * r;
   double s_far = -b + root, s = fmax(-b - root, 3.0 * tol);
-  double s_end = fmin(s_far, tmax * len);
-  if (!(s < s_end))
+  double s_stop = fmin(s_far, tmax * len);
+  if (!(s < s_stop))
     return 0;
+  march_frame f = frame_of(j);
   double dist;
-  bool in = march_sample(j, zr_v3_madd(org, d, s), &dist, ENTRY_SLACK);
+  bool in = march_sample(&f, zr_v3_madd(org, d, s), &dist, ENTRY_SLACK);
   int found = 0;
-  while (s < s_end && found < 4) {
+  while (s < s_stop && found < max_found) {
     double ds = fmax(dist, step);
-    double s_next = fmin(s + ds, s_end), dist_next;
-    bool in_next = march_sample(j, zr_v3_madd(org, d, s_next), &dist_next,
+    double s_next = fmin(s + ds, s_far), dist_next;
+    bool in_next = march_sample(&f, zr_v3_madd(org, d, s_next),
+                                &dist_next,
                                 s_next == s_far ? ENTRY_SLACK : 1.0);
     if (in_next != in) {
       /* Bisect [s, s_next] down to the tolerance. */
@@ -530,7 +701,8 @@ int zr__julia_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
       double sh = in ? a : e, th = sh / len;
       if (th > tmin && th < tmax) {
         t[found] = th;
-        normal[found] = julia_normal(j, zr_v3_madd(org, d, sh));
+        if (normal)
+          normal[found] = julia_normal(j, zr_v3_madd(org, d, sh));
         found++;
       }
     }
@@ -539,6 +711,12 @@ int zr__julia_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
     in = in_next;
   }
   return found;
+}
+
+int zr__julia_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
+                        double tmin, double tmax, double t[4],
+                        zr_vec3 normal[4]) {
+  return julia_march(o, org, dir, tmin, tmax, 4, t, normal);
 }
 
 static bool julia_box(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi) {
@@ -550,6 +728,7 @@ static bool julia_box(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi) {
 const zr_shape_ops zr__shape_julia = {
     .name = "a julia_fractal",
     .search = zr__julia_crossings,
+    .search_upto = julia_march,
     .inside = zr__julia_inside,
     .bounds = julia_box,
 };

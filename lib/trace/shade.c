@@ -202,6 +202,12 @@ static bool shadow_visit(const zr_hit *hit, void *user) {
   shadow_walk *w = user;
   const zr_object *o = hit->object;
   const zr_object *solid = o->solid ? o->solid : o;
+  /* A no_shadow object leaves the light alone: its surface, and the
+     media and fading of its interior (povray 3.7: a no_shadow sphere
+     of absorbing media or with fade_distance casts no shadow, as
+     tests/test_no_shadow_interior.sh checks). */
+  if (o->no_shadow)
+    return true;
   if (solid->hollow && solid->interior && solid->interior->n_media > 0 &&
       w->n_crossings < ZR_MEDIA_LIST_MAX) {
     /* The walk's hits carry no normals: the ray goes in when a point
@@ -223,8 +229,6 @@ static bool shadow_visit(const zr_hit *hit, void *user) {
     c->solid = solid;
     c->entering = zr__inside(solid, past);
   }
-  if (o->no_shadow)
-    return true;
   if (zr__photons_block_shadow(w->scene, w->source, o)) {
     w->light = zr_rgb3(0, 0, 0);
     w->blocker = o;

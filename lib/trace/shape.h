@@ -63,6 +63,18 @@ typedef struct zr_shape_ops {
                 double tmax, double t[4], zr_vec3 normal[4]);
   void (*crossings)(const zr_object *o, zr_vec3 org, zr_vec3 dir,
                     double tmin, double tmax, zr_crossings *l);
+  /*
+   * Optional, for shapes that find their crossings by a costly march
+   * along the ray (julia_fractal): search's nearest crossings, at most
+   * max_found of them, and their normals only when normal is not NULL,
+   * the march stopping there.  Its crossings must not depend on the
+   * interval or on max_found, so that the tracer may ask for the
+   * nearest one alone without normals, then again with its normal.
+   * When given, intersect.c calls it instead of search.
+   */
+  int (*search_upto)(const zr_object *o, zr_vec3 org, zr_vec3 dir,
+                     double tmin, double tmax, int max_found, double t[4],
+                     zr_vec3 normal[4]);
   /* Whether p is inside (POV-Ray's inside, before inverse); NULL: the
      shape has no inside (a shell: triangle, polygon, parametric). */
   bool (*inside)(const zr_object *o, zr_vec3 p);
