@@ -247,3 +247,5 @@ EXTRA_DIST += tests/test_waves_normal.sh bench/conform/waves_normal_fit.py
 # A negative transmit is traced: (1 - t) C + t B, povray's values.
 TESTS += tests/test_negative_transmit.sh
 EXTRA_DIST += tests/test_negative_transmit.sh tests/negative_transmit.pov
+TESTS += tests/test_csg_area_shadow.sh
+EXTRA_DIST += tests/test_csg_area_shadow.sh tests/csg_area_shadow.pov
