@@ -261,3 +261,6 @@ EXTRA_DIST += tests/test_default_normal.sh tests/default_normal.pov
 # A no_shadow object's media and fading shadow nothing, povray's values.
 TESTS += tests/test_no_shadow_interior.sh
 EXTRA_DIST += tests/test_no_shadow_interior.sh tests/no_shadow_interior.pov
+
+TESTS += tests/test_csg_area_shadow.sh
+EXTRA_DIST += tests/test_csg_area_shadow.sh tests/csg_area_shadow.pov

@@ -221,6 +221,39 @@ static void test_intersect_cylinder_capped_and_open(void **state) {
   assert_false(zr__inside(&c, zr_v3(0.6, 1, 0)));
 }
 
+/* zr__intersect_all says when a part of a CSG object need not be asked
+   again beyond its last crossing (lib/trace/csg.c): a sphere's two are
+   all it has; a torus, whose list depends on the interval and may hold
+   four, is always asked again, and gives its far two then. */
+static void test_intersect_all_tells_when_complete(void **state) {
+  (void)state;
+  zr_object s = sphere(0, 0, 0, 1);
+  zr_ray r = ray(0, 0, -5, 0, 0, 1);
+  zr_hit h[2];
+  bool all = false;
+  assert_int_equal(zr__intersect_all(&s, &r, 0.0, INFINITY, false, h, &all),
+                   2);
+  assert_true(all);
+  assert_near(h[1].t, 6.0, EPS);
+  assert_int_equal(zr__intersect_all(&s, &r, 6.0, INFINITY, false, h, &all),
+                   0);
+  zr_object t;
+  memset(&t, 0, sizeof t);
+  t.kind = ZR_OBJ_TORUS;
+  t.u.torus.major = 2.0;
+  t.u.torus.minor = 0.5;
+  zr_ray across = ray(-5, 0, 0, 1, 0, 0);
+  all = true;
+  assert_int_equal(
+      zr__intersect_all(&t, &across, 0.0, INFINITY, false, h, &all), 2);
+  assert_false(all);
+  assert_near(h[1].t, 3.5, 1e-9);
+  assert_int_equal(
+      zr__intersect_all(&t, &across, h[1].t, INFINITY, false, h, &all), 2);
+  assert_near(h[0].t, 6.5, 1e-9);
+  assert_near(h[1].t, 7.5, 1e-9);
+}
+
 static void test_intersect_cone_apex_frustum_and_open(void **state) {
   (void)state;
   zr_object k;
@@ -393,6 +426,7 @@ int main(void) {
       cmocka_unit_test(test_intersect_triangle_inside_edges_and_miss),
       cmocka_unit_test(test_intersect_cylinder_capped_and_open),
       cmocka_unit_test(test_intersect_cone_apex_frustum_and_open),
+      cmocka_unit_test(test_intersect_all_tells_when_complete),
       cmocka_unit_test(test_intersect_disc_with_hole),
       cmocka_unit_test(test_intersect_inverse_sphere_flips_normal),
       cmocka_unit_test(test_intersect_no_self_hit_across_scales),

@@ -266,18 +266,46 @@ static double block_margin(zr_vec3 p, int reach) {
 
 /* The three smallest distances from p to the feature points of the cells
    within reach cells of p's own, in crackle's metric, and the nearest
-   point. */
+   point.  For a positive metric m the cells are ranked by the sum of the
+   coordinates' m-th powers (the distance before its 1/m-th root, which
+   keeps the order), so the root is taken three times instead of once a
+   cell, and a cell is left as soon as the part of its sum found so far
+   reaches the third smallest: crackle3.pov's metric 2.5 spent three
+   quarters of its time in pow().  The distances are the same numbers as
+   crackle_distance() gives. */
 static void nearest_three(const zr_pattern *pt, zr_vec3 p, int reach,
                           double d[3], zr_vec3 *near) {
   int64_t fx = (int64_t)floor(p.x), fy = (int64_t)floor(p.y),
           fz = (int64_t)floor(p.z);
+  double m = pt->crackle_metric, off = pt->crackle_offset;
+  bool ranked = m > 0;
+  bool general = ranked && m != 2 && m != 1;
+  double off_m = general ? pow(fabs(off), m) : 0.0;
   d[0] = d[1] = d[2] = INFINITY;
   for (int64_t i = -reach; i <= reach; i++)
     for (int64_t j = -reach; j <= reach; j++)
       for (int64_t k = -reach; k <= reach; k++) {
         zr_vec3 f = crackle_point(fx + i, fy + j, fz + k);
-        double v = crackle_distance(zr_v3_sub(p, f), pt->crackle_metric,
-                                    pt->crackle_offset);
+        zr_vec3 r = zr_v3_sub(p, f);
+        double v;
+        if (!ranked) {
+          v = crackle_distance(r, m, off);
+        } else if (m == 2) {
+          v = r.x * r.x + r.y * r.y + r.z * r.z + off * off;
+        } else if (m == 1) {
+          v = fabs(r.x) + fabs(r.y) + fabs(r.z) + fabs(off);
+        } else {
+          /* Partial sums only grow (each term is at least 0 and a
+             rounded sum is monotonic in its terms), so a part at or
+             past d[2] means the whole is too. */
+          double ax = pow(fabs(r.x), m);
+          if (ax + off_m >= d[2])
+            continue;
+          double axy = ax + pow(fabs(r.y), m);
+          if (axy + off_m >= d[2])
+            continue;
+          v = axy + pow(fabs(r.z), m) + off_m;
+        }
         if (v < d[0]) {
           d[2] = d[1];
           d[1] = d[0];
@@ -290,6 +318,10 @@ static void nearest_three(const zr_pattern *pt, zr_vec3 p, int reach,
           d[2] = v;
         }
       }
+  if (!ranked || m == 1)
+    return;
+  for (int i = 0; i < 3; i++)
+    d[i] = m == 2 ? sqrt(d[i]) : pow(d[i], 1 / m);
 }
 
 static double crackle_general(const zr_pattern *pt, zr_vec3 p) {

@@ -60,7 +60,7 @@ static bool ray_meets(const struct zr_csg_box *b, const zr_ray *ray,
      runs beside the box parallel to an axis. */
   double s0 = 0.0, s1 = -1.0;
   zr__ray_box_span(b->lo, b->hi, ray->origin, ray->dir, &s0, &s1);
-  return fmax(s0, tmin) <= fmin(s1, tmax);
+  return (s0 > tmin ? s0 : tmin) <= (s1 < tmax ? s1 : tmax);
 }
 
 /* Whether p may be inside the child of box b: never outside its box. */
@@ -77,15 +77,19 @@ static bool child_inside(const zr_object *node, size_t j, zr_vec3 p) {
   return zr__inside(node->u.csg.children[j], p);
 }
 
-/* Every crossing of a leaf primitive in (tmin, tmax). */
+/* Every crossing of a leaf primitive in (tmin, tmax).  A leaf is asked
+   again beyond its last crossing unless it said it had no more: the
+   corpus' complexity.pov asked its boxes and cylinders twice each, 20.7
+   million askings for 10.4 million CSG tests. */
 static void gather_leaf(gather *g, const zr_object *leaf, double tmin) {
   zr_hit h[ZR_MAX_CROSSINGS];
   for (;;) {
-    int k = g->want_normals ? zr__intersect(leaf, g->ray, tmin, g->tmax, h)
-                            : zr__intersect_t(leaf, g->ray, tmin, g->tmax, h);
+    bool all;
+    int k = zr__intersect_all(leaf, g->ray, tmin, g->tmax, g->want_normals,
+                              h, &all);
     for (int i = 0; i < k && g->n < CSG_MAX_GATHER; i++)
       g->hit[g->n++] = h[i];
-    if (k < ZR_MAX_CROSSINGS || !(h[k - 1].t > tmin))
+    if (all || k < ZR_MAX_CROSSINGS || !(h[k - 1].t > tmin))
       return;
     tmin = h[k - 1].t;
   }

@@ -44,7 +44,9 @@ static void clip_crossings(const zr_object *clip, const zr_ray *ray,
    crossings when a clip may remove some. */
 static int crossings(const zr_object *object, const zr_ray *ray,
                      double tmin, double tmax, bool want_normals,
-                     int wanted, zr_hit hits[ZR_MAX_CROSSINGS]) {
+                     int wanted, zr_hit hits[ZR_MAX_CROSSINGS],
+                     bool *all) {
+  *all = false;
   if (zr__is_csg(object->kind)) /* children carry their transforms */
     return zr__csg_crossings(object, ray, tmin, tmax, want_normals, hits);
   zr_vec3 org = ray->origin, dir = ray->dir;
@@ -74,6 +76,7 @@ static int crossings(const zr_object *object, const zr_ray *ray,
   }
   if (object->clip)
     clip_crossings(object->clip, ray, &l);
+  *all = ops->interval_free && l.n <= ZR_MAX_CROSSINGS;
   int n = 0;
   for (int i = 0; i < l.n; i++) {
     double t = l.t[i];
@@ -112,18 +115,30 @@ static int crossings(const zr_object *object, const zr_ray *ray,
 
 int zr__intersect(const zr_object *object, const zr_ray *ray, double tmin,
                   double tmax, zr_hit hits[ZR_MAX_CROSSINGS]) {
-  return crossings(object, ray, tmin, tmax, true, ZR_MAX_CROSSINGS, hits);
+  bool all;
+  return crossings(object, ray, tmin, tmax, true, ZR_MAX_CROSSINGS, hits,
+                   &all);
 }
 
 int zr__intersect_t(const zr_object *object, const zr_ray *ray, double tmin,
                     double tmax, zr_hit hits[ZR_MAX_CROSSINGS]) {
-  return crossings(object, ray, tmin, tmax, false, ZR_MAX_CROSSINGS, hits);
+  bool all;
+  return crossings(object, ray, tmin, tmax, false, ZR_MAX_CROSSINGS, hits,
+                   &all);
 }
 
 int zr__intersect_first(const zr_object *object, const zr_ray *ray,
                         double tmin, double tmax, bool want_normals,
                         zr_hit hits[ZR_MAX_CROSSINGS]) {
-  return crossings(object, ray, tmin, tmax, want_normals, 1, hits);
+  bool all;
+  return crossings(object, ray, tmin, tmax, want_normals, 1, hits, &all);
+}
+
+int zr__intersect_all(const zr_object *object, const zr_ray *ray,
+                      double tmin, double tmax, bool want_normals,
+                      zr_hit hits[ZR_MAX_CROSSINGS], bool *all) {
+  return crossings(object, ray, tmin, tmax, want_normals, ZR_MAX_CROSSINGS,
+                   hits, all);
 }
 
 bool zr__inside(const zr_object *object, zr_vec3 p) {

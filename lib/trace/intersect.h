@@ -59,6 +59,15 @@ int zr__intersect_first(const zr_object *object, const zr_ray *ray,
                         double tmin, double tmax, bool want_normals,
                         zr_hit hits[ZR_MAX_CROSSINGS]);
 
+/* The crossings as zr__intersect (want_normals) or zr__intersect_t
+   give them; *all tells whether they are every crossing in (tmin,
+   tmax), so that asking again beyond the last would find none (a shape
+   whose list does not depend on the interval, with no more crossings
+   than hits[] holds). */
+int zr__intersect_all(const zr_object *object, const zr_ray *ray,
+                      double tmin, double tmax, bool want_normals,
+                      zr_hit hits[ZR_MAX_CROSSINGS], bool *all);
+
 /* The surface coordinates (u, v) of hit at world point p, as POV-Ray
    3.7 defines them ("UV Mapping", "Supported Objects"); false when the
    object has none. */

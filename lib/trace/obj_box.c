@@ -117,6 +117,7 @@ static void box_uv(const zr_object *o, zr_vec3 p, double *u, double *v) {
 const zr_shape_ops zr__shape_box = {
     .name = "a box",
     .crossings = box_crossings,
+    .interval_free = true,
     .inside = box_inside,
     .bounds = box_bounds,
     .uv = box_uv,

@@ -122,6 +122,7 @@ static bool cylinder_bounds(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi) {
 const zr_shape_ops zr__shape_cylinder = {
     .name = "a cylinder",
     .crossings = cylinder_crossings,
+    .interval_free = true,
     .inside = cylinder_inside,
     .bounds = cylinder_bounds,
 };
@@ -152,6 +153,7 @@ static bool cone_bounds(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi) {
 const zr_shape_ops zr__shape_cone = {
     .name = "a cone",
     .crossings = cone_crossings,
+    .interval_free = true,
     .inside = cone_inside,
     .bounds = cone_bounds,
 };

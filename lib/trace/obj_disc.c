@@ -36,6 +36,7 @@ static bool disc_bounds(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi) {
 const zr_shape_ops zr__shape_disc = {
     .name = "a disc",
     .crossings = disc_crossings,
+    .interval_free = true,
     .inside = disc_inside,
     .flat = true,
     .bounds = disc_bounds,

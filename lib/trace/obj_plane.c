@@ -23,5 +23,6 @@ static bool plane_inside(const zr_object *o, zr_vec3 p) {
 const zr_shape_ops zr__shape_plane = {
     .name = "a plane",
     .crossings = plane_crossings,
+    .interval_free = true,
     .inside = plane_inside,
 };

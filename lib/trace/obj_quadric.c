@@ -83,5 +83,6 @@ static bool quadric_inside(const zr_object *o, zr_vec3 p) {
 const zr_shape_ops zr__shape_quadric = {
     .name = "a quadric",
     .crossings = quadric_crossings,
+    .interval_free = true,
     .inside = quadric_inside,
 };

@@ -64,6 +64,7 @@ static void sphere_uv(const zr_object *o, zr_vec3 p, double *u, double *v) {
 const zr_shape_ops zr__shape_sphere = {
     .name = "a sphere",
     .crossings = sphere_crossings,
+    .interval_free = true,
     .inside = sphere_inside,
     .bounds = sphere_bounds,
     .uv = sphere_uv,

@@ -40,8 +40,11 @@ bool zr__ray_box_span(zr_vec3 lo, zr_vec3 hi, zr_vec3 org, zr_vec3 dir,
       t0 = t1;
       t1 = tt;
     }
-    a = fmax(a, t0);
-    b = fmin(b, t1);
+    /* Comparisons, not fmax and fmin: those are calls into libm, and
+       this runs for every CSG child a ray passes (a NaN, which fmax
+       would skip, leaves a and b alone here as well). */
+    a = t0 > a ? t0 : a;
+    b = t1 < b ? t1 : b;
   }
   *s0 = a;
   *s1 = b;

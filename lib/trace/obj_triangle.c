@@ -43,5 +43,6 @@ static bool triangle_bounds(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi) {
 const zr_shape_ops zr__shape_triangle = {
     .name = "a triangle",
     .crossings = triangle_crossings,
+    .interval_free = true,
     .bounds = triangle_bounds,
 };
