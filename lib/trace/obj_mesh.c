@@ -13,13 +13,17 @@
  * The inner hierarchy is built top down with the binned surface area
  * heuristic (Wald, "On fast Construction of SAH-based Bounding Volume
  * Hierarchies", 2007) with lib/trace/bvh.c's sweep (zr__sah_sweep), but
- * over the faces' own boxes, partitioned in place, and with
- * single-precision node boxes rounded outward, which halves the
- * nodes' size for the million-triangle meshes it exists for.  The faces
- * are then put in leaf order, so a leaf is a run of consecutive rows and
- * needs no index table.  Triangles are tested in double precision
- * (Moller and Trumbore, "Fast, minimum storage ray/triangle
- * intersection", 1997).
+ * over the faces' own boxes (single precision, rounded outward),
+ * partitioned in place.  The binary tree is then collapsed four wide
+ * into the nodes the scene's hierarchy uses (lib/trace/bvh_wide.h: one
+ * SSE slab test for four children), which took the terrain of
+ * bench/peers.sh from 6.80 to 5.42 CPU seconds of render at 2048^2
+ * (bench/results/peers-cpu-2026-12-02-s5.txt).  The faces are put in
+ * leaf order, so a leaf is a run of consecutive rows and needs no index
+ * table.  Triangles are tested in double precision (Moller and
+ * Trumbore, "Fast, minimum storage ray/triangle intersection", 1997).
+ * A shadow ray through a mesh that stops light wherever it is crossed
+ * takes the first crossing met (zr__mesh_any_t), not the nearest.
  *
  * A smooth triangle's shading normal is its corner normals weighted by
  * the barycentric coordinates of the hit (Phong interpolation, as the
