@@ -137,6 +137,99 @@ static void test_mesh_bvh_matches_brute_force(void **state) {
   }
 }
 
+/* Every t at which the line crosses a face of m, by a test of each. */
+static size_t brute_crossings(const struct zr_mesh *m, const zr_ray *ray,
+                              double *ts, size_t cap) {
+  size_t n = 0;
+  for (size_t face = 0; face < m->n_faces; face++) {
+    double t, u, v;
+    if (zr__mesh_face_hit(m, face, ray->origin, ray->dir, &t, &u, &v) &&
+        n < cap)
+      ts[n++] = t;
+  }
+  return n;
+}
+
+/*
+ * The four-wide hierarchy against a test of every face, for segments in
+ * every direction across a rippled grid (shadow rays' (0, tmax)): the
+ * any-hit search (zr__mesh_any_t) finds a crossing exactly when one
+ * lies in the interval, and it is one of them; the search for the
+ * nearest two (zr__mesh_crossings) finds the two least.
+ */
+static void test_mesh_any_hit_and_two_nearest(void **state) {
+  fixture *f = *state;
+  const int n = 24;
+  zr_strbuf b;
+  zr__strbuf_init(&b);
+  zr__strbuf_printf(&b, "mesh2 { vertex_vectors { %d", n * n);
+  for (int j = 0; j < n; j++)
+    for (int i = 0; i < n; i++)
+      zr__strbuf_printf(&b, ", <%d, %g, %d>", i,
+                        2 * sin(i * 0.9) * cos(j * 0.5), j);
+  zr__strbuf_printf(&b, " } face_indices { %d", 2 * (n - 1) * (n - 1));
+  for (int j = 0; j < n - 1; j++)
+    for (int i = 0; i < n - 1; i++) {
+      int a = j * n + i;
+      zr__strbuf_printf(&b, ", <%d,%d,%d>, <%d,%d,%d>", a, a + 1, a + n,
+                        a + 1, a + n + 1, a + n);
+    }
+  zr__strbuf_printf(&b, " } }\n");
+  zr_scene *s = good(f, zr__strbuf_cstr(&b));
+  zr__strbuf_free(&b);
+  const zr_object *o = s->primitives[0];
+  const struct zr_mesh *m = only_mesh(s);
+  unsigned seed = 777;
+  int hits = 0, misses = 0;
+  for (int k = 0; k < 2000; k++) {
+    double r[6];
+    for (int i = 0; i < 6; i++) {
+      seed = seed * 1103515245u + 12345u;
+      r[i] = (seed >> 8) % 10000 / 10000.0;
+    }
+    /* From a point near the surface towards another: a shadow ray's
+       segment, t in (0, 1). */
+    zr_vec3 from = zr_v3(r[0] * (n - 1), 4 * r[1] - 2, r[2] * (n - 1));
+    zr_vec3 to = zr_v3(r[3] * (n - 1), 4 * r[4] - 1, r[5] * (n - 1));
+    zr_ray ray = {from, zr_v3_sub(to, from)};
+    double all[4096];
+    size_t c = brute_crossings(m, &ray, all, 4096);
+    double in[2] = {INFINITY, INFINITY};
+    size_t n_in = 0;
+    for (size_t i = 0; i < c; i++) {
+      if (!(all[i] > 0.0 && all[i] < 1.0))
+        continue;
+      n_in++;
+      if (all[i] < in[0]) {
+        in[1] = in[0];
+        in[0] = all[i];
+      } else if (all[i] < in[1]) {
+        in[1] = all[i];
+      }
+    }
+    zr_hit hit;
+    int any = zr__mesh_any_t(o, &ray, 0.0, 1.0, &hit);
+    assert_int_equal(any, n_in > 0);
+    if (any) {
+      hits++;
+      bool real = false;
+      for (size_t i = 0; i < c; i++)
+        real = real || all[i] == hit.t;
+      assert_true(real);
+      assert_true(hit.t > 0.0 && hit.t < 1.0);
+    } else {
+      misses++;
+    }
+    zr_mesh_crossing two[2];
+    int got = zr__mesh_crossings(m, ray.origin, ray.dir, 0.0, 1.0, two);
+    assert_int_equal(got, n_in < 2 ? (int)n_in : 2);
+    for (int i = 0; i < got; i++)
+      assert_true(two[i].t == in[i]);
+  }
+  /* The segments must try both answers for the test to mean anything. */
+  assert_true(hits > 100 && misses > 100);
+}
+
 static void test_mesh_smooth_normals(void **state) {
   fixture *f = *state;
   zr_scene *s = good(f, "smooth_triangle { <0,0,0>, <0,0,-1>, <1,0,0>, "
@@ -263,6 +356,8 @@ int main(void) {
       cmocka_unit_test_setup_teardown(test_mesh_fast_and_grammar_agree,
                                       setup, teardown),
       cmocka_unit_test_setup_teardown(test_mesh_bvh_matches_brute_force,
+                                      setup, teardown),
+      cmocka_unit_test_setup_teardown(test_mesh_any_hit_and_two_nearest,
                                       setup, teardown),
       cmocka_unit_test_setup_teardown(test_mesh_smooth_normals, setup,
                                       teardown),

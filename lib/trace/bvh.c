@@ -15,20 +15,18 @@
  * Primitives with no finite box (planes, inverse objects) cannot be
  * bounded, so they sit in a separate list that every ray tests.  The
  * binary tree is then collapsed into one of four children a node
- * (wide_node below), which the tracer walks: nearest child first,
+ * (zr_wide_node below), which the tracer walks: nearest child first,
  * skipping boxes beyond the nearest crossing found so far, or for
  * shadow rays every leaf met in the tree's left-to-right order.
  */
 #include "trace/bvh.h"
+#include "trace/bvh_wide.h"
 
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
-#ifdef __SSE2__
-#include <emmintrin.h>
-#endif
 
 #include "core/context.h"
 #include "trace/obj_mesh.h"
@@ -38,53 +36,15 @@ enum {
   LEAF_MAX = 4,     /* a node this small is always a leaf */
   DEPTH_MAX = 60,   /* beyond this splits fall back to the median */
   STACK_MAX = 128,
-  WIDTH = 4,        /* children of a wide node */
+  WIDTH = ZR_WIDE_WIDTH,
   /* A wide node pushes at most WIDTH - 1 more entries than it pops, and
      the wide tree is at most as deep as the binary one. */
   WIDE_STACK_MAX = (WIDTH - 1) * STACK_MAX + 1
 };
 
-typedef struct bvh_node {
-  double lo[3], hi[3];
-  uint32_t first; /* leaf: first primitive; inner: right child index */
-  uint32_t count; /* leaf: number of primitives; inner: 0 */
-} bvh_node;
-
-/*
- * A node of the wide tree the tracer walks: up to WIDTH children, each a
- * node of the binary tree the builder made, found by opening the binary
- * children with the largest surface area until WIDTH are reached (the
- * collapse of Wald, Benthin and Boulos, "Getting rid of packets", 2008),
- * kept in the binary tree's left-to-right order.  The boxes are stored
- * one axis and one side at a time for the four children (structure of
- * arrays), in single precision rounded outward (each float box holds
- * the double one), so a node is two cache lines and the slab test of
- * all four children is one loop over four float lanes, which GCC makes
- * one SSE instruction an operation (x86-64's baseline: no dispatch, and
- * the same arithmetic on any machine, -std=c11 keeping
- * -ffp-contract=off).  The test is made conservative by a margin (see
- * slab_ray): it may open a box the exact test would skip, never skip
- * one the exact test opens, so the primitives tested, hence the
- * crossings found, are the double test's (test_bvh's
- * float_boxes_never_miss fails without the margin).  With the two fast
- * paths below (plane, normals), bench/peers.sh's sphereflake at 2048^2
- * took 4.94 s of CPU against the double nodes' 6.63 s in one run
- * (bench/results/peers-cpu-2026-12-02-kernel.txt).
- */
-typedef struct wide_node {
-  float lo[3][WIDTH], hi[3][WIDTH];
-  uint32_t child[WIDTH]; /* leaf: first primitive; inner: wide node */
-  /* Leaf: number of primitives (at most 16, build_node's leaves);
-     inner: 0; NO_CHILD: an unused lane. */
-  uint16_t count[WIDTH];
-  float extent; /* the largest magnitude of a coordinate of the boxes */
-} wide_node;
-
-enum { NO_CHILD = UINT16_MAX };
-
 struct zr_bvh {
   size_t n_nodes, n_leaves; /* of the binary tree, for statistics */
-  wide_node *wide; /* the tree the tracer walks; wide[0] is the root */
+  zr_wide_node *wide; /* the tree the tracer walks; wide[0] is the root */
   size_t n_wide;
   const zr_object **prims; /* bounded primitives in leaf order */
   size_t n_prims;
@@ -141,7 +101,7 @@ static double box_area(const box3 *b) {
 
 typedef struct builder {
   build_item *items;
-  bvh_node *nodes;
+  zr_bvh_bin_node *nodes;
   size_t n_nodes, cap_nodes;
   int depth;
 } builder;
@@ -167,7 +127,7 @@ static void sort_by_axis(build_item *items, size_t n, int axis) {
 static zr_status new_node(builder *b, size_t *index) {
   if (b->n_nodes == b->cap_nodes) {
     size_t cap = b->cap_nodes ? b->cap_nodes * 2 : 64;
-    bvh_node *p = realloc(b->nodes, cap * sizeof *p);
+    zr_bvh_bin_node *p = realloc(b->nodes, cap * sizeof *p);
     if (!p)
       return ZR_ENOMEM;
     b->nodes = p;
@@ -373,44 +333,18 @@ static zr_status build_node(builder *b, size_t first, size_t n, int depth,
                     sides_known ? &sides[1] : NULL);
 }
 
-static double node_area(const bvh_node *node) {
+static double node_area(const zr_bvh_bin_node *node) {
   box3 b;
   memcpy(b.lo, node->lo, sizeof b.lo);
   memcpy(b.hi, node->hi, sizeof b.hi);
   return box_area(&b);
 }
 
-/* The float after f (f itself for a NaN or +inf), without a call to
-   nextafterf: the tracer rounds each ray's interval this way. */
-static inline float float_after(float f) {
-  if (f != f || f == INFINITY)
-    return f;
-  if (f == 0.0f)
-    return FLT_TRUE_MIN;
-  uint32_t bits;
-  memcpy(&bits, &f, sizeof bits);
-  bits = f > 0.0f ? bits + 1 : bits - 1;
-  memcpy(&f, &bits, sizeof f);
-  return f;
-}
-
-/* Single precision bounds that still hold the double value (a value
-   beyond the largest float gets an infinity). */
-static inline float round_down(double x) {
-  float f = (float)x;
-  return (double)f > x ? -float_after(-f) : f;
-}
-
-static inline float round_up(double x) {
-  float f = (float)x;
-  return (double)f < x ? float_after(f) : f;
-}
-
 /* The wide node for binary node root and, recursively, those below it;
-   returns its index.  bvh->wide has room for one per binary node. */
-static uint32_t collapse(struct zr_bvh *bvh, const bvh_node *nodes,
-                         uint32_t root) {
-  uint32_t index = (uint32_t)bvh->n_wide++;
+   returns its index in out, of which *n_out are used so far. */
+static uint32_t collapse(zr_wide_node *out, size_t *n_out,
+                         const zr_bvh_bin_node *nodes, uint32_t root) {
+  uint32_t index = (uint32_t)(*n_out)++;
   uint32_t kids[WIDTH];
   uint32_t n = 0;
   if (nodes[root].count > 0) {
@@ -439,36 +373,42 @@ static uint32_t collapse(struct zr_bvh *bvh, const bvh_node *nodes,
       n++;
     }
   }
-  wide_node *w = &bvh->wide[index];
+  zr_wide_node *w = &out[index];
   memset(w, 0, sizeof *w);
   float extent = 0.0f;
   for (uint32_t k = 0; k < WIDTH; k++)
     for (int a = 0; a < 3; a++) {
       if (k >= n) {
-        /* An unused lane: a box no ray meets (slab_entries). */
+        /* An unused lane: a box no ray meets (zr__slab_entries). */
         w->lo[a][k] = w->hi[a][k] = NAN;
         continue;
       }
-      w->lo[a][k] = round_down(nodes[kids[k]].lo[a]);
-      w->hi[a][k] = round_up(nodes[kids[k]].hi[a]);
+      w->lo[a][k] = zr__float_down(nodes[kids[k]].lo[a]);
+      w->hi[a][k] = zr__float_up(nodes[kids[k]].hi[a]);
       extent = fmaxf(extent, fmaxf(fabsf(w->lo[a][k]),
                                    fabsf(w->hi[a][k])));
     }
   w->extent = extent;
   for (uint32_t k = n; k < WIDTH; k++)
-    w->count[k] = NO_CHILD;
+    w->count[k] = ZR_WIDE_NO_CHILD;
   for (uint32_t k = 0; k < n; k++) {
-    const bvh_node *b = &nodes[kids[k]];
+    const zr_bvh_bin_node *b = &nodes[kids[k]];
     if (b->count > 0) {
-      bvh->wide[index].child[k] = b->first;
-      bvh->wide[index].count[k] = (uint16_t)b->count;
+      out[index].child[k] = b->first;
+      out[index].count[k] = (uint16_t)b->count;
     } else {
-      uint32_t c = collapse(bvh, nodes, kids[k]);
-      bvh->wide[index].child[k] = c;
-      bvh->wide[index].count[k] = 0;
+      uint32_t c = collapse(out, n_out, nodes, kids[k]);
+      out[index].child[k] = c;
+      out[index].count[k] = 0;
     }
   }
   return index;
+}
+
+size_t zr__bvh_collapse(const zr_bvh_bin_node *nodes, zr_wide_node *out) {
+  size_t n = 0;
+  collapse(out, &n, nodes, 0);
+  return n;
 }
 
 zr_status zr__bvh_build(zr_scene *scene, zr_context *ctx) {
@@ -532,10 +472,10 @@ zr_status zr__bvh_build(zr_scene *scene, zr_context *ctx) {
       s = ZR_ENOMEM;
       goto fail;
     }
-    collapse(bvh, b.nodes, 0);
+    bvh->n_wide = zr__bvh_collapse(b.nodes, bvh->wide);
     /* About a third of the room is used (a wide node takes up to three
        inner binary nodes): give the rest back. */
-    wide_node *fit = realloc(bvh->wide, bvh->n_wide * sizeof *fit);
+    zr_wide_node *fit = realloc(bvh->wide, bvh->n_wide * sizeof *fit);
     if (fit)
       bvh->wide = fit;
   }
@@ -563,7 +503,7 @@ void zr__bvh_free(struct zr_bvh *bvh) {
   free(bvh);
 }
 
-static bool box_holds(const wide_node *w, uint32_t c, zr_vec3 p) {
+static bool box_holds(const zr_wide_node *w, uint32_t c, zr_vec3 p) {
   return p.x >= w->lo[0][c] && p.x <= w->hi[0][c] && p.y >= w->lo[1][c] &&
          p.y <= w->hi[1][c] && p.z >= w->lo[2][c] && p.z <= w->hi[2][c];
 }
@@ -586,9 +526,9 @@ size_t zr__bvh_point_candidates(const struct zr_bvh *bvh, zr_vec3 p,
   if (bvh->n_wide > 0)
     stack[sp++] = 0;
   while (sp > 0) {
-    const wide_node *w = &bvh->wide[stack[--sp]];
+    const zr_wide_node *w = &bvh->wide[stack[--sp]];
     for (uint32_t c = 0; c < WIDTH; c++) {
-      if (w->count[c] == NO_CHILD || !box_holds(w, c, p))
+      if (w->count[c] == ZR_WIDE_NO_CHILD || !box_holds(w, c, p))
         continue;
       if (w->count[c] > 0) {
         for (uint32_t i = w->child[c]; i < w->child[c] + w->count[c];
@@ -614,99 +554,6 @@ void zr__bvh_get_info(const struct zr_bvh *bvh, zr_bvh_info *info) {
   info->bounded = bvh->n_prims;
   info->unbounded = bvh->n_unbounded;
   info->depth = bvh->depth;
-}
-
-/*
- * The ray in the form the float slab test wants, and that test's margin.
- * The exact distances along axis a are (box - org) / dir; the test
- * computes them from org and 1 / dir in float, the box's coordinates
- * being floats already (that hold the double boxes).  Rounding org moves
- * t by at most u |org| |inv| (u = 2^-24, float's unit roundoff); the
- * subtraction, the product and 1 / dir (d rounded to float, then the
- * division) by at most about 4u |t|, and |t| <= (|box| + |org|) |inv|.
- * So every distance is within 5u (E + |org|) |inv| of the exact one, E
- * the node's largest coordinate magnitude (wide_node.extent), and
- * entries lowered and exits raised by 2^-19 (E + |org|) |inv| (32u,
- * leaving room for the rounding of the margin's own arithmetic) give a
- * test that never misses a box the exact test meets.  A direction
- * component of 0 or nearly so gets +-1e30 for 1 / dir, which keeps the
- * products finite (no 0 * inf = NaN) and makes the margin so wide that
- * the axis limits nothing within any distance a scene has.
- */
-typedef struct slab_ray {
-  float org[3], inv[3];
-  float org_pad[3]; /* 2^-19 |org| |inv| */
-  float ext_pad[3]; /* 2^-19 |inv|, times a node's extent */
-} slab_ray;
-
-static inline void make_slab_ray(const zr_ray *ray, slab_ray *s) {
-  double o[3] = {ray->origin.x, ray->origin.y, ray->origin.z};
-  double d[3] = {ray->dir.x, ray->dir.y, ray->dir.z};
-  for (int a = 0; a < 3; a++) {
-    float df = (float)d[a];
-    float inv = fabsf(df) > 1e-30f ? 1.0f / df : copysignf(1e30f, df);
-    s->org[a] = (float)o[a];
-    s->inv[a] = inv;
-    double scale = 0x1p-19 * fabs((double)inv);
-    s->org_pad[a] = (float)(scale * fabs(o[a]));
-    s->ext_pad[a] = (float)scale;
-  }
-}
-
-/* SSE's minps and maxps, lane by lane: the second operand when the
-   comparison fails (a NaN included), so the plain C path below gives
-   the SSE path's floats, bit for bit. */
-static inline float min_lane(float a, float b) { return a < b ? a : b; }
-static inline float max_lane(float a, float b) { return a > b ? a : b; }
-
-/*
- * Which of w's children the ray meets within (tmin, tmax): bit c of the
- * result for child c, with the entry distance, lowered by the margin, in
- * t[c].  An unused lane's box is NaN, and the maxima and minima take the
- * NaN (it is their second operand), so the lane never passes.  This is
- * the tracer's innermost loop: with SSE (every x86-64) the four
- * children are one instruction an operation; elsewhere the same
- * operations run a lane at a time.
- */
-static inline unsigned slab_entries(const wide_node *w, const slab_ray *r,
-                                    float tmin, float tmax,
-                                    float t[WIDTH]) {
-#ifdef __SSE2__
-  __m128 t0 = _mm_set1_ps(tmin), t1 = _mm_set1_ps(tmax);
-  for (int a = 0; a < 3; a++) {
-    __m128 org = _mm_set1_ps(r->org[a]), inv = _mm_set1_ps(r->inv[a]);
-    __m128 pad = _mm_set1_ps(r->org_pad[a] + r->ext_pad[a] * w->extent);
-    __m128 ta = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(w->lo[a]), org), inv);
-    __m128 tb = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(w->hi[a]), org), inv);
-    __m128 near = _mm_sub_ps(_mm_min_ps(ta, tb), pad);
-    __m128 far = _mm_add_ps(_mm_max_ps(ta, tb), pad);
-    t0 = _mm_max_ps(t0, near);
-    t1 = _mm_min_ps(t1, far);
-  }
-  _mm_storeu_ps(t, t0);
-  return (unsigned)_mm_movemask_ps(_mm_cmple_ps(t0, t1));
-#else
-  float t1[WIDTH];
-  for (int c = 0; c < WIDTH; c++) {
-    t[c] = tmin;
-    t1[c] = tmax;
-  }
-  for (int a = 0; a < 3; a++) {
-    float pad = r->org_pad[a] + r->ext_pad[a] * w->extent;
-    for (int c = 0; c < WIDTH; c++) {
-      float ta = (w->lo[a][c] - r->org[a]) * r->inv[a];
-      float tb = (w->hi[a][c] - r->org[a]) * r->inv[a];
-      float near = min_lane(ta, tb) - pad;
-      float far = max_lane(ta, tb) + pad;
-      t[c] = max_lane(t[c], near);
-      t1[c] = min_lane(t1[c], far);
-    }
-  }
-  unsigned mask = 0;
-  for (int c = 0; c < WIDTH; c++)
-    mask |= (unsigned)(t[c] <= t1[c]) << c;
-  return mask;
-#endif
 }
 
 /* A child waiting on the stack: a wide node (count 0) or a leaf's run of
@@ -807,11 +654,11 @@ static bool nearest_t(const struct zr_bvh *bvh, const zr_ray *ray,
     }
   if (bvh->n_wide == 0)
     return found;
-  slab_ray sr;
-  make_slab_ray(ray, &sr);
+  zr_slab_ray sr;
+  zr__make_slab_ray(ray, &sr);
   /* The interval in floats that hold it: tmax_f follows tmax. */
-  const float tmin_f = round_down(tmin);
-  float tmax_f = round_up(tmax);
+  const float tmin_f = zr__float_down(tmin);
+  float tmax_f = zr__float_up(tmax);
   /* Children beyond a crossing found meanwhile are skipped unopened. */
   wide_entry stack[WIDE_STACK_MAX];
   int sp = 0;
@@ -825,14 +672,14 @@ static bool nearest_t(const struct zr_bvh *bvh, const zr_ray *ray,
         if (first_crossing_t(bvh->prims[i], ray, tmin, tmax, h) > 0) {
           *hit = h[0];
           tmax = h[0].t;
-          tmax_f = round_up(tmax);
+          tmax_f = zr__float_up(tmax);
           found = true;
         }
       continue;
     }
-    const wide_node *w = &bvh->wide[e.child];
+    const zr_wide_node *w = &bvh->wide[e.child];
     float t[WIDTH];
-    unsigned mask = slab_entries(w, &sr, tmin_f, tmax_f, t);
+    unsigned mask = zr__slab_entries(w, &sr, tmin_f, tmax_f, t);
     /* The children met, nearest first (ties keep the tree's order), are
        pushed farthest first so the nearest is searched first and
        shrinks tmax for the others. */
@@ -907,8 +754,25 @@ bool zr__bvh_nearest(const struct zr_bvh *bvh, const zr_ray *ray,
   return true;
 }
 
+/* A leaf primitive's crossings for zr__bvh_all_blocked: one, any, of a
+   mesh that blocks the walk. */
+static inline int walk_crossings_t(const zr_object *o, const zr_ray *ray,
+                                   double tmin, double tmax,
+                                   zr_blocks_fn blocks, void *user,
+                                   zr_hit hits[ZR_MAX_CROSSINGS]) {
+  if (blocks && o->kind == ZR_OBJ_MESH && !o->clip && blocks(o, user))
+    return zr__mesh_any_t(o, ray, tmin, tmax, hits);
+  return crossings_t(o, ray, tmin, tmax, hits);
+}
+
 bool zr__bvh_all(const struct zr_bvh *bvh, const zr_ray *ray, double tmin,
                  double tmax, zr_crossing_fn visit, void *user) {
+  return zr__bvh_all_blocked(bvh, ray, tmin, tmax, visit, NULL, user);
+}
+
+bool zr__bvh_all_blocked(const struct zr_bvh *bvh, const zr_ray *ray,
+                         double tmin, double tmax, zr_crossing_fn visit,
+                         zr_blocks_fn blocks, void *user) {
   if (!bvh)
     return true;
   zr_hit h[ZR_MAX_CROSSINGS];
@@ -920,9 +784,9 @@ bool zr__bvh_all(const struct zr_bvh *bvh, const zr_ray *ray, double tmin,
   }
   if (bvh->n_wide == 0)
     return true;
-  slab_ray sr;
-  make_slab_ray(ray, &sr);
-  const float tmin_f = round_down(tmin), tmax_f = round_up(tmax);
+  zr_slab_ray sr;
+  zr__make_slab_ray(ray, &sr);
+  const float tmin_f = zr__float_down(tmin), tmax_f = zr__float_up(tmax);
   /* Leaves are visited in the tree's left-to-right order: children are
      pushed last to first. */
   wide_entry stack[WIDE_STACK_MAX];
@@ -932,16 +796,17 @@ bool zr__bvh_all(const struct zr_bvh *bvh, const zr_ray *ray, double tmin,
     wide_entry e = stack[--sp];
     if (e.count > 0) {
       for (uint32_t i = e.child; i < e.child + e.count; i++) {
-        int n = crossings_t(bvh->prims[i], ray, tmin, tmax, h);
+        int n = walk_crossings_t(bvh->prims[i], ray, tmin, tmax, blocks,
+                                 user, h);
         for (int k = 0; k < n; k++)
           if (!visit(&h[k], user))
             return false;
       }
       continue;
     }
-    const wide_node *w = &bvh->wide[e.child];
+    const zr_wide_node *w = &bvh->wide[e.child];
     float t[WIDTH];
-    unsigned mask = slab_entries(w, &sr, tmin_f, tmax_f, t);
+    unsigned mask = zr__slab_entries(w, &sr, tmin_f, tmax_f, t);
     for (int c = WIDTH - 1; c >= 0 && sp < WIDE_STACK_MAX; c--)
       if (mask >> c & 1)
         stack[sp++] = (wide_entry){w->child[c], w->count[c], t[c]};

@@ -38,6 +38,19 @@ bool zr__bvh_all(const struct zr_bvh *bvh, const zr_ray *ray, double tmin,
                  double tmax, zr_crossing_fn visit, void *user);
 
 /*
+ * zr__bvh_all for a walk that stops at the first crossing of some
+ * objects, those for which blocks(object, user) is true: a mesh such as
+ * that reports one crossing, the first its hierarchy meets rather than
+ * its nearest two, found without searching the rest of its triangles
+ * (an any-hit test; shadow rays through an opaque mesh).  visit must
+ * return false for that crossing, as it would for any other.
+ */
+typedef bool (*zr_blocks_fn)(const zr_object *object, void *user);
+bool zr__bvh_all_blocked(const struct zr_bvh *bvh, const zr_ray *ray,
+                         double tmin, double tmax, zr_crossing_fn visit,
+                         zr_blocks_fn blocks, void *user);
+
+/*
  * The positions in scene->primitives of the primitives whose box holds
  * p, and of every unbounded one, ascending: the only ones that can hold
  * p inside (zr__inside), found in O(log n) rather than by asking all n.

@@ -4,7 +4,7 @@ lib_libzrcube_la_SOURCES += \
 	lib/trace/bounds.c \
 	lib/trace/bounds_csg.c \
 	lib/trace/prepare.c lib/trace/prepare.h \
-	lib/trace/bvh.c lib/trace/bvh.h \
+	lib/trace/bvh.c lib/trace/bvh.h lib/trace/bvh_wide.h \
 	lib/trace/csg.c \
 	lib/trace/obj_quadric.c lib/trace/obj_quadric.h \
 	lib/trace/obj_poly.c lib/trace/obj_poly.h \

@@ -13,13 +13,17 @@
  * The inner hierarchy is built top down with the binned surface area
  * heuristic (Wald, "On fast Construction of SAH-based Bounding Volume
  * Hierarchies", 2007) with lib/trace/bvh.c's sweep (zr__sah_sweep), but
- * over the faces' own boxes, partitioned in place, and with
- * single-precision node boxes rounded outward, which halves the
- * nodes' size for the million-triangle meshes it exists for.  The faces
- * are then put in leaf order, so a leaf is a run of consecutive rows and
- * needs no index table.  Triangles are tested in double precision
- * (Moller and Trumbore, "Fast, minimum storage ray/triangle
- * intersection", 1997).
+ * over the faces' own boxes (single precision, rounded outward),
+ * partitioned in place.  The binary tree is then collapsed four wide
+ * into the nodes the scene's hierarchy uses (lib/trace/bvh_wide.h: one
+ * SSE slab test for four children), which took the terrain of
+ * bench/peers.sh from 6.80 to 5.42 CPU seconds of render at 2048^2
+ * (bench/results/peers-cpu-2026-12-02-s5.txt).  The faces are put in
+ * leaf order, so a leaf is a run of consecutive rows and needs no index
+ * table.  Triangles are tested in double precision (Moller and
+ * Trumbore, "Fast, minimum storage ray/triangle intersection", 1997).
+ * A shadow ray through a mesh that stops light wherever it is crossed
+ * takes the first crossing met (zr__mesh_any_t), not the nearest.
  *
  * A smooth triangle's shading normal is its corner normals weighted by
  * the barycentric coordinates of the hit (Phong interpolation, as the
@@ -31,6 +35,7 @@
 #include "trace/obj_mesh.h"
 
 #include "trace/bvh.h"
+#include "trace/bvh_wide.h"
 #include "trace/embree.h"
 #include "trace/intersect.h"
 #include "trace/prepare.h"
@@ -48,10 +53,10 @@ enum {
   STACK_MAX = 96
 };
 
+/* The mesh's hierarchy as the tracer walks it: four-wide nodes
+   (lib/trace/bvh_wide.h), collapsed from the binary tree built here. */
 struct zr_mesh_node {
-  float lo[3], hi[3];
-  uint32_t first; /* leaf: first face; inner: right child index */
-  uint32_t count; /* leaf: number of faces; inner: 0 */
+  zr_wide_node wide;
 };
 
 /* A face's box and centre while building.  The boxes themselves are
@@ -64,7 +69,7 @@ typedef struct face_box {
 
 typedef struct builder {
   face_box *boxes;
-  zr_mesh_node *nodes;
+  zr_bvh_bin_node *nodes;
   size_t n_nodes, cap_nodes;
 } builder;
 
@@ -216,7 +221,7 @@ static size_t split(face_box *boxes, size_t n, const fbox *bounds,
 static zr_status new_node(builder *b, size_t *index) {
   if (b->n_nodes == b->cap_nodes) {
     size_t cap = b->cap_nodes ? b->cap_nodes * 2 : 64;
-    zr_mesh_node *p = realloc(b->nodes, cap * sizeof *p);
+    zr_bvh_bin_node *p = realloc(b->nodes, cap * sizeof *p);
     if (!p)
       return ZR_ENOMEM;
     b->nodes = p;
@@ -234,8 +239,10 @@ static zr_status build_node(builder *b, size_t first, size_t n, int depth,
   zr_status s = new_node(b, &index);
   if (s != ZR_OK)
     return s;
-  memcpy(b->nodes[index].lo, bounds->lo, sizeof bounds->lo);
-  memcpy(b->nodes[index].hi, bounds->hi, sizeof bounds->hi);
+  for (int a = 0; a < 3; a++) {
+    b->nodes[index].lo[a] = bounds->lo[a];
+    b->nodes[index].hi[a] = bounds->hi[a];
+  }
   size_t left = 0;
   sides out;
   if (n > LEAF_MAX)
@@ -314,6 +321,7 @@ zr_status zr__mesh_build(struct zr_mesh *mesh, zr_arena *arena,
   face_box *boxes = malloc(n * sizeof *boxes);
   uint32_t *order = malloc(n * sizeof *order);
   builder b = {boxes, NULL, 0, 0};
+  zr_wide_node *wide = NULL;
   zr_status s = ZR_ENOMEM;
   if (!boxes || !order)
     goto done;
@@ -355,8 +363,15 @@ zr_status zr__mesh_build(struct zr_mesh *mesh, zr_arena *arena,
       (s = permute(mesh->face_textures, sizeof *mesh->face_textures, order,
                    n)) != ZR_OK)
     goto done;
-  mesh->nodes = zr__arena_memdup(arena, b.nodes,
-                                 b.n_nodes * sizeof *b.nodes);
+  /* The binary tree collapsed four wide: each wide node stands for one
+     to three of its inner nodes, so b.n_nodes of them are room enough. */
+  wide = malloc(b.n_nodes * sizeof *wide);
+  if (!wide) {
+    s = ZR_ENOMEM;
+    goto done;
+  }
+  size_t n_wide = zr__bvh_collapse(b.nodes, wide);
+  mesh->nodes = zr__arena_memdup(arena, wide, n_wide * sizeof *wide);
   mesh->face_row = zr__arena_alloc(arena, n * sizeof *mesh->face_row);
   if (!mesh->nodes || !mesh->face_row) {
     s = ZR_ENOMEM;
@@ -364,8 +379,9 @@ zr_status zr__mesh_build(struct zr_mesh *mesh, zr_arena *arena,
   }
   for (size_t i = 0; i < n; i++)
     mesh->face_row[order[i]] = (uint32_t)i;
-  mesh->n_nodes = b.n_nodes;
+  mesh->n_nodes = n_wide;
 done:
+  free(wide);
   free(b.nodes);
   free(order);
   free(boxes);
@@ -373,32 +389,6 @@ done:
 }
 
 /* ---- tracing ---- */
-
-typedef struct slab_ray {
-  double org[3], inv[3];
-} slab_ray;
-
-/* The entry distance of the ray into a node's box within [t0, t1], or
-   INFINITY when it misses. */
-static double node_entry(const zr_mesh_node *node, const slab_ray *r,
-                         double t0, double t1) {
-  for (int a = 0; a < 3; a++) {
-    double ta = (node->lo[a] - r->org[a]) * r->inv[a];
-    double tb = (node->hi[a] - r->org[a]) * r->inv[a];
-    if (ta > tb) {
-      double t = ta;
-      ta = tb;
-      tb = t;
-    }
-    /* 0 * inf (a ray in a slab's plane) is NaN: such a slab does not
-       limit the interval. */
-    if (ta > t0)
-      t0 = ta;
-    if (tb < t1)
-      t1 = tb;
-  }
-  return t0 <= t1 ? t0 : INFINITY;
-}
 
 /* Moller-Trumbore's start for face f: its edges from p0, dir x e2 and
    the reciprocal determinant; false when the ray runs parallel to the
@@ -458,14 +448,24 @@ bool zr__mesh_face_plane(const struct zr_mesh *m, size_t f, zr_vec3 org,
   return true;
 }
 
-static void make_slab(zr_vec3 org, zr_vec3 dir, slab_ray *r) {
-  r->org[0] = org.x;
-  r->org[1] = org.y;
-  r->org[2] = org.z;
-  r->inv[0] = 1.0 / dir.x;
-  r->inv[1] = 1.0 / dir.y;
-  r->inv[2] = 1.0 / dir.z;
+/* The slab test's form of the line org + t dir (lib/trace/bvh_wide.h). */
+static void make_slab(zr_vec3 org, zr_vec3 dir, zr_slab_ray *r) {
+  zr_ray ray = {org, dir};
+  zr__make_slab_ray(&ray, r);
 }
+
+/* A child waiting on a traversal's stack: a wide node (count 0) or a
+   leaf's run of faces, with the distance at which the line enters its
+   box (lowered by the slab test's margin). */
+typedef struct mesh_entry {
+  uint32_t child, count;
+  float t;
+} mesh_entry;
+
+/* The four-wide tree's depth is at most the binary tree's (build_node:
+   DEPTH_MAX levels of splits, then halvings of at most 2^32 faces), and
+   each node pushes at most three more entries than it pops. */
+enum { WIDE_STACK_MAX = 3 * STACK_MAX + 1 };
 
 /* A crossing found during traversal, before its normal is made. */
 typedef zr_mesh_raw_hit raw_hit;
@@ -526,21 +526,24 @@ int zr__mesh_crossings(const struct zr_mesh *m, zr_vec3 org, zr_vec3 dir,
     if (n >= 0)
       return n;
   }
-  slab_ray sr;
+  zr_slab_ray sr;
   make_slab(org, dir, &sr);
   raw_hit best[2];
   int n = 0;
   /* With two crossings kept, nodes beyond the second are skipped. */
   double limit = tmax;
-  uint32_t stack[STACK_MAX];
+  const float tmin_f = zr__float_down(tmin);
+  float limit_f = zr__float_up(limit);
+  /* Leaves are searched in the tree's left-to-right order. */
+  mesh_entry stack[WIDE_STACK_MAX];
   int sp = 0;
-  stack[sp++] = 0;
+  stack[sp++] = (mesh_entry){0, 0, tmin_f};
   while (sp > 0) {
-    const zr_mesh_node *node = &m->nodes[stack[--sp]];
-    if (node_entry(node, &sr, tmin, limit) == INFINITY)
+    mesh_entry e = stack[--sp];
+    if (e.t > limit)
       continue;
-    if (node->count > 0) {
-      for (uint32_t f = node->first; f < node->first + node->count; f++) {
+    if (e.count > 0) {
+      for (uint32_t f = e.child; f < e.child + e.count; f++) {
         raw_hit h;
         if (!face_hit(m, f, org, dir, &h.t, &h.u, &h.v) ||
             !(h.t > tmin && h.t < limit))
@@ -556,15 +559,19 @@ int zr__mesh_crossings(const struct zr_mesh *m, zr_vec3 org, zr_vec3 dir,
           best[0] = best[1];
           best[1] = t;
         }
-        if (n == 2)
+        if (n == 2) {
           limit = best[1].t;
+          limit_f = zr__float_up(limit);
+        }
       }
       continue;
     }
-    if (sp + 2 <= STACK_MAX) {
-      stack[sp++] = node->first;
-      stack[sp++] = (uint32_t)(node - m->nodes) + 1;
-    }
+    const zr_wide_node *w = &m->nodes[e.child].wide;
+    float t[ZR_WIDE_WIDTH];
+    unsigned mask = zr__slab_entries(w, &sr, tmin_f, limit_f, t);
+    for (int c = ZR_WIDE_WIDTH - 1; c >= 0 && sp < WIDE_STACK_MAX; c--)
+      if (mask >> c & 1)
+        stack[sp++] = (mesh_entry){w->child[c], w->count[c], t[c]};
   }
   for (int i = 0; i < n; i++)
     out[i] = finish_hit(m, &best[i]);
@@ -592,26 +599,22 @@ int zr__mesh_nearest(const struct zr_mesh *m, zr_vec3 org, zr_vec3 dir,
     if (n >= 0)
       return n;
   }
-  slab_ray sr;
+  zr_slab_ray sr;
   make_slab(org, dir, &sr);
   raw_hit best;
   bool found = false;
   double limit = tmax;
-  struct {
-    uint32_t node;
-    double entry;
-  } stack[STACK_MAX];
+  const float tmin_f = zr__float_down(tmin);
+  float limit_f = zr__float_up(limit);
+  mesh_entry stack[WIDE_STACK_MAX];
   int sp = 0;
-  double root = node_entry(&m->nodes[0], &sr, tmin, limit);
-  if (root != INFINITY)
-    stack[sp++].node = 0, stack[0].entry = root;
+  stack[sp++] = (mesh_entry){0, 0, tmin_f};
   while (sp > 0) {
-    sp--;
-    if (stack[sp].entry > limit)
+    mesh_entry e = stack[--sp];
+    if (e.t > limit)
       continue;
-    const zr_mesh_node *node = &m->nodes[stack[sp].node];
-    if (node->count > 0) {
-      for (uint32_t f = node->first; f < node->first + node->count; f++) {
+    if (e.count > 0) {
+      for (uint32_t f = e.child; f < e.child + e.count; f++) {
         raw_hit h;
         if (!face_hit(m, f, org, dir, &h.t, &h.u, &h.v) ||
             !(h.t > tmin && h.t < tmax))
@@ -621,23 +624,32 @@ int zr__mesh_nearest(const struct zr_mesh *m, zr_vec3 org, zr_vec3 dir,
           best = h;
           found = true;
           limit = h.t;
+          limit_f = zr__float_up(limit);
         }
       }
       continue;
     }
-    uint32_t kids[2] = {(uint32_t)(node - m->nodes) + 1, node->first};
-    double e[2];
-    for (int k = 0; k < 2; k++)
-      e[k] = node_entry(&m->nodes[kids[k]], &sr, tmin, limit);
-    /* The farther child goes on the stack first, to be opened last. */
-    int near = e[1] < e[0];
-    for (int k = 0; k < 2; k++) {
-      int c = k == 0 ? 1 - near : near;
-      if (e[c] != INFINITY && sp < STACK_MAX) {
-        stack[sp].node = kids[c];
-        stack[sp++].entry = e[c];
+    const zr_wide_node *w = &m->nodes[e.child].wide;
+    float t[ZR_WIDE_WIDTH];
+    unsigned mask = zr__slab_entries(w, &sr, tmin_f, limit_f, t);
+    /* The children met, nearest first (ties keep the tree's order), are
+       pushed farthest first, so the nearest is searched first and
+       lowers the limit for the others. */
+    mesh_entry met[ZR_WIDE_WIDTH];
+    int n = 0;
+    for (uint32_t c = 0; c < ZR_WIDE_WIDTH; c++) {
+      if (!(mask >> c & 1))
+        continue;
+      mesh_entry x = {w->child[c], w->count[c], t[c]};
+      int k = n++;
+      while (k > 0 && met[k - 1].t > x.t) {
+        met[k] = met[k - 1];
+        k--;
       }
+      met[k] = x;
     }
+    for (int k = n - 1; k >= 0 && sp < WIDE_STACK_MAX; k--)
+      stack[sp++] = met[k];
   }
   if (found)
     *out = finish_hit(m, &best);
@@ -664,32 +676,89 @@ int zr__mesh_nearest_t(const zr_object *o, const zr_ray *ray, double tmin,
   return 1;
 }
 
+/* The first crossing the hierarchy meets, in its left-to-right order. */
+static bool mesh_any(const struct zr_mesh *m, zr_vec3 org, zr_vec3 dir,
+                     double tmin, double tmax, raw_hit *out) {
+  if (m->n_nodes == 0)
+    return false;
+  if (m->accel) {
+    int n = zr__embree_nearest(m, org, dir, tmin, tmax, out);
+    if (n >= 0)
+      return n > 0;
+  }
+  zr_slab_ray sr;
+  make_slab(org, dir, &sr);
+  const float tmin_f = zr__float_down(tmin), tmax_f = zr__float_up(tmax);
+  mesh_entry stack[WIDE_STACK_MAX];
+  int sp = 0;
+  stack[sp++] = (mesh_entry){0, 0, tmin_f};
+  while (sp > 0) {
+    mesh_entry e = stack[--sp];
+    if (e.count > 0) {
+      for (uint32_t f = e.child; f < e.child + e.count; f++)
+        if (face_hit(m, f, org, dir, &out->t, &out->u, &out->v) &&
+            out->t > tmin && out->t < tmax) {
+          out->face = f;
+          return true;
+        }
+      continue;
+    }
+    const zr_wide_node *w = &m->nodes[e.child].wide;
+    float t[ZR_WIDE_WIDTH];
+    unsigned mask = zr__slab_entries(w, &sr, tmin_f, tmax_f, t);
+    for (int c = ZR_WIDE_WIDTH - 1; c >= 0 && sp < WIDE_STACK_MAX; c--)
+      if (mask >> c & 1)
+        stack[sp++] = (mesh_entry){w->child[c], w->count[c], t[c]};
+  }
+  return false;
+}
+
+int zr__mesh_any_t(const zr_object *o, const zr_ray *ray, double tmin,
+                   double tmax, zr_hit *hit) {
+  zr_vec3 org = ray->origin, dir = ray->dir;
+  if (o->transform) {
+    org = zr__xform_point(o->transform->inv, org);
+    dir = zr__xform_dir(o->transform->inv, dir);
+  }
+  const struct zr_mesh *m = o->u.mesh.data;
+  raw_hit h;
+  if (!mesh_any(m, org, dir, tmin, tmax, &h))
+    return 0;
+  zr_mesh_crossing c = finish_hit(m, &h);
+  hit->t = c.t;
+  hit->normal = zr_v3(0, 0, 0);
+  hit->object = zr__mesh_hit_object(o, c.texture);
+  hit->u = c.u;
+  hit->v = c.v;
+  return 1;
+}
+
 bool zr__mesh_inside(const struct zr_mesh *m, zr_vec3 p) {
   if (!m->has_inside || m->n_nodes == 0)
     return false;
   zr_vec3 dir = m->inside_vector;
-  slab_ray sr;
+  zr_slab_ray sr;
   make_slab(p, dir, &sr);
   size_t crossings = 0;
-  uint32_t stack[STACK_MAX];
+  mesh_entry stack[WIDE_STACK_MAX];
   int sp = 0;
-  stack[sp++] = 0;
+  stack[sp++] = (mesh_entry){0, 0, 0.0f};
   while (sp > 0) {
-    const zr_mesh_node *node = &m->nodes[stack[--sp]];
-    if (node_entry(node, &sr, 0.0, INFINITY) == INFINITY)
-      continue;
-    if (node->count > 0) {
-      for (uint32_t f = node->first; f < node->first + node->count; f++) {
+    mesh_entry e = stack[--sp];
+    if (e.count > 0) {
+      for (uint32_t f = e.child; f < e.child + e.count; f++) {
         double t, u, v;
         if (face_hit(m, f, p, dir, &t, &u, &v) && t > 0.0)
           crossings++;
       }
       continue;
     }
-    if (sp + 2 <= STACK_MAX) {
-      stack[sp++] = node->first;
-      stack[sp++] = (uint32_t)(node - m->nodes) + 1;
-    }
+    const zr_wide_node *w = &m->nodes[e.child].wide;
+    float t[ZR_WIDE_WIDTH];
+    unsigned mask = zr__slab_entries(w, &sr, 0.0f, INFINITY, t);
+    for (int c = ZR_WIDE_WIDTH - 1; c >= 0 && sp < WIDE_STACK_MAX; c--)
+      if (mask >> c & 1)
+        stack[sp++] = (mesh_entry){w->child[c], w->count[c], t[c]};
   }
   return crossings % 2 == 1;
 }

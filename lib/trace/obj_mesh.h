@@ -58,6 +58,12 @@ struct zr_hit;
 int zr__mesh_nearest_t(const zr_object *o, const struct zr_ray *ray,
                        double tmin, double tmax, struct zr_hit *hit);
 
+/* Any one crossing of a mesh object without clipped_by with
+   tmin < t < tmax, the first its hierarchy meets (not the nearest), as
+   zr__mesh_nearest_t reports one; 0 when there is none. */
+int zr__mesh_any_t(const zr_object *o, const struct zr_ray *ray,
+                   double tmin, double tmax, struct zr_hit *hit);
+
 /* Whether p (mesh coordinates) is inside: an odd number of crossings
    along the inside vector.  False when the mesh has no inside_vector. */
 bool zr__mesh_inside(const struct zr_mesh *mesh, zr_vec3 p);

@@ -66,6 +66,7 @@
 #include <string.h>
 
 #include "scene/pattern.h"
+#include "scene/shapes.h"
 #include "scene/texture.h"
 #include "trace/atmosphere.h"
 #include "trace/bvh.h"
@@ -259,6 +260,30 @@ static bool shadow_visit(const zr_hit *hit, void *user) {
   return false;
 }
 
+/* Whether any crossing of o ends a shadow walk in shadow_visit: o
+   casts shadows and is one solid colour that lets no light through
+   (see_through gives 0, whatever the point). */
+static bool stops_light(const zr_object *o) {
+  const zr_texture *tx = o->texture;
+  if (o->no_shadow || !tx || tx->over || tx->map || !tx->pigment)
+    return false;
+  const zr_pigment *pg = tx->pigment;
+  return pg->kind == ZR_PIGMENT_SOLID && pg->colour.f == 0.0 &&
+         pg->colour.t == 0.0;
+}
+
+/* zr__bvh_all_blocked's question for a mesh: whether every object its
+   crossings report (one per texture of its texture list) stops the
+   walk, so that one crossing, any one, decides the shadow. */
+static bool mesh_stops_light(const zr_object *o, void *user) {
+  (void)user;
+  if (o->u.mesh.textured)
+    for (size_t k = 0; k < o->u.mesh.data->n_textures; k++)
+      if (!stops_light(&o->u.mesh.textured[k]))
+        return false;
+  return stops_light(o);
+}
+
 /* Whether trying o before the walk costs little: a shape of one closed
    form (a whole CSG object is kept too, see below).  A mesh costs as
    much as the walk it would save, and an unshadowed ray pays both
@@ -332,8 +357,8 @@ zr_rgb zr__shadow_transmission(const zr_tracer *tracer,
      give or take rounding speckled every wall and banded the back one;
      povray shows neither, so the last millionth of the way is left
      out. */
-  if (!zr__bvh_all(tracer->scene->bvh, &ray, 0.0, tmax, shadow_visit,
-                   &w)) {
+  if (!zr__bvh_all_blocked(tracer->scene->bvh, &ray, 0.0, tmax,
+                           shadow_visit, mesh_stops_light, &w)) {
     /* A part of a CSG object is never tried alone: the CSG's rules may
        remove the part's surface there (lib/trace/csg.c).  The whole
        object is kept instead, as povray's shadow cache does: an area

@@ -1,0 +1,197 @@
+/*
+ * bvh_wide.h - the four-wide nodes both of the tracer's hierarchies
+ * walk: the scene's (bvh.c, over primitives) and each mesh's
+ * (obj_mesh.c, over triangles).  Each builds a binary tree with the
+ * binned surface area heuristic, then zr__bvh_collapse makes it four
+ * wide; the slab test of a node's four children is zr__slab_entries.
+ * Only lib/trace includes this.
+ */
+#ifndef ZR_TRACE_BVH_WIDE_H
+#define ZR_TRACE_BVH_WIDE_H
+
+#include <float.h>
+#include <math.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
+
+#include "trace/intersect.h"
+
+enum {
+  ZR_WIDE_WIDTH = 4, /* children of a wide node */
+  ZR_WIDE_NO_CHILD = UINT16_MAX
+};
+
+/* A node of a binary tree as the builders make it, in one array in
+   depth-first order: an inner node's left child follows it. */
+typedef struct zr_bvh_bin_node {
+  double lo[3], hi[3];
+  uint32_t first; /* leaf: first primitive; inner: right child index */
+  uint32_t count; /* leaf: number of primitives; inner: 0 */
+} zr_bvh_bin_node;
+
+/*
+ * A node of the wide tree the tracer walks: up to ZR_WIDE_WIDTH children, each a
+ * node of the binary tree the builder made, found by opening the binary
+ * children with the largest surface area until ZR_WIDE_WIDTH are reached (the
+ * collapse of Wald, Benthin and Boulos, "Getting rid of packets", 2008),
+ * kept in the binary tree's left-to-right order.  The boxes are stored
+ * one axis and one side at a time for the four children (structure of
+ * arrays), in single precision rounded outward (each float box holds
+ * the double one), so a node is two cache lines and the slab test of
+ * all four children is one loop over four float lanes, which GCC makes
+ * one SSE instruction an operation (x86-64's baseline: no dispatch, and
+ * the same arithmetic on any machine, -std=c11 keeping
+ * -ffp-contract=off).  The test is made conservative by a margin (see
+ * zr_slab_ray): it may open a box the exact test would skip, never skip
+ * one the exact test opens, so the primitives tested, hence the
+ * crossings found, are the double test's (test_bvh's
+ * float_boxes_never_miss fails without the margin).  With the two fast
+ * paths of bvh.c (plane, normals), bench/peers.sh's sphereflake at 2048^2
+ * took 4.94 s of CPU against the double nodes' 6.63 s in one run
+ * (bench/results/peers-cpu-2026-12-02-kernel.txt).
+ */
+typedef struct zr_wide_node {
+  float lo[3][ZR_WIDE_WIDTH], hi[3][ZR_WIDE_WIDTH];
+  uint32_t child[ZR_WIDE_WIDTH]; /* leaf: first primitive; inner: wide node */
+  /* Leaf: number of primitives (at most 16 in the scene's tree, 8 in
+     a mesh's: their builders' leaves);
+     inner: 0; ZR_WIDE_NO_CHILD: an unused lane. */
+  uint16_t count[ZR_WIDE_WIDTH];
+  float extent; /* the largest magnitude of a coordinate of the boxes */
+} zr_wide_node;
+
+
+
+/*
+ * Collapses the binary tree nodes[] (nodes[0] its root) into wide nodes
+ * written to out, which has room for one per binary node; returns how
+ * many were written (out[0] is the root).  A leaf's count must be at
+ * most UINT16_MAX - 1.  Children keep the binary tree's left-to-right
+ * order, so the leaves do too.
+ */
+size_t zr__bvh_collapse(const zr_bvh_bin_node *nodes, zr_wide_node *out);
+
+/* The float after f (f itself for a NaN or +inf), without a call to
+   nextafterf: the tracer rounds each ray's interval this way. */
+static inline float zr__float_after(float f) {
+  if (f != f || f == INFINITY)
+    return f;
+  if (f == 0.0f)
+    return FLT_TRUE_MIN;
+  uint32_t bits;
+  memcpy(&bits, &f, sizeof bits);
+  bits = f > 0.0f ? bits + 1 : bits - 1;
+  memcpy(&f, &bits, sizeof f);
+  return f;
+}
+
+/* Single precision bounds that still hold the double value (a value
+   beyond the largest float gets an infinity). */
+static inline float zr__float_down(double x) {
+  float f = (float)x;
+  return (double)f > x ? -zr__float_after(-f) : f;
+}
+
+static inline float zr__float_up(double x) {
+  float f = (float)x;
+  return (double)f < x ? zr__float_after(f) : f;
+}
+
+/*
+ * The ray in the form the float slab test wants, and that test's margin.
+ * The exact distances along axis a are (box - org) / dir; the test
+ * computes them from org and 1 / dir in float, the box's coordinates
+ * being floats already (that hold the double boxes).  Rounding org moves
+ * t by at most u |org| |inv| (u = 2^-24, float's unit roundoff); the
+ * subtraction, the product and 1 / dir (d rounded to float, then the
+ * division) by at most about 4u |t|, and |t| <= (|box| + |org|) |inv|.
+ * So every distance is within 5u (E + |org|) |inv| of the exact one, E
+ * the node's largest coordinate magnitude (zr_wide_node.extent), and
+ * entries lowered and exits raised by 2^-19 (E + |org|) |inv| (32u,
+ * leaving room for the rounding of the margin's own arithmetic) give a
+ * test that never misses a box the exact test meets.  A direction
+ * component of 0 or nearly so gets +-1e30 for 1 / dir, which keeps the
+ * products finite (no 0 * inf = NaN) and makes the margin so wide that
+ * the axis limits nothing within any distance a scene has.
+ */
+typedef struct zr_slab_ray {
+  float org[3], inv[3];
+  float org_pad[3]; /* 2^-19 |org| |inv| */
+  float ext_pad[3]; /* 2^-19 |inv|, times a node's extent */
+} zr_slab_ray;
+
+static inline void zr__make_slab_ray(const zr_ray *ray, zr_slab_ray *s) {
+  double o[3] = {ray->origin.x, ray->origin.y, ray->origin.z};
+  double d[3] = {ray->dir.x, ray->dir.y, ray->dir.z};
+  for (int a = 0; a < 3; a++) {
+    float df = (float)d[a];
+    float inv = fabsf(df) > 1e-30f ? 1.0f / df : copysignf(1e30f, df);
+    s->org[a] = (float)o[a];
+    s->inv[a] = inv;
+    double scale = 0x1p-19 * fabs((double)inv);
+    s->org_pad[a] = (float)(scale * fabs(o[a]));
+    s->ext_pad[a] = (float)scale;
+  }
+}
+
+/* SSE's minps and maxps, lane by lane: the second operand when the
+   comparison fails (a NaN included), so the plain C path below gives
+   the SSE path's floats, bit for bit. */
+static inline float zr__min_lane(float a, float b) { return a < b ? a : b; }
+static inline float zr__max_lane(float a, float b) { return a > b ? a : b; }
+
+/*
+ * Which of w's children the ray meets within (tmin, tmax): bit c of the
+ * result for child c, with the entry distance, lowered by the margin, in
+ * t[c].  An unused lane's box is NaN, and the maxima and minima take the
+ * NaN (it is their second operand), so the lane never passes.  This is
+ * the tracer's innermost loop: with SSE (every x86-64) the four
+ * children are one instruction an operation; elsewhere the same
+ * operations run a lane at a time.
+ */
+static inline unsigned zr__slab_entries(const zr_wide_node *w, const zr_slab_ray *r,
+                                    float tmin, float tmax,
+                                    float t[ZR_WIDE_WIDTH]) {
+#ifdef __SSE2__
+  __m128 t0 = _mm_set1_ps(tmin), t1 = _mm_set1_ps(tmax);
+  for (int a = 0; a < 3; a++) {
+    __m128 org = _mm_set1_ps(r->org[a]), inv = _mm_set1_ps(r->inv[a]);
+    __m128 pad = _mm_set1_ps(r->org_pad[a] + r->ext_pad[a] * w->extent);
+    __m128 ta = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(w->lo[a]), org), inv);
+    __m128 tb = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(w->hi[a]), org), inv);
+    __m128 near = _mm_sub_ps(_mm_min_ps(ta, tb), pad);
+    __m128 far = _mm_add_ps(_mm_max_ps(ta, tb), pad);
+    t0 = _mm_max_ps(t0, near);
+    t1 = _mm_min_ps(t1, far);
+  }
+  _mm_storeu_ps(t, t0);
+  return (unsigned)_mm_movemask_ps(_mm_cmple_ps(t0, t1));
+#else
+  float t1[ZR_WIDE_WIDTH];
+  for (int c = 0; c < ZR_WIDE_WIDTH; c++) {
+    t[c] = tmin;
+    t1[c] = tmax;
+  }
+  for (int a = 0; a < 3; a++) {
+    float pad = r->org_pad[a] + r->ext_pad[a] * w->extent;
+    for (int c = 0; c < ZR_WIDE_WIDTH; c++) {
+      float ta = (w->lo[a][c] - r->org[a]) * r->inv[a];
+      float tb = (w->hi[a][c] - r->org[a]) * r->inv[a];
+      float near = zr__min_lane(ta, tb) - pad;
+      float far = zr__max_lane(ta, tb) + pad;
+      t[c] = zr__max_lane(t[c], near);
+      t1[c] = zr__min_lane(t1[c], far);
+    }
+  }
+  unsigned mask = 0;
+  for (int c = 0; c < ZR_WIDE_WIDTH; c++)
+    mask |= (unsigned)(t[c] <= t1[c]) << c;
+  return mask;
+#endif
+}
+
+#endif /* ZR_TRACE_BVH_WIDE_H */
