@@ -29,6 +29,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "gi/gi.h"
 #include "options.h"
 #include "parse_fixture.h"
 #include "zrcube.h"
@@ -563,6 +564,66 @@ static void test_gi_nearest_count_stop(void **state) {
   assert_true(n[2] == n[0]);
 }
 
+/* Whether every record under node `at` of tree d lies in the node's box
+   and has a radius at most its r_max (what a lookup prunes by). */
+static bool node_holds(const zr_gi_cache *c, int d, int32_t at, size_t *seen) {
+  const zr__gi_node *n = &c->nodes[d][at];
+  for (size_t k = 0; k < 8; k++) {
+    if (n->child[k] < 0)
+      continue;
+    const zr__gi_node *m = &c->nodes[d][n->child[k]];
+    if (m->lo.x < n->lo.x || m->lo.y < n->lo.y || m->lo.z < n->lo.z ||
+        m->hi.x > n->hi.x || m->hi.y > n->hi.y || m->hi.z > n->hi.z ||
+        m->r_max > n->r_max || !node_holds(c, d, n->child[k], seen))
+      return false;
+  }
+  for (int32_t i = n->first; i >= 0; i = c->next[i]) {
+    const zr__gi_record *r = &c->records.v[i];
+    if (r->p.x < n->lo.x || r->p.y < n->lo.y || r->p.z < n->lo.z ||
+        r->p.x > n->hi.x || r->p.y > n->hi.y || r->p.z > n->hi.z ||
+        r->r > n->r_max)
+      return false;
+    (*seen)++;
+  }
+  return true;
+}
+
+/* The octree's nodes keep the box of the points and the largest radius
+   of the records below them, which lookups prune by: records of radii
+   from 1e-4 to 10, some far outside the scene (the root grows), at two
+   depths. */
+static void test_gi_octree_bounds(void **state) {
+  fixture *f = *state;
+  const zr_scene *s = good(f, ROOM);
+  zr_gi_cache *c = NULL;
+  assert_int_equal(zr_gi_cache_new(NULL, s, NULL, &c), ZR_OK);
+  uint64_t x = 12345;
+  size_t added[2] = {0, 0};
+  for (int i = 0; i < 5000; i++) {
+    double u[5];
+    for (int k = 0; k < 5; k++) {
+      x = x * 6364136223846793005u + 1442695040888963407u;
+      u[k] = (double)(x >> 11) / 9007199254740992.0;
+    }
+    zr__gi_record r;
+    memset(&r, 0, sizeof r);
+    double far = i % 50 == 0 ? 1000.0 : 10.0;
+    r.p = (zr_vec3){far * (u[0] - 0.5), far * (u[1] - 0.5), 10 * u[2]};
+    r.n = (zr_vec3){0, 1, 0};
+    r.r = 1e-4 * pow(1e5, u[3]);
+    r.depth = u[4] < 0.8 ? 0 : 1;
+    assert_true(zr__gi_cache_add(c, &r));
+    added[r.depth]++;
+  }
+  for (int d = 0; d < 2; d++) {
+    size_t seen = 0;
+    assert_true(c->n_nodes[d] > 1);
+    assert_true(node_holds(c, d, 0, &seen));
+    assert_int_equal(seen, added[d]);
+  }
+  zr_gi_cache_free(c);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_gi_furnace),
@@ -576,6 +637,7 @@ int main(void) {
       cmocka_unit_test(test_gi_adc_bailout),
       cmocka_unit_test(test_gi_count_pool),
       cmocka_unit_test(test_gi_nearest_count_stop),
+      cmocka_unit_test(test_gi_octree_bounds),
   };
   return cmocka_run_group_tests(tests, setup, teardown);
 }

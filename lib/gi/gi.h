@@ -39,6 +39,12 @@ void zr__gi_list_free(zr__gi_list *l);
 typedef struct zr__gi_node {
   zr_vec3 c;
   double h;
+  /* The box of the points of the records in this node and below it,
+     and the largest radius among them: a lookup whose error bound is a
+     goes down only where its point lies within a times that radius of
+     the box (lo > hi while the node holds none). */
+  zr_vec3 lo, hi;
+  double r_max;
   int32_t child[8]; /* -1: none */
   int32_t first;    /* first record (index into the cache), -1 */
 } zr__gi_node;

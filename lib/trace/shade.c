@@ -593,7 +593,13 @@ static zr_rgb direct_light(const zr_tracer *tr, const surface *s,
   if (sslt && f->diffuse != 0.0 && opacity > 0.0)
     sum = zr__subsurface_light(tr, s->object, f, s->p, s->n, s->d,
                                zr_rgb_scale(c, f->diffuse * opacity));
-  for (size_t i = 0; i < scene->n_lights; i++) {
+  /* A finish that takes no light (diffuse 0, no highlights: an
+     emitting sky dome such as radiosity2.pov's, which most of the
+     irradiance cache's sample rays meet) needs no shadow ray. */
+  bool takes = (f->diffuse != 0.0 && opacity > 0.0 && !sslt) ||
+               f->diffuse_back > 0.0 || f->phong > 0.0 ||
+               (f->specular > 0.0 && f->roughness > 0.0);
+  for (size_t i = 0; takes && i < scene->n_lights; i++) {
     const zr_light *light = &scene->lights[i];
     zr_vec3 l;
     zr_rgb lc;
