@@ -41,6 +41,24 @@ pixel_case() {
   /usr/bin/python3 "$srcdir/tests/pixel_check.py" z$pc_tag.png "$@" $pc_ref
 }
 
+# pixel_cases SCENE VAR "CASES" ["X,Y X,Y..."]: pixel_case for each case
+# C of CASES, rendered with Declare=VAR=C and checked against the pixels
+# in the variable recorded_C: "R,G,B R,G,B..." at the given X,Y places,
+# or "X,Y=R,G,B ..." words when no places are given.  Prints "case C:"
+# before each; returns 1 when any case fails.
+pixel_cases() {
+  pcs_scene=$1 pcs_var=$2 pcs_cases=$3 pcs_px=${4:-}
+  pcs_fail=0
+  for pcs_c in $pcs_cases; do
+    eval "pcs_values=\$recorded_$pcs_c"
+    [ -n "$pcs_px" ] && pcs_values=$(pixel_args "$pcs_px" "$pcs_values")
+    echo "case $pcs_c:"
+    pixel_case "$pcs_scene" "$pcs_c" "$pcs_var=$pcs_c" $pcs_values ||
+      pcs_fail=1
+  done
+  return $pcs_fail
+}
+
 # pixel_args "X,Y X,Y..." "R,G,B R,G,B...": the X,Y=R,G,B words that
 # pixel_case takes, pairing the two lists in order.
 pixel_args() {

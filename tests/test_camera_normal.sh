@@ -21,11 +21,4 @@ recorded_1="178,219,249 196,219,249 188,184,255 178,148,250 196,148,250 179,204,
 recorded_2="133,184,246 227,184,246 191,187,255 133,190,246 227,190,246 162,189,253 209,185,253"
 recorded_3="243,226,212 236,208,110 253,184,165 250,163,210 239,151,127 253,208,193 248,168,145"
 recorded_4="115,218,234 220,210,247 171,201,253 132,136,236 226,147,240 123,213,239 208,174,252"
-fail=0
-for c in 0 1 2 3 4; do
-  eval "values=\$recorded_$c"
-  echo "case $c:"
-  pixel_case "$srcdir/tests/camera_normal.pov" $c Case=$c \
-    $(pixel_args "$px" "$values") || fail=1
-done
-exit $fail
+pixel_cases "$srcdir/tests/camera_normal.pov" Case "0 1 2 3 4" "$px"

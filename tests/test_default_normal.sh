@@ -20,11 +20,4 @@ recorded_2="141,141,141 156,156,156 141,141,141 141,141,141 156,156,156 156,156,
 recorded_3="102,102,102 176,176,176 166,166,166 142,142,142 155,155,155 176,176,176 110,110,110 103,103,103"
 recorded_4="$recorded_2"
 recorded_5="135,135,135 161,161,161 136,136,136 135,135,135 160,160,160 160,160,160 136,136,136 136,136,136"
-fail=0
-for c in 1 2 3 4 5; do
-  eval "values=\$recorded_$c"
-  echo "case $c:"
-  pixel_case "$srcdir/tests/default_normal.pov" dn$c Case=$c \
-    $(pixel_args "$px" "$values") || fail=1
-done
-exit $fail
+pixel_cases "$srcdir/tests/default_normal.pov" Case "1 2 3 4 5" "$px"

@@ -83,18 +83,17 @@ static void test_mesh_fast_and_grammar_agree(void **state) {
   assert_near(hit.t, 1.0, EPS);
 }
 
-/* A grid of many triangles: the BVH's nearest crossing must be the one
-   a test of every face finds. */
-static void test_mesh_bvh_matches_brute_force(void **state) {
-  fixture *f = *state;
-  const int n = 40;
+/* An n x n grid of vertices at <i, amp sin(i fi) cos(j fj), j>, two
+   triangles a cell, as one mesh2. */
+static zr_scene *rippled_grid(fixture *f, int n, double amp, double fi,
+                              double fj) {
   zr_strbuf b;
   zr__strbuf_init(&b);
   zr__strbuf_printf(&b, "mesh2 { vertex_vectors { %d", n * n);
   for (int j = 0; j < n; j++)
     for (int i = 0; i < n; i++)
-      zr__strbuf_printf(&b, ", <%d, %g, %d>", i, sin(i * 0.7) * cos(j * 0.3),
-                        j);
+      zr__strbuf_printf(&b, ", <%d, %g, %d>", i,
+                        amp * sin(i * fi) * cos(j * fj), j);
   zr__strbuf_printf(&b, " } face_indices { %d", 2 * (n - 1) * (n - 1));
   for (int j = 0; j < n - 1; j++)
     for (int i = 0; i < n - 1; i++) {
@@ -105,6 +104,15 @@ static void test_mesh_bvh_matches_brute_force(void **state) {
   zr__strbuf_printf(&b, " } }\n");
   zr_scene *s = good(f, zr__strbuf_cstr(&b));
   zr__strbuf_free(&b);
+  return s;
+}
+
+/* A grid of many triangles: the BVH's nearest crossing must be the one
+   a test of every face finds. */
+static void test_mesh_bvh_matches_brute_force(void **state) {
+  fixture *f = *state;
+  const int n = 40;
+  zr_scene *s = rippled_grid(f, n, 1, 0.7, 0.3);
   const struct zr_mesh *m = only_mesh(s);
   assert_int_equal(m->n_faces, 2 * (n - 1) * (n - 1));
   unsigned seed = 12345;
@@ -160,23 +168,7 @@ static size_t brute_crossings(const struct zr_mesh *m, const zr_ray *ray,
 static void test_mesh_any_hit_and_two_nearest(void **state) {
   fixture *f = *state;
   const int n = 24;
-  zr_strbuf b;
-  zr__strbuf_init(&b);
-  zr__strbuf_printf(&b, "mesh2 { vertex_vectors { %d", n * n);
-  for (int j = 0; j < n; j++)
-    for (int i = 0; i < n; i++)
-      zr__strbuf_printf(&b, ", <%d, %g, %d>", i,
-                        2 * sin(i * 0.9) * cos(j * 0.5), j);
-  zr__strbuf_printf(&b, " } face_indices { %d", 2 * (n - 1) * (n - 1));
-  for (int j = 0; j < n - 1; j++)
-    for (int i = 0; i < n - 1; i++) {
-      int a = j * n + i;
-      zr__strbuf_printf(&b, ", <%d,%d,%d>, <%d,%d,%d>", a, a + 1, a + n,
-                        a + 1, a + n + 1, a + n);
-    }
-  zr__strbuf_printf(&b, " } }\n");
-  zr_scene *s = good(f, zr__strbuf_cstr(&b));
-  zr__strbuf_free(&b);
+  zr_scene *s = rippled_grid(f, n, 2, 0.9, 0.5);
   const zr_object *o = s->primitives[0];
   const struct zr_mesh *m = only_mesh(s);
   unsigned seed = 777;

@@ -20,13 +20,4 @@ recorded_10="7,7=6,6,6 8,7=90,90,90 9,7=95,95,95 8,5=95,95,95"
 recorded_11="7,7=29,29,29 8,7=218,218,218 9,7=218,218,218 8,5=218,218,218"
 recorded_20="7,7=66,22,71 8,7=132,102,137 9,7=136,103,137 8,5=136,103,137"
 recorded_21="7,7=113,57,116 8,7=218,218,218 9,7=218,218,218 8,5=218,218,218"
-fail=0
-for k in 1 2; do
-  for ns in 0 1; do
-    eval "values=\$recorded_$k$ns"
-    echo "K=$k NS=$ns:"
-    pixel_case "$srcdir/tests/no_shadow_interior.pov" $k$ns C=$k$ns \
-      $values || fail=1
-  done
-done
-exit $fail
+pixel_cases "$srcdir/tests/no_shadow_interior.pov" C "10 11 20 21"

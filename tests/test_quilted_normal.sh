@@ -21,11 +21,4 @@ recorded_1="234,196,206 243,176,201 179,242,224 234,195,201 242,174,196 240,185,
 recorded_2="221,216,217 239,187,206 194,236,223 224,214,215 240,181,199 229,206,218 235,188,186"
 recorded_3="221,216,220 228,207,216 221,212,236 227,205,235 225,211,214 222,215,222 227,208,207"
 recorded_4="$recorded_1"
-fail=0
-for c in 1 2 3 4; do
-  eval "values=\$recorded_$c"
-  echo "case $c:"
-  pixel_case "$srcdir/tests/quilted_normal.pov" q$c Case=$c \
-    $(pixel_args "$px" "$values") || fail=1
-done
-exit $fail
+pixel_cases "$srcdir/tests/quilted_normal.pov" Case "1 2 3 4" "$px"

@@ -25,12 +25,7 @@ recorded_5="127,216,239 201,186,254 184,174,254 130,141,237 227,137,236 179,200,
 recorded_6="140,216,243 223,216,243 199,181,254 130,153,240 219,160,247 166,202,253 203,177,253"
 recorded_7="162,208,251 226,212,243 194,180,255 133,132,235 231,136,232 127,221,237 174,206,253"
 fail=0
-for c in 5 6 7; do
-  eval "values=\$recorded_$c"
-  echo "case $c:"
-  pixel_case "$srcdir/tests/camera_normal.pov" $c Case=$c \
-    $(pixel_args "$px" "$values") || fail=1
-done
+pixel_cases "$srcdir/tests/camera_normal.pov" Case "5 6 7" "$px" || fail=1
 for n in 12 10; do
   printf 'global_settings { number_of_waves %s }\nplane { y, 0 pigment { waves } }\nplane { z, 5 normal {\n  waves 0.3 } }\ncamera { location <0,1,-3> look_at 0 }\n' \
     $n >nw$n.pov

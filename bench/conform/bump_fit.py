@@ -52,12 +52,7 @@ int main(void) {
 
 
 def tilts(path):
-    a = png16.read(path)[..., :3]
-    a = np.where(a <= 0.04045, a / 12.92, ((a + 0.055) / 1.055) ** 2.4)
-    r, g, b = a[..., 0], a[..., 1], a[..., 2]
-    s = 2 ** 0.5
-    nx, nz = (r - g) / s, (r + g) / s
-    ny = s * b - nz
+    nx, ny, nz = png16.probe_normals(path)
     return (nx / nz).ravel(), (ny / nz).ravel()
 
 

@@ -16,13 +16,7 @@ import numpy as np
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import png16  # noqa: E402
 
-a = png16.read(sys.argv[1])[..., :3]
-a = np.where(a <= 0.04045, a / 12.92, ((a + 0.055) / 1.055) ** 2.4)
-r, g, b = a[..., 0], a[..., 1], a[..., 2]
-s = 2 ** 0.5
-nx = (r - g) / s
-nz = (r + g) / s
-ny = s * b - nz
+nx, ny, nz = png16.probe_normals(sys.argv[1])
 t = np.sqrt(nx ** 2 + ny ** 2) / np.maximum(nz, 1e-9)
 tx, ty = nx / np.maximum(nz, 1e-9), ny / np.maximum(nz, 1e-9)
 # The spread of the tilt about its mean (a pattern whose tilt has a

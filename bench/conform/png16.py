@@ -55,3 +55,17 @@ def read(path):
     else:
         img = out.astype(np.float64) / 255.0
     return img.reshape(h, w, chans)
+
+
+def probe_normals(path):
+    """The shading normal (nx, ny, nz) of each pixel of a render of
+    normal_probe.pov's set-up: a plane facing the camera lit with diffuse
+    1 by three parallel lights at 45 degrees, red from +x, green from -x,
+    blue from +y, so (linear) R = (nz + nx)/sqrt 2, G = (nz - nx)/sqrt 2,
+    B = (nz + ny)/sqrt 2 while no light grazes."""
+    a = read(path)[..., :3]
+    a = np.where(a <= 0.04045, a / 12.92, ((a + 0.055) / 1.055) ** 2.4)
+    r, g, b = a[..., 0], a[..., 1], a[..., 2]
+    s = 2 ** 0.5
+    nx, nz = (r - g) / s, (r + g) / s
+    return nx, s * b - nz, nz
