@@ -33,6 +33,9 @@ import numpy as np
 from skimage import io as skio
 from skimage.metrics import structural_similarity
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import zrexe  # noqa: E402
+
 EXAMPLES = '/usr/share/doc/povray/examples'
 INCLUDE = '/usr/share/povray-3.7/include'
 MATCH = 0.95
@@ -164,7 +167,7 @@ def main():
         print(f'conformance: {args.examples} missing '
               '(apt-get install povray-examples)', file=sys.stderr)
         return 77
-    args.zrcube = os.path.abspath(args.zrcube)
+    args.zrcube = zrexe.unwrap(os.path.abspath(args.zrcube))
     args.out = os.path.abspath(args.out)
     for sub in ('povray', 'zrcube'):
         os.makedirs(os.path.join(args.out, sub), exist_ok=True)

@@ -17,7 +17,8 @@ top=$(cd "$here/.." && pwd)
 build=$(cd "${1:-$top/build}" && pwd)
 set_=${2:-all}
 [ $# -ge 2 ] && shift 2 || shift $#
-zr=$build/bin/zrcube
+. "$here/zrexe.sh"
+zr=$zrcube
 out=$here/out/conformance
 mkdir -p "$out"
 py=/usr/bin/python3

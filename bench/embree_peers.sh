@@ -23,13 +23,7 @@ sizes=${SIZES:-512 2048}
 scenes=${SCENES:-terrain flake}
 repeat=${REPEAT:-3}
 python=${PYTHON:-/usr/bin/python3}
-if [ -x "$build/bin/.libs/zrcube" ]; then
-  zrcube=$build/bin/.libs/zrcube
-  LD_LIBRARY_PATH=$build/lib/.libs${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
-  export LD_LIBRARY_PATH
-else
-  zrcube=$build/bin/zrcube
-fi
+. "$here/zrexe.sh"
 for tool in "$python" /usr/bin/time tachyon povray; do
   command -v "$tool" >/dev/null 2>&1 || { echo "embree_peers.sh: no $tool" >&2; exit 77; }
 done

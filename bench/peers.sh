@@ -49,13 +49,7 @@ povray=${POVRAY:-povray}
 tachyon=${TACHYON:-tachyon}
 python=${PYTHON:-/usr/bin/python3}
 
-if [ -x "$build/bin/.libs/zrcube" ]; then
-  zrcube=$build/bin/.libs/zrcube
-  LD_LIBRARY_PATH=$build/lib/.libs${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
-  export LD_LIBRARY_PATH
-else
-  zrcube=$build/bin/zrcube
-fi
+. "$here/zrexe.sh"
 [ -x "$zrcube" ] || { echo "peers.sh: $zrcube is not built" >&2; exit 1; }
 for tool in "$povray" "$tachyon" "$python" /usr/bin/time; do
   command -v "$tool" >/dev/null 2>&1 || {

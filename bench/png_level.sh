@@ -21,13 +21,7 @@ build=$(cd "$1" && pwd)
 scene=$(cd "$(dirname "${2:-$here/../scenes/default.pov}")" && pwd)/$(basename "${2:-default.pov}")
 size=${3:-512}
 repeat=${REPEAT:-3}
-if [ -x "$build/bin/.libs/zrcube" ]; then
-  zrcube=$build/bin/.libs/zrcube
-  LD_LIBRARY_PATH=$build/lib/.libs${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
-  export LD_LIBRARY_PATH
-else
-  zrcube=$build/bin/zrcube
-fi
+. "$here/zrexe.sh"
 work=$(mktemp -d "${TMPDIR:-/tmp}/zr-png.XXXXXX")
 trap 'rm -rf "$work"' EXIT INT TERM
 cd "$(dirname "$scene")"

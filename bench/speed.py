@@ -34,6 +34,9 @@ import sys
 import tempfile
 import threading
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import zrexe  # noqa: E402
+
 EXAMPLES = '/usr/share/doc/povray/examples'
 CORPUS = os.path.join(os.path.dirname(os.path.abspath(__file__)),
                       '..', '..', 'shared', 'corpus')
@@ -108,7 +111,7 @@ def main():
     ap.add_argument('--pairs', type=int, default=1)
     ap.add_argument('--timeout', type=float, default=120.0)
     args = ap.parse_args()
-    args.zrcube = os.path.abspath(args.zrcube)
+    args.zrcube = zrexe.unwrap(os.path.abspath(args.zrcube))
     base, scenes = scenes_of(args)
     if args.only:
         scenes = [s for s in scenes if args.only in s]
