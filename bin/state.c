@@ -43,6 +43,24 @@ uint64_t zr__state_hash(uint64_t h, const void *bytes, size_t size) {
   return h;
 }
 
+/* FNV-1a's step on 8 bytes at a time, with the high half folded down
+   after each (a multiply carries bits upwards only): 8 times fewer
+   dependent multiplies than zr__state_hash, which took 5-8% of the
+   whole run of a 15 MB mesh scene.  Not a checksum of the file format
+   (the state file keeps FNV-1a): it only tells one scene from another. */
+uint64_t zr__state_digest(const void *bytes, size_t size) {
+  const unsigned char *p = bytes;
+  uint64_t h = ZR_STATE_HASH_START ^ (uint64_t)size;
+  for (; size >= 8; p += 8, size -= 8) {
+    uint64_t w;
+    memcpy(&w, p, sizeof w);
+    h ^= w;
+    h *= 1099511628211ULL;
+    h ^= h >> 32;
+  }
+  return zr__state_hash(h, p, size);
+}
+
 char *zr__state_path(const char *image_path) {
   size_t n = strlen(image_path) + sizeof ".zrstate";
   char *path = malloc(n);

@@ -20,6 +20,9 @@
    ZR_STATE_HASH_START). */
 #define ZR_STATE_HASH_START 14695981039346656037ULL
 uint64_t zr__state_hash(uint64_t h, const void *bytes, size_t size);
+/* A file's bytes into one value for the fingerprint, 8 bytes a step
+   (host byte order, like the state file). */
+uint64_t zr__state_digest(const void *bytes, size_t size);
 
 /* "out.png" -> "out.png.zrstate", malloc'ed. */
 char *zr__state_path(const char *image_path);

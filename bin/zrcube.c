@@ -630,7 +630,7 @@ static uint64_t fold_file(uint64_t h, const char *path, size_t size,
 static zr_status digest_observer(const char *path, const char *bytes,
                                  size_t size, void *user) {
   run *r = user;
-  uint64_t hash = zr__state_hash(ZR_STATE_HASH_START, bytes, size);
+  uint64_t hash = zr__state_digest(bytes, size);
   for (size_t i = 0; i < r->n_digests; i++)
     if (strcmp(r->digests[i].path, path) == 0)
       return r->digests[i].size == size && r->digests[i].hash == hash
@@ -777,7 +777,7 @@ static int read_scene(run *r) {
     for (size_t i = 0; i < r->bundle.count; i++) {
       const zr_bundle_file *f = &r->bundle.files[i];
       h = fold_file(h, f->path, f->size,
-                    zr__state_hash(ZR_STATE_HASH_START, f->bytes, f->size));
+                    zr__state_digest(f->bytes, f->size));
     }
   }
   free_digests(r);

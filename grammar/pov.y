@@ -3406,7 +3406,7 @@ texture_body:
       $$ = $1;
     }
 | texture_body transform
-    { TRY(zr__sdl_texture_transform(p, $1, $2)); $$ = $1; }
+    { TRY(zr__sdl_texture_move(p, &p->own_body, NULL, $1, $2)); $$ = $1; }
 | texture_body T_NO_BUMP_SCALE
     { no_bump_scale_warning(p, &@2); $$ = $1; }
 ;

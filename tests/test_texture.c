@@ -764,6 +764,94 @@ static void test_texture_uv_mapping_without_uv(void **state) {
       NULL);
 }
 
+/* How far a transformation moved a pattern: its translation part. */
+static void assert_moved(const zr_transform *t, double x, double y,
+                         double z) {
+  assert_non_null(t);
+  assert_true(fabs(t->m[0][3] - x) < EPS);
+  assert_true(fabs(t->m[1][3] - y) < EPS);
+  assert_true(fabs(t->m[2][3] - z) < EPS);
+}
+
+/* A transformation changes a texture in place once it has copied it
+   for this texture block or this object (lib/sdl/build.c,
+   zr__sdl_texture_move); the declared textures and objects, and the
+   other objects using them, never see it. */
+static void test_texture_moved_in_place_stays_private(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(
+      f, "#declare T = texture { pigment { bozo } normal { bumps } }"
+         " texture { pigment { agate } }\n"
+         "#declare M = texture { gradient x texture_map { [0 T]"
+         " [1 T translate z] } }\n"
+         "box { 0, 1 texture { T translate x translate y } translate z }\n"
+         "box { 0, 1 texture { T translate 2 * x } translate 2 * y"
+         " translate 2 * z }\n"
+         "box { 0, 1 texture { M translate x } translate y }\n"
+         "box { 0, 1 texture { T } }\n"
+         "#declare U = texture { pigment { bozo } finish { ambient 0.2 }"
+         " translate x }\n"
+         "box { 0, 1 texture { U } translate y translate y }\n"
+         "box { 0, 1 texture { U } translate z }\n"
+         "box { 0, 1 texture { U } }\n");
+  assert_int_equal(s->n_objects, 7);
+  const zr_texture *a = s->objects[0]->texture;
+  assert_moved(a->pigment->transform, 1, 1, 1);
+  assert_moved(a->normal->transform, 1, 1, 1);
+  assert_moved(a->over->pigment->transform, 1, 1, 1);
+  const zr_texture *b = s->objects[1]->texture;
+  assert_moved(b->pigment->transform, 2, 2, 2);
+  assert_moved(b->normal->transform, 2, 2, 2);
+  assert_moved(b->over->pigment->transform, 2, 2, 2);
+  const zr_texture *m = s->objects[2]->texture;
+  assert_moved(m->transform, 1, 1, 0);
+  const zr_texture *e0 = m->map->entries[0].u.texture;
+  const zr_texture *e1 = m->map->entries[1].u.texture;
+  assert_moved(e0->pigment->transform, 1, 1, 0);
+  assert_moved(e0->over->pigment->transform, 1, 1, 0);
+  assert_moved(e1->pigment->transform, 1, 1, 1);
+  assert_moved(e1->normal->transform, 1, 1, 1);
+  /* T itself. */
+  const zr_texture *t = s->objects[3]->texture;
+  assert_null(t->pigment->transform);
+  assert_null(t->normal->transform);
+  assert_null(t->over->pigment->transform);
+  assert_moved(s->objects[4]->texture->pigment->transform, 1, 2, 0);
+  assert_moved(s->objects[5]->texture->pigment->transform, 1, 0, 1);
+  assert_moved(s->objects[6]->texture->pigment->transform, 1, 0, 0);
+}
+
+static void test_texture_moved_with_copies_of_objects(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(
+      f, "#declare B = box { 0, 1 texture { pigment { bozo } translate x }"
+         " translate y }\n"
+         "object { B translate z translate z }\n"
+         "object { B scale 2 }\n"
+         "object { B }\n"
+         "blob { sphere { 0, 1, 1 texture { pigment { bozo } translate x }"
+         " translate y translate y } sphere { 0, 1, 1 texture { pigment {"
+         " bozo } translate x } } translate z translate z }\n"
+         "union { box { 0, 1 texture { pigment { bozo } translate x }"
+         " translate y } sphere { 0, 1 texture { pigment { bozo } } }"
+         " translate z translate z }\n"
+         "box { 0, 1 texture { uv_mapping pigment { bozo } translate x }"
+         " translate y scale 2 }\n");
+  assert_int_equal(s->n_objects, 6);
+  assert_moved(s->objects[0]->texture->pigment->transform, 1, 1, 2);
+  assert_moved(s->objects[1]->texture->pigment->transform, 2, 2, 0);
+  assert_moved(s->objects[2]->texture->pigment->transform, 1, 1, 0);
+  const zr_blob_component *c = s->objects[3]->u.blob.components;
+  assert_moved(c[0].texture->pigment->transform, 1, 2, 2);
+  assert_moved(c[1].texture->pigment->transform, 1, 0, 2);
+  const zr_object *o = s->objects[4];
+  assert_true(zr__is_csg(o->kind) && o->u.csg.n_children == 2);
+  assert_moved(o->u.csg.children[0]->texture->pigment->transform, 1, 1, 2);
+  assert_moved(o->u.csg.children[1]->texture->pigment->transform, 0, 0, 2);
+  /* uv_mapping: the object's transformations leave it on the surface. */
+  assert_moved(s->objects[5]->texture->pigment->transform, 1, 0, 0);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_texture_pigment_map_blends),
@@ -797,6 +885,8 @@ int main(void) {
       cmocka_unit_test(test_texture_image_map_bad_palette_index),
       cmocka_unit_test(test_texture_image_map_gamma),
       cmocka_unit_test(test_texture_identifier_alone_is_shared),
+      cmocka_unit_test(test_texture_moved_in_place_stays_private),
+      cmocka_unit_test(test_texture_moved_with_copies_of_objects),
   };
   return cmocka_run_group_tests(tests, setup, teardown);
 }

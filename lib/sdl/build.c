@@ -98,6 +98,9 @@ zr_object *zr__sdl_object_copy(zr_sdl_parser *p, const zr_object *o) {
   if (!copy)
     return NULL;
   memcpy(copy, o, size); /* an object may be smaller than zr_object */
+  /* The copy shares the texture: neither may change it in place now
+     (zr__sdl_texture_move). */
+  p->own_object.tx = NULL;
   /* Clipping and bounding objects follow the object's later transforms,
      so each copy needs its own. */
   if (o->clip && !(copy->clip = zr__sdl_object_copy(p, o->clip)))
@@ -270,6 +273,9 @@ zr_texture *zr__sdl_texture_new(zr_sdl_parser *p, const zr_texture *from) {
   zr_texture *tx = zr__sdl_alloc(p, sizeof *tx);
   if (tx && from)
     *tx = *from;
+  /* A new texture block, or a copy: the block's texture is no longer
+     the last value read (zr__sdl_texture_given). */
+  p->own_body.tx = NULL;
   return tx;
 }
 
@@ -347,6 +353,112 @@ bool zr__sdl_texture_done(zr_sdl_parser *p, zr_texture *tx) {
   if (!tx->finish)
     tx->finish = p->scene->default_texture->finish;
   return true;
+}
+
+/*
+ * Transforming a texture in place (issue 16).  Textures are shared
+ * (declared, or given to many objects), so a transformation copies
+ * what it changes: the pigment and the normal with their transforms,
+ * the map's transform and textures, the layers above (the "copy path"
+ * below, zr__sdl_texture_transform).  A second transformation of the
+ * same texture block, or of the same object, would copy all that
+ * again, though the first copies belong to nobody else: 40,000 boxes
+ * each with "texture { T_Wood1 translate A rotate B scale C }
+ * translate D" made 4 copies of a two-layer texture apiece.  So the
+ * parser remembers the texture its last copy path made (own_body for
+ * a texture block, own_object for an object's texture) and, while
+ * that texture is still the same pointer, holds the same bytes and
+ * belongs to the same object, the next transformation changes the
+ * same parts in place: the same arithmetic on the same values (a
+ * transform composed with t), so the same scene.
+ *
+ * The texture a block made can pass to the object that takes it as
+ * its first texture (zr__sdl_texture_given): the block's value goes
+ * nowhere else in between, and every other use of a texture begins a
+ * new block (texture { T }), whose zr__sdl_texture_new forgets the
+ * block's texture.
+ */
+
+static void own_record(zr_sdl_parser *p, zr_sdl_own *own, const void *owner,
+                       const zr_texture *tx) {
+  own->owner = owner;
+  own->tx = tx;
+  own->moving = p->moving_object;
+  memcpy(&own->seen, tx, sizeof *tx);
+}
+
+static bool own_holds(const zr_sdl_parser *p, const zr_sdl_own *own,
+                      const void *owner, const zr_texture *tx) {
+  return own->tx && own->tx == tx && own->owner == owner &&
+         (p->moving_object || !own->moving) &&
+         memcmp(&own->seen, tx, sizeof *tx) == 0;
+}
+
+/* t after what *slot holds, in place: the copy path made *slot (NULL:
+   none yet, as after a copy of a pigment without one). */
+static bool compose_in_place(zr_sdl_parser *p, const zr_transform **slot,
+                             const zr_transform *t) {
+  if (*slot) {
+    zr__transform_compose((zr_transform *)*slot, t);
+    return true;
+  }
+  return (*slot = composed(p, NULL, t)) != NULL;
+}
+
+/* zr__sdl_texture_transform and zr__sdl_texture_transform_more on a
+   texture whose parts the copy path copied: the same steps, in the same
+   order, with the same parts left alone. */
+static bool texture_move_in_place(zr_sdl_parser *p, zr_texture *tx,
+                                  const zr_transform *t) {
+  if (p->moving_object && tx->uv_mapping)
+    return true;
+  zr_pigment *pg = (zr_pigment *)tx->pigment;
+  if (!(p->moving_object && pg->uv_mapping) &&
+      !compose_in_place(p, &pg->transform, t))
+    return false;
+  if (tx->normal) {
+    zr_normal *nm = (zr_normal *)tx->normal;
+    p->normal_fresh = nm; /* as zr__sdl_normal_new leaves it */
+    if (!(p->moving_object && nm->uv_mapping) &&
+        !compose_in_place(p, &nm->transform, t))
+      return false;
+  }
+  if ((tx->map || tx->pattern.kind != ZR_PAT_NONE) &&
+      !compose_in_place(p, &tx->transform, t))
+    return false;
+  if (tx->map)
+    for (size_t i = 0; i < tx->map->n; i++)
+      if (!texture_move_in_place(
+              p, (zr_texture *)tx->map->entries[i].u.texture, t))
+        return false;
+  if (tx->over && !texture_move_in_place(p, (zr_texture *)tx->over, t))
+    return false;
+  return true;
+}
+
+bool zr__sdl_texture_move(zr_sdl_parser *p, zr_sdl_own *own,
+                          const void *owner, zr_texture *tx,
+                          const zr_transform *t) {
+  if (own_holds(p, own, owner, tx)) {
+    if (!texture_move_in_place(p, tx, t))
+      return false;
+    memcpy(&own->seen, tx, sizeof *tx);
+    return true;
+  }
+  own->tx = NULL;
+  if (!zr__sdl_texture_transform(p, tx, t))
+    return false;
+  own_record(p, own, owner, tx);
+  return true;
+}
+
+void zr__sdl_texture_given(zr_sdl_parser *p, const zr_object *o,
+                           const zr_texture *tx) {
+  if (own_holds(p, &p->own_body, NULL, tx)) {
+    p->own_object = p->own_body;
+    p->own_object.owner = o;
+  }
+  p->own_body.tx = NULL;
 }
 
 bool zr__sdl_texture_transform(zr_sdl_parser *p, zr_texture *tx,
@@ -1043,8 +1155,14 @@ static bool transform_textures(zr_sdl_parser *p, zr_object *o,
   if (o->uv_mapping)
     return true;
   if (o->texture) {
-    zr_texture *tx = zr__sdl_texture_new(p, o->texture);
-    if (!tx || !zr__sdl_texture_transform(p, tx, t))
+    /* Once copied for this object, its texture is moved in place. */
+    zr_texture *tx = (zr_texture *)o->texture;
+    if (!own_holds(p, &p->own_object, o, tx)) {
+      if (!(tx = zr__sdl_texture_new(p, o->texture)))
+        return false;
+      p->own_object.tx = NULL;
+    }
+    if (!zr__sdl_texture_move(p, &p->own_object, o, tx, t))
       return false;
     o->texture = tx;
   }
@@ -1276,7 +1394,10 @@ bool zr__sdl_object_mod(zr_sdl_parser *p, zr_object *o,
     /* A texture on a textured object goes on top as a layer, as in
        POV-Ray (build_texture.c). */
     /* The first texture is shared, not copied: textures never change
-       once made (the changes above copy them). */
+       once made (the changes above copy them), but for the one a
+       texture block just copied, which is this object's alone. */
+    if (!o->texture)
+      zr__sdl_texture_given(p, o, mod->ptr);
     o->texture = o->texture ? zr__sdl_texture_layer(p, o->texture, mod->ptr)
                             : (const zr_texture *)mod->ptr;
     return o->texture != NULL &&

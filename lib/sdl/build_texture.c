@@ -271,6 +271,8 @@ zr_texture *zr__sdl_texture_shared(zr_sdl_parser *p, zr_texture *tx) {
     return tx;
   p->texture_copy = NULL;
   p->texture_copied = NULL;
+  if (p->own_body.tx == tx)
+    p->own_body.tx = NULL;
   /* The copy was the last thing allocated when nothing changed it. */
   zr__arena_give_back(&p->scene->arena, tx, sizeof *tx);
   return (zr_texture *)from; /* the grammar's values are not const */

@@ -496,6 +496,22 @@ typedef struct zr_sdl_autoend {
    this many tokens (a power of two). */
 #define ZR_SDL_PROGRESS_TOKENS 4096
 
+/* A texture whose every part a transformation changes (pigment,
+   normal, their transforms, map entries, layers and the map's
+   transform) was copied by the transformation before for 'owner' alone:
+   the next ones may change those parts in place (build.c).  'seen' is
+   the texture as that copy left it, compared byte for byte: any other
+   change makes the next transformation copy again. */
+typedef struct zr_sdl_own {
+  const void *owner;    /* the object, NULL for a texture block */
+  const zr_texture *tx; /* NULL: none */
+  /* Copied by an object's transform, which leaves parts with
+     uv_mapping shared (moving_object): only transforms of objects may
+     then change it in place, which leave the same parts alone. */
+  bool moving;
+  zr_texture seen;
+} zr_sdl_own;
+
 typedef struct zr_sdl_parser {
   zr_context *ctx;
   zr_scene *scene;
@@ -537,6 +553,10 @@ typedef struct zr_sdl_parser {
      with texture { T } share one; build_texture.c). */
   zr_texture *texture_copy;
   const zr_texture *texture_copied;
+  /* The textures a transformation may change in place instead of
+     copying (build.c, zr__sdl_texture_move): the one of the texture
+     block being read and the one of the object being built. */
+  zr_sdl_own own_body, own_object;
   bool default_changed; /* a #default was read */
   int nested_depth; /* parsers running, for ZR_SDL_MAX_NESTED_PARSE */
   int macro_depth;
@@ -924,6 +944,15 @@ bool zr__sdl_reflection_exponent(zr_sdl_parser *p, double e,
 zr_texture *zr__sdl_texture_new(zr_sdl_parser *p, const zr_texture *from);
 bool zr__sdl_texture_transform(zr_sdl_parser *p, zr_texture *tx,
                                const zr_transform *t);
+/* zr__sdl_texture_transform, in place when own holds tx for owner (see
+   zr_sdl_own); own then holds tx.  tx itself must be private. */
+bool zr__sdl_texture_move(zr_sdl_parser *p, zr_sdl_own *own,
+                          const void *owner, zr_texture *tx,
+                          const zr_transform *t);
+/* tx goes to o as its first texture: the texture block that made it
+   passes it to the object (p->own_body to p->own_object). */
+void zr__sdl_texture_given(zr_sdl_parser *p, const zr_object *o,
+                           const zr_texture *tx);
 bool zr__sdl_texture_done(zr_sdl_parser *p, zr_texture *tx);
 zr_interior *zr__sdl_interior_new(zr_sdl_parser *p, const zr_interior *from);
 /* Patterns, colour maps, normals and image maps (build.c). */
