@@ -275,3 +275,7 @@ TESTS += tests/test_normal_stencil.sh
 EXTRA_DIST += tests/test_normal_stencil.sh tests/normal_stencil.pov \
 	bench/conform/normal_stencil_probe.sh \
 	bench/conform/normal_stencil_probe.pov
+
+# A quartic's small leading term kept where it matters, povray's values.
+TESTS += tests/test_poly_degree.sh
+EXTRA_DIST += tests/test_poly_degree.sh tests/poly_degree.pov
