@@ -3443,12 +3443,13 @@ interior_body:
 | interior_body T_FADE_DISTANCE expr
     { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->fade_distance)); $$ = $1; }
 /* Dispersion splits refracted light into a spectrum; zRcube refracts
-   with the mean ior and says so (glass.inc declares such interiors even
-   in scenes that never use them). */
+   with the mean ior and says so where an object of the scene has it
+   (glass.inc declares such interiors even in scenes that never use
+   them; lib/sdl/build_object.c). */
 | interior_body T_DISPERSION expr
     {
-      zr__sdl_warning(p, &@2, "'dispersion' is not rendered yet: "
-                              "refraction uses the mean ior");
+      TRY(zr__sdl_want_float(p, &$3, &@3, &$1->dispersion));
+      zr__sdl_note_dispersion(p, $1, &@2);
       $$ = $1;
     }
 | interior_body T_DISPERSION_SAMPLES expr  { $$ = $1; }

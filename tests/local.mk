@@ -264,3 +264,18 @@ EXTRA_DIST += tests/test_no_shadow_interior.sh tests/no_shadow_interior.pov
 
 TESTS += tests/test_csg_area_shadow.sh
 EXTRA_DIST += tests/test_csg_area_shadow.sh tests/csg_area_shadow.pov
+
+# Interiors of CSG parts and fading where a ray leaves, povray's values.
+TESTS += tests/test_merge_interior.sh
+EXTRA_DIST += tests/test_merge_interior.sh tests/merge_interior.pov
+
+# A pattern normal's samples: a tetrahedron around the point, povray's
+# values.
+TESTS += tests/test_normal_stencil.sh
+EXTRA_DIST += tests/test_normal_stencil.sh tests/normal_stencil.pov \
+	bench/conform/normal_stencil_probe.sh \
+	bench/conform/normal_stencil_probe.pov
+
+# A quartic's small leading term kept where it matters, povray's values.
+TESTS += tests/test_poly_degree.sh
+EXTRA_DIST += tests/test_poly_degree.sh tests/poly_degree.pov

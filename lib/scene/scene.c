@@ -34,6 +34,7 @@ void zr__pigment_init(zr_pigment *p) {
 void zr__interior_init(zr_interior *i) {
   memset(i, 0, sizeof *i);
   i->ior = 1.0;
+  i->dispersion = 1.0;
 }
 
 void zr__camera_init(zr_camera *c) {

@@ -399,6 +399,11 @@ typedef struct zr_interior {
   /* media { } inside (lib/trace/media.c); they add where they overlap. */
   const struct zr_medium *const *media;
   size_t n_media;
+  /* dispersion ("Dispersion"; default 1: none), not rendered: the
+     parser warns where an object in the scene has it, naming where it
+     was written (glass.inc declares such interiors for every scene). */
+  double dispersion;
+  zr_source_loc dispersion_where;
 } zr_interior;
 
 /*

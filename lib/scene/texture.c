@@ -31,9 +31,10 @@
  * is taken off it, and the result goes back to world space by the
  * inverse transpose of the transform.  So a uniform scale of the pattern
  * leaves the tilt as it is, a non-uniform one changes it.  The gradient
- * comes from central differences "accuracy" (default 0.02, the manual's
- * "Normals, Accuracy", 3.4.6.2.2.1; the central differences are our
- * own) pattern units apart.  bumps, dents and wrinkles add bump_size
+ * comes from the height at the corners of a regular tetrahedron
+ * "accuracy" (default 0.02, the manual's "Normals, Accuracy",
+ * 3.4.6.2.2.1) pattern units around the point, as povray's renders show
+ * (slope_corner).  bumps, dents and wrinkles add bump_size
  * times a vector noise instead (times the cube of the noise for dents,
  * an octave sum of its absolute value for wrinkles), as
  * bench/conform/bump_fit.py measures.
@@ -431,6 +432,27 @@ static double tilt_gain(const zr_normal *nm) {
   }
 }
 
+/*
+ * Where the height is sampled around a point, in units of accuracy
+ * (pattern space): the corners of a regular tetrahedron, one on +y and
+ * three below it at y = -1/3, the first on +x.  Measured by
+ * bench/conform/normal_stencil_probe.sh: a gradient pattern's ramp
+ * jumps from 1 to 0 at a plane, and povray 3.7 perturbs the normal of
+ * the points within reach of the jump by how far its samples reach
+ * across each axis: x +0.9428 and -0.4714, y +1 and -1/3, z +-0.8165
+ * times accuracy (to 1e-4 accuracy), and the tilts on either side of
+ * the jump are those of the corners across it.  Before, central
+ * differences reached +-1 along each axis: the perturbed band around
+ * each jump was wider and tilted another way, and high frequencies
+ * (witch.pov's radial 0.5 frequency 20 sine_wave) tilted otherwise.
+ */
+static const zr_vec3 slope_corner[4] = {
+    {0.94280904158206336, -1.0 / 3, 0},
+    {-0.47140452079103168, -1.0 / 3, 0.81649658092772603},
+    {-0.47140452079103168, -1.0 / 3, -0.81649658092772603},
+    {0, 1, 0},
+};
+
 /* The tilt of the slope of the normal's height at p (pattern space),
    times bump_size and the pattern's gain. */
 static zr_vec3 slope_tilt(const zr_normal *nm, zr_vec3 p) {
@@ -445,14 +467,14 @@ static zr_vec3 slope_tilt(const zr_normal *nm, zr_vec3 p) {
               freq > 0 && !(nm->slope_map && nm->slope_map->n > 0);
   if (wavy && freq > 1)
     h /= freq;
-  zr_vec3 g = zr_v3(
-      height(nm, zr_v3(p.x + h, p.y, p.z)) -
-          height(nm, zr_v3(p.x - h, p.y, p.z)),
-      height(nm, zr_v3(p.x, p.y + h, p.z)) -
-          height(nm, zr_v3(p.x, p.y - h, p.z)),
-      height(nm, zr_v3(p.x, p.y, p.z + h)) -
-          height(nm, zr_v3(p.x, p.y, p.z - h)));
-  g = zr_v3_scale(g, nm->amount * tilt_gain(nm) / (2 * h));
+  /* The height at the four corners of a regular tetrahedron h around
+     p, each weighed by its corner: for a linear height the sum is 4/3 h
+     times the gradient (the corners' outer products add to 4/3). */
+  zr_vec3 g = zr_v3(0, 0, 0);
+  for (int k = 0; k < 4; k++)
+    g = zr_v3_madd(g, slope_corner[k],
+                   height(nm, zr_v3_madd(p, slope_corner[k], h)));
+  g = zr_v3_scale(g, nm->amount * tilt_gain(nm) * 0.75 / h);
   if (wavy)
     g = zr_v3_scale(g, 1 / freq);
   return g;

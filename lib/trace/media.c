@@ -758,7 +758,7 @@ zr_rgb zr__media_along(const zr_tracer *tracer, const zr_media *inside,
     const zr_object *o = inside->objects[i];
     if (!o->hollow)
       return colour; /* a solid object holds no media a ray sees */
-    const zr_interior *in = o->interior;
+    const zr_interior *in = inside->interiors[i];
     for (size_t k = 0; in && k < in->n_media && n < ZR_MEDIA_LIST_MAX; k++)
       list[n++] = in->media[k];
   }

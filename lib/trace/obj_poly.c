@@ -43,6 +43,63 @@ static void linear_powers(double a, double b, int n,
   }
 }
 
+/* Both Cauchy's bound, 1 + max |c_m / c_deg|, and Fujiwara's,
+   2 max |c_m / c_deg|^(1 / (deg - m)) (with c_0 halved), hold every
+   root; Fujiwara's is far smaller when the leading coefficient is
+   small (a ray nearly along an asymptotic direction, or a quartic's
+   x^4 for a ray almost across x), where Cauchy's put the search's ends
+   at 1e9 for roots near 1.  c[deg] is not zero. */
+static double root_bound(const double *c, int deg) {
+  double cauchy = 0.0, fujiwara = 0.0;
+  for (int m = 0; m < deg; m++) {
+    double r = fabs(c[m] / c[deg]);
+    cauchy = fmax(cauchy, r);
+    if (m == 0)
+      r *= 0.5;
+    fujiwara = fmax(fujiwara, deg - m == 1   ? r
+                              : deg - m == 2 ? sqrt(r)
+                                             : pow(r, 1.0 / (deg - m)));
+  }
+  return fmin(cauchy + 1.0, 2.0 * fujiwara);
+}
+
+/*
+ * The degree P(t) is solved at: leading coefficients that vanish
+ * against the others (1e-12 of the largest) are dropped, but only while
+ * they stay negligible (1e-9 of the largest term) out to the bound on
+ * the roots of what is left.  A ray nearly across a quartic's x (the
+ * Piriform of objects/quartic/teardrop.pov, seen at eye height) has an
+ * x^4 term of 1e-11 beside terms of 16: dropped, the cubic left had a
+ * root at 1e7 that the quartic has not, and a line of false hits ran
+ * across the picture.  0 when P is constant.
+ */
+static int lowered_degree(const double *c, int n) {
+  double big = 0.0;
+  for (int m = 0; m <= n; m++)
+    big = fmax(big, fabs(c[m]));
+  int deg = n;
+  while (deg > 0 && c[deg] == 0.0)
+    deg--;
+  while (deg > 0 && !(fabs(c[deg]) > 1e-12 * big)) {
+    int r = deg - 1;
+    while (r > 0 && c[r] == 0.0)
+      r--;
+    if (r == 0)
+      return 0;
+    double b = root_bound(c, r), head = 0.0, rest = 0.0, bm = 1.0;
+    for (int m = 0; m <= deg; m++, bm *= b) {
+      if (m <= r)
+        rest = fmax(rest, fabs(c[m]) * bm);
+      else
+        head = fmax(head, fabs(c[m]) * bm);
+    }
+    if (head > 1e-9 * rest)
+      break;
+    deg = r;
+  }
+  return deg;
+}
+
 int zr__poly_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
                        double tmin, double tmax, double t[4],
                        zr_vec3 normal[4]) {
@@ -72,31 +129,10 @@ int zr__poly_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
           for (int w = 0; w <= k; w++)
             c[u + w] += a[term] * xy[u] * pz[k][w];
       }
-  double big = 0.0;
-  for (int m = 0; m <= n; m++)
-    big = fmax(big, fabs(c[m]));
-  int deg = n;
-  while (deg > 0 && !(fabs(c[deg]) > 1e-12 * big))
-    deg--;
+  int deg = lowered_degree(c, n);
   if (deg == 0)
     return 0;
-  /* Both Cauchy's bound, 1 + max |c_m / c_deg|, and Fujiwara's,
-     2 max |c_m / c_deg|^(1 / (deg - m)) (with c_0 halved), hold every
-     root; Fujiwara's is far smaller when the leading coefficient is
-     small (a ray nearly along an asymptotic direction, or a quartic's
-     x^4 for a ray almost across x), where Cauchy's put the search's
-     ends at 1e9 for roots near 1. */
-  double cauchy = 0.0, fujiwara = 0.0;
-  for (int m = 0; m < deg; m++) {
-    double r = fabs(c[m] / c[deg]);
-    cauchy = fmax(cauchy, r);
-    if (m == 0)
-      r *= 0.5;
-    fujiwara = fmax(fujiwara, deg - m == 1   ? r
-                              : deg - m == 2 ? sqrt(r)
-                                             : pow(r, 1.0 / (deg - m)));
-  }
-  double bound = fmin(cauchy + 1.0, 2.0 * fujiwara);
+  double bound = root_bound(c, deg);
   /* A ray leaving the surface starts where the expanded coefficients
      put a spurious root within their rounding of t = 0, so roots closer
      than a millionth of the origin's scale are not crossings (our own

@@ -188,7 +188,8 @@ static void follow(shooter *sh, zr_vec3 origin, zr_vec3 dir, zr_rgb power,
     zr_vec3 p = zr_v3_madd(origin, dir, hit.t);
     double d_total = path + hit.t;
     if (media && media->n > 0)
-      power = zr__interior_fade(media, hit.t, power);
+      power = zr__exit_fade(media, o, zr_v3_dot(hit.normal, dir) < 0.0,
+                            hit.t, power);
     bool pass = po ? po->pass_through : o->no_shadow;
     if (pass && !bounced) {
       origin = zr_v3_madd(p, dir, zr__surface_offset(p));
@@ -232,7 +233,7 @@ static void follow(shooter *sh, zr_vec3 origin, zr_vec3 dir, zr_rgb power,
     const zr_object *solid = o->solid ? o->solid : o;
     zr_media next;
     if (zr__has_inside(solid))
-      zr__media_change(media, solid, entering, &next);
+      zr__media_change(media, solid, o->interior, entering, &next);
     else if (media)
       next = *media;
     else

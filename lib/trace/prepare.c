@@ -80,14 +80,17 @@ static zr_object *resolve_part(zr_scene *scene, const zr_object *object,
      interior { ior 1.5 }) as the box alone, where the default interior
      of the whole let the rays through unbent (advanced/glasschess.pov's
      blocks vanished).  Parts with different interiors (wineglass.pov's
-     merge of rim, bowl, beads and stem) keep the default: one interior
-     per part is not modelled. */
+     merge of rim, bowl, beads and stem) leave the whole the default, but
+     a ray entering the solid takes the interior of the part it enters
+     by (lib/trace/shade.c zr__media_change, stretch_interior); a part
+     without one has the whole's (the sphere cut out of the box above
+     is glass when the ray enters the box again by it). */
   if (!copy->interior && !solid) {
     bool mixed = false;
     copy->interior = parts_interior(object, &mixed);
   }
   if (!copy->interior)
-    copy->interior = scene->default_interior;
+    copy->interior = solid ? solid->interior : scene->default_interior;
   copy->solid = solid;
   if (!zr__is_csg(object->kind) || object->u.csg.n_children == 0)
     return copy;

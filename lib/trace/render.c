@@ -139,8 +139,10 @@ void zr__camera_media(const zr_scene *scene, zr_media *media) {
     return;
   /* zr__scene_finish found them. */
   for (int i = 0; i < scene->n_camera_inside && media->n < ZR_MEDIA_MAX;
-       i++)
-    media->objects[media->n++] = scene->camera_inside[i];
+       i++) {
+    media->objects[media->n] = scene->camera_inside[i];
+    media->interiors[media->n++] = scene->camera_inside[i]->interior;
+  }
 }
 
 /* The normal quantile for a two-sided confidence c (0.9 -> 1.645), by

@@ -249,11 +249,11 @@ static bool shadow_visit(const zr_hit *hit, void *user) {
     zr_colour c = zr__pigment_at(tx->pigment, p);
     w->light = zr_rgb_mul(w->light, see_through(c));
   }
-  if (solid->interior && solid->interior->caustics > 0.0 &&
-      rgb_max(w->light) > 0.0)
-    w->light = zr_rgb_scale(w->light,
-                            fake_caustics(w->ray, hit, p,
-                                          solid->interior->caustics));
+  /* The part's interior: a CSG part keeps its own (lib/trace/prepare.c;
+     wineglass.pov's merge gives every part caustics 2). */
+  if (o->interior && o->interior->caustics > 0.0 && rgb_max(w->light) > 0.0)
+    w->light = zr_rgb_scale(w->light, fake_caustics(w->ray, hit, p,
+                                                    o->interior->caustics));
   if (rgb_max(w->light) > 0.0)
     return true;
   w->blocker = o;
@@ -410,25 +410,30 @@ double zr__fresnel(double cos_i, double n1, double n2) {
 double zr__media_ior(const zr_media *media) {
   if (!media || media->n == 0)
     return 1.0;
-  return media->objects[media->n - 1]->interior->ior;
+  return media->interiors[media->n - 1]->ior;
 }
 
 /* media with object added (entering) or removed (leaving). */
 void zr__media_change(const zr_media *in, const zr_object *object,
-                      bool entering, zr_media *out) {
+                      const zr_interior *interior, bool entering,
+                      zr_media *out) {
   out->n = 0;
   out->passes = 0;
   if (in)
     *out = *in;
   if (entering) {
-    if (out->n < ZR_MEDIA_MAX)
-      out->objects[out->n++] = object;
+    if (out->n < ZR_MEDIA_MAX) {
+      out->objects[out->n] = object;
+      out->interiors[out->n++] = interior ? interior : object->interior;
+    }
     return;
   }
   for (int i = out->n - 1; i >= 0; i--)
     if (out->objects[i] == object) {
-      for (int j = i; j + 1 < out->n; j++)
+      for (int j = i; j + 1 < out->n; j++) {
         out->objects[j] = out->objects[j + 1];
+        out->interiors[j] = out->interiors[j + 1];
+      }
       out->n--;
       return;
     }
@@ -725,10 +730,7 @@ static zr_rgb reflection_amount(const surface *s, double n1, double n2) {
  * fade_distance 1), with fade_colour + (1 - fade_colour) times that per
  * channel ("fade_color colorizes the attenuation").
  */
-zr_rgb zr__interior_fade(const zr_media *media, double d, zr_rgb c) {
-  if (!media || media->n == 0)
-    return c;
-  const zr_interior *in = media->objects[media->n - 1]->interior;
+static zr_rgb fade_by(const zr_interior *in, double d, zr_rgb c) {
   if (!in || !(in->fade_distance > 0.0) || in->fade_power == 0.0)
     return c;
   double a = in->fade_power >= 1000.0
@@ -739,6 +741,41 @@ zr_rgb zr__interior_fade(const zr_media *media, double d, zr_rgb c) {
   zr_rgb f = in->fade_colour;
   return zr_rgb3(c.r * (f.r + (1.0 - f.r) * a), c.g * (f.g + (1.0 - f.g) * a),
                  c.b * (f.b + (1.0 - f.b) * a));
+}
+
+zr_rgb zr__interior_fade(const zr_media *media, double d, zr_rgb c) {
+  if (!media || media->n == 0)
+    return c;
+  return fade_by(media->interiors[media->n - 1], d, c);
+}
+
+/*
+ * The interior that fades the stretch of a ray ending where it meets
+ * part (NULL: none).  povray 3.7 fades a stretch only where the ray
+ * leaves an object it is inside, by that object's interior, and only
+ * over the stretch since the surface before: behind a clear block of
+ * fade_distance 1 with a clear block nested in its middle, 1.5 units of
+ * the 4 through the outer block are faded (0.4 of the light, not 0.16);
+ * where two overlapping blocks each have an interior, only the stretch
+ * from entering the second to leaving the first; a merge left through a
+ * part of another interior than the one it was entered by is not faded
+ * (tests/test_merge_interior.sh measures these).
+ */
+static const zr_interior *stretch_interior(const zr_media *media,
+                                           const zr_object *part,
+                                           bool entering) {
+  if (entering || !media)
+    return NULL;
+  const zr_object *solid = part->solid ? part->solid : part;
+  for (int i = media->n - 1; i >= 0; i--)
+    if (media->objects[i] == solid)
+      return media->interiors[i] == part->interior ? part->interior : NULL;
+  return NULL;
+}
+
+zr_rgb zr__exit_fade(const zr_media *media, const zr_object *part,
+                     bool entering, double d, zr_rgb c) {
+  return fade_by(stretch_interior(media, part, entering), d, c);
 }
 
 /* A reflected ray's tracer: it no longer hides no_image objects, and
@@ -784,7 +821,7 @@ static void media_beyond(const surface *s, const zr_media *media,
      (its normal points out of the solid: lib/trace/csg.c). */
   const zr_object *solid = s->object->solid ? s->object->solid : s->object;
   if (zr__has_inside(solid))
-    zr__media_change(media, solid, s->entering, next);
+    zr__media_change(media, solid, s->object->interior, s->entering, next);
   else if (media)
     *next = *media; /* a flat object has no interior to enter */
   else
@@ -1216,14 +1253,14 @@ static bool nearest_shown(const zr_tracer *tracer, const zr_ray *ray,
  * of white less what it makes of black.
  */
 static double clear_along(const zr_tracer *tracer, const zr_media *media,
-                          const zr_ray *ray, double t, bool fade) {
+                          const zr_ray *ray, double t,
+                          const zr_interior *fade) {
   zr_rgb ends[2];
   for (int k = 0; k < 2; k++) {
     zr_rgb c = zr_rgb3(k, k, k);
     c = zr__media_along(tracer, media, ray->origin, ray->dir, t, c);
     c = zr__atmosphere_apply(tracer->scene, ray->origin, ray->dir, t, c);
-    if (fade)
-      c = zr__interior_fade(media, t * zr_v3_len(ray->dir), c);
+    c = fade_by(fade, t * zr_v3_len(ray->dir), c);
     ends[k] = c;
   }
   return zr__grey(zr_rgb3(ends[1].r - ends[0].r, ends[1].g - ends[0].g,
@@ -1234,7 +1271,7 @@ static double clear_along(const zr_tracer *tracer, const zr_media *media,
    since before by what the way to the surface lets through (+UA). */
 static void clear_through_way(const zr_tracer *tracer, double before,
                               const zr_media *media, const zr_ray *ray,
-                              double t, bool fade) {
+                              double t, const zr_interior *fade) {
   double added = *tracer->clear - before;
   if (added != 0.0)
     *tracer->clear =
@@ -1278,7 +1315,10 @@ static zr_rgb trace_upto(const zr_tracer *tracer, const zr_ray *ray,
                                : zr__sky_colour(scene, ray->dir);
     if (clear > 0.0)
       *tracer->clear += tracer->clear_weight * clear *
-                        clear_along(tracer, media, ray, INFINITY, true);
+                        clear_along(tracer, media, ray, INFINITY,
+                                    media && media->n > 0
+                                        ? media->interiors[media->n - 1]
+                                        : NULL);
     sky = zr__media_along(tracer, media, ray->origin, ray->dir, INFINITY,
                           sky);
     return zr__interior_fade(media, INFINITY,
@@ -1313,7 +1353,7 @@ static zr_rgb trace_upto(const zr_tracer *tracer, const zr_ray *ray,
                                  media)
                     : shade_layers(tracer, &s, n, tx, level, weight, media);
     if (tracer->clear)
-      clear_through_way(tracer, before, media, ray, hit.t, false);
+      clear_through_way(tracer, before, media, ray, hit.t, NULL);
     c = zr__media_along(tracer, media, ray->origin, ray->dir, hit.t, c);
     return fogged(scene, media, ray->origin, ray->dir, hit.t, c);
   }
@@ -1340,16 +1380,16 @@ static zr_rgb trace_upto(const zr_tracer *tracer, const zr_ray *ray,
     return l;
   }
   /* Media, fog and rainbows between the ray's origin and the hit, and
-     the fading of the interior the ray crossed. */
+     the fading of the interior the ray leaves here. */
   double before = tracer->clear ? *tracer->clear : 0.0;
   zr_rgb lit = shade(tracer, &s, level, weight, media);
+  const zr_interior *fade = stretch_interior(media, hit.object, s.entering);
   if (tracer->clear)
-    clear_through_way(tracer, before, media, ray, hit.t, true);
+    clear_through_way(tracer, before, media, ray, hit.t, fade);
   zr_rgb c = zr__media_along(tracer, media, ray->origin, ray->dir, hit.t,
                              lit);
-  return zr__interior_fade(
-      media, hit.t * zr_v3_len(ray->dir),
-      fogged(scene, media, ray->origin, ray->dir, hit.t, c));
+  return fade_by(fade, hit.t * zr_v3_len(ray->dir),
+                 fogged(scene, media, ray->origin, ray->dir, hit.t, c));
 }
 
 zr_rgb zr__trace_ray(const zr_tracer *tracer, const zr_ray *ray, int level,

@@ -20,11 +20,15 @@
  */
 #define ZR_PASS_MAX 256
 
-/* The objects a ray is inside, innermost last: the ior of the medium it
-   travels through is the innermost one's.  Also the number of surfaces
-   the path went straight through. */
+/* The objects a ray is inside, innermost last, each with the interior
+   of the part it was entered by (a CSG part may have its own: povray
+   3.7 keeps the part's interior, wineglass.pov's merge of parts of
+   different ior and fade_distance): the ior of the medium it travels
+   through is the innermost one's.  Also the number of surfaces the path
+   went straight through. */
 typedef struct zr_media {
   const zr_object *objects[ZR_MEDIA_MAX];
+  const zr_interior *interiors[ZR_MEDIA_MAX];
   int n;
   int passes;
 } zr_media;
@@ -223,9 +227,16 @@ zr_rgb zr__reflection_amount(const zr_finish *f, zr_colour colour,
 /* c after travelling distance d inside media's innermost object
    (its interior's fade_distance, fade_power, fade_colour). */
 zr_rgb zr__interior_fade(const zr_media *media, double d, zr_rgb c);
-/* media with object added (entering) or removed; the ior inside. */
+/* c after the last stretch, of length d, of a ray that meets part at a
+   surface: faded by the part's interior when the ray leaves through it
+   an object it entered with that interior (shade.c explains). */
+zr_rgb zr__exit_fade(const zr_media *media, const zr_object *part,
+                     bool entering, double d, zr_rgb c);
+/* media with object added (entering, with the interior of the part it
+   is entered by) or removed; the ior inside. */
 void zr__media_change(const zr_media *in, const zr_object *object,
-                      bool entering, zr_media *out);
+                      const zr_interior *interior, bool entering,
+                      zr_media *out);
 double zr__media_ior(const zr_media *media);
 
 /* The mirror direction of unit d about unit n. */
