@@ -569,16 +569,16 @@ static int add_roots(double a, double b, double c, double depth,
    light's location), and where it passes BEAM_REACH. */
 static int light_cuts(const march *m, const zr_light *light, double depth,
                       double *cuts, int n) {
-  zr_vec3 axis = zr_v3_sub(light->point_at, light->location);
-  double al = zr_v3_len(axis);
-  if (!(al > 0.0))
+  /* No beam when point_at is the location (its derived axis is then
+     <0,1,0>, which lights_media() does not single out). */
+  if (!(zr_v3_len(zr_v3_sub(light->point_at, light->location)) > 0.0))
     return n;
-  axis = zr_v3_scale(axis, 1.0 / al);
+  zr_vec3 axis = zr_v3_scale(light->axis, -1.0);
   zr_vec3 w = zr_v3_sub(m->origin, light->location);
   double dw = zr_v3_dot(m->dir, axis), ww = zr_v3_dot(w, axis);
   if (light->kind == ZR_LIGHT_SPOT) {
     /* (w + t d) . axis = cos(falloff) |w + t d|, squared. */
-    double cf = cos(light->falloff * 3.14159265358979323846 / 180.0);
+    double cf = light->cos_falloff;
     double c2 = cf * cf;
     n = add_roots(dw * dw - c2, 2.0 * (dw * ww - c2 * zr_v3_dot(w, m->dir)),
                   ww * ww - c2 * zr_v3_dot(w, w), depth, cuts, n);
