@@ -264,3 +264,10 @@ EXTRA_DIST += tests/test_no_shadow_interior.sh tests/no_shadow_interior.pov
 
 TESTS += tests/test_csg_area_shadow.sh
 EXTRA_DIST += tests/test_csg_area_shadow.sh tests/csg_area_shadow.pov
+
+# Thick media as bright as POV-Ray's method 3 cells make them (the
+# scattering box of issue 16), povray's values.
+TESTS += tests/test_media_cells.sh
+EXTRA_DIST += tests/test_media_cells.sh tests/media_cells.pov \
+	bench/media_quadrature.py \
+	bench/results/media-quadrature-2026-12-02.txt
