@@ -17,15 +17,18 @@
  * the emission integral; see any text on radiative transfer, e.g.
  * Chandrasekhar, "Radiative Transfer", 1950).
  *
- * Quadrature.  k and j are sampled at points along the ray, taken as
- * varying linearly between neighbouring points and as constant between
- * an end of an interval and the sample nearest to it.  Over a span of
- * length h whose mean extinction is k and mean source j this is exact:
+ * Quadrature.  k and j are sampled at points along the ray.  Shadow
+ * rays and methods 1 and 2 take them as varying linearly between
+ * neighbouring points and as constant between an end of an interval
+ * and the sample nearest to it; over a span of length h whose mean
+ * extinction is k and mean source j this is exact:
  *     T_span = exp(-k h),  emitted = j (1 - exp(-k h)) / k  (j h at k 0),
  * and spans combine front to back (the light of a span is dimmed by the
- * transmittance of the spans before it).  So constant media are exact
- * whatever the samples (the test relies on it), and smooth ones converge
- * as the points get closer.
+ * transmittance of the spans before it).  Method 3 on rays that gather
+ * light sums cells as POV-Ray 3.7 does instead (measured: see
+ * gather_cell()): a cell's light is its mean source times its length,
+ * dimmed only by the cells before it, which is brighter than the exact
+ * value when a cell is optically thick (what POV-Ray's pictures show).
  *
  * Where the points go (the manual's sampling parameters):
  *   - The ray is first cut where it enters or leaves the cone of a
@@ -37,20 +40,14 @@
  *     piece whose share is then the smallest for its weight: length
  *     times ratio for lit pieces, length times (1 - ratio) for the
  *     others.
- *   - method 3: `min samples` samples spread evenly over an interval,
- *     its two ends among them (at least those two), cut it into cells
- *     (on rays that gather light the samples take the coefficients of
- *     the first n / (n + 1) of the interval stretched over all of it,
- *     n = floor(min samples / 2) + 1, as measured of POV-Ray: reach()),
- *     each halved once more on rays that gather light; jitter moves
- *     each inner sample by up to jitter / 2 of a cell.  With min
- *     samples 3 or more (the manual: adaptive sampling only then), and
- *     on rays that are not shadow rays, a cell whose two end samples
- *     differ by more than aa_threshold (the largest channel of
- *     |j_a - j_b| + |k_a - k_b| times the length of the cell that
- *     shows, h (1 - exp(-k h)) / (k h), and the transmittance up to the
- *     cell: about how far the cell's light, as seen from the origin, may
- *     be off) is halved, recursively, up to aa_level times.  Shadow
+ *   - method 3: an interval is cut into n = floor(max(min samples,
+ *     3) / 2) + 1 cells, each sampled at its ends and middle; the
+ *     samples take the coefficients of the first n / (n + 1) of the
+ *     interval stretched over all of it (reach()); jitter moves each
+ *     inner cell end by up to jitter / 2 of a cell.  With min samples 3
+ *     or more (the manual: adaptive sampling only then) a cell whose
+ *     samples differ (change()) is halved, up to aa_level - 1 times
+ *     (gather_cell() gives the measurements).  Shadow
  *     rays take the same first n / (n + 1) of each interval with 2 n
  *     cells and no halving, as measured of POV-Ray
  *     (bench/media_shadow.py, see reach()).  A shadow ray stops once it
@@ -380,7 +377,7 @@ static double measure(const sample *a, double len) {
  * stand for all of it.  Rays that gather light do the same here (the
  * coefficients of the point at s0 + reach (s - s0) are used at s), so
  * media whose density varies along the ray look as in POV-Ray's
- * pictures at the scenes' own settings; constant media are unchanged.
+ * pictures at the scenes' own settings.
  *
  * Shadow rays do the same, measured by bench/media_shadow.py: light
  * crossing a slab whose absorbing density rises linearly from 0 to 1
