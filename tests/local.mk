@@ -279,3 +279,10 @@ EXTRA_DIST += tests/test_normal_stencil.sh tests/normal_stencil.pov \
 # A quartic's small leading term kept where it matters, povray's values.
 TESTS += tests/test_poly_degree.sh
 EXTRA_DIST += tests/test_poly_degree.sh tests/poly_degree.pov
+
+# Thick media as bright as POV-Ray's method 3 cells make them (the
+# scattering box of issue 16), povray's values.
+TESTS += tests/test_media_cells.sh
+EXTRA_DIST += tests/test_media_cells.sh tests/media_cells.pov \
+	bench/media_quadrature.py \
+	bench/results/media-quadrature-2026-12-02.txt

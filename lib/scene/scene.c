@@ -9,6 +9,7 @@
 
 #include "core/budget.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -143,11 +144,21 @@ zr_status zr__scene_add_object(zr_scene *scene, zr_object *object) {
   return s;
 }
 
+void zr__light_derive(zr_light *light) {
+  const double deg = 3.14159265358979323846 / 180.0;
+  zr_vec3 a = zr_v3_sub(light->location, light->point_at);
+  light->axis = zr_v3_len(a) == 0.0 ? zr_v3(0, 1, 0) : zr_v3_norm(a);
+  light->cos_falloff = cos(light->falloff * deg);
+  light->cos_radius = cos(light->radius * deg);
+}
+
 zr_status zr__scene_add_light(zr_scene *scene, const zr_light *light) {
   zr_status s = grow((void **)&scene->lights, &scene->cap_lights,
                      scene->n_lights, sizeof *scene->lights);
-  if (s == ZR_OK)
-    scene->lights[scene->n_lights++] = *light;
+  if (s == ZR_OK) {
+    scene->lights[scene->n_lights] = *light;
+    zr__light_derive(&scene->lights[scene->n_lights++]);
+  }
   return s;
 }
 

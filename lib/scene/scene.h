@@ -849,6 +849,12 @@ typedef struct zr_light {
      the objects of that group and of the groups inside it. */
   uint32_t light_group;
   zr_source_loc where;
+  /* Derived by zr__scene_add_light() from the fields above, so that
+     shading asks no cos() or sqrt() per point: the unit axis from
+     point_at toward location (<0,1,0> when they coincide), and the
+     cosines of a spotlight's falloff and radius angles. */
+  zr_vec3 axis;
+  double cos_falloff, cos_radius;
 } zr_light;
 
 typedef enum zr_camera_kind {
@@ -1111,6 +1117,9 @@ void zr__settings_init(zr_settings *s);
 /* A new empty scene with POV-Ray's defaults; NULL when out of memory. */
 zr_scene *zr__scene_new(void);
 zr_status zr__scene_add_object(zr_scene *scene, zr_object *object);
+/* Adds a copy of light, its derived fields (axis, cos_falloff,
+   cos_radius) filled in by zr__light_derive(). */
 zr_status zr__scene_add_light(zr_scene *scene, const zr_light *light);
+void zr__light_derive(zr_light *light);
 
 #endif /* ZR_SCENE_SCENE_H */

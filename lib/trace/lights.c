@@ -73,16 +73,11 @@ static double smoothstep01(double t) {
 }
 
 /* The unit axis of a spot, cylinder or parallel light: from point_at
-   toward the light (so dot(axis, l) > 0 for a lit point). */
-static zr_vec3 light_axis(const zr_light *light) {
-  zr_vec3 a = zr_v3_sub(light->location, light->point_at);
-  if (zr_v3_len(a) == 0.0)
-    return zr_v3(0, 1, 0);
-  return zr_v3_norm(a);
-}
+   toward the light (so dot(axis, l) > 0 for a lit point), derived when
+   the light was added to the scene (zr__light_derive()). */
+static zr_vec3 light_axis(const zr_light *light) { return light->axis; }
 
 double zr__light_cone(const zr_light *light, zr_vec3 p) {
-  const double deg = 3.14159265358979323846 / 180.0;
   zr_vec3 axis = light_axis(light);
   zr_vec3 to_p = zr_v3_sub(p, light->location);
   if (light->kind == ZR_LIGHT_SPOT) {
@@ -90,7 +85,7 @@ double zr__light_cone(const zr_light *light, zr_vec3 p) {
     if (len == 0.0)
       return 1.0;
     double c = -zr_v3_dot(to_p, axis) / len;
-    double cf = cos(light->falloff * deg), cr = cos(light->radius * deg);
+    double cf = light->cos_falloff, cr = light->cos_radius;
     double f;
     if (c <= cf)
       return 0.0;

@@ -17,15 +17,18 @@
  * the emission integral; see any text on radiative transfer, e.g.
  * Chandrasekhar, "Radiative Transfer", 1950).
  *
- * Quadrature.  k and j are sampled at points along the ray, taken as
- * varying linearly between neighbouring points and as constant between
- * an end of an interval and the sample nearest to it.  Over a span of
- * length h whose mean extinction is k and mean source j this is exact:
+ * Quadrature.  k and j are sampled at points along the ray.  Shadow
+ * rays and methods 1 and 2 take them as varying linearly between
+ * neighbouring points and as constant between an end of an interval
+ * and the sample nearest to it; over a span of length h whose mean
+ * extinction is k and mean source j this is exact:
  *     T_span = exp(-k h),  emitted = j (1 - exp(-k h)) / k  (j h at k 0),
  * and spans combine front to back (the light of a span is dimmed by the
- * transmittance of the spans before it).  So constant media are exact
- * whatever the samples (the test relies on it), and smooth ones converge
- * as the points get closer.
+ * transmittance of the spans before it).  Method 3 on rays that gather
+ * light sums cells as POV-Ray 3.7 does instead (measured: see
+ * gather_cell()): a cell's light is its mean source times its length,
+ * dimmed only by the cells before it, which is brighter than the exact
+ * value when a cell is optically thick (what POV-Ray's pictures show).
  *
  * Where the points go (the manual's sampling parameters):
  *   - The ray is first cut where it enters or leaves the cone of a
@@ -37,20 +40,14 @@
  *     piece whose share is then the smallest for its weight: length
  *     times ratio for lit pieces, length times (1 - ratio) for the
  *     others.
- *   - method 3: `min samples` samples spread evenly over an interval,
- *     its two ends among them (at least those two), cut it into cells
- *     (on rays that gather light the samples take the coefficients of
- *     the first n / (n + 1) of the interval stretched over all of it,
- *     n = floor(min samples / 2) + 1, as measured of POV-Ray: reach()),
- *     each halved once more on rays that gather light; jitter moves
- *     each inner sample by up to jitter / 2 of a cell.  With min
- *     samples 3 or more (the manual: adaptive sampling only then), and
- *     on rays that are not shadow rays, a cell whose two end samples
- *     differ by more than aa_threshold (the largest channel of
- *     |j_a - j_b| + |k_a - k_b| times the length of the cell that
- *     shows, h (1 - exp(-k h)) / (k h), and the transmittance up to the
- *     cell: about how far the cell's light, as seen from the origin, may
- *     be off) is halved, recursively, up to aa_level times.  Shadow
+ *   - method 3: an interval is cut into n = floor(max(min samples,
+ *     3) / 2) + 1 cells, each sampled at its ends and middle; the
+ *     samples take the coefficients of the first n / (n + 1) of the
+ *     interval stretched over all of it (reach()); jitter moves each
+ *     inner cell end by up to jitter / 2 of a cell.  With min samples 3
+ *     or more (the manual: adaptive sampling only then) a cell whose
+ *     samples differ (change()) is halved, up to aa_level - 1 times
+ *     (gather_cell() gives the measurements).  Shadow
  *     rays take the same first n / (n + 1) of each interval with 2 n
  *     cells and no halving, as measured of POV-Ray
  *     (bench/media_shadow.py, see reach()).  A shadow ray stops once it
@@ -156,6 +153,7 @@ typedef struct march {
   plan pl;
   double reach;          /* method 3: see reach() */
   double interval_start; /* method 3: s0 of the interval being sampled */
+  double interval_length; /* method 3: its length */
   /* What is known so far: transmittance from the origin to the end of
      the last span, and the light gathered. */
   zr_rgb t, light;
@@ -322,20 +320,41 @@ static sample moved(const sample *from, double s) {
   return out;
 }
 
-/* How much the light of a stretch of length len may be off when the
-   coefficients differ as between samples a and b: the measure two ends
-   of a cell are compared with (method 3). */
-static double change(const sample *a, const sample *b, double len) {
+/* How far apart the coefficients of samples a and b are: the largest
+   channel of |j_a - j_b| + |k_a - k_b|, what method 3 weighs against
+   aa_threshold (see gather_cell()). */
+static double change(const sample *a, const sample *b) {
   zr_rgb dj = zr_rgb3(fabs(a->j.r - b->j.r), fabs(a->j.g - b->j.g),
                       fabs(a->j.b - b->j.b));
   zr_rgb dk = zr_rgb3(fabs(a->k.r - b->k.r), fabs(a->k.g - b->k.g),
                       fabs(a->k.b - b->k.b));
-  /* In media that are thick over the stretch only its first 1 / k
-     shows: the length that counts is len (1 - exp(-k len)) / (k len),
-     k the thinnest channel's extinction at the two samples. */
-  double k = 0.5 * fmin(a->k.r + b->k.r,
-                        fmin(a->k.g + b->k.g, a->k.b + b->k.b));
-  return rgb_max(zr_rgb_add(dj, dk)) * len * grow(k * len);
+  return rgb_max(zr_rgb_add(dj, dk));
+}
+
+/* Adds the cell from a to b whose middle sample is mid as POV-Ray's
+   method 3 does on rays that gather light (measured, see
+   gather_cell()): its coefficients are the mean of the three samples',
+   its light is that mean source times its length, dimmed by the
+   transmittance up to the cell's start only, and the transmittance
+   then falls by exp(-mean extinction * length). */
+static void add_cell(march *m, const sample *a, const sample *mid,
+                     const sample *b) {
+  double h = b->s - a->s;
+  if (!(h > 0.0))
+    return;
+  const double third = 1.0 / 3.0;
+  double k[3] = {(a->k.r + mid->k.r + b->k.r) * third,
+                 (a->k.g + mid->k.g + b->k.g) * third,
+                 (a->k.b + mid->k.b + b->k.b) * third};
+  double j[3] = {(a->j.r + mid->j.r + b->j.r) * third,
+                 (a->j.g + mid->j.g + b->j.g) * third,
+                 (a->j.b + mid->j.b + b->j.b) * third};
+  double *t[3] = {&m->t.r, &m->t.g, &m->t.b};
+  double *l[3] = {&m->light.r, &m->light.g, &m->light.b};
+  for (int c = 0; c < 3; c++) {
+    *l[c] += *t[c] * j[c] * h;
+    *t[c] *= exp(-k[c] * h);
+  }
 }
 
 /* The measure whose spread decides methods 1 and 2: the light of an
@@ -358,7 +377,7 @@ static double measure(const sample *a, double len) {
  * stand for all of it.  Rays that gather light do the same here (the
  * coefficients of the point at s0 + reach (s - s0) are used at s), so
  * media whose density varies along the ray look as in POV-Ray's
- * pictures at the scenes' own settings; constant media are unchanged.
+ * pictures at the scenes' own settings.
  *
  * Shadow rays do the same, measured by bench/media_shadow.py: light
  * crossing a slab whose absorbing density rises linearly from 0 to 1
@@ -375,8 +394,7 @@ static double measure(const sample *a, double len) {
  * says.
  */
 static int reach_cells(const march *m) {
-  int least = m->shadow ? 3 : 1;
-  return (m->pl.min_samples < least ? least : m->pl.min_samples) / 2 + 1;
+  return (m->pl.min_samples < 3 ? 3 : m->pl.min_samples) / 2 + 1;
 }
 
 static double reach(const march *m) {
@@ -399,44 +417,58 @@ static sample jittered(march *m, double s0, double s, double shove) {
   return out;
 }
 
-/* The cell from a to b, halved while its ends differ by more than the
-   threshold and levels remain. */
-static void cell(march *m, const sample *a, const sample *b, int levels) {
-  /* The change is weighed by what still shows of it through the media
-     before the cell: deep in fog a difference is not seen. */
+/*
+ * A cell of a ray that gathers light, as POV-Ray 3.7's method 3 takes
+ * it, measured black-box by bench/media_quadrature.py (see its output
+ * in bench/results/media-quadrature-2026-12-02.txt):
+ *   - an interval is cut into n = floor(max(min samples, 3) / 2) + 1
+ *     cells (n cells of length D / n: an absorbing, emitting slab of
+ *     depth D gives e h sum_{i<n} exp(-a i h), h = D / n, for min
+ *     samples 1 to 9, where the exact value is e (1 - exp(-a D)) / a;
+ *     so a medium whose cells are optically thick comes out brighter
+ *     than the exact integral: scattering {1, 1} absorption 1 in a
+ *     2-unit box, default samples, is 1.37 times it, and 1.03 with
+ *     samples 50);
+ *   - a cell samples its two ends and its middle (with the reach of
+ *     reach() above) and takes the mean of the three: an emitting
+ *     slab whose density is a step scanned through it with
+ *     aa_threshold 100 steps at 0, 1/6, 1/3, 1/2 and 2/3 with weights
+ *     1/6, 1/6, 1/3, 1/6, 1/6 (min samples 3), and densities z, 1 - z,
+ *     z^2, z^3 and sqrt(z) agree to 1e-5 with that rule;
+ *   - a cell whose samples differ is halved, each half sampled the same
+ *     way, at most aa_level - 1 times (the step scan shows 5, 9, 17 and
+ *     65 steps for aa_level 1, 2, 3 and 5, and 17 without aa_level);
+ *     povray halves the cell with a step of height e in an interval of
+ *     length D when e D is 0.05 or more and not when it is 0.03 or
+ *     less (D 0.25, 1 and 4, with or without absorption), so the test
+ *     here is change() times the interval's length against
+ *     aa_threshold / 3, inside that bracket.
+ */
+static void gather_cell(march *m, const sample *a, const sample *b,
+                        int levels) {
+  sample mid = reach_sample(m, m->interval_start, 0.5 * (a->s + b->s));
   if (levels > 0 &&
-      change(a, b, b->s - a->s) * rgb_max(m->t) > m->pl.aa_threshold) {
-    sample mid = reach_sample(m, m->interval_start, 0.5 * (a->s + b->s));
-    cell(m, a, &mid, levels - 1);
-    cell(m, &mid, b, levels - 1);
+      fmax(change(a, &mid), change(&mid, b)) * m->interval_length >
+          m->pl.aa_threshold / 3.0) {
+    gather_cell(m, a, &mid, levels - 1);
+    gather_cell(m, &mid, b, levels - 1);
     return;
   }
-  add_span(m, a, b);
+  add_cell(m, a, &mid, b);
 }
 
 static void adaptive_interval(march *m, double s0, double s1) {
   double len = s1 - s0;
   m->reach = reach(m);
   m->interval_start = s0;
-  /* A shadow ray takes the ends and middles of reach_cells() cells
-     (measured, see reach()).  A ray that gathers light takes 2 (min
-     samples - 1) cells: what lies between two samples (a beam, a shadow, the
-     edge of a density) is found by comparing them only when one of them
-     falls on it, and with min samples alone the stock scenes' own
-     settings leave visible misses (bench/media_warp_ssim.sh: media5.pov
-     scores 0.97 against POV-Ray's converged picture with min samples -
-     1 cells, 0.998 with twice that). */
-  int cells = m->pl.min_samples < 2 ? 1 : m->pl.min_samples - 1;
-  if (!m->shadow)
-    cells *= 2;
-  else
-    cells = 2 * reach_cells(m);
-  if (cells > MAX_CELLS)
-    cells = MAX_CELLS;
-  /* Shadow rays are not refined: their transmittance is smooth in the
-     coefficients, and each sample of a lit medium sends one (or an area
-     light's grid of them). */
-  int levels = m->pl.min_samples >= 3 && !m->shadow ? m->pl.aa_level : 0;
+  m->interval_length = len;
+  /* Both kinds of ray take reach_cells() cells; a shadow ray samples
+     the ends and middles of its cells as the ends of 2 n cells
+     (measured, see reach()).  Shadow rays are not refined: their
+     transmittance is smooth in the coefficients, and each sample of a
+     lit medium sends one (or an area light's grid of them). */
+  int cells = reach_cells(m) * (m->shadow ? 2 : 1);
+  int levels = m->pl.min_samples >= 3 && !m->shadow ? m->pl.aa_level - 1 : 0;
   double h = len / cells;
   /* Shadow rays' jitter moves where each sample's coefficients are
      taken forward by up to jitter / (n + 1) of the interval (n =
@@ -454,7 +486,10 @@ static void adaptive_interval(march *m, double s0, double s1) {
     if (!m->shadow && i < cells && m->pl.jitter > 0.0)
       s += m->pl.jitter * h * (uniform(m) - 0.5);
     sample b = jittered(m, s0, s, shove);
-    cell(m, &a, &b, levels);
+    if (m->shadow)
+      add_span(m, &a, &b);
+    else
+      gather_cell(m, &a, &b, levels);
     a = b;
   }
 }
@@ -569,16 +604,16 @@ static int add_roots(double a, double b, double c, double depth,
    light's location), and where it passes BEAM_REACH. */
 static int light_cuts(const march *m, const zr_light *light, double depth,
                       double *cuts, int n) {
-  zr_vec3 axis = zr_v3_sub(light->point_at, light->location);
-  double al = zr_v3_len(axis);
-  if (!(al > 0.0))
+  /* No beam when point_at is the location (its derived axis is then
+     <0,1,0>, which lights_media() does not single out). */
+  if (!(zr_v3_len(zr_v3_sub(light->point_at, light->location)) > 0.0))
     return n;
-  axis = zr_v3_scale(axis, 1.0 / al);
+  zr_vec3 axis = zr_v3_scale(light->axis, -1.0);
   zr_vec3 w = zr_v3_sub(m->origin, light->location);
   double dw = zr_v3_dot(m->dir, axis), ww = zr_v3_dot(w, axis);
   if (light->kind == ZR_LIGHT_SPOT) {
     /* (w + t d) . axis = cos(falloff) |w + t d|, squared. */
-    double cf = cos(light->falloff * 3.14159265358979323846 / 180.0);
+    double cf = light->cos_falloff;
     double c2 = cf * cf;
     n = add_roots(dw * dw - c2, 2.0 * (dw * ww - c2 * zr_v3_dot(w, m->dir)),
                   ww * ww - c2 * zr_v3_dot(w, w), depth, cuts, n);
@@ -676,7 +711,19 @@ static plan plan_of(const zr_medium *const *list, size_t n) {
 static void run_interval(march *m, double s0, double s1) {
   if (!(s1 > s0))
     return;
-  if (!m->varies) {
+  if (!m->varies && m->pl.method == 3 && !m->shadow) {
+    /* Constant coefficients: the cells of gather_cell() without
+       sampling again (no cell is halved). */
+    m->reach = reach(m);
+    int cells = reach_cells(m);
+    double h = (s1 - s0) / cells;
+    sample a = sample_at(m, s0);
+    for (int i = 0; i < cells; i++) {
+      sample from = moved(&a, s0 + i * h);
+      sample to = moved(&a, i + 1 == cells ? s1 : s0 + (i + 1) * h);
+      add_cell(m, &from, &from, &to);
+    }
+  } else if (!m->varies) {
     /* Constant coefficients: one span is exact. */
     sample a = sample_at(m, s0), b = moved(&a, s1);
     add_span(m, &a, &b);
@@ -724,7 +771,9 @@ zr_rgb zr__media_integrate(const zr_tracer *tracer,
        every piece in the deal without changing a real share. */
     weight[i] = (ends[i + 1] - ends[i]) * fmax(r, 1e-6);
   }
-  if (m.varies)
+  /* Every interval counts in method 3 on rays that gather light, even
+     in constant media (their cells are not exact: add_cell()). */
+  if (m.varies || (m.pl.method == 3 && !shadow))
     for (int left = m.pl.intervals - np; left > 0; left--) {
       int best = 0;
       for (int i = 1; i < np; i++)
