@@ -556,13 +556,6 @@ void zr__bvh_get_info(const struct zr_bvh *bvh, zr_bvh_info *info) {
   info->depth = bvh->depth;
 }
 
-/* A child waiting on the stack: a wide node (count 0) or a leaf's run of
-   primitives, with the distance at which the ray enters its box. */
-typedef struct wide_entry {
-  uint32_t child, count;
-  float t;
-} wide_entry;
-
 /*
  * The crossings of a sphere that has no transform and no clip, without
  * normals, as zr__intersect_t finds them through obj_sphere.c: the same
@@ -660,11 +653,11 @@ static bool nearest_t(const struct zr_bvh *bvh, const zr_ray *ray,
   const float tmin_f = zr__float_down(tmin);
   float tmax_f = zr__float_up(tmax);
   /* Children beyond a crossing found meanwhile are skipped unopened. */
-  wide_entry stack[WIDE_STACK_MAX];
+  zr_wide_entry stack[WIDE_STACK_MAX];
   int sp = 0;
-  stack[sp++] = (wide_entry){0, 0, tmin_f};
+  stack[sp++] = (zr_wide_entry){0, 0, tmin_f};
   while (sp > 0) {
-    wide_entry e = stack[--sp];
+    zr_wide_entry e = stack[--sp];
     if (e.t >= tmax)
       continue;
     if (e.count > 0) {
@@ -680,24 +673,9 @@ static bool nearest_t(const struct zr_bvh *bvh, const zr_ray *ray,
     const zr_wide_node *w = &bvh->wide[e.child];
     float t[WIDTH];
     unsigned mask = zr__slab_entries(w, &sr, tmin_f, tmax_f, t);
-    /* The children met, nearest first (ties keep the tree's order), are
-       pushed farthest first so the nearest is searched first and
-       shrinks tmax for the others. */
-    wide_entry met[WIDTH];
-    int n = 0;
-    for (uint32_t c = 0; c < WIDTH; c++) {
-      if (!(mask >> c & 1))
-        continue;
-      wide_entry x = {w->child[c], w->count[c], t[c]};
-      int k = n++;
-      while (k > 0 && met[k - 1].t > x.t) {
-        met[k] = met[k - 1];
-        k--;
-      }
-      met[k] = x;
-    }
-    for (int k = n - 1; k >= 0 && sp < WIDE_STACK_MAX; k--)
-      stack[sp++] = met[k];
+    /* The nearest child met is searched first and shrinks tmax for the
+       others. */
+    sp = zr__wide_push_nearest_first(w, mask, t, stack, sp, WIDE_STACK_MAX);
   }
   return found;
 }
@@ -789,11 +767,11 @@ bool zr__bvh_all_blocked(const struct zr_bvh *bvh, const zr_ray *ray,
   const float tmin_f = zr__float_down(tmin), tmax_f = zr__float_up(tmax);
   /* Leaves are visited in the tree's left-to-right order: children are
      pushed last to first. */
-  wide_entry stack[WIDE_STACK_MAX];
+  zr_wide_entry stack[WIDE_STACK_MAX];
   int sp = 0;
-  stack[sp++] = (wide_entry){0, 0, tmin_f};
+  stack[sp++] = (zr_wide_entry){0, 0, tmin_f};
   while (sp > 0) {
-    wide_entry e = stack[--sp];
+    zr_wide_entry e = stack[--sp];
     if (e.count > 0) {
       for (uint32_t i = e.child; i < e.child + e.count; i++) {
         int n = walk_crossings_t(bvh->prims[i], ray, tmin, tmax, blocks,
@@ -807,9 +785,7 @@ bool zr__bvh_all_blocked(const struct zr_bvh *bvh, const zr_ray *ray,
     const zr_wide_node *w = &bvh->wide[e.child];
     float t[WIDTH];
     unsigned mask = zr__slab_entries(w, &sr, tmin_f, tmax_f, t);
-    for (int c = WIDTH - 1; c >= 0 && sp < WIDE_STACK_MAX; c--)
-      if (mask >> c & 1)
-        stack[sp++] = (wide_entry){w->child[c], w->count[c], t[c]};
+    sp = zr__wide_push_in_order(w, mask, t, stack, sp, WIDE_STACK_MAX);
   }
   return true;
 }
