@@ -83,6 +83,10 @@ static zr_vec3 light_axis(const zr_light *light) {
 
 double zr__light_cone(const zr_light *light, zr_vec3 p) {
   const double deg = 3.14159265358979323846 / 180.0;
+  /* A point light shines every way: no axis to find (a square root and
+     a division for each light at each point shaded). */
+  if (light->kind != ZR_LIGHT_SPOT && light->kind != ZR_LIGHT_CYLINDER)
+    return 1.0;
   zr_vec3 axis = light_axis(light);
   zr_vec3 to_p = zr_v3_sub(p, light->location);
   if (light->kind == ZR_LIGHT_SPOT) {
