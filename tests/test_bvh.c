@@ -421,6 +421,47 @@ static void test_bvh_float_boxes_never_miss(void **state) {
   zr_scene_free(s);
 }
 
+/* The walks' own crossings of one primitive (plain spheres from their
+   leaf records or the fast path, others through the table) are
+   zr__intersect_t's, t for t; and the walk over a scene of spheres, plain
+   and transformed, visits each crossing the primitives give alone. */
+static bool sum_visit(const zr_hit *hit, void *user) {
+  double *sum = user;
+  sum[0] += hit->t;
+  sum[1] += 1.0;
+  return true;
+}
+
+static void test_bvh_crossings_match_intersect(void **state) {
+  (void)state;
+  uint64_t seed = 77;
+  zr_scene *s = random_scene(13, 800, true);
+  for (int i = 0; i < 1500; i++) {
+    zr_ray r = {random_point(&seed, 25), random_point(&seed, 1)};
+    double brute[2] = {0.0, 0.0};
+    for (size_t k = 0; k < s->n_primitives; k++) {
+      zr_hit a[ZR_MAX_CROSSINGS], b[ZR_MAX_CROSSINGS];
+      int na = zr__bvh_crossings_t(s->primitives[k], &r, 0.0, INFINITY, a);
+      int nb = zr__intersect_t(s->primitives[k], &r, 0.0, INFINITY, b);
+      assert_int_equal(na, nb);
+      for (int j = 0; j < na; j++) {
+        assert_true(a[j].t == b[j].t);
+        assert_ptr_equal(a[j].object, b[j].object);
+      }
+      /* Unbounded ones are walked first, then the leaves: summed in
+         another order, so compared below within rounding. */
+      for (int j = 0; j < na; j++)
+        brute[0] += a[j].t;
+      brute[1] += na;
+    }
+    double walk[2] = {0.0, 0.0};
+    assert_true(zr__bvh_all(s->bvh, &r, 0.0, INFINITY, sum_visit, walk));
+    assert_true(walk[1] == brute[1]);
+    assert_true(fabs(walk[0] - brute[0]) <= 1e-9 * (1.0 + fabs(brute[0])));
+  }
+  zr_scene_free(s);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_bvh_nearest_matches_brute_force),
@@ -430,6 +471,7 @@ int main(void) {
       cmocka_unit_test(test_bvh_coincident_primitives),
       cmocka_unit_test(test_bvh_object_bounds),
       cmocka_unit_test(test_bvh_float_boxes_never_miss),
+      cmocka_unit_test(test_bvh_crossings_match_intersect),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

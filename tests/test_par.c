@@ -428,6 +428,51 @@ static void test_par_world_of_one_renders_image(void **state) {
   zr__par_finalize(NULL);
 }
 
+/* A window of rows (whole rows: rendered in place in the image) and one
+   of columns (part rows: gathered and copied) give the full render's
+   pixels inside and leave the rest black, with and without
+   antialiasing. */
+static void test_par_world_of_one_renders_window(void **state) {
+  render_fixture *f = *state;
+  zr_par *par;
+  assert_int_equal(zr__par_init(NULL, NULL, &par), ZR_OK);
+  int w = f->params.width, h = f->params.height;
+  assert_true(w >= 8 && h >= 8);
+  const int windows[2][4] = {{2, h - 3, 0, w}, {0, h, 1, w - 2}};
+  for (int aa = 0; aa < 2; aa++) {
+    f->params.antialias = aa;
+    f->params.aa_threshold = 0.1;
+    float *want = reference(f);
+    for (int k = 0; k < 2; k++) {
+      const int *win = windows[k];
+      zr_image *image;
+      assert_int_equal(zr_image_new(w, h, &image), ZR_OK);
+      zr_par_render job = {.scene = f->scene,
+                           .params = &f->params,
+                           .threads = 2,
+                           .image = image,
+                           .row0 = win[0],
+                           .row1 = win[1],
+                           .col0 = win[2],
+                           .col1 = win[3]};
+      assert_int_equal(zr__par_render(par, &job), ZR_OK);
+      const float *got = zr_image_pixels(image);
+      for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+          int in = y >= win[0] && y < win[1] && x >= win[2] && x < win[3];
+          for (int c = 0; c < 3; c++) {
+            size_t i = ((size_t)y * (size_t)w + (size_t)x) * 3 + (size_t)c;
+            assert_true(got[i] == (in ? want[i] : 0.0f));
+          }
+        }
+      zr_image_free(image);
+    }
+    free(want);
+  }
+  f->params.antialias = 0;
+  zr__par_finalize(par);
+}
+
 int main(void) {
   /* The world-of-one test must not think mpirun started it. */
   unsetenv("OMPI_COMM_WORLD_SIZE");
@@ -450,6 +495,8 @@ int main(void) {
       cmocka_unit_test_setup_teardown(test_par_pool_returns_failure,
                                       setup_render, teardown_render),
       cmocka_unit_test_setup_teardown(test_par_world_of_one_renders_image,
+                                      setup_render, teardown_render),
+      cmocka_unit_test_setup_teardown(test_par_world_of_one_renders_window,
                                       setup_render, teardown_render),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);

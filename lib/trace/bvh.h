@@ -51,6 +51,15 @@ bool zr__bvh_all_blocked(const struct zr_bvh *bvh, const zr_ray *ray,
                          zr_blocks_fn blocks, void *user);
 
 /*
+ * The crossings of one primitive o in (tmin, tmax), without normals, as
+ * zr__intersect_t gives them (the same t, bit for bit, in the same
+ * order), by the walks' own code: a plain sphere or plane without the
+ * table call.  The shadow cache's retry of its last blocker uses it.
+ */
+int zr__bvh_crossings_t(const zr_object *o, const zr_ray *ray, double tmin,
+                        double tmax, zr_hit hits[ZR_MAX_CROSSINGS]);
+
+/*
  * The positions in scene->primitives of the primitives whose box holds
  * p, and of every unbounded one, ascending: the only ones that can hold
  * p inside (zr__inside), found in O(log n) rather than by asking all n.

@@ -194,4 +194,52 @@ static inline unsigned zr__slab_entries(const zr_wide_node *w, const zr_slab_ray
 #endif
 }
 
+/* A child waiting on a traversal's stack: a wide node (count 0) or a
+   leaf's run of primitives or faces, with the distance at which the ray
+   enters its box (lowered by the slab test's margin). */
+typedef struct zr_wide_entry {
+  uint32_t child, count;
+  float t;
+} zr_wide_entry;
+
+/* Pushes the children of w that mask names (zr__slab_entries) last to
+   first, so they are popped in the tree's left-to-right order; at most
+   cap entries are held.  Returns the new stack size. */
+static inline int zr__wide_push_in_order(const zr_wide_node *w,
+                                         unsigned mask,
+                                         const float t[ZR_WIDE_WIDTH],
+                                         zr_wide_entry *stack, int sp,
+                                         int cap) {
+  for (int c = ZR_WIDE_WIDTH - 1; c >= 0 && sp < cap; c--)
+    if (mask >> c & 1)
+      stack[sp++] = (zr_wide_entry){w->child[c], w->count[c], t[c]};
+  return sp;
+}
+
+/* Pushes the same children sorted nearest first (ties keep the tree's
+   order), farthest pushed first, so the nearest is searched first and
+   shrinks the interval for the others.  Returns the new stack size. */
+static inline int zr__wide_push_nearest_first(const zr_wide_node *w,
+                                              unsigned mask,
+                                              const float t[ZR_WIDE_WIDTH],
+                                              zr_wide_entry *stack, int sp,
+                                              int cap) {
+  zr_wide_entry met[ZR_WIDE_WIDTH];
+  int n = 0;
+  for (int c = 0; c < ZR_WIDE_WIDTH; c++) {
+    if (!(mask >> c & 1))
+      continue;
+    zr_wide_entry x = {w->child[c], w->count[c], t[c]};
+    int k = n++;
+    while (k > 0 && met[k - 1].t > x.t) {
+      met[k] = met[k - 1];
+      k--;
+    }
+    met[k] = x;
+  }
+  for (int k = n - 1; k >= 0 && sp < cap; k--)
+    stack[sp++] = met[k];
+  return sp;
+}
+
 #endif /* ZR_TRACE_BVH_WIDE_H */

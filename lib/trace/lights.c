@@ -78,6 +78,9 @@ static double smoothstep01(double t) {
 static zr_vec3 light_axis(const zr_light *light) { return light->axis; }
 
 double zr__light_cone(const zr_light *light, zr_vec3 p) {
+  /* A point light shines every way: nothing to weigh. */
+  if (light->kind != ZR_LIGHT_SPOT && light->kind != ZR_LIGHT_CYLINDER)
+    return 1.0;
   zr_vec3 axis = light_axis(light);
   zr_vec3 to_p = zr_v3_sub(p, light->location);
   if (light->kind == ZR_LIGHT_SPOT) {

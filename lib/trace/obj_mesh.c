@@ -454,14 +454,6 @@ static void make_slab(zr_vec3 org, zr_vec3 dir, zr_slab_ray *r) {
   zr__make_slab_ray(&ray, r);
 }
 
-/* A child waiting on a traversal's stack: a wide node (count 0) or a
-   leaf's run of faces, with the distance at which the line enters its
-   box (lowered by the slab test's margin). */
-typedef struct mesh_entry {
-  uint32_t child, count;
-  float t;
-} mesh_entry;
-
 /* The four-wide tree's depth is at most the binary tree's (build_node:
    DEPTH_MAX levels of splits, then halvings of at most 2^32 faces), and
    each node pushes at most three more entries than it pops. */
@@ -535,11 +527,11 @@ int zr__mesh_crossings(const struct zr_mesh *m, zr_vec3 org, zr_vec3 dir,
   const float tmin_f = zr__float_down(tmin);
   float limit_f = zr__float_up(limit);
   /* Leaves are searched in the tree's left-to-right order. */
-  mesh_entry stack[WIDE_STACK_MAX];
+  zr_wide_entry stack[WIDE_STACK_MAX];
   int sp = 0;
-  stack[sp++] = (mesh_entry){0, 0, tmin_f};
+  stack[sp++] = (zr_wide_entry){0, 0, tmin_f};
   while (sp > 0) {
-    mesh_entry e = stack[--sp];
+    zr_wide_entry e = stack[--sp];
     if (e.t > limit)
       continue;
     if (e.count > 0) {
@@ -569,9 +561,7 @@ int zr__mesh_crossings(const struct zr_mesh *m, zr_vec3 org, zr_vec3 dir,
     const zr_wide_node *w = &m->nodes[e.child].wide;
     float t[ZR_WIDE_WIDTH];
     unsigned mask = zr__slab_entries(w, &sr, tmin_f, limit_f, t);
-    for (int c = ZR_WIDE_WIDTH - 1; c >= 0 && sp < WIDE_STACK_MAX; c--)
-      if (mask >> c & 1)
-        stack[sp++] = (mesh_entry){w->child[c], w->count[c], t[c]};
+    sp = zr__wide_push_in_order(w, mask, t, stack, sp, WIDE_STACK_MAX);
   }
   for (int i = 0; i < n; i++)
     out[i] = finish_hit(m, &best[i]);
@@ -606,11 +596,11 @@ int zr__mesh_nearest(const struct zr_mesh *m, zr_vec3 org, zr_vec3 dir,
   double limit = tmax;
   const float tmin_f = zr__float_down(tmin);
   float limit_f = zr__float_up(limit);
-  mesh_entry stack[WIDE_STACK_MAX];
+  zr_wide_entry stack[WIDE_STACK_MAX];
   int sp = 0;
-  stack[sp++] = (mesh_entry){0, 0, tmin_f};
+  stack[sp++] = (zr_wide_entry){0, 0, tmin_f};
   while (sp > 0) {
-    mesh_entry e = stack[--sp];
+    zr_wide_entry e = stack[--sp];
     if (e.t > limit)
       continue;
     if (e.count > 0) {
@@ -632,24 +622,9 @@ int zr__mesh_nearest(const struct zr_mesh *m, zr_vec3 org, zr_vec3 dir,
     const zr_wide_node *w = &m->nodes[e.child].wide;
     float t[ZR_WIDE_WIDTH];
     unsigned mask = zr__slab_entries(w, &sr, tmin_f, limit_f, t);
-    /* The children met, nearest first (ties keep the tree's order), are
-       pushed farthest first, so the nearest is searched first and
-       lowers the limit for the others. */
-    mesh_entry met[ZR_WIDE_WIDTH];
-    int n = 0;
-    for (uint32_t c = 0; c < ZR_WIDE_WIDTH; c++) {
-      if (!(mask >> c & 1))
-        continue;
-      mesh_entry x = {w->child[c], w->count[c], t[c]};
-      int k = n++;
-      while (k > 0 && met[k - 1].t > x.t) {
-        met[k] = met[k - 1];
-        k--;
-      }
-      met[k] = x;
-    }
-    for (int k = n - 1; k >= 0 && sp < WIDE_STACK_MAX; k--)
-      stack[sp++] = met[k];
+    /* The nearest child met is searched first and lowers the limit for
+       the others. */
+    sp = zr__wide_push_nearest_first(w, mask, t, stack, sp, WIDE_STACK_MAX);
   }
   if (found)
     *out = finish_hit(m, &best);
@@ -689,11 +664,11 @@ static bool mesh_any(const struct zr_mesh *m, zr_vec3 org, zr_vec3 dir,
   zr_slab_ray sr;
   make_slab(org, dir, &sr);
   const float tmin_f = zr__float_down(tmin), tmax_f = zr__float_up(tmax);
-  mesh_entry stack[WIDE_STACK_MAX];
+  zr_wide_entry stack[WIDE_STACK_MAX];
   int sp = 0;
-  stack[sp++] = (mesh_entry){0, 0, tmin_f};
+  stack[sp++] = (zr_wide_entry){0, 0, tmin_f};
   while (sp > 0) {
-    mesh_entry e = stack[--sp];
+    zr_wide_entry e = stack[--sp];
     if (e.count > 0) {
       for (uint32_t f = e.child; f < e.child + e.count; f++)
         if (face_hit(m, f, org, dir, &out->t, &out->u, &out->v) &&
@@ -706,9 +681,7 @@ static bool mesh_any(const struct zr_mesh *m, zr_vec3 org, zr_vec3 dir,
     const zr_wide_node *w = &m->nodes[e.child].wide;
     float t[ZR_WIDE_WIDTH];
     unsigned mask = zr__slab_entries(w, &sr, tmin_f, tmax_f, t);
-    for (int c = ZR_WIDE_WIDTH - 1; c >= 0 && sp < WIDE_STACK_MAX; c--)
-      if (mask >> c & 1)
-        stack[sp++] = (mesh_entry){w->child[c], w->count[c], t[c]};
+    sp = zr__wide_push_in_order(w, mask, t, stack, sp, WIDE_STACK_MAX);
   }
   return false;
 }
@@ -740,11 +713,11 @@ bool zr__mesh_inside(const struct zr_mesh *m, zr_vec3 p) {
   zr_slab_ray sr;
   make_slab(p, dir, &sr);
   size_t crossings = 0;
-  mesh_entry stack[WIDE_STACK_MAX];
+  zr_wide_entry stack[WIDE_STACK_MAX];
   int sp = 0;
-  stack[sp++] = (mesh_entry){0, 0, 0.0f};
+  stack[sp++] = (zr_wide_entry){0, 0, 0.0f};
   while (sp > 0) {
-    mesh_entry e = stack[--sp];
+    zr_wide_entry e = stack[--sp];
     if (e.count > 0) {
       for (uint32_t f = e.child; f < e.child + e.count; f++) {
         double t, u, v;
@@ -756,9 +729,7 @@ bool zr__mesh_inside(const struct zr_mesh *m, zr_vec3 p) {
     const zr_wide_node *w = &m->nodes[e.child].wide;
     float t[ZR_WIDE_WIDTH];
     unsigned mask = zr__slab_entries(w, &sr, 0.0f, INFINITY, t);
-    for (int c = ZR_WIDE_WIDTH - 1; c >= 0 && sp < WIDE_STACK_MAX; c--)
-      if (mask >> c & 1)
-        stack[sp++] = (mesh_entry){w->child[c], w->count[c], t[c]};
+    sp = zr__wide_push_in_order(w, mask, t, stack, sp, WIDE_STACK_MAX);
   }
   return crossings % 2 == 1;
 }

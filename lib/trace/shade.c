@@ -318,7 +318,7 @@ static bool cached_blocker_blocks(const zr_shadow_cache *cache,
   if (cache->light[slot] != w->source || !o)
     return false;
   zr_hit h[ZR_MAX_CROSSINGS];
-  int n = zr__intersect_t(o, w->ray, 0.0, tmax, h);
+  int n = zr__bvh_crossings_t(o, w->ray, 0.0, tmax, h);
   for (int k = 0; k < n; k++) {
     shadow_walk probe;
     probe.ray = w->ray;
