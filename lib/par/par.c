@@ -9,10 +9,15 @@
  *     (zr__par_share_bundle);
  *   - rank r renders rows r, r + n, ... with a pool of threads (pool.c);
  *   - antialiasing needs each pixel's neighbours, so the centres of pass 1
- *     are assembled on every rank (MPI_Allgatherv) before pass 2;
- *   - rank 0 gathers the rows (MPI_Gatherv) and the statistics; after
- *     antialiasing's pass 2 only the pixels that differ from their
- *     centre (collect_changes).
+ *     are assembled on every rank before pass 2;
+ *   - rank 0 gathers the rows and the statistics; after antialiasing's
+ *     pass 2 only the pixels that differ from their centre
+ *     (collect_changes).  Bands as wide as the image are rendered into
+ *     their places and the other ranks' rows received into theirs
+ *     (exchange_rows); a window's bands go through MPI_Gatherv or
+ *     MPI_Allgatherv (collect_rows);
+ *   - a rank that waits for the others sleeps (meet) instead of spinning
+ *     in MPI's progress loop.
  * Rows travel as an MPI datatype of one row, so counts stay small
  * integers for any image MPI can hold.  Each collective is preceded by an
  * agreement on the status of the work before it, so a rank that fails
