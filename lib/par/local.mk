@@ -39,4 +39,14 @@ examples_mpi_render_LDADD = lib/par/libzrcube_mpi.la lib/libzrcube.la \
 	$(MPI_LIBS)
 TESTS += tests/test_mpi_example.sh
 EXTRA_DIST += tests/test_mpi_example.sh
+
+# Waiting ranks sleep; one host skips the network probe (par.c).
+check_PROGRAMS += tests/mpi_wait
+tests_mpi_wait_SOURCES = tests/mpi_wait.c
+tests_mpi_wait_CPPFLAGS = $(AM_CPPFLAGS) $(MPI_CFLAGS)
+tests_mpi_wait_CFLAGS = $(AM_CFLAGS) $(PTHREAD_CFLAGS)
+tests_mpi_wait_LDADD = lib/par/libzrpar.la lib/libzrcube.la $(MPI_LIBS) \
+	$(PTHREAD_LIBS)
+TESTS += tests/test_mpi_wait.sh
+EXTRA_DIST += tests/test_mpi_wait.sh
 endif

@@ -9,10 +9,15 @@
  *     (zr__par_share_bundle);
  *   - rank r renders rows r, r + n, ... with a pool of threads (pool.c);
  *   - antialiasing needs each pixel's neighbours, so the centres of pass 1
- *     are assembled on every rank (MPI_Allgatherv) before pass 2;
- *   - rank 0 gathers the rows (MPI_Gatherv) and the statistics; after
- *     antialiasing's pass 2 only the pixels that differ from their
- *     centre (collect_changes).
+ *     are assembled on every rank before pass 2;
+ *   - rank 0 gathers the rows and the statistics; after antialiasing's
+ *     pass 2 only the pixels that differ from their centre
+ *     (collect_changes).  Bands as wide as the image are rendered into
+ *     their places and the other ranks' rows received into theirs
+ *     (exchange_rows); a window's bands go through MPI_Gatherv or
+ *     MPI_Allgatherv (collect_rows);
+ *   - a rank that waits for the others sleeps (meet) instead of spinning
+ *     in MPI's progress loop.
  * Rows travel as an MPI datatype of one row, so counts stay small
  * integers for any image MPI can hold.  Each collective is preceded by an
  * agreement on the status of the work before it, so a rank that fails
@@ -73,6 +78,64 @@ static zr_status mpi_status(int rc) {
 }
 
 /*
+ * Open MPI picks its point-to-point layer (pml) at MPI_Init by opening
+ * every candidate, and Debian's build probes libfabric, PSM, PSM2 and UCX
+ * devices first: on a host without such a network that probe took 0.2
+ * to 0.3 s of wall time a rank before it settled on ob1 with shared
+ * memory anyway (mpirun -n 1 of an empty scene: 0.71 s, 0.39 s with
+ * OMPI_MCA_pml=ob1; bench/launch.sh).  When every rank of the job runs
+ * on this host (Open MPI says so before MPI_Init, in
+ * OMPI_COMM_WORLD_SIZE and OMPI_COMM_WORLD_LOCAL_SIZE), no network is
+ * used, so ob1 is named directly, unless the user named a pml (or an
+ * mtl, which needs the cm pml) in the environment.
+ */
+static void prefer_shared_memory(void) {
+  const char *size = getenv("OMPI_COMM_WORLD_SIZE");
+  const char *local = getenv("OMPI_COMM_WORLD_LOCAL_SIZE");
+  if (!size || !local || strcmp(size, local) != 0 ||
+      getenv("OMPI_MCA_pml") || getenv("OMPI_MCA_mtl"))
+    return;
+  setenv("OMPI_MCA_pml", "ob1", 0);
+}
+
+/*
+ * Waits until every rank has arrived, without spinning: an MPI_Ibarrier
+ * tested with short sleeps in between.  A blocking collective spins
+ * while it waits for a slower rank (Open MPI polls its progress engine:
+ * 38% of a rank's CPU in a 2-rank render of default.pov was that spin,
+ * and on a shared core the spin takes the time the rank it waits for
+ * needs), so every collective that may wait for another rank's work
+ * (zr__par_agree, the team's exchanges) first meets the others here and
+ * then runs with all of them present.  The sleeps grow by half from
+ * 20 us to 1 ms: a wait that is over within a few milliseconds ends
+ * within a sleep of a third of its length after the last rank arrives,
+ * a longer one within 1 ms, and a waiting rank polls a thousand times a
+ * second (tests/mpi_wait.c: under 10% of a core while it waits).
+ */
+static zr_status meet(zr_par *par) {
+  MPI_Request req;
+  if (MPI_Ibarrier(par->comm, &req) != MPI_SUCCESS)
+    return ZR_EMPI;
+  long nap_ns = 20000;
+  int polls = 0;
+  for (;;) {
+    int done = 0;
+    if (MPI_Test(&req, &done, MPI_STATUS_IGNORE) != MPI_SUCCESS)
+      return ZR_EMPI;
+    if (done)
+      return ZR_OK;
+    /* A few free polls first: the others are often there already. */
+    if (++polls < 16)
+      continue;
+    struct timespec nap = {0, nap_ns};
+    nanosleep(&nap, NULL);
+    nap_ns += nap_ns / 2;
+    if (nap_ns > 1000000)
+      nap_ns = 1000000;
+  }
+}
+
+/*
  * par's own duplicate of comm, returning errors instead of aborting, with
  * its rank, size and the number of ranks on this node; an MPI error code
  * when any step fails (par->comm is then freed by zr__par_finalize).
@@ -106,6 +169,7 @@ zr_status zr__par_init(int *argc, char ***argv, zr_par **out) {
   par->threads_allowed = 1;
   if (launched_by_mpi()) {
     int provided;
+    prefer_shared_memory();
     /* Only the main thread calls MPI; workers only render. */
     if (MPI_Init_thread(argc, argv, MPI_THREAD_FUNNELED, &provided) !=
         MPI_SUCCESS) {
@@ -315,6 +379,8 @@ zr_status zr__par_agree(zr_par *par, zr_status local) {
     return local;
   /* Failures are negative: the minimum is a failure if any rank failed. */
   int mine = (int)local, worst;
+  if (meet(par) != ZR_OK)
+    return ZR_EMPI;
   if (MPI_Allreduce(&mine, &worst, 1, MPI_INT, MPI_MIN, par->comm) !=
       MPI_SUCCESS)
     return ZR_EMPI;
@@ -510,6 +576,80 @@ static zr_status collect_changes(zr_par *par, const float *mine, float *band,
   return s;
 }
 
+/*
+ * The rows of a band as wide as the image, straight into place: band
+ * holds rows y0 .. y0 + height - 1 of the image (row_floats floats each)
+ * and rank r's rows of it are r, r + n, ... (zr__rows_row).  Where band
+ * is given (rank 0, or every rank with everyone) the pool rendered this
+ * rank's rows into it already; the others' arrive as point-to-point
+ * messages whose receive type is a row followed by n - 1 rows' gap, so
+ * they land in their rows with no copy.  A rank without band (not
+ * everyone, rank != 0) sends mine, its rows packed, to rank 0.  This
+ * replaced an MPI_Gatherv into a rank-major buffer, its reordering
+ * into the band and a copy of the band into the image: on this machine,
+ * a virtual one where first touching a page costs about 14 us, rank 0's
+ * two extra copies of the image and their fresh pages were 12 to 27% of
+ * its CPU in a 2-rank 2048x2048 render of bench/peers.sh's terrain
+ * (perf; -v's gather 0.44 s wall).
+ */
+#define ROWS_TAG 15
+
+static zr_status exchange_rows(zr_par *par, const float *mine, float *band,
+                               int height, size_t row_floats, int everyone) {
+  int n = par->size, me = par->rank;
+  MPI_Datatype row = MPI_DATATYPE_NULL, spaced = MPI_DATATYPE_NULL;
+  MPI_Request *req = malloc(2 * (size_t)n * sizeof *req);
+  zr_status s = row_floats > (size_t)INT_MAX ? ZR_ELIMIT
+                : req                        ? ZR_OK
+                                             : ZR_ENOMEM;
+  s = zr__par_agree(par, s);
+  if (s == ZR_OK)
+    s = mpi_status(MPI_Type_contiguous((int)row_floats, MPI_FLOAT, &row));
+  if (s == ZR_OK)
+    s = mpi_status(MPI_Type_create_resized(
+        row, 0, (MPI_Aint)((size_t)n * row_floats * sizeof(float)),
+        &spaced));
+  if (s == ZR_OK)
+    s = mpi_status(MPI_Type_commit(&row));
+  if (s == ZR_OK)
+    s = mpi_status(MPI_Type_commit(&spaced));
+  int posted = 0, mine_rows = zr__rows_count(height, me, n);
+  uint64_t sent = 0;
+  for (int r = 0; s == ZR_OK && r < n; r++) {
+    if (r == me)
+      continue;
+    int rc = MPI_SUCCESS;
+    if (everyone || me == 0)
+      rc = MPI_Irecv(band + (size_t)r * row_floats,
+                     zr__rows_count(height, r, n), spaced, r, ROWS_TAG,
+                     par->comm, &req[posted++]);
+    if (rc == MPI_SUCCESS && everyone) {
+      rc = MPI_Isend(band + (size_t)me * row_floats, mine_rows, spaced, r,
+                     ROWS_TAG, par->comm, &req[posted++]);
+      sent += (uint64_t)mine_rows * row_floats * sizeof(float);
+    } else if (rc == MPI_SUCCESS && me != 0 && r == 0) {
+      /* MPI's send buffers are const only from MPI 3 on. */
+      rc = MPI_Isend((float *)mine, mine_rows, row, 0, ROWS_TAG, par->comm,
+                     &req[posted++]);
+      sent += (uint64_t)mine_rows * row_floats * sizeof(float);
+    }
+    s = mpi_status(rc);
+  }
+  /* Posted requests are completed even after a failure, so that none
+     refers to freed memory. */
+  if (posted > 0 &&
+      MPI_Waitall(posted, req, MPI_STATUSES_IGNORE) != MPI_SUCCESS)
+    s = ZR_EMPI;
+  if (s == ZR_OK)
+    par->traffic.pixel_bytes_sent += sent;
+  if (spaced != MPI_DATATYPE_NULL)
+    MPI_Type_free(&spaced);
+  if (row != MPI_DATATYPE_NULL)
+    MPI_Type_free(&row);
+  free(req);
+  return s;
+}
+
 /* Sums the statistics of all ranks into *stats on rank 0. */
 static zr_status reduce_stats(zr_par *par, zr_render_stats *stats,
                               double *seconds) {
@@ -578,8 +718,9 @@ void zr__par_render_layout(const zr_par *par, const zr_par_render *job,
 /* One pass over the rows y0 .. y1 - 1 and columns x0 .. x1 - 1 of this
    rank (y0 + rank, + size, ...), into rows_rgb. */
 static zr_status render_band(zr_par *par, zr_par_render *job,
-                             const float *centres, float *rows_rgb, int y0,
-                             int y1, int x0, int x1, size_t progress_base,
+                             const float *centres, float *rows_rgb,
+                             size_t row_stride, int y0, int y1, int x0,
+                             int x1, size_t progress_base,
                              size_t progress_total) {
   zr_pool_job pool = {
       .scene = job->scene,
@@ -588,6 +729,7 @@ static zr_status render_band(zr_par *par, zr_par_render *job,
       .nranks = par->size,
       .centres = centres,
       .rows_rgb = rows_rgb,
+      .row_stride = row_stride,
       .threads = job->threads,
       .stats = &job->stats,
       .progress = job->progress,
@@ -782,33 +924,43 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
       y0 = y0 < lo ? lo : y0;
       y1 = y1 > hi ? hi : y1;
       double t0 = zr__par_now();
-      /* Alone, with whole rows, the rows are rendered in place: the
-         gather would only copy them twice (bench/peers.sh's flake at
-         2048^2: two copies of 48 MiB, and the first touch of their
-         pages, 5% of the run). */
-      int in_place = (!par->uses_mpi || par->size == 1) && target &&
-                      x0 == 0 && x1 == width;
-      if (y1 > y0 && in_place) {
-        s = render_band(par, job, p == 1 ? pr.centres : NULL,
-                        target + (size_t)y0 * (size_t)width *
-                                     (size_t)channels,
+      if (y1 > y0) {
+        /* A band as wide as the image goes straight into target where
+           this rank has it: the pool renders the rank's rows into their
+           places (unless pass 2 of several ranks, which compares them
+           with the centres first), the others' rows arrive in theirs
+           (exchange_rows).  Every rank takes the same branch. */
+        int multi = par->uses_mpi && par->size > 1;
+        int changes = p == 1 && multi;
+        size_t row_floats = (size_t)width * (size_t)channels;
+        float *dest = x0 == 0 && x1 == width && target
+                          ? target + (size_t)y0 * row_floats
+                          : NULL;
+        int in_place = x0 == 0 && x1 == width && !changes;
+        float *rows = mine;
+        size_t stride = 0;
+        if (in_place && dest) {
+          rows = dest + (size_t)par->rank * row_floats;
+          stride = (size_t)par->size * row_floats;
+        }
+        s = render_band(par, job, p == 1 ? pr.centres : NULL, rows, stride,
                         y0, y1, x0, x1, done_rows, total);
-        done_rows += (size_t)(y1 - y0);
-      } else if (y1 > y0) {
-        s = render_band(par, job, p == 1 ? pr.centres : NULL, mine, y0, y1,
-                        x0, x1, done_rows, total);
         done_rows += (size_t)zr__rows_count(y1 - y0, par->rank, par->size);
         double gather_start = zr__par_now();
-        if (s == ZR_OK && p == 1 && par->uses_mpi && par->size > 1)
-          s = zr__par_agree(par, collect_changes(par, mine, band,
+        float *into = dest ? dest : band;
+        if (s == ZR_OK && changes)
+          s = zr__par_agree(par, collect_changes(par, mine, into,
                                                  pr.centres, width, y0, y1,
                                                  x0, x1, channels));
-        else if (s == ZR_OK)
+        else if (s == ZR_OK && in_place && multi)
+          s = zr__par_agree(par, exchange_rows(par, mine, dest, y1 - y0,
+                                               row_floats, everyone));
+        else if (s == ZR_OK && !in_place)
           s = zr__par_agree(par, collect_rows(par, mine, band, rank_major,
                                               x1 - x0, y1 - y0, channels,
                                               everyone));
         job->gather_seconds += zr__par_now() - gather_start;
-        if (s == ZR_OK && target)
+        if (s == ZR_OK && target && !dest)
           place_band(band, target, width, y0, y1, x0, x1, channels);
       }
       band_time = (zr__par_now() - t0) / (double)(e - b);
@@ -858,9 +1010,10 @@ static zr_status team_allgather(void *user, const void *mine, void *all,
     total += counts[r];
   }
   double start = zr__par_now(), cpu = zr__par_cpu();
-  zr_status s = mpi_status(MPI_Allgatherv((void *)mine, c[par->rank],
-                                          MPI_BYTE, all, c, d, MPI_BYTE,
-                                          par->comm));
+  zr_status s = meet(par);
+  if (s == ZR_OK)
+    s = mpi_status(MPI_Allgatherv((void *)mine, c[par->rank], MPI_BYTE,
+                                  all, c, d, MPI_BYTE, par->comm));
   par->traffic.team_seconds += zr__par_now() - start;
   par->traffic.team_cpu_seconds += zr__par_cpu() - cpu;
   if (s == ZR_OK) {

@@ -59,6 +59,7 @@ static void work(worker *w) {
   int first_col = job->end_row ? job->first_col : 0;
   int cols = job->end_row ? job->end_col - first_col : width;
   size_t row_floats = (size_t)cols * (job->params->alpha ? 4 : 3);
+  size_t stride = job->row_stride ? job->row_stride : row_floats;
   uint32_t *pixels = malloc((size_t)(cols > 0 ? cols : 1) * sizeof *pixels);
   if (!pixels) {
     int ok = ZR_OK;
@@ -77,7 +78,7 @@ static void work(worker *w) {
       pixels[x] = y * (uint32_t)width + (uint32_t)(first_col + x);
     zr_status s = zr_render_pixels(job->scene, job->params, pixels,
                                    (size_t)cols, job->centres,
-                                   job->rows_rgb + (size_t)index * row_floats,
+                                   job->rows_rgb + (size_t)index * stride,
                                    &w->stats);
     if (s != ZR_OK) {
       int ok = ZR_OK;

@@ -28,6 +28,9 @@ typedef struct zr_pool_job {
   const float *centres;  /* NULL for pass 1, else the whole centre image */
   float *rows_rgb;       /* out: the rank's rows, in order, width * 3 each
                             (4 with params->alpha) */
+  size_t row_stride;     /* floats from one of them to the next (0: one
+                            row's floats, packed); the image's rows
+                            times nranks renders into the image itself */
   int threads;           /* at least 1 */
   zr_render_stats *stats; /* added to; may be NULL */
   zr__rows_progress_fn progress; /* may be NULL */

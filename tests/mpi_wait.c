@@ -1,0 +1,74 @@
+/*
+ * mpi_wait.c - a rank that waits in a collective for a slower one sleeps
+ * instead of spinning (lib/par/par.c, meet), and a job on one host skips
+ * Open MPI's probe of network devices (prefer_shared_memory).  Run by
+ * tests/test_mpi_wait.sh under mpirun -n 2 and -n 3.
+ *
+ *   mpi_wait [PML]
+ *
+ * PML: what OMPI_MCA_pml must be after zr__par_init ("-": unset).  The
+ * last rank sleeps 2 s (no CPU) before it joins zr__par_agree with a
+ * failure; every other rank is in the agreement meanwhile and must spend
+ * under 0.2 s of CPU there (a spinning wait takes the whole 2 s of a
+ * core on an idle machine), then every rank must get the failure.
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "par/par.h"
+
+int main(int argc, char **argv) {
+  zr_par *par = NULL;
+  if (zr__par_init(&argc, &argv, &par) != ZR_OK) {
+    fprintf(stderr, "mpi_wait: cannot start MPI\n");
+    return 1;
+  }
+  int failed = 0;
+  int rank = zr__par_rank(par), size = zr__par_size(par);
+  if (argc > 1) {
+    const char *pml = getenv("OMPI_MCA_pml");
+    const char *want = strcmp(argv[1], "-") == 0 ? NULL : argv[1];
+    if ((pml == NULL) != (want == NULL) || (pml && strcmp(pml, want))) {
+      fprintf(stderr, "mpi_wait: rank %d: OMPI_MCA_pml is %s, not %s\n",
+              rank, pml ? pml : "unset", want ? want : "unset");
+      failed = 1;
+    }
+  }
+  if (size < 2 || !zr__par_uses_mpi(par)) {
+    fprintf(stderr, "mpi_wait: needs 2 or more ranks under mpirun\n");
+    failed = 1;
+  }
+  /* Start together, then the last rank comes 2 s late. */
+  if (!failed && zr__par_agree(par, ZR_OK) != ZR_OK)
+    failed = 1;
+  int late = rank == size - 1;
+  double wall = zr__par_now(), cpu = zr__par_cpu();
+  if (late) {
+    struct timespec two = {2, 0};
+    nanosleep(&two, NULL);
+  }
+  zr_status s = zr__par_agree(par, late ? ZR_ENOMEM : ZR_OK);
+  wall = zr__par_now() - wall;
+  cpu = zr__par_cpu() - cpu;
+  printf("rank %d: %.3f s in the agreement, %.3f s of CPU\n", rank, wall,
+         cpu);
+  if (s != ZR_ENOMEM) {
+    fprintf(stderr, "mpi_wait: rank %d: agreed on %s, not the late "
+                    "rank's failure\n", rank, zr_status_str(s));
+    failed = 1;
+  }
+  if (!late && wall < 1.5) {
+    fprintf(stderr, "mpi_wait: rank %d: left after %.3f s, before the "
+                    "late rank came\n", rank, wall);
+    failed = 1;
+  }
+  if (!late && cpu > 0.2) {
+    fprintf(stderr, "mpi_wait: rank %d: %.3f s of CPU waiting %.3f s: "
+                    "the wait spins\n", rank, cpu, wall);
+    failed = 1;
+  }
+  zr__par_finalize(par);
+  return failed;
+}
