@@ -628,6 +628,10 @@ struct zr_object {
         zr_vec3 lo, hi;
         bool bounded;
       } *boxes;
+      /* For a part with many children, a tree of their boxes made
+         with them (lib/trace/csg.c), NULL otherwise: the tracer finds
+         the children a ray or point meets without testing every box. */
+      const struct zr_csg_tree *tree;
     } csg;
     struct {
       const struct zr_mesh *data;
