@@ -82,17 +82,6 @@ void zr__cubic_range(const double *c, double *lo, double *hi) {
     }
 }
 
-void zr__piece_box(const double *seg, const double *box, size_t i,
-                   double out[4]) {
-  if (box) {
-    for (int k = 0; k < 4; k++)
-      out[k] = box[4 * i + k];
-    return;
-  }
-  zr__cubic_range(seg + 8 * i, &out[0], &out[1]);
-  zr__cubic_range(seg + 8 * i + 4, &out[2], &out[3]);
-}
-
 bool zr__curves_cover(const double *pieces, const double *box,
                       size_t n_pieces, double x, double z) {
   bool in = false;
