@@ -400,6 +400,7 @@ static zr_object *unboxed(const zr_object *o) {
   assert_non_null(c);
   *c = *o;
   c->u.csg.boxes = NULL;
+  c->u.csg.tree = NULL;
   c->u.csg.children = malloc(o->u.csg.n_children * sizeof *c->u.csg.children);
   assert_non_null(c->u.csg.children);
   for (size_t i = 0; i < o->u.csg.n_children; i++)
@@ -462,10 +463,72 @@ static void test_csg_child_boxes_skip_work_only(void **state) {
   unboxed_free(plain);
 }
 
+/* The tree over many children (lib/trace/csg.c) and the nearest-only
+   query only skip work too: a merge of a union of 120 small hollow
+   spheres (advanced/grenadine's bubbles) with two larger solids gives
+   the same nearest two crossings, the same nearest one when only that
+   is wanted, and the same inside tests as the plain copy; and the tree
+   is there to be tested. */
+static void test_csg_child_tree_skips_work_only(void **state) {
+  fixture *f = *state;
+  const zr_object *o = only(
+      f, "#declare S = seed(7);\n"
+         "#declare B = union {\n"
+         "  #for (I, 0, 119)\n"
+         "    difference { sphere { 0, 0.1 } sphere { 0, 0.09 }\n"
+         "      scale rand(S) + 0.2 translate <rand(S), 0.6, 0>\n"
+         "      rotate y*360*rand(S) }\n"
+         "  #end\n"
+         "}\n"
+         "merge {\n"
+         "  sphere { -0.8*y, 0.95 }\n"
+         "  cylinder { -0.8*y, 0.6*y, 0.95 }\n"
+         "  intersection { object { B } cylinder { 0.5*y, 0.85*y, 0.95 } }\n"
+         "}\n");
+  assert_int_equal(o->kind, ZR_OBJ_MERGE);
+  const zr_object *inter = o->u.csg.children[2];
+  assert_int_equal(inter->kind, ZR_OBJ_INTERSECTION);
+  assert_non_null(inter->u.csg.children[0]->u.csg.tree);
+  zr_object *plain = unboxed(o);
+  unsigned seed = 777u;
+#define RND() rnd(&seed)
+  int crossings = 0, inside = 0;
+  for (int k = 0; k < 4000; k++) {
+    zr_vec3 org = zr_v3(4 * RND() - 2, 4 * RND() - 1, 4 * RND() - 2);
+    zr_vec3 at = zr_v3(2 * RND() - 1, 0.5 + 0.4 * RND(), 2 * RND() - 1);
+    zr_ray r = {org, zr_v3_sub(at, org)};
+    zr_hit a[ZR_MAX_CROSSINGS], b[ZR_MAX_CROSSINGS];
+    int na = zr__intersect(o, &r, 0.0, INFINITY, a);
+    int nb = zr__intersect(plain, &r, 0.0, INFINITY, b);
+    assert_int_equal(na, nb);
+    for (int i = 0; i < na; i++) {
+      assert_true(a[i].t == b[i].t);
+      assert_ptr_equal(a[i].object, b[i].object);
+    }
+    crossings += na;
+    na = zr__intersect_first(o, &r, 0.0, INFINITY, true, a);
+    assert_int_equal(na > 0, nb > 0);
+    if (na > 0) {
+      assert_true(a[0].t == b[0].t);
+      assert_ptr_equal(a[0].object, b[0].object);
+    }
+    bool in = zr__inside(o, at);
+    assert_true(in == zr__inside(plain, at));
+    assert_true(zr__inside(inter, at) ==
+                zr__inside(plain->u.csg.children[2], at));
+    inside += in;
+  }
+#undef RND
+  assert_true(crossings > 1000);
+  assert_true(inside > 100 && inside < 3900);
+  unboxed_free(plain);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       TEST(test_csg_difference_cuts_with_inverted_normal),
       TEST(test_csg_child_boxes_skip_work_only),
+      TEST(test_csg_child_tree_skips_work_only),
       TEST(test_csg_intersection_is_a_lens),
       TEST(test_csg_merge_drops_inner_surfaces),
       TEST(test_csg_inverse_follows_de_morgan),

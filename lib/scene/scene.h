@@ -633,6 +633,10 @@ struct zr_object {
         zr_vec3 lo, hi;
         bool bounded;
       } *boxes;
+      /* For a part with many children, a tree of their boxes made
+         with them (lib/trace/csg.c), NULL otherwise: the tracer finds
+         the children a ray or point meets without testing every box. */
+      const struct zr_csg_tree *tree;
     } csg;
     struct {
       const struct zr_mesh *data;
@@ -692,11 +696,14 @@ struct zr_object {
          ("Prism"); a conic sweep scales the curve by y, from the apex
          at the origin.  Each curve segment is a cubic in s in [0, 1]:
          x = seg[0] + seg[1] s + seg[2] s^2 + seg[3] s^3, z likewise
-         with seg[4..7].  lo and hi box the curve (x, z in .x, .z). */
+         with seg[4..7].  lo and hi box the curve (x, z in .x, .z);
+         box[4 i ..] = xlo, xhi, zlo, zhi box piece i (NULL: not made,
+         the tracer then works them out per call). */
       int spline; /* 0 linear, 1 quadratic, 2 cubic, 3 bezier */
       bool conic, open, sturm;
       double y0, y1; /* y0 <= y1 */
       const double *seg;
+      const double *box;
       size_t n_seg;
       zr_vec3 lo, hi;
       zr_vec3 *points; /* as written, kept while the parser reads it */
@@ -705,10 +712,12 @@ struct zr_object {
     struct {
       /* A curve in the (r, y) plane turned about the y axis ("Lathe"),
          stored as a prism's: seg[0..3] give r(s), seg[4..7] y(s).  lo
-         and hi box the curve (r in .x, y in .y). */
+         and hi box the curve (r in .x, y in .y); box[4 i ..] = rlo,
+         rhi, ylo, yhi box piece i, as a prism's. */
       int spline; /* 0 linear, 1 quadratic, 2 cubic, 3 bezier */
       bool sturm;
       const double *seg;
+      const double *box;
       size_t n_seg;
       zr_vec3 lo, hi;
       zr_vec3 *points;

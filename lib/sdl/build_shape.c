@@ -433,6 +433,21 @@ static void cubic_extent(const double *k, double *lo, double *hi) {
   }
 }
 
+/* The boxes of the pieces, 4 doubles each (first coordinate's range,
+   then the second's), made once here so that the tracer need not find
+   each piece's turning points for every ray; NULL when out of memory
+   (the tracer then finds them itself). */
+static const double *piece_boxes(zr_sdl_parser *p, const curve *c) {
+  double *box = zr__sdl_alloc(p, 4 * (c->n ? c->n : 1) * sizeof(double));
+  if (!box)
+    return NULL;
+  for (size_t i = 0; i < c->n; i++) {
+    zr__cubic_range(c->seg + 8 * i, &box[4 * i], &box[4 * i + 1]);
+    zr__cubic_range(c->seg + 8 * i + 4, &box[4 * i + 2], &box[4 * i + 3]);
+  }
+  return box;
+}
+
 bool zr__sdl_prism_done(zr_sdl_parser *p, zr_object *o,
                         const zr_sdl_loc *loc) {
   const zr_vec3 *pt = o->u.prism.points;
@@ -477,6 +492,7 @@ bool zr__sdl_prism_done(zr_sdl_parser *p, zr_object *o,
   }
   o->u.prism.seg = c.seg;
   o->u.prism.n_seg = c.n;
+  o->u.prism.box = piece_boxes(p, &c);
   o->u.prism.lo = zr_v3(lx, 0.0, lz);
   o->u.prism.hi = zr_v3(hx, 0.0, hz);
   return true;
@@ -564,6 +580,7 @@ bool zr__sdl_lathe_done(zr_sdl_parser *p, zr_object *o,
   }
   o->u.lathe.seg = c.seg;
   o->u.lathe.n_seg = c.n;
+  o->u.lathe.box = piece_boxes(p, &c);
   o->u.lathe.lo = zr_v3(lr, ly, 0.0);
   o->u.lathe.hi = zr_v3(hr, hy, 0.0);
   return true;

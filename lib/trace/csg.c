@@ -30,6 +30,8 @@
 #include "trace/intersect.h"
 
 #include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
 
 #include "trace/obj_shapes.h" /* zr__ray_box_span */
 #include "trace/shape.h"
@@ -42,6 +44,10 @@ typedef struct gather {
   const zr_ray *ray;
   double tmax;
   bool want_normals;
+  /* The top node, and how many of its nearest crossings the caller
+     wants (1 or ZR_MAX_CROSSINGS): see shrink(). */
+  const zr_object *top;
+  int wanted;
   zr_hit hit[CSG_MAX_GATHER];
   int n;
 } gather;
@@ -50,25 +56,224 @@ static zr_vec3 point_at(const zr_ray *ray, double t) {
   return zr_v3_madd(ray->origin, ray->dir, t);
 }
 
-/* Whether the ray may meet something inside box b within (tmin, tmax):
-   an unbounded child always may. */
+/* Whether the ray may meet something inside the box lo, hi within
+   (tmin, tmax).  The box's span along the ray (obj_torus.c) is left
+   empty when the ray runs beside the box parallel to an axis.  A box
+   that holds another gets a span that holds the other's (each slab's
+   ends move out, and rounding is monotonic), which the tree below
+   relies on. */
+static bool ray_meets_box(zr_vec3 lo, zr_vec3 hi, const zr_ray *ray,
+                          double tmin, double tmax) {
+  double s0 = 0.0, s1 = -1.0;
+  zr__ray_box_span(lo, hi, ray->origin, ray->dir, &s0, &s1);
+  return (s0 > tmin ? s0 : tmin) <= (s1 < tmax ? s1 : tmax);
+}
+
+/* The same for a child's box: an unbounded child always may. */
 static bool ray_meets(const struct zr_csg_box *b, const zr_ray *ray,
                       double tmin, double tmax) {
-  if (!b->bounded)
-    return true;
-  /* The box's span along the ray (obj_torus.c); left empty when the ray
-     runs beside the box parallel to an axis. */
-  double s0 = 0.0, s1 = -1.0;
-  zr__ray_box_span(b->lo, b->hi, ray->origin, ray->dir, &s0, &s1);
-  return (s0 > tmin ? s0 : tmin) <= (s1 < tmax ? s1 : tmax);
+  return !b->bounded || ray_meets_box(b->lo, b->hi, ray, tmin, tmax);
+}
+
+static bool box_holds(zr_vec3 lo, zr_vec3 hi, zr_vec3 p) {
+  return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y &&
+         p.z >= lo.z && p.z <= hi.z;
 }
 
 /* Whether p may be inside the child of box b: never outside its box. */
 static bool may_hold(const struct zr_csg_box *b, zr_vec3 p) {
-  return !b->bounded ||
-         (p.x >= b->lo.x && p.x <= b->hi.x && p.y >= b->lo.y &&
-          p.y <= b->hi.y && p.z >= b->lo.z && p.z <= b->hi.z);
+  return !b->bounded || box_holds(b->lo, b->hi, p);
 }
+
+/*
+ * The tree over a part's children (a union of a hundred bubbles inside
+ * a merge, as in advanced/grenadine, tested a hundred boxes for every
+ * ray through it): a binary tree of boxes, split at the median of the
+ * children's box centres along the widest spread of them, with runs of
+ * at most LEAF_RUN children at its leaves.  Queries only choose which
+ * children to look at; each chosen child is still tested against its
+ * own box as without the tree, and the ones a ray meets are visited in
+ * their written order, so the crossings and their order are the same.
+ * Children with no box (or a box that is not finite) are always chosen.
+ */
+#define LEAF_RUN 4
+/* The most children a ray query collects; a ray meeting more boxes
+   than this falls back to testing every child. */
+#define QUERY_MAX 256
+
+typedef struct csg_tree_node {
+  zr_vec3 lo, hi;
+  uint32_t right;        /* inner node: the second subtree (first: next) */
+  uint32_t first, count; /* leaf: children order[first ..], count > 0 */
+} csg_tree_node;
+
+struct zr_csg_tree {
+  csg_tree_node *nodes;
+  uint32_t *order;      /* the boxed children, as the leaves hold them */
+  uint32_t *unbounded;  /* the others, always visited */
+  uint32_t n_unbounded;
+};
+
+typedef struct tree_item {
+  double centre[3];
+  uint32_t child;
+} tree_item;
+
+static int by_x(const void *a, const void *b) {
+  double u = ((const tree_item *)a)->centre[0];
+  double v = ((const tree_item *)b)->centre[0];
+  return (u > v) - (u < v);
+}
+static int by_y(const void *a, const void *b) {
+  double u = ((const tree_item *)a)->centre[1];
+  double v = ((const tree_item *)b)->centre[1];
+  return (u > v) - (u < v);
+}
+static int by_z(const void *a, const void *b) {
+  double u = ((const tree_item *)a)->centre[2];
+  double v = ((const tree_item *)b)->centre[2];
+  return (u > v) - (u < v);
+}
+
+/* Fills nodes from *used on with the tree of items[0 .. n); returns the
+   index of its root. */
+static uint32_t build_node(struct zr_csg_tree *t, const zr_object *node,
+                           tree_item *items, uint32_t n, uint32_t offset,
+                           uint32_t *used) {
+  uint32_t at = (*used)++;
+  csg_tree_node *nd = &t->nodes[at];
+  const struct zr_csg_box *b = node->u.csg.boxes;
+  zr_vec3 lo = b[items[0].child].lo, hi = b[items[0].child].hi;
+  double clo[3], chi[3];
+  for (int k = 0; k < 3; k++)
+    clo[k] = chi[k] = items[0].centre[k];
+  for (uint32_t i = 1; i < n; i++) {
+    lo = zr_v3_min(lo, b[items[i].child].lo);
+    hi = zr_v3_max(hi, b[items[i].child].hi);
+    for (int k = 0; k < 3; k++) {
+      clo[k] = fmin(clo[k], items[i].centre[k]);
+      chi[k] = fmax(chi[k], items[i].centre[k]);
+    }
+  }
+  nd->lo = lo;
+  nd->hi = hi;
+  if (n <= LEAF_RUN) {
+    nd->first = offset;
+    nd->count = n;
+    nd->right = 0;
+    for (uint32_t i = 0; i < n; i++)
+      t->order[offset + i] = items[i].child;
+    return at;
+  }
+  int axis = 0;
+  for (int k = 1; k < 3; k++)
+    if (chi[k] - clo[k] > chi[axis] - clo[axis])
+      axis = k;
+  static int (*const cmp[3])(const void *, const void *) = {by_x, by_y,
+                                                            by_z};
+  qsort(items, n, sizeof *items, cmp[axis]);
+  uint32_t half = n / 2;
+  nd->count = 0;
+  nd->first = 0;
+  build_node(t, node, items, half, offset, used);
+  uint32_t right = build_node(t, node, items + half, n - half,
+                              offset + half, used);
+  t->nodes[at].right = right;
+  return at;
+}
+
+static bool finite_box(const struct zr_csg_box *b) {
+  return b->bounded && isfinite(b->lo.x) && isfinite(b->lo.y) &&
+         isfinite(b->lo.z) && isfinite(b->hi.x) && isfinite(b->hi.y) &&
+         isfinite(b->hi.z);
+}
+
+zr_status zr__csg_tree_build(zr_arena *arena, zr_object *node) {
+  node->u.csg.tree = NULL;
+  size_t n = node->u.csg.n_children;
+  const struct zr_csg_box *b = node->u.csg.boxes;
+  if (!b || n < ZR_CSG_TREE_MIN || n > UINT32_MAX / 2)
+    return ZR_OK;
+  uint32_t n_boxed = 0;
+  for (size_t i = 0; i < n; i++)
+    n_boxed += finite_box(&b[i]);
+  if (n_boxed < ZR_CSG_TREE_MIN)
+    return ZR_OK;
+  struct zr_csg_tree *t = zr__arena_alloc(arena, sizeof *t);
+  tree_item *items = malloc(n_boxed * sizeof *items);
+  if (!t || !items) {
+    free(items);
+    return ZR_ENOMEM;
+  }
+  t->nodes = zr__arena_alloc(arena, 2 * n_boxed * sizeof *t->nodes);
+  t->order = zr__arena_alloc(arena, n_boxed * sizeof *t->order);
+  t->n_unbounded = (uint32_t)(n - n_boxed);
+  t->unbounded = zr__arena_alloc(
+      arena, (t->n_unbounded ? t->n_unbounded : 1) * sizeof *t->unbounded);
+  if (!t->nodes || !t->order || !t->unbounded) {
+    free(items);
+    return ZR_ENOMEM;
+  }
+  uint32_t k = 0, u = 0;
+  for (size_t i = 0; i < n; i++) {
+    if (!finite_box(&b[i])) {
+      t->unbounded[u++] = (uint32_t)i;
+      continue;
+    }
+    zr_vec3 c = zr_v3_scale(zr_v3_add(b[i].lo, b[i].hi), 0.5);
+    items[k].centre[0] = c.x;
+    items[k].centre[1] = c.y;
+    items[k].centre[2] = c.z;
+    items[k++].child = (uint32_t)i;
+  }
+  uint32_t used = 0;
+  build_node(t, node, items, n_boxed, 0, &used);
+  free(items);
+  node->u.csg.tree = t;
+  return ZR_OK;
+}
+
+static int by_index(const void *a, const void *b) {
+  uint32_t u = *(const uint32_t *)a, v = *(const uint32_t *)b;
+  return (u > v) - (u < v);
+}
+
+/* The children of node whose boxes the ray may meet in (tmin, tmax),
+   in written order, into out[QUERY_MAX]; -1 when there are more. */
+static int tree_ray(const struct zr_csg_tree *t, const zr_ray *ray,
+                    double tmin, double tmax, uint32_t *out) {
+  int n = 0;
+  if (t->n_unbounded > QUERY_MAX)
+    return -1;
+  for (uint32_t i = 0; i < t->n_unbounded; i++)
+    out[n++] = t->unbounded[i];
+  uint32_t stack[64];
+  int sp = 0;
+  stack[sp++] = 0;
+  while (sp > 0) {
+    const csg_tree_node *nd = &t->nodes[stack[--sp]];
+    if (!ray_meets_box(nd->lo, nd->hi, ray, tmin, tmax))
+      continue;
+    if (nd->count > 0) {
+      if (n + (int)nd->count > QUERY_MAX)
+        return -1;
+      for (uint32_t i = 0; i < nd->count; i++)
+        out[n++] = t->order[nd->first + i];
+      continue;
+    }
+    if (sp + 2 > 64)
+      return -1;
+    stack[sp++] = nd->right;
+    stack[sp++] = (uint32_t)(nd - t->nodes) + 1;
+  }
+  if (n > 1)
+    qsort(out, (size_t)n, sizeof *out, by_index);
+  return n;
+}
+
+/* Whether some child of node other than self holds p, as zr__inside
+   finds (merge and union). */
+static bool some_other_holds(const zr_object *node, size_t self, zr_vec3 p);
 
 /* zr__inside() of child j of a CSG node, with its box first. */
 static bool child_inside(const zr_object *node, size_t j, zr_vec3 p) {
@@ -100,11 +305,45 @@ static void gather_leaf(gather *g, const zr_object *leaf, double tmin) {
 static bool keep(const zr_object *node, size_t self, zr_vec3 p) {
   if (node->kind == ZR_OBJ_UNION)
     return true;
+  if (node->kind == ZR_OBJ_MERGE && node->u.csg.tree)
+    return !some_other_holds(node, self, p);
   bool want_inside = node->kind == ZR_OBJ_INTERSECTION;
   for (size_t j = 0; j < node->u.csg.n_children; j++)
     if (j != self && child_inside(node, j, p) != want_inside)
       return false;
   return true;
+}
+
+/*
+ * The top node's crossings are final once kept (no node above it can
+ * drop them), so when the caller wants only its nearest `wanted`, a
+ * crossing beyond the wanted-th nearest kept so far cannot be reported:
+ * the search interval ends there for the children still to come, whose
+ * boxes then often miss it (a difference of a box and fifty cylinders
+ * asks few of them once the box's face is kept).  The kept crossings
+ * and their order stay what they were: a crossing at the new tmax ties
+ * with an earlier one, which the selection in zr__csg_crossings prefers.
+ * Not with a clip on the top node, which may still drop them.
+ */
+static void shrink(gather *g, int start) {
+  double best[ZR_MAX_CROSSINGS];
+  int n = 0;
+  for (int k = start; k < g->n; k++) {
+    double t = g->hit[k].t;
+    int j = n < g->wanted ? n++ : g->wanted;
+    if (j == g->wanted) {
+      if (t >= best[j - 1])
+        continue;
+      j--;
+    }
+    while (j > 0 && best[j - 1] > t) {
+      best[j] = best[j - 1];
+      j--;
+    }
+    best[j] = t;
+  }
+  if (n == g->wanted && best[n - 1] < g->tmax)
+    g->tmax = best[n - 1];
 }
 
 static void gather_node(gather *g, const zr_object *o, double tmin) {
@@ -113,7 +352,13 @@ static void gather_node(gather *g, const zr_object *o, double tmin) {
     gather_leaf(g, o, tmin);
     return; /* a leaf's own clip is applied by zr__intersect */
   }
-  for (size_t i = 0; i < o->u.csg.n_children; i++) {
+  uint32_t chosen[QUERY_MAX];
+  int n_chosen = -1;
+  if (o->u.csg.tree)
+    n_chosen = tree_ray(o->u.csg.tree, g->ray, tmin, g->tmax, chosen);
+  size_t n_loop = n_chosen >= 0 ? (size_t)n_chosen : o->u.csg.n_children;
+  for (size_t c = 0; c < n_loop; c++) {
+    size_t i = n_chosen >= 0 ? chosen[c] : c;
     if (o->u.csg.boxes &&
         !ray_meets(&o->u.csg.boxes[i], g->ray, tmin, g->tmax))
       continue;
@@ -125,6 +370,8 @@ static void gather_node(gather *g, const zr_object *o, double tmin) {
       if (keep(o, i, point_at(g->ray, g->hit[k].t)))
         g->hit[kept++] = g->hit[k];
     g->n = kept;
+    if (o == g->top && !o->clip && kept > first)
+      shrink(g, start);
   }
   if (o->clip) {
     int kept = start;
@@ -137,11 +384,14 @@ static void gather_node(gather *g, const zr_object *o, double tmin) {
 
 int zr__csg_crossings(const zr_object *object, const zr_ray *ray,
                       double tmin, double tmax, bool want_normals,
-                      zr_hit hits[ZR_MAX_CROSSINGS]) {
+                      int wanted, zr_hit hits[ZR_MAX_CROSSINGS]) {
   gather g;
   g.ray = ray;
   g.tmax = tmax;
   g.want_normals = want_normals;
+  g.top = object;
+  g.wanted = wanted < 1 ? 1 : wanted > ZR_MAX_CROSSINGS ? ZR_MAX_CROSSINGS
+                                                        : wanted;
   g.n = 0;
   gather_node(&g, object, tmin);
   /* The nearest ZR_MAX_CROSSINGS, sorted, by selection: lists are
@@ -162,9 +412,44 @@ int zr__csg_crossings(const zr_object *object, const zr_ray *ray,
   return n;
 }
 
+static bool some_other_holds(const zr_object *node, size_t self,
+                             zr_vec3 p) {
+  const struct zr_csg_tree *t = node->u.csg.tree;
+  for (uint32_t i = 0; i < t->n_unbounded; i++)
+    if (t->unbounded[i] != self && child_inside(node, t->unbounded[i], p))
+      return true;
+  uint32_t stack[64];
+  int sp = 0;
+  stack[sp++] = 0;
+  while (sp > 0) {
+    const csg_tree_node *nd = &t->nodes[stack[--sp]];
+    if (!box_holds(nd->lo, nd->hi, p))
+      continue;
+    if (nd->count > 0) {
+      for (uint32_t i = 0; i < nd->count; i++) {
+        uint32_t j = t->order[nd->first + i];
+        if (j != self && child_inside(node, j, p))
+          return true;
+      }
+      continue;
+    }
+    if (sp + 2 > 64) { /* deeper than any tree of 2^32 children */
+      for (size_t j = 0; j < node->u.csg.n_children; j++)
+        if (j != self && child_inside(node, j, p))
+          return true;
+      return false;
+    }
+    stack[sp++] = nd->right;
+    stack[sp++] = (uint32_t)(nd - t->nodes) + 1;
+  }
+  return false;
+}
+
 bool zr__csg_inside(const zr_object *object, zr_vec3 p) {
   bool in;
-  if (object->kind == ZR_OBJ_INTERSECTION) {
+  if (object->kind != ZR_OBJ_INTERSECTION && object->u.csg.tree) {
+    in = some_other_holds(object, SIZE_MAX, p);
+  } else if (object->kind == ZR_OBJ_INTERSECTION) {
     in = object->u.csg.n_children > 0;
     for (size_t i = 0; in && i < object->u.csg.n_children; i++)
       in = child_inside(object, i, p);

@@ -48,7 +48,8 @@ static int crossings(const zr_object *object, const zr_ray *ray,
                      bool *all) {
   *all = false;
   if (zr__is_csg(object->kind)) /* children carry their transforms */
-    return zr__csg_crossings(object, ray, tmin, tmax, want_normals, hits);
+    return zr__csg_crossings(object, ray, tmin, tmax, want_normals, wanted,
+                             hits);
   zr_vec3 org = ray->origin, dir = ray->dir;
   if (object->transform) {
     org = zr__xform_point(object->transform->inv, org);

@@ -86,11 +86,18 @@ bool zr__primitive_bounds(const zr_object *object, zr_vec3 *lo,
 bool zr__inside(const zr_object *object, zr_vec3 p);
 
 /* CSG primitives (lib/trace/csg.c): the same contracts as
-   zr__intersect (normals only when want_normals) and zr__inside. */
+   zr__intersect (normals only when want_normals) and zr__inside; with
+   wanted 1 only the nearest crossing is sure to be reported (the
+   second, if any, may not be the second nearest), with
+   ZR_MAX_CROSSINGS the nearest two. */
 int zr__csg_crossings(const zr_object *object, const zr_ray *ray,
                       double tmin, double tmax, bool want_normals,
-                      zr_hit hits[ZR_MAX_CROSSINGS]);
+                      int wanted, zr_hit hits[ZR_MAX_CROSSINGS]);
 bool zr__csg_inside(const zr_object *object, zr_vec3 p);
+/* Makes node->u.csg.tree from its children's boxes when it has many
+   (ZR_CSG_TREE_MIN or more) bounded children; the tree lives in arena. */
+#define ZR_CSG_TREE_MIN 8
+zr_status zr__csg_tree_build(zr_arena *arena, zr_object *node);
 
 /* Whether the object encloses a volume (triangles and discs do not, so
    rays crossing them stay in the medium they were in). */

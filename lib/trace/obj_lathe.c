@@ -41,7 +41,7 @@ void zr__lathe_bounds(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi) {
 }
 
 static bool covers(const zr_object *o, zr_vec3 p) {
-  return zr__curves_cover(o->u.lathe.seg, o->u.lathe.n_seg,
+  return zr__curves_cover(o->u.lathe.seg, o->u.lathe.box, o->u.lathe.n_seg,
                           sqrt(p.x * p.x + p.z * p.z), p.y);
 }
 
@@ -158,12 +158,11 @@ static void piece_crossings(const zr_object *o, const double *seg,
  * degree-six solves (a chess piece has a dozen segments, and a ray near
  * its foot meets one or two).
  */
-static bool piece_may_cross(const double *seg, zr_vec3 org, zr_vec3 dir,
-                            double pad) {
-  double ylo, yhi, rlo, rhi;
-  zr__cubic_range(seg + 4, &ylo, &yhi);
-  zr__cubic_range(seg, &rlo, &rhi);
-  ylo -= pad, yhi += pad;
+static bool piece_may_cross(const zr_object *o, size_t i, zr_vec3 org,
+                            zr_vec3 dir, double pad) {
+  double b[4];
+  zr__piece_box(o->u.lathe.seg, o->u.lathe.box, i, b);
+  double rlo = b[0], rhi = b[1], ylo = b[2] - pad, yhi = b[3] + pad;
   double rmax = fmax(fabs(rlo), fabs(rhi)) + pad;
   double rmin = (rlo > 0.0 || rhi < 0.0) ? fmin(fabs(rlo), fabs(rhi)) - pad
                                          : 0.0;
@@ -210,7 +209,7 @@ int zr__lathe_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
     return 0;
   zr_hit_list l = {0, {0}, {{0, 0, 0}}};
   for (size_t i = 0; i < o->u.lathe.n_seg; i++)
-    if (piece_may_cross(o->u.lathe.seg + 8 * i, org, dir, pad))
+    if (piece_may_cross(o, i, org, dir, pad))
       piece_crossings(o, o->u.lathe.seg + 8 * i, org, dir, tmin, tmax, &l);
   for (int i = 0; i < l.n; i++) {
     t[i] = l.t[i];

@@ -82,19 +82,18 @@ void zr__cubic_range(const double *c, double *lo, double *hi) {
     }
 }
 
-bool zr__curves_cover(const double *pieces, size_t n_pieces, double x,
-                      double z) {
+bool zr__curves_cover(const double *pieces, const double *box,
+                      size_t n_pieces, double x, double z) {
   bool in = false;
   for (size_t i = 0; i < n_pieces; i++) {
     const double *seg = pieces + 8 * i;
     /* A piece wholly above or below the line z, or wholly at or left of
        x, crosses nothing to the right of the point: skip its roots. */
-    double zlo, zhi, xlo, xhi;
-    zr__cubic_range(seg + 4, &zlo, &zhi);
-    if (z < zlo || z > zhi)
+    double b[4];
+    zr__piece_box(pieces, box, i, b);
+    if (z < b[2] || z > b[3])
       continue;
-    zr__cubic_range(seg, &xlo, &xhi);
-    if (xhi <= x)
+    if (b[1] <= x)
       continue;
     double zc[4] = {seg[4] - z, seg[5], seg[6], seg[7]};
     double s[4];
@@ -112,13 +111,13 @@ bool zr__curves_cover(const double *pieces, size_t n_pieces, double x,
 
 /* The 2-D point of the curves under (x, z) at height y. */
 static bool covers_at(const zr_object *o, zr_vec3 p) {
-  const double *seg = o->u.prism.seg;
+  const double *seg = o->u.prism.seg, *box = o->u.prism.box;
   size_t n = o->u.prism.n_seg;
   if (!o->u.prism.conic)
-    return zr__curves_cover(seg, n, p.x, p.z);
+    return zr__curves_cover(seg, box, n, p.x, p.z);
   if (p.y == 0.0)
     return false;
-  return zr__curves_cover(seg, n, p.x / p.y, p.z / p.y);
+  return zr__curves_cover(seg, box, n, p.x / p.y, p.z / p.y);
 }
 
 bool zr__prism_inside(const zr_object *o, zr_vec3 p) {
@@ -171,12 +170,44 @@ static zr_vec3 outward(const zr_object *o, zr_vec3 p, zr_vec3 n) {
   return covers_at(o, q) ? zr_v3_neg(n) : n;
 }
 
+/*
+ * Whether the part of a ray from tmin to tmax, seen from above (in the
+ * x-z plane), meets the box b of a piece widened by pad: a wall point
+ * of the piece lies in that box, so a ray that misses it has no
+ * crossing there with t in (tmin, tmax), and the cubic is not solved
+ * (a prism of many pieces is met by a ray at two or three of them).
+ * Only for a straight prism: a conic one's pieces are scaled by y.
+ */
+static bool piece_may_cross(const double b[4], zr_vec3 org, zr_vec3 dir,
+                            double tmin, double tmax, double pad) {
+  double lo[2] = {b[0] - pad, b[2] - pad}, hi[2] = {b[1] + pad, b[3] + pad};
+  double o2[2] = {org.x, org.z}, d2[2] = {dir.x, dir.z};
+  for (int k = 0; k < 2; k++) {
+    if (d2[k] == 0.0) {
+      if (o2[k] < lo[k] || o2[k] > hi[k])
+        return false;
+      continue;
+    }
+    double a = (lo[k] - o2[k]) / d2[k], c = (hi[k] - o2[k]) / d2[k];
+    tmin = fmax(tmin, fmin(a, c));
+    tmax = fmin(tmax, fmax(a, c));
+  }
+  return tmin <= tmax;
+}
+
 static void wall_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
-                           double tmin, double tmax, zr_hit_list *l) {
+                           double tmin, double tmax, double pad,
+                           zr_hit_list *l) {
   zr_vec3 m = zr_v3_cross(org, dir);
   double dd = zr_v3_dot(dir, dir);
   for (size_t i = 0; i < o->u.prism.n_seg; i++) {
     const double *x = o->u.prism.seg + 8 * i, *z = x + 4;
+    if (!o->u.prism.conic) {
+      double b[4];
+      zr__piece_box(o->u.prism.seg, o->u.prism.box, i, b);
+      if (!piece_may_cross(b, org, dir, tmin, tmax, pad))
+        continue;
+    }
     double c[4];
     for (int k = 0; k < 4; k++)
       c[k] = o->u.prism.conic ? m.x * x[k] + m.z * z[k]
@@ -252,7 +283,7 @@ int zr__prism_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
   if (!(tmin < tmax))
     return 0;
   zr_hit_list l = {0, {0}, {{0, 0, 0}}};
-  wall_crossings(o, org, dir, tmin, tmax, &l);
+  wall_crossings(o, org, dir, tmin, tmax, pad, &l);
   cap_crossings(o, org, dir, tmin, tmax, &l);
   for (int i = 0; i < l.n; i++) {
     t[i] = l.t[i];

@@ -53,11 +53,26 @@ int zr__prism_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
 bool zr__prism_inside(const zr_object *o, zr_vec3 p);
 void zr__prism_bounds(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi);
 /* Whether (x, z) is inside the curves of n pieces (a prism's or a
-   lathe's seg) by the even-odd rule. */
-bool zr__curves_cover(const double *seg, size_t n, double x, double z);
+   lathe's seg, with its box, which may be NULL) by the even-odd rule. */
+bool zr__curves_cover(const double *seg, const double *box, size_t n,
+                      double x, double z);
 /* The range of the cubic c[0] + c[1] s + c[2] s^2 + c[3] s^3 over s in
    [0, 1] (its ends and turning points), in *lo and *hi. */
 void zr__cubic_range(const double *c, double *lo, double *hi);
+/* The box of piece i of seg in out: xlo, xhi, zlo, zhi (a prism's or a
+   lathe's box[4 i ..] when box is not NULL, else worked out).  Inline:
+   it runs for every piece of every curve a ray or point is tested
+   against. */
+static inline void zr__piece_box(const double *seg, const double *box,
+                                 size_t i, double out[4]) {
+  if (box) {
+    for (int k = 0; k < 4; k++)
+      out[k] = box[4 * i + k];
+    return;
+  }
+  zr__cubic_range(seg + 8 * i, &out[0], &out[1]);
+  zr__cubic_range(seg + 8 * i + 4, &out[2], &out[3]);
+}
 
 int zr__lathe_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
                         double tmin, double tmax, double t[4],
