@@ -41,6 +41,10 @@
  * the element node's gathered values (push-pull takes it down) and is
  * kept per element for the final gather.
  *
+ * Known fault: in a furnace of 25 boxes (test_radiosity_volume_clusters)
+ * the boxes' sides come out 8% dark with clusters, so clustering is
+ * off unless params.cluster_surfaces asks for it.
+ *
  * Meshes keep their own clusters of faces (cluster.c) and are paired
  * with every other surface; small scenes (fewer than
  * params.cluster_surfaces surfaces, 64 by default) pair every two
