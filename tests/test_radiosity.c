@@ -1102,12 +1102,12 @@ static zr_scene *parse_box_furnace(zr_context *ctx) {
 }
 
 /*
- * Cluster links carry the furnace's light about as the pairs of
- * surfaces they stand for: the room's inner sides stay at B = 2 within
- * 3% on average, the boxes' within 10% (8% low today), the outer room
- * sides at 1, with fewer
- * links than pairing every two surfaces; and the solution is the same
- * bytes for 1 and 3 threads.
+ * Cluster links carry the furnace's light as the pairs of surfaces
+ * they stand for: the room's inner sides and the boxes' stay at B = 2
+ * within 1% on average with clusters (3% pairing every two surfaces,
+ * which is 2% high at this BF_eps), the outer room sides at 1, with
+ * fewer links than pairing every two surfaces; and the solution is the
+ * same bytes for 1 and 3 threads.
  */
 static void test_radiosity_volume_clusters(void **state) {
   (void)state;
@@ -1120,7 +1120,8 @@ static void test_radiosity_volume_clusters(void **state) {
     p.one_sided_emission = 0;
     p.bf_eps = 1e-3;
     p.area_eps = 1e-3;
-    p.cluster_surfaces = k == 2 ? 0 : 64; /* 0 is the default */
+    assert_int_equal(p.cluster_surfaces, 64); /* the default */
+    p.cluster_surfaces = k == 2 ? 0 : 64;
     p.threads = k == 1 ? 3 : 1;
     rad[k] = solve(ctx, scene, &p);
     assert_no_nan(rad[k]);
@@ -1141,11 +1142,13 @@ static void test_radiosity_volume_clusters(void **state) {
     printf("clusters %d: room inside %.4f outside %.4f boxes %.4f links "
            "%zu\n", k == 0, inner, outer, boxes,
            k == 0 ? a.links : b.links);
-    assert_true(fabs(inner - 2.0) < 0.06);
+    /* Measured: clustered room 2.0074, boxes 2.0039 (before the
+       LEAF_ADMIT rule and the split visibility: 1.9685 and 1.8376);
+       pairs 2.0161, 2.0430. */
+    double tol = k == 0 ? 0.02 : 0.06;
+    assert_true(fabs(inner - 2.0) < tol);
     assert_true(fabs(outer - 1.0) < 1e-9);
-    /* Measured: clustered 1.8376, 8% low (not mended yet, so
-       cluster_surfaces is 0 by default); pairs within 3%. */
-    assert_true(fabs(boxes - 2.0) < (k == 0 ? 0.2 : 0.06));
+    assert_true(fabs(boxes - 2.0) < tol);
   }
   for (int k = 0; k < 3; k++)
     zr_radiosity_free(rad[k]);
@@ -1180,5 +1183,8 @@ int main(void) {
       cmocka_unit_test(test_radiosity_zero_area_and_dark),
       cmocka_unit_test(test_radiosity_volume_clusters),
   };
+  /* RADIOSITY_TEST=name runs one test, for looking into it. */
+  if (getenv("RADIOSITY_TEST") != NULL)
+    cmocka_set_test_filter(getenv("RADIOSITY_TEST"));
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

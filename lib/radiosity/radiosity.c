@@ -55,7 +55,7 @@ ZR_API void zr_radiosity_params_init(zr_radiosity_params *p,
   p->shooting = 0;
   p->brightness = 1.0;
   p->max_mesh_faces = 0;
-  p->cluster_surfaces = 0; /* off until the boxes' 8% bias is mended */
+  p->cluster_surfaces = 64;
   /* A lamp emits from its front only: with two-sided emission the
      Cornell box's lamp, hung 0.01 below the ceiling, pours half its
      power into the gap above it (zrcube(1) explains the choice).  The
