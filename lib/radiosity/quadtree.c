@@ -374,6 +374,7 @@ void zr__rad_interpolate(const zr_radiosity *rad, int32_t n, int side,
 }
 
 void zr__rad_free_arrays(zr_radiosity *rad) {
+  zr__rad_vol_free(rad);
   free(rad->nodes);
   free(rad->links);
   free(rad->verts);

@@ -55,6 +55,7 @@ ZR_API void zr_radiosity_params_init(zr_radiosity_params *p,
   p->shooting = 0;
   p->brightness = 1.0;
   p->max_mesh_faces = 0;
+  p->cluster_surfaces = 64;
   /* A lamp emits from its front only: with two-sided emission the
      Cornell box's lamp, hung 0.01 below the ceiling, pours half its
      power into the gap above it (zrcube(1) explains the choice).  The
@@ -228,6 +229,9 @@ static zr_status solve_rounds(zr_radiosity *rad, zr_context *ctx) {
   /* Light sources first, so links start from lit sources (direct.c). */
   if (st == ZR_OK)
     st = zr__rad_direct_refine(rad);
+  /* Volume clusters of surfaces over the cells made so far (volume.c). */
+  if (st == ZR_OK)
+    st = zr__rad_vol_build(rad);
   st = agreed(rad, st);
   if (st == ZR_OK)
     st = agreed(rad, zr__rad_link_all(rad));
@@ -307,7 +311,8 @@ ZR_API zr_status zr_radiosity_solve(zr_context *ctx, const zr_scene *scene,
   zr__rad_energy(rad);
   zr__rad_smooth(rad);
   zr__rad_count(rad);
-  rad->stats.links = rad->n_links;
+  rad->stats.links = rad->n_links + zr__rad_vol_live(rad);
+  rad->stats.visibility_rays += rad->vol_rays;
   if (agreed(rad, rad->params.lookup == 0 ? zr__rad_index_links(rad)
                                            : ZR_OK) != ZR_OK) {
     zr_radiosity_free(rad);
@@ -598,6 +603,9 @@ static void final_gather(const zr_radiosity *rad, int32_t leaf, int side,
                      0.0;
       gather_source(rad, l->src, l->sside, point, n, l->vis, emitter, h);
     }
+  /* Cluster links keep their mean irradiance over the element. */
+  if (rad->clustered)
+    zr__rad_vol_incident(rad, leaf, side, h);
 }
 
 bool zr__radiosity_radiance(const zr_radiosity *rad, const zr_object *object,

@@ -13,6 +13,7 @@
  *   radiosity.c the public API and the lookup from a ray hit
  *   trim.c      CSG trimming of the parts of intersections and merges
  *   cluster.c   form factors of links to clusters of a mesh's faces
+ *   volume.c    volume clusters of whole surfaces and their links
  *   workers.c   the threads of a rank, a parallel loop
  *
  * Every element has two sides, front (along the surface's outward normal)
@@ -71,6 +72,9 @@ typedef struct zr__rad_node {
      mean over the cell, per side; set where has_direct is 1 (leaves). */
   double hd[2][3];
   uint8_t has_direct;
+  /* 1 + the index of the cluster element this node is (volume.c), 0
+     for a node that is none. */
+  uint32_t elem1;
 } zr__rad_node;
 
 /* A link: node recv (side rside) gathers from node src (side sside). */
@@ -109,6 +113,41 @@ typedef struct zr__rad_surface {
   int32_t root;
   double area;
 } zr__rad_surface;
+
+/* A volume cluster of whole surfaces (volume.c): a node of a binary
+   tree over the surfaces; a leaf holds one surface. */
+typedef struct zr__rad_vol {
+  int32_t child[2]; /* -1 for a leaf */
+  int32_t surf;     /* a leaf's surface, -1 above */
+  uint32_t e0, e1;  /* its elements, vol_elems[e0, e1) */
+  zr_vec3 lo, hi, centre;
+  double radius; /* of the sphere round its box */
+  double area;
+} zr__rad_vol;
+
+/* A node that stands for its surface in links to clusters: a planar
+   surface's root, a curved one's cells of its initial 4 x 4 split. */
+typedef struct zr__rad_elem {
+  int32_t node;
+  double hc[2][3]; /* irradiance that cluster links brought, per side */
+} zr__rad_elem;
+
+/* One element's weight in a cluster link: at the source end its
+   intensity per unit radiosity, A cos V / pi, at the receiving end its
+   irradiance per unit intensity, cos V / r^2. */
+typedef struct zr__rad_vweight {
+  uint32_t elem;
+  uint32_t side;
+  double w;
+} zr__rad_vweight;
+
+/* A link between volume clusters (one end may be one surface). */
+typedef struct zr__rad_vlink {
+  int32_t recv, src; /* zr__rad_vol indices */
+  uint8_t dead;
+  uint32_t ns, nr; /* weights: w[0, ns) source, w[ns, ns + nr) receiver */
+  zr__rad_vweight *w; /* NULL until computed */
+} zr__rad_vlink;
 
 /* Which surfaces belong to an object, sorted by object address. */
 typedef struct zr__rad_object_entry {
@@ -163,6 +202,17 @@ struct zr_radiosity {
      (radiosity.c); NULL entries are not made yet. */
   struct zr__rad_poly *_Atomic *poly_cache;
   size_t n_poly_cache; /* its entries: the nodes when it was made */
+
+  /* Volume clusters of surfaces (volume.c); clustered is false when
+     initial linking pairs every two surfaces instead. */
+  bool clustered;
+  zr__rad_vol *vols;
+  size_t n_vols;
+  zr__rad_elem *elems;
+  size_t n_elems;
+  zr__rad_vlink *vlinks;
+  size_t n_vlinks, cap_vlinks;
+  uint64_t vol_rays; /* visibility rays of cluster links */
 
   double light_power;  /* light sources' power onto the surfaces (est.) */
   double total_area;   /* of every surface */
@@ -280,6 +330,39 @@ double zr__rad_cluster_point_factor(const zr_radiosity *rad,
 double zr__rad_cluster_link_factor(const zr_radiosity *rad,
                                    const zr__rad_node *p, int rside,
                                    const zr__rad_node *q, int sside);
+
+/* ---- volume.c ---- */
+/* Builds the cluster tree over the surfaces when the scene is large
+   enough and the solver gathers alone (sets rad->clustered). */
+zr_status zr__rad_vol_build(zr_radiosity *rad);
+/* A list of ordered surface pairs (receiver, source) to link as
+   link_all links every pair. */
+typedef struct zr__rad_pairs {
+  uint32_t *ij; /* 2 per pair */
+  size_t n, cap;
+  bool nomem;
+} zr__rad_pairs;
+/* The initial linking through the cluster tree: cluster links where
+   the light they may carry is below BF_eps, surface pairs elsewhere. */
+zr_status zr__rad_vol_link(zr_radiosity *rad, zr__rad_pairs *pairs);
+/* Re-examines the cluster links against BF_eps with the current
+   radiosity; *changed counts those split. */
+zr_status zr__rad_vol_refine(zr_radiosity *rad, zr__rad_pairs *pairs,
+                             size_t *changed);
+/* Computes the weights of the cluster links that have none. */
+zr_status zr__rad_vol_finish(zr_radiosity *rad);
+/* Adds what the cluster links carry to their receivers' gathered
+   values (after the node links' gather, before push-pull). */
+void zr__rad_vol_gather(zr_radiosity *rad);
+/* Adds the cluster links' irradiance at leaf and its ancestors on side
+   to h (the final gather). */
+void zr__rad_vol_incident(const zr_radiosity *rad, int32_t leaf, int side,
+                          double h[3]);
+void zr__rad_vol_free(zr_radiosity *rad);
+/* The cluster links not split (counted with the links). */
+size_t zr__rad_vol_live(const zr_radiosity *rad);
+/* Links the surface pairs as zr__rad_link_all links all (refine.c). */
+zr_status zr__rad_link_pairs(zr_radiosity *rad, const zr__rad_pairs *pairs);
 
 /* ---- io.c ---- */
 uint64_t zr__rad_fingerprint(const zr_scene *scene);

@@ -680,6 +680,8 @@ typedef struct planner {
   /* A team's deal: chunks of `chunk` tasks, chunk c to member
      (c + c / stagger) % n (stagger 0: c % n). */
   size_t chunk, stagger;
+  /* link_all's pairs from a list (2 surfaces each) instead of all. */
+  const uint32_t *pairs;
 } planner;
 
 /* The member that plans chunk c of a batch. */
@@ -713,6 +715,10 @@ static void plan_pairs(void *user, size_t begin, size_t end, int worker) {
     plan *pl = &w->plans[t];
     pl->n = 0;
     size_t i = (w->first + t) / rad->n_surfs, j = (w->first + t) % rad->n_surfs;
+    if (w->pairs != NULL) {
+      i = w->pairs[2 * (w->first + t)];
+      j = w->pairs[2 * (w->first + t) + 1];
+    }
     if (i == j && rad->surfs[i].geom.planar)
       continue; /* a planar surface cannot see itself */
     vnode p, q;
@@ -844,8 +850,9 @@ static zr_status make_plans(planner *w) {
   return ZR_OK;
 }
 
-zr_status zr__rad_link_all(zr_radiosity *rad) {
-  size_t n_pairs = rad->n_surfs * rad->n_surfs;
+/* Plans and replays n_pairs pair tasks (all pairs, or a list). */
+static zr_status link_tasks(zr_radiosity *rad, size_t n_pairs,
+                            const uint32_t *pairs) {
   size_t batch = batch_of(rad);
   plan *plans = calloc(batch, sizeof *plans);
   if (plans == NULL)
@@ -854,7 +861,7 @@ zr_status zr__rad_link_all(zr_radiosity *rad) {
      row of pairs (member (i + j) % n plans pair i, j): a pair's cost
      follows its surfaces' sizes, and chunks of 8 pairs in a row gave
      one of 2 ranks 3 times the other's planning (cornell.pov). */
-  planner w = {rad, plans, 0, plan_pairs, NULL, 0, 1, rad->n_surfs};
+  planner w = {rad, plans, 0, plan_pairs, NULL, 0, 1, rad->n_surfs, pairs};
   zr_status st = ZR_OK;
   for (size_t at = 0; st == ZR_OK && at < n_pairs; at += batch) {
     w.count = n_pairs - at < batch ? n_pairs - at : batch;
@@ -865,6 +872,25 @@ zr_status zr__rad_link_all(zr_radiosity *rad) {
     st = replayed(rad, st);
   }
   free_plans(plans, batch);
+  return st;
+}
+
+zr_status zr__rad_link_pairs(zr_radiosity *rad, const zr__rad_pairs *pairs) {
+  if (pairs->nomem)
+    return ZR_ENOMEM;
+  return link_tasks(rad, pairs->n, pairs->ij);
+}
+
+zr_status zr__rad_link_all(zr_radiosity *rad) {
+  if (!rad->clustered)
+    return link_tasks(rad, rad->n_surfs * rad->n_surfs, NULL);
+  /* Volume clusters (volume.c): the pairs of surfaces close enough to
+     matter, cluster links for the rest. */
+  zr__rad_pairs pairs = {0};
+  zr_status st = zr__rad_vol_link(rad, &pairs);
+  if (st == ZR_OK)
+    st = zr__rad_link_pairs(rad, &pairs);
+  free(pairs.ij);
   return st;
 }
 
@@ -896,7 +922,7 @@ zr_status zr__rad_refine_links(zr_radiosity *rad, size_t *changed) {
   plan *plans = calloc(batch, sizeof *plans);
   if (plans == NULL)
     return ZR_ENOMEM;
-  planner w = {rad, plans, 0, plan_refinements, NULL, 0, PLAN_CHUNK, 0};
+  planner w = {rad, plans, 0, plan_refinements, NULL, 0, PLAN_CHUNK, 0, NULL};
   zr_status st = ZR_OK;
   for (size_t at = 0; st == ZR_OK && at < n; at += batch) {
     w.count = n - at < batch ? n - at : batch;
@@ -914,6 +940,15 @@ zr_status zr__rad_refine_links(zr_radiosity *rad, size_t *changed) {
     st = replayed(rad, st);
   }
   free_plans(plans, batch);
+  if (st == ZR_OK && rad->clustered) {
+    zr__rad_pairs pairs = {0};
+    size_t split = 0;
+    st = zr__rad_vol_refine(rad, &pairs, &split);
+    if (st == ZR_OK)
+      st = zr__rad_link_pairs(rad, &pairs);
+    free(pairs.ij);
+    *changed += split;
+  }
   return st;
 }
 
@@ -1278,6 +1313,11 @@ static zr_status finish_team(zr_radiosity *rad, const zr_team *team) {
 
 zr_status zr__rad_finish_links(zr_radiosity *rad) {
   const zr_team *team = rad->params.team;
+  if (rad->clustered) {
+    zr_status st = zr__rad_vol_finish(rad);
+    if (st != ZR_OK)
+      return st;
+  }
   if (zr__team_size(team) > 1)
     return finish_team(rad, team);
   finisher w;

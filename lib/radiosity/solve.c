@@ -442,6 +442,8 @@ static zr_status solve_gather(zr_radiosity *rad) {
   while (it < rad->params.max_iterations &&
          (st = zr__rad_progress(rad)) == ZR_OK) {
     gather(rad, &ix);
+    if (rad->clustered)
+      zr__rad_vol_gather(rad);
     residual = push_pull_all(rad, change) / rad->power_ref;
     it++;
     if (!(residual > rad->params.residual))
