@@ -23,13 +23,7 @@ REPEAT=${REPEAT:-5}
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 export OMPI_MCA_rmaps_base_oversubscribe=1
 unset OMPI_MCA_pml OMPI_MCA_mtl
-if [ -x "$build/bin/.libs/zrcube" ]; then
-  zrcube=$build/bin/.libs/zrcube
-  LD_LIBRARY_PATH=$build/lib/.libs${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
-  export LD_LIBRARY_PATH
-else
-  zrcube=$build/bin/zrcube
-fi
+. "$here/zrexe.sh"
 rt=
 [ "${RT:-0}" = 1 ] && rt="chrt -r 20"
 tmp=$(mktemp -d)

@@ -22,13 +22,7 @@ SIZES=${SIZES:-512 2048}
 REPEAT=${REPEAT:-3}
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 export OMPI_MCA_rmaps_base_oversubscribe=1
-if [ -x "$build/bin/.libs/zrcube" ]; then
-  zrcube=$build/bin/.libs/zrcube
-  LD_LIBRARY_PATH=$build/lib/.libs${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
-  export LD_LIBRARY_PATH
-else
-  zrcube=$build/bin/zrcube
-fi
+. "$here/zrexe.sh"
 rt=
 [ "${RT:-0}" = 1 ] && rt="chrt -r 20"
 tmp=$(mktemp -d)

@@ -548,33 +548,37 @@ zr_status zr__rad_vol_refine(zr_radiosity *rad, zr__rad_pairs *pairs,
 
 /* ---- weights ---- */
 
-/* Where the segment x + t d, t in [0, 1], enters o's box (d ends at its
-   centre); 0 when x is inside it. */
-static double box_entry(const zr__rad_vol *o, zr_vec3 x, zr_vec3 d) {
-  double t0 = 0.0;
+/* The stretch [*t0, *t1] of the segment x + t d, t in [0, 1], inside
+   o's box, by slabs: *t0 is where it enters (0 when x is inside), *t1
+   where it leaves (1 when it ends inside). */
+static void box_stretch(const zr__rad_vol *o, zr_vec3 x, zr_vec3 d,
+                        double *t0, double *t1) {
+  double in = 0.0, out = 1.0;
   for (int k = 0; k < 3; k++) {
     double dk = zr_v3_get(d, k), xk = zr_v3_get(x, k);
     double lo = zr_v3_get(o->lo, k), hi = zr_v3_get(o->hi, k);
     if (dk == 0.0)
       continue;
     double a = (lo - xk) / dk, b = (hi - xk) / dk;
-    t0 = fmax(t0, fmin(a, b));
+    in = fmax(in, fmin(a, b));
+    out = fmin(out, fmax(a, b));
   }
-  return fmin(t0, 1.0);
+  *t0 = fmin(in, 1.0);
+  *t1 = fmax(out, 0.0);
 }
 
-/* Where the segment x + t d, t in [0, 1], leaves o's box (x inside). */
+/* Where the segment enters o's box (d ends at its centre). */
+static double box_entry(const zr__rad_vol *o, zr_vec3 x, zr_vec3 d) {
+  double t0, t1;
+  box_stretch(o, x, d, &t0, &t1);
+  return t0;
+}
+
+/* Where the segment leaves o's box (x inside). */
 static double box_exit(const zr__rad_vol *o, zr_vec3 x, zr_vec3 d) {
-  double t1 = 1.0;
-  for (int k = 0; k < 3; k++) {
-    double dk = zr_v3_get(d, k), xk = zr_v3_get(x, k);
-    double lo = zr_v3_get(o->lo, k), hi = zr_v3_get(o->hi, k);
-    if (dk == 0.0)
-      continue;
-    double a = (lo - xk) / dk, b = (hi - xk) / dk;
-    t1 = fmin(t1, fmax(a, b));
-  }
-  return fmax(t1, 0.0);
+  double t0, t1;
+  box_stretch(o, x, d, &t0, &t1);
+  return t1;
 }
 
 #define BETWEEN_RAYS 8
