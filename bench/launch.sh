@@ -24,10 +24,7 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 export OMPI_MCA_rmaps_base_oversubscribe=1
 unset OMPI_MCA_pml OMPI_MCA_mtl
 . "$here/zrexe.sh"
-rt=
-[ "${RT:-0}" = 1 ] && rt="chrt -r 20"
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+. "$here/timing.sh"
 cat >"$tmp/empty.pov" <<'EOF'
 camera { location <0, 0, -3> look_at 0 }
 light_source { <5, 5, -5> rgb 1 }
@@ -35,13 +32,6 @@ sphere { 0, 1 pigment { rgb 1 } }
 EOF
 cd "$tmp"
 zr="$zrcube +Iempty.pov +Oe.png +W16 +H16 -A +WT1 -D"
-# one NAME CMD...: a run, "NAME wall cpu" appended to $tmp/t.
-one() {
-  name=$1
-  shift
-  /usr/bin/time -f "$name %e %U %S" -a -o "$tmp/t" $rt "$@" \
-    >/dev/null 2>"$tmp/err" || { cat "$tmp/err" >&2; exit 1; }
-}
 echo "load before: $(cat /proc/loadavg)"
 for rep in $(seq 1 "$REPEAT"); do
   for n in 1 2; do

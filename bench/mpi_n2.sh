@@ -23,19 +23,9 @@ REPEAT=${REPEAT:-3}
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 export OMPI_MCA_rmaps_base_oversubscribe=1
 . "$here/zrexe.sh"
-rt=
-[ "${RT:-0}" = 1 ] && rt="chrt -r 20"
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+. "$here/timing.sh"
 /usr/bin/python3 "$here/peers_gen.py" "$tmp" >/dev/null
 cd "$tmp"
-# one KEY CMD...: a run, "KEY wall cpu" appended to $tmp/t.
-one() {
-  key=$1
-  shift
-  /usr/bin/time -f "$key %e %U %S" -a -o "$tmp/t" $rt "$@" \
-    >/dev/null 2>"$tmp/err" || { cat "$tmp/err" >&2; exit 1; }
-}
 echo "load before: $(cat /proc/loadavg)"
 for scene in flake terrain; do
   for size in $SIZES; do

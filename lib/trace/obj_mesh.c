@@ -631,24 +631,38 @@ int zr__mesh_nearest(const struct zr_mesh *m, zr_vec3 org, zr_vec3 dir,
   return found;
 }
 
+/* A world ray in the mesh object's own space. */
+static void mesh_ray(const zr_object *o, const zr_ray *ray, zr_vec3 *org,
+                     zr_vec3 *dir) {
+  *org = ray->origin;
+  *dir = ray->dir;
+  if (o->transform) {
+    *org = zr__xform_point(o->transform->inv, *org);
+    *dir = zr__xform_dir(o->transform->inv, *dir);
+  }
+}
+
+/* The zr_hit of a crossing, as zr__intersect_t gives it: no normal. */
+static int mesh_crossing_hit(const zr_object *o, const zr_mesh_crossing *c,
+                             zr_hit *hit) {
+  hit->t = c->t;
+  hit->normal = zr_v3(0, 0, 0);
+  hit->object = zr__mesh_hit_object(o, c->texture);
+  hit->u = c->u;
+  hit->v = c->v;
+  return 1;
+}
+
 int zr__mesh_nearest_t(const zr_object *o, const zr_ray *ray, double tmin,
                        double tmax, zr_hit *hit) {
   /* As zr__intersect_t takes a mesh (intersect.c): in the mesh's own
      space, the first crossing, no normal. */
-  zr_vec3 org = ray->origin, dir = ray->dir;
-  if (o->transform) {
-    org = zr__xform_point(o->transform->inv, org);
-    dir = zr__xform_dir(o->transform->inv, dir);
-  }
+  zr_vec3 org, dir;
+  mesh_ray(o, ray, &org, &dir);
   zr_mesh_crossing c;
   if (!zr__mesh_nearest(o->u.mesh.data, org, dir, tmin, tmax, &c))
     return 0;
-  hit->t = c.t;
-  hit->normal = zr_v3(0, 0, 0);
-  hit->object = zr__mesh_hit_object(o, c.texture);
-  hit->u = c.u;
-  hit->v = c.v;
-  return 1;
+  return mesh_crossing_hit(o, &c, hit);
 }
 
 /* The first crossing the hierarchy meets, in its left-to-right order. */
@@ -688,22 +702,14 @@ static bool mesh_any(const struct zr_mesh *m, zr_vec3 org, zr_vec3 dir,
 
 int zr__mesh_any_t(const zr_object *o, const zr_ray *ray, double tmin,
                    double tmax, zr_hit *hit) {
-  zr_vec3 org = ray->origin, dir = ray->dir;
-  if (o->transform) {
-    org = zr__xform_point(o->transform->inv, org);
-    dir = zr__xform_dir(o->transform->inv, dir);
-  }
+  zr_vec3 org, dir;
+  mesh_ray(o, ray, &org, &dir);
   const struct zr_mesh *m = o->u.mesh.data;
   raw_hit h;
   if (!mesh_any(m, org, dir, tmin, tmax, &h))
     return 0;
   zr_mesh_crossing c = finish_hit(m, &h);
-  hit->t = c.t;
-  hit->normal = zr_v3(0, 0, 0);
-  hit->object = zr__mesh_hit_object(o, c.texture);
-  hit->u = c.u;
-  hit->v = c.v;
-  return 1;
+  return mesh_crossing_hit(o, &c, hit);
 }
 
 bool zr__mesh_inside(const struct zr_mesh *m, zr_vec3 p) {
