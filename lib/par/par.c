@@ -499,12 +499,15 @@ static zr_status collect_rows(zr_par *par, const float *mine, float *image,
  * default.pov at +A0.3, against every pixel as floats before).  A rank
  * sends a mask of its rows' pixels, a bit each (1: changed), then the
  * changed pixels' floats in row order: never more than 1/96 above the
- * rows themselves.
+ * rows themselves.  With root_in_place, rank 0 rendered its own rows
+ * into their places in band already: it sends nothing and they are
+ * left alone (it spared rank 0, the busiest rank, a half image of
+ * fresh pages, a compare and a copy of its rows).
  */
 static zr_status collect_changes(zr_par *par, const float *mine, float *band,
                                  const float *centres, int image_width,
                                  int y0, int y1, int x0, int x1,
-                                 int channels) {
+                                 int channels, int root_in_place) {
   int n = par->size, width = x1 - x0;
   size_t px_bytes = (size_t)channels * sizeof(float);
   size_t row_floats = (size_t)width * (size_t)channels;
@@ -512,7 +515,9 @@ static zr_status collect_changes(zr_par *par, const float *mine, float *band,
 #define CENTRE(y, x)                                                     \
   (centres + ((size_t)(y) * (size_t)image_width + (size_t)x0 +           \
               (size_t)(x)) * (size_t)channels)
-  int rows = zr__rows_count(y1 - y0, par->rank, n);
+  int rows = root_in_place && par->rank == 0
+                 ? 0
+                 : zr__rows_count(y1 - y0, par->rank, n);
   size_t mask_bytes = ((size_t)rows * (size_t)width + 7) / 8;
   size_t changed = 0;
   for (int i = 0; i < rows; i++) {
@@ -575,7 +580,7 @@ static zr_status collect_changes(zr_par *par, const float *mine, float *band,
                                displs, MPI_BYTE, 0, par->comm));
   if (s == ZR_OK)
     par->traffic.pixel_bytes_sent += (uint64_t)mine_bytes;
-  for (int r = 0; s == ZR_OK && par->rank == 0 && r < n; r++) {
+  for (int r = root_in_place; s == ZR_OK && par->rank == 0 && r < n; r++) {
     /* Rank r's rows: the centres, then its changed pixels. */
     int r_rows = zr__rows_count(y1 - y0, r, n);
     size_t r_mask = ((size_t)r_rows * (size_t)width + 7) / 8;
@@ -1016,9 +1021,12 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
                           ? target + (size_t)y0 * row_floats
                           : NULL;
         int in_place = x0 == 0 && x1 == width && !changes;
+        /* Pass 2 of several ranks: rank 0 renders its own rows into
+           their places too, and collects only the others' changes. */
+        int root_in_place = changes && dest && par->rank == 0;
         float *rows = mine;
         size_t stride = 0;
-        if (in_place && dest) {
+        if ((in_place || root_in_place) && dest) {
           rows = dest + (size_t)par->rank * row_floats;
           stride = (size_t)par->size * row_floats;
         }
@@ -1030,7 +1038,8 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
         if (s == ZR_OK && changes)
           s = zr__par_agree(par, collect_changes(par, mine, into,
                                                  pr.centres, width, y0, y1,
-                                                 x0, x1, channels));
+                                                 x0, x1, channels,
+                                                 root_in_place));
         else if (s == ZR_OK && in_place && multi)
           s = zr__par_agree(par, exchange_rows(par, mine, dest, y1 - y0,
                                                row_floats, everyone));
