@@ -17,7 +17,10 @@
  *     (exchange_rows); a window's bands go through MPI_Gatherv or
  *     MPI_Allgatherv (collect_rows);
  *   - a rank that waits for the others sleeps (meet) instead of spinning
- *     in MPI's progress loop.
+ *     in MPI's progress loop;
+ *   - on one host MPI starts with only what such a job uses
+ *     (prefer_shared_memory), and a render's image-sized buffers sit in
+ *     huge pages (float_alloc).
  * Rows travel as an MPI datatype of one row, so counts stay small
  * integers for any image MPI can hold.  Each collective is preceded by an
  * agreement on the status of the work before it, so a rank that fails
