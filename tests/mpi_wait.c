@@ -1,12 +1,14 @@
 /*
  * mpi_wait.c - a rank that waits in a collective for a slower one sleeps
  * instead of spinning (lib/par/par.c, meet), and a job on one host skips
- * Open MPI's probe of network devices (prefer_shared_memory).  Run by
- * tests/test_mpi_wait.sh under mpirun -n 2 and -n 3.
+ * Open MPI's probe of network devices and the components it would not
+ * choose (prefer_shared_memory).  Run by tests/test_mpi_wait.sh under
+ * mpirun -n 2 and -n 3.
  *
- *   mpi_wait [PML]
+ *   mpi_wait [NAME=VALUE]...
  *
- * PML: what OMPI_MCA_pml must be after zr__par_init ("-": unset).  The
+ * Each NAME=VALUE: what environment variable NAME must be after
+ * zr__par_init ("-": unset); a lone VALUE is OMPI_MCA_pml's.  The
  * last rank sleeps 2 s (no CPU) before it joins zr__par_agree with a
  * failure; every other rank is in the agreement meanwhile and must spend
  * under 0.2 s of CPU there (a spinning wait takes the whole 2 s of a
@@ -27,12 +29,20 @@ int main(int argc, char **argv) {
   }
   int failed = 0;
   int rank = zr__par_rank(par), size = zr__par_size(par);
-  if (argc > 1) {
-    const char *pml = getenv("OMPI_MCA_pml");
-    const char *want = strcmp(argv[1], "-") == 0 ? NULL : argv[1];
-    if ((pml == NULL) != (want == NULL) || (pml && strcmp(pml, want))) {
-      fprintf(stderr, "mpi_wait: rank %d: OMPI_MCA_pml is %s, not %s\n",
-              rank, pml ? pml : "unset", want ? want : "unset");
+  for (int i = 1; i < argc; i++) {
+    const char *eq = strchr(argv[i], '=');
+    char name[64] = "OMPI_MCA_pml";
+    const char *want = argv[i];
+    if (eq) {
+      snprintf(name, sizeof name, "%.*s", (int)(eq - argv[i]), argv[i]);
+      want = eq + 1;
+    }
+    if (strcmp(want, "-") == 0)
+      want = NULL;
+    const char *have = getenv(name);
+    if ((have == NULL) != (want == NULL) || (have && strcmp(have, want))) {
+      fprintf(stderr, "mpi_wait: rank %d: %s is %s, not %s\n", rank, name,
+              have ? have : "unset", want ? want : "unset");
       failed = 1;
     }
   }

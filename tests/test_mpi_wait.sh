@@ -1,7 +1,9 @@
 #!/bin/sh
 # tests/mpi_wait.c under mpirun: waits in collectives sleep instead of
-# spinning (2 and 3 ranks), and a job on one host uses Open MPI's ob1
-# layer unless the environment names a pml (lib/par/par.c).
+# spinning (2 and 3 ranks), and a job on one host names Open MPI's ob1
+# layer, its shared-memory transfer, the collectives it would choose and
+# hwloc without I/O discovery, each unless the environment names it
+# (lib/par/par.c, prefer_shared_memory).
 # Environment: ZR_BUILDDIR, MPIRUN.
 set -u
 : "${ZR_BUILDDIR:?}"
@@ -10,13 +12,27 @@ command -v "$MPIRUN" >/dev/null 2>&1 || { echo "no mpirun: skipped"; exit 77; }
 WAIT="$ZR_BUILDDIR/tests/mpi_wait"
 export ASAN_OPTIONS="${ASAN_OPTIONS:-}${ASAN_OPTIONS:+:}detect_leaks=0"
 export OMPI_MCA_rmaps_base_oversubscribe=1
-unset OMPI_MCA_pml OMPI_MCA_mtl
+unset OMPI_MCA_pml OMPI_MCA_mtl OMPI_MCA_btl OMPI_MCA_coll OMPI_MCA_osc \
+  HWLOC_COMPONENTS HWLOC_PLUGINS_BLACKLIST
+hwloc="HWLOC_COMPONENTS=-pci,-linuxio,-opencl,-gl"
+plugins="HWLOC_PLUGINS_BLACKLIST=hwloc_opencl,hwloc_gl,hwloc_pci,hwloc_xml_libxml"
+# Open MPI 4's components are named; another version gets the pml only.
+ompi4="OMPI_MCA_btl=self,vader OMPI_MCA_coll=basic,libnbc,self,tuned OMPI_MCA_osc=sm"
+case $("$MPIRUN" --version 2>/dev/null | head -n 1) in
+  *"Open MPI) 4."*) ;;
+  *) ompi4="OMPI_MCA_btl=- OMPI_MCA_coll=- OMPI_MCA_osc=-" ;;
+esac
 failed=0
 for n in 2 3; do
-  "$MPIRUN" --bind-to none -n $n "$WAIT" ob1 ||
+  # shellcheck disable=SC2086
+  "$MPIRUN" --bind-to none -n $n "$WAIT" ob1 $ompi4 "$hwloc" "$plugins" ||
     { echo "FAIL: mpirun -n $n" >&2; failed=1; }
 done
-# A pml the user names is left alone.
-OMPI_MCA_pml=^v "$MPIRUN" --bind-to none -n 2 "$WAIT" ^v ||
-  { echo "FAIL: OMPI_MCA_pml=^v" >&2; failed=1; }
+# A pml, a btl and an hwloc choice the user names are left alone (and
+# the job runs with them); the other defaults still apply.
+OMPI_MCA_pml=^v OMPI_MCA_btl=self,vader,tcp HWLOC_COMPONENTS=-opencl \
+  "$MPIRUN" --bind-to none -n 2 "$WAIT" ^v OMPI_MCA_btl=self,vader,tcp \
+  HWLOC_COMPONENTS=-opencl "$plugins" ||
+  { echo "FAIL: the user's OMPI_MCA_pml, OMPI_MCA_btl, HWLOC_COMPONENTS" >&2
+    failed=1; }
 exit $failed

@@ -473,6 +473,57 @@ static void test_par_world_of_one_renders_window(void **state) {
   zr__par_finalize(par);
 }
 
+/* An image of 2 MiB of floats or more: the render's buffers are
+   aligned on and advised to huge pages, their sizes rounded up
+   (par.c, float_alloc).  The whole image and a window of part rows
+   (which goes through every buffer: the rank's rows, the band and the
+   rank-major copy) give the serial render's pixels, antialiased, and
+   black outside the window. */
+static void test_par_world_of_one_renders_large_image(void **state) {
+  render_fixture *f = *state;
+  zr_par *par;
+  assert_int_equal(zr__par_init(NULL, NULL, &par), ZR_OK);
+  f->params.width = 448;
+  f->params.height = 400;
+  int w = f->params.width, h = f->params.height;
+  assert_true((size_t)w * (size_t)h * 3 * sizeof(float) >= (size_t)2 << 20);
+  f->params.antialias = 1;
+  f->params.aa_threshold = 0.1;
+  float *want = reference(f);
+  const int windows[2][4] = {{0, h, 0, w}, {0, h, 1, w - 2}};
+  for (int k = 0; k < 2; k++) {
+    const int *win = windows[k];
+    zr_image *image;
+    assert_int_equal(zr_image_new(w, h, &image), ZR_OK);
+    zr_par_render job = {.scene = f->scene,
+                         .params = &f->params,
+                         .threads = 2,
+                         .image = image,
+                         .row0 = win[0],
+                         .row1 = win[1],
+                         .col0 = win[2],
+                         .col1 = win[3]};
+    assert_int_equal(zr__par_render(par, &job), ZR_OK);
+    const float *got = zr_image_pixels(image);
+    size_t wrong = 0;
+    for (int y = 0; y < h; y++)
+      for (int x = 0; x < w; x++) {
+        int in = x >= win[2] && x < win[3];
+        for (int c = 0; c < 3; c++) {
+          size_t i = ((size_t)y * (size_t)w + (size_t)x) * 3 + (size_t)c;
+          wrong += got[i] != (in ? want[i] : 0.0f);
+        }
+      }
+    assert_int_equal(wrong, 0);
+    zr_image_free(image);
+  }
+  free(want);
+  f->params.antialias = 0;
+  f->params.width = 37;
+  f->params.height = 23;
+  zr__par_finalize(par);
+}
+
 int main(void) {
   /* The world-of-one test must not think mpirun started it. */
   unsetenv("OMPI_COMM_WORLD_SIZE");
@@ -498,6 +549,9 @@ int main(void) {
                                       setup_render, teardown_render),
       cmocka_unit_test_setup_teardown(test_par_world_of_one_renders_window,
                                       setup_render, teardown_render),
+      cmocka_unit_test_setup_teardown(
+          test_par_world_of_one_renders_large_image, setup_render,
+          teardown_render),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -17,7 +17,10 @@
  *     (exchange_rows); a window's bands go through MPI_Gatherv or
  *     MPI_Allgatherv (collect_rows);
  *   - a rank that waits for the others sleeps (meet) instead of spinning
- *     in MPI's progress loop.
+ *     in MPI's progress loop;
+ *   - on one host MPI starts with only what such a job uses
+ *     (prefer_shared_memory), and a render's image-sized buffers sit in
+ *     huge pages (float_alloc).
  * Rows travel as an MPI datatype of one row, so counts stay small
  * integers for any image MPI can hold.  Each collective is preceded by an
  * agreement on the status of the work before it, so a rank that fails
@@ -43,6 +46,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/mman.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -78,24 +82,57 @@ static zr_status mpi_status(int rc) {
 }
 
 /*
- * Open MPI picks its point-to-point layer (pml) at MPI_Init by opening
- * every candidate, and Debian's build probes libfabric, PSM, PSM2 and UCX
- * devices first: on a host without such a network that probe took 0.2
- * to 0.3 s of wall time a rank before it settled on ob1 with shared
- * memory anyway (mpirun -n 1 of an empty scene: 0.71 s, 0.39 s with
- * OMPI_MCA_pml=ob1; bench/launch.sh).  When every rank of the job runs
- * on this host (Open MPI says so before MPI_Init, in
- * OMPI_COMM_WORLD_SIZE and OMPI_COMM_WORLD_LOCAL_SIZE), no network is
- * used, so ob1 is named directly, unless the user named a pml (or an
- * mtl, which needs the cm pml) in the environment.
+ * What Open MPI 4 does at MPI_Init besides joining the job costs a rank
+ * more than zrcube's whole parse of a small scene, and on one host most
+ * of it is spent on nothing the job uses (bench/launch.sh; strace and
+ * perf of a rank of `mpirun -n 1` of an empty scene: 49 plugins opened,
+ * 25% of the rank's CPU in the dynamic loader):
+ *   - it picks its point-to-point layer (pml) by opening every
+ *     candidate, and Debian's build probes libfabric, PSM, PSM2 and UCX
+ *     devices first: 0.2 to 0.3 s of wall time a rank before it settled
+ *     on ob1 with shared memory anyway (0.71 s -> 0.39 s, session 6);
+ *   - hwloc, which it asks for the machine's topology, loads its OpenCL,
+ *     OpenGL (X11), PCI and libxml2 (ICU) plugins and walks PCI devices,
+ *     block devices and network interfaces; ranks on one host talk
+ *     through shared memory and need the processors and memory only;
+ *   - the byte transfer layers (btl), collective (coll) and one-sided
+ *     (osc) frameworks open every component before they choose: tcp
+ *     between processes of one host, and collective modules that are
+ *     never chosen for an intra-communicator by default (their priority
+ *     is 0, or they act only when asked: adapt, han, sm, sync,
+ *     monitoring, inter; `ompi_info --param coll all --level 9`).
+ * So when every rank of the job runs on this host (Open MPI says so
+ * before MPI_Init, in OMPI_COMM_WORLD_SIZE and OMPI_COMM_WORLD_LOCAL_SIZE)
+ * no network is used, and the choices Open MPI would make are named
+ * directly: pml ob1 (unless the user named a pml or an mtl, which needs
+ * the cm pml), btl self and vader (shared memory), coll basic, libnbc
+ * (MPI_Ibarrier), self and tuned, osc sm (zrcube opens no window), and
+ * hwloc without I/O discovery and without those plugins.  Each variable
+ * the user set is left alone.  Measured (bench/launch.sh, RT=1, best of
+ * 6): mpirun -n 2 of an empty scene 0.39 -> 0.33 s wall and 0.48 ->
+ * 0.36 CPU s; with pml alone named it was 0.39 / 0.48.  The lists name
+ * Open MPI 4's components; another version gets the pml only.
  */
+static const char *const one_host_env[][2] = {
+#if defined(OMPI_MAJOR_VERSION) && OMPI_MAJOR_VERSION == 4
+    {"OMPI_MCA_btl", "self,vader"},
+    {"OMPI_MCA_coll", "basic,libnbc,self,tuned"},
+    {"OMPI_MCA_osc", "sm"},
+#endif
+    {"HWLOC_COMPONENTS", "-pci,-linuxio,-opencl,-gl"},
+    {"HWLOC_PLUGINS_BLACKLIST",
+     "hwloc_opencl,hwloc_gl,hwloc_pci,hwloc_xml_libxml"},
+};
+
 static void prefer_shared_memory(void) {
   const char *size = getenv("OMPI_COMM_WORLD_SIZE");
   const char *local = getenv("OMPI_COMM_WORLD_LOCAL_SIZE");
-  if (!size || !local || strcmp(size, local) != 0 ||
-      getenv("OMPI_MCA_pml") || getenv("OMPI_MCA_mtl"))
+  if (!size || !local || strcmp(size, local) != 0)
     return;
-  setenv("OMPI_MCA_pml", "ob1", 0);
+  if (!getenv("OMPI_MCA_pml") && !getenv("OMPI_MCA_mtl"))
+    setenv("OMPI_MCA_pml", "ob1", 0);
+  for (size_t i = 0; i < sizeof one_host_env / sizeof *one_host_env; i++)
+    setenv(one_host_env[i][0], one_host_env[i][1], 0);
 }
 
 /*
@@ -465,12 +502,15 @@ static zr_status collect_rows(zr_par *par, const float *mine, float *image,
  * default.pov at +A0.3, against every pixel as floats before).  A rank
  * sends a mask of its rows' pixels, a bit each (1: changed), then the
  * changed pixels' floats in row order: never more than 1/96 above the
- * rows themselves.
+ * rows themselves.  With root_in_place, rank 0 rendered its own rows
+ * into their places in band already: it sends nothing and they are
+ * left alone (it spared rank 0, the busiest rank, a half image of
+ * fresh pages, a compare and a copy of its rows).
  */
 static zr_status collect_changes(zr_par *par, const float *mine, float *band,
                                  const float *centres, int image_width,
                                  int y0, int y1, int x0, int x1,
-                                 int channels) {
+                                 int channels, int root_in_place) {
   int n = par->size, width = x1 - x0;
   size_t px_bytes = (size_t)channels * sizeof(float);
   size_t row_floats = (size_t)width * (size_t)channels;
@@ -478,7 +518,9 @@ static zr_status collect_changes(zr_par *par, const float *mine, float *band,
 #define CENTRE(y, x)                                                     \
   (centres + ((size_t)(y) * (size_t)image_width + (size_t)x0 +           \
               (size_t)(x)) * (size_t)channels)
-  int rows = zr__rows_count(y1 - y0, par->rank, n);
+  int rows = root_in_place && par->rank == 0
+                 ? 0
+                 : zr__rows_count(y1 - y0, par->rank, n);
   size_t mask_bytes = ((size_t)rows * (size_t)width + 7) / 8;
   size_t changed = 0;
   for (int i = 0; i < rows; i++) {
@@ -541,7 +583,7 @@ static zr_status collect_changes(zr_par *par, const float *mine, float *band,
                                displs, MPI_BYTE, 0, par->comm));
   if (s == ZR_OK)
     par->traffic.pixel_bytes_sent += (uint64_t)mine_bytes;
-  for (int r = 0; s == ZR_OK && par->rank == 0 && r < n; r++) {
+  for (int r = root_in_place; s == ZR_OK && par->rank == 0 && r < n; r++) {
     /* Rank r's rows: the centres, then its changed pixels. */
     int r_rows = zr__rows_count(y1 - y0, r, n);
     size_t r_mask = ((size_t)r_rows * (size_t)width + 7) / 8;
@@ -677,11 +719,52 @@ static zr_status reduce_stats(zr_par *par, zr_render_stats *stats,
   return ZR_OK;
 }
 
-/* A malloc of n floats that also succeeds (one float) for n == 0. */
-static float *float_alloc(size_t n) {
-  if (n > SIZE_MAX / sizeof(float))
+/*
+ * The image-sized buffers of a render (the centres, this rank's rows, the
+ * picture on rank 0) in 2 MiB pages where the kernel offers them for
+ * the asking (Linux's transparent huge pages in "madvise" mode, as
+ * here): on this virtual machine first touching a 4 KiB page costs
+ * about 14 us, and a 2048x1536 image of floats is 9,216 of them.
+ * Measured (a calloc'ed 37.7 MB buffer set with memset, best of 3):
+ * 0.155 s of CPU in 4 KiB pages, 0.014 s in 2 MiB ones; perf of a
+ * 2-rank render of scenes/default.pov at 2048x1536 +A0.3 put 11% of
+ * rank 0's CPU in page faults.  Pages are only advised, never
+ * required: where the advice is unknown or refused the buffers are
+ * ordinary memory.
+ */
+#define HUGE_PAGE ((size_t)2 << 20)
+
+/* Asks for huge pages on the whole 2 MiB pages inside [p, p + bytes). */
+static void advise_huge(void *p, size_t bytes) {
+#ifdef MADV_HUGEPAGE
+  uintptr_t mask = (uintptr_t)(HUGE_PAGE - 1);
+  uintptr_t a = ((uintptr_t)p + mask) & ~mask;
+  uintptr_t e = ((uintptr_t)p + bytes) & ~mask;
+  if (e > a)
+    (void)madvise((void *)a, e - a, MADV_HUGEPAGE);
+#else
+  (void)p;
+  (void)bytes;
+#endif
+}
+
+/* A malloc of n floats (zeroed when zero is 1) that also succeeds (one
+   float) for n == 0; from 2 MiB on, aligned on and advised to huge
+   pages.  Freed with free. */
+static float *float_alloc(size_t n, int zero) {
+  if (n > (SIZE_MAX - HUGE_PAGE) / sizeof(float))
     return NULL;
-  return malloc((n ? n : 1) * sizeof(float));
+  size_t bytes = (n ? n : 1) * sizeof(float);
+  if (bytes < HUGE_PAGE)
+    return zero ? calloc(bytes, 1) : malloc(bytes);
+  bytes = (bytes + HUGE_PAGE - 1) & ~(HUGE_PAGE - 1);
+  void *p = NULL;
+  if (posix_memalign(&p, HUGE_PAGE, bytes) != 0)
+    return NULL;
+  advise_huge(p, bytes);
+  if (zero)
+    memset(p, 0, bytes);
+  return p;
 }
 
 zr_status zr__par_solo(const zr_par *par, zr_par **out) {
@@ -859,21 +942,25 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
     pr.done[0] = calloc((size_t)pr.bands, 1);
     pr.done[1] = calloc((size_t)pr.bands, 1);
     if (par->rank == 0 && channels == 4)
-      pr.image = calloc(image_floats ? image_floats : 1, sizeof(float));
+      pr.image = float_alloc(image_floats, 1);
     else
       pr.image = par->rank == 0 ? zr_image_pixels(job->image) : NULL;
     if (aa)
-      pr.centres = calloc(image_floats ? image_floats : 1, sizeof(float));
-    mine = float_alloc(band_floats);
-    band = float_alloc(band_floats);
-    rank_major = float_alloc(band_floats);
+      pr.centres = float_alloc(image_floats, 1);
+    mine = float_alloc(band_floats, 0);
+    band = float_alloc(band_floats, 0);
+    rank_major = float_alloc(band_floats, 0);
     if (!pr.done[0] || !pr.done[1] || (aa && !pr.centres) || !mine ||
         !band || !rank_major || (par->rank == 0 && !pr.image) ||
         (par->rank == 0 && channels == 4 &&
          zr_image_add_alpha(job->image) != ZR_OK))
       s = ZR_ENOMEM;
-    if (pr.image)
+    if (pr.image) {
+      /* The picture (lib/image's) is still untouched here when it is
+         fresh: its pages can still be huge ones. */
+      advise_huge(pr.image, image_floats * sizeof(float));
       memset(pr.image, 0, image_floats * sizeof(float));
+    }
   }
   s = zr__par_agree(par, s);
   if (s == ZR_OK)
@@ -937,9 +1024,12 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
                           ? target + (size_t)y0 * row_floats
                           : NULL;
         int in_place = x0 == 0 && x1 == width && !changes;
+        /* Pass 2 of several ranks: rank 0 renders its own rows into
+           their places too, and collects only the others' changes. */
+        int root_in_place = changes && dest && par->rank == 0;
         float *rows = mine;
         size_t stride = 0;
-        if (in_place && dest) {
+        if ((in_place || root_in_place) && dest) {
           rows = dest + (size_t)par->rank * row_floats;
           stride = (size_t)par->size * row_floats;
         }
@@ -951,7 +1041,8 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
         if (s == ZR_OK && changes)
           s = zr__par_agree(par, collect_changes(par, mine, into,
                                                  pr.centres, width, y0, y1,
-                                                 x0, x1, channels));
+                                                 x0, x1, channels,
+                                                 root_in_place));
         else if (s == ZR_OK && in_place && multi)
           s = zr__par_agree(par, exchange_rows(par, mine, dest, y1 - y0,
                                                row_floats, everyone));
