@@ -296,3 +296,8 @@ EXTRA_DIST += tests/test_fog_turbulence.sh tests/fog_turbulence.pov \
 TESTS += tests/test_irid_turbulence.sh
 EXTRA_DIST += tests/test_irid_turbulence.sh tests/irid_turbulence.pov \
 	bench/conform/irid_turbulence_probe.py
+
+# Pattern normals sampled around the point moved once by the warps and
+# turbulence, povray's values.
+TESTS += tests/test_normal_warped.sh
+EXTRA_DIST += tests/test_normal_warped.sh tests/normal_warped.pov
