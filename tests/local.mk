@@ -286,3 +286,18 @@ TESTS += tests/test_media_cells.sh
 EXTRA_DIST += tests/test_media_cells.sh tests/media_cells.pov \
 	bench/media_quadrature.py \
 	bench/results/media-quadrature-2026-12-02.txt
+
+# Fog turbulence thins constant and ground fog, povray's values.
+TESTS += tests/test_fog_turbulence.sh
+EXTRA_DIST += tests/test_fog_turbulence.sh tests/fog_turbulence.pov \
+	bench/conform/fog_turbulence_probe.py
+
+# irid's turbulence: the scalar turbulence sum, povray's values.
+TESTS += tests/test_irid_turbulence.sh
+EXTRA_DIST += tests/test_irid_turbulence.sh tests/irid_turbulence.pov \
+	bench/conform/irid_turbulence_probe.py
+
+# Pattern normals sampled around the point moved once by the warps and
+# turbulence, povray's values.
+TESTS += tests/test_normal_warped.sh
+EXTRA_DIST += tests/test_normal_warped.sh tests/normal_warped.pov

@@ -214,13 +214,25 @@ static double granite(zr_vec3 p, int generator) {
    clamped for generators 2 and 3 (measured to 1e-13 for generators 1
    and 2, 1e-7 for 3;
    agate_turb acts as a single-precision number). */
-static double agate(zr_vec3 p, double agate_turb, int generator) {
-  double s = octave(p, generator, true), amp = 0.5, f = 2;
-  for (int i = 1; i < 6; i++) {
+static double agate_sum(zr_vec3 p, int generator, int octaves, double omega,
+                        double lambda) {
+  double s = octave(p, generator, true), amp = omega, f = lambda;
+  for (int i = 1; i < octaves; i++) {
     s += amp * octave(zr_v3_scale(p, f), generator, false);
-    amp *= 0.5;
-    f *= 2;
+    amp *= omega;
+    f *= lambda;
   }
+  return s;
+}
+
+double zr__turbulence_scalar(zr_vec3 p, int octaves, double omega,
+                             double lambda) {
+  /* omega and lambda as single-precision numbers, as zr__dturbulence. */
+  return agate_sum(p, 2, octaves, (float)omega, (float)lambda);
+}
+
+static double agate(zr_vec3 p, double agate_turb, int generator) {
+  double s = agate_sum(p, generator, 6, 0.5, 2.0);
   double v = 0.5 + 0.5 * sin(2 * PI * (1.1 * p.z + 1.3 * (float)agate_turb *
                                                         s));
   return pow(v < 0 ? 0 : v, 0.77);

@@ -26,6 +26,11 @@ zr_vec3 zr__dnoise(zr_vec3 p);
    displacement before it is scaled by the turbulence vector. */
 zr_vec3 zr__dturbulence(zr_vec3 p, int octaves, double omega,
                         double lambda);
+/* The scalar fractal sum at p over octaves i of omega^i (2 n(lambda^i p)
+   - 0.5), n the noise, only the first term clamped to [0, 1]: agate's
+   sum, and the one a turbulent fog thins by (lib/trace/atmosphere.c). */
+double zr__turbulence_scalar(zr_vec3 p, int octaves, double omega,
+                             double lambda);
 
 /* Applies the wave form after frequency and phase ("Frequency and
    Phase", "Waveforms"): the value a colour map is indexed with. */

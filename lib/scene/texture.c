@@ -34,7 +34,12 @@
  * comes from the height at the corners of a regular tetrahedron
  * "accuracy" (default 0.02, the manual's "Normals, Accuracy",
  * 3.4.6.2.2.1) pattern units around the point, as povray's renders show
- * (slope_corner).  bumps, dents and wrinkles add bump_size
+ * (slope_corner); a pattern's warps and turbulence move the point once
+ * and the corners are around the moved point, unwarped (povray 3.7
+ * renders of bozo, granite, agate, spotted, leopard, gradient and
+ * crackle normals with turbulence, warps, or both, read back as
+ * tests/normal_warped.pov does, match to a level; marble and wood keep
+ * their own turbulence in every sample, which matches too).  bumps, dents and wrinkles add bump_size
  * times a vector noise instead (times the cube of the noise for dents,
  * an octave sum of its absolute value for wrinkles), as
  * bench/conform/bump_fit.py measures.
@@ -471,9 +476,20 @@ static zr_vec3 slope_tilt(const zr_normal *nm, zr_vec3 p) {
      p, each weighed by its corner: for a linear height the sum is 4/3 h
      times the gradient (the corners' outer products add to 4/3). */
   zr_vec3 g = zr_v3(0, 0, 0);
+  const zr_normal *at = nm;
+  zr_normal still;
+  zr_vec3 t = nm->pattern.turbulence;
+  if ((t.x != 0 || t.y != 0 || t.z != 0 || nm->pattern.n_warps > 0) &&
+      nm->pattern.kind != ZR_PAT_MARBLE && nm->pattern.kind != ZR_PAT_WOOD) {
+    still = *nm;
+    p = zr__pattern_point(&nm->pattern, p);
+    still.pattern.turbulence = zr_v3(0, 0, 0);
+    still.pattern.n_warps = 0;
+    at = &still;
+  }
   for (int k = 0; k < 4; k++)
     g = zr_v3_madd(g, slope_corner[k],
-                   height(nm, zr_v3_madd(p, slope_corner[k], h)));
+                   height(at, zr_v3_madd(p, slope_corner[k], h)));
   g = zr_v3_scale(g, nm->amount * tilt_gain(nm) * 0.75 / h);
   if (wavy)
     g = zr_v3_scale(g, 1 / freq);
