@@ -409,7 +409,7 @@ static void test_gi_choose(void **state) {
   /* A mesh of 2048 faces (over the 1024 the solver once took) is
      hierarchical: no face limit by default. */
   {
-    size_t cap = 200000, n = 0;
+    size_t cap = 400000, n = 0; /* about 180 bytes a pair of faces */
     char *text = malloc(cap);
     assert_non_null(text);
     n += (size_t)snprintf(text + n, cap - n,
@@ -419,6 +419,7 @@ static void test_gi_choose(void **state) {
       for (int j = 0; j < 32; j++) {
         double x0 = -1.5 + 3.0 * i / 32, x1 = -1.5 + 3.0 * (i + 1) / 32;
         double z0 = -1.5 + 3.0 * j / 32, z1 = -1.5 + 3.0 * (j + 1) / 32;
+        assert_true(cap - n > 300);
         n += (size_t)snprintf(
             text + n, cap - n,
             "triangle{<%g,-1.9,%g>,<%g,-1.9,%g>,<%g,-1.9,%g>}"
