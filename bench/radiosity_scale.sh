@@ -11,7 +11,7 @@
 #   mesh N    one bumpy ball, a mesh2 of about N triangles (1k, 10k,
 #             100k; --quick: 1k, 10k)
 #   boxes N   about N surfaces: boxes of six faces on the floor (100,
-#             1000; --quick: 100)
+#             1000, 10000; --quick: 100)
 # Each is solved with --gi=hierarchical at the default BF_eps on one
 # thread and rendered at 8x6 (the picture is not the point).  The solve's
 # CPU seconds are the whole command's (user + system, /usr/bin/time)
@@ -32,6 +32,7 @@
 # default 900), RADSCALE_CASES (e.g. "mesh:1000 boxes:100").
 set -eu
 . "$(dirname "$0")/build_args.sh"
+. "$here/zrexe.sh" # the real program, not libtool's wrapper
 limit=${RADSCALE_TIMEOUT:-900}
 out=${RADSCALE_OUT:-$here/out/radiosity_scale}
 [ -x "$zrcube" ] || { echo "radiosity_scale.sh: $zrcube is not built" >&2; exit 1; }
@@ -41,7 +42,7 @@ py=/usr/bin/python3
 if [ $quick -eq 1 ]; then
   cases=${RADSCALE_CASES:-"mesh:1000 mesh:10000 boxes:100"}
 else
-  cases=${RADSCALE_CASES:-"mesh:1000 mesh:10000 mesh:100000 boxes:100 boxes:1000"}
+  cases=${RADSCALE_CASES:-"mesh:1000 mesh:10000 mesh:100000 boxes:100 boxes:1000 boxes:10000"}
 fi
 mkdir -p "$out"
 work=$(mktemp -d "${TMPDIR:-/tmp}/zr-radscale.XXXXXX")

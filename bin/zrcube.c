@@ -1085,14 +1085,30 @@ static zr_status render_path(run *r) {
    "Global illumination"), then what it needs before the render. */
 static int set_up_gi(run *r) {
   zr_gi_method asked = zr__cli_gi_asked(&r->opts);
-  if (asked == ZR_GI_AUTO && r->opts.rad_load)
-    asked = ZR_GI_HIERARCHICAL; /* a saved solution asks for it */
   char why[256];
   r->gi_method = zr_gi_choose(r->scene, asked, why, sizeof why);
+  /* +V names the option that decided (zrcube(1), "Global
+     illumination"), in zr__cli_gi_asked's order. */
+  const char *option = NULL;
+  char q[64];
+  if (r->opts.gi == ZR_GI_OFF) {
+    option = "--gi=off, --no-radiosity or Radiosity=off";
+  } else if (r->opts.gi != ZR_GI_AUTO) {
+    option = "--gi";
+  } else if (r->opts.quality <= 8) {
+    snprintf(q, sizeof q,
+             "+Q%d: POV-Ray computes radiosity at quality 9 to 11",
+             r->opts.quality);
+    option = q;
+  } else if (r->opts.rad_load) {
+    option = "--radiosity-load names a saved solution";
+  } else if (r->opts.radiosity) {
+    option = "--radiosity or a hierarchical solver option";
+  }
   if (r->rank == 0 && r->opts.verbose)
     fprintf(stderr, "zrcube: global illumination: %s (%s%s)\n",
             zr_gi_method_name(r->gi_method),
-            asked == ZR_GI_AUTO ? "auto: " : "", why);
+            option ? "" : "auto: ", option ? option : why);
   if (r->gi_method == ZR_GI_CACHE)
     return build_cache(r, 0);
   if (r->gi_method == ZR_GI_PATH)

@@ -627,9 +627,9 @@ ZR_API const char *zr_gi_method_name(zr_gi_method m);
  * The model for scene when asked is ZR_GI_AUTO, else asked itself.
  * Without a radiosity block: off.  With one: hierarchical when the
  * scene is lit by emitting surfaces, has no sky (no sky_sphere, a black
- * background), only kinds of object the hierarchical solver models and
- * no mesh over its face limit; the irradiance cache otherwise.  why (may be NULL) receives a sentence
- * saying which test decided.
+ * background) and only kinds of object the hierarchical solver models;
+ * the irradiance cache otherwise.  why (may be NULL) receives a
+ * sentence saying which test decided.
  */
 ZR_API zr_gi_method zr_gi_choose(const zr_scene *scene, zr_gi_method asked,
                                  char *why, size_t why_size);

@@ -375,7 +375,7 @@ static void test_gi_choose(void **state) {
   assert_int_equal(choose(f, "global_settings { radiosity { } }" CLOSED
                           "isosurface { function { x*x+y*y+z*z-0.01 } "
                           "contained_by { box { -1, 1 } } }",
-                          "isosurface, which the hierarchical"),
+                          "does not model (isosurface)"),
                    ZR_GI_CACHE);
   assert_int_equal(choose(f, "global_settings { radiosity { } }"
                           "camera { location 0 look_at z }"
@@ -389,6 +389,50 @@ static void test_gi_choose(void **state) {
                           "emission 1 } }",
                           "lit by emitting surfaces under a black sky"),
                    ZR_GI_HIERARCHICAL); /* open, but nothing comes in */
+  /* A background that is not black is a sky; a black one is not. */
+  assert_int_equal(choose(f, "global_settings { radiosity { } }" CLOSED
+                          "background { rgb <0, 0, 0.2> }",
+                          "the sky (sky_sphere or background)"),
+                   ZR_GI_CACHE);
+  assert_int_equal(choose(f, "global_settings { radiosity { } }" CLOSED
+                          "background { rgb 0 }",
+                          "lit by emitting surfaces under a black sky"),
+                   ZR_GI_HIERARCHICAL);
+  /* The sky is tested before the kinds: an open scene with an
+     isosurface names the sky. */
+  assert_int_equal(choose(f, "global_settings { radiosity { } }" CLOSED
+                          "background { rgb 1 }"
+                          "isosurface { function { x*x+y*y+z*z-0.01 } "
+                          "contained_by { box { -1, 1 } } }",
+                          "the sky"),
+                   ZR_GI_CACHE);
+  /* A mesh of 2048 faces (over the 1024 the solver once took) is
+     hierarchical: no face limit by default. */
+  {
+    size_t cap = 400000, n = 0; /* about 180 bytes a pair of faces */
+    char *text = malloc(cap);
+    assert_non_null(text);
+    n += (size_t)snprintf(text + n, cap - n,
+                          "global_settings { radiosity { } }" CLOSED
+                          "mesh {");
+    for (int i = 0; i < 32; i++)
+      for (int j = 0; j < 32; j++) {
+        double x0 = -1.5 + 3.0 * i / 32, x1 = -1.5 + 3.0 * (i + 1) / 32;
+        double z0 = -1.5 + 3.0 * j / 32, z1 = -1.5 + 3.0 * (j + 1) / 32;
+        assert_true(cap - n > 300);
+        n += (size_t)snprintf(
+            text + n, cap - n,
+            "triangle{<%g,-1.9,%g>,<%g,-1.9,%g>,<%g,-1.9,%g>}"
+            "triangle{<%g,-1.9,%g>,<%g,-1.9,%g>,<%g,-1.9,%g>}",
+            x0, z0, x1, z0, x1, z1, x0, z0, x1, z1, x0, z1);
+        assert_true(n < cap);
+      }
+    snprintf(text + n, cap - n, " pigment { rgb 0.5 } }");
+    assert_int_equal(choose(f, text,
+                            "lit by emitting surfaces under a black sky"),
+                     ZR_GI_HIERARCHICAL);
+    free(text);
+  }
   char why[64];
   assert_int_equal(zr_gi_choose(f->scene, ZR_GI_OFF, why, sizeof why),
                    ZR_GI_OFF);

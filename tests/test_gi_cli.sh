@@ -66,6 +66,42 @@ cmp -s o1.png t1.png && fail "--gi=off renders the cached picture" || ok
 "$ZRCUBE" sky.pov $size --gi=fast 2>bad.err
 [ $? -eq 2 ] && grep -q "'--gi=fast': --gi takes auto, hierarchical, cache, path or off" bad.err && ok ||
   fail "bad --gi: $(cat bad.err)"
+# +V names the model and the option or test of auto that chose it, one
+# case per branch of zrcube(1)'s rule ("Global illumination").
+cat >room.pov <<'EOF'
+global_settings { radiosity { } }
+camera { location 0 look_at z }
+box { -2, 2 pigment { rgb 0.7 } }
+box { <-0.5, 1.9, -0.5>, <0.5, 1.95, 0.5> pigment { rgb 1 }
+  finish { emission 5 } }
+EOF
+grep -v radiosity room.pov >noblock.pov
+sed 's/emission 5/emission 0/' room.pov >nolight.pov
+echo 'light_source { 0 rgb 1 }' >>nolight.pov
+cp room.pov iso.pov
+echo 'isosurface { function { x*x+y*y+z*z-0.01 } contained_by { box { -1, 1 } } }' >>iso.pov
+cp room.pov bg.pov
+echo 'background { rgb <0, 0, 0.2> }' >>bg.pov
+says() { # scene, expected words, options...
+  sc=$1 want=$2
+  shift 2
+  "$ZRCUBE" "$sc" +W8 +H6 -D +WT1 +V +Orule.png "$@" 2>rule.err &&
+    grep -qF "global illumination: $want" rule.err && ok ||
+    fail "$sc $*: +V does not say '$want': $(grep 'global illumination' rule.err)"
+}
+says noblock.pov "off (auto: the scene has no radiosity block)"
+says bg.pov "cache (auto: the sky (sky_sphere or background) lights"
+says iso.pov "cache (auto: it has an object the hierarchical solver does not model (isosurface))"
+says nolight.pov "cache (auto: no surface emits light"
+says room.pov "hierarchical (auto: lit by emitting surfaces under a black sky"
+says room.pov "off (+Q8: POV-Ray computes radiosity at quality 9 to 11)" +Q8
+says room.pov "off (--gi=off, --no-radiosity or Radiosity=off)" --no-radiosity
+says room.pov "cache (--gi)" --gi=cache
+says room.pov "hierarchical (--radiosity or a hierarchical solver option)" --bf-eps=0.01
+"$ZRCUBE" room.pov +W8 +H6 -D +WT1 --radiosity-save=room.zrr +Orule.png \
+  2>/dev/null || fail "--radiosity-save"
+says room.pov "hierarchical (--radiosity-load names a saved solution)" \
+  --radiosity-load=room.zrr
 # povray's render of the scene at 160x120 (tests/ref/sky_outdoor.png,
 # tests/ref/make-refs.sh): SSIM 0.992 measured; the irradiance
 # gradients darken the contact shadow under the sphere more than
@@ -85,7 +121,7 @@ fi
 "$ZRCUBE" sky.pov $size --gi=path --spp=4 +WT2 +Op2.png 2>/dev/null ||
   fail "--gi=path +WT2"
 cmp -s p1.png p2.png && ok || fail "path: +WT1 and +WT2 differ"
-grep -q "global illumination: path (asked for)" pv.err &&
+grep -q "global illumination: path (--gi)" pv.err &&
   grep -q "path tracer: 4 samples a pixel" pv.err && ok ||
   fail "+V does not name the path tracer: $(cat pv.err)"
 if command -v "$MPIRUN" >/dev/null 2>&1; then

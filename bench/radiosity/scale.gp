@@ -4,9 +4,9 @@
 # links_per_surface, links_per_element, rss_kb, rss_off_kb.
 set datafile separator "\t"
 set datafile missing "fail"
-set terminal pngcairo size 1200,480 font "sans,11" noenhanced
+set terminal pngcairo size 1500,480 font "sans,11" noenhanced
 set output png
-set multiplot layout 1,2 title "hierarchical radiosity as the scene grows (closed room, one thread, default BF_eps)"
+set multiplot layout 1,3 title "hierarchical radiosity as the scene grows (closed room, one thread, default BF_eps)"
 set grid xtics ytics mxtics mytics lc rgb "#dddddd"
 set key top left box opaque
 set logscale xy
@@ -19,6 +19,17 @@ plot \
   tsv skip 1 using (pick("boxes", 2)):(pick("boxes", 3)) \
     with linespoints lw 2 pt 5 lc rgb "#2040c0" title "N surfaces (boxes)", \
   60 with lines dt 2 lc rgb "#808080" title "target for 100k faces: 60 s"
+set ylabel "links"
+set key top left box opaque
+# Guides: links growing as the surfaces (slope 1) and as their pairs
+# (N^2 / 2, what linking every two input surfaces makes).
+plot \
+  tsv skip 1 using (pick("mesh", 2)):(pick("mesh", 5)) \
+    with linespoints lw 2 pt 7 lc rgb "#c03020" title "one mesh of N faces", \
+  tsv skip 1 using (pick("boxes", 2)):(pick("boxes", 5)) \
+    with linespoints lw 2 pt 5 lc rgb "#2040c0" title "N surfaces (boxes)", \
+  [100:100000] 1000 * x with lines dt 2 lc rgb "#808080" title "1000 N (linear)", \
+  [100:100000] x * x / 2 with lines dt 3 lc rgb "#808080" title "N^2 / 2 (every pair)"
 set ylabel "links per surface (a mesh's faces count as surfaces)"
 set key bottom left box opaque
 plot \

@@ -149,24 +149,19 @@ ZR_API zr_gi_method zr_gi_choose(const zr_scene *scene, zr_gi_method asked,
     return say(why, size, ZR_GI_CACHE,
                "the sky (sky_sphere or background) lights the scene",
                NULL);
+  /* Meshes of any size: the solver clusters their faces (and takes no
+     face limit unless a library caller sets one in the solver's own
+     parameters, which this choice does not see). */
   bool emitter = false;
-  size_t faces = 0;
   for (size_t i = 0; i < scene->n_primitives; i++) {
     const zr_object *o = scene->primitives[i];
     size_t f = 0;
     if (!zr__rad_models(o, &f))
       return say(why, size, ZR_GI_CACHE,
-                 "it has a %s, which the hierarchical solver does not "
-                 "model", zr__rad_kind_name(o->kind));
-    faces += f;
+                 "it has an object the hierarchical solver does not "
+                 "model (%s)", zr__rad_kind_name(o->kind));
     emitter = emitter || emits(o);
   }
-  zr_radiosity_params rp;
-  zr_radiosity_params_init(&rp, scene);
-  if (rp.max_mesh_faces > 0 && faces > (size_t)rp.max_mesh_faces)
-    return say(why, size, ZR_GI_CACHE,
-               "its meshes have more faces than the hierarchical solver "
-               "takes%s", NULL);
   if (!emitter)
     return say(why, size, ZR_GI_CACHE,
                "no surface emits light (POV-Ray's radiosity lit by light "
