@@ -9,6 +9,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/mman.h>
 
 struct zr_arena_block {
   zr_arena_block *next;
@@ -59,6 +60,7 @@ void *zr__arena_alloc_raw(zr_arena *a, size_t size) {
     }
     if (a->budget)
       a->charged += sizeof *b + cap;
+    zr__mem_huge_pages(b->data, cap);
     b->size = cap;
     b->used = 0;
     /* A large one-off block goes behind the head so the head keeps its
@@ -75,6 +77,22 @@ void *zr__arena_alloc_raw(zr_arena *a, size_t size) {
   b->used += size;
   a->used += size;
   return p;
+}
+
+void zr__mem_huge_pages(void *p, size_t size) {
+#ifdef MADV_HUGEPAGE
+  const uintptr_t huge = (uintptr_t)2 << 20;
+  /* Below two huge pages the rounding would leave little or nothing. */
+  if (!p || size < 2 * huge)
+    return;
+  uintptr_t lo = ((uintptr_t)p + huge - 1) & ~(huge - 1);
+  uintptr_t hi = ((uintptr_t)p + size) & ~(huge - 1);
+  if (hi > lo)
+    (void)madvise((void *)lo, hi - lo, MADV_HUGEPAGE); /* advice only */
+#else
+  (void)p;
+  (void)size;
+#endif
 }
 
 void *zr__arena_alloc(zr_arena *a, size_t size) {
@@ -118,6 +136,7 @@ void *zr__arena_grow(zr_arena *a, void *p, size_t old_size,
   }
   if (a->budget)
     a->charged += size - old;
+  zr__mem_huge_pages(grown->data, size);
   *link = grown;
   grown->size = grown->used = size;
   a->used += size - old;

@@ -125,6 +125,7 @@ static zr_status push_token(zr_sdl_file *f, size_t *cap,
     zr_sdl_token *tokens = realloc(f->tokens, new_cap * sizeof *tokens);
     if (!tokens)
       return ZR_ENOMEM;
+    zr__mem_huge_pages(tokens, new_cap * sizeof *tokens);
     f->tokens = tokens;
     *cap = new_cap;
   }
