@@ -224,8 +224,8 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
    sphere's "sphere { <x, y, z>, r" of plain numbers, read from the
    file's bytes as one token each (lib/sdl/tokens.c); the value points
    at the vectors in the file. */
-%token <str> T_TRIANGLE_RUN "triangle of plain vectors"
-%token <str> T_SPHERE_RUN "sphere of plain numbers"
+%token <str> T_TRIANGLE_RUN "triangle with its corners"
+%token <str> T_SPHERE_RUN "sphere with its centre and radius"
 %token <decl> T_DECL_NAME "identifier"
 %token <value> T_FLOAT_ID "float identifier"
 %token <value> T_VECTOR_ID "vector identifier"
