@@ -220,10 +220,12 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %token <str> T_STRING "string"
 %token <str> T_IDENTIFIER "undeclared identifier"
 %token <str> T_UNSUPPORTED "unsupported keyword"
-/* The three plain vectors of "triangle { <a>, <b>, <c> }", read from
-   the file's bytes as one token (lib/sdl/tokens.c); the value points at
-   them in the file. */
-%token <str> T_TRIANGLE_RUN "triangle's vertices"
+/* A whole "triangle { <a>, <b>, <c> }" of plain vectors, and a
+   sphere's "sphere { <x, y, z>, r" of plain numbers, read from the
+   file's bytes as one token each (lib/sdl/tokens.c); the value points
+   at the vectors in the file. */
+%token <str> T_TRIANGLE_RUN "triangle with its corners"
+%token <str> T_SPHERE_RUN "sphere with its centre and radius"
 %token <decl> T_DECL_NAME "identifier"
 %token <value> T_FLOAT_ID "float identifier"
 %token <value> T_VECTOR_ID "vector identifier"
@@ -1480,6 +1482,12 @@ colour_item:
 
 object:
   object_body '}'
+| T_TRIANGLE_RUN
+    {
+      TRY($$ = zr__sdl_object_new(p, ZR_OBJ_TRIANGLE, &@1));
+      TRY(zr__sdl_triangle_run(p, $1, &@1, $$->u.triangle.p));
+      zr__sdl_degenerate_triangle(p, $$->u.triangle.p, &@1);
+    }
 | union_body '}'
 | light_group_body '}'
     { TRY(zr__sdl_light_group_done(p, $1.object, $1.global, &@1)); $$ = $1.object; }
@@ -1537,11 +1545,13 @@ object_head:
       TRY($$ = zr__sdl_object_new(p, ZR_OBJ_SPHERE, &@1));
       TRY(zr__sdl_want_vector(p, &$3, &@3, &$$->u.sphere.centre));
       TRY(zr__sdl_want_float(p, &$5, &@5, &$$->u.sphere.radius));
-      if ($$->u.sphere.radius < 0)
-        zr__sdl_warning(p, &@5, "a sphere with a negative radius (%g) "
-                        "is drawn with radius %g (POV-Ray 3.7 draws it "
-                        "too, shaded inside out)", $$->u.sphere.radius,
-                        -$$->u.sphere.radius);
+      zr__sdl_sphere_radius(p, $$, &@5);
+    }
+| T_SPHERE_RUN
+    {
+      TRY($$ = zr__sdl_object_new(p, ZR_OBJ_SPHERE, &@1));
+      TRY(zr__sdl_sphere_run(p, $1, &@1, $$));
+      zr__sdl_sphere_radius(p, $$, &@1);
     }
 | T_BOX '{' expr comma expr
     {
@@ -1560,12 +1570,6 @@ object_head:
       }
       /* A x + B y + C z = D |<A,B,C>| (reference manual, "Plane"). */
       $$->u.plane.normal = zr_v3_norm($$->u.plane.normal);
-    }
-| T_TRIANGLE '{' T_TRIANGLE_RUN
-    {
-      TRY($$ = zr__sdl_object_new(p, ZR_OBJ_TRIANGLE, &@1));
-      TRY(zr__sdl_triangle_run(p, $3, &@3, $$->u.triangle.p));
-      zr__sdl_degenerate_triangle(p, $$->u.triangle.p, &@1);
     }
 | T_TRIANGLE '{' expr comma expr comma expr
     {
@@ -2045,8 +2049,8 @@ julia_function:
    the triangles, then the mesh's own modifiers, then the object's. */
 mesh_head:
   T_MESH '{'           { TRY($$ = zr__sdl_mesh_new(p, false, &@1)); }
-| mesh_head T_TRIANGLE '{' T_TRIANGLE_RUN '}'
-    { TRY(zr__sdl_mesh_triangle_run(p, $1, $4, &@4)); $$ = $1; }
+| mesh_head T_TRIANGLE_RUN
+    { TRY(zr__sdl_mesh_triangle_run(p, $1, $2, &@2)); $$ = $1; }
 | mesh_head T_TRIANGLE '{' expr comma expr comma expr mesh_texture '}'
     {
       zr_sdl_expr v[3] = {$4, $6, $8};
@@ -4077,6 +4081,7 @@ int zr__pov_lex(ZR__POV_STYPE *lval, zr_sdl_loc *lloc, zr_sdl_parser *p) {
   case T_IDENTIFIER:
   case T_UNSUPPORTED:
   case T_TRIANGLE_RUN:
+  case T_SPHERE_RUN:
     lval->str = v.str;
     break;
   case T_DECL_NAME:

@@ -111,6 +111,43 @@ static void test_core_strbuf_and_arena(void **state) {
   zr__arena_free(&a);
 }
 
+/* An array grown by doubling keeps its rows and, once large, costs its
+   final size alone: its own block is resized, not left behind (issue
+   13).  A small one is copied; small allocations around it are kept. */
+static void test_core_arena_grow(void **state) {
+  (void)state;
+  zr_arena a;
+  zr__arena_init(&a);
+  int *small = zr__arena_alloc(&a, 4 * sizeof *small);
+  assert_non_null(small);
+  small[3] = 7;
+  size_t cap = 4;
+  int *rows = zr__arena_grow(&a, NULL, 0, cap * sizeof *rows);
+  assert_non_null(rows);
+  for (size_t n = 0; n < 1000000; n++) {
+    if (n == cap) {
+      int *grown = zr__arena_grow(&a, rows, cap * sizeof *rows,
+                                  2 * cap * sizeof *rows);
+      assert_non_null(grown);
+      rows = grown;
+      cap *= 2;
+      /* Every row written so far is still there. */
+      for (size_t i = 0; i < n; i += 4099)
+        assert_int_equal(rows[i], (int)i);
+      assert_int_equal(rows[n - 1], (int)(n - 1));
+    }
+    rows[n] = (int)n;
+  }
+  assert_int_equal(small[3], 7);
+  /* 2^20 rows of 4 bytes, plus the small allocations and the copies
+     made while the array was small (under two 64 KB blocks). */
+  assert_true(a.used >= cap * sizeof *rows);
+  assert_true(a.used < cap * sizeof *rows + 131072);
+  /* Shrinking or keeping the size returns the same room. */
+  assert_ptr_equal(zr__arena_grow(&a, rows, 64, 32), rows);
+  zr__arena_free(&a);
+}
+
 typedef struct captured {
   char text[512];
   int count;
@@ -150,6 +187,7 @@ int main(void) {
       cmocka_unit_test(test_core_transform_order_and_inverse),
       cmocka_unit_test(test_core_matrix_keyword),
       cmocka_unit_test(test_core_strbuf_and_arena),
+      cmocka_unit_test(test_core_arena_grow),
       cmocka_unit_test(test_core_diag_format),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);

@@ -282,39 +282,143 @@ static void test_numlist_error_places(void **state) {
   zr__strbuf_free(&b);
 }
 
-/* "triangle { <a>, <b>, <c> }" becomes triangle, '{', one run, '}';
-   any other body keeps its tokens. */
-static void test_numlist_triangle_run_token(void **state) {
-  (void)state;
-  const char *text = "mesh { triangle { <0,0,0>, <1,0,0>,\n <0,1,0> }\n"
-                     " triangle { <0,0,0>, <1,0,0>, <0,1,0> texture {} }\n"
-                     " triangle { <0,0,0>, <1,0,0>, <0,1,0>, } }\n";
+/* Lexes text as "t.pov" into file, which the caller frees. */
+static void lex_text(zr_sdl_file *file, const char *text) {
   size_t n = strlen(text);
   char *bytes = malloc(n + 1);
   char *path = strdup("t.pov");
   assert_non_null(bytes);
   assert_non_null(path);
   memcpy(bytes, text, n + 1);
-  zr_sdl_file file;
   zr_sdl_loc err_loc;
   char err[200];
-  assert_int_equal(zr__sdl_file_lex(&file, 0, path, bytes, n, &err_loc, err,
+  assert_int_equal(zr__sdl_file_lex(file, 0, path, bytes, n, &err_loc, err,
                                     sizeof err),
                    ZR_OK);
+}
+
+/* "triangle { <a>, <b>, <c> }" becomes one run token, at the keyword's
+   place; any other body keeps its tokens. */
+static void test_numlist_triangle_run_token(void **state) {
+  (void)state;
+  zr_sdl_file file;
+  lex_text(&file, "mesh { triangle { <0,0,0>, <1,0,0>,\n <0,1,0> }\n"
+                  " triangle { <0,0,0>, <1,0,0>, <0,1,0> texture {} }\n"
+                  " triangle { <0,0,0>, <1,0,0>, <0,1,0>, } }\n");
   assert_int_equal(file.tokens[0].kind, T_MESH);
-  assert_int_equal(file.tokens[2].kind, T_TRIANGLE);
-  assert_int_equal(file.tokens[4].kind, T_TRIANGLE_RUN);
-  assert_int_equal(file.tokens[4].line, 1);
-  assert_int_equal(file.tokens[4].column, 19);
-  assert_int_equal(file.tokens[5].kind, '}');
-  assert_int_equal(file.tokens[5].line, 2);
-  assert_int_equal(file.tokens[5].column, 10);
+  assert_int_equal(file.tokens[2].kind, T_TRIANGLE_RUN);
+  assert_int_equal(file.tokens[2].line, 1);
+  assert_int_equal(file.tokens[2].column, 8);
+  assert_int_equal(file.tokens[2].length, 8);
+  /* The scanner goes on after the '}', in its place. */
+  assert_int_equal(file.tokens[3].kind, T_TRIANGLE);
+  assert_int_equal(file.tokens[3].line, 3);
+  assert_int_equal(file.tokens[3].column, 2);
   /* The second has a texture and the third a trailing comma: tokens. */
-  assert_int_equal(file.tokens[6].kind, T_TRIANGLE);
-  assert_int_equal(file.tokens[8].kind, '<');
-  for (size_t i = 9; i < file.n_tokens; i++)
+  assert_int_equal(file.tokens[4].kind, '{');
+  assert_int_equal(file.tokens[5].kind, '<');
+  for (size_t i = 6; i < file.n_tokens; i++)
     assert_int_not_equal(file.tokens[i].kind, T_TRIANGLE_RUN);
   zr__sdl_file_free(&file);
+}
+
+/* "sphere { <x, y, z>, r" followed by a keyword or '}' becomes one run
+   token at the keyword's place; anything that an expression or a blob
+   could go on with keeps the tokens. */
+static void test_numlist_sphere_run_token(void **state) {
+  (void)state;
+  zr_sdl_file file;
+  lex_text(&file, "sphere { <1, -2, 3.5>,\n 0.25 texture { T } }\n"
+                  "sphere{<0,0,0>,1}\n"
+                  "sphere { <0,0,0>, 1 strength 2 }\n"
+                  "sphere { <0,0,0>, 1, 2 }\n"
+                  "sphere { <0,0,0>, 1 * 2 }\n"
+                  "sphere { <0,0,0>, 1 M }\n"
+                  "sphere { <0,0,0>, 1 rgb 1 }\n"
+                  "sphere { <0,0,0>, 1e999 scale 2 }\n"
+                  "sphere { <0,0,0>, 1 // note\n }\n"
+                  "sphere { <0,0,0> 1 }\n");
+  const zr_sdl_token *t = file.tokens;
+  assert_int_equal(t[0].kind, T_SPHERE_RUN);
+  assert_int_equal(t[0].line, 1);
+  assert_int_equal(t[0].column, 1);
+  assert_int_equal(t[0].length, 6);
+  assert_int_equal(t[1].kind, T_TEXTURE);
+  assert_int_equal(t[1].line, 2);
+  assert_int_equal(t[1].column, 7);
+  assert_int_equal(t[5].kind, '}');
+  assert_int_equal(t[6].kind, T_SPHERE_RUN);
+  assert_int_equal(t[7].kind, '}');
+  assert_int_equal(t[7].line, 3);
+  assert_int_equal(t[7].column, 17);
+  /* The eight others are whole: 'sphere', '{', '<' each. */
+  size_t spheres = 0;
+  for (size_t i = 8; i < file.n_tokens; i++) {
+    assert_int_not_equal(t[i].kind, T_SPHERE_RUN);
+    if (t[i].kind == T_SPHERE) {
+      assert_int_equal(t[i + 1].kind, '{');
+      assert_int_equal(t[i + 2].kind, '<');
+      spheres++;
+    }
+  }
+  assert_int_equal(spheres, 8);
+  zr__sdl_file_free(&file);
+}
+
+/* Spheres read as runs are the same objects, bit for bit, as the
+   grammar's (+0 defeats the run), in declarations ended without ';'
+   (the engine counts the run's open block), in unions and blobs, and
+   their warnings and errors keep their places. */
+static void test_numlist_sphere_run_same_as_grammar(void **state) {
+  fixture *f = *state;
+  static const char *const fmt[2] = {
+      "#declare S = sphere { <%d.1, -0.3e-2, 1e-3>, 0.%d }\n"
+      "#declare U = union { sphere { <1, 2, 3>, %d scale 2 }\n"
+      "  sphere { <-4, 5, -6>, 7 } }\n"
+      "object { S }\nobject { U }\n"
+      "blob { threshold 0.5 sphere { <0, 0, 0>, %d strength 1 } }\n",
+      "#declare S = sphere { <%d.1, -0.3e-2, 1e-3>, 0.%d + 0 }\n"
+      "#declare U = union { sphere { <1, 2, 3>, %d + 0 scale 2 }\n"
+      "  sphere { <-4, 5, -6>, 7 + 0 } }\n"
+      "object { S }\nobject { U }\n"
+      "blob { threshold 0.5 sphere { <0, 0, 0>, %d strength 1 } }\n"};
+  zr_object spheres[2][3];
+  for (int k = 0; k < 2; k++) {
+    char text[600];
+    snprintf(text, sizeof text, fmt[k], 5, 7, 3, 2);
+    zr_scene *s = good(f, text);
+    assert_int_equal(s->n_primitives, 4);
+    for (int i = 0; i < 3; i++) {
+      assert_int_equal(s->primitives[i]->kind, ZR_OBJ_SPHERE);
+      spheres[k][i] = *s->primitives[i];
+      assert_int_equal(spheres[k][i].where.line, i + 1);
+    }
+    assert_int_equal(s->primitives[3]->kind, ZR_OBJ_BLOB);
+  }
+  for (int i = 0; i < 3; i++) {
+    assert_memory_equal(&spheres[0][i].u.sphere.centre,
+                        &spheres[1][i].u.sphere.centre, sizeof(zr_vec3));
+    assert_true(spheres[0][i].u.sphere.radius ==
+                spheres[1][i].u.sphere.radius);
+    assert_int_equal(spheres[0][i].where.column,
+                     spheres[1][i].where.column);
+  }
+  assert_true(spheres[0][0].u.sphere.centre.x == 5.1);
+  assert_true(spheres[0][0].u.sphere.radius == 0.7);
+  assert_true(spheres[0][2].u.sphere.centre.z == -6.0);
+  good(f, "sphere { <0, 0, 0>, -1 pigment { rgb 1 } }\n");
+  assert_int_equal(f->diag.warnings, 1);
+  assert_non_null(strstr(f->diag.warning, "t.pov:1:1: warning: a sphere "
+                                          "with a negative radius (-1)"));
+  bad(f, "sphere { <0,0,0>, 1 texture { pigment { rgb 1 } } }\n"
+         "bogus\n",
+      ZR_EUNDEFINED, "undefined identifier 'bogus'",
+      "t.pov:2:1: error: undefined identifier 'bogus'\n"
+      "    2 | bogus\n"
+      "      | ^~~~~\n");
+  bad(f, "sphere { <0,0,0>, 1e400 pigment { rgb 1 } }\n", ZR_ESCENE,
+      "this value is not a finite number (inf): an overflow (such as "
+      "1e400) or a division such as inf/inf upstream?", NULL);
 }
 
 /* Triangles read as runs make the same mesh and the same triangle
@@ -360,6 +464,9 @@ int main(void) {
       cmocka_unit_test(test_numlist_stops_where_the_grammar_starts),
       cmocka_unit_test(test_numlist_lexer_keeps_one_token),
       cmocka_unit_test(test_numlist_triangle_run_token),
+      cmocka_unit_test(test_numlist_sphere_run_token),
+      cmocka_unit_test_setup_teardown(
+          test_numlist_sphere_run_same_as_grammar, setup, teardown),
       cmocka_unit_test_setup_teardown(
           test_numlist_triangle_run_same_as_grammar, setup, teardown),
       cmocka_unit_test_setup_teardown(test_numlist_same_mesh_as_the_grammar,

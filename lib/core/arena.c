@@ -9,6 +9,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/mman.h>
 
 struct zr_arena_block {
   zr_arena_block *next;
@@ -34,13 +35,17 @@ void zr__arena_free(zr_arena *a) {
   a->budget = budget;
 }
 
-void *zr__arena_alloc(zr_arena *a, size_t size) {
+/* size rounded up to the arena's alignment (at least one unit). */
+static size_t rounded(size_t size) {
   const size_t align = alignof(max_align_t);
+  size = (size + align - 1) & ~(align - 1);
+  return size ? size : align;
+}
+
+void *zr__arena_alloc_raw(zr_arena *a, size_t size) {
   if (size > SIZE_MAX / 2)
     return NULL;
-  size = (size + align - 1) & ~(align - 1);
-  if (size == 0)
-    size = align;
+  size = rounded(size);
   zr_arena_block *b = a->head;
   if (!b || b->size - b->used < size) {
     size_t cap = size > BLOCK_SIZE / 4 ? size : BLOCK_SIZE;
@@ -55,6 +60,7 @@ void *zr__arena_alloc(zr_arena *a, size_t size) {
     }
     if (a->budget)
       a->charged += sizeof *b + cap;
+    zr__mem_huge_pages(b->data, cap);
     b->size = cap;
     b->used = 0;
     /* A large one-off block goes behind the head so the head keeps its
@@ -70,12 +76,75 @@ void *zr__arena_alloc(zr_arena *a, size_t size) {
   void *p = b->data + b->used;
   b->used += size;
   a->used += size;
-  memset(p, 0, size);
   return p;
 }
 
+void zr__mem_huge_pages(void *p, size_t size) {
+#ifdef MADV_HUGEPAGE
+  const uintptr_t huge = (uintptr_t)2 << 20;
+  /* Below two huge pages the rounding would leave little or nothing. */
+  if (!p || size < 2 * huge)
+    return;
+  uintptr_t lo = ((uintptr_t)p + huge - 1) & ~(huge - 1);
+  uintptr_t hi = ((uintptr_t)p + size) & ~(huge - 1);
+  if (hi > lo)
+    (void)madvise((void *)lo, hi - lo, MADV_HUGEPAGE); /* advice only */
+#else
+  (void)p;
+  (void)size;
+#endif
+}
+
+void *zr__arena_alloc(zr_arena *a, size_t size) {
+  void *p = zr__arena_alloc_raw(a, size);
+  if (p)
+    memset(p, 0, rounded(size));
+  return p;
+}
+
+void *zr__arena_grow(zr_arena *a, void *p, size_t old_size,
+                     size_t new_size) {
+  if (!p)
+    return zr__arena_alloc_raw(a, new_size);
+  if (new_size <= old_size)
+    return p;
+  if (new_size > SIZE_MAX / 2)
+    return NULL;
+  size_t old = rounded(old_size), size = rounded(new_size);
+  /* Only an allocation above a quarter block has a block of its own; a
+     large block goes in behind the head, so a growing array is found
+     near the front. */
+  zr_arena_block **link = &a->head;
+  if (old > BLOCK_SIZE / 4)
+    while (*link && (*link)->data != (unsigned char *)p)
+      link = &(*link)->next;
+  zr_arena_block *b = old > BLOCK_SIZE / 4 ? *link : NULL;
+  if (!b || b->size != old || b->used != old) {
+    void *q = zr__arena_alloc_raw(a, new_size);
+    if (q)
+      memcpy(q, p, old_size);
+    return q;
+  }
+  if (!zr__budget_charge(a->budget, size - old)) {
+    a->over_budget = 1;
+    return NULL;
+  }
+  zr_arena_block *grown = realloc(b, sizeof *b + size);
+  if (!grown) {
+    zr__budget_release(a->budget, size - old);
+    return NULL;
+  }
+  if (a->budget)
+    a->charged += size - old;
+  zr__mem_huge_pages(grown->data, size);
+  *link = grown;
+  grown->size = grown->used = size;
+  a->used += size - old;
+  return grown->data;
+}
+
 void *zr__arena_memdup(zr_arena *a, const void *p, size_t size) {
-  void *q = zr__arena_alloc(a, size);
+  void *q = zr__arena_alloc_raw(a, size);
   if (q && size)
     memcpy(q, p, size);
   return q;

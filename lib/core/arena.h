@@ -29,10 +29,38 @@ void zr__arena_init(zr_arena *a);
 void zr__arena_free(zr_arena *a);
 /* Zeroed memory aligned for any type; NULL when out of memory. */
 void *zr__arena_alloc(zr_arena *a, size_t size);
+/* The same, not zeroed: for callers that write every byte before they
+   read it (copies, arrays filled row by row).  Zeroing costs a pass
+   over the memory and touches pages that may never be used. */
+void *zr__arena_alloc_raw(zr_arena *a, size_t size);
+/*
+ * Room for new_size bytes where p (old_size bytes from this arena, or
+ * NULL) was, keeping its bytes; the bytes after old_size are not zeroed.
+ * A large allocation has a block of its own, which is resized (realloc:
+ * the C library moves a big block by remapping its pages, so the old
+ * room is neither copied nor left behind); anything else is copied to a
+ * new allocation.  NULL when out of memory, p then unchanged.  An array
+ * that grows by doubling costs its final size, not twice it (issue 13:
+ * a mesh of 130,050 triangles left 12 MB of old vertex arrays behind).
+ */
+void *zr__arena_grow(zr_arena *a, void *p, size_t old_size,
+                     size_t new_size);
 char *zr__arena_strdup(zr_arena *a, const char *s);
 /* Takes back p, of size bytes, when it is the arena's last allocation
    (true then); anything else stays where it is (false). */
 bool zr__arena_give_back(zr_arena *a, void *p, size_t size);
 void *zr__arena_memdup(zr_arena *a, const void *p, size_t size);
+
+/*
+ * Asks the kernel to back the 2 MB-aligned pages inside [p, p + size)
+ * with huge pages (madvise MADV_HUGEPAGE; nothing where that does not
+ * exist), before they are first touched.  For big buffers filled once
+ * (a scene file's bytes, its token array, a mesh's arrays): a first
+ * touch of a 4 KB page costs a page fault, which took 22% of the parse
+ * of a 130,050-triangle mesh on this project's VM (issue 13).  Where
+ * transparent huge pages are "madvise" (a common default), only memory
+ * marked this way gets them.
+ */
+void zr__mem_huge_pages(void *p, size_t size);
 
 #endif /* ZR_CORE_ARENA_H */

@@ -30,6 +30,7 @@
  */
 #include "config.h"
 
+#include "core/arena.h"
 #include "core/budget.h"
 #include "core/iopolicy.h"
 
@@ -376,6 +377,7 @@ static zr_status read_all(int fd, const char *path, unsigned long long limit,
   char *buf = malloc(cap);
   if (!buf)
     return say(why, why_size, ZR_ENOMEM, "'%s': out of memory", path);
+  zr__mem_huge_pages(buf, cap); /* a big scene file (core/arena.h) */
   size_t len = 0;
   for (;;) {
     if (len + 1 >= cap) {

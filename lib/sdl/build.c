@@ -62,6 +62,33 @@ void zr__sdl_degenerate_triangle(zr_sdl_parser *p, const zr_vec3 *corners,
                     "line, so it shows nothing (remove it)");
 }
 
+void zr__sdl_sphere_radius(zr_sdl_parser *p, const zr_object *sphere,
+                           const zr_sdl_loc *at) {
+  double r = sphere->u.sphere.radius;
+  if (r < 0)
+    zr__sdl_warning(p, at, "a sphere with a negative radius (%g) is drawn "
+                    "with radius %g (POV-Ray 3.7 draws it too, shaded "
+                    "inside out)", r, -r);
+}
+
+bool zr__sdl_sphere_run(zr_sdl_parser *p, const char *run,
+                        const zr_sdl_loc *loc, zr_object *sphere) {
+  /* The lexer read this "<x, y, z>, r" once; the same reader takes it
+     again (numlist.c). */
+  const zr_sdl_file *f = &p->files[loc->file];
+  zr_sdl_numreader r = {f->bytes, (size_t)(run - f->bytes), f->size,
+                        loc->line, loc->column, false, false};
+  double v[4];
+  if (!zr__sdl_numlist_sphere(&r, v)) {
+    zr__sdl_error(p, ZR_ESYNTAX, loc, "the lexer's sphere does not read "
+                  "again");
+    return false;
+  }
+  sphere->u.sphere.centre = zr_v3(v[0], v[1], v[2]);
+  sphere->u.sphere.radius = v[3];
+  return true;
+}
+
 bool zr__sdl_axis_given(zr_sdl_parser *p, zr_vec3 base, zr_vec3 cap,
                         const char *shape, const zr_sdl_loc *at) {
   if (zr_v3_len(zr_v3_sub(cap, base)) != 0)

@@ -79,17 +79,23 @@ zr_object *zr__sdl_mesh_new(zr_sdl_parser *p, bool mesh2,
 }
 
 /* Room for one more row of size bytes in an arena array that grows by
-   doubling (the arena cannot resize: the old block is left behind). */
+   doubling.  A large array is resized in its own block
+   (zr__arena_grow), so the rows it had are not left behind, and the
+   rows not yet written are not zeroed (their pages are not touched). */
 static bool grow(zr_sdl_parser *p, void **rows, size_t *cap, size_t n,
                  size_t size) {
   if (n < *cap)
     return true;
   size_t c = *cap ? 2 * *cap : 16;
-  void *q = zr__sdl_alloc(p, c * size);
-  if (!q)
+  zr_arena *a = &p->scene->arena;
+  a->over_budget = 0;
+  void *q = c <= SIZE_MAX / size
+                ? zr__arena_grow(a, *rows, *cap * size, c * size)
+                : NULL;
+  if (!q) {
+    zr__sdl_alloc_failed(p, c <= SIZE_MAX / size ? c * size : SIZE_MAX);
     return false;
-  if (n)
-    memcpy(q, *rows, n * size);
+  }
   *rows = q;
   *cap = c;
   return true;

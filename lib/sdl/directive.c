@@ -163,8 +163,13 @@ void *zr__sdl_alloc(zr_sdl_parser *p, size_t size) {
   zr_arena *a = &p->scene->arena;
   a->over_budget = 0;
   void *m = zr__arena_alloc(a, size);
-  if (m)
-    return m;
+  if (!m)
+    zr__sdl_alloc_failed(p, size);
+  return m;
+}
+
+void zr__sdl_alloc_failed(zr_sdl_parser *p, size_t size) {
+  zr_arena *a = &p->scene->arena;
   /* Point at the token the grammar read last: the item being built. */
   zr_sdl_loc *at = p->last_loc.line > 0 ? &p->last_loc : NULL;
   if (a->over_budget) {
@@ -175,7 +180,6 @@ void *zr__sdl_alloc(zr_sdl_parser *p, size_t size) {
   } else {
     zr__sdl_error(p, ZR_ENOMEM, at, "out of memory");
   }
-  return NULL;
 }
 
 const char *zr__sdl_token_name(const char *name, char *buf, size_t size) {
@@ -769,6 +773,16 @@ static bool autoend_due(const zr_sdl_parser *p, int next) {
 
 static void track(zr_sdl_parser *p, int kind) {
   zr_sdl_autoend *a = &p->autoend;
+  /* The runs of tokens.c: a sphere's stands for "sphere { centre,
+     radius" and leaves its block open, a triangle's for the whole
+     "triangle { ... }". */
+  if (kind == T_SPHERE_RUN)
+    kind = '{';
+  if (kind == T_TRIANGLE_RUN) {
+    a->operand = true;
+    a->last = '}';
+    return;
+  }
   bool vector = kind == '<' && !a->operand;
   if (kind == '(' || kind == '[' || kind == '{' || vector) {
     if (a->depth < 64) {

@@ -150,7 +150,7 @@ static bool is_char(const zr_sdl_token *t, int ch) { return t->kind == ch; }
 static const char *word_of(const zr_sdl_token *t) {
   if (t->kind < 256 || t->kind == T_NUMBER || t->kind == T_STRING ||
       t->kind == T_IDENTIFIER || t->kind == T_TRIANGLE_RUN ||
-      t->kind == ZR_SDL_NUMBER_LIST)
+      t->kind == T_SPHERE_RUN || t->kind == ZR_SDL_NUMBER_LIST)
     return NULL; /* runs of plain items point into the file's bytes */
   return t->v.str; /* NULL for "<=" and the like */
 }
@@ -176,7 +176,11 @@ static void describe(const zr_sdl_token *t, char *buf, size_t size) {
     snprintf(buf, size, "string");
   else if (t->kind == T_IDENTIFIER)
     snprintf(buf, size, "'%s'", t->v.str);
-  else if (t->kind == T_TRIANGLE_RUN || t->kind == ZR_SDL_NUMBER_LIST)
+  else if (t->kind == T_TRIANGLE_RUN)
+    snprintf(buf, size, "'triangle'");
+  else if (t->kind == T_SPHERE_RUN)
+    snprintf(buf, size, "'sphere'");
+  else if (t->kind == ZR_SDL_NUMBER_LIST)
     snprintf(buf, size, "vectors");
   else if (t->kind >= 256 && t->v.str)
     snprintf(buf, size, "'%s'", t->v.str);

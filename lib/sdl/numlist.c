@@ -16,8 +16,9 @@
  * uv_vectors), followed by a comma, the next '<' or the list's '}' - the
  * items build_mesh.c's token reader takes.  Blanks may sit anywhere in
  * between, a comma may follow each item.  A number is what the scanner
- * (grammar/pov.l) calls one, and must be followed by a blank, ',' or
- * '>': anything else ("2a", "1.5.3", a comment, an operator) ends the
+ * (grammar/pov.l) calls one, and must be followed by a blank, ',', '>'
+ * or (a sphere's radius, tokens.c) '}': anything else ("2a", "1.5.3", a
+ * comment, an operator) ends the
  * run before the item, and the scanner and the grammar take over from
  * there exactly as if there had been no run.  Numbers convert exactly
  * like strtod(), which the scanner uses: with at most 19 significant
@@ -122,9 +123,10 @@ static inline bool number(zr_sdl_numreader *r, double *out) {
         exponent = -exponent;
     }
   }
-  /* The scanner would read what follows as another token. */
+  /* The scanner would read what follows as another token (a '}' ends
+     a sphere's radius; in an item only '>' and ',' go on). */
   char next = at(r);
-  if (!(is_blank(next) || next == ',' || next == '>'))
+  if (!(is_blank(next) || next == ',' || next == '>' || next == '}'))
     return false;
   int power = exponent - fraction;
   if (mantissa == 0 && digits == 0) {
@@ -212,4 +214,22 @@ bool zr__sdl_numlist_item(zr_sdl_numreader *r, double v[3], int *dim,
   bool ok = item(&s, v, dim, line, column);
   *r = s;
   return ok;
+}
+
+bool zr__sdl_numlist_sphere(zr_sdl_numreader *r, double v[4]) {
+  zr_sdl_numreader s = *r;
+  int dim, line, column;
+  s.comma_ok = false;
+  s.uv = false;
+  if (!item(&s, v, &dim, &line, &column))
+    return false;
+  skip_blanks(&s);
+  if (at(&s) != ',')
+    return false;
+  step(&s);
+  skip_blanks(&s);
+  if (!signed_number(&s, &v[3]))
+    return false;
+  *r = s;
+  return true;
 }

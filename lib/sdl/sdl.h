@@ -321,6 +321,10 @@ typedef struct zr_sdl_numreader {
    when what follows is not a plain item. */
 bool zr__sdl_numlist_item(zr_sdl_numreader *r, double v[3], int *dim,
                           int *line, int *column);
+/* A sphere's "<x, y, z>, r" (T_SPHERE_RUN, tokens.c): the centre in
+   v[0..2] and the radius in v[3].  False, with the reader left where it
+   was, when what follows is not that. */
+bool zr__sdl_numlist_sphere(zr_sdl_numreader *r, double v[4]);
 
 /* One scene or include file, lexed once and kept while parsing. */
 typedef struct zr_sdl_file {
@@ -646,6 +650,10 @@ bool zr__sdl_spend(zr_sdl_parser *p, const zr_sdl_loc *at,
 const char *zr__sdl_kind_name(int kind);
 /* Arena memory, reporting ZR_ENOMEM when there is none. */
 void *zr__sdl_alloc(zr_sdl_parser *p, size_t size);
+/* Reports that an allocation of size bytes from the scene's arena failed
+   (over the memory budget, or out of memory), as zr__sdl_alloc does;
+   a->over_budget tells which. */
+void zr__sdl_alloc_failed(zr_sdl_parser *p, size_t size);
 /* A built-in float constant's value (clock, image_width, version ...;
    "Built-in Float Identifiers"), name one of the T_CONSTANT words. */
 double zr__sdl_constant(const zr_sdl_parser *p, const char *name);
@@ -870,6 +878,13 @@ const zr_sdl_value *zr__sdl_array_get(zr_sdl_parser *p, const char *name,
    measured), about a triangle whose corners are on one line. */
 void zr__sdl_degenerate_triangle(zr_sdl_parser *p, const zr_vec3 *corners,
                                  const zr_sdl_loc *at);
+/* Warns about a negative radius (at: where the radius is). */
+void zr__sdl_sphere_radius(zr_sdl_parser *p, const zr_object *sphere,
+                           const zr_sdl_loc *at);
+/* The centre and radius of a T_SPHERE_RUN token (run points at its
+   bytes, loc is the token's); false after an error. */
+bool zr__sdl_sphere_run(zr_sdl_parser *p, const char *run,
+                        const zr_sdl_loc *loc, zr_object *sphere);
 /* A cylinder's or cone's axis must have a length: POV-Ray 3.7 stops on
    base point = apex point (measured); false after the error at at. */
 bool zr__sdl_axis_given(zr_sdl_parser *p, zr_vec3 base, zr_vec3 cap,

@@ -17,6 +17,8 @@
 #include "core/budget.h"
 #include "config.h"
 
+#include <ctype.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -123,6 +125,7 @@ static zr_status push_token(zr_sdl_file *f, size_t *cap,
     zr_sdl_token *tokens = realloc(f->tokens, new_cap * sizeof *tokens);
     if (!tokens)
       return ZR_ENOMEM;
+    zr__mem_huge_pages(tokens, new_cap * sizeof *tokens);
     f->tokens = tokens;
     *cap = new_cap;
   }
@@ -228,14 +231,50 @@ static zr_status number_list(zr_sdl_file *f, size_t *cap, zr_sdl_lexer *lx,
   return status;
 }
 
+static bool is_blank_byte(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' ||
+         c == '\v';
+}
+
+/* Moves the lexer past bytes [lx->offset, to) - blanks that the reader
+   stopped before, and a closing '}' - counting lines and columns as the
+   scanner does, and starts the scanner again there. */
+static zr_status resume_at(zr_sdl_lexer *lx, yyscan_t scanner, size_t to,
+                           const zr_sdl_numreader *r) {
+  lx->offset = r->pos;
+  lx->line = r->line;
+  lx->column = r->column;
+  for (; lx->offset < to; lx->offset++) {
+    if (lx->file->bytes[lx->offset] == '\n') {
+      lx->line++;
+      lx->column = 1;
+    } else {
+      lx->column++;
+    }
+  }
+  lx->read_pos = lx->offset;
+  return restart_guarded(lx, scanner) ? ZR_OK : ZR_ENOMEM;
+}
+
+/* The token that stands for "KEYWORD { ..." in place of the keyword and
+   the '{' the scanner gave: it keeps the keyword's place. */
+static zr_sdl_token run_token(zr_sdl_file *f, int kind, const char *run) {
+  zr_sdl_token t = f->tokens[f->n_tokens - 2];
+  t.kind = kind;
+  t.v.str = run;
+  f->n_tokens -= 2;
+  return t;
+}
+
 /*
- * After "triangle {", three plain vectors followed by '}' (the body of
- * most triangles in a big mesh) are read with the same reader and kept
- * as one token, T_TRIANGLE_RUN, which points at their bytes; the '}'
- * and anything else are left to the scanner.  A terrain of 130,050
- * triangles then costs four tokens a triangle instead of about thirty
- * (issue 13: parse time and memory).  Any other body (a texture, a
- * fourth vector, an expression, a comment) stays as it was.
+ * "triangle { <a>, <b>, <c> }" with three plain vectors (the body of
+ * most triangles in a big mesh) is kept as one token, T_TRIANGLE_RUN,
+ * in place of the keyword, the braces and the 19 tokens of the vectors;
+ * it points at the vectors' bytes, which the grammar's action reads
+ * again with the same reader.  A terrain of 130,050 triangles then costs
+ * one 24-byte token a triangle (issue 13: parse time and memory).  Any
+ * other body (a texture, a fourth vector, an expression, a comment)
+ * stays as it was.
  */
 static zr_status triangle_run(zr_sdl_file *f, size_t *cap, zr_sdl_lexer *lx,
                               yyscan_t scanner) {
@@ -246,34 +285,84 @@ static zr_status triangle_run(zr_sdl_file *f, size_t *cap, zr_sdl_lexer *lx,
   zr_sdl_numreader r = {f->bytes, lx->offset, f->size, lx->line,
                         lx->column, false, false};
   double v[3];
-  int dim, line = 0, column = 0;
-  for (int k = 0; k < 3; k++) {
-    int l, c;
-    if (!zr__sdl_numlist_item(&r, v, &dim, &l, &c))
+  int dim, line, column;
+  for (int k = 0; k < 3; k++)
+    if (!zr__sdl_numlist_item(&r, v, &dim, &line, &column))
       return ZR_OK;
-    if (k == 0)
-      line = l, column = c;
-  }
   size_t end = r.pos;
-  while (end < f->size && (f->bytes[end] == ' ' || f->bytes[end] == '\t' ||
-                           f->bytes[end] == '\r' || f->bytes[end] == '\n' ||
-                           f->bytes[end] == '\f' || f->bytes[end] == '\v'))
+  while (end < f->size && is_blank_byte(f->bytes[end]))
     end++;
   if (end >= f->size || f->bytes[end] != '}')
     return ZR_OK;
-  zr_sdl_token t;
-  memset(&t, 0, sizeof t);
-  t.kind = T_TRIANGLE_RUN;
-  t.line = line;
-  t.column = column;
-  t.length = 1;
-  t.v.str = f->bytes + lx->offset;
+  zr_sdl_token t = run_token(f, T_TRIANGLE_RUN, f->bytes + lx->offset);
   zr_status status = push_token(f, cap, &t);
-  lx->offset = lx->read_pos = r.pos;
-  lx->line = r.line;
-  lx->column = r.column;
-  zr__scan_restart(NULL, scanner);
-  return status;
+  zr_status resumed = resume_at(lx, scanner, end + 1, &r);
+  return status != ZR_OK ? status : resumed;
+}
+
+/* Whether a keyword after a sphere's radius surely starts something
+   else: not a blob component's strength, nor a colour item that an
+   expression may go on with (directive.c, continues), nor a word the
+   scanner reports. */
+static bool ends_sphere(int token) {
+  switch (token) {
+  case T_STRENGTH: case T_UNSUPPORTED:
+  case T_RGB: case T_RGBF: case T_RGBT: case T_RGBFT:
+  case T_SRGB: case T_SRGBF: case T_SRGBT: case T_SRGBFT:
+  case T_RED: case T_GREEN: case T_BLUE: case T_FILTER: case T_TRANSMIT:
+  case T_GRAY:
+    return false;
+  default:
+    return true;
+  }
+}
+
+/*
+ * "sphere { <x, y, z>, r" with plain numbers, followed by a keyword
+ * (texture, pigment, scale ...) or the '}', is kept as one token,
+ * T_SPHERE_RUN, in place of the keyword, the '{' and the 10 tokens of
+ * the centre and radius; the sphere's modifiers and '}' follow as
+ * tokens.  A sphere-heavy scene's token array is most of its parse
+ * memory (issue 13: 17 tokens, 408 bytes, for "sphere { <x, y, z>, r
+ * texture { T } }", now 7).  Only a keyword or '}' may follow, so the
+ * radius is surely complete: an operator, a comma (a blob's strength),
+ * an identifier (a macro could go on with an operator), a directive or
+ * a comment leave the sphere to the scanner.  A value that is not
+ * finite does too, so that the grammar reports it.
+ */
+static zr_status sphere_run(zr_sdl_file *f, size_t *cap, zr_sdl_lexer *lx,
+                            yyscan_t scanner) {
+  size_t n = f->n_tokens;
+  if (n < 2 || f->tokens[n - 1].kind != '{' ||
+      f->tokens[n - 2].kind != T_SPHERE)
+    return ZR_OK;
+  zr_sdl_numreader r = {f->bytes, lx->offset, f->size, lx->line,
+                        lx->column, false, false};
+  double v[4];
+  if (!zr__sdl_numlist_sphere(&r, v))
+    return ZR_OK;
+  for (int k = 0; k < 4; k++)
+    if (!isfinite(v[k]))
+      return ZR_OK;
+  size_t end = r.pos;
+  while (end < f->size && is_blank_byte(f->bytes[end]))
+    end++;
+  if (end >= f->size)
+    return ZR_OK;
+  if (f->bytes[end] != '}') {
+    size_t w = end;
+    while (w < f->size && (isalnum((unsigned char)f->bytes[w]) ||
+                           f->bytes[w] == '_'))
+      w++;
+    const zr_sdl_keyword *k = zr__sdl_keyword_find(f->bytes + end, w - end);
+    if (w == end || !isalpha((unsigned char)f->bytes[end]) || !k ||
+        !ends_sphere(k->token))
+      return ZR_OK;
+  }
+  zr_sdl_token t = run_token(f, T_SPHERE_RUN, f->bytes + lx->offset);
+  zr_status status = push_token(f, cap, &t);
+  zr_status resumed = resume_at(lx, scanner, end, &r);
+  return status != ZR_OK ? status : resumed;
 }
 
 static bool opens_block(int kind) {
@@ -415,8 +504,11 @@ zr_status zr__sdl_file_lex_budget(zr_sdl_file *f, int file_index,
       break;
     if (status == ZR_OK && kind == T_NUMBER)
       status = number_list(f, &cap, &lx, scanner);
-    else if (status == ZR_OK && kind == '{')
+    else if (status == ZR_OK && kind == '{') {
       status = triangle_run(f, &cap, &lx, scanner);
+      if (status == ZR_OK)
+        status = sphere_run(f, &cap, &lx, scanner);
+    }
   }
   zr__scan_lex_destroy(scanner);
   if (status == ZR_OK && f->strings.over_budget)
