@@ -286,3 +286,9 @@ TESTS += tests/test_media_cells.sh
 EXTRA_DIST += tests/test_media_cells.sh tests/media_cells.pov \
 	bench/media_quadrature.py \
 	bench/results/media-quadrature-2026-12-02.txt
+
+# Which photons a target's lattice brings: overlapping targets, the
+# photon trace level, shadowless lights; povray's counts and pixels.
+TESTS += tests/test_photon_targets.sh
+EXTRA_DIST += tests/test_photon_targets.sh tests/photon_targets.pov \
+	bench/photon_targets.sh
