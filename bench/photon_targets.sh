@@ -54,6 +54,7 @@ for m in 3 4 5 6; do
 done
 run_both ball_shadowless "$root/tests" "$scene" Case=4
 run_both ball_two_lights "$root/tests" "$scene" Case=5
+run_both textured_mesh "$root/tests" "$scene" Case=6
 if [ $stock = 1 ]; then
   s=/usr/share/povray-3.7/scenes/advanced
   run_both benchmark "$s/benchmark" benchmark.pov

@@ -7,13 +7,26 @@
 // meets the other first is not kept); case 3: a glass ball that
 // reflects and refracts photons, max_trace_level Mtl (default 5);
 // case 4: case 3 with a shadowless light added (it shoots no photons);
-// case 5: case 3 with a plain light added (it does).
+// case 5: case 3 with a plain light added (it does); case 6: a mirror
+// mesh with a texture per triangle, which reflects photons to the
+// floor (the tracer reports such a mesh's hits by per-texture copies,
+// which are the same target).
 #version 3.7;
 #ifndef (Case) #declare Case = 1; #end
 #ifndef (Mtl) #declare Mtl = 5; #end
 global_settings { assumed_gamma 1.0 max_trace_level Mtl
   photons { spacing #if (Case <= 2) 0.02 #else 0.01 #end } }
-#if (Case <= 2)
+#if (Case = 6)
+camera { location <0, 5, -10> look_at 0 }
+light_source { <-300, 400, 200> rgb 1 }
+plane { y, 0 pigment { rgb 1 } }
+#declare Mirror = texture { pigment { rgb 0.5 } finish { reflection 0.8 } }
+mesh {
+  triangle { <1, 0.2, -1>, <1, 0.2, 1>, <1, 2, 1> texture { Mirror } }
+  triangle { <1, 0.2, -1>, <1, 2, 1>, <1, 2, -1> texture { Mirror } }
+  photons { target reflection on collect off }
+}
+#elseif (Case <= 2)
 camera { orthographic location <0, 10, 0> look_at 0 right 8 * x up 6 * z }
 light_source { <0, 100, 0> rgb 0.4 }
 plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }

@@ -179,6 +179,18 @@ static bool photon_hit(const shooter *sh, const zr_ray *ray, zr_hit *hit) {
   return false;
 }
 
+/* Whether a hit on object o is a hit on the target being shot at: o is
+   the target, a part of it (CSG), or one of the copies a mesh with
+   per-triangle textures reports its hits by (they share its list). */
+static bool is_shot_target(const shooter *sh, const zr_object *o) {
+  const zr_object *h = o->solid ? o->solid : o;
+  const zr_object *t = sh->target;
+  if (h == t)
+    return true;
+  return h->kind == ZR_OBJ_MESH && t->kind == ZR_OBJ_MESH &&
+         h->u.mesh.textured && h->u.mesh.textured == t->u.mesh.textured;
+}
+
 /*
  * Follows one photon from origin along unit dir.  power is what it
  * carries per unit of flux (the light's colour times the filters met so
@@ -214,7 +226,7 @@ static void follow(shooter *sh, zr_vec3 origin, zr_vec3 dir, zr_rgb power,
        its own lattice's or the light source's.  povray 3.7 does so: two
        overlapping clear slabs, each a target, light the floor under
        their overlap as one slab does, not twice (bench/photon_targets.sh). */
-    if (!bounced && (o->solid ? o->solid : o) != sh->target)
+    if (!bounced && !is_shot_target(sh, o))
       return;
     if (bounced && (!po || po->collect)) {
       double area = parallel ? flux : flux * d_total * d_total;
