@@ -313,13 +313,9 @@ static void follow(shooter *sh, zr_vec3 origin, zr_vec3 dir, zr_rgb power,
 }
 
 /* The sphere about a target primitive's box; false when unbounded. */
-static bool target_box(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi) {
-  return zr__object_bounds(o, lo, hi);
-}
-
 static bool target_sphere(const zr_object *o, zr_vec3 *c, double *r) {
   zr_vec3 lo, hi;
-  if (!target_box(o, &lo, &hi))
+  if (!zr__object_bounds(o, &lo, &hi))
     return false;
   *c = zr_v3_scale(zr_v3_add(lo, hi), 0.5);
   *r = 0.5 * zr_v3_len(zr_v3_sub(hi, lo));
@@ -691,7 +687,7 @@ zr_status zr__photons_build(zr_scene *scene, zr_context *ctx) {
       zr_vec3 c;
       double r;
       if (!is_target(o) || !target_sphere(o, &c, &r) ||
-          !target_box(o, &sh.target_lo, &sh.target_hi))
+          !zr__object_bounds(o, &sh.target_lo, &sh.target_hi))
         continue;
       sh.target = o;
       shoot_pair(&sh, (uint32_t)li, (uint32_t)ti, c, r,
