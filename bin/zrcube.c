@@ -1377,6 +1377,10 @@ static void print_statistics(run *r) {
           rule, "Shadow Ray Tests:", (unsigned long long)st->shadow_rays,
           "Reflected Rays:", (unsigned long long)st->reflected_rays,
           "Refracted Rays:", (unsigned long long)st->refracted_rays, rule);
+  if (info.photons_shot > 0)
+    fprintf(out, "%-26s%12llu\n%-26s%12llu\n%s\n",
+            "Number of photons shot:", info.photons_shot,
+            "Surface photons stored:", info.photons_stored, rule);
   fprintf(out, "Render Time:\n");
   if (r->gi_method == ZR_GI_HIERARCHICAL || r->gi_method == ZR_GI_CACHE)
     print_time(out, "Radiosity Time:", r->radiosity_seconds + r->gi_seconds);

@@ -414,6 +414,11 @@ typedef struct zr_scene_info {
   /* Steps the parse took against the work budget
      (zr_context_set_work_limit). */
   unsigned long long parse_steps;
+  /* global_settings { photons { } }: the photons shot at the targets
+     (the rays traced from the lights) and those stored where they
+     landed, as povray +V counts them ("Number of photons shot",
+     "Surface photons stored"); 0 without photons. */
+  unsigned long long photons_shot, photons_stored;
 } zr_scene_info;
 
 ZR_API void zr_scene_get_info(const zr_scene *scene, zr_scene_info *info);

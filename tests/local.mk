@@ -301,3 +301,9 @@ EXTRA_DIST += tests/test_irid_turbulence.sh tests/irid_turbulence.pov \
 # turbulence, povray's values.
 TESTS += tests/test_normal_warped.sh
 EXTRA_DIST += tests/test_normal_warped.sh tests/normal_warped.pov
+
+# Which photons a target's lattice brings: overlapping targets, the
+# photon trace level, shadowless lights; povray's counts and pixels.
+TESTS += tests/test_photon_targets.sh
+EXTRA_DIST += tests/test_photon_targets.sh tests/photon_targets.pov \
+	bench/photon_targets.sh

@@ -187,6 +187,8 @@ ZR_API void zr_scene_get_info(const zr_scene *scene, zr_scene_info *info) {
   info->parse_steps = scene->parse_steps;
   info->has_camera = scene->camera.given;
   info->has_radiosity = scene->settings.radiosity.on;
+  info->photons_shot = scene->photons_shot;
+  info->photons_stored = scene->photons_stored;
   info->finite_primitives = scene->n_finite_primitives;
   info->infinite_primitives = scene->n_primitives - scene->n_finite_primitives;
 }

@@ -1105,6 +1105,9 @@ struct zr_scene {
      the routine that frees them (lib/trace/photons.c, set with them). */
   struct zr_photon_map *photons;
   void (*photons_free)(struct zr_photon_map *photons);
+  /* What the photon pass did (zr_scene_info): photons shot from the
+     lights and photons stored (lib/trace/photons.c). */
+  unsigned long long photons_shot, photons_stored;
   /* The meshes' Embree scenes when the tracer uses that backend (NULL:
      none), and the routine that frees them (lib/trace/embree.c). */
   struct zr_embree *embree;

@@ -14,6 +14,11 @@
  * sunflower lattice of the sphere's disc, one per spacing^2.  jitter
  * moves each direction or point by up to jitter cells, from a hash of
  * light, target and index, so the photons are the same in every run.
+ * A lattice ray that misses the target's box is not traced, and a
+ * photon whose first surface (pass_through ones aside) is not the
+ * target's is dropped: each target's lattice brings the light that meets
+ * it first, as povray 3.7's counts and pictures show for overlapping
+ * targets (bench/photon_targets.sh).  Shadowless lights shoot none.
  * With count instead of spacing, one spacing for all targets is chosen
  * so that the lattices hold about count photons together.
  *
@@ -39,7 +44,8 @@
  * A photon is stored where it lands on a collecting object once it has
  * been reflected or refracted: the light that arrives straight from a
  * light is the light sources' business.  Its path ends after the
- * photons' max_trace_level (the scene's by default) or when its
+ * photons' max_trace_level (the scene's by default; the ray from the
+ * light is the first level) or when its
  * strength falls below adc_bailout.  Photon rays do not see no_image
  * objects (povray 3.7 shows neither a caustic nor a photon shadow
  * behind a no_image target lens).
@@ -109,8 +115,14 @@ typedef struct shooter {
   zr_tracer tracer;
   zr_render_stats stats;
   const zr_light *light;
+  /* The primitive being shot at, and its box: a photon whose first
+     surface (pass_through ones aside) is not this target's is dropped,
+     and a lattice ray that misses the box is not traced at all. */
+  const zr_object *target;
+  zr_vec3 target_lo, target_hi;
   int max_level;
   double bailout;
+  unsigned long long shot; /* photons that left a light */
   bool full; /* PHOTONS_MAX reached */
   bool oom;
 } shooter;
@@ -167,6 +179,18 @@ static bool photon_hit(const shooter *sh, const zr_ray *ray, zr_hit *hit) {
   return false;
 }
 
+/* Whether a hit on object o is a hit on the target being shot at: o is
+   the target, a part of it (CSG), or one of the copies a mesh with
+   per-triangle textures reports its hits by (they share its list). */
+static bool is_shot_target(const shooter *sh, const zr_object *o) {
+  const zr_object *h = o->solid ? o->solid : o;
+  const zr_object *t = sh->target;
+  if (h == t)
+    return true;
+  return h->kind == ZR_OBJ_MESH && t->kind == ZR_OBJ_MESH &&
+         h->u.mesh.textured && h->u.mesh.textured == t->u.mesh.textured;
+}
+
 /*
  * Follows one photon from origin along unit dir.  power is what it
  * carries per unit of flux (the light's colour times the filters met so
@@ -196,6 +220,14 @@ static void follow(shooter *sh, zr_vec3 origin, zr_vec3 dir, zr_rgb power,
       path = d_total;
       continue;
     }
+    /* Each target's lattice brings the light that meets that target
+       first: a photon shot at one target that meets another (or any
+       other surface) first is dropped, since that surface's light is
+       its own lattice's or the light source's.  povray 3.7 does so: two
+       overlapping clear slabs, each a target, light the floor under
+       their overlap as one slab does, not twice (bench/photon_targets.sh). */
+    if (!bounced && !is_shot_target(sh, o))
+      return;
     if (bounced && (!po || po->collect)) {
       double area = parallel ? flux : flux * d_total * d_total;
       double k = area * zr__light_fade(light, d_total);
@@ -203,7 +235,11 @@ static void follow(shooter *sh, zr_vec3 origin, zr_vec3 dir, zr_rgb power,
       if (sh->full || sh->oom)
         return;
     }
-    if (!po || level >= sh->max_level)
+    /* The ray from the light is the first level, as for a camera ray:
+       povray 3.7 stores as many photons behind a glass ball at
+       max_trace_level n + 1 as a count from this hit as level 0 gives
+       at n (bench/photon_targets.sh). */
+    if (!po || level + 1 >= sh->max_level)
       return;
     bool refracts = po->refraction && light->photon_refraction;
     bool reflects = po->reflection && light->photon_reflection;
@@ -286,8 +322,44 @@ static bool target_sphere(const zr_object *o, zr_vec3 *c, double *r) {
   return isfinite(*r) && *r > 0.0;
 }
 
+/* Whether the ray from origin along dir meets the target's box (slab
+   test; a photon that misses it cannot meet the target first). */
+static bool meets_target_box(const shooter *sh, zr_vec3 origin,
+                             zr_vec3 dir) {
+  const double o[3] = {origin.x, origin.y, origin.z};
+  const double d[3] = {dir.x, dir.y, dir.z};
+  const double lo[3] = {sh->target_lo.x, sh->target_lo.y, sh->target_lo.z};
+  const double hi[3] = {sh->target_hi.x, sh->target_hi.y, sh->target_hi.z};
+  double t0 = 0.0, t1 = INFINITY;
+  for (int a = 0; a < 3; a++) {
+    if (d[a] == 0.0) {
+      if (o[a] < lo[a] || o[a] > hi[a])
+        return false;
+      continue;
+    }
+    double inv = 1.0 / d[a];
+    double ta = (lo[a] - o[a]) * inv, tb = (hi[a] - o[a]) * inv;
+    if (ta > tb) {
+      double t = ta;
+      ta = tb;
+      tb = t;
+    }
+    /* A little slack: the box is the bound, not the surface. */
+    double slack = 1e-9 * (fabs(ta) + fabs(tb) + 1.0);
+    t0 = fmax(t0, ta - slack);
+    t1 = fmin(t1, tb + slack);
+    if (t0 > t1)
+      return false;
+  }
+  return true;
+}
+
+/* Whether the light shoots photons.  A shadowless light does not: povray
+   3.7 shoots no more photons at a target lens with a shadowless light
+   added than without it, and twice as many with a plain one
+   (bench/photon_targets.sh). */
 static bool shoots(const zr_light *l) {
-  return l->photon_refraction || l->photon_reflection;
+  return (l->photon_refraction || l->photon_reflection) && !l->shadowless;
 }
 
 static bool is_target(const zr_object *o) {
@@ -343,8 +415,10 @@ static void shoot_pair(shooter *sh, uint32_t li, uint32_t ti, zr_vec3 c,
       double cone = zr__light_cone(l, q);
       if (!(cone > 0.0))
         continue;
-      follow(sh, origin, w, zr_rgb_scale(colour, cone), cell, true, 0.0,
-             false, 0, NULL);
+      sh->shot++;
+      if (meets_target_box(sh, origin, w))
+        follow(sh, origin, w, zr_rgb_scale(colour, cone), cell, true, 0.0,
+               false, 0, NULL);
     }
     return;
   }
@@ -376,8 +450,10 @@ static void shoot_pair(shooter *sh, uint32_t li, uint32_t ti, zr_vec3 c,
     double cone = zr__light_cone(l, zr_v3_add(l->location, dir));
     if (!(cone > 0.0))
       continue;
-    follow(sh, l->location, dir, zr_rgb_scale(colour, cone), omega, false,
-           0.0, false, 0, NULL);
+    sh->shot++;
+    if (meets_target_box(sh, l->location, dir))
+      follow(sh, l->location, dir, zr_rgb_scale(colour, cone), omega,
+             false, 0.0, false, 0, NULL);
   }
 }
 
@@ -610,12 +686,16 @@ zr_status zr__photons_build(zr_scene *scene, zr_context *ctx) {
       const zr_object *o = scene->primitives[ti];
       zr_vec3 c;
       double r;
-      if (!is_target(o) || !target_sphere(o, &c, &r))
+      if (!is_target(o) || !target_sphere(o, &c, &r) ||
+          !zr__object_bounds(o, &sh.target_lo, &sh.target_hi))
         continue;
+      sh.target = o;
       shoot_pair(&sh, (uint32_t)li, (uint32_t)ti, c, r,
                  spacing * o->photons->spacing);
     }
   }
+  scene->photons_shot = sh.shot;
+  scene->photons_stored = m->n;
   if (sh.oom) {
     free(m->v);
     free(m);
