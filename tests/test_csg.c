@@ -298,6 +298,47 @@ static void test_csg_quadric_cylinder_and_paraboloid(void **state) {
   assert_near(h[1].t, 7.0, EPS);
 }
 
+/* How many of the scene's primitives hold p. */
+static int holders(const zr_scene *s, zr_vec3 p) {
+  int n = 0;
+  for (size_t i = 0; i < s->n_primitives; i++)
+    n += zr__inside(s->primitives[i], p);
+  return n;
+}
+
+/* The second and later transformations of an object change the
+   transforms its first one made in place (lib/sdl/build.c,
+   compose_object); a copy that shares a transform, the declared object
+   and a bound its clip was copied from never see it. */
+static void test_csg_transforms_in_place_stay_private(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(
+      f, "#declare U = union { sphere { 0, 0.5 translate x }\n"
+         "  box { -0.5, 0.5 } }\n"
+         "object { U translate y translate y }\n"
+         "#declare V = object { U translate 3 * z }\n"
+         "object { V translate z translate z }\n"
+         "object { V }\n"
+         "object { U }\n");
+  assert_int_equal(s->n_primitives, 8);
+  assert_int_equal(holders(s, zr_v3(1, 2, 0)), 1);
+  assert_int_equal(holders(s, zr_v3(0, 2, 0)), 1);
+  assert_int_equal(holders(s, zr_v3(1, 0, 5)), 1);
+  assert_int_equal(holders(s, zr_v3(0, 0, 5)), 1);
+  assert_int_equal(holders(s, zr_v3(1, 0, 3)), 1);
+  assert_int_equal(holders(s, zr_v3(0, 0, 3)), 1);
+  assert_int_equal(holders(s, zr_v3(1, 0, 0)), 1);
+  assert_int_equal(holders(s, zr_v3(0, 0, 0)), 1);
+  /* clipped_by { bounded_by } copies the bound, which shares its
+     transform with the clip until each gets its own. */
+  const zr_object *o =
+      only(f, "sphere { 0, 1 bounded_by { box { -0.5, 0.5 } }\n"
+              "  translate 3 * x clipped_by { bounded_by }\n"
+              "  translate 3 * x translate 3 * x }\n");
+  assert_true(zr__inside(o, zr_v3(9.25, 0, 0)));
+  assert_false(zr__inside(o, zr_v3(9.75, 0, 0)));
+}
+
 static void test_csg_clipped_by_keeps_the_inside_part(void **state) {
   fixture *f = *state;
   const zr_object *o =
@@ -533,6 +574,7 @@ int main(void) {
       TEST(test_csg_merge_drops_inner_surfaces),
       TEST(test_csg_inverse_follows_de_morgan),
       TEST(test_csg_transforms_and_textures_reach_children),
+      TEST(test_csg_transforms_in_place_stay_private),
       TEST(test_csg_bounds_of_intersection),
       TEST(test_csg_bounds_of_planes_and_quadrics),
       TEST(test_csg_bounded_by_boxes_unboundable_parts),

@@ -358,6 +358,53 @@ static void test_media_scattering_lights_the_media(void **state) {
   assert_near(v, BACK, EPS);
 }
 
+/* A 20 x 20 render of the scene, all pixels. */
+static void render_all(fixture *f, const char *text, float *rgb) {
+  zr_scene *s = good(f, text);
+  zr_render_params p;
+  zr_render_params_init(&p);
+  p.width = 20;
+  p.height = 20;
+  uint32_t index[400];
+  for (uint32_t i = 0; i < 400; i++)
+    index[i] = i;
+  assert_int_equal(zr_render_pixels(s, &p, index, 400, NULL, rgb, NULL),
+                   ZR_OK);
+}
+
+/* A media sample asks only the point lights and the beams of its piece
+   of the ray when there are at most 64 lights (lib/trace/media.c,
+   sample_at), and every light otherwise: 65 more lights that light no
+   media take the second path, which must give the same bytes. */
+static void test_media_beams_path_matches_all_lights(void **state) {
+  fixture *f = *state;
+  const char *lights =
+      "light_source { <0, 3, 0> rgb <1, 0.5, 0.2> spotlight point_at 0\n"
+      "  radius 10 falloff 15 }\n"
+      "light_source { <-2, 0, -2> 0.7 }\n"
+      "light_source { <3, 0, 0> rgb <0.2, 1, 0.5> spotlight\n"
+      "  point_at <0, 0.3, 0> radius 5 falloff 8 }\n"
+      "light_source { <0, -3, 0> 1 cylinder point_at 0 radius 0.3\n"
+      "  falloff 0.5 }\n"
+      "box { <-1,-1,-1>, <1,1,1> pigment { rgbt 1 } hollow no_shadow\n"
+      "  interior { media { scattering { 1, 0.1 extinction 0 }\n"
+      "  method 3 intervals 2 } } }\n";
+  char few[2048], many[2048];
+  snprintf(few, sizeof few, "%s%s", SCENE_HEAD, lights);
+  snprintf(many, sizeof many, "%s%s#for (i, 1, 65)\n"
+           "  light_source { <i, 9, -9> 0.1 media_interaction off }\n"
+           "#end\n", SCENE_HEAD, lights);
+  float a[3 * 400], b[3 * 400];
+  render_all(f, few, a);
+  render_all(f, many, b);
+  double lit = 0.0;
+  for (int i = 0; i < 3 * 400; i++) {
+    assert_true(a[i] == b[i]);
+    lit = fmax(lit, a[i] - BACK);
+  }
+  assert_true(lit > 0.05); /* the media are lit */
+}
+
 static void test_media_deterministic_jitter(void **state) {
   fixture *f = *state;
   const char *text = SCENE_HEAD
@@ -501,6 +548,8 @@ int main(void) {
       cmocka_unit_test_setup_teardown(test_media_identifiers_and_transforms,
                                       setup, teardown),
       cmocka_unit_test(test_media_df3_voxels),
+      cmocka_unit_test_setup_teardown(
+          test_media_beams_path_matches_all_lights, setup, teardown),
       cmocka_unit_test_setup_teardown(test_media_bad_input, setup,
                                       teardown),
   };

@@ -566,6 +566,10 @@ struct zr_object {
   /* uv_mapping as an object modifier: the textures given after it use
      the surface's (u, v) and no longer move with the object. */
   bool uv_mapping;
+  /* While parsing: transform was composed for this object alone (no copy
+     of the object shares it), so the next transformation may change it
+     in place (lib/sdl/build.c, transform_object).  Unused after. */
+  bool own_transform;
   /* clipped_by: only the surface inside this object remains (an
      intersection of the clipping objects); NULL when not clipped. */
   const zr_object *clip;

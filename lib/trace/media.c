@@ -147,6 +147,10 @@ typedef struct march {
      false when the ray was not cut at every beam (then all are asked). */
   bool beams_known;
   uint64_t beams;
+  /* With beams_known: the point lights that light media (bit i: light
+     i), so that a sample asks these and the piece's beams, not all the
+     scene's lights (media2: 37 spotlights, a few of them per piece). */
+  uint64_t points;
   bool varies;   /* the coefficients may change along the ray */
   uint64_t seed;
   uint64_t draws;
@@ -235,6 +239,33 @@ static bool lights_media(const zr_light *light, double s) {
   return light->kind == ZR_LIGHT_POINT || s <= BEAM_REACH;
 }
 
+/* The light that light scatters towards the ray's origin at p (distance
+   s), added to out->j; density[i] is medium i's at p. */
+static void scatter_light(const march *m, const zr_light *light, double s,
+                          zr_vec3 p, const zr_rgb *density, sample *out) {
+  if (!lights_media(light, s))
+    return;
+  zr_vec3 toward;
+  zr_rgb arriving;
+  if (!zr__light_arrive(light, p, &toward, &arriving) ||
+      rgb_max(arriving) <= 0.0)
+    return;
+  arriving = zr_rgb_mul(arriving, zr__light_visibility(m->tr, light, p, p));
+  if (rgb_max(arriving) <= 0.0)
+    return;
+  arriving =
+      zr_rgb_mul(arriving, zr__media_light_attenuation(m->tr, light, p));
+  double c = zr_v3_dot(toward, m->dir);
+  for (size_t i = 0; i < m->n; i++) {
+    const zr_medium *md = m->list[i];
+    if (rgb_zero(md->scattering))
+      continue;
+    zr_rgb sc = zr_rgb_mul(density[i], md->scattering);
+    out->j = zr_rgb_add(out->j, zr_rgb_scale(zr_rgb_mul(sc, arriving),
+                                             zr__media_phase(md, c)));
+  }
+}
+
 static sample sample_at(const march *m, double s) {
   sample out = {s, zr_rgb3(0, 0, 0), zr_rgb3(0, 0, 0)};
   zr_vec3 p = zr_v3_madd(m->origin, m->dir, s);
@@ -253,35 +284,17 @@ static sample sample_at(const march *m, double s) {
   if (!scatters || !m->lights)
     return out;
   const zr_scene *scene = m->tr->scene;
-  for (size_t li = 0; li < scene->n_lights; li++) {
-    const zr_light *light = &scene->lights[li];
-    if (!lights_media(light, s))
-      continue;
+  if (m->beams_known) {
     /* A beam lights all of a piece or none of it (the pieces are cut
-       where the ray crosses its boundary). */
-    if (light->kind != ZR_LIGHT_POINT && m->beams_known &&
-        !(m->beams >> li & 1u))
-      continue;
-    zr_vec3 toward;
-    zr_rgb arriving;
-    if (!zr__light_arrive(light, p, &toward, &arriving) ||
-        rgb_max(arriving) <= 0.0)
-      continue;
-    arriving = zr_rgb_mul(arriving, zr__light_visibility(m->tr, light, p, p));
-    if (rgb_max(arriving) <= 0.0)
-      continue;
-    arriving =
-        zr_rgb_mul(arriving, zr__media_light_attenuation(m->tr, light, p));
-    double c = zr_v3_dot(toward, m->dir);
-    for (size_t i = 0; i < m->n; i++) {
-      const zr_medium *md = m->list[i];
-      if (rgb_zero(md->scattering))
-        continue;
-      zr_rgb sc = zr_rgb_mul(density[i], md->scattering);
-      out.j = zr_rgb_add(out.j, zr_rgb_scale(zr_rgb_mul(sc, arriving),
-                                             zr__media_phase(md, c)));
-    }
+       where the ray crosses its boundary): the piece's beams and the
+       point lights, in the scene's order as below. */
+    for (uint64_t todo = m->points | m->beams; todo; todo &= todo - 1)
+      scatter_light(m, &scene->lights[__builtin_ctzll(todo)], s, p,
+                    density, &out);
+    return out;
   }
+  for (size_t li = 0; li < scene->n_lights; li++)
+    scatter_light(m, &scene->lights[li], s, p, density, &out);
   return out;
 }
 
@@ -656,6 +669,12 @@ static int pieces(march *m, double depth, double *ends, bool *lit,
   /* Every cut was kept (none fell off the end of ends) and every light
      fits in a mask: the masks can be trusted. */
   m->beams_known = n < MAX_PIECES - 1 && scene->n_lights <= 64;
+  m->points = 0;
+  if (m->beams_known)
+    for (size_t i = 0; i < scene->n_lights; i++)
+      if (scene->lights[i].kind == ZR_LIGHT_POINT &&
+          lights_media(&scene->lights[i], 0.0))
+        m->points |= (uint64_t)1 << i;
   ends[n++] = depth;
   qsort(ends, (size_t)n, sizeof ends[0], by_value);
   int k = 1;

@@ -164,6 +164,23 @@ static void lift(const struct zr_julia *j, zr_vec3 p, julia_state *s,
   }
 }
 
+/* Quaternion q -> q^2 or q^3 (see the top), vv being |v|^2 of q =
+   (x, v) as the caller has it. */
+static inline void quaternion_power(const double q[4], double vv,
+                                    int power, double out[4]) {
+  double x = q[0];
+  if (power == 2) {
+    out[0] = x * x - vv;
+    for (int m = 1; m < 4; m++)
+      out[m] = 2.0 * x * q[m];
+  } else {
+    double s = 3.0 * x * x - vv;
+    out[0] = x * (x * x - 3.0 * vv);
+    for (int m = 1; m < 4; m++)
+      out[m] = s * q[m];
+  }
+}
+
 /* Quaternion q -> q^2 or q^3, with the derivative columns d mapped by
    the differential at q. */
 static void quaternion_step(const double q[4], int power, double out[4],
@@ -189,16 +206,7 @@ static void quaternion_step(const double q[4], int power, double out[4],
     for (int m = 1; m < 4; m++)
       d[k][m] = sv * q[m] + sb * d[k][m];
   }
-  if (power == 2) {
-    out[0] = x * x - vv;
-    for (int m = 1; m < 4; m++)
-      out[m] = 2.0 * x * q[m];
-  } else {
-    double s = 3.0 * x * x - vv;
-    out[0] = x * (x * x - 3.0 * vv);
-    for (int m = 1; m < 4; m++)
-      out[m] = s * q[m];
-  }
+  quaternion_power(q, vv, power, out);
 }
 
 /*
@@ -490,17 +498,7 @@ static int orbit_escape(const struct zr_julia *j, double h[4],
       return i;
     double next[4], growth2 = n2;
     if (quaternion) {
-      double x = h[0], vv = n2 - x * x;
-      if (power == 2) {
-        next[0] = x * x - vv;
-        for (int m = 1; m < 4; m++)
-          next[m] = 2.0 * x * h[m];
-      } else {
-        double s = 3.0 * x * x - vv;
-        next[0] = x * (x * x - 3.0 * vv);
-        for (int m = 1; m < 4; m++)
-          next[m] = s * h[m];
-      }
+      quaternion_power(h, n2 - h[0] * h[0], power, next);
     } else if (polynomial) {
       bicomplex_power(h, power, next, &growth2);
     } else {
