@@ -869,6 +869,10 @@ static zr_status link_tasks(zr_radiosity *rad, size_t n_pairs,
     st = make_plans(&w);
     for (size_t t = 0; st == ZR_OK && t < w.count; t++)
       st = replay(rad, &plans[t]);
+    /* Ctrl-C, SIGTERM or a progress callback stop the linking between
+       batches (a team agrees on it below). */
+    if (st == ZR_OK)
+      st = zr__rad_progress(rad);
     st = replayed(rad, st);
   }
   free_plans(plans, batch);
@@ -937,6 +941,8 @@ zr_status zr__rad_refine_links(zr_radiosity *rad, size_t *changed) {
       (*changed)++;
       st = replay(rad, &plans[t]);
     }
+    if (st == ZR_OK)
+      st = zr__rad_progress(rad); /* a stop asked for, as in link_tasks */
     st = replayed(rad, st);
   }
   free_plans(plans, batch);
