@@ -286,3 +286,8 @@ TESTS += tests/test_media_cells.sh
 EXTRA_DIST += tests/test_media_cells.sh tests/media_cells.pov \
 	bench/media_quadrature.py \
 	bench/results/media-quadrature-2026-12-02.txt
+
+# A ray's way into or out of an object follows its path's objects, not
+# the surface's side (an upside-down clear height field), povray's pixels.
+TESTS += tests/test_hf_inside.sh
+EXTRA_DIST += tests/test_hf_inside.sh tests/hf_inside.pov
