@@ -291,3 +291,8 @@ EXTRA_DIST += tests/test_media_cells.sh tests/media_cells.pov \
 # the surface's side (an upside-down clear height field), povray's pixels.
 TESTS += tests/test_hf_inside.sh
 EXTRA_DIST += tests/test_hf_inside.sh tests/hf_inside.pov
+
+# A union of triangles with an interior refracts as a solid, povray's
+# pixels.
+TESTS += tests/test_flat_interior.sh
+EXTRA_DIST += tests/test_flat_interior.sh tests/flat_interior.pov
