@@ -307,3 +307,13 @@ EXTRA_DIST += tests/test_normal_warped.sh tests/normal_warped.pov
 TESTS += tests/test_photon_targets.sh
 EXTRA_DIST += tests/test_photon_targets.sh tests/photon_targets.pov \
 	bench/photon_targets.sh
+
+# A ray's way into or out of an object follows its path's objects, not
+# the surface's side (an upside-down clear height field), povray's pixels.
+TESTS += tests/test_hf_inside.sh
+EXTRA_DIST += tests/test_hf_inside.sh tests/hf_inside.pov
+
+# A union of triangles with an interior refracts as a solid, povray's
+# pixels.
+TESTS += tests/test_flat_interior.sh
+EXTRA_DIST += tests/test_flat_interior.sh tests/flat_interior.pov
