@@ -480,7 +480,8 @@ static int open_include(zr_sdl_parser *p, const char *name,
     }
     char *bytes = NULL;
     size_t size = 0;
-    zr_status s = zr__sdl_read_file(p, path, at, what, &bytes, &size);
+    zr_status s = zr__sdl_read_file(p, path, name[0] != '/', at, what,
+                                   &bytes, &size);
     if (s == ZR_ENOTFOUND) {
       free(path);
       continue;
@@ -510,11 +511,11 @@ static int open_include(zr_sdl_parser *p, const char *name,
 }
 
 zr_status zr__sdl_read_file(zr_sdl_parser *p, const char *path,
-                            const zr_sdl_loc *at, const char *what,
-                            char **bytes, size_t *size) {
+                            bool relative, const zr_sdl_loc *at,
+                            const char *what, char **bytes, size_t *size) {
   char why[1024];
-  zr_status s = zr__context_read_scene(p->ctx, path, p->scene_dir, bytes,
-                                       size, why, sizeof why);
+  zr_status s = zr__context_read_scene(p->ctx, path, p->scene_dir, relative,
+                                       bytes, size, why, sizeof why);
   if (s == ZR_OK || s == ZR_ENOTFOUND)
     return s;
   if (why[0])
@@ -584,7 +585,8 @@ bool zr__sdl_file_exists(zr_sdl_parser *p, const char *name) {
     size_t size = 0;
     char why[512];
     zr_status s = zr__context_read_scene(p->ctx, path, p->scene_dir,
-                                         &bytes, &size, why, sizeof why);
+                                         name[0] != '/', &bytes, &size, why,
+                                         sizeof why);
     free(path);
     free(bytes);
     if (s == ZR_OK)
