@@ -286,3 +286,8 @@ TESTS += tests/test_media_cells.sh
 EXTRA_DIST += tests/test_media_cells.sh tests/media_cells.pov \
 	bench/media_quadrature.py \
 	bench/results/media-quadrature-2026-12-02.txt
+
+# corpus (session 7): shared CSG faces, polygons off their plane, the
+# noise far out.
+EXTRA_DIST += tests/legacy/csg_shared_face.pov \
+	tests/legacy/polygon_offplane.pov bench/noise/probe_far.pov
