@@ -293,3 +293,4 @@ EXTRA_DIST += tests/legacy/csg_shared_face.pov \
 	tests/legacy/polygon_offplane.pov bench/noise/probe_far.pov
 TESTS += tests/test_no_bump_scale.sh
 EXTRA_DIST += tests/test_no_bump_scale.sh tests/no_bump_scale.pov
+EXTRA_DIST += tests/legacy/macro_arg_colour.pov

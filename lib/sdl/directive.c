@@ -749,10 +749,15 @@ static bool autoend_due(const zr_sdl_parser *p, int next) {
   if (!a->token || a->depth > 0 || !a->operand || closes_block(next))
     return false;
   /* A macro argument ends by itself only after a block, where nothing
-     can continue it; otherwise its ',' or ')' ends it. */
+     can continue it, or before 'color' after a complete value, which
+     starts the next argument: POV-Ray 3.7 runs t-o-k's
+     FitHeightLineToPoints.pov, "ShowLine2D(..., 0.02 color rgbt <...>)"
+     (tests/legacy/macro_arg_colour.pov); otherwise its ',' or ')' ends
+     it. */
   if (a->token == T_ARG_SEP)
-    return a->last == '}' && next != ',' && next != ')' && next != 0 &&
-           next != T_TEXTURE && !is_directive(next);
+    return (a->last == '}' || next == T_COLOUR) && next != ',' &&
+           next != ')' && next != 0 && next != T_TEXTURE &&
+           !is_directive(next);
   if (next == 0)
     return p->n_frames == 1;
   if (is_directive(next))
