@@ -342,9 +342,12 @@ static int set_io_restrictions(const arg_ctx *c, const char *value) {
     o->io_mode = ZR_IO_READ_ONLY;
   else if (!strcasecmp(value, "none") || !strcasecmp(value, "off"))
     o->io_mode = ZR_IO_NONE;
+  else if (!strcasecmp(value, "strict"))
+    o->io_mode = ZR_IO_STRICT;
   else
     return fail(c, "'%s': the I/O restrictions are 'restricted' (or "
-                   "'on'), 'read-only' or 'none' (or 'off')", c->what);
+                   "'on'), 'strict', 'read-only' or 'none' (or 'off')",
+                c->what);
   return 0;
 }
 
@@ -1976,10 +1979,13 @@ const char *zr__cli_usage(void) {
       "  --read-path=DIR              let scenes read below DIR too\n"
       "  --write-path=DIR             let scenes write below DIR too\n"
       "  --io-restrictions=MODE       restricted (default: scenes read\n"
-      "                               below their folder, the working\n"
-      "                               directory and the include paths and\n"
-      "                               write below the working directory),\n"
-      "                               read-only or none\n"
+      "                               what they name by relative names,\n"
+      "                               absolute names below their folder,\n"
+      "                               the working directory and the\n"
+      "                               include paths, and write below the\n"
+      "                               working directory), strict (relative\n"
+      "                               names confined too), read-only or\n"
+      "                               none\n"
       "  +D, -D, +P, -P               accepted and ignored (no display)\n"
       "  +K<c>, Clock=C               the clock of a still image\n"
       "  +KFF<n>, +KFI<n>             animate frames initial..final, each\n"

@@ -125,11 +125,24 @@ static zr_sdl_mod make_mod(zr_sdl_mod_kind kind, const void *ptr) {
   return m;
 }
 
-/* no_bump_scale ("Scaling normals"): read, not applied; bump depth
-   under scaling belongs to the normal perturbation's own rules. */
-static void no_bump_scale_warning(zr_sdl_parser *p, const zr_sdl_loc *loc) {
-  zr__sdl_warning(p, loc, "'no_bump_scale' is ignored: scaling changes "
-                          "the bumps' depth as it would without it");
+/* no_bump_scale ("Scaling normals") on a normal, or on the normal a
+   texture has so far (a copy, so a declared normal keeps its depth
+   elsewhere; a texture without a normal has no depth to keep). */
+static void no_bump_scale_normal(zr_normal *nm) { nm->no_bump_scale = true; }
+
+static bool no_bump_scale_texture(zr_sdl_parser *p, zr_texture *tx) {
+  zr_texture *top = zr__sdl_texture_top(p, tx);
+  if (!top)
+    return false;
+  if (!top->normal)
+    return true;
+  zr_normal *copy = zr__sdl_alloc(p, sizeof *copy);
+  if (!copy)
+    return false;
+  *copy = *top->normal;
+  copy->no_bump_scale = true;
+  top->normal = copy;
+  return true;
 }
 
 /* normal { facets [coords F | size F] } ("Facets"): read, not rendered;
@@ -2836,7 +2849,7 @@ normal_start:
 normal_body:
   normal_start
 | normal_body T_NO_BUMP_SCALE
-    { no_bump_scale_warning(p, &@2); $$ = $1; }
+    { no_bump_scale_normal($1); $$ = $1; }
 | normal_body T_FACETS
     { facets_warning(p, &@2); $$ = $1; }
 | normal_body T_COORDS expr
@@ -3412,7 +3425,7 @@ texture_body:
 | texture_body transform
     { TRY(zr__sdl_texture_move(p, &p->own_body, NULL, $1, $2)); $$ = $1; }
 | texture_body T_NO_BUMP_SCALE
-    { no_bump_scale_warning(p, &@2); $$ = $1; }
+    { TRY(no_bump_scale_texture(p, $1)); $$ = $1; }
 ;
 
 interior:

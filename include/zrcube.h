@@ -225,11 +225,16 @@ ZR_API void zr_context_set_loop_limit(zr_context *ctx,
  * bump_map, material_map and height_field images, density_file, text
  * fonts, file_exists()), after POV-Ray's [File I/O Security] settings
  * of the same names:
- *   ZR_IO_RESTRICTED (the default): a scene reads only files below the
- *     main scene file's folder, the working directory, the include
- *     paths, POV-Ray's include folder and the folders added with
+ *   ZR_IO_RESTRICTED (the default): a scene reads any file it names by
+ *     a relative name, found from the folder of the file naming it or
+ *     from an include path ("../x.inc" too), as POV-Ray 3.7 does; a
+ *     name that starts with '/' only below the main scene file's
+ *     folder, the working directory, the include paths, POV-Ray's
+ *     include folder and the folders added with
  *     zr_context_add_read_path() or zr_context_add_write_path(); it
  *     writes only below the working directory and the write paths;
+ *   ZR_IO_STRICT: relative names are confined to those folders too
+ *     (the earlier default), writes as above;
  *   ZR_IO_READ_ONLY: reads anywhere, writes as above;
  *   ZR_IO_NONE: no folder is checked.
  * A path is judged after its symbolic links are resolved, and the file
@@ -247,7 +252,8 @@ ZR_API void zr_context_set_loop_limit(zr_context *ctx,
 typedef enum zr_io_restrictions {
   ZR_IO_RESTRICTED = 0,
   ZR_IO_READ_ONLY = 1,
-  ZR_IO_NONE = 2
+  ZR_IO_NONE = 2,
+  ZR_IO_STRICT = 3
 } zr_io_restrictions;
 
 /* ZR_EINVAL for a value outside the enumeration. */

@@ -317,3 +317,11 @@ EXTRA_DIST += tests/test_hf_inside.sh tests/hf_inside.pov
 # pixels.
 TESTS += tests/test_flat_interior.sh
 EXTRA_DIST += tests/test_flat_interior.sh tests/flat_interior.pov
+
+# corpus (session 7): shared CSG faces, polygons off their plane, the
+# noise far out.
+EXTRA_DIST += tests/legacy/csg_shared_face.pov \
+	tests/legacy/polygon_offplane.pov bench/noise/probe_far.pov
+TESTS += tests/test_no_bump_scale.sh
+EXTRA_DIST += tests/test_no_bump_scale.sh tests/no_bump_scale.pov
+EXTRA_DIST += tests/legacy/macro_arg_colour.pov

@@ -475,9 +475,12 @@ static void test_cli_options_io_restrictions(void **state) {
                          "--io-restrictions=on"), 0);
   assert_int_equal(o.io_mode, ZR_IO_RESTRICTED);
   zr__cli_free(&o);
+  assert_int_equal(PARSE(&o, err, "s.pov", "IO_Restrictions=Strict"), 0);
+  assert_int_equal(o.io_mode, ZR_IO_STRICT);
+  zr__cli_free(&o);
   EXPECT_ERROR("zrcube: '--io-restrictions=maybe': the I/O restrictions "
-               "are 'restricted' (or 'on'), 'read-only' or 'none' (or "
-               "'off')", "s.pov", "--io-restrictions=maybe");
+               "are 'restricted' (or 'on'), 'strict', 'read-only' or "
+               "'none' (or 'off')", "s.pov", "--io-restrictions=maybe");
   EXPECT_ERROR("zrcube: '--read-path=' needs a directory", "s.pov",
                "--read-path=");
 }

@@ -216,8 +216,8 @@ static void test_iopolicy_read_not_regular(void **state) {
   /* Refused whatever the setting, without blocking on the FIFO. */
   assert_int_equal(mkfifo(at(fx, "scene/fifo"), 0666), 0);
   zr_io_restrictions modes[] = {ZR_IO_RESTRICTED, ZR_IO_READ_ONLY,
-                                ZR_IO_NONE};
-  for (size_t i = 0; i < 3; i++) {
+                                ZR_IO_NONE, ZR_IO_STRICT};
+  for (size_t i = 0; i < 4; i++) {
     assert_int_equal(zr_context_set_io_restrictions(fx->ctx, modes[i]),
                      ZR_OK);
     assert_int_equal(check_read(fx, at(fx, "scene/fifo"), why, sizeof why),
@@ -228,8 +228,8 @@ static void test_iopolicy_read_not_regular(void **state) {
     assert_non_null(strstr(why, "' is a directory, not a regular file"));
     char *bytes = NULL;
     size_t size = 0;
-    assert_int_equal(zr__io_read_scene(fx->ctx, "/dev/zero", NULL, &bytes,
-                                       &size, why, sizeof why),
+    assert_int_equal(zr__io_read_scene(fx->ctx, "/dev/zero", NULL, false,
+                                       &bytes, &size, why, sizeof why),
                      ZR_EACCESS);
     assert_null(bytes);
     assert_string_equal(why, "'/dev/zero' is a character device, not a "
@@ -280,15 +280,15 @@ static void test_iopolicy_read_bytes(void **state) {
   char *bytes = NULL;
   size_t size = 0;
   assert_int_equal(zr__io_read_scene(fx->ctx, at(fx, "scene/a.inc"),
-                                     at(fx, "scene"), &bytes, &size, why,
-                                     sizeof why),
+                                     at(fx, "scene"), false, &bytes, &size,
+                                     why, sizeof why),
                    ZR_OK);
   assert_int_equal(size, 16);
   assert_string_equal(bytes, "#declare A = 1;\n");
   free(bytes);
   /* Not the scene's folder when the scene has none. */
   assert_int_equal(zr__io_read_scene(fx->ctx, at(fx, "scene/a.inc"), NULL,
-                                     &bytes, &size, why, sizeof why),
+                                     false, &bytes, &size, why, sizeof why),
                    ZR_EACCESS);
   /* A file the caller names: any folder, regular files only. */
   assert_int_equal(zr__io_read_named(at(fx, "outside/secret.txt"), &bytes,
@@ -433,7 +433,8 @@ static void test_iopolicy_observer(void **state) {
   size_t size = 0;
   const char *a = at(fx, "scene/a.inc");
   assert_int_equal(zr__context_read_scene(fx->ctx, a, at(fx, "scene"),
-                                          &bytes, &size, why, sizeof why),
+                                          false, &bytes, &size, why,
+                                          sizeof why),
                    ZR_OK);
   free(bytes);
   assert_int_equal(s.calls, 1);
@@ -442,8 +443,8 @@ static void test_iopolicy_observer(void **state) {
   /* Refused files are not read, so not observed. */
   assert_int_equal(zr__context_read_scene(fx->ctx,
                                           at(fx, "outside/secret.txt"),
-                                          at(fx, "scene"), &bytes, &size,
-                                          why, sizeof why),
+                                          at(fx, "scene"), false, &bytes,
+                                          &size, why, sizeof why),
                    ZR_EACCESS);
   assert_int_equal(s.calls, 1);
   s.answer = ZR_EIO;
@@ -452,10 +453,12 @@ static void test_iopolicy_observer(void **state) {
   assert_null(bytes);
 }
 
-/* A scene on disk: the refusal is located at the name and never shows
-   the file; file_exists() says no. */
+/* A scene on disk under "strict": the refusal is located at the name
+   and never shows the file; file_exists() says no. */
 static void test_iopolicy_scene_on_disk(void **state) {
   fixture *fx = *state;
+  assert_int_equal(zr_context_set_io_restrictions(fx->ctx, ZR_IO_STRICT),
+                   ZR_OK);
   assert_int_equal(symlink("../outside/secret.txt",
                            at(fx, "scene/secret.inc")), 0);
   put(at(fx, "scene/s.pov"),
@@ -484,6 +487,70 @@ static void test_iopolicy_scene_on_disk(void **state) {
   assert_non_null(strstr(fx->message, "seen"));
 }
 
+/* The default reads what a scene names by a relative name wherever it
+   leads ("../x.inc", as POV-Ray 3.7 does); strict does not; absolute
+   names and writes stay confined; devices stay refused. */
+static void test_iopolicy_relative_reads(void **state) {
+  fixture *fx = *state;
+  char why[1024];
+  char *bytes = NULL;
+  size_t size = 0;
+  /* The name the parser joined: the scene's folder and "../outside/..". */
+  const char *joined = at(fx, "scene/../outside/secret.txt");
+  assert_int_equal(zr__io_read_scene(fx->ctx, joined, at(fx, "scene"), true,
+                                     &bytes, &size, why, sizeof why),
+                   ZR_OK);
+  assert_string_equal(bytes, "secret-first-line\n");
+  free(bytes);
+  bytes = NULL;
+  assert_int_equal(zr__io_read_scene(fx->ctx, joined, at(fx, "scene"),
+                                     false, &bytes, &size, why, sizeof why),
+                   ZR_EACCESS);
+  assert_null(bytes);
+  assert_int_equal(zr__io_read_scene(fx->ctx, "/dev/zero", NULL, true,
+                                     &bytes, &size, why, sizeof why),
+                   ZR_EACCESS);
+  assert_int_equal(check_write(fx, at(fx, "outside/new.txt"), why,
+                               sizeof why),
+                   ZR_EACCESS);
+  assert_int_equal(zr_context_set_io_restrictions(fx->ctx, ZR_IO_STRICT),
+                   ZR_OK);
+  assert_int_equal(zr__io_read_scene(fx->ctx, joined, at(fx, "scene"), true,
+                                     &bytes, &size, why, sizeof why),
+                   ZR_EACCESS);
+  assert_null(bytes);
+  assert_non_null(strstr(why, "outside the folders a scene may read"));
+  /* Strict still reads the scene's folder. */
+  assert_int_equal(zr__io_read_scene(fx->ctx, at(fx, "scene/a.inc"),
+                                     at(fx, "scene"), true, &bytes, &size,
+                                     why, sizeof why),
+                   ZR_OK);
+  free(bytes);
+  /* A whole scene: "../outside" by a relative name is read under the
+     default, and the same file by its absolute name is refused. */
+  assert_int_equal(zr_context_set_io_restrictions(fx->ctx, ZR_IO_RESTRICTED),
+                   ZR_OK);
+  put(at(fx, "outside/o.inc"), "#declare O = 2;\n");
+  put(at(fx, "scene/r.pov"),
+      "#include \"../outside/o.inc\"\n"
+      "#if (O != 2) #error \"not read\" #end\n"
+      "#if (!file_exists(\"../outside/o.inc\")) #error \"no file\" #end\n");
+  zr_scene *scene = NULL;
+  assert_int_equal(zr_scene_parse_file(fx->ctx, at(fx, "scene/r.pov"),
+                                       &scene),
+                   ZR_OK);
+  zr_scene_free(scene);
+  char text[PATH_MAX + 64];
+  snprintf(text, sizeof text, "#include \"%s\"\n", at(fx, "outside/o.inc"));
+  put(at(fx, "scene/abs.pov"), text);
+  scene = NULL;
+  assert_int_equal(zr_scene_parse_file(fx->ctx, at(fx, "scene/abs.pov"),
+                                       &scene),
+                   ZR_EACCESS);
+  assert_null(scene);
+  assert_non_null(strstr(fx->message, "outside the folders a scene may read"));
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
 #define T(f) cmocka_unit_test_setup_teardown(f, setup, teardown)
@@ -498,6 +565,7 @@ int main(void) {
       T(test_iopolicy_output_target),
       T(test_iopolicy_observer),
       T(test_iopolicy_scene_on_disk),
+      T(test_iopolicy_relative_reads),
 #undef T
   };
   return cmocka_run_group_tests(tests, NULL, NULL);

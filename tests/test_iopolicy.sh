@@ -192,18 +192,21 @@ expect inc_proc "inc_proc.pov:1:10: error: cannot read include file: \
 '/proc/self/environ' leads to '/proc/"
 expect inc_proc "/environ', outside the folders a scene may read"
 
+# Under "strict", relative names are confined too (the default reads
+# them wherever they lead: see "relative names" below).
+STRICT=--io-restrictions=strict
 # A link in the scene's folder to a file outside: judged by its target,
 # and the target's first line is not shown.
 ln -s ../outside/secret.inc link.inc
 scene inc_link '#include "link.inc"'
-refused inc_link 1 "$ZRCUBE" inc_link.pov $SIZE -F
+refused inc_link 1 "$ZRCUBE" inc_link.pov $SIZE -F $STRICT
 expect inc_link "inc_link.pov:1:10: error: cannot read include file: \
 'link.inc' leads to '$top/outside/secret.inc', outside the folders a \
 scene may read"
 absent inc_link "secret-line-of-the-outside"
 
 scene inc_dotdot '#include "../outside/secret.inc"'
-refused inc_dotdot 1 "$ZRCUBE" inc_dotdot.pov $SIZE -F
+refused inc_dotdot 1 "$ZRCUBE" inc_dotdot.pov $SIZE -F $STRICT
 expect inc_dotdot "inc_dotdot.pov:1:10: error: cannot read include file:"
 absent inc_dotdot "secret-line-of-the-outside"
 
@@ -236,7 +239,7 @@ refused bump 1 "$ZRCUBE" bump.pov $SIZE -F
 expect bump "bump.pov:1:39: error: cannot read bump_map: '/etc/passwd' is \
 outside the folders a scene may read"
 scene hf 'height_field { png "../outside/secret.inc" }'
-refused hf 1 "$ZRCUBE" hf.pov $SIZE -F
+refused hf 1 "$ZRCUBE" hf.pov $SIZE -F $STRICT
 expect hf "hf.pov:1:16: error: cannot read height_field file: \
 '../outside/secret.inc' leads to '$top/outside/secret.inc', outside"
 scene ttf 'text { ttf "/etc/passwd" "a" 1, 0 }'
@@ -282,11 +285,11 @@ grep -q fine written.txt 2>/dev/null || fail "fwrite_ok: nothing written"
 # ---- widening and switching off ----------------------------------------
 
 # The include is read now: its text is an undefined name, not a refusal.
-run readpath 1 "$ZRCUBE" inc_link.pov $SIZE -F --read-path=../outside
+run readpath 1 "$ZRCUBE" inc_link.pov $SIZE -F $STRICT --read-path=../outside
 expect readpath "link.inc:1:1: error: undefined identifier"
 absent readpath "outside the folders"
 printf 'Read_Path=../outside\n' >wide.ini
-run readini 1 "$ZRCUBE" inc_link.pov wide.ini $SIZE -F
+run readini 1 "$ZRCUBE" inc_link.pov wide.ini $SIZE -F $STRICT
 expect readini "link.inc:1:1: error: undefined identifier"
 absent readini "outside the folders"
 scene inc_ok "#declare V = 1; #include \"$top/extra/ok.inc\" sphere { 0, V pigment { rgb 1 } }"
@@ -310,9 +313,41 @@ refused off_zero 1 "$ZRCUBE" inc_zero.pov $SIZE -F --io-restrictions=none
 expect off_zero "'/dev/zero' is a character device, not a regular file"
 refused badmode 2 "$ZRCUBE" scene.pov $SIZE --io-restrictions=maybe
 expect badmode "zrcube: '--io-restrictions=maybe': the I/O restrictions \
-are 'restricted' (or 'on'), 'read-only' or 'none' (or 'off')"
+are 'restricted' (or 'on'), 'strict', 'read-only' or 'none' (or 'off')"
 refused badpath 1 "$ZRCUBE" scene.pov $SIZE --read-path=no/such/dir
 expect badpath "zrcube: --read-path 'no/such/dir': no such directory"
+
+# ---- relative names -----------------------------------------------------
+
+# By default a scene reads what it names by a relative name wherever that
+# leads, as POV-Ray 3.7 reads "../matrices.inc" from t-o-k's MoreExamples
+# folder; the same file by its absolute name stays refused, and writes
+# stay confined (fwrite_out above).
+mkdir -p "$top/outside/sub" || exit 99
+echo '#declare R = 0.5;' >"$top/outside/r.inc"
+cat >"$top/outside/sub/rel.pov" <<'EOF2'
+#include "../r.inc"
+camera { location <0, 0, -3> look_at 0 }
+light_source { <2, 4, -3> rgb 1 }
+sphere { 0, R pigment { rgb 1 } }
+EOF2
+run rel_sub 0 "$ZRCUBE" "$top/outside/sub/rel.pov" $SIZE -F
+scene rel_dotdot '#include "../outside/r.inc"
+#if (!file_exists("../outside/r.inc")) #error "no file" #end
+sphere { 0, R pigment { rgb 1 } }'
+run rel_dotdot 0 "$ZRCUBE" rel_dotdot.pov $SIZE -F
+run rel_link 1 "$ZRCUBE" inc_link.pov $SIZE -F
+expect rel_link "link.inc:1:1: error: undefined identifier"
+absent rel_link "outside the folders"
+scene rel_abs "#include \"$top/outside/r.inc\""
+refused rel_abs 1 "$ZRCUBE" rel_abs.pov $SIZE -F
+expect rel_abs "is outside the folders a scene may read"
+refused rel_strict 1 "$ZRCUBE" rel_dotdot.pov $SIZE -F $STRICT
+expect rel_strict "rel_dotdot.pov:1:10: error: cannot read include file: \
+'../outside/r.inc' leads to '$top/outside/r.inc', outside"
+printf 'IO_Restrictions=strict\n' >strict.ini
+refused rel_strict_ini 1 "$ZRCUBE" rel_dotdot.pov strict.ini $SIZE -F
+expect rel_strict_ini "outside the folders a scene may read"
 
 # POV-Ray's include files and the fonts its package links into its
 # include folder are still read.
@@ -327,7 +362,7 @@ run stock 0 "$ZRCUBE" stock.pov $SIZE +Ostock.png
 # read its copies: the same refusal, once.
 if command -v "$MPIRUN" >/dev/null 2>&1; then
   refused mpi_link 1 env ASAN_OPTIONS="$MPI_ASAN" $MPIRUN -n 2 "$ZRCUBE" \
-    inc_link.pov $SIZE -F
+    inc_link.pov $SIZE -F $STRICT
   count=$(grep -c -F "leads to" "$logs/mpi_link.err")
   [ "$count" -eq 1 ] || fail "mpi_link: message printed $count times"
   absent mpi_link "secret-line-of-the-outside"

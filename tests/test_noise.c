@@ -192,10 +192,39 @@ static void test_noise_patterns(void **state) {
   assert_true(n > 8000);
 }
 
+/* Far from the origin POV-Ray's lattice cell leaves the 32-bit range:
+   the noise is 0 or 1 there, and an ordinary value again just below
+   -2^31 (lib/core/noise.c).  The values povray 3.7 printed for
+   bench/noise/probe_far.pov. */
+static void test_noise_far(void **state) {
+  (void)state;
+  static const double probe[][4] = {
+      {2.1e9, 0.3, 0.7, 0.573254598658},
+      {2147483000, 0.5, 0.7, 0.352295679030},
+      {2147483647.5, 1.2, 0.7, 0.410299219130},
+      {2147483648.0, 0.3, 0.7, 0.0},
+      {2147483648.0, 0.75, 0.7, 1.0},
+      {3e9, 0.3, 0.7, 0.0},
+      {3e9, 1.0, 0.7, 1.0},
+      {-3e9, 1.0, 0.7, 1.0},
+      {-2147483648.5, 0.75, 0.7, 0.160726623185},
+      {-2147483648.5, 1.1, 0.7, 0.109375214303},
+      {0.5, 0.7, 3e9, 1.0},
+      {1e12, 0.75, 0.7, 1.0},
+  };
+  for (size_t i = 0; i < sizeof probe / sizeof probe[0]; i++) {
+    double v = zr__noise_lattice(zr_v3(probe[i][0], probe[i][1], probe[i][2]));
+    if (fabs(v - probe[i][3]) > 5e-12)
+      fail_msg("noise(%.17g, %g, %g) = %.12f, povray printed %.12f",
+               probe[i][0], probe[i][1], probe[i][2], v, probe[i][3]);
+  }
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_noise_rand_streams),
       cmocka_unit_test(test_noise_patterns),
+      cmocka_unit_test(test_noise_far),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -307,7 +307,7 @@ ZR_API zr_status zr_context_add_include_path(zr_context *ctx,
 ZR_API zr_status zr_context_set_io_restrictions(zr_context *ctx,
                                                 zr_io_restrictions mode) {
   if (!ctx || (mode != ZR_IO_RESTRICTED && mode != ZR_IO_READ_ONLY &&
-               mode != ZR_IO_NONE))
+               mode != ZR_IO_NONE && mode != ZR_IO_STRICT))
     return ZR_EINVAL;
   ctx->io_mode = mode;
   return ZR_OK;
@@ -612,14 +612,15 @@ zr_status zr__context_read(zr_context *ctx, const char *path, char **bytes,
 }
 
 zr_status zr__context_read_scene(zr_context *ctx, const char *path,
-                                 const char *scene_dir, char **bytes,
-                                 size_t *size, char *why, size_t why_size) {
+                                 const char *scene_dir, bool relative,
+                                 char **bytes, size_t *size, char *why,
+                                 size_t why_size) {
   if (why_size)
     why[0] = '\0';
   if (ctx && ctx->read_fn)
     return caller_read(ctx, path, ctx->file_limit, bytes, size);
-  zr_status s = zr__io_read_scene(ctx, path, scene_dir, bytes, size, why,
-                                  why_size);
+  zr_status s = zr__io_read_scene(ctx, path, scene_dir, relative, bytes,
+                                  size, why, why_size);
   return observed(ctx, path, s, bytes, size);
 }
 

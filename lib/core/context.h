@@ -134,9 +134,13 @@ zr_status zr__context_over_budget(zr_context *ctx, size_t bytes,
  * (NULL when the scene is a string).  ZR_ENOTFOUND when the file does
  * not exist (a search goes on to its next place); ZR_EACCESS when it is
  * refused, with the reason in why (which never quotes the file).
+ * relative: the scene named the file by a relative name (path is that
+ * name joined to the folder it was searched from), which
+ * ZR_IO_RESTRICTED lets it read wherever it leads.
  */
 zr_status zr__context_read_scene(zr_context *ctx, const char *path,
-                                 const char *scene_dir, char **bytes,
-                                 size_t *size, char *why, size_t why_size);
+                                 const char *scene_dir, bool relative,
+                                 char **bytes, size_t *size, char *why,
+                                 size_t why_size);
 
 #endif /* ZR_CORE_CONTEXT_H */

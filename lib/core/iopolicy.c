@@ -7,10 +7,13 @@
  * Restrictions" (its Unix documentation, section 1.4): a [File I/O
  * Security] setting of none, read-only or restricted, and [Permitted
  * Paths] folders for reading (read=) and for reading and writing
- * (read+write=).  zRcube keeps the three settings and closes the
- * default: a scene reads below its own folder, the working directory,
- * the include paths and POV-Ray's include folder, and writes below the
- * working directory only; the caller adds folders (zrcube.h).
+ * (read+write=).  zRcube keeps the three settings, adds a stricter
+ * one, and closes the default: a scene reads what it names by a
+ * relative name wherever that leads ("../matrices.inc", as POV-Ray 3.7
+ * reads it), a name starting with '/' below its own folder, the working
+ * directory, the include paths and POV-Ray's include folder only, and
+ * writes below the working directory only; "strict" confines relative
+ * names too; the caller adds folders (zrcube.h).
  *
  * A name is judged by where it leads, not by its text: realpath()
  * resolves every symbolic link, the resolved path must lie below a
@@ -263,22 +266,31 @@ static bool installed_link(const char *path) {
 
 static zr_status check(const zr_context *ctx, const char *path,
                        const char *scene_dir, zr_io_access access,
-                       char **resolved, bool *existed, bool *trusted,
-                       char *why, size_t why_size);
+                       bool relative, char **resolved, bool *existed,
+                       bool *trusted, char *why, size_t why_size);
 
 zr_status zr__io_check(const zr_context *ctx, const char *path,
                        const char *scene_dir, zr_io_access access,
                        char **resolved, bool *existed, char *why,
                        size_t why_size) {
   bool trusted;
-  return check(ctx, path, scene_dir, access, resolved, existed, &trusted,
-               why, why_size);
+  return check(ctx, path, scene_dir, access, false, resolved, existed,
+               &trusted, why, why_size);
+}
+
+/* Whether a read of a relatively named file is open under ctx's
+   setting: the default lets a scene read what its relative names lead
+   to, as POV-Ray 3.7 does ("../x.inc"); "strict" does not. */
+static bool relative_open(const zr_context *ctx, zr_io_access access,
+                          bool relative) {
+  return relative && access == ZR_IO_ACCESS_READ &&
+         (!ctx || ctx->io_mode == ZR_IO_RESTRICTED);
 }
 
 static zr_status check(const zr_context *ctx, const char *path,
                        const char *scene_dir, zr_io_access access,
-                       char **resolved, bool *existed, bool *trusted,
-                       char *why, size_t why_size) {
+                       bool relative, char **resolved, bool *existed,
+                       bool *trusted, char *why, size_t why_size) {
   *resolved = NULL;
   *existed = false;
   *trusted = false;
@@ -301,7 +313,8 @@ static zr_status check(const zr_context *ctx, const char *path,
     s = resolve_for_write(path, resolved, existed, why, why_size);
   }
   if (s == ZR_OK && !permitted(ctx, *resolved, scene_dir, access)) {
-    if (access == ZR_IO_ACCESS_READ && installed_link(path))
+    if (relative_open(ctx, access, relative) ||
+        (access == ZR_IO_ACCESS_READ && installed_link(path)))
       *trusted = true;
     else
       s = refuse_outside(path, *resolved, access, why, why_size);
@@ -412,12 +425,13 @@ static zr_status read_all(int fd, const char *path, unsigned long long limit,
 }
 
 zr_status zr__io_read_scene(zr_context *ctx, const char *path,
-                            const char *scene_dir, char **bytes,
-                            size_t *size, char *why, size_t why_size) {
+                            const char *scene_dir, bool relative,
+                            char **bytes, size_t *size, char *why,
+                            size_t why_size) {
   char *resolved;
   bool existed, trusted;
-  zr_status s = check(ctx, path, scene_dir, ZR_IO_ACCESS_READ, &resolved,
-                      &existed, &trusted, why, why_size);
+  zr_status s = check(ctx, path, scene_dir, ZR_IO_ACCESS_READ, relative,
+                      &resolved, &existed, &trusted, why, why_size);
   if (s != ZR_OK)
     return s;
   int fd = open(resolved, O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_NOCTTY |
@@ -425,7 +439,9 @@ zr_status zr__io_read_scene(zr_context *ctx, const char *path,
   free(resolved);
   if (fd < 0)
     return open_failed(path, errno, why, why_size);
-  bool confined = (!ctx || ctx->io_mode == ZR_IO_RESTRICTED) && !trusted;
+  bool confined = (!ctx || ctx->io_mode == ZR_IO_RESTRICTED ||
+                   ctx->io_mode == ZR_IO_STRICT) &&
+                  !trusted;
   s = check_open(ctx, fd, path, scene_dir, ZR_IO_ACCESS_READ, confined, why,
                  why_size);
   if (s == ZR_OK)

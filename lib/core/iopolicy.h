@@ -46,10 +46,13 @@ zr_status zr__io_check(const zr_context *ctx, const char *path,
 
 /* The library's own reader for a file a scene names: zr__io_check, then
    the resolved path opened without following links and checked again
-   once open.  Same results as zr__context_read_scene. */
+   once open.  relative: the scene named it by a relative name, which
+   ZR_IO_RESTRICTED reads wherever it leads (still a regular file).
+   Same results as zr__context_read_scene. */
 zr_status zr__io_read_scene(zr_context *ctx, const char *path,
-                            const char *scene_dir, char **bytes,
-                            size_t *size, char *why, size_t why_size);
+                            const char *scene_dir, bool relative,
+                            char **bytes, size_t *size, char *why,
+                            size_t why_size);
 
 /* The library's own reader for a file the caller named: any folder,
    regular files only. */

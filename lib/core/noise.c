@@ -28,16 +28,41 @@
  * hash, each with its own table (step 6 of the probe): a point moves by
  * the turbulence vector times the sum over octaves i of omega^i
  * D(lambda^i p), which the probe's turbulence samples match to 1e-11.
+ *
+ * Far out, POV-Ray's lattice cell is a 32-bit integer: where floor(p)
+ * of an axis lies outside [-2^31, 2^31 - 1], povray behaves as if the
+ * cell were -2^31 (what an x86 conversion of an out-of-range double
+ * gives), so the distance into the cell is huge, the cubic weights are
+ * enormous and the noise, clamped to [0, 1], is 0 or 1 by the sign of
+ * the sum; just below -2^31 it is an ordinary-looking value again.  The
+ * turbulence of a pattern with a large lambda reaches such points
+ * (poliana-girl's aug4.pov: lambda 50, six octaves, 50^5 p), but its
+ * vector noise does not follow this rule (still open).  Measured:
+ * tests/test_noise.c (noise_far), f_noise3d values povray prints.
  */
 #include "core/noise.h"
 
 #include <math.h>
+#include <stdbool.h>
 #include <stdint.h>
 
 #include "../../bench/noise/gen3_tables.h"
 #include "../../bench/noise/noise_tables.h"
 
 static double smooth(double t) { return t * t * (3 - 2 * t); }
+
+/* POV-Ray's cell of floor value f: f itself in the 32-bit range, -2^31
+   outside it (and for NaN). */
+static int64_t cell(double f) {
+  if (f >= -2147483648.0 && f <= 2147483647.0)
+    return (int64_t)f;
+  return INT64_C(-2147483648);
+}
+
+/* The plain cell, defined for any double (0 beyond 2^62 and for NaN). */
+static int64_t cell64(double f) {
+  return f >= -4.6e18 && f <= 4.6e18 ? (int64_t)f : 0;
+}
 
 unsigned zr__noise_hash(int64_t x, int64_t y, int64_t z, int offset) {
   unsigned a = (unsigned)((x + offset) & 4095);
@@ -51,12 +76,17 @@ static unsigned lattice_hash(int64_t x, int64_t y, int64_t z) {
 }
 
 /* The blend of step 1 of the probe for n_tables tables at once: out[m]
-   is the noise of tables[m]. */
+   is the noise of tables[m].  far32: cells as POV-Ray's value noise
+   takes them far out (cell()); turbulence's vector noise stays bounded
+   there in povray's output, by a rule not measured yet, so it keeps the
+   plain cell. */
 static void blend(zr_vec3 p, const double (*const *tables)[4], int n_tables,
-                  double *out) {
+                  bool far32, double *out) {
   double fx = floor(p.x), fy = floor(p.y), fz = floor(p.z);
-  int64_t ix = (int64_t)fx, iy = (int64_t)fy, iz = (int64_t)fz;
-  double t[3] = {p.x - fx, p.y - fy, p.z - fz};
+  int64_t ix = far32 ? cell(fx) : cell64(fx);
+  int64_t iy = far32 ? cell(fy) : cell64(fy);
+  int64_t iz = far32 ? cell(fz) : cell64(fz);
+  double t[3] = {p.x - (double)ix, p.y - (double)iy, p.z - (double)iz};
   double w[3][2];
   for (int a = 0; a < 3; a++) {
     w[a][1] = smooth(t[a]);
@@ -80,15 +110,16 @@ static void blend(zr_vec3 p, const double (*const *tables)[4], int n_tables,
 double zr__noise_lattice(zr_vec3 p) {
   const double (*tables[1])[4] = {noise_lattice};
   double n;
-  blend(p, tables, 1, &n);
-  return n;
+  blend(p, tables, 1, true, &n);
+  /* [0.1, 0.9] in the lattice's range; 0 or 1 far out (see above). */
+  return n < 0 ? 0 : n > 1 ? 1 : n;
 }
 
 zr_vec3 zr__dnoise_lattice(zr_vec3 p) {
   const double (*tables[3])[4] = {dnoise_lattice[0], dnoise_lattice[1],
                                   dnoise_lattice[2]};
   double d[3];
-  blend(p, tables, 3, d);
+  blend(p, tables, 3, false, d);
   return zr_v3(d[0], d[1], d[2]);
 }
 

@@ -330,6 +330,10 @@ typedef struct zr_normal {
   /* bump_map { }: the normal tilts by the picture's height differences
      (lib/scene/bitmap.c) instead of a pattern's. */
   const zr_image_map *bump_map;
+  /* no_bump_scale: the tilt is divided by the transform's scale (the
+     cube root of its determinant), so scaling changes the bumps' size
+     but not their depth (texture.c). */
+  bool no_bump_scale;
 } zr_normal;
 
 typedef struct zr_finish {

@@ -812,7 +812,8 @@ zr_status zr__sdl_read_image(zr_sdl_parser *p, const char *name,
                         strlen(p->ctx->include_paths[i - 1]), name);
     if (!path)
       continue;
-    zr_status s = zr__sdl_read_file(p, path, at, what, bytes, size);
+    zr_status s = zr__sdl_read_file(p, path, name[0] != '/', at, what,
+                                   bytes, size);
     if (s == ZR_OK) {
       *path_out = path;
       return ZR_OK;

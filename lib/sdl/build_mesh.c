@@ -806,7 +806,8 @@ static zr_status read_font(zr_sdl_parser *p, const char *name,
       snprintf(path, len, "%.*s/%s", (int)dir_len, dir, name);
     else
       snprintf(path, len, "%s", name);
-    zr_status s = zr__sdl_read_file(p, path, at, "font", bytes, size);
+    zr_status s = zr__sdl_read_file(p, path, name[0] != '/', at, "font",
+                                   bytes, size);
     free(path);
     if (s != ZR_ENOTFOUND)
       return s;

@@ -12,8 +12,11 @@
  * products, which is exact for planar outlines and a good average of
  * nearly planar ones), and every edge is stored in the plane's (u, v)
  * axes so the tracer's inside test is two-dimensional.  The manual says
- * points off the plane are an error, but POV-Ray 3.7 renders them
- * without a word; zRcube projects them onto the fitted plane and warns.
+ * the points must lie in one plane; POV-Ray 3.7 says nothing but draws
+ * nothing when one lies more than 1e-10 off the plane of the first
+ * three points that span one (measured, whatever the polygon's size:
+ * tests/legacy/polygon_offplane.pov, forste's ex1/cylinder.pov), and
+ * zRcube does the same, with a warning.
  *
  * A prism's points become cubic pieces of curve in the power basis,
  * whatever the spline ("Prism", and "Lathe" for the splines): a linear
@@ -210,6 +213,30 @@ static void count_edge(void *data, zr_vec3 a, zr_vec3 b) {
   (*(size_t *)data)++;
 }
 
+/* Whether a point lies more than 1e-10 (absolute, measured) off the
+   plane through the first point and the first two later points that
+   span a plane with it. */
+static bool off_plane(const zr_vec3 *pt, size_t n) {
+  zr_vec3 nrm = zr_v3(0, 0, 0);
+  for (size_t i = 1; i < n && zr_v3_dot(nrm, nrm) == 0.0; i++)
+    for (size_t k = i + 1; k < n; k++) {
+      zr_vec3 c = zr_v3_cross(zr_v3_sub(pt[i], pt[0]),
+                              zr_v3_sub(pt[k], pt[0]));
+      if (zr_v3_dot(c, c) > 0.0) {
+        nrm = c;
+        break;
+      }
+    }
+  double len = zr_v3_len(nrm);
+  if (!(len > 0.0))
+    return false;
+  nrm = zr_v3_scale(nrm, 1.0 / len);
+  for (size_t i = 1; i < n; i++)
+    if (fabs(zr_v3_dot(zr_v3_sub(pt[i], pt[0]), nrm)) > 1e-10)
+      return true;
+  return false;
+}
+
 bool zr__sdl_polygon_done(zr_sdl_parser *p, zr_object *o,
                           const zr_sdl_loc *loc) {
   const zr_vec3 *pt = o->u.polygon.points;
@@ -233,6 +260,13 @@ bool zr__sdl_polygon_done(zr_sdl_parser *p, zr_object *o,
     return true;
   }
   nrm = zr_v3_scale(nrm, 1.0 / len);
+  if (off_plane(pt, n)) {
+    zr__sdl_warning(p, loc, "the polygon's points are not in one plane: "
+                    "it is not drawn, as POV-Ray 3.7 draws nothing for it");
+    o->kind = ZR_OBJ_UNION;
+    memset(&o->u, 0, sizeof o->u);
+    return true;
+  }
   /* The plane through the points' centroid; u, v span it. */
   zr_vec3 centre = zr_v3(0, 0, 0), lo = pt[0], hi = pt[0];
   for (size_t i = 0; i < n; i++) {
@@ -241,14 +275,6 @@ bool zr__sdl_polygon_done(zr_sdl_parser *p, zr_object *o,
     hi = zr_v3_max(hi, pt[i]);
   }
   centre = zr_v3_scale(centre, 1.0 / (double)n);
-  double size = fmax(zr_v3_len(zr_v3_sub(hi, lo)), 1e-300);
-  double off = 0.0;
-  for (size_t i = 0; i < n; i++)
-    off = fmax(off, fabs(zr_v3_dot(zr_v3_sub(pt[i], centre), nrm)));
-  if (off > 1e-6 * size)
-    zr__sdl_warning(p, loc,
-                    "the polygon's points are not in one plane; they are "
-                    "projected onto the plane that fits them best");
   zr_vec3 helper = fabs(nrm.x) < 0.9 ? zr_v3(1, 0, 0) : zr_v3(0, 1, 0);
   o->u.polygon.normal = nrm;
   o->u.polygon.distance = zr_v3_dot(centre, nrm);

@@ -484,7 +484,8 @@ static int open_include(zr_sdl_parser *p, const char *name,
     }
     char *bytes = NULL;
     size_t size = 0;
-    zr_status s = zr__sdl_read_file(p, path, at, what, &bytes, &size);
+    zr_status s = zr__sdl_read_file(p, path, name[0] != '/', at, what,
+                                   &bytes, &size);
     if (s == ZR_ENOTFOUND) {
       free(path);
       continue;
@@ -514,11 +515,11 @@ static int open_include(zr_sdl_parser *p, const char *name,
 }
 
 zr_status zr__sdl_read_file(zr_sdl_parser *p, const char *path,
-                            const zr_sdl_loc *at, const char *what,
-                            char **bytes, size_t *size) {
+                            bool relative, const zr_sdl_loc *at,
+                            const char *what, char **bytes, size_t *size) {
   char why[1024];
-  zr_status s = zr__context_read_scene(p->ctx, path, p->scene_dir, bytes,
-                                       size, why, sizeof why);
+  zr_status s = zr__context_read_scene(p->ctx, path, p->scene_dir, relative,
+                                       bytes, size, why, sizeof why);
   if (s == ZR_OK || s == ZR_ENOTFOUND)
     return s;
   if (why[0])
@@ -588,7 +589,8 @@ bool zr__sdl_file_exists(zr_sdl_parser *p, const char *name) {
     size_t size = 0;
     char why[512];
     zr_status s = zr__context_read_scene(p->ctx, path, p->scene_dir,
-                                         &bytes, &size, why, sizeof why);
+                                         name[0] != '/', &bytes, &size, why,
+                                         sizeof why);
     free(path);
     free(bytes);
     if (s == ZR_OK)
@@ -751,10 +753,15 @@ static bool autoend_due(const zr_sdl_parser *p, int next) {
   if (!a->token || a->depth > 0 || !a->operand || closes_block(next))
     return false;
   /* A macro argument ends by itself only after a block, where nothing
-     can continue it; otherwise its ',' or ')' ends it. */
+     can continue it, or before 'color' after a complete value, which
+     starts the next argument: POV-Ray 3.7 runs t-o-k's
+     FitHeightLineToPoints.pov, "ShowLine2D(..., 0.02 color rgbt <...>)"
+     (tests/legacy/macro_arg_colour.pov); otherwise its ',' or ')' ends
+     it. */
   if (a->token == T_ARG_SEP)
-    return a->last == '}' && next != ',' && next != ')' && next != 0 &&
-           next != T_TEXTURE && !is_directive(next);
+    return (a->last == '}' || next == T_COLOUR) && next != ',' &&
+           next != ')' && next != 0 && next != T_TEXTURE &&
+           !is_directive(next);
   if (next == 0)
     return p->n_frames == 1;
   if (is_directive(next))

@@ -721,10 +721,13 @@ int zr__sdl_open_data(zr_sdl_parser *p, const char *name,
 /* Reads one place a search tries (directive.c), under the I/O
    restrictions: ZR_ENOTFOUND silently when no file is there; any other
    failure, a refusal among them, reported at 'at' as "cannot read
-   <what>: <why>" (the file's contents never quoted). */
+   <what>: <why>" (the file's contents never quoted).  relative: the
+   scene's name for the file does not start with '/' (path is it joined
+   to the folder searched), which the default restrictions read
+   wherever it leads. */
 zr_status zr__sdl_read_file(zr_sdl_parser *p, const char *path,
-                            const zr_sdl_loc *at, const char *what,
-                            char **bytes, size_t *size);
+                            bool relative, const zr_sdl_loc *at,
+                            const char *what, char **bytes, size_t *size);
 /* #default: the texture, pigment or finish of objects made from now on
    (control.c). */
 /* The bases of the next pigment, normal or finish block of texture tx

@@ -370,8 +370,9 @@ static void gather_node(gather *g, const zr_object *o, double tmin) {
       if (keep(o, i, point_at(g->ray, g->hit[k].t)))
         g->hit[kept++] = g->hit[k];
     g->n = kept;
-    if (o == g->top && !o->clip && kept > first)
-      shrink(g, start);
+    if (o == g->top && !o->clip && kept > first &&
+        o->kind != ZR_OBJ_INTERSECTION)
+      shrink(g, start); /* an intersection's later ties win (below) */
   }
   if (o->clip) {
     int kept = start;
@@ -395,12 +396,17 @@ int zr__csg_crossings(const zr_object *object, const zr_ray *ray,
   g.n = 0;
   gather_node(&g, object, tmin);
   /* The nearest ZR_MAX_CROSSINGS, sorted, by selection: lists are
-     short and only two are wanted. */
+     short and only two are wanted.  Of crossings at the same distance
+     (a face two children share) a union or merge shows its earlier
+     child's and an intersection or difference its later child's, as
+     POV-Ray 3.7 does (tests/legacy/csg_shared_face.pov). */
+  bool later = object->kind == ZR_OBJ_INTERSECTION;
   int n = 0;
   for (; n < ZR_MAX_CROSSINGS; n++) {
     int best = -1;
     for (int k = n; k < g.n; k++)
-      if (best < 0 || g.hit[k].t < g.hit[best].t)
+      if (best < 0 || g.hit[k].t < g.hit[best].t ||
+          (later && g.hit[k].t == g.hit[best].t))
         best = k;
     if (best < 0)
       break;

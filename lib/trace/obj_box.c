@@ -56,11 +56,14 @@ static void box_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
   zr__crossings_add(l, tfar, zr_v3(n1[0], n1[1], n1[2]));
 }
 
+/* The faces count as inside: POV-Ray 3.7 keeps the shared face of two
+   boxes in an intersection and drops it from a difference (measured:
+   tests/legacy/csg_shared_face.pov). */
 static bool box_inside(const zr_object *o, zr_vec3 p) {
   zr_vec3 lo = zr_v3_min(o->u.box.corner1, o->u.box.corner2);
   zr_vec3 hi = zr_v3_max(o->u.box.corner1, o->u.box.corner2);
-  return p.x > lo.x && p.x < hi.x && p.y > lo.y && p.y < hi.y &&
-         p.z > lo.z && p.z < hi.z;
+  return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y &&
+         p.z >= lo.z && p.z <= hi.z;
 }
 
 static bool box_bounds(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi) {

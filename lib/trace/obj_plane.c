@@ -16,8 +16,9 @@ static void plane_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
   zr__crossings_add(l, (o->u.plane.distance - zr_v3_dot(n, org)) / dn, n);
 }
 
+/* The surface counts as inside, as a box's faces do (obj_box.c). */
 static bool plane_inside(const zr_object *o, zr_vec3 p) {
-  return zr_v3_dot(p, o->u.plane.normal) < o->u.plane.distance;
+  return zr_v3_dot(p, o->u.plane.normal) <= o->u.plane.distance;
 }
 
 const zr_shape_ops zr__shape_plane = {

@@ -1,6 +1,5 @@
-// no_bump_scale in a texture and in a normal (here on textures without
-// bumps, so only the parsing and the warning are checked).
-// expect: 'no_bump_scale' is ignored
+// no_bump_scale in a texture and in a normal, on textures without bumps
+// (parsing only; tests/no_bump_scale.pov checks the depth).
 #version 3.7;
 global_settings { assumed_gamma 1 }
 camera { location <0,0,-5> look_at 0 }
