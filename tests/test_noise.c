@@ -211,7 +211,16 @@ static void test_noise_far(void **state) {
       {-2147483648.5, 1.1, 0.7, 0.109375214303},
       {0.5, 0.7, 3e9, 1.0},
       {1e12, 0.75, 0.7, 1.0},
+      /* povray 3.7 printed these too (bench/noise/probe_far.pov's
+         points moved out); at 1e40 on all three axes it prints -nan,
+         which zRcube keeps finite (lib/core/noise.c, blend()). */
+      {1e16, 0.75, 0.7, 1.0},
+      {1e20, 0.75, 0.7, 1.0},
   };
+  double v = zr__noise_lattice(zr_v3(1e40, 1e40, 1e40));
+  assert_true(v == 0 || v == 1);
+  v = zr__noise_lattice(zr_v3(NAN, 0.5, 0.5));
+  assert_true(v == 0 || v == 1);
   for (size_t i = 0; i < sizeof probe / sizeof probe[0]; i++) {
     double v = zr__noise_lattice(zr_v3(probe[i][0], probe[i][1], probe[i][2]));
     if (fabs(v - probe[i][3]) > 5e-12)

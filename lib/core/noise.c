@@ -59,6 +59,9 @@ static int64_t cell(double f) {
   return INT64_C(-2147483648);
 }
 
+/* The largest distance into a far-out cell (blend()). */
+#define FAR_T 4503599627370496.0 /* 2^52 */
+
 /* The plain cell, defined for any double (0 beyond 2^62 and for NaN). */
 static int64_t cell64(double f) {
   return f >= -4.6e18 && f <= 4.6e18 ? (int64_t)f : 0;
@@ -87,6 +90,17 @@ static void blend(zr_vec3 p, const double (*const *tables)[4], int n_tables,
   int64_t iy = far32 ? cell(fy) : cell64(fy);
   int64_t iz = far32 ? cell(fz) : cell64(fz);
   double t[3] = {p.x - (double)ix, p.y - (double)iy, p.z - (double)iz};
+  /* Far out the distance into the cell is huge and only the sign of
+     the sum decides (0 or 1); past 2^52 its cube, times the other
+     axes', would overflow to inf - inf = NaN (povray itself prints
+     -nan for f_noise3d(1e40, 1e40, 1e40) and for f_ridged_mf with 100
+     octaves), so the distance stops there: the sign povray gives where
+     its sum is finite (tests/test_noise.c, noise_far: 1e12 to 1e20),
+     and a finite 0 or 1 beyond, for any double or NaN. */
+  if (far32)
+    for (int a = 0; a < 3; a++)
+      if (!(fabs(t[a]) <= FAR_T))
+        t[a] = t[a] < 0 ? -FAR_T : FAR_T;
   double w[3][2];
   for (int a = 0; a < 3; a++) {
     w[a][1] = smooth(t[a]);
