@@ -325,3 +325,6 @@ EXTRA_DIST += tests/legacy/csg_shared_face.pov \
 TESTS += tests/test_no_bump_scale.sh
 EXTRA_DIST += tests/test_no_bump_scale.sh tests/no_bump_scale.pov
 EXTRA_DIST += tests/legacy/macro_arg_colour.pov
+
+TESTS += tests/test_isosurface_nan.sh
+EXTRA_DIST += tests/test_isosurface_nan.sh tests/isosurface_nan.pov
