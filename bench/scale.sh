@@ -25,12 +25,16 @@
 #
 # Output: bench/scale/runs.tsv (every run), bench/scale/summary.md and
 # the charts bench/scale/efficiency.png and bench/scale/model.png.
+# The program timed is the build's real bin/.libs/zrcube, not libtool's
+# wrapper script (bench/zrexe.sh), and each rank's -v line also gives
+# its whole process's CPU, so the summary has a whole-process row:
+# mpirun's launch plus the busiest rank's process CPU.
 # CHECK_RANKS="3 8" adds oversubscribed runs that check bytes only.
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
 top=$(dirname "$here")
 build=${1:-$top/build}
-zrcube=$build/bin/zrcube
+. "$here/zrexe.sh" # the real program, not libtool's wrapper
 out=$here/scale
 REPEAT=${REPEAT:-3}
 CHECK_RANKS=${CHECK_RANKS:-}

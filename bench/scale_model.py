@@ -103,6 +103,9 @@ def cpu_phases(ranks):
         'exchange_median': sorted(pc['exchange'] for pw, pc, sb in
                                   ranks.values())[len(ranks) // 2],
         'render': mx(lambda pw, pc, sb: pc['render']),
+        # The whole process's CPU (start-up, MPI's included, and the
+        # image's writing); nan in runs of a zrcube that did not say.
+        'process': mx(lambda pw, pc, sb: pc.get('process', math.nan)),
         'render_mean': sum(pc['render'] for pw, pc, sb in ranks.values()) /
         len(ranks),
         'gather': mx(lambda pw, pc, sb: pw['gather']),
@@ -164,6 +167,12 @@ def main():
             cpu[(1, 2)]['render']
         rows = [('whole (with launch)', W1, W2, got[(1, 1)][0],
                  got[(2, 1)][0], Wt)]
+        if c1['process'] == c1['process']:
+            rows.append(('whole process (launch + process CPU)',
+                         launch[1] + c1['process'],
+                         launch[2] + c2['process'], got[(1, 1)][0],
+                         got[(2, 1)][0],
+                         launch[1] + cpu[(1, 2)]['process']))
         for ph in ('parse', 'gi', 'render'):
             rows.append((ph, c1[ph], c2[ph], wal[(1, 1)][ph],
                          wal[(2, 1)][ph], cpu[(1, 2)][ph]))

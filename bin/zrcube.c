@@ -1309,19 +1309,21 @@ static int render_and_write(run *r) {
 }
 
 /* -v under mpirun: each phase's time and what this rank sent, one
-   line a rank on stderr, for bench/scale.sh's model. */
+   line a rank on stderr, for bench/scale.sh's model; "process" is the
+   CPU the whole process has taken so far (its start-up, MPI's included,
+   the phases and the image written), the whole-process figure. */
 static void print_rank_times(const run *r) {
   zr_par_traffic t;
   zr__par_get_traffic(r->par, &t);
   fprintf(stderr,
           "zrcube: rank %d: wall s: parse %.4f gi %.4f radiosity %.4f "
           "render %.4f gather %.4f exchange %.4f; cpu s: parse %.4f "
-          "gi %.4f radiosity %.4f render %.4f exchange %.4f; sent B: "
-          "scene %llu solution %llu pixels %llu; exchanges %llu\n",
+          "gi %.4f radiosity %.4f render %.4f exchange %.4f process %.4f; "
+          "sent B: scene %llu solution %llu pixels %llu; exchanges %llu\n",
           r->rank, r->parse_seconds, r->gi_seconds, r->radiosity_seconds,
           r->render.render_seconds, r->render.gather_seconds,
           t.team_seconds, r->parse_cpu, r->gi_cpu, r->radiosity_cpu,
-          r->render_cpu, t.team_cpu_seconds,
+          r->render_cpu, t.team_cpu_seconds, zr__par_cpu(),
           (unsigned long long)t.bcast_bytes_sent,
           (unsigned long long)t.team_bytes_sent,
           (unsigned long long)t.pixel_bytes_sent,

@@ -428,6 +428,41 @@ static void test_par_world_of_one_renders_image(void **state) {
   zr__par_finalize(NULL);
 }
 
+/*
+ * Renders the window win (rows win[0] .. win[1] - 1, columns win[2] ..
+ * win[3] - 1) of f's image in the world par, with 2 threads, and
+ * returns how many of the image's floats are not want's inside the
+ * window (the full render's: a window's pixels are the same bytes) or
+ * not black outside it.  0 when the window is right.
+ */
+static size_t window_mismatches(render_fixture *f, zr_par *par,
+                                const int win[4], const float *want) {
+  int w = f->params.width, h = f->params.height;
+  zr_image *image;
+  assert_int_equal(zr_image_new(w, h, &image), ZR_OK);
+  zr_par_render job = {.scene = f->scene,
+                       .params = &f->params,
+                       .threads = 2,
+                       .image = image,
+                       .row0 = win[0],
+                       .row1 = win[1],
+                       .col0 = win[2],
+                       .col1 = win[3]};
+  assert_int_equal(zr__par_render(par, &job), ZR_OK);
+  const float *got = zr_image_pixels(image);
+  size_t wrong = 0;
+  for (int y = 0; y < h; y++)
+    for (int x = 0; x < w; x++) {
+      int in = y >= win[0] && y < win[1] && x >= win[2] && x < win[3];
+      for (int c = 0; c < 3; c++) {
+        size_t i = ((size_t)y * (size_t)w + (size_t)x) * 3 + (size_t)c;
+        wrong += got[i] != (in ? want[i] : 0.0f);
+      }
+    }
+  zr_image_free(image);
+  return wrong;
+}
+
 /* A window of rows (whole rows: rendered in place in the image) and one
    of columns (part rows: gathered and copied) give the full render's
    pixels inside and leave the rest black, with and without
@@ -443,30 +478,8 @@ static void test_par_world_of_one_renders_window(void **state) {
     f->params.antialias = aa;
     f->params.aa_threshold = 0.1;
     float *want = reference(f);
-    for (int k = 0; k < 2; k++) {
-      const int *win = windows[k];
-      zr_image *image;
-      assert_int_equal(zr_image_new(w, h, &image), ZR_OK);
-      zr_par_render job = {.scene = f->scene,
-                           .params = &f->params,
-                           .threads = 2,
-                           .image = image,
-                           .row0 = win[0],
-                           .row1 = win[1],
-                           .col0 = win[2],
-                           .col1 = win[3]};
-      assert_int_equal(zr__par_render(par, &job), ZR_OK);
-      const float *got = zr_image_pixels(image);
-      for (int y = 0; y < h; y++)
-        for (int x = 0; x < w; x++) {
-          int in = y >= win[0] && y < win[1] && x >= win[2] && x < win[3];
-          for (int c = 0; c < 3; c++) {
-            size_t i = ((size_t)y * (size_t)w + (size_t)x) * 3 + (size_t)c;
-            assert_true(got[i] == (in ? want[i] : 0.0f));
-          }
-        }
-      zr_image_free(image);
-    }
+    for (int k = 0; k < 2; k++)
+      assert_int_equal(window_mismatches(f, par, windows[k], want), 0);
     free(want);
   }
   f->params.antialias = 0;
@@ -491,32 +504,8 @@ static void test_par_world_of_one_renders_large_image(void **state) {
   f->params.aa_threshold = 0.1;
   float *want = reference(f);
   const int windows[2][4] = {{0, h, 0, w}, {0, h, 1, w - 2}};
-  for (int k = 0; k < 2; k++) {
-    const int *win = windows[k];
-    zr_image *image;
-    assert_int_equal(zr_image_new(w, h, &image), ZR_OK);
-    zr_par_render job = {.scene = f->scene,
-                         .params = &f->params,
-                         .threads = 2,
-                         .image = image,
-                         .row0 = win[0],
-                         .row1 = win[1],
-                         .col0 = win[2],
-                         .col1 = win[3]};
-    assert_int_equal(zr__par_render(par, &job), ZR_OK);
-    const float *got = zr_image_pixels(image);
-    size_t wrong = 0;
-    for (int y = 0; y < h; y++)
-      for (int x = 0; x < w; x++) {
-        int in = x >= win[2] && x < win[3];
-        for (int c = 0; c < 3; c++) {
-          size_t i = ((size_t)y * (size_t)w + (size_t)x) * 3 + (size_t)c;
-          wrong += got[i] != (in ? want[i] : 0.0f);
-        }
-      }
-    assert_int_equal(wrong, 0);
-    zr_image_free(image);
-  }
+  for (int k = 0; k < 2; k++)
+    assert_int_equal(window_mismatches(f, par, windows[k], want), 0);
   free(want);
   f->params.antialias = 0;
   f->params.width = 37;

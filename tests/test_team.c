@@ -21,6 +21,7 @@
 
 #include <cmocka.h>
 
+#include "core/hugepage.h"
 #include "core/team.h"
 #include "zrcube.h"
 
@@ -104,8 +105,8 @@ static void run_members(member *ms, void *(*fn)(void *)) {
 /* ---- the exchange protocol ---- */
 
 typedef struct exchange_result {
-  zr_status small, large, failed, agreed;
-  int small_ok, large_ok;
+  zr_status small, large, huge, failed, agreed;
+  int small_ok, large_ok, huge_ok;
 } exchange_result;
 
 static exchange_result results[MEMBERS];
@@ -136,6 +137,9 @@ static int parts_ok(const zr__team_parts *parts, size_t (*size)(int)) {
 static size_t small_size(int r) { return r == 1 ? 0 : 100 + 7 * (size_t)r; }
 /* One part over the inline room (4 KB) sends all by the long way. */
 static size_t large_size(int r) { return r == 2 ? 100000 : 50; }
+/* Parts of 1 MiB and more land in huge pages (team.c, room_alloc), a
+   room of whole 2 MiB pages: 2.5 MB in all. */
+static size_t huge_size(int r) { return r == 0 ? 2400000 : 50000 + (size_t)r; }
 
 static void *exchange_member(void *p) {
   member *m = p;
@@ -151,6 +155,13 @@ static void *exchange_member(void *p) {
   res->large = zr__team_exchange(&m->team, ZR_OK, mine,
                                  large_size(m->rank), &parts);
   res->large_ok = res->large == ZR_OK && parts_ok(&parts, large_size);
+  zr__team_parts_free(&parts);
+  free(mine);
+  mine = part(m->rank, huge_size(m->rank));
+  res->huge = zr__team_exchange(&m->team, ZR_OK, mine,
+                                huge_size(m->rank), &parts);
+  res->huge_ok = res->huge == ZR_OK && parts_ok(&parts, huge_size) &&
+                 (uintptr_t)parts.bytes % ZR__HUGE_PAGE == 0;
   zr__team_parts_free(&parts);
   free(mine);
   /* Member 1 fails with ZR_EIO, member 2 with ZR_ENOMEM: every member
@@ -173,13 +184,16 @@ static void test_team_exchange(void **state) {
     assert_true(results[r].small_ok);
     assert_int_equal(results[r].large, ZR_OK);
     assert_true(results[r].large_ok);
+    assert_int_equal(results[r].huge, ZR_OK);
+    assert_true(results[r].huge_ok);
     assert_int_equal(results[r].failed, ZR_EIO);
     assert_int_equal(results[r].agreed, ZR_ELIMIT);
   }
-  /* Small parts: one allgather; large: headers, room, parts; a failed
-     exchange stops after the headers; an agreement is one. */
+  /* Small parts: one allgather; large (and huge): headers, room,
+     parts; a failed exchange stops after the headers; an agreement is
+     one. */
   for (int r = 0; r < MEMBERS; r++)
-    assert_int_equal(h.calls[r], 1 + 3 + 1 + 1);
+    assert_int_equal(h.calls[r], 1 + 3 + 3 + 1 + 1);
   hall_free(&h);
 }
 
@@ -199,6 +213,32 @@ static void test_team_of_one(void **state) {
   zr_team one = {0, 1, NULL, NULL};
   assert_int_equal(zr__team_size(&one), 1);
   assert_true(zr__team_mine(&one, 5));
+}
+
+/* A pack grows by doubling; from 1 MiB on it moves into whole huge
+   pages (team.c, room_alloc) and keeps every byte put before. */
+static void test_team_pack_grows_into_huge_pages(void **state) {
+  (void)state;
+  zr__pack pack = {0};
+  unsigned char piece[1000];
+  for (size_t k = 0; k < 3000; k++) {
+    for (size_t i = 0; i < sizeof piece; i++)
+      piece[i] = (unsigned char)((k * 7 + i) % 253);
+    zr__pack_put(&pack, piece, sizeof piece);
+  }
+  assert_false(pack.nomem);
+  assert_int_equal(pack.n, 3000 * sizeof piece);
+  assert_true(pack.cap >= pack.n);
+  assert_int_equal((uintptr_t)pack.bytes % ZR__HUGE_PAGE, 0);
+  assert_int_equal(pack.cap % ZR__HUGE_PAGE, 0);
+  size_t wrong = 0;
+  for (size_t k = 0; k < 3000; k++)
+    for (size_t i = 0; i < sizeof piece; i++)
+      wrong += (unsigned char)pack.bytes[k * sizeof piece + i] !=
+               (unsigned char)((k * 7 + i) % 253);
+  assert_int_equal(wrong, 0);
+  zr__pack_free(&pack);
+  assert_null(pack.bytes);
 }
 
 /* ---- a radiosity solve and a cache pretrace shared by the members ---- */
@@ -364,6 +404,7 @@ int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_team_exchange),
       cmocka_unit_test(test_team_of_one),
+      cmocka_unit_test(test_team_pack_grows_into_huge_pages),
       cmocka_unit_test(test_team_radiosity),
       cmocka_unit_test(test_team_cache),
   };

@@ -4,12 +4,12 @@
 #include "core/arena.h"
 
 #include "core/budget.h"
+#include "core/hugepage.h"
 
 #include <stdalign.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/mman.h>
 
 struct zr_arena_block {
   zr_arena_block *next;
@@ -80,19 +80,9 @@ void *zr__arena_alloc_raw(zr_arena *a, size_t size) {
 }
 
 void zr__mem_huge_pages(void *p, size_t size) {
-#ifdef MADV_HUGEPAGE
-  const uintptr_t huge = (uintptr_t)2 << 20;
   /* Below two huge pages the rounding would leave little or nothing. */
-  if (!p || size < 2 * huge)
-    return;
-  uintptr_t lo = ((uintptr_t)p + huge - 1) & ~(huge - 1);
-  uintptr_t hi = ((uintptr_t)p + size) & ~(huge - 1);
-  if (hi > lo)
-    (void)madvise((void *)lo, hi - lo, MADV_HUGEPAGE); /* advice only */
-#else
-  (void)p;
-  (void)size;
-#endif
+  if (size >= 2 * ZR__HUGE_PAGE)
+    zr__mem_advise_huge(p, size);
 }
 
 void *zr__arena_alloc(zr_arena *a, size_t size) {

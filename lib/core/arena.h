@@ -54,7 +54,8 @@ void *zr__arena_memdup(zr_arena *a, const void *p, size_t size);
 /*
  * Asks the kernel to back the 2 MB-aligned pages inside [p, p + size)
  * with huge pages (madvise MADV_HUGEPAGE; nothing where that does not
- * exist), before they are first touched.  For big buffers filled once
+ * exist), before they are first touched: core/hugepage.h's advice, for
+ * buffers of two huge pages or more.  For big buffers filled once
  * (a scene file's bytes, its token array, a mesh's arrays): a first
  * touch of a 4 KB page costs a page fault, which took 22% of the parse
  * of a 130,050-triangle mesh on this project's VM (issue 13).  Where

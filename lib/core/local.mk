@@ -2,6 +2,7 @@ lib_libzrcube_la_SOURCES += \
 	lib/core/arena.c lib/core/arena.h \
 	lib/core/budget.c lib/core/budget.h \
 	lib/core/context.c lib/core/context.h \
+	lib/core/hugepage.h \
 	lib/core/iopolicy.c lib/core/iopolicy.h \
 	lib/core/noise.c lib/core/noise.h \
 	lib/core/parallel.c lib/core/parallel.h \

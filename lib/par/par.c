@@ -46,10 +46,10 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/mman.h>
 #include <time.h>
 #include <unistd.h>
 
+#include "core/hugepage.h"
 #include "par/rows.h"
 
 struct zr_par {
@@ -730,38 +730,23 @@ static zr_status reduce_stats(zr_par *par, zr_render_stats *stats,
  * 2-rank render of scenes/default.pov at 2048x1536 +A0.3 put 11% of
  * rank 0's CPU in page faults.  Pages are only advised, never
  * required: where the advice is unknown or refused the buffers are
- * ordinary memory.
+ * ordinary memory (core/hugepage.h, the advice lib/core gives too).
+ *
+ * A malloc of n floats (zeroed when zero is 1) that also succeeds (one
+ * float) for n == 0; from 2 MiB on, aligned on and advised to huge
+ * pages.  Freed with free.
  */
-#define HUGE_PAGE ((size_t)2 << 20)
-
-/* Asks for huge pages on the whole 2 MiB pages inside [p, p + bytes). */
-static void advise_huge(void *p, size_t bytes) {
-#ifdef MADV_HUGEPAGE
-  uintptr_t mask = (uintptr_t)(HUGE_PAGE - 1);
-  uintptr_t a = ((uintptr_t)p + mask) & ~mask;
-  uintptr_t e = ((uintptr_t)p + bytes) & ~mask;
-  if (e > a)
-    (void)madvise((void *)a, e - a, MADV_HUGEPAGE);
-#else
-  (void)p;
-  (void)bytes;
-#endif
-}
-
-/* A malloc of n floats (zeroed when zero is 1) that also succeeds (one
-   float) for n == 0; from 2 MiB on, aligned on and advised to huge
-   pages.  Freed with free. */
 static float *float_alloc(size_t n, int zero) {
-  if (n > (SIZE_MAX - HUGE_PAGE) / sizeof(float))
+  if (n > (SIZE_MAX - ZR__HUGE_PAGE) / sizeof(float))
     return NULL;
   size_t bytes = (n ? n : 1) * sizeof(float);
-  if (bytes < HUGE_PAGE)
+  if (bytes < ZR__HUGE_PAGE)
     return zero ? calloc(bytes, 1) : malloc(bytes);
-  bytes = (bytes + HUGE_PAGE - 1) & ~(HUGE_PAGE - 1);
+  bytes = (bytes + ZR__HUGE_PAGE - 1) & ~(ZR__HUGE_PAGE - 1);
   void *p = NULL;
-  if (posix_memalign(&p, HUGE_PAGE, bytes) != 0)
+  if (posix_memalign(&p, ZR__HUGE_PAGE, bytes) != 0)
     return NULL;
-  advise_huge(p, bytes);
+  zr__mem_advise_huge(p, bytes);
   if (zero)
     memset(p, 0, bytes);
   return p;
@@ -958,7 +943,7 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
     if (pr.image) {
       /* The picture (lib/image's) is still untouched here when it is
          fresh: its pages can still be huge ones. */
-      advise_huge(pr.image, image_floats * sizeof(float));
+      zr__mem_advise_huge(pr.image, image_floats * sizeof(float));
       memset(pr.image, 0, image_floats * sizeof(float));
     }
   }
