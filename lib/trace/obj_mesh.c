@@ -596,44 +596,35 @@ int zr__mesh_nearest(const struct zr_mesh *m, zr_vec3 org, zr_vec3 dir,
   double limit = tmax;
   const float tmin_f = zr__float_down(tmin);
   float limit_f = zr__float_up(limit);
-  /* e is the entry searched now: the nearest child met of the node
-     before, or the next on the stack (zr__wide_next_nearest_first). */
   zr_wide_entry stack[WIDE_STACK_MAX];
   int sp = 0;
-  zr_wide_entry e = {0, 0, tmin_f};
-  for (;;) {
-    if (!(e.t > limit)) {
-      if (e.count > 0) {
-        for (uint32_t f = e.child; f < e.child + e.count; f++) {
-          raw_hit h;
-          if (!face_hit(m, f, org, dir, &h.t, &h.u, &h.v) ||
-              !(h.t > tmin && h.t < tmax))
-            continue;
-          h.face = f;
-          if (!found || h.t < best.t ||
-              (h.t == best.t && h.face < best.face)) {
-            best = h;
-            found = true;
-            limit = h.t;
-            limit_f = zr__float_up(limit);
-          }
-        }
-      } else {
-        const zr_wide_node *w = &m->nodes[e.child].wide;
-        float t[ZR_WIDE_WIDTH];
-        unsigned mask = zr__slab_entries(w, &sr, tmin_f, limit_f, t);
-        /* The nearest child met is searched first and lowers the limit
-           for the others. */
-        if (mask) {
-          sp = zr__wide_next_nearest_first(w, mask, t, stack, sp,
-                                           WIDE_STACK_MAX, &e);
+  stack[sp++] = (zr_wide_entry){0, 0, tmin_f};
+  while (sp > 0) {
+    zr_wide_entry e = stack[--sp];
+    if (e.t > limit)
+      continue;
+    if (e.count > 0) {
+      for (uint32_t f = e.child; f < e.child + e.count; f++) {
+        raw_hit h;
+        if (!face_hit(m, f, org, dir, &h.t, &h.u, &h.v) ||
+            !(h.t > tmin && h.t < tmax))
           continue;
+        h.face = f;
+        if (!found || h.t < best.t || (h.t == best.t && h.face < best.face)) {
+          best = h;
+          found = true;
+          limit = h.t;
+          limit_f = zr__float_up(limit);
         }
       }
+      continue;
     }
-    if (sp == 0)
-      break;
-    e = stack[--sp];
+    const zr_wide_node *w = &m->nodes[e.child].wide;
+    float t[ZR_WIDE_WIDTH];
+    unsigned mask = zr__slab_entries(w, &sr, tmin_f, limit_f, t);
+    /* The nearest child met is searched first and lowers the limit for
+       the others. */
+    sp = zr__wide_push_nearest_first(w, mask, t, stack, sp, WIDE_STACK_MAX);
   }
   if (found)
     *out = finish_hit(m, &best);
@@ -689,8 +680,9 @@ static bool mesh_any(const struct zr_mesh *m, zr_vec3 org, zr_vec3 dir,
   const float tmin_f = zr__float_down(tmin), tmax_f = zr__float_up(tmax);
   zr_wide_entry stack[WIDE_STACK_MAX];
   int sp = 0;
-  zr_wide_entry e = {0, 0, tmin_f};
-  for (;;) {
+  stack[sp++] = (zr_wide_entry){0, 0, tmin_f};
+  while (sp > 0) {
+    zr_wide_entry e = stack[--sp];
     if (e.count > 0) {
       for (uint32_t f = e.child; f < e.child + e.count; f++)
         if (face_hit(m, f, org, dir, &out->t, &out->u, &out->v) &&
@@ -698,19 +690,12 @@ static bool mesh_any(const struct zr_mesh *m, zr_vec3 org, zr_vec3 dir,
           out->face = f;
           return true;
         }
-    } else {
-      const zr_wide_node *w = &m->nodes[e.child].wide;
-      float t[ZR_WIDE_WIDTH];
-      unsigned mask = zr__slab_entries(w, &sr, tmin_f, tmax_f, t);
-      if (mask) {
-        sp = zr__wide_next_in_order(w, mask, t, stack, sp, WIDE_STACK_MAX,
-                                    &e);
-        continue;
-      }
+      continue;
     }
-    if (sp == 0)
-      break;
-    e = stack[--sp];
+    const zr_wide_node *w = &m->nodes[e.child].wide;
+    float t[ZR_WIDE_WIDTH];
+    unsigned mask = zr__slab_entries(w, &sr, tmin_f, tmax_f, t);
+    sp = zr__wide_push_in_order(w, mask, t, stack, sp, WIDE_STACK_MAX);
   }
   return false;
 }
