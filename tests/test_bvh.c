@@ -18,6 +18,7 @@
 #include "scene/scene.h"
 #include "trace/prepare.h"
 #include "trace/bvh.h"
+#include "trace/bvh_wide.h"
 #include "trace/intersect.h"
 
 static double next_uniform(uint64_t *seed) {
@@ -462,6 +463,61 @@ static void test_bvh_crossings_match_intersect(void **state) {
   zr_scene_free(s);
 }
 
+/* The order a walk takes entries in: pops the stack until empty, with
+   first (when given) searched before anything on the stack. */
+static int walk_order(const zr_wide_entry *first, const zr_wide_entry *stack,
+                      int sp, uint32_t out[ZR_WIDE_WIDTH]) {
+  int n = 0;
+  if (first)
+    out[n++] = first->child;
+  while (sp > 0)
+    out[n++] = stack[--sp].child;
+  return n;
+}
+
+/*
+ * The walks search the first child met at once rather than pushing it
+ * (zr__wide_next_in_order, zr__wide_next_nearest_first): they must take
+ * the same children in the same order as pushing all of them did, so
+ * the crossings a shadow walk visits, and the nearest a search keeps on
+ * equal t, do not change.  Every mask of four children, with entry
+ * distances that tie and that do not.
+ */
+static void test_bvh_next_child_keeps_order(void **state) {
+  (void)state;
+  static const float dists[3][ZR_WIDE_WIDTH] = {
+      {0.5f, 0.25f, 2.0f, 1.0f}, {1.0f, 1.0f, 1.0f, 1.0f},
+      {3.0f, 0.5f, 0.5f, -1.0f}};
+  zr_wide_node w;
+  memset(&w, 0, sizeof w);
+  for (int c = 0; c < ZR_WIDE_WIDTH; c++) {
+    w.child[c] = 10u + (uint32_t)c;
+    w.count[c] = (uint16_t)c;
+  }
+  for (int d = 0; d < 3; d++)
+    for (unsigned mask = 1; mask < 16; mask++) {
+      for (int nearest = 0; nearest < 2; nearest++) {
+        zr_wide_entry a[8], b[8], next;
+        int sa = nearest ? zr__wide_push_nearest_first(&w, mask, dists[d],
+                                                       a, 0, 8)
+                         : zr__wide_push_in_order(&w, mask, dists[d], a, 0,
+                                                  8);
+        int sb = nearest ? zr__wide_next_nearest_first(&w, mask, dists[d],
+                                                       b, 0, 8, &next)
+                         : zr__wide_next_in_order(&w, mask, dists[d], b, 0,
+                                                  8, &next);
+        uint32_t oa[ZR_WIDE_WIDTH], ob[ZR_WIDE_WIDTH];
+        int na = walk_order(NULL, a, sa, oa);
+        int nb = walk_order(&next, b, sb, ob);
+        assert_int_equal(na, nb);
+        assert_int_equal(sb, sa - 1);
+        for (int k = 0; k < na; k++)
+          assert_int_equal(oa[k], ob[k]);
+        assert_int_equal(next.count, next.child - 10u);
+      }
+    }
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_bvh_nearest_matches_brute_force),
@@ -472,6 +528,7 @@ int main(void) {
       cmocka_unit_test(test_bvh_object_bounds),
       cmocka_unit_test(test_bvh_float_boxes_never_miss),
       cmocka_unit_test(test_bvh_crossings_match_intersect),
+      cmocka_unit_test(test_bvh_next_child_keeps_order),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

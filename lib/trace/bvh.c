@@ -589,15 +589,28 @@ void zr__bvh_get_info(const struct zr_bvh *bvh, zr_bvh_info *info) {
  * filter and order, but without the table call and the crossing list.
  * Spheres are most of what a sphereflake's rays test.
  */
-static int sphere_t(const zr_object *o, zr_vec3 centre, double r,
-                    const zr_ray *ray, double tmin, double tmax,
-                    zr_hit hits[ZR_MAX_CROSSINGS]) {
+/* A ray as the sphere test wants it, made once for a walk: its
+   direction's squared length, the quadratic's a, is the same for every
+   sphere the walk tests. */
+typedef struct sphere_ray {
+  zr_vec3 origin, dir;
+  double a;
+} sphere_ray;
+
+static inline void make_sphere_ray(const zr_ray *ray, sphere_ray *sr) {
+  sr->origin = ray->origin;
+  sr->dir = ray->dir;
+  sr->a = zr_v3_dot(ray->dir, ray->dir);
+}
+
+static inline int sphere_t(const zr_object *o, zr_vec3 centre, double r,
+                           const sphere_ray *ray, double tmin, double tmax,
+                           zr_hit hits[ZR_MAX_CROSSINGS]) {
   zr_vec3 oc = zr_v3_sub(ray->origin, centre);
-  double a = zr_v3_dot(ray->dir, ray->dir);
   double b = 2.0 * zr_v3_dot(ray->dir, oc);
   double c = zr_v3_dot(oc, oc) - r * r;
   double t[2];
-  if (zr__solve_quadratic(a, b, c, t) != 2)
+  if (zr__solve_quadratic(ray->a, b, c, t) != 2)
     return 0;
   int n = 0;
   for (int i = 0; i < 2; i++)
@@ -636,9 +649,12 @@ static int plane_t(const zr_object *o, const zr_ray *ray, double tmin,
 static inline int crossings_t(const zr_object *o, const zr_ray *ray,
                               double tmin, double tmax,
                               zr_hit hits[ZR_MAX_CROSSINGS]) {
-  if (plain_sphere(o))
-    return sphere_t(o, o->u.sphere.centre, o->u.sphere.radius, ray, tmin,
+  if (plain_sphere(o)) {
+    sphere_ray sr;
+    make_sphere_ray(ray, &sr);
+    return sphere_t(o, o->u.sphere.centre, o->u.sphere.radius, &sr, tmin,
                     tmax, hits);
+  }
   if (plain_plane(o))
     return plane_t(o, ray, tmin, tmax, hits);
   return zr__intersect_t(o, ray, tmin, tmax, hits);
@@ -662,18 +678,6 @@ static inline int first_crossing_t(const zr_object *o, const zr_ray *ray,
   return zr__intersect_first(o, ray, tmin, tmax, false, hits);
 }
 
-/* first_crossing_t of the bounded primitive i (in leaf order), a plain
-   sphere's from its leaf_sphere. */
-static inline int leaf_first_t(const struct zr_bvh *bvh, uint32_t i,
-                               const zr_ray *ray, double tmin, double tmax,
-                               zr_hit hits[ZR_MAX_CROSSINGS]) {
-  const leaf_sphere *s = &bvh->spheres[i];
-  if (s->radius == s->radius)
-    return sphere_t(bvh->prims[i], s->centre, s->radius, ray, tmin, tmax,
-                    hits);
-  return first_crossing_t(bvh->prims[i], ray, tmin, tmax, hits);
-}
-
 /* The nearest crossing without its normal. */
 static bool nearest_t(const struct zr_bvh *bvh, const zr_ray *ray,
                       double tmin, double tmax, zr_hit *hit) {
@@ -692,30 +696,46 @@ static bool nearest_t(const struct zr_bvh *bvh, const zr_ray *ray,
   /* The interval in floats that hold it: tmax_f follows tmax. */
   const float tmin_f = zr__float_down(tmin);
   float tmax_f = zr__float_up(tmax);
-  /* Children beyond a crossing found meanwhile are skipped unopened. */
+  sphere_ray sph;
+  make_sphere_ray(ray, &sph);
+  /* Children beyond a crossing found meanwhile are skipped unopened.
+     e is the entry searched now: the nearest child met of the node
+     before, or the next on the stack. */
   zr_wide_entry stack[WIDE_STACK_MAX];
   int sp = 0;
-  stack[sp++] = (zr_wide_entry){0, 0, tmin_f};
-  while (sp > 0) {
-    zr_wide_entry e = stack[--sp];
-    if (e.t >= tmax)
-      continue;
-    if (e.count > 0) {
-      for (uint32_t i = e.child; i < e.child + e.count; i++)
-        if (leaf_first_t(bvh, i, ray, tmin, tmax, h) > 0) {
-          *hit = h[0];
-          tmax = h[0].t;
-          tmax_f = zr__float_up(tmax);
-          found = true;
+  zr_wide_entry e = {0, 0, tmin_f};
+  for (;;) {
+    if (e.t < tmax) {
+      if (e.count > 0) {
+        for (uint32_t i = e.child; i < e.child + e.count; i++) {
+          const leaf_sphere *s = &bvh->spheres[i];
+          int n = s->radius == s->radius
+                      ? sphere_t(bvh->prims[i], s->centre, s->radius, &sph,
+                                 tmin, tmax, h)
+                      : first_crossing_t(bvh->prims[i], ray, tmin, tmax, h);
+          if (n > 0) {
+            *hit = h[0];
+            tmax = h[0].t;
+            tmax_f = zr__float_up(tmax);
+            found = true;
+          }
         }
-      continue;
+      } else {
+        const zr_wide_node *w = &bvh->wide[e.child];
+        float t[WIDTH];
+        unsigned mask = zr__slab_entries(w, &sr, tmin_f, tmax_f, t);
+        /* The nearest child met is searched first and shrinks tmax for
+           the others. */
+        if (mask) {
+          sp = zr__wide_next_nearest_first(w, mask, t, stack, sp,
+                                           WIDE_STACK_MAX, &e);
+          continue;
+        }
+      }
     }
-    const zr_wide_node *w = &bvh->wide[e.child];
-    float t[WIDTH];
-    unsigned mask = zr__slab_entries(w, &sr, tmin_f, tmax_f, t);
-    /* The nearest child met is searched first and shrinks tmax for the
-       others. */
-    sp = zr__wide_push_nearest_first(w, mask, t, stack, sp, WIDE_STACK_MAX);
+    if (sp == 0)
+      break;
+    e = stack[--sp];
   }
   return found;
 }
@@ -805,18 +825,19 @@ bool zr__bvh_all_blocked(const struct zr_bvh *bvh, const zr_ray *ray,
   zr_slab_ray sr;
   zr__make_slab_ray(ray, &sr);
   const float tmin_f = zr__float_down(tmin), tmax_f = zr__float_up(tmax);
+  sphere_ray sph;
+  make_sphere_ray(ray, &sph);
   /* Leaves are visited in the tree's left-to-right order: children are
-     pushed last to first. */
+     pushed last to first, the first searched at once (e). */
   zr_wide_entry stack[WIDE_STACK_MAX];
   int sp = 0;
-  stack[sp++] = (zr_wide_entry){0, 0, tmin_f};
-  while (sp > 0) {
-    zr_wide_entry e = stack[--sp];
+  zr_wide_entry e = {0, 0, tmin_f};
+  for (;;) {
     if (e.count > 0) {
       for (uint32_t i = e.child; i < e.child + e.count; i++) {
         const leaf_sphere *s = &bvh->spheres[i];
         int n = s->radius == s->radius
-                    ? sphere_t(bvh->prims[i], s->centre, s->radius, ray,
+                    ? sphere_t(bvh->prims[i], s->centre, s->radius, &sph,
                                tmin, tmax, h)
                     : walk_crossings_t(bvh->prims[i], ray, tmin, tmax,
                                        blocks, user, h);
@@ -824,12 +845,19 @@ bool zr__bvh_all_blocked(const struct zr_bvh *bvh, const zr_ray *ray,
           if (!visit(&h[k], user))
             return false;
       }
-      continue;
+    } else {
+      const zr_wide_node *w = &bvh->wide[e.child];
+      float t[WIDTH];
+      unsigned mask = zr__slab_entries(w, &sr, tmin_f, tmax_f, t);
+      if (mask) {
+        sp = zr__wide_next_in_order(w, mask, t, stack, sp, WIDE_STACK_MAX,
+                                    &e);
+        continue;
+      }
     }
-    const zr_wide_node *w = &bvh->wide[e.child];
-    float t[WIDTH];
-    unsigned mask = zr__slab_entries(w, &sr, tmin_f, tmax_f, t);
-    sp = zr__wide_push_in_order(w, mask, t, stack, sp, WIDE_STACK_MAX);
+    if (sp == 0)
+      break;
+    e = stack[--sp];
   }
   return true;
 }

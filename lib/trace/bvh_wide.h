@@ -122,6 +122,11 @@ typedef struct zr_slab_ray {
   float org[3], inv[3];
   float org_pad[3]; /* 2^-19 |org| |inv| */
   float ext_pad[3]; /* 2^-19 |inv|, times a node's extent */
+#ifdef __SSE2__
+  /* The same four times over, one row an axis, so the SSE test loads
+     its operands rather than broadcasting them at every node. */
+  __m128 org4[3], inv4[3], org_pad4[3], ext_pad4[3];
+#endif
 } zr_slab_ray;
 
 static inline void zr__make_slab_ray(const zr_ray *ray, zr_slab_ray *s) {
@@ -135,6 +140,12 @@ static inline void zr__make_slab_ray(const zr_ray *ray, zr_slab_ray *s) {
     double scale = 0x1p-19 * fabs((double)inv);
     s->org_pad[a] = (float)(scale * fabs(o[a]));
     s->ext_pad[a] = (float)scale;
+#ifdef __SSE2__
+    s->org4[a] = _mm_set1_ps(s->org[a]);
+    s->inv4[a] = _mm_set1_ps(s->inv[a]);
+    s->org_pad4[a] = _mm_set1_ps(s->org_pad[a]);
+    s->ext_pad4[a] = _mm_set1_ps(s->ext_pad[a]);
+#endif
   }
 }
 
@@ -158,9 +169,11 @@ static inline unsigned zr__slab_entries(const zr_wide_node *w, const zr_slab_ray
                                     float t[ZR_WIDE_WIDTH]) {
 #ifdef __SSE2__
   __m128 t0 = _mm_set1_ps(tmin), t1 = _mm_set1_ps(tmax);
+  __m128 extent = _mm_set1_ps(w->extent);
   for (int a = 0; a < 3; a++) {
-    __m128 org = _mm_set1_ps(r->org[a]), inv = _mm_set1_ps(r->inv[a]);
-    __m128 pad = _mm_set1_ps(r->org_pad[a] + r->ext_pad[a] * w->extent);
+    __m128 org = r->org4[a], inv = r->inv4[a];
+    __m128 pad = _mm_add_ps(r->org_pad4[a],
+                            _mm_mul_ps(r->ext_pad4[a], extent));
     __m128 ta = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(w->lo[a]), org), inv);
     __m128 tb = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(w->hi[a]), org), inv);
     __m128 near = _mm_sub_ps(_mm_min_ps(ta, tb), pad);
@@ -238,6 +251,59 @@ static inline int zr__wide_push_nearest_first(const zr_wide_node *w,
     met[k] = x;
   }
   for (int k = n - 1; k >= 0 && sp < cap; k--)
+    stack[sp++] = met[k];
+  return sp;
+}
+
+/*
+ * The two pushes above without the round trip through the stack of the
+ * child that would be popped at once: mask (not 0) names the children
+ * met; the one the walk searches next is written to *next and the
+ * others are pushed as the push above would push them, so the walk
+ * visits the same children in the same order.  Most nodes a ray opens
+ * have one child met, which then costs no push or pop at all.
+ */
+static inline int zr__wide_next_in_order(const zr_wide_node *w,
+                                         unsigned mask,
+                                         const float t[ZR_WIDE_WIDTH],
+                                         zr_wide_entry *stack, int sp,
+                                         int cap, zr_wide_entry *next) {
+  int first = __builtin_ctz(mask);
+  *next = (zr_wide_entry){w->child[first], w->count[first], t[first]};
+  mask &= mask - 1;
+  while (mask && sp < cap) {
+    int c = 31 - __builtin_clz(mask);
+    stack[sp++] = (zr_wide_entry){w->child[c], w->count[c], t[c]};
+    mask &= ~(1u << c);
+  }
+  return sp;
+}
+
+static inline int zr__wide_next_nearest_first(const zr_wide_node *w,
+                                              unsigned mask,
+                                              const float t[ZR_WIDE_WIDTH],
+                                              zr_wide_entry *stack, int sp,
+                                              int cap,
+                                              zr_wide_entry *next) {
+  if (!(mask & (mask - 1))) { /* one child */
+    int c = __builtin_ctz(mask);
+    *next = (zr_wide_entry){w->child[c], w->count[c], t[c]};
+    return sp;
+  }
+  zr_wide_entry met[ZR_WIDE_WIDTH];
+  int n = 0;
+  for (; mask; mask &= mask - 1) {
+    int c = __builtin_ctz(mask);
+    zr_wide_entry x = {w->child[c], w->count[c], t[c]};
+    int k = n++;
+    while (k > 0 && met[k - 1].t > x.t) {
+      met[k] = met[k - 1];
+      k--;
+    }
+    met[k] = x;
+  }
+  *next = met[0];
+  for (int k = n - 1; k >= 1 && sp < cap; k--)
     stack[sp++] = met[k];
   return sp;
 }

@@ -108,9 +108,17 @@ static zr_vec3 unit_or(zr_vec3 v, zr_vec3 fallback) {
 bool zr__camera_project(const zr_camera *c, double u, double v,
                         zr_ray *ray) {
   zr_vec3 o = c->location, d;
-  zr_vec3 dn = unit_or(c->direction, zr_v3(0, 0, 1));
-  zr_vec3 rn = unit_or(c->right, zr_v3(1, 0, 0));
-  zr_vec3 un = unit_or(c->up, zr_v3(0, 1, 0));
+  /* The unit frame only for the cameras that bend their rays by angles:
+     three square roots a pixel that the perspective and orthographic
+     cameras never use (1.5% of bench/peers.sh's sphereflake). */
+  zr_vec3 dn = zr_v3(0, 0, 1), rn = zr_v3(1, 0, 0), un = zr_v3(0, 1, 0);
+  if (c->kind == ZR_CAMERA_FISHEYE || c->kind == ZR_CAMERA_OMNIMAX ||
+      c->kind == ZR_CAMERA_ULTRA_WIDE_ANGLE ||
+      c->kind == ZR_CAMERA_CYLINDER || c->kind == ZR_CAMERA_SPHERICAL) {
+    dn = unit_or(c->direction, dn);
+    rn = unit_or(c->right, rn);
+    un = unit_or(c->up, un);
+  }
   double h = c->h_angle * DEG, va = c->v_angle * DEG;
   switch (c->kind) {
   case ZR_CAMERA_ORTHOGRAPHIC:
