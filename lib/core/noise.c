@@ -74,6 +74,18 @@ unsigned zr__noise_hash(int64_t x, int64_t y, int64_t z, int offset) {
   return noise_hash[noise_hash[noise_hash[a] ^ b] ^ c];
 }
 
+void zr__noise_hash_block(int64_t x, int64_t y, int64_t z, int offset,
+                          int reach, unsigned *out) {
+  for (int64_t i = -reach; i <= reach; i++) {
+    unsigned hx = noise_hash[(unsigned)((x + i + offset) & 4095)];
+    for (int64_t j = -reach; j <= reach; j++) {
+      unsigned hxy = noise_hash[hx ^ (unsigned)((y + j + offset) & 4095)];
+      for (int64_t k = -reach; k <= reach; k++)
+        *out++ = noise_hash[hxy ^ (unsigned)((z + k + offset) & 4095)];
+    }
+  }
+}
+
 static unsigned lattice_hash(int64_t x, int64_t y, int64_t z) {
   return zr__noise_hash(x, y, z, NOISE_HASH_OFFSET) & 255u;
 }

@@ -14,6 +14,11 @@ double zr__noise_lattice(zr_vec3 p);
 /* The 12-bit lattice hash of the cell (x, y, z) with the coordinates
    moved by offset (the noise's and crackle's differ). */
 unsigned zr__noise_hash(int64_t x, int64_t y, int64_t z, int offset);
+/* zr__noise_hash of the (2 reach + 1)^3 cells (x + i, y + j, z + k),
+   i, j, k from -reach to reach, into out in that order (k fastest):
+   the same values, with the lookups the cells share made once. */
+void zr__noise_hash_block(int64_t x, int64_t y, int64_t z, int offset,
+                          int reach, unsigned *out);
 /* Turbulence's vector noise at p, each component in about [-1, 1]. */
 zr_vec3 zr__dnoise_lattice(zr_vec3 p);
 /* noise_generator 3's noise at p, about [0.1, 0.9]. */
