@@ -318,6 +318,20 @@ static void walk_leaf(hf_search *s, int i0, int i1, int j0, int j1,
   }
 }
 
+/* The most leaf blocks a ray's crossing of the slab of heights may
+   cover for them to be tested without the descent. */
+#define FEW_BLOCKS 16
+
+/* The search's crossings into t[] and, when asked, normal[]. */
+static int found(const hf_search *s, double t[4], zr_vec3 normal[4]) {
+  for (int k = 0; k < s->n; k++) {
+    t[k] = s->t[k];
+    if (normal)
+      normal[k] = crossing_normal(s, k);
+  }
+  return s->n;
+}
+
 /*
  * The nearest max_found crossings (1, or 2 for anything more), normals
  * only when normal is not NULL (shape.h's search_upto).  With one
@@ -345,6 +359,57 @@ static int hf_search_upto(const zr_object *o, zr_vec3 org, zr_vec3 dir,
     s.flat[k] = d3[k] == 0.0;
     s.inv[k] = s.flat[k] ? 0.0 : 1.0 / d3[k];
   }
+  /* Boxes grow by this much: the ranges are floats, the samples
+     doubles. */
+  const double pad = 1e-6;
+  /* A ray that crosses the field's slab of heights over a few leaf
+     blocks (a sample ray leaving the surface, steep in the unit square
+     of a wide field) tests those blocks alone: the descent from the
+     root tested four boxes a level on the way down to them
+     (pneumaticBoat's sand: 21 box tests a ray, 4 million rays).  The
+     crossings are the same whatever order the blocks are tested in:
+     each keeps the nearest. */
+  {
+    double out;
+    double in = box_entry(&s, zr_v3(-pad, g->lo - pad, -pad),
+                          zr_v3(1 + pad, g->hi + pad, 1 + pad), &out);
+    if (in == INFINITY)
+      return 0;
+    double side_x = ZR_HF_BLOCK * s.dx, side_z = ZR_HF_BLOCK * s.dz;
+    double xa = org.x + in * dir.x, xb = org.x + out * dir.x;
+    double za = org.z + in * dir.z, zb = org.z + out * dir.z;
+    double fx0 = floor((fmin(xa, xb) - pad) / side_x);
+    double fx1 = floor((fmax(xa, xb) + pad) / side_x);
+    double fz0 = floor((fmin(za, zb) - pad) / side_z);
+    double fz1 = floor((fmax(za, zb) + pad) / side_z);
+    int nx = g->level[0].nx, nz = g->level[0].nz;
+    fx0 = fmax(fx0, 0.0), fz0 = fmax(fz0, 0.0);
+    fx1 = fmin(fx1, nx - 1.0), fz1 = fmin(fz1, nz - 1.0);
+    if ((fx1 - fx0 + 1.0) * (fz1 - fz0 + 1.0) <= FEW_BLOCKS) {
+      int bx0 = (int)fx0, bx1 = (int)fx1, bz0 = (int)fz0, bz1 = (int)fz1;
+      for (int bz = bz0; bz <= bz1; bz++)
+        for (int bx = bx0; bx <= bx1; bx++) {
+          /* Nearest first along each axis, as the descent goes. */
+          int cx = dir.x >= 0.0 ? bx : bx0 + bx1 - bx;
+          int cz = dir.z >= 0.0 ? bz : bz0 + bz1 - bz;
+          const float *r = g->range + 2 * (g->level[0].start +
+                                           (size_t)cz * (size_t)nx +
+                                           (size_t)cx);
+          if (r[1] < water)
+            continue;
+          int i0 = cx * ZR_HF_BLOCK, j0 = cz * ZR_HF_BLOCK;
+          int i1 = i0 + ZR_HF_BLOCK < g->w - 1 ? i0 + ZR_HF_BLOCK : g->w - 1;
+          int j1 = j0 + ZR_HF_BLOCK < g->h - 1 ? j0 + ZR_HF_BLOCK : g->h - 1;
+          zr_vec3 lo = zr_v3(i0 * s.dx - pad, r[0] - pad, j0 * s.dz - pad);
+          zr_vec3 hi = zr_v3(i1 * s.dx + pad, r[1] + pad, j1 * s.dz + pad);
+          double exit;
+          double ta = box_entry(&s, lo, hi, &exit);
+          if (ta != INFINITY)
+            walk_leaf(&s, i0, i1, j0, j1, ta, exit);
+        }
+      return found(&s, t, normal);
+    }
+  }
   /* Blocks as (level, bx, bz); children are pushed far first so that
      the nearest is walked first and the second crossing found early
      narrows the rest. */
@@ -355,9 +420,6 @@ static int hf_search_upto(const zr_object *o, zr_vec3 org, zr_vec3 dir,
   stack[sp].level = g->levels - 1;
   stack[sp].bx = stack[sp].bz = 0;
   sp++;
-  /* Boxes grow by this much: the ranges are floats, the samples
-     doubles. */
-  const double pad = 1e-6;
   int near_x = dir.x >= 0.0 ? 0 : 1, near_z = dir.z >= 0.0 ? 0 : 1;
   while (sp > 0) {
     sp--;
@@ -393,12 +455,7 @@ static int hf_search_upto(const zr_object *o, zr_vec3 org, zr_vec3 dir,
       }
     }
   }
-  for (int k = 0; k < s.n; k++) {
-    t[k] = s.t[k];
-    if (normal)
-      normal[k] = crossing_normal(&s, k);
-  }
-  return s.n;
+  return found(&s, t, normal);
 }
 
 int zr__height_field_crossings(const zr_object *o, zr_vec3 org,
