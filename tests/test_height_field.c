@@ -261,6 +261,81 @@ static void test_height_field_hierarchy_vs_brute(void **state) {
   }
 }
 
+/* The nearest-surface search (zr__intersect_first: the first crossing
+   alone, with or without its normal, the walk stopping there and at
+   each leaf block's box) finds the two-crossing search's first
+   crossing and normal, smooth or not, on a nearly flat field like
+   pneumaticBoat's sand (heights 0.5 to 0.525), for rays from above,
+   nearly level ones and rays leaving the surface upwards. */
+static void test_height_field_first_vs_two(void **state) {
+  (void)state;
+  enum { W = 300, H = 260 };
+  zr_arena arena;
+  zr__arena_init(&arena);
+  float *codes = zr__arena_alloc(&arena, (size_t)W * H * sizeof *codes);
+  assert_non_null(codes);
+  uint64_t seed = 777;
+  for (size_t k = 0; k < (size_t)W * H; k++) {
+    seed = seed * 6364136223846793005ull + 1442695040888963407ull;
+    codes[k] = (float)(0.5 + 0.025 * (double)(seed >> 11) /
+                                 9007199254740992.0);
+  }
+  const struct zr_hf_grid *grid = NULL;
+  assert_int_equal(zr__height_field_grid(&arena, codes, 32, W, H, &grid),
+                   ZR_OK);
+  int hits = 0, up = 0;
+  for (int smooth = 0; smooth < 2; smooth++) {
+    zr_object o;
+    memset(&o, 0, sizeof o);
+    o.kind = ZR_OBJ_HEIGHT_FIELD;
+    o.u.height_field.grid = grid;
+    o.u.height_field.w = W;
+    o.u.height_field.h = H;
+    o.u.height_field.smooth = smooth;
+    for (int k = 0; k < 4000; k++) {
+      double q[6];
+      for (int m = 0; m < 6; m++) {
+        seed = seed * 6364136223846793005ull + 1442695040888963407ull;
+        q[m] = (double)(seed >> 11) / 9007199254740992.0;
+      }
+      zr_vec3 org = zr_v3(q[0], 0.6 + q[1], q[2]);
+      zr_vec3 dir = zr_v3_sub(zr_v3(q[3], 0.5 + 0.025 * q[4], q[5]), org);
+      if (k % 3 == 1) /* nearly level, through the slab */
+        org.y = 0.5125 + 0.02 * (q[1] - 0.5), dir.y = 0.01 * (q[4] - 0.5);
+      if (k % 3 == 2) {
+        /* From just above the surface, up at an angle or nearly level:
+           the sample rays of a radiosity record. */
+        double hgt = zr__height_field_height(&o, q[0], q[2]);
+        org = zr_v3(q[0], hgt + 1e-7, q[2]);
+        dir = zr_v3(q[3] - 0.5, 0.002 + 0.05 * q[4], q[5] - 0.5);
+      }
+      double t[4];
+      zr_vec3 n[4];
+      int found =
+          zr__height_field_crossings(&o, org, dir, 0.0, INFINITY, t, n);
+      zr_ray ray = {org, dir};
+      zr_hit a[ZR_MAX_CROSSINGS], b[ZR_MAX_CROSSINGS];
+      int na = zr__intersect_first(&o, &ray, 0.0, INFINITY, false, a);
+      int nb = zr__intersect_first(&o, &ray, 0.0, INFINITY, true, b);
+      assert_int_equal(na, found > 0);
+      assert_int_equal(nb, found > 0);
+      if (found == 0)
+        continue;
+      hits++;
+      up += k % 3 == 2;
+      assert_true(a[0].t == t[0]);
+      assert_true(b[0].t == t[0]);
+      zr_vec3 want = zr_v3_norm(n[0]);
+      assert_near(b[0].normal.x, want.x, 1e-12);
+      assert_near(b[0].normal.y, want.y, 1e-12);
+      assert_near(b[0].normal.z, want.z, 1e-12);
+    }
+  }
+  assert_true(hits > 3000);
+  assert_true(up > 300);
+  zr__arena_free(&arena);
+}
+
 #define TEST(fn) cmocka_unit_test_setup_teardown(fn, setup, teardown)
 
 int main(void) {
@@ -271,6 +346,7 @@ int main(void) {
       TEST(test_height_field_bad_input),
       TEST(test_height_field_hf_gray_16),
       cmocka_unit_test(test_height_field_hierarchy_vs_brute),
+      cmocka_unit_test(test_height_field_first_vs_two),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
