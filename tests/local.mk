@@ -325,3 +325,8 @@ EXTRA_DIST += tests/legacy/csg_shared_face.pov \
 TESTS += tests/test_no_bump_scale.sh
 EXTRA_DIST += tests/test_no_bump_scale.sh tests/no_bump_scale.pov
 EXTRA_DIST += tests/legacy/macro_arg_colour.pov
+# When a photon branch is dropped (povray's measured bailout rule) and
+# photons shot from a far light at a curved target: povray's counts.
+TESTS += tests/test_photon_bailout.sh
+EXTRA_DIST += tests/test_photon_bailout.sh bench/photon_bailout.pov \
+	bench/photon_bailout.sh
