@@ -328,3 +328,8 @@ EXTRA_DIST += tests/legacy/macro_arg_colour.pov
 
 TESTS += tests/test_isosurface_nan.sh
 EXTRA_DIST += tests/test_isosurface_nan.sh tests/isosurface_nan.pov
+# When a photon branch is dropped (povray's measured bailout rule) and
+# photons shot from a far light at a curved target: povray's counts.
+TESTS += tests/test_photon_bailout.sh
+EXTRA_DIST += tests/test_photon_bailout.sh bench/photon_bailout.pov \
+	bench/photon_bailout.sh

@@ -45,8 +45,17 @@
  * been reflected or refracted: the light that arrives straight from a
  * light is the light sources' business.  Its path ends after the
  * photons' max_trace_level (the scene's by default; the ray from the
- * light is the first level) or when its
- * strength falls below adc_bailout.  Photon rays do not see no_image
+ * light is the first level) or when it falls below the photons'
+ * adc_bailout by povray 3.7's measured rule (bench/photon_bailout.sh):
+ * a branch is kept while S max(C) >= adc_bailout, where C is its colour
+ * relative to what it left the light with (every reflection amount,
+ * metallic tint included, and every filter met: a clear slab counts its
+ * transmit at both faces) and S the product of its reflections' weights
+ * (the larger of the reflection block's min and max colours' largest
+ * channel; with fresnel, the amount at the angle without the metallic
+ * tint).  So a single plain mirror of reflection R keeps its photons
+ * only when R^2 >= adc_bailout (R >= 0.0627 at the default 1/255),
+ * whatever the light's colour.  Photon rays do not see no_image
  * objects (povray 3.7 shows neither a caustic nor a photon shadow
  * behind a no_image target lens).
  *
@@ -122,6 +131,8 @@ typedef struct shooter {
   zr_vec3 target_lo, target_hi;
   int max_level;
   double bailout;
+  zr_rgb start; /* the power of the photon being followed at the light */
+  double refind; /* 1 + the target box's diagonal (refind_hit) */
   unsigned long long shot; /* photons that left a light */
   bool full; /* PHOTONS_MAX reached */
   bool oom;
@@ -166,6 +177,34 @@ static void store(shooter *sh, zr_vec3 p, zr_vec3 d, zr_rgb power) {
 
 static double rgb_max3(zr_rgb c) { return fmax(c.r, fmax(c.g, c.b)); }
 
+/* Whether a photon branch of power w whose reflections' weights
+   multiply to s goes on: povray 3.7's rule, measured by
+   bench/photon_bailout.sh (the module's essay gives it). */
+static bool branch_kept(const shooter *sh, zr_rgb w, double s) {
+  double rel = 0.0;
+  if (sh->start.r > 0.0)
+    rel = fmax(rel, w.r / sh->start.r);
+  if (sh->start.g > 0.0)
+    rel = fmax(rel, w.g / sh->start.g);
+  if (sh->start.b > 0.0)
+    rel = fmax(rel, w.b / sh->start.b);
+  return s * rel >= sh->bailout;
+}
+
+/* The weight a reflection by finish f adds to a photon branch's
+   bailout test: the largest channel of the larger of the reflection
+   block's colours, or with fresnel of the amount at the angle (no
+   metallic tint in either).  Measured, bench/photon_bailout.sh. */
+static double reflection_weight(const zr_finish *f, zr_vec3 d, zr_vec3 n,
+                                double n1, double n2) {
+  zr_rgb lo = f->reflection, hi = f->reflection_max;
+  if (!f->reflection_fresnel)
+    return fmax(rgb_max3(lo), rgb_max3(hi));
+  double w = zr__fresnel(fmin(1.0, fabs(zr_v3_dot(d, n))), n1, n2);
+  return rgb_max3(zr_rgb3(lo.r + (hi.r - lo.r) * w, lo.g + (hi.g - lo.g) * w,
+                          lo.b + (hi.b - lo.b) * w));
+}
+
 /* The nearest surface a photon ray meets (no_image objects unseen). */
 static bool photon_hit(const shooter *sh, const zr_ray *ray, zr_hit *hit) {
   double from = 0.0;
@@ -192,15 +231,39 @@ static bool is_shot_target(const shooter *sh, const zr_object *o) {
 }
 
 /*
+ * Finds a photon's first hit on its target again from near it.  The
+ * light may be far away (the benchmark's is 150000 units off), and a
+ * curved surface's hit found from there is off the surface by about
+ * 1e-16 t^2 / size (the sphere's discriminant loses the digits): a
+ * few 1e-6 there, 100 times zr__surface_offset, so the reflected
+ * photon started inside the ring or ball and bounced on inside it,
+ * stored at each bounce (a metal ball stored as many photons as were
+ * shot at it, povray a sixth as many).  *hit, *p (the hit point) and
+ * *d_total (distance from the light) are replaced when the new search
+ * meets the target.
+ */
+static void refind_hit(const shooter *sh, const zr_ray *ray, zr_hit *hit,
+                       zr_vec3 *p, double *d_total) {
+  zr_ray near = {zr_v3_madd(*p, ray->dir, -sh->refind), ray->dir};
+  zr_hit again;
+  if (!photon_hit(sh, &near, &again) || !is_shot_target(sh, again.object))
+    return;
+  *d_total += again.t - sh->refind;
+  *p = zr_v3_madd(near.origin, ray->dir, again.t);
+  *hit = again;
+}
+
+/*
  * Follows one photon from origin along unit dir.  power is what it
  * carries per unit of flux (the light's colour times the filters met so
  * far), flux the solid angle (point light: times D^2 when stored) or the
  * area (parallel light) it stands for, path the distance it travelled,
- * bounced whether it was reflected or refracted, level its depth.
+ * bounced whether it was reflected or refracted, level its depth, s the
+ * product of its reflections' weights (branch_kept).
  */
 static void follow(shooter *sh, zr_vec3 origin, zr_vec3 dir, zr_rgb power,
                    double flux, bool parallel, double path, bool bounced,
-                   int level, const zr_media *media) {
+                   int level, const zr_media *media, double s) {
   const zr_light *light = sh->light;
   for (int passes = 0; passes < ZR_PASS_MAX; passes++) {
     zr_ray ray = {origin, dir};
@@ -228,6 +291,10 @@ static void follow(shooter *sh, zr_vec3 origin, zr_vec3 dir, zr_rgb power,
        their overlap as one slab does, not twice (bench/photon_targets.sh). */
     if (!bounced && !is_shot_target(sh, o))
       return;
+    if (!bounced && hit.t > 2.0 * sh->refind)
+      refind_hit(sh, &ray, &hit, &p, &d_total);
+    o = hit.object;
+    po = o->photons;
     if (bounced && (!po || po->collect)) {
       double area = parallel ? flux : flux * d_total * d_total;
       double k = area * zr__light_fade(light, d_total);
@@ -292,21 +359,22 @@ static void follow(shooter *sh, zr_vec3 origin, zr_vec3 dir, zr_rgb power,
       if (n1 != n2 && !zr__refract(dir, n, n1 / n2, &refr)) {
         /* Total internal reflection: the light stays inside. */
         zr_rgb w = zr_rgb_mul(power, trans);
-        if (rgb_max3(w) > sh->bailout)
+        if (branch_kept(sh, w, s))
           follow(sh, above, mirror, w, flux, parallel, d_total, true,
-                 level + 1, media);
+                 level + 1, media, s);
       } else {
         zr_rgb w = zr_rgb_mul(power, trans);
-        if (rgb_max3(w) > sh->bailout)
+        if (branch_kept(sh, w, s))
           follow(sh, below, refr, w, flux, parallel, d_total, true,
-                 level + 1, &next);
+                 level + 1, &next, s);
       }
     }
     if (rgb_max3(refl) > 0.0) {
       zr_rgb w = zr_rgb_mul(power, refl);
-      if (rgb_max3(w) > sh->bailout)
+      double s_refl = s * reflection_weight(f, dir, n, n1, n2);
+      if (branch_kept(sh, w, s_refl))
         follow(sh, above, mirror, w, flux, parallel, d_total, true,
-               level + 1, media);
+               level + 1, media, s_refl);
     }
     return;
   }
@@ -416,9 +484,10 @@ static void shoot_pair(shooter *sh, uint32_t li, uint32_t ti, zr_vec3 c,
       if (!(cone > 0.0))
         continue;
       sh->shot++;
+      sh->start = zr_rgb_scale(colour, cone);
       if (meets_target_box(sh, origin, w))
-        follow(sh, origin, w, zr_rgb_scale(colour, cone), cell, true, 0.0,
-               false, 0, NULL);
+        follow(sh, origin, w, sh->start, cell, true, 0.0, false, 0, NULL,
+               1.0);
     }
     return;
   }
@@ -451,9 +520,10 @@ static void shoot_pair(shooter *sh, uint32_t li, uint32_t ti, zr_vec3 c,
     if (!(cone > 0.0))
       continue;
     sh->shot++;
+    sh->start = zr_rgb_scale(colour, cone);
     if (meets_target_box(sh, l->location, dir))
-      follow(sh, l->location, dir, zr_rgb_scale(colour, cone), omega,
-             false, 0.0, false, 0, NULL);
+      follow(sh, l->location, dir, sh->start, omega, false, 0.0, false, 0,
+             NULL, 1.0);
   }
 }
 
@@ -690,6 +760,7 @@ zr_status zr__photons_build(zr_scene *scene, zr_context *ctx) {
           !zr__object_bounds(o, &sh.target_lo, &sh.target_hi))
         continue;
       sh.target = o;
+      sh.refind = 1.0 + zr_v3_len(zr_v3_sub(sh.target_hi, sh.target_lo));
       shoot_pair(&sh, (uint32_t)li, (uint32_t)ti, c, r,
                  spacing * o->photons->spacing);
     }
