@@ -58,4 +58,9 @@ plane {
     texture { G } interior { ior 1.5 }
   }
 #break
+#case (8) // two copies of one declared object, overlapping
+  #declare S = sphere { 0, 1 texture { G } interior { ior 1.5 } }
+  object { S translate <-0.3, 0, 0> }
+  object { S translate <0.4, 0, 0.8> }
+#break
 #end

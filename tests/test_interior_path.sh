@@ -18,7 +18,9 @@
 #  5 a union, 6 a merge, whose parts have interiors of their own: in
 #    again (deciding by the merge object, as the path did, went out);
 #  7 a union of two overlapping closed spheres with one interior: out
-#    where the ray meets the second from inside the first (255 off).
+#    where the ray meets the second from inside the first (255 off);
+#  8 the same spheres as two copies of one declared sphere: two
+#    interiors, in again (copies shared the interior: 255 off).
 #
 # Environment: ZR_SRCDIR, ZR_BUILDDIR (set by `make check`).
 set -u
@@ -30,4 +32,5 @@ recorded_4="0,5=255,255,255 3,2=255,255,255 5,2=255,255,255 7,3=255,255,255 8,13
 recorded_5="0,5=255,255,255 3,2=255,255,255 5,2=255,255,255 7,3=255,255,255 8,13=89,149,231 11,10=89,149,231"
 recorded_6="0,5=255,255,255 3,2=255,255,255 5,2=255,255,255 7,3=255,255,255 8,13=89,149,231 11,10=89,149,231"
 recorded_7="0,3=255,255,255 3,4=89,149,231 5,5=255,255,255 7,5=255,255,255 9,4=255,255,255 11,8=0,0,0"
-pixel_cases "$srcdir/tests/interior_path.pov" Case "1 2 3 4 5 6 7"
+recorded_8="0,3=0,0,0 3,4=0,0,0 5,5=0,0,0 7,5=0,0,0 9,4=89,149,231 11,8=255,255,255"
+pixel_cases "$srcdir/tests/interior_path.pov" Case "1 2 3 4 5 6 7 8"
