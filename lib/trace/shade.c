@@ -808,7 +808,16 @@ static const zr_interior *stretch_interior(const zr_scene *scene,
                                            const zr_media *media,
                                            const zr_object *part) {
   int i = held_at(media, part, scene->default_interior);
-  return i < 0 ? NULL : media->interiors[i];
+  if (i < 0)
+    return NULL;
+  /* A union of flat parts (no inside) left by another part than the one
+     it was entered by is not faded: fading there took the corpus'
+     diamond.pov (fade_distance 1, fade_power 1001) from SSIM 0.827 to
+     0.795; how povray fades such a union is not measured further. */
+  const zr_object *solid = part->solid ? part->solid : part;
+  if (!zr__has_inside(solid) && media->objects[i] != solid)
+    return NULL;
+  return media->interiors[i];
 }
 
 zr_rgb zr__exit_fade(const zr_scene *scene, const zr_media *media,
