@@ -333,3 +333,5 @@ EXTRA_DIST += tests/test_isosurface_nan.sh tests/isosurface_nan.pov
 TESTS += tests/test_photon_bailout.sh
 EXTRA_DIST += tests/test_photon_bailout.sh bench/photon_bailout.pov \
 	bench/photon_bailout.sh
+TESTS += tests/test_interior_path.sh
+EXTRA_DIST += tests/test_interior_path.sh tests/interior_path.pov

@@ -119,7 +119,51 @@ static size_t children_room(size_t n) {
   return n ? room : 0;
 }
 
+/*
+ * The interiors of one object tree being copied, each with its copy.
+ * Every copy of an object has interiors of its own, shared within the
+ * copy as in the original (a merge's interior handed down to its
+ * parts): a ray's path of media holds interiors (lib/trace/shade.c
+ * zr__media_cross), and povray 3.7 refracts two overlapping copies of
+ * one declared glass sphere as two objects, going into the second
+ * inside the first (tests/test_interior_path.sh, case 8).  A tree with
+ * more distinct interiors than the map holds shares the rest.
+ */
+#define COPY_INTERIORS 32
+typedef struct interior_map {
+  const zr_interior *from[COPY_INTERIORS];
+  const zr_interior *to[COPY_INTERIORS];
+  int n;
+} interior_map;
+
+static const zr_interior *copy_interior(zr_sdl_parser *p, interior_map *map,
+                                        const zr_interior *in) {
+  if (!in)
+    return NULL;
+  for (int i = 0; i < map->n; i++)
+    if (map->from[i] == in)
+      return map->to[i];
+  if (map->n == COPY_INTERIORS)
+    return in;
+  zr_interior *copy = zr__sdl_interior_new(p, in);
+  if (!copy)
+    return NULL;
+  map->from[map->n] = in;
+  map->to[map->n++] = copy;
+  return copy;
+}
+
+static zr_object *copy_tree(zr_sdl_parser *p, const zr_object *o,
+                            interior_map *map);
+
 zr_object *zr__sdl_object_copy(zr_sdl_parser *p, const zr_object *o) {
+  interior_map map;
+  map.n = 0;
+  return copy_tree(p, o, &map);
+}
+
+static zr_object *copy_tree(zr_sdl_parser *p, const zr_object *o,
+                            interior_map *map) {
   size_t size = zr__object_size(o->kind);
   zr_object *copy = zr__sdl_alloc(p, size);
   if (!copy)
@@ -138,6 +182,8 @@ zr_object *zr__sdl_object_copy(zr_sdl_parser *p, const zr_object *o) {
     return NULL;
   if (o->bound && !(copy->bound = zr__sdl_object_copy(p, o->bound)))
     return NULL;
+  if (o->interior && !(copy->interior = copy_interior(p, map, o->interior)))
+    return NULL;
   if (zr__is_csg(o->kind) && !zr__sdl_csg_copy_lights(p, copy))
     return NULL;
   if (!zr__is_csg(o->kind) || o->u.csg.n_children == 0)
@@ -148,7 +194,7 @@ zr_object *zr__sdl_object_copy(zr_sdl_parser *p, const zr_object *o) {
   if (!copy->u.csg.children)
     return NULL;
   for (size_t i = 0; i < n; i++) {
-    copy->u.csg.children[i] = zr__sdl_object_copy(p, o->u.csg.children[i]);
+    copy->u.csg.children[i] = copy_tree(p, o->u.csg.children[i], map);
     if (!copy->u.csg.children[i])
       return NULL;
   }

@@ -275,8 +275,7 @@ static void follow(shooter *sh, zr_vec3 origin, zr_vec3 dir, zr_rgb power,
     zr_vec3 p = zr_v3_madd(origin, dir, hit.t);
     double d_total = path + hit.t;
     if (media && media->n > 0)
-      power = zr__exit_fade(media, o, zr_v3_dot(hit.normal, dir) < 0.0,
-                            hit.t, power);
+      power = zr__exit_fade(sh->scene, media, o, hit.t, power);
     bool pass = po ? po->pass_through : o->no_shadow;
     if (pass && !bounced) {
       origin = zr_v3_madd(p, dir, zr__surface_offset(p));
@@ -333,14 +332,9 @@ static void follow(shooter *sh, zr_vec3 origin, zr_vec3 dir, zr_rgb power,
     }
     zr_colour col = zr__pigment_eval_n(tx->pigment, p, n);
     const zr_finish *f = tx->finish;
-    const zr_object *solid = o->solid ? o->solid : o;
+    /* In or out as a camera ray would go (lib/trace/shade.c). */
     zr_media next;
-    if (zr__has_inside(solid))
-      zr__media_change(media, solid, o->interior, entering, &next);
-    else if (media)
-      next = *media;
-    else
-      next.n = next.passes = 0;
+    zr__media_cross(sh->scene, media, o, &next);
     double n1 = zr__media_ior(media), n2 = zr__media_ior(&next);
     zr_rgb refl = reflects ? zr__reflection_amount(f, col, dir, n, n1, n2)
                            : zr_rgb3(0, 0, 0);

@@ -82,7 +82,7 @@ static zr_object *resolve_part(zr_scene *scene, const zr_object *object,
      blocks vanished).  Parts with different interiors (wineglass.pov's
      merge of rim, bowl, beads and stem) leave the whole the default, but
      a ray entering the solid takes the interior of the part it enters
-     by (lib/trace/shade.c zr__media_change, stretch_interior); a part
+     by (lib/trace/shade.c zr__media_cross, stretch_interior); a part
      without one has the whole's (the sphere cut out of the box above
      is glass when the ray enters the box again by it). */
   if (!copy->interior && !solid) {

@@ -228,15 +228,15 @@ zr_rgb zr__reflection_amount(const zr_finish *f, zr_colour colour,
    (its interior's fade_distance, fade_power, fade_colour). */
 zr_rgb zr__interior_fade(const zr_media *media, double d, zr_rgb c);
 /* c after the last stretch, of length d, of a ray that meets part at a
-   surface: faded by the part's interior when the ray leaves through it
-   an object it entered with that interior (shade.c explains). */
-zr_rgb zr__exit_fade(const zr_media *media, const zr_object *part,
-                     bool entering, double d, zr_rgb c);
-/* media with object added (entering, with the interior of the part it
-   is entered by) or removed; the ior inside. */
-void zr__media_change(const zr_media *in, const zr_object *object,
-                      const zr_interior *interior, bool entering,
-                      zr_media *out);
+   surface: faded by the interior the ray leaves there, if any
+   (shade.c explains). */
+zr_rgb zr__exit_fade(const zr_scene *scene, const zr_media *media,
+                     const zr_object *part, double d, zr_rgb c);
+/* next: media after a crossing of part, which goes out of the interior
+   of part when media holds it, else into it (shade.c explains); true
+   when it went in. */
+bool zr__media_cross(const zr_scene *scene, const zr_media *media,
+                     const zr_object *part, zr_media *next);
 double zr__media_ior(const zr_media *media);
 
 /* The mirror direction of unit d about unit n. */
