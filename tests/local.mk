@@ -325,3 +325,5 @@ EXTRA_DIST += tests/legacy/csg_shared_face.pov \
 TESTS += tests/test_no_bump_scale.sh
 EXTRA_DIST += tests/test_no_bump_scale.sh tests/no_bump_scale.pov
 EXTRA_DIST += tests/legacy/macro_arg_colour.pov
+TESTS += tests/test_sky_transform.sh
+EXTRA_DIST += tests/test_sky_transform.sh tests/sky_transform.pov
