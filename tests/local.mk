@@ -327,3 +327,4 @@ EXTRA_DIST += tests/test_no_bump_scale.sh tests/no_bump_scale.pov
 EXTRA_DIST += tests/legacy/macro_arg_colour.pov
 TESTS += tests/test_sky_transform.sh
 EXTRA_DIST += tests/test_sky_transform.sh tests/sky_transform.pov
+EXTRA_DIST += tests/noise/cells.txt bench/noise/probe_cells.py
