@@ -38,17 +38,24 @@ def main():
         sys.exit("probe_cells: crackle_tables.h has %d points" % len(R))
     rng = np.random.default_rng(16)
     P = rng.uniform(-3000, 3000, size=(600, 3))
+    # Far out every coordinate past the 32-bit range is the cell -2^31
+    # (all of these print one value).
+    P = np.vstack([P, [[-2147483648.5, 0.5, 0.5], [3e9, 0.5, 0.5],
+                       [1e30, 0.5, 0.5], [-1e30, 0.5, 0.5]]])
     v = function("pattern { cells }", [tuple(p) for p in P])
     lines = ["# x y z value: POV-Ray 3.7's cells, written by "
              "bench/noise/probe_cells.py"]
     for p, val in zip(P, v):
-        c = [int(np.floor(a)) for a in p]
+        c = [int(np.floor(a)) if -2**31 <= np.floor(a) < 2**31 else -2**31
+             for a in p]
         h = T[T[T[(c[0] + off) & 4095] ^ ((c[1] + off) & 4095)]
               ^ ((c[2] + off) & 4095)]
         if abs(R[h] - val) > 1e-9:
             sys.exit("probe_cells: cell %s: povray %.17g, crackle's x %.17g"
                      % (c, val, R[h]))
-        lines.append("%.6f %.6f %.6f %.17g" % (p[0], p[1], p[2], val))
+        lines.append("%.6f %.6f %.6f %.17g" % (p[0], p[1], p[2], val)
+                     if abs(p).max() < 1e6 else
+                     "%r %r %r %.17g" % (p[0], p[1], p[2], val))
     with open(out, "w") as f:
         f.write("\n".join(lines) + "\n")
     print("probe_cells: %d points, all crackle's x of the cell" % len(P))

@@ -62,6 +62,8 @@ static int64_t cell(double f) {
   return INT64_C(-2147483648);
 }
 
+int64_t zr__noise_cell(double v) { return cell(floor(v)); }
+
 /* The largest distance into a far-out cell (blend()): 1e25, so three
    far axes' weights (about 2 t^3 each) times a distance stay below
    1e308; the six octaves of lambda 50 from 2e9 (5e17 at the last) keep

@@ -227,11 +227,12 @@ static double agate(zr_vec3 p, double agate_turb, int generator) {
 }
 
 /* cells: one value per unit cell, measured to be the x coordinate of
-   crackle's feature point of the same cell within it
+   crackle's feature point of the same cell within it, cells past the
+   32-bit range taken as -2^31 as the noise takes them
    (bench/noise/probe_cells.py, tests/test_noise.c noise_cells). */
 static double cells(zr_vec3 p) {
-  int64_t x = (int64_t)floor(p.x), y = (int64_t)floor(p.y),
-          z = (int64_t)floor(p.z);
+  int64_t x = zr__noise_cell(p.x), y = zr__noise_cell(p.y),
+          z = zr__noise_cell(p.z);
   return crackle_points[zr__noise_hash(x, y, z, CRACKLE_HASH_OFFSET)][0];
 }
 
