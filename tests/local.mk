@@ -335,3 +335,6 @@ EXTRA_DIST += tests/test_photon_bailout.sh bench/photon_bailout.pov \
 	bench/photon_bailout.sh
 TESTS += tests/test_interior_path.sh
 EXTRA_DIST += tests/test_interior_path.sh tests/interior_path.pov
+TESTS += tests/test_sky_transform.sh
+EXTRA_DIST += tests/test_sky_transform.sh tests/sky_transform.pov
+EXTRA_DIST += tests/noise/cells.txt bench/noise/probe_cells.py

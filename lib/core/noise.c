@@ -36,14 +36,17 @@
  * enormous and the noise, clamped to [0, 1], is 0 or 1 by the sign of
  * the sum; just below -2^31 it is an ordinary-looking value again.  The
  * turbulence of a pattern with a large lambda reaches such points
- * (poliana-girl's aug4.pov: lambda 50, six octaves, 50^5 p), but its
- * vector noise does not follow this rule (still open).  Measured:
- * tests/test_noise.c (noise_far), f_noise3d values povray prints.
+ * (poliana-girl's aug4.pov: lambda 50, six octaves, 50^5 p), and its
+ * vector noise follows the same rule: the point moves by a huge amount,
+ * so the pattern there is 0 or 1 by its sign.  (gradient y warped so
+ * reads 0 or a fixed 0.5500685 whatever the turbulence's size: povray's
+ * ramp of a value below -1e17.)  Measured: tests/test_noise.c
+ * (noise_far, noise_dfar), values povray prints for
+ * bench/noise/probe_far.pov.
  */
 #include "core/noise.h"
 
 #include <math.h>
-#include <stdbool.h>
 #include <stdint.h>
 
 #include "../../bench/noise/gen3_tables.h"
@@ -59,13 +62,13 @@ static int64_t cell(double f) {
   return INT64_C(-2147483648);
 }
 
-/* The largest distance into a far-out cell (blend()). */
-#define FAR_T 4503599627370496.0 /* 2^52 */
+int64_t zr__noise_cell(double v) { return cell(floor(v)); }
 
-/* The plain cell, defined for any double (0 beyond 2^62 and for NaN). */
-static int64_t cell64(double f) {
-  return f >= -4.6e18 && f <= 4.6e18 ? (int64_t)f : 0;
-}
+/* The largest distance into a far-out cell (blend()): 1e25, so three
+   far axes' weights (about 2 t^3 each) times a distance stay below
+   1e308; the six octaves of lambda 50 from 2e9 (5e17 at the last) keep
+   povray's sign with it, where 2^52 lost it (noise_dfar). */
+#define FAR_T 1e25
 
 unsigned zr__noise_hash(int64_t x, int64_t y, int64_t z, int offset) {
   unsigned a = (unsigned)((x + offset) & 4095);
@@ -91,33 +94,28 @@ static unsigned lattice_hash(int64_t x, int64_t y, int64_t z) {
 }
 
 /* The blend of step 1 of the probe for n_tables tables at once: out[m]
-   is the noise of tables[m].  far32: cells as POV-Ray's value noise
-   takes them far out (cell()); turbulence's vector noise stays bounded
-   there in povray's output, by a rule not measured yet, so it keeps the
-   plain cell.  Inlined into its two callers so that n_tables is a
-   constant there, and summed in locals: through out, which may alias
-   the tables for all the compiler knows, each corner's sum went to
-   memory and back (56% of benchmark.pov's profile was this function;
-   the same operations in the same order, so the same values). */
+   is the noise of tables[m], the cells taken as POV-Ray takes them far
+   out (cell()), for the value noise and turbulence's vector noise
+   alike.  Inlined into its two callers so that n_tables is a constant
+   there, and summed in locals: through out, which may alias the tables
+   for all the compiler knows, each corner's sum went to memory and back
+   (56% of benchmark.pov's profile was this function; the same
+   operations in the same order, so the same values). */
 static inline __attribute__((always_inline)) void
-blend(zr_vec3 p, const double (*const *tables)[4], int n_tables, bool far32,
+blend(zr_vec3 p, const double (*const *tables)[4], int n_tables,
       double *out) {
-  double fx = floor(p.x), fy = floor(p.y), fz = floor(p.z);
-  int64_t ix = far32 ? cell(fx) : cell64(fx);
-  int64_t iy = far32 ? cell(fy) : cell64(fy);
-  int64_t iz = far32 ? cell(fz) : cell64(fz);
+  int64_t ix = cell(floor(p.x)), iy = cell(floor(p.y)), iz = cell(floor(p.z));
   double t[3] = {p.x - (double)ix, p.y - (double)iy, p.z - (double)iz};
   /* Far out the distance into the cell is huge and only the sign of
-     the sum decides (0 or 1); past 2^52 its cube, times the other
+     the sum decides (0 or 1); past FAR_T its cube, times the other
      axes', would overflow to inf - inf = NaN (povray itself prints
      -nan for f_noise3d(1e40, 1e40, 1e40) and for f_ridged_mf with 100
      octaves), so the distance stops there: the sign povray gives where
      its sum is finite (tests/test_noise.c, noise_far: 1e12 to 1e20),
      and a finite 0 or 1 beyond, for any double or NaN. */
-  if (far32)
-    for (int a = 0; a < 3; a++)
-      if (!(fabs(t[a]) <= FAR_T))
-        t[a] = t[a] < 0 ? -FAR_T : FAR_T;
+  for (int a = 0; a < 3; a++)
+    if (!(fabs(t[a]) <= FAR_T))
+      t[a] = t[a] < 0 ? -FAR_T : FAR_T;
   double w[3][2];
   for (int a = 0; a < 3; a++) {
     w[a][1] = smooth(t[a]);
@@ -142,7 +140,7 @@ blend(zr_vec3 p, const double (*const *tables)[4], int n_tables, bool far32,
 double zr__noise_lattice(zr_vec3 p) {
   const double (*tables[1])[4] = {noise_lattice};
   double n;
-  blend(p, tables, 1, true, &n);
+  blend(p, tables, 1, &n);
   /* [0.1, 0.9] in the lattice's range; 0 or 1 far out (see above). */
   return n < 0 ? 0 : n > 1 ? 1 : n;
 }
@@ -151,7 +149,7 @@ zr_vec3 zr__dnoise_lattice(zr_vec3 p) {
   const double (*tables[3])[4] = {dnoise_lattice[0], dnoise_lattice[1],
                                   dnoise_lattice[2]};
   double d[3];
-  blend(p, tables, 3, false, d);
+  blend(p, tables, 3, d);
   return zr_v3(d[0], d[1], d[2]);
 }
 

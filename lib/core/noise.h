@@ -13,6 +13,11 @@
 double zr__noise_lattice(zr_vec3 p);
 /* The 12-bit lattice hash of the cell (x, y, z) with the coordinates
    moved by offset (the noise's and crackle's differ). */
+/* POV-Ray's lattice cell of a coordinate: floor(v) in the 32-bit range,
+   -2^31 outside it and for NaN (measured: f_noise3d, turbulence and
+   cells far out). */
+int64_t zr__noise_cell(double v);
+
 unsigned zr__noise_hash(int64_t x, int64_t y, int64_t z, int offset);
 /* zr__noise_hash of the (2 reach + 1)^3 cells (x + i, y + j, z + k),
    i, j, k from -reach to reach, into out in that order (k fastest):

@@ -39,6 +39,8 @@
  *   agate      (0.5 + 0.5 sin(2 pi (1.1 z + 1.3 agate_turb s)))^0.77, s
  *              = c(n(p)) + the sum over octaves 1..5 of (2 n(2^i p) -
  *              0.5) / 2^i;
+ *   cells      one value per unit cell: the x coordinate of crackle's
+ *              feature point of that cell (bench/noise/probe_cells.py);
  *   crackle    distance to the second nearest minus the nearest of one
  *              feature point per unit cell (form <-1,1,0>, metric 2),
  *              the points measured (bench/noise/probe_crackle.py);
@@ -61,7 +63,6 @@
  * (measured; generator 3 to 1e-7).
  *
  * Patterns the manual describes only in words, with our definitions:
- *   cells      one random value per unit cube ("Cells Pattern");
  *   pigment_pattern  the grey 0.297 r + 0.589 g + 0.114 b of a pigment
  *              evaluated at the point (the weights of POV-Ray's grey);
  *   spiral1    arms around the z axis whose phase grows with the angle
@@ -134,19 +135,6 @@ bool zr__pattern_is_block(zr_pattern_kind kind) {
 }
 
 /* ---- noise ---- */
-
-/* A well-mixed 32-bit hash of a lattice point (the finaliser of
-   MurmurHash3 over a linear combination of the coordinates). */
-static uint32_t hash3(int64_t x, int64_t y, int64_t z) {
-  uint32_t h = (uint32_t)x * 0x8da6b343u ^ (uint32_t)y * 0xd8163841u ^
-               (uint32_t)z * 0xcb1ab31fu;
-  h ^= h >> 16;
-  h *= 0x85ebca6bu;
-  h ^= h >> 13;
-  h *= 0xc2b2ae35u;
-  h ^= h >> 16;
-  return h;
-}
 
 double zr__noise(zr_vec3 p) { return zr__noise_lattice(p); }
 
@@ -236,6 +224,16 @@ static double agate(zr_vec3 p, double agate_turb, int generator) {
   double v = 0.5 + 0.5 * sin(2 * PI * (1.1 * p.z + 1.3 * (float)agate_turb *
                                                         s));
   return pow(v < 0 ? 0 : v, 0.77);
+}
+
+/* cells: one value per unit cell, measured to be the x coordinate of
+   crackle's feature point of the same cell within it, cells past the
+   32-bit range taken as -2^31 as the noise takes them
+   (bench/noise/probe_cells.py, tests/test_noise.c noise_cells). */
+static double cells(zr_vec3 p) {
+  int64_t x = zr__noise_cell(p.x), y = zr__noise_cell(p.y),
+          z = zr__noise_cell(p.z);
+  return crackle_points[zr__noise_hash(x, y, z, CRACKLE_HASH_OFFSET)][0];
 }
 
 /* The feature point of crackle's cell (x, y, z), measured: one a cell,
@@ -637,8 +635,7 @@ static double raw_value(const zr_pattern *pt, zr_vec3 p) {
     return 1 - fmin(1, zr_v3_max_comp(zr_v3(fabs(p.x), fabs(p.y),
                                             fabs(p.z))));
   case ZR_PAT_CELLS:
-    return hash3((int64_t)floor(p.x), (int64_t)floor(p.y),
-                 (int64_t)floor(p.z)) / 4294967296.0;
+    return cells(p);
   case ZR_PAT_PIGMENT_PATTERN:
     return pt->pigment ? clamp01(grey(zr__pigment_eval(pt->pigment, p)))
                        : 0;

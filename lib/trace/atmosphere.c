@@ -3,8 +3,8 @@
  * "Atmospheric Effects": "Background", "Fog", "Sky Sphere", "Rainbow").
  *
  * A ray that hits nothing sees the sky_sphere: its pigments evaluated at
- * the unit direction of the ray (in the sky's own space when it is
- * transformed), the last pigment on top and lower ones showing through
+ * the unit direction of the ray taken as a point (through the inverse
+ * of the sky's transform when it has one, as a pigment's transform), the last pigment on top and lower ones showing through
  * its filter and transmit like layered textures, the whole scaled by
  * emission.  Without a sky_sphere it sees the background colour.
  *
@@ -49,14 +49,26 @@
 
 static const double DEG = 3.14159265358979323846 / 180.0;
 
+/* Where the sky's pigments are evaluated for a ray of direction dir:
+   the unit direction, taken as a point, through the inverse of the
+   sky_sphere's transform, not normalised again.  So a sky_sphere's
+   transform is its pigments' transform: povray 3.7 renders sky_sphere
+   { pigment { P } T } with the same bytes as sky_sphere { pigment { P T }
+   } for scale 0.8, scale 2, scale -1, scale <1, 2, 1>, a translate and
+   scale <1,2,1> rotate 30*x translate 0.2*y
+   (tests/test_sky_transform.sh).  A scale used to change nothing here
+   (the point was normalised again) and a translate was dropped. */
+static zr_vec3 sky_point(const zr_sky_sphere *sky, zr_vec3 dir) {
+  zr_vec3 d = zr_v3_norm(dir);
+  return sky->transform ? zr__xform_point(sky->transform->inv, d) : d;
+}
+
 zr_rgb zr__sky_colour(const zr_scene *scene, zr_vec3 dir) {
   const zr_sky_sphere *sky = scene->settings.sky_sphere;
   zr_rgb below = zr_colour_rgb(scene->settings.background);
   if (!sky || sky->n_pigments == 0)
     return below;
-  zr_vec3 d = zr_v3_norm(dir);
-  if (sky->transform)
-    d = zr_v3_norm(zr__xform_dir(sky->transform->inv, d));
+  zr_vec3 d = sky_point(sky, dir);
   /* Top layer (the last) first.  A sky layer's filter lets light
      through as its transmit does, untinted, and povray 3.7 keeps the
      products of the layers' filters and of their transmits apart: a
@@ -113,9 +125,7 @@ zr_rgb zr__sky_clear(const zr_scene *scene, zr_vec3 dir, double *clear) {
   double through = b.f * zr__grey(zr_colour_rgb(b)) + b.t;
   const zr_sky_sphere *sky = gs->sky_sphere;
   if (sky && sky->n_pigments > 0) {
-    zr_vec3 d = zr_v3_norm(dir);
-    if (sky->transform)
-      d = zr_v3_norm(zr__xform_dir(sky->transform->inv, d));
+    zr_vec3 d = sky_point(sky, dir);
     for (size_t i = 0; i < sky->n_pigments; i++) {
       zr_colour c = zr__pigment_eval(sky->pigments[i], d);
       double opacity = fmax(0.0, 1.0 - c.f - c.t);
