@@ -63,6 +63,7 @@
 
 #include "trace/intersect.h"
 #include "trace/render.h"
+#include "trace/shaft.h"
 
 static double smoothstep01(double t) {
   if (t <= 0.0)
@@ -337,6 +338,18 @@ static zr_rgb area_visibility(const zr_tracer *tr, const zr_light *light,
   return area_cell(&c, 0, n1 - 1, 0, n2 - 1, 0, light->adaptive);
 }
 
+/* What area_visibility gives when every ray finds the light: 1, or for
+   a full grid the sum of its n ones times 1 / n, as there. */
+static zr_rgb area_all_lit(const zr_light *light) {
+  int n1 = light->size1 > 0 ? light->size1 : 1;
+  int n2 = light->size2 > 0 ? light->size2 : 1;
+  size_t n = (size_t)n1 * (size_t)n2;
+  if (light->adaptive < 0 || n > AREA_CACHE_MAX || n1 < 2 || n2 < 2)
+    return zr_rgb_scale(zr_rgb3((double)n, (double)n, (double)n),
+                        1.0 / (double)n);
+  return zr_rgb3(1, 1, 1);
+}
+
 zr_rgb zr__light_visibility(const zr_tracer *tracer, const zr_light *light,
                             zr_vec3 p, zr_vec3 lit_from) {
   if ((light->shadowless || tracer->no_shadows) &&
@@ -357,13 +370,23 @@ zr_rgb zr__light_visibility(const zr_tracer *tracer, const zr_light *light,
     long k = (long)(u * (double)n1 * (double)n2);
     if (k >= (long)n1 * n2)
       k = (long)n1 * n2 - 1;
+    if (zr__shaft_clear(tracer, light, lit_from, false))
+      return zr_rgb3(1, 1, 1); /* the ray's own answer (shaft.c) */
     return sample_visibility(
         tracer, light,
         zr__area_light_point(light, p, (int)(k % n1), (int)(k / n1)),
         lit_from);
   }
   if (light->area && (light->size1 > 1 || light->size2 > 1) &&
-      tracer->gi_depth == 0 && !tracer->point_area_lights)
+      tracer->gi_depth == 0 && !tracer->point_area_lights) {
+    /* Every ray unblocked: what their average gives (shaft.c). */
+    if (zr__shaft_clear(tracer, light, lit_from, true))
+      return area_all_lit(light);
     return area_visibility(tracer, light, p, lit_from);
+  }
+  /* One ray to the centre: the group's shaft, when another light of
+     the group has tested it from this point, saves it. */
+  if (light->area && zr__shaft_clear(tracer, light, lit_from, false))
+    return zr_rgb3(1, 1, 1);
   return sample_visibility(tracer, light, light->location, lit_from);
 }

@@ -224,3 +224,6 @@ tests_test_embree_SOURCES = tests/test_embree.c
 tests_test_embree_CPPFLAGS = $(TEST_CPPFLAGS)
 tests_test_embree_LDADD = $(TEST_LDADD)
 tests_test_embree_LDFLAGS = -static
+
+# Shadow shafts of area lights (one test for a light's rays).
+lib_libzrcube_la_SOURCES += lib/trace/shaft.c lib/trace/shaft.h

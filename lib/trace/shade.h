@@ -106,10 +106,19 @@ zr__radiance_source(const zr_radiosity *rad) {
  * opaque blocker makes any walk black), so the image bytes do not
  * depend on what the cache held.
  */
-enum { ZR_SHADOW_CACHE_SLOTS = 16 };
+enum { ZR_SHADOW_CACHE_SLOTS = 16, ZR_SHAFT_SLOTS = 4 };
 typedef struct zr_shadow_cache {
   const zr_light *light[ZR_SHADOW_CACHE_SLOTS];
   const zr_object *blocker[ZR_SHADOW_CACHE_SLOTS];
+  /* The last shafts tested (lib/trace/shaft.c): hull + 1 (0: an empty
+     slot), the point the shadow rays leave from, and the answer, which
+     the next light of the same group from the same point reuses. */
+  struct zr_shaft_memo {
+    uint32_t hull;
+    zr_vec3 apex;
+    bool clear;
+  } shaft[ZR_SHAFT_SLOTS];
+  unsigned shaft_next;
 } zr_shadow_cache;
 
 typedef struct zr_tracer {
