@@ -267,7 +267,13 @@ typedef struct shaft {
   int n_corners;
   double lo[3], hi[3];
   double eps; /* the margin every test keeps */
+  bool thorough; /* try the edges' axes too (edges_apart) */
 } shaft;
+
+/* fmin and fmax without their NaN rules, which keep GCC from inlining
+   them: every value here is finite. */
+static inline double lesser(double a, double b) { return a < b ? a : b; }
+static inline double greater(double a, double b) { return a > b ? a : b; }
 
 static double axis_of(zr_vec3 p, int a) {
   return a == 0 ? p.x : a == 1 ? p.y : p.z;
@@ -276,9 +282,10 @@ static double axis_of(zr_vec3 p, int a) {
 /* The shaft from apex to h's polygon; false when the apex lies so near
    the polygon's plane that the pyramid is too flat to orient. */
 static bool make_shaft(const hull *h, zr_vec3 apex, shaft *s) {
-  double ext = fmax(h->extent, fmax(fabs(apex.x),
-                                    fmax(fabs(apex.y), fabs(apex.z))));
+  double ext = greater(h->extent, greater(fabs(apex.x),
+                                    greater(fabs(apex.y), fabs(apex.z))));
   s->eps = 1e-9 * (1.0 + ext) + h->slack;
+  s->thorough = true;
   double height = zr_v3_dot(h->n, zr_v3_sub(apex, h->pts[0]));
   if (!(fabs(height) > 1e-6 * (1.0 + ext)))
     return false;
@@ -312,15 +319,15 @@ static bool make_shaft(const hull *h, zr_vec3 apex, shaft *s) {
   zr_vec3 out = height > 0.0 ? zr_v3_neg(h->n) : h->n;
   double d = -INFINITY;
   for (int i = 0; i < k; i++)
-    d = fmax(d, zr_v3_dot(out, s->corner[i + 1]));
+    d = greater(d, zr_v3_dot(out, s->corner[i + 1]));
   s->m[k] = out;
   s->d[k] = d;
   s->n_planes = k + 1;
   for (int a = 0; a < 3; a++) {
     s->lo[a] = s->hi[a] = axis_of(apex, a);
     for (int i = 1; i <= k; i++) {
-      s->lo[a] = fmin(s->lo[a], axis_of(s->corner[i], a));
-      s->hi[a] = fmax(s->hi[a], axis_of(s->corner[i], a));
+      s->lo[a] = lesser(s->lo[a], axis_of(s->corner[i], a));
+      s->hi[a] = greater(s->hi[a], axis_of(s->corner[i], a));
     }
   }
   return true;
@@ -356,12 +363,44 @@ static bool beside_plane(const shaft *s, zr_vec3 n, double dist) {
   return above == s->n_corners || below == s->n_corners;
 }
 
+/* The last separating axes between two convex shapes: the cross
+   products of an edge of the triangle p and a side edge of the shaft
+   (apex to a corner; the base's edges, out at the light, seldom tell
+   the two apart).  A pyramid beside a block's edge is most often told
+   apart from its faces only so. */
+static bool edges_apart(const shaft *s, const zr_vec3 p[3]) {
+  int k = s->n_corners - 1;
+  for (int te = 0; te < 3; te++) {
+    zr_vec3 e = zr_v3_sub(p[(te + 1) % 3], p[te]);
+    for (int se = 0; se < k; se++) {
+      zr_vec3 f = zr_v3_sub(s->corner[se + 1], s->corner[0]);
+      zr_vec3 a = zr_v3_cross(e, f);
+      double len = zr_v3_len(a);
+      if (!(len > 0.0) || !isfinite(len))
+        continue;
+      double t0 = zr_v3_dot(a, p[0]), t1 = zr_v3_dot(a, p[1]),
+             t2 = zr_v3_dot(a, p[2]);
+      double tlo = lesser(t0, lesser(t1, t2)), thi = greater(t0, greater(t1, t2));
+      double slo = INFINITY, shi = -INFINITY;
+      for (int i = 0; i < s->n_corners; i++) {
+        double x = zr_v3_dot(a, s->corner[i]);
+        slo = lesser(slo, x);
+        shi = greater(shi, x);
+      }
+      double gap = s->eps * len;
+      if (tlo > shi + gap || thi < slo - gap)
+        return true;
+    }
+  }
+  return false;
+}
+
 static bool triangle_clear(const shaft *s, const zr_object *o) {
   const zr_vec3 *p = o->u.triangle.p;
   double lo[3], hi[3];
   for (int a = 0; a < 3; a++) {
-    lo[a] = fmin(axis_of(p[0], a), fmin(axis_of(p[1], a), axis_of(p[2], a)));
-    hi[a] = fmax(axis_of(p[0], a), fmax(axis_of(p[1], a), axis_of(p[2], a)));
+    lo[a] = lesser(axis_of(p[0], a), lesser(axis_of(p[1], a), axis_of(p[2], a)));
+    hi[a] = greater(axis_of(p[0], a), greater(axis_of(p[1], a), axis_of(p[2], a)));
     if (lo[a] > s->hi[a] + s->eps || hi[a] < s->lo[a] - s->eps)
       return true;
   }
@@ -375,7 +414,9 @@ static bool triangle_clear(const shaft *s, const zr_object *o) {
   if (!(len > 0.0) || !isfinite(len))
     return false;
   n = zr_v3_scale(n, 1.0 / len);
-  return beside_plane(s, n, zr_v3_dot(n, p[0]));
+  if (beside_plane(s, n, zr_v3_dot(n, p[0])))
+    return true;
+  return s->thorough && edges_apart(s, p);
 }
 
 static bool sphere_clear(const shaft *s, zr_vec3 c, double r) {
@@ -408,50 +449,139 @@ static bool prim_clear(const zr_object *o, void *user) {
   return !box_meets(l, h, (void *)s);
 }
 
-static bool hull_clear(const zr_scene *scene, const hull *h, zr_vec3 apex) {
-  shaft s;
-  if (!make_shaft(h, apex, &s))
+/*
+ * Whether o stops every shadow ray that crosses it, whatever the
+ * point: the shadow walk (lib/trace/shade.c, shadow_visit) ends at any
+ * crossing of an object that casts shadows and has one solid colour
+ * with neither filter nor transmit.  Only shapes whose crossings name
+ * the object itself (not a CSG part, not a mesh's textured copy).
+ */
+static bool stops_light(const zr_object *o) {
+  switch (o->kind) {
+  case ZR_OBJ_SPHERE:
+  case ZR_OBJ_BOX:
+  case ZR_OBJ_PLANE:
+  case ZR_OBJ_TRIANGLE:
+  case ZR_OBJ_CYLINDER:
+  case ZR_OBJ_CONE:
+  case ZR_OBJ_DISC:
+    break;
+  default:
     return false;
-  return zr__bvh_region_clear(scene->bvh, box_meets, prim_clear, &s);
+  }
+  const zr_texture *tx = o->texture;
+  if (o->solid || o->no_shadow || !tx || tx->over || tx->map || !tx->pigment)
+    return false;
+  const zr_pigment *pg = tx->pigment;
+  return pg->kind == ZR_PIGMENT_SOLID && pg->colour.f == 0.0 &&
+         pg->colour.t == 0.0;
+}
+
+/* A shaft and the primitives it could not clear. */
+typedef struct gather {
+  shaft s;
+  zr_shaft_plan *plan;
+} gather;
+
+static bool gather_prim(const zr_object *o, void *user) {
+  gather *g = user;
+  if (prim_clear(o, &g->s))
+    return true;
+  if (g->plan->n >= ZR_SHAFT_LIST_MAX || !stops_light(o))
+    return false;
+  g->plan->objects[g->plan->n++] = o;
+  return true;
+}
+
+static bool gather_meets(const double lo[3], const double hi[3],
+                         void *user) {
+  return box_meets(lo, hi, &((gather *)user)->s);
+}
+
+/* The plan of hull h's shaft from apex, by a walk of the hierarchy. */
+static void hull_plan(const zr_scene *scene, const hull *h, zr_vec3 apex,
+                      zr_shaft_plan *plan) {
+  gather g;
+  g.plan = plan;
+  plan->n = 0;
+  if (!make_shaft(h, apex, &g.s) ||
+      !zr__bvh_region_clear(scene->bvh, gather_meets, gather_prim, &g))
+    plan->n = -1;
 }
 
 static bool same_point(zr_vec3 a, zr_vec3 b) {
   return memcmp(&a, &b, sizeof a) == 0;
 }
 
-/* hull_clear, remembered in the thread's shadow cache. */
-static bool hull_clear_kept(const zr_tracer *tr, uint32_t index,
-                            zr_vec3 apex) {
+/* hull_plan, remembered in the thread's shadow cache. */
+static void hull_plan_kept(const zr_tracer *tr, uint32_t index,
+                           zr_vec3 apex, zr_shaft_plan *plan) {
   const struct zr_light_shafts *ls = tr->scene->shafts;
   zr_shadow_cache *c = tr->shadow_cache;
   if (c)
     for (int i = 0; i < ZR_SHAFT_SLOTS; i++)
-      if (c->shaft[i].hull == index + 1 && same_point(c->shaft[i].apex, apex))
-        return c->shaft[i].clear;
-  bool clear = hull_clear(tr->scene, &ls->hulls[index], apex);
+      if (c->shaft[i].hull == index + 1 &&
+          same_point(c->shaft[i].apex, apex)) {
+        *plan = c->shaft[i].plan;
+        return;
+      }
+  hull_plan(tr->scene, &ls->hulls[index], apex, plan);
   if (c) {
     struct zr_shaft_memo *m = &c->shaft[c->shaft_next++ % ZR_SHAFT_SLOTS];
     m->hull = index + 1;
     m->apex = apex;
-    m->clear = clear;
+    m->plan = *plan;
   }
-  return clear;
 }
 
-bool zr__shaft_clear(const zr_tracer *tracer, const zr_light *light,
-                     zr_vec3 lit_from, bool own) {
+void zr__shaft_plan(const zr_tracer *tracer, const zr_light *light,
+                    zr_vec3 lit_from, bool own, zr_shaft_plan *plan) {
+  plan->n = -1;
   const zr_scene *scene = tracer->scene;
   const struct zr_light_shafts *ls = scene->shafts;
   if (!ls)
-    return false;
+    return;
   uintptr_t at = (uintptr_t)light, first = (uintptr_t)scene->lights;
   if (at < first || (at - first) % sizeof *light != 0)
-    return false;
+    return;
   size_t i = (at - first) / sizeof *light;
   if (i >= ls->n_lights || ls->own[i] < 0)
-    return false;
+    return;
   int32_t g = ls->group[i], o = ls->own[i];
-  if (g != o && hull_clear_kept(tracer, (uint32_t)g, lit_from))
-    return true;
-  return own && hull_clear(scene, &ls->hulls[o], lit_from);
+  /* A ray to the centre alone costs less than a shaft test that no
+     other light will reuse. */
+  if (!own && (g == o || !tracer->shadow_cache))
+    return;
+  if (g != o) {
+    hull_plan_kept(tracer, (uint32_t)g, lit_from, plan);
+    if (plan->n == 0 || !own)
+      return;
+  }
+  if (plan->n < 0) {
+    hull_plan(scene, &ls->hulls[o], lit_from, plan);
+    return;
+  }
+  /* The group's blockers that the light's own shaft does not clear. */
+  shaft s;
+  if (!make_shaft(&ls->hulls[o], lit_from, &s))
+    return;
+  /* Four rays against a short list cost less than the edges' axes. */
+  s.thorough = false;
+  int n = 0;
+  for (int k = 0; k < plan->n; k++)
+    if (!prim_clear(plan->objects[k], &s))
+      plan->objects[n++] = plan->objects[k];
+  plan->n = n;
+}
+
+bool zr__shaft_blocks(const zr_tracer *tracer, const zr_shaft_plan *plan,
+                      zr_vec3 lit_from, zr_vec3 target) {
+  /* The shadow walk's ray and interval (zr__shadow_transmission). */
+  zr_ray ray = {lit_from, zr_v3_sub(target, lit_from)};
+  tracer->stats->shadow_rays++;
+  zr_hit h[ZR_MAX_CROSSINGS];
+  for (int k = 0; k < plan->n; k++)
+    if (zr__bvh_crossings_t(plan->objects[k], &ray, 0.0, 1.0 - 1e-6, h) > 0)
+      return true;
+  return false;
 }
