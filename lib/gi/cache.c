@@ -837,6 +837,11 @@ static void trace_batch(void *user, size_t begin, size_t end, int worker) {
     tr.indirect = &ind;
     tr.hide = ZR_HIDE_IMAGE;
     tr.skip_direct = true;
+    /* The sample rays' shadow hints (lib/trace/shade.h): they change
+       no result, and spare a group of area lights' shaft tests. */
+    zr_shadow_cache shadows;
+    memset(&shadows, 0, sizeof shadows);
+    tr.shadow_cache = &shadows;
     int w = job->render->width, h = job->render->height;
     uint32_t px = job->pixels[i];
     double x = px % (uint32_t)w + 0.5, y = px / (uint32_t)w + 0.5;

@@ -171,6 +171,8 @@ ZR_API void zr_scene_free(zr_scene *scene) {
     scene->photons_free(scene->photons);
   if (scene->embree_free)
     scene->embree_free(scene->embree);
+  if (scene->shafts_free)
+    scene->shafts_free(scene->shafts);
   free(scene->primitives);
   free(scene->objects);
   free(scene->lights);

@@ -1075,6 +1075,7 @@ typedef struct zr_settings {
 struct zr_bvh; /* the tracer's acceleration structure (lib/trace) */
 struct zr_photon_map; /* photons stored by lib/trace/photons.c */
 struct zr_embree;     /* lib/trace/embree.c's meshes, when built with it */
+struct zr_light_shafts; /* lib/trace/shaft.c's area light shafts */
 
 struct zr_scene {
   zr_arena arena;
@@ -1120,6 +1121,10 @@ struct zr_scene {
      none), and the routine that frees them (lib/trace/embree.c). */
   struct zr_embree *embree;
   void (*embree_free)(struct zr_embree *embree);
+  /* The area lights' shadow shafts (NULL: no light has one), and the
+     routine that frees them (lib/trace/shaft.c, set with them). */
+  struct zr_light_shafts *shafts;
+  void (*shafts_free)(struct zr_light_shafts *shafts);
   unsigned long long parse_steps; /* the work budget the parse used */
 };
 

@@ -861,3 +861,42 @@ bool zr__bvh_all_blocked(const struct zr_bvh *bvh, const zr_ray *ray,
   }
   return true;
 }
+
+bool zr__bvh_region_clear(const struct zr_bvh *bvh, zr_region_box_fn meets,
+                          zr_region_prim_fn clear, void *user) {
+  if (!bvh)
+    return true;
+  for (size_t i = 0; i < bvh->n_unbounded; i++)
+    if (!clear(bvh->unbounded[i], user))
+      return false;
+  if (bvh->n_wide == 0)
+    return true;
+  uint32_t stack[WIDE_STACK_MAX];
+  int sp = 0;
+  stack[sp++] = 0;
+  while (sp > 0) {
+    const zr_wide_node *w = &bvh->wide[stack[--sp]];
+    for (int c = 0; c < WIDTH; c++) {
+      if (w->count[c] == ZR_WIDE_NO_CHILD)
+        continue;
+      double lo[3], hi[3];
+      for (int a = 0; a < 3; a++) {
+        lo[a] = w->lo[a][c];
+        hi[a] = w->hi[a][c];
+      }
+      if (!meets(lo, hi, user))
+        continue;
+      if (w->count[c] == 0) {
+        /* A full stack cannot answer: the region is not known clear. */
+        if (sp == WIDE_STACK_MAX)
+          return false;
+        stack[sp++] = w->child[c];
+        continue;
+      }
+      for (uint32_t i = w->child[c]; i < w->child[c] + w->count[c]; i++)
+        if (!clear(bvh->prims[i], user))
+          return false;
+    }
+  }
+  return true;
+}

@@ -70,6 +70,22 @@ size_t zr__bvh_point_candidates(const struct zr_bvh *bvh, zr_vec3 p,
                                 uint32_t *out, size_t cap);
 
 /*
+ * Whether a region of space is clear of every primitive, as far as the
+ * two tests tell: the walk opens each box of the hierarchy (a node's or
+ * a leaf's, single precision rounded outward, so holding its
+ * primitives' boxes) for which meets(lo, hi, user) is true, and asks
+ * clear(object, user) of every primitive in the leaves opened and of
+ * every unbounded one.  Returns false at the first primitive that clear
+ * does not clear.  meets may say true of a box the region misses, never
+ * false of one it meets (the area light shafts of lib/trace/shaft.c).
+ */
+typedef bool (*zr_region_box_fn)(const double lo[3], const double hi[3],
+                                 void *user);
+typedef bool (*zr_region_prim_fn)(const zr_object *object, void *user);
+bool zr__bvh_region_clear(const struct zr_bvh *bvh, zr_region_box_fn meets,
+                          zr_region_prim_fn clear, void *user);
+
+/*
  * The sweep of the binned surface area heuristic (Wald 2007), shared by
  * this hierarchy and each mesh's (obj_mesh.c).  A node's primitives are
  * put in ZR_SAH_BINS bins along one axis by their centres; a bin holds

@@ -63,6 +63,7 @@
 
 #include "trace/intersect.h"
 #include "trace/render.h"
+#include "trace/shaft.h"
 
 static double smoothstep01(double t) {
   if (t <= 0.0)
@@ -260,10 +261,24 @@ static zr_rgb sample_visibility(const zr_tracer *tr, const zr_light *light,
   return zr__shadow_transmission(tr, light, target, lit_from);
 }
 
+/* The visibility of light point s: by the shadow walk, or against
+   the few objects a shaft left (lib/trace/shaft.c), which gives the
+   walk's answer (each of them stops any ray it crosses, and nothing
+   else can be crossed). */
+static zr_rgb point_visibility(const zr_tracer *tr, const zr_light *light,
+                               const zr_shaft_plan *plan, zr_vec3 s,
+                               zr_vec3 lit_from) {
+  if (plan && plan->n > 0)
+    return zr__shaft_blocks(tr, plan, lit_from, s) ? zr_rgb3(0, 0, 0)
+                                                    : zr_rgb3(1, 1, 1);
+  return sample_visibility(tr, light, s, lit_from);
+}
+
 /* The grid's visibilities, filled on demand (cells share corners). */
 typedef struct area_cache {
   const zr_tracer *tr;
   const zr_light *light;
+  const zr_shaft_plan *plan;
   zr_vec3 p, lit_from;
   zr_rgb *values;
   unsigned char *done;
@@ -273,7 +288,8 @@ static zr_rgb area_at(area_cache *c, int i, int j) {
   size_t k = (size_t)j * (size_t)c->light->size1 + (size_t)i;
   if (!c->done[k]) {
     zr_vec3 s = zr__area_light_point(c->light, c->p, i, j);
-    c->values[k] = sample_visibility(c->tr, c->light, s, c->lit_from);
+    c->values[k] = point_visibility(c->tr, c->light, c->plan, s,
+                                    c->lit_from);
     c->done[k] = 1;
   }
   return c->values[k];
@@ -316,7 +332,8 @@ static zr_rgb area_cell(area_cache *c, int i0, int i1, int j0, int j1,
 #define AREA_CACHE_MAX 4096
 
 static zr_rgb area_visibility(const zr_tracer *tr, const zr_light *light,
-                              zr_vec3 p, zr_vec3 lit_from) {
+                              const zr_shaft_plan *plan, zr_vec3 p,
+                              zr_vec3 lit_from) {
   int n1 = light->size1 > 0 ? light->size1 : 1;
   int n2 = light->size2 > 0 ? light->size2 : 1;
   size_t n = (size_t)n1 * (size_t)n2;
@@ -324,8 +341,8 @@ static zr_rgb area_visibility(const zr_tracer *tr, const zr_light *light,
     zr_rgb sum = zr_rgb3(0, 0, 0);
     for (int j = 0; j < n2; j++)
       for (int i = 0; i < n1; i++)
-        sum = zr_rgb_add(sum, sample_visibility(
-                                  tr, light,
+        sum = zr_rgb_add(sum, point_visibility(
+                                  tr, light, plan,
                                   zr__area_light_point(light, p, i, j),
                                   lit_from));
     return zr_rgb_scale(sum, 1.0 / (double)n);
@@ -333,8 +350,20 @@ static zr_rgb area_visibility(const zr_tracer *tr, const zr_light *light,
   zr_rgb values[AREA_CACHE_MAX];
   unsigned char done[AREA_CACHE_MAX];
   memset(done, 0, n);
-  area_cache c = {tr, light, p, lit_from, values, done};
+  area_cache c = {tr, light, plan, p, lit_from, values, done};
   return area_cell(&c, 0, n1 - 1, 0, n2 - 1, 0, light->adaptive);
+}
+
+/* What area_visibility gives when every ray finds the light: 1, or for
+   a full grid the sum of its n ones times 1 / n, as there. */
+static zr_rgb area_all_lit(const zr_light *light) {
+  int n1 = light->size1 > 0 ? light->size1 : 1;
+  int n2 = light->size2 > 0 ? light->size2 : 1;
+  size_t n = (size_t)n1 * (size_t)n2;
+  if (light->adaptive < 0 || n > AREA_CACHE_MAX || n1 < 2 || n2 < 2)
+    return zr_rgb_scale(zr_rgb3((double)n, (double)n, (double)n),
+                        1.0 / (double)n);
+  return zr_rgb3(1, 1, 1);
 }
 
 zr_rgb zr__light_visibility(const zr_tracer *tracer, const zr_light *light,
@@ -357,13 +386,30 @@ zr_rgb zr__light_visibility(const zr_tracer *tracer, const zr_light *light,
     long k = (long)(u * (double)n1 * (double)n2);
     if (k >= (long)n1 * n2)
       k = (long)n1 * n2 - 1;
-    return sample_visibility(
-        tracer, light,
+    zr_shaft_plan plan;
+    zr__shaft_plan(tracer, light, lit_from, false, &plan);
+    return point_visibility(
+        tracer, light, &plan,
         zr__area_light_point(light, p, (int)(k % n1), (int)(k / n1)),
         lit_from);
   }
   if (light->area && (light->size1 > 1 || light->size2 > 1) &&
-      tracer->gi_depth == 0 && !tracer->point_area_lights)
-    return area_visibility(tracer, light, p, lit_from);
-  return sample_visibility(tracer, light, light->location, lit_from);
+      tracer->gi_depth == 0 && !tracer->point_area_lights) {
+    /* What the rays can meet, from one test of their shaft
+       (lib/trace/shaft.c): nothing gives what their average would. */
+    zr_shaft_plan plan;
+    zr__shaft_plan(tracer, light, lit_from, true, &plan);
+    if (plan.n == 0)
+      return area_all_lit(light);
+    return area_visibility(tracer, light, &plan, p, lit_from);
+  }
+  /* One ray to the centre: the group's shaft, tested once from this
+     point for all its lights, may answer it. */
+  zr_shaft_plan plan;
+  plan.n = -1;
+  if (light->area)
+    zr__shaft_plan(tracer, light, lit_from, false, &plan);
+  if (plan.n == 0)
+    return zr_rgb3(1, 1, 1);
+  return point_visibility(tracer, light, &plan, light->location, lit_from);
 }

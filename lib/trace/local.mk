@@ -224,3 +224,14 @@ tests_test_embree_SOURCES = tests/test_embree.c
 tests_test_embree_CPPFLAGS = $(TEST_CPPFLAGS)
 tests_test_embree_LDADD = $(TEST_LDADD)
 tests_test_embree_LDFLAGS = -static
+
+# Shadow shafts of area lights (one test for a light's rays).
+lib_libzrcube_la_SOURCES += lib/trace/shaft.c lib/trace/shaft.h
+check_PROGRAMS += tests/test_shaft
+TESTS += tests/test_shaft
+tests_test_shaft_SOURCES = tests/test_shaft.c \
+	tests/parse_fixture.c tests/parse_fixture.h
+tests_test_shaft_CPPFLAGS = $(TEST_CPPFLAGS)
+tests_test_shaft_LDADD = $(TEST_LDADD)
+tests_test_shaft_LDFLAGS = -static
+$(tests_test_shaft_OBJECTS): grammar/pov-parse.h grammar/pov-scan.h

@@ -19,6 +19,7 @@
 #include "trace/embree.h"
 #include "trace/intersect.h"
 #include "trace/photons.h"
+#include "trace/shaft.h"
 #include "trace/shape.h"
 
 /* Grows *items (of *cap elements of size elem) to hold one more. */
@@ -233,6 +234,10 @@ zr_status zr__scene_finish(zr_scene *scene, zr_context *ctx) {
   zr_status s = zr__bvh_build(scene, ctx);
   if (s == ZR_OK)
     s = zr__embree_attach(scene, ctx); /* lib/trace/embree.c */
+  if (s == ZR_OK) {
+    scene->shafts_free = zr__shafts_free;
+    s = zr__shafts_build(scene); /* lib/trace/shaft.c */
+  }
   if (s == ZR_OK && scene->settings.photons.on) {
     scene->photons_free = zr__photons_free;
     s = zr__photons_build(scene, ctx); /* lib/trace/photons.c */

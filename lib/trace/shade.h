@@ -106,10 +106,27 @@ zr__radiance_source(const zr_radiosity *rad) {
  * opaque blocker makes any walk black), so the image bytes do not
  * depend on what the cache held.
  */
-enum { ZR_SHADOW_CACHE_SLOTS = 16 };
+enum { ZR_SHADOW_CACHE_SLOTS = 16, ZR_SHAFT_SLOTS = 4,
+       ZR_SHAFT_LIST_MAX = 16 };
+/* What an area light's shadow rays from a point can meet
+   (lib/trace/shaft.h): n = -1 unknown, 0 nothing, else only objects[0
+   .. n), each stopping any ray that crosses it. */
+typedef struct zr_shaft_plan {
+  int n;
+  const zr_object *objects[ZR_SHAFT_LIST_MAX];
+} zr_shaft_plan;
 typedef struct zr_shadow_cache {
   const zr_light *light[ZR_SHADOW_CACHE_SLOTS];
   const zr_object *blocker[ZR_SHADOW_CACHE_SLOTS];
+  /* The last shafts tested (lib/trace/shaft.c): hull + 1 (0: an empty
+     slot), the point the shadow rays leave from, and the plan, which
+     the next light of the same group from the same point reuses. */
+  struct zr_shaft_memo {
+    uint32_t hull;
+    zr_vec3 apex;
+    zr_shaft_plan plan;
+  } shaft[ZR_SHAFT_SLOTS];
+  unsigned shaft_next;
 } zr_shadow_cache;
 
 typedef struct zr_tracer {
