@@ -3,8 +3,8 @@
  * scene text through the parser to the tracer's crossings, normals,
  * inside tests and bounds (lib/trace/obj_torus.c, obj_polygon.c,
  * obj_superellipsoid.c, obj_prism.c, obj_lathe.c, obj_blob.c,
- * obj_sor.c, lib/sdl/build_shape.c), and the polynomial root
- * finder they share (lib/trace/roots.c).
+ * obj_sor.c, obj_julia.c, lib/sdl/build_shape.c), and the polynomial
+ * root finder they share (lib/trace/roots.c).
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -17,6 +17,7 @@
 
 #include "config.h"
 #include "scene/scene.h"
+#include "scene/shapes.h"
 #include "trace/intersect.h"
 #include "trace/obj_shapes.h"
 #include "trace/roots.h"
@@ -541,6 +542,57 @@ static void test_shapes_prism_wall_sides(void **state) {
   }
 }
 
+/* The quaternion orbit kept in locals (obj_julia.c quaternion_orbit)
+   decides inside as the loop over arrays it replaced, written out here
+   in the same arithmetic: sqr and cube, at points all over the
+   bounding ball and beyond (default slice: w = 0). */
+static void test_shapes_julia_quaternion_orbit(void **state) {
+  fixture *f = *state;
+  static const char *const texts[] = {
+      "julia_fractal { <-0.083, 0, -0.83, -0.025> quaternion sqr\n"
+      "  max_iteration 8 precision 15 }\n",
+      "julia_fractal { <-0.2, 0.4, 0.1, 0.3> quaternion cube\n"
+      "  max_iteration 12 }\n",
+  };
+  uint64_t seed = 99;
+  for (int c = 0; c < 2; c++) {
+    const zr_object *o = only(f, texts[c]);
+    assert_int_equal(o->kind, ZR_OBJ_JULIA);
+    const struct zr_julia *j = o->u.julia.data;
+    int power = c == 0 ? 2 : 3, in_count = 0;
+    for (int k = 0; k < 20000; k++) {
+      double h[4] = {0.0, 0.0, 0.0, 0.0};
+      for (int m = 0; m < 3; m++)
+        h[m] = 2.4 * (2.0 * lcg_uniform(&seed) - 1.0);
+      zr_vec3 p = zr_v3(h[0], h[1], h[2]);
+      int i = 0;
+      for (; i < j->max_iteration; i++) {
+        double n2 = h[0] * h[0] + h[1] * h[1] + h[2] * h[2] + h[3] * h[3];
+        if (n2 > j->escape * j->escape)
+          break;
+        double next[4], x = h[0], vv = n2 - h[0] * h[0];
+        if (power == 2) {
+          next[0] = x * x - vv;
+          for (int m = 1; m < 4; m++)
+            next[m] = 2.0 * x * h[m];
+        } else {
+          double sv = 3.0 * x * x - vv;
+          next[0] = x * (x * x - 3.0 * vv);
+          for (int m = 1; m < 4; m++)
+            next[m] = sv * h[m];
+        }
+        for (int m = 0; m < 4; m++)
+          h[m] = next[m] + j->c[m];
+      }
+      bool in = i == j->max_iteration;
+      in_count += in;
+      assert_int_equal(zr__inside(o, p), in);
+    }
+    /* Both kinds of point are met. */
+    assert_true(in_count > 100 && in_count < 19900);
+  }
+}
+
 static void test_shapes_prism_bad_input(void **state) {
   fixture *f = *state;
   bad(f, "prism { 0, 1, 2, <0, 0>, <1, 0> }\n", ZR_ESCENE,
@@ -743,6 +795,7 @@ int main(void) {
       TEST(test_shapes_prism_bezier_conic_open),
       TEST(test_shapes_prism_spline_forms),
       TEST(test_shapes_prism_wall_sides),
+      TEST(test_shapes_julia_quaternion_orbit),
       TEST(test_shapes_prism_bad_input),
       TEST(test_shapes_lathe_tube),
       TEST(test_shapes_lathe_bad_input),
