@@ -31,6 +31,37 @@ static void test_core_vec_cross_left_handed(void **state) {
   assert_vec(zr_v3_norm(zr_v3(0, 0, 0)), 0, 0, 0, EPS);
 }
 
+/* zr_min and zr_max give libm's fmin and fmax bit for bit (the sign of
+   a zero included) on every pair of special values, and a NaN where
+   both are NaNs; volatile keeps the compiler from folding libm's. */
+static void test_core_min_max_as_libm(void **state) {
+  (void)state;
+  static volatile double v[] = {0.0,       -0.0,      1.0,    -1.0,
+                                1e-310,    -1e-310,   1e300,  -1e300,
+                                INFINITY,  -INFINITY, NAN,    -NAN,
+                                0x1p-1074, 2.5};
+  size_t n = sizeof v / sizeof v[0];
+  for (size_t i = 0; i < n; i++)
+    for (size_t j = 0; j < n; j++) {
+      double a = v[i], b = v[j];
+      double got[2] = {zr_min(a, b), zr_max(a, b)};
+      double want[2] = {fmin(a, b), fmax(a, b)};
+      for (int k = 0; k < 2; k++) {
+        if (isnan(want[k])) {
+          assert_true(isnan(got[k]));
+          continue;
+        }
+        if (memcmp(&got[k], &want[k], sizeof got[k]) != 0)
+          fail_msg("%s(%g, %g): %g, libm %g", k ? "zr_max" : "zr_min", a,
+                   b, got[k], want[k]);
+      }
+    }
+  assert_vec(zr_v3_min(zr_v3(1, -2, NAN), zr_v3(NAN, 3, 4)), 1, -2, 4, 0);
+  assert_vec(zr_v3_max(zr_v3(1, -2, NAN), zr_v3(NAN, 3, 4)), 1, 3, 4, 0);
+  assert_true(zr_v3_max_comp(zr_v3(-1, 7, 3)) == 7.0);
+  assert_true(zr_v3_min_comp(zr_v3(-1, 7, 3)) == -1.0);
+}
+
 static void test_core_rotate_matches_povray(void **state) {
   (void)state;
   zr_transform t;
@@ -183,6 +214,7 @@ static void test_core_diag_format(void **state) {
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_core_vec_cross_left_handed),
+      cmocka_unit_test(test_core_min_max_as_libm),
       cmocka_unit_test(test_core_rotate_matches_povray),
       cmocka_unit_test(test_core_transform_order_and_inverse),
       cmocka_unit_test(test_core_matrix_keyword),

@@ -3,8 +3,8 @@
  * scene text through the parser to the tracer's crossings, normals,
  * inside tests and bounds (lib/trace/obj_torus.c, obj_polygon.c,
  * obj_superellipsoid.c, obj_prism.c, obj_lathe.c, obj_blob.c,
- * obj_sor.c, lib/sdl/build_shape.c), and the polynomial root
- * finder they share (lib/trace/roots.c).
+ * obj_sor.c, obj_julia.c, lib/sdl/build_shape.c), and the polynomial
+ * root finder they share (lib/trace/roots.c).
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -17,6 +17,7 @@
 
 #include "config.h"
 #include "scene/scene.h"
+#include "scene/shapes.h"
 #include "trace/intersect.h"
 #include "trace/obj_shapes.h"
 #include "trace/roots.h"
@@ -384,6 +385,17 @@ static void test_shapes_prism_linear_frame(void **state) {
   assert_vec(h[0].normal, 0, 1, 0, 1e-12);
   assert_vec(h[1].normal, 0, -1, 0, 1e-12);
   assert_int_equal(cross(o, zr_v3(3, 5, 4), zr_v3(0, -1, 0), 0.0, h), 0);
+  /* Its two crossings through the rim are all it has there, so a CSG
+     asks no further (interval_free); of four, the far two are not. */
+  bool all = false;
+  zr_ray rim = {zr_v3(-5, 0.5, 0.5), zr_v3(1, 0, 0)};
+  assert_int_equal(zr__intersect_all(o, &rim, 0.0, INFINITY, false, h, &all),
+                   2);
+  assert_true(all);
+  zr_ray hole = {zr_v3(-5, 0.5, 4), zr_v3(1, 0, 0)};
+  assert_int_equal(
+      zr__intersect_all(o, &hole, 0.0, INFINITY, false, h, &all), 2);
+  assert_false(all);
   assert_true(zr__inside(o, zr_v3(0.5, 0.5, 4)));
   assert_false(zr__inside(o, zr_v3(3, 0.5, 4)));
   assert_false(zr__inside(o, zr_v3(0.5, 1.5, 4)));
@@ -447,6 +459,138 @@ static void test_shapes_prism_spline_forms(void **state) {
   double cubic[8] = {0, 2, 6, -4, 0, 0.5, -3, 2.5};
   for (int i = 0; i < 8; i++)
     assert_near(seg[i], cubic[i], 1e-12);
+}
+
+/* A uniform number in [0, 1) from a 64-bit LCG (Knuth's MMIX). */
+static double lcg_uniform(uint64_t *seed) {
+  *seed = *seed * 6364136223846793005ULL + 1442695040888963407ULL;
+  return (double)(*seed >> 11) * 0x1p-53;
+}
+
+/* The walls' sides worked out once (zr__prism_wall_sides) give the same
+   crossings and normals, bit for bit, as the per-hit test beside the
+   wall, which a copy without them falls back on: rays from all around
+   at prisms with holes, crossing and touching sub-prisms, sharp spikes
+   and a zero-length piece.  The ones with straight pieces clear of the
+   others must have their sides known (else the fast path is never
+   taken), and pieces that others cross must not. */
+static void test_shapes_prism_wall_sides(void **state) {
+  fixture *f = *state;
+  static const struct {
+    const char *text;
+    int known_min, unknown_min; /* pieces of each kind, at least */
+  } cases[] = {
+      /* The corpus' aug10-2.pov hexagon, and a frame (hole inside). */
+      {"prism { linear_sweep linear_spline 0, 1, 7, <3,5>, <-3,5>,\n"
+       "  <-5,0>, <-3,-5>, <3,-5>, <5,0>, <3,5> rotate 90*x }\n",
+       6, 0},
+      {"prism { linear_spline -1, 2, 10, <0,0>, <0,8>, <6,8>, <6,0>,\n"
+       "  <0,0>, <1,1>, <5,1>, <5,7>, <1,7>, <1,1> }\n",
+       8, 0},
+      /* Two squares overlapping (their crossing walls change side
+         halfway), a triangle touching one at a corner. */
+      {"prism { linear_spline 0, 1, 14, <0,0>, <4,0>, <4,4>, <0,4>,\n"
+       "  <0,0>, <2,2>, <6,2>, <6,6>, <2,6>, <2,2>, <4,4>, <8,3>,\n"
+       "  <8,5>, <4,4> }\n",
+       0, 6},
+      /* A star of needle-sharp spikes, and a repeated point. */
+      {"prism { linear_spline 0, 0.5, 9, <0,0>, <10,0>, <0,0.01>,\n"
+       "  <-10,0.6>, <0,1>, <0,1>, <-0.2,0.5>, <-10,-0.3>, <0,0> }\n",
+       2, 2},
+  };
+  uint64_t seed = 12345;
+  for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+    const zr_object *o = only(f, cases[c].text);
+    assert_int_equal(o->kind, ZR_OBJ_PRISM);
+    const signed char *side = o->u.prism.side;
+    assert_non_null(side);
+    int known = 0, unknown = 0;
+    for (size_t i = 0; i < o->u.prism.n_seg; i++)
+      side[i] ? known++ : unknown++;
+    assert_true(known >= cases[c].known_min);
+    assert_true(unknown >= cases[c].unknown_min);
+    zr_object plain;
+    memcpy(&plain, o, zr__object_size(o->kind));
+    plain.u.prism.side = NULL;
+    zr_vec3 lo, hi;
+    assert_true(zr__object_bounds(o, &lo, &hi));
+    zr_vec3 mid = zr_v3_scale(zr_v3_add(lo, hi), 0.5);
+    double r = zr_v3_len(zr_v3_sub(hi, lo));
+    int crossings = 0;
+    for (int k = 0; k < 4000; k++) {
+      /* From a sphere around the prism towards a point in its box. */
+      double u = 2.0 * lcg_uniform(&seed) - 1.0;
+      double a = 2.0 * M_PI * lcg_uniform(&seed), w = sqrt(1.0 - u * u);
+      zr_vec3 from = zr_v3_madd(mid, zr_v3(w * cos(a), u, w * sin(a)), r);
+      zr_vec3 to = zr_v3(lo.x + (hi.x - lo.x) * lcg_uniform(&seed),
+                         lo.y + (hi.y - lo.y) * lcg_uniform(&seed),
+                         lo.z + (hi.z - lo.z) * lcg_uniform(&seed));
+      zr_vec3 d = zr_v3_sub(to, from);
+      for (double tmin = 0.0; tmin < 2.0; tmin += 0.5) {
+        zr_hit fast[ZR_MAX_CROSSINGS], slow[ZR_MAX_CROSSINGS];
+        int n = cross(o, from, d, tmin, fast);
+        assert_int_equal(cross(&plain, from, d, tmin, slow), n);
+        for (int i = 0; i < n; i++) {
+          assert_memory_equal(&fast[i].t, &slow[i].t, sizeof fast[i].t);
+          assert_memory_equal(&fast[i].normal, &slow[i].normal,
+                              sizeof fast[i].normal);
+          crossings++;
+        }
+      }
+    }
+    assert_true(crossings > 1000);
+  }
+}
+
+/* The quaternion orbit kept in locals (obj_julia.c quaternion_orbit)
+   decides inside as the loop over arrays it replaced, written out here
+   in the same arithmetic: sqr and cube, at points all over the
+   bounding ball and beyond (default slice: w = 0). */
+static void test_shapes_julia_quaternion_orbit(void **state) {
+  fixture *f = *state;
+  static const char *const texts[] = {
+      "julia_fractal { <-0.083, 0, -0.83, -0.025> quaternion sqr\n"
+      "  max_iteration 8 precision 15 }\n",
+      "julia_fractal { <-0.2, 0.4, 0.1, 0.3> quaternion cube\n"
+      "  max_iteration 12 }\n",
+  };
+  uint64_t seed = 99;
+  for (int c = 0; c < 2; c++) {
+    const zr_object *o = only(f, texts[c]);
+    assert_int_equal(o->kind, ZR_OBJ_JULIA);
+    const struct zr_julia *j = o->u.julia.data;
+    int power = c == 0 ? 2 : 3, in_count = 0;
+    for (int k = 0; k < 20000; k++) {
+      double h[4] = {0.0, 0.0, 0.0, 0.0};
+      for (int m = 0; m < 3; m++)
+        h[m] = 2.4 * (2.0 * lcg_uniform(&seed) - 1.0);
+      zr_vec3 p = zr_v3(h[0], h[1], h[2]);
+      int i = 0;
+      for (; i < j->max_iteration; i++) {
+        double n2 = h[0] * h[0] + h[1] * h[1] + h[2] * h[2] + h[3] * h[3];
+        if (n2 > j->escape * j->escape)
+          break;
+        double next[4], x = h[0], vv = n2 - h[0] * h[0];
+        if (power == 2) {
+          next[0] = x * x - vv;
+          for (int m = 1; m < 4; m++)
+            next[m] = 2.0 * x * h[m];
+        } else {
+          double sv = 3.0 * x * x - vv;
+          next[0] = x * (x * x - 3.0 * vv);
+          for (int m = 1; m < 4; m++)
+            next[m] = sv * h[m];
+        }
+        for (int m = 0; m < 4; m++)
+          h[m] = next[m] + j->c[m];
+      }
+      bool in = i == j->max_iteration;
+      in_count += in;
+      assert_int_equal(zr__inside(o, p), in);
+    }
+    /* Both kinds of point are met. */
+    assert_true(in_count > 100 && in_count < 19900);
+  }
 }
 
 static void test_shapes_prism_bad_input(void **state) {
@@ -650,6 +794,8 @@ int main(void) {
       TEST(test_shapes_prism_linear_frame),
       TEST(test_shapes_prism_bezier_conic_open),
       TEST(test_shapes_prism_spline_forms),
+      TEST(test_shapes_prism_wall_sides),
+      TEST(test_shapes_julia_quaternion_orbit),
       TEST(test_shapes_prism_bad_input),
       TEST(test_shapes_lathe_tube),
       TEST(test_shapes_lathe_bad_input),

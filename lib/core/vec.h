@@ -25,6 +25,23 @@ typedef struct zr_rgb {
   double r, g, b;
 } zr_rgb;
 
+/*
+ * fmin and fmax without the call: glibc's are functions in libm (gcc
+ * inlines them only under -ffinite-math-only), and the prism, CSG and
+ * box code calls them for every piece of every object a ray passes
+ * (7% of the corpus' aug10-2.pov in calls alone).  The same answers:
+ * the smaller (larger) of two numbers, the other when one is a NaN,
+ * and for equal ones (+0 and -0) the second, as glibc's minsd/maxsd
+ * give it (tests/test_core.c compares them with libm's on every pair of
+ * a set of special values).
+ */
+static inline double zr_min(double a, double b) {
+  return a < b ? a : b != b ? a : b;
+}
+static inline double zr_max(double a, double b) {
+  return a > b ? a : b != b ? a : b;
+}
+
 static inline zr_vec3 zr_v3(double x, double y, double z) {
   zr_vec3 v = {x, y, z};
   return v;
@@ -70,16 +87,16 @@ static inline zr_vec3 zr_v3_norm(zr_vec3 a) {
   return l > 0.0 ? zr_v3_scale(a, 1.0 / l) : a;
 }
 static inline double zr_v3_min_comp(zr_vec3 a) {
-  return fmin(a.x, fmin(a.y, a.z));
+  return zr_min(a.x, zr_min(a.y, a.z));
 }
 static inline double zr_v3_max_comp(zr_vec3 a) {
-  return fmax(a.x, fmax(a.y, a.z));
+  return zr_max(a.x, zr_max(a.y, a.z));
 }
 static inline zr_vec3 zr_v3_min(zr_vec3 a, zr_vec3 b) {
-  return zr_v3(fmin(a.x, b.x), fmin(a.y, b.y), fmin(a.z, b.z));
+  return zr_v3(zr_min(a.x, b.x), zr_min(a.y, b.y), zr_min(a.z, b.z));
 }
 static inline zr_vec3 zr_v3_max(zr_vec3 a, zr_vec3 b) {
-  return zr_v3(fmax(a.x, b.x), fmax(a.y, b.y), fmax(a.z, b.z));
+  return zr_v3(zr_max(a.x, b.x), zr_max(a.y, b.y), zr_max(a.z, b.z));
 }
 static inline double zr_v3_get(zr_vec3 a, int axis) {
   return axis == 0 ? a.x : axis == 1 ? a.y : a.z;

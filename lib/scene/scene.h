@@ -706,12 +706,15 @@ struct zr_object {
          x = seg[0] + seg[1] s + seg[2] s^2 + seg[3] s^3, z likewise
          with seg[4..7].  lo and hi box the curve (x, z in .x, .z);
          box[4 i ..] = xlo, xhi, zlo, zhi box piece i (NULL: not made,
-         the tracer then works them out per call). */
+         the tracer then works them out per call).  side[i] tells
+         which way piece i's wall faces (lib/trace/obj_prism.c
+         zr__prism_wall_sides; NULL or 0: not known, found per hit). */
       int spline; /* 0 linear, 1 quadratic, 2 cubic, 3 bezier */
       bool conic, open, sturm;
       double y0, y1; /* y0 <= y1 */
       const double *seg;
       const double *box;
+      const signed char *side;
       size_t n_seg;
       zr_vec3 lo, hi;
       zr_vec3 *points; /* as written, kept while the parser reads it */

@@ -522,6 +522,11 @@ bool zr__sdl_prism_done(zr_sdl_parser *p, zr_object *o,
   o->u.prism.box = piece_boxes(p, &c);
   o->u.prism.lo = zr_v3(lx, 0.0, lz);
   o->u.prism.hi = zr_v3(hx, 0.0, hz);
+  signed char *side = zr__sdl_alloc(p, c.n ? c.n : 1);
+  if (!side)
+    return false;
+  zr__prism_wall_sides(o, side);
+  o->u.prism.side = side;
   return true;
 }
 

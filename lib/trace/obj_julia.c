@@ -480,11 +480,64 @@ static void bicomplex_power(const double h[4], int power, double out[4],
  * cube only), it receives the orbit's radii up to ORBIT_MAX and the
  * product of the growth radii over the steps taken.
  */
+/*
+ * orbit_escape's loop for quaternions, the iterate in locals rather
+ * than in h[] and next[] (which the compiler kept in memory, every
+ * step storing and loading them): the same arithmetic in the same
+ * order, so the same orbit bit for bit.  Inline, so that each of its
+ * two callers gets a copy with rec known to be NULL or not.
+ */
+static inline int quaternion_orbit(const struct zr_julia *j, double h[4],
+                                   double limit2, int power, orbit *rec) {
+  double h0 = h[0], h1 = h[1], h2 = h[2], h3 = h[3];
+  const double c0 = j->c[0], c1 = j->c[1], c2 = j->c[2], c3 = j->c[3];
+  int i = 0;
+  for (; i < j->max_iteration; i++) {
+    double n2 = h0 * h0 + h1 * h1 + h2 * h2 + h3 * h3;
+    if (n2 > limit2)
+      break;
+    double vv = n2 - h0 * h0, n0, s;
+    if (power == 2) {
+      n0 = h0 * h0 - vv;
+      s = 2.0 * h0;
+    } else {
+      n0 = h0 * (h0 * h0 - 3.0 * vv);
+      s = 3.0 * h0 * h0 - vv;
+    }
+    if (rec) {
+      double r = sqrt(n2); /* |h|, and its growth radius (see orbit) */
+      if (i < ORBIT_MAX) {
+        rec->radius[i] = r;
+        rec->growth[i] = r;
+        rec->n = i + 1;
+      }
+      rec->growth2_product *= n2;
+    }
+    h0 = n0 + c0;
+    h1 = s * h1 + c1;
+    h2 = s * h2 + c2;
+    h3 = s * h3 + c3;
+  }
+  h[0] = h0;
+  h[1] = h1;
+  h[2] = h2;
+  h[3] = h3;
+  return i;
+}
+
 static int orbit_escape(const struct zr_julia *j, double h[4],
                         double slack, orbit *rec) {
   double limit2 = j->escape * j->escape * slack;
   int power = j->function == ZR_JULIA_CUBE ? 3 : 2;
   bool quaternion = j->algebra == ZR_JULIA_QUATERNION;
+  if (quaternion) {
+    if (rec) {
+      rec->n = 0;
+      rec->growth2_product = 1.0;
+      return quaternion_orbit(j, h, limit2, power, rec);
+    }
+    return quaternion_orbit(j, h, limit2, power, NULL);
+  }
   bool polynomial = has_estimate(j);
   const double *c = j->c;
   if (rec) {

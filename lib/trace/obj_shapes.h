@@ -52,6 +52,9 @@ int zr__prism_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
                         zr_vec3 normal[4]);
 bool zr__prism_inside(const zr_object *o, zr_vec3 p);
 void zr__prism_bounds(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi);
+/* Which way each piece's wall faces, side[i] for the prism's n_seg
+   pieces (see lib/scene/scene.h), once its curves and box are made. */
+void zr__prism_wall_sides(const zr_object *o, signed char *side);
 /* Whether (x, z) is inside the curves of n pieces (a prism's or a
    lathe's seg, with its box, which may be NULL) by the even-odd rule. */
 bool zr__curves_cover(const double *seg, const double *box, size_t n,

@@ -91,9 +91,11 @@ typedef struct zr_shape_ops {
      or given by the crossing (uv_from_hit). */
   void (*uv)(const zr_object *o, zr_vec3 p, double *u, double *v);
   bool uv_from_hit; /* the hit's (u, v) are the crossing's (a mesh) */
-  /* crossings ignores the interval: the list is the same whatever
-     (tmin, tmax) is asked, so a part of a CSG object that gave all of
-     its crossings at once needs no second asking (lib/trace/csg.c). */
+  /* crossings (or search) uses the interval as a filter only: the
+     list is that of the whole line, cut to whatever (tmin, tmax) is
+     asked, so a part of a CSG object that gave all of its crossings
+     in the interval at once (at most two) needs no second asking
+     (lib/trace/csg.c). */
   bool interval_free;
   /* The object a crossing with texture list index k reports (a mesh's
      textured copy); NULL: the object itself. */
