@@ -566,6 +566,7 @@ zr_status zr__height_field_mesh(const zr_object *o, zr_arena *arena,
 /* The operations the tracer calls through (lib/trace/shape.h). */
 const zr_shape_ops zr__shape_height_field = {
     .name = "a height_field",
+    .search = zr__height_field_crossings,
     .search_upto = hf_search_upto,
     .inside = zr__height_field_inside,
     .bounds = zr__height_field_bounds,
