@@ -21,6 +21,8 @@
 #include "sdl/sdl.h"
 #include "test_util.h"
 
+#include "../bench/noise/noise_tables.h"
+
 /* Opens tests/noise/name in the source tree (ZR_SRCDIR, set by make
    check, or the current folder). */
 static FILE *open_data(const char *name) {
@@ -313,6 +315,57 @@ static void test_noise_cells(void **state) {
   assert_int_equal(n, 604);
 }
 
+/* The lattice noise's sum written plainly (noise.c, blend()), compiled
+   with the test's default flags: the library's noises, which may run
+   as their AVX2 copies, must give the same bits at ordinary points. */
+static double ref_smooth(double t) { return t * t * (3 - 2 * t); }
+
+static double ref_blend(zr_vec3 p, const double (*tab)[4]) {
+  double f[3] = {floor(p.x), floor(p.y), floor(p.z)};
+  int64_t c[3] = {(int64_t)f[0], (int64_t)f[1], (int64_t)f[2]};
+  double t[3] = {p.x - (double)c[0], p.y - (double)c[1], p.z - (double)c[2]};
+  double w[3][2];
+  for (int a = 0; a < 3; a++) {
+    w[a][1] = ref_smooth(t[a]);
+    w[a][0] = 1 - w[a][1];
+  }
+  double sum = 0;
+  for (int i = 0; i < 2; i++)
+    for (int j = 0; j < 2; j++)
+      for (int k = 0; k < 2; k++) {
+        unsigned h = zr__noise_hash(c[0] + i, c[1] + j, c[2] + k,
+                                    NOISE_HASH_OFFSET) & 255u;
+        double wc = w[0][i] * w[1][j] * w[2][k];
+        const double *e = tab[h];
+        sum += wc * (e[0] + e[1] * (t[0] - i) + e[2] * (t[1] - j) +
+                     e[3] * (t[2] - k));
+      }
+  return sum;
+}
+
+static void test_noise_blend_reference(void **state) {
+  (void)state;
+  uint64_t s = 12345;
+  for (int n = 0; n < 20000; n++) {
+    double v[3];
+    for (int a = 0; a < 3; a++) {
+      s = s * 6364136223846793005u + 1442695040888963407u;
+      v[a] = ((double)(s >> 11) / 9007199254740992.0 - 0.5) * 2000.0;
+    }
+    zr_vec3 p = zr_v3(v[0], v[1], v[2]);
+    double want = ref_blend(p, noise_lattice);
+    want = want < 0 ? 0 : want > 1 ? 1 : want;
+    double got = zr__noise_lattice(p);
+    assert_memory_equal(&got, &want, sizeof got);
+    zr_vec3 d = zr__dnoise_lattice(p);
+    double dg[3] = {d.x, d.y, d.z};
+    for (int m = 0; m < 3; m++) {
+      double dw = ref_blend(p, dnoise_lattice[m]);
+      assert_memory_equal(&dg[m], &dw, sizeof dw);
+    }
+  }
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_noise_rand_streams),
@@ -320,6 +373,7 @@ int main(void) {
       cmocka_unit_test(test_noise_far),
       cmocka_unit_test(test_noise_dfar),
       cmocka_unit_test(test_noise_cells),
+      cmocka_unit_test(test_noise_blend_reference),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -143,6 +143,22 @@ blend(zr_vec3 p, const double (*const *tables)[4], int n_tables,
     out[m] = sum[m];
 }
 
+/* The two noises' own copies for AVX2 processors, chosen when the
+   library loads (GCC's target_clones): blend() inlined into them is the
+   same double operations in the same order, no fused multiply-add (AVX2
+   does not bring FMA, and -std=c11 contracts nothing), so the same
+   values, computed 8-12% faster (advanced/mediasky.pov at 80x60,
+   interleaved under chrt: 1.36-1.44 against 1.49-1.57 CPU s, same
+   PNG).  tests/test_noise.c (noise_blend_reference) checks both against
+   a plain copy of the sum, bit for bit. */
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && \
+    defined(__ELF__)
+#define NOISE_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define NOISE_CLONES
+#endif
+
+NOISE_CLONES
 double zr__noise_lattice(zr_vec3 p) {
   const double (*tables[1])[4] = {noise_lattice};
   double n;
@@ -151,6 +167,7 @@ double zr__noise_lattice(zr_vec3 p) {
   return n < 0 ? 0 : n > 1 ? 1 : n;
 }
 
+NOISE_CLONES
 zr_vec3 zr__dnoise_lattice(zr_vec3 p) {
   const double (*tables[3])[4] = {dnoise_lattice[0], dnoise_lattice[1],
                                   dnoise_lattice[2]};
