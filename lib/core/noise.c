@@ -143,23 +143,17 @@ blend(zr_vec3 p, const double (*const *tables)[4], int n_tables,
     out[m] = sum[m];
 }
 
-/* The two noises' own copies for AVX2 processors, chosen when the
-   library loads (GCC's target_clones): blend() inlined into them is the
-   same double operations in the same order, no fused multiply-add (AVX2
-   does not bring FMA, and -std=c11 contracts nothing), so the same
-   values, computed 8-12% faster (advanced/mediasky.pov at 80x60,
-   interleaved under chrt: 1.36-1.44 against 1.49-1.57 CPU s, same
-   PNG).  tests/test_noise.c (noise_blend_reference) checks both against
-   a plain copy of the sum, bit for bit. */
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && \
-    defined(__ELF__)
-#define NOISE_CLONES __attribute__((target_clones("avx2", "default")))
-#else
-#define NOISE_CLONES
-#endif
-
-NOISE_CLONES
-double zr__noise_lattice(zr_vec3 p) {
+/* The two noises have copies for AVX2 processors, chosen at each call
+   by the processor's features (GCC's target_clones would export the
+   functions from the library, whatever their visibility): blend()
+   inlined into them is the same double operations in the same order,
+   no fused multiply-add (AVX2 does not bring FMA, and -std=c11
+   contracts nothing), so the same values, computed 7% faster (floor
+   becomes one rounding instruction; advanced/mediasky.pov at 80x60,
+   interleaved under chrt: 1.36 against 1.45-1.48 CPU s, same PNG).  tests/test_noise.c
+   (noise_blend_reference) checks them against a plain copy of the sum,
+   bit for bit. */
+static inline __attribute__((always_inline)) double lattice_at(zr_vec3 p) {
   const double (*tables[1])[4] = {noise_lattice};
   double n;
   blend(p, tables, 1, &n);
@@ -167,14 +161,37 @@ double zr__noise_lattice(zr_vec3 p) {
   return n < 0 ? 0 : n > 1 ? 1 : n;
 }
 
-NOISE_CLONES
-zr_vec3 zr__dnoise_lattice(zr_vec3 p) {
+static inline __attribute__((always_inline)) zr_vec3 dlattice_at(zr_vec3 p) {
   const double (*tables[3])[4] = {dnoise_lattice[0], dnoise_lattice[1],
                                   dnoise_lattice[2]};
   double d[3];
   blend(p, tables, 3, d);
   return zr_v3(d[0], d[1], d[2]);
 }
+
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+static double lattice_plain(zr_vec3 p) { return lattice_at(p); }
+__attribute__((target("avx2"))) static double lattice_avx2(zr_vec3 p) {
+  return lattice_at(p);
+}
+static zr_vec3 dlattice_plain(zr_vec3 p) { return dlattice_at(p); }
+__attribute__((target("avx2"))) static zr_vec3 dlattice_avx2(zr_vec3 p) {
+  return dlattice_at(p);
+}
+
+double zr__noise_lattice(zr_vec3 p) {
+  return __builtin_cpu_supports("avx2") ? lattice_avx2(p) : lattice_plain(p);
+}
+
+zr_vec3 zr__dnoise_lattice(zr_vec3 p) {
+  return __builtin_cpu_supports("avx2") ? dlattice_avx2(p)
+                                        : dlattice_plain(p);
+}
+#else
+double zr__noise_lattice(zr_vec3 p) { return lattice_at(p); }
+
+zr_vec3 zr__dnoise_lattice(zr_vec3 p) { return dlattice_at(p); }
+#endif
 
 double zr__noise_gen3(zr_vec3 p) {
   zr_vec3 q = zr_v3(p.x + GEN3_OFFSET, p.y + GEN3_OFFSET, p.z + GEN3_OFFSET);
