@@ -115,4 +115,22 @@ static inline double zr__surface_offset(zr_vec3 p) {
   return 1e-8 * fmax(1.0, m);
 }
 
+/* Whether kind is one of the simple shapes whose crossings cost one
+   closed-form test (no search, no hierarchy of its own): the shadow
+   cache (shade.c) and the light shafts (shaft.c) keep only these. */
+static inline bool zr__simple_kind(zr_object_kind kind) {
+  switch (kind) {
+  case ZR_OBJ_SPHERE:
+  case ZR_OBJ_BOX:
+  case ZR_OBJ_PLANE:
+  case ZR_OBJ_TRIANGLE:
+  case ZR_OBJ_CYLINDER:
+  case ZR_OBJ_CONE:
+  case ZR_OBJ_DISC:
+    return true;
+  default:
+    return false;
+  }
+}
+
 #endif /* ZR_TRACE_INTERSECT_H */

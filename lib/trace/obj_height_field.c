@@ -318,6 +318,28 @@ static void walk_leaf(hf_search *s, int i0, int i1, int j0, int j1,
   }
 }
 
+/* Block (l, bx, bz) of the field's hierarchy, grown by pad: false when
+   it holds nothing above the water or the ray misses its box; else its
+   sample range [i0, i1] x [j0, j1] and the ray's stretch in it. */
+static bool block_entry(hf_search *s, int l, int bx, int bz, double pad,
+                        int ij[4], double *ta, double *exit) {
+  const struct zr_hf_grid *g = s->g;
+  const float *r = g->range + 2 * (g->level[l].start +
+                                   (size_t)bz * (size_t)g->level[l].nx +
+                                   (size_t)bx);
+  if (r[1] < s->water)
+    return false; /* every triangle in it is under the water */
+  int side = ZR_HF_BLOCK << l;
+  int i0 = bx * side, j0 = bz * side;
+  int i1 = i0 + side < g->w - 1 ? i0 + side : g->w - 1;
+  int j1 = j0 + side < g->h - 1 ? j0 + side : g->h - 1;
+  zr_vec3 lo = zr_v3(i0 * s->dx - pad, r[0] - pad, j0 * s->dz - pad);
+  zr_vec3 hi = zr_v3(i1 * s->dx + pad, r[1] + pad, j1 * s->dz + pad);
+  *ta = box_entry(s, lo, hi, exit);
+  ij[0] = i0, ij[1] = i1, ij[2] = j0, ij[3] = j1;
+  return *ta != INFINITY;
+}
+
 /* The most leaf blocks a ray's crossing of the slab of heights may
    cover for them to be tested without the descent. */
 #define FEW_BLOCKS 16
@@ -392,20 +414,10 @@ static int hf_search_upto(const zr_object *o, zr_vec3 org, zr_vec3 dir,
           /* Nearest first along each axis, as the descent goes. */
           int cx = dir.x >= 0.0 ? bx : bx0 + bx1 - bx;
           int cz = dir.z >= 0.0 ? bz : bz0 + bz1 - bz;
-          const float *r = g->range + 2 * (g->level[0].start +
-                                           (size_t)cz * (size_t)nx +
-                                           (size_t)cx);
-          if (r[1] < water)
-            continue;
-          int i0 = cx * ZR_HF_BLOCK, j0 = cz * ZR_HF_BLOCK;
-          int i1 = i0 + ZR_HF_BLOCK < g->w - 1 ? i0 + ZR_HF_BLOCK : g->w - 1;
-          int j1 = j0 + ZR_HF_BLOCK < g->h - 1 ? j0 + ZR_HF_BLOCK : g->h - 1;
-          zr_vec3 lo = zr_v3(i0 * s.dx - pad, r[0] - pad, j0 * s.dz - pad);
-          zr_vec3 hi = zr_v3(i1 * s.dx + pad, r[1] + pad, j1 * s.dz + pad);
-          double exit;
-          double ta = box_entry(&s, lo, hi, &exit);
-          if (ta != INFINITY)
-            walk_leaf(&s, i0, i1, j0, j1, ta, exit);
+          int ij[4];
+          double ta, exit;
+          if (block_entry(&s, 0, cx, cz, pad, ij, &ta, &exit))
+            walk_leaf(&s, ij[0], ij[1], ij[2], ij[3], ta, exit);
         }
       return found(&s, t, normal);
     }
@@ -424,23 +436,12 @@ static int hf_search_upto(const zr_object *o, zr_vec3 org, zr_vec3 dir,
   while (sp > 0) {
     sp--;
     int l = stack[sp].level, bx = stack[sp].bx, bz = stack[sp].bz;
-    const float *r = g->range + 2 * (g->level[l].start +
-                                     (size_t)bz * (size_t)g->level[l].nx +
-                                     (size_t)bx);
-    if (r[1] < water)
-      continue; /* every triangle in it is under the water */
-    int side = ZR_HF_BLOCK << l;
-    int i0 = bx * side, j0 = bz * side;
-    int i1 = i0 + side < g->w - 1 ? i0 + side : g->w - 1;
-    int j1 = j0 + side < g->h - 1 ? j0 + side : g->h - 1;
-    zr_vec3 lo = zr_v3(i0 * s.dx - pad, r[0] - pad, j0 * s.dz - pad);
-    zr_vec3 hi = zr_v3(i1 * s.dx + pad, r[1] + pad, j1 * s.dz + pad);
-    double exit;
-    double ta = box_entry(&s, lo, hi, &exit);
-    if (ta == INFINITY)
+    int ij[4];
+    double ta, exit;
+    if (!block_entry(&s, l, bx, bz, pad, ij, &ta, &exit))
       continue;
     if (l == 0) {
-      walk_leaf(&s, i0, i1, j0, j1, ta, exit);
+      walk_leaf(&s, ij[0], ij[1], ij[2], ij[3], ta, exit);
       continue;
     }
     for (int k = 3; k >= 0; k--) {

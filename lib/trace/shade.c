@@ -290,18 +290,7 @@ static bool mesh_stops_light(const zr_object *o, void *user) {
    (bench/peers.sh's terrain took 15% longer at 2048^2 when its mesh was
    kept). */
 static bool cheap_blocker(const zr_object *o) {
-  switch (o->kind) {
-  case ZR_OBJ_SPHERE:
-  case ZR_OBJ_BOX:
-  case ZR_OBJ_PLANE:
-  case ZR_OBJ_TRIANGLE:
-  case ZR_OBJ_CYLINDER:
-  case ZR_OBJ_CONE:
-  case ZR_OBJ_DISC:
-    return !o->solid && !o->clip;
-  default:
-    return false;
-  }
+  return zr__simple_kind(o->kind) && !o->solid && !o->clip;
 }
 
 static unsigned cache_slot(const zr_light *light) {

@@ -465,18 +465,8 @@ static bool prim_clear(const zr_object *o, void *user) {
  * the object itself (not a CSG part, not a mesh's textured copy).
  */
 static bool stops_light(const zr_object *o) {
-  switch (o->kind) {
-  case ZR_OBJ_SPHERE:
-  case ZR_OBJ_BOX:
-  case ZR_OBJ_PLANE:
-  case ZR_OBJ_TRIANGLE:
-  case ZR_OBJ_CYLINDER:
-  case ZR_OBJ_CONE:
-  case ZR_OBJ_DISC:
-    break;
-  default:
+  if (!zr__simple_kind(o->kind))
     return false;
-  }
   const zr_texture *tx = o->texture;
   if (o->solid || o->no_shadow || !tx || tx->over || tx->map || !tx->pigment)
     return false;
