@@ -524,39 +524,58 @@ static int add_pigment(compiler *c, const zr_pigment *pg) {
   return add_extern(c, pigment_extern, pg);
 }
 
+/* A call's arguments (want of them) on the stack, then '.' and one of
+   items[]: its index, the component's token consumed; -1 after an error.
+   kind names the function ("a pigment function") and part what follows
+   the '.' ("a colour component") in the messages. */
+static int call_component(compiler *c, const zr_sdl_token *name, int want,
+                          const char *kind, const char *part,
+                          const char *const items[], size_t n_items) {
+  int n = arguments(c);
+  if (n < 0)
+    return -1;
+  if (n != want) {
+    fail_at(c, name, ZR_ESYNTAX, "function '%s' takes %d argument%s, not %d",
+            name->v.str, want, want == 1 ? "" : "s", n);
+    return -1;
+  }
+  if (!accept(c, '.')) {
+    char what[96];
+    snprintf(what, sizeof what, "'.' and %s after %s", part, kind);
+    expected(c, what);
+    return -1;
+  }
+  for (size_t k = 0; k < n_items; k++)
+    if (is_word(tok(c), items[k]) ||
+        (tok(c)->kind == T_IDENTIFIER && strcmp(tok(c)->v.str,
+                                                items[k]) == 0)) {
+      c->pos++;
+      return (int)k;
+    }
+  char what[64];
+  snprintf(what, sizeof what, "%s after '.'", part);
+  expected(c, what);
+  return -1;
+}
+
 /* F(x, y, z).channel for a pigment function F ("Function Pattern":
    "you have to specify which component of the color vector should be
    used"): the call becomes one OP_TEXTURE on this body's copy of F's
    pigment. */
 static bool call_pigment(compiler *c, const zr_fn *callee,
                          const zr_sdl_token *name) {
-  int n = arguments(c);
-  if (n < 0)
-    return false;
-  if (n != 3)
-    return fail_at(c, name, ZR_ESYNTAX,
-                   "function '%s' takes 3 arguments, not %d", name->v.str,
-                   n);
-  if (!accept(c, '.'))
-    return expected(c, "'.' and a colour component after a pigment "
-                       "function");
   static const char *const items[] = {"x", "y", "z", "t", "u", "v",
                                       "red", "green", "blue", "filter",
                                       "transmit", "gray", "grey", "hf"};
   static const int channel[] = {0, 1, 2, 3, 0, 1, 0, 1, 2, 3, 4,
                                 TEXTURE_GREY, TEXTURE_GREY, TEXTURE_HF};
-  for (size_t k = 0; k < sizeof items / sizeof items[0]; k++) {
-    if (is_word(tok(c), items[k]) ||
-        (tok(c)->kind == T_IDENTIFIER && strcmp(tok(c)->v.str,
-                                                items[k]) == 0)) {
-      c->pos++;
-      int at = add_pigment(c, callee->externs[0].what);
-      if (at < 0)
-        return false;
-      return emit(c, OP_TEXTURE, at, channel[k], -2);
-    }
-  }
-  return expected(c, "a colour component after '.'");
+  int k = call_component(c, name, 3, "a pigment function",
+                         "a colour component", items,
+                         sizeof items / sizeof items[0]);
+  if (k < 0)
+    return false;
+  int at = add_pigment(c, callee->externs[0].what);
+  return at >= 0 && emit(c, OP_TEXTURE, at, channel[k], -2);
 }
 
 /* Adds a spline to the body's pool; its index, or -1. */
@@ -578,31 +597,16 @@ static int add_transform(compiler *c, const zr_transform *t) {
    transform. */
 static bool call_transform(compiler *c, const zr_fn *callee,
                            const zr_sdl_token *name) {
-  int n = arguments(c);
-  if (n < 0)
-    return false;
-  if (n != 3)
-    return fail_at(c, name, ZR_ESYNTAX,
-                   "function '%s' takes 3 arguments, not %d", name->v.str,
-                   n);
-  if (!accept(c, '.'))
-    return expected(c, "'.' and a vector component after a transform "
-                       "function");
   static const char *const items[] = {"x", "y", "z", "u", "v",
                                       "red", "green", "blue"};
   static const int channel[] = {0, 1, 2, 0, 1, 0, 1, 2};
-  for (size_t k = 0; k < sizeof items / sizeof items[0]; k++) {
-    if (is_word(tok(c), items[k]) ||
-        (tok(c)->kind == T_IDENTIFIER && strcmp(tok(c)->v.str,
-                                                items[k]) == 0)) {
-      c->pos++;
-      int at = add_transform(c, callee->transforms[0]);
-      if (at < 0)
-        return false;
-      return emit(c, OP_XFORM, at, channel[k], -2);
-    }
-  }
-  return expected(c, "a vector component after '.'");
+  int k = call_component(c, name, 3, "a transform function",
+                         "a vector component", items,
+                         sizeof items / sizeof items[0]);
+  if (k < 0)
+    return false;
+  int at = add_transform(c, callee->transforms[0]);
+  return at >= 0 && emit(c, OP_XFORM, at, channel[k], -2);
 }
 
 /* F(t).component for a spline function F ("Spline": a function of a
@@ -610,31 +614,17 @@ static bool call_transform(compiler *c, const zr_fn *callee,
    spline. */
 static bool call_spline(compiler *c, const zr_fn *callee,
                         const zr_sdl_token *name) {
-  int n = arguments(c);
-  if (n < 0)
-    return false;
-  if (n != 1)
-    return fail_at(c, name, ZR_ESYNTAX,
-                   "function '%s' takes 1 argument, not %d", name->v.str, n);
-  if (!accept(c, '.'))
-    return expected(c, "'.' and a vector component after a spline "
-                       "function");
   static const char *const items[] = {"x", "y", "z", "t", "u", "v",
                                       "red", "green", "blue", "filter",
                                       "transmit"};
   static const int channel[] = {0, 1, 2, 3, 0, 1, 0, 1, 2, 3, 4};
-  for (size_t k = 0; k < sizeof items / sizeof items[0]; k++) {
-    if (is_word(tok(c), items[k]) ||
-        (tok(c)->kind == T_IDENTIFIER && strcmp(tok(c)->v.str,
-                                                items[k]) == 0)) {
-      c->pos++;
-      int at = add_spline(c, callee->externs[0].what);
-      if (at < 0)
-        return false;
-      return emit(c, OP_SPLINE, at, channel[k], 0);
-    }
-  }
-  return expected(c, "a vector component after '.'");
+  int k = call_component(c, name, 1, "a spline function",
+                         "a vector component", items,
+                         sizeof items / sizeof items[0]);
+  if (k < 0)
+    return false;
+  int at = add_spline(c, callee->externs[0].what);
+  return at >= 0 && emit(c, OP_SPLINE, at, channel[k], 0);
 }
 
 /* A declared identifier in a body. */
