@@ -437,11 +437,10 @@ zr_status zr__bvh_build(zr_scene *scene, zr_context *ctx) {
   struct zr_bvh *bvh = calloc(1, sizeof *bvh);
   size_t n = scene->n_primitives;
   build_item *items = malloc((n ? n : 1) * sizeof *items);
-  bvh->prims = bvh ? malloc((n ? n : 1) * sizeof *bvh->prims) : NULL;
-  bvh->spheres = bvh ? malloc((n ? n : 1) * sizeof *bvh->spheres) : NULL;
-  bvh->unbounded = bvh ? malloc((n ? n : 1) * sizeof *bvh->unbounded)
-                       : NULL;
   if (bvh) {
+    bvh->prims = malloc((n ? n : 1) * sizeof *bvh->prims);
+    bvh->spheres = malloc((n ? n : 1) * sizeof *bvh->spheres);
+    bvh->unbounded = malloc((n ? n : 1) * sizeof *bvh->unbounded);
     bvh->prim_index = malloc((n ? n : 1) * sizeof *bvh->prim_index);
     bvh->unbounded_index =
         malloc((n ? n : 1) * sizeof *bvh->unbounded_index);
