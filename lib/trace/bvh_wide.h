@@ -229,6 +229,26 @@ static inline int zr__wide_push_in_order(const zr_wide_node *w,
   return sp;
 }
 
+/* The children of w that mask names, into met[] sorted by entry
+   distance, nearest first (an insertion sort: ties keep the tree's
+   order); returns how many.  Both nearest-first pushes below use it. */
+static inline int zr__wide_sort_met(const zr_wide_node *w, unsigned mask,
+                                    const float t[ZR_WIDE_WIDTH],
+                                    zr_wide_entry met[ZR_WIDE_WIDTH]) {
+  int n = 0;
+  for (; mask; mask &= mask - 1) {
+    int c = __builtin_ctz(mask);
+    zr_wide_entry x = {w->child[c], w->count[c], t[c]};
+    int k = n++;
+    while (k > 0 && met[k - 1].t > x.t) {
+      met[k] = met[k - 1];
+      k--;
+    }
+    met[k] = x;
+  }
+  return n;
+}
+
 /* Pushes the same children sorted nearest first (ties keep the tree's
    order), farthest pushed first, so the nearest is searched first and
    shrinks the interval for the others.  Returns the new stack size. */
@@ -238,18 +258,7 @@ static inline int zr__wide_push_nearest_first(const zr_wide_node *w,
                                               zr_wide_entry *stack, int sp,
                                               int cap) {
   zr_wide_entry met[ZR_WIDE_WIDTH];
-  int n = 0;
-  for (int c = 0; c < ZR_WIDE_WIDTH; c++) {
-    if (!(mask >> c & 1))
-      continue;
-    zr_wide_entry x = {w->child[c], w->count[c], t[c]};
-    int k = n++;
-    while (k > 0 && met[k - 1].t > x.t) {
-      met[k] = met[k - 1];
-      k--;
-    }
-    met[k] = x;
-  }
+  int n = zr__wide_sort_met(w, mask, t, met);
   for (int k = n - 1; k >= 0 && sp < cap; k--)
     stack[sp++] = met[k];
   return sp;
@@ -291,17 +300,7 @@ static inline int zr__wide_next_nearest_first(const zr_wide_node *w,
     return sp;
   }
   zr_wide_entry met[ZR_WIDE_WIDTH];
-  int n = 0;
-  for (; mask; mask &= mask - 1) {
-    int c = __builtin_ctz(mask);
-    zr_wide_entry x = {w->child[c], w->count[c], t[c]};
-    int k = n++;
-    while (k > 0 && met[k - 1].t > x.t) {
-      met[k] = met[k - 1];
-      k--;
-    }
-    met[k] = x;
-  }
+  int n = zr__wide_sort_met(w, mask, t, met);
   *next = met[0];
   for (int k = n - 1; k >= 1 && sp < cap; k--)
     stack[sp++] = met[k];
