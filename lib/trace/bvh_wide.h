@@ -155,6 +155,23 @@ static inline void zr__make_slab_ray(const zr_ray *ray, zr_slab_ray *s) {
 static inline float zr__min_lane(float a, float b) { return a < b ? a : b; }
 static inline float zr__max_lane(float a, float b) { return a > b ? a : b; }
 
+#ifdef __SSE2__
+/* One axis of zr__slab_entries' SSE test: narrows [*t0, *t1], lane by
+   lane, to the four children's slabs along axis a. */
+static inline void zr__slab_axis(const zr_wide_node *w, const zr_slab_ray *r,
+                                 int a, __m128 extent, __m128 *t0,
+                                 __m128 *t1) {
+  __m128 org = r->org4[a], inv = r->inv4[a];
+  __m128 pad = _mm_add_ps(r->org_pad4[a], _mm_mul_ps(r->ext_pad4[a], extent));
+  __m128 ta = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(w->lo[a]), org), inv);
+  __m128 tb = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(w->hi[a]), org), inv);
+  __m128 near = _mm_sub_ps(_mm_min_ps(ta, tb), pad);
+  __m128 far = _mm_add_ps(_mm_max_ps(ta, tb), pad);
+  *t0 = _mm_max_ps(*t0, near);
+  *t1 = _mm_min_ps(*t1, far);
+}
+#endif
+
 /*
  * Which of w's children the ray meets within (tmin, tmax): bit c of the
  * result for child c, with the entry distance, lowered by the margin, in
@@ -170,17 +187,12 @@ static inline unsigned zr__slab_entries(const zr_wide_node *w, const zr_slab_ray
 #ifdef __SSE2__
   __m128 t0 = _mm_set1_ps(tmin), t1 = _mm_set1_ps(tmax);
   __m128 extent = _mm_set1_ps(w->extent);
-  for (int a = 0; a < 3; a++) {
-    __m128 org = r->org4[a], inv = r->inv4[a];
-    __m128 pad = _mm_add_ps(r->org_pad4[a],
-                            _mm_mul_ps(r->ext_pad4[a], extent));
-    __m128 ta = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(w->lo[a]), org), inv);
-    __m128 tb = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(w->hi[a]), org), inv);
-    __m128 near = _mm_sub_ps(_mm_min_ps(ta, tb), pad);
-    __m128 far = _mm_add_ps(_mm_max_ps(ta, tb), pad);
-    t0 = _mm_max_ps(t0, near);
-    t1 = _mm_min_ps(t1, far);
-  }
+  /* The three axes written out: GCC -O2 kept the loop over them, its
+     counter and address arithmetic (2% of the sphereflake's
+     instructions). */
+  zr__slab_axis(w, r, 0, extent, &t0, &t1);
+  zr__slab_axis(w, r, 1, extent, &t0, &t1);
+  zr__slab_axis(w, r, 2, extent, &t0, &t1);
   _mm_storeu_ps(t, t0);
   return (unsigned)_mm_movemask_ps(_mm_cmple_ps(t0, t1));
 #else
@@ -229,6 +241,26 @@ static inline int zr__wide_push_in_order(const zr_wide_node *w,
   return sp;
 }
 
+/* The children of w that mask names, into met[] sorted by entry
+   distance, nearest first (an insertion sort: ties keep the tree's
+   order); returns how many.  Both nearest-first pushes below use it. */
+static inline int zr__wide_sort_met(const zr_wide_node *w, unsigned mask,
+                                    const float t[ZR_WIDE_WIDTH],
+                                    zr_wide_entry met[ZR_WIDE_WIDTH]) {
+  int n = 0;
+  for (; mask; mask &= mask - 1) {
+    int c = __builtin_ctz(mask);
+    zr_wide_entry x = {w->child[c], w->count[c], t[c]};
+    int k = n++;
+    while (k > 0 && met[k - 1].t > x.t) {
+      met[k] = met[k - 1];
+      k--;
+    }
+    met[k] = x;
+  }
+  return n;
+}
+
 /* Pushes the same children sorted nearest first (ties keep the tree's
    order), farthest pushed first, so the nearest is searched first and
    shrinks the interval for the others.  Returns the new stack size. */
@@ -238,18 +270,7 @@ static inline int zr__wide_push_nearest_first(const zr_wide_node *w,
                                               zr_wide_entry *stack, int sp,
                                               int cap) {
   zr_wide_entry met[ZR_WIDE_WIDTH];
-  int n = 0;
-  for (int c = 0; c < ZR_WIDE_WIDTH; c++) {
-    if (!(mask >> c & 1))
-      continue;
-    zr_wide_entry x = {w->child[c], w->count[c], t[c]};
-    int k = n++;
-    while (k > 0 && met[k - 1].t > x.t) {
-      met[k] = met[k - 1];
-      k--;
-    }
-    met[k] = x;
-  }
+  int n = zr__wide_sort_met(w, mask, t, met);
   for (int k = n - 1; k >= 0 && sp < cap; k--)
     stack[sp++] = met[k];
   return sp;
@@ -291,17 +312,7 @@ static inline int zr__wide_next_nearest_first(const zr_wide_node *w,
     return sp;
   }
   zr_wide_entry met[ZR_WIDE_WIDTH];
-  int n = 0;
-  for (; mask; mask &= mask - 1) {
-    int c = __builtin_ctz(mask);
-    zr_wide_entry x = {w->child[c], w->count[c], t[c]};
-    int k = n++;
-    while (k > 0 && met[k - 1].t > x.t) {
-      met[k] = met[k - 1];
-      k--;
-    }
-    met[k] = x;
-  }
+  int n = zr__wide_sort_met(w, mask, t, met);
   *next = met[0];
   for (int k = n - 1; k >= 1 && sp < cap; k--)
     stack[sp++] = met[k];
