@@ -298,6 +298,29 @@ static void test_media_density_scales(void **state) {
                  "interior { media { absorption 0.5 density { planar "
                  "color_map { [0 rgb 0] [1 rgb 0.25] } } } } }\n");
   assert_near(v, BACK * exp(-0.25 * 0.975), EPS);
+  /* The product stops at a density that is zero in every channel
+     (media.c's density_at()): the same light whichever side the zero
+     is on, and a zero in one channel only still takes the next
+     density in the others. */
+  float rgb[3];
+  centre_rgb(f, SCENE_HEAD
+             "box { <-1,-1,-1>, <1,1,1> pigment { rgbt 1 } hollow "
+             "interior { media { absorption 0.5 density { rgb 0 } "
+             "density { planar color_map { [0 rgb 0.2] [1 rgb 1] } } "
+             "} } }\n", rgb);
+  assert_near(rgb[1], BACK, EPS);
+  centre_rgb(f, SCENE_HEAD
+             "box { <-1,-1,-1>, <1,1,1> pigment { rgbt 1 } hollow "
+             "interior { media { absorption 0.5 density { planar "
+             "color_map { [0 rgb 0.2] [1 rgb 1] } } density { rgb 0 } "
+             "} } }\n", rgb);
+  assert_near(rgb[1], BACK, EPS);
+  centre_rgb(f, SCENE_HEAD
+             "box { <-1,-1,-1>, <1,1,1> pigment { rgbt 1 } hollow "
+             "interior { media { absorption 0.5 density { rgb <0, 1, 1> } "
+             "density { rgb 0.5 } } } }\n", rgb);
+  assert_near(rgb[0], BACK, EPS);
+  assert_near(rgb[1], BACK * exp(-0.5), EPS);
 }
 
 static void test_media_atmosphere(void **state) {

@@ -223,10 +223,18 @@ double zr__media_phase(const zr_medium *medium, double cos_angle) {
 
 /* ----- the coefficients at a point ------------------------------------ */
 
+/* The product of the medium's densities at p.  Once it is zero in every
+   channel the densities left cannot change it, so they are not
+   evaluated (benchmark.pov's clouds: the first density's colour_map is
+   black over half its range, and the second is a seven-octave
+   turbulence). */
 static zr_rgb density_at(const zr_medium *medium, zr_vec3 p) {
   zr_rgb d = zr_rgb3(1, 1, 1);
-  for (size_t i = 0; i < medium->n_density; i++)
+  for (size_t i = 0; i < medium->n_density; i++) {
     d = zr_rgb_mul(d, zr_colour_rgb(zr__pigment_eval(medium->density[i], p)));
+    if (rgb_zero(d))
+      break;
+  }
   return d;
 }
 
