@@ -113,6 +113,7 @@ typedef enum opt_key {
   K_ALPHA_OFF,
   K_CONTINUE_OFF,
   K_STATE_INTERVAL,
+  K_FILE_GAMMA,   /* File_Gamma=sRGB|G (3.2.4.7) */
   /* Scene parsing (3.2.5). */
   K_DECLARE,
   K_LANG_VERSION,
@@ -1023,6 +1024,19 @@ static int apply(const arg_ctx *c, opt_key key, const char *value) {
     o->jpeg_quality = q < 0 ? 0 : q > 100 ? 100 : (int)q;
     return 0;
   }
+  case K_FILE_GAMMA: {
+    /* "File Gamma": sRGB or a display gamma to pre-correct for; a
+       legacy scene ignores it (zr_scene_file_gamma). */
+    double g;
+    if (value && !strcasecmp(value, "srgb"))
+      o->file_gamma = 0.0;
+    else if (parse_real(value, &g) && g > 0.0)
+      o->file_gamma = g;
+    else
+      return fail(c, "'%s': the file gamma must be sRGB or a positive "
+                     "number, as in File_Gamma=2.2", c->what);
+    return 0;
+  }
   case K_GI_SAVE:
     return set_string(c, &o->gi_save, value);
   case K_GI_LOAD:
@@ -1395,8 +1409,7 @@ static const ini_option ini_options[] = {
     {"Output_Alpha", K_ALPHA_ON, 1, K_ALPHA_OFF, NULL},
     NOTE("Dither", "ignored: zrcube does not dither"),
     NOTE("Dither_Method", "ignored: zrcube does not dither"),
-    NOTE("File_Gamma", "ignored: the file gamma follows the scene's "
-                       "assumed_gamma"),
+    {"File_Gamma", K_FILE_GAMMA, 0, K_FILE_GAMMA, NULL},
     NOTE("Grayscale_Output", "ignored: the image is written in colour"),
     NOTE("Histogram_Type", "ignored: POV-Ray 3.7 has no histogram"),
     NOTE("Histogram_Name", "ignored: POV-Ray 3.7 has no histogram"),

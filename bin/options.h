@@ -36,6 +36,7 @@ typedef struct zr_cli_options {
      output name's extension names no type (AUTO: none given). */
   zr_image_format ini_format;
   int jpeg_quality;       /* +FJn: 0 .. 100 (0 and 1: 85), 0 if not given */
+  double file_gamma;      /* File_Gamma: 0 sRGB (default), else a gamma */
   int write_output;       /* 0 after -F */
   char **include_paths;   /* +L, in the order given, duplicates dropped */
   size_t n_include_paths;

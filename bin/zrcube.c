@@ -830,6 +830,20 @@ static void print_radiosity_stats(const run *r) {
           st.closure_min, st.closure_max, st.light_power);
 }
 
+/* Writes an image of the scene as POV-Ray would: the scene's working
+   gamma undone, then the file gamma (File_Gamma, sRGB by default), or
+   none at all in a legacy scene (zr_scene_file_gamma). */
+static zr_status write_image(run *r, const zr_image *image,
+                             const char *path, zr_image_format format) {
+  zr_image_encoding enc;
+  zr_image_encoding_init(&enc, format);
+  enc.assumed_gamma = zr_scene_assumed_gamma(r->scene);
+  double scene_gamma = zr_scene_file_gamma(r->scene);
+  enc.file_gamma = scene_gamma > 0.0 ? scene_gamma : r->opts.file_gamma;
+  enc.quality = r->opts.jpeg_quality;
+  return zr_image_save(r->ctx, image, path, &enc);
+}
+
 /* --radiosity-mesh=FILE: the solution's mesh at the render's size, on
    rank 0 (it depends only on the solution, the same on every rank). */
 static zr_status write_radiosity_mesh(run *r) {
@@ -840,8 +854,7 @@ static zr_status write_radiosity_mesh(run *r) {
   if (s == ZR_OK)
     s = zr_radiosity_mesh_image(r->rad, p, zr_image_pixels(mesh));
   if (s == ZR_OK)
-    s = zr_image_write(r->ctx, mesh, r->opts.rad_mesh, ZR_FORMAT_AUTO,
-                       zr_scene_assumed_gamma(r->scene));
+    s = write_image(r, mesh, r->opts.rad_mesh, ZR_FORMAT_AUTO);
   if (s != ZR_OK && r->diag.errors_printed == before)
     fprintf(stderr, "zrcube: cannot write the radiosity mesh to '%s': "
                     "%s\n", r->opts.rad_mesh, zr_status_str(s));
@@ -1069,8 +1082,7 @@ static zr_status render_path(run *r) {
       out[i] = (float)(sum[i] / done);
     }
     if (done < total && r->opts.write_output &&
-        zr_image_write(r->ctx, r->image, r->output_path, r->format,
-                       zr_scene_assumed_gamma(r->scene)) != ZR_OK)
+        write_image(r, r->image, r->output_path, r->format) != ZR_OK)
       fprintf(stderr, "zrcube: cannot write '%s' after %d samples\n",
               r->output_path, done);
   }
@@ -1168,8 +1180,7 @@ static zr_status write_to_stdout(run *r) {
   }
   close(fd);
   unsigned before = r->diag.errors_printed;
-  zr_status s = zr_image_write(r->ctx, r->image, path, r->format,
-                               zr_scene_assumed_gamma(r->scene));
+  zr_status s = write_image(r, r->image, path, r->format);
   FILE *f = s == ZR_OK ? fopen(path, "rb") : NULL;
   if (s == ZR_OK && !f)
     s = ZR_EIO;
@@ -1291,11 +1302,7 @@ static int render_and_write(run *r) {
     if (r->opts.to_stdout) {
       s = write_to_stdout(r);
     } else {
-      zr_image_encoding enc;
-      zr_image_encoding_init(&enc, r->format);
-      enc.assumed_gamma = zr_scene_assumed_gamma(r->scene);
-      enc.quality = r->opts.jpeg_quality;
-      s = zr_image_save(r->ctx, r->image, r->output_path, &enc);
+      s = write_image(r, r->image, r->output_path, r->format);
       if (s != ZR_OK && r->diag.errors_printed == before)
         fprintf(stderr, "zrcube: cannot write '%s': %s\n", r->output_path,
                 zr_status_str(s));
@@ -1416,6 +1423,12 @@ static void print_scene_info(const run *r) {
          info.finite_primitives, info.infinite_primitives, info.lights,
          info.has_camera ? "yes" : "no (the default)", r->parse_seconds,
          info.parse_steps, zr_context_memory_peak(r->ctx));
+  /* Whether POV-Ray would gamma-correct the picture (a legacy scene
+     without assumed_gamma: no, zr_scene_file_gamma). */
+  printf("assumed gamma: %g%s\n", zr_scene_assumed_gamma(r->scene),
+         zr_scene_file_gamma(r->scene) > 0.0
+             ? " (legacy scene: gamma correction off)"
+             : "");
 }
 
 /* Frees what one frame made. */

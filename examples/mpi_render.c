@@ -20,6 +20,17 @@ static void print_diag(const zr_diag *d, void *user) {
     fputs(d->text, stderr);
 }
 
+/* The picture as POV-Ray writes it: the scene's working gamma undone,
+   sRGB codes, or none at all for a legacy scene (zr_scene_file_gamma). */
+static zr_status write_picture(zr_context *ctx, const zr_scene *scene,
+                               const zr_image *image, const char *path) {
+  zr_image_encoding e;
+  zr_image_encoding_init(&e, ZR_FORMAT_AUTO);
+  e.assumed_gamma = zr_scene_assumed_gamma(scene);
+  e.file_gamma = zr_scene_file_gamma(scene);
+  return zr_image_save(ctx, image, path, &e);
+}
+
 int main(int argc, char **argv) {
   MPI_Init(&argc, &argv);
   int world_rank;
@@ -78,8 +89,7 @@ int main(int argc, char **argv) {
   if (s == ZR_OK)
     s = zr_mpi_render_image(mpi, scene, &params, 1, image);
   if (s == ZR_OK && rank == 0)
-    s = zr_image_write(ctx, image, argv[2], ZR_FORMAT_AUTO,
-                       zr_scene_assumed_gamma(scene));
+    s = write_picture(ctx, scene, image, argv[2]);
   if (s != ZR_OK)
     fprintf(stderr, "mpi_render: rank %d: %s\n", rank, zr_status_str(s));
   zr_image_free(image);

@@ -32,6 +32,17 @@ static int print_progress(const zr_progress *p, void *user) {
   return p->phase == ZR_PHASE_RENDER && percent >= stop_at;
 }
 
+/* The picture as POV-Ray writes it: the scene's working gamma undone,
+   sRGB codes, or none at all for a legacy scene (zr_scene_file_gamma). */
+static zr_status write_picture(zr_context *ctx, const zr_scene *scene,
+                               const zr_image *image, const char *path) {
+  zr_image_encoding e;
+  zr_image_encoding_init(&e, ZR_FORMAT_AUTO);
+  e.assumed_gamma = zr_scene_assumed_gamma(scene);
+  e.file_gamma = zr_scene_file_gamma(scene);
+  return zr_image_save(ctx, image, path, &e);
+}
+
 int main(int argc, char **argv) {
   if (argc != 3 && argc != 4) {
     fprintf(stderr, "usage: %s scene.pov out.png [stop-at-percent]\n",
@@ -59,8 +70,7 @@ int main(int argc, char **argv) {
   if (s == ZR_OK)
     s = zr_render_image(scene, &params, zr_image_pixels(image), NULL);
   if (s == ZR_OK)
-    s = zr_image_write(ctx, image, argv[2], ZR_FORMAT_AUTO,
-                       zr_scene_assumed_gamma(scene));
+    s = write_picture(ctx, scene, image, argv[2]);
   if (s != ZR_OK)
     fprintf(stderr, "\nrender: %s\n", zr_status_str(s));
   signal(SIGINT, SIG_DFL);

@@ -964,6 +964,11 @@ typedef struct zr_image_encoding {
   double assumed_gamma;   /* as zr_image_write's; default 1.0 */
   int quality;            /* JPEG quality 2 .. 100; 0 or 1: 85 (default) */
   int alpha;              /* 1 (default): write the alpha channel if any */
+  /* POV-Ray's File_Gamma for the 8 and 16 bit formats: 0 (default) the
+     sRGB transfer; G > 0 codes pre-corrected for a display of gamma G,
+     linear^(1/G) (PNG files then carry gAMA 1/G).  Pass
+     zr_scene_file_gamma() when it is not 0. */
+  double file_gamma;
 } zr_image_encoding;
 
 ZR_API void zr_image_encoding_init(zr_image_encoding *e,
@@ -993,8 +998,19 @@ ZR_API zr_status zr_image_save(zr_context *ctx, const zr_image *image,
 /* 1 when this build of the library writes and reads the format. */
 ZR_API int zr_image_format_supported(zr_image_format format);
 
-/* The scene's assumed_gamma (1.0 when the scene does not set it). */
+/* The scene's assumed_gamma (1.0 when the scene does not set it; 2.2
+   in a legacy scene, see zr_scene_file_gamma). */
 ZR_API double zr_scene_assumed_gamma(const zr_scene *scene);
+
+/*
+ * The file gamma the scene imposes, 0 when it leaves it to the caller
+ * (zr_image_encoding's file_gamma, sRGB by default).  A legacy scene
+ * (neither assumed_gamma nor a #version 3.7 in force at its end) has
+ * POV-Ray's gamma correction turned off ("Gamma in Legacy Scenes"): its
+ * colours are written as they are, whatever File_Gamma says, which is
+ * assumed_gamma 2.2 written with file gamma 2.2.
+ */
+ZR_API double zr_scene_file_gamma(const zr_scene *scene);
 
 #ifdef __cplusplus
 }

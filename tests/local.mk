@@ -338,3 +338,9 @@ EXTRA_DIST += tests/test_interior_path.sh tests/interior_path.pov
 TESTS += tests/test_sky_transform.sh
 EXTRA_DIST += tests/test_sky_transform.sh tests/sky_transform.pov
 EXTRA_DIST += tests/noise/cells.txt bench/noise/probe_cells.py
+# Gamma correction off in legacy scenes (no assumed_gamma, no #version
+# 3.7), File_Gamma, image_map codes and the antialiasing threshold,
+# povray's codes (bench/conform/legacy_gamma_probe.py prints the table).
+TESTS += tests/test_legacy_gamma_povray.sh
+EXTRA_DIST += tests/test_legacy_gamma_povray.sh \
+	bench/conform/legacy_gamma_probe.py

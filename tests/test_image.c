@@ -811,15 +811,19 @@ static void test_image_write_is_atomic(void **state) {
   zr_image_free(img);
 }
 
-/* The 8-bit encoder gives zr__encode_sample's code for every float:
+/* The 8-bit encoder gives zr__encode_code's code for every float:
    checked on a comb over all floats in (0, 1) and on every float within
-   300 of each code boundary, at gammas 1 and 2.2. */
+   300 of each code boundary, at gammas 1 and 2.2 with sRGB files and
+   with power-law file gammas (File_Gamma; 2.2 over 2.2 is a legacy
+   scene's identity). */
 static void test_image_encoder8_same_codes(void **state) {
   (void)state;
-  const double gammas[2] = {1.0, 2.2};
-  for (int g = 0; g < 2; g++) {
+  const double gammas[5][2] = {
+      {1.0, 0.0}, {2.2, 0.0}, {2.2, 2.2}, {1.0, 2.2}, {2.2, 1.0}};
+  for (int g = 0; g < 5; g++) {
+    double ag = gammas[g][0], fg = gammas[g][1];
     zr_encoder8 e;
-    zr__encoder8_init(&e, gammas[g]);
+    zr__encoder8_init(&e, ag, fg);
     uint32_t one;
     float f1 = 1.0f;
     memcpy(&one, &f1, sizeof one);
@@ -827,7 +831,7 @@ static void test_image_encoder8_same_codes(void **state) {
       float v;
       memcpy(&v, &b, sizeof v);
       assert_int_equal(zr__encoder8_code(&e, v),
-                       zr__encode_sample(v, gammas[g], 255));
+                       zr__encode_code(v, ag, fg, 255));
     }
     for (int k = 1; k < 256; k++)
       for (int d = -300; d <= 300; d++) {
@@ -835,13 +839,34 @@ static void test_image_encoder8_same_codes(void **state) {
         float v;
         memcpy(&v, &b, sizeof v);
         assert_int_equal(zr__encoder8_code(&e, v),
-                         zr__encode_sample(v, gammas[g], 255));
+                         zr__encode_code(v, ag, fg, 255));
       }
     const float odd[] = {-1.0f, 0.0f, -0.0f, 1.0f, 2.0f, NAN, INFINITY};
     for (size_t i = 0; i < sizeof odd / sizeof *odd; i++)
       assert_int_equal(zr__encoder8_code(&e, odd[i]),
-                       zr__encode_sample(odd[i], gammas[g], 255));
+                       zr__encode_code(odd[i], ag, fg, 255));
   }
+}
+
+/* The codes POV-Ray 3.7 writes for flat colours seen with ambient 1
+   (bench/conform/legacy_gamma_probe.py): a legacy scene's as they are
+   (assumed_gamma 2.2 over file gamma 2.2), sRGB under assumed_gamma 1,
+   and the power-law File_Gamma settings. */
+static void test_image_file_gamma_codes(void **state) {
+  (void)state;
+  const float v[5] = {0.002f, 0.01f, 0.05f, 0.135f, 0.3f};
+  const unsigned legacy[5] = {1, 3, 13, 34, 77};
+  const unsigned srgb[5] = {7, 25, 63, 103, 149};
+  const unsigned file22[5] = {15, 31, 65, 103, 148}; /* assumed 1 */
+  const unsigned file1[5] = {0, 0, 0, 3, 18};        /* assumed 2.2 */
+  for (int i = 0; i < 5; i++) {
+    assert_int_equal(zr__encode_code(v[i], 2.2, 2.2, 255), legacy[i]);
+    assert_int_equal(zr__encode_code(v[i], 1.0, 0.0, 255), srgb[i]);
+    assert_int_equal(zr__encode_code(v[i], 1.0, 2.2, 255), file22[i]);
+    assert_int_equal(zr__encode_code(v[i], 2.2, 1.0, 255), file1[i]);
+  }
+  assert_int_equal(zr__encode_code(0.5f, 1.0, 0.0, 255),
+                   zr__encode_sample(0.5f, 1.0, 255));
 }
 
 /* The PNG level changes the bytes' size, never the pixels: level 0
@@ -884,6 +909,7 @@ int main(void) {
       cmocka_unit_test(test_image_format_from_name),
       cmocka_unit_test(test_image_srgb_known_values),
       cmocka_unit_test(test_image_encoder8_same_codes),
+      cmocka_unit_test(test_image_file_gamma_codes),
       cmocka_unit_test_setup_teardown(test_image_png_level, setup,
                                       teardown),
       cmocka_unit_test_setup_teardown(test_image_png8_round_trip, setup,

@@ -56,14 +56,14 @@ zr_status zr__bmp_encode(zr_context *ctx, const char *name,
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s", name,
                     zr_status_str(ZR_ENOMEM));
   fwrite(header, 1, sizeof header, f);
-  double g = e->assumed_gamma;
+  double g = e->assumed_gamma, fg = e->file_gamma;
   for (int y = image->height - 1; y >= 0; y--) {
     const float *src = image->pixels + (size_t)y * image->width * 3;
     for (int x = 0; x < image->width; x++) {
       unsigned char *px = row + (size_t)x * channels;
-      px[0] = (unsigned char)zr__encode_sample(src[3 * x + 2], g, 255);
-      px[1] = (unsigned char)zr__encode_sample(src[3 * x + 1], g, 255);
-      px[2] = (unsigned char)zr__encode_sample(src[3 * x], g, 255);
+      px[0] = (unsigned char)zr__encode_code(src[3 * x + 2], g, fg, 255);
+      px[1] = (unsigned char)zr__encode_code(src[3 * x + 1], g, fg, 255);
+      px[2] = (unsigned char)zr__encode_code(src[3 * x], g, fg, 255);
       if (alpha) /* coverage, stored linearly */
         px[3] = (unsigned char)zr__encode_linear(
             image->alpha[(size_t)y * image->width + x], 255);

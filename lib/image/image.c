@@ -323,6 +323,16 @@ unsigned zr__encode_sample(float value, double assumed_gamma,
   return (unsigned)lround(zr__srgb_encode(v) * maxval);
 }
 
+unsigned zr__encode_code(float value, double assumed_gamma,
+                         double file_gamma, unsigned maxval) {
+  if (file_gamma <= 0.0)
+    return zr__encode_sample(value, assumed_gamma, maxval);
+  double v = !(value > 0.0f) ? 0.0 : value >= 1.0f ? 1.0 : value;
+  if (assumed_gamma != file_gamma)
+    v = pow(v, assumed_gamma / file_gamma);
+  return (unsigned)lround(v * maxval);
+}
+
 static uint32_t float_bits(float f) {
   uint32_t u;
   memcpy(&u, &f, sizeof u);
@@ -335,10 +345,12 @@ static float bits_float(uint32_t u) {
   return f;
 }
 
-void zr__encoder8_init(zr_encoder8 *e, double assumed_gamma) {
+void zr__encoder8_init(zr_encoder8 *e, double assumed_gamma,
+                       double file_gamma) {
   e->assumed_gamma = assumed_gamma;
-  e->zero = zr__encode_sample(0.0f, assumed_gamma, 255);
-  e->one = zr__encode_sample(1.0f, assumed_gamma, 255);
+  e->file_gamma = file_gamma;
+  e->zero = zr__encode_code(0.0f, assumed_gamma, file_gamma, 255);
+  e->one = zr__encode_code(1.0f, assumed_gamma, file_gamma, 255);
   /* Positive floats order as their bits do. */
   const uint32_t lo_bits = 1, one_bits = float_bits(1.0f);
   e->first[0] = 0;
@@ -349,7 +361,8 @@ void zr__encoder8_init(zr_encoder8 *e, double assumed_gamma) {
       lo = e->first[k - 1];
     while (lo < hi) {
       uint32_t mid = lo + (hi - lo) / 2;
-      if (zr__encode_sample(bits_float(mid), assumed_gamma, 255) >= k)
+      if (zr__encode_code(bits_float(mid), assumed_gamma, file_gamma,
+                          255) >= k)
         hi = mid;
       else
         lo = mid + 1;
@@ -375,7 +388,7 @@ unsigned zr__encoder8_code(const zr_encoder8 *e, float value) {
   while (lo < 255 && e->first[lo + 1] <= b)
     lo++;
   if (b - e->first[lo] <= 2 || e->first[lo + 1] - b <= 2)
-    return zr__encode_sample(value, e->assumed_gamma, 255);
+    return zr__encode_code(value, e->assumed_gamma, e->file_gamma, 255);
   return lo;
 }
 
@@ -524,6 +537,7 @@ ZR_API void zr_image_encoding_init(zr_image_encoding *e,
                                    zr_image_format format) {
   e->format = format;
   e->assumed_gamma = 1.0;
+  e->file_gamma = 0.0;
   e->quality = 0;
   e->alpha = 1;
 }
@@ -551,14 +565,14 @@ ZR_API int zr_image_format_supported(zr_image_format format) {
 static zr_status encode(zr_context *ctx, const zr_image *image,
                         const char *path, const zr_image_encoding *e,
                         FILE *f) {
-  double g = e->assumed_gamma;
+  double g = e->assumed_gamma, fg = e->file_gamma;
   switch (e->format) {
   case ZR_FORMAT_PNG8:
-    return zr__png_encode(ctx, path, image, 8, e->alpha, g, f);
+    return zr__png_encode(ctx, path, image, 8, e->alpha, g, fg, f);
   case ZR_FORMAT_PNG16:
-    return zr__png_encode(ctx, path, image, 16, e->alpha, g, f);
+    return zr__png_encode(ctx, path, image, 16, e->alpha, g, fg, f);
   case ZR_FORMAT_PPM:
-    return zr__ppm_encode(ctx, path, image, g, f);
+    return zr__ppm_encode(ctx, path, image, g, fg, f);
   case ZR_FORMAT_PFM:
     return zr__pfm_encode(ctx, path, image, f);
   case ZR_FORMAT_JPEG:
@@ -589,6 +603,10 @@ static zr_status check_encoding(zr_context *ctx, const zr_image *image,
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, NULL,
                     "%s: assumed_gamma must be positive, not %g", path,
                     e->assumed_gamma);
+  if (!(e->file_gamma >= 0.0) || !isfinite(e->file_gamma))
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, NULL,
+                    "%s: file_gamma must be 0 (sRGB) or positive, not %g",
+                    path, e->file_gamma);
   if (e->format <= ZR_FORMAT_AUTO || e->format > ZR_FORMAT_BMP)
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, NULL,
                     "%s: unknown image format %d", path, (int)e->format);

@@ -56,6 +56,10 @@ struct zr_image {
   /* The file states how its codes map to light (a PNG sRGB or gAMA
      chunk); false when the transfer is only presumed. */
   bool transfer_stated;
+  /* Netpbm (PPM, PGM) codes, which POV-Ray presumes to be in the scene's
+     working space ("Gamma in Input Images"), not sRGB as zr_image_read
+     decodes them. */
+  bool codes_working;
   /* Palette files (PNG colour type 3, GIF, colour-mapped TGA) only, else
      NULL and 0: the palette entry of each pixel, which image_map's
      "filter INDEX, AMOUNT" and "transmit INDEX, AMOUNT" refer to, and
@@ -100,6 +104,17 @@ unsigned zr__encode_sample(float value, double assumed_gamma,
                            unsigned maxval);
 
 /*
+ * The same with any file gamma (File_Gamma, zr_image_encoding's
+ * file_gamma): 0 is the sRGB transfer, as zr__encode_sample; G > 0
+ * pre-corrects linear light for a display of gamma G (power 1/G), so a
+ * working value is raised to assumed_gamma / G - none at all when the
+ * two are equal, which is how POV-Ray writes a legacy scene's colours
+ * ("Gamma in Legacy Scenes": gamma correction turned off).
+ */
+unsigned zr__encode_code(float value, double assumed_gamma,
+                         double file_gamma, unsigned maxval);
+
+/*
  * zr__encode_sample for 8-bit codes without a pow() per sample, giving
  * the same code for every float: first[k] is the smallest float in
  * (0, 1) whose code is at least k, found once by bisection over the
@@ -115,12 +130,14 @@ unsigned zr__encode_sample(float value, double assumed_gamma,
  */
 typedef struct zr_encoder8 {
   double assumed_gamma;
+  double file_gamma;        /* as zr__encode_code's */
   unsigned zero, one;       /* the codes of 0 and 1 */
   uint32_t first[257];      /* bits of first[k]; first[256]: of 1.0f */
   /* start[b >> 16]: the code of the float with bits b & ~0xffff. */
   uint8_t start[(0x3f800000 >> 16) + 1];
 } zr_encoder8;
-void zr__encoder8_init(zr_encoder8 *e, double assumed_gamma);
+void zr__encoder8_init(zr_encoder8 *e, double assumed_gamma,
+                       double file_gamma);
 unsigned zr__encoder8_code(const zr_encoder8 *e, float value);
 
 /* Codecs.  name is the file name that messages quote. */
@@ -129,7 +146,8 @@ zr_status zr__png_decode(zr_context *ctx, const char *name,
                          zr_image **out);
 zr_status zr__png_encode(zr_context *ctx, const char *name,
                          const zr_image *image, int bits, bool alpha,
-                         double assumed_gamma, FILE *stream);
+                         double assumed_gamma, double file_gamma,
+                         FILE *stream);
 zr_status zr__jpeg_decode(zr_context *ctx, const char *name,
                           const unsigned char *bytes, size_t size,
                           zr_image **out);
@@ -161,7 +179,7 @@ zr_status zr__tga_decode(zr_context *ctx, const char *name,
                          zr_image **out);
 zr_status zr__ppm_encode(zr_context *ctx, const char *name,
                          const zr_image *image, double assumed_gamma,
-                         FILE *stream);
+                         double file_gamma, FILE *stream);
 zr_status zr__pfm_encode(zr_context *ctx, const char *name,
                          const zr_image *image, FILE *stream);
 

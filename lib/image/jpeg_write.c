@@ -73,7 +73,8 @@ static zr_status encode_rows(jpeg_out *job, const zr_image *image,
         image->pixels + (size_t)ci->next_scanline * image->width * 3;
     for (size_t i = 0; i < (size_t)image->width * 3; i++)
       job->row[i] =
-          (unsigned char)zr__encode_sample(src[i], e->assumed_gamma, 255);
+          (unsigned char)zr__encode_code(src[i], e->assumed_gamma,
+                                         e->file_gamma, 255);
     JSAMPROW rows[1] = {job->row};
     jpeg_write_scanlines(ci, rows, 1);
   }

@@ -240,7 +240,7 @@ zr_status zr__png_decode(zr_context *ctx, const char *name,
 
 static zr_status encode_rows(png_job *job, const zr_image *image, int bits,
                              bool alpha, double assumed_gamma,
-                             FILE *stream) {
+                             double file_gamma, FILE *stream) {
   const size_t channels = alpha ? 4 : 3;
   if (setjmp(png_jmpbuf(job->png)))
     return ZR_EIO;
@@ -252,8 +252,13 @@ static zr_status encode_rows(png_job *job, const zr_image *image, int bits,
                alpha ? PNG_COLOR_TYPE_RGB_ALPHA : PNG_COLOR_TYPE_RGB,
                PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
                PNG_FILTER_TYPE_DEFAULT);
-  png_set_sRGB_gAMA_and_cHRM(job->png, job->info,
-                             PNG_sRGB_INTENT_PERCEPTUAL);
+  /* Codes pre-corrected for a display gamma say so in a gAMA chunk
+     (PNG 1.2, 10.5), sRGB codes in an sRGB chunk with its gAMA. */
+  if (file_gamma > 0.0)
+    png_set_gAMA(job->png, job->info, 1.0 / file_gamma);
+  else
+    png_set_sRGB_gAMA_and_cHRM(job->png, job->info,
+                               PNG_sRGB_INTENT_PERCEPTUAL);
   png_write_info(job->png, job->info);
   size_t bytes_per_sample = bits == 16 ? 2 : 1;
   size_t rowbytes = (size_t)image->width * channels * bytes_per_sample;
@@ -266,7 +271,7 @@ static zr_status encode_rows(png_job *job, const zr_image *image, int bits,
   unsigned maxval = bits == 16 ? 65535u : 255u;
   zr_encoder8 enc;
   if (bits == 8)
-    zr__encoder8_init(&enc, assumed_gamma);
+    zr__encoder8_init(&enc, assumed_gamma, file_gamma);
   for (int y = 0; y < image->height; y++) {
     const float *src = image->pixels + (size_t)y * image->width * 3;
     const float *a = alpha ? image->alpha + (size_t)y * image->width : NULL;
@@ -275,8 +280,8 @@ static zr_status encode_rows(png_job *job, const zr_image *image, int bits,
       unsigned code =
           c == 3      ? zr__encode_linear(a[x], maxval)
           : bits == 8 ? zr__encoder8_code(&enc, src[3 * x + c])
-                      : zr__encode_sample(src[3 * x + c], assumed_gamma,
-                                          maxval);
+                      : zr__encode_code(src[3 * x + c], assumed_gamma,
+                                        file_gamma, maxval);
       if (bits == 16) {
         job->rows[2 * i] = (unsigned char)(code >> 8);
         job->rows[2 * i + 1] = (unsigned char)(code & 0xff);
@@ -292,7 +297,8 @@ static zr_status encode_rows(png_job *job, const zr_image *image, int bits,
 
 zr_status zr__png_encode(zr_context *ctx, const char *name,
                          const zr_image *image, int bits, bool alpha,
-                         double assumed_gamma, FILE *stream) {
+                         double assumed_gamma, double file_gamma,
+                         FILE *stream) {
   png_job job;
   memset(&job, 0, sizeof job);
   job.ctx = ctx;
@@ -308,7 +314,7 @@ zr_status zr__png_encode(zr_context *ctx, const char *name,
              zr_status_str(ZR_ENOMEM));
   } else {
     s = encode_rows(&job, image, bits, alpha && image->alpha != NULL,
-                    assumed_gamma, stream);
+                    assumed_gamma, file_gamma, stream);
   }
   int write_errno = errno;
   /* A failed write (a full disk, ulimit -f) says why, as a failed flush

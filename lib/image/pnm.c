@@ -170,6 +170,7 @@ zr_status zr__pnm_decode(zr_context *ctx, const char *name,
     return s;
   size_t count = (size_t)w * h * (size_t)channels;
   s = read_samples(ctx, name, &c, binary, (unsigned)maxval, count, image);
+  image->codes_working = true;
   if (s == ZR_OK)
     *out = image;
   else
@@ -258,14 +259,14 @@ static zr_status write_failed(zr_context *ctx, const char *name) {
 
 zr_status zr__ppm_encode(zr_context *ctx, const char *name,
                          const zr_image *image, double assumed_gamma,
-                         FILE *stream) {
+                         double file_gamma, FILE *stream) {
   size_t row_len = (size_t)image->width * 3;
   unsigned char *row = malloc(row_len);
   if (!row)
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s", name,
                     zr_status_str(ZR_ENOMEM));
   zr_encoder8 enc;
-  zr__encoder8_init(&enc, assumed_gamma);
+  zr__encoder8_init(&enc, assumed_gamma, file_gamma);
   int ok = fprintf(stream, "P6\n%d %d\n255\n", image->width,
                    image->height) > 0;
   for (int y = 0; ok && y < image->height; y++) {

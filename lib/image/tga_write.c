@@ -23,15 +23,14 @@ enum { MAX_PACKET = 128 };
 
 /* The stored bytes of one row: channels (3 or 4) bytes a pixel. */
 static void encode_row(const zr_image *image, int y, size_t channels,
-                       double assumed_gamma, unsigned char *row) {
+                       const zr_image_encoding *e, unsigned char *row) {
   const float *src = image->pixels + (size_t)y * image->width * 3;
+  double g = e->assumed_gamma, fg = e->file_gamma;
   for (int x = 0; x < image->width; x++) {
     unsigned char *px = row + (size_t)x * channels;
-    px[0] = (unsigned char)zr__encode_sample(src[3 * x + 2], assumed_gamma,
-                                             255);
-    px[1] = (unsigned char)zr__encode_sample(src[3 * x + 1], assumed_gamma,
-                                             255);
-    px[2] = (unsigned char)zr__encode_sample(src[3 * x], assumed_gamma, 255);
+    px[0] = (unsigned char)zr__encode_code(src[3 * x + 2], g, fg, 255);
+    px[1] = (unsigned char)zr__encode_code(src[3 * x + 1], g, fg, 255);
+    px[2] = (unsigned char)zr__encode_code(src[3 * x], g, fg, 255);
     if (channels == 4) /* alpha is linear coverage, not a colour */
       px[3] = (unsigned char)zr__encode_linear(
           image->alpha[(size_t)y * image->width + x], 255);
@@ -99,7 +98,7 @@ zr_status zr__tga_encode(zr_context *ctx, const char *name,
                     zr_status_str(ZR_ENOMEM));
   fwrite(header, 1, sizeof header, f);
   for (int y = 0; y < image->height; y++) {
-    encode_row(image, y, channels, e->assumed_gamma, row);
+    encode_row(image, y, channels, e, row);
     if (rle)
       write_rle_row(row, image->width, channels, f);
     else

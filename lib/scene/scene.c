@@ -198,3 +198,9 @@ ZR_API void zr_scene_get_info(const zr_scene *scene, zr_scene_info *info) {
 ZR_API double zr_scene_assumed_gamma(const zr_scene *scene) {
   return scene->settings.assumed_gamma;
 }
+
+ZR_API double zr_scene_file_gamma(const zr_scene *scene) {
+  return scene->settings.gamma_correction_off
+             ? scene->settings.assumed_gamma
+             : 0.0;
+}

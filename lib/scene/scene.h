@@ -1042,6 +1042,9 @@ typedef struct zr_settings {
   int number_of_waves;  /* waves and ripples made after it; default 10 */
   int noise_generator;  /* patterns made after it; default 0 (= 2) */
   bool assumed_gamma_given;
+  /* A legacy scene without assumed_gamma: POV-Ray turns gamma
+     correction off and writes the colours as they are (directive.c). */
+  bool gamma_correction_off;
   zr_rgb ambient_light; /* default 1 */
   /* irid_wavelength: iridescence's red, green and blue wavelengths in
      microns ("Irid_Wavelength"); default <0.70, 0.52, 0.48>. */

@@ -983,7 +983,8 @@ zr_image_map *zr__sdl_image_map_new(zr_sdl_parser *p, const char *name,
  * only when the parse ends: the buffers (a float picture's pixels, or
  * the table of a coded picture's colours) wait in the parser.
  */
-static bool remember_image(zr_sdl_parser *p, float *pixels, size_t n) {
+static bool remember_image(zr_sdl_parser *p, float *pixels, size_t n,
+                           float *codes) {
   if (p->n_images == p->cap_images) {
     size_t cap = p->cap_images ? 2 * p->cap_images : 8;
     float **a = realloc(p->image_pixels, cap * sizeof *a);
@@ -992,15 +993,48 @@ static bool remember_image(zr_sdl_parser *p, float *pixels, size_t n) {
     size_t *b = a ? realloc(p->image_sizes, cap * sizeof *b) : NULL;
     if (b)
       p->image_sizes = b;
-    if (!a || !b) {
+    float **c = b ? realloc(p->image_codes, cap * sizeof *c) : NULL;
+    if (c)
+      p->image_codes = c;
+    if (!a || !b || !c) {
       zr__sdl_error(p, ZR_ENOMEM, NULL, "out of memory");
       return false;
     }
     p->cap_images = cap;
   }
   p->image_pixels[p->n_images] = pixels;
+  p->image_codes[p->n_images] = codes;
   p->image_sizes[p->n_images++] = n;
   return true;
+}
+
+/*
+ * With gamma correction off (a legacy scene without assumed_gamma,
+ * known only at the parse's end) POV-Ray 3.7 takes every coded file's
+ * codes as they are, those with an sRGB or gAMA chunk and BMP files
+ * too: codes 40, 85, 200 are written back as 40, 85, 200 under no
+ * #version or #version 3.6 (bench/conform/legacy_gamma_probe.py
+ * --section images).  The files codes_as_working does not already take
+ * so, read in a legacy part of the scene, keep their code values for
+ * then: n values from a table of maxval + 1 or from 8-bit RGB codes.
+ */
+static float *legacy_codes(zr_sdl_parser *p, const zr_image *image,
+                           bool gamma_given, size_t n) {
+  bool legacy = !p->version_given || p->version < 3.7 - 1e-9;
+  if (!legacy || gamma_given || !image->codes)
+    return NULL;
+  float *codes = zr__sdl_alloc(p, n * sizeof *codes);
+  if (!codes)
+    return NULL;
+  if (image->layout != ZR_LAYOUT_FLOAT) {
+    for (size_t k = 0; k < n; k++)
+      codes[k] = (float)((double)k / image->maxval);
+  } else { /* BMP: 8-bit RGB codes beside the pixels (image.h) */
+    const unsigned char *c = image->codes;
+    for (size_t k = 0; k < n; k++)
+      codes[k] = (float)(c[k] / 255.0);
+  }
+  return codes;
 }
 
 /*
@@ -1020,8 +1054,16 @@ static bool remember_image(zr_sdl_parser *p, float *pixels, size_t n) {
 static bool codes_as_working(const zr_sdl_parser *p, const zr_image *image,
                              bool gamma_given) {
   bool legacy = !p->version_given || p->version < 3.7 - 1e-9;
-  return legacy && !gamma_given && image->layout != ZR_LAYOUT_FLOAT &&
-         !image->transfer_stated;
+  /* BMP keeps 8-bit codes beside its float pixels (image.h); PPM and
+     PGM codes are in the working space in every version, as the manual
+     says ("Gamma in Input Images"): codes 40, 85, 200 show as sRGB(40 /
+     255) under #version 3.7 (bench/conform/legacy_gamma_probe.py
+     --section images), and BMP's as the other formats' under 3.6
+     rules. */
+  bool coded = image->layout != ZR_LAYOUT_FLOAT ||
+               (image->codes && image->maxval == 255);
+  return !gamma_given && coded &&
+         (image->codes_working || (legacy && !image->transfer_stated));
 }
 
 /* An image map's colours into the scene: a float picture's pixels, or
@@ -1029,9 +1071,26 @@ static bool codes_as_working(const zr_sdl_parser *p, const zr_image *image,
 static bool image_samples(zr_sdl_parser *p, zr_image_map *im,
                           const zr_image *image, bool gamma_given) {
   size_t n = (size_t)image->width * (size_t)image->height;
+  if (image->layout == ZR_LAYOUT_FLOAT &&
+      codes_as_working(p, image, gamma_given)) {
+    /* BMP's codes, already in the working space: not raised. */
+    float *pixels = zr__sdl_alloc(p, 3 * n * sizeof *pixels);
+    if (!pixels)
+      return false;
+    const unsigned char *c = image->codes;
+    for (size_t k = 0; k < 3 * n; k++)
+      pixels[k] = (float)(c[k] / 255.0);
+    im->pixels = pixels;
+    return true;
+  }
   if (image->layout == ZR_LAYOUT_FLOAT) {
     float *pixels = zr__sdl_alloc(p, 3 * n * sizeof *pixels);
-    if (!pixels || !remember_image(p, pixels, 3 * n))
+    bool byte_codes = image->codes && image->maxval == 255;
+    float *codes =
+        pixels && byte_codes ? legacy_codes(p, image, gamma_given, 3 * n)
+                             : NULL;
+    if (!pixels || (byte_codes && !codes && p->status != ZR_OK) ||
+        !remember_image(p, pixels, 3 * n, codes))
       return false;
     memcpy(pixels, image->pixels, 3 * n * sizeof *pixels);
     im->pixels = pixels;
@@ -1048,7 +1107,9 @@ static bool image_samples(zr_sdl_parser *p, zr_image_map *im,
     im->table = table;
     return true;
   }
-  if (!table || !remember_image(p, table, ntable))
+  float *codes = table ? legacy_codes(p, image, gamma_given, ntable) : NULL;
+  if (!table || p->status != ZR_OK ||
+      !remember_image(p, table, ntable, codes))
     return false;
   memcpy(table, image->table, ntable * sizeof *table);
   im->table = table;
@@ -1137,14 +1198,16 @@ zr_image_map *zr__sdl_bitmap_new(zr_sdl_parser *p, const char *what,
   return ok ? im : NULL;
 }
 
-void zr__sdl_images_to_working_gamma(zr_sdl_parser *p, double gamma) {
-  if (gamma == 1.0)
-    return;
-  for (size_t i = 0; i < p->n_images; i++)
-    for (size_t k = 0; k < p->image_sizes[i]; k++) {
-      float v = p->image_pixels[i][k];
-      p->image_pixels[i][k] = v > 0 ? (float)pow(v, 1.0 / gamma) : v;
-    }
+void zr__sdl_images_to_working_gamma(zr_sdl_parser *p, double gamma,
+                                     bool gamma_off) {
+  for (size_t i = 0; i < p->n_images; i++) {
+    float *v = p->image_pixels[i];
+    if (gamma_off && p->image_codes[i])
+      memcpy(v, p->image_codes[i], p->image_sizes[i] * sizeof *v);
+    else if (gamma != 1.0)
+      for (size_t k = 0; k < p->image_sizes[i]; k++)
+        v[k] = v[k] > 0 ? (float)pow(v[k], 1.0 / gamma) : v[k];
+  }
 }
 
 bool zr__sdl_image_map_mod(zr_sdl_parser *p, zr_image_map *im, int token,

@@ -1195,6 +1195,7 @@ static void parser_free(zr_sdl_parser *p) {
   free(p->frames);
   free(p->image_pixels);
   free(p->image_sizes);
+  free(p->image_codes);
   for (size_t i = 0; i < p->n_files; i++)
     zr__sdl_file_free(&p->files[i]);
   free(p->files);
@@ -1286,17 +1287,25 @@ static zr_status parse(zr_context *ctx, char *path, char *bytes, size_t size,
   s = p.status;
   p.scene->settings.version = p.version;
   /* A legacy scene (no #version at all, or one below 3.7 in force at
-     the end) without assumed_gamma works in the display's gamma, 2.2:
-     POV-Ray 3.7 writes rgb 0.5 seen with ambient 1 as 128 then, as 188
-     (linear 0.5) after "#version 3.7;" or "#include \"colors.inc\""
-     (which sets and restores the version), and as 188 with
-     assumed_gamma 1 in a #version 3.6 scene ("assumed_gamma":
-     "undefined for legacy scenes"). */
+     the end) without assumed_gamma has gamma correction turned off
+     ("Gamma in Legacy Scenes"): POV-Ray 3.7 writes rgb v seen with
+     ambient 1 as the code 255 v whatever File_Gamma says (0.002, 0.01,
+     0.05, 0.3 as 1, 3, 13, 77), as sRGB(v) after "#version 3.7;" or
+     "#include \"colors.inc\"" (which sets and restores the version),
+     and as sRGB(v) with assumed_gamma 1 in a #version 3.6 scene
+     (bench/conform/legacy_gamma_probe.py).  We work in the display's
+     gamma, 2.2, and write with file gamma 2.2: the codes are the
+     colours, and image_maps decoded to linear light come back to their
+     codes. */
   if (!p.scene->settings.assumed_gamma_given &&
-      (!p.version_given || p.version < 3.7 - 1e-9))
+      (!p.version_given || p.version < 3.7 - 1e-9)) {
     p.scene->settings.assumed_gamma = 2.2;
+    p.scene->settings.gamma_correction_off = true;
+  }
   if (s == ZR_OK)
-    zr__sdl_images_to_working_gamma(&p, p.scene->settings.assumed_gamma);
+    zr__sdl_images_to_working_gamma(
+        &p, p.scene->settings.assumed_gamma,
+        p.scene->settings.gamma_correction_off);
   p.scene->parse_steps = p.work;
   parser_free(&p);
   if (s == ZR_OK)

@@ -534,6 +534,10 @@ typedef struct zr_sdl_parser {
      space once assumed_gamma is known (the end of the parse). */
   float **image_pixels;
   size_t *image_sizes;
+  /* For each, NULL or the values its file's codes give as they are
+     (code / maxval), which replace the pixels if the scene turns out to
+     have gamma correction off (a legacy scene without assumed_gamma). */
+  float **image_codes;
   size_t n_images, cap_images;
   int start_token; /* pseudo-token for the next yylex, 0 for none */
   zr_sdl_autoend autoend;
@@ -733,8 +737,11 @@ zr_status zr__sdl_read_file(zr_sdl_parser *p, const char *path,
 /* The bases of the next pigment, normal or finish block of texture tx
    (its top layer's own), see pigment_base; kind is 'p', 'n' or 'f'. */
 void zr__sdl_texture_base(zr_sdl_parser *p, const zr_texture *tx, int kind);
-/* Raises every image_map's pixels to 1/gamma (build.c). */
-void zr__sdl_images_to_working_gamma(zr_sdl_parser *p, double gamma);
+/* Raises every image_map's pixels to 1/gamma, or with gamma_off takes
+   the codes of files decoded through a stated transfer as they are
+   (build.c). */
+void zr__sdl_images_to_working_gamma(zr_sdl_parser *p, double gamma,
+                                     bool gamma_off);
 /* The same for a block outside a texture (or in a texture that set
    none): the default texture's once #default changed it. */
 void zr__sdl_block_base(zr_sdl_parser *p, int kind);

@@ -546,8 +546,15 @@ static zr_status render_pixels(const zr_scene *scene,
   /* POV-Ray compares colours after undoing the scene's working gamma and
      applying its antialiasing gamma, 2.5 by default (reference,
      "Anti-Aliasing Options"), so dark edges are refined as readily as
-     bright ones. */
-  double exponent = scene->settings.assumed_gamma / ZR_AA_GAMMA;
+     bright ones.  With gamma correction off (a legacy scene without
+     assumed_gamma) the colours count as linear: povray's threshold for
+     an edge between red 0.01 and 0.05 is 0.143 there, |0.05^0.4 -
+     0.01^0.4|, as under assumed_gamma 1, not 0.054 as under 2.2
+     (bench/conform/legacy_gamma_probe.py --section aa). */
+  double working = scene->settings.gamma_correction_off
+                       ? 1.0
+                       : scene->settings.assumed_gamma;
+  double exponent = working / ZR_AA_GAMMA;
   int ch = params->alpha ? 4 : 3;
   for (size_t i = 0; i < count; i++) {
     uint32_t pixel = pixels[i];
