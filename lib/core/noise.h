@@ -26,9 +26,19 @@ void zr__noise_hash_block(int64_t x, int64_t y, int64_t z, int offset,
                           int reach, unsigned *out);
 /* Turbulence's vector noise at p, each component in about [-1, 1]. */
 zr_vec3 zr__dnoise_lattice(zr_vec3 p);
+/* The sum over octaves i of omega^i zr__dnoise_lattice(lambda^i p):
+   turbulence's displacement before its scale (omega and lambda as the
+   caller rounds them). */
+zr_vec3 zr__dturbulence_lattice(zr_vec3 p, int octaves, double omega,
+                                double lambda);
 /* noise_generator 3's noise at p, about [0.1, 0.9]. */
 double zr__noise_gen3(zr_vec3 p);
 /* The noise of generator 1, 2 or 3 (any other number: 2). */
 double zr__noise_generator(zr_vec3 p, int generator);
+/* zr__noise_generator of the n points p[i] into out[i], the same
+   values: with AVX2, four points at a time (the octaves of granite,
+   wrinkles and agate). */
+void zr__noise_generator_n(const zr_vec3 *p, int n, int generator,
+                           double *out);
 
 #endif /* ZR_CORE_NOISE_H */
