@@ -22,6 +22,7 @@
 #include "sdl/sdl.h"
 #include "test_util.h"
 
+#include "../bench/noise/crackle_tables.h"
 #include "../bench/noise/noise_lanes.h"
 #include "../bench/noise/noise_tables.h"
 
@@ -454,6 +455,51 @@ static void test_noise_generator_n(void **state) {
   }
 }
 
+/* zr__noise_nearest2 (with AVX2 four cells at a time) against crackle's
+   plain loop written out here: the same two smallest squared distances,
+   bit for bit, at points near and far (2^40, 2^53: the plain loop) and
+   on cell boundaries. */
+static void test_noise_nearest2(void **state) {
+  (void)state;
+  uint64_t s = 99;
+  for (int n = 0; n < 20000; n++) {
+    double v[3];
+    for (int a = 0; a < 3; a++) {
+      s = s * 6364136223846793005u + 1442695040888963407u;
+      v[a] = ((double)(s >> 11) / 9007199254740992.0 - 0.5) * 600.0;
+    }
+    if (n % 5 == 0)
+      v[n % 3] = floor(v[n % 3]);
+    if (n % 11 == 0)
+      v[n % 3] *= 0x1p40;
+    if (n % 23 == 0)
+      v[n % 3] = 0x1p53 + 2 * n;
+    zr_vec3 p = zr_v3(v[0], v[1], v[2]);
+    int64_t c[3] = {(int64_t)floor(p.x), (int64_t)floor(p.y),
+                    (int64_t)floor(p.z)};
+    double want[2] = {INFINITY, INFINITY};
+    for (int i = -1; i <= 1; i++)
+      for (int j = -1; j <= 1; j++)
+        for (int k = -1; k <= 1; k++) {
+          const double *o = crackle_points[zr__noise_hash(
+              c[0] + i, c[1] + j, c[2] + k, CRACKLE_HASH_OFFSET)];
+          double r[3] = {p.x - ((double)(c[0] + i) + o[0]),
+                         p.y - ((double)(c[1] + j) + o[1]),
+                         p.z - ((double)(c[2] + k) + o[2])};
+          double d = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
+          if (d < want[0]) {
+            want[1] = want[0];
+            want[0] = d;
+          } else if (d < want[1]) {
+            want[1] = d;
+          }
+        }
+    double got[2];
+    zr__noise_nearest2(p, crackle_points, CRACKLE_HASH_OFFSET, got);
+    assert_memory_equal(got, want, sizeof got);
+  }
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_noise_rand_streams),
@@ -465,6 +511,7 @@ int main(void) {
       cmocka_unit_test(test_noise_lanes),
       cmocka_unit_test(test_noise_dturbulence_reference),
       cmocka_unit_test(test_noise_generator_n),
+      cmocka_unit_test(test_noise_nearest2),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

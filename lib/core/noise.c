@@ -172,6 +172,34 @@ static zr_vec3 dturbulence_at(zr_vec3 p, int octaves, double omega,
   return sum;
 }
 
+/* crackle's loop over the 27 cells (zr__noise_nearest2), one cell after
+   another. */
+static void nearest2_plain(zr_vec3 p, const double (*points)[3], int offset,
+                           double d[2]) {
+  int64_t fx = (int64_t)floor(p.x), fy = (int64_t)floor(p.y),
+          fz = (int64_t)floor(p.z);
+  double d1 = INFINITY, d2 = INFINITY;
+  unsigned h[27], *hp = h;
+  zr__noise_hash_block(fx, fy, fz, offset, 1, h);
+  for (int i = -1; i <= 1; i++)
+    for (int j = -1; j <= 1; j++)
+      for (int k = -1; k <= 1; k++) {
+        const double *o = points[*hp++];
+        zr_vec3 f = zr_v3((double)(fx + i) + o[0], (double)(fy + j) + o[1],
+                          (double)(fz + k) + o[2]);
+        zr_vec3 r = zr_v3_sub(p, f);
+        double v = zr_v3_dot(r, r);
+        if (v < d1) {
+          d2 = d1;
+          d1 = v;
+        } else if (v < d2) {
+          d2 = v;
+        }
+      }
+  d[0] = d1;
+  d[1] = d2;
+}
+
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
 #include <immintrin.h>
 
@@ -376,6 +404,95 @@ zr_vec3 zr__dnoise_lattice(zr_vec3 p) {
   return __builtin_cpu_supports("avx2") ? dlattice_avx2(p) : dlattice_at(p);
 }
 
+/* The cells' offsets from p's own cell, four cells a group in the
+   loop's order (i, j, k from -1 to 1, k fastest), the 28th a pad. */
+static const _Alignas(32) double cell_steps[7][3][4] = {
+    {{-1, -1, -1, -1}, {-1, -1, -1, 0}, {-1, 0, 1, -1}},
+    {{-1, -1, -1, -1}, {0, 0, 1, 1}, {0, 1, -1, 0}},
+    {{-1, 0, 0, 0}, {1, -1, -1, -1}, {1, -1, 0, 1}},
+    {{0, 0, 0, 0}, {0, 0, 0, 1}, {-1, 0, 1, -1}},
+    {{0, 0, 1, 1}, {1, 1, -1, -1}, {0, 1, -1, 0}},
+    {{1, 1, 1, 1}, {-1, 0, 0, 0}, {1, -1, 0, 1}},
+    {{1, 1, 1, 1}, {1, 1, 1, 1}, {-1, 0, 1, 1}},
+};
+
+/* The 27 cells four at a time: their feature points transposed into x,
+   y and z registers, the squared distances (x^2 + y^2) + z^2 a lane as
+   zr_v3_dot, and in each lane the smallest and second smallest so far
+   (min and max pick values exactly, so the two smallest of the 27 are
+   the numbers the plain loop finds). */
+__attribute__((target("avx2"))) static void
+nearest2_avx2(zr_vec3 p, const double (*points)[3], int offset, double d[2]) {
+  int64_t fx = (int64_t)floor(p.x), fy = (int64_t)floor(p.y),
+          fz = (int64_t)floor(p.z);
+  unsigned h[28];
+  zr__noise_hash_block(fx, fy, fz, offset, 1, h);
+  h[27] = h[26];
+  /* (double)(fx + i) is (double)fx + i: integers below 2^52. */
+  __m256d cx = _mm256_set1_pd((double)fx), cy = _mm256_set1_pd((double)fy),
+          cz = _mm256_set1_pd((double)fz);
+  __m256d px = _mm256_set1_pd(p.x), py = _mm256_set1_pd(p.y),
+          pz = _mm256_set1_pd(p.z);
+  __m256i three = _mm256_set_epi64x(0, -1, -1, -1);
+  __m256d m1 = _mm256_set1_pd(INFINITY), m2 = m1;
+  for (int g = 0; g < 7; g++) {
+    const unsigned *hg = h + 4 * g;
+    __m256d r0 = _mm256_maskload_pd(points[hg[0]], three);
+    __m256d r1 = _mm256_maskload_pd(points[hg[1]], three);
+    __m256d r2 = _mm256_maskload_pd(points[hg[2]], three);
+    __m256d r3 = _mm256_maskload_pd(points[hg[3]], three);
+    __m256d lo01 = _mm256_unpacklo_pd(r0, r1);
+    __m256d hi01 = _mm256_unpackhi_pd(r0, r1);
+    __m256d lo23 = _mm256_unpacklo_pd(r2, r3);
+    __m256d hi23 = _mm256_unpackhi_pd(r2, r3);
+    __m256d ox = _mm256_permute2f128_pd(lo01, lo23, 0x20);
+    __m256d oy = _mm256_permute2f128_pd(hi01, hi23, 0x20);
+    __m256d oz = _mm256_permute2f128_pd(lo01, lo23, 0x31);
+    __m256d fxv = _mm256_add_pd(
+        _mm256_add_pd(cx, _mm256_load_pd(cell_steps[g][0])), ox);
+    __m256d fyv = _mm256_add_pd(
+        _mm256_add_pd(cy, _mm256_load_pd(cell_steps[g][1])), oy);
+    __m256d fzv = _mm256_add_pd(
+        _mm256_add_pd(cz, _mm256_load_pd(cell_steps[g][2])), oz);
+    __m256d rx = _mm256_sub_pd(px, fxv), ry = _mm256_sub_pd(py, fyv),
+            rz = _mm256_sub_pd(pz, fzv);
+    __m256d v = _mm256_add_pd(
+        _mm256_add_pd(_mm256_mul_pd(rx, rx), _mm256_mul_pd(ry, ry)),
+        _mm256_mul_pd(rz, rz));
+    if (g == 6) /* the pad */
+      v = _mm256_blend_pd(v, _mm256_set1_pd(INFINITY), 8);
+    m2 = _mm256_min_pd(m2, _mm256_max_pd(m1, v));
+    m1 = _mm256_min_pd(m1, v);
+  }
+  double a[4], b[4];
+  _mm256_storeu_pd(a, m1);
+  _mm256_storeu_pd(b, m2);
+  int lo = 0;
+  for (int l = 1; l < 4; l++)
+    if (a[l] < a[lo])
+      lo = l;
+  double second = INFINITY;
+  for (int l = 0; l < 4; l++) {
+    if (l != lo && a[l] < second)
+      second = a[l];
+    if (b[l] < second)
+      second = b[l];
+  }
+  d[0] = a[lo];
+  d[1] = second;
+}
+
+void zr__noise_nearest2(zr_vec3 p, const double (*points)[3], int offset,
+                        double d[2]) {
+  /* Far out (or NaN) the plain loop, whose cells are not all exact
+     doubles there. */
+  if (__builtin_cpu_supports("avx2") && fabs(p.x) < 0x1p52 &&
+      fabs(p.y) < 0x1p52 && fabs(p.z) < 0x1p52)
+    nearest2_avx2(p, points, offset, d);
+  else
+    nearest2_plain(p, points, offset, d);
+}
+
 static void lattice_n(const zr_vec3 *p, int n, double *out) {
   if (!__builtin_cpu_supports("avx2")) {
     for (int i = 0; i < n; i++)
@@ -414,6 +531,11 @@ zr_vec3 zr__dturbulence_lattice(zr_vec3 p, int octaves, double omega,
 static void lattice_n(const zr_vec3 *p, int n, double *out) {
   for (int i = 0; i < n; i++)
     out[i] = lattice_at(p[i]);
+}
+
+void zr__noise_nearest2(zr_vec3 p, const double (*points)[3], int offset,
+                        double d[2]) {
+  nearest2_plain(p, points, offset, d);
 }
 #endif
 

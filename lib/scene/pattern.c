@@ -397,24 +397,9 @@ static double crackle_general(const zr_pattern *pt, zr_vec3 p) {
    a cell gave (interior/media/micro.pov: 27 roots a sample were a
    tenth of its time). */
 static double crackle(const zr_pattern *pt, zr_vec3 p) {
-  int64_t fx = (int64_t)floor(p.x), fy = (int64_t)floor(p.y),
-          fz = (int64_t)floor(p.z);
-  double d1 = INFINITY, d2 = INFINITY;
-  unsigned h[27], *hp = h;
-  crackle_hashes(fx, fy, fz, 1, h);
-  for (int i = -1; i <= 1; i++)
-    for (int j = -1; j <= 1; j++)
-      for (int k = -1; k <= 1; k++) {
-        zr_vec3 f = crackle_point(fx + i, fy + j, fz + k, *hp++);
-        zr_vec3 r = zr_v3_sub(p, f);
-        double d = zr_v3_dot(r, r);
-        if (d < d1) {
-          d2 = d1;
-          d1 = d;
-        } else if (d < d2) {
-          d2 = d;
-        }
-      }
+  double d[2];
+  zr__noise_nearest2(p, crackle_points, CRACKLE_HASH_OFFSET, d);
+  double d1 = d[0], d2 = d[1];
   d1 = sqrt(d1);
   d2 = sqrt(d2);
   if (d2 > block_margin(p, 1))
