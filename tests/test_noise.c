@@ -12,6 +12,7 @@
 #include <cmocka.h>
 
 #include <math.h>
+#include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -21,6 +22,8 @@
 #include "sdl/sdl.h"
 #include "test_util.h"
 
+#include "../bench/noise/crackle_tables.h"
+#include "../bench/noise/noise_lanes.h"
 #include "../bench/noise/noise_tables.h"
 
 /* Opens tests/noise/name in the source tree (ZR_SRCDIR, set by make
@@ -366,6 +369,137 @@ static void test_noise_blend_reference(void **state) {
   }
 }
 
+/* The AVX2 blend's interleaved table (bench/noise/lanes.py) holds the
+   same doubles as the measured tables, bit for bit. */
+static void test_noise_lanes(void **state) {
+  (void)state;
+  for (int h = 0; h < 256; h++)
+    for (int c = 0; c < 4; c++) {
+      for (int m = 0; m < 3; m++)
+        assert_memory_equal(&noise_lanes[h][c][m], &dnoise_lattice[m][h][c],
+                            sizeof(double));
+      assert_memory_equal(&noise_lanes[h][c][3], &noise_lattice[h][c],
+                          sizeof(double));
+    }
+}
+
+/* Turbulence's octave sum (zr__dturbulence_lattice, which keeps the
+   octaves in the AVX2 blend's lanes) against the plain sum of
+   ref_blend's octaves, bit for bit, for stones2.inc's lambda 2.5 and
+   omega 0.75 (as floats, as patterns give them) and the defaults. */
+static void test_noise_dturbulence_reference(void **state) {
+  (void)state;
+  const double params[][3] = {{5, 0.75f, 2.5f}, {6, 0.5f, 2.0f},
+                              {1, 0.5f, 2.0f}, {0, 0.5f, 2.0f}};
+  uint64_t s = 777;
+  for (int n = 0; n < 5000; n++) {
+    double v[3];
+    for (int a = 0; a < 3; a++) {
+      s = s * 6364136223846793005u + 1442695040888963407u;
+      v[a] = ((double)(s >> 11) / 9007199254740992.0 - 0.5) * 200.0;
+    }
+    zr_vec3 p = zr_v3(v[0], v[1], v[2]);
+    for (size_t q = 0; q < sizeof params / sizeof params[0]; q++) {
+      int octaves = (int)params[q][0];
+      double want[3] = {0, 0, 0}, amp = 1, scale = 1;
+      for (int i = 0; i < octaves; i++) {
+        zr_vec3 ps = zr_v3_scale(p, scale);
+        for (int m = 0; m < 3; m++)
+          want[m] = want[m] + ref_blend(ps, dnoise_lattice[m]) * amp;
+        amp *= params[q][1];
+        scale *= params[q][2];
+      }
+      zr_vec3 d = zr__dturbulence_lattice(p, octaves, params[q][1],
+                                          params[q][2]);
+      double got[3] = {d.x, d.y, d.z};
+      assert_memory_equal(got, want, sizeof got);
+    }
+  }
+}
+
+/* zr__noise_generator_n (with AVX2 four points in the lanes of one
+   register) gives zr__noise_generator's values bit for bit, for each
+   generator and any count (groups of four and a rest), near, far out
+   (the 32-bit cell rule) and at NaN. */
+static void test_noise_generator_n(void **state) {
+  (void)state;
+  uint64_t s = 4242;
+  zr_vec3 p[11];
+  for (int n = 0; n < 3000; n++) {
+    for (int i = 0; i < 11; i++) {
+      double v[3];
+      for (int a = 0; a < 3; a++) {
+        s = s * 6364136223846793005u + 1442695040888963407u;
+        v[a] = ((double)(s >> 11) / 9007199254740992.0 - 0.5) * 500.0;
+      }
+      p[i] = zr_v3(v[0], v[1], v[2]);
+    }
+    /* Generator 3 takes no far points (its cell conversion is a plain
+       one, undefined past the 64-bit range). */
+    bool far = n % 7 == 0 || n % 13 == 0 || n % 17 == 0;
+    if (n % 7 == 0)
+      p[n % 11].y = 3e9 * (n % 2 ? 1 : -1);
+    if (n % 13 == 0)
+      p[n % 11].z = 1e30;
+    if (n % 17 == 0)
+      p[n % 11].x = NAN;
+    for (int g = 1; g <= (far ? 2 : 3); g++) {
+      int count = 1 + n % 11;
+      double got[11];
+      zr__noise_generator_n(p, count, g, got);
+      for (int i = 0; i < count; i++) {
+        double want = zr__noise_generator(p[i], g);
+        assert_memory_equal(&got[i], &want, sizeof want);
+      }
+    }
+  }
+}
+
+/* zr__noise_nearest2 (with AVX2 four cells at a time) against crackle's
+   plain loop written out here: the same two smallest squared distances,
+   bit for bit, at points near and far (2^40, 2^53: the plain loop) and
+   on cell boundaries. */
+static void test_noise_nearest2(void **state) {
+  (void)state;
+  uint64_t s = 99;
+  for (int n = 0; n < 20000; n++) {
+    double v[3];
+    for (int a = 0; a < 3; a++) {
+      s = s * 6364136223846793005u + 1442695040888963407u;
+      v[a] = ((double)(s >> 11) / 9007199254740992.0 - 0.5) * 600.0;
+    }
+    if (n % 5 == 0)
+      v[n % 3] = floor(v[n % 3]);
+    if (n % 11 == 0)
+      v[n % 3] *= 0x1p40;
+    if (n % 23 == 0)
+      v[n % 3] = 0x1p53 + 2 * n;
+    zr_vec3 p = zr_v3(v[0], v[1], v[2]);
+    int64_t c[3] = {(int64_t)floor(p.x), (int64_t)floor(p.y),
+                    (int64_t)floor(p.z)};
+    double want[2] = {INFINITY, INFINITY};
+    for (int i = -1; i <= 1; i++)
+      for (int j = -1; j <= 1; j++)
+        for (int k = -1; k <= 1; k++) {
+          const double *o = crackle_points[zr__noise_hash(
+              c[0] + i, c[1] + j, c[2] + k, CRACKLE_HASH_OFFSET)];
+          double r[3] = {p.x - ((double)(c[0] + i) + o[0]),
+                         p.y - ((double)(c[1] + j) + o[1]),
+                         p.z - ((double)(c[2] + k) + o[2])};
+          double d = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
+          if (d < want[0]) {
+            want[1] = want[0];
+            want[0] = d;
+          } else if (d < want[1]) {
+            want[1] = d;
+          }
+        }
+    double got[2];
+    zr__noise_nearest2(p, crackle_points, CRACKLE_HASH_OFFSET, got);
+    assert_memory_equal(got, want, sizeof got);
+  }
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_noise_rand_streams),
@@ -374,6 +508,10 @@ int main(void) {
       cmocka_unit_test(test_noise_dfar),
       cmocka_unit_test(test_noise_cells),
       cmocka_unit_test(test_noise_blend_reference),
+      cmocka_unit_test(test_noise_lanes),
+      cmocka_unit_test(test_noise_dturbulence_reference),
+      cmocka_unit_test(test_noise_generator_n),
+      cmocka_unit_test(test_noise_nearest2),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -143,16 +143,7 @@ blend(zr_vec3 p, const double (*const *tables)[4], int n_tables,
     out[m] = sum[m];
 }
 
-/* The two noises have copies for AVX2 processors, chosen at each call
-   by the processor's features (GCC's target_clones would export the
-   functions from the library, whatever their visibility): blend()
-   inlined into them is the same double operations in the same order,
-   no fused multiply-add (AVX2 does not bring FMA, and -std=c11
-   contracts nothing), so the same values, computed 7% faster (floor
-   becomes one rounding instruction; advanced/mediasky.pov at 80x60,
-   interleaved under chrt: 1.36 against 1.45-1.48 CPU s, same PNG).  tests/test_noise.c
-   (noise_blend_reference) checks them against a plain copy of the sum,
-   bit for bit. */
+/* The two noises of a plain x86-64 build, and of other processors. */
 static inline __attribute__((always_inline)) double lattice_at(zr_vec3 p) {
   const double (*tables[1])[4] = {noise_lattice};
   double n;
@@ -169,28 +160,383 @@ static inline __attribute__((always_inline)) zr_vec3 dlattice_at(zr_vec3 p) {
   return zr_v3(d[0], d[1], d[2]);
 }
 
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
-static double lattice_plain(zr_vec3 p) { return lattice_at(p); }
-__attribute__((target("avx2"))) static double lattice_avx2(zr_vec3 p) {
-  return lattice_at(p);
+static zr_vec3 dturbulence_at(zr_vec3 p, int octaves, double omega,
+                              double lambda) {
+  zr_vec3 sum = zr_v3(0, 0, 0);
+  double amp = 1.0, scale = 1.0;
+  for (int i = 0; i < octaves; i++) {
+    sum = zr_v3_madd(sum, dlattice_at(zr_v3_scale(p, scale)), amp);
+    amp *= omega;
+    scale *= lambda;
+  }
+  return sum;
 }
-static zr_vec3 dlattice_plain(zr_vec3 p) { return dlattice_at(p); }
+
+/* crackle's loop over the 27 cells (zr__noise_nearest2), one cell after
+   another. */
+static void nearest2_plain(zr_vec3 p, const double (*points)[3], int offset,
+                           double d[2]) {
+  int64_t fx = (int64_t)floor(p.x), fy = (int64_t)floor(p.y),
+          fz = (int64_t)floor(p.z);
+  double d1 = INFINITY, d2 = INFINITY;
+  unsigned h[27], *hp = h;
+  zr__noise_hash_block(fx, fy, fz, offset, 1, h);
+  for (int i = -1; i <= 1; i++)
+    for (int j = -1; j <= 1; j++)
+      for (int k = -1; k <= 1; k++) {
+        const double *o = points[*hp++];
+        zr_vec3 f = zr_v3((double)(fx + i) + o[0], (double)(fy + j) + o[1],
+                          (double)(fz + k) + o[2]);
+        zr_vec3 r = zr_v3_sub(p, f);
+        double v = zr_v3_dot(r, r);
+        if (v < d1) {
+          d2 = d1;
+          d1 = v;
+        } else if (v < d2) {
+          d2 = v;
+        }
+      }
+  d[0] = d1;
+  d[1] = d2;
+}
+
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#include <immintrin.h>
+
+#include "../../bench/noise/noise_lanes.h"
+
+/* AVX2 processors get a blend of the four tables in the four lanes of
+   one register, chosen at each call by the processor's features (GCC's
+   target_clones would export the functions from the library, whatever
+   their visibility): lanes 0-2 the vector noise's components, lane 3
+   the value noise (noise_lanes.h interleaves the tables).  Each lane
+   is blend()'s double operations in the same order, no fused
+   multiply-add (AVX2 does not bring FMA, and -std=c11 contracts
+   nothing), so the same values: tests/test_noise.c
+   (noise_blend_reference) checks them against a plain copy of the sum,
+   bit for bit.  The scalar blend of three tables went through memory a
+   corner and a table at a time: 43% of
+   camera/mesh_camera/ess/ess-ortho-camera.pov's profile (crackle with
+   turbulence). */
+__attribute__((target("avx2"))) static inline __m256d blend_lanes(zr_vec3 p) {
+  /* blend()'s cells, distances and weights, the three axes in lanes
+     0-2: c = cell(floor(p)) as a double (an integer of 32 bits, so
+     exact), t = p - c clamped to +-FAR_T (NaN to FAR_T), w1 = smooth(t),
+     w0 = 1 - w1; the same operations a lane as blend()'s a coordinate. */
+  __m256d pv = _mm256_set_pd(0, p.z, p.y, p.x);
+  __m256d f = _mm256_floor_pd(pv);
+  __m256d in = _mm256_and_pd(
+      _mm256_cmp_pd(f, _mm256_set1_pd(-2147483648.0), _CMP_GE_OQ),
+      _mm256_cmp_pd(f, _mm256_set1_pd(2147483647.0), _CMP_LE_OQ));
+  __m256d c = _mm256_blendv_pd(_mm256_set1_pd(-2147483648.0), f, in);
+  __m256d t = _mm256_sub_pd(pv, c);
+  __m256d abs_t = _mm256_andnot_pd(_mm256_set1_pd(-0.0), t);
+  __m256d near = _mm256_cmp_pd(abs_t, _mm256_set1_pd(FAR_T), _CMP_LE_OQ);
+  __m256d far = _mm256_blendv_pd(
+      _mm256_set1_pd(FAR_T), _mm256_set1_pd(-FAR_T),
+      _mm256_cmp_pd(t, _mm256_setzero_pd(), _CMP_LT_OQ));
+  t = _mm256_blendv_pd(far, t, near);
+  __m256d w1 = _mm256_mul_pd(
+      _mm256_mul_pd(t, t),
+      _mm256_sub_pd(_mm256_set1_pd(3), _mm256_mul_pd(_mm256_set1_pd(2), t)));
+  __m256d w0 = _mm256_sub_pd(_mm256_set1_pd(1), w1);
+  __m256d tm1 = _mm256_sub_pd(t, _mm256_set1_pd(1));
+  _Alignas(32) double d[2][4], w[2][4];
+  _mm256_store_pd(d[0], t);
+  _mm256_store_pd(d[1], tm1);
+  _mm256_store_pd(w[0], w0);
+  _mm256_store_pd(w[1], w1);
+  /* The cells as 32-bit integers: the hash wants their low 12 bits,
+     which arithmetic modulo 2^32 keeps. */
+  _Alignas(16) unsigned ic[4];
+  _mm_store_si128((__m128i *)ic, _mm256_cvtpd_epi32(c));
+  unsigned hz[2], hxy[2][2];
+  for (unsigned a = 0; a < 2; a++) {
+    unsigned hx = noise_hash[(ic[0] + a + NOISE_HASH_OFFSET) & 4095u];
+    for (unsigned b = 0; b < 2; b++)
+      hxy[a][b] = noise_hash[hx ^ ((ic[1] + b + NOISE_HASH_OFFSET) & 4095u)];
+    hz[a] = (ic[2] + a + NOISE_HASH_OFFSET) & 4095u;
+  }
+  __m256d sum = _mm256_setzero_pd();
+#pragma GCC unroll 2
+  for (int i = 0; i < 2; i++)
+#pragma GCC unroll 2
+    for (int j = 0; j < 2; j++) {
+      double wij = w[i][0] * w[j][1];
+#pragma GCC unroll 2
+      for (int k = 0; k < 2; k++) {
+        unsigned h = noise_hash[hxy[i][j] ^ hz[k]] & 255u;
+        const double(*e)[4] = noise_lanes[h];
+        __m256d v = _mm256_add_pd(
+            _mm256_load_pd(e[0]),
+            _mm256_mul_pd(_mm256_load_pd(e[1]), _mm256_broadcast_sd(&d[i][0])));
+        v = _mm256_add_pd(v, _mm256_mul_pd(_mm256_load_pd(e[2]),
+                                           _mm256_broadcast_sd(&d[j][1])));
+        v = _mm256_add_pd(v, _mm256_mul_pd(_mm256_load_pd(e[3]),
+                                           _mm256_broadcast_sd(&d[k][2])));
+        sum = _mm256_add_pd(sum,
+                            _mm256_mul_pd(_mm256_set1_pd(wij * w[k][2]), v));
+      }
+    }
+  return sum;
+}
+
+/* The value noise of four points, one a lane: blend()'s operations for
+   one table, in the same order a lane (so the same values), the four
+   points' sums advancing together instead of one corner after another
+   (granite's and wrinkles' octaves are independent points). */
+__attribute__((target("avx2"))) static inline void
+axis4(__m256d pv, __m256d *t, __m256d *tm1, __m256d w[2], unsigned ic[4]) {
+  __m256d f = _mm256_floor_pd(pv);
+  __m256d in = _mm256_and_pd(
+      _mm256_cmp_pd(f, _mm256_set1_pd(-2147483648.0), _CMP_GE_OQ),
+      _mm256_cmp_pd(f, _mm256_set1_pd(2147483647.0), _CMP_LE_OQ));
+  __m256d c = _mm256_blendv_pd(_mm256_set1_pd(-2147483648.0), f, in);
+  __m256d d = _mm256_sub_pd(pv, c);
+  __m256d abs_d = _mm256_andnot_pd(_mm256_set1_pd(-0.0), d);
+  __m256d near = _mm256_cmp_pd(abs_d, _mm256_set1_pd(FAR_T), _CMP_LE_OQ);
+  __m256d far = _mm256_blendv_pd(
+      _mm256_set1_pd(FAR_T), _mm256_set1_pd(-FAR_T),
+      _mm256_cmp_pd(d, _mm256_setzero_pd(), _CMP_LT_OQ));
+  d = _mm256_blendv_pd(far, d, near);
+  w[1] = _mm256_mul_pd(
+      _mm256_mul_pd(d, d),
+      _mm256_sub_pd(_mm256_set1_pd(3), _mm256_mul_pd(_mm256_set1_pd(2), d)));
+  w[0] = _mm256_sub_pd(_mm256_set1_pd(1), w[1]);
+  *t = d;
+  *tm1 = _mm256_sub_pd(d, _mm256_set1_pd(1));
+  _mm_storeu_si128((__m128i *)ic, _mm256_cvtpd_epi32(c));
+}
+
+__attribute__((target("avx2"))) static void lattice4_avx2(const zr_vec3 p[4],
+                                                         double out[4]) {
+  __m256d d[3][2], w[3][2];
+  unsigned ic[3][4];
+  axis4(_mm256_set_pd(p[3].x, p[2].x, p[1].x, p[0].x), &d[0][0], &d[0][1],
+        w[0], ic[0]);
+  axis4(_mm256_set_pd(p[3].y, p[2].y, p[1].y, p[0].y), &d[1][0], &d[1][1],
+        w[1], ic[1]);
+  axis4(_mm256_set_pd(p[3].z, p[2].z, p[1].z, p[0].z), &d[2][0], &d[2][1],
+        w[2], ic[2]);
+  /* Each point's eight corner hashes, in blend()'s corner order. */
+  unsigned h[4][8];
+  for (int l = 0; l < 4; l++) {
+    unsigned hz[2] = {(ic[2][l] + NOISE_HASH_OFFSET) & 4095u,
+                      (ic[2][l] + 1 + NOISE_HASH_OFFSET) & 4095u};
+    for (unsigned a = 0; a < 2; a++) {
+      unsigned hx = noise_hash[(ic[0][l] + a + NOISE_HASH_OFFSET) & 4095u];
+      for (unsigned b = 0; b < 2; b++) {
+        unsigned hxy =
+            noise_hash[hx ^ ((ic[1][l] + b + NOISE_HASH_OFFSET) & 4095u)];
+        for (unsigned k = 0; k < 2; k++)
+          h[l][a * 4 + b * 2 + k] = noise_hash[hxy ^ hz[k]] & 255u;
+      }
+    }
+  }
+  __m256d sum = _mm256_setzero_pd();
+#pragma GCC unroll 2
+  for (int i = 0; i < 2; i++)
+#pragma GCC unroll 2
+    for (int j = 0; j < 2; j++) {
+      __m256d wij = _mm256_mul_pd(w[0][i], w[1][j]);
+#pragma GCC unroll 2
+      for (int k = 0; k < 2; k++) {
+        int n = i * 4 + j * 2 + k;
+        /* The four points' table rows, transposed: e[c] holds
+           coefficient c of each point's corner. */
+        __m256d r0 = _mm256_loadu_pd(noise_lattice[h[0][n]]);
+        __m256d r1 = _mm256_loadu_pd(noise_lattice[h[1][n]]);
+        __m256d r2 = _mm256_loadu_pd(noise_lattice[h[2][n]]);
+        __m256d r3 = _mm256_loadu_pd(noise_lattice[h[3][n]]);
+        __m256d lo01 = _mm256_unpacklo_pd(r0, r1);
+        __m256d hi01 = _mm256_unpackhi_pd(r0, r1);
+        __m256d lo23 = _mm256_unpacklo_pd(r2, r3);
+        __m256d hi23 = _mm256_unpackhi_pd(r2, r3);
+        __m256d e0 = _mm256_permute2f128_pd(lo01, lo23, 0x20);
+        __m256d e1 = _mm256_permute2f128_pd(hi01, hi23, 0x20);
+        __m256d e2 = _mm256_permute2f128_pd(lo01, lo23, 0x31);
+        __m256d e3 = _mm256_permute2f128_pd(hi01, hi23, 0x31);
+        __m256d v = _mm256_add_pd(e0, _mm256_mul_pd(e1, d[0][i]));
+        v = _mm256_add_pd(v, _mm256_mul_pd(e2, d[1][j]));
+        v = _mm256_add_pd(v, _mm256_mul_pd(e3, d[2][k]));
+        sum = _mm256_add_pd(sum,
+                            _mm256_mul_pd(_mm256_mul_pd(wij, w[2][k]), v));
+      }
+    }
+  _mm256_storeu_pd(out, sum);
+  for (int l = 0; l < 4; l++)
+    out[l] = out[l] < 0 ? 0 : out[l] > 1 ? 1 : out[l];
+}
+
+__attribute__((target("avx2"))) static double lattice_avx2(zr_vec3 p) {
+  __m128d hi = _mm256_extractf128_pd(blend_lanes(p), 1);
+  double n = _mm_cvtsd_f64(_mm_unpackhi_pd(hi, hi));
+  return n < 0 ? 0 : n > 1 ? 1 : n;
+}
+
 __attribute__((target("avx2"))) static zr_vec3 dlattice_avx2(zr_vec3 p) {
-  return dlattice_at(p);
+  double d[4];
+  _mm256_storeu_pd(d, blend_lanes(p));
+  return zr_v3(d[0], d[1], d[2]);
+}
+
+/* The octaves' sum in lanes too: sum + D amp a lane, as zr_v3_madd. */
+__attribute__((target("avx2"))) static zr_vec3
+dturbulence_avx2(zr_vec3 p, int octaves, double omega, double lambda) {
+  __m256d sum = _mm256_setzero_pd();
+  double amp = 1.0, scale = 1.0;
+  for (int i = 0; i < octaves; i++) {
+    __m256d d = blend_lanes(zr_v3_scale(p, scale));
+    sum = _mm256_add_pd(sum, _mm256_mul_pd(d, _mm256_set1_pd(amp)));
+    amp *= omega;
+    scale *= lambda;
+  }
+  double s[4];
+  _mm256_storeu_pd(s, sum);
+  return zr_v3(s[0], s[1], s[2]);
 }
 
 double zr__noise_lattice(zr_vec3 p) {
-  return __builtin_cpu_supports("avx2") ? lattice_avx2(p) : lattice_plain(p);
+  return __builtin_cpu_supports("avx2") ? lattice_avx2(p) : lattice_at(p);
 }
 
 zr_vec3 zr__dnoise_lattice(zr_vec3 p) {
-  return __builtin_cpu_supports("avx2") ? dlattice_avx2(p)
-                                        : dlattice_plain(p);
+  return __builtin_cpu_supports("avx2") ? dlattice_avx2(p) : dlattice_at(p);
+}
+
+/* The cells' offsets from p's own cell, four cells a group in the
+   loop's order (i, j, k from -1 to 1, k fastest), the 28th a pad. */
+static const _Alignas(32) double cell_steps[7][3][4] = {
+    {{-1, -1, -1, -1}, {-1, -1, -1, 0}, {-1, 0, 1, -1}},
+    {{-1, -1, -1, -1}, {0, 0, 1, 1}, {0, 1, -1, 0}},
+    {{-1, 0, 0, 0}, {1, -1, -1, -1}, {1, -1, 0, 1}},
+    {{0, 0, 0, 0}, {0, 0, 0, 1}, {-1, 0, 1, -1}},
+    {{0, 0, 1, 1}, {1, 1, -1, -1}, {0, 1, -1, 0}},
+    {{1, 1, 1, 1}, {-1, 0, 0, 0}, {1, -1, 0, 1}},
+    {{1, 1, 1, 1}, {1, 1, 1, 1}, {-1, 0, 1, 1}},
+};
+
+/* The 27 cells four at a time: their feature points transposed into x,
+   y and z registers, the squared distances (x^2 + y^2) + z^2 a lane as
+   zr_v3_dot, and in each lane the smallest and second smallest so far
+   (min and max pick values exactly, so the two smallest of the 27 are
+   the numbers the plain loop finds). */
+__attribute__((target("avx2"))) static void
+nearest2_avx2(zr_vec3 p, const double (*points)[3], int offset, double d[2]) {
+  int64_t fx = (int64_t)floor(p.x), fy = (int64_t)floor(p.y),
+          fz = (int64_t)floor(p.z);
+  unsigned h[28];
+  zr__noise_hash_block(fx, fy, fz, offset, 1, h);
+  h[27] = h[26];
+  /* (double)(fx + i) is (double)fx + i: integers below 2^52. */
+  __m256d cx = _mm256_set1_pd((double)fx), cy = _mm256_set1_pd((double)fy),
+          cz = _mm256_set1_pd((double)fz);
+  __m256d px = _mm256_set1_pd(p.x), py = _mm256_set1_pd(p.y),
+          pz = _mm256_set1_pd(p.z);
+  __m256i three = _mm256_set_epi64x(0, -1, -1, -1);
+  __m256d m1 = _mm256_set1_pd(INFINITY), m2 = m1;
+  for (int g = 0; g < 7; g++) {
+    const unsigned *hg = h + 4 * g;
+    __m256d r0 = _mm256_maskload_pd(points[hg[0]], three);
+    __m256d r1 = _mm256_maskload_pd(points[hg[1]], three);
+    __m256d r2 = _mm256_maskload_pd(points[hg[2]], three);
+    __m256d r3 = _mm256_maskload_pd(points[hg[3]], three);
+    __m256d lo01 = _mm256_unpacklo_pd(r0, r1);
+    __m256d hi01 = _mm256_unpackhi_pd(r0, r1);
+    __m256d lo23 = _mm256_unpacklo_pd(r2, r3);
+    __m256d hi23 = _mm256_unpackhi_pd(r2, r3);
+    __m256d ox = _mm256_permute2f128_pd(lo01, lo23, 0x20);
+    __m256d oy = _mm256_permute2f128_pd(hi01, hi23, 0x20);
+    __m256d oz = _mm256_permute2f128_pd(lo01, lo23, 0x31);
+    __m256d fxv = _mm256_add_pd(
+        _mm256_add_pd(cx, _mm256_load_pd(cell_steps[g][0])), ox);
+    __m256d fyv = _mm256_add_pd(
+        _mm256_add_pd(cy, _mm256_load_pd(cell_steps[g][1])), oy);
+    __m256d fzv = _mm256_add_pd(
+        _mm256_add_pd(cz, _mm256_load_pd(cell_steps[g][2])), oz);
+    __m256d rx = _mm256_sub_pd(px, fxv), ry = _mm256_sub_pd(py, fyv),
+            rz = _mm256_sub_pd(pz, fzv);
+    __m256d v = _mm256_add_pd(
+        _mm256_add_pd(_mm256_mul_pd(rx, rx), _mm256_mul_pd(ry, ry)),
+        _mm256_mul_pd(rz, rz));
+    if (g == 6) /* the pad */
+      v = _mm256_blend_pd(v, _mm256_set1_pd(INFINITY), 8);
+    m2 = _mm256_min_pd(m2, _mm256_max_pd(m1, v));
+    m1 = _mm256_min_pd(m1, v);
+  }
+  double a[4], b[4];
+  _mm256_storeu_pd(a, m1);
+  _mm256_storeu_pd(b, m2);
+  int lo = 0;
+  for (int l = 1; l < 4; l++)
+    if (a[l] < a[lo])
+      lo = l;
+  double second = INFINITY;
+  for (int l = 0; l < 4; l++) {
+    if (l != lo && a[l] < second)
+      second = a[l];
+    if (b[l] < second)
+      second = b[l];
+  }
+  d[0] = a[lo];
+  d[1] = second;
+}
+
+void zr__noise_nearest2(zr_vec3 p, const double (*points)[3], int offset,
+                        double d[2]) {
+  /* Far out (or NaN) the plain loop, whose cells are not all exact
+     doubles there. */
+  if (__builtin_cpu_supports("avx2") && fabs(p.x) < 0x1p52 &&
+      fabs(p.y) < 0x1p52 && fabs(p.z) < 0x1p52)
+    nearest2_avx2(p, points, offset, d);
+  else
+    nearest2_plain(p, points, offset, d);
+}
+
+static void lattice_n(const zr_vec3 *p, int n, double *out) {
+  if (!__builtin_cpu_supports("avx2")) {
+    for (int i = 0; i < n; i++)
+      out[i] = lattice_at(p[i]);
+    return;
+  }
+  for (int i = 0; i < n; i += 4) {
+    /* A last group of fewer than four fills its lanes with its first
+       point (computed and dropped). */
+    zr_vec3 q[4];
+    double v[4];
+    for (int l = 0; l < 4; l++)
+      q[l] = p[i + (i + l < n ? l : 0)];
+    lattice4_avx2(q, v);
+    for (int l = 0; l < 4 && i + l < n; l++)
+      out[i + l] = v[l];
+  }
+}
+
+zr_vec3 zr__dturbulence_lattice(zr_vec3 p, int octaves, double omega,
+                                double lambda) {
+  return __builtin_cpu_supports("avx2")
+             ? dturbulence_avx2(p, octaves, omega, lambda)
+             : dturbulence_at(p, octaves, omega, lambda);
 }
 #else
 double zr__noise_lattice(zr_vec3 p) { return lattice_at(p); }
 
 zr_vec3 zr__dnoise_lattice(zr_vec3 p) { return dlattice_at(p); }
+
+zr_vec3 zr__dturbulence_lattice(zr_vec3 p, int octaves, double omega,
+                                double lambda) {
+  return dturbulence_at(p, octaves, omega, lambda);
+}
+
+static void lattice_n(const zr_vec3 *p, int n, double *out) {
+  for (int i = 0; i < n; i++)
+    out[i] = lattice_at(p[i]);
+}
+
+void zr__noise_nearest2(zr_vec3 p, const double (*points)[3], int offset,
+                        double d[2]) {
+  nearest2_plain(p, points, offset, d);
+}
 #endif
 
 double zr__noise_gen3(zr_vec3 p) {
@@ -218,13 +564,28 @@ double zr__noise_gen3(zr_vec3 p) {
   return sum;
 }
 
+/* noise_generator 1 from the lattice noise n. */
+static double gen1_of(double n) {
+  n = NOISE_GEN1_A + NOISE_GEN1_B * n;
+  return n < 0 ? 0 : n > 1 ? 1 : n;
+}
+
 double zr__noise_generator(zr_vec3 p, int generator) {
   if (generator == 3)
     return zr__noise_gen3(p);
   double n = zr__noise_lattice(p);
-  if (generator == 1) {
-    n = NOISE_GEN1_A + NOISE_GEN1_B * n;
-    return n < 0 ? 0 : n > 1 ? 1 : n;
+  return generator == 1 ? gen1_of(n) : n;
+}
+
+void zr__noise_generator_n(const zr_vec3 *p, int n, int generator,
+                           double *out) {
+  if (generator == 3) {
+    for (int i = 0; i < n; i++)
+      out[i] = zr__noise_gen3(p[i]);
+    return;
   }
-  return n;
+  lattice_n(p, n, out);
+  if (generator == 1)
+    for (int i = 0; i < n; i++)
+      out[i] = gen1_of(out[i]);
 }

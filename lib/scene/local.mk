@@ -70,4 +70,5 @@ EXTRA_DIST += tests/noise/rand.txt bench/noise/probe_rand.sh \
 	bench/noise/ssim_scenes.sh bench/noise/ssim-160x120.tsv \
 	bench/noise/probe_gen3.py bench/noise/gen3_tables.h \
 	lib/scene/waves_tables.h bench/conform/waves_probe.py \
-	bench/conform/quilted_probe.py
+	bench/conform/quilted_probe.py \
+	bench/noise/lanes.py bench/noise/noise_lanes.h

@@ -149,38 +149,55 @@ zr_vec3 zr__dturbulence(zr_vec3 p, int octaves, double omega,
   /* omega and lambda act as single-precision numbers: omega 0.7 differs
      from the double 0.7 by the float's rounding in the probe's
      measurements (bench/noise/probe_patterns.py). */
-  double om = (float)omega, la = (float)lambda;
-  zr_vec3 sum = zr_v3(0, 0, 0);
-  double amp = 1.0, scale = 1.0;
-  for (int i = 0; i < octaves; i++) {
-    sum = zr_v3_madd(sum, zr__dnoise(zr_v3_scale(p, scale)), amp);
-    amp *= om;
-    scale *= la;
-  }
-  return sum;
+  return zr__dturbulence_lattice(p, octaves, (float)omega, (float)lambda);
 }
 
 static double clamp01(double v) { return v < 0 ? 0 : v > 1 ? 1 : v; }
 
-/* The octave term of wrinkles, granite and agate at p (measured:
-   bench/noise/probe_patterns.py): for noise_generator 1 its noise (which
-   is clamped to [0, 1]), for the others 2 n - 0.5, clamped to [0, 1]
-   unless clamp is false (agate's later octaves). */
-static double octave(zr_vec3 p, int generator, bool clamp) {
+/* The octave term of wrinkles, granite and agate from the noise n of
+   its point (measured: bench/noise/probe_patterns.py): for
+   noise_generator 1 the noise (which is clamped to [0, 1]), for the
+   others 2 n - 0.5, clamped to [0, 1] unless clamp is false (agate's
+   later octaves). */
+static double octave_of(double n, int generator, bool clamp) {
   if (generator == 1)
-    return zr__noise_gen(p, 1);
-  double v = 2 * zr__noise_gen(p, generator) - 0.5;
+    return n;
+  double v = 2 * n - 0.5;
   return clamp ? clamp01(v) : v;
+}
+
+/* The noises of the octaves i to i + count - 1 (count at most 4) of a
+   sum whose octave i is at p f_i, f_i = f_{i-1} step: *f holds f_i and
+   is advanced past them (with at_p the first of them is p itself and
+   *f holds the next one's factor).  The octaves' points are independent, so
+   zr__noise_generator_n computes them together (granite's six octaves
+   were 11% of organ.pov's profile one noise after another); the same
+   values, so the sums below add the same terms in the same order. */
+static void octave_noises(zr_vec3 p, double *f, double step, int count,
+                          int generator, bool at_p, double out[4]) {
+  zr_vec3 q[4];
+  for (int l = 0; l < count; l++) {
+    if (at_p && l == 0) {
+      q[0] = p;
+      continue;
+    }
+    q[l] = zr_v3_scale(p, *f);
+    *f *= step;
+  }
+  zr__noise_generator_n(q, count, generator, out);
 }
 
 /* wrinkles: half the sum over 10 octaves i of octave(2^i p) / 2^i
    (measured to 1e-14 for noise_generators 1 and 2, 1e-7 for 3). */
 static double wrinkles(zr_vec3 p, int generator) {
-  double sum = 0, amp = 1, f = 1;
-  for (int i = 0; i < 10; i++) {
-    sum += amp * octave(zr_v3_scale(p, f), generator, true);
-    amp *= 0.5;
-    f *= 2;
+  double sum = 0, amp = 1, f = 1, n[4];
+  for (int i = 0; i < 10; i += 4) {
+    int count = 10 - i < 4 ? 10 - i : 4;
+    octave_noises(p, &f, 2, count, generator, false, n);
+    for (int l = 0; l < count; l++) {
+      sum += amp * octave_of(n[l], generator, true);
+      amp *= 0.5;
+    }
   }
   return sum / 2;
 }
@@ -188,11 +205,14 @@ static double wrinkles(zr_vec3 p, int generator) {
 /* granite: the sum over 6 octaves i of |octave(4 2^i p) - 0.5| / 2^i
    (measured to 1e-14 for noise_generators 1 and 2, 1e-7 for 3). */
 static double granite(zr_vec3 p, int generator) {
-  double sum = 0, amp = 1, f = 4;
-  for (int i = 0; i < 6; i++) {
-    sum += amp * fabs(octave(zr_v3_scale(p, f), generator, true) - 0.5);
-    amp *= 0.5;
-    f *= 2;
+  double sum = 0, amp = 1, f = 4, n[4];
+  for (int i = 0; i < 6; i += 4) {
+    int count = 6 - i < 4 ? 6 - i : 4;
+    octave_noises(p, &f, 2, count, generator, false, n);
+    for (int l = 0; l < count; l++) {
+      sum += amp * fabs(octave_of(n[l], generator, true) - 0.5);
+      amp *= 0.5;
+    }
   }
   return sum;
 }
@@ -204,11 +224,19 @@ static double granite(zr_vec3 p, int generator) {
    agate_turb acts as a single-precision number). */
 static double agate_sum(zr_vec3 p, int generator, int octaves, double omega,
                         double lambda) {
-  double s = octave(p, generator, true), amp = omega, f = lambda;
-  for (int i = 1; i < octaves; i++) {
-    s += amp * octave(zr_v3_scale(p, f), generator, false);
-    amp *= omega;
-    f *= lambda;
+  double s = 0, amp = omega, f = lambda, n[4];
+  for (int i = 0; i < (octaves > 1 ? octaves : 1); i += 4) {
+    int left = (octaves > 1 ? octaves : 1) - i;
+    int count = left < 4 ? left : 4;
+    octave_noises(p, &f, lambda, count, generator, i == 0, n);
+    for (int l = 0; l < count; l++) {
+      if (i + l == 0) {
+        s = octave_of(n[0], generator, true);
+        continue;
+      }
+      s += amp * octave_of(n[l], generator, false);
+      amp *= omega;
+    }
   }
   return s;
 }
@@ -369,24 +397,9 @@ static double crackle_general(const zr_pattern *pt, zr_vec3 p) {
    a cell gave (interior/media/micro.pov: 27 roots a sample were a
    tenth of its time). */
 static double crackle(const zr_pattern *pt, zr_vec3 p) {
-  int64_t fx = (int64_t)floor(p.x), fy = (int64_t)floor(p.y),
-          fz = (int64_t)floor(p.z);
-  double d1 = INFINITY, d2 = INFINITY;
-  unsigned h[27], *hp = h;
-  crackle_hashes(fx, fy, fz, 1, h);
-  for (int i = -1; i <= 1; i++)
-    for (int j = -1; j <= 1; j++)
-      for (int k = -1; k <= 1; k++) {
-        zr_vec3 f = crackle_point(fx + i, fy + j, fz + k, *hp++);
-        zr_vec3 r = zr_v3_sub(p, f);
-        double d = zr_v3_dot(r, r);
-        if (d < d1) {
-          d2 = d1;
-          d1 = d;
-        } else if (d < d2) {
-          d2 = d;
-        }
-      }
+  double d[2];
+  zr__noise_nearest2(p, crackle_points, CRACKLE_HASH_OFFSET, d);
+  double d1 = d[0], d2 = d[1];
   d1 = sqrt(d1);
   d2 = sqrt(d2);
   if (d2 > block_margin(p, 1))
@@ -716,13 +729,8 @@ static double raw_value(const zr_pattern *pt, zr_vec3 p) {
 static zr_vec3 turbulent_point(const zr_pattern *pt, zr_vec3 p) {
   zr_vec3 t = pt->turbulence;
   if (pt->kind == ZR_PAT_MARBLE) {
-    double om = (float)pt->omega, la = (float)pt->lambda;
-    double s = octave(p, pt->noise_generator, true), amp = om, f = la;
-    for (int i = 1; i < pt->octaves; i++) {
-      s += amp * octave(zr_v3_scale(p, f), pt->noise_generator, false);
-      amp *= om;
-      f *= la;
-    }
+    double s = agate_sum(p, pt->noise_generator, pt->octaves,
+                         (float)pt->omega, (float)pt->lambda);
     p.x += t.x * s;
     return p;
   }
