@@ -344,3 +344,5 @@ EXTRA_DIST += tests/noise/cells.txt bench/noise/probe_cells.py
 TESTS += tests/test_legacy_gamma_povray.sh
 EXTRA_DIST += tests/test_legacy_gamma_povray.sh \
 	bench/conform/legacy_gamma_probe.py
+TESTS += tests/test_exit_fresnel.sh
+EXTRA_DIST += tests/test_exit_fresnel.sh tests/exit_fresnel.pov

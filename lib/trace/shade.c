@@ -394,6 +394,8 @@ bool zr__refract(zr_vec3 d, zr_vec3 n, double eta, zr_vec3 *out) {
 }
 
 double zr__fresnel(double cos_i, double n1, double n2) {
+  if (n1 == n2)
+    return 0.0; /* no boundary (the formula below leaves ~1e-32) */
   double eta = n1 / n2;
   double sin2_t = eta * eta * (1.0 - cos_i * cos_i);
   if (sin2_t >= 1.0)
@@ -971,7 +973,18 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
   zr_media next;
   media_beyond(tr, s, media, &next);
   double n1 = zr__media_ior(media), n2 = zr__media_ior(&next);
-  zr_rgb refl = reflection_amount(s, n1, n2);
+  /* Where a ray goes out of an interior and its path still holds
+     another (a glass inside a hollow sky sphere, a solid plane or any
+     object the camera is in), povray 3.7 reflects no Fresnel share:
+     reflection { 0, 1 fresnel } spawns no ray there and
+     reflection { 0.1, 1 fresnel } reflects 0.1, whatever the ior
+     beyond, 1 or 1.2, while the refracted ray bends by n1 / n2 and
+     total internal reflection is as anywhere.  Entering, and going out
+     into the open, reflect by Fresnel's law (tests/exit_fresnel.pov,
+     tests/test_exit_fresnel.sh; advanced/glasschess.pov, whose camera
+     is inside two sky spheres). */
+  bool out_within = media && next.n > 0 && next.n < media->n;
+  zr_rgb refl = reflection_amount(s, n1, out_within ? n1 : n2);
   zr_rgb trans = s->layer ? zr_rgb3(0, 0, 0) : see_through(col);
   if (f->conserve_energy)
     trans = zr_rgb3(trans.r * (1.0 - refl.r), trans.g * (1.0 - refl.g),
