@@ -1600,6 +1600,8 @@ object_head:
       TRY(zr__sdl_want_float(p, &$7, &@7, &$$->u.cylinder.radius));
       TRY(zr__sdl_axis_given(p, $$->u.cylinder.base, $$->u.cylinder.cap,
                              "cylinder", &@5));
+      $$->u.cylinder.height = zr__axis_measure(
+          $$->u.cylinder.base, $$->u.cylinder.cap, &$$->u.cylinder.axis);
     }
 | T_CONE '{' expr comma expr comma expr comma expr
     {
@@ -1610,6 +1612,8 @@ object_head:
       TRY(zr__sdl_want_float(p, &$9, &@9, &$$->u.cone.cap_radius));
       TRY(zr__sdl_axis_given(p, $$->u.cone.base, $$->u.cone.cap, "cone",
                              &@7));
+      $$->u.cone.height = zr__axis_measure($$->u.cone.base, $$->u.cone.cap,
+                                           &$$->u.cone.axis);
     }
 | T_DISC '{' expr comma expr comma expr
     {

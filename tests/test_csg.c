@@ -442,6 +442,7 @@ static zr_object *unboxed(const zr_object *o) {
   *c = *o;
   c->u.csg.boxes = NULL;
   c->u.csg.tree = NULL;
+  c->u.csg.whole = NULL;
   c->u.csg.children = malloc(o->u.csg.n_children * sizeof *c->u.csg.children);
   assert_non_null(c->u.csg.children);
   for (size_t i = 0; i < o->u.csg.n_children; i++)
@@ -479,6 +480,24 @@ static void test_csg_child_boxes_skip_work_only(void **state) {
   assert_int_equal(o->kind, ZR_OBJ_INTERSECTION);
   assert_non_null(o->u.csg.boxes);
   zr_object *plain = unboxed(o);
+  /* The box kept for the whole part (prepare.c, for the shadow shafts'
+     box asked for each point) is the one narrowed from the children
+     afresh, to the bit, and so are its parts'. */
+  assert_non_null(o->u.csg.whole);
+  for (size_t i = 0; i <= o->u.csg.n_children; i++) {
+    const zr_object *a = i ? o->u.csg.children[i - 1] : o;
+    const zr_object *b = i ? plain->u.csg.children[i - 1] : plain;
+    zr_vec3 lo_a, hi_a, lo_b, hi_b;
+    memset(&lo_a, 0, sizeof lo_a);
+    lo_b = hi_a = hi_b = lo_a;
+    bool in_a = zr__object_bounds(a, &lo_a, &hi_a);
+    assert_true(in_a == zr__object_bounds(b, &lo_b, &hi_b));
+    assert_true(!zr__is_csg(a->kind) || a->u.csg.whole);
+    if (in_a) {
+      assert_memory_equal(&lo_a, &lo_b, sizeof lo_a);
+      assert_memory_equal(&hi_a, &hi_b, sizeof hi_a);
+    }
+  }
   unsigned seed = 12345u;
 #define RND() rnd(&seed)
   int crossings = 0;

@@ -615,11 +615,18 @@ struct zr_object {
       zr_vec3 base, cap;
       double radius;
       bool open;
+      /* The unit axis base -> cap and its length, measured by the
+         parser (zr__axis_measure); a height of 0 (an object made by
+         hand) has the tracer measure them for each ray. */
+      zr_vec3 axis;
+      double height;
     } cylinder;
     struct {
       zr_vec3 base, cap;
       double base_radius, cap_radius;
       bool open;
+      zr_vec3 axis; /* as the cylinder's */
+      double height;
     } cone;
     struct {
       zr_vec3 centre, normal; /* normal unit */
@@ -641,6 +648,13 @@ struct zr_object {
         zr_vec3 lo, hi;
         bool bounded;
       } *boxes;
+      /* This part's own world box before its clip (what bounds.c
+         would compute from the children), set with boxes and NULL
+         elsewhere: an intersection's box is narrowed from its
+         children's shapes (lib/trace/bounds_csg.c), which cost 20% of
+         a render whose area lights ask the box of every part for each
+         shadow shaft (lib/trace/shaft.c). */
+      const struct zr_csg_box *whole;
       /* For a part with many children, a tree of their boxes made
          with them (lib/trace/csg.c), NULL otherwise: the tracer finds
          the children a ray or point meets without testing every box. */
@@ -1138,6 +1152,19 @@ struct zr_scene {
    and its part of the union (a sphere's 32 bytes rather than the union's
    160; issue 13's memory per sphere). */
 size_t zr__object_size(zr_object_kind kind);
+
+/* The unit axis from base to cap and its length (0, and axis
+   unchanged, when the two are the same point): a cylinder's or a
+   cone's frame, measured once by the parser and, by the same
+   operations, by the tracer for an object made without it. */
+static inline double zr__axis_measure(zr_vec3 base, zr_vec3 cap,
+                                      zr_vec3 *axis) {
+  zr_vec3 a = zr_v3_sub(cap, base);
+  double h = zr_v3_len(a);
+  if (h > 0.0)
+    *axis = zr_v3_scale(a, 1.0 / h);
+  return h;
+}
 
 void zr__finish_init(zr_finish *f);
 void zr__pigment_init(zr_pigment *p);

@@ -56,6 +56,11 @@ bool zr__object_bounds(const zr_object *object, zr_vec3 *lo, zr_vec3 *hi) {
 
 static bool unclipped_bounds(const zr_object *object, zr_vec3 *lo,
                              zr_vec3 *hi) {
+  if (zr__is_csg(object->kind) && object->u.csg.whole) {
+    *lo = object->u.csg.whole->lo;
+    *hi = object->u.csg.whole->hi;
+    return object->u.csg.whole->bounded;
+  }
   if (object->inverse)
     return false;
   if (object->kind == ZR_OBJ_INTERSECTION)
@@ -108,4 +113,15 @@ bool zr__primitive_bounds(const zr_object *object, zr_vec3 *lo,
   if (!object->bound || object->inverse || zr__is_csg(object->kind))
     return false;
   return zr__object_bounds(object->bound, lo, hi);
+}
+
+zr_status zr__csg_keep_whole_box(zr_arena *arena, zr_object *part) {
+  struct zr_csg_box *b = zr__arena_alloc(arena, sizeof *b);
+  if (!b)
+    return ZR_ENOMEM;
+  zr__bounds_empty(&b->lo, &b->hi);
+  part->u.csg.whole = NULL;
+  b->bounded = unclipped_bounds(part, &b->lo, &b->hi);
+  part->u.csg.whole = b;
+  return ZR_OK;
 }

@@ -11,6 +11,7 @@
 
 #include <stdbool.h>
 
+#include "core/arena.h"
 #include "scene/scene.h"
 
 /* A ray: points origin + t * dir for t in some interval.  dir need not be
@@ -80,6 +81,10 @@ bool zr__object_bounds(const zr_object *object, zr_vec3 *lo, zr_vec3 *hi);
    else its bounded_by's box for a plain shape that is not inverted. */
 bool zr__primitive_bounds(const zr_object *object, zr_vec3 *lo,
                           zr_vec3 *hi);
+/* The CSG part's box before its own clip, kept in its u.csg.whole
+   (NULL before) when the scene is prepared: zr__object_bounds() then
+   reads it instead of narrowing it from the children again. */
+zr_status zr__csg_keep_whole_box(zr_arena *arena, zr_object *part);
 
 /* Whether the world point p lies inside the object (POV-Ray's inside, with
    inverse applied).  Triangles have no inside; a disc's is its plane's. */

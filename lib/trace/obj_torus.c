@@ -67,6 +67,35 @@ bool zr__torus_inside(const zr_object *o, zr_vec3 p) {
   return torus_value(o, p) < 0.0;
 }
 
+/*
+ * Whether the ray q + s d, 0 <= s <= span (its part in the torus's box,
+ * d a unit vector), stays clear of the ring: every point of the torus
+ * lies at a distance rho from the y axis with |R| - |r| <= rho <=
+ * |R| + |r|, and rho^2 along the ray is a parabola in s, so its least
+ * value on the span is at the vertex or an end and its greatest at an
+ * end.  A span wholly beyond the outer radius or wholly within the hole
+ * has no root, and the quartic is not solved: many rays that cross a
+ * thin torus's box pass through its hole or beside its rim (the corpus'
+ * truchet.pov, 16,000 tori: the root finder's samples fell by a fifth).
+ * The radii are widened by a millionth, far beyond the roots' rounding,
+ * so no crossing the solver would find is lost.
+ */
+static bool misses_ring(const zr_object *o, zr_vec3 q, zr_vec3 d,
+                        double span) {
+  double big = fabs(o->u.torus.major), small = fabs(o->u.torus.minor);
+  double outer = (big + small) * (1.0 + 1e-6);
+  double e = d.x * d.x + d.z * d.z, f = q.x * d.x + q.z * d.z;
+  double g0 = q.x * q.x + q.z * q.z;
+  double g1 = g0 + span * (2.0 * f + span * e); /* rho^2 at the far end */
+  double at = e > 0.0 ? -f / e : 0.0;           /* the parabola's vertex */
+  at = at < 0.0 ? 0.0 : at > span ? span : at;
+  double least = g0 + at * (2.0 * f + at * e);
+  if (least > outer * outer)
+    return true;
+  double hole = (big - small) * (1.0 - 1e-6);
+  return hole > 0.0 && g0 < hole * hole && g1 < hole * hole;
+}
+
 int zr__torus_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
                         double tmin, double tmax, double t[4],
                         zr_vec3 normal[4]) {
@@ -89,6 +118,8 @@ int zr__torus_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
   if (!(fmax(s0, tmin * len) < fmin(s1, tmax * len)))
     return 0;
   zr_vec3 q = zr_v3_madd(org, d, s0); /* the new origin */
+  if (misses_ring(o, q, d, s1 - s0))
+    return 0;
   double rr = o->u.torus.major * o->u.torus.major;
   double b = 2.0 * zr_v3_dot(q, d);
   double c = zr_v3_dot(q, q) + rr - o->u.torus.minor * o->u.torus.minor;

@@ -118,7 +118,8 @@ static zr_object *resolve_part(zr_scene *scene, const zr_object *object,
     struct zr_csg_box *b = &copy->u.csg.boxes[i];
     b->bounded = zr__object_bounds(copy->u.csg.children[i], &b->lo, &b->hi);
   }
-  if (zr__csg_tree_build(&scene->arena, copy) != ZR_OK)
+  if (zr__csg_tree_build(&scene->arena, copy) != ZR_OK ||
+      zr__csg_keep_whole_box(&scene->arena, copy) != ZR_OK)
     return NULL;
   return copy;
 }
