@@ -340,3 +340,5 @@ EXTRA_DIST += tests/test_sky_transform.sh tests/sky_transform.pov
 EXTRA_DIST += tests/noise/cells.txt bench/noise/probe_cells.py
 TESTS += tests/test_gradient_wrap.sh
 EXTRA_DIST += tests/test_gradient_wrap.sh bench/conform/gradient_wrap_probe.sh bench/conform/gradient_wrap_probe.pov
+TESTS += tests/test_media_curvature.sh
+EXTRA_DIST += tests/test_media_curvature.sh tests/media_curvature.pov bench/conform/media_curvature_probe.py
