@@ -75,7 +75,7 @@ cases = [
 ]
 if not POVRAY:
     sys.exit(77)
-zr = sys.argv[1] if len(sys.argv) > 1 else None
+zr = os.path.abspath(sys.argv[1]) if len(sys.argv) > 1 else None
 os.chdir(tempfile.mkdtemp())
 for name, D, e, a, extra in cases:
     p = run('pov', D, e, a, extra); z = run(zr, D, e, a, extra)
