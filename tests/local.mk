@@ -346,3 +346,7 @@ EXTRA_DIST += tests/test_legacy_gamma_povray.sh \
 	bench/conform/legacy_gamma_probe.py
 TESTS += tests/test_exit_fresnel.sh
 EXTRA_DIST += tests/test_exit_fresnel.sh tests/exit_fresnel.pov
+TESTS += tests/test_gradient_wrap.sh
+EXTRA_DIST += tests/test_gradient_wrap.sh bench/conform/gradient_wrap_probe.sh bench/conform/gradient_wrap_probe.pov
+TESTS += tests/test_media_curvature.sh
+EXTRA_DIST += tests/test_media_curvature.sh tests/media_curvature.pov bench/conform/media_curvature_probe.py

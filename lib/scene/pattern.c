@@ -586,7 +586,22 @@ double zr__pattern_wave(const zr_pattern *pt, double v) {
                ? ZR_WAVE_TRIANGLE
                : ZR_WAVE_RAMP;
   double f;
-  if (pt->frequency == 1.0 && pt->phase == 0.0 && v >= 0 && v <= 1) {
+  if (pt->kind == ZR_PAT_GRADIENT) {
+    /* POV-Ray 3.7's gradient, measured (bench/conform/gradient_wrap_probe.sh,
+       to float precision): a value above 1 keeps its fraction (1 stays
+       1), then t = v frequency + phase wraps as fmod(t, 1.00001), plus 1
+       while that is negative (-0 stays 0): -1.5 gives 0.50001, -7.3
+       0.70007, -1e9 - 0.5 gives 0.4, -1.000005 gives 0.999995 (fmod
+       -1.000005, plus 1 twice); with frequency 3, 0.5 gives 0.49999
+       and 1 gives 0.99998. */
+    if (v > 1.0)
+      v -= floor(v);
+    f = fmod(v * pt->frequency + pt->phase, 1.00001);
+    if (f < 0.0)
+      f += 1.0;
+    if (f < 0.0)
+      f += 1.0;
+  } else if (pt->frequency == 1.0 && pt->phase == 0.0 && v >= 0 && v <= 1) {
     /* Already in range: keep 1 as 1 rather than wrapping it to 0, so a
        pattern at its maximum takes the map's last colour. */
     f = v;
