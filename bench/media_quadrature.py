@@ -6,8 +6,8 @@ this script; its output is kept in
 bench/results/media-quadrature-2026-12-02.txt).
 
 An orthographic camera looks along +z through a hollow box 0 <= z <= D
-holding one medium; the pixel (a 16-bit PNG, File_Gamma 1 for povray,
-sRGB decoded for zrcube) is the light the ray gathers over a black
+holding one medium; the pixel (a 16-bit PNG, File_Gamma 1 for both) is
+the light the ray gathers over a black
 background.  Four parts:
 
   thick   emission e, absorption a, depth D, min samples N: povray's
@@ -73,11 +73,7 @@ def render(tool, tmp, text, w=1, h=1):
     if tool == POVRAY:
         cmd += ["-A", "-GA"]
     subprocess.run(cmd, cwd=tmp, capture_output=True, timeout=300)
-    rows = read_png16(out)
-    if tool != POVRAY:
-        rows = [[v / 12.92 if v <= 0.04045 else ((v + 0.055) / 1.055) ** 2.4
-                 for v in r] for r in rows]
-    return rows
+    return read_png16(out)  # both write linear codes under File_Gamma=1.0
 
 
 def cells_of(n_samples):

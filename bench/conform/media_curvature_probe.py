@@ -56,7 +56,6 @@ def run(r, D, e, a, extra):
     else:
         subprocess.run([r,'+Is.pov','+Os.png','+W1','+H1','-D','-A','+WT1','+FN16','File_Gamma=1'],capture_output=True)
     v = read_png16('s.png')[0][0]
-    if r != 'pov': v = v/12.92 if v <= 0.04045 else ((v+0.055)/1.055)**2.4
     return round(v,5)
 cases = [
  ('ramp s3 default', 1, 1, 5, 'method 3 samples 3 density { function { z } }'),
