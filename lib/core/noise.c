@@ -205,6 +205,36 @@ static void nearest2_plain(zr_vec3 p, const double (*points)[3], int offset,
 
 #include "../../bench/noise/noise_lanes.h"
 
+/* One axis of four points, one a lane (or of one point's three axes,
+   lanes 0-2): blend()'s cell c = cell(floor(p)) as a double (an integer
+   of 32 bits, so exact), t = p - c clamped to +-FAR_T (NaN to FAR_T),
+   t - 1, the weights w1 = smooth(t) and w0 = 1 - w1, and the cells as
+   32-bit integers (the hash wants their low 12 bits, which arithmetic
+   modulo 2^32 keeps): the same operations a lane as blend()'s a
+   coordinate. */
+__attribute__((target("avx2"))) static inline void
+axis4(__m256d pv, __m256d *t, __m256d *tm1, __m256d w[2], unsigned ic[4]) {
+  __m256d f = _mm256_floor_pd(pv);
+  __m256d in = _mm256_and_pd(
+      _mm256_cmp_pd(f, _mm256_set1_pd(-2147483648.0), _CMP_GE_OQ),
+      _mm256_cmp_pd(f, _mm256_set1_pd(2147483647.0), _CMP_LE_OQ));
+  __m256d c = _mm256_blendv_pd(_mm256_set1_pd(-2147483648.0), f, in);
+  __m256d d = _mm256_sub_pd(pv, c);
+  __m256d abs_d = _mm256_andnot_pd(_mm256_set1_pd(-0.0), d);
+  __m256d near = _mm256_cmp_pd(abs_d, _mm256_set1_pd(FAR_T), _CMP_LE_OQ);
+  __m256d far = _mm256_blendv_pd(
+      _mm256_set1_pd(FAR_T), _mm256_set1_pd(-FAR_T),
+      _mm256_cmp_pd(d, _mm256_setzero_pd(), _CMP_LT_OQ));
+  d = _mm256_blendv_pd(far, d, near);
+  w[1] = _mm256_mul_pd(
+      _mm256_mul_pd(d, d),
+      _mm256_sub_pd(_mm256_set1_pd(3), _mm256_mul_pd(_mm256_set1_pd(2), d)));
+  w[0] = _mm256_sub_pd(_mm256_set1_pd(1), w[1]);
+  *t = d;
+  *tm1 = _mm256_sub_pd(d, _mm256_set1_pd(1));
+  _mm_storeu_si128((__m128i *)ic, _mm256_cvtpd_epi32(c));
+}
+
 /* AVX2 processors get a blend of the four tables in the four lanes of
    one register, chosen at each call by the processor's features (GCC's
    target_clones would export the functions from the library, whatever
@@ -220,36 +250,16 @@ static void nearest2_plain(zr_vec3 p, const double (*points)[3], int offset,
    turbulence). */
 __attribute__((target("avx2"))) static inline __m256d blend_lanes(zr_vec3 p) {
   /* blend()'s cells, distances and weights, the three axes in lanes
-     0-2: c = cell(floor(p)) as a double (an integer of 32 bits, so
-     exact), t = p - c clamped to +-FAR_T (NaN to FAR_T), w1 = smooth(t),
-     w0 = 1 - w1; the same operations a lane as blend()'s a coordinate. */
-  __m256d pv = _mm256_set_pd(0, p.z, p.y, p.x);
-  __m256d f = _mm256_floor_pd(pv);
-  __m256d in = _mm256_and_pd(
-      _mm256_cmp_pd(f, _mm256_set1_pd(-2147483648.0), _CMP_GE_OQ),
-      _mm256_cmp_pd(f, _mm256_set1_pd(2147483647.0), _CMP_LE_OQ));
-  __m256d c = _mm256_blendv_pd(_mm256_set1_pd(-2147483648.0), f, in);
-  __m256d t = _mm256_sub_pd(pv, c);
-  __m256d abs_t = _mm256_andnot_pd(_mm256_set1_pd(-0.0), t);
-  __m256d near = _mm256_cmp_pd(abs_t, _mm256_set1_pd(FAR_T), _CMP_LE_OQ);
-  __m256d far = _mm256_blendv_pd(
-      _mm256_set1_pd(FAR_T), _mm256_set1_pd(-FAR_T),
-      _mm256_cmp_pd(t, _mm256_setzero_pd(), _CMP_LT_OQ));
-  t = _mm256_blendv_pd(far, t, near);
-  __m256d w1 = _mm256_mul_pd(
-      _mm256_mul_pd(t, t),
-      _mm256_sub_pd(_mm256_set1_pd(3), _mm256_mul_pd(_mm256_set1_pd(2), t)));
-  __m256d w0 = _mm256_sub_pd(_mm256_set1_pd(1), w1);
-  __m256d tm1 = _mm256_sub_pd(t, _mm256_set1_pd(1));
+     0-2 (axis4's lanes: the same operations a lane as blend()'s a
+     coordinate). */
+  __m256d t, tm1, wv[2];
+  _Alignas(16) unsigned ic[4];
+  axis4(_mm256_set_pd(0, p.z, p.y, p.x), &t, &tm1, wv, ic);
   _Alignas(32) double d[2][4], w[2][4];
   _mm256_store_pd(d[0], t);
   _mm256_store_pd(d[1], tm1);
-  _mm256_store_pd(w[0], w0);
-  _mm256_store_pd(w[1], w1);
-  /* The cells as 32-bit integers: the hash wants their low 12 bits,
-     which arithmetic modulo 2^32 keeps. */
-  _Alignas(16) unsigned ic[4];
-  _mm_store_si128((__m128i *)ic, _mm256_cvtpd_epi32(c));
+  _mm256_store_pd(w[0], wv[0]);
+  _mm256_store_pd(w[1], wv[1]);
   unsigned hz[2], hxy[2][2];
   for (unsigned a = 0; a < 2; a++) {
     unsigned hx = noise_hash[(ic[0] + a + NOISE_HASH_OFFSET) & 4095u];
@@ -285,29 +295,6 @@ __attribute__((target("avx2"))) static inline __m256d blend_lanes(zr_vec3 p) {
    one table, in the same order a lane (so the same values), the four
    points' sums advancing together instead of one corner after another
    (granite's and wrinkles' octaves are independent points). */
-__attribute__((target("avx2"))) static inline void
-axis4(__m256d pv, __m256d *t, __m256d *tm1, __m256d w[2], unsigned ic[4]) {
-  __m256d f = _mm256_floor_pd(pv);
-  __m256d in = _mm256_and_pd(
-      _mm256_cmp_pd(f, _mm256_set1_pd(-2147483648.0), _CMP_GE_OQ),
-      _mm256_cmp_pd(f, _mm256_set1_pd(2147483647.0), _CMP_LE_OQ));
-  __m256d c = _mm256_blendv_pd(_mm256_set1_pd(-2147483648.0), f, in);
-  __m256d d = _mm256_sub_pd(pv, c);
-  __m256d abs_d = _mm256_andnot_pd(_mm256_set1_pd(-0.0), d);
-  __m256d near = _mm256_cmp_pd(abs_d, _mm256_set1_pd(FAR_T), _CMP_LE_OQ);
-  __m256d far = _mm256_blendv_pd(
-      _mm256_set1_pd(FAR_T), _mm256_set1_pd(-FAR_T),
-      _mm256_cmp_pd(d, _mm256_setzero_pd(), _CMP_LT_OQ));
-  d = _mm256_blendv_pd(far, d, near);
-  w[1] = _mm256_mul_pd(
-      _mm256_mul_pd(d, d),
-      _mm256_sub_pd(_mm256_set1_pd(3), _mm256_mul_pd(_mm256_set1_pd(2), d)));
-  w[0] = _mm256_sub_pd(_mm256_set1_pd(1), w[1]);
-  *t = d;
-  *tm1 = _mm256_sub_pd(d, _mm256_set1_pd(1));
-  _mm_storeu_si128((__m128i *)ic, _mm256_cvtpd_epi32(c));
-}
-
 __attribute__((target("avx2"))) static void lattice4_avx2(const zr_vec3 p[4],
                                                          double out[4]) {
   __m256d d[3][2], w[3][2];
