@@ -836,10 +836,9 @@ static void print_radiosity_stats(const run *r) {
 static zr_status write_image(run *r, const zr_image *image,
                              const char *path, zr_image_format format) {
   zr_image_encoding enc;
-  zr_image_encoding_init(&enc, format);
-  enc.assumed_gamma = zr_scene_assumed_gamma(r->scene);
-  double scene_gamma = zr_scene_file_gamma(r->scene);
-  enc.file_gamma = scene_gamma > 0.0 ? scene_gamma : r->opts.file_gamma;
+  zr_scene_image_encoding(r->scene, format, &enc);
+  if (enc.file_gamma <= 0.0)
+    enc.file_gamma = r->opts.file_gamma;
   enc.quality = r->opts.jpeg_quality;
   return zr_image_save(r->ctx, image, path, &enc);
 }

@@ -33,13 +33,11 @@ static int print_progress(const zr_progress *p, void *user) {
 }
 
 /* The picture as POV-Ray writes it: the scene's working gamma undone,
-   sRGB codes, or none at all for a legacy scene (zr_scene_file_gamma). */
+   sRGB codes, or none at all for a legacy scene (zr_scene_image_encoding). */
 static zr_status write_picture(zr_context *ctx, const zr_scene *scene,
                                const zr_image *image, const char *path) {
   zr_image_encoding e;
-  zr_image_encoding_init(&e, ZR_FORMAT_AUTO);
-  e.assumed_gamma = zr_scene_assumed_gamma(scene);
-  e.file_gamma = zr_scene_file_gamma(scene);
+  zr_scene_image_encoding(scene, ZR_FORMAT_AUTO, &e);
   return zr_image_save(ctx, image, path, &e);
 }
 

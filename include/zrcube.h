@@ -1012,6 +1012,17 @@ ZR_API double zr_scene_assumed_gamma(const zr_scene *scene);
  */
 ZR_API double zr_scene_file_gamma(const zr_scene *scene);
 
+/*
+ * The encoding POV-Ray writes the scene's pictures with:
+ * zr_image_encoding_init(e, format), the scene's assumed gamma
+ * (zr_scene_assumed_gamma) and the file gamma it imposes
+ * (zr_scene_file_gamma; 0, sRGB, when it leaves it to the caller, who
+ * may then set e->file_gamma).
+ */
+ZR_API void zr_scene_image_encoding(const zr_scene *scene,
+                                    zr_image_format format,
+                                    zr_image_encoding *e);
+
 #ifdef __cplusplus
 }
 #endif

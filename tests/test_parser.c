@@ -486,6 +486,20 @@ static void test_parser_lights_background_settings(void **state) {
   assert_num(f->scene->settings.version, 3.5);
   good(f, "sphere { 0, 1 }");
   assert_num(f->scene->settings.version, 3.7);
+  /* The encoding a scene's picture is written with: a legacy scene
+     (no assumed_gamma, no #version 3.7 at its end) imposes file gamma
+     2.2 over assumed gamma 2.2 (colours as they are); a 3.7 scene
+     leaves the file gamma to the caller (0, sRGB). */
+  zr_image_encoding enc;
+  good(f, "#version 3.7; sphere { 0, 1 }\n");
+  zr_scene_image_encoding(f->scene, ZR_FORMAT_PNG16, &enc);
+  assert_int_equal(enc.format, ZR_FORMAT_PNG16);
+  assert_num(enc.assumed_gamma, 1.0);
+  assert_num(enc.file_gamma, 0.0);
+  good(f, "#version 3.5; sphere { 0, 1 }\n");
+  zr_scene_image_encoding(f->scene, ZR_FORMAT_AUTO, &enc);
+  assert_num(enc.assumed_gamma, 2.2);
+  assert_num(enc.file_gamma, 2.2);
   /* POV-Ray takes a #version without ';' and warns ("Possible Parse
      Error"); the same for a float #declare. */
   good(f, "#version max(3.1, 3.6)\n#declare A = 2 sphere { 0, A }\n");

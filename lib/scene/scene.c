@@ -204,3 +204,11 @@ ZR_API double zr_scene_file_gamma(const zr_scene *scene) {
              ? scene->settings.assumed_gamma
              : 0.0;
 }
+
+ZR_API void zr_scene_image_encoding(const zr_scene *scene,
+                                    zr_image_format format,
+                                    zr_image_encoding *e) {
+  zr_image_encoding_init(e, format);
+  e->assumed_gamma = zr_scene_assumed_gamma(scene);
+  e->file_gamma = zr_scene_file_gamma(scene);
+}
