@@ -235,6 +235,22 @@ axis4(__m256d pv, __m256d *t, __m256d *tm1, __m256d w[2], unsigned ic[4]) {
   _mm_storeu_si128((__m128i *)ic, _mm256_cvtpd_epi32(c));
 }
 
+/* Four rows of four doubles, transposed: e[c] holds element c of each
+   row (lane r from row r).  The lattice sums read a corner's table row
+   for each of four points, the crackle search a feature point's
+   coordinates for four cells. */
+__attribute__((target("avx2"))) static inline void
+transpose4(__m256d r0, __m256d r1, __m256d r2, __m256d r3, __m256d e[4]) {
+  __m256d lo01 = _mm256_unpacklo_pd(r0, r1);
+  __m256d hi01 = _mm256_unpackhi_pd(r0, r1);
+  __m256d lo23 = _mm256_unpacklo_pd(r2, r3);
+  __m256d hi23 = _mm256_unpackhi_pd(r2, r3);
+  e[0] = _mm256_permute2f128_pd(lo01, lo23, 0x20);
+  e[1] = _mm256_permute2f128_pd(hi01, hi23, 0x20);
+  e[2] = _mm256_permute2f128_pd(lo01, lo23, 0x31);
+  e[3] = _mm256_permute2f128_pd(hi01, hi23, 0x31);
+}
+
 /* AVX2 processors get a blend of the four tables in the four lanes of
    one register, chosen at each call by the processor's features (GCC's
    target_clones would export the functions from the library, whatever
@@ -335,17 +351,11 @@ __attribute__((target("avx2"))) static void lattice4_avx2(const zr_vec3 p[4],
         __m256d r1 = _mm256_loadu_pd(noise_lattice[h[1][n]]);
         __m256d r2 = _mm256_loadu_pd(noise_lattice[h[2][n]]);
         __m256d r3 = _mm256_loadu_pd(noise_lattice[h[3][n]]);
-        __m256d lo01 = _mm256_unpacklo_pd(r0, r1);
-        __m256d hi01 = _mm256_unpackhi_pd(r0, r1);
-        __m256d lo23 = _mm256_unpacklo_pd(r2, r3);
-        __m256d hi23 = _mm256_unpackhi_pd(r2, r3);
-        __m256d e0 = _mm256_permute2f128_pd(lo01, lo23, 0x20);
-        __m256d e1 = _mm256_permute2f128_pd(hi01, hi23, 0x20);
-        __m256d e2 = _mm256_permute2f128_pd(lo01, lo23, 0x31);
-        __m256d e3 = _mm256_permute2f128_pd(hi01, hi23, 0x31);
-        __m256d v = _mm256_add_pd(e0, _mm256_mul_pd(e1, d[0][i]));
-        v = _mm256_add_pd(v, _mm256_mul_pd(e2, d[1][j]));
-        v = _mm256_add_pd(v, _mm256_mul_pd(e3, d[2][k]));
+        __m256d e[4];
+        transpose4(r0, r1, r2, r3, e);
+        __m256d v = _mm256_add_pd(e[0], _mm256_mul_pd(e[1], d[0][i]));
+        v = _mm256_add_pd(v, _mm256_mul_pd(e[2], d[1][j]));
+        v = _mm256_add_pd(v, _mm256_mul_pd(e[3], d[2][k]));
         sum = _mm256_add_pd(sum,
                             _mm256_mul_pd(_mm256_mul_pd(wij, w[2][k]), v));
       }
@@ -428,13 +438,9 @@ nearest2_avx2(zr_vec3 p, const double (*points)[3], int offset, double d[2]) {
     __m256d r1 = _mm256_maskload_pd(points[hg[1]], three);
     __m256d r2 = _mm256_maskload_pd(points[hg[2]], three);
     __m256d r3 = _mm256_maskload_pd(points[hg[3]], three);
-    __m256d lo01 = _mm256_unpacklo_pd(r0, r1);
-    __m256d hi01 = _mm256_unpackhi_pd(r0, r1);
-    __m256d lo23 = _mm256_unpacklo_pd(r2, r3);
-    __m256d hi23 = _mm256_unpackhi_pd(r2, r3);
-    __m256d ox = _mm256_permute2f128_pd(lo01, lo23, 0x20);
-    __m256d oy = _mm256_permute2f128_pd(hi01, hi23, 0x20);
-    __m256d oz = _mm256_permute2f128_pd(lo01, lo23, 0x31);
+    __m256d o[4];
+    transpose4(r0, r1, r2, r3, o);
+    __m256d ox = o[0], oy = o[1], oz = o[2];
     __m256d fxv = _mm256_add_pd(
         _mm256_add_pd(cx, _mm256_load_pd(cell_steps[g][0])), ox);
     __m256d fyv = _mm256_add_pd(
