@@ -476,17 +476,9 @@ zr_status zr__image_read_heights(zr_context *ctx, const char *path, bool pot,
   *heights = NULL;
   char *bytes = NULL;
   size_t size = 0;
-  zr_status s = zr__context_read(ctx, path, &bytes, &size);
-  if (s == ZR_ENOTFOUND)
-    return zr__diag(ctx, ZR_DIAG_ERROR, s, NULL, "%s: file not found",
-                    path);
-  if (s == ZR_EACCESS)
-    return s; /* zr__context_read said why */
-  if (s != ZR_OK) {
-    char why[160];
-    return zr__diag(ctx, ZR_DIAG_ERROR, s, NULL, "%s: cannot read: %s",
-                    path, zr__context_read_error(ctx, s, why, sizeof why));
-  }
+  zr_status s = zr__image_read_bytes(ctx, path, &bytes, &size);
+  if (s != ZR_OK)
+    return s;
   s = zr__image_decode_heights(ctx, path, pot, bytes, size, heights, width,
                                height);
   free(bytes);

@@ -491,15 +491,11 @@ static zr_status decode(zr_context *ctx, const char *path,
   return not_an_image(ctx, path);
 }
 
-ZR_API zr_status zr_image_read(zr_context *ctx, const char *path,
-                               zr_image **out) {
-  if (!path || !out)
-    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, NULL,
-                    "zr_image_read: no path or no output");
-  *out = NULL;
-  char *bytes = NULL;
-  size_t size = 0;
-  zr_status s = zr__context_read(ctx, path, &bytes, &size);
+/* An image file's bytes (the caller frees them), with the message
+   every image reader gives when the file is missing or unreadable. */
+zr_status zr__image_read_bytes(zr_context *ctx, const char *path,
+                               char **bytes, size_t *size) {
+  zr_status s = zr__context_read(ctx, path, bytes, size);
   if (s == ZR_ENOTFOUND)
     return zr__diag(ctx, ZR_DIAG_ERROR, s, NULL, "%s: file not found",
                     path);
@@ -510,6 +506,20 @@ ZR_API zr_status zr_image_read(zr_context *ctx, const char *path,
     return zr__diag(ctx, ZR_DIAG_ERROR, s, NULL, "%s: cannot read: %s",
                     path, zr__context_read_error(ctx, s, why, sizeof why));
   }
+  return ZR_OK;
+}
+
+ZR_API zr_status zr_image_read(zr_context *ctx, const char *path,
+                               zr_image **out) {
+  if (!path || !out)
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, NULL,
+                    "zr_image_read: no path or no output");
+  *out = NULL;
+  char *bytes = NULL;
+  size_t size = 0;
+  zr_status s = zr__image_read_bytes(ctx, path, &bytes, &size);
+  if (s != ZR_OK)
+    return s;
   s = zr__image_decode(ctx, path, bytes, size, out);
   free(bytes);
   /* The public picture is floats (zr_image_pixels). */

@@ -224,6 +224,11 @@ unsigned zr__encode_linear(float value, unsigned maxval);
    the working value raised to assumed_gamma, negatives and NaN 0. */
 float zr__linear_sample(float value, double assumed_gamma);
 
+/* An image file's bytes (the caller frees them); a missing or unreadable
+   file gets its message here. */
+zr_status zr__image_read_bytes(zr_context *ctx, const char *path,
+                               char **bytes, size_t *size);
+
 /*
  * A height field's samples (lib/image/heights.c): the stored values of
  * a PNG, GIF, PGM, PPM or JPEG file scaled to [0, 1], one per pixel,
