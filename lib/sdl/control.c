@@ -141,7 +141,7 @@ static bool paren_truth(zr_sdl_parser *p, const zr_sdl_loc *at, bool *out) {
 
 /* Reads an identifier token at the current place, or reports what was
    expected after the directive. */
-static const char *read_name(zr_sdl_parser *p, const char *after) {
+const char *zr__sdl_read_name(zr_sdl_parser *p, const char *after) {
   const zr_sdl_token *t = zr__sdl_peek(p, 0);
   if (t->kind != T_IDENTIFIER) {
     zr_sdl_loc at = zr__sdl_peek_loc(p, 0);
@@ -153,7 +153,7 @@ static const char *read_name(zr_sdl_parser *p, const char *after) {
   return t->v.str;
 }
 
-static bool expect(zr_sdl_parser *p, int kind, const char *what) {
+bool zr__sdl_expect(zr_sdl_parser *p, int kind, const char *what) {
   if (zr__sdl_peek(p, 0)->kind != kind) {
     zr_sdl_loc at = zr__sdl_peek_loc(p, 0);
     zr__sdl_error(p, ZR_ESYNTAX, &at, "expected %s", what);
@@ -166,10 +166,10 @@ static bool expect(zr_sdl_parser *p, int kind, const char *what) {
 bool zr__sdl_read_defined(zr_sdl_parser *p, const zr_sdl_loc *at,
                           bool *out) {
   (void)at;
-  if (!expect(p, '(', "'(' before the identifier"))
+  if (!zr__sdl_expect(p, '(', "'(' before the identifier"))
     return false;
   zr_sdl_loc nl = zr__sdl_peek_loc(p, 0);
-  const char *name = read_name(p, "'('");
+  const char *name = zr__sdl_read_name(p, "'('");
   if (!name)
     return false;
   const zr_sdl_symbol *s = zr__sdl_lookup(p, name, NULL);
@@ -192,7 +192,7 @@ bool zr__sdl_read_defined(zr_sdl_parser *p, const zr_sdl_loc *at,
       return false;
     *out = set;
   }
-  return expect(p, ')', "')' after the identifier");
+  return zr__sdl_expect(p, ')', "')' after the identifier");
 }
 
 /* ---- #if, #ifdef, #ifndef, #elseif, #else ---- */
@@ -390,9 +390,9 @@ static bool do_for(zr_sdl_parser *p, const zr_sdl_loc *at) {
   size_t end = block_end(file_of(p), open);
   if (end == NONE)
     return unmatched(p, open);
-  if (!expect(p, '(', "'(' after '#for'"))
+  if (!zr__sdl_expect(p, '(', "'(' after '#for'"))
     return false;
-  const char *var = read_name(p, "'#for ('");
+  const char *var = zr__sdl_read_name(p, "'#for ('");
   if (!var || zr__sdl_parse_nested(p, T_START_FOR) != ZR_OK)
     return false;
   double start = p->nested_list.v[0], to = p->nested_list.v[1];
@@ -523,8 +523,8 @@ static bool do_macro(zr_sdl_parser *p, const zr_sdl_loc *at) {
   if (end == NONE)
     return unmatched(p, open);
   zr_sdl_loc nl = zr__sdl_peek_loc(p, 0);
-  const char *name = read_name(p, "'#macro'");
-  if (!name || !expect(p, '(', "'(' after the macro's name"))
+  const char *name = zr__sdl_read_name(p, "'#macro'");
+  if (!name || !zr__sdl_expect(p, '(', "'(' after the macro's name"))
     return false;
   zr_sdl_macro *m = zr__sdl_alloc(p, sizeof *m);
   if (!m)
@@ -550,7 +550,7 @@ static bool do_macro(zr_sdl_parser *p, const zr_sdl_loc *at) {
                       zr__sdl_peek(p, 1)->kind == T_IDENTIFIER;
       if (optional)
         zr__sdl_top(p)->pos++;
-      const char *param = read_name(p, m->n_params ? "','" : "'('");
+      const char *param = zr__sdl_read_name(p, m->n_params ? "','" : "'('");
       if (!param)
         return false;
       m->optional[m->n_params] = optional;
@@ -566,7 +566,7 @@ static bool do_macro(zr_sdl_parser *p, const zr_sdl_loc *at) {
         break;
     }
   }
-  if (!expect(p, ')', "',' or ')' in the macro's parameters"))
+  if (!zr__sdl_expect(p, ')', "',' or ')' in the macro's parameters"))
     return false;
   m->body = zr__sdl_top(p)->pos;
   if (m->body > end) {
@@ -706,7 +706,7 @@ bool zr__sdl_call_macro(zr_sdl_parser *p, const zr_sdl_macro *m,
 
 static bool do_undef(zr_sdl_parser *p, const zr_sdl_loc *at) {
   zr_sdl_loc nl = zr__sdl_peek_loc(p, 0);
-  const char *name = read_name(p, "'#undef'");
+  const char *name = zr__sdl_read_name(p, "'#undef'");
   if (!name)
     return false;
   (void)at;

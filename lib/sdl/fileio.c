@@ -51,28 +51,6 @@ static void forget(zr_sdl_parser *p, zr_sdl_fhandle *h) {
   free(h);
 }
 
-static bool expect(zr_sdl_parser *p, int kind, const char *what) {
-  if (zr__sdl_peek(p, 0)->kind != kind) {
-    zr_sdl_loc at = zr__sdl_peek_loc(p, 0);
-    zr__sdl_error(p, ZR_ESYNTAX, &at, "expected %s", what);
-    return false;
-  }
-  zr__sdl_top(p)->pos++;
-  return true;
-}
-
-static const char *read_name(zr_sdl_parser *p, const char *after) {
-  const zr_sdl_token *t = zr__sdl_peek(p, 0);
-  if (t->kind != T_IDENTIFIER) {
-    zr_sdl_loc at = zr__sdl_peek_loc(p, 0);
-    zr__sdl_error(p, ZR_ESYNTAX, &at, "expected an identifier after '%s'",
-                  after);
-    return NULL;
-  }
-  zr__sdl_top(p)->pos++;
-  return t->v.str;
-}
-
 /* The open file called name, or NULL after reporting. */
 static zr_sdl_fhandle *handle(zr_sdl_parser *p, const char *name,
                               const zr_sdl_loc *at) {
@@ -86,7 +64,7 @@ static zr_sdl_fhandle *handle(zr_sdl_parser *p, const char *name,
 
 static bool do_fopen(zr_sdl_parser *p, const zr_sdl_loc *at) {
   zr_sdl_loc nl = zr__sdl_peek_loc(p, 0);
-  const char *name = read_name(p, "'#fopen'");
+  const char *name = zr__sdl_read_name(p, "'#fopen'");
   if (!name)
     return false;
   zr_sdl_loc fl = zr__sdl_peek_loc(p, 0);
@@ -152,7 +130,7 @@ static bool do_fopen(zr_sdl_parser *p, const zr_sdl_loc *at) {
 
 static bool do_fclose(zr_sdl_parser *p) {
   zr_sdl_loc nl = zr__sdl_peek_loc(p, 0);
-  const char *name = read_name(p, "'#fclose'");
+  const char *name = zr__sdl_read_name(p, "'#fclose'");
   if (!name)
     return false;
   /* A file that #read closed at its end may be closed again (the stock
@@ -231,10 +209,10 @@ malformed:;
 }
 
 static bool do_read(zr_sdl_parser *p) {
-  if (!expect(p, '(', "'(' after '#read'"))
+  if (!zr__sdl_expect(p, '(', "'(' after '#read'"))
     return false;
   zr_sdl_loc nl = zr__sdl_peek_loc(p, 0);
-  const char *name = read_name(p, "'#read ('");
+  const char *name = zr__sdl_read_name(p, "'#read ('");
   zr_sdl_fhandle *h = name ? handle(p, name, &nl) : NULL;
   if (!h)
     return false;
@@ -246,7 +224,7 @@ static bool do_read(zr_sdl_parser *p) {
   while (zr__sdl_peek(p, 0)->kind == ',') {
     zr__sdl_top(p)->pos++;
     zr_sdl_loc vl = zr__sdl_peek_loc(p, 0);
-    const char *var = read_name(p, "','");
+    const char *var = zr__sdl_read_name(p, "','");
     if (!var)
       return false;
     if (!open)
@@ -281,14 +259,14 @@ static bool do_read(zr_sdl_parser *p) {
       zr__sdl_symtab_remove(&p->globals, name);
     }
   }
-  return expect(p, ')', "',' or ')' in '#read'");
+  return zr__sdl_expect(p, ')', "',' or ')' in '#read'");
 }
 
 static bool do_write(zr_sdl_parser *p) {
-  if (!expect(p, '(', "'(' after '#write'"))
+  if (!zr__sdl_expect(p, '(', "'(' after '#write'"))
     return false;
   zr_sdl_loc nl = zr__sdl_peek_loc(p, 0);
-  const char *name = read_name(p, "'#write ('");
+  const char *name = zr__sdl_read_name(p, "'#write ('");
   zr_sdl_fhandle *h = name ? handle(p, name, &nl) : NULL;
   if (!h)
     return false;

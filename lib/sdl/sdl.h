@@ -687,6 +687,11 @@ zr_sdl_loc zr__sdl_token_loc(int file, const zr_sdl_token *t);
 const zr_sdl_token *zr__sdl_peek(zr_sdl_parser *p, size_t k);
 /* Where the token k places ahead is. */
 zr_sdl_loc zr__sdl_peek_loc(zr_sdl_parser *p, size_t k);
+/* The next token if it is kind (true), else "expected <what>" (false). */
+bool zr__sdl_expect(zr_sdl_parser *p, int kind, const char *what);
+/* The next token's name if it is an identifier, else "expected an
+   identifier after '<after>'" and NULL. */
+const char *zr__sdl_read_name(zr_sdl_parser *p, const char *after);
 bool zr__sdl_push_frame(zr_sdl_parser *p, int file, const zr_sdl_loc *at);
 void zr__sdl_pop_frame(zr_sdl_parser *p);
 /* The table #local writes to in frame (frame 0's is the global one). */
