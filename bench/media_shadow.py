@@ -25,11 +25,13 @@ Exits 77 without povray.  Renders are 32x4 pixels, one thread.
 import math
 import os
 import shutil
-import struct
 import subprocess
 import sys
 import tempfile
-import zlib
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "conform"))
+import png16  # noqa: E402
 
 POVRAY = os.environ.get("POVRAY") or shutil.which("povray") or ""
 
@@ -64,43 +66,12 @@ W, H = 32, 4
 
 
 def read_png16(path):
-    """Red channel of a 16-bit RGB PNG, rows top to bottom, 0..1."""
-    data = open(path, "rb").read()
-    i, idat, w, h = 8, b"", 0, 0
-    while i < len(data):
-        n = struct.unpack(">I", data[i:i + 4])[0]
-        kind, body = data[i + 4:i + 8], data[i + 8:i + 8 + n]
-        if kind == b"IHDR":
-            w, h, depth, ctype = struct.unpack(">IIBB", body[:10])
-            if depth != 16 or ctype != 2:
-                raise ValueError("%s: not 16-bit RGB" % path)
-        elif kind == b"IDAT":
-            idat += body
-        i += 12 + n
-    raw, bpp, stride = zlib.decompress(idat), 6, w * 6
-    rows, prev = [], bytearray(stride)
-    for y in range(h):
-        f = raw[y * (stride + 1)]
-        line = bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
-        for x in range(stride):
-            a = line[x - bpp] if x >= bpp else 0
-            b = prev[x]
-            c = prev[x - bpp] if x >= bpp else 0
-            if f == 1:
-                line[x] = (line[x] + a) & 255
-            elif f == 2:
-                line[x] = (line[x] + b) & 255
-            elif f == 3:
-                line[x] = (line[x] + (a + b) // 2) & 255
-            elif f == 4:
-                p = a + b - c
-                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-                pr = a if pa <= pb and pa <= pc else b if pb <= pc else c
-                line[x] = (line[x] + pr) & 255
-        rows.append([(line[6 * x] << 8 | line[6 * x + 1]) / 65535.0
-                     for x in range(w)])
-        prev = line
-    return rows
+    """Red channel of a 16-bit RGB PNG, rows top to bottom, 0..1
+    (conform/png16.py decodes it)."""
+    img = png16.read(path)
+    if img.shape[2] != 3:
+        raise ValueError("%s: not RGB" % path)
+    return img[..., 0].tolist()
 
 
 def render(tool, tmp, text, tag):
