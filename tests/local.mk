@@ -111,7 +111,7 @@ TESTS += tests/test_media_shadow_povray.sh tests/test_fog_povray.sh \
 	tests/test_image_gamma_povray.sh
 EXTRA_DIST += tests/test_fog_povray.sh tests/fog/solid_fog.pov \
 	tests/test_image_gamma_povray.sh
-EXTRA_DIST += tests/test_media_shadow_povray.sh bench/media_shadow.py \
+EXTRA_DIST += tests/test_media_shadow_povray.sh bench/media_shadow.py bench/conform/png16.py \
 	bench/media_warp_ssim.sh bench/media_more_samples.py \
 	bench/results/media-warp-ssim-2026-12-02.tsv \
 	bench/results/media-shadow-2026-12-02.txt
