@@ -22,7 +22,7 @@ work=$(mktemp -d "${TMPDIR:-/tmp}/zr_$(basename "$0" .sh).XXXXXX") || exit 99
 trap 'rm -rf "$work"' EXIT INT TERM
 cd "$work" || exit 99
 
-# pixel_case SCENE TAG DECLARE X,Y=R,G,B...: renders SCENE at 16x12
+# pixel_case SCENE TAG DECLARE ROW,COL=R,G,B...: renders SCENE at 16x12
 # with Declare=DECLARE into zTAG.png and checks the given pixels (povray's
 # recorded values) with tests/pixel_check.py, each channel within 2
 # levels; with povray installed its own render is compared too.
@@ -41,10 +41,11 @@ pixel_case() {
   /usr/bin/python3 "$srcdir/tests/pixel_check.py" z$pc_tag.png "$@" $pc_ref
 }
 
-# pixel_cases SCENE VAR "CASES" ["X,Y X,Y..."]: pixel_case for each case
+# pixel_cases SCENE VAR "CASES" ["ROW,COL ROW,COL..."]: pixel_case for each case
 # C of CASES, rendered with Declare=VAR=C and checked against the pixels
-# in the variable recorded_C: "R,G,B R,G,B..." at the given X,Y places,
-# or "X,Y=R,G,B ..." words when no places are given.  Prints "case C:"
+# in the variable recorded_C: "R,G,B R,G,B..." at the given ROW,COL
+# places (row from the top, 0..11; column 0..15), or "ROW,COL=R,G,B ..."
+# words when no places are given.  Prints "case C:"
 # before each; returns 1 when any case fails.
 pixel_cases() {
   pcs_scene=$1 pcs_var=$2 pcs_cases=$3 pcs_px=${4:-}
@@ -59,7 +60,7 @@ pixel_cases() {
   return $pcs_fail
 }
 
-# pixel_args "X,Y X,Y..." "R,G,B R,G,B...": the X,Y=R,G,B words that
+# pixel_args "ROW,COL ..." "R,G,B R,G,B...": the ROW,COL=R,G,B words that
 # pixel_case takes, pairing the two lists in order.
 pixel_args() {
   pa_at=$1
