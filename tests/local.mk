@@ -350,3 +350,6 @@ TESTS += tests/test_gradient_wrap.sh
 EXTRA_DIST += tests/test_gradient_wrap.sh bench/conform/gradient_wrap_probe.sh bench/conform/gradient_wrap_probe.pov
 TESTS += tests/test_media_curvature.sh
 EXTRA_DIST += tests/test_media_curvature.sh tests/media_curvature.pov bench/conform/media_curvature_probe.py
+# Focal blur's lens radius, aperture / 4 (povray's measured spread).
+TESTS += tests/test_focal_blur.sh
+EXTRA_DIST += tests/test_focal_blur.sh bench/conform/focal_blur_probe.py
