@@ -350,3 +350,5 @@ TESTS += tests/test_gradient_wrap.sh
 EXTRA_DIST += tests/test_gradient_wrap.sh bench/conform/gradient_wrap_probe.sh bench/conform/gradient_wrap_probe.pov
 TESTS += tests/test_media_curvature.sh
 EXTRA_DIST += tests/test_media_curvature.sh tests/media_curvature.pov bench/conform/media_curvature_probe.py
+TESTS += tests/test_fade_colour.sh
+EXTRA_DIST += tests/test_fade_colour.sh tests/fade_colour.pov
