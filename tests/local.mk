@@ -353,3 +353,5 @@ EXTRA_DIST += tests/test_media_curvature.sh tests/media_curvature.pov bench/conf
 # Focal blur's lens radius, aperture / 4 (povray's measured spread).
 TESTS += tests/test_focal_blur.sh
 EXTRA_DIST += tests/test_focal_blur.sh bench/conform/focal_blur_probe.py
+TESTS += tests/test_fade_colour.sh
+EXTRA_DIST += tests/test_fade_colour.sh tests/fade_colour.pov
