@@ -45,10 +45,23 @@ static double cubic_slope(const double *c, double s) {
 
 /* The roots of c(s) = 0 for s in [0, 1): the open interval plus s = 0
    itself, so two segments that meet count their joint once. */
-static int segment_roots(const double *c, double *roots) {
+static inline int segment_roots(const double *c, double *roots) {
   int n = 0;
   if (c[0] == 0.0)
     roots[n++] = 0.0;
+  /* A straight piece's equation is linear: solved here as
+     zr__poly_roots solves a first-degree one (same root, same open
+     interval), without the call and its search for the degree, since
+     linear_spline prisms are the common kind and their even-odd tests
+     ask it for every piece beside the point. */
+  if (c[3] == 0.0 && c[2] == 0.0) {
+    if (c[1] == 0.0)
+      return n;
+    double s = -c[0] / c[1];
+    if (s > 0.0 && s < 1.0)
+      roots[n++] = s;
+    return n;
+  }
   return n + zr__poly_roots(c, 3, 0.0, 1.0, roots + n);
 }
 
@@ -82,29 +95,41 @@ void zr__cubic_range(const double *c, double *lo, double *hi) {
     }
 }
 
+/* Whether piece seg crosses the line z = const (zc holds its z(s) - z)
+   to the right of x an odd number of times. */
+static bool piece_flips(const double *seg, const double *zc, double x) {
+  double s[4];
+  int n = segment_roots(zc, s);
+  bool flip = false;
+  for (int k = 0; k < n; k++) {
+    /* A root where z(s) only touches the line does not cross it. */
+    if (zc[0] == 0.0 && s[k] == 0.0 && cubic_slope(zc, 0.0) == 0.0)
+      continue;
+    if (cubic_at(seg, s[k]) > x)
+      flip = !flip;
+  }
+  return flip;
+}
+
 bool zr__curves_cover(const double *pieces, const double *box,
                       size_t n_pieces, double x, double z) {
   bool in = false;
+  /* A piece wholly above or below the line z, or wholly at or left of
+     x, crosses nothing to the right of the point: skip its roots.  The
+     boxes made with the shape are read in place (this test runs for
+     every cap hit and every inside question of a CSG: the corpus'
+     aug10-2.pov asks it some five million times). */
   for (size_t i = 0; i < n_pieces; i++) {
     const double *seg = pieces + 8 * i;
-    /* A piece wholly above or below the line z, or wholly at or left of
-       x, crosses nothing to the right of the point: skip its roots. */
-    double b[4];
-    zr__piece_box(pieces, box, i, b);
-    if (z < b[2] || z > b[3])
-      continue;
-    if (b[1] <= x)
+    double work[4];
+    const double *b = box ? box + 4 * i : work;
+    if (!box)
+      zr__piece_box(pieces, NULL, i, work);
+    if (z < b[2] || z > b[3] || b[1] <= x)
       continue;
     double zc[4] = {seg[4] - z, seg[5], seg[6], seg[7]};
-    double s[4];
-    int n = segment_roots(zc, s);
-    for (int k = 0; k < n; k++) {
-      /* A root where z(s) only touches the line does not cross it. */
-      if (zc[0] == 0.0 && s[k] == 0.0 && cubic_slope(zc, 0.0) == 0.0)
-        continue;
-      if (cubic_at(seg, s[k]) > x)
-        in = !in;
-    }
+    if (piece_flips(seg, zc, x))
+      in = !in;
   }
   return in;
 }
@@ -323,16 +348,56 @@ static bool piece_may_cross(const double b[4], zr_vec3 org, zr_vec3 dir,
   return tmin <= tmax;
 }
 
+/*
+ * The box, in the x-z plane, of the part of a ray from tmin to tmax,
+ * widened by pad and by a margin for the rounding of its ends: xlo,
+ * xhi, zlo, zhi.  A piece whose widened box misses it is a piece that
+ * piece_may_cross() turns down (a point of the ray in (tmin, tmax)
+ * inside the piece's widened box lies in both boxes), found with four
+ * comparisons rather than four divisions: a ray along the sweep, as
+ * down the tunnel of hexagonal frames of the corpus' aug10-2.pov, is a
+ * short stroke seen from above, beside most pieces.  False when the
+ * ends are not finite: then every piece is asked.
+ */
+static bool stroke_box(zr_vec3 org, zr_vec3 dir, double tmin, double tmax,
+                       double pad, double out[4]) {
+  double a[2] = {org.x + tmin * dir.x, org.z + tmin * dir.z};
+  double b[2] = {org.x + tmax * dir.x, org.z + tmax * dir.z};
+  if (!(isfinite(a[0]) && isfinite(a[1]) && isfinite(b[0]) &&
+        isfinite(b[1])))
+    return false;
+  /* The ends carry a rounding error of a few ulps of the largest of
+     the terms that made them; 1e-12 of it is a wide margin. */
+  double big = zr_max(zr_max(fabs(org.x), fabs(org.z)),
+                      zr_max(zr_max(fabs(a[0]), fabs(a[1])),
+                             zr_max(fabs(b[0]), fabs(b[1]))));
+  double w = 2.0 * pad + 1e-12 * big;
+  for (int k = 0; k < 2; k++) {
+    out[2 * k] = zr_min(a[k], b[k]) - w;
+    out[2 * k + 1] = zr_max(a[k], b[k]) + w;
+  }
+  return true;
+}
+
+static bool boxes_meet(const double b[4], const double c[4]) {
+  return b[0] <= c[1] && b[1] >= c[0] && b[2] <= c[3] && b[3] >= c[2];
+}
+
 static void wall_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
                            double tmin, double tmax, double pad,
                            zr_hit_list *l) {
   zr_vec3 m = zr_v3_cross(org, dir);
   double dd = zr_v3_dot(dir, dir);
+  double stroke[4];
+  bool stroked = !o->u.prism.conic &&
+                 stroke_box(org, dir, tmin, tmax, pad, stroke);
   for (size_t i = 0; i < o->u.prism.n_seg; i++) {
     const double *x = o->u.prism.seg + 8 * i, *z = x + 4;
     if (!o->u.prism.conic) {
       double b[4];
       zr__piece_box(o->u.prism.seg, o->u.prism.box, i, b);
+      if (stroked && !boxes_meet(b, stroke))
+        continue;
       if (!piece_may_cross(b, org, dir, tmin, tmax, pad))
         continue;
     }
@@ -410,7 +475,9 @@ int zr__prism_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
   tmax = zr_min(tmax, s1 + pad);
   if (!(tmin < tmax))
     return 0;
-  zr_hit_list l = {0, {0}, {{0, 0, 0}}};
+  /* Only the first l.n entries are ever read: no need to clear them. */
+  zr_hit_list l;
+  l.n = 0;
   wall_crossings(o, org, dir, tmin, tmax, pad, &l);
   cap_crossings(o, org, dir, tmin, tmax, &l);
   for (int i = 0; i < l.n; i++) {
