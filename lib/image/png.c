@@ -286,20 +286,23 @@ static zr_status encode_rows(png_job *job, const zr_image *image, int bits,
   for (int y = 0; y < image->height; y++) {
     const float *src = image->pixels + (size_t)y * image->width * 3;
     const float *a = alpha ? image->alpha + (size_t)y * image->width : NULL;
-    for (size_t i = 0; i < (size_t)image->width * channels; i++) {
-      size_t x = i / channels, c = i % channels;
-      unsigned code =
-          c == 3      ? zr__encode_linear(a[x], maxval)
-          : bits == 8 ? zr__encoder8_code(&enc, src[3 * x + c])
-                      : zr__encode_code(src[3 * x + c], assumed_gamma,
-                                        file_gamma, maxval);
-      if (bits == 16) {
-        job->rows[2 * i] = (unsigned char)(code >> 8);
-        job->rows[2 * i + 1] = (unsigned char)(code & 0xff);
-      } else {
-        job->rows[i] = (unsigned char)code;
+    /* Sample i of the row is channel c of pixel x (no division a
+       sample: channels is 3 or 4, not known when compiling). */
+    size_t i = 0;
+    for (size_t x = 0; x < (size_t)image->width; x++)
+      for (size_t c = 0; c < channels; c++, i++) {
+        unsigned code =
+            c == 3      ? zr__encode_linear(a[x], maxval)
+            : bits == 8 ? zr__encoder8_code(&enc, src[3 * x + c])
+                        : zr__encode_code(src[3 * x + c], assumed_gamma,
+                                          file_gamma, maxval);
+        if (bits == 16) {
+          job->rows[2 * i] = (unsigned char)(code >> 8);
+          job->rows[2 * i + 1] = (unsigned char)(code & 0xff);
+        } else {
+          job->rows[i] = (unsigned char)code;
+        }
       }
-    }
     png_write_row(job->png, job->rows);
   }
   png_write_end(job->png, NULL);
