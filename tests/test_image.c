@@ -895,6 +895,76 @@ static void test_image_png_level(void **state) {
   zr_image_free(img);
 }
 
+/* Reads a big-endian 32-bit number (PNG chunk lengths). */
+static size_t be32(const unsigned char *p) {
+  return (size_t)p[0] << 24 | (size_t)p[1] << 16 | (size_t)p[2] << 8 | p[3];
+}
+
+/* Rows reach zlib unfiltered (png.c: libpng's five-filter search cost
+   most of a write and saved nothing on rendered pictures).  At level 0
+   zlib stores the bytes as they come, so the IDAT data, once its stored
+   blocks (RFC 1951, 3.2.4) are unwrapped, is the rows themselves, each
+   after its filter-type byte: 0 (None) on every row, then the codes.
+   The test ramp is smooth, which libpng's own choice would filter with
+   Sub, Up or Paeth. */
+static void test_image_png_rows_unfiltered(void **state) {
+  fixture *fx = *state;
+  enum { W = 32, H = 16, ROW = 1 + 3 * W };
+  assert_int_equal(zr_context_set_png_level(fx->ctx, 0), ZR_OK);
+  zr_image *img = make_test_image(W, H);
+  const char *path = in_dir(fx, "filter.png");
+  assert_int_equal(zr_image_write(fx->ctx, img, path, ZR_FORMAT_PNG8, 1.0),
+                   ZR_OK);
+  size_t size = file_size(path);
+  unsigned char *file = malloc(size);
+  unsigned char *z = malloc(size);
+  assert_non_null(file);
+  assert_non_null(z);
+  FILE *f = fopen(path, "rb");
+  assert_non_null(f);
+  assert_int_equal(fread(file, 1, size, f), size);
+  fclose(f);
+  /* The zlib stream: the IDAT chunks' data, end to end. */
+  size_t nz = 0;
+  for (size_t at = 8; at + 12 <= size;) {
+    size_t len = be32(file + at);
+    assert_true(at + 12 + len <= size);
+    if (memcmp(file + at + 4, "IDAT", 4) == 0) {
+      memcpy(z + nz, file + at + 8, len);
+      nz += len;
+    }
+    at += 12 + len;
+  }
+  /* Two header bytes, then stored blocks: a type byte (0 or 1 for the
+     last), LEN and its complement, LEN bytes. */
+  unsigned char rows[H * ROW];
+  size_t nrows = 0, at = 2;
+  bool last = false;
+  while (!last) {
+    assert_true(at + 5 <= nz);
+    assert_int_equal(z[at] & 6, 0); /* BTYPE 00: stored */
+    last = z[at] & 1;
+    size_t len = (size_t)z[at + 1] | (size_t)z[at + 2] << 8;
+    assert_int_equal(len ^ ((size_t)z[at + 3] | (size_t)z[at + 4] << 8),
+                     0xffff);
+    assert_true(at + 5 + len <= nz && nrows + len <= sizeof rows);
+    memcpy(rows + nrows, z + at + 5, len);
+    nrows += len;
+    at += 5 + len;
+  }
+  assert_int_equal(nrows, sizeof rows);
+  const float *px = zr_image_pixels_const(img);
+  for (int y = 0; y < H; y++) {
+    assert_int_equal(rows[y * ROW], 0);
+    for (int i = 0; i < 3 * W; i++)
+      assert_int_equal(rows[y * ROW + 1 + i],
+                       zr__encode_sample(px[y * 3 * W + i], 1.0, 255));
+  }
+  free(file);
+  free(z);
+  zr_image_free(img);
+}
+
 static void test_image_null_context_is_silent(void **state) {
   (void)state;
   zr_image *img = NULL;
@@ -911,6 +981,8 @@ int main(void) {
       cmocka_unit_test(test_image_encoder8_same_codes),
       cmocka_unit_test(test_image_file_gamma_codes),
       cmocka_unit_test_setup_teardown(test_image_png_level, setup,
+                                      teardown),
+      cmocka_unit_test_setup_teardown(test_image_png_rows_unfiltered, setup,
                                       teardown),
       cmocka_unit_test_setup_teardown(test_image_png8_round_trip, setup,
                                       teardown),

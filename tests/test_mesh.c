@@ -311,6 +311,93 @@ static void test_mesh_instances_share(void **state) {
   assert_near(hit.t, 2, EPS);
 }
 
+/* A smooth, textured n x n grid (normal_vectors, a texture_list of
+   two, alternating faces) with the given object modifiers. */
+static zr_scene *smooth_textured_grid(fixture *f, int n, const char *mods) {
+  zr_strbuf b;
+  zr__strbuf_init(&b);
+  zr__strbuf_printf(&b, "mesh2 { vertex_vectors { %d", n * n);
+  for (int j = 0; j < n; j++)
+    for (int i = 0; i < n; i++)
+      zr__strbuf_printf(&b, ", <%d, %g, %d>", i, sin(0.7 * i) * cos(0.4 * j),
+                        j);
+  zr__strbuf_printf(&b, " } normal_vectors { %d", n * n);
+  for (int j = 0; j < n; j++)
+    for (int i = 0; i < n; i++)
+      zr__strbuf_printf(&b, ", <%g, 1, %g>", -0.7 * cos(0.7 * i) * cos(0.4 * j),
+                        0.4 * sin(0.7 * i) * sin(0.4 * j));
+  zr__strbuf_printf(&b, " } texture_list { 2, texture { pigment { rgb "
+                        "<1,0,0> } } texture { pigment { rgb <0,0,1> } } }");
+  int faces = 2 * (n - 1) * (n - 1);
+  zr__strbuf_printf(&b, " face_indices { %d", faces);
+  for (int j = 0; j < n - 1; j++)
+    for (int i = 0; i < n - 1; i++) {
+      int a = j * n + i;
+      zr__strbuf_printf(&b, ", <%d,%d,%d>, %d, <%d,%d,%d>, %d", a, a + 1,
+                        a + n, (i + j) % 2, a + 1, a + n + 1, a + n,
+                        (i + j + 1) % 2);
+    }
+  zr__strbuf_printf(&b, " } normal_indices { %d", faces);
+  for (int j = 0; j < n - 1; j++)
+    for (int i = 0; i < n - 1; i++) {
+      int a = j * n + i;
+      zr__strbuf_printf(&b, ", <%d,%d,%d>, <%d,%d,%d>", a, a + 1, a + n,
+                        a + 1, a + n + 1, a + n);
+    }
+  zr__strbuf_printf(&b, " } %s }\n", mods);
+  zr_scene *s = good(f, zr__strbuf_cstr(&b));
+  zr__strbuf_free(&b);
+  return s;
+}
+
+/*
+ * The search for the nearest surface makes a mesh's normal from the face
+ * its own walk found (bvh.c, zr__mesh_world_normal) instead of
+ * searching the mesh again: hit for hit it must give what zr__intersect
+ * gives the mesh alone, the same t, object (texture), u, v and normal
+ * to the bit, through a transform, inverse and smooth normals.
+ */
+static void test_mesh_nearest_normal_as_intersect(void **state) {
+  fixture *f = *state;
+  const char *mods[3] = {"", "scale <1, 2, 0.5> rotate <10, 20, 30> "
+                             "translate <1, 2, 3>",
+                         "rotate <-20, 5, 0> scale 3 inverse"};
+  for (int m = 0; m < 3; m++) {
+    zr_scene *s = smooth_textured_grid(f, 12, mods[m]);
+    assert_int_equal(s->n_primitives, 1);
+    const zr_object *o = s->primitives[0];
+    unsigned seed = 4242;
+    int found = 0;
+    for (int k = 0; k < 400; k++) {
+      double r[5];
+      for (int i = 0; i < 5; i++) {
+        seed = seed * 1103515245u + 12345u;
+        r[i] = (seed >> 8) % 10000 / 10000.0;
+      }
+      /* From above the grid to below it, in the grid's own space. */
+      zr_vec3 from = zr_v3(11 * r[0], 4, 11 * r[1]);
+      zr_vec3 to = zr_v3(11 * r[2], -1 + r[4], 11 * r[3]);
+      if (o->transform) {
+        from = zr__xform_point(o->transform->m, from);
+        to = zr__xform_point(o->transform->m, to);
+      }
+      zr_ray ray = {from, zr_v3_sub(to, from)};
+      zr_hit hit, want[ZR_MAX_CROSSINGS];
+      bool got = zr__bvh_nearest(s->bvh, &ray, 0.0, INFINITY, &hit);
+      int n = zr__intersect(o, &ray, 0.0, INFINITY, want);
+      assert_int_equal(got, n > 0);
+      if (!got)
+        continue;
+      found++;
+      assert_true(hit.t == want[0].t);
+      assert_ptr_equal(hit.object, want[0].object);
+      assert_true(hit.u == want[0].u && hit.v == want[0].v);
+      assert_memory_equal(&hit.normal, &want[0].normal, sizeof hit.normal);
+    }
+    assert_true(found > 200);
+  }
+}
+
 static void test_mesh_bad_lists(void **state) {
   fixture *f = *state;
   bad(f, "mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0> }\n"
@@ -360,6 +447,8 @@ int main(void) {
       cmocka_unit_test_setup_teardown(test_mesh_instances_share, setup,
                                       teardown),
       cmocka_unit_test_setup_teardown(test_mesh_bad_lists, setup, teardown),
+      cmocka_unit_test_setup_teardown(test_mesh_nearest_normal_as_intersect,
+                                      setup, teardown),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

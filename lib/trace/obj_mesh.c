@@ -654,15 +654,24 @@ static int mesh_crossing_hit(const zr_object *o, const zr_mesh_crossing *c,
 }
 
 int zr__mesh_nearest_t(const zr_object *o, const zr_ray *ray, double tmin,
-                       double tmax, zr_hit *hit) {
+                       double tmax, zr_hit *hit, zr_vec3 *normal) {
   /* As zr__intersect_t takes a mesh (intersect.c): in the mesh's own
-     space, the first crossing, no normal. */
+     space, the first crossing, no normal in the hit. */
   zr_vec3 org, dir;
   mesh_ray(o, ray, &org, &dir);
   zr_mesh_crossing c;
   if (!zr__mesh_nearest(o->u.mesh.data, org, dir, tmin, tmax, &c))
     return 0;
+  *normal = c.normal;
   return mesh_crossing_hit(o, &c, hit);
+}
+
+zr_vec3 zr__mesh_world_normal(const zr_object *o, zr_vec3 n) {
+  /* intersect.c's crossings() with normals, step for step. */
+  if (o->transform)
+    n = zr__xform_normal(o->transform->inv, n);
+  n = zr_v3_norm(n);
+  return o->inverse ? zr_v3_neg(n) : n;
 }
 
 /* The first crossing the hierarchy meets, in its left-to-right order. */

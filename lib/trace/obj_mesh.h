@@ -52,11 +52,20 @@ int zr__mesh_crossings(const struct zr_mesh *mesh, zr_vec3 org, zr_vec3 dir,
 int zr__mesh_nearest(const struct zr_mesh *mesh, zr_vec3 org, zr_vec3 dir,
                      double tmin, double tmax, zr_mesh_crossing *out);
 /* The same for a mesh object without clipped_by, as zr__intersect_t's
-   first hit (trace/intersect.h's zr_ray and zr_hit). */
+   first hit (trace/intersect.h's zr_ray and zr_hit), and the crossing's
+   normal in the mesh's own space, of any length, in *normal (not NULL):
+   the search for the nearest surface makes the winner's world normal
+   from it (zr__mesh_world_normal) rather than search the mesh again. */
 struct zr_ray;
 struct zr_hit;
 int zr__mesh_nearest_t(const zr_object *o, const struct zr_ray *ray,
-                       double tmin, double tmax, struct zr_hit *hit);
+                       double tmin, double tmax, struct zr_hit *hit,
+                       zr_vec3 *normal);
+
+/* The world normal zr__intersect gives a crossing of mesh object o
+   whose normal in the mesh's space is n: through o's transform,
+   normalized, turned for inverse. */
+zr_vec3 zr__mesh_world_normal(const zr_object *o, zr_vec3 n);
 
 /* Any one crossing of a mesh object without clipped_by with
    tmin < t < tmax, the first its hierarchy meets (not the nearest), as
