@@ -239,6 +239,7 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
    at the vectors in the file. */
 %token <str> T_TRIANGLE_RUN "triangle with its corners"
 %token <str> T_SPHERE_RUN "sphere with its centre and radius"
+%token <str> T_SMOOTH_TRIANGLE_RUN "smooth_triangle with its corners"
 %token <decl> T_DECL_NAME "identifier"
 %token <value> T_FLOAT_ID "float identifier"
 %token <value> T_VECTOR_ID "vector identifier"
@@ -1501,6 +1502,8 @@ object:
       TRY(zr__sdl_triangle_run(p, $1, &@1, $$->u.triangle.p));
       zr__sdl_degenerate_triangle(p, $$->u.triangle.p, &@1);
     }
+| T_SMOOTH_TRIANGLE_RUN
+    { TRY($$ = zr__sdl_smooth_triangle_run(p, $1, &@1)); }
 | union_body '}'
 | light_group_body '}'
     { TRY(zr__sdl_light_group_done(p, $1.object, $1.global, &@1)); $$ = $1.object; }
@@ -2068,6 +2071,8 @@ mesh_head:
   T_MESH '{'           { TRY($$ = zr__sdl_mesh_new(p, false, &@1)); }
 | mesh_head T_TRIANGLE_RUN
     { TRY(zr__sdl_mesh_triangle_run(p, $1, $2, &@2)); $$ = $1; }
+| mesh_head T_SMOOTH_TRIANGLE_RUN
+    { TRY(zr__sdl_mesh_smooth_triangle_run(p, $1, $2, &@2)); $$ = $1; }
 | mesh_head T_TRIANGLE '{' expr comma expr comma expr mesh_texture '}'
     {
       zr_sdl_expr v[3] = {$4, $6, $8};
@@ -4098,6 +4103,7 @@ int zr__pov_lex(ZR__POV_STYPE *lval, zr_sdl_loc *lloc, zr_sdl_parser *p) {
   case T_IDENTIFIER:
   case T_UNSUPPORTED:
   case T_TRIANGLE_RUN:
+  case T_SMOOTH_TRIANGLE_RUN:
   case T_SPHERE_RUN:
     lval->str = v.str;
     break;

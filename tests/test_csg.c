@@ -584,11 +584,73 @@ static void test_csg_child_tree_skips_work_only(void **state) {
   unboxed_free(plain);
 }
 
+/* An intersection asks each child only where the ray is in the other
+   children's boxes (lib/trace/csg.c, narrow_children): the corpus'
+   complexity.pov tile - a tall cylinder minus another, cut by a box,
+   turned and moved, and a torus cut by a box - gives the same crossings,
+   to the bit, as the copy without boxes, for rays from all over, rays
+   along the box's faces and rays that start on them. */
+static void test_csg_narrowed_children_skip_work_only(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(
+      f, "#declare Q = union {\n"
+         "  intersection {\n"
+         "    difference { cylinder { <0, -500.1, 0>, <0, 3.1, 0>, 0.54 }\n"
+         "                 cylinder { <0, -500.2, 0>, <0, 3.2, 0>, 0.46 } }\n"
+         "    box { 0, <1, 3, 1> } }\n"
+         "  intersection { torus { 0.5, 0.04 } box { 0, <1, 3, 1> }\n"
+         "                 translate y*3 } }\n"
+         "object { Q rotate y*90 translate z*1 }\n"
+         "object { Q rotate y*180 translate <1, 0, 1> }\n");
+  assert_int_equal(s->n_primitives, 4);
+  unsigned seed = 4242u;
+#define RND() rnd(&seed)
+  int crossings = 0;
+  for (size_t p = 0; p < s->n_primitives; p++) {
+    const zr_object *o = s->primitives[p];
+    assert_int_equal(o->kind, ZR_OBJ_INTERSECTION);
+    assert_non_null(o->u.csg.boxes);
+    zr_object *plain = unboxed(o);
+    for (int k = 0; k < 6000; k++) {
+      zr_vec3 org = zr_v3(4 * RND() - 1.5, 8 * RND() - 2, 4 * RND() - 1.5);
+      zr_vec3 at = zr_v3(1.2 * RND() - 0.1, 3.2 * RND() - 0.1,
+                         1.2 * RND() - 0.1);
+      if (k % 3 == 1) /* from a face of the tile's box */
+        org = zr_v3(k % 2 ? 0.0 : 1.0, 3 * RND(), RND());
+      zr_vec3 dir = zr_v3_sub(at, org);
+      if (k % 5 == 2) /* along a face: one direction component 0 */
+        dir.y = 0.0;
+      if (k % 7 == 3)
+        dir.x = 0.0;
+      zr_ray r = {org, dir};
+      zr_hit a[ZR_MAX_CROSSINGS], b[ZR_MAX_CROSSINGS];
+      int na = zr__intersect(o, &r, 0.0, INFINITY, a);
+      int nb = zr__intersect(plain, &r, 0.0, INFINITY, b);
+      assert_int_equal(na, nb);
+      for (int i = 0; i < na; i++) {
+        assert_true(a[i].t == b[i].t);
+        assert_ptr_equal(a[i].object, b[i].object);
+      }
+      /* A shadow ray's interval, ending short of the far side. */
+      na = zr__intersect_t(o, &r, 0.0, 0.9, a);
+      nb = zr__intersect_t(plain, &r, 0.0, 0.9, b);
+      assert_int_equal(na, nb);
+      for (int i = 0; i < na; i++)
+        assert_true(a[i].t == b[i].t);
+      crossings += na;
+    }
+    unboxed_free(plain);
+  }
+#undef RND
+  assert_true(crossings > 1000);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       TEST(test_csg_difference_cuts_with_inverted_normal),
       TEST(test_csg_child_boxes_skip_work_only),
       TEST(test_csg_child_tree_skips_work_only),
+      TEST(test_csg_narrowed_children_skip_work_only),
       TEST(test_csg_intersection_is_a_lens),
       TEST(test_csg_merge_drops_inner_surfaces),
       TEST(test_csg_inverse_follows_de_morgan),

@@ -322,6 +322,52 @@ static void test_numlist_triangle_run_token(void **state) {
   zr__sdl_file_free(&file);
 }
 
+/* "smooth_triangle { six plain vectors }" becomes one run token, at the
+   keyword's place; a texture, a seventh vector (uv_vectors), five
+   vectors, a trailing comma or an expression keep the tokens. */
+static void test_numlist_smooth_triangle_run_token(void **state) {
+  (void)state;
+  zr_sdl_file file;
+  lex_text(&file,
+           "mesh { smooth_triangle { <0,0,0>, <0,0,1>, <1,0,0>,\n"
+           " <0,0,1>, <0,1,0>, <0,0,1> }\n"
+           " smooth_triangle { <0,0,0>,<0,0,1>,<1,0,0>,<0,0,1>,<0,1,0>,"
+           "<0,0,1> texture { T } }\n"
+           " smooth_triangle { <0,0,0>,<0,0,1>,<1,0,0>,<0,0,1>,<0,1,0>,"
+           "<0,0,1>, }\n"
+           " smooth_triangle { <0,0,0>,<0,0,1>,<1,0,0>,<0,0,1>,<0,1,0> }\n"
+           " smooth_triangle { <0,0,0>,<0,0,1>,<1,0,0>,<0,0,1>,<0,1,0>,"
+           "<0,0,1> uv_vectors <0,0>,<1,0>,<0,1> }\n"
+           " smooth_triangle { <0,0,0>,<0,0,1>,<1,0,0>,<0,0,1>,<0,1,0>,"
+           "<0,0,1>*2 } }\n"
+           "smooth_triangle{<0,0,0><0,0,1><1,0,0><0,0,1><0,1,0><0,0,1>}\n");
+  const zr_sdl_token *t = file.tokens;
+  assert_int_equal(t[0].kind, T_MESH);
+  assert_int_equal(t[2].kind, T_SMOOTH_TRIANGLE_RUN);
+  assert_int_equal(t[2].line, 1);
+  assert_int_equal(t[2].column, 8);
+  assert_int_equal(t[2].length, 15);
+  /* The scanner goes on after the '}', in its place. */
+  assert_int_equal(t[3].kind, T_SMOOTH_TRIANGLE);
+  assert_int_equal(t[3].line, 3);
+  assert_int_equal(t[3].column, 2);
+  assert_int_equal(t[4].kind, '{');
+  assert_int_equal(t[5].kind, '<');
+  /* The five others in the mesh are whole; the last, alone, is a run. */
+  size_t runs = 0, whole = 0;
+  for (size_t i = 3; i < file.n_tokens; i++) {
+    runs += t[i].kind == T_SMOOTH_TRIANGLE_RUN;
+    whole += t[i].kind == T_SMOOTH_TRIANGLE;
+  }
+  assert_int_equal(runs, 1);
+  assert_int_equal(whole, 5);
+  assert_int_equal(t[file.n_tokens - 2].kind, T_SMOOTH_TRIANGLE_RUN);
+  assert_int_equal(t[file.n_tokens - 2].line, 8);
+  assert_int_equal(t[file.n_tokens - 2].column, 1);
+  assert_int_equal(t[file.n_tokens - 1].kind, 0);
+  zr__sdl_file_free(&file);
+}
+
 /* "sphere { <x, y, z>, r" followed by a keyword or '}' becomes one run
    token at the keyword's place; anything that an expression or a blob
    could go on with keeps the tokens. */
@@ -458,6 +504,54 @@ static void test_numlist_triangle_run_same_as_grammar(void **state) {
       "      | ^~~~~\n");
 }
 
+/* Smooth triangles read as runs make the same mesh, corners and
+   normals bit for bit, as the grammar's expressions (+0 defeats the
+   run), in a mesh and alone, and their errors keep their places. */
+static void test_numlist_smooth_triangle_run_same_as_grammar(void **state) {
+  fixture *f = *state;
+  static const char *const fmt[2] = {
+      "mesh { smooth_triangle { <%d.1, -0.3e-2, %d>, <0.1, 0.2, 0.9>,\n"
+      " <1.7, %d, - 2>, <-0.25, 1e-1, .5>, <0.1, 0.2, %d>, <0,0,1> }\n"
+      "  triangle { <3,3,3>, <4,3,3>, <3,4,3> } }\n"
+      "smooth_triangle { <%d, 0.1, 0.2>, <0,1,0>, <1, 2, 3>, <1,0,0>,\n"
+      " <4, 5, 6>, <0.6, 0.8, 0> }\n",
+      "mesh { smooth_triangle { <%d.1, -0.3e-2, %d>, <0.1, 0.2, 0.9>,\n"
+      " <1.7, %d, - 2>, <-0.25, 1e-1, .5>, <0.1, 0.2, %d>, <0,0,1> + 0 }\n"
+      "  triangle { <3,3,3>, <4,3,3>, <3,4,3> } }\n"
+      "smooth_triangle { <%d, 0.1, 0.2>, <0,1,0>, <1, 2, 3>, <1,0,0>,\n"
+      " <4, 5, 6>, <0.6, 0.8, 0> + 0 }\n"};
+  zr_vec3 vertices[2][6], normals[2][6], corners[2][3], lone[2][3];
+  for (int k = 0; k < 2; k++) {
+    char text[600];
+    snprintf(text, sizeof text, fmt[k], 5, 6, 7, 8, 9);
+    zr_scene *s = good(f, text);
+    const struct zr_mesh *m = mesh_of(s, 0);
+    assert_int_equal(m->n_faces, 2);
+    assert_int_equal(m->n_vertices, 6);
+    assert_int_equal(m->n_normals, 6);
+    memcpy(vertices[k], m->vertices, sizeof vertices[k]);
+    memcpy(normals[k], m->normals, sizeof normals[k]);
+    const struct zr_mesh *one = mesh_of(s, 1);
+    assert_int_equal(one->n_faces, 1);
+    assert_int_equal(one->n_normals, 3);
+    memcpy(corners[k], one->vertices, sizeof corners[k]);
+    memcpy(lone[k], one->normals, sizeof lone[k]);
+  }
+  assert_memory_equal(vertices[0], vertices[1], sizeof vertices[0]);
+  assert_memory_equal(normals[0], normals[1], sizeof normals[0]);
+  assert_memory_equal(corners[0], corners[1], sizeof corners[0]);
+  assert_memory_equal(lone[0], lone[1], sizeof lone[0]);
+  assert_true(vertices[0][0].x == 5.1 && vertices[0][1].y == 7.0);
+  assert_true(corners[0][0].x == 9.0 && corners[0][2].z == 6.0);
+  bad(f, "smooth_triangle { <0,0,0>, <0,0,1>, <1,0,0>, <0,0,1>,\n"
+         " <0,1,0>, <0,0,1> }\n"
+         "bogus\n",
+      ZR_EUNDEFINED, "undefined identifier 'bogus'",
+      "t.pov:3:1: error: undefined identifier 'bogus'\n"
+      "    3 | bogus\n"
+      "      | ^~~~~\n");
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_numlist_numbers_like_strtod),
@@ -465,6 +559,9 @@ int main(void) {
       cmocka_unit_test(test_numlist_lexer_keeps_one_token),
       cmocka_unit_test(test_numlist_triangle_run_token),
       cmocka_unit_test(test_numlist_sphere_run_token),
+      cmocka_unit_test(test_numlist_smooth_triangle_run_token),
+      cmocka_unit_test_setup_teardown(
+          test_numlist_smooth_triangle_run_same_as_grammar, setup, teardown),
       cmocka_unit_test_setup_teardown(
           test_numlist_sphere_run_same_as_grammar, setup, teardown),
       cmocka_unit_test_setup_teardown(

@@ -226,14 +226,14 @@ bool zr__sdl_mesh_triangle(zr_sdl_parser *p, zr_object *o,
                       uvs ? uv : NULL, texture, &vertex_locs[0]);
 }
 
-bool zr__sdl_triangle_run(zr_sdl_parser *p, const char *run,
-                          const zr_sdl_loc *loc, zr_vec3 out[3]) {
-  /* The lexer found exactly three items here; the same reader takes
-     them again (numlist.c). */
+/* The n vectors of a run token: the lexer found exactly n items
+   there; the same reader takes them again (numlist.c). */
+static bool run_vectors(zr_sdl_parser *p, const char *run,
+                        const zr_sdl_loc *loc, int n, zr_vec3 *out) {
   const zr_sdl_file *f = &p->files[loc->file];
   zr_sdl_numreader r = {f->bytes, (size_t)(run - f->bytes), f->size,
                         loc->line, loc->column, false, false};
-  for (int k = 0; k < 3; k++) {
+  for (int k = 0; k < n; k++) {
     double v[3];
     int dim, line, column;
     if (!zr__sdl_numlist_item(&r, v, &dim, &line, &column)) {
@@ -246,11 +246,41 @@ bool zr__sdl_triangle_run(zr_sdl_parser *p, const char *run,
   return true;
 }
 
+bool zr__sdl_triangle_run(zr_sdl_parser *p, const char *run,
+                          const zr_sdl_loc *loc, zr_vec3 out[3]) {
+  return run_vectors(p, run, loc, 3, out);
+}
+
 bool zr__sdl_mesh_triangle_run(zr_sdl_parser *p, zr_object *o,
                                const char *run, const zr_sdl_loc *loc) {
   zr_vec3 v[3];
   return zr__sdl_triangle_run(p, run, loc, v) &&
          add_triangle(p, &build_of(o)->mesh, v, NULL, NULL, NULL, loc);
+}
+
+/* A smooth_triangle's run: corners and normals alternate. */
+static bool add_smooth_run(zr_sdl_parser *p, zr_object *o, const char *run,
+                           const zr_sdl_loc *loc) {
+  zr_vec3 e[6];
+  if (!run_vectors(p, run, loc, 6, e))
+    return false;
+  zr_vec3 v[3] = {e[0], e[2], e[4]}, n[3] = {e[1], e[3], e[5]};
+  return add_triangle(p, &build_of(o)->mesh, v, n, NULL, NULL, loc);
+}
+
+bool zr__sdl_mesh_smooth_triangle_run(zr_sdl_parser *p, zr_object *o,
+                                      const char *run,
+                                      const zr_sdl_loc *loc) {
+  return add_smooth_run(p, o, run, loc);
+}
+
+zr_object *zr__sdl_smooth_triangle_run(zr_sdl_parser *p, const char *run,
+                                       const zr_sdl_loc *loc) {
+  zr_object *o = zr__sdl_mesh_new(p, false, loc);
+  if (!o || !add_smooth_run(p, o, run, loc) ||
+      !zr__sdl_mesh_done(p, o, loc))
+    return NULL;
+  return o;
 }
 
 /* Adds a face of corners v, with corner normals n and uv coordinates

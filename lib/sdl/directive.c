@@ -782,10 +782,10 @@ static void track(zr_sdl_parser *p, int kind) {
   zr_sdl_autoend *a = &p->autoend;
   /* The runs of tokens.c: a sphere's stands for "sphere { centre,
      radius" and leaves its block open, a triangle's for the whole
-     "triangle { ... }". */
+     "triangle { ... }" (or "smooth_triangle { ... }"). */
   if (kind == T_SPHERE_RUN)
     kind = '{';
-  if (kind == T_TRIANGLE_RUN) {
+  if (kind == T_TRIANGLE_RUN || kind == T_SMOOTH_TRIANGLE_RUN) {
     a->operand = true;
     a->last = '}';
     return;

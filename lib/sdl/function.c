@@ -150,6 +150,7 @@ static bool is_char(const zr_sdl_token *t, int ch) { return t->kind == ch; }
 static const char *word_of(const zr_sdl_token *t) {
   if (t->kind < 256 || t->kind == T_NUMBER || t->kind == T_STRING ||
       t->kind == T_IDENTIFIER || t->kind == T_TRIANGLE_RUN ||
+      t->kind == T_SMOOTH_TRIANGLE_RUN ||
       t->kind == T_SPHERE_RUN || t->kind == ZR_SDL_NUMBER_LIST)
     return NULL; /* runs of plain items point into the file's bytes */
   return t->v.str; /* NULL for "<=" and the like */
@@ -178,6 +179,8 @@ static void describe(const zr_sdl_token *t, char *buf, size_t size) {
     snprintf(buf, size, "'%s'", t->v.str);
   else if (t->kind == T_TRIANGLE_RUN)
     snprintf(buf, size, "'triangle'");
+  else if (t->kind == T_SMOOTH_TRIANGLE_RUN)
+    snprintf(buf, size, "'smooth_triangle'");
   else if (t->kind == T_SPHERE_RUN)
     snprintf(buf, size, "'sphere'");
   else if (t->kind == ZR_SDL_NUMBER_LIST)

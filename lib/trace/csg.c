@@ -40,6 +40,7 @@
    dropped (a ray through over a hundred child surfaces at once). */
 #define CSG_MAX_GATHER 256
 
+
 typedef struct gather {
   const zr_ray *ray;
   double tmax;
@@ -48,6 +49,10 @@ typedef struct gather {
      wants (1 or ZR_MAX_CROSSINGS): see shrink(). */
   const zr_object *top;
   int wanted;
+  /* For slack_span: 1 / ray->dir, and 1 + the origin's largest
+     coordinate. */
+  zr_vec3 inv_dir;
+  double origin_size;
   zr_hit hit[CSG_MAX_GATHER];
   int n;
 } gather;
@@ -346,12 +351,118 @@ static void shrink(gather *g, int start) {
     g->tmax = best[n - 1];
 }
 
+/*
+ * An intersection keeps a crossing only where every other child holds
+ * it, so never outside another child's box: a child's crossings that
+ * matter lie where the ray is in all the other children's boxes, and it
+ * is asked for those alone.  The corpus' complexity.pov (a tall
+ * cylinder minus another, cut by a box, in each of 800 tiles) passed
+ * half of its 20 million crossings to the inside tests only for the
+ * box's inside test to drop them.  Each span is taken of the box grown
+ * by a hair and then widened by another, more than the rounding of
+ * point_at() and of the slab divisions, so that a crossing that the
+ * inside tests keep is always in the interval: the crossings kept are
+ * the same, only fewer are tried.
+ */
+#define NARROW_MAX 8
+
+typedef struct narrowed {
+  double lo[NARROW_MAX], hi[NARROW_MAX];
+} narrowed;
+
+/* One axis of slack_span: narrows (*a, *c) to the slab [l, h] of the
+   ray o + t d (inv = 1 / d); false when a ray parallel to it is
+   outside. */
+static inline bool slack_slab(double o, double d, double inv, double l,
+                              double h, double *a, double *c) {
+  if (d == 0.0)
+    return o >= l && o <= h;
+  double t0 = (l - o) * inv, t1 = (h - o) * inv;
+  if (t0 > t1) {
+    double tt = t0;
+    t0 = t1;
+    t1 = tt;
+  }
+  *a = t0 > *a ? t0 : *a;
+  *c = t1 < *c ? t1 : *c;
+  return true;
+}
+
+/* The span of the ray in box b grown by a hair, widened by another;
+   (-inf, inf) for a child with no box, and an empty one (lo > hi) when
+   it misses. */
+static void slack_span(const gather *g, const struct zr_csg_box *b,
+                       double *lo, double *hi) {
+  *lo = -INFINITY;
+  *hi = INFINITY;
+  if (!b->bounded)
+    return;
+  double big = g->origin_size +
+               zr_v3_max_comp(zr_v3_max(zr_v3_neg(b->lo), b->hi));
+  double pad = 1e-9 * big;
+  const zr_vec3 o = g->ray->origin, d = g->ray->dir, inv = g->inv_dir;
+  double a = -INFINITY, c = INFINITY;
+  if (!(big < INFINITY) ||
+      !slack_slab(o.x, d.x, inv.x, b->lo.x - pad, b->hi.x + pad, &a, &c) ||
+      !slack_slab(o.y, d.y, inv.y, b->lo.y - pad, b->hi.y + pad, &a, &c) ||
+      !slack_slab(o.z, d.z, inv.z, b->lo.z - pad, b->hi.z + pad, &a, &c)) {
+    if (big < INFINITY) {
+      *lo = INFINITY;
+      *hi = -INFINITY;
+    }
+    return;
+  }
+  if (!(a <= c)) {
+    *lo = INFINITY;
+    *hi = -INFINITY;
+    return;
+  }
+  double m = 1e-9 * (fabs(a) + fabs(c));
+  *lo = a - m;
+  *hi = c + m;
+}
+
+/* For each child i of intersection o, the interval (tmin, tmax)
+   narrowed to the other children's spans; false when o has too many
+   children for this (or none with a box). */
+static bool narrow_children(const gather *g, const zr_object *o,
+                            double tmin, narrowed *nw) {
+  size_t n = o->u.csg.n_children;
+  if (o->kind != ZR_OBJ_INTERSECTION || !o->u.csg.boxes || n > NARROW_MAX ||
+      n < 2)
+    return false;
+  double lo[NARROW_MAX], hi[NARROW_MAX];
+  bool any = false;
+  for (size_t i = 0; i < n; i++) {
+    slack_span(g, &o->u.csg.boxes[i], &lo[i], &hi[i]);
+    any = any || o->u.csg.boxes[i].bounded;
+  }
+  if (!any)
+    return false;
+  for (size_t i = 0; i < n; i++) {
+    double a = tmin, b = g->tmax;
+    for (size_t j = 0; j < n; j++) {
+      if (j == i)
+        continue;
+      a = lo[j] > a ? lo[j] : a;
+      b = hi[j] < b ? hi[j] : b;
+    }
+    /* The child's own crossings lie in its own box, as the test of
+       each child's box below assumes. */
+    nw->lo[i] = lo[i] > a ? lo[i] : a;
+    nw->hi[i] = hi[i] < b ? hi[i] : b;
+  }
+  return true;
+}
+
 static void gather_node(gather *g, const zr_object *o, double tmin) {
   int start = g->n;
   if (!zr__is_csg(o->kind)) {
     gather_leaf(g, o, tmin);
     return; /* a leaf's own clip is applied by zr__intersect */
   }
+  narrowed nw;
+  bool narrow = !o->u.csg.tree && narrow_children(g, o, tmin, &nw);
   uint32_t chosen[QUERY_MAX];
   int n_chosen = -1;
   if (o->u.csg.tree)
@@ -359,11 +470,21 @@ static void gather_node(gather *g, const zr_object *o, double tmin) {
   size_t n_loop = n_chosen >= 0 ? (size_t)n_chosen : o->u.csg.n_children;
   for (size_t c = 0; c < n_loop; c++) {
     size_t i = n_chosen >= 0 ? chosen[c] : c;
-    if (o->u.csg.boxes &&
-        !ray_meets(&o->u.csg.boxes[i], g->ray, tmin, g->tmax))
+    if (narrow ? !(nw.lo[i] < nw.hi[i])
+               : o->u.csg.boxes &&
+                     !ray_meets(&o->u.csg.boxes[i], g->ray, tmin, g->tmax))
       continue;
     int first = g->n;
-    gather_node(g, o->u.csg.children[i], tmin);
+    if (narrow) {
+      /* Only this node's children see the narrowed end: no shrink()
+         happens below the top node, and an intersection has none. */
+      double tmax = g->tmax;
+      g->tmax = nw.hi[i];
+      gather_node(g, o->u.csg.children[i], nw.lo[i]);
+      g->tmax = tmax;
+    } else {
+      gather_node(g, o->u.csg.children[i], tmin);
+    }
     /* Compact the child's crossings to those on this node's surface. */
     int kept = first;
     for (int k = first; k < g->n; k++)
@@ -394,6 +515,9 @@ int zr__csg_crossings(const zr_object *object, const zr_ray *ray,
   g.wanted = wanted < 1 ? 1 : wanted > ZR_MAX_CROSSINGS ? ZR_MAX_CROSSINGS
                                                         : wanted;
   g.n = 0;
+  g.inv_dir = zr_v3(1.0 / ray->dir.x, 1.0 / ray->dir.y, 1.0 / ray->dir.z);
+  g.origin_size = 1.0 + zr_v3_max_comp(zr_v3_max(zr_v3_neg(ray->origin),
+                                                  ray->origin));
   gather_node(&g, object, tmin);
   /* The nearest ZR_MAX_CROSSINGS, sorted, by selection: lists are
      short and only two are wanted.  Of crossings at the same distance
