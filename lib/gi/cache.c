@@ -123,14 +123,19 @@ static int32_t new_node(zr_gi_cache *c, int d, zr_vec3 centre, double h) {
     if (!v)
       return -1;
     c->nodes[d] = v;
+    zr__gi_cube *w = realloc(c->cubes[d], cap * sizeof *w);
+    if (!w)
+      return -1;
+    c->cubes[d] = w;
     c->cap_nodes[d] = cap;
   }
   zr__gi_node *n = &c->nodes[d][c->n_nodes[d]];
-  n->c = centre;
-  n->h = h;
-  n->lo = zr_v3(INFINITY, INFINITY, INFINITY);
-  n->hi = zr_v3(-INFINITY, -INFINITY, -INFINITY);
-  n->r_max = 0.0;
+  c->cubes[d][c->n_nodes[d]] = (zr__gi_cube){centre, h};
+  for (int a = 0; a < 3; a++) {
+    n->lo[a] = INFINITY;
+    n->hi[a] = -INFINITY;
+  }
+  n->r_max = 0.0f;
   for (int k = 0; k < 8; k++)
     n->child[k] = -1;
   n->first = -1;
@@ -160,7 +165,7 @@ void zr__gi_cache_extent(zr_gi_cache *c) {
 static bool grow_root(zr_gi_cache *c, int d, zr_vec3 q) {
   if (!(isfinite(q.x) && isfinite(q.y) && isfinite(q.z)))
     return false;
-  zr__gi_node old = c->nodes[d][0];
+  zr__gi_cube old = c->cubes[d][0];
   if (!isfinite(2.0 * old.h))
     return false;
   zr_vec3 centre = zr_v3(old.c.x + (q.x > old.c.x ? old.h : -old.h),
@@ -169,10 +174,9 @@ static bool grow_root(zr_gi_cache *c, int d, zr_vec3 q) {
   int32_t moved = new_node(c, d, old.c, old.h);
   if (moved < 0)
     return false;
-  c->nodes[d][moved] = old;
+  c->nodes[d][moved] = c->nodes[d][0];
   zr__gi_node *root = &c->nodes[d][0];
-  root->c = centre;
-  root->h = 2.0 * old.h;
+  c->cubes[d][0] = (zr__gi_cube){centre, 2.0 * old.h};
   root->first = -1; /* lo, hi and r_max stay the old root's */
   for (int k = 0; k < 8; k++)
     root->child[k] = -1;
@@ -182,13 +186,25 @@ static bool grow_root(zr_gi_cache *c, int d, zr_vec3 q) {
   return true;
 }
 
+/* v as a float no greater, and no less (a node's box only ever grows
+   by the rounding: a lookup may test a record more, never one less). */
+static float float_down(double v) {
+  float f = (float)v;
+  return (double)f > v ? nextafterf(f, -INFINITY) : f;
+}
+static float float_up(double v) {
+  float f = (float)v;
+  return (double)f < v ? nextafterf(f, INFINITY) : f;
+}
+
 /* Widens node n's box and radius to hold record r. */
 static void node_hold(zr__gi_node *n, const zr__gi_record *r) {
-  n->lo = zr_v3(fmin(n->lo.x, r->p.x), fmin(n->lo.y, r->p.y),
-                fmin(n->lo.z, r->p.z));
-  n->hi = zr_v3(fmax(n->hi.x, r->p.x), fmax(n->hi.y, r->p.y),
-                fmax(n->hi.z, r->p.z));
-  n->r_max = fmax(n->r_max, r->r);
+  double p[3] = {r->p.x, r->p.y, r->p.z};
+  for (int a = 0; a < 3; a++) {
+    n->lo[a] = fminf(n->lo[a], float_down(p[a]));
+    n->hi[a] = fmaxf(n->hi[a], float_up(p[a]));
+  }
+  n->r_max = fmaxf(n->r_max, float_up(r->r));
 }
 
 bool zr__gi_cache_add(zr_gi_cache *c, const zr__gi_record *r) {
@@ -200,19 +216,16 @@ bool zr__gi_cache_add(zr_gi_cache *c, const zr__gi_record *r) {
   size_t idx = c->records.n;
   if (!zr__gi_list_push(&c->records, r))
     return false;
-  if (c->next_cap < c->records.cap) {
-    int32_t *v = realloc(c->next, c->records.cap * sizeof *v);
-    if (v)
-      c->next = v;
-    zr__gi_near *w = v ? realloc(c->near, c->records.cap * sizeof *w) : NULL;
+  if (c->near_cap < c->records.cap) {
+    zr__gi_near *w = realloc(c->near, c->records.cap * sizeof *w);
     if (!w) {
       c->records.n--;
       return false;
     }
     c->near = w;
-    c->next_cap = c->records.cap;
+    c->near_cap = c->records.cap;
   }
-  c->near[idx] = (zr__gi_near){r->p, r->r};
+  c->near[idx] = (zr__gi_near){r->p, r->r, -1};
   /* Down to the smallest node whose half-size is still the record's
      farthest reach (error_bound R), while the point is inside it; every
      node on the way widens its box of points and radius to hold it
@@ -230,7 +243,7 @@ bool zr__gi_cache_add(zr_gi_cache *c, const zr__gi_record *r) {
      outdoor scene's far floor: 97% of the lookup time before). */
   bool inside = false;
   for (int grow = 0; grow <= MAX_GROW; grow++) {
-    const zr__gi_node *root = &c->nodes[d][0];
+    const zr__gi_cube *root = &c->cubes[d][0];
     inside = fabs(q.x - root->c.x) <= root->h &&
              fabs(q.y - root->c.y) <= root->h &&
              fabs(q.z - root->c.z) <= root->h;
@@ -240,14 +253,16 @@ bool zr__gi_cache_add(zr_gi_cache *c, const zr__gi_record *r) {
   for (int level = 0; inside && level < MAX_LEVEL; level++) {
     zr__gi_node *n = &c->nodes[d][at];
     node_hold(n, r);
-    double hc = 0.5 * n->h;
+    zr__gi_cube cube = c->cubes[d][at];
+    double hc = 0.5 * cube.h;
     if (hc < reach)
       break;
-    int k = (q.x > n->c.x) | ((q.y > n->c.y) << 1) | ((q.z > n->c.z) << 2);
+    int k = (q.x > cube.c.x) | ((q.y > cube.c.y) << 1) |
+            ((q.z > cube.c.z) << 2);
     if (n->child[k] < 0) {
-      zr_vec3 cc = zr_v3(n->c.x + (k & 1 ? hc : -hc),
-                         n->c.y + (k & 2 ? hc : -hc),
-                         n->c.z + (k & 4 ? hc : -hc));
+      zr_vec3 cc = zr_v3(cube.c.x + (k & 1 ? hc : -hc),
+                         cube.c.y + (k & 2 ? hc : -hc),
+                         cube.c.z + (k & 4 ? hc : -hc));
       int32_t child = new_node(c, d, cc, hc);
       if (child < 0)
         return false;
@@ -256,7 +271,7 @@ bool zr__gi_cache_add(zr_gi_cache *c, const zr__gi_record *r) {
     at = c->nodes[d][at].child[k];
   }
   node_hold(&c->nodes[d][at], r);
-  c->next[idx] = c->nodes[d][at].first;
+  c->near[idx].next = c->nodes[d][at].first;
   c->nodes[d][at].first = (int32_t)idx;
   return true;
 }
@@ -319,7 +334,7 @@ static void blend_tree(blend *b, const zr_gi_cache *c, int d, int32_t at) {
   /* The distance test on the compact copy first: a lookup rejects most
      of the records it meets (about 6 in 7 on sky_outdoor.pov), and a
      whole record is seven times the bytes. */
-  for (int32_t i = n->first; i >= 0; i = c->next[i]) {
+  for (int32_t i = n->first; i >= 0; i = c->near[i].next) {
     const zr__gi_near *q = &c->near[i];
     zr_vec3 dv = zr_v3_sub(b->p, q->p);
     double reach = b->a * q->r, dd = zr_v3_dot(dv, dv);
@@ -338,9 +353,9 @@ static void blend_tree(blend *b, const zr_gi_cache *c, int d, int32_t at) {
        radiosity2.pov's lookups visit 108 nodes and test 107 records
        each for 4.6 that pass; now 35 and 27. */
     double reach = b->a * m->r_max * (1.0 + 1e-9);
-    if (b->p.x >= m->lo.x - reach && b->p.x <= m->hi.x + reach &&
-        b->p.y >= m->lo.y - reach && b->p.y <= m->hi.y + reach &&
-        b->p.z >= m->lo.z - reach && b->p.z <= m->hi.z + reach)
+    if (b->p.x >= m->lo[0] - reach && b->p.x <= m->hi[0] + reach &&
+        b->p.y >= m->lo[1] - reach && b->p.y <= m->hi[1] + reach &&
+        b->p.z >= m->lo[2] - reach && b->p.z <= m->hi[2] + reach)
       blend_tree(b, c, d, ch);
   }
 }
@@ -778,10 +793,11 @@ ZR_API void zr_gi_cache_free(zr_gi_cache *c) {
   if (!c)
     return;
   zr__gi_list_free(&c->records);
-  free(c->next);
   free(c->near);
-  for (int d = 0; d < 20; d++)
+  for (int d = 0; d < 20; d++) {
     free(c->nodes[d]);
+    free(c->cubes[d]);
+  }
   free(c);
 }
 
