@@ -709,6 +709,32 @@ static void test_gi_octree_bounds(void **state) {
     assert_true(c->n_nodes[d] > 1);
     assert_true(node_holds(c, d, 0, &seen));
     assert_int_equal(seen, added[d]);
+    /* Every node's jump is the end of its chain of nodes with no record
+       and one child, whose boxes are all its own. */
+    size_t chained = 0;
+    for (size_t i = 0; i < c->n_nodes[d]; i++) {
+      int32_t at = (int32_t)i;
+      for (;;) {
+        const zr__gi_node *n = &c->nodes[d][at];
+        int32_t only = -1;
+        int children = 0;
+        for (int k = 0; k < 8; k++)
+          if (n->child[k] >= 0) {
+            only = n->child[k];
+            children++;
+          }
+        if (n->first >= 0 || children != 1)
+          break;
+        const zr__gi_node *m = &c->nodes[d][only];
+        assert_memory_equal(m->lo, n->lo, sizeof n->lo);
+        assert_memory_equal(m->hi, n->hi, sizeof n->hi);
+        assert_true(m->r_max == n->r_max);
+        at = only;
+      }
+      assert_int_equal(c->jumps[d][i], at);
+      chained += at != (int32_t)i;
+    }
+    assert_true(chained > 0);
   }
   zr_gi_cache_free(c);
 }

@@ -127,8 +127,13 @@ static int32_t new_node(zr_gi_cache *c, int d, zr_vec3 centre, double h) {
     if (!w)
       return -1;
     c->cubes[d] = w;
+    int32_t *j = realloc(c->jumps[d], cap * sizeof *j);
+    if (!j)
+      return -1;
+    c->jumps[d] = j;
     c->cap_nodes[d] = cap;
   }
+  c->jumps[d][c->n_nodes[d]] = (int32_t)c->n_nodes[d];
   zr__gi_node *n = &c->nodes[d][c->n_nodes[d]];
   c->cubes[d][c->n_nodes[d]] = (zr__gi_cube){centre, h};
   for (int a = 0; a < 3; a++) {
@@ -175,6 +180,9 @@ static bool grow_root(zr_gi_cache *c, int d, zr_vec3 q) {
   if (moved < 0)
     return false;
   c->nodes[d][moved] = c->nodes[d][0];
+  /* Its chain's end is where it was, unless the chain was the root
+     alone; the root's own is set by zr__gi_cache_add. */
+  c->jumps[d][moved] = c->jumps[d][0] == 0 ? moved : c->jumps[d][0];
   zr__gi_node *root = &c->nodes[d][0];
   c->cubes[d][0] = (zr__gi_cube){centre, 2.0 * old.h};
   root->first = -1; /* lo, hi and r_max stay the old root's */
@@ -205,6 +213,19 @@ static void node_hold(zr__gi_node *n, const zr__gi_record *r) {
     n->hi[a] = fmaxf(n->hi[a], float_up(p[a]));
   }
   n->r_max = fmaxf(n->r_max, float_up(r->r));
+}
+
+/* Node at's jump (gi.h), from its children's. */
+static void set_jump(zr_gi_cache *c, int d, int32_t at) {
+  const zr__gi_node *n = &c->nodes[d][at];
+  int32_t only = -1;
+  int children = 0;
+  for (int k = 0; k < 8; k++)
+    if (n->child[k] >= 0) {
+      only = n->child[k];
+      children++;
+    }
+  c->jumps[d][at] = n->first < 0 && children == 1 ? c->jumps[d][only] : at;
 }
 
 bool zr__gi_cache_add(zr_gi_cache *c, const zr__gi_record *r) {
@@ -250,7 +271,10 @@ bool zr__gi_cache_add(zr_gi_cache *c, const zr__gi_record *r) {
     if (inside || grow == MAX_GROW || !grow_root(c, d, q))
       break;
   }
+  int32_t path[MAX_LEVEL + 1];
+  int n_path = 0;
   for (int level = 0; inside && level < MAX_LEVEL; level++) {
+    path[n_path++] = at;
     zr__gi_node *n = &c->nodes[d][at];
     node_hold(n, r);
     zr__gi_cube cube = c->cubes[d][at];
@@ -273,6 +297,12 @@ bool zr__gi_cache_add(zr_gi_cache *c, const zr__gi_record *r) {
   node_hold(&c->nodes[d][at], r);
   c->near[idx].next = c->nodes[d][at].first;
   c->nodes[d][at].first = (int32_t)idx;
+  /* Only the chains through the nodes passed can have changed (and the
+     root's, when it grew). */
+  set_jump(c, d, at);
+  while (n_path > 0)
+    set_jump(c, d, path[--n_path]);
+  set_jump(c, d, 0);
   return true;
 }
 
@@ -356,7 +386,7 @@ static void blend_tree(blend *b, const zr_gi_cache *c, int d, int32_t at) {
     if (b->p.x >= m->lo[0] - reach && b->p.x <= m->hi[0] + reach &&
         b->p.y >= m->lo[1] - reach && b->p.y <= m->hi[1] + reach &&
         b->p.z >= m->lo[2] - reach && b->p.z <= m->hi[2] + reach)
-      blend_tree(b, c, d, ch);
+      blend_tree(b, c, d, c->jumps[d][ch]);
   }
 }
 
@@ -674,7 +704,7 @@ static bool cache_irradiance(const zr_indirect *self,
                  : REFLECTANCE_GROWTH;
   }
   if (d < 20 && c->n_nodes[d] > 0)
-    blend_tree(&b, c, d, 0);
+    blend_tree(&b, c, d, c->jumps[d][0]);
   if (sc)
     for (size_t i = 0; i < sc->local.n; i++)
       if (sc->local.v[i].depth == d)
@@ -797,6 +827,7 @@ ZR_API void zr_gi_cache_free(zr_gi_cache *c) {
   for (int d = 0; d < 20; d++) {
     free(c->nodes[d]);
     free(c->cubes[d]);
+    free(c->jumps[d]);
   }
   free(c);
 }

@@ -75,6 +75,13 @@ struct zr_gi_cache {
      0 of each. */
   zr__gi_node *nodes[20];
   zr__gi_cube *cubes[20];
+  /* Where a lookup entering a node may go at once: the node itself, or
+     the end of the chain below it of nodes with no record and one child
+     (whose boxes are the node's).  The root's size is the scene's, sky
+     sphere and far planes included; records sit at nodes of their own
+     reach, and radiosity2.pov's lookups visited 35 nodes, 31 of them
+     without records, most of them links of such chains. */
+  int32_t *jumps[20];
   size_t n_nodes[20], cap_nodes[20];
   zr_vec3 root_c;
   double root_h;
