@@ -195,12 +195,23 @@ static bool grow_root(zr_gi_cache *c, int d, zr_vec3 q) {
 }
 
 /* v as a float no greater, and no less (a node's box only ever grows
-   by the rounding: a lookup may test a record more, never one less). */
+   by the rounding: a lookup may test a record more, never one less).
+   Values beyond the floats' range go to the infinities, not through a
+   conversion C leaves undefined; a NaN stays one (fminf and fmaxf skip
+   it, as fmin and fmax did). */
 static float float_down(double v) {
+  if (v > FLT_MAX)
+    return FLT_MAX;
+  if (v < -FLT_MAX)
+    return -INFINITY;
   float f = (float)v;
   return (double)f > v ? nextafterf(f, -INFINITY) : f;
 }
 static float float_up(double v) {
+  if (v > FLT_MAX)
+    return INFINITY;
+  if (v < -FLT_MAX)
+    return -FLT_MAX;
   float f = (float)v;
   return (double)f < v ? nextafterf(f, INFINITY) : f;
 }
