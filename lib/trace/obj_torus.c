@@ -196,7 +196,8 @@ static void torus_uv(const zr_object *o, zr_vec3 p, double *u, double *v) {
 /* The operations the tracer calls through (lib/trace/shape.h). */
 const zr_shape_ops zr__shape_torus = {
     .name = "a torus",
-    .search_upto = torus_search,
+    .search = zr__torus_crossings,
+    .search_upto = torus_search, /* what intersect.c calls */
     .inside = zr__torus_inside,
     .bounds = torus_box,
     .uv = torus_uv,
