@@ -653,16 +653,24 @@ static bool node_holds(const zr_gi_cache *c, int d, int32_t at, size_t *seen) {
     if (n->child[k] < 0)
       continue;
     const zr__gi_node *m = &c->nodes[d][n->child[k]];
-    if (m->lo.x < n->lo.x || m->lo.y < n->lo.y || m->lo.z < n->lo.z ||
-        m->hi.x > n->hi.x || m->hi.y > n->hi.y || m->hi.z > n->hi.z ||
-        m->r_max > n->r_max || !node_holds(c, d, n->child[k], seen))
+    for (int a = 0; a < 3; a++)
+      if (m->lo[a] < n->lo[a] || m->hi[a] > n->hi[a])
+        return false;
+    if (m->r_max > n->r_max || !node_holds(c, d, n->child[k], seen))
       return false;
   }
-  for (int32_t i = n->first; i >= 0; i = c->next[i]) {
+  for (int32_t i = n->first; i >= 0; i = c->near[i].next) {
     const zr__gi_record *r = &c->records.v[i];
-    if (r->p.x < n->lo.x || r->p.y < n->lo.y || r->p.z < n->lo.z ||
-        r->p.x > n->hi.x || r->p.y > n->hi.y || r->p.z > n->hi.z ||
-        r->r > n->r_max)
+    /* The float box holds the double point: rounded outwards. */
+    double p[3] = {r->p.x, r->p.y, r->p.z};
+    for (int a = 0; a < 3; a++)
+      if (p[a] < n->lo[a] || p[a] > n->hi[a])
+        return false;
+    if (r->r > n->r_max)
+      return false;
+    /* The lookup's copy is the record's. */
+    if (memcmp(&c->near[i].p, &r->p, sizeof r->p) != 0 ||
+        c->near[i].r != r->r)
       return false;
     (*seen)++;
   }
@@ -701,6 +709,32 @@ static void test_gi_octree_bounds(void **state) {
     assert_true(c->n_nodes[d] > 1);
     assert_true(node_holds(c, d, 0, &seen));
     assert_int_equal(seen, added[d]);
+    /* Every node's jump is the end of its chain of nodes with no record
+       and one child, whose boxes are all its own. */
+    size_t chained = 0;
+    for (size_t i = 0; i < c->n_nodes[d]; i++) {
+      int32_t at = (int32_t)i;
+      for (;;) {
+        const zr__gi_node *n = &c->nodes[d][at];
+        int32_t only = -1;
+        int children = 0;
+        for (int k = 0; k < 8; k++)
+          if (n->child[k] >= 0) {
+            only = n->child[k];
+            children++;
+          }
+        if (n->first >= 0 || children != 1)
+          break;
+        const zr__gi_node *m = &c->nodes[d][only];
+        assert_memory_equal(m->lo, n->lo, sizeof n->lo);
+        assert_memory_equal(m->hi, n->hi, sizeof n->hi);
+        assert_true(m->r_max == n->r_max);
+        at = only;
+      }
+      assert_int_equal(c->jumps[d][i], at);
+      chained += at != (int32_t)i;
+    }
+    assert_true(chained > 0);
   }
   zr_gi_cache_free(c);
 }

@@ -108,6 +108,68 @@ static void test_shapes_roots_wide_interval(void **state) {
     assert_near(out[i], s[i], 1e-12);
 }
 
+/* A small generator of test numbers (no library rand: its sequence is
+   the C library's). */
+static double next_unit(uint64_t *state) {
+  *state = *state * 6364136223846793005u + 1442695040888963407u;
+  return (double)(*state >> 11) / 9007199254740992.0;
+}
+
+/* The root walk (zr__root_walk) gives zr__poly_roots's roots, bit for
+   bit and in order, for polynomials of every degree with roots inside,
+   outside and clustered; and passing over intervals changes none of the
+   roots after them. */
+static void test_shapes_roots_walk_same_bits(void **state) {
+  (void)state;
+  uint64_t seed = 7;
+  int compared = 0;
+  for (int trial = 0; trial < 3000; trial++) {
+    int degree = 1 + trial % ZR_POLY_MAX_DEGREE;
+    double r[ZR_POLY_MAX_DEGREE], c[ZR_POLY_MAX_DEGREE + 1];
+    for (int i = 0; i < degree; i++)
+      r[i] = 4.0 * next_unit(&seed) - 2.0;
+    if (trial % 3 == 0 && degree > 1)
+      r[1] = r[0] + 1e-7 * next_unit(&seed); /* a close pair */
+    from_roots(r, degree, c);
+    if (trial % 5 == 0)
+      c[0] += 0.5 * next_unit(&seed); /* complex pairs */
+    double lo = -1.5 + next_unit(&seed), hi = lo + 3.0 * next_unit(&seed);
+    double want[ZR_POLY_MAX_DEGREE], got[ZR_POLY_MAX_DEGREE];
+    int n = zr__poly_roots(c, degree, lo, hi, want);
+    zr__root_walk w;
+    zr__root_walk_start(&w, c, degree, lo, hi);
+    int k = 0;
+    double a, b;
+    while (zr__root_walk_next(&w, &a, &b)) {
+      assert_true(k < degree);
+      got[k] = zr__root_walk_root(&w);
+      assert_true(got[k] >= a && got[k] <= b);
+      k++;
+    }
+    assert_int_equal(k, n);
+    for (int i = 0; i < n; i++)
+      assert_memory_equal(&got[i], &want[i], sizeof got[i]);
+    /* Every second interval passed over: the others' roots unchanged. */
+    zr__root_walk_start(&w, c, degree, lo, hi);
+    for (int i = 0; zr__root_walk_next(&w, &a, &b); i++)
+      if (i % 2 == 1) {
+        double x = zr__root_walk_root(&w);
+        assert_memory_equal(&x, &want[i], sizeof x);
+      }
+    compared += n;
+  }
+  assert_true(compared > 4000); /* 4,421 roots */
+  /* Leading zeros and no interval: as zr__poly_roots. */
+  double lin[4] = {-1.0, 2.0, 0.0, 0.0}, a, b;
+  zr__root_walk w;
+  zr__root_walk_start(&w, lin, 3, 0.0, 1.0);
+  assert_true(zr__root_walk_next(&w, &a, &b));
+  assert_true(zr__root_walk_root(&w) == 0.5);
+  assert_false(zr__root_walk_next(&w, &a, &b));
+  zr__root_walk_start(&w, lin, 3, 1.0, 1.0);
+  assert_false(zr__root_walk_next(&w, &a, &b));
+}
+
 /* Torus crossings are roots of well-scaled quartics with simple roots:
    1e-9 covers their refinement, which stops within a few ulps. */
 #define TORUS_EPS 1e-9
@@ -160,6 +222,37 @@ static void test_shapes_torus_thin_and_transformed(void **state) {
   assert_near(h[0].t, 8.0 - 0.001, 1e-6);
   assert_vec(h[0].normal, 0, 0, -1, 1e-6);
   assert_true(zr__inside(o, zr_v3(0, -1, 3)));
+}
+
+/* The search for the nearest surface asks a torus for its first
+   crossing without a normal (zr__intersect_first), which the root walk
+   gives without refining the others: the same t, bit for bit, as the
+   first of all its crossings, over rays from every side, some starting
+   inside the tube or the hole, some with the interval cut short. */
+static void test_shapes_torus_first_same_bits(void **state) {
+  fixture *f = *state;
+  const zr_object *o =
+      only(f, "torus { 2, 0.5 rotate <20, 0, 10> translate <0.3, 0, 0> }\n");
+  uint64_t seed = 11;
+  int hits = 0;
+  for (int i = 0; i < 20000; i++) {
+    zr_vec3 org = zr_v3(6.0 * next_unit(&seed) - 3.0,
+                        2.0 * next_unit(&seed) - 1.0,
+                        6.0 * next_unit(&seed) - 3.0);
+    zr_vec3 dir = zr_v3(next_unit(&seed) - 0.5, 0.6 * next_unit(&seed) - 0.3,
+                        next_unit(&seed) - 0.5);
+    zr_ray ray = {org, dir};
+    double tmax = i % 4 == 0 ? 2.0 * next_unit(&seed) : INFINITY;
+    zr_hit all[ZR_MAX_CROSSINGS], first[ZR_MAX_CROSSINGS];
+    int n = zr__intersect(o, &ray, 1e-6, tmax, all);
+    int m = zr__intersect_first(o, &ray, 1e-6, tmax, false, first);
+    assert_int_equal(m > 0, n > 0);
+    if (n > 0) {
+      assert_memory_equal(&first[0].t, &all[0].t, sizeof all[0].t);
+      hits++;
+    }
+  }
+  assert_true(hits > 2000);
 }
 
 static void test_shapes_torus_bad_minor(void **state) {
@@ -880,8 +973,10 @@ int main(void) {
       cmocka_unit_test(test_shapes_roots_clustered_quartic),
       cmocka_unit_test(test_shapes_roots_multiplicity),
       cmocka_unit_test(test_shapes_roots_wide_interval),
+      cmocka_unit_test(test_shapes_roots_walk_same_bits),
       TEST(test_shapes_torus_crossings_and_normals),
       TEST(test_shapes_torus_thin_and_transformed),
+      TEST(test_shapes_torus_first_same_bits),
       TEST(test_shapes_torus_bad_minor),
       TEST(test_shapes_polygon_even_odd),
       TEST(test_shapes_polygon_tilted_and_open),

@@ -123,14 +123,24 @@ static int32_t new_node(zr_gi_cache *c, int d, zr_vec3 centre, double h) {
     if (!v)
       return -1;
     c->nodes[d] = v;
+    zr__gi_cube *w = realloc(c->cubes[d], cap * sizeof *w);
+    if (!w)
+      return -1;
+    c->cubes[d] = w;
+    int32_t *j = realloc(c->jumps[d], cap * sizeof *j);
+    if (!j)
+      return -1;
+    c->jumps[d] = j;
     c->cap_nodes[d] = cap;
   }
+  c->jumps[d][c->n_nodes[d]] = (int32_t)c->n_nodes[d];
   zr__gi_node *n = &c->nodes[d][c->n_nodes[d]];
-  n->c = centre;
-  n->h = h;
-  n->lo = zr_v3(INFINITY, INFINITY, INFINITY);
-  n->hi = zr_v3(-INFINITY, -INFINITY, -INFINITY);
-  n->r_max = 0.0;
+  c->cubes[d][c->n_nodes[d]] = (zr__gi_cube){centre, h};
+  for (int a = 0; a < 3; a++) {
+    n->lo[a] = INFINITY;
+    n->hi[a] = -INFINITY;
+  }
+  n->r_max = 0.0f;
   for (int k = 0; k < 8; k++)
     n->child[k] = -1;
   n->first = -1;
@@ -160,7 +170,7 @@ void zr__gi_cache_extent(zr_gi_cache *c) {
 static bool grow_root(zr_gi_cache *c, int d, zr_vec3 q) {
   if (!(isfinite(q.x) && isfinite(q.y) && isfinite(q.z)))
     return false;
-  zr__gi_node old = c->nodes[d][0];
+  zr__gi_cube old = c->cubes[d][0];
   if (!isfinite(2.0 * old.h))
     return false;
   zr_vec3 centre = zr_v3(old.c.x + (q.x > old.c.x ? old.h : -old.h),
@@ -169,10 +179,12 @@ static bool grow_root(zr_gi_cache *c, int d, zr_vec3 q) {
   int32_t moved = new_node(c, d, old.c, old.h);
   if (moved < 0)
     return false;
-  c->nodes[d][moved] = old;
+  c->nodes[d][moved] = c->nodes[d][0];
+  /* Its chain's end is where it was, unless the chain was the root
+     alone; the root's own is set by zr__gi_cache_add. */
+  c->jumps[d][moved] = c->jumps[d][0] == 0 ? moved : c->jumps[d][0];
   zr__gi_node *root = &c->nodes[d][0];
-  root->c = centre;
-  root->h = 2.0 * old.h;
+  c->cubes[d][0] = (zr__gi_cube){centre, 2.0 * old.h};
   root->first = -1; /* lo, hi and r_max stay the old root's */
   for (int k = 0; k < 8; k++)
     root->child[k] = -1;
@@ -182,13 +194,49 @@ static bool grow_root(zr_gi_cache *c, int d, zr_vec3 q) {
   return true;
 }
 
+/* v as a float no greater, and no less (a node's box only ever grows
+   by the rounding: a lookup may test a record more, never one less).
+   Values beyond the floats' range go to the infinities, not through a
+   conversion C leaves undefined; a NaN stays one (fminf and fmaxf skip
+   it, as fmin and fmax did). */
+static float float_down(double v) {
+  if (v > FLT_MAX)
+    return FLT_MAX;
+  if (v < -FLT_MAX)
+    return -INFINITY;
+  float f = (float)v;
+  return (double)f > v ? nextafterf(f, -INFINITY) : f;
+}
+static float float_up(double v) {
+  if (v > FLT_MAX)
+    return INFINITY;
+  if (v < -FLT_MAX)
+    return -FLT_MAX;
+  float f = (float)v;
+  return (double)f < v ? nextafterf(f, INFINITY) : f;
+}
+
 /* Widens node n's box and radius to hold record r. */
 static void node_hold(zr__gi_node *n, const zr__gi_record *r) {
-  n->lo = zr_v3(fmin(n->lo.x, r->p.x), fmin(n->lo.y, r->p.y),
-                fmin(n->lo.z, r->p.z));
-  n->hi = zr_v3(fmax(n->hi.x, r->p.x), fmax(n->hi.y, r->p.y),
-                fmax(n->hi.z, r->p.z));
-  n->r_max = fmax(n->r_max, r->r);
+  double p[3] = {r->p.x, r->p.y, r->p.z};
+  for (int a = 0; a < 3; a++) {
+    n->lo[a] = fminf(n->lo[a], float_down(p[a]));
+    n->hi[a] = fmaxf(n->hi[a], float_up(p[a]));
+  }
+  n->r_max = fmaxf(n->r_max, float_up(r->r));
+}
+
+/* Node at's jump (gi.h), from its children's. */
+static void set_jump(zr_gi_cache *c, int d, int32_t at) {
+  const zr__gi_node *n = &c->nodes[d][at];
+  int32_t only = -1;
+  int children = 0;
+  for (int k = 0; k < 8; k++)
+    if (n->child[k] >= 0) {
+      only = n->child[k];
+      children++;
+    }
+  c->jumps[d][at] = n->first < 0 && children == 1 ? c->jumps[d][only] : at;
 }
 
 bool zr__gi_cache_add(zr_gi_cache *c, const zr__gi_record *r) {
@@ -200,19 +248,16 @@ bool zr__gi_cache_add(zr_gi_cache *c, const zr__gi_record *r) {
   size_t idx = c->records.n;
   if (!zr__gi_list_push(&c->records, r))
     return false;
-  if (c->next_cap < c->records.cap) {
-    int32_t *v = realloc(c->next, c->records.cap * sizeof *v);
-    if (v)
-      c->next = v;
-    zr__gi_near *w = v ? realloc(c->near, c->records.cap * sizeof *w) : NULL;
+  if (c->near_cap < c->records.cap) {
+    zr__gi_near *w = realloc(c->near, c->records.cap * sizeof *w);
     if (!w) {
       c->records.n--;
       return false;
     }
     c->near = w;
-    c->next_cap = c->records.cap;
+    c->near_cap = c->records.cap;
   }
-  c->near[idx] = (zr__gi_near){r->p, r->r};
+  c->near[idx] = (zr__gi_near){r->p, r->r, -1};
   /* Down to the smallest node whose half-size is still the record's
      farthest reach (error_bound R), while the point is inside it; every
      node on the way widens its box of points and radius to hold it
@@ -230,24 +275,29 @@ bool zr__gi_cache_add(zr_gi_cache *c, const zr__gi_record *r) {
      outdoor scene's far floor: 97% of the lookup time before). */
   bool inside = false;
   for (int grow = 0; grow <= MAX_GROW; grow++) {
-    const zr__gi_node *root = &c->nodes[d][0];
+    const zr__gi_cube *root = &c->cubes[d][0];
     inside = fabs(q.x - root->c.x) <= root->h &&
              fabs(q.y - root->c.y) <= root->h &&
              fabs(q.z - root->c.z) <= root->h;
     if (inside || grow == MAX_GROW || !grow_root(c, d, q))
       break;
   }
+  int32_t path[MAX_LEVEL + 1];
+  int n_path = 0;
   for (int level = 0; inside && level < MAX_LEVEL; level++) {
+    path[n_path++] = at;
     zr__gi_node *n = &c->nodes[d][at];
     node_hold(n, r);
-    double hc = 0.5 * n->h;
+    zr__gi_cube cube = c->cubes[d][at];
+    double hc = 0.5 * cube.h;
     if (hc < reach)
       break;
-    int k = (q.x > n->c.x) | ((q.y > n->c.y) << 1) | ((q.z > n->c.z) << 2);
+    int k = (q.x > cube.c.x) | ((q.y > cube.c.y) << 1) |
+            ((q.z > cube.c.z) << 2);
     if (n->child[k] < 0) {
-      zr_vec3 cc = zr_v3(n->c.x + (k & 1 ? hc : -hc),
-                         n->c.y + (k & 2 ? hc : -hc),
-                         n->c.z + (k & 4 ? hc : -hc));
+      zr_vec3 cc = zr_v3(cube.c.x + (k & 1 ? hc : -hc),
+                         cube.c.y + (k & 2 ? hc : -hc),
+                         cube.c.z + (k & 4 ? hc : -hc));
       int32_t child = new_node(c, d, cc, hc);
       if (child < 0)
         return false;
@@ -256,8 +306,14 @@ bool zr__gi_cache_add(zr_gi_cache *c, const zr__gi_record *r) {
     at = c->nodes[d][at].child[k];
   }
   node_hold(&c->nodes[d][at], r);
-  c->next[idx] = c->nodes[d][at].first;
+  c->near[idx].next = c->nodes[d][at].first;
   c->nodes[d][at].first = (int32_t)idx;
+  /* Only the chains through the nodes passed can have changed (and the
+     root's, when it grew). */
+  set_jump(c, d, at);
+  while (n_path > 0)
+    set_jump(c, d, path[--n_path]);
+  set_jump(c, d, 0);
   return true;
 }
 
@@ -319,7 +375,7 @@ static void blend_tree(blend *b, const zr_gi_cache *c, int d, int32_t at) {
   /* The distance test on the compact copy first: a lookup rejects most
      of the records it meets (about 6 in 7 on sky_outdoor.pov), and a
      whole record is seven times the bytes. */
-  for (int32_t i = n->first; i >= 0; i = c->next[i]) {
+  for (int32_t i = n->first; i >= 0; i = c->near[i].next) {
     const zr__gi_near *q = &c->near[i];
     zr_vec3 dv = zr_v3_sub(b->p, q->p);
     double reach = b->a * q->r, dd = zr_v3_dot(dv, dv);
@@ -338,10 +394,10 @@ static void blend_tree(blend *b, const zr_gi_cache *c, int d, int32_t at) {
        radiosity2.pov's lookups visit 108 nodes and test 107 records
        each for 4.6 that pass; now 35 and 27. */
     double reach = b->a * m->r_max * (1.0 + 1e-9);
-    if (b->p.x >= m->lo.x - reach && b->p.x <= m->hi.x + reach &&
-        b->p.y >= m->lo.y - reach && b->p.y <= m->hi.y + reach &&
-        b->p.z >= m->lo.z - reach && b->p.z <= m->hi.z + reach)
-      blend_tree(b, c, d, ch);
+    if (b->p.x >= m->lo[0] - reach && b->p.x <= m->hi[0] + reach &&
+        b->p.y >= m->lo[1] - reach && b->p.y <= m->hi[1] + reach &&
+        b->p.z >= m->lo[2] - reach && b->p.z <= m->hi[2] + reach)
+      blend_tree(b, c, d, c->jumps[d][ch]);
   }
 }
 
@@ -467,15 +523,22 @@ static void gather(const zr_gi_cache *c, const zr_tracer *tracer,
     rec->r = 1e-9; /* out of memory: a dark record nobody reuses */
     return;
   }
+  /* Each sector's cos and sin of phi, once (not once a band: the
+     calls were 2% of radiosity2.pov). */
+  double cos_phi[MAX_SECTORS], sin_phi[MAX_SECTORS];
+  for (int k = 0; k < nn; k++) {
+    double phi = 2.0 * M_PI * (k + v0) / nn;
+    cos_phi[k] = cos(phi);
+    sin_phi[k] = sin(phi);
+  }
   double sum[3] = {0, 0, 0}, inv_r = 0.0;
   for (int j = 0; j < m; j++)
     for (int k = 0; k < nn; k++) {
       double s2 = (j + u0) / m;
-      double phi = 2.0 * M_PI * (k + v0) / nn;
       double st = sqrt(s2), ct = sqrt(fmax(0.0, 1.0 - s2));
       zr_vec3 dir = zr_v3_add(
-          zr_v3_add(zr_v3_scale(t1, st * cos(phi)),
-                    zr_v3_scale(t2, st * sin(phi))),
+          zr_v3_add(zr_v3_scale(t1, st * cos_phi[k]),
+                    zr_v3_scale(t2, st * sin_phi[k])),
           zr_v3_scale(n, ct));
       zr_ray ray = {origin, dir};
       double t = INFINITY;
@@ -527,13 +590,22 @@ static void gather(const zr_gi_cache *c, const zr_tracer *tracer,
    pi for mean radiance, came out pi/2 too steep at every distance
    tried, hence 2 / pi^2; they then agree to about 20%, the sample
    noise of 1000 rays. */
+  /* tan(theta) averaged over each band (sin^2 theta from j / m to
+     (j + 1) / m): the integral of sqrt(s / (1 - s)) is asin(sqrt(s)) -
+     sqrt(s (1 - s)).  The sample's own tan(theta) is right only on
+     average over a jitter, and at the band's centre reads the grazing
+     band, where it grows without bound, 13% low on the whole gradient
+     (tests/test_gi.c). */
+  double tan_band[MAX_BANDS];
+  for (int j = 0; j < m; j++)
+    tan_band[j] = m * (tan_integral((double)(j + 1) / m) -
+                       tan_integral((double)j / m));
   for (int k = 0; k < nn; k++) {
-    double phi = 2.0 * M_PI * (k + v0) / nn;
     double phi_m = 2.0 * M_PI * k / nn;
-    zr_vec3 uk = zr_v3_add(zr_v3_scale(t1, cos(phi)),
-                           zr_v3_scale(t2, sin(phi)));
-    zr_vec3 vk = zr_v3_add(zr_v3_scale(t1, -sin(phi)),
-                           zr_v3_scale(t2, cos(phi)));
+    zr_vec3 uk = zr_v3_add(zr_v3_scale(t1, cos_phi[k]),
+                           zr_v3_scale(t2, sin_phi[k]));
+    zr_vec3 vk = zr_v3_add(zr_v3_scale(t1, -sin_phi[k]),
+                           zr_v3_scale(t2, cos_phi[k]));
     zr_vec3 vkm = zr_v3_add(zr_v3_scale(t1, -sin(phi_m)),
                             zr_v3_scale(t2, cos(phi_m)));
     int kp = (k + nn - 1) % nn;
@@ -541,14 +613,7 @@ static void gather(const zr_gi_cache *c, const zr_tracer *tracer,
       int i = j * nn + k;
       double s2 = (j + u0) / m;
       double st = sqrt(s2);
-      /* tan(theta) averaged over the band (sin^2 theta from j / m to
-         (j + 1) / m): the integral of sqrt(s / (1 - s)) is
-         asin(sqrt(s)) - sqrt(s (1 - s)).  The sample's own tan(theta)
-         is right only on average over a jitter, and at the band's
-         centre reads the grazing band, where it grows without bound,
-         13% low on the whole gradient (tests/test_gi.c). */
-      double tan_t = m * (tan_integral((double)(j + 1) / m) -
-                          tan_integral((double)j / m));
+      double tan_t = tan_band[j];
       double l[3] = {lum[i].r, lum[i].g, lum[i].b};
       for (int ch = 0; ch < 3; ch++)
         rec->grad_r[ch] = zr_v3_madd(rec->grad_r[ch], vk,
@@ -650,7 +715,7 @@ static bool cache_irradiance(const zr_indirect *self,
                  : REFLECTANCE_GROWTH;
   }
   if (d < 20 && c->n_nodes[d] > 0)
-    blend_tree(&b, c, d, 0);
+    blend_tree(&b, c, d, c->jumps[d][0]);
   if (sc)
     for (size_t i = 0; i < sc->local.n; i++)
       if (sc->local.v[i].depth == d)
@@ -769,10 +834,12 @@ ZR_API void zr_gi_cache_free(zr_gi_cache *c) {
   if (!c)
     return;
   zr__gi_list_free(&c->records);
-  free(c->next);
   free(c->near);
-  for (int d = 0; d < 20; d++)
+  for (int d = 0; d < 20; d++) {
     free(c->nodes[d]);
+    free(c->cubes[d]);
+    free(c->jumps[d]);
+  }
   free(c);
 }
 

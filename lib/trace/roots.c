@@ -174,3 +174,122 @@ int zr__poly_roots(const double *c, int degree, double lo, double hi,
   }
   return n;
 }
+
+/* ---- one root at a time ------------------------------------------ */
+
+/*
+ * The walk keeps, for the polynomial and each derivative down to degree
+ * 2 (a level each), the end of the monotonic pieces it has reached; a
+ * level's next end is the next root of the level below, found only when
+ * asked for.  The values and refinements are zr__poly_roots's, in its
+ * order, so every root has its bits.
+ */
+void zr__root_walk_start(zr__root_walk *w, const double *c, int degree,
+                         double lo, double hi) {
+  w->levels = 0;
+  w->n_low = w->next_low = 0;
+  w->hi = hi;
+  while (degree > 0 && c[degree] == 0.0)
+    degree--;
+  if (degree <= 0 || !(lo < hi))
+    return;
+  const double *from = c;
+  for (int k = 0; k < ZR_POLY_MAX_DEGREE; k++) {
+    double *ck = w->c[k];
+    if (k == 0) {
+      for (int i = 0; i <= degree; i++)
+        ck[i] = from[i];
+    } else {
+      /* The derivative of the level above (zr__poly_roots's deriv). */
+      for (int i = 1; i <= degree; i++)
+        ck[i - 1] = i * from[i];
+      degree--;
+      while (degree > 0 && ck[degree] == 0.0)
+        degree--;
+    }
+    w->degree[k] = degree;
+    w->levels = k + 1;
+    w->a[k] = lo;
+    w->done[k] = false;
+    if (degree <= 2) {
+      /* The last level: its roots in closed form, as zr__poly_roots
+         takes a line or a quadratic. */
+      if (degree == 1) {
+        double x = -ck[0] / ck[1];
+        if (x > lo && x < hi)
+          w->low[w->n_low++] = x;
+      } else if (degree == 2) {
+        w->n_low = quadratic_roots(ck, lo, hi, w->low);
+      }
+      break;
+    }
+    w->fa[k] = zr__poly_eval(ck, degree, lo);
+    from = ck;
+  }
+}
+
+static bool level_interval(zr__root_walk *w, int k, double *a, double *b,
+                          double *fa);
+
+/* Level k's next root; false when it has no more. */
+static bool level_root(zr__root_walk *w, int k, double *x) {
+  if (k == w->levels - 1) {
+    if (w->next_low >= w->n_low)
+      return false;
+    *x = w->low[w->next_low++];
+    return true;
+  }
+  double a, b, fa;
+  if (!level_interval(w, k, &a, &b, &fa))
+    return false;
+  *x = refine(w->c[k], w->degree[k], a, b, fa);
+  return true;
+}
+
+/* Level k's next monotonic piece whose ends' values have opposite
+   signs (k above the last level). */
+static bool level_interval(zr__root_walk *w, int k, double *a, double *b,
+                          double *fa) {
+  while (!w->done[k]) {
+    double e;
+    if (!level_root(w, k + 1, &e)) {
+      e = w->hi;
+      w->done[k] = true;
+    }
+    double fe = zr__poly_eval(w->c[k], w->degree[k], e);
+    double a0 = w->a[k], f0 = w->fa[k];
+    w->a[k] = e;
+    w->fa[k] = fe;
+    if ((f0 < 0.0 && fe > 0.0) || (f0 > 0.0 && fe < 0.0)) {
+      *a = a0;
+      *b = e;
+      *fa = f0;
+      return true;
+    }
+  }
+  return false;
+}
+
+bool zr__root_walk_next(zr__root_walk *w, double *a, double *b) {
+  if (w->levels == 0)
+    return false;
+  if (w->levels == 1) {
+    /* A line or a quadratic: each root is its own interval. */
+    double x;
+    if (!level_root(w, 0, &x))
+      return false;
+    *a = *b = w->at = w->b = x;
+    return true;
+  }
+  if (!level_interval(w, 0, &w->at, &w->b, &w->fat))
+    return false;
+  *a = w->at;
+  *b = w->b;
+  return true;
+}
+
+double zr__root_walk_root(const zr__root_walk *w) {
+  if (w->levels == 1)
+    return w->at;
+  return refine(w->c[0], w->degree[0], w->at, w->b, w->fat);
+}
