@@ -80,11 +80,6 @@ static bool box_holds(zr_vec3 lo, zr_vec3 hi, zr_vec3 p) {
          p.z >= lo.z && p.z <= hi.z;
 }
 
-/* Whether p may be inside the child of box b: never outside its box. */
-static bool may_hold(const struct zr_csg_box *b, zr_vec3 p) {
-  return !b->bounded || box_holds(b->lo, b->hi, p);
-}
-
 /*
  * The tree over a part's children (a union of a hundred bubbles inside
  * a merge, as in advanced/grenadine, tested a hundred boxes for every
@@ -112,6 +107,10 @@ struct zr_csg_tree {
   uint32_t *order;      /* the boxed children, as the leaves hold them */
   uint32_t *unbounded;  /* the others, always visited */
   uint32_t n_unbounded;
+  /* The boxed children that hold what lies outside their boxes (parts
+     cut out): in the tree for rays, but every point query asks them. */
+  uint32_t *outside;
+  uint32_t n_outside;
 };
 
 typedef struct tree_item {
@@ -210,16 +209,20 @@ zr_status zr__csg_tree_build(zr_arena *arena, zr_object *node) {
   t->n_unbounded = (uint32_t)(n - n_boxed);
   t->unbounded = zr__arena_alloc(
       arena, (t->n_unbounded ? t->n_unbounded : 1) * sizeof *t->unbounded);
-  if (!t->nodes || !t->order || !t->unbounded) {
+  t->outside = zr__arena_alloc(arena, n_boxed * sizeof *t->outside);
+  if (!t->nodes || !t->order || !t->unbounded || !t->outside) {
     free(items);
     return ZR_ENOMEM;
   }
   uint32_t k = 0, u = 0;
+  t->n_outside = 0;
   for (size_t i = 0; i < n; i++) {
     if (!finite_box(&b[i])) {
       t->unbounded[u++] = (uint32_t)i;
       continue;
     }
+    if (b[i].holds_outside)
+      t->outside[t->n_outside++] = (uint32_t)i;
     zr_vec3 c = zr_v3_scale(zr_v3_add(b[i].lo, b[i].hi), 0.5);
     items[k].centre[0] = c.x;
     items[k].centre[1] = c.y;
@@ -275,10 +278,12 @@ static int tree_ray(const struct zr_csg_tree *t, const zr_ray *ray,
    finds (merge and union). */
 static bool some_other_holds(const zr_object *node, size_t self, zr_vec3 p);
 
-/* zr__inside() of child j of a CSG node, with its box first. */
+/* zr__inside() of child j of a CSG node, with its box first: outside
+   it the child holds nothing, or (a part cut out) everything. */
 static bool child_inside(const zr_object *node, size_t j, zr_vec3 p) {
-  if (node->u.csg.boxes && !may_hold(&node->u.csg.boxes[j], p))
-    return false;
+  const struct zr_csg_box *b = node->u.csg.boxes;
+  if (b && b[j].bounded && !box_holds(b[j].lo, b[j].hi, p))
+    return b[j].holds_outside;
   return zr__inside(node->u.csg.children[j], p);
 }
 
@@ -421,8 +426,12 @@ int zr__csg_crossings(const zr_object *object, const zr_ray *ray,
 static bool some_other_holds(const zr_object *node, size_t self,
                              zr_vec3 p) {
   const struct zr_csg_tree *t = node->u.csg.tree;
+  const struct zr_csg_box *b = node->u.csg.boxes;
   for (uint32_t i = 0; i < t->n_unbounded; i++)
     if (t->unbounded[i] != self && child_inside(node, t->unbounded[i], p))
+      return true;
+  for (uint32_t i = 0; i < t->n_outside; i++)
+    if (t->outside[i] != self && child_inside(node, t->outside[i], p))
       return true;
   uint32_t stack[64];
   int sp = 0;
@@ -434,7 +443,7 @@ static bool some_other_holds(const zr_object *node, size_t self,
     if (nd->count > 0) {
       for (uint32_t i = 0; i < nd->count; i++) {
         uint32_t j = t->order[nd->first + i];
-        if (j != self && child_inside(node, j, p))
+        if (j != self && !b[j].holds_outside && child_inside(node, j, p))
           return true;
       }
       continue;
