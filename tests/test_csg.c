@@ -228,6 +228,76 @@ static void test_csg_bounds_of_planes_and_quadrics(void **state) {
   assert_false(zr__object_bounds(o, &lo, &hi));
 }
 
+/* Planes whose faces all lie across the axes (shapes2.inc's
+   Dodecahedron, stock textures/pigments/dodec2.pov) are bounded by the
+   box of their polyhedron's vertices (lib/trace/bounds_csg.c): here
+   exactly +-1 in y (its two caps) and the circumradius 1.2584 at most
+   across; every crossing of random rays lies in the box.  Five planes
+   round an axis (a pentagonal prism) stay unbounded, and so does a
+   polyhedron cut off on one side only. */
+static void test_csg_bounds_of_plane_polyhedra(void **state) {
+  fixture *f = *state;
+  const char *dodecahedron =
+      "intersection {\n"
+      "  #for (I, 0, 4)\n"
+      "    plane { -z, 1 rotate <-26.56505117708, -72*I, 0> }\n"
+      "    plane { -z, 1 rotate <26.56505117708, -36 - 72*I, 0> }\n"
+      "  #end\n"
+      "  plane { y, 1 } plane { -y, 1 }\n"
+      "  translate y*1.8 rotate x*72 rotate z*144 }\n";
+  const zr_object *o = only(f, dodecahedron);
+  zr_vec3 lo, hi;
+  assert_true(zr__object_bounds(o, &lo, &hi));
+  zr_vec3 mid = zr_v3_scale(zr_v3_add(lo, hi), 0.5);
+  zr_vec3 size = zr_v3_sub(hi, lo);
+  /* Turned about two axes, the box is at most the circumsphere's. */
+  assert_true(size.x <= 2 * 1.2585 && size.y <= 2 * 1.2585 &&
+              size.z <= 2 * 1.2585);
+  /* The centre sits where it was moved to: y 1.8, turned 72 about x
+     (y cos 72, y sin 72), then 144 about z. */
+  double c72 = cos(72 * M_PI / 180), s72 = sin(72 * M_PI / 180);
+  double c144 = cos(144 * M_PI / 180), s144 = sin(144 * M_PI / 180);
+  zr_vec3 centre = zr_v3(-1.8 * c72 * s144, 1.8 * c72 * c144, 1.8 * s72);
+  assert_near(mid.x, centre.x, 0.2);
+  assert_near(mid.y, centre.y, 0.2);
+  assert_near(mid.z, centre.z, 0.2);
+  unsigned seed = 99u;
+  int crossings = 0;
+  for (int k = 0; k < 3000; k++) {
+    zr_vec3 org = zr_v3_add(centre, zr_v3(20 * rnd(&seed) - 10,
+                                          20 * rnd(&seed) - 10,
+                                          20 * rnd(&seed) - 10));
+    zr_vec3 at = zr_v3_add(centre, zr_v3(3 * rnd(&seed) - 1.5,
+                                         3 * rnd(&seed) - 1.5,
+                                         3 * rnd(&seed) - 1.5));
+    zr_hit h[2];
+    int n = cross(o, org, zr_v3_sub(at, org), 0.0, h);
+    for (int i = 0; i < n; i++) {
+      zr_vec3 p = zr_v3_madd(org, zr_v3_sub(at, org), h[i].t);
+      assert_true(p.x >= lo.x && p.x <= hi.x);
+      assert_true(p.y >= lo.y && p.y <= hi.y);
+      assert_true(p.z >= lo.z && p.z <= hi.z);
+    }
+    crossings += n;
+    /* Points inside lie in the box. */
+    if (zr__inside(o, at))
+      assert_true(at.x >= lo.x && at.x <= hi.x && at.y >= lo.y &&
+                  at.y <= hi.y && at.z >= lo.z && at.z <= hi.z);
+  }
+  assert_true(crossings > 1000);
+  const char *open[] = {
+      "intersection { #for (I, 0, 4) plane { -z, 1 rotate y*72*I } #end\n"
+      "  rotate <10, 20, 30> }\n",
+      "intersection { #for (I, 0, 4)\n"
+      "  plane { -z, 1 rotate <-26.56505117708, -72*I, 0> } #end\n"
+      "  plane { -y, 1 } rotate <10, 20, 30> }\n",
+  };
+  for (int c = 0; c < 2; c++) {
+    o = only(f, open[c]);
+    assert_false(zr__object_bounds(o, &lo, &hi));
+  }
+}
+
 /* A part the tracer cannot box (a quartic torus, advanced/pawns.pov)
    takes its union's bounded_by box in the hierarchy, moved with the
    union; a part it can box keeps its own, however loose the bound. */
@@ -644,13 +714,145 @@ static void test_csg_narrowed_children_skip_work_only(void **state) {
 #undef RND
   assert_true(crossings > 1000);
 }
+/* A slab minus letters made as chars.inc makes them (the corpus'
+   BAMSSLB2): differences with a plane, intersections with an inverted
+   cylinder, unions of rotated boxes, bounded_by; and a merge with an
+   inverted intersection of ten spheres in it, whose inverse is a merge
+   of ten inverted spheres, enough for a tree of children (csg.c). */
+static const char *const cut_out_letters =
+    "#declare P = union {\n"
+    "  difference { cylinder { 0*z, z, 1.5 } cylinder { -z, 2*z, 0.5 }\n"
+    "    plane { x, 0 } bounded_by { box { <0, -1.5, 0>, <1.5, 1.5, 1> } }\n"
+    "    translate <0.5, 3.5, 0> }\n"
+    "  box { <-1.001, 4, 0>, <0.501, 5, 1> }\n"
+    "  box { <-2, 0, 0>, <-1, 5, 1> } }\n"
+    "#declare A = intersection { box { <-2, 0, -0.1>, <2, 5, 1.1> }\n"
+    "  union { box { <-0.5, -6, 0>, <0.5, 0, 1> rotate z*16.699 }\n"
+    "    box { <-0.5, -6, 0>, <0.5, 0, 1> rotate -z*16.699 }\n"
+    "    box { <-1, -4, 0>, <1, -3, 1> } translate y*5 } }\n"
+    "#declare S = intersection { cylinder { 0*z, z, 1.5 }\n"
+    "  cylinder { -z, 2*z, 0.5 inverse }\n"
+    "  box { <0, 0, -0.1>, <1.5, 1.5, 1.1> } translate <0.5, 3.5, 0> }\n"
+    "#declare Balls = intersection {\n"
+    "  #for (I, 0, 9) sphere { <I*0.3, 2.5, 0.5>, 1.2 } #end }\n"
+    "#declare W = union { object { P } object { A translate 5*x }\n"
+    "  object { S translate 10*x } object { Balls translate 12*x } }\n"
+    "merge {\n"
+    "  difference { box { <-2, -2, 0.1>, <22, 10, 3> }\n"
+    "    object { W scale <1, 1.6, 1> }\n"
+    "    object { W scale <1, 1.6, 1> translate <0.0001, 0.0001, 0.0001> }\n"
+    "    rotate <30, -5, 0> }\n"
+    "  sphere { <30, 0, 0>, 1 }\n"
+    "  difference { sphere { <30, 0, 0>, 3 } object { Balls } }\n"
+    "}\n";
 
+/* The boxes of the children of o that hold what lies outside them,
+   counted into *n: each holds its child's surface (every crossing of
+   random rays with the child alone, all of them, lies in it), and the
+   child holds every random point outside it. */
+static void check_outside_boxes(const zr_object *o, unsigned *seed,
+                                int *n) {
+  if (!zr__is_csg(o->kind))
+    return;
+  assert_non_null(o->u.csg.boxes);
+  for (size_t i = 0; i < o->u.csg.n_children; i++) {
+    const zr_object *c = o->u.csg.children[i];
+    check_outside_boxes(c, seed, n);
+    const struct zr_csg_box *b = &o->u.csg.boxes[i];
+    if (!b->holds_outside)
+      continue;
+    assert_true(b->bounded);
+    (*n)++;
+    zr_vec3 mid = zr_v3_scale(zr_v3_add(b->lo, b->hi), 0.5);
+    zr_vec3 half = zr_v3_scale(zr_v3_sub(b->hi, b->lo), 0.5);
+    double reach = 2.0 * zr_v3_len(half) + 1.0;
+    for (int k = 0; k < 300; k++) {
+      zr_vec3 at = zr_v3(mid.x + half.x * (2 * rnd(seed) - 1),
+                         mid.y + half.y * (2 * rnd(seed) - 1),
+                         mid.z + half.z * (2 * rnd(seed) - 1));
+      zr_vec3 org = zr_v3_add(at, zr_v3(reach * (2 * rnd(seed) - 1),
+                                        reach * (2 * rnd(seed) - 1),
+                                        reach * (2 * rnd(seed) - 1)));
+      zr_ray r = {org, zr_v3_sub(at, org)};
+      double from = 0.0;
+      zr_hit h[ZR_MAX_CROSSINGS];
+      for (int m; (m = zr__intersect(c, &r, from, INFINITY, h)) > 0;) {
+        for (int j = 0; j < m; j++) {
+          zr_vec3 p = zr_v3_madd(org, r.dir, h[j].t);
+          assert_true(p.x >= b->lo.x && p.x <= b->hi.x);
+          assert_true(p.y >= b->lo.y && p.y <= b->hi.y);
+          assert_true(p.z >= b->lo.z && p.z <= b->hi.z);
+        }
+        from = h[m - 1].t;
+      }
+      /* A point outside the box: the ray's origin, mostly. */
+      if (org.x < b->lo.x || org.x > b->hi.x || org.y < b->lo.y ||
+          org.y > b->hi.y || org.z < b->lo.z || org.z > b->hi.z)
+        assert_true(zr__inside(c, org));
+    }
+  }
+}
+
+/* The parts a difference cuts out have boxes that bound their surface
+   (outside which they hold every point), and these only skip work: the
+   same crossings, nearest ones and inside tests as without the boxes. */
+static void test_csg_cut_out_boxes_skip_work_only(void **state) {
+  fixture *f = *state;
+  const zr_object *o = only(f, cut_out_letters);
+  assert_int_equal(o->kind, ZR_OBJ_MERGE);
+  unsigned seed = 4242u;
+  int n_outside = 0;
+  check_outside_boxes(o, &seed, &n_outside);
+  /* The letters, their parts and the ten spheres, twice over. */
+  assert_true(n_outside >= 30);
+  /* The merge of ten inverted spheres has its tree, every child in its
+     list of point queries. */
+  const zr_object *balls = o->u.csg.children[2]->u.csg.children[1];
+  assert_int_equal(balls->kind, ZR_OBJ_MERGE);
+  assert_non_null(balls->u.csg.tree);
+  zr_object *plain = unboxed(o);
+  int crossings = 0, inside = 0;
+  for (int k = 0; k < 6000; k++) {
+    zr_vec3 org = zr_v3(40 * rnd(&seed) - 10, 30 * rnd(&seed) - 10,
+                        30 * rnd(&seed) - 20);
+    zr_vec3 at = k % 3 == 2 ? zr_v3(30 + 6 * rnd(&seed) - 3,
+                                    6 * rnd(&seed) - 3, 6 * rnd(&seed) - 3)
+                            : zr_v3(24 * rnd(&seed) - 2,
+                                    12 * rnd(&seed) - 2,
+                                    3 * rnd(&seed));
+    zr_ray r = {org, zr_v3_sub(at, org)};
+    zr_hit a[ZR_MAX_CROSSINGS], b[ZR_MAX_CROSSINGS];
+    int na = zr__intersect(o, &r, 0.0, INFINITY, a);
+    int nb = zr__intersect(plain, &r, 0.0, INFINITY, b);
+    assert_int_equal(na, nb);
+    for (int i = 0; i < na; i++) {
+      assert_true(a[i].t == b[i].t);
+      assert_ptr_equal(a[i].object, b[i].object);
+    }
+    crossings += na;
+    na = zr__intersect_first(o, &r, 0.0, INFINITY, true, a);
+    assert_int_equal(na > 0, nb > 0);
+    if (na > 0) {
+      assert_true(a[0].t == b[0].t);
+      assert_ptr_equal(a[0].object, b[0].object);
+    }
+    bool in = zr__inside(o, at);
+    assert_true(in == zr__inside(plain, at));
+    assert_true(zr__inside(balls, at) ==
+                zr__inside(plain->u.csg.children[2]->u.csg.children[1], at));
+    inside += in;
+  }
+  assert_true(crossings > 2000);
+  assert_true(inside > 300 && inside < 5700);
+  unboxed_free(plain);
+}
 int main(void) {
   const struct CMUnitTest tests[] = {
       TEST(test_csg_difference_cuts_with_inverted_normal),
       TEST(test_csg_child_boxes_skip_work_only),
       TEST(test_csg_child_tree_skips_work_only),
       TEST(test_csg_narrowed_children_skip_work_only),
+      TEST(test_csg_cut_out_boxes_skip_work_only),
       TEST(test_csg_intersection_is_a_lens),
       TEST(test_csg_merge_drops_inner_surfaces),
       TEST(test_csg_inverse_follows_de_morgan),
@@ -658,6 +860,7 @@ int main(void) {
       TEST(test_csg_transforms_in_place_stay_private),
       TEST(test_csg_bounds_of_intersection),
       TEST(test_csg_bounds_of_planes_and_quadrics),
+      TEST(test_csg_bounds_of_plane_polyhedra),
       TEST(test_csg_bounded_by_boxes_unboundable_parts),
       TEST(test_csg_quadric_cylinder_and_paraboloid),
       TEST(test_csg_clipped_by_keeps_the_inside_part),

@@ -647,6 +647,11 @@ struct zr_object {
       struct zr_csg_box {
         zr_vec3 lo, hi;
         bool bounded;
+        /* The box holds the child's surface, and the child holds every
+           point outside it: the box of an inverted child (a part cut
+           out by a difference) is the box of its un-inverted shape
+           (lib/trace/bounds.c, zr__complement_bounds). */
+        bool holds_outside;
       } *boxes;
       /* This part's own world box before its clip (what bounds.c
          would compute from the children), set with boxes and NULL

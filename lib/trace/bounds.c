@@ -11,7 +11,10 @@
  * world space and boxed again, which is conservative for any affine map.
  * Planes and anything marked `inverse` have no finite extent (POV-Ray
  * reference, "Plane" and "Inverse"), so they report false and the BVH
- * keeps them in its list of unbounded primitives.
+ * keeps them in its list of unbounded primitives.  Inside a CSG object
+ * an inverted part still has a box of another kind
+ * (zr__complement_bounds): its surface lies in the box of its
+ * un-inverted shape, and it holds every point outside that box.
  */
 #include "trace/intersect.h"
 
@@ -35,6 +38,9 @@ static bool local_bounds(const zr_object *o, zr_vec3 *lo, zr_vec3 *hi) {
    an intersection's child does. */
 static bool unclipped_bounds(const zr_object *object, zr_vec3 *lo,
                              zr_vec3 *hi);
+/* The box of a plain shape (not CSG), inverse or not. */
+static bool shape_bounds(const zr_object *object, zr_vec3 *lo,
+                         zr_vec3 *hi);
 
 bool zr__object_bounds(const zr_object *object, zr_vec3 *lo, zr_vec3 *hi) {
   zr_vec3 l, h, cl, ch;
@@ -86,6 +92,11 @@ static bool unclipped_bounds(const zr_object *object, zr_vec3 *lo,
     *hi = h;
     return true;
   }
+  return shape_bounds(object, lo, hi);
+}
+
+static bool shape_bounds(const zr_object *object, zr_vec3 *lo,
+                         zr_vec3 *hi) {
   zr_vec3 l, h;
   if (!local_bounds(object, &l, &h))
     return false;
@@ -124,4 +135,77 @@ zr_status zr__csg_keep_whole_box(zr_arena *arena, zr_object *part) {
   b->bounded = unclipped_bounds(part, &b->lo, &b->hi);
   part->u.csg.whole = b;
   return ZR_OK;
+}
+
+/* The shapes whose inside lies within their box (bounds.c's box holds
+   every point their inside test takes): the solids bounded by their
+   own surface.  Not a disc (its inside is its plane's half-space), a
+   height field (its inside starts at y = 0, below its lowest sample),
+   a mesh (inside_vector's parity of an open mesh), a blob (a threshold
+   at or below zero holds all space), nor the unbounded shapes. */
+static bool inside_within_box(zr_object_kind kind) {
+  switch (kind) {
+  case ZR_OBJ_SPHERE:
+  case ZR_OBJ_BOX:
+  case ZR_OBJ_CYLINDER:
+  case ZR_OBJ_CONE:
+  case ZR_OBJ_TORUS:
+  case ZR_OBJ_SUPERELLIPSOID:
+  case ZR_OBJ_OVUS:
+  case ZR_OBJ_LATHE:
+  case ZR_OBJ_SOR:
+  case ZR_OBJ_PRISM:
+    return true;
+  default:
+    return false;
+  }
+}
+
+/*
+ * A CSG part holds what lies outside its box when (De Morgan, as
+ * lib/sdl/build_object.c inverts) it is an inverted merge or
+ * intersection:
+ *   - an intersection holds p when every child does: outside the union
+ *     of its children's boxes, if each child holds what lies outside
+ *     its own; its surface is made of theirs, so it lies in that union;
+ *   - a merge holds p when some child does: outside the overlap of the
+ *     boxes of the children that hold what lies outside theirs; a
+ *     crossing of one child survives only where no other holds it, so
+ *     inside the other children's boxes, and a crossing of one of those
+ *     children lies in its own box too.
+ * A union keeps every child's crossings, so it gets none.
+ */
+bool zr__complement_bounds(const zr_object *object, zr_vec3 *lo,
+                           zr_vec3 *hi) {
+  if (object->clip)
+    return false;
+  if (!zr__is_csg(object->kind))
+    return object->inverse && inside_within_box(object->kind) &&
+           shape_bounds(object, lo, hi);
+  const struct zr_csg_box *b = object->u.csg.boxes;
+  size_t n = object->u.csg.n_children;
+  if (object->inverse || !b || n == 0 || object->kind == ZR_OBJ_UNION)
+    return false;
+  bool merge = object->kind == ZR_OBJ_MERGE, any = false;
+  zr_vec3 all = zr_v3(INFINITY, INFINITY, INFINITY), none = zr_v3_neg(all);
+  /* A merge's overlap starts from all space, an intersection's union
+     from nothing. */
+  zr_vec3 l = merge ? none : all, h = merge ? all : none;
+  for (size_t i = 0; i < n; i++) {
+    if (!b[i].bounded || !b[i].holds_outside) {
+      if (!merge)
+        return false;
+      continue;
+    }
+    any = true;
+    l = merge ? zr_v3_max(l, b[i].lo) : zr_v3_min(l, b[i].lo);
+    h = merge ? zr_v3_min(h, b[i].hi) : zr_v3_max(h, b[i].hi);
+  }
+  if (!any)
+    return false;
+  /* Boxes that do not overlap: the merge holds all space and has no
+     surface; a flat box at the corner keeps the tests well defined. */
+  *lo = l;
+  *hi = zr_v3_max(l, h);
+  return true;
 }

@@ -359,13 +359,154 @@ static void narrow(const zr_object *o, const zr_transform *frame,
     narrow(o->clip, frame, box);
 }
 
+/*
+ * Planes alone: narrowing one axis at a time cannot bound a solid whose
+ * faces all lie across the axes (shapes2.inc's Dodecahedron, twelve
+ * planes none of them along an axis: every ray of stock textures/
+ * pigments/dodec2.pov tested all five of them, sixty planes).  The
+ * planes among an intersection's children (and its nested
+ * intersections') hold a convex polyhedron that holds the object.  It
+ * is bounded exactly when no direction v != 0 has n.v <= 0 for every
+ * plane normal n (its recession cone is {0}); such a direction, if
+ * there is one, can be taken along an edge of the cone, where two of
+ * the planes' boundaries through the origin meet: along +-(n_a x n_b).
+ * A bounded polyhedron's box is the box of its vertices, the points
+ * where three planes meet that lie inside all the others.  Every test
+ * leans toward "unbounded" and "inside" by a margin far above rounding,
+ * so the box found is never smaller than the polyhedron's, with one
+ * exception left: a vertex where three faces meet so nearly along one
+ * line that their normals' determinant is below 1e-10 is not placed
+ * (rounding would put it anywhere; parallel faces give such triples).
+ */
+#define POLY_MAX 48
+
+typedef struct halfspace {
+  double n[3]; /* n . p <= d inside */
+  double d;
+} halfspace;
+
+/* The plane leaves of intersection node and of the intersections in it
+   into h (from n on, at most POLY_MAX); their new count. */
+static int collect_planes(const zr_object *node, halfspace *h, int n) {
+  for (size_t i = 0; i < node->u.csg.n_children && n < POLY_MAX; i++) {
+    const zr_object *o = node->u.csg.children[i];
+    if (o->kind == ZR_OBJ_INTERSECTION && !o->inverse) {
+      n = collect_planes(o, h, n);
+      continue;
+    }
+    quad3 q;
+    if (o->kind != ZR_OBJ_PLANE || !frame_form(o, NULL, &q))
+      continue;
+    double len = sqrt(q.b[0] * q.b[0] + q.b[1] * q.b[1] + q.b[2] * q.b[2]);
+    if (!(len > 0.0) || !isfinite(len) || !isfinite(q.c))
+      continue;
+    /* Unit normals, so that the margins below are distances. */
+    for (int k = 0; k < 3; k++)
+      h[n].n[k] = q.b[k] / len;
+    h[n++].d = -q.c / len;
+  }
+  return n;
+}
+
+static double dot3(const double a[3], const double b[3]) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static void cross3(const double a[3], const double b[3], double out[3]) {
+  out[0] = a[1] * b[2] - a[2] * b[1];
+  out[1] = a[2] * b[0] - a[0] * b[2];
+  out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/* Whether the polyhedron of h[0 .. n) is bounded (see above). */
+static bool polyhedron_bounded(const halfspace *h, int n) {
+  bool spans = false;
+  for (int a = 0; a < n; a++)
+    for (int b = a + 1; b < n; b++) {
+      double v[3];
+      cross3(h[a].n, h[b].n, v);
+      double len = sqrt(dot3(v, v));
+      if (!(len > 1e-9))
+        continue; /* (anti)parallel normals: no edge of the cone */
+      spans = true;
+      for (int sign = -1; sign <= 1; sign += 2) {
+        bool all = true;
+        for (int k = 0; k < n && all; k++)
+          all = sign * dot3(h[k].n, v) <= 1e-9 * len;
+        if (all)
+          return false;
+      }
+    }
+  /* Normals along one line leave a whole plane of directions free. */
+  return spans;
+}
+
+/* The box of the polyhedron of h[0 .. n) when it is bounded and has a
+   vertex; false otherwise. */
+static bool polyhedron_box(const halfspace *h, int n, box3 *box) {
+  if (n < 4 || !polyhedron_bounded(h, n))
+    return false;
+  double scale = 1.0;
+  for (int k = 0; k < n; k++)
+    scale = fmax(scale, fabs(h[k].d));
+  double lo[3] = {INFINITY, INFINITY, INFINITY};
+  double hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+  for (int a = 0; a < n; a++)
+    for (int b = a + 1; b < n; b++)
+      for (int c = b + 1; c < n; c++) {
+        /* Cramer's rule: p = (d_a (n_b x n_c) + d_b (n_c x n_a) +
+           d_c (n_a x n_b)) / (n_a . (n_b x n_c)), whose rounding grows
+           as 1 / |det| (the planes meet at a shallow angle): the margin
+           m grows with it. */
+        double x_bc[3], x_ca[3], x_ab[3];
+        cross3(h[b].n, h[c].n, x_bc);
+        cross3(h[c].n, h[a].n, x_ca);
+        cross3(h[a].n, h[b].n, x_ab);
+        double det = dot3(h[a].n, x_bc);
+        /* Unit normals this close to one plane meet nowhere worth
+           placing (two parallel faces give rounding residue here, and
+           a point 1e17 away). */
+        if (!(fabs(det) > 1e-10))
+          continue;
+        double p[3];
+        for (int k = 0; k < 3; k++)
+          p[k] = (h[a].d * x_bc[k] + h[b].d * x_ca[k] + h[c].d * x_ab[k]) /
+                 det;
+        double size = fmax(scale, fmax(fabs(p[0]),
+                                       fmax(fabs(p[1]), fabs(p[2]))));
+        double m = 1e-13 * size / fabs(det);
+        bool inside = isfinite(size) && isfinite(m);
+        for (int k = 0; k < n && inside; k++)
+          inside = dot3(h[k].n, p) <= h[k].d + 1e-9 * size + 4.0 * m;
+        if (!inside)
+          continue;
+        for (int k = 0; k < 3; k++) {
+          lo[k] = fmin(lo[k], p[k] - m);
+          hi[k] = fmax(hi[k], p[k] + m);
+        }
+      }
+  /* No vertex: a bounded polyhedron without one is empty, but the
+     narrowing is left to say so. */
+  if (!(lo[0] <= hi[0] && lo[1] <= hi[1] && lo[2] <= hi[2]))
+    return false;
+  for (int k = 0; k < 3; k++)
+    box->x[k] = (ival){widen_lo(lo[k]), widen_hi(hi[k])};
+  return true;
+}
+
 /* Narrows in frame (NULL: world) and intersects the world box [lo, hi]
-   with the result; false when that frame finds nothing finite. */
+   with the result; false when that frame finds nothing finite.  In the
+   world frame the narrowing starts from the box of the planes'
+   polyhedron, when that is bounded. */
 static bool narrow_in(const zr_object *node, const zr_transform *frame,
                       zr_vec3 *lo, zr_vec3 *hi, bool *empty) {
   box3 box = {.empty = false};
   for (int i = 0; i < 3; i++)
     box.x[i] = (ival){-INFINITY, INFINITY};
+  if (!frame) {
+    halfspace h[POLY_MAX];
+    polyhedron_box(h, collect_planes(node, h, 0), &box);
+  }
   for (int r = 0; r < ROUNDS && !box.empty; r++)
     for (size_t i = 0; i < node->u.csg.n_children && !box.empty; i++)
       narrow(node->u.csg.children[i], frame, &box);

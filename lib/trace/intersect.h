@@ -81,6 +81,16 @@ bool zr__object_bounds(const zr_object *object, zr_vec3 *lo, zr_vec3 *hi);
    else its bounded_by's box for a plain shape that is not inverted. */
 bool zr__primitive_bounds(const zr_object *object, zr_vec3 *lo,
                           zr_vec3 *hi);
+/* For an object that holds everything far enough away (an inverted
+   shape, a CSG part cut out by a difference): a box outside which it
+   holds every point, and which holds its surface, so that a ray that
+   misses the box cannot cross it.  It is the box of the un-inverted
+   object.  False when there is none: no inverted part, a clip, a shape
+   whose inside may reach beyond its box (a disc's half-space, a height
+   field below its lowest sample), or a CSG part whose children's boxes
+   (prepare.c, read from u.csg.boxes) do not give one. */
+bool zr__complement_bounds(const zr_object *object, zr_vec3 *lo,
+                           zr_vec3 *hi);
 /* The CSG part's box before its own clip, kept in its u.csg.whole
    (NULL before) when the scene is prepared: zr__object_bounds() then
    reads it instead of narrowing it from the children again. */

@@ -109,7 +109,11 @@ static zr_object *resolve_part(zr_scene *scene, const zr_object *object,
   /* The children's boxes, for lib/trace/csg.c to skip the children a
      ray or a point is clear of (a difference of unions of a few hundred
      parts, as in the corpus' spacecraft scenes, tested every part for
-     every ray).  A clip added later only shrinks a child. */
+     every ray).  A clip added later only shrinks a child.  A child cut
+     out (inverted) has no box of its own but holds all that lies
+     outside the box of its un-inverted shape (the corpus' BAMSSLB2: a
+     slab minus chars.inc's letters tested every part of every letter
+     for every ray and every point on the slab). */
   copy->u.csg.boxes =
       zr__arena_alloc(&scene->arena, n * sizeof *copy->u.csg.boxes);
   if (!copy->u.csg.boxes)
@@ -117,6 +121,10 @@ static zr_object *resolve_part(zr_scene *scene, const zr_object *object,
   for (size_t i = 0; i < n; i++) {
     struct zr_csg_box *b = &copy->u.csg.boxes[i];
     b->bounded = zr__object_bounds(copy->u.csg.children[i], &b->lo, &b->hi);
+    b->holds_outside = false;
+    if (!b->bounded)
+      b->bounded = b->holds_outside = zr__complement_bounds(
+          copy->u.csg.children[i], &b->lo, &b->hi);
   }
   if (zr__csg_tree_build(&scene->arena, copy) != ZR_OK ||
       zr__csg_keep_whole_box(&scene->arena, copy) != ZR_OK)
