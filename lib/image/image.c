@@ -548,10 +548,33 @@ ZR_API int zr_image_format_supported(zr_image_format format) {
   return 0;
 }
 
+ZR_API void zr_image_set_rows_wait(zr_image *image, zr_image_rows_fn wait,
+                                   void *user) {
+  if (image) {
+    image->rows_wait = wait;
+    image->rows_user = wait ? user : NULL;
+  }
+}
+
+zr_status zr__image_wait_rows(const zr_image *image, int rows) {
+  if (!image->rows_wait)
+    return ZR_OK;
+  return image->rows_wait(rows, image->rows_user) == 0 ? ZR_OK
+                                                         : ZR_ECANCELLED;
+}
+
 static zr_status encode(zr_context *ctx, const zr_image *image,
                         const char *path, const zr_image_encoding *e,
                         FILE *f) {
   double g = e->assumed_gamma;
+  /* PNG reads its rows one after the other as they are final; the other
+     formats wait for the whole image first. */
+  if (e->format != ZR_FORMAT_PNG8 && e->format != ZR_FORMAT_PNG16) {
+    zr_status s = zr__image_wait_rows(image, image->height);
+    if (s != ZR_OK)
+      return zr__diag(ctx, ZR_DIAG_ERROR, s, NULL, "%s: %s", path,
+                      zr_status_str(s));
+  }
   switch (e->format) {
   case ZR_FORMAT_PNG8:
     return zr__png_encode(ctx, path, image, 8, e->alpha, g, f);
