@@ -990,7 +990,8 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
   double band_time = 0;   /* seconds a band took, last chunk */
   int multi = par->uses_mpi && par->size > 1;
   /* Rank 0 with a writer, on a whole image of colours alone: the rows
-     of job->image are told to the writer as they become final, and the
+     of job->image are told to the writer as they become final from the
+     tail on (at the end without one), and the
      last bands of the last pass go to the other ranks alone (first 1)
      from band tail_from on, which rank 0 sets once it has timed a chunk
      of that pass, and every rank learns with the chunk. */
@@ -1034,8 +1035,10 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
             double enc = job->write_row_seconds * pr.band_rows;
             double alone = pass_seconds / pass_bands * par->size /
                            (par->size - 1);
-            int k = (int)((double)left * enc / (alone + enc));
-            if (k >= 1 && k < left)
+            int k = (int)floor((double)left * enc / (alone + enc) + 0.5);
+            if (k > left - 1)
+              k = left - 1; /* a chunk of every rank first */
+            if (k >= 1)
               tail_from = pr.bands - k;
           }
         }
@@ -1109,8 +1112,12 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
       b = e;
       if (s == ZR_OK && par->rank == 0 && job->band_done)
         job->band_done(&pr, job->band_user);
-      if (s == ZR_OK && feed && last) {
-        /* The rows above the first band still to do are final. */
+      if (s == ZR_OK && feed && last && b >= tail_from) {
+        /* The rows above the first band still to do are final: told
+           from the tail on, when rank 0 has nothing else to do (told
+           sooner, the encoder took processor time from the ranks'
+           renders: 3 threads on 2 cores, and rank 0 idle in the
+           tail). */
         int f = 0;
         while (f < pr.bands && pr.done[p][f])
           f++;
