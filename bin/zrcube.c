@@ -46,6 +46,7 @@
 #include "state.h"
 #include "par/bundle.h"
 #include "par/par.h"
+#include "par/writer.h"
 #include "zrcube.h"
 
 enum { EXIT_SCENE = 1, EXIT_USAGE = 2 };
@@ -833,14 +834,20 @@ static void print_radiosity_stats(const run *r) {
 /* Writes an image of the scene as POV-Ray would: the scene's working
    gamma undone, then the file gamma (File_Gamma, sRGB by default), or
    none at all in a legacy scene (zr_scene_file_gamma). */
-static zr_status write_image(run *r, const zr_image *image,
-                             const char *path, zr_image_format format) {
+static zr_status write_image_in(zr_context *ctx, run *r,
+                                const zr_image *image, const char *path,
+                                zr_image_format format) {
   zr_image_encoding enc;
   zr_scene_image_encoding(r->scene, format, &enc);
   if (enc.file_gamma <= 0.0)
     enc.file_gamma = r->opts.file_gamma;
   enc.quality = r->opts.jpeg_quality;
-  return zr_image_save(r->ctx, image, path, &enc);
+  return zr_image_save(ctx, image, path, &enc);
+}
+
+static zr_status write_image(run *r, const zr_image *image,
+                             const char *path, zr_image_format format) {
+  return write_image_in(r->ctx, r, image, path, format);
 }
 
 /* --radiosity-mesh=FILE: the solution's mesh at the render's size, on
@@ -1233,6 +1240,61 @@ static int load_state(run *r, zr_par_progress *resume, int *have) {
   return 0;
 }
 
+/*
+ * The write on the writer's thread (par/writer.h): a context of its own,
+ * without the diagnostics callback (the main thread prints meanwhile),
+ * whose last error the main thread prints after the render.
+ */
+typedef struct thread_write {
+  run *r;
+  zr_context *ctx;
+} thread_write;
+
+static zr_status save_on_thread(zr_image *image, void *user) {
+  thread_write *t = user;
+  return write_image_in(t->ctx, t->r, image, t->r->output_path,
+                        t->r->format);
+}
+
+/*
+ * Rank 0 under mpirun, a PNG file of the whole image with colours alone:
+ * its write starts before the render and encodes rows as they are
+ * final while the other ranks render the last bands (zr__par_render's
+ * writer).  About 45 ns a pixel here (bench/write_rows.sh: a PNG write
+ * of 2048x1536 and 2048x2048 images at the default level, 0.12-0.14
+ * and 0.18-0.19 s, 39-45 ns a pixel at loads 8-16), which sizes the
+ * bands left to the other ranks.  Returns 1 when started.
+ */
+#define WRITE_PIXEL_SECONDS 45e-9
+
+static int start_writer(run *r, thread_write *t, zr_par_writer **w) {
+  *w = NULL;
+  t->r = r;
+  t->ctx = NULL;
+  if (r->rank != 0 || zr__par_size(r->par) < 2 || !r->opts.write_output ||
+      r->opts.to_stdout || r->path || r->opts.params.alpha ||
+      r->row0 != 0 || r->row1 != r->opts.params.height || r->col0 != 0 ||
+      r->col1 != r->opts.params.width ||
+      (r->format != ZR_FORMAT_PNG8 && r->format != ZR_FORMAT_PNG16))
+    return 0;
+  if (zr_context_new(&t->ctx) != ZR_OK)
+    return 0;
+  zr_context_set_png_level(t->ctx, r->opts.png_level);
+  if (zr__par_writer_start(r->image, save_on_thread, t, w) != ZR_OK) {
+    zr_context_free(t->ctx);
+    t->ctx = NULL;
+    return 0;
+  }
+  r->render.writer = *w;
+  /* ZRCUBE_WRITE_PIXEL_SECONDS replaces the estimate (the tests make
+     small renders leave most bands to the other ranks with it). */
+  const char *given = getenv("ZRCUBE_WRITE_PIXEL_SECONDS");
+  double pixel = given && *given ? strtod(given, NULL) : WRITE_PIXEL_SECONDS;
+  r->render.write_row_seconds =
+      (pixel > 0 ? pixel : 0) * (double)r->opts.params.width;
+  return 1;
+}
+
 /* Step 5: render and write. */
 static int render_and_write(run *r) {
   const zr_render_params *params = &r->opts.params;
@@ -1271,10 +1333,22 @@ static int render_and_write(run *r) {
     return EXIT_SCENE;
   if (have)
     r->render.resume = &resume;
+  thread_write tw;
+  zr_par_writer *writer = NULL;
+  r->render.writer = NULL;
+  r->render.write_row_seconds = 0;
+  int threaded = start_writer(r, &tw, &writer);
   double cpu = zr__par_cpu();
   s = r->path ? render_path(r) : zr__par_render(r->par, &r->render);
   r->render_cpu = zr__par_cpu() - cpu;
   zr__state_free(&resume);
+  zr_status written = ZR_OK;
+  double write_start = zr__par_now();
+  if (threaded) {
+    /* The rest of the write, or its end after a failed render. */
+    written = zr__par_writer_finish(writer, s != ZR_OK);
+    r->render.writer = NULL;
+  }
   if (r->progress.line_open && s == ZR_OK) {
     fputs("\n", stderr);
     r->progress.line_open = 0;
@@ -1292,16 +1366,28 @@ static int render_and_write(run *r) {
       else
         fprintf(stderr, "zrcube: rendering failed: %s\n", zr_status_str(s));
     }
+    if (threaded)
+      zr_context_free(tw.ctx);
     return EXIT_SCENE;
   }
   s = ZR_OK;
   if (r->rank == 0 && r->opts.write_output) {
-    double start = zr__par_now();
+    /* With a writer, the time rank 0 still took to write after the
+       render. */
+    double start = threaded ? write_start : zr__par_now();
     unsigned before = r->diag.errors_printed;
     if (r->opts.to_stdout) {
       s = write_to_stdout(r);
     } else {
-      s = write_image(r, r->image, r->output_path, r->format);
+      if (threaded) {
+        s = written;
+        if (s != ZR_OK && *zr_context_last_error(tw.ctx)) {
+          emit(&r->diag, ZR_CLI_STREAM_FATAL, zr_context_last_error(tw.ctx));
+          r->diag.errors_printed++;
+        }
+      } else {
+        s = write_image(r, r->image, r->output_path, r->format);
+      }
       if (s != ZR_OK && r->diag.errors_printed == before)
         fprintf(stderr, "zrcube: cannot write '%s': %s\n", r->output_path,
                 zr_status_str(s));
@@ -1311,13 +1397,16 @@ static int render_and_write(run *r) {
       zr__state_remove(r->state_path);
     r->write_seconds = zr__par_now() - start;
   }
+  if (threaded)
+    zr_context_free(tw.ctx);
   return zr__par_agree(r->par, s) == ZR_OK ? -1 : EXIT_SCENE;
 }
 
 /* -v under mpirun: each phase's time and what this rank sent, one
    line a rank on stderr, for bench/scale.sh's model; "process" is the
    CPU the whole process has taken so far (its start-up, MPI's included,
-   the phases and the image written), the whole-process figure. */
+   the phases and the image written), the whole-process figure; "tail
+   bands" are those the ranks but 0 rendered while rank 0 wrote. */
 static void print_rank_times(const run *r) {
   zr_par_traffic t;
   zr__par_get_traffic(r->par, &t);
@@ -1325,7 +1414,8 @@ static void print_rank_times(const run *r) {
           "zrcube: rank %d: wall s: parse %.4f gi %.4f radiosity %.4f "
           "render %.4f gather %.4f exchange %.4f; cpu s: parse %.4f "
           "gi %.4f radiosity %.4f render %.4f exchange %.4f process %.4f; "
-          "sent B: scene %llu solution %llu pixels %llu; exchanges %llu\n",
+          "sent B: scene %llu solution %llu pixels %llu; exchanges %llu; "
+          "tail bands %d\n",
           r->rank, r->parse_seconds, r->gi_seconds, r->radiosity_seconds,
           r->render.render_seconds, r->render.gather_seconds,
           t.team_seconds, r->parse_cpu, r->gi_cpu, r->radiosity_cpu,
@@ -1333,7 +1423,7 @@ static void print_rank_times(const run *r) {
           (unsigned long long)t.bcast_bytes_sent,
           (unsigned long long)t.team_bytes_sent,
           (unsigned long long)t.pixel_bytes_sent,
-          (unsigned long long)t.team_calls);
+          (unsigned long long)t.team_calls, r->render.tail_bands);
 }
 
 /* A time as POV-Ray's statistics give it. */

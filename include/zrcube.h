@@ -958,6 +958,20 @@ ZR_API zr_status zr_image_add_alpha(zr_image *image);
 /* The alpha channel, or NULL when the image has none. */
 ZR_API float *zr_image_alpha(zr_image *image);
 
+/*
+ * An image still being made (rows arriving from a renderer while it is
+ * written): every writer (zr_image_write, _save, _encode, _write_file)
+ * calls wait(rows, user) before it reads row rows - 1 (PNG, row after
+ * row) or before it reads any row (the other formats, with rows the
+ * height), and reads on when wait returns 0, the rows 0 .. rows - 1 and
+ * their alpha being final; a nonzero return fails the write with
+ * ZR_ECANCELLED.  wait runs on the writing thread.  NULL: no waiting
+ * (the default).
+ */
+typedef int (*zr_image_rows_fn)(int rows, void *user);
+ZR_API void zr_image_set_rows_wait(zr_image *image, zr_image_rows_fn wait,
+                                   void *user);
+
 /* How an image is encoded: zr_image_encoding_init() gives the defaults. */
 typedef struct zr_image_encoding {
   zr_image_format format; /* not ZR_FORMAT_AUTO */

@@ -135,6 +135,25 @@ sent=$(sed -n 's/.*rank 1: .*pixels \([0-9]*\);.*/\1/p' sparse_bytes.err)
 if [ -z "$sent" ] || [ "$sent" -lt 17664 ] || [ "$sent" -ge 35328 ]; then
   fail "sparse_bytes: rank 1 sent '$sent' pixel bytes, expected 17664 to 35327"
 fi
+# Rank 0 encodes the PNG while the other ranks render the last bands
+# alone (lib/par/writer.h): ZRCUBE_WRITE_PIXEL_SECONDS makes the
+# encoder look slow, so that most bands go to them; the same bytes with
+# and without antialiasing, and -v says the ranks rendered a tail.
+ZRCUBE_WRITE_PIXEL_SECONDS=1e-3
+export ZRCUBE_WRITE_PIXEL_SECONDS
+for n in 2 3; do
+  mpi "tail_n$n" 0 "$n" scene.pov +Linc $SIZE -v +WT1 "+Otail_n$n.png"
+  same ref.png "tail_n$n.png"
+  mpi "tail_aa_n$n" 0 "$n" scene.pov +Linc $SIZE +A0.1 -v +WT1 \
+    "+Otail_aa_n$n.png"
+  same ref_aa.png "tail_aa_n$n.png"
+  for t in "tail_n$n" "tail_aa_n$n"; do
+    bands=$(sed -n 's/.*rank 0: .*; tail bands \([0-9]*\)$/\1/p' "$t.err")
+    [ -n "$bands" ] && [ "$bands" -gt 0 ] ||
+      fail "$t: rank 0 rendered every band ('$bands' bands of tail)"
+  done
+done
+unset ZRCUBE_WRITE_PIXEL_SECONDS
 # GNU spellings make the same picture.
 serial long 0 "$ZRCUBE" --input=scene.pov --include-path inc --width=64 \
   --height=48 --antialias=0.1 --threads=2 --output=long.png

@@ -11,6 +11,7 @@
  *   outside/   neither: secret.txt
  *   extra/     a folder the tests add as a read or write path
  */
+#define _GNU_SOURCE /* O_TMPFILE */
 #include "config.h"
 
 #include <setjmp.h>
@@ -24,7 +25,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <dirent.h>
+#include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include "core/context.h"
@@ -406,6 +411,88 @@ static void test_iopolicy_output_target(void **state) {
   free(tmp);
 }
 
+/* Entries of the working folder whose name holds ".tmp". */
+static int temp_names(void) {
+  DIR *d = opendir(".");
+  assert_non_null(d);
+  int n = 0;
+  struct dirent *e;
+  while ((e = readdir(d)) != NULL)
+    n += strstr(e->d_name, ".tmp") != NULL;
+  closedir(d);
+  return n;
+}
+
+/* Whether this folder's file system makes unnamed files. */
+static int folder_has_tmpfile(void) {
+#if defined(O_TMPFILE)
+  if (access("/proc/self/fd", X_OK) != 0)
+    return 0;
+  int fd = open(".", O_TMPFILE | O_WRONLY, 0600);
+  if (fd < 0)
+    return 0;
+  close(fd);
+  return 1;
+#else
+  return 0;
+#endif
+}
+
+/* zr__io_temp_open: the file has no name while written (where the file
+   system allows), gets target.PID.N.tmp when kept, and leaves nothing
+   when dropped or when the process is killed while writing. */
+static void test_iopolicy_temp_unnamed(void **state) {
+  (void)state;
+  int unnamed = folder_has_tmpfile();
+  zr_io_temp t;
+  assert_int_equal(zr__io_temp_open(&t, "pic.png"), 0);
+  assert_int_equal(t.named, !unnamed);
+  assert_int_equal(temp_names(), t.named);
+  assert_int_equal(fputs("picture", t.f) >= 0, 1);
+  assert_int_equal(zr__io_temp_close(&t, 1), 0);
+  assert_int_equal(t.named, 1);
+  assert_non_null(strstr(t.name, "pic.png."));
+  assert_int_equal(temp_names(), 1);
+  assert_int_equal(rename(t.name, "pic.png"), 0);
+  zr__io_temp_free(&t);
+  FILE *f = fopen("pic.png", "rb");
+  assert_non_null(f);
+  char got[16] = {0};
+  assert_int_equal(fread(got, 1, sizeof got, f), 7);
+  fclose(f);
+  assert_string_equal(got, "picture");
+  /* Its mode is a new file's (0666 less the umask), as a named one. */
+  mode_t mask = umask(0);
+  umask(mask);
+  struct stat st;
+  assert_int_equal(stat("pic.png", &st), 0);
+  assert_int_equal(st.st_mode & 0777, 0666 & ~mask);
+
+  /* Dropped: nothing left. */
+  assert_int_equal(zr__io_temp_open(&t, "pic.png"), 0);
+  fputs("half", t.f);
+  assert_int_equal(zr__io_temp_close(&t, 0), 0);
+  zr__io_temp_free(&t);
+  assert_int_equal(temp_names(), 0);
+
+  /* Killed while writing (kill -9 under mpirun). */
+  pid_t child = fork();
+  assert_true(child >= 0);
+  if (child == 0) {
+    zr_io_temp c;
+    if (zr__io_temp_open(&c, "pic.png") != 0)
+      _exit(3);
+    fputs("half", c.f);
+    fflush(c.f);
+    raise(SIGKILL);
+    _exit(4);
+  }
+  int status = 0;
+  assert_int_equal(waitpid(child, &status, 0), child);
+  assert_true(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL);
+  assert_int_equal(temp_names(), unnamed ? 0 : 1);
+}
+
 /* The observer sees what the library's reader read, and may veto it. */
 typedef struct seen {
   char path[PATH_MAX];
@@ -566,6 +653,7 @@ int main(void) {
       T(test_iopolicy_observer),
       T(test_iopolicy_scene_on_disk),
       T(test_iopolicy_relative_reads),
+      T(test_iopolicy_temp_unnamed),
 #undef T
   };
   return cmocka_run_group_tests(tests, NULL, NULL);

@@ -20,6 +20,7 @@
 #include "par/par.h"
 #include "par/pool.h"
 #include "par/rows.h"
+#include "par/writer.h"
 #include "zrcube.h"
 
 /* ---- rows ---------------------------------------------------------- */
@@ -513,6 +514,109 @@ static void test_par_world_of_one_renders_large_image(void **state) {
   zr__par_finalize(par);
 }
 
+/* ---- the writer (par/writer.h) ------------------------------------ */
+
+typedef struct encoded {
+  unsigned char *bytes;
+  size_t size;
+} encoded;
+
+static zr_status encode_png(zr_image *image, void *user) {
+  encoded *e = user;
+  zr_image_encoding enc;
+  zr_image_encoding_init(&enc, ZR_FORMAT_PNG8);
+  return zr_image_encode(NULL, image, &enc, &e->bytes, &e->size);
+}
+
+/* A gradient's row y, the value it gets once "rendered". */
+static void fill_row(zr_image *image, int y) {
+  int w = zr_image_width(image);
+  float *row = zr_image_pixels(image) + (size_t)y * (size_t)w * 3;
+  for (int i = 0; i < w * 3; i++)
+    row[i] = (float)((y * 7 + i) % 97) / 96.0f;
+}
+
+/* The encoder waits for each row: rows filled only after the writer
+   started, each told final after it is filled, give the bytes of the
+   whole image encoded afterwards; an abandoned write fails. */
+static void test_par_writer_waits_for_rows(void **state) {
+  (void)state;
+  int w = 37, h = 29;
+  zr_image *image;
+  assert_int_equal(zr_image_new(w, h, &image), ZR_OK);
+  encoded got = {NULL, 0};
+  zr_par_writer *writer;
+  assert_int_equal(zr__par_writer_start(image, encode_png, &got, &writer),
+                   ZR_OK);
+  for (int y = 0; y < h; y++) {
+    if (y % 5 == 0)
+      usleep(2000); /* an encoder that did not wait would be ahead */
+    fill_row(image, y);
+    zr__par_writer_rows(writer, y + 1);
+    assert_int_equal(zr__par_writer_rows_done(writer), y + 1);
+  }
+  assert_int_equal(zr__par_writer_finish(writer, 0), ZR_OK);
+  encoded want = {NULL, 0};
+  assert_int_equal(encode_png(image, &want), ZR_OK);
+  assert_int_equal(got.size, want.size);
+  assert_memory_equal(got.bytes, want.bytes, want.size);
+  free(got.bytes);
+
+  /* Abandoned with rows still missing: the write fails, the image is
+     ungated (a later write does not wait). */
+  encoded none = {NULL, 0};
+  assert_int_equal(zr__par_writer_start(image, encode_png, &none, &writer),
+                   ZR_OK);
+  zr__par_writer_rows(writer, h / 2);
+  assert_int_equal(zr__par_writer_finish(writer, 1), ZR_ECANCELLED);
+  assert_null(none.bytes);
+  encoded again = {NULL, 0};
+  assert_int_equal(encode_png(image, &again), ZR_OK);
+  assert_int_equal(again.size, want.size);
+  assert_memory_equal(again.bytes, want.bytes, want.size);
+  free(again.bytes);
+  free(want.bytes);
+  zr_image_free(image);
+}
+
+/* A render with a writer in a world of one: the writer is told the rows
+   as they are final and writes the render's picture. */
+static void test_par_world_of_one_feeds_writer(void **state) {
+  render_fixture *f = *state;
+  zr_par *par;
+  assert_int_equal(zr__par_init(NULL, NULL, &par), ZR_OK);
+  for (int aa = 0; aa < 2; aa++) {
+    f->params.antialias = aa;
+    f->params.aa_threshold = 0.1;
+    zr_image *image;
+    assert_int_equal(zr_image_new(f->params.width, f->params.height, &image),
+                     ZR_OK);
+    encoded got = {NULL, 0};
+    zr_par_writer *writer;
+    assert_int_equal(
+        zr__par_writer_start(image, encode_png, &got, &writer), ZR_OK);
+    zr_par_render job = {.scene = f->scene,
+                         .params = &f->params,
+                         .threads = 2,
+                         .image = image,
+                         .writer = writer,
+                         .write_row_seconds = 1.0};
+    assert_int_equal(zr__par_render(par, &job), ZR_OK);
+    assert_int_equal(zr__par_writer_rows_done(writer), f->params.height);
+    assert_int_equal(job.tail_bands, 0); /* one rank: no tail */
+    assert_int_equal(zr__par_writer_finish(writer, 0), ZR_OK);
+    encoded want = {NULL, 0};
+    assert_int_equal(encode_png(image, &want), ZR_OK);
+    assert_int_equal(got.size, want.size);
+    assert_memory_equal(got.bytes, want.bytes, want.size);
+    free(got.bytes);
+    free(want.bytes);
+    zr_image_free(image);
+  }
+  f->params.antialias = 0;
+  zr__par_finalize(par);
+}
+
 int main(void) {
   /* The world-of-one test must not think mpirun started it. */
   unsetenv("OMPI_COMM_WORLD_SIZE");
@@ -541,6 +645,9 @@ int main(void) {
       cmocka_unit_test_setup_teardown(
           test_par_world_of_one_renders_large_image, setup_render,
           teardown_render),
+      cmocka_unit_test(test_par_writer_waits_for_rows),
+      cmocka_unit_test_setup_teardown(test_par_world_of_one_feeds_writer,
+                                      setup_render, teardown_render),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

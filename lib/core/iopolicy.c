@@ -31,6 +31,7 @@
  * Reasons for a refusal name the path and the rule, never the file's
  * contents: a refused file is not read at all.
  */
+#define _GNU_SOURCE /* O_TMPFILE, linkat */
 #include "config.h"
 
 #include "core/arena.h"
@@ -590,4 +591,114 @@ FILE *zr__io_open_temp(const char *target, char **tmp) {
   free(name);
   errno = e;
   return NULL;
+}
+
+/* The folder of target ("." for a bare name), malloc'ed. */
+static char *folder_of(const char *target) {
+  const char *slash = strrchr(target, '/');
+  if (!slash)
+    return strdup(".");
+  size_t n = slash == target ? 1 : (size_t)(slash - target);
+  char *dir = malloc(n + 1);
+  if (dir) {
+    memcpy(dir, target, n);
+    dir[n] = '\0';
+  }
+  return dir;
+}
+
+int zr__io_temp_open(zr_io_temp *t, const char *target) {
+  t->f = NULL;
+  t->name = NULL;
+  t->named = 0;
+  t->target_len = 0;
+#ifdef O_TMPFILE
+  /* The unnamed file is named by linking /proc/self/fd/N: without
+     /proc, the named file from the start. */
+  if (access("/proc/self/fd", X_OK) == 0) {
+    char *dir = folder_of(target);
+    size_t n = strlen(target) + 64;
+    t->name = malloc(n);
+    if (!dir || !t->name) {
+      free(dir);
+      free(t->name);
+      t->name = NULL;
+      errno = ENOMEM;
+      return -1;
+    }
+    t->target_len = strlen(target);
+    memcpy(t->name, target, t->target_len + 1);
+    int fd = open(dir, O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
+    free(dir);
+    if (fd >= 0) {
+      t->f = fdopen(fd, "wb");
+      if (t->f)
+        return 0;
+      int e = errno;
+      close(fd);
+      free(t->name);
+      t->name = NULL;
+      errno = e;
+      return -1;
+    }
+    free(t->name);
+    t->name = NULL;
+    /* EISDIR, EOPNOTSUPP, EINVAL ...: a kernel or file system without
+       O_TMPFILE; any other error, the named file says it again. */
+  }
+#endif
+  t->f = zr__io_open_temp(target, &t->name);
+  t->named = t->f != NULL;
+  return t->f ? 0 : -1;
+}
+
+int zr__io_temp_close(zr_io_temp *t, int keep) {
+  int rc = 0, e = 0;
+  if (!t->f)
+    return 0;
+  if (keep && fflush(t->f) != 0) {
+    rc = -1;
+    e = errno;
+    keep = 0;
+  }
+  if (keep && !t->named) {
+    /* The name zr__io_open_temp would have given, target.PID.N.tmp
+       (t->name holds the target and 64 bytes more). */
+    char proc[64];
+    snprintf(proc, sizeof proc, "/proc/self/fd/%d", fileno(t->f));
+    rc = -1;
+    e = EEXIST;
+    for (int attempt = 0; attempt < 100 && e == EEXIST; attempt++) {
+      snprintf(t->name + t->target_len, 64, ".%ld.%d.tmp", (long)getpid(),
+               attempt);
+      if (linkat(AT_FDCWD, proc, AT_FDCWD, t->name, AT_SYMLINK_FOLLOW) ==
+          0) {
+        rc = 0;
+        e = 0;
+        t->named = 1;
+      } else {
+        e = errno;
+      }
+    }
+    if (rc != 0)
+      keep = 0;
+  }
+  if (fclose(t->f) != 0 && rc == 0) {
+    rc = -1;
+    e = errno;
+  }
+  t->f = NULL;
+  if (rc != 0 || !keep) {
+    if (t->named)
+      unlink(t->name);
+    t->named = 0;
+  }
+  if (rc != 0)
+    errno = e;
+  return rc;
+}
+
+void zr__io_temp_free(zr_io_temp *t) {
+  free(t->name);
+  t->name = NULL;
 }

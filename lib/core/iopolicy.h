@@ -92,4 +92,34 @@ zr_status zr__io_output_target(const char *path, char **target, char *why,
  */
 FILE *zr__io_open_temp(const char *target, char **tmp);
 
+/*
+ * A temporary file that has no name while it is written, where the
+ * system allows it (Linux's O_TMPFILE in the target's folder, named
+ * through /proc/self/fd when done): a process killed while writing
+ * (kill -9 under mpirun, where rank 0 writes as it renders) leaves
+ * nothing behind.  Elsewhere, or where the file system refuses
+ * O_TMPFILE, it is zr__io_open_temp's named file.  name is the name the
+ * file has or will have (target.PID.N.tmp); named says whether it
+ * exists yet.
+ */
+typedef struct zr_io_temp {
+  FILE *f;
+  char *name;
+  int named;
+  size_t target_len; /* name's first target_len bytes are the target */
+} zr_io_temp;
+
+/* Opens t beside target; -1 with errno set on failure. */
+int zr__io_temp_open(zr_io_temp *t, const char *target);
+
+/*
+ * Ends the write: with keep, the file gets its name (t->name, to be
+ * renamed over the target by the caller) and is closed; without, it is
+ * closed and any name removed.  -1 with errno set if the write or the
+ * naming failed (the name is then removed).  t->name stays allocated
+ * until zr__io_temp_free.
+ */
+int zr__io_temp_close(zr_io_temp *t, int keep);
+void zr__io_temp_free(zr_io_temp *t);
+
 #endif /* ZR_CORE_IOPOLICY_H */

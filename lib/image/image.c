@@ -572,10 +572,33 @@ ZR_API int zr_image_format_supported(zr_image_format format) {
   return 0;
 }
 
+ZR_API void zr_image_set_rows_wait(zr_image *image, zr_image_rows_fn wait,
+                                   void *user) {
+  if (image) {
+    image->rows_wait = wait;
+    image->rows_user = wait ? user : NULL;
+  }
+}
+
+zr_status zr__image_wait_rows(const zr_image *image, int rows) {
+  if (!image->rows_wait)
+    return ZR_OK;
+  return image->rows_wait(rows, image->rows_user) == 0 ? ZR_OK
+                                                         : ZR_ECANCELLED;
+}
+
 static zr_status encode(zr_context *ctx, const zr_image *image,
                         const char *path, const zr_image_encoding *e,
                         FILE *f) {
   double g = e->assumed_gamma, fg = e->file_gamma;
+  /* PNG reads its rows one after the other as they are final; the other
+     formats wait for the whole image first. */
+  if (e->format != ZR_FORMAT_PNG8 && e->format != ZR_FORMAT_PNG16) {
+    zr_status s = zr__image_wait_rows(image, image->height);
+    if (s != ZR_OK)
+      return zr__diag(ctx, ZR_DIAG_ERROR, s, NULL, "%s: %s", path,
+                      zr_status_str(s));
+  }
   switch (e->format) {
   case ZR_FORMAT_PNG8:
     return zr__png_encode(ctx, path, image, 8, e->alpha, g, fg, f);
@@ -729,26 +752,36 @@ ZR_API zr_status zr_image_save(zr_context *ctx, const zr_image *image,
                           zr_status_str(ts))
                : zr__diag(ctx, ZR_DIAG_ERROR, ts, NULL,
                           "cannot write the image: %s", why);
-  char *tmp = NULL;
-  FILE *f = zr__io_open_temp(target, &tmp);
-  if (!f) {
+  /* A write that waits for rows (zr_image_set_rows_wait: rank 0's
+     writer under mpirun, started with the render) makes its file only
+     once the first row is final, and the file has no name until it is
+     complete where the system allows (zr__io_temp_open): a process
+     killed meanwhile leaves no temporary file behind. */
+  zr_status ws = zr__image_wait_rows(image, 1);
+  if (ws != ZR_OK) {
+    free(target);
+    return zr__diag(ctx, ZR_DIAG_ERROR, ws, NULL, "%s: %s", path,
+                    zr_status_str(ws));
+  }
+  zr_io_temp tmp;
+  if (zr__io_temp_open(&tmp, target) != 0) {
     zr_status s = zr__diag(ctx, ZR_DIAG_ERROR, ZR_EIO, NULL,
                            "%s: cannot create a file in its folder: %s",
                            path, strerror(errno));
     free(target);
     return s;
   }
-  zr_status s = encode_flushed(ctx, image, path, &e, f);
-  if (fclose(f) != 0 && s == ZR_OK)
+  zr_status s = encode_flushed(ctx, image, path, &e, tmp.f);
+  if (zr__io_temp_close(&tmp, s == ZR_OK) != 0 && s == ZR_OK)
     s = zr__diag(ctx, ZR_DIAG_ERROR, ZR_EIO, NULL, "%s: write failed: %s",
                  path, strerror(errno));
-  if (s == ZR_OK && rename(tmp, target) != 0)
+  if (s == ZR_OK && rename(tmp.name, target) != 0)
     s = zr__diag(ctx, ZR_DIAG_ERROR, ZR_EIO, NULL,
-                 "%s: cannot rename %s to it: %s", path, tmp,
+                 "%s: cannot rename %s to it: %s", path, tmp.name,
                  strerror(errno));
-  if (s != ZR_OK)
-    unlink(tmp);
-  free(tmp);
+  if (s != ZR_OK && tmp.named)
+    unlink(tmp.name);
+  zr__io_temp_free(&tmp);
   free(target);
   return s;
 }

@@ -72,7 +72,15 @@ struct zr_image {
      read it (NULL: none) until the image is freed. */
   struct zr_budget *budget;
   size_t charged;
+  /* NULL, or the writers' wait for rows still being made
+     (zr_image_set_rows_wait). */
+  zr_image_rows_fn rows_wait;
+  void *rows_user;
 };
+
+/* Waits, where the image has a rows_wait, until rows 0 .. rows - 1 are
+   final; ZR_OK, or ZR_ECANCELLED when the maker gave up. */
+zr_status zr__image_wait_rows(const zr_image *image, int rows);
 
 /* ZR_IMAGE_MAX_SIDE and ZR_IMAGE_MAX_PIXELS (zrcube.h) keep a hostile
    header from asking for gigabytes. */

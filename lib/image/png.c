@@ -284,6 +284,11 @@ static zr_status encode_rows(png_job *job, const zr_image *image, int bits,
   if (bits == 8)
     zr__encoder8_init(&enc, assumed_gamma, file_gamma);
   for (int y = 0; y < image->height; y++) {
+    if (zr__image_wait_rows(image, y + 1) != ZR_OK) {
+      snprintf(job->message, sizeof job->message, "%s",
+               zr_status_str(ZR_ECANCELLED));
+      return ZR_ECANCELLED;
+    }
     const float *src = image->pixels + (size_t)y * image->width * 3;
     const float *a = alpha ? image->alpha + (size_t)y * image->width : NULL;
     /* Sample i of the row is channel c of pixel x (no division a

@@ -5,7 +5,8 @@ lib_par_libzrpar_la_SOURCES = \
 	lib/par/bundle.c lib/par/bundle.h \
 	lib/par/par.c lib/par/par.h \
 	lib/par/pool.c lib/par/pool.h \
-	lib/par/rows.c lib/par/rows.h
+	lib/par/rows.c lib/par/rows.h \
+	lib/par/writer.c lib/par/writer.h
 lib_par_libzrpar_la_CPPFLAGS = $(AM_CPPFLAGS) $(MPI_CFLAGS)
 lib_par_libzrpar_la_CFLAGS = $(AM_CFLAGS) $(PTHREAD_CFLAGS)
 lib_par_libzrpar_la_LIBADD = $(MPI_LIBS) $(PTHREAD_LIBS)

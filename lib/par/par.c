@@ -51,6 +51,7 @@
 
 #include "core/hugepage.h"
 #include "par/rows.h"
+#include "par/writer.h"
 
 struct zr_par {
   int uses_mpi;
@@ -493,6 +494,19 @@ static zr_status collect_rows(zr_par *par, const float *mine, float *image,
 }
 
 /*
+ * A band's rows among the ranks first .. n - 1 (first is 0, or 1 for
+ * the last bands, which rank 0 leaves to the others while it writes
+ * the image, zr__par_render): how many rank r takes, and its i-th.
+ */
+static int group_count(int height, int r, int first, int n) {
+  return r < first ? 0 : zr__rows_count(height, r - first, n - first);
+}
+
+static int group_row(int i, int r, int first, int n) {
+  return zr__rows_row(i, r - first, n - first);
+}
+
+/*
  * Pass 2's rows (mine, this rank's rows of the chunk's rows y0 .. y1 - 1
  * and columns x0 .. x1 - 1, interleaved as render_band made them) into
  * band on rank 0, sending only the pixels that differ from their pass-1
@@ -510,7 +524,8 @@ static zr_status collect_rows(zr_par *par, const float *mine, float *image,
 static zr_status collect_changes(zr_par *par, const float *mine, float *band,
                                  const float *centres, int image_width,
                                  int y0, int y1, int x0, int x1,
-                                 int channels, int root_in_place) {
+                                 int channels, int root_in_place,
+                                 int first) {
   int n = par->size, width = x1 - x0;
   size_t px_bytes = (size_t)channels * sizeof(float);
   size_t row_floats = (size_t)width * (size_t)channels;
@@ -520,11 +535,11 @@ static zr_status collect_changes(zr_par *par, const float *mine, float *band,
               (size_t)(x)) * (size_t)channels)
   int rows = root_in_place && par->rank == 0
                  ? 0
-                 : zr__rows_count(y1 - y0, par->rank, n);
+                 : group_count(y1 - y0, par->rank, first, n);
   size_t mask_bytes = ((size_t)rows * (size_t)width + 7) / 8;
   size_t changed = 0;
   for (int i = 0; i < rows; i++) {
-    int y = y0 + zr__rows_row(i, par->rank, n);
+    int y = y0 + group_row(i, par->rank, first, n);
     for (int x = 0; x < width; x++)
       changed += memcmp(mine + (size_t)i * row_floats + (size_t)x * channels,
                         CENTRE(y, x), px_bytes) != 0;
@@ -538,7 +553,7 @@ static zr_status collect_changes(zr_par *par, const float *mine, float *band,
     s = ZR_ENOMEM;
   unsigned char *at = pack + mask_bytes;
   for (int i = 0; s == ZR_OK && i < rows; i++) {
-    int y = y0 + zr__rows_row(i, par->rank, n);
+    int y = y0 + group_row(i, par->rank, first, n);
     for (int x = 0; x < width; x++) {
       const float *mp = mine + (size_t)i * row_floats + (size_t)x * channels;
       if (memcmp(mp, CENTRE(y, x), px_bytes) == 0)
@@ -585,7 +600,7 @@ static zr_status collect_changes(zr_par *par, const float *mine, float *band,
     par->traffic.pixel_bytes_sent += (uint64_t)mine_bytes;
   for (int r = root_in_place; s == ZR_OK && par->rank == 0 && r < n; r++) {
     /* Rank r's rows: the centres, then its changed pixels. */
-    int r_rows = zr__rows_count(y1 - y0, r, n);
+    int r_rows = group_count(y1 - y0, r, first, n);
     size_t r_mask = ((size_t)r_rows * (size_t)width + 7) / 8;
     const unsigned char *mask = all + displs[r], *end = mask + counts[r];
     const unsigned char *from = mask + r_mask;
@@ -594,7 +609,7 @@ static zr_status collect_changes(zr_par *par, const float *mine, float *band,
       break;
     }
     for (int i = 0; s == ZR_OK && i < r_rows; i++) {
-      int y = y0 + zr__rows_row(i, r, n);
+      int y = y0 + group_row(i, r, first, n);
       float *dst = band + (size_t)(y - y0) * row_floats;
       memcpy(dst, CENTRE(y, 0), row_floats * sizeof(float));
       for (int x = 0; x < width; x++) {
@@ -632,13 +647,16 @@ static zr_status collect_changes(zr_par *par, const float *mine, float *band,
  * a virtual one where first touching a page costs about 14 us, rank 0's
  * two extra copies of the image and their fresh pages were 12 to 27% of
  * its CPU in a 2-rank 2048x2048 render of bench/peers.sh's terrain
- * (perf; -v's gather 0.44 s wall).
+ * (perf; -v's gather 0.44 s wall).  With first 1 (not with everyone)
+ * the band was rendered by ranks 1 .. n - 1 alone, rank r's rows being
+ * r - 1, r - 1 + (n - 1), ... (group_row), and rank 0 only receives.
  */
 #define ROWS_TAG 15
 
 static zr_status exchange_rows(zr_par *par, const float *mine, float *band,
-                               int height, size_t row_floats, int everyone) {
-  int n = par->size, me = par->rank;
+                               int height, size_t row_floats, int everyone,
+                               int first) {
+  int n = par->size, me = par->rank, m = n - first;
   MPI_Datatype row = MPI_DATATYPE_NULL, spaced = MPI_DATATYPE_NULL;
   MPI_Request *req = malloc(2 * (size_t)n * sizeof *req);
   zr_status s = row_floats > (size_t)INT_MAX ? ZR_ELIMIT
@@ -649,21 +667,21 @@ static zr_status exchange_rows(zr_par *par, const float *mine, float *band,
     s = mpi_status(MPI_Type_contiguous((int)row_floats, MPI_FLOAT, &row));
   if (s == ZR_OK)
     s = mpi_status(MPI_Type_create_resized(
-        row, 0, (MPI_Aint)((size_t)n * row_floats * sizeof(float)),
+        row, 0, (MPI_Aint)((size_t)m * row_floats * sizeof(float)),
         &spaced));
   if (s == ZR_OK)
     s = mpi_status(MPI_Type_commit(&row));
   if (s == ZR_OK)
     s = mpi_status(MPI_Type_commit(&spaced));
-  int posted = 0, mine_rows = zr__rows_count(height, me, n);
+  int posted = 0, mine_rows = group_count(height, me, first, n);
   uint64_t sent = 0;
   for (int r = 0; s == ZR_OK && r < n; r++) {
     if (r == me)
       continue;
     int rc = MPI_SUCCESS;
-    if (everyone || me == 0)
-      rc = MPI_Irecv(band + (size_t)r * row_floats,
-                     zr__rows_count(height, r, n), spaced, r, ROWS_TAG,
+    if ((everyone || me == 0) && r >= first)
+      rc = MPI_Irecv(band + (size_t)(r - first) * row_floats,
+                     group_count(height, r, first, n), spaced, r, ROWS_TAG,
                      par->comm, &req[posted++]);
     if (rc == MPI_SUCCESS && everyone) {
       rc = MPI_Isend(band + (size_t)me * row_floats, mine_rows, spaced, r,
@@ -784,17 +802,20 @@ void zr__par_render_layout(const zr_par *par, const zr_par_render *job,
 }
 
 /* One pass over the rows y0 .. y1 - 1 and columns x0 .. x1 - 1 of this
-   rank (y0 + rank, + size, ...), into rows_rgb. */
+   rank (y0 + rank, + size, ...; with first 1, ranks 1 .. size - 1 share
+   them and rank 0 has none), into rows_rgb. */
 static zr_status render_band(zr_par *par, zr_par_render *job,
                              const float *centres, float *rows_rgb,
                              size_t row_stride, int y0, int y1, int x0,
                              int x1, size_t progress_base,
-                             size_t progress_total) {
+                             size_t progress_total, int first) {
+  if (par->rank < first)
+    return zr__par_agree(par, ZR_OK);
   zr_pool_job pool = {
       .scene = job->scene,
       .params = job->params,
-      .rank = par->rank,
-      .nranks = par->size,
+      .rank = par->rank - first,
+      .nranks = par->size - first,
       .centres = centres,
       .rows_rgb = rows_rgb,
       .row_stride = row_stride,
@@ -812,11 +833,11 @@ static zr_status render_band(zr_par *par, zr_par_render *job,
   return zr__par_agree(par, zr__pool_render(&pool));
 }
 
-/* Rank 0's n on every rank. */
-static zr_status share_int(zr_par *par, int *n) {
+/* Rank 0's v[0 .. count - 1] on every rank. */
+static zr_status share_ints(zr_par *par, int *v, int count) {
   if (!par->uses_mpi || par->size == 1)
     return ZR_OK;
-  return mpi_status(MPI_Bcast(n, 1, MPI_INT, 0, par->comm));
+  return mpi_status(MPI_Bcast(v, count, MPI_INT, 0, par->comm));
 }
 
 /* Copies a band's rows (x1 - x0 pixels each) into the full image. */
@@ -967,10 +988,23 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
   job->gather_seconds = 0;
   int chunk = 1;          /* bands in the next chunk (rank 0 decides) */
   double band_time = 0;   /* seconds a band took, last chunk */
+  int multi = par->uses_mpi && par->size > 1;
+  /* Rank 0 with a writer, on a whole image of colours alone: the rows
+     of job->image are told to the writer as they become final from the
+     tail on (at the end without one), and the
+     last bands of the last pass go to the other ranks alone (first 1)
+     from band tail_from on, which rank 0 sets once it has timed a chunk
+     of that pass, and every rank learns with the chunk. */
+  int whole = r0 == 0 && r1 == height && c0 == 0 && c1 == width;
+  int feed = par->rank == 0 && job->writer && channels == 3 && whole;
+  int tail_from = pr.bands;
+  double pass_seconds = 0; /* the last pass's chunks so far, wall */
+  int pass_bands = 0;      /* and their bands */
   for (int p = 0; p < pr.passes && s == ZR_OK; p++) {
     int lo = p == 0 ? p1r0 : r0, hi = p == 0 ? p1r1 : r1;
     int x0 = p == 0 ? p1c0 : c0, x1 = p == 0 ? p1c1 : c1;
     int everyone = p == 0 && aa;
+    int last = p == pr.passes - 1;
     float *target = everyone ? pr.centres : pr.image;
     int b = 0;
     while (b < pr.bands && s == ZR_OK) {
@@ -985,12 +1019,40 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
         else if (band_time > 0)
           chunk = (int)fmin(pr.bands, fmax(1.0, job->band_seconds /
                                                     band_time));
+        if (feed && multi && last && tail_from == pr.bands) {
+          /* The bands of this pass up to half of them first (a single
+             band is a poor measure: the top of a picture is often
+             sky), then the tail from their mean time. */
+          int half = pr.bands / 2;
+          if (b < half) {
+            chunk = (int)fmin(chunk, half - b);
+          } else if (pass_bands > 0 && job->write_row_seconds > 0) {
+            /* k bands of n - 1 ranks take about as long as the
+               encoder takes for the bands before them. */
+            int left = 0;
+            for (int k = b; k < pr.bands; k++)
+              left += !pr.done[p][k];
+            double enc = job->write_row_seconds * pr.band_rows;
+            double alone = pass_seconds / pass_bands * par->size /
+                           (par->size - 1);
+            int k = (int)floor((double)left * enc / (alone + enc) + 0.5);
+            if (k > left - 1)
+              k = left - 1; /* a chunk of every rank first */
+            if (k >= 1)
+              tail_from = pr.bands - k;
+          }
+        }
       }
-      s = zr__par_agree(par, share_int(par, &chunk));
+      int plan[2] = {chunk, tail_from};
+      s = zr__par_agree(par, share_ints(par, plan, 2));
       if (s != ZR_OK)
         break;
+      chunk = plan[0];
+      tail_from = plan[1];
+      int first = last && b >= tail_from ? 1 : 0;
       int e = b;
-      while (e < pr.bands && e - b < chunk && !pr.done[p][e])
+      while (e < pr.bands && e - b < chunk && !pr.done[p][e] &&
+             (first || !last || e < tail_from))
         e++;
       int y0 = b * pr.band_rows, y1 = e * pr.band_rows;
       y0 = y0 < lo ? lo : y0;
@@ -1002,7 +1064,6 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
            places (unless pass 2 of several ranks, which compares them
            with the centres first), the others' rows arrive in theirs
            (exchange_rows).  Every rank takes the same branch. */
-        int multi = par->uses_mpi && par->size > 1;
         int changes = p == 1 && multi;
         size_t row_floats = (size_t)width * (size_t)channels;
         float *dest = x0 == 0 && x1 == width && target
@@ -1014,23 +1075,25 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
         int root_in_place = changes && dest && par->rank == 0;
         float *rows = mine;
         size_t stride = 0;
-        if ((in_place || root_in_place) && dest) {
-          rows = dest + (size_t)par->rank * row_floats;
-          stride = (size_t)par->size * row_floats;
+        if ((in_place || root_in_place) && dest && par->rank >= first) {
+          rows = dest + (size_t)(par->rank - first) * row_floats;
+          stride = (size_t)(par->size - first) * row_floats;
         }
         s = render_band(par, job, p == 1 ? pr.centres : NULL, rows, stride,
-                        y0, y1, x0, x1, done_rows, total);
-        done_rows += (size_t)zr__rows_count(y1 - y0, par->rank, par->size);
+                        y0, y1, x0, x1, done_rows, total, first);
+        done_rows +=
+            (size_t)group_count(y1 - y0, par->rank, first, par->size);
         double gather_start = zr__par_now();
         float *into = dest ? dest : band;
         if (s == ZR_OK && changes)
           s = zr__par_agree(par, collect_changes(par, mine, into,
                                                  pr.centres, width, y0, y1,
                                                  x0, x1, channels,
-                                                 root_in_place));
+                                                 root_in_place, first));
         else if (s == ZR_OK && in_place && multi)
           s = zr__par_agree(par, exchange_rows(par, mine, dest, y1 - y0,
-                                               row_floats, everyone));
+                                               row_floats, everyone,
+                                               first));
         else if (s == ZR_OK && !in_place)
           s = zr__par_agree(par, collect_rows(par, mine, band, rank_major,
                                               x1 - x0, y1 - y0, channels,
@@ -1040,15 +1103,35 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
           place_band(band, target, width, y0, y1, x0, x1, channels);
       }
       band_time = (zr__par_now() - t0) / (double)(e - b);
+      if (last) {
+        pass_seconds += band_time * (double)(e - b);
+        pass_bands += e - b;
+      }
       for (int k = b; k < e; k++)
         pr.done[p][k] = 1;
       b = e;
       if (s == ZR_OK && par->rank == 0 && job->band_done)
         job->band_done(&pr, job->band_user);
+      if (s == ZR_OK && feed && last && b >= tail_from) {
+        /* The rows above the first band still to do are final: told
+           from the tail on, when rank 0 has nothing else to do (told
+           sooner, the encoder took processor time from the ranks'
+           renders: 3 threads on 2 cores, and rank 0 idle in the
+           tail). */
+        int f = 0;
+        while (f < pr.bands && pr.done[p][f])
+          f++;
+        zr__par_writer_rows(job->writer, f * pr.band_rows < height
+                                             ? f * pr.band_rows
+                                             : height);
+      }
     }
   }
+  job->tail_bands = pr.bands - tail_from;
   if (s == ZR_OK && par->rank == 0 && channels == 4)
     finish_alpha(pr.image, job->image);
+  if (s == ZR_OK && par->rank == 0 && job->writer)
+    zr__par_writer_rows(job->writer, height);
   if (channels == 4)
     free(pr.image);
   job->render_seconds = zr__par_now() - start;

@@ -130,6 +130,16 @@ typedef struct zr_par_render {
      band_done should take (0: one band at a time). */
   double band_seconds;
   double gather_seconds;   /* out: this rank's wait in the last gather */
+  /* Rank 0 (NULL elsewhere, and without one): the image's write,
+     running on its own thread (writer.h), told each time more rows of
+     job->image are final; with several ranks, the others then render
+     the last bands of the last pass without rank 0, as many as they
+     take about as long as the encoder takes for the rows before them,
+     at write_row_seconds a row (an estimate: bin/zrcube.c's is
+     measured by bench/write_rows.sh). */
+  struct zr_par_writer *writer;
+  double write_row_seconds;
+  int tail_bands;          /* out: the bands rendered without rank 0 */
 } zr_par_render;
 
 /* The passes, bands and band rows job will use (for a state file). */

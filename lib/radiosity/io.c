@@ -232,7 +232,7 @@ ZR_API zr_status zr_radiosity_save(zr_context *ctx, const zr_radiosity *rad,
      failure leaves an older save whole; a device or directory is
      refused by name. */
   char why[512];
-  char *target = NULL, *tmp = NULL;
+  char *target = NULL;
   zr_status ts = zr__io_output_target(path, &target, why, sizeof why);
   if (ts != ZR_OK) {
     free(order);
@@ -240,8 +240,10 @@ ZR_API zr_status zr_radiosity_save(zr_context *ctx, const zr_radiosity *rad,
                     "radiosity: cannot write '%s': %s", path,
                     ts == ZR_ENOMEM ? zr_status_str(ts) : why);
   }
-  FILE *f = zr__io_open_temp(target, &tmp);
-  if (f == NULL) {
+  /* With no name until complete where the system allows
+     (zr__io_temp_open): a killed process leaves nothing. */
+  zr_io_temp tmp;
+  if (zr__io_temp_open(&tmp, target) != 0) {
     zr_status s = zr__diag(ctx, ZR_DIAG_ERROR, ZR_EIO, NULL,
                            "radiosity: cannot write '%s': %s", path,
                            strerror(errno));
@@ -249,6 +251,7 @@ ZR_API zr_status zr_radiosity_save(zr_context *ctx, const zr_radiosity *rad,
     free(target);
     return s;
   }
+  FILE *f = tmp.f;
   fwrite(MAGIC, 1, 8, f);
   put_u32(f, VERSION);
   put_u64(f, rad->fingerprint);
@@ -270,16 +273,16 @@ ZR_API zr_status zr_radiosity_save(zr_context *ctx, const zr_radiosity *rad,
   free(order);
   bool bad = ferror(f) != 0;
   zr_status st = ZR_OK;
-  if (fclose(f) != 0 || bad)
+  if (zr__io_temp_close(&tmp, !bad) != 0 || bad)
     st = zr__diag(ctx, ZR_DIAG_ERROR, ZR_EIO, NULL,
                   "radiosity: error writing '%s'", path);
-  else if (rename(tmp, target) != 0)
+  else if (rename(tmp.name, target) != 0)
     st = zr__diag(ctx, ZR_DIAG_ERROR, ZR_EIO, NULL,
-                  "radiosity: cannot rename '%s' to '%s': %s", tmp, path,
-                  strerror(errno));
-  if (st != ZR_OK)
-    unlink(tmp);
-  free(tmp);
+                  "radiosity: cannot rename '%s' to '%s': %s", tmp.name,
+                  path, strerror(errno));
+  if (st != ZR_OK && tmp.named)
+    unlink(tmp.name);
+  zr__io_temp_free(&tmp);
   free(target);
   return st;
 }
