@@ -529,6 +529,30 @@ static void unboxed_free(zr_object *c) {
   free(c);
 }
 
+/* o and its copy without boxes (plain) give ray r the same crossings
+   (distance for distance, object for object), and with nearest the same
+   nearest crossing when only that is wanted; the count of crossings. */
+static int same_crossings(const zr_object *o, const zr_object *plain,
+                          const zr_ray *r, bool nearest) {
+  zr_hit a[ZR_MAX_CROSSINGS], b[ZR_MAX_CROSSINGS];
+  int na = zr__intersect(o, r, 0.0, INFINITY, a);
+  int nb = zr__intersect(plain, r, 0.0, INFINITY, b);
+  assert_int_equal(na, nb);
+  for (int i = 0; i < na; i++) {
+    assert_true(a[i].t == b[i].t);
+    assert_ptr_equal(a[i].object, b[i].object);
+  }
+  if (nearest) {
+    int n1 = zr__intersect_first(o, r, 0.0, INFINITY, true, a);
+    assert_int_equal(n1 > 0, nb > 0);
+    if (n1 > 0) {
+      assert_true(a[0].t == b[0].t);
+      assert_ptr_equal(a[0].object, b[0].object);
+    }
+  }
+  return na;
+}
+
 /* The children's boxes only skip work: a difference of unions of many
    parts (the corpus' spacecraft cells) gives the same crossings and
    inside tests with and without them, for rays and points all over. */
@@ -627,21 +651,7 @@ static void test_csg_child_tree_skips_work_only(void **state) {
     zr_vec3 org = zr_v3(4 * RND() - 2, 4 * RND() - 1, 4 * RND() - 2);
     zr_vec3 at = zr_v3(2 * RND() - 1, 0.5 + 0.4 * RND(), 2 * RND() - 1);
     zr_ray r = {org, zr_v3_sub(at, org)};
-    zr_hit a[ZR_MAX_CROSSINGS], b[ZR_MAX_CROSSINGS];
-    int na = zr__intersect(o, &r, 0.0, INFINITY, a);
-    int nb = zr__intersect(plain, &r, 0.0, INFINITY, b);
-    assert_int_equal(na, nb);
-    for (int i = 0; i < na; i++) {
-      assert_true(a[i].t == b[i].t);
-      assert_ptr_equal(a[i].object, b[i].object);
-    }
-    crossings += na;
-    na = zr__intersect_first(o, &r, 0.0, INFINITY, true, a);
-    assert_int_equal(na > 0, nb > 0);
-    if (na > 0) {
-      assert_true(a[0].t == b[0].t);
-      assert_ptr_equal(a[0].object, b[0].object);
-    }
+    crossings += same_crossings(o, plain, &r, true);
     bool in = zr__inside(o, at);
     assert_true(in == zr__inside(plain, at));
     assert_true(zr__inside(inter, at) ==
@@ -693,17 +703,11 @@ static void test_csg_narrowed_children_skip_work_only(void **state) {
       if (k % 7 == 3)
         dir.x = 0.0;
       zr_ray r = {org, dir};
-      zr_hit a[ZR_MAX_CROSSINGS], b[ZR_MAX_CROSSINGS];
-      int na = zr__intersect(o, &r, 0.0, INFINITY, a);
-      int nb = zr__intersect(plain, &r, 0.0, INFINITY, b);
-      assert_int_equal(na, nb);
-      for (int i = 0; i < na; i++) {
-        assert_true(a[i].t == b[i].t);
-        assert_ptr_equal(a[i].object, b[i].object);
-      }
+      same_crossings(o, plain, &r, false);
       /* A shadow ray's interval, ending short of the far side. */
-      na = zr__intersect_t(o, &r, 0.0, 0.9, a);
-      nb = zr__intersect_t(plain, &r, 0.0, 0.9, b);
+      zr_hit a[ZR_MAX_CROSSINGS], b[ZR_MAX_CROSSINGS];
+      int na = zr__intersect_t(o, &r, 0.0, 0.9, a);
+      int nb = zr__intersect_t(plain, &r, 0.0, 0.9, b);
       assert_int_equal(na, nb);
       for (int i = 0; i < na; i++)
         assert_true(a[i].t == b[i].t);
@@ -821,21 +825,7 @@ static void test_csg_cut_out_boxes_skip_work_only(void **state) {
                                     12 * rnd(&seed) - 2,
                                     3 * rnd(&seed));
     zr_ray r = {org, zr_v3_sub(at, org)};
-    zr_hit a[ZR_MAX_CROSSINGS], b[ZR_MAX_CROSSINGS];
-    int na = zr__intersect(o, &r, 0.0, INFINITY, a);
-    int nb = zr__intersect(plain, &r, 0.0, INFINITY, b);
-    assert_int_equal(na, nb);
-    for (int i = 0; i < na; i++) {
-      assert_true(a[i].t == b[i].t);
-      assert_ptr_equal(a[i].object, b[i].object);
-    }
-    crossings += na;
-    na = zr__intersect_first(o, &r, 0.0, INFINITY, true, a);
-    assert_int_equal(na > 0, nb > 0);
-    if (na > 0) {
-      assert_true(a[0].t == b[0].t);
-      assert_ptr_equal(a[0].object, b[0].object);
-    }
+    crossings += same_crossings(o, plain, &r, true);
     bool in = zr__inside(o, at);
     assert_true(in == zr__inside(plain, at));
     assert_true(zr__inside(balls, at) ==
