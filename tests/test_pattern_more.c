@@ -242,6 +242,30 @@ static void test_pattern_more_trace_limits(void **state) {
                       "9090.9091,0.0000,0.0000 1\n");
 }
 
+/* A repeated black hole's turbulence is named (its random moves are not
+   povray's, blkhole.pov), at the second of repeat and turbulence; not
+   without repeat (it does nothing there) nor with a zero turbulence. */
+static void test_pattern_more_hole_turbulence(void **state) {
+  fixture *f = *state;
+  good(f, "plane { y, 0 pigment { wood warp { black_hole 0, 0.5\n"
+          "  repeat <2, 1.5, 0> turbulence <1, 0.5, 0> } } }\n");
+  assert_int_equal(f->diag.warnings, 1);
+  assert_non_null(strstr(f->diag.warning,
+                         "t.pov:2:22: warning: black_hole turbulence moves "
+                         "each repeated hole by random amounts that are "
+                         "not povray's"));
+  good(f, "plane { y, 0 pigment { wood warp { black_hole 0, 0.5\n"
+          "  turbulence 1 repeat 2 } } }\n");
+  assert_int_equal(f->diag.warnings, 1);
+  assert_non_null(strstr(f->diag.warning, "t.pov:2:16: warning: "));
+  good(f, "plane { y, 0 pigment { wood warp { black_hole 0, 0.5 "
+          "turbulence 1 } } }\n");
+  assert_int_equal(f->diag.warnings, 0);
+  good(f, "plane { y, 0 pigment { wood warp { black_hole 0, 0.5 "
+          "repeat 2 turbulence 0 } } }\n");
+  assert_int_equal(f->diag.warnings, 0);
+}
+
 static void test_pattern_more_tiles(void **state) {
   fixture *f = *state;
   /* povray 3.7 paints tiles { A tile2 B } as checker texture { B }
@@ -489,6 +513,7 @@ int main(void) {
       cmocka_unit_test(test_pattern_more_extent_unbounded),
       cmocka_unit_test(test_pattern_more_trace),
       cmocka_unit_test(test_pattern_more_trace_limits),
+      cmocka_unit_test(test_pattern_more_hole_turbulence),
       cmocka_unit_test(test_pattern_more_tiles),
       cmocka_unit_test(test_pattern_more_object),
       cmocka_unit_test(test_pattern_more_crackle_options),
