@@ -206,6 +206,66 @@ static void test_pattern_more_trace(void **state) {
       ZR_ESYNTAX, "trace's normal variable 'M' must be a vector", NULL);
 }
 
+/* trace()'s limits, povray 3.7's output for this scene: a plane is
+   missed within 1e-10 of parallel (n . unit direction), nothing is found
+   at 1e7 or farther, and crossings nearer than 1e-4 are passed over (the
+   sphere's entry 5e-5 ahead gives its exit at 2).  tracevines.pov's
+   vines are grown on these. */
+static void test_pattern_more_trace_limits(void **state) {
+  fixture *f = *state;
+  good(f,
+          "#declare N = <0, 0, 0>;\n"
+          "#declare P = plane { y, 0 }\n"
+          "#macro T(O, A, D) #local Q = trace(O, A, D, N);\n"
+          "#debug concat(vstr(3, Q, \",\", 0, 4), \" \", "
+          "str(vlength(N), 0, 0), \"\\n\") #end\n"
+          "T(P, <0, 1e-6, 0>, <1, -1e-10, 0>)\n"
+          "T(P, <0, 1e-6, 0>, <1, -0.9e-10, 0>)\n"
+          "T(P, <0, 1, 0>, <1, -1 / 0.99e7, 0>)\n"
+          "T(P, <0, 1, 0>, <1, -1 / 1.01e7, 0>)\n"
+          "T(sphere { <0.99e7, 0, 0>, 1 }, 0, x)\n"
+          "T(sphere { <1.01e7, 0, 0>, 1 }, 0, x)\n"
+          "T(sphere { x, 1 }, <-5e-5, 0, 0>, x)\n"
+          "T(sphere { x, 1 }, <-2e-4, 0, 0>, x)\n"
+          "T(plane { y, 0 scale 3 }, <0, 1e-6, 0>, <1, -0.9e-10, 0>)\n"
+          "T(plane { y, 0 scale 3 }, <0, 1e-6, 0>, <3, -3.3e-10, 0>)\n");
+  assert_string_equal(f->diag.debug,
+                      "10000.0000,0.0000,0.0000 1\n"
+                      "0.0000,0.0000,0.0000 0\n"
+                      "9900000.0000,0.0000,0.0000 1\n"
+                      "0.0000,0.0000,0.0000 0\n"
+                      "9899999.0000,0.0000,0.0000 1\n"
+                      "0.0000,0.0000,0.0000 0\n"
+                      "2.0000,0.0000,0.0000 1\n"
+                      "-0.0000,0.0000,0.0000 1\n"
+                      "0.0000,0.0000,0.0000 0\n"
+                      "9090.9091,0.0000,0.0000 1\n");
+}
+
+/* A repeated black hole's turbulence is named (its random moves are not
+   povray's, blkhole.pov), at the second of repeat and turbulence; not
+   without repeat (it does nothing there) nor with a zero turbulence. */
+static void test_pattern_more_hole_turbulence(void **state) {
+  fixture *f = *state;
+  good(f, "plane { y, 0 pigment { wood warp { black_hole 0, 0.5\n"
+          "  repeat <2, 1.5, 0> turbulence <1, 0.5, 0> } } }\n");
+  assert_int_equal(f->diag.warnings, 1);
+  assert_non_null(strstr(f->diag.warning,
+                         "t.pov:2:22: warning: black_hole turbulence moves "
+                         "each repeated hole by random amounts that are "
+                         "not povray's"));
+  good(f, "plane { y, 0 pigment { wood warp { black_hole 0, 0.5\n"
+          "  turbulence 1 repeat 2 } } }\n");
+  assert_int_equal(f->diag.warnings, 1);
+  assert_non_null(strstr(f->diag.warning, "t.pov:2:16: warning: "));
+  good(f, "plane { y, 0 pigment { wood warp { black_hole 0, 0.5 "
+          "turbulence 1 } } }\n");
+  assert_int_equal(f->diag.warnings, 0);
+  good(f, "plane { y, 0 pigment { wood warp { black_hole 0, 0.5 "
+          "repeat 2 turbulence 0 } } }\n");
+  assert_int_equal(f->diag.warnings, 0);
+}
+
 static void test_pattern_more_tiles(void **state) {
   fixture *f = *state;
   /* povray 3.7 paints tiles { A tile2 B } as checker texture { B }
@@ -452,6 +512,8 @@ int main(void) {
       cmocka_unit_test(test_pattern_more_transform_blocks),
       cmocka_unit_test(test_pattern_more_extent_unbounded),
       cmocka_unit_test(test_pattern_more_trace),
+      cmocka_unit_test(test_pattern_more_trace_limits),
+      cmocka_unit_test(test_pattern_more_hole_turbulence),
       cmocka_unit_test(test_pattern_more_tiles),
       cmocka_unit_test(test_pattern_more_object),
       cmocka_unit_test(test_pattern_more_crackle_options),

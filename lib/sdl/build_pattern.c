@@ -111,8 +111,12 @@ bool zr__sdl_trace(zr_sdl_parser *p, const zr_object *o,
   double len = zr_v3_len(ray.dir);
   if (len > 0) {
     ray.dir = zr_v3_scale(ray.dir, 1 / len);
+    /* povray 3.7's trace() skips crossings nearer than 1e-4 (a sphere's
+       entry 1e-5 ahead is passed over for its exit) and finds none at
+       1e7 or farther, for every shape (measured: test_pattern_more's
+       trace_limits; tracevines.pov's vines grow on that). */
     zr_hit h;
-    if (nearest_hit(o, &ray, 1e-6, &h)) {
+    if (nearest_hit(o, &ray, 1e-4, &h) && h.t < 1e7) {
       point = zr_v3_madd(ray.origin, ray.dir, h.t);
       n = h.normal;
     }
