@@ -633,7 +633,7 @@ static int plane_t(const zr_object *o, const zr_ray *ray, double tmin,
                    double tmax, zr_hit hits[ZR_MAX_CROSSINGS]) {
   zr_vec3 n = o->u.plane.normal;
   double dn = zr_v3_dot(n, ray->dir);
-  if (dn == 0.0)
+  if (zr__plane_parallel(dn, ray->dir))
     return 0;
   double t = (o->u.plane.distance - zr_v3_dot(n, ray->origin)) / dn;
   if (!(isfinite(t) && t > tmin && t < tmax))

@@ -326,7 +326,7 @@ static int plane_crossing(const zr_object *o, const zr_ray *ray,
   }
   zr_vec3 n = o->u.plane.normal;
   double dn = zr_v3_dot(n, dir);
-  if (dn == 0.0)
+  if (zr__plane_parallel(dn, dir))
     return 0;
   double t = (o->u.plane.distance - zr_v3_dot(n, org)) / dn;
   if (!isfinite(t) || !(t > tmin && t < tmax))

@@ -11,10 +11,7 @@ static void plane_crossings(const zr_object *o, zr_vec3 org, zr_vec3 dir,
   (void)tmax;
   zr_vec3 n = o->u.plane.normal;
   double dn = zr_v3_dot(n, dir);
-  /* povray 3.7 finds no crossing when the ray is within 1e-10 of
-     parallel, n . unit dir (measured with trace(): test_pattern_more's
-     trace_limits); dir is not unit in a transformed plane's space. */
-  if (dn * dn < 1e-20 * zr_v3_dot(dir, dir))
+  if (zr__plane_parallel(dn, dir)) /* dir is not unit under a transform */
     return;
   zr__crossings_add(l, (o->u.plane.distance - zr_v3_dot(n, org)) / dn, n);
 }

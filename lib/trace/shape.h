@@ -107,6 +107,15 @@ typedef struct zr_shape_ops {
 } zr_shape_ops;
 
 /* The table (lib/trace/shape.c), indexed by zr_object_kind. */
+/* Whether a ray of direction dir (any length) misses a plane whose
+   unit normal n gives dn = n . dir: povray 3.7 finds no crossing within
+   1e-10 of parallel (n . unit dir; measured with trace():
+   test_pattern_more's trace_limits).  The plane's one test, shared by
+   obj_plane.c and the in-place copies in bvh.c and csg.c. */
+static inline bool zr__plane_parallel(double dn, zr_vec3 dir) {
+  return dn == 0.0 || dn * dn < 1e-20 * zr_v3_dot(dir, dir);
+}
+
 extern const zr_shape_ops *const zr__shapes[];
 
 static inline const zr_shape_ops *zr__shape(zr_object_kind kind) {
