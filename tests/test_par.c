@@ -528,6 +528,16 @@ static zr_status encode_png(zr_image *image, void *user) {
   return zr_image_encode(NULL, image, &enc, &e->bytes, &e->size);
 }
 
+/* The image encoded now gives got's bytes; frees them. */
+static void assert_encodes_as(zr_image *image, encoded *got) {
+  encoded want = {NULL, 0};
+  assert_int_equal(encode_png(image, &want), ZR_OK);
+  assert_int_equal(got->size, want.size);
+  assert_memory_equal(got->bytes, want.bytes, want.size);
+  free(got->bytes);
+  free(want.bytes);
+}
+
 /* A gradient's row y, the value it gets once "rendered". */
 static void fill_row(zr_image *image, int y) {
   int w = zr_image_width(image);
@@ -556,11 +566,7 @@ static void test_par_writer_waits_for_rows(void **state) {
     assert_int_equal(zr__par_writer_rows_done(writer), y + 1);
   }
   assert_int_equal(zr__par_writer_finish(writer, 0), ZR_OK);
-  encoded want = {NULL, 0};
-  assert_int_equal(encode_png(image, &want), ZR_OK);
-  assert_int_equal(got.size, want.size);
-  assert_memory_equal(got.bytes, want.bytes, want.size);
-  free(got.bytes);
+  assert_encodes_as(image, &got);
 
   /* Abandoned with rows still missing: the write fails, the image is
      ungated (a later write does not wait). */
@@ -572,10 +578,7 @@ static void test_par_writer_waits_for_rows(void **state) {
   assert_null(none.bytes);
   encoded again = {NULL, 0};
   assert_int_equal(encode_png(image, &again), ZR_OK);
-  assert_int_equal(again.size, want.size);
-  assert_memory_equal(again.bytes, want.bytes, want.size);
-  free(again.bytes);
-  free(want.bytes);
+  assert_encodes_as(image, &again);
   zr_image_free(image);
 }
 
@@ -605,12 +608,7 @@ static void test_par_world_of_one_feeds_writer(void **state) {
     assert_int_equal(zr__par_writer_rows_done(writer), f->params.height);
     assert_int_equal(job.tail_bands, 0); /* one rank: no tail */
     assert_int_equal(zr__par_writer_finish(writer, 0), ZR_OK);
-    encoded want = {NULL, 0};
-    assert_int_equal(encode_png(image, &want), ZR_OK);
-    assert_int_equal(got.size, want.size);
-    assert_memory_equal(got.bytes, want.bytes, want.size);
-    free(got.bytes);
-    free(want.bytes);
+    assert_encodes_as(image, &got);
     zr_image_free(image);
   }
   f->params.antialias = 0;

@@ -115,19 +115,24 @@ static double refine(const double *c, int degree, double a, double b,
   return x;
 }
 
+/* The root of c[1] x + c[0] in (lo, hi), if it has one there. */
+static int line_root(const double *c, double lo, double hi, double *roots) {
+  if (c[1] == 0.0)
+    return 0;
+  double x = -c[0] / c[1];
+  if (!(x > lo && x < hi))
+    return 0;
+  roots[0] = x;
+  return 1;
+}
+
 /* Roots of a x^2 + b x + c in (lo, hi) with a sign change. */
 static int quadratic_roots(const double *c, double lo, double hi,
                            double *roots) {
   double a = c[2], b = c[1], k = c[0];
   int n = 0;
-  if (a == 0.0) {
-    if (b != 0.0) {
-      double x = -k / b;
-      if (x > lo && x < hi)
-        roots[n++] = x;
-    }
-    return n;
-  }
+  if (a == 0.0)
+    return line_root(c, lo, hi, roots);
   double disc = b * b - 4.0 * a * k;
   if (!(disc > 0.0))
     return 0;
@@ -141,25 +146,34 @@ static int quadratic_roots(const double *c, double lo, double hi,
   return n;
 }
 
+/* The roots in (lo, hi) of a polynomial of degree 2 or less, in closed
+   form. */
+static int low_roots(const double *c, int degree, double lo, double hi,
+                     double *roots) {
+  if (degree == 2)
+    return quadratic_roots(c, lo, hi, roots);
+  if (degree == 1)
+    return line_root(c, lo, hi, roots);
+  return 0;
+}
+
+/* d = c', of degree - 1. */
+static void derivative(const double *c, int degree, double *d) {
+  for (int i = 1; i <= degree; i++)
+    d[i - 1] = i * c[i];
+}
+
 int zr__poly_roots(const double *c, int degree, double lo, double hi,
                    double *roots) {
   while (degree > 0 && c[degree] == 0.0)
     degree--;
   if (degree <= 0 || !(lo < hi))
     return 0;
-  if (degree == 1) {
-    double x = -c[0] / c[1];
-    if (!(x > lo && x < hi))
-      return 0;
-    roots[0] = x;
-    return 1;
-  }
-  if (degree == 2)
-    return quadratic_roots(c, lo, hi, roots);
+  if (degree <= 2)
+    return low_roots(c, degree, lo, hi, roots);
   /* The ends of the monotonic pieces: lo, the roots of p', hi. */
   double deriv[ZR_POLY_MAX_DEGREE];
-  for (int i = 1; i <= degree; i++)
-    deriv[i - 1] = i * c[i];
+  derivative(c, degree, deriv);
   double ends[ZR_POLY_MAX_DEGREE + 1];
   ends[0] = lo;
   int n_ends = 1 + zr__poly_roots(deriv, degree - 1, lo, hi, ends + 1);
@@ -201,8 +215,7 @@ void zr__root_walk_start(zr__root_walk *w, const double *c, int degree,
         ck[i] = from[i];
     } else {
       /* The derivative of the level above (zr__poly_roots's deriv). */
-      for (int i = 1; i <= degree; i++)
-        ck[i - 1] = i * from[i];
+      derivative(from, degree, ck);
       degree--;
       while (degree > 0 && ck[degree] == 0.0)
         degree--;
@@ -214,13 +227,7 @@ void zr__root_walk_start(zr__root_walk *w, const double *c, int degree,
     if (degree <= 2) {
       /* The last level: its roots in closed form, as zr__poly_roots
          takes a line or a quadratic. */
-      if (degree == 1) {
-        double x = -ck[0] / ck[1];
-        if (x > lo && x < hi)
-          w->low[w->n_low++] = x;
-      } else if (degree == 2) {
-        w->n_low = quadratic_roots(ck, lo, hi, w->low);
-      }
+      w->n_low = low_roots(ck, degree, lo, hi, w->low);
       break;
     }
     w->fa[k] = zr__poly_eval(ck, degree, lo);
