@@ -106,6 +106,12 @@ peak_mib() {
   awk -F': ' '/Maximum resident set size/ { printf "%.0f", $2 / 1024 }' \
     "$1" 2>/dev/null || echo -
 }
+# The same in KiB, as time(1) gives it: bytes per primitive come from
+# these (whole MiB made both renderers' 2 MiB of spheres look alike).
+peak_kib() {
+  awk -F': ' '/Maximum resident set size/ { printf "%d", $2 }' \
+    "$1" 2>/dev/null || echo -
+}
 
 # The CPU seconds of one phase ("parse", "render") from zRcube's +V
 # line "rank 0: wall s: ...; cpu s: parse P ... render R ...".
@@ -148,6 +154,7 @@ printf '%-8s %5s %9s %9s %9s %8s %8s\n' scene size zRcube_s POV_s \
   Tachyon_s zr/tach zr/pov
 rays_lines=
 mem_lines=
+kib_lines=
 first_size=${sizes%% *}
 for size in $sizes; do
   for scene in flake terrain csg; do
@@ -197,6 +204,9 @@ for size in $sizes; do
         "$(peak_mib p.time)" \
         "$([ -f t.time ] && [ -f "$scene.dat" ] && peak_mib t.time || echo -)")
 "
+      kib_lines="$kib_lines$scene $(peak_kib z.time) $([ -f t.time ] &&
+        [ -f "$scene.dat" ] && peak_kib t.time || echo -)
+"
     fi
     rm -f t.time
   done
@@ -208,9 +218,9 @@ cd "$work"
   "+H$first_size" -A +WT1 -D >/dev/null 2>&1 || true
 /usr/bin/time -v -o te.time "$tachyon" empty.dat -res "$first_size" \
   "$first_size" -numthreads 1 -format TARGA -o t.tga >/dev/null 2>&1 || true
-per_prim() { # scene-MiB empty-MiB count
+per_prim() { # scene-KiB empty-KiB count
   echo "$1 $2 $3" | awk '{ if ($1 ~ /^[0-9]+$/ && $2 ~ /^[0-9]+$/)
-                             printf "%.0f", ($1 - $2) * 1048576 / $3;
+                             printf "%.0f", ($1 - $2) * 1024 / $3;
                            else print "-" }'
 }
 echo
@@ -232,10 +242,10 @@ printf '%-8s %9s %9s\n' scene zRcube Tachyon
 for scene in flake terrain; do
   case $scene in flake) count=7382 ;; terrain) count=130050 ;; esac
   printf '%-8s %9s %9s\n' "$scene" \
-    "$(per_prim "$(echo "$mem_lines" | awk -v s=$scene '$1 == s { print $5 }')" \
-       "$(peak_mib ze.time)" $count)" \
-    "$(per_prim "$(echo "$mem_lines" | awk -v s=$scene '$1 == s { print $7 }')" \
-       "$(peak_mib te.time)" $count)"
+    "$(per_prim "$(echo "$kib_lines" | awk -v s=$scene '$1 == s { print $2 }')" \
+       "$(peak_kib ze.time)" $count)" \
+    "$(per_prim "$(echo "$kib_lines" | awk -v s=$scene '$1 == s { print $3 }')" \
+       "$(peak_kib te.time)" $count)"
 done
 } | if [ -n "${PEERS_NO_SAVE:-}" ]; then cat; else
   mkdir -p "$here/results"
