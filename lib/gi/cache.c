@@ -447,8 +447,8 @@ static void count_tree(blend *b, const zr_gi_cache *c, int d, int32_t at,
 /* ---- the final pass's index ---------------------------------------- */
 
 /* A cell holding more records than this is split into octants while
-   that shortens its list; the most levels; the most list entries (past
-   64 a record, which every scene gets). */
+   that shortens its list; the most levels; the most list entries, and
+   cells, past 64 a record (which every scene gets). */
 #define LEAF_RECORDS 12
 #define LEAF_LEVELS 48
 #define LEAF_ENTRIES (1u << 20)
@@ -531,7 +531,8 @@ static void grid_fill(grid_build *gb, int32_t at, zr_vec3 cc, double h,
   int32_t *sub[8] = {NULL};
   size_t ms[8] = {0};
   bool split = m > LEAF_RECORDS && level < LEAF_LEVELS &&
-               c->grid_n_idx + 8 * m <= gb->max_idx;
+               c->grid_n_idx + 8 * m <= gb->max_idx &&
+               c->grid_n_nodes + 8 <= gb->max_idx;
   double hc = 0.5 * h;
   zr_vec3 ccs[8];
   for (int k = 0; split && k < 8; k++) {
@@ -625,7 +626,11 @@ bool zr__gi_cache_freeze(zr_gi_cache *c) {
     h = fmax(h, 0.5 * (hi[k] - lo[k]));
   h = h * (1.0 + 1e-6) + 1e-300;
   c->grid_a = a;
-  grid_build gb = {c, 0, 0, (size_t)LEAF_ENTRIES + 64 * n, false};
+  /* The entries' (and cells') cap; uint32_t offsets. */
+  size_t max_idx = (size_t)LEAF_ENTRIES + 64 * n;
+  if (max_idx > UINT32_MAX / 2)
+    max_idx = UINT32_MAX / 2;
+  grid_build gb = {c, 0, 0, max_idx, false};
   int32_t root = grid_node(&gb, 1);
   if (root == 0)
     grid_fill(&gb, 0,
