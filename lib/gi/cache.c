@@ -53,7 +53,11 @@
  * picture, are the same bytes for any number of threads, and every rank
  * builds the same cache.  In the final pass a point no record serves
  * gets a record of its own that is used and dropped (as are the deeper
- * records made for it), so the pass never writes to the cache.
+ * records made for it), so the pass never writes to the cache.  Its
+ * first-bounce lookups go through an index built when the pretrace ends
+ * (zr__gi_cache_freeze), which hands them the same records in the same
+ * order as the octree; the pretrace's own first-bounce lookups, whose
+ * colour is thrown away, only count the records that serve.
  */
 #include "gi/gi.h"
 
