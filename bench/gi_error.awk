@@ -9,7 +9,11 @@
 #   at t_d, zRcube's error is at most e_d: printed per method as the
 #           lowest error of its rungs taking <= t_d, over e_d;
 #   at e_d, zRcube takes at most half of t_d: printed per method as the
-#           time of its fastest rung with error <= e_d, over t_d.
+#           time of its fastest rung with error <= e_d, over t_d; and,
+#           where the method's error/time curve crosses e_d between two
+#           rungs, the time read off it there (log-log between the two
+#           rungs of its lower envelope on either side of e_d: the
+#           rungs no cheaper rung beats in error), over t_d.
 # Also the truth's own noise (see bench/gi_error.sh), below which no
 # error can be read.  Nothing is asserted; failed rungs are left out.
 BEGIN { FS = "\t" }
@@ -75,5 +79,31 @@ END {
       line = line sprintf("; at its error %s %s: %.2f s = %.2fx its time", \
         mm, s[fast], t[fast], t[fast] / td)
     printf "  %-6s %s\n", mm ":", line
+    # The lower envelope: the method's rungs by time, each kept when its
+    # error is below every cheaper one's; then the pair around e_d.
+    ne = 0
+    for (i = 1; i <= n; i++) {
+      if (m[i] != mm) continue
+      beaten = 0
+      for (j = 1; j <= n; j++)
+        if (j != i && m[j] == mm && (t[j] < t[i] || (t[j] == t[i] && j < i)) \
+            && e[j] <= e[i])
+          beaten = 1
+      if (!beaten) env[++ne] = i
+    }
+    for (i = 1; i <= ne; i++)  # by time (insertion sort)
+      for (j = i; j > 1 && t[env[j]] < t[env[j - 1]]; j--) {
+        x = env[j]; env[j] = env[j - 1]; env[j - 1] = x
+      }
+    for (i = 1; i < ne; i++) {
+      a1 = env[i]; a2 = env[i + 1]
+      if (e[a1] > ed && e[a2] <= ed && t[a1] > 0 && t[a2] > 0 && \
+          e[a2] > 0) {
+        f = (log(ed) - log(e[a1])) / (log(e[a2]) - log(e[a1]))
+        ti = exp(log(t[a1]) + f * (log(t[a2]) - log(t[a1])))
+        printf "  %-6s at its error, read between %s and %s (log-log):" \
+          " %.3f s = %.2fx its time\n", "", s[a1], s[a2], ti, ti / td
+      }
+    }
   }
 }

@@ -26,7 +26,7 @@
 # thread (+WT1); the radiosity renders (POV-Ray's and zRcube's cache and
 # hierarchical solver) use +A0.05 +R3, as bench/radiosity.sh does, so
 # their pixels are means over the pixel's area like the path tracer's.
-# Times are CPU seconds (user + system, /usr/bin/time) of the whole
+# Times are CPU seconds (user + system, os.wait4 or /usr/bin/time) of the whole
 # command, parse included: a machine shared with other jobs changes
 # them less than wall seconds.  The error is tests/imgcmp --rmse: the
 # RMS difference of the two pictures clipped to [0, 1] in linear light
@@ -42,7 +42,8 @@
 #            the rung table below; GIERR_RUNGS="q1 ... q6" runs more,
 #            and "t1 t2 t3" the default block with recursion_limit 3
 #            and error_bound 0.9 to 0.45; "c1", in the default list,
-#            the default block with count 20 and nearest_count 1);
+#            the default block with count 20 and nearest_count 1, and
+#            "c2", the same with count 12);
 #            +FH output.
 #   cache    zRcube's irradiance cache (--gi=cache) with the same blocks.
 #   hier     zRcube's hierarchical radiosity (--gi=hierarchical) at a
@@ -72,8 +73,11 @@
 # and the cheaper rungs.  Exit 77 without povray.
 #
 # Environment: POVRAY, GIERR_OUT, GIERR_TIMEOUT (seconds a render may
-# take, default 900), GIERR_SCENES (a subset of "cbox cornell sky"),
-# GIERR_RUNGS (default "c1 q1 q2 q3 q4").  GIERR_SCENES defaults to all
+# take, default 900), GIERR_BEST (runs of a render under a CPU second,
+# the least time kept; default 1), GIERR_METHODS (the ladders to run,
+# default "povray cache hier path conv": conv is the path tracer's
+# convergence; "off" always runs), GIERR_SCENES (a subset of "cbox cornell sky"),
+# GIERR_RUNGS (default "c2 c1 q1 q2 q3 q4").  GIERR_SCENES defaults to all
 # four, "cbox cornell sky curved".
 # Timings are printed, never asserted.
 set -eu
@@ -106,7 +110,7 @@ if [ $quick -eq 1 ]; then
   conv_ladder="1 4 16 64"
 else
   truth_spp=1024
-  rungs=${GIERR_RUNGS:-"c1 q1 q2 q3 q4"}
+  rungs=${GIERR_RUNGS:-"c2 c1 q1 q2 q3 q4"}
   bf_ladder="0.01 0.001 0.0001"
   hier_vis="0.001v3 0.0003v3 0.0001v2 0.0001v3"
   spp_ladder="1 4 16 64"
@@ -135,10 +139,22 @@ rung_block() {
   # 2026-12-02, session 7: zRcube 0.0197 in 0.07 s against POV-Ray's
   # default 0.0229 in 0.16 s).
   c1) set -- 20 2 1 1.8 0.04 ;;
+  # c1 with fewer rays still: a rung above the default's error on the
+  # outdoor scene (0.0258 against 0.0229, session 11), so that the
+  # curve's crossing of it lies between two rungs (gi_error.awk).
+  c2) set -- 12 2 1 1.8 0.04 ;;
   esac
   printf 'radiosity { count %s recursion_limit %s nearest_count %s\n' \
     "$1" "$2" "$3"
   printf '  error_bound %s pretrace_start 0.08 pretrace_end %s }\n' "$4" "$5"
+}
+
+# Whether GIERR_METHODS names the ladder.
+wants() {
+  case " ${GIERR_METHODS:-povray cache hier path conv} " in
+  *" $1 "*) return 0 ;;
+  esac
+  return 1
 }
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/zr-gierr.XXXXXX")
@@ -147,14 +163,39 @@ mkdir -p "$out"
 
 # Runs the command under the time limit in the work folder (where the
 # scene's copies are), its output in $work/log; prints its CPU seconds,
-# or "fail".
-cpu() {
-  if (cd "$work" && /usr/bin/time -f '%U %S' -o "$work/time" \
-        timeout "$limit" "$@") >"$work/log" 2>&1; then
+# or "fail".  With /usr/bin/python3, to the millisecond (os.wait4's
+# rusage; /usr/bin/time prints hundredths, 14% of a 0.07 s rung).
+cpu_once() {
+  if [ -x /usr/bin/python3 ]; then
+    (cd "$work" && /usr/bin/python3 -c '
+import os, subprocess, sys
+with open(sys.argv[1], "w") as log:
+    p = subprocess.Popen(sys.argv[2:], stdout=log, stderr=subprocess.STDOUT)
+    _, status, use = os.wait4(p.pid, 0)
+print("%.3f" % (use.ru_utime + use.ru_stime) if status == 0 else "fail")
+' "$work/log" timeout "$limit" "$@")
+  elif (cd "$work" && /usr/bin/time -f '%U %S' -o "$work/time" \
+          timeout "$limit" "$@") >"$work/log" 2>&1; then
     tail -n 1 "$work/time" | awk '{ printf "%.2f\n", $1 + $2 }'
   else
     echo fail
   fi
+}
+
+# GIERR_BEST=N (default 1): a render under a CPU second runs N times
+# and the least time is kept, POV-Ray's as ours (a shared machine only
+# ever adds time).
+cpu() {
+  t=$(cpu_once "$@")
+  k=1
+  while [ "$t" != fail ] && [ "$k" -lt "${GIERR_BEST:-1}" ] &&
+        awk -v t="$t" 'BEGIN { exit !(t < 1) }'; do
+    t2=$(cpu_once "$@")
+    [ "$t2" = fail ] && { t=fail; break; }
+    t=$(awk -v a="$t" -v b="$t2" 'BEGIN { print (b < a ? b : a) }')
+    k=$((k + 1))
+  done
+  echo "$t"
 }
 
 rel_rmse() { # image, truth
@@ -235,16 +276,18 @@ bench_scene() { # name, scene file, width, height, hierarchical (0/1),
   blocks="default $rungs"
   [ "$own" = 0 ] || blocks="default scene $rungs"
   for r in $blocks; do
+    wants povray || break
     measure povray "$r" "$out/$name-pov-$r.hdr" "$povray" \
       +I"$name-$r.pov" +L"$inc_scene" +L"$inc" $res $aa -GA -V +FH \
       +O"$out/$name-pov-$r.hdr" || break
   done
   for r in $blocks; do
+    wants cache || break
     measure cache "$r" "$out/$name-cache-$r.pfm" "$zrcube" "$name-$r.pov" \
       +L"$inc_scene" $res $aa -q --gi=cache +O"$out/$name-cache-$r.pfm" ||
       break
   done
-  if [ "$hier" = 1 ]; then
+  if [ "$hier" = 1 ] && wants hier; then
     for e in $bf_ladder; do
       measure hier "$e" "$out/$name-hier-$e.pfm" "$zrcube" \
         "$name-scene.pov" +L"$inc_scene" $res $aa -q --gi=hierarchical \
@@ -260,6 +303,7 @@ bench_scene() { # name, scene file, width, height, hierarchical (0/1),
     done
   fi
   for n in $spp_ladder; do
+    wants path || break
     measure path "$n" "$out/$name-path-$n.pfm" "$zrcube" "$name-scene.pov" \
       +L"$inc_scene" $res -q --gi=path --spp="$n" \
       +O"$out/$name-path-$n.pfm" || break
@@ -306,7 +350,9 @@ done
 
 # The path tracer against the shared reference's truth.
 ref=$shared/cbox_emissive-256.pfm
-if [ -f "$ref" ]; then
+if ! wants conv; then
+  :
+elif [ -f "$ref" ]; then
   truth=$ref
   tsv=$out/path-convergence.tsv
   printf 'method\tsetting\tcpu_seconds\trel_rmse\n' >"$tsv"

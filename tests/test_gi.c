@@ -739,6 +739,83 @@ static void test_gi_octree_bounds(void **state) {
   zr_gi_cache_free(c);
 }
 
+/* The final pass's index (zr__gi_cache_freeze) blends the same records
+   in the same order as the octree, so the same bytes: records on a
+   floor and on blocks above it, their radii growing with the distance
+   from the eye as the reuse bounds make them (and some random), lookups
+   near them and far, at the block's bound and below it.  The
+   pretrace's count of records that serve stops at what it wants and
+   agrees with the blend's.  A record added drops the index. */
+static void test_gi_final_index(void **state) {
+  fixture *f = *state;
+  const zr_scene *s = good(f, ROOM);
+  zr_gi_params gp;
+  zr_gi_params_init(&gp, s);
+  gp.error_bound = 1.8;
+  zr_gi_cache *c = NULL;
+  assert_int_equal(zr_gi_cache_new(NULL, s, &gp, &c), ZR_OK);
+  uint64_t x = 987654321;
+#define UNIFORM()                                                       \
+  (x = x * 6364136223846793005u + 1442695040888963407u,                 \
+   (double)(x >> 11) / 9007199254740992.0)
+  for (int i = 0; i < 3000; i++) {
+    zr__gi_record r;
+    memset(&r, 0, sizeof r);
+    double far = i % 10 == 0 ? 500.0 : 10.0;
+    double u0 = UNIFORM(), u1 = UNIFORM(), u2 = UNIFORM();
+    bool floor = i % 3 != 0;
+    r.p = (zr_vec3){far * (u0 - 0.5), floor ? 0.0 : 3.0 * u1,
+                    far * u2};
+    double tilt = floor ? 0.0 : 0.8 * (UNIFORM() - 0.5);
+    r.n = zr_v3_norm((zr_vec3){tilt, 1.0, -tilt});
+    r.r = (0.02 + 0.2 * UNIFORM()) * (1.0 + zr_v3_len(r.p));
+    for (int ch = 0; ch < 3; ch++) {
+      r.e[ch] = UNIFORM();
+      r.grad_r[ch] = (zr_vec3){UNIFORM() - 0.5, UNIFORM() - 0.5, 0.1};
+      r.grad_t[ch] = (zr_vec3){0.1 * (UNIFORM() - 0.5), 0.0, 0.05};
+    }
+    r.depth = i % 7 == 0 ? 1 : 0;
+    assert_true(zr__gi_cache_add(c, &r));
+  }
+  assert_true(zr__gi_cache_freeze(c));
+  assert_true(c->grid_a == 1.8 && c->grid_n_nodes > 1);
+  /* The index lists fewer records than the octree tests, and no more
+     entries than its cap. */
+  assert_true(c->grid_n_idx < (1u << 20) + 64 * c->records.n);
+  size_t served = 0, lookups = 0;
+  for (int i = 0; i < 20000; i++) {
+    double far = i % 5 == 0 ? 800.0 : 12.0;
+    zr_vec3 p = {far * (UNIFORM() - 0.5), i % 2 ? 0.0 : 3.0 * UNIFORM(),
+                 far * (UNIFORM() - 0.4)};
+    double tilt = 0.6 * (UNIFORM() - 0.5);
+    zr_vec3 n = zr_v3_norm((zr_vec3){tilt, 1.0, tilt});
+    double a = i % 3 == 0 ? 0.9 : i % 3 == 1 ? 1.8 : 3.6;
+    double sg[3], so[3], wg, wo;
+    int cg, co;
+    zr__gi_cache_lookup(c, 0, p, n, a, true, 0, sg, &wg, &cg);
+    zr__gi_cache_lookup(c, 0, p, n, a, false, 0, so, &wo, &co);
+    assert_int_equal(cg, co);
+    assert_memory_equal(sg, so, sizeof sg);
+    assert_memory_equal(&wg, &wo, sizeof wg);
+    served += co > 0;
+    lookups++;
+    int want = 1 + i % 5, counted;
+    zr__gi_cache_lookup(c, 0, p, n, a, false, want, sg, &wg, &counted);
+    assert_int_equal(counted, co < want ? co : want);
+  }
+  print_message("%zu of %zu lookups served; index: %zu cells, %zu "
+                "entries for %zu records\n",
+                served, lookups, c->grid_n_nodes, c->grid_n_idx,
+                c->records.n);
+  assert_true(served > lookups / 4 && served < lookups);
+  /* A record added drops the index; lookups walk the octree. */
+  zr__gi_record r = c->records.v[0];
+  assert_true(zr__gi_cache_add(c, &r));
+  assert_true(c->grid_a == 0.0 && c->grid_nodes == NULL);
+  zr_gi_cache_free(c);
+#undef UNIFORM
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_gi_furnace),
@@ -754,6 +831,7 @@ int main(void) {
       cmocka_unit_test(test_gi_nearest_count_stop),
       cmocka_unit_test(test_gi_dark_surface),
       cmocka_unit_test(test_gi_octree_bounds),
+      cmocka_unit_test(test_gi_final_index),
   };
   return cmocka_run_group_tests(tests, setup, teardown);
 }

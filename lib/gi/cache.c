@@ -53,7 +53,11 @@
  * picture, are the same bytes for any number of threads, and every rank
  * builds the same cache.  In the final pass a point no record serves
  * gets a record of its own that is used and dropped (as are the deeper
- * records made for it), so the pass never writes to the cache.
+ * records made for it), so the pass never writes to the cache.  Its
+ * first-bounce lookups go through an index built when the pretrace ends
+ * (zr__gi_cache_freeze), which hands them the same records in the same
+ * order as the octree; the pretrace's own first-bounce lookups, whose
+ * colour is thrown away, only count the records that serve.
  */
 #include "gi/gi.h"
 
@@ -239,12 +243,16 @@ static void set_jump(zr_gi_cache *c, int d, int32_t at) {
   c->jumps[d][at] = n->first < 0 && children == 1 ? c->jumps[d][only] : at;
 }
 
+static void drop_grid(zr_gi_cache *c);
+
 bool zr__gi_cache_add(zr_gi_cache *c, const zr__gi_record *r) {
   int d = r->depth;
   if (d < 0 || d >= 20)
     return false;
   if (c->n_nodes[d] == 0 && new_node(c, d, c->root_c, c->root_h) < 0)
     return false;
+  if (c->grid_nodes || c->grid_a > 0.0)
+    drop_grid(c); /* it no longer holds every record */
   size_t idx = c->records.n;
   if (!zr__gi_list_push(&c->records, r))
     return false;
@@ -334,20 +342,27 @@ typedef struct blend {
 static inline double max0(double v) { return v > 0.0 ? v : 0.0; }
 static inline double min_hi(double v, double hi) { return v < hi ? v : hi; }
 
-/* Record r's share of the blend at b's point, d = b->p - r->p and dd
-   its squared length, once r is known to lie within reach (dd <
-   (a R)^2). */
-static void blend_near(blend *b, const zr__gi_record *r, zr_vec3 d,
-                       double dd) {
+/* Whether record r serves b's point, d = b->p - r->p and dd its
+   squared length, once r is known to lie within reach (dd < (a R)^2),
+   with its error estimate in *eps. */
+static inline bool serves(const blend *b, const zr__gi_record *r,
+                          zr_vec3 d, double dd, double *eps) {
   double nn = zr_v3_dot(b->n, r->n);
   if (!(nn > 0.0))
-    return;
+    return false;
   /* A record in front of the point (the point lies below the record's
      plane) sees light the point may not: Ward's test. */
   if (zr_v3_dot(d, zr_v3_scale(zr_v3_add(b->n, r->n), 0.5)) < -0.05 * r->r)
-    return;
-  double eps = sqrt(dd) / r->r + sqrt(max0(1.0 - nn));
-  if (!(eps < b->a))
+    return false;
+  *eps = sqrt(dd) / r->r + sqrt(max0(1.0 - nn));
+  return *eps < b->a;
+}
+
+/* Record r's share of the blend at b's point (d and dd as above). */
+static void blend_near(blend *b, const zr__gi_record *r, zr_vec3 d,
+                       double dd) {
+  double eps;
+  if (!serves(b, r, d, dd, &eps))
     return;
   double w = 1.0 / (eps > 1e-9 ? eps : 1e-9) - 1.0 / b->a;
   zr_vec3 axis = zr_v3_cross(r->n, b->n);
@@ -399,6 +414,292 @@ static void blend_tree(blend *b, const zr_gi_cache *c, int d, int32_t at) {
         b->p.z >= m->lo[2] - reach && b->p.z <= m->hi[2] + reach)
       blend_tree(b, c, d, c->jumps[d][ch]);
   }
+}
+
+/*
+ * The pretrace's lookups at the first bounce only ask whether `want`
+ * records serve the point (the colour of a pretrace ray is thrown away;
+ * a sample ray's, at the depths below, is not, and those blend in full):
+ * this counts them in b->count as blend_tree would, stopping at want.
+ * The same records are gathered, so the cache, and the picture, are the
+ * same bytes; the blend's sums are left at zero.
+ */
+static void count_tree(blend *b, const zr_gi_cache *c, int d, int32_t at,
+                       int want) {
+  const zr__gi_node *n = &c->nodes[d][at];
+  for (int32_t i = n->first; i >= 0; i = c->near[i].next) {
+    const zr__gi_near *q = &c->near[i];
+    zr_vec3 dv = zr_v3_sub(b->p, q->p);
+    double reach = b->a * q->r, dd = zr_v3_dot(dv, dv), eps;
+    if (dd < reach * reach && serves(b, &c->records.v[i], dv, dd, &eps) &&
+        ++b->count >= want)
+      return;
+  }
+  for (int k = 0; k < 8 && b->count < want; k++) {
+    int32_t ch = n->child[k];
+    if (ch < 0)
+      continue;
+    const zr__gi_node *m = &c->nodes[d][ch];
+    double reach = b->a * m->r_max * (1.0 + 1e-9); /* as blend_tree */
+    if (b->p.x >= m->lo[0] - reach && b->p.x <= m->hi[0] + reach &&
+        b->p.y >= m->lo[1] - reach && b->p.y <= m->hi[1] + reach &&
+        b->p.z >= m->lo[2] - reach && b->p.z <= m->hi[2] + reach)
+      count_tree(b, c, d, c->jumps[d][ch], want);
+  }
+}
+
+/* ---- the final pass's index ---------------------------------------- */
+
+/* A cell holding more records than this is split into octants while
+   that shortens its list; the most levels; the most list entries, and
+   cells, past 64 a record (which every scene gets). */
+#define LEAF_RECORDS 12
+#define LEAF_LEVELS 48
+#define LEAF_ENTRIES (1u << 20)
+#define SPLIT_GROWTH 4.0
+
+static void drop_grid(zr_gi_cache *c) {
+  free(c->grid_nodes);
+  free(c->grid_idx);
+  c->grid_nodes = NULL;
+  c->grid_idx = NULL;
+  c->grid_n_nodes = c->grid_n_idx = 0;
+  c->grid_a = 0.0;
+}
+
+/* The records of tree d below node at in the order blend_tree meets
+   them (a node's list, then its children in turn): the rank order. */
+static void rank_tree(const zr_gi_cache *c, int d, int32_t at,
+                      int32_t *order, size_t *n) {
+  const zr__gi_node *nd = &c->nodes[d][at];
+  for (int32_t i = nd->first; i >= 0; i = c->near[i].next)
+    order[(*n)++] = i;
+  for (int k = 0; k < 8; k++)
+    if (nd->child[k] >= 0)
+      rank_tree(c, d, nd->child[k], order, n);
+}
+
+/* Record q's reach along an axis where it lies at v, at bound a, a hair
+   more (rounding never leaves out a cell the exact test would take). */
+static double grid_ext(const zr__gi_near *q, double a, double v) {
+  return a * q->r * (1.0 + 1e-6) + 1e-9 * fabs(v);
+}
+
+/* Whether record q's reach box meets the cube (centre cc, half-size h),
+   grown by a hair. */
+static bool grid_meets(const zr__gi_near *q, double a, zr_vec3 cc,
+                       double h) {
+  double p[3] = {q->p.x, q->p.y, q->p.z}, c[3] = {cc.x, cc.y, cc.z};
+  for (int k = 0; k < 3; k++) {
+    double e = grid_ext(q, a, p[k]);
+    double g = h * (1.0 + 1e-9) + 1e-9 * fabs(c[k]);
+    if (p[k] + e < c[k] - g || p[k] - e > c[k] + g)
+      return false;
+  }
+  return true;
+}
+
+typedef struct grid_build {
+  zr_gi_cache *c;
+  size_t cap_nodes, cap_idx, max_idx;
+  bool nomem;
+} grid_build;
+
+static int32_t grid_node(grid_build *gb, int count) {
+  zr_gi_cache *c = gb->c;
+  if (c->grid_n_nodes + (size_t)count > gb->cap_nodes) {
+    size_t cap = gb->cap_nodes ? 2 * gb->cap_nodes : 64;
+    while (cap < c->grid_n_nodes + (size_t)count)
+      cap *= 2;
+    zr__gi_cell *v = realloc(c->grid_nodes, cap * sizeof *v);
+    if (!v) {
+      gb->nomem = true;
+      return -1;
+    }
+    c->grid_nodes = v;
+    gb->cap_nodes = cap;
+  }
+  int32_t at = (int32_t)c->grid_n_nodes;
+  c->grid_n_nodes += (size_t)count;
+  return at;
+}
+
+/* Node at (cube centre cc, half-size h) over the list (rank order): a
+   leaf holding it, or eight octants each over the records that meet
+   it. */
+static void grid_fill(grid_build *gb, int32_t at, zr_vec3 cc, double h,
+                      const int32_t *list, size_t m, int level) {
+  zr_gi_cache *c = gb->c;
+  double a = c->grid_a;
+  c->grid_nodes[at] = (zr__gi_cell){cc, h, -1, 0, 0};
+  int32_t *sub[8] = {NULL};
+  size_t ms[8] = {0};
+  bool split = m > LEAF_RECORDS && level < LEAF_LEVELS &&
+               c->grid_n_idx + 8 * m <= gb->max_idx &&
+               c->grid_n_nodes + 8 <= gb->max_idx;
+  double hc = 0.5 * h;
+  zr_vec3 ccs[8];
+  for (int k = 0; split && k < 8; k++) {
+    ccs[k] = zr_v3(cc.x + (k & 1 ? hc : -hc), cc.y + (k & 2 ? hc : -hc),
+                   cc.z + (k & 4 ? hc : -hc));
+    sub[k] = malloc((m ? m : 1) * sizeof *sub[k]);
+    if (!sub[k]) {
+      gb->nomem = true;
+      split = false;
+      break;
+    }
+    for (size_t j = 0; j < m; j++)
+      if (grid_meets(&c->near[list[j]], a, ccs[k], hc))
+        sub[k][ms[k]++] = list[j];
+  }
+  /* Only where the octants' lists are together at most SPLIT_GROWTH
+     times the cell's (so that lists shorten, and the entries stay a few
+     times the records). */
+  size_t total = 0;
+  for (int k = 0; split && k < 8; k++)
+    total += ms[k];
+  bool shorter = split && (double)total <= SPLIT_GROWTH * (double)m;
+  if (split && shorter) {
+    int32_t first = grid_node(gb, 8);
+    if (first >= 0) {
+      c->grid_nodes[at].child = first;
+      for (int k = 0; k < 8; k++)
+        grid_fill(gb, first + k, ccs[k], hc, sub[k], ms[k], level + 1);
+    }
+  } else {
+    if (c->grid_n_idx + m > gb->cap_idx) {
+      size_t cap = gb->cap_idx ? 2 * gb->cap_idx : 1024;
+      while (cap < c->grid_n_idx + m)
+        cap *= 2;
+      int32_t *v = realloc(c->grid_idx, cap * sizeof *v);
+      if (!v)
+        gb->nomem = true;
+      else {
+        c->grid_idx = v;
+        gb->cap_idx = cap;
+      }
+    }
+    if (!gb->nomem) {
+      c->grid_nodes[at].start = (uint32_t)c->grid_n_idx;
+      memcpy(c->grid_idx + c->grid_n_idx, list, m * sizeof *list);
+      c->grid_n_idx += m;
+      c->grid_nodes[at].end = (uint32_t)c->grid_n_idx;
+    }
+  }
+  for (int k = 0; k < 8; k++)
+    free(sub[k]);
+}
+
+bool zr__gi_cache_freeze(zr_gi_cache *c) {
+  drop_grid(c);
+  const int d = 0;
+  if (c->n_nodes[d] == 0)
+    return false;
+  double a = c->params.error_bound;
+  size_t n = 0;
+  for (size_t i = 0; i < c->records.n; i++)
+    n += c->records.v[i].depth == d;
+  if (n == 0 || n > (size_t)INT32_MAX / 2)
+    return false;
+  int32_t *order = malloc(n * sizeof *order);
+  if (!order)
+    return false;
+  size_t m = 0;
+  rank_tree(c, d, 0, order, &m);
+  bool ok = m == n;
+  /* The root: the records' reach boxes. */
+  double lo[3] = {INFINITY, INFINITY, INFINITY};
+  double hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+  for (size_t j = 0; ok && j < n; j++) {
+    const zr__gi_near *q = &c->near[order[j]];
+    double p[3] = {q->p.x, q->p.y, q->p.z};
+    for (int k = 0; k < 3; k++) {
+      double e = grid_ext(q, a, p[k]);
+      if (!(fabs(p[k]) < 1e300) || !(e < 1e300))
+        ok = false;
+      lo[k] = fmin(lo[k], p[k] - e);
+      hi[k] = fmax(hi[k], p[k] + e);
+    }
+  }
+  if (!ok) {
+    free(order);
+    return false;
+  }
+  double h = 0.0;
+  for (int k = 0; k < 3; k++)
+    h = fmax(h, 0.5 * (hi[k] - lo[k]));
+  h = h * (1.0 + 1e-6) + 1e-300;
+  c->grid_a = a;
+  /* The entries' (and cells') cap; uint32_t offsets. */
+  size_t max_idx = (size_t)LEAF_ENTRIES + 64 * n;
+  if (max_idx > UINT32_MAX / 2)
+    max_idx = UINT32_MAX / 2;
+  grid_build gb = {c, 0, 0, max_idx, false};
+  int32_t root = grid_node(&gb, 1);
+  if (root == 0)
+    grid_fill(&gb, 0,
+              zr_v3(0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]),
+                    0.5 * (lo[2] + hi[2])),
+              h, order, n, 0);
+  free(order);
+  if (gb.nomem || root != 0) {
+    drop_grid(c);
+    return false;
+  }
+  return true;
+}
+
+/* blend_tree through the index: the records of the point's leaf, in rank
+   order, the same tests. */
+static void blend_grid(blend *b, const zr_gi_cache *c) {
+  const zr__gi_cell *cell = &c->grid_nodes[0];
+  if (!(fabs(b->p.x - cell->c.x) <= cell->h &&
+        fabs(b->p.y - cell->c.y) <= cell->h &&
+        fabs(b->p.z - cell->c.z) <= cell->h))
+    return; /* beyond every record's reach */
+  while (cell->child >= 0) {
+    int k = (b->p.x > cell->c.x) | ((b->p.y > cell->c.y) << 1) |
+            ((b->p.z > cell->c.z) << 2);
+    cell = &c->grid_nodes[cell->child + k];
+  }
+  for (uint32_t j = cell->start; j < cell->end; j++) {
+    int32_t i = c->grid_idx[j];
+    const zr__gi_near *q = &c->near[i];
+    zr_vec3 dv = zr_v3_sub(b->p, q->p);
+    double reach = b->a * q->r, dd = zr_v3_dot(dv, dv);
+    if (dd < reach * reach)
+      blend_near(b, &c->records.v[i], dv, dd);
+  }
+}
+
+/* Whether a final pass's lookup at depth d may take the index: the
+   first bounce, an error bound within the index's, a finite point. */
+static bool grid_serves(const zr_gi_cache *c, const blend *b, int d) {
+  return d == 0 && c->grid_a > 0.0 && b->a <= c->grid_a &&
+         isfinite(b->p.x) && isfinite(b->p.y) && isfinite(b->p.z) &&
+         fabs(b->p.x) < 1e300 && fabs(b->p.y) < 1e300 && fabs(b->p.z) < 1e300;
+}
+
+void zr__gi_cache_lookup(const zr_gi_cache *c, int d, zr_vec3 p, zr_vec3 n,
+                         double a, bool via_grid, int want, double sum[3],
+                         double *wsum, int *count) {
+  blend b;
+  memset(&b, 0, sizeof b);
+  b.p = p;
+  b.n = n;
+  b.a = a;
+  if (want > 0) {
+    if (d >= 0 && d < 20 && c->n_nodes[d] > 0)
+      count_tree(&b, c, d, c->jumps[d][0], want);
+  } else if (via_grid && grid_serves(c, &b, d)) {
+    blend_grid(&b, c);
+  } else if (d >= 0 && d < 20 && c->n_nodes[d] > 0) {
+    blend_tree(&b, c, d, c->jumps[d][0]);
+  }
+  for (int k = 0; k < 3; k++)
+    sum[k] = b.sum[k];
+  *wsum = b.wsum;
+  *count = b.count;
 }
 
 /* ---- gathering a record ------------------------------------------ */
@@ -714,16 +1015,33 @@ static bool cache_irradiance(const zr_indirect *self,
                  ? REFLECTANCE_FULL / w
                  : REFLECTANCE_GROWTH;
   }
-  if (d < 20 && c->n_nodes[d] > 0)
-    blend_tree(&b, c, d, c->jumps[d][0]);
-  if (sc)
-    for (size_t i = 0; i < sc->local.n; i++)
-      if (sc->local.v[i].depth == d)
-        blend_record(&b, &sc->local.v[i]);
   int want = d == 0 && (pretrace || (c->pretracing == 2 &&
                                      gp->always_sample))
                  ? gp->nearest_count
                  : 1;
+  /* A pretrace ray's own colour is thrown away: at the first bounce it
+     only asks how many records serve (count_tree). */
+  bool counting = c->pretracing != 0 && d == 0;
+  if (counting) {
+    if (want > 0 && c->n_nodes[d] > 0)
+      count_tree(&b, c, d, c->jumps[d][0], want);
+    for (size_t i = 0; sc && i < sc->local.n && b.count < want; i++) {
+      const zr__gi_record *r = &sc->local.v[i];
+      zr_vec3 dv = zr_v3_sub(b.p, r->p);
+      double reach = b.a * r->r, dd = zr_v3_dot(dv, dv), eps;
+      if (r->depth == d && dd < reach * reach && serves(&b, r, dv, dd, &eps))
+        b.count++;
+    }
+  } else {
+    if (c->pretracing == 0 && grid_serves(c, &b, d))
+      blend_grid(&b, c);
+    else if (d < 20 && c->n_nodes[d] > 0)
+      blend_tree(&b, c, d, c->jumps[d][0]);
+    if (sc)
+      for (size_t i = 0; i < sc->local.n; i++)
+        if (sc->local.v[i].depth == d)
+          blend_record(&b, &sc->local.v[i]);
+  }
   /* nearest_count's second value (POV-Ray's manual: the adaptive
      pretrace "will stop re-iterating over areas where ... that many
      ... samples are already present"): from the second pass on, a
@@ -744,13 +1062,17 @@ static bool cache_irradiance(const zr_indirect *self,
       /* Out of memory: use the record once without keeping it. */
     }
     zr__gi_list_free(&tmp.local);
+    if (counting) {
+      *out = finish_light(gp, rec.e);
+      return true;
+    }
     blend_record(&b, &rec);
     if (!(b.wsum > 0.0)) {
       *out = finish_light(gp, rec.e);
       return true;
     }
   }
-  if (!(b.wsum > 0.0))
+  if (counting || !(b.wsum > 0.0))
     return false;
   double e[3] = {b.sum[0] / b.wsum, b.sum[1] / b.wsum, b.sum[2] / b.wsum};
   *out = finish_light(gp, e);
@@ -835,6 +1157,7 @@ ZR_API void zr_gi_cache_free(zr_gi_cache *c) {
     return;
   zr__gi_list_free(&c->records);
   free(c->near);
+  drop_grid(c);
   for (int d = 0; d < 20; d++) {
     free(c->nodes[d]);
     free(c->cubes[d]);
@@ -1140,6 +1463,10 @@ ZR_API zr_status zr_gi_cache_pretrace(zr_gi_cache *c,
     size_t n = mosaic(w, h, 1.0, pixels);
     s = run_pass(c, render, &camera_media, pixels, n, &progress);
   }
+  /* The final pass only reads the cache: its index (none is no error:
+     lookups then walk the octree). */
+  if (s == ZR_OK)
+    (void)zr__gi_cache_freeze(c);
   if (s == ZR_OK)
     s = zr__progress(progress.ctx, ZR_PHASE_PRETRACE, progress.total,
                      progress.total);
