@@ -212,7 +212,8 @@ static void test_core_huge_alloc(void **state) {
     }
     v[n] = n * 3u;
   }
-  /* 512 KiB -> 1 MiB -> 2 MiB fit one 2 MiB block; 4 MiB needs two. */
+  /* From ZR__HUGE_FROM up to 2 MiB one 2 MiB block holds the array; 4 MiB
+     needs two. */
   assert_int_equal(moves_above, 1);
   /* Shrinking below the threshold keeps the start. */
   unsigned *less = zr__huge_grow(v, cap * sizeof *v, 100 * sizeof *v);

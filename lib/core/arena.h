@@ -72,9 +72,13 @@ void zr__mem_huge_pages(void *p, size_t size);
  * happen to fall inside it: none in most buffers under 4 MiB.  From
  * ZR__HUGE_FROM bytes on, zr__huge_alloc gives a block aligned on
  * 2 MiB, its size rounded up to them, advised (one fault per 2 MiB
- * where the kernel obliges; a buffer of 512 KiB costs 128 faults, about
- * 1.8 ms, otherwise); below, plain malloc.  The price is up to 2 MiB of
- * rounding per buffer.  Freed (and shrunk) with free and realloc.
+ * where the kernel obliges; a buffer of 256 KiB costs 64 faults, about
+ * 0.9 ms, otherwise, a huge page's fault and zeroing about 0.2 ms);
+ * below, plain malloc.  The price is up to 2 MiB of rounding per buffer
+ * (peak memory: peers flake 512^2 12.5 -> 14.1 MiB, terrain 46.8 ->
+ * 53.4).  Freed (and shrunk) with free and realloc.  p of
+ * zr__huge_grow must come from malloc or realloc (below ZR__HUGE_FROM)
+ * or from these two.
  *
  * zr__huge_grow is realloc for an array that grows (by doubling): p
  * holds old_size bytes (the size last asked of these two, or of malloc
@@ -83,7 +87,7 @@ void zr__mem_huge_pages(void *p, size_t size);
  * and then stays in it while its rounding has room.  NULL when out of
  * memory, p then unchanged.
  */
-enum { ZR__HUGE_FROM = 512 * 1024 };
+enum { ZR__HUGE_FROM = 256 * 1024 };
 void *zr__huge_alloc(size_t size);
 void *zr__huge_grow(void *p, size_t old_size, size_t new_size);
 
