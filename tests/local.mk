@@ -355,3 +355,6 @@ TESTS += tests/test_focal_blur.sh
 EXTRA_DIST += tests/test_focal_blur.sh bench/conform/focal_blur_probe.py
 TESTS += tests/test_fade_colour.sh
 EXTRA_DIST += tests/test_fade_colour.sh tests/fade_colour.pov
+# libtiff opened with dlopen, not linked (issue 13's start-up cost).
+TESTS += tests/test_tiff_dlopen.sh
+EXTRA_DIST += tests/test_tiff_dlopen.sh

@@ -179,6 +179,76 @@ static void test_core_arena_grow(void **state) {
   zr__arena_free(&a);
 }
 
+/* Big buffers in huge pages (core/arena.h): zr__huge_grow keeps an
+   array's contents as it doubles across ZR__HUGE_FROM, from there on
+   in a block aligned on 2 MiB that it keeps while the rounding has
+   room; an arena that has handed out ZR__HUGE_FROM bytes takes its
+   next block of small allocations as one aligned 2 MiB block. */
+static void test_core_huge_alloc(void **state) {
+  (void)state;
+  const uintptr_t huge = (uintptr_t)2 << 20;
+  char *small = zr__huge_alloc(100);
+  assert_non_null(small);
+  memset(small, 1, 100);
+  free(small);
+  size_t cap = 64;
+  unsigned *v = zr__huge_grow(NULL, 0, cap * sizeof *v);
+  assert_non_null(v);
+  int moves_above = 0;
+  for (unsigned n = 0; n < (3u << 20) / sizeof *v; n++) {
+    if (n == cap) {
+      unsigned *grown = zr__huge_grow(v, cap * sizeof *v,
+                                      2 * cap * sizeof *v);
+      assert_non_null(grown);
+      if (cap * sizeof *v >= ZR__HUGE_FROM)
+        moves_above += grown != v;
+      v = grown;
+      cap *= 2;
+      for (unsigned i = 0; i < n; i += 977)
+        assert_int_equal(v[i], i * 3u);
+      assert_int_equal(v[n - 1], (n - 1) * 3u);
+      if (cap * sizeof *v >= ZR__HUGE_FROM)
+        assert_int_equal((uintptr_t)v & (huge - 1), 0);
+    }
+    v[n] = n * 3u;
+  }
+  /* From ZR__HUGE_FROM up to 2 MiB one 2 MiB block holds the array; 4 MiB
+     needs two. */
+  assert_int_equal(moves_above, 1);
+  /* Shrinking below the threshold keeps the start. */
+  unsigned *less = zr__huge_grow(v, cap * sizeof *v, 100 * sizeof *v);
+  assert_non_null(less);
+  assert_int_equal(less[99], 99u * 3u);
+  free(less);
+  char *whole = zr__huge_alloc(ZR__HUGE_FROM);
+  assert_non_null(whole);
+  assert_int_equal((uintptr_t)whole & (huge - 1), 0);
+  memset(whole, 2, huge); /* rounded up to a whole huge page */
+  free(whole);
+  zr_arena a;
+  zr__arena_init(&a);
+  while (a.used < ZR__HUGE_FROM)
+    assert_non_null(zr__arena_alloc(&a, 200));
+  /* The next block starts a huge page (its data behind a header). */
+  char *b = NULL;
+  for (int i = 0; i < 1000 && !b; i++) {
+    char *d = zr__arena_alloc(&a, 200);
+    assert_non_null(d);
+    if ((uintptr_t)d % huge < 64)
+      b = d;
+  }
+  assert_non_null(b);
+  /* The next 5,000 (1 MiB) fit in it, zeroed. */
+  for (int i = 0; i < 5000; i++) {
+    char *d = zr__arena_alloc(&a, 200);
+    assert_non_null(d);
+    assert_int_equal(d[0] | d[199], 0);
+    assert_true((uintptr_t)d / huge == (uintptr_t)b / huge);
+    memset(d, 3, 200);
+  }
+  zr__arena_free(&a);
+}
+
 typedef struct captured {
   char text[512];
   int count;
@@ -220,6 +290,7 @@ int main(void) {
       cmocka_unit_test(test_core_matrix_keyword),
       cmocka_unit_test(test_core_strbuf_and_arena),
       cmocka_unit_test(test_core_arena_grow),
+      cmocka_unit_test(test_core_huge_alloc),
       cmocka_unit_test(test_core_diag_format),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);

@@ -388,14 +388,14 @@ static zr_status read_all(int fd, const char *path, unsigned long long limit,
        file: a buffer that fills up doubles, which a big scene cannot
        afford. */
     cap = (size_t)st.st_size + 2;
-  char *buf = malloc(cap);
+  /* A big scene file, in huge pages (core/arena.h). */
+  char *buf = zr__huge_alloc(cap);
   if (!buf)
     return say(why, why_size, ZR_ENOMEM, "'%s': out of memory", path);
-  zr__mem_huge_pages(buf, cap); /* a big scene file (core/arena.h) */
   size_t len = 0;
   for (;;) {
     if (len + 1 >= cap) {
-      char *grown = cap > SIZE_MAX / 2 ? NULL : realloc(buf, 2 * cap);
+      char *grown = cap > SIZE_MAX / 2 ? NULL : zr__huge_grow(buf, cap, 2 * cap);
       if (!grown) {
         free(buf);
         return say(why, why_size, ZR_ENOMEM, "'%s': out of memory", path);

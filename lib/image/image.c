@@ -41,6 +41,7 @@
 
 #include "core/budget.h"
 #include "core/context.h"
+#include "core/hugepage.h"
 #include "core/iopolicy.h"
 
 static zr_status check_size(int width, int height) {
@@ -62,6 +63,32 @@ static zr_image *image_alloc(int width, int height) {
   return image;
 }
 
+/*
+ * Zeroed memory for the pixels of a new image, freed with free.  From
+ * 2 MiB on, aligned on and advised to huge pages (core/hugepage.h) with
+ * its size rounded up to them: a render writes into this image, and on
+ * this project's virtual machine first touching each of its 4 KiB
+ * pages costs about 14 us.  A calloc'ed block (glibc mmaps one this
+ * big at a 4 KiB boundary) holds whole aligned huge pages only by
+ * chance: a 512x512 render's 3 MiB of floats, zeroed by lib/par before
+ * the render, took 768 page faults, about 0.011 s of CPU (measured, perf
+ * record -e page-faults, peers flake 512^2), 2 faults in huge pages.
+ */
+static float *pixels_alloc(size_t n) {
+  if (n > (SIZE_MAX - ZR__HUGE_PAGE) / sizeof(float))
+    return NULL;
+  size_t bytes = n * sizeof(float);
+  if (bytes < ZR__HUGE_PAGE)
+    return calloc(n, sizeof(float));
+  bytes = (bytes + ZR__HUGE_PAGE - 1) & ~(ZR__HUGE_PAGE - 1);
+  void *p = NULL;
+  if (posix_memalign(&p, ZR__HUGE_PAGE, bytes) != 0)
+    return NULL;
+  zr__mem_advise_huge(p, bytes);
+  memset(p, 0, bytes);
+  return p;
+}
+
 ZR_API zr_status zr_image_new(int width, int height, zr_image **out) {
   zr_status s = check_size(width, height);
   if (s != ZR_OK)
@@ -69,7 +96,7 @@ ZR_API zr_status zr_image_new(int width, int height, zr_image **out) {
   zr_image *image = image_alloc(width, height);
   if (!image)
     return ZR_ENOMEM;
-  image->pixels = calloc((size_t)width * (size_t)height * 3, sizeof(float));
+  image->pixels = pixels_alloc((size_t)width * (size_t)height * 3);
   if (!image->pixels) {
     free(image);
     return ZR_ENOMEM;

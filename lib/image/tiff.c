@@ -15,9 +15,24 @@
  * error reaches the context and warnings are dropped.  Bytes are served
  * from memory by client procedures, so files handed over by the MPI
  * reader work as local ones.
+ *
+ * libtiff is opened (dlopen) when the first TIFF is read, not linked:
+ * loading it and what it needs (libstdc++ through LERC, zstd, lzma,
+ * webp, jbig, deflate: 9 libraries) at start-up cost every process
+ * about 5 ms of CPU on this project's machine, a scene without a TIFF
+ * as much as one with (issue 13: zrcube --version took 17 ms; a
+ * program linked with libpng, libjpeg and OpenEXRCore started in
+ * 5.5 ms, 10.6 with libtiff as well).  It stays open for the process.
+ * The header still gives the types, so the calls are checked against
+ * it as before.
  */
+#include "config.h"
+
+#include <dlfcn.h>
+#include <sched.h>
 #include <stdarg.h>
 #include <stdbool.h>
+#include <stdatomic.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -31,6 +46,71 @@
 /* The largest single allocation libtiff may make for a hostile file:
    more than a strip or tile of the largest image read needs. */
 #define MAX_TIFF_ALLOC ((tmsize_t)1 << 29)
+
+#ifndef ZR_TIFF_SONAME
+#define ZR_TIFF_SONAME "libtiff.so.6"
+#endif
+
+/* The libtiff functions used here, from the library opened at run time. */
+typedef struct tiff_api {
+  __typeof__(TIFFOpenOptionsAlloc) *OpenOptionsAlloc;
+  __typeof__(TIFFOpenOptionsFree) *OpenOptionsFree;
+  __typeof__(TIFFOpenOptionsSetErrorHandlerExtR) *SetErrorHandlerExtR;
+  __typeof__(TIFFOpenOptionsSetWarningHandlerExtR) *SetWarningHandlerExtR;
+  __typeof__(TIFFOpenOptionsSetMaxSingleMemAlloc) *SetMaxSingleMemAlloc;
+  __typeof__(TIFFClientOpenExt) *ClientOpenExt;
+  __typeof__(TIFFGetField) *GetField;
+  __typeof__(TIFFRGBAImageOK) *RGBAImageOK;
+  __typeof__(TIFFReadRGBAImageOriented) *ReadRGBAImageOriented;
+  __typeof__(TIFFClose) *Close;
+} tiff_api;
+
+/* 0: not tried yet, 1: being opened, 2: ready, 3: not available. */
+static atomic_int api_state;
+static tiff_api api;
+static char api_why[160];
+
+/* Opens libtiff once per process; NULL (api_why says why) without it. */
+static const tiff_api *tiff_open_api(void) {
+  int expected = 0;
+  if (atomic_compare_exchange_strong(&api_state, &expected, 1)) {
+    void *h = dlopen(ZR_TIFF_SONAME, RTLD_NOW | RTLD_LOCAL);
+    bool ok = h != NULL;
+    const char *missing = NULL;
+#define ZR_TIFF_SYM(field, name)                                             \
+  do {                                                                       \
+    void *sym = ok ? dlsym(h, name) : NULL;                                  \
+    if (!sym && ok)                                                          \
+      ok = false, missing = name;                                            \
+    /* POSIX dlsym: an object pointer that holds a function's address. */   \
+    memcpy(&api.field, &sym, sizeof sym);                                    \
+  } while (0)
+    ZR_TIFF_SYM(OpenOptionsAlloc, "TIFFOpenOptionsAlloc");
+    ZR_TIFF_SYM(OpenOptionsFree, "TIFFOpenOptionsFree");
+    ZR_TIFF_SYM(SetErrorHandlerExtR, "TIFFOpenOptionsSetErrorHandlerExtR");
+    ZR_TIFF_SYM(SetWarningHandlerExtR,
+                "TIFFOpenOptionsSetWarningHandlerExtR");
+    ZR_TIFF_SYM(SetMaxSingleMemAlloc, "TIFFOpenOptionsSetMaxSingleMemAlloc");
+    ZR_TIFF_SYM(ClientOpenExt, "TIFFClientOpenExt");
+    ZR_TIFF_SYM(GetField, "TIFFGetField");
+    ZR_TIFF_SYM(RGBAImageOK, "TIFFRGBAImageOK");
+    ZR_TIFF_SYM(ReadRGBAImageOriented, "TIFFReadRGBAImageOriented");
+    ZR_TIFF_SYM(Close, "TIFFClose");
+#undef ZR_TIFF_SYM
+    if (!h)
+      snprintf(api_why, sizeof api_why, "cannot open %s", ZR_TIFF_SONAME);
+    else if (!ok)
+      snprintf(api_why, sizeof api_why, "%s lacks %s", ZR_TIFF_SONAME,
+               missing);
+    if (h && !ok)
+      dlclose(h);
+    atomic_store(&api_state, ok ? 2 : 3);
+  }
+  int state;
+  while ((state = atomic_load(&api_state)) == 1)
+    sched_yield(); /* another thread is opening it */
+  return state == 2 ? &api : NULL;
+}
 
 typedef struct tiff_source {
   const unsigned char *bytes;
@@ -119,27 +199,32 @@ zr_status zr__tiff_decode(zr_context *ctx, const char *name,
                           zr_image **out) {
   *out = NULL;
   tiff_source src = {bytes, size, 0, ""};
-  TIFFOpenOptions *opts = TIFFOpenOptionsAlloc();
+  const tiff_api *t = tiff_open_api();
+  if (!t)
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EUNSUPPORTED, NULL,
+                    "%s: TIFF images need libtiff at run time: %s", name,
+                    api_why);
+  TIFFOpenOptions *opts = t->OpenOptionsAlloc();
   if (!opts)
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s", name,
                     zr_status_str(ZR_ENOMEM));
-  TIFFOpenOptionsSetErrorHandlerExtR(opts, on_error, &src);
-  TIFFOpenOptionsSetWarningHandlerExtR(opts, on_warning, &src);
-  TIFFOpenOptionsSetMaxSingleMemAlloc(opts, MAX_TIFF_ALLOC);
+  t->SetErrorHandlerExtR(opts, on_error, &src);
+  t->SetWarningHandlerExtR(opts, on_warning, &src);
+  t->SetMaxSingleMemAlloc(opts, MAX_TIFF_ALLOC);
   /* "rm": read, and never memory-map (the bytes are ours already). */
-  TIFF *tif = TIFFClientOpenExt(name, "rm", (thandle_t)&src, on_read,
+  TIFF *tif = t->ClientOpenExt(name, "rm", (thandle_t)&src, on_read,
                                 on_write, on_seek, on_close, on_size, on_map,
                                 on_unmap, opts);
-  TIFFOpenOptionsFree(opts);
+  t->OpenOptionsFree(opts);
   if (!tif)
     return failed(ctx, name, &src, "not a readable TIFF file");
   uint32_t w = 0, h = 0;
-  TIFFGetField(tif, TIFFTAG_IMAGEWIDTH, &w);
-  TIFFGetField(tif, TIFFTAG_IMAGELENGTH, &h);
+  t->GetField(tif, TIFFTAG_IMAGEWIDTH, &w);
+  t->GetField(tif, TIFFTAG_IMAGELENGTH, &h);
   char why[1024] = "";
   if (w == 0 || h == 0 || w > INT32_MAX || h > INT32_MAX ||
-      !TIFFRGBAImageOK(tif, why)) {
-    TIFFClose(tif);
+      !t->RGBAImageOK(tif, why)) {
+    t->Close(tif);
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EUNSUPPORTED, NULL,
                     "%s: this kind of TIFF is not supported%s%.200s", name,
                     why[0] ? ": " : "", why);
@@ -147,7 +232,7 @@ zr_status zr__tiff_decode(zr_context *ctx, const char *name,
   zr_image *image = NULL;
   zr_status s = zr__image_new_named(ctx, name, (int)w, (int)h, &image);
   if (s != ZR_OK) {
-    TIFFClose(tif);
+    t->Close(tif);
     return s;
   }
   size_t count = (size_t)w * h;
@@ -159,14 +244,14 @@ zr_status zr__tiff_decode(zr_context *ctx, const char *name,
     free(raster);
     free(table);
     zr_image_free(image);
-    TIFFClose(tif);
+    t->Close(tif);
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s", name,
                     zr_status_str(ZR_ENOMEM));
   }
   /* stop_on_error = 1: a damaged file is an error, not a grey patch. */
-  int ok = TIFFReadRGBAImageOriented(tif, w, h, raster, ORIENTATION_TOPLEFT,
+  int ok = t->ReadRGBAImageOriented(tif, w, h, raster, ORIENTATION_TOPLEFT,
                                      1);
-  TIFFClose(tif);
+  t->Close(tif);
   if (ok) {
     for (size_t i = 0; i < count; i++) {
       unsigned rgb[3] = {TIFFGetR(raster[i]), TIFFGetG(raster[i]),

@@ -122,10 +122,10 @@ static zr_status push_token(zr_sdl_file *f, size_t *cap,
       return ZR_ELIMIT;
     if (f->budget)
       f->charged += more;
-    zr_sdl_token *tokens = realloc(f->tokens, new_cap * sizeof *tokens);
+    zr_sdl_token *tokens = zr__huge_grow(
+        f->tokens, *cap * sizeof *tokens, new_cap * sizeof *tokens);
     if (!tokens)
       return ZR_ENOMEM;
-    zr__mem_huge_pages(tokens, new_cap * sizeof *tokens);
     f->tokens = tokens;
     *cap = new_cap;
   }
