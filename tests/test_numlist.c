@@ -322,6 +322,44 @@ static void test_numlist_triangle_run_token(void **state) {
   zr__sdl_file_free(&file);
 }
 
+/* After a run the scanner starts again with small reads that grow
+   (tokens.c, zr__sdl_lex_input): tokens longer than those reads, right
+   after a run, come out whole and in their places - a string of every
+   length from 200 to 1200 bytes (across the 256, 512 and 1024 byte
+   reads), then a comment of as many bytes, then a keyword. */
+static void test_numlist_tokens_across_reads_after_a_run(void **state) {
+  (void)state;
+  for (size_t len = 200; len <= 1200; len += 7) {
+    zr_strbuf b;
+    zr__strbuf_init(&b);
+    zr__strbuf_printf(&b, "mesh { triangle { <0,0,0>, <1,0,0>, <0,1,0> }"
+                          "\"");
+    for (size_t i = 0; i < len; i++)
+      zr__strbuf_printf(&b, "%c", (char)('a' + i % 26));
+    zr__strbuf_printf(&b, "\" /*");
+    for (size_t i = 0; i < len; i++)
+      zr__strbuf_printf(&b, "%c", i % 61 == 60 ? '\n' : 'c');
+    zr__strbuf_printf(&b, "*/ triangle { <0,0,0>, <1,0,0>, <0,1,0> } }");
+    zr_sdl_file file;
+    lex_text(&file, zr__strbuf_cstr(&b));
+    zr__strbuf_free(&b);
+    static const int kinds[] = {T_MESH, '{', T_TRIANGLE_RUN, T_STRING,
+                                T_TRIANGLE_RUN, '}', 0};
+    assert_int_equal(file.n_tokens, sizeof kinds / sizeof *kinds);
+    for (size_t i = 0; i < file.n_tokens; i++)
+      assert_int_equal(file.tokens[i].kind, kinds[i]);
+    const char *str = file.tokens[3].v.str;
+    assert_int_equal(strlen(str), len);
+    for (size_t i = 0; i < len; i++)
+      assert_int_equal(str[i], 'a' + i % 26);
+    /* The second run sits after the comment's newlines, in its column. */
+    size_t newlines = len / 61, last_line = len - newlines * 61;
+    assert_int_equal(file.tokens[4].line, 1 + (int)newlines);
+    assert_int_equal(file.tokens[4].column, (int)last_line + 4);
+    zr__sdl_file_free(&file);
+  }
+}
+
 /* "smooth_triangle { six plain vectors }" becomes one run token, at the
    keyword's place; a texture, a seventh vector (uv_vectors), five
    vectors, a trailing comma or an expression keep the tokens. */
@@ -558,6 +596,7 @@ int main(void) {
       cmocka_unit_test(test_numlist_stops_where_the_grammar_starts),
       cmocka_unit_test(test_numlist_lexer_keeps_one_token),
       cmocka_unit_test(test_numlist_triangle_run_token),
+      cmocka_unit_test(test_numlist_tokens_across_reads_after_a_run),
       cmocka_unit_test(test_numlist_sphere_run_token),
       cmocka_unit_test(test_numlist_smooth_triangle_run_token),
       cmocka_unit_test_setup_teardown(

@@ -133,11 +133,30 @@ static zr_status push_token(zr_sdl_file *f, size_t *cap,
   return ZR_OK;
 }
 
+/*
+ * The scanner's reads copy the file's bytes into its buffer.  After each
+ * restart (every run below: a triangle, a sphere, a number list) the
+ * scanner forgets what it had read ahead, so a read of its whole buffer
+ * (8 KiB) for a triangle of ~100 bytes copied a terrain's 15 MB some 70
+ * times over: 10% of its parse (perf, bench/parse.sh).  The first read
+ * after a start copies READ_FIRST bytes and each next one twice as many,
+ * up to what the scanner asks: a scanner matches the same tokens however
+ * its input comes in pieces, and a long stretch of ordinary text still
+ * reaches full reads after a handful.
+ */
+enum { READ_FIRST = 256 };
+
 int zr__sdl_lex_input(zr_sdl_lexer *lx, char *buf, int max) {
   const zr_sdl_file *f = lx->file;
   size_t n = f->size - lx->read_pos;
+  if (lx->read_size < READ_FIRST)
+    lx->read_size = READ_FIRST;
+  if (n > lx->read_size)
+    n = lx->read_size;
   if (n > (size_t)max)
     n = (size_t)max;
+  if (lx->read_size < (size_t)max)
+    lx->read_size *= 2;
   memcpy(buf, f->bytes + lx->read_pos, n);
   lx->read_pos += n;
   return (int)n;
@@ -171,6 +190,7 @@ static int scan_guarded(zr_sdl_lexer *lx, yyscan_t scanner,
 }
 
 static bool restart_guarded(zr_sdl_lexer *lx, yyscan_t scanner) {
+  lx->read_size = READ_FIRST;
   if (setjmp(lx->fatal) != 0)
     return false;
   zr__scan_restart(NULL, scanner);
