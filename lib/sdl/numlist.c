@@ -102,23 +102,65 @@ static inline const char *digits_at(const char *p, const char *e,
   return p;
 }
 
+/* The plain digits at p, before e, as one integer (exact while there
+   are at most 19 of them); the byte after them. */
+static inline const char *plain_digits(const char *p, const char *e,
+                                       uint64_t *value) {
+  uint64_t v = *value;
+  for (; p < e && is_digit(*p); p++)
+    v = v * 10 + (uint64_t)(*p - '0');
+  *value = v;
+  return p;
+}
+
+/*
+ * The digits of a number before its exponent: DIGITS ["." DIGITS*] or
+ * "." DIGITS, as the mantissa of its significant digits (digits past
+ * the 19th only counted) and the number of digits after the point; the
+ * byte after them, or NULL when there are none.  With at most 19 digits
+ * in all (every number a scene writes with printf) one loop without
+ * tests takes them, leading zeros adding nothing to the mantissa;
+ * longer ones are read again digit by digit.
+ */
+static inline const char *mantissa_at(const char *start, const char *e,
+                                      uint64_t *mantissa, int *digits,
+                                      int *fraction) {
+  uint64_t m = 0;
+  const char *p = plain_digits(start, e, &m);
+  bool any = p > start;
+  const char *point = NULL;
+  if (p < e && *p == '.' && (any || (p + 1 < e && is_digit(p[1])))) {
+    point = p;
+    p = plain_digits(p + 1, e, &m);
+    any = true;
+  }
+  if (!any)
+    return NULL;
+  size_t all = (size_t)(p - start) - (point != NULL);
+  *fraction = point ? (int)(p - point - 1) : 0;
+  if (all <= 19) {
+    *mantissa = m;
+    *digits = m ? 1 : 0; /* only whether any is significant matters */
+    return p;
+  }
+  m = 0;
+  int n = 0;
+  p = digits_at(start, e, &m, &n);
+  if (point)
+    p = digits_at(point + 1, e, &m, &n);
+  *mantissa = m;
+  *digits = n;
+  return p;
+}
+
 /* A number as the scanner matches one: DIGITS ["." DIGITS*] [EXP] or
    "." DIGITS [EXP], EXP = [eE][-+]?DIGITS. */
 static inline bool number(zr_sdl_numreader *r, double *out) {
   const char *start = r->bytes + r->pos, *e = r->bytes + r->end;
-  const char *p = start;
   uint64_t mantissa = 0;
   int digits = 0, fraction = 0;
-  const char *q = digits_at(p, e, &mantissa, &digits);
-  bool any = q > p;
-  p = q;
-  if (p < e && *p == '.' && (any || (p + 1 < e && is_digit(p[1])))) {
-    q = digits_at(p + 1, e, &mantissa, &digits);
-    fraction = (int)(q - (p + 1));
-    p = q;
-    any = true;
-  }
-  if (!any)
+  const char *p = mantissa_at(start, e, &mantissa, &digits, &fraction);
+  if (!p)
     return false;
   int exponent = 0;
   bool exponent_ok = true;
