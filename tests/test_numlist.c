@@ -542,6 +542,36 @@ static void test_numlist_triangle_run_same_as_grammar(void **state) {
       "      | ^~~~~\n");
 }
 
+/* A triangle run's values are kept with its token: a loop or a macro
+   that replays the token gives the same face each time, and a run's
+   triangle object has the run's corners. */
+static void test_numlist_triangle_run_replayed(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f, "#macro T() triangle { <1.5, -2, 3e-1>, <4,5,6>,\n"
+                        " <7, 8.25, -9> } #end\n"
+                        "mesh { #for (i, 1, 3) triangle { <0.1,0,0>,\n"
+                        " <1,0,0>, <0,1,0> } #end T() T() }\n"
+                        "T()\n");
+  const struct zr_mesh *m = mesh_of(s, 0);
+  assert_int_equal(m->n_faces, 5);
+  /* The build orders the faces: count each kind. */
+  int loop = 0, macro = 0;
+  for (size_t i = 0; i < m->n_faces; i++) {
+    const zr_vec3 *c[3];
+    for (int k = 0; k < 3; k++)
+      c[k] = &m->vertices[m->faces[i][k]];
+    loop += c[0]->x == 0.1 && c[1]->x == 1 && c[2]->y == 1;
+    macro += c[0]->x == 1.5 && c[0]->z == 0.3 && c[2]->y == 8.25 &&
+             c[2]->z == -9;
+  }
+  assert_int_equal(loop, 3);
+  assert_int_equal(macro, 2);
+  assert_int_equal(s->primitives[1]->kind, ZR_OBJ_TRIANGLE);
+  const zr_vec3 *p = s->primitives[1]->u.triangle.p;
+  assert_true(p[0].x == 1.5 && p[0].y == -2 && p[1].z == 6 &&
+              p[2].y == 8.25);
+}
+
 /* Smooth triangles read as runs make the same mesh, corners and
    normals bit for bit, as the grammar's expressions (+0 defeats the
    run), in a mesh and alone, and their errors keep their places. */
@@ -605,6 +635,8 @@ int main(void) {
           test_numlist_sphere_run_same_as_grammar, setup, teardown),
       cmocka_unit_test_setup_teardown(
           test_numlist_triangle_run_same_as_grammar, setup, teardown),
+      cmocka_unit_test_setup_teardown(test_numlist_triangle_run_replayed,
+                                      setup, teardown),
       cmocka_unit_test_setup_teardown(test_numlist_same_mesh_as_the_grammar,
                                       setup, teardown),
       cmocka_unit_test_setup_teardown(

@@ -290,9 +290,10 @@ static zr_sdl_token run_token(zr_sdl_file *f, int kind, const char *run) {
  * "triangle { <a>, <b>, <c> }" with three plain vectors (the body of
  * most triangles in a big mesh) is kept as one token, T_TRIANGLE_RUN,
  * in place of the keyword, the braces and the 19 tokens of the vectors;
- * it points at the vectors' bytes, which the grammar's action reads
- * again with the same reader.  A terrain of 130,050 triangles then costs
- * one 24-byte token a triangle (issue 13: parse time and memory).  Any
+ * it points at the vectors' values, which the reader took from the
+ * bytes.  A terrain of 130,050 triangles then costs one 24-byte token
+ * and 72 bytes of values a triangle (issue 13: parse time and memory).
+ * Any
  * other body (a texture, a fourth vector, an expression, a comment)
  * stays as it was.  "smooth_triangle { <a>, <na>, <b>, <nb>, <c>, <nc> }"
  * is kept so too, as T_SMOOTH_TRIANGLE_RUN: 50 tokens a face made the
@@ -309,19 +310,26 @@ static zr_status triangle_run(zr_sdl_file *f, size_t *cap, zr_sdl_lexer *lx,
   bool smooth = f->tokens[n - 2].kind == T_SMOOTH_TRIANGLE;
   zr_sdl_numreader r = {f->bytes, lx->offset, f->size, lx->line,
                         lx->column, false, false};
-  double v[3];
+  double v[6][3];
   int dim, line, column;
   for (int k = 0; k < (smooth ? 6 : 3); k++)
-    if (!zr__sdl_numlist_item(&r, v, &dim, &line, &column))
+    if (!zr__sdl_numlist_item(&r, v[k], &dim, &line, &column))
       return ZR_OK;
   size_t end = r.pos;
   while (end < f->size && is_blank_byte(f->bytes[end]))
     end++;
   if (end >= f->size || f->bytes[end] != '}')
     return ZR_OK;
+  /* The values are kept, so the grammar's action does not read the
+     numbers again (they were a quarter of a terrain's parse). */
+  size_t size = (smooth ? 18 : 9) * sizeof(double);
+  double *corners = zr__arena_alloc(&f->strings, size);
+  if (!corners)
+    return f->strings.over_budget ? ZR_ELIMIT : ZR_ENOMEM;
+  memcpy(corners, v, size);
   zr_sdl_token t =
-      run_token(f, smooth ? T_SMOOTH_TRIANGLE_RUN : T_TRIANGLE_RUN,
-                f->bytes + lx->offset);
+      run_token(f, smooth ? T_SMOOTH_TRIANGLE_RUN : T_TRIANGLE_RUN, NULL);
+  t.v.corners = corners;
   zr_status status = push_token(f, cap, &t);
   zr_status resumed = resume_at(lx, scanner, end + 1, &r);
   return status != ZR_OK ? status : resumed;
