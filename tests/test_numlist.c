@@ -360,6 +360,46 @@ static void test_numlist_tokens_across_reads_after_a_run(void **state) {
   }
 }
 
+/* Runs that follow runs are taken without the scanner (tokens.c,
+   next_run): each keeps its keyword's place and length, and whatever
+   is not "triangle {" or "smooth_triangle {" with a plain body (a
+   longer word, a texture) goes back to the scanner. */
+static void test_numlist_runs_after_runs(void **state) {
+  (void)state;
+  zr_sdl_file file;
+  lex_text(&file,
+           "mesh { triangle { <0,0,0>, <1,0,0>, <0,1,0> }\n"
+           "\t  triangle{<0,0,0>,<1,0,0>,<0,1,0>}  smooth_triangle { <0,0,0>,"
+           " <0,0,1>, <1,0,0>, <0,0,1>, <0,1,0>, <0,0,1> }\n"
+           "triangles triangle { <1,1,1>, <2,2,2>, <3,3,3> }\n"
+           " triangle { <1,1,1>, <2,2,2>, <3,3,3> texture { T } } }\n");
+  static const struct {
+    int kind, line, column, length;
+  } want[] = {{T_MESH, 1, 1, 4},
+              {'{', 1, 6, 1},
+              {T_TRIANGLE_RUN, 1, 8, 8},
+              {T_TRIANGLE_RUN, 2, 4, 8},
+              {T_SMOOTH_TRIANGLE_RUN, 2, 39, 15},
+              {T_IDENTIFIER, 3, 1, 9},
+              {T_TRIANGLE_RUN, 3, 11, 8},
+              {T_TRIANGLE, 4, 2, 8},
+              {'{', 4, 11, 1}};
+  assert_true(file.n_tokens > sizeof want / sizeof *want);
+  for (size_t i = 0; i < sizeof want / sizeof *want; i++) {
+    const zr_sdl_token *t = &file.tokens[i];
+    if (t->kind != want[i].kind || t->line != want[i].line ||
+        t->column != want[i].column || t->length != want[i].length)
+      fail_msg("token %zu: kind %d at %d:%d (%d bytes), want %d at %d:%d "
+               "(%d)", i, t->kind, t->line, t->column, t->length,
+               want[i].kind, want[i].line, want[i].column, want[i].length);
+  }
+  const double *c = file.tokens[6].v.corners;
+  assert_true(c[0] == 1 && c[4] == 2 && c[8] == 3);
+  c = file.tokens[4].v.corners;
+  assert_true(c[5] == 1 && c[6] == 1 && c[17] == 1);
+  zr__sdl_file_free(&file);
+}
+
 /* "smooth_triangle { six plain vectors }" becomes one run token, at the
    keyword's place; a texture, a seventh vector (uv_vectors), five
    vectors, a trailing comma or an expression keep the tokens. */
@@ -627,6 +667,7 @@ int main(void) {
       cmocka_unit_test(test_numlist_lexer_keeps_one_token),
       cmocka_unit_test(test_numlist_triangle_run_token),
       cmocka_unit_test(test_numlist_tokens_across_reads_after_a_run),
+      cmocka_unit_test(test_numlist_runs_after_runs),
       cmocka_unit_test(test_numlist_sphere_run_token),
       cmocka_unit_test(test_numlist_smooth_triangle_run_token),
       cmocka_unit_test_setup_teardown(
