@@ -185,7 +185,6 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %union {
   double num;
   const char *str;
-  const double *corners;
   zr_sdl_decl_name decl;
   zr_sdl_value value;
   zr_sdl_expr expr;
@@ -238,9 +237,9 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
    sphere's "sphere { <x, y, z>, r" of plain numbers, read from the
    file's bytes as one token each (lib/sdl/tokens.c); the value points
    at the vectors in the file. */
-%token <corners> T_TRIANGLE_RUN "triangle with its corners"
+%token <str> T_TRIANGLE_RUN "triangle with its corners"
 %token <str> T_SPHERE_RUN "sphere with its centre and radius"
-%token <corners> T_SMOOTH_TRIANGLE_RUN "smooth_triangle with its corners"
+%token <str> T_SMOOTH_TRIANGLE_RUN "smooth_triangle with its corners"
 %token <decl> T_DECL_NAME "identifier"
 %token <value> T_FLOAT_ID "float identifier"
 %token <value> T_VECTOR_ID "vector identifier"
@@ -1500,7 +1499,7 @@ object:
 | T_TRIANGLE_RUN
     {
       TRY($$ = zr__sdl_object_new(p, ZR_OBJ_TRIANGLE, &@1));
-      zr__sdl_triangle_run($1, $$->u.triangle.p);
+      TRY(zr__sdl_triangle_run(p, $1, &@1, $$->u.triangle.p));
       zr__sdl_degenerate_triangle(p, $$->u.triangle.p, &@1);
     }
 | T_SMOOTH_TRIANGLE_RUN
@@ -4105,8 +4104,6 @@ int zr__pov_lex(ZR__POV_STYPE *lval, zr_sdl_loc *lloc, zr_sdl_parser *p) {
   case T_UNSUPPORTED:
   case T_TRIANGLE_RUN:
   case T_SMOOTH_TRIANGLE_RUN:
-    lval->corners = v.corners;
-    break;
   case T_SPHERE_RUN:
     lval->str = v.str;
     break;

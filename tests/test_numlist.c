@@ -393,10 +393,10 @@ static void test_numlist_runs_after_runs(void **state) {
                "(%d)", i, t->kind, t->line, t->column, t->length,
                want[i].kind, want[i].line, want[i].column, want[i].length);
   }
-  const double *c = file.tokens[6].v.corners;
-  assert_true(c[0] == 1 && c[4] == 2 && c[8] == 3);
-  c = file.tokens[4].v.corners;
-  assert_true(c[5] == 1 && c[6] == 1 && c[17] == 1);
+  /* Each points at its vectors, after its '{'. */
+  assert_int_equal(strncmp(file.tokens[3].v.str, "<0,0,0>,<1", 10), 0);
+  assert_int_equal(strncmp(file.tokens[4].v.str, " <0,0,0>, <0,0,1>", 17), 0);
+  assert_int_equal(strncmp(file.tokens[6].v.str, " <1,1,1>, <2", 12), 0);
   zr__sdl_file_free(&file);
 }
 
@@ -582,9 +582,8 @@ static void test_numlist_triangle_run_same_as_grammar(void **state) {
       "      | ^~~~~\n");
 }
 
-/* A triangle run's values are kept with its token: a loop or a macro
-   that replays the token gives the same face each time, and a run's
-   triangle object has the run's corners. */
+/* A loop or a macro that replays a triangle run's token gives the same
+   face each time, and a run's triangle object has the run's corners. */
 static void test_numlist_triangle_run_replayed(void **state) {
   fixture *f = *state;
   zr_scene *s = good(f, "#macro T() triangle { <1.5, -2, 3e-1>, <4,5,6>,\n"

@@ -226,45 +226,58 @@ bool zr__sdl_mesh_triangle(zr_sdl_parser *p, zr_object *o,
                       uvs ? uv : NULL, texture, &vertex_locs[0]);
 }
 
-/* The n vectors of a run token, as the lexer's reader took them from
-   the bytes (numlist.c, tokens.c). */
-static void run_vectors(const double *values, int n, zr_vec3 *out) {
-  for (int k = 0; k < n; k++)
-    out[k] = zr_v3(values[3 * k], values[3 * k + 1], values[3 * k + 2]);
+/* The n vectors of a run token: the lexer found exactly n items
+   there; the same reader takes them again (numlist.c). */
+static bool run_vectors(zr_sdl_parser *p, const char *run,
+                        const zr_sdl_loc *loc, int n, zr_vec3 *out) {
+  const zr_sdl_file *f = &p->files[loc->file];
+  zr_sdl_numreader r = {f->bytes, (size_t)(run - f->bytes), f->size,
+                        loc->line, loc->column, false, false};
+  for (int k = 0; k < n; k++) {
+    double v[3];
+    int dim, line, column;
+    if (!zr__sdl_numlist_item(&r, v, &dim, &line, &column)) {
+      zr__sdl_error(p, ZR_ESYNTAX, loc, "the lexer's triangle vertices "
+                    "do not read again");
+      return false;
+    }
+    out[k] = zr_v3(v[0], v[1], v[2]);
+  }
+  return true;
 }
 
-void zr__sdl_triangle_run(const double *corners, zr_vec3 out[3]) {
-  run_vectors(corners, 3, out);
+bool zr__sdl_triangle_run(zr_sdl_parser *p, const char *run,
+                          const zr_sdl_loc *loc, zr_vec3 out[3]) {
+  return run_vectors(p, run, loc, 3, out);
 }
 
 bool zr__sdl_mesh_triangle_run(zr_sdl_parser *p, zr_object *o,
-                               const double *corners,
-                               const zr_sdl_loc *loc) {
+                               const char *run, const zr_sdl_loc *loc) {
   zr_vec3 v[3];
-  zr__sdl_triangle_run(corners, v);
-  return add_triangle(p, &build_of(o)->mesh, v, NULL, NULL, NULL, loc);
+  return zr__sdl_triangle_run(p, run, loc, v) &&
+         add_triangle(p, &build_of(o)->mesh, v, NULL, NULL, NULL, loc);
 }
 
 /* A smooth_triangle's run: corners and normals alternate. */
-static bool add_smooth_run(zr_sdl_parser *p, zr_object *o,
-                           const double *corners, const zr_sdl_loc *loc) {
+static bool add_smooth_run(zr_sdl_parser *p, zr_object *o, const char *run,
+                           const zr_sdl_loc *loc) {
   zr_vec3 e[6];
-  run_vectors(corners, 6, e);
+  if (!run_vectors(p, run, loc, 6, e))
+    return false;
   zr_vec3 v[3] = {e[0], e[2], e[4]}, n[3] = {e[1], e[3], e[5]};
   return add_triangle(p, &build_of(o)->mesh, v, n, NULL, NULL, loc);
 }
 
 bool zr__sdl_mesh_smooth_triangle_run(zr_sdl_parser *p, zr_object *o,
-                                      const double *corners,
+                                      const char *run,
                                       const zr_sdl_loc *loc) {
-  return add_smooth_run(p, o, corners, loc);
+  return add_smooth_run(p, o, run, loc);
 }
 
-zr_object *zr__sdl_smooth_triangle_run(zr_sdl_parser *p,
-                                       const double *corners,
+zr_object *zr__sdl_smooth_triangle_run(zr_sdl_parser *p, const char *run,
                                        const zr_sdl_loc *loc) {
   zr_object *o = zr__sdl_mesh_new(p, false, loc);
-  if (!o || !add_smooth_run(p, o, corners, loc) ||
+  if (!o || !add_smooth_run(p, o, run, loc) ||
       !zr__sdl_mesh_done(p, o, loc))
     return NULL;
   return o;

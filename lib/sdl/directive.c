@@ -1130,10 +1130,6 @@ int zr__sdl_next(zr_sdl_lexval *val, zr_sdl_loc *loc, zr_sdl_parser *p) {
     case T_NUMBER:
       v.num = t->v.num;
       return deliver(p, t->kind, &v, &tl, NULL, val, loc);
-    case T_TRIANGLE_RUN:
-    case T_SMOOTH_TRIANGLE_RUN:
-      v.corners = t->v.corners;
-      return deliver(p, t->kind, &v, &tl, NULL, val, loc);
     case T_IDENTIFIER:
       break;
     default:

@@ -273,7 +273,6 @@ typedef struct zr_sdl_clist {
 typedef union zr_sdl_lexval {
   double num;
   const char *str;
-  const double *corners; /* the triangle runs' (zr_sdl_token) */
   zr_sdl_decl_name decl;
   zr_sdl_value value;
 } zr_sdl_lexval;
@@ -304,9 +303,6 @@ typedef struct zr_sdl_token {
     double num;
     const char *str; /* interned in the file's arena */
     const zr_sdl_numlist *list; /* ZR_SDL_NUMBER_LIST */
-    /* T_TRIANGLE_RUN's 9 values (3 corners), T_SMOOTH_TRIANGLE_RUN's 18
-       (corner and normal in turn), read once by the lexer. */
-    const double *corners;
   } v;
 } zr_sdl_token;
 

@@ -290,9 +290,9 @@ static zr_sdl_token run_token(zr_sdl_file *f, int kind, const char *run) {
  * "triangle { <a>, <b>, <c> }" with three plain vectors (the body of
  * most triangles in a big mesh) is kept as one token, T_TRIANGLE_RUN,
  * in place of the keyword, the braces and the 19 tokens of the vectors;
- * it points at the vectors' values, which the reader took from the
- * bytes.  A terrain of 130,050 triangles then costs one 24-byte token
- * and 72 bytes of values a triangle (issue 13: parse time and memory).
+ * it points at the vectors' bytes, which the grammar's action reads
+ * again with the same reader.  A terrain of 130,050 triangles then costs
+ * one 24-byte token a triangle (issue 13: parse time and memory).
  * Any other body (a texture, a fourth vector, an expression, a comment)
  * stays as it was.  "smooth_triangle { <a>, <na>, <b>, <nb>, <c>, <nc> }"
  * is kept so too, as T_SMOOTH_TRIANGLE_RUN: 50 tokens a face made the
@@ -324,24 +324,20 @@ static bool run_body(const zr_sdl_file *f, zr_sdl_numreader *r, int n,
 }
 
 /* The run token of kind at (line, column), the place of its keyword of
-   length bytes, with its n vectors. */
+   length bytes, whose vectors start at run.  The grammar's action reads
+   them again from there (build_mesh.c): keeping the values instead (72
+   bytes a triangle) saved that reading but cost as much in first
+   touches of fresh pages (14 us each on this machine) and 10 MB more
+   for a terrain (bench/results/mpi-n2-2026-12-03-s11.txt). */
 static zr_status push_run(zr_sdl_file *f, size_t *cap, int kind, int line,
-                          int column, int length, int n,
-                          const double v[6][3]) {
-  size_t size = (size_t)n * 3 * sizeof(double);
-  /* The values are kept, so the grammar's action does not read the
-     numbers again (they were a quarter of a terrain's parse). */
-  double *corners = zr__arena_alloc(&f->strings, size);
-  if (!corners)
-    return f->strings.over_budget ? ZR_ELIMIT : ZR_ENOMEM;
-  memcpy(corners, v, size);
+                          int column, int length, const char *run) {
   zr_sdl_token t;
   memset(&t, 0, sizeof t);
   t.kind = kind;
   t.line = line;
   t.column = column;
   t.length = length;
-  t.v.corners = corners;
+  t.v.str = run;
   return push_token(f, cap, &t);
 }
 
@@ -399,7 +395,7 @@ static zr_status next_run(zr_sdl_file *f, size_t *cap, zr_sdl_numreader *r,
     if (!run_body(f, &q, runs[i].vectors, v, &end))
       return ZR_OK;
     zr_status status = push_run(f, cap, runs[i].kind, line, column,
-                                runs[i].length, runs[i].vectors, v);
+                                runs[i].length, f->bytes + brace + 1);
     if (status != ZR_OK)
       return status;
     *r = q;
@@ -430,7 +426,7 @@ static zr_status triangle_run(zr_sdl_file *f, size_t *cap, zr_sdl_lexer *lx,
   zr_status status =
       push_run(f, cap, smooth ? T_SMOOTH_TRIANGLE_RUN : T_TRIANGLE_RUN,
                keyword.line, keyword.column, keyword.length,
-               smooth ? 6 : 3, v);
+               f->bytes + lx->offset);
   for (bool more = true; status == ZR_OK && more;)
     status = next_run(f, cap, &r, &close, &more);
   zr_status resumed = resume_at(lx, scanner, close + 1, &r);
