@@ -322,6 +322,84 @@ static void test_numlist_triangle_run_token(void **state) {
   zr__sdl_file_free(&file);
 }
 
+/* After a run the scanner starts again with small reads that grow
+   (tokens.c, zr__sdl_lex_input): tokens longer than those reads, right
+   after a run, come out whole and in their places - a string of every
+   length from 200 to 1200 bytes (across the 256, 512 and 1024 byte
+   reads), then a comment of as many bytes, then a keyword. */
+static void test_numlist_tokens_across_reads_after_a_run(void **state) {
+  (void)state;
+  for (size_t len = 200; len <= 1200; len += 7) {
+    zr_strbuf b;
+    zr__strbuf_init(&b);
+    zr__strbuf_printf(&b, "mesh { triangle { <0,0,0>, <1,0,0>, <0,1,0> }"
+                          "\"");
+    for (size_t i = 0; i < len; i++)
+      zr__strbuf_printf(&b, "%c", (char)('a' + i % 26));
+    zr__strbuf_printf(&b, "\" /*");
+    for (size_t i = 0; i < len; i++)
+      zr__strbuf_printf(&b, "%c", i % 61 == 60 ? '\n' : 'c');
+    zr__strbuf_printf(&b, "*/ triangle { <0,0,0>, <1,0,0>, <0,1,0> } }");
+    zr_sdl_file file;
+    lex_text(&file, zr__strbuf_cstr(&b));
+    zr__strbuf_free(&b);
+    static const int kinds[] = {T_MESH, '{', T_TRIANGLE_RUN, T_STRING,
+                                T_TRIANGLE_RUN, '}', 0};
+    assert_int_equal(file.n_tokens, sizeof kinds / sizeof *kinds);
+    for (size_t i = 0; i < file.n_tokens; i++)
+      assert_int_equal(file.tokens[i].kind, kinds[i]);
+    const char *str = file.tokens[3].v.str;
+    assert_int_equal(strlen(str), len);
+    for (size_t i = 0; i < len; i++)
+      assert_int_equal(str[i], 'a' + i % 26);
+    /* The second run sits after the comment's newlines, in its column. */
+    size_t newlines = len / 61, last_line = len - newlines * 61;
+    assert_int_equal(file.tokens[4].line, 1 + (int)newlines);
+    assert_int_equal(file.tokens[4].column, (int)last_line + 4);
+    zr__sdl_file_free(&file);
+  }
+}
+
+/* Runs that follow runs are taken without the scanner (tokens.c,
+   next_run): each keeps its keyword's place and length, and whatever
+   is not "triangle {" or "smooth_triangle {" with a plain body (a
+   longer word, a texture) goes back to the scanner. */
+static void test_numlist_runs_after_runs(void **state) {
+  (void)state;
+  zr_sdl_file file;
+  lex_text(&file,
+           "mesh { triangle { <0,0,0>, <1,0,0>, <0,1,0> }\n"
+           "\t  triangle{<0,0,0>,<1,0,0>,<0,1,0>}  smooth_triangle { <0,0,0>,"
+           " <0,0,1>, <1,0,0>, <0,0,1>, <0,1,0>, <0,0,1> }\n"
+           "triangles triangle { <1,1,1>, <2,2,2>, <3,3,3> }\n"
+           " triangle { <1,1,1>, <2,2,2>, <3,3,3> texture { T } } }\n");
+  static const struct {
+    int kind, line, column, length;
+  } want[] = {{T_MESH, 1, 1, 4},
+              {'{', 1, 6, 1},
+              {T_TRIANGLE_RUN, 1, 8, 8},
+              {T_TRIANGLE_RUN, 2, 4, 8},
+              {T_SMOOTH_TRIANGLE_RUN, 2, 39, 15},
+              {T_IDENTIFIER, 3, 1, 9},
+              {T_TRIANGLE_RUN, 3, 11, 8},
+              {T_TRIANGLE, 4, 2, 8},
+              {'{', 4, 11, 1}};
+  assert_true(file.n_tokens > sizeof want / sizeof *want);
+  for (size_t i = 0; i < sizeof want / sizeof *want; i++) {
+    const zr_sdl_token *t = &file.tokens[i];
+    if (t->kind != want[i].kind || t->line != want[i].line ||
+        t->column != want[i].column || t->length != want[i].length)
+      fail_msg("token %zu: kind %d at %d:%d (%d bytes), want %d at %d:%d "
+               "(%d)", i, t->kind, t->line, t->column, t->length,
+               want[i].kind, want[i].line, want[i].column, want[i].length);
+  }
+  /* Each points at its vectors, after its '{'. */
+  assert_int_equal(strncmp(file.tokens[3].v.str, "<0,0,0>,<1", 10), 0);
+  assert_int_equal(strncmp(file.tokens[4].v.str, " <0,0,0>, <0,0,1>", 17), 0);
+  assert_int_equal(strncmp(file.tokens[6].v.str, " <1,1,1>, <2", 12), 0);
+  zr__sdl_file_free(&file);
+}
+
 /* "smooth_triangle { six plain vectors }" becomes one run token, at the
    keyword's place; a texture, a seventh vector (uv_vectors), five
    vectors, a trailing comma or an expression keep the tokens. */
@@ -504,6 +582,35 @@ static void test_numlist_triangle_run_same_as_grammar(void **state) {
       "      | ^~~~~\n");
 }
 
+/* A loop or a macro that replays a triangle run's token gives the same
+   face each time, and a run's triangle object has the run's corners. */
+static void test_numlist_triangle_run_replayed(void **state) {
+  fixture *f = *state;
+  zr_scene *s = good(f, "#macro T() triangle { <1.5, -2, 3e-1>, <4,5,6>,\n"
+                        " <7, 8.25, -9> } #end\n"
+                        "mesh { #for (i, 1, 3) triangle { <0.1,0,0>,\n"
+                        " <1,0,0>, <0,1,0> } #end T() T() }\n"
+                        "T()\n");
+  const struct zr_mesh *m = mesh_of(s, 0);
+  assert_int_equal(m->n_faces, 5);
+  /* The build orders the faces: count each kind. */
+  int loop = 0, macro = 0;
+  for (size_t i = 0; i < m->n_faces; i++) {
+    const zr_vec3 *c[3];
+    for (int k = 0; k < 3; k++)
+      c[k] = &m->vertices[m->faces[i][k]];
+    loop += c[0]->x == 0.1 && c[1]->x == 1 && c[2]->y == 1;
+    macro += c[0]->x == 1.5 && c[0]->z == 0.3 && c[2]->y == 8.25 &&
+             c[2]->z == -9;
+  }
+  assert_int_equal(loop, 3);
+  assert_int_equal(macro, 2);
+  assert_int_equal(s->primitives[1]->kind, ZR_OBJ_TRIANGLE);
+  const zr_vec3 *p = s->primitives[1]->u.triangle.p;
+  assert_true(p[0].x == 1.5 && p[0].y == -2 && p[1].z == 6 &&
+              p[2].y == 8.25);
+}
+
 /* Smooth triangles read as runs make the same mesh, corners and
    normals bit for bit, as the grammar's expressions (+0 defeats the
    run), in a mesh and alone, and their errors keep their places. */
@@ -558,6 +665,8 @@ int main(void) {
       cmocka_unit_test(test_numlist_stops_where_the_grammar_starts),
       cmocka_unit_test(test_numlist_lexer_keeps_one_token),
       cmocka_unit_test(test_numlist_triangle_run_token),
+      cmocka_unit_test(test_numlist_tokens_across_reads_after_a_run),
+      cmocka_unit_test(test_numlist_runs_after_runs),
       cmocka_unit_test(test_numlist_sphere_run_token),
       cmocka_unit_test(test_numlist_smooth_triangle_run_token),
       cmocka_unit_test_setup_teardown(
@@ -566,6 +675,8 @@ int main(void) {
           test_numlist_sphere_run_same_as_grammar, setup, teardown),
       cmocka_unit_test_setup_teardown(
           test_numlist_triangle_run_same_as_grammar, setup, teardown),
+      cmocka_unit_test_setup_teardown(test_numlist_triangle_run_replayed,
+                                      setup, teardown),
       cmocka_unit_test_setup_teardown(test_numlist_same_mesh_as_the_grammar,
                                       setup, teardown),
       cmocka_unit_test_setup_teardown(

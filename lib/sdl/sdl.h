@@ -378,6 +378,7 @@ typedef struct zr_sdl_lexer {
   int line, column;       /* where the next character is */
   size_t offset;          /* the same place as a byte of the file */
   size_t read_pos;        /* the next byte the scanner's input reads */
+  size_t read_size;       /* how much its next read copies (at most) */
   int comment_depth;      /* nesting of block comments */
   zr_sdl_loc comment_at;  /* where the outermost open comment began */
   bool failed;

@@ -133,11 +133,30 @@ static zr_status push_token(zr_sdl_file *f, size_t *cap,
   return ZR_OK;
 }
 
+/*
+ * The scanner's reads copy the file's bytes into its buffer.  After each
+ * restart (every run below: a triangle, a sphere, a number list) the
+ * scanner forgets what it had read ahead, so a read of its whole buffer
+ * (8 KiB) for a triangle of ~100 bytes copied a terrain's 15 MB some 70
+ * times over: 10% of its parse (perf, bench/parse.sh).  The first read
+ * after a start copies READ_FIRST bytes and each next one twice as many,
+ * up to what the scanner asks: a scanner matches the same tokens however
+ * its input comes in pieces, and a long stretch of ordinary text still
+ * reaches full reads after a handful.
+ */
+enum { READ_FIRST = 256 };
+
 int zr__sdl_lex_input(zr_sdl_lexer *lx, char *buf, int max) {
   const zr_sdl_file *f = lx->file;
   size_t n = f->size - lx->read_pos;
+  if (lx->read_size < READ_FIRST)
+    lx->read_size = READ_FIRST;
+  if (n > lx->read_size)
+    n = lx->read_size;
   if (n > (size_t)max)
     n = (size_t)max;
+  if (lx->read_size < (size_t)max)
+    lx->read_size *= 2;
   memcpy(buf, f->bytes + lx->read_pos, n);
   lx->read_pos += n;
   return (int)n;
@@ -171,6 +190,7 @@ static int scan_guarded(zr_sdl_lexer *lx, yyscan_t scanner,
 }
 
 static bool restart_guarded(zr_sdl_lexer *lx, yyscan_t scanner) {
+  lx->read_size = READ_FIRST;
   if (setjmp(lx->fatal) != 0)
     return false;
   zr__scan_restart(NULL, scanner);
@@ -272,13 +292,120 @@ static zr_sdl_token run_token(zr_sdl_file *f, int kind, const char *run) {
  * in place of the keyword, the braces and the 19 tokens of the vectors;
  * it points at the vectors' bytes, which the grammar's action reads
  * again with the same reader.  A terrain of 130,050 triangles then costs
- * one 24-byte token a triangle (issue 13: parse time and memory).  Any
- * other body (a texture, a fourth vector, an expression, a comment)
+ * one 24-byte token a triangle (issue 13: parse time and memory).
+ * Any other body (a texture, a fourth vector, an expression, a comment)
  * stays as it was.  "smooth_triangle { <a>, <na>, <b>, <nb>, <c>, <nc> }"
  * is kept so too, as T_SMOOTH_TRIANGLE_RUN: 50 tokens a face made the
  * corpus' complexity.pov (16,869 of them in cedar.pov) lex and parse in
  * 0.3 s, two thirds of it growing and copying the token array.
+ * A run followed, after blanks only, by another "triangle {" or
+ * "smooth_triangle {" with a plain body is followed here too, without
+ * the scanner: it would give the same keyword and '{' (a keyword is a
+ * word of [a-zA-Z0-9_] that no such character follows, pov.l's IDENT),
+ * and scanning them and starting again after each run was a fifth of a
+ * terrain's parse (callgrind).
  */
+
+/* The body of a run after its '{': n plain vectors (r moves past them)
+   and blanks up to the '}', whose offset goes to *close. */
+static bool run_body(const zr_sdl_file *f, zr_sdl_numreader *r, int n,
+                     double v[6][3], size_t *close) {
+  int dim, line, column;
+  for (int k = 0; k < n; k++)
+    if (!zr__sdl_numlist_item(r, v[k], &dim, &line, &column))
+      return false;
+  size_t end = r->pos;
+  while (end < f->size && is_blank_byte(f->bytes[end]))
+    end++;
+  if (end >= f->size || f->bytes[end] != '}')
+    return false;
+  *close = end;
+  return true;
+}
+
+/* The run token of kind at (line, column), the place of its keyword of
+   length bytes, whose vectors start at run.  The grammar's action reads
+   them again from there (build_mesh.c): keeping the values instead (72
+   bytes a triangle) saved that reading but cost as much in first
+   touches of fresh pages (14 us each on this machine) and 10 MB more
+   for a terrain (bench/results/mpi-n2-2026-12-03-s11.txt). */
+static zr_status push_run(zr_sdl_file *f, size_t *cap, int kind, int line,
+                          int column, int length, const char *run) {
+  zr_sdl_token t;
+  memset(&t, 0, sizeof t);
+  t.kind = kind;
+  t.line = line;
+  t.column = column;
+  t.length = length;
+  t.v.str = run;
+  return push_token(f, cap, &t);
+}
+
+static bool is_word_byte(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
+         (c >= '0' && c <= '9') || c == '_';
+}
+
+/* Moves r over bytes [r->pos, to), counting lines and columns. */
+static void move_to(zr_sdl_numreader *r, size_t to) {
+  for (; r->pos < to; r->pos++) {
+    if (r->bytes[r->pos] == '\n') {
+      r->line++;
+      r->column = 1;
+    } else {
+      r->column++;
+    }
+  }
+}
+
+/* After a run whose '}' is at close (r just past its vectors): the next
+   run when blanks and then "triangle {" or "smooth_triangle {" with a
+   plain body follow; r and *close move past it.  False, r and *close
+   unchanged, otherwise. */
+static zr_status next_run(zr_sdl_file *f, size_t *cap, zr_sdl_numreader *r,
+                          size_t *close, bool *found) {
+  static const struct {
+    const char *word;
+    int length, kind, vectors;
+  } runs[] = {{"triangle", 8, T_TRIANGLE_RUN, 3},
+              {"smooth_triangle", 15, T_SMOOTH_TRIANGLE_RUN, 6}};
+  *found = false;
+  zr_sdl_numreader q = *r;
+  move_to(&q, *close + 1);
+  size_t at = q.pos;
+  while (at < f->size && is_blank_byte(f->bytes[at]))
+    at++;
+  move_to(&q, at);
+  for (size_t i = 0; i < sizeof runs / sizeof *runs; i++) {
+    size_t len = (size_t)runs[i].length;
+    if (f->size - at <= len ||
+        memcmp(f->bytes + at, runs[i].word, len) != 0 ||
+        is_word_byte(f->bytes[at + len]))
+      continue;
+    int line = q.line, column = q.column;
+    move_to(&q, at + len);
+    size_t brace = q.pos;
+    while (brace < f->size && is_blank_byte(f->bytes[brace]))
+      brace++;
+    if (brace >= f->size || f->bytes[brace] != '{')
+      return ZR_OK;
+    move_to(&q, brace + 1);
+    double v[6][3];
+    size_t end;
+    if (!run_body(f, &q, runs[i].vectors, v, &end))
+      return ZR_OK;
+    zr_status status = push_run(f, cap, runs[i].kind, line, column,
+                                runs[i].length, f->bytes + brace + 1);
+    if (status != ZR_OK)
+      return status;
+    *r = q;
+    *close = end;
+    *found = true;
+    return ZR_OK;
+  }
+  return ZR_OK;
+}
+
 static zr_status triangle_run(zr_sdl_file *f, size_t *cap, zr_sdl_lexer *lx,
                               yyscan_t scanner) {
   size_t n = f->n_tokens;
@@ -289,21 +416,20 @@ static zr_status triangle_run(zr_sdl_file *f, size_t *cap, zr_sdl_lexer *lx,
   bool smooth = f->tokens[n - 2].kind == T_SMOOTH_TRIANGLE;
   zr_sdl_numreader r = {f->bytes, lx->offset, f->size, lx->line,
                         lx->column, false, false};
-  double v[3];
-  int dim, line, column;
-  for (int k = 0; k < (smooth ? 6 : 3); k++)
-    if (!zr__sdl_numlist_item(&r, v, &dim, &line, &column))
-      return ZR_OK;
-  size_t end = r.pos;
-  while (end < f->size && is_blank_byte(f->bytes[end]))
-    end++;
-  if (end >= f->size || f->bytes[end] != '}')
+  double v[6][3];
+  size_t close;
+  if (!run_body(f, &r, smooth ? 6 : 3, v, &close))
     return ZR_OK;
-  zr_sdl_token t =
-      run_token(f, smooth ? T_SMOOTH_TRIANGLE_RUN : T_TRIANGLE_RUN,
-                f->bytes + lx->offset);
-  zr_status status = push_token(f, cap, &t);
-  zr_status resumed = resume_at(lx, scanner, end + 1, &r);
+  /* The run stands where the keyword stood; the '{' goes. */
+  zr_sdl_token keyword = f->tokens[n - 2];
+  f->n_tokens -= 2;
+  zr_status status =
+      push_run(f, cap, smooth ? T_SMOOTH_TRIANGLE_RUN : T_TRIANGLE_RUN,
+               keyword.line, keyword.column, keyword.length,
+               f->bytes + lx->offset);
+  for (bool more = true; status == ZR_OK && more;)
+    status = next_run(f, cap, &r, &close, &more);
+  zr_status resumed = resume_at(lx, scanner, close + 1, &r);
   return status != ZR_OK ? status : resumed;
 }
 
