@@ -355,3 +355,8 @@ TESTS += tests/test_focal_blur.sh
 EXTRA_DIST += tests/test_focal_blur.sh bench/conform/focal_blur_probe.py
 TESTS += tests/test_fade_colour.sh
 EXTRA_DIST += tests/test_fade_colour.sh tests/fade_colour.pov
+# Shadows through fading interiors and through merges of several parts
+# (povray's rule measured by bench/conform/shadow_fade_probe.sh).
+TESTS += tests/test_shadow_fade.sh
+EXTRA_DIST += tests/test_shadow_fade.sh tests/shadow_fade.pov \
+	bench/conform/shadow_fade_probe.sh bench/conform/shadow_fade_probe.pov
