@@ -1,7 +1,7 @@
 // shadow_fade.pov - shadows through clear blocks whose interiors fade
 // light (fade_distance, fade_power 1), and through merges of several
 // blocks (tests/test_shadow_fade.sh; lib/trace/shade.c shadow_fade,
-// lib/trace/bvh.c visit_leaf).  A white floor lit from straight above
+// lib/trace/bvh.c visit_leaf), and fade_power 0.  A white floor lit from straight above
 // by a parallel light, seen from above by an orthographic camera; the
 // blocks are no_image unless the case needs the camera's ray inside one.
 // IA: fade_distance 0.5; IB: 0.25; T: clear (filter F).
@@ -48,4 +48,12 @@ light_source { <0, 1000, 0>, rgb 0.5 parallel point_at 0 }
 // 8: a merge whose parts take its interior: faded over the whole
 // (0.3333).
 #case (8) merge { Slab(1, 1.5) Slab(1.5, 2) interior { IA } no_image } #break
+// 9: a block 1 thick of fade_distance 1, fade_power 0, seen through:
+// the camera's ray is halved (the formula's (d / 1)^0 = 1), the shadow
+// ray is not faded (0.5).
+#case (9) object { Slab(1, 2) interior { fade_distance 1 fade_power 0 } }
+#break
+// 10: the same block with fade_power 1: both are halved (0.25).
+#case (10) object { Slab(1, 2) interior { fade_distance 1 fade_power 1 } }
+#break
 #end

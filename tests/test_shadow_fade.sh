@@ -6,7 +6,9 @@
 # interiors starts with the interiors of the ray that met the lit point,
 # and a stretch between two surfaces is faded only where the ray leaves
 # an interior the path holds, by that one; and it filters the light at
-# every surface of a merge, not the first two.  tests/shadow_fade.pov,
+# every surface of a merge, not the first two; fade_power 0 halves the
+# camera's rays (1 / (1 + (d / fade_distance)^0)) and leaves shadow
+# rays alone.  tests/shadow_fade.pov,
 # povray 3.7.0.10's pixels (16x12, -A +WT1 -GA; each case is flat),
 # with what the tree before this test gave:
 #   1 stacked merge, own interiors: 188 (1.00 of the light)
@@ -17,7 +19,11 @@
 #   6 the floor inside a fading block: 89 (0.2)
 #   7 as 6 with a fading block inside: 61 (0.0925; before 32)
 #   8 a merge whose parts take its interior: 113 (0.3333)
-# bench/conform/shadow_fade_probe.sh measures these and more.
+#   9 a block of fade_power 0 (fade_distance 1) seen through: 137 (the
+#     camera's ray halved, the shadow ray not faded; before 188)
+#  10 the same with fade_power 1: 99 (both halved)
+# bench/conform/shadow_fade_probe.sh and fade_power_probe.sh measure
+# these and more.
 #
 # Environment: ZR_SRCDIR, ZR_BUILDDIR (set by `make check`).
 set -u
@@ -31,5 +37,7 @@ recorded_5="152,152,152 152,152,152 152,152,152"
 recorded_6="89,89,89 89,89,89 89,89,89"
 recorded_7="61,61,61 61,61,61 61,61,61"
 recorded_8="113,113,113 113,113,113 113,113,113"
-pixel_cases "$srcdir/tests/shadow_fade.pov" Case "1 2 3 4 5 6 7 8" \
+recorded_9="137,137,137 137,137,137 137,137,137"
+recorded_10="99,99,99 99,99,99 99,99,99"
+pixel_cases "$srcdir/tests/shadow_fade.pov" Case "1 2 3 4 5 6 7 8 9 10" \
   "0,0 6,8 11,15"

@@ -5,6 +5,8 @@
 // IC FC.  Boxes are no_image unless View = 1, which makes the floor
 // emit (no light) and shows the boxes: the camera ray's fading instead
 // of the shadow ray's.  Case picks the boxes (see each #case).
+// TH: the thickness of case 28's and 29's single box (29: fade_color
+// <0.5, 0.2, 0>), for bench/conform/fade_power_probe.sh.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 #ifndef (Case) #declare Case = 0; #end
@@ -12,6 +14,7 @@ global_settings { assumed_gamma 1.0 }
 #ifndef (FB) #declare FB = 0.5; #end
 #ifndef (PA) #declare PA = 1; #end
 #ifndef (PB) #declare PB = 1; #end
+#ifndef (TH) #declare TH = 1; #end
 #ifndef (FC) #declare FC = 0; #end
 camera { orthographic sky z location <0, 10, 0> look_at <0, 0, 0>
          up z * 4 right x * 4 }
@@ -102,4 +105,8 @@ light_source { <0, 1000, 0>, rgb 0.5 parallel point_at 0 }
 // floor inside visible A (-1..2, no fade), fading B (1.3..1.7) inside it
 #case (27) box { <-100, -1, -100>, <100, 2, 100> texture { T } }
            box { <-100, 1.3, -100>, <100, 1.7, 100> texture { T } interior { IB } } #break
+// single box of thickness TH
+#case (28) box { <-100, 1, -100>, <100, 1 + TH, 100> texture { T } interior { IA } #if (!View) no_image #end } #break
+// single box of thickness TH, fade_color red 0.5
+#case (29) box { <-100, 1, -100>, <100, 1 + TH, 100> texture { T } interior { IA fade_color <0.5, 0.2, 0> } #if (!View) no_image #end } #break
 #end
