@@ -56,4 +56,14 @@ light_source { <0, 1000, 0>, rgb 0.5 parallel point_at 0 }
 // 10: the same block with fade_power 1: both are halved (0.25).
 #case (10) object { Slab(1, 2) interior { fade_distance 1 fade_power 1 } }
 #break
+// 11: two blocks stacked in a merge, the lower with IA, the upper with
+// no interior: neither leaves nor enters IA, nothing is faded (1.00;
+// with the lower's interior given to the upper, 0.3333).
+#case (11) merge { object { Slab(1, 1.5) interior { IA } } Slab(1.5, 2)
+                   no_image } #break
+// 12: the same seen through: the camera's ray is not faded, but it
+// went into IA by the lower block's bottom face, so the shadow ray,
+// leaving IA by that face, fades the 1 unit up from the floor (0.3333).
+#case (12) merge { object { Slab(1, 1.5) interior { IA } } Slab(1.5, 2) }
+#break
 #end

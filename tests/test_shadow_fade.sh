@@ -22,6 +22,9 @@
 #   9 a block of fade_power 0 (fade_distance 1) seen through: 137 (the
 #     camera's ray halved, the shadow ray not faded; before 188)
 #  10 the same with fade_power 1: 99 (both halved)
+#  11 two blocks stacked in a merge, one with no interior: 188 (1.00;
+#     before 113: the part took the other's interior)
+#  12 the same seen through: 113 (0.3333; before 67)
 # bench/conform/shadow_fade_probe.sh and fade_power_probe.sh measure
 # these and more.
 #
@@ -39,5 +42,7 @@ recorded_7="61,61,61 61,61,61 61,61,61"
 recorded_8="113,113,113 113,113,113 113,113,113"
 recorded_9="137,137,137 137,137,137 137,137,137"
 recorded_10="99,99,99 99,99,99 99,99,99"
-pixel_cases "$srcdir/tests/shadow_fade.pov" Case "1 2 3 4 5 6 7 8 9 10" \
+recorded_11="188,188,188 188,188,188 188,188,188"
+recorded_12="113,113,113 113,113,113 113,113,113"
+pixel_cases "$srcdir/tests/shadow_fade.pov" Case "1 2 3 4 5 6 7 8 9 10 11 12" \
   "0,0 6,8 11,15"

@@ -20,9 +20,9 @@
 # interior the path holds, else enters it; a stretch is faded only where
 # it leaves one, by that interior, over the distance from the surface
 # before (15 against 17 gives the direction).  Every surface of a merge
-# filters (6 with filter 0.5).  Not matched: 3 (two faces at the same
-# place: povray sees one), 12 and 13 (a part without an interior in a
-# merge whose other part has one: zrcube gives it that one).
+# filters (6 with filter 0.5).  A merge's part without an interior has
+# none (12, 13: it does not leave the other part's).  Not matched: 3
+# (two faces at the same place: povray sees one of them).
 # Usage: bench/conform/shadow_fade_probe.sh [build/bin/zrcube] (needs
 # povray and /usr/bin/python3 with numpy).
 set -eu
