@@ -358,3 +358,9 @@ EXTRA_DIST += tests/test_fade_colour.sh tests/fade_colour.pov
 # libtiff opened with dlopen, not linked (issue 13's start-up cost).
 TESTS += tests/test_tiff_dlopen.sh
 EXTRA_DIST += tests/test_tiff_dlopen.sh
+# Shadows through fading interiors and through merges of several parts
+# (povray's rule measured by bench/conform/shadow_fade_probe.sh).
+TESTS += tests/test_shadow_fade.sh
+EXTRA_DIST += tests/test_shadow_fade.sh tests/shadow_fade.pov \
+	bench/conform/shadow_fade_probe.sh bench/conform/shadow_fade_probe.pov
+EXTRA_DIST += bench/conform/fade_power_probe.sh

@@ -91,6 +91,11 @@ static void test_pattern_more_colouring(void **state) {
                     2e-4);
   const double i3[5] = {0.074085, 0.792152, 0.772316, 1.0, 0.716608};
   check_fractal_eps(f, "mandel 25 interior 3, 1 exterior 4, 1", i3, 2e-4);
+  /* magnet's mandel starts its orbit at 0, but the smallest |z| starts
+     at the point's own |(x, y)|: 0.2, 0.100528 and 0.172414 are points
+     of the set (the orbit's start gave 0 there). */
+  const double m1[5] = {0.22, 0.2, 0.06, 0.100528, 0.172414};
+  check_fractal(f, "magnet 1 mandel 50 interior 1, 1 exterior 1, 1", m1);
 }
 
 static void test_pattern_more_fractal_errors(void **state) {

@@ -98,6 +98,16 @@ static zr_rgb see_through(zr_colour c) {
   return zr_rgb3(c.f * c.r + c.t, c.f * c.g + c.t, c.f * c.b + c.t);
 }
 
+/* A surface a shadow ray crossed: where, and the part of the object. */
+typedef struct shadow_crossing {
+  double t;
+  const zr_object *part;
+} shadow_crossing;
+
+/* How many crossings a shadow ray's fading follows; a ray through more
+   fades by the first ones the walk met (BVH order, not distance). */
+#define SHADOW_SURFACES_MAX 64
+
 typedef struct shadow_walk {
   const zr_ray *ray;
   const zr_scene *scene;
@@ -106,15 +116,21 @@ typedef struct shadow_walk {
   /* Crossings of hollow containers with media (lib/trace/media.c). */
   zr_media_crossing crossings[ZR_MEDIA_LIST_MAX];
   size_t n_crossings;
-  /* Crossings of objects whose interior fades light (fade_distance). */
-  zr_media_crossing fades[ZR_MEDIA_LIST_MAX];
-  size_t n_fades;
+  /* Every surface the ray crossed (unordered), for the fading of
+     interiors (shadow_fade); fades: whether one of them fades light. */
+  shadow_crossing surfaces[SHADOW_SURFACES_MAX];
+  size_t n_surfaces;
+  bool fades;
   const zr_object *blocker; /* the surface that stopped the light */
 } shadow_walk;
 
-static bool fades_light(const zr_object *solid) {
-  const zr_interior *in = solid->interior;
-  return in && in->fade_distance > 0.0 && in->fade_power != 0.0;
+/* Whether in fades the light of a shadow ray: povray 3.7 lets it
+   through a clear block of fade_power 0, or -1, unfaded, where the
+   camera's rays through the block are halved (fade_distance 1, power
+   0: bench/conform/fade_power_probe.sh); powers above 0 fade both
+   alike (0.25 and 0.5 measured too). */
+static bool shadow_fades(const zr_interior *in) {
+  return in && in->fade_distance > 0.0 && in->fade_power > 0.0;
 }
 
 /*
@@ -140,60 +156,69 @@ static zr_rgb fade_factor(const zr_interior *in, double d) {
     return zr_rgb3(exp(k * (1.0 - f.r)), exp(k * (1.0 - f.g)),
                    exp(k * (1.0 - f.b)));
   }
-  double a = isinf(d) ? 0.0
-                      : 1.0 / (1.0 + pow(d / in->fade_distance, in->fade_power));
+  /* An endless stretch (d infinite) leaves 0 for powers above 0, half
+     for 0, all for negative ones, as the formula does. */
+  double a = 1.0 / (1.0 + pow(d / in->fade_distance, in->fade_power));
   return zr_rgb3(f.r + (1.0 - f.r) * a, f.g + (1.0 - f.g) * a,
                  f.b + (1.0 - f.b) * a);
 }
 
+static const zr_interior *stretch_interior(const zr_scene *scene,
+                                           const zr_media *media,
+                                           const zr_object *part);
+static zr_rgb fade_by(const zr_interior *in, double d, zr_rgb c);
+
 /*
- * A shadow ray through objects whose interior fades light loses as much
- * as a camera ray would over the same length inside them: POV-Ray 3.7
- * darkens the shadow of a clear block with fade_distance
- * (interior/atten2.pov, scenes/fade_shadow.pov).  The crossings come in
- * any order; each object's stretch runs from where the ray enters it
- * (or the ray's start) to where it leaves (or the light).
+ * A shadow ray through objects whose interior fades light loses light
+ * by the rule of a camera ray (stretch_interior, zr__media_cross): its
+ * path of interiors starts as the path of the ray that met the lit
+ * point (start; NULL: empty), and going toward the light, a stretch
+ * between two surfaces is faded only where the ray leaves an interior
+ * the path holds, by that interior, over the stretch since the surface
+ * before (or the lit point).  povray 3.7
+ * shadows so (bench/conform/shadow_fade_probe.sh: a floor under clear
+ * blocks lit from straight above; tests/test_shadow_fade.sh):
+ * - two blocks stacked in a merge, each its own interior, cast no
+ *   faded shadow (1.00: entered by one, left by the other), nor do
+ *   two copies of one declared block, nor a merge whose own interior
+ *   its parts override; a merge whose parts take its interior fades
+ *   over the whole (0.333 for 1 unit, fade_distance 0.5);
+ * - a clear block inside a fading one splits it: only the stretch
+ *   after it is faded (0.625: 0.3 of the 1 unit); overlapping blocks
+ *   1..1.7 and 1.3..2 fade 1.3..1.7 by the first and 1.7..2 by the
+ *   second (0.2525), so the order is from the lit point to the light;
+ * - a floor seen through a fading block it lies inside is lit through
+ *   the 2 units up to the block's top (0.2), but not when the block is
+ *   no_image (1.00): no camera ray went into it.
+ * advanced/wineglass.pov's merge of rim, bowl, beads and stem, each
+ * part with its own interior, shadows the table so.
  */
-static zr_rgb shadow_fade(const shadow_walk *w) {
-  zr_rgb light = zr_rgb3(1, 1, 1);
+static zr_rgb shadow_fade(const shadow_walk *w, const zr_media *start) {
+  shadow_crossing hits[SHADOW_SURFACES_MAX];
+  size_t n = w->n_surfaces;
+  for (size_t i = 0; i < n; i++) {
+    size_t k = i;
+    while (k > 0 && hits[k - 1].t > w->surfaces[i].t) {
+      hits[k] = hits[k - 1];
+      k--;
+    }
+    hits[k] = w->surfaces[i];
+  }
   double len = zr_v3_len(w->ray->dir);
-  bool done[ZR_MEDIA_LIST_MAX] = {false};
-  for (size_t i = 0; i < w->n_fades; i++) {
-    if (done[i])
-      continue;
-    const zr_object *solid = w->fades[i].solid;
-    /* This object's crossings, in order along the ray. */
-    double ts[ZR_MEDIA_LIST_MAX];
-    bool in[ZR_MEDIA_LIST_MAX];
-    size_t n = 0;
-    for (size_t j = i; j < w->n_fades; j++) {
-      if (w->fades[j].solid != solid)
-        continue;
-      done[j] = true;
-      size_t k = n++;
-      while (k > 0 && ts[k - 1] > w->fades[j].t) {
-        ts[k] = ts[k - 1];
-        in[k] = in[k - 1];
-        k--;
-      }
-      ts[k] = w->fades[j].t;
-      in[k] = w->fades[j].entering;
-    }
-    double inside = 0.0, start = 0.0;
-    bool is_in = n > 0 && !in[0]; /* the first crossing leaves: began in */
-    for (size_t k = 0; k < n; k++) {
-      if (in[k]) {
-        start = ts[k];
-        is_in = true;
-      } else if (is_in) {
-        inside += ts[k] - start;
-        is_in = false;
-      }
-    }
-    if (is_in)
-      inside += 1.0 - start;
-    if (inside > 0.0)
-      light = zr_rgb_mul(light, fade_factor(solid->interior, inside * len));
+  zr_rgb light = zr_rgb3(1, 1, 1);
+  zr_media path, next;
+  if (start)
+    path = *start;
+  else
+    path.n = path.passes = 0;
+  double before = 0.0;
+  for (size_t i = 0; i < n; i++) {
+    const zr_interior *in = stretch_interior(w->scene, &path, hits[i].part);
+    if (shadow_fades(in))
+      light = fade_by(in, (hits[i].t - before) * len, light);
+    zr__media_cross(w->scene, &path, hits[i].part, &next);
+    path = next;
+    before = hits[i].t;
   }
   return light;
 }
@@ -248,15 +273,11 @@ static bool shadow_visit(const zr_hit *hit, void *user) {
     c->solid = solid;
     c->entering = zr__inside(solid, past);
   }
-  if (fades_light(solid) && w->n_fades < ZR_MEDIA_LIST_MAX) {
-    zr_media_crossing *c = &w->fades[w->n_fades++];
-    zr_vec3 at = zr_v3_madd(w->ray->origin, w->ray->dir, hit->t);
-    zr_vec3 past = zr_v3_madd(at, zr_v3_norm(w->ray->dir),
-                              1e3 * zr__surface_offset(at));
-    c->t = hit->t;
-    c->solid = solid;
-    c->entering = zr__inside(solid, past);
+  if (w->n_surfaces < SHADOW_SURFACES_MAX) {
+    w->surfaces[w->n_surfaces].t = hit->t;
+    w->surfaces[w->n_surfaces++].part = o;
   }
+  w->fades = w->fades || shadow_fades(o->interior);
   if (zr__photons_block_shadow(w->scene, w->source, o)) {
     w->light = zr_rgb3(0, 0, 0);
     w->blocker = o;
@@ -342,7 +363,8 @@ static bool cached_blocker_blocks(const zr_shadow_cache *cache,
     probe.source = w->source;
     probe.light = zr_rgb3(1, 1, 1);
     probe.n_crossings = 0;
-    probe.n_fades = 0;
+    probe.n_surfaces = 0;
+    probe.fades = false;
     probe.blocker = NULL;
     if (!shadow_visit(&h[k], &probe))
       return true;
@@ -360,7 +382,8 @@ zr_rgb zr__shadow_transmission(const zr_tracer *tracer,
   w.source = light;
   w.light = zr_rgb3(1, 1, 1);
   w.n_crossings = 0;
-  w.n_fades = 0;
+  w.n_surfaces = 0;
+  w.fades = false;
   w.blocker = NULL;
   tracer->stats->shadow_rays++;
   const double tmax = 1.0 - 1e-6;
@@ -392,8 +415,8 @@ zr_rgb zr__shadow_transmission(const zr_tracer *tracer,
     }
     return zr_rgb3(0, 0, 0);
   }
-  if (w.n_fades > 0 && rgb_max(w.light) > 0.0)
-    w.light = zr_rgb_mul(w.light, shadow_fade(&w));
+  if (w.fades && rgb_max(w.light) > 0.0)
+    w.light = zr_rgb_mul(w.light, shadow_fade(&w, tracer->shadow_path));
   if (w.n_crossings > 0 && rgb_max(w.light) > 0.0)
     w.light = zr_rgb_mul(w.light, zr__media_shadow(tracer, ray.origin,
                                                    ray.dir, w.crossings,
@@ -581,7 +604,7 @@ void zr__tracer_quality(zr_tracer *tracer, int quality) {
 }
 
 static zr_rgb direct_light(const zr_tracer *tr, const surface *s,
-                           double opacity) {
+                           double opacity, const zr_media *media) {
   const zr_finish *f = s->finish;
   const zr_scene *scene = tr->scene;
   zr_rgb sum = zr_rgb3(0, 0, 0);
@@ -597,6 +620,15 @@ static zr_rgb direct_light(const zr_tracer *tr, const surface *s,
   bool takes = (f->diffuse != 0.0 && opacity > 0.0 && !sslt) ||
                f->diffuse_back > 0.0 || f->phong > 0.0 ||
                (f->specular > 0.0 && f->roughness > 0.0);
+  /* The shadow rays start in the interiors the ray that met s is in
+     (zr__shadow_transmission). */
+  zr_tracer lit;
+  const zr_tracer *shadows = tr;
+  if (takes && media && media->n > 0) {
+    lit = *tr;
+    lit.shadow_path = media;
+    shadows = &lit;
+  }
   for (size_t i = 0; takes && i < scene->n_lights; i++) {
     const zr_light *light = &scene->lights[i];
     zr_vec3 l;
@@ -629,7 +661,7 @@ static zr_rgb direct_light(const zr_tracer *tr, const surface *s,
        negative colour takes light away (POV-Ray 3.7 darkens a lit
        plane by "light_source { ... color rgb -0.5 }": crater_dat.pov,
        abyss.pov, scenes/negative_light.pov). */
-    zr_rgb vis = zr__light_visibility(tr, light, s->p, from);
+    zr_rgb vis = zr__light_visibility(shadows, light, s->p, from);
     if (rgb_max(vis) <= 0.0)
       continue;
     lc = zr_rgb_mul(lc, vis);
@@ -715,9 +747,13 @@ static zr_rgb reflection_amount(const surface *s, double n1, double n2) {
 }
 
 /* Light c that travelled distance d inside the innermost object of
-   media (fade_factor above). */
+   media (fade_factor above).  Any fade_power fades a camera ray, 0 too:
+   povray 3.7 halves the light through a clear block of fade_distance 1
+   and fade_power 0 whatever its thickness, (d / fade_distance)^0 = 1 in
+   the formula (bench/conform/fade_power_probe.sh); fade_distance 0 is
+   no fading.  Shadow rays differ (shadow_fades). */
 static zr_rgb fade_by(const zr_interior *in, double d, zr_rgb c) {
-  if (!in || !(in->fade_distance > 0.0) || in->fade_power == 0.0)
+  if (!in || !(in->fade_distance > 0.0))
     return c;
   return zr_rgb_mul(c, fade_factor(in, d));
 }
@@ -969,7 +1005,7 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
      light sources' direct light at what the camera sees is left out
      (POV-Ray's -RVP, "Radiosity Vain Pretrace" off). */
   if (!(tr->skip_direct && tr->gi_depth == 0)) {
-    sum = zr_rgb_add(sum, direct_light(tr, s, opacity));
+    sum = zr_rgb_add(sum, direct_light(tr, s, opacity, media));
     sum = zr_rgb_add(sum, photon_light(tr, s, c, opacity));
   }
 

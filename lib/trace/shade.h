@@ -178,6 +178,10 @@ typedef struct zr_tracer {
   /* This thread's last shadow blockers (NULL: none kept); the tracer is
      otherwise read-only, this is a hint that changes no result. */
   zr_shadow_cache *shadow_cache;
+  /* The path of interiors (zr__media_cross) of the ray whose surface
+     is being lit, where its shadow rays start (NULL: none, as for
+     every ray but those of direct_light in shade.c). */
+  const zr_media *shadow_path;
 } zr_tracer;
 
 /* Sets the tracer's quality flags and no_media for POV-Ray's +Q: 0 to 11
