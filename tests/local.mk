@@ -363,4 +363,4 @@ EXTRA_DIST += tests/test_tiff_dlopen.sh
 TESTS += tests/test_shadow_fade.sh
 EXTRA_DIST += tests/test_shadow_fade.sh tests/shadow_fade.pov \
 	bench/conform/shadow_fade_probe.sh bench/conform/shadow_fade_probe.pov
-EXTRA_DIST += bench/conform/fade_power_probe.sh
+EXTRA_DIST += bench/conform/fade_power_probe.sh bench/conform/probe_value.sh

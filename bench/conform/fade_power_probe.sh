@@ -19,40 +19,20 @@
 # Usage: bench/conform/fade_power_probe.sh [build/bin/zrcube] (needs
 # povray and /usr/bin/python3 with numpy).
 set -eu
-PY=${PYTHON:-/usr/bin/python3}
-here=$(cd "$(dirname "$0")" && pwd)
-scene=$here/shadow_fade_probe.pov
-zr=${1:-}
-[ -n "$zr" ] && zr=$(cd "$(dirname "$zr")" && pwd)/$(basename "$zr")
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
-value() { # RENDERER DECLARES... -> the light at the image centre
-  r=$1
-  shift
-  decl=""
-  for d in "$@"; do decl="$decl Declare=$d"; done
-  $r +I"$scene" +Oout.png +W8 +H8 -D -A +WT1 -GA +FN16 File_Gamma=1.0 \
-    $decl >/dev/null 2>&1
-  $PY -c "import sys; sys.path.insert(0, '$here'); import png16; print('%.4f' % (png16.read('out.png')[4, 4, 0] / 0.5))"
-}
-row() { # DECLARES...
-  line="$* povray $(value povray "$@")"
-  [ -n "$zr" ] && line="$line zrcube $(value "$zr" "$@")"
-  echo "$line"
-}
+. "$(cd "$(dirname "$0")" && pwd)/probe_value.sh"
+frow() { row "$*" "$@"; } # the declares are the label
 for p in 0 0.25 0.5 1 -1; do
   for th in 0.1 1 3; do
     for v in 0 1; do
-      row Case=28 FA=1 PA=$p TH=$th View=$v
+      frow Case=28 FA=1 PA=$p TH=$th View=$v
     done
   done
 done
 for d in "FA=0 PA=1" "FA=0 PA=0" "FA=2 PA=0"; do
   for v in 0 1; do
-    row Case=28 $d TH=3 View=$v
+    frow Case=28 $d TH=3 View=$v
   done
 done
 for v in 0 1; do
-  row Case=29 FA=1 PA=0 TH=3 View=$v
+  frow Case=29 FA=1 PA=0 TH=3 View=$v
 done

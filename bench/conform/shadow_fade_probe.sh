@@ -26,30 +26,7 @@
 # Usage: bench/conform/shadow_fade_probe.sh [build/bin/zrcube] (needs
 # povray and /usr/bin/python3 with numpy).
 set -eu
-PY=${PYTHON:-/usr/bin/python3}
-here=$(cd "$(dirname "$0")" && pwd)
-scene=$here/shadow_fade_probe.pov
-zr=${1:-}
-[ -n "$zr" ] && zr=$(cd "$(dirname "$zr")" && pwd)/$(basename "$zr")
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
-value() { # RENDERER DECLARES... -> the light at the image centre
-  r=$1
-  shift
-  decl=""
-  for d in "$@"; do decl="$decl Declare=$d"; done
-  $r +I"$scene" +Oout.png +W8 +H8 -D -A +WT1 -GA +FN16 File_Gamma=1.0 \
-    $decl >/dev/null 2>&1
-  $PY -c "import sys; sys.path.insert(0, '$here'); import png16; print('%.4f' % (png16.read('out.png')[4, 4, 0] / 0.5))"
-}
-row() { # LABEL DECLARES...
-  label=$1
-  shift
-  line="$label povray $(value povray "$@")"
-  [ -n "$zr" ] && line="$line zrcube $(value "$zr" "$@")"
-  echo "$line"
-}
+. "$(cd "$(dirname "$0")" && pwd)/probe_value.sh"
 for c in 1 2 3 4 5 6 7 8 9 10 12 13 14 15 16 17 18 19 20 21 22 23 24 25 \
          26 27; do
   row "shadow $c" Case=$c FB=0.25 FC=0.5
