@@ -106,12 +106,7 @@ static double contour_close(contour *c) {
  * divided by the polygon's size, so products of coordinates neither
  * overflow nor underflow.
  */
-typedef struct polygon_plane {
-  const zr_vec3 *verts;
-  size_t nv;
-  zr_vec3 normal; /* unit; zero for a degenerate polygon */
-  double size;    /* largest distance from verts[0] to another vertex */
-} polygon_plane;
+typedef zr__ff_polygon polygon_plane;
 
 static void polygon_plane_init(polygon_plane *pl, const zr_vec3 *v,
                                size_t nv) {
@@ -183,6 +178,16 @@ double zr__ff_point_polygon(zr_vec3 p, zr_vec3 n, const zr_vec3 *verts,
   polygon_plane pl;
   polygon_plane_init(&pl, verts, nv);
   return point_polygon(p, n, &pl);
+}
+
+void zr__ff_polygon_init(zr__ff_polygon *pl, const zr_vec3 *verts,
+                         size_t nv) {
+  polygon_plane_init(pl, verts, nv);
+}
+
+double zr__ff_point_polygon_pre(zr_vec3 p, zr_vec3 n,
+                                const zr__ff_polygon *pl) {
+  return point_polygon(p, n, pl);
 }
 
 /* ---- quadrature over patches ---- */
