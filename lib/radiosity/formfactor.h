@@ -26,6 +26,10 @@
 double zr__ff_point_polygon(zr_vec3 p, zr_vec3 n, const zr_vec3 *verts,
                             size_t nv);
 
+/* atan2(y, x) for y > 0 as the contour sum computes it (a reduction to
+   |u| <= 1/16 and a series; within a few ulps of libm's). */
+double zr__ff_edge_angle(double y, double x);
+
 /*
  * A polygon's plane, found once (Newell's normal, on coordinates
  * relative to verts[0] over the polygon's size) for a polygon that many
