@@ -710,6 +710,7 @@ static void test_formfactor_edge_angle_matches_atan2(void **state) {
   assert_true(zr__ff_edge_angle(1.0, -0.0) == atan2(1.0, -0.0));
   assert_abs(zr__ff_edge_angle(1e-300, 1.0) / 1e-300, 1.0, 1e-15);
   assert_abs(zr__ff_edge_angle(5e-324, -1.0), M_PI, 0.0);
+  assert_true(isnan(zr__ff_edge_angle(1.0, NAN)));
 }
 
 /* A plane found once gives the factor bit for bit as finding it again. */
