@@ -554,11 +554,30 @@ static double point_visibility(const zr_radiosity *rad, int32_t qi,
   int k = rad->params.visibility_rays, open = 0, cast = 0;
   double eps = 1e-7 * sqrt(rad->total_area);
   zr_vec3 buf[2 * 16 * 16];
-  const zr_vec3 *grid = visibility_grid(rad, qi, k, buf);
+  /* 1 to 16 rays a side (zr_radiosity_params); a saved solution read
+     back with more is evaluated point by point, without the grid. */
+  bool small = k >= 1 && k <= 16;
+  const zr_vec3 *grid = small ? visibility_grid(rad, qi, k, buf) : NULL;
   zr_vec3 from = zr_v3_madd(point, n, eps);
   for (int i = 0; i < k * k; i++) {
-    zr_vec3 qn = sside ? zr_v3_neg(grid[2 * i + 1]) : grid[2 * i + 1];
-    zr_vec3 to = zr_v3_madd(grid[2 * i], qn, eps);
+    zr_vec3 gp, gn;
+    if (small) {
+      gp = grid[2 * i];
+      gn = grid[2 * i + 1];
+    } else {
+      const zr__rad_node *q = &rad->nodes[qi];
+      double cell[4];
+      zr__surface_point pt;
+      zr__rad_node_cell(q, cell);
+      zr__surface_eval(&rad->surfs[q->surf].geom,
+                       cell[0] + (i % k + 0.5) / k * (cell[1] - cell[0]),
+                       cell[2] + (i / k + 0.5) / k * (cell[3] - cell[2]),
+                       &pt);
+      gp = pt.p;
+      gn = pt.n;
+    }
+    zr_vec3 qn = sside ? zr_v3_neg(gn) : gn;
+    zr_vec3 to = zr_v3_madd(gp, qn, eps);
     zr_vec3 d = zr_v3_sub(to, from);
     if (!(zr_v3_dot(d, n) > 0.0 && zr_v3_dot(d, qn) < 0.0))
       continue;
