@@ -26,6 +26,29 @@
 double zr__ff_point_polygon(zr_vec3 p, zr_vec3 n, const zr_vec3 *verts,
                             size_t nv);
 
+/* atan2(y, x) for y > 0 as the contour sum computes it (a reduction to
+   |u| <= 1/16 and a series; within a few ulps of libm's). */
+double zr__ff_edge_angle(double y, double x);
+
+/*
+ * A polygon's plane, found once (Newell's normal, on coordinates
+ * relative to verts[0] over the polygon's size) for a polygon that many
+ * points look at: zr__ff_point_polygon_pre(p, n, pl) is
+ * zr__ff_point_polygon(p, n, verts, nv) bit for bit without finding it
+ * again.  pl keeps the pointer verts, which must outlive it.
+ */
+typedef struct zr__ff_polygon {
+  const zr_vec3 *verts;
+  size_t nv;
+  zr_vec3 normal; /* unit; zero for a degenerate polygon */
+  double size;    /* largest distance from verts[0] to another vertex */
+} zr__ff_polygon;
+
+void zr__ff_polygon_init(zr__ff_polygon *pl, const zr_vec3 *verts,
+                         size_t nv);
+double zr__ff_point_polygon_pre(zr_vec3 p, zr_vec3 n,
+                                const zr__ff_polygon *pl);
+
 /*
  * The form factor from a differential area at p, n to the parameter
  * rectangle [u0,u1] x [v0,v1] of src by the product Gauss rule of the

@@ -323,19 +323,31 @@ ZR_API zr_status zr_radiosity_solve(zr_context *ctx, const zr_scene *scene,
   return ZR_OK;
 }
 
-/* A curved source node's boundary polygon, for the final gather. */
+/* A source node's boundary polygon and its plane (plane.verts is p),
+   for the final gather. */
 typedef struct zr__rad_poly {
-  size_t n;
+  zr__ff_polygon plane;
   zr_vec3 p[];
 } zr__rad_poly;
 
+/* A source node's visibility grid for k rays a side: the k x k points
+   and outward normals of point_visibility, p[2i] and p[2i + 1]. */
+typedef struct zr__rad_vgrid {
+  int k;
+  zr_vec3 p[];
+} zr__rad_vgrid;
+
 void zr__rad_free_poly_cache(zr_radiosity *rad) {
-  if (rad->poly_cache == NULL)
-    return;
-  for (size_t i = 0; i < rad->n_poly_cache; i++)
-    free(atomic_load_explicit(&rad->poly_cache[i], memory_order_relaxed));
+  for (size_t i = 0; i < rad->n_poly_cache; i++) {
+    if (rad->poly_cache != NULL)
+      free(atomic_load_explicit(&rad->poly_cache[i], memory_order_relaxed));
+    if (rad->vis_cache != NULL)
+      free(atomic_load_explicit(&rad->vis_cache[i], memory_order_relaxed));
+  }
   free((void *)rad->poly_cache);
+  free((void *)rad->vis_cache);
   rad->poly_cache = NULL;
+  rad->vis_cache = NULL;
   rad->n_poly_cache = 0;
 }
 
@@ -348,9 +360,10 @@ zr_status zr__rad_index_links(zr_radiosity *rad) {
   /* calloc's zero bytes are null pointers on every platform we build
      for; atomic pointers of that value are simply "not made yet". */
   rad->poly_cache = calloc(rad->n_nodes + 1, sizeof *rad->poly_cache);
-  rad->n_poly_cache = rad->poly_cache ? rad->n_nodes : 0;
+  rad->vis_cache = calloc(rad->n_nodes + 1, sizeof *rad->vis_cache);
+  rad->n_poly_cache = rad->n_nodes;
   if (rad->recv_start == NULL || rad->recv_links == NULL ||
-      rad->poly_cache == NULL) {
+      rad->poly_cache == NULL || rad->vis_cache == NULL) {
     zr__rad_free_poly_cache(rad);
     free(rad->recv_start);
     free(rad->recv_links);
@@ -487,21 +500,84 @@ int32_t zr__rad_hit_leaf(const zr_radiosity *rad, const zr_object *object,
  * smoothly (in k^2 steps) instead of showing noise, which would also
  * make adaptive antialiasing take more samples.
  */
-static double point_visibility(const zr_radiosity *rad,
-                               const zr__rad_node *q, int sside,
-                               zr_vec3 point, zr_vec3 n) {
-  int k = rad->params.visibility_rays, open = 0, cast = 0;
-  double eps = 1e-7 * sqrt(rad->total_area);
+/* Source node qi's visibility grid (see zr__rad_vgrid) for k rays a
+   side: from the cache (made on first use, as source_polygon's) or,
+   when it cannot be kept, into buf (2 k^2 points). */
+static const zr_vec3 *visibility_grid(const zr_radiosity *rad, int32_t qi,
+                                      int k, zr_vec3 *buf) {
+  bool cache = (size_t)qi < rad->n_poly_cache;
+  if (cache) {
+    zr__rad_vgrid *c =
+        atomic_load_explicit(&rad->vis_cache[qi], memory_order_acquire);
+    if (c != NULL && c->k == k)
+      return c->p;
+    cache = c == NULL;
+  }
+  const zr__rad_node *q = &rad->nodes[qi];
   double cell[4];
   zr__rad_node_cell(q, cell);
-  zr_vec3 from = zr_v3_madd(point, n, eps);
   for (int i = 0; i < k * k; i++) {
     zr__surface_point pt;
     zr__surface_eval(&rad->surfs[q->surf].geom,
                      cell[0] + (i % k + 0.5) / k * (cell[1] - cell[0]),
                      cell[2] + (i / k + 0.5) / k * (cell[3] - cell[2]), &pt);
-    zr_vec3 qn = sside ? zr_v3_neg(pt.n) : pt.n;
-    zr_vec3 to = zr_v3_madd(pt.p, qn, eps);
+    buf[2 * i] = pt.p;
+    buf[2 * i + 1] = pt.n;
+  }
+  if (!cache)
+    return buf;
+  size_t np = 2 * (size_t)k * (size_t)k;
+  zr__rad_vgrid *made = malloc(sizeof *made + np * sizeof made->p[0]);
+  if (made == NULL)
+    return buf;
+  made->k = k;
+  memcpy(made->p, buf, np * sizeof *buf);
+  zr__rad_vgrid *expected = NULL;
+  if (!atomic_compare_exchange_strong_explicit(
+          &rad->vis_cache[qi], &expected, made, memory_order_acq_rel,
+          memory_order_acquire))
+    free(made);
+  return buf;
+}
+
+/*
+ * The visible fraction of source node q's side sside from point (normal
+ * n, the receiving side's): k x k rays to the centres of a k x k grid
+ * of the source's cell, as the link's own estimate but from this point
+ * alone.  Points facing away on either end do not count, as in
+ * refine.c.  The grid is the same for every point, so a penumbra varies
+ * smoothly (in k^2 steps) instead of showing noise, which would also
+ * make adaptive antialiasing take more samples.
+ */
+static double point_visibility(const zr_radiosity *rad, int32_t qi,
+                               int sside, zr_vec3 point, zr_vec3 n) {
+  int k = rad->params.visibility_rays, open = 0, cast = 0;
+  double eps = 1e-7 * sqrt(rad->total_area);
+  zr_vec3 buf[2 * 16 * 16];
+  /* 1 to 16 rays a side (zr_radiosity_params); a saved solution read
+     back with more is evaluated point by point, without the grid. */
+  bool small = k >= 1 && k <= 16;
+  const zr_vec3 *grid = small ? visibility_grid(rad, qi, k, buf) : NULL;
+  zr_vec3 from = zr_v3_madd(point, n, eps);
+  for (int i = 0; i < k * k; i++) {
+    zr_vec3 gp, gn;
+    if (small) {
+      gp = grid[2 * i];
+      gn = grid[2 * i + 1];
+    } else {
+      const zr__rad_node *q = &rad->nodes[qi];
+      double cell[4];
+      zr__surface_point pt;
+      zr__rad_node_cell(q, cell);
+      zr__surface_eval(&rad->surfs[q->surf].geom,
+                       cell[0] + (i % k + 0.5) / k * (cell[1] - cell[0]),
+                       cell[2] + (i / k + 0.5) / k * (cell[3] - cell[2]),
+                       &pt);
+      gp = pt.p;
+      gn = pt.n;
+    }
+    zr_vec3 qn = sside ? zr_v3_neg(gn) : gn;
+    zr_vec3 to = zr_v3_madd(gp, qn, eps);
     zr_vec3 d = zr_v3_sub(to, from);
     if (!(zr_v3_dot(d, n) > 0.0 && zr_v3_dot(d, qn) < 0.0))
       continue;
@@ -519,39 +595,41 @@ static double point_visibility(const zr_radiosity *rad,
    wall's radiosity falls towards the corner where it meets the wall
    holding the point).  vis: the link's visible fraction; below 1, or
    with per_point set, the point's own visibility replaces it. */
-/* Source node qi's boundary polygon: a planar cell's corners into buf,
-   a curved cell's chords from the cache (made on first use; a thread
-   that loses the race to publish frees its copy, which is the same). */
-static const zr_vec3 *source_polygon(const zr_radiosity *rad, int32_t qi,
-                                     zr_vec3 *buf, size_t *nv) {
+/* Source node qi's boundary polygon and its plane: from the cache
+   (made on first use; a thread that loses the race to publish frees its
+   copy, which is the same) or, when it cannot be kept, a planar cell's
+   corners or a curved cell's chords into buf and the plane into *tmp. */
+static const zr__ff_polygon *source_polygon(const zr_radiosity *rad,
+                                            int32_t qi, zr_vec3 *buf,
+                                            zr__ff_polygon *tmp) {
   const zr__rad_node *q = &rad->nodes[qi];
   const zr__surface *g = &rad->surfs[q->surf].geom;
   double sc[4];
-  bool cache = !g->planar && (size_t)qi < rad->n_poly_cache;
+  bool cache = (size_t)qi < rad->n_poly_cache;
   if (cache) {
     zr__rad_poly *c = atomic_load_explicit(&rad->poly_cache[qi],
                                            memory_order_acquire);
-    if (c != NULL) {
-      *nv = c->n;
-      return c->p;
-    }
+    if (c != NULL)
+      return &c->plane;
   }
   zr__rad_node_cell(q, sc);
-  *nv = zr__surface_patch_polygon(g, sc[0], sc[1], sc[2], sc[3], 16, buf,
-                                  4 * ZR__FF_MAX_SEGS);
+  size_t nv = zr__surface_patch_polygon(g, sc[0], sc[1], sc[2], sc[3], 16,
+                                        buf, 4 * ZR__FF_MAX_SEGS);
+  zr__ff_polygon_init(tmp, buf, nv);
   if (!cache)
-    return buf;
-  zr__rad_poly *made = malloc(sizeof *made + *nv * sizeof made->p[0]);
+    return tmp;
+  zr__rad_poly *made = malloc(sizeof *made + nv * sizeof made->p[0]);
   if (made == NULL)
-    return buf;
-  made->n = *nv;
-  memcpy(made->p, buf, *nv * sizeof *buf);
+    return tmp;
+  memcpy(made->p, buf, nv * sizeof *buf);
+  made->plane = *tmp;
+  made->plane.verts = made->p;
   zr__rad_poly *expected = NULL;
   if (!atomic_compare_exchange_strong_explicit(
           &rad->poly_cache[qi], &expected, made, memory_order_acq_rel,
           memory_order_acquire))
     free(made);
-  return buf;
+  return tmp;
 }
 
 static void gather_source(const zr_radiosity *rad, int32_t qi, int sside,
@@ -568,13 +646,13 @@ static void gather_source(const zr_radiosity *rad, int32_t qi, int sside,
     }
   }
   zr_vec3 buf[4 * ZR__FF_MAX_SEGS];
-  size_t nv;
-  const zr_vec3 *poly = source_polygon(rad, qi, buf, &nv);
+  zr__ff_polygon tmp;
+  const zr__ff_polygon *poly = source_polygon(rad, qi, buf, &tmp);
   /* Only the part of the source that CSG keeps shines (trim.c). */
-  double f = q->kept * zr__ff_point_polygon(point, n, poly, nv);
+  double f = q->kept * zr__ff_point_polygon_pre(point, n, poly);
   if (!(f > 0.0))
     return;
-  f *= per_point || vis < 1.0 ? point_visibility(rad, q, sside, point, n)
+  f *= per_point || vis < 1.0 ? point_visibility(rad, qi, sside, point, n)
                               : vis;
   for (int c = 0; c < 3; c++)
     h[c] += f * q->b[sside][c];

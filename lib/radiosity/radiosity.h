@@ -196,12 +196,15 @@ struct zr_radiosity {
      hit: links recv_links[recv_start[n] .. recv_start[n + 1]) end at
      node n.  NULL with lookup 1, which reads no links. */
   uint32_t *recv_start, *recv_links;
-  /* With the index above: the boundary polygon of each curved source
-     node the final gather has asked for (16 chords an edge, 64 NURBS
-     evaluations), made once by whichever thread asks first and kept
-     (radiosity.c); NULL entries are not made yet. */
+  /* With the index above: the boundary polygon and its plane of each
+     source node the final gather has asked for (a curved cell's 16
+     chords an edge are 64 NURBS evaluations, a flat cell's corners 6
+     evaluations), and the points of its visibility grid, made once by
+     whichever thread asks first and kept (radiosity.c); NULL entries
+     are not made yet. */
   struct zr__rad_poly *_Atomic *poly_cache;
-  size_t n_poly_cache; /* its entries: the nodes when it was made */
+  struct zr__rad_vgrid *_Atomic *vis_cache;
+  size_t n_poly_cache; /* entries of both: the nodes when they were made */
 
   /* Volume clusters of surfaces (volume.c); clustered is false when
      initial linking pairs every two surfaces instead. */

@@ -142,15 +142,35 @@ static void classify(const zr_radiosity *rad, const zr__rad_node *p,
     }
 }
 
-/* The cosine between the sided normal n (loosened by spread) and the
-   direction from c to t, clamped to [0, 1]. */
-static double loose_cos(zr_vec3 n, double spread, zr_vec3 c, zr_vec3 t) {
+/* A cone of normals of half-angle spread, for loose_cos: cos(spread),
+   sin(spread), and the cosine at or below which the loosened cosine is
+   0 (cos(pi/2 + spread), none when spread is pi/2 or more). */
+typedef struct loosen {
+  double c, s, zero;
+} loosen;
+
+static loosen loosen_by(double spread) {
+  loosen l = {cos(spread), sin(spread), -2.0};
+  if (spread < M_PI / 2)
+    l.zero = -l.s;
+  return l;
+}
+
+/* The cosine between the sided normal n (loosened by the cone lo) and
+   the direction from c to t, clamped to [0, 1]: cos(max(0, acos(x) -
+   spread)) for the plain cosine x, without the acos and cos (x cos
+   spread + sqrt(1 - x^2) sin spread between the clamps). */
+static double loose_cos(zr_vec3 n, const loosen *lo, zr_vec3 c, zr_vec3 t) {
   zr_vec3 d = zr_v3_sub(t, c);
   double len = zr_v3_len(d);
   if (!(len > 0.0))
     return 0.0;
-  double th = acos(fmax(-1.0, fmin(1.0, zr_v3_dot(n, d) / len))) - spread;
-  return th <= 0.0 ? 1.0 : th >= M_PI / 2 ? 0.0 : cos(th);
+  double x = fmax(-1.0, fmin(1.0, zr_v3_dot(n, d) / len));
+  if (x >= lo->c)
+    return 1.0;
+  if (x <= lo->zero)
+    return 0.0;
+  return fmin(1.0, fmax(0.0, x * lo->c + sqrt(1.0 - x * x) * lo->s));
 }
 
 /*
@@ -172,9 +192,10 @@ static double oracle(const zr_radiosity *rad, const zr__rad_node *a, int sx,
   node_samples(rad, a, &sa);
   node_samples(rad, b, &sb);
   double ca = 0.0, cb = 0.0;
+  loosen la = loosen_by(a->spread), lb = loosen_by(b->spread);
   for (int i = 0; i < 9; i++) {
-    ca = fmax(ca, loose_cos(na, a->spread, a->centre, sb.p[i]));
-    cb = fmax(cb, loose_cos(nb, b->spread, b->centre, sa.p[i]));
+    ca = fmax(ca, loose_cos(na, &la, a->centre, sb.p[i]));
+    cb = fmax(cb, loose_cos(nb, &lb, b->centre, sa.p[i]));
   }
   return b->area * ca * cb / (M_PI * r2 + b->area);
 }
