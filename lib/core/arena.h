@@ -74,9 +74,13 @@ void zr__mem_huge_pages(void *p, size_t size);
  * 2 MiB, its size rounded up to them, advised (one fault per 2 MiB
  * where the kernel obliges; a buffer of 256 KiB costs 64 faults, about
  * 0.9 ms, otherwise, a huge page's fault and zeroing about 0.2 ms);
- * below, plain malloc.  The price is up to 2 MiB of rounding per buffer
- * (peak memory: peers flake 512^2 12.5 -> 14.1 MiB, terrain 46.8 ->
- * 53.4).  Freed (and shrunk) with free and realloc.  p of
+ * below, plain malloc.  The price is up to 2 MiB of rounding per buffer,
+ * so the line is drawn at 1 MiB (at most twice a buffer's size): from
+ * 256 KiB on, the peers flake's peak memory was 14.1 MiB (12.1 MiB
+ * above an empty scene's, 696 bytes a sphere, 2.8x Tachyon's: issue 13
+ * wants <= 1.5x), from 512 KiB 488 bytes a sphere; from 1 MiB it is
+ * 331 bytes (1.35x) and 1,338 page faults at 512^2 (main 2,144, from
+ * 256 KiB 553).  Freed (and shrunk) with free and realloc.  p of
  * zr__huge_grow must come from malloc or realloc (below ZR__HUGE_FROM)
  * or from these two.
  *
@@ -87,7 +91,7 @@ void zr__mem_huge_pages(void *p, size_t size);
  * and then stays in it while its rounding has room.  NULL when out of
  * memory, p then unchanged.
  */
-enum { ZR__HUGE_FROM = 256 * 1024 };
+enum { ZR__HUGE_FROM = 1024 * 1024 };
 void *zr__huge_alloc(size_t size);
 void *zr__huge_grow(void *p, size_t old_size, size_t new_size);
 
