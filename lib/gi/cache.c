@@ -581,7 +581,8 @@ static void grid_fill(grid_build *gb, int32_t at, zr_vec3 cc, double h,
     }
     if (!gb->nomem) {
       c->grid_nodes[at].start = (uint32_t)c->grid_n_idx;
-      memcpy(c->grid_idx + c->grid_n_idx, list, m * sizeof *list);
+      if (m > 0) /* an empty leaf may come before any list is held */
+        memcpy(c->grid_idx + c->grid_n_idx, list, m * sizeof *list);
       c->grid_n_idx += m;
       c->grid_nodes[at].end = (uint32_t)c->grid_n_idx;
     }
