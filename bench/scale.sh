@@ -34,6 +34,10 @@ set -eu
 here=$(cd "$(dirname "$0")" && pwd)
 top=$(dirname "$here")
 build=${1:-$top/build}
+# The ranks run from scenes/: a relative build folder would name no
+# program there.
+build=$(cd "$build" && pwd) ||
+  { echo "scale.sh: no build folder ${1:-$top/build}" >&2; exit 1; }
 . "$here/zrexe.sh" # the real program, not libtool's wrapper
 out=$here/scale
 REPEAT=${REPEAT:-3}
@@ -64,7 +68,10 @@ trap 'rm -rf "$tmp"' EXIT
 ray_args="default.pov +W2048 +H1536 +A0.3 --state-interval=600"
 rad_args="cornell.pov --gi=hierarchical +W64 +H64 -D --state-interval=600"
 
-runs=$out/runs.tsv
+# The runs are collected aside and replace bench/scale/runs.tsv only
+# when every one has run: a failed or interrupted run leaves the last
+# complete measurement in place.
+runs=$tmp/runs.tsv
 printf 'scene\tranks\tthreads\trep\twall\tload1\trank\tphase_wall\tphase_cpu\tsent\n' >"$runs"
 
 # one SCENE RANKS THREADS REP ARGS...: a run, its -v lines into runs.tsv.
@@ -142,4 +149,5 @@ for n in $CHECK_RANKS; do
   echo "$n ranks (oversubscribed): same bytes as 1 rank"
 done
 echo "load after: $(cat /proc/loadavg)"
-/usr/bin/python3 "$here/scale_model.py" "$runs" "$out"
+cp "$runs" "$out/runs.tsv"
+/usr/bin/python3 "$here/scale_model.py" "$out/runs.tsv" "$out"

@@ -29,10 +29,9 @@
 #include "config.h"
 
 #include <dlfcn.h>
-#include <sched.h>
+#include <pthread.h>
 #include <stdarg.h>
 #include <stdbool.h>
-#include <stdatomic.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -65,18 +64,16 @@ typedef struct tiff_api {
   __typeof__(TIFFClose) *Close;
 } tiff_api;
 
-/* 0: not tried yet, 1: being opened, 2: ready, 3: not available. */
-static atomic_int api_state;
+static pthread_once_t api_once = PTHREAD_ONCE_INIT;
+static bool api_ok;
 static tiff_api api;
 static char api_why[160];
 
-/* Opens libtiff once per process; NULL (api_why says why) without it. */
-static const tiff_api *tiff_open_api(void) {
-  int expected = 0;
-  if (atomic_compare_exchange_strong(&api_state, &expected, 1)) {
-    void *h = dlopen(ZR_TIFF_SONAME, RTLD_NOW | RTLD_LOCAL);
-    bool ok = h != NULL;
-    const char *missing = NULL;
+/* Opens libtiff and finds its functions: run once per process. */
+static void open_api(void) {
+  void *h = dlopen(ZR_TIFF_SONAME, RTLD_NOW | RTLD_LOCAL);
+  bool ok = h != NULL;
+  const char *missing = NULL;
 #define ZR_TIFF_SYM(field, name)                                             \
   do {                                                                       \
     void *sym = ok ? dlsym(h, name) : NULL;                                  \
@@ -85,31 +82,32 @@ static const tiff_api *tiff_open_api(void) {
     /* POSIX dlsym: an object pointer that holds a function's address. */   \
     memcpy(&api.field, &sym, sizeof sym);                                    \
   } while (0)
-    ZR_TIFF_SYM(OpenOptionsAlloc, "TIFFOpenOptionsAlloc");
-    ZR_TIFF_SYM(OpenOptionsFree, "TIFFOpenOptionsFree");
-    ZR_TIFF_SYM(SetErrorHandlerExtR, "TIFFOpenOptionsSetErrorHandlerExtR");
-    ZR_TIFF_SYM(SetWarningHandlerExtR,
-                "TIFFOpenOptionsSetWarningHandlerExtR");
-    ZR_TIFF_SYM(SetMaxSingleMemAlloc, "TIFFOpenOptionsSetMaxSingleMemAlloc");
-    ZR_TIFF_SYM(ClientOpenExt, "TIFFClientOpenExt");
-    ZR_TIFF_SYM(GetField, "TIFFGetField");
-    ZR_TIFF_SYM(RGBAImageOK, "TIFFRGBAImageOK");
-    ZR_TIFF_SYM(ReadRGBAImageOriented, "TIFFReadRGBAImageOriented");
-    ZR_TIFF_SYM(Close, "TIFFClose");
+  ZR_TIFF_SYM(OpenOptionsAlloc, "TIFFOpenOptionsAlloc");
+  ZR_TIFF_SYM(OpenOptionsFree, "TIFFOpenOptionsFree");
+  ZR_TIFF_SYM(SetErrorHandlerExtR, "TIFFOpenOptionsSetErrorHandlerExtR");
+  ZR_TIFF_SYM(SetWarningHandlerExtR, "TIFFOpenOptionsSetWarningHandlerExtR");
+  ZR_TIFF_SYM(SetMaxSingleMemAlloc, "TIFFOpenOptionsSetMaxSingleMemAlloc");
+  ZR_TIFF_SYM(ClientOpenExt, "TIFFClientOpenExt");
+  ZR_TIFF_SYM(GetField, "TIFFGetField");
+  ZR_TIFF_SYM(RGBAImageOK, "TIFFRGBAImageOK");
+  ZR_TIFF_SYM(ReadRGBAImageOriented, "TIFFReadRGBAImageOriented");
+  ZR_TIFF_SYM(Close, "TIFFClose");
 #undef ZR_TIFF_SYM
-    if (!h)
-      snprintf(api_why, sizeof api_why, "cannot open %s", ZR_TIFF_SONAME);
-    else if (!ok)
-      snprintf(api_why, sizeof api_why, "%s lacks %s", ZR_TIFF_SONAME,
-               missing);
-    if (h && !ok)
-      dlclose(h);
-    atomic_store(&api_state, ok ? 2 : 3);
-  }
-  int state;
-  while ((state = atomic_load(&api_state)) == 1)
-    sched_yield(); /* another thread is opening it */
-  return state == 2 ? &api : NULL;
+  if (!h)
+    snprintf(api_why, sizeof api_why, "cannot open %s", ZR_TIFF_SONAME);
+  else if (!ok)
+    snprintf(api_why, sizeof api_why, "%s lacks %s", ZR_TIFF_SONAME,
+             missing);
+  if (h && !ok)
+    dlclose(h);
+  api_ok = ok;
+}
+
+/* libtiff's functions, opened at the first call of any thread (others
+   wait for it); NULL (api_why says why) without it. */
+static const tiff_api *tiff_open_api(void) {
+  pthread_once(&api_once, open_api);
+  return api_ok ? &api : NULL;
 }
 
 typedef struct tiff_source {
