@@ -198,6 +198,33 @@ static void test_lexer_keyword_table(void **state) {
                    T_UNSUPPORTED);
   assert_null(zr__sdl_keyword_find("Sphere", 6));
   assert_null(zr__sdl_keyword_find("sph", 3));
+  /* The hashed search answers as a scan of the table for every
+     keyword's prefixes, its extensions and its one-letter changes
+     (identifiers that look like keywords): about 10,000 names. */
+  size_t asked = 0;
+  for (size_t i = 0; i < n; i++) {
+    char buf[64];
+    size_t len = strlen(k[i].name);
+    assert_true(len + 2 < sizeof buf);
+    memcpy(buf, k[i].name, len);
+    for (size_t variant = 0; variant < 2 * len + 4; variant++) {
+      size_t m = len;
+      memcpy(buf, k[i].name, len);
+      if (variant < len)
+        m = variant; /* a prefix, the empty one included */
+      else if (variant < 2 * len)
+        buf[variant - len] ^= 0x20; /* a letter's case or '_' <-> DEL */
+      else
+        buf[m++] = "_x9A"[variant - 2 * len]; /* one more character */
+      const zr_sdl_keyword *want = NULL;
+      for (size_t j = 0; j < n && !want; j++)
+        if (strlen(k[j].name) == m && memcmp(k[j].name, buf, m) == 0)
+          want = &k[j];
+      assert_ptr_equal(zr__sdl_keyword_find(buf, m), want);
+      asked++;
+    }
+  }
+  assert_true(asked >= 4 * n);
   assert_int_equal(zr__sdl_directive_find("include", 7)->token, T_INCLUDE);
   assert_null(zr__sdl_directive_find("includes", 8));
 }
