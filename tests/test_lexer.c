@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "config.h"
+#include "core/budget.h"
 #include "pov-parse.h"
 #include "sdl/sdl.h"
 
@@ -229,6 +230,62 @@ static void test_lexer_keyword_table(void **state) {
   assert_null(zr__sdl_directive_find("includes", 8));
 }
 
+/* Lexes n_lines lines of "a b c" under budget (NULL: none) into l. */
+static void lex_lines(lexed *l, size_t n_lines, zr_budget *budget) {
+  memset(l, 0, sizeof *l);
+  size_t n = 6 * n_lines;
+  char *bytes = malloc(n + 1);
+  char *path = strdup("t.pov");
+  assert_non_null(bytes);
+  assert_non_null(path);
+  for (size_t i = 0; i < n_lines; i++)
+    memcpy(bytes + 6 * i, "a b c\n", 6);
+  bytes[n] = '\0';
+  l->status = zr__sdl_file_lex_budget(&l->file, 0, path, bytes, n, budget,
+                                      &l->err_loc, l->err, sizeof l->err);
+}
+
+/* A big file's token array is sized from its first 256 tokens (twice
+   what their lines promise for the whole file); a budget that cannot
+   hold that estimate but holds what doubling asks gets doubling, and
+   the tokens are the same either way. */
+static void test_lexer_token_array_estimate(void **state) {
+  (void)state;
+  enum { LINES = 60000 }; /* 180,000 tokens, ~4 MB of them */
+  lexed free_run, tight;
+  lex_lines(&free_run, LINES, NULL);
+  assert_int_equal(free_run.status, ZR_OK);
+  assert_int_equal(free_run.file.n_tokens, 3 * LINES + 1); /* + the end */
+  /* The array: 256 tokens reach line 86, so 2 x 256 x (60,000 / 86)
+     = 356,864 slots (8.6 MB); the budget is still charged as the array
+     doubles (262,144 slots at the end, 8.4 MB with the links' words)
+     and, with the names' strings, this file needs 12 MiB: a budget of
+     12 MiB takes it (charged for the estimate, it did not), one of
+     11 MiB does not. */
+  static const size_t limits[] = {12u << 20, 11u << 20, 16u << 20};
+  static const zr_status want[] = {ZR_OK, ZR_ELIMIT, ZR_OK};
+  for (size_t k = 0; k < 3; k++) {
+    zr_budget *b = zr__budget_new(limits[k]);
+    assert_non_null(b);
+    lex_lines(&tight, LINES, b);
+    assert_int_equal(tight.status, want[k]);
+    if (tight.status == ZR_OK) {
+      assert_int_equal(tight.file.n_tokens, free_run.file.n_tokens);
+      for (size_t i = 0; i < free_run.file.n_tokens; i++) {
+        assert_int_equal(tight.file.tokens[i].kind,
+                         free_run.file.tokens[i].kind);
+        assert_int_equal(tight.file.tokens[i].line,
+                         free_run.file.tokens[i].line);
+      }
+    }
+    zr__sdl_file_free(&tight.file);
+    /* every charge is given back with the file */
+    assert_int_equal(atomic_load(&b->used), 0);
+    zr__budget_unref(b);
+  }
+  zr__sdl_file_free(&free_run.file);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_lexer_tokens_and_places),
@@ -240,6 +297,7 @@ int main(void) {
       cmocka_unit_test(test_lexer_unterminated_string),
       cmocka_unit_test(test_lexer_bad_characters),
       cmocka_unit_test(test_lexer_keyword_table),
+      cmocka_unit_test(test_lexer_token_array_estimate),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

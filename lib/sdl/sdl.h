@@ -350,6 +350,7 @@ typedef struct zr_sdl_file {
      (NULL: none) while the file is held. */
   struct zr_budget *budget;
   size_t charged;
+  size_t tokens_charged; /* token slots the budget has been charged for */
 } zr_sdl_file;
 
 /*

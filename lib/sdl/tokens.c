@@ -113,15 +113,37 @@ const char *zr__sdl_file_line(const zr_sdl_file *f, int line, size_t *len) {
 
 static zr_status push_token(zr_sdl_file *f, size_t *cap,
                             const zr_sdl_token *t) {
-  if (f->n_tokens == *cap) {
-    size_t new_cap = *cap ? *cap * 2 : 256;
-    /* The token array and the block links made after it (at most a
-       pair of words per token; far fewer in practice). */
-    size_t more = (new_cap - *cap) * (sizeof *f->tokens + sizeof(size_t));
+  /* The budget is charged for the token array as it doubles from 256
+     slots, each with a word for the block links made after it (far
+     fewer in practice), whatever room the array has been given. */
+  if (f->n_tokens == f->tokens_charged) {
+    size_t slots = f->tokens_charged ? 2 * f->tokens_charged : 256;
+    size_t more =
+        (slots - f->tokens_charged) * (sizeof *f->tokens + sizeof(size_t));
     if (!zr__budget_charge(f->budget, more))
       return ZR_ELIMIT;
     if (f->budget)
       f->charged += more;
+    f->tokens_charged = slots;
+  }
+  if (f->n_tokens == *cap) {
+    size_t new_cap = *cap ? *cap * 2 : 256;
+    /* Where the first 256 tokens, taken as a sample of the file's
+       lines, say that the whole file holds a megabyte of tokens or
+       more, the array takes twice that estimate at once, in huge pages
+       (memory is taken as it is written): doubling from 256 touched the
+       first megabyte in ~250 fresh 4 KiB pages (~14 us each here,
+       core/arena.h) and copied the array at every step.
+       bench/peers.sh's sphereflake (118,000 tokens, 2.8 MB; its header
+       makes the sample sparser than the spheres' lines) took 1,257 page
+       faults at 512^2, 1,050 so; its terrain (130,000 tokens) is no
+       longer copied at all. */
+    if (*cap == 256 && t->line > 0 && (size_t)t->line < f->n_lines &&
+        f->n_lines / (size_t)t->line <= SIZE_MAX / 512 / sizeof *f->tokens) {
+      size_t estimate = 512 * (f->n_lines / (size_t)t->line);
+      if (estimate * sizeof *f->tokens >= ZR__HUGE_FROM)
+        new_cap = estimate;
+    }
     zr_sdl_token *tokens = zr__huge_grow(
         f->tokens, *cap * sizeof *tokens, new_cap * sizeof *tokens);
     if (!tokens)
