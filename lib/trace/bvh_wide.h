@@ -132,9 +132,22 @@ typedef struct zr_slab_ray {
 static inline void zr__make_slab_ray(const zr_ray *ray, zr_slab_ray *s) {
   double o[3] = {ray->origin.x, ray->origin.y, ray->origin.z};
   double d[3] = {ray->dir.x, ray->dir.y, ray->dir.z};
+  float recip[4];
+#ifdef __SSE2__
+  /* The three reciprocals in one division (IEEE's, lane by lane: the
+     scalar divisions' floats, bit for bit); every ray, camera, shadow
+     or reflected, starts its walk here.  A lane of 0 gives an
+     infinity, replaced below. */
+  _mm_storeu_ps(recip, _mm_div_ps(_mm_set1_ps(1.0f),
+                                  _mm_setr_ps((float)d[0], (float)d[1],
+                                              (float)d[2], 1.0f)));
+#else
+  for (int a = 0; a < 3; a++)
+    recip[a] = fabsf((float)d[a]) > 1e-30f ? 1.0f / (float)d[a] : 0.0f;
+#endif
   for (int a = 0; a < 3; a++) {
     float df = (float)d[a];
-    float inv = fabsf(df) > 1e-30f ? 1.0f / df : copysignf(1e30f, df);
+    float inv = fabsf(df) > 1e-30f ? recip[a] : copysignf(1e30f, df);
     s->org[a] = (float)o[a];
     s->inv[a] = inv;
     double scale = 0x1p-19 * fabs((double)inv);
