@@ -583,6 +583,8 @@ static zr_status make_context(run *r) {
   zr_context_set_work_limit(r->ctx, r->opts.loop_limit);
   zr_context_set_file_limit(r->ctx, r->opts.file_limit);
   zr_context_set_png_level(r->ctx, r->opts.png_level);
+  /* +WT: a large mesh's hierarchy is built by the rank's threads too. */
+  zr_context_set_threads(r->ctx, r->threads);
   if (zr_context_set_accel(r->ctx, r->opts.accel) != ZR_OK) {
     if (r->rank == 0)
       fprintf(stderr, "zrcube: --accel=embree: this zrcube was built "
@@ -1271,7 +1273,9 @@ static int start_writer(run *r, thread_write *t, zr_par_writer **w) {
   *w = NULL;
   t->r = r;
   t->ctx = NULL;
-  if (r->rank != 0 || zr__par_size(r->par) < 2 || !r->opts.write_output ||
+  if (r->rank != 0 ||
+      (zr__par_size(r->par) < 2 && r->threads < 2) ||
+      !r->opts.write_output ||
       r->opts.to_stdout || r->path || r->opts.params.alpha ||
       r->row0 != 0 || r->row1 != r->opts.params.height || r->col0 != 0 ||
       r->col1 != r->opts.params.width ||
