@@ -1259,10 +1259,11 @@ static zr_status save_on_thread(zr_image *image, void *user) {
 }
 
 /*
- * Rank 0 under mpirun, a PNG file of the whole image with colours alone:
- * its write starts before the render and encodes rows as they are
- * final while the other ranks render the last bands (zr__par_render's
- * writer).  About 45 ns a pixel here (bench/write_rows.sh: a PNG write
+ * Rank 0 under mpirun, or one process of two threads or more, a PNG
+ * file of the whole image with colours alone: its write starts before
+ * the render and encodes rows as they are final, while the other ranks
+ * render the last bands (zr__par_render's writer) or, in one process,
+ * row by row beside the render's threads.  About 45 ns a pixel here (bench/write_rows.sh: a PNG write
  * of 2048x1536 and 2048x2048 images at the default level, 0.12-0.14
  * and 0.18-0.19 s, 39-45 ns a pixel at loads 8-16), which sizes the
  * bands left to the other ranks.  Returns 1 when started.
