@@ -583,6 +583,8 @@ static zr_status make_context(run *r) {
   zr_context_set_work_limit(r->ctx, r->opts.loop_limit);
   zr_context_set_file_limit(r->ctx, r->opts.file_limit);
   zr_context_set_png_level(r->ctx, r->opts.png_level);
+  /* +WT: a large mesh's hierarchy is built by the rank's threads too. */
+  zr_context_set_threads(r->ctx, r->threads);
   if (zr_context_set_accel(r->ctx, r->opts.accel) != ZR_OK) {
     if (r->rank == 0)
       fprintf(stderr, "zrcube: --accel=embree: this zrcube was built "
@@ -1257,10 +1259,11 @@ static zr_status save_on_thread(zr_image *image, void *user) {
 }
 
 /*
- * Rank 0 under mpirun, a PNG file of the whole image with colours alone:
- * its write starts before the render and encodes rows as they are
- * final while the other ranks render the last bands (zr__par_render's
- * writer).  About 45 ns a pixel here (bench/write_rows.sh: a PNG write
+ * Rank 0 under mpirun, or one process of two threads or more, a PNG
+ * file of the whole image with colours alone: its write starts before
+ * the render and encodes rows as they are final, while the other ranks
+ * render the last bands (zr__par_render's writer) or, in one process,
+ * row by row beside the render's threads.  About 45 ns a pixel here (bench/write_rows.sh: a PNG write
  * of 2048x1536 and 2048x2048 images at the default level, 0.12-0.14
  * and 0.18-0.19 s, 39-45 ns a pixel at loads 8-16), which sizes the
  * bands left to the other ranks.  Returns 1 when started.
@@ -1271,7 +1274,9 @@ static int start_writer(run *r, thread_write *t, zr_par_writer **w) {
   *w = NULL;
   t->r = r;
   t->ctx = NULL;
-  if (r->rank != 0 || zr__par_size(r->par) < 2 || !r->opts.write_output ||
+  if (r->rank != 0 ||
+      (zr__par_size(r->par) < 2 && r->threads < 2) ||
+      !r->opts.write_output ||
       r->opts.to_stdout || r->path || r->opts.params.alpha ||
       r->row0 != 0 || r->row1 != r->opts.params.height || r->col0 != 0 ||
       r->col1 != r->opts.params.width ||

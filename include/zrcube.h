@@ -324,6 +324,13 @@ ZR_API void zr_context_set_file_limit(zr_context *ctx,
 #define ZR_DEFAULT_PNG_LEVEL 1
 ZR_API zr_status zr_context_set_png_level(zr_context *ctx, int level);
 /*
+ * Threads the parses that follow may use, the caller's among them: a
+ * mesh or mesh2 of many triangles has its hierarchy built by up to this
+ * many.  1 (the default) builds everything on the calling thread;
+ * below 1 counts as 1.  The scene is the same for any number.
+ */
+ZR_API void zr_context_set_threads(zr_context *ctx, int threads);
+/*
  * What finds a ray's triangles in the meshes (mesh, mesh2) of the
  * scenes parsed next: ZR_ACCEL_BUILTIN, zRcube's own hierarchy; or
  * ZR_ACCEL_EMBREE, Embree 3's (a build configured --with-embree), whose

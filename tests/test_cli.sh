@@ -110,6 +110,14 @@ mpi aa_wt1 0 2 scene.pov +Linc $SIZE +A0.1 +WT1 +Oaa_wt1.png
 same ref_aa.png aa_wt1.png
 serial aa_wt3 0 "$ZRCUBE" scene.pov +Linc $SIZE +A0.1 +WT3 +Oaa_wt3.png
 same ref_aa.png aa_wt3.png
+# One process of several threads encodes the PNG on a thread of its
+# own, row by row as the threads finish them (lib/par/par.c
+# render_band's follow): the same bytes as one thread writing after.
+for t in 2 3 4; do
+  serial "plain_wt$t" 0 "$ZRCUBE" scene.pov +Linc $SIZE -A "+WT$t" \
+    "+Oplain_wt$t.png"
+  same ref.png "plain_wt$t.png"
+done
 # Pass 2 sends rank 0 only the pixels that differ from their centre
 # (issue 15): the same bytes with alpha, a window and +AM2, and far
 # fewer pixel bytes than pass 1's (every pixel of the rank's rows).

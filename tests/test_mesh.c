@@ -16,9 +16,11 @@
 #include <string.h>
 
 #include "config.h"
+#include "core/arena.h"
 #include "core/strbuf.h"
 #include "scene/scene.h"
 #include "trace/bvh.h"
+#include "trace/bvh_wide.h"
 #include "trace/intersect.h"
 #include "trace/obj_mesh.h"
 #include "zrcube.h"
@@ -105,6 +107,58 @@ static zr_scene *rippled_grid(fixture *f, int n, double amp, double fi,
   zr_scene *s = good(f, zr__strbuf_cstr(&b));
   zr__strbuf_free(&b);
   return s;
+}
+
+/* A rippled grid of n x n vertices built straight by zr__mesh_build
+   with the given threads (no parse): faces, rows and nodes out. */
+static struct zr_mesh *grid_built(zr_arena *arena, int n, int threads) {
+  struct zr_mesh *m = zr__arena_alloc(arena, sizeof *m);
+  assert_non_null(m);
+  m->n_vertices = (size_t)n * (size_t)n;
+  m->n_faces = 2 * (size_t)(n - 1) * (size_t)(n - 1);
+  m->vertices = zr__arena_alloc(arena, m->n_vertices * sizeof *m->vertices);
+  m->faces = zr__arena_alloc(arena, m->n_faces * sizeof *m->faces);
+  assert_non_null(m->vertices);
+  assert_non_null(m->faces);
+  for (int j = 0; j < n; j++)
+    for (int i = 0; i < n; i++)
+      m->vertices[j * n + i] =
+          zr_v3(i, sin(i * 0.37) * cos(j * 0.21) + 0.01 * ((i * j) % 7), j);
+  size_t f = 0;
+  for (int j = 0; j < n - 1; j++)
+    for (int i = 0; i < n - 1; i++) {
+      uint32_t a = (uint32_t)(j * n + i), w = (uint32_t)n;
+      uint32_t t1[3] = {a, a + 1, a + w}, t2[3] = {a + 1, a + w + 1, a + w};
+      memcpy(m->faces[f++], t1, sizeof t1);
+      memcpy(m->faces[f++], t2, sizeof t2);
+    }
+  size_t bad = 0;
+  assert_int_equal(zr__mesh_build(m, arena, threads, &bad), ZR_OK);
+  return m;
+}
+
+/* The hierarchy of a large mesh is built by several threads
+   (zr_context_set_threads) into the same bytes as by one: the same
+   nodes, the faces in the same order, whatever the number. */
+static void test_mesh_threads_build_same_tree(void **state) {
+  (void)state;
+  zr_arena arena;
+  zr__arena_init(&arena);
+  const int n = 200; /* 79,202 faces: above the threads' minimum */
+  const struct zr_mesh *one = grid_built(&arena, n, 1);
+  assert_true(one->n_nodes > 1000);
+  for (int threads = 2; threads <= 8; threads += threads < 4 ? 1 : 4) {
+    const struct zr_mesh *m = grid_built(&arena, n, threads);
+    assert_int_equal(m->n_nodes, one->n_nodes);
+    /* A mesh node is one wide node (obj_mesh.c). */
+    assert_memory_equal(m->nodes, one->nodes,
+                        one->n_nodes * sizeof(zr_wide_node));
+    assert_memory_equal(m->faces, one->faces,
+                        one->n_faces * sizeof *one->faces);
+    assert_memory_equal(m->face_row, one->face_row,
+                        one->n_faces * sizeof *one->face_row);
+  }
+  zr__arena_free(&arena);
 }
 
 /* A grid of many triangles: the BVH's nearest crossing must be the one
@@ -447,6 +501,7 @@ int main(void) {
       cmocka_unit_test_setup_teardown(test_mesh_instances_share, setup,
                                       teardown),
       cmocka_unit_test_setup_teardown(test_mesh_bad_lists, setup, teardown),
+      cmocka_unit_test(test_mesh_threads_build_same_tree),
       cmocka_unit_test_setup_teardown(test_mesh_nearest_normal_as_intersect,
                                       setup, teardown),
   };

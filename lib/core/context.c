@@ -43,6 +43,7 @@ ZR_API zr_status zr_context_new(zr_context **out) {
   ctx->work_limit = ZR_DEFAULT_WORK_LIMIT;
   ctx->file_limit = ZR_DEFAULT_FILE_LIMIT;
   ctx->png_level = ZR_DEFAULT_PNG_LEVEL;
+  ctx->threads = 1;
   zr_context_set_accel(ctx, ZR_ACCEL_DEFAULT);
   zr_parse_options_init(&ctx->parse);
   ctx->budget = zr__budget_new(zr__budget_default_limit());
@@ -82,6 +83,10 @@ ZR_API zr_status zr_context_set_png_level(zr_context *ctx, int level) {
     return ZR_EINVAL;
   ctx->png_level = level;
   return ZR_OK;
+}
+
+ZR_API void zr_context_set_threads(zr_context *ctx, int threads) {
+  ctx->threads = threads < 1 ? 1 : threads;
 }
 
 ZR_API void zr_context_set_work_limit(zr_context *ctx,

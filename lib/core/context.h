@@ -40,6 +40,7 @@ struct zr_context {
   unsigned long long file_limit;   /* bytes of one file read; 0: none */
   int no_scene_writes;             /* zr_context_set_scene_writes(0) */
   int png_level;                   /* zlib level of PNG output, 0 to 9 */
+  int threads;                     /* a parse's threads, at least 1 */
   zr_accel accel;                  /* meshes' backend, never DEFAULT */
   struct zr_budget *budget;        /* the run's memory (core/budget.h) */
   char last_error[1024];

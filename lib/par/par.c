@@ -804,13 +804,30 @@ void zr__par_render_layout(const zr_par *par, const zr_par_render *job,
 /* One pass over the rows y0 .. y1 - 1 and columns x0 .. x1 - 1 of this
    rank (y0 + rank, + size, ...; with first 1, ranks 1 .. size - 1 share
    them and rank 0 has none), into rows_rgb. */
+/* One rank alone, whole rows in place: the rows of the band its
+   threads have finished, told to the writer as they come (a third
+   thread beside two renderers takes the moments a band's last rows
+   leave a thread idle, and the rest of its time from both alike, so
+   the write ends with the render instead of after it). */
+typedef struct follow {
+  zr_par_writer *writer;
+  int y0;
+} follow;
+
+static void rows_final(int rows, void *user) {
+  const follow *f = user;
+  zr__par_writer_rows(f->writer, f->y0 + rows);
+}
+
 static zr_status render_band(zr_par *par, zr_par_render *job,
                              const float *centres, float *rows_rgb,
                              size_t row_stride, int y0, int y1, int x0,
                              int x1, size_t progress_base,
-                             size_t progress_total, int first) {
+                             size_t progress_total, int first,
+                             zr_par_writer *writer) {
   if (par->rank < first)
     return zr__par_agree(par, ZR_OK);
+  follow f = {writer, y0};
   zr_pool_job pool = {
       .scene = job->scene,
       .params = job->params,
@@ -829,6 +846,8 @@ static zr_status render_band(zr_par *par, zr_par_render *job,
       .end_row = y1,
       .first_col = x0,
       .end_col = x1,
+      .rows_final = writer ? rows_final : NULL,
+      .rows_final_user = &f,
   };
   return zr__par_agree(par, zr__pool_render(&pool));
 }
@@ -1079,8 +1098,14 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
           rows = dest + (size_t)(par->rank - first) * row_floats;
           stride = (size_t)(par->size - first) * row_floats;
         }
+        /* One rank alone follows its rows to the writer (the last
+           pass's rows are final as they are written in place). */
+        zr_par_writer *follow_writer =
+            feed && !multi && last && in_place && dest ? job->writer
+                                                       : NULL;
         s = render_band(par, job, p == 1 ? pr.centres : NULL, rows, stride,
-                        y0, y1, x0, x1, done_rows, total, first);
+                        y0, y1, x0, x1, done_rows, total, first,
+                        follow_writer);
         done_rows +=
             (size_t)group_count(y1 - y0, par->rank, first, par->size);
         double gather_start = zr__par_now();
@@ -1112,12 +1137,13 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
       b = e;
       if (s == ZR_OK && par->rank == 0 && job->band_done)
         job->band_done(&pr, job->band_user);
-      if (s == ZR_OK && feed && last && b >= tail_from) {
+      if (s == ZR_OK && feed && last && (!multi || b >= tail_from)) {
         /* The rows above the first band still to do are final: told
            from the tail on, when rank 0 has nothing else to do (told
            sooner, the encoder took processor time from the ranks'
            renders: 3 threads on 2 cores, and rank 0 idle in the
-           tail). */
+           tail).  One rank alone has told them row by row already
+           (render_band's follow). */
         int f = 0;
         while (f < pr.bands && pr.done[p][f])
           f++;

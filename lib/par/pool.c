@@ -29,6 +29,8 @@ typedef struct shared_state {
   alignas(CACHE_LINE) atomic_int failure;  /* first zr_status != ZR_OK */
   alignas(CACHE_LINE) pthread_mutex_t progress_lock;
   size_t rows_done; /* guarded by progress_lock */
+  unsigned char *finished; /* rows_final: a flag a row, under the lock */
+  int prefix;              /* rows 0 .. prefix - 1 finished, the same */
   const zr_pool_job *job;
   int row_count;
 } shared_state;
@@ -40,14 +42,23 @@ typedef struct worker {
   int started;
 } worker;
 
-static void report_row(shared_state *sh) {
+static void report_row(shared_state *sh, int index) {
   const zr_pool_job *job = sh->job;
-  if (!job->progress)
+  if (!job->progress && !sh->finished)
     return;
   pthread_mutex_lock(&sh->progress_lock);
   sh->rows_done++;
-  job->progress(job->progress_base + sh->rows_done, job->progress_total,
-                job->progress_user);
+  if (job->progress)
+    job->progress(job->progress_base + sh->rows_done, job->progress_total,
+                  job->progress_user);
+  if (sh->finished) {
+    int before = sh->prefix;
+    sh->finished[index] = 1;
+    while (sh->prefix < sh->row_count && sh->finished[sh->prefix])
+      sh->prefix++;
+    if (sh->prefix > before)
+      job->rows_final(sh->prefix, job->rows_final_user);
+  }
   pthread_mutex_unlock(&sh->progress_lock);
 }
 
@@ -85,7 +96,7 @@ static void work(worker *w) {
       atomic_compare_exchange_strong(&sh->failure, &ok, (int)s);
       break;
     }
-    report_row(sh);
+    report_row(sh, index);
   }
   free(pixels);
 }
@@ -110,9 +121,14 @@ zr_status zr__pool_render(const zr_pool_job *job) {
   /* No more threads than rows: an idle thread only costs its start-up. */
   if (threads > sh.row_count)
     threads = sh.row_count > 0 ? sh.row_count : 1;
+  /* Rows end out of order among threads; the flags find the prefix. */
+  if (job->rows_final && sh.row_count > 0)
+    sh.finished = calloc((size_t)sh.row_count, 1);
   worker *workers =
       aligned_alloc(CACHE_LINE, (size_t)threads * sizeof *workers);
-  if (!workers) {
+  if (!workers || (job->rows_final && sh.row_count > 0 && !sh.finished)) {
+    free(workers);
+    free(sh.finished);
     pthread_mutex_destroy(&sh.progress_lock);
     return ZR_ENOMEM;
   }
@@ -132,6 +148,7 @@ zr_status zr__pool_render(const zr_pool_job *job) {
       zr_render_stats_add(job->stats, &workers[i].stats);
   zr_status status = (zr_status)atomic_load(&sh.failure);
   free(workers);
+  free(sh.finished);
   pthread_mutex_destroy(&sh.progress_lock);
   return status;
 }

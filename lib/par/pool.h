@@ -20,6 +20,13 @@
  */
 typedef void (*zr__rows_progress_fn)(size_t done, size_t total, void *user);
 
+/*
+ * Called, serialised like the progress, when the job's rows 0 .. rows - 1
+ * (in the rank's order) are all finished and rows has grown: rows may
+ * end in any order among threads, so this is the finished prefix.
+ */
+typedef void (*zr__rows_final_fn)(int rows, void *user);
+
 typedef struct zr_pool_job {
   const zr_scene *scene;
   const zr_render_params *params;
@@ -43,6 +50,8 @@ typedef struct zr_pool_job {
      end_row == 0: every row and column. */
   int first_row, end_row;
   int first_col, end_col;
+  zr__rows_final_fn rows_final; /* may be NULL */
+  void *rows_final_user;
 } zr_pool_job;
 
 /*

@@ -10,7 +10,8 @@
  * render the last bands without rank 0 (job->writer), so that the
  * encoder has rank 0's processor while they do.  The bytes written are
  * those of the same write after the render: the encoder is the same
- * code reading the same rows, only sooner.
+ * code reading the same rows, only sooner.  One process of several
+ * threads uses it too: its pool tells the rows as they are finished.
  */
 #ifndef ZR_PAR_WRITER_H
 #define ZR_PAR_WRITER_H

@@ -393,7 +393,8 @@ bool zr__sdl_mesh_done(zr_sdl_parser *p, zr_object *o,
     memcpy(m->face_uvs, m->faces, m->n_faces * sizeof *m->faces);
   }
   size_t bad = 0;
-  zr_status s = zr__mesh_build(m, &p->scene->arena, &bad);
+  zr_status s = zr__mesh_build(m, &p->scene->arena,
+                               p->ctx ? p->ctx->threads : 1, &bad);
   if (s == ZR_ESCENE) {
     zr__sdl_error(p, s, loc, "%s face %zu refers to a vertex, normal, uv "
                   "or texture that is not in its lists", what, bad);

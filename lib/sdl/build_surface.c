@@ -423,7 +423,7 @@ bool zr__sdl_patch_done(zr_sdl_parser *p, zr_object *o,
     return false;
   }
   size_t bad = 0;
-  zr_status st = zr__mesh_build(m, &p->scene->arena, &bad);
+  zr_status st = zr__mesh_build(m, &p->scene->arena, 1, &bad);
   if (st != ZR_OK) {
     zr__sdl_error(p, st, loc, "cannot build the bicubic_patch: %s",
                   zr_status_str(st));

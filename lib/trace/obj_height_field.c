@@ -557,7 +557,7 @@ zr_status zr__height_field_mesh(const zr_object *o, zr_arena *arena,
       }
     }
   size_t bad = 0;
-  zr_status st = zr__mesh_build(m, arena, &bad);
+  zr_status st = zr__mesh_build(m, arena, 1, &bad);
   if (st != ZR_OK)
     return st;
   *out = m;

@@ -34,6 +34,7 @@
  */
 #include "trace/obj_mesh.h"
 
+#include "core/parallel.h"
 #include "trace/bvh.h"
 #include "trace/bvh_wide.h"
 #include "trace/embree.h"
@@ -264,6 +265,211 @@ static zr_status build_node(builder *b, size_t first, size_t n, int depth,
                     &out.centres[1]);
 }
 
+/*
+ * The same tree built by several threads.  The top of the tree is built
+ * as above, except that a node of at most cutoff faces becomes a task
+ * (its placeholder node stays in the top array); the tasks, whose faces
+ * are disjoint runs of the boxes, are then built by zr__parallel_for,
+ * each into an array of its own by build_node, and spliced into the top
+ * array's depth-first order.  A node's split depends only on its faces,
+ * depth and boxes, never on who builds it or where its nodes go, so the
+ * spliced array is the one build_node gives alone, node for node,
+ * whatever the number of threads (tests/test_mesh checks it).
+ */
+typedef struct subtree {
+  size_t first, n, top; /* faces, and the placeholder in the top array */
+  int depth;
+  fbox bounds, centres;
+  builder b;
+  zr_status status;
+} subtree;
+
+typedef struct top_build {
+  builder top;
+  subtree *tasks;
+  size_t n_tasks, cap_tasks;
+  size_t cutoff;
+} top_build;
+
+static zr_status add_task(top_build *t, size_t first, size_t n, int depth,
+                          const fbox *bounds, const fbox *centres,
+                          size_t top) {
+  if (t->n_tasks == t->cap_tasks) {
+    size_t cap = t->cap_tasks ? 2 * t->cap_tasks : 64;
+    subtree *q = realloc(t->tasks, cap * sizeof *q);
+    if (!q)
+      return ZR_ENOMEM;
+    t->tasks = q;
+    t->cap_tasks = cap;
+  }
+  subtree *k = &t->tasks[t->n_tasks++];
+  memset(k, 0, sizeof *k);
+  k->first = first;
+  k->n = n;
+  k->top = top;
+  k->depth = depth;
+  k->bounds = *bounds;
+  k->centres = *centres;
+  k->b.boxes = t->top.boxes;
+  return ZR_OK;
+}
+
+/* build_node's top: nodes of at most cutoff faces are left as tasks (a
+   placeholder node each, whose count says nothing). */
+static zr_status build_top(top_build *t, size_t first, size_t n, int depth,
+                           const fbox *bounds, const fbox *centres) {
+  builder *b = &t->top;
+  size_t index;
+  zr_status s = new_node(b, &index);
+  if (s != ZR_OK)
+    return s;
+  if (n <= t->cutoff)
+    return add_task(t, first, n, depth, bounds, centres, index);
+  for (int a = 0; a < 3; a++) {
+    b->nodes[index].lo[a] = bounds->lo[a];
+    b->nodes[index].hi[a] = bounds->hi[a];
+  }
+  sides out;
+  size_t left = depth < DEPTH_MAX
+                    ? split(b->boxes + first, n, bounds, centres, &out)
+                    : halve(b->boxes + first, n, LEAF_MAX, &out);
+  if (left == 0 || left == n) {
+    b->nodes[index].first = (uint32_t)first;
+    b->nodes[index].count = (uint32_t)n;
+    return ZR_OK;
+  }
+  b->nodes[index].count = 0;
+  s = build_top(t, first, left, depth + 1, &out.bounds[0], &out.centres[0]);
+  if (s != ZR_OK)
+    return s;
+  b->nodes[index].first = (uint32_t)b->n_nodes;
+  return build_top(t, first + left, n - left, depth + 1, &out.bounds[1],
+                   &out.centres[1]);
+}
+
+static void build_tasks(void *user, size_t begin, size_t end, int worker) {
+  (void)worker;
+  top_build *t = user;
+  for (size_t i = begin; i < end; i++) {
+    subtree *k = &t->tasks[i];
+    k->status = build_node(&k->b, k->first, k->n, k->depth, &k->bounds,
+                           &k->centres);
+  }
+}
+
+/* The top array's node i and what it stands for, appended to out in
+   depth-first order: a placeholder's subtree with its inner nodes'
+   right-child indices moved by where it lands (a leaf's first is a
+   face, which stays). */
+static void splice(const top_build *t, const size_t *task_of, size_t i,
+                   zr_bvh_bin_node *out, size_t *n_out) {
+  if (task_of[i] != SIZE_MAX) {
+    const builder *sub = &t->tasks[task_of[i]].b;
+    size_t at = *n_out;
+    for (size_t j = 0; j < sub->n_nodes; j++) {
+      out[at + j] = sub->nodes[j];
+      if (out[at + j].count == 0)
+        out[at + j].first += (uint32_t)at;
+    }
+    *n_out += sub->n_nodes;
+    return;
+  }
+  size_t at = (*n_out)++;
+  out[at] = t->top.nodes[i];
+  if (out[at].count != 0)
+    return;
+  splice(t, task_of, i + 1, out, n_out);
+  out[at].first = (uint32_t)*n_out;
+  splice(t, task_of, t->top.nodes[i].first, out, n_out);
+}
+
+/* Fewer faces than this a thread: the tasks' start-up is not worth it. */
+#define PARALLEL_FACES_MIN 16384
+
+static zr_status build_parallel(builder *b, size_t n, int threads,
+                                const fbox *bounds, const fbox *centres) {
+  top_build t;
+  memset(&t, 0, sizeof t);
+  t.top.boxes = b->boxes;
+  /* Some 8 tasks a thread, so that unequal halves even out. */
+  t.cutoff = n / (8 * (size_t)threads);
+  if (t.cutoff < LEAF_SAH_MAX)
+    t.cutoff = LEAF_SAH_MAX;
+  zr_status s = build_top(&t, 0, n, 0, bounds, centres);
+  size_t *task_of = NULL;
+  if (s == ZR_OK) {
+    zr__parallel_for(threads, t.n_tasks, 1, build_tasks, &t, NULL);
+    size_t total = t.top.n_nodes;
+    for (size_t i = 0; i < t.n_tasks && s == ZR_OK; i++) {
+      s = t.tasks[i].status;
+      total += t.tasks[i].b.n_nodes;
+    }
+    task_of = malloc(t.top.n_nodes * sizeof *task_of);
+    b->nodes = malloc(total * sizeof *b->nodes);
+    if (s == ZR_OK && (!task_of || !b->nodes))
+      s = ZR_ENOMEM;
+    if (s == ZR_OK) {
+      for (size_t i = 0; i < t.top.n_nodes; i++)
+        task_of[i] = SIZE_MAX;
+      for (size_t i = 0; i < t.n_tasks; i++)
+        task_of[t.tasks[i].top] = i;
+      b->n_nodes = 0;
+      b->cap_nodes = total;
+      splice(&t, task_of, 0, b->nodes, &b->n_nodes);
+    }
+  }
+  for (size_t i = 0; i < t.n_tasks; i++)
+    free(t.tasks[i].b.nodes);
+  free(t.tasks);
+  free(t.top.nodes);
+  free(task_of);
+  return s;
+}
+
+/* The faces' boxes, computed in BOX_PARTS parts of the faces (a part
+   a call of zr__parallel_for's), each part's union kept apart. */
+enum { BOX_PARTS = 16 };
+
+typedef struct face_boxes {
+  struct zr_mesh *mesh;
+  face_box *boxes;
+  zr_vec3 lo[BOX_PARTS], hi[BOX_PARTS];
+} face_boxes;
+
+static void box_faces(void *user, size_t begin, size_t end, int worker) {
+  (void)worker;
+  face_boxes *fbs = user;
+  const struct zr_mesh *mesh = fbs->mesh;
+  size_t n = mesh->n_faces;
+  for (size_t part = begin; part < end; part++) {
+    zr_vec3 part_lo = zr_v3(INFINITY, INFINITY, INFINITY);
+    zr_vec3 part_hi = zr_v3_neg(part_lo);
+    size_t f0 = n / BOX_PARTS * part + (part < n % BOX_PARTS ? part
+                                                            : n % BOX_PARTS);
+    size_t f1 = f0 + n / BOX_PARTS + (part < n % BOX_PARTS);
+    for (size_t f = f0; f < f1; f++) {
+      zr_vec3 lo = zr_v3(INFINITY, INFINITY, INFINITY), hi = zr_v3_neg(lo);
+      for (int k = 0; k < 3; k++) {
+        zr_vec3 p = mesh->vertices[mesh->faces[f][k]];
+        lo = zr_v3_min(lo, p);
+        hi = zr_v3_max(hi, p);
+      }
+      part_lo = zr_v3_min(part_lo, lo);
+      part_hi = zr_v3_max(part_hi, hi);
+      face_box *fb = &fbs->boxes[f];
+      double l[3] = {lo.x, lo.y, lo.z}, h[3] = {hi.x, hi.y, hi.z};
+      for (int a = 0; a < 3; a++) {
+        fb->lo[a] = round_down(l[a]);
+        fb->hi[a] = round_up(h[a]);
+        fb->centre[a] = (float)(0.5 * (l[a] + h[a]));
+      }
+      fb->face = (uint32_t)f;
+    }
+    fbs->lo[part] = part_lo;
+    fbs->hi[part] = part_hi;
+  }
+}
+
 /* Puts the rows of an n-row table of row-size bytes in the given order,
    through one scratch copy. */
 static zr_status permute(void *rows, size_t row, const uint32_t *order,
@@ -295,7 +501,7 @@ static bool check_indices(const uint32_t (*rows)[3], size_t n, size_t limit,
 }
 
 zr_status zr__mesh_build(struct zr_mesh *mesh, zr_arena *arena,
-                         size_t *bad_face) {
+                         int threads, size_t *bad_face) {
   size_t n = mesh->n_faces;
   *bad_face = 0;
   if (!check_indices((const uint32_t(*)[3])mesh->faces, n,
@@ -325,27 +531,30 @@ zr_status zr__mesh_build(struct zr_mesh *mesh, zr_arena *arena,
   zr_status s = ZR_ENOMEM;
   if (!boxes || !order)
     goto done;
-  for (size_t f = 0; f < n; f++) {
-    zr_vec3 lo = zr_v3(INFINITY, INFINITY, INFINITY), hi = zr_v3_neg(lo);
-    for (int k = 0; k < 3; k++) {
-      zr_vec3 p = mesh->vertices[mesh->faces[f][k]];
-      lo = zr_v3_min(lo, p);
-      hi = zr_v3_max(hi, p);
-    }
-    mesh->lo = zr_v3_min(mesh->lo, lo);
-    mesh->hi = zr_v3_max(mesh->hi, hi);
-    face_box *fb = &boxes[f];
-    double l[3] = {lo.x, lo.y, lo.z}, h[3] = {hi.x, hi.y, hi.z};
-    for (int a = 0; a < 3; a++) {
-      fb->lo[a] = round_down(l[a]);
-      fb->hi[a] = round_up(h[a]);
-      fb->centre[a] = (float)(0.5 * (l[a] + h[a]));
-    }
-    fb->face = (uint32_t)f;
+  face_boxes fbs;
+  memset(&fbs, 0, sizeof fbs);
+  fbs.mesh = mesh;
+  fbs.boxes = boxes;
+  if (threads > 1 && n >= PARALLEL_FACES_MIN) {
+    /* Each part's bounds in a slot of its own, combined in order below
+       (a minimum is exact, so any order gives the same box). */
+    zr__parallel_for(threads, BOX_PARTS, 1, box_faces, &fbs, NULL);
+  } else {
+    box_faces(&fbs, 0, BOX_PARTS, 0);
+  }
+  for (int i = 0; i < BOX_PARTS; i++) {
+    mesh->lo = zr_v3_min(mesh->lo, fbs.lo[i]);
+    mesh->hi = zr_v3_max(mesh->hi, fbs.hi[i]);
   }
   fbox bounds, centres;
   bounds_of(boxes, n, &bounds, &centres);
-  s = build_node(&b, 0, n, 0, &bounds, &centres);
+  if (threads > 1 && n >= PARALLEL_FACES_MIN) {
+    if ((size_t)threads > n / PARALLEL_FACES_MIN)
+      threads = (int)(n / PARALLEL_FACES_MIN);
+    s = build_parallel(&b, n, threads, &bounds, &centres);
+  } else {
+    s = build_node(&b, 0, n, 0, &bounds, &centres);
+  }
   if (s != ZR_OK)
     goto done;
   for (size_t i = 0; i < n; i++)

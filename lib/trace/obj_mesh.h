@@ -41,9 +41,10 @@ bool zr__mesh_face_plane(const struct zr_mesh *mesh, size_t f, zr_vec3 org,
                          zr_vec3 dir, double *t, double *u, double *v);
 
 /* Builds the BVH (reordering the faces) and checks the indices; the
-   first bad index is reported in *bad_face (status ZR_ESCENE). */
+   first bad index is reported in *bad_face (status ZR_ESCENE).  Up to
+   threads threads build it; the tree is the same for any number. */
 zr_status zr__mesh_build(struct zr_mesh *mesh, zr_arena *arena,
-                         size_t *bad_face);
+                         int threads, size_t *bad_face);
 
 /* The nearest two crossings with tmin < t < tmax, nearest first. */
 int zr__mesh_crossings(const struct zr_mesh *mesh, zr_vec3 org, zr_vec3 dir,
