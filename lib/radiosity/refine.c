@@ -56,6 +56,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/arena.h"
 #include "core/team.h"
 #include "radiosity/formfactor.h"
 #include "radiosity/workers.h"
@@ -643,7 +644,8 @@ static zr_status append_link(zr_radiosity *rad, int32_t p, int rs,
     size_t cap = rad->cap_links ? 2 * rad->cap_links : 256;
     if (!zr__rad_charge(rad, (cap - rad->cap_links) * sizeof *rad->links))
       return ZR_ENOMEM;
-    zr__rad_link *a = realloc(rad->links, cap * sizeof *a);
+    zr__rad_link *a = zr__huge_grow(rad->links, rad->cap_links * sizeof *a,
+                                    cap * sizeof *a);
     if (a == NULL)
       return ZR_ENOMEM;
     rad->links = a;
