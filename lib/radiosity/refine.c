@@ -404,6 +404,9 @@ typedef struct plan {
   plan_op *ops;
   size_t n, cap;
   bool nomem;
+  /* ops points into another member's part of an exchange (team plans,
+     plans_unpack), which the plan does not own: cap is 0. */
+  bool borrowed;
   int choice; /* of the link a refinement plan starts from */
 } plan;
 
@@ -705,6 +708,10 @@ typedef struct planner {
   size_t chunk, stagger;
   /* link_all's pairs from a list (2 surfaces each) instead of all. */
   const uint32_t *pairs;
+  /* A team's exchange of the batch's plans, which the plans made by
+     other members borrow their steps from until the batch is replayed
+     (planner_done). */
+  zr__team_parts parts;
 } planner;
 
 /* The member that plans chunk c of a batch. */
@@ -751,9 +758,32 @@ static void plan_pairs(void *user, size_t begin, size_t end, int worker) {
   }
 }
 
+/* Room for n plans, all empty; NULL when out of memory.  A team's
+   batch holds up to 64 PLAN_BATCH plans (5 MiB), in huge pages from
+   zr__huge_alloc: a 2-rank solve of cornell.pov took 1,100 page faults
+   of 4 KiB (about 14 us each here) in calloc's fresh plans. */
+static plan *new_plans(size_t n) {
+  plan *plans = zr__huge_alloc((n ? n : 1) * sizeof *plans);
+  if (plans != NULL)
+    memset(plans, 0, (n ? n : 1) * sizeof *plans);
+  return plans;
+}
+
+/* Lets go of the steps plans borrowed from the batch's exchange. */
+static void planner_done(planner *w, size_t n) {
+  for (size_t i = 0; i < n; i++)
+    if (w->plans[i].borrowed) {
+      w->plans[i].ops = NULL;
+      w->plans[i].n = w->plans[i].cap = 0;
+      w->plans[i].borrowed = false;
+    }
+  zr__team_parts_free(&w->parts);
+}
+
 static void free_plans(plan *plans, size_t n) {
   for (size_t i = 0; plans != NULL && i < n; i++)
-    free(plans[i].ops);
+    if (!plans[i].borrowed)
+      free(plans[i].ops);
   free(plans);
 }
 
@@ -777,6 +807,11 @@ static void plan_chunks(void *user, size_t begin, size_t end, int worker) {
   }
 }
 
+/* Reads a plan another member made: its steps stay in the exchange's
+   part (borrowed, not copied: a 2-rank solve of cornell.pov copied
+   megabytes into a fresh buffer a plan).  A part starts at a multiple
+   of 4 bytes from the exchange's malloc'd room and every plan in it
+   takes 12 + 36 n bytes, so the steps (4-byte fields) lie aligned. */
 static zr_status plans_unpack(plan *pl, const char **at, const char *end) {
   int32_t choice;
   uint64_t n;
@@ -784,19 +819,16 @@ static zr_status plans_unpack(plan *pl, const char **at, const char *end) {
       !zr__unpack(at, end, &n, sizeof n) ||
       (uint64_t)(end - *at) / sizeof(plan_op) < n)
     return ZR_EMPI;
+  if (n > 0 && ((uintptr_t)*at % _Alignof(plan_op)) != 0)
+    return ZR_EMPI; /* cannot happen: see above */
+  if (!pl->borrowed)
+    free(pl->ops);
   pl->choice = choice;
-  pl->n = 0;
-  if (n > pl->cap) {
-    plan_op *ops = realloc(pl->ops, (size_t)n * sizeof *ops);
-    if (ops == NULL)
-      return ZR_ENOMEM;
-    pl->ops = ops;
-    pl->cap = (size_t)n;
-  }
-  if (n > 0)
-    memcpy(pl->ops, *at, (size_t)n * sizeof *pl->ops);
-  *at += (size_t)n * sizeof *pl->ops;
+  pl->ops = n > 0 ? (plan_op *)(void *)*at : NULL;
   pl->n = (size_t)n;
+  pl->cap = 0;
+  pl->borrowed = true;
+  *at += (size_t)n * sizeof *pl->ops;
   return ZR_OK;
 }
 
@@ -838,6 +870,8 @@ static zr_status make_plans_team(planner *w) {
   st = zr__team_exchange(team, st, pack.bytes, pack.n, &parts);
   zr__pack_free(&pack);
   for (int r = 0; st == ZR_OK && r < team->size; r++) {
+    if (r == team->rank) /* its plans are in place */
+      continue;
     const char *at = parts.bytes + parts.offset[r];
     const char *end = parts.bytes + parts.offset[r + 1];
     for (size_t c = 0; st == ZR_OK && c < n_chunks; c++) {
@@ -850,7 +884,7 @@ static zr_status make_plans_team(planner *w) {
     if (st == ZR_OK && at != end)
       st = ZR_EMPI;
   }
-  zr__team_parts_free(&parts);
+  w->parts = parts; /* the plans borrow from it (planner_done) */
   free(chunks);
   /* A member that failed to unpack (out of memory) replays nothing;
      the others learn it after their replay (replayed()). */
@@ -877,14 +911,16 @@ static zr_status make_plans(planner *w) {
 static zr_status link_tasks(zr_radiosity *rad, size_t n_pairs,
                             const uint32_t *pairs) {
   size_t batch = batch_of(rad);
-  plan *plans = calloc(batch, sizeof *plans);
+  size_t room = n_pairs < batch ? n_pairs : batch;
+  plan *plans = new_plans(room);
   if (plans == NULL)
     return ZR_ENOMEM;
   /* A team deals the pairs one at a time, staggered by a receiver's
      row of pairs (member (i + j) % n plans pair i, j): a pair's cost
      follows its surfaces' sizes, and chunks of 8 pairs in a row gave
      one of 2 ranks 3 times the other's planning (cornell.pov). */
-  planner w = {rad, plans, 0, plan_pairs, NULL, 0, 1, rad->n_surfs, pairs};
+  planner w = {rad,          plans, 0, plan_pairs, NULL, 0, 1,
+               rad->n_surfs, pairs, {NULL, NULL}};
   zr_status st = ZR_OK;
   for (size_t at = 0; st == ZR_OK && at < n_pairs; at += batch) {
     w.count = n_pairs - at < batch ? n_pairs - at : batch;
@@ -892,13 +928,14 @@ static zr_status link_tasks(zr_radiosity *rad, size_t n_pairs,
     st = make_plans(&w);
     for (size_t t = 0; st == ZR_OK && t < w.count; t++)
       st = replay(rad, &plans[t]);
+    planner_done(&w, w.count);
     /* Ctrl-C, SIGTERM or a progress callback stop the linking between
        batches (a team agrees on it below). */
     if (st == ZR_OK)
       st = zr__rad_progress(rad);
     st = replayed(rad, st);
   }
-  free_plans(plans, batch);
+  free_plans(plans, room);
   return st;
 }
 
@@ -946,10 +983,12 @@ zr_status zr__rad_refine_links(zr_radiosity *rad, size_t *changed) {
   size_t n = rad->n_links;
   *changed = 0;
   size_t batch = batch_of(rad);
-  plan *plans = calloc(batch, sizeof *plans);
+  size_t room = n < batch ? n : batch;
+  plan *plans = new_plans(room);
   if (plans == NULL)
     return ZR_ENOMEM;
-  planner w = {rad, plans, 0, plan_refinements, NULL, 0, PLAN_CHUNK, 0, NULL};
+  planner w = {rad,  plans, 0, plan_refinements, NULL, 0, PLAN_CHUNK, 0,
+               NULL, {NULL, NULL}};
   zr_status st = ZR_OK;
   for (size_t at = 0; st == ZR_OK && at < n; at += batch) {
     w.count = n - at < batch ? n - at : batch;
@@ -964,11 +1003,12 @@ zr_status zr__rad_refine_links(zr_radiosity *rad, size_t *changed) {
       (*changed)++;
       st = replay(rad, &plans[t]);
     }
+    planner_done(&w, w.count);
     if (st == ZR_OK)
       st = zr__rad_progress(rad); /* a stop asked for, as in link_tasks */
     st = replayed(rad, st);
   }
-  free_plans(plans, batch);
+  free_plans(plans, room);
   if (st == ZR_OK && rad->clustered) {
     zr__rad_pairs pairs = {0};
     size_t split = 0;
