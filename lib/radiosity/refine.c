@@ -791,10 +791,13 @@ static void free_plans(plan *plans, size_t n) {
  *
  * Member r of n makes the plans of the chunks r, r + n, ... of a batch
  * (PLAN_CHUNK tasks each; link_all's pairs one at a time, staggered,
- * chunk_owner), sends them (each plan's choice, its length and its
- * steps, which are plain values with their padding zeroed by
- * plan_push), and every member reads every member's plans into the same
- * slots; then each replays the whole batch in order as alone.  A plan
+ * chunk_owner), sends those that do something (each one's task, its
+ * choice, its length and its steps, which are plain values with their
+ * padding zeroed by plan_push; a plan not sent is empty, as most are
+ * once refinement settles: cornell.pov's later passes sent 12 bytes for
+ * each of 1e5 links, 0.6 MB a rank, nearly all for empty plans), and
+ * every member reads every member's plans into the same slots; then
+ * each replays the whole batch in order as alone.  A plan
  * depends on the cells and links as the pass found them and on nothing
  * else, so it is the same bytes whoever makes it, and so are the cells
  * and links every member makes from it. */
@@ -807,28 +810,32 @@ static void plan_chunks(void *user, size_t begin, size_t end, int worker) {
   }
 }
 
+/* What precedes a plan's steps in an exchange: 12 bytes. */
+typedef struct plan_head {
+  uint32_t task; /* in the batch */
+  int32_t choice;
+  uint32_t n;
+} plan_head;
+
 /* Reads a plan another member made: its steps stay in the exchange's
    part (borrowed, not copied: a 2-rank solve of cornell.pov copied
    megabytes into a fresh buffer a plan).  A part starts at a multiple
    of 4 bytes from the exchange's malloc'd room and every plan in it
    takes 12 + 36 n bytes, so the steps (4-byte fields) lie aligned. */
-static zr_status plans_unpack(plan *pl, const char **at, const char *end) {
-  int32_t choice;
-  uint64_t n;
-  if (!zr__unpack(at, end, &choice, sizeof choice) ||
-      !zr__unpack(at, end, &n, sizeof n) ||
-      (uint64_t)(end - *at) / sizeof(plan_op) < n)
+static zr_status plans_unpack(plan *pl, const plan_head *h, const char **at,
+                              const char *end) {
+  if ((size_t)(end - *at) / sizeof(plan_op) < h->n)
     return ZR_EMPI;
-  if (n > 0 && ((uintptr_t)*at % _Alignof(plan_op)) != 0)
+  if (h->n > 0 && ((uintptr_t)*at % _Alignof(plan_op)) != 0)
     return ZR_EMPI; /* cannot happen: see above */
   if (!pl->borrowed)
     free(pl->ops);
-  pl->choice = choice;
-  pl->ops = n > 0 ? (plan_op *)(void *)*at : NULL;
-  pl->n = (size_t)n;
+  pl->choice = h->choice;
+  pl->ops = h->n > 0 ? (plan_op *)(void *)*at : NULL;
+  pl->n = h->n;
   pl->cap = 0;
   pl->borrowed = true;
-  *at += (size_t)n * sizeof *pl->ops;
+  *at += (size_t)h->n * sizeof *pl->ops;
   return ZR_OK;
 }
 
@@ -855,10 +862,14 @@ static zr_status make_plans_team(planner *w) {
           st = ZR_ENOMEM;
           break;
         }
-        int32_t choice = pl->choice;
-        uint64_t n = pl->n;
-        zr__pack_put(&pack, &choice, sizeof choice);
-        zr__pack_put(&pack, &n, sizeof n);
+        if (pl->n == 0 && pl->choice == 0)
+          continue; /* empty: the others know it by its absence */
+        if (pl->n > UINT32_MAX) {
+          st = ZR_ENOMEM; /* 150 GB of steps: never */
+          break;
+        }
+        plan_head h = {(uint32_t)t, pl->choice, (uint32_t)pl->n};
+        zr__pack_put(&pack, &h, sizeof h);
         if (pl->n > 0)
           zr__pack_put(&pack, pl->ops, pl->n * sizeof *pl->ops);
       }
@@ -874,15 +885,28 @@ static zr_status make_plans_team(planner *w) {
       continue;
     const char *at = parts.bytes + parts.offset[r];
     const char *end = parts.bytes + parts.offset[r + 1];
-    for (size_t c = 0; st == ZR_OK && c < n_chunks; c++) {
+    /* Member r's plans are empty but those it sent, in task order. */
+    for (size_t c = 0; c < n_chunks; c++) {
       if (chunk_owner(w, c, team->size) != r)
         continue;
-      for (size_t t = c * w->chunk;
-           st == ZR_OK && t < (c + 1) * w->chunk && t < w->count; t++)
-        st = plans_unpack(&w->plans[t], &at, end);
+      for (size_t t = c * w->chunk; t < (c + 1) * w->chunk && t < w->count;
+           t++) {
+        w->plans[t].n = 0;
+        w->plans[t].choice = 0;
+      }
     }
-    if (st == ZR_OK && at != end)
-      st = ZR_EMPI;
+    size_t next = 0; /* the lowest task the next plan may have */
+    while (st == ZR_OK && at != end) {
+      plan_head h;
+      if (!zr__unpack(&at, end, &h, sizeof h) || h.task < next ||
+          h.task >= w->count ||
+          chunk_owner(w, h.task / w->chunk, team->size) != r)
+        st = ZR_EMPI; /* a member sent what the others did not expect */
+      else {
+        st = plans_unpack(&w->plans[h.task], &h, &at, end);
+        next = (size_t)h.task + 1;
+      }
+    }
   }
   w->parts = parts; /* the plans borrow from it (planner_done) */
   free(chunks);
