@@ -23,6 +23,8 @@
  */
 #include "radiosity/radiosity.h"
 
+#include "core/arena.h"
+
 #include <stdlib.h>
 #include <string.h>
 
@@ -37,7 +39,7 @@ static bool grow(zr_radiosity *rad, void **array, size_t *cap, size_t need,
     cap2 *= 2;
   if (!zr__rad_charge(rad, (cap2 - *cap) * size))
     return false;
-  void *p = realloc(*array, cap2 * size);
+  void *p = zr__huge_grow(*array, *cap * size, cap2 * size);
   if (p == NULL)
     return false;
   *array = p;

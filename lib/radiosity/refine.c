@@ -56,6 +56,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/arena.h"
 #include "core/team.h"
 #include "radiosity/formfactor.h"
 #include "radiosity/workers.h"
@@ -403,6 +404,9 @@ typedef struct plan {
   plan_op *ops;
   size_t n, cap;
   bool nomem;
+  /* ops points into another member's part of an exchange (team plans,
+     plans_unpack), which the plan does not own: cap is 0. */
+  bool borrowed;
   int choice; /* of the link a refinement plan starts from */
 } plan;
 
@@ -643,7 +647,8 @@ static zr_status append_link(zr_radiosity *rad, int32_t p, int rs,
     size_t cap = rad->cap_links ? 2 * rad->cap_links : 256;
     if (!zr__rad_charge(rad, (cap - rad->cap_links) * sizeof *rad->links))
       return ZR_ENOMEM;
-    zr__rad_link *a = realloc(rad->links, cap * sizeof *a);
+    zr__rad_link *a = zr__huge_grow(rad->links, rad->cap_links * sizeof *a,
+                                    cap * sizeof *a);
     if (a == NULL)
       return ZR_ENOMEM;
     rad->links = a;
@@ -703,6 +708,10 @@ typedef struct planner {
   size_t chunk, stagger;
   /* link_all's pairs from a list (2 surfaces each) instead of all. */
   const uint32_t *pairs;
+  /* A team's exchange of the batch's plans, which the plans made by
+     other members borrow their steps from until the batch is replayed
+     (planner_done). */
+  zr__team_parts parts;
 } planner;
 
 /* The member that plans chunk c of a batch. */
@@ -749,9 +758,32 @@ static void plan_pairs(void *user, size_t begin, size_t end, int worker) {
   }
 }
 
+/* Room for n plans, all empty; NULL when out of memory.  A team's
+   batch holds up to 64 PLAN_BATCH plans (5 MiB), in huge pages from
+   zr__huge_alloc: a 2-rank solve of cornell.pov took 1,100 page faults
+   of 4 KiB (about 14 us each here) in calloc's fresh plans. */
+static plan *new_plans(size_t n) {
+  plan *plans = zr__huge_alloc((n ? n : 1) * sizeof *plans);
+  if (plans != NULL)
+    memset(plans, 0, (n ? n : 1) * sizeof *plans);
+  return plans;
+}
+
+/* Lets go of the steps plans borrowed from the batch's exchange. */
+static void planner_done(planner *w, size_t n) {
+  for (size_t i = 0; i < n; i++)
+    if (w->plans[i].borrowed) {
+      w->plans[i].ops = NULL;
+      w->plans[i].n = w->plans[i].cap = 0;
+      w->plans[i].borrowed = false;
+    }
+  zr__team_parts_free(&w->parts);
+}
+
 static void free_plans(plan *plans, size_t n) {
   for (size_t i = 0; plans != NULL && i < n; i++)
-    free(plans[i].ops);
+    if (!plans[i].borrowed)
+      free(plans[i].ops);
   free(plans);
 }
 
@@ -759,10 +791,13 @@ static void free_plans(plan *plans, size_t n) {
  *
  * Member r of n makes the plans of the chunks r, r + n, ... of a batch
  * (PLAN_CHUNK tasks each; link_all's pairs one at a time, staggered,
- * chunk_owner), sends them (each plan's choice, its length and its
- * steps, which are plain values with their padding zeroed by
- * plan_push), and every member reads every member's plans into the same
- * slots; then each replays the whole batch in order as alone.  A plan
+ * chunk_owner), sends those that do something (each one's task, its
+ * choice, its length and its steps, which are plain values with their
+ * padding zeroed by plan_push; a plan not sent is empty, as most are
+ * once refinement settles: cornell.pov's later passes sent 12 bytes for
+ * each of 1e5 links, 0.6 MB a rank, nearly all for empty plans), and
+ * every member reads every member's plans into the same slots; then
+ * each replays the whole batch in order as alone.  A plan
  * depends on the cells and links as the pass found them and on nothing
  * else, so it is the same bytes whoever makes it, and so are the cells
  * and links every member makes from it. */
@@ -775,26 +810,32 @@ static void plan_chunks(void *user, size_t begin, size_t end, int worker) {
   }
 }
 
-static zr_status plans_unpack(plan *pl, const char **at, const char *end) {
+/* What precedes a plan's steps in an exchange: 12 bytes. */
+typedef struct plan_head {
+  uint32_t task; /* in the batch */
   int32_t choice;
-  uint64_t n;
-  if (!zr__unpack(at, end, &choice, sizeof choice) ||
-      !zr__unpack(at, end, &n, sizeof n) ||
-      (uint64_t)(end - *at) / sizeof(plan_op) < n)
+  uint32_t n;
+} plan_head;
+
+/* Reads a plan another member made: its steps stay in the exchange's
+   part (borrowed, not copied: a 2-rank solve of cornell.pov copied
+   megabytes into a fresh buffer a plan).  A part starts at a multiple
+   of 4 bytes from the exchange's malloc'd room and every plan in it
+   takes 12 + 36 n bytes, so the steps (4-byte fields) lie aligned. */
+static zr_status plans_unpack(plan *pl, const plan_head *h, const char **at,
+                              const char *end) {
+  if ((size_t)(end - *at) / sizeof(plan_op) < h->n)
     return ZR_EMPI;
-  pl->choice = choice;
-  pl->n = 0;
-  if (n > pl->cap) {
-    plan_op *ops = realloc(pl->ops, (size_t)n * sizeof *ops);
-    if (ops == NULL)
-      return ZR_ENOMEM;
-    pl->ops = ops;
-    pl->cap = (size_t)n;
-  }
-  if (n > 0)
-    memcpy(pl->ops, *at, (size_t)n * sizeof *pl->ops);
-  *at += (size_t)n * sizeof *pl->ops;
-  pl->n = (size_t)n;
+  if (h->n > 0 && ((uintptr_t)*at % _Alignof(plan_op)) != 0)
+    return ZR_EMPI; /* cannot happen: see above */
+  if (!pl->borrowed)
+    free(pl->ops);
+  pl->choice = h->choice;
+  pl->ops = h->n > 0 ? (plan_op *)(void *)*at : NULL;
+  pl->n = h->n;
+  pl->cap = 0;
+  pl->borrowed = true;
+  *at += (size_t)h->n * sizeof *pl->ops;
   return ZR_OK;
 }
 
@@ -821,10 +862,14 @@ static zr_status make_plans_team(planner *w) {
           st = ZR_ENOMEM;
           break;
         }
-        int32_t choice = pl->choice;
-        uint64_t n = pl->n;
-        zr__pack_put(&pack, &choice, sizeof choice);
-        zr__pack_put(&pack, &n, sizeof n);
+        if (pl->n == 0 && pl->choice == 0)
+          continue; /* empty: the others know it by its absence */
+        if (pl->n > UINT32_MAX) {
+          st = ZR_ENOMEM; /* 150 GB of steps: never */
+          break;
+        }
+        plan_head h = {(uint32_t)t, pl->choice, (uint32_t)pl->n};
+        zr__pack_put(&pack, &h, sizeof h);
         if (pl->n > 0)
           zr__pack_put(&pack, pl->ops, pl->n * sizeof *pl->ops);
       }
@@ -836,19 +881,34 @@ static zr_status make_plans_team(planner *w) {
   st = zr__team_exchange(team, st, pack.bytes, pack.n, &parts);
   zr__pack_free(&pack);
   for (int r = 0; st == ZR_OK && r < team->size; r++) {
+    if (r == team->rank) /* its plans are in place */
+      continue;
     const char *at = parts.bytes + parts.offset[r];
     const char *end = parts.bytes + parts.offset[r + 1];
-    for (size_t c = 0; st == ZR_OK && c < n_chunks; c++) {
+    /* Member r's plans are empty but those it sent, in task order. */
+    for (size_t c = 0; c < n_chunks; c++) {
       if (chunk_owner(w, c, team->size) != r)
         continue;
-      for (size_t t = c * w->chunk;
-           st == ZR_OK && t < (c + 1) * w->chunk && t < w->count; t++)
-        st = plans_unpack(&w->plans[t], &at, end);
+      for (size_t t = c * w->chunk; t < (c + 1) * w->chunk && t < w->count;
+           t++) {
+        w->plans[t].n = 0;
+        w->plans[t].choice = 0;
+      }
     }
-    if (st == ZR_OK && at != end)
-      st = ZR_EMPI;
+    size_t next = 0; /* the lowest task the next plan may have */
+    while (st == ZR_OK && at != end) {
+      plan_head h;
+      if (!zr__unpack(&at, end, &h, sizeof h) || h.task < next ||
+          h.task >= w->count ||
+          chunk_owner(w, h.task / w->chunk, team->size) != r)
+        st = ZR_EMPI; /* a member sent what the others did not expect */
+      else {
+        st = plans_unpack(&w->plans[h.task], &h, &at, end);
+        next = (size_t)h.task + 1;
+      }
+    }
   }
-  zr__team_parts_free(&parts);
+  w->parts = parts; /* the plans borrow from it (planner_done) */
   free(chunks);
   /* A member that failed to unpack (out of memory) replays nothing;
      the others learn it after their replay (replayed()). */
@@ -875,14 +935,16 @@ static zr_status make_plans(planner *w) {
 static zr_status link_tasks(zr_radiosity *rad, size_t n_pairs,
                             const uint32_t *pairs) {
   size_t batch = batch_of(rad);
-  plan *plans = calloc(batch, sizeof *plans);
+  size_t room = n_pairs < batch ? n_pairs : batch;
+  plan *plans = new_plans(room);
   if (plans == NULL)
     return ZR_ENOMEM;
   /* A team deals the pairs one at a time, staggered by a receiver's
      row of pairs (member (i + j) % n plans pair i, j): a pair's cost
      follows its surfaces' sizes, and chunks of 8 pairs in a row gave
      one of 2 ranks 3 times the other's planning (cornell.pov). */
-  planner w = {rad, plans, 0, plan_pairs, NULL, 0, 1, rad->n_surfs, pairs};
+  planner w = {rad,          plans, 0, plan_pairs, NULL, 0, 1,
+               rad->n_surfs, pairs, {NULL, NULL}};
   zr_status st = ZR_OK;
   for (size_t at = 0; st == ZR_OK && at < n_pairs; at += batch) {
     w.count = n_pairs - at < batch ? n_pairs - at : batch;
@@ -890,13 +952,14 @@ static zr_status link_tasks(zr_radiosity *rad, size_t n_pairs,
     st = make_plans(&w);
     for (size_t t = 0; st == ZR_OK && t < w.count; t++)
       st = replay(rad, &plans[t]);
+    planner_done(&w, w.count);
     /* Ctrl-C, SIGTERM or a progress callback stop the linking between
        batches (a team agrees on it below). */
     if (st == ZR_OK)
       st = zr__rad_progress(rad);
     st = replayed(rad, st);
   }
-  free_plans(plans, batch);
+  free_plans(plans, room);
   return st;
 }
 
@@ -944,10 +1007,12 @@ zr_status zr__rad_refine_links(zr_radiosity *rad, size_t *changed) {
   size_t n = rad->n_links;
   *changed = 0;
   size_t batch = batch_of(rad);
-  plan *plans = calloc(batch, sizeof *plans);
+  size_t room = n < batch ? n : batch;
+  plan *plans = new_plans(room);
   if (plans == NULL)
     return ZR_ENOMEM;
-  planner w = {rad, plans, 0, plan_refinements, NULL, 0, PLAN_CHUNK, 0, NULL};
+  planner w = {rad,  plans, 0, plan_refinements, NULL, 0, PLAN_CHUNK, 0,
+               NULL, {NULL, NULL}};
   zr_status st = ZR_OK;
   for (size_t at = 0; st == ZR_OK && at < n; at += batch) {
     w.count = n - at < batch ? n - at : batch;
@@ -962,11 +1027,12 @@ zr_status zr__rad_refine_links(zr_radiosity *rad, size_t *changed) {
       (*changed)++;
       st = replay(rad, &plans[t]);
     }
+    planner_done(&w, w.count);
     if (st == ZR_OK)
       st = zr__rad_progress(rad); /* a stop asked for, as in link_tasks */
     st = replayed(rad, st);
   }
-  free_plans(plans, batch);
+  free_plans(plans, room);
   if (st == ZR_OK && rad->clustered) {
     zr__rad_pairs pairs = {0};
     size_t split = 0;

@@ -217,13 +217,33 @@ static double push_pull_all(zr_radiosity *rad, double *change) {
  * the lower rank), a rule every member evaluates alike.  A sweep
  * gathers into the owned surfaces' nodes and pushes and pulls their
  * trees, then the members exchange each owned surface's change and the
- * radiosity b of its nodes, in surface and node order, so every member
- * holds every node's new b before the next sweep reads it.  Gathering
+ * radiosity b that the others will read in the next sweep: b[side] of
+ * a node is read by a sweep only where a link leaves that side of it,
+ * so a member sends the sides of its nodes from which a link runs to
+ * another member's surface (in surface, node and side order), and
+ * keeps the rest until the solve ends, when one more exchange sends
+ * them all, so every member then holds every node's b.  Gathering
  * reads only the b of the sweep before (Jacobi), so the sweeps are the
  * same bits as one process's, and so is the residual, summed over the
  * surfaces in order from the same per-surface changes.  The links and
  * nodes stay on every member: refinement replays on each, and the
- * render's final gather at a ray hit may read any link. */
+ * render's final gather at a ray hit may read any link.
+ *
+ * scenes/cornell.pov (64x64, 2 ranks) sent 64.1 MB in 179 sweeps when
+ * every node's two sides went every sweep, and unpacked its own part
+ * too; the sides another member reads are a third of that: 20.6 MB in
+ * 179 sweeps and the 6 ends of its solves (sweep exchange 19 -> 9 ms
+ * of CPU a rank). */
+
+/* The b triples a member sends in an exchange: entries node * 2 + side,
+   member after member (entry[first[r] .. first[r + 1]) are member r's),
+   and the bytes of each member's part. */
+typedef struct team_sends {
+  uint32_t *entry;
+  size_t *first;
+  size_t *part_bytes;
+} team_sends;
+
 typedef struct team_gather {
   int32_t *owner;     /* member of each surface */
   uint32_t *by_surf;  /* node indices grouped by surface, node order */
@@ -231,22 +251,70 @@ typedef struct team_gather {
   uint32_t *mine;     /* nodes of this member's surfaces, node order */
   size_t n_mine;
   /* A sweep's part of each member is the same size every sweep (its
-     surfaces' changes and their nodes' b), known to every member from
-     the owners: one allgather a sweep into room made once, where a
-     general exchange (zr__team_exchange) takes three (statuses and
-     sizes, room agreed, parts). */
-  size_t *part_bytes; /* each member's part */
+     surfaces' changes and the b its links to other members' surfaces
+     read), known to every member from the owners and the links: one
+     allgather a sweep into room made once, where a general exchange
+     (zr__team_exchange) takes three (statuses and sizes, room agreed,
+     parts).  The b no other member reads in a sweep goes once, at the
+     end (rest, without changes). */
+  team_sends sweep, rest;
   char *send, *recv;  /* this member's part; every part, rank after rank */
 } team_gather;
+
+static void team_sends_free(team_sends *ts) {
+  free(ts->entry);
+  free(ts->first);
+  free(ts->part_bytes);
+}
 
 static void team_gather_free(team_gather *tg) {
   free(tg->owner);
   free(tg->by_surf);
   free(tg->surf_start);
   free(tg->mine);
-  free(tg->part_bytes);
+  team_sends_free(&tg->sweep);
+  team_sends_free(&tg->rest);
   free(tg->send);
   free(tg->recv);
+}
+
+/* The entries of sends: those whose side is in need (wanted 1) or not
+   (wanted 0), member after member, each in surface, node and side
+   order; with_change adds a double a surface to each part.  Returns
+   the total bytes, or SIZE_MAX when out of memory. */
+static size_t team_sends_make(const zr_radiosity *rad, const team_gather *tg,
+                              int n, const uint8_t *need, int wanted,
+                              bool with_change, team_sends *ts) {
+  size_t ns = rad->n_surfs, count = 0;
+  for (size_t v = 0; v < rad->n_nodes; v++)
+    for (int side = 0; side < 2; side++)
+      count += ((need[v] >> side) & 1) == wanted;
+  ts->entry = malloc((count + 1) * sizeof *ts->entry);
+  ts->first = calloc((size_t)n + 1, sizeof *ts->first);
+  ts->part_bytes = calloc((size_t)n, sizeof *ts->part_bytes);
+  if (!ts->entry || !ts->first || !ts->part_bytes)
+    return SIZE_MAX;
+  size_t k = 0, total = 0;
+  for (int r = 0; r < n; r++) {
+    ts->first[r] = k;
+    size_t k0 = k, surfs = 0;
+    for (size_t sf = 0; sf < ns; sf++) {
+      if (tg->owner[sf] != r)
+        continue;
+      surfs++;
+      for (size_t j = tg->surf_start[sf]; j < tg->surf_start[sf + 1]; j++) {
+        uint32_t v = tg->by_surf[j];
+        for (int side = 0; side < 2; side++)
+          if (((need[v] >> side) & 1) == wanted)
+            ts->entry[k++] = 2 * v + (uint32_t)side;
+      }
+    }
+    ts->part_bytes[r] = (with_change ? surfs * sizeof(double) : 0) +
+                        (k - k0) * sizeof rad->nodes[0].b[0];
+    total += ts->part_bytes[r];
+  }
+  ts->first[n] = k;
+  return total;
 }
 
 static zr_status team_gather_init(const zr_radiosity *rad,
@@ -262,9 +330,10 @@ static zr_status team_gather_init(const zr_radiosity *rad,
   uint64_t *cost = calloc(ns + 1, sizeof *cost);
   uint64_t *load = calloc((size_t)n, sizeof *load);
   uint32_t *order = malloc((ns + 1) * sizeof *order);
+  uint8_t *need = calloc(rad->n_nodes + 1, sizeof *need);
   zr_status st = ZR_OK;
   if (!tg->owner || !tg->by_surf || !tg->surf_start || !tg->mine ||
-      !cost || !load || !order)
+      !cost || !load || !order || !need)
     st = ZR_ENOMEM;
   if (st == ZR_OK) {
     for (size_t v = 0; v < rad->n_nodes; v++) {
@@ -297,19 +366,24 @@ static zr_status team_gather_init(const zr_radiosity *rad,
     for (size_t v = 0; v < rad->n_nodes; v++)
       if (tg->owner[rad->nodes[v].surf] == me)
         tg->mine[tg->n_mine++] = (uint32_t)v;
-    tg->part_bytes = calloc((size_t)n, sizeof *tg->part_bytes);
-    if (tg->part_bytes == NULL)
-      st = ZR_ENOMEM;
-    size_t total = 0;
-    for (size_t sf = 0; st == ZR_OK && sf < ns; sf++) {
-      size_t b = sizeof(double) + (tg->surf_start[sf + 1] -
-                                   tg->surf_start[sf]) *
-                                      sizeof rad->nodes[0].b;
-      tg->part_bytes[tg->owner[sf]] += b;
-      total += b;
+    /* The sides another member's receivers read. */
+    for (size_t i = 0; i < rad->n_links; i++) {
+      const zr__rad_link *l = &rad->links[i];
+      if (!l->dead && tg->owner[rad->nodes[l->recv].surf] !=
+                          tg->owner[rad->nodes[l->src].surf])
+        need[l->src] |= (uint8_t)(1u << l->sside);
     }
+    size_t total = team_sends_make(rad, tg, n, need, 1, true, &tg->sweep);
+    size_t rest = team_sends_make(rad, tg, n, need, 0, false, &tg->rest);
+    if (total == SIZE_MAX || rest == SIZE_MAX)
+      st = ZR_ENOMEM;
     if (st == ZR_OK) {
-      tg->send = malloc(tg->part_bytes[me] ? tg->part_bytes[me] : 1);
+      size_t mine = tg->sweep.part_bytes[me] > tg->rest.part_bytes[me]
+                        ? tg->sweep.part_bytes[me]
+                        : tg->rest.part_bytes[me];
+      if (rest > total)
+        total = rest;
+      tg->send = malloc(mine ? mine : 1);
       tg->recv = malloc(total ? total : 1);
       if (tg->send == NULL || tg->recv == NULL)
         st = ZR_ENOMEM;
@@ -318,6 +392,7 @@ static zr_status team_gather_init(const zr_radiosity *rad,
   free(cost);
   free(load);
   free(order);
+  free(need);
   if (st != ZR_OK)
     team_gather_free(tg);
   return st;
@@ -352,6 +427,46 @@ static void team_push_pull_range(void *user, size_t begin, size_t end,
       push_pull_range(&one, s, s + 1, worker);
 }
 
+/* One exchange of ts's entries (and with change, the members' surface
+   changes): each member sends its own, and writes the others'. */
+static zr_status team_send(zr_radiosity *rad, const team_gather *tg,
+                           const team_sends *ts, double *change) {
+  const zr_team *team = rad->params.team;
+  int me = zr__team_rank(team);
+  const size_t b_size = sizeof rad->nodes[0].b[0];
+  char *at = tg->send;
+  for (size_t sf = 0; change != NULL && sf < rad->n_surfs; sf++)
+    if (tg->owner[sf] == me) {
+      memcpy(at, &change[sf], sizeof change[sf]);
+      at += sizeof change[sf];
+    }
+  for (size_t k = ts->first[me]; k < ts->first[me + 1]; k++) {
+    uint32_t e = ts->entry[k];
+    memcpy(at, rad->nodes[e >> 1].b[e & 1], b_size);
+    at += b_size;
+  }
+  zr_status st = team->allgather(team->user, tg->send, tg->recv,
+                                 ts->part_bytes);
+  const char *from = tg->recv;
+  for (int r = 0; st == ZR_OK && r < team->size; r++) {
+    if (r == me) { /* its values are in place */
+      from += ts->part_bytes[r];
+      continue;
+    }
+    for (size_t sf = 0; change != NULL && sf < rad->n_surfs; sf++)
+      if (tg->owner[sf] == r) {
+        memcpy(&change[sf], from, sizeof change[sf]);
+        from += sizeof change[sf];
+      }
+    for (size_t k = ts->first[r]; k < ts->first[r + 1]; k++) {
+      uint32_t e = ts->entry[k];
+      memcpy(rad->nodes[e >> 1].b[e & 1], from, b_size);
+      from += b_size;
+    }
+  }
+  return st;
+}
+
 /* One sweep across the team; *residual_power is the summed change. */
 static zr_status team_sweep(zr_radiosity *rad, const recv_index *ix,
                             const team_gather *tg, double *change,
@@ -363,34 +478,7 @@ static zr_status team_sweep(zr_radiosity *rad, const recv_index *ix,
   team_puller tp = {rad, change, tg->owner, me};
   zr__rad_parallel(rad->params.threads, rad->n_surfs, 4,
                    team_push_pull_range, &tp);
-  char *at = tg->send;
-  for (size_t sf = 0; sf < rad->n_surfs; sf++) {
-    if (tg->owner[sf] != me)
-      continue;
-    memcpy(at, &change[sf], sizeof change[sf]);
-    at += sizeof change[sf];
-    for (size_t k = tg->surf_start[sf]; k < tg->surf_start[sf + 1]; k++) {
-      memcpy(at, rad->nodes[tg->by_surf[k]].b, sizeof rad->nodes[0].b);
-      at += sizeof rad->nodes[0].b;
-    }
-  }
-  zr_status st = team->allgather(team->user, tg->send, tg->recv,
-                                 tg->part_bytes);
-  const char *from = tg->recv;
-  for (int r = 0; st == ZR_OK && r < team->size; r++) {
-    /* Member r's surfaces in order, as it packed them. */
-    for (size_t sf = 0; sf < rad->n_surfs; sf++) {
-      if (tg->owner[sf] != r)
-        continue;
-      memcpy(&change[sf], from, sizeof change[sf]);
-      from += sizeof change[sf];
-      for (size_t k = tg->surf_start[sf]; k < tg->surf_start[sf + 1];
-           k++) {
-        memcpy(rad->nodes[tg->by_surf[k]].b, from, sizeof rad->nodes[0].b);
-        from += sizeof rad->nodes[0].b;
-      }
-    }
-  }
+  zr_status st = team_send(rad, tg, &tg->sweep, change);
   double sum = 0.0;
   for (size_t sf = 0; sf < rad->n_surfs; sf++)
     sum += change[sf];
@@ -413,6 +501,9 @@ static zr_status solve_gather_team(zr_radiosity *rad, recv_index *ix,
     if (!(residual > rad->params.residual))
       break;
   }
+  /* The b no sweep sent, to every member. */
+  if (st == ZR_OK)
+    st = team_send(rad, &tg, &tg.rest, NULL);
   rad->stats.iterations = it;
   rad->stats.residual = residual;
   if (made == ZR_OK)
