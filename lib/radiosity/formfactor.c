@@ -168,12 +168,14 @@ static void polygon_plane_init(polygon_plane *pl, const zr_vec3 *v,
   pl->nv = nv;
   pl->normal = zr_v3(0, 0, 0);
   pl->size = 0.0;
+  pl->inv_size = 0.0;
   if (nv < 3)
     return;
   for (size_t i = 1; i < nv; i++)
     pl->size = fmax(pl->size, zr_v3_len(zr_v3_sub(v[i], v[0])));
   if (!(pl->size > 0.0))
     return;
+  pl->inv_size = 1.0 / pl->size;
   zr_vec3 m = zr_v3(0, 0, 0);
   for (size_t i = 0; i < nv; i++) {
     zr_vec3 a = zr_v3_scale(zr_v3_sub(v[i], v[0]), 1.0 / pl->size);
@@ -194,7 +196,7 @@ static void polygon_plane_init(polygon_plane *pl, const zr_vec3 *v,
 static bool in_plane(const polygon_plane *pl, zr_vec3 p) {
   if (zr_v3_dot(pl->normal, pl->normal) == 0.0)
     return true;
-  zr_vec3 d = zr_v3_scale(zr_v3_sub(p, pl->verts[0]), 1.0 / pl->size);
+  zr_vec3 d = zr_v3_scale(zr_v3_sub(p, pl->verts[0]), pl->inv_size);
   return fabs(zr_v3_dot(pl->normal, d)) <= 1e-12;
 }
 

@@ -42,6 +42,7 @@ typedef struct zr__ff_polygon {
   size_t nv;
   zr_vec3 normal; /* unit; zero for a degenerate polygon */
   double size;    /* largest distance from verts[0] to another vertex */
+  double inv_size; /* 1 / size, as every point's in-plane test takes it */
 } zr__ff_polygon;
 
 void zr__ff_polygon_init(zr__ff_polygon *pl, const zr_vec3 *verts,
