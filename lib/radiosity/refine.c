@@ -197,14 +197,23 @@ static double loose_cos(zr_vec3 n, const loosen *lo, zr_vec3 c, zr_vec3 t) {
  * A cos cos / (pi r^2 + A) between the centres, where each cosine is the
  * largest towards the other cell's 3 x 3 sample points, so a large cell
  * whose centre lies behind the other (a floor under a box's face) is
- * not judged invisible.
+ * not judged invisible.  Its parts (the two cosines and r^2) serve both
+ * directions: from b to a the cosines swap ends and r^2 is the same
+ * bits (a difference negated exactly), so larger_end finds the factor
+ * back from the parts its caller found, not from 18 more samples.
  */
-static double oracle(const zr_radiosity *rad, const zr__rad_node *a, int sx,
-                     const zr__rad_node *b, int sy) {
+typedef struct oracle_parts {
+  double r2, ca, cb; /* ca at a towards b's samples, cb at b */
+} oracle_parts;
+
+static void oracle_parts_of(const zr_radiosity *rad, const zr__rad_node *a,
+                            int sx, const zr__rad_node *b, int sy,
+                            oracle_parts *o) {
   zr_vec3 d = zr_v3_sub(b->centre, a->centre);
-  double r2 = zr_v3_dot(d, d);
-  if (!(r2 > 0.0))
-    return b->area > 0.0 ? 1.0 : 0.0;
+  o->r2 = zr_v3_dot(d, d);
+  o->ca = o->cb = 0.0;
+  if (!(o->r2 > 0.0))
+    return;
   zr_vec3 na = zr_v3_scale(a->normal, sx ? -1.0 : 1.0);
   zr_vec3 nb = zr_v3_scale(b->normal, sy ? -1.0 : 1.0);
   cell_samples sa, sb;
@@ -216,7 +225,21 @@ static double oracle(const zr_radiosity *rad, const zr__rad_node *a, int sx,
     ca = max_of(ca, loose_cos(na, &la, a->centre, sb.p[i]));
     cb = max_of(cb, loose_cos(nb, &lb, b->centre, sa.p[i]));
   }
-  return b->area * ca * cb / (M_PI * r2 + b->area);
+  o->ca = ca;
+  o->cb = cb;
+}
+
+/* The factor from a to b (the parts' order), and from b back to a. */
+static double oracle_ab(const oracle_parts *o, const zr__rad_node *b) {
+  if (!(o->r2 > 0.0))
+    return b->area > 0.0 ? 1.0 : 0.0;
+  return b->area * o->ca * o->cb / (M_PI * o->r2 + b->area);
+}
+
+static double oracle_ba(const oracle_parts *o, const zr__rad_node *a) {
+  if (!(o->r2 > 0.0))
+    return a->area > 0.0 ? 1.0 : 0.0;
+  return a->area * o->cb * o->ca / (M_PI * o->r2 + a->area);
 }
 
 static bool can_split(const zr_radiosity *rad, const zr__rad_node *node) {
@@ -297,10 +320,10 @@ static double radiosity_spread(const zr_radiosity *rad,
 }
 
 /* Hanrahan's choice: split the node that looks larger from the other. */
-static int larger_end(const zr_radiosity *rad, const link_view *l, bool sp,
-                      bool sq) {
-  double f_pq = oracle(rad, l->p, l->rside, l->q, l->sside);
-  double f_qp = oracle(rad, l->q, l->sside, l->p, l->rside);
+static int larger_end(const link_view *l, bool sp, bool sq,
+                      const oracle_parts *o) {
+  double f_pq = oracle_ab(o, l->q);
+  double f_qp = oracle_ba(o, l->p);
   /* Equal up to rounding (equal cells, common in symmetric scenes) is a
      tie, settled for the receiver: rounding must not pick, or a scaled
      scene would refine differently. */
@@ -324,9 +347,11 @@ static int error_choice(const zr_radiosity *rad, const link_view *l, bool sp,
     return 0; /* no factor can make this link matter */
   if (sp && bq * p->area * factor_spread(rad, l) > thr)
     return 1;
-  double f_pq = oracle(rad, p, l->rside, q, l->sside);
+  oracle_parts o;
+  oracle_parts_of(rad, p, l->rside, q, l->sside, &o);
+  double f_pq = oracle_ab(&o, q);
   if (l->partial && bq * p->area * f_pq > thr)
-    return larger_end(rad, l, sp, sq);
+    return larger_end(l, sp, sq, &o);
   /* An uneven source errs by the same sign at every small receiver near
      it, so this test is per unit area of the receiver: the irradiance
      error against the threshold spread over the scene's area. */
@@ -381,12 +406,14 @@ static int refine_choice(const zr_radiosity *rad, const link_view *l) {
      times tighter for a partially visible link (a shadow boundary runs
      through it), which is what keeps light from leaking under objects
      standing on a floor. */
-  double f_pq = oracle(rad, l->p, l->rside, l->q, l->sside);
+  oracle_parts o;
+  oracle_parts_of(rad, l->p, l->rside, l->q, l->sside, &o);
+  double f_pq = oracle_ab(&o, l->q);
   if (l->partial)
     thr *= 0.1;
   if (!(zr__rad_max3(l->q->b[l->sside]) * f_pq * l->p->area > thr))
     return 0;
-  return larger_end(rad, l, sp, sq);
+  return larger_end(l, sp, sq, &o);
 }
 
 /* ---- refinement as a plan, then its replay ----
