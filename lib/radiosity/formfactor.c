@@ -51,6 +51,12 @@
 #include "radiosity/formfactor.h"
 
 #include <math.h>
+#include <stdint.h>
+
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#include <immintrin.h>
+#define LANES_AVX 1
+#endif
 
 /* ---- point to polygon ---- */
 
@@ -162,12 +168,14 @@ static void polygon_plane_init(polygon_plane *pl, const zr_vec3 *v,
   pl->nv = nv;
   pl->normal = zr_v3(0, 0, 0);
   pl->size = 0.0;
+  pl->inv_size = 0.0;
   if (nv < 3)
     return;
   for (size_t i = 1; i < nv; i++)
     pl->size = fmax(pl->size, zr_v3_len(zr_v3_sub(v[i], v[0])));
   if (!(pl->size > 0.0))
     return;
+  pl->inv_size = 1.0 / pl->size;
   zr_vec3 m = zr_v3(0, 0, 0);
   for (size_t i = 0; i < nv; i++) {
     zr_vec3 a = zr_v3_scale(zr_v3_sub(v[i], v[0]), 1.0 / pl->size);
@@ -188,7 +196,7 @@ static void polygon_plane_init(polygon_plane *pl, const zr_vec3 *v,
 static bool in_plane(const polygon_plane *pl, zr_vec3 p) {
   if (zr_v3_dot(pl->normal, pl->normal) == 0.0)
     return true;
-  zr_vec3 d = zr_v3_scale(zr_v3_sub(p, pl->verts[0]), 1.0 / pl->size);
+  zr_vec3 d = zr_v3_scale(zr_v3_sub(p, pl->verts[0]), pl->inv_size);
   return fabs(zr_v3_dot(pl->normal, d)) <= 1e-12;
 }
 
@@ -228,6 +236,11 @@ double zr__ff_point_polygon(zr_vec3 p, zr_vec3 n, const zr_vec3 *verts,
   return point_polygon(p, n, &pl);
 }
 
+double zr__ff_point_polygon_sided(zr_vec3 p, zr_vec3 n,
+                                  const zr__ff_polygon *pl, double sign) {
+  return point_polygon_signed(p, n, pl, sign);
+}
+
 void zr__ff_polygon_init(zr__ff_polygon *pl, const zr_vec3 *verts,
                          size_t nv) {
   polygon_plane_init(pl, verts, nv);
@@ -236,6 +249,252 @@ void zr__ff_polygon_init(zr__ff_polygon *pl, const zr_vec3 *verts,
 double zr__ff_point_polygon_pre(zr_vec3 p, zr_vec3 n,
                                 const zr__ff_polygon *pl) {
   return point_polygon(p, n, pl);
+}
+
+/* ---- many points and polygons at once ----
+ *
+ * One contour sum is a chain of dependent square roots and divisions
+ * (a unit direction, then the edge's sine, its angle's two quotients
+ * and the term's), whose latency the processor cannot hide behind the
+ * sum's few other operations: a quadrilateral took some 300 cycles, most
+ * of them waiting.  zr__ff_point_polygons takes four (point, polygon)
+ * pairs in the four lanes of AVX registers: each lane clips its own
+ * polygon (scalar, as point_polygon_signed does) into slots, then slot
+ * k of every lane is made unit at once and edge k of every lane summed
+ * at once.  Each lane does the scalar code's operations in its order on
+ * the same values (no FMA, IEEE square roots and quotients), and adds
+ * its edges in edge order to its own sum, so every lane gives the
+ * scalar bits.  A lane past its last edge, or whose edge is skipped
+ * (zero cross product), adds +0, which changes no sum (a sum that
+ * starts at +0 is never -0).  Polygons of more than LANE_VERTS vertices,
+ * and every pair without AVX, go through the scalar code. */
+
+enum { LANE_VERTS = 8, LANE_SLOTS = 2 * LANE_VERTS + 2 };
+
+/* The finished factor from a lane's contour sum (contour_close's). */
+static double lane_factor(double sum, double sign) {
+  double s = sign == 0.0 ? fabs(sum) : fmax(0.0, sign * sum);
+  return fmin(1.0, s / (2.0 * M_PI));
+}
+
+#ifdef LANES_AVX
+#define AVX_FN __attribute__((target("avx")))
+
+/* The clipped polygons of four lanes, vertex k of lane l less its point
+   at [k][l]; slot count[l] repeats slot 0 (the closing edge's end). */
+typedef struct lane_slots {
+  _Alignas(32) double x[LANE_SLOTS][4];
+  _Alignas(32) double y[LANE_SLOTS][4];
+  _Alignas(32) double z[LANE_SLOTS][4];
+  int count[4];
+} lane_slots;
+
+/* point_polygon_signed's clipping for lane l into its slots. */
+static void lane_clip(lane_slots *ls, int l, zr_vec3 p, zr_vec3 n,
+                      const polygon_plane *pl) {
+  const zr_vec3 *verts = pl->verts;
+  size_t nv = pl->nv;
+  int m = 0;
+  zr_vec3 a = verts[nv - 1];
+  double ha = zr_v3_dot(n, zr_v3_sub(a, p));
+  for (size_t i = 0; i < nv; i++) {
+    zr_vec3 b = verts[i];
+    double hb = zr_v3_dot(n, zr_v3_sub(b, p));
+    bool a_in = ha >= 0.0, b_in = hb >= 0.0;
+    if (a_in != b_in) {
+      zr_vec3 d = zr_v3_sub(zr_v3_madd(a, zr_v3_sub(b, a), ha / (ha - hb)), p);
+      ls->x[m][l] = d.x;
+      ls->y[m][l] = d.y;
+      ls->z[m][l] = d.z;
+      m++;
+    }
+    if (b_in) {
+      zr_vec3 d = zr_v3_sub(b, p);
+      ls->x[m][l] = d.x;
+      ls->y[m][l] = d.y;
+      ls->z[m][l] = d.z;
+      m++;
+    }
+    a = b;
+    ha = hb;
+  }
+  /* Fewer than two vertices close no edge (contour_close). */
+  if (m < 2)
+    m = 0;
+  ls->x[m][l] = ls->x[0][l];
+  ls->y[m][l] = ls->y[0][l];
+  ls->z[m][l] = ls->z[0][l];
+  ls->count[l] = m;
+}
+
+AVX_FN static inline __m256d lanes_select(__m256d mask, __m256d a,
+                                         __m256d b) {
+  return _mm256_or_pd(_mm256_and_pd(mask, a), _mm256_andnot_pd(mask, b));
+}
+
+/* edge_angle(y, x) a lane, by its operations in its order; *fine gets
+   the lanes whose reduced ratio is a number (t <= 1), the others being
+   edge_angle's case for libm. */
+AVX_FN static inline __m256d lanes_edge_angle(__m256d y, __m256d x,
+                                              int *fine) {
+  __m256d ax = _mm256_andnot_pd(_mm256_set1_pd(-0.0), x);
+  __m256d swap = _mm256_cmp_pd(y, ax, _CMP_GT_OQ);
+  __m256d t = _mm256_div_pd(lanes_select(swap, ax, y),
+                            lanes_select(swap, y, ax));
+  __m256d ok = _mm256_cmp_pd(t, _mm256_set1_pd(1.0), _CMP_LE_OQ);
+  *fine = _mm256_movemask_pd(ok);
+  /* 0 in the other lanes, so the table index stays in 0 .. 8. */
+  t = _mm256_and_pd(ok, t);
+  __m128i k = _mm256_cvttpd_epi32(_mm256_add_pd(
+      _mm256_mul_pd(t, _mm256_set1_pd(8.0)), _mm256_set1_pd(0.5)));
+  __m256d c = _mm256_mul_pd(_mm256_cvtepi32_pd(k), _mm256_set1_pd(0.125));
+  __m256d u = _mm256_div_pd(
+      _mm256_sub_pd(t, c),
+      _mm256_add_pd(_mm256_set1_pd(1.0), _mm256_mul_pd(t, c)));
+  __m256d u2 = _mm256_mul_pd(u, u);
+  __m256d q = _mm256_mul_pd(u2, _mm256_set1_pd(1.0 / 13.0));
+  q = _mm256_mul_pd(u2, _mm256_add_pd(_mm256_set1_pd(-1.0 / 11.0), q));
+  q = _mm256_mul_pd(u2, _mm256_add_pd(_mm256_set1_pd(1.0 / 9.0), q));
+  q = _mm256_mul_pd(u2, _mm256_add_pd(_mm256_set1_pd(-1.0 / 7.0), q));
+  q = _mm256_mul_pd(u2, _mm256_add_pd(_mm256_set1_pd(1.0 / 5.0), q));
+  q = _mm256_add_pd(_mm256_set1_pd(-1.0 / 3.0), q);
+  __m256d series = _mm256_add_pd(u, _mm256_mul_pd(_mm256_mul_pd(u, u2), q));
+  int ks[4];
+  _mm_storeu_si128((__m128i *)ks, k);
+  __m256d a = _mm256_add_pd(
+      _mm256_set_pd(atan_eighths[ks[3]], atan_eighths[ks[2]],
+                    atan_eighths[ks[1]], atan_eighths[ks[0]]),
+      series);
+  a = lanes_select(swap, _mm256_sub_pd(_mm256_set1_pd(M_PI_2), a), a);
+  return lanes_select(_mm256_cmp_pd(x, _mm256_setzero_pd(), _CMP_LT_OQ),
+                      _mm256_sub_pd(_mm256_set1_pd(M_PI), a), a);
+}
+
+/* The contour sums of four lanes (zeros in slots, count 0, for unused
+   lanes), normals in nx, ny, nz. */
+AVX_FN static void lanes_sums(lane_slots *ls, const double nx[4],
+                              const double ny[4], const double nz[4],
+                              double sums[4]) {
+  int top = 0;
+  for (int l = 0; l < 4; l++)
+    top = ls->count[l] > top ? ls->count[l] : top;
+  /* Slots past a lane's own read as zero vectors. */
+  for (int l = 0; l < 4; l++)
+    for (int k = ls->count[l] + 1; k <= top; k++)
+      ls->x[k][l] = ls->y[k][l] = ls->z[k][l] = 0.0;
+  /* Unit directions, as zr_v3_norm makes them. */
+  for (int k = 0; k <= top; k++) {
+    __m256d dx = _mm256_load_pd(ls->x[k]), dy = _mm256_load_pd(ls->y[k]);
+    __m256d dz = _mm256_load_pd(ls->z[k]);
+    __m256d len = _mm256_sqrt_pd(_mm256_add_pd(
+        _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)),
+        _mm256_mul_pd(dz, dz)));
+    __m256d pos = _mm256_cmp_pd(len, _mm256_setzero_pd(), _CMP_GT_OQ);
+    __m256d inv = _mm256_div_pd(_mm256_set1_pd(1.0), len);
+    _mm256_store_pd(ls->x[k], lanes_select(pos, _mm256_mul_pd(dx, inv), dx));
+    _mm256_store_pd(ls->y[k], lanes_select(pos, _mm256_mul_pd(dy, inv), dy));
+    _mm256_store_pd(ls->z[k], lanes_select(pos, _mm256_mul_pd(dz, inv), dz));
+  }
+  __m256d vnx = _mm256_loadu_pd(nx), vny = _mm256_loadu_pd(ny);
+  __m256d vnz = _mm256_loadu_pd(nz);
+  __m256d count = _mm256_set_pd(ls->count[3], ls->count[2], ls->count[1],
+                                ls->count[0]);
+  __m256d sum = _mm256_setzero_pd();
+  /* Edge k, slot k to k + 1, in every lane at once: contour_edge's. */
+  for (int k = 0; k < top; k++) {
+    __m256d ax = _mm256_load_pd(ls->x[k]), ay = _mm256_load_pd(ls->y[k]);
+    __m256d az = _mm256_load_pd(ls->z[k]);
+    __m256d bx = _mm256_load_pd(ls->x[k + 1]);
+    __m256d by = _mm256_load_pd(ls->y[k + 1]);
+    __m256d bz = _mm256_load_pd(ls->z[k + 1]);
+    __m256d cx = _mm256_sub_pd(_mm256_mul_pd(ay, bz), _mm256_mul_pd(az, by));
+    __m256d cy = _mm256_sub_pd(_mm256_mul_pd(az, bx), _mm256_mul_pd(ax, bz));
+    __m256d cz = _mm256_sub_pd(_mm256_mul_pd(ax, by), _mm256_mul_pd(ay, bx));
+    __m256d sn = _mm256_sqrt_pd(_mm256_add_pd(
+        _mm256_add_pd(_mm256_mul_pd(cx, cx), _mm256_mul_pd(cy, cy)),
+        _mm256_mul_pd(cz, cz)));
+    __m256d live = _mm256_and_pd(
+        _mm256_cmp_pd(sn, _mm256_setzero_pd(), _CMP_GT_OQ),
+        _mm256_cmp_pd(_mm256_set1_pd(k), count, _CMP_LT_OQ));
+    int live_bits = _mm256_movemask_pd(live);
+    if (live_bits == 0)
+      continue;
+    __m256d d = _mm256_add_pd(
+        _mm256_add_pd(_mm256_mul_pd(ax, bx), _mm256_mul_pd(ay, by)),
+        _mm256_mul_pd(az, bz));
+    __m256d nd = _mm256_add_pd(
+        _mm256_add_pd(_mm256_mul_pd(vnx, cx), _mm256_mul_pd(vny, cy)),
+        _mm256_mul_pd(vnz, cz));
+    int fine;
+    __m256d theta = lanes_edge_angle(sn, d, &fine);
+    __m256d term = _mm256_and_pd(
+        live, _mm256_div_pd(_mm256_mul_pd(theta, nd), sn));
+    if ((fine & live_bits) != live_bits) {
+      /* A lane outside the table's range: edge_angle's own answer. */
+      double tv[4], sv[4], dv[4], nv[4];
+      _mm256_storeu_pd(tv, term);
+      _mm256_storeu_pd(sv, sn);
+      _mm256_storeu_pd(dv, d);
+      _mm256_storeu_pd(nv, nd);
+      for (int l = 0; l < 4; l++)
+        if ((live_bits >> l & 1) && !(fine >> l & 1))
+          tv[l] = edge_angle(sv[l], dv[l]) * nv[l] / sv[l];
+      term = _mm256_loadu_pd(tv);
+    }
+    sum = _mm256_add_pd(sum, term);
+  }
+  _mm256_storeu_pd(sums, sum);
+}
+
+/* Up to four pairs, lanes 0 .. count - 1. */
+AVX_FN static void lanes_four(size_t count, const zr_vec3 *p,
+                              const zr_vec3 *n,
+                              const zr__ff_polygon *const *pl, double sign,
+                              double *out) {
+  lane_slots ls;
+  double nx[4] = {0}, ny[4] = {0}, nz[4] = {0}, sums[4];
+  int summed = 0; /* lanes whose factor is their contour sum's */
+  for (int l = 0; l < 4; l++) {
+    ls.count[l] = 0;
+    ls.x[0][l] = ls.y[0][l] = ls.z[0][l] = 0.0;
+    if ((size_t)l >= count)
+      continue;
+    if (pl[l]->nv > LANE_VERTS) {
+      out[l] = point_polygon_signed(p[l], n[l], pl[l], sign);
+      continue;
+    }
+    if (in_plane(pl[l], p[l])) {
+      out[l] = 0.0;
+      continue;
+    }
+    nx[l] = n[l].x;
+    ny[l] = n[l].y;
+    nz[l] = n[l].z;
+    lane_clip(&ls, l, p[l], n[l], pl[l]);
+    summed |= 1 << l;
+  }
+  if (summed == 0)
+    return;
+  lanes_sums(&ls, nx, ny, nz, sums);
+  for (int l = 0; l < 4; l++)
+    if (summed >> l & 1)
+      out[l] = lane_factor(sums[l], sign);
+}
+#endif
+
+void zr__ff_point_polygons(size_t count, const zr_vec3 *p, const zr_vec3 *n,
+                           const zr__ff_polygon *const *pl, double sign,
+                           double *out) {
+#ifdef LANES_AVX
+  if (__builtin_cpu_supports("avx")) {
+    for (size_t i = 0; i < count; i += 4)
+      lanes_four(count - i < 4 ? count - i : 4, p + i, n + i, pl + i, sign,
+                 out + i);
+    return;
+  }
+#endif
+  for (size_t i = 0; i < count; i++)
+    out[i] = point_polygon_signed(p[i], n[i], pl[i], sign);
 }
 
 /* ---- quadrature over patches ---- */
@@ -269,44 +528,61 @@ double zr__ff_point_patch_quadrature(zr_vec3 p, zr_vec3 n,
   return k.sum;
 }
 
-/* The area-weighted point-to-polygon factor over a receiver. */
+/* The area-weighted point-to-polygon factor over a receiver.  Points
+   wait in fours (zr__ff_point_polygons) and their factors are added in
+   the order the points came, so the sum is the one-at-a-time sum. */
 typedef struct polygon_flux {
   polygon_plane plane;
+  double side, sign; /* the receiver's normals times side; the sum's sign */
   double flux, area;
+  int waiting;
+  zr_vec3 p[ZR__FF_LANES], n[ZR__FF_LANES];
+  double weight[ZR__FF_LANES];
 } polygon_flux;
+
+static void flux_flush(polygon_flux *f) {
+  const zr__ff_polygon *pl[ZR__FF_LANES] = {&f->plane, &f->plane, &f->plane,
+                                           &f->plane};
+  double ff[ZR__FF_LANES];
+  zr__ff_point_polygons((size_t)f->waiting, f->p, f->n, pl, f->sign, ff);
+  for (int i = 0; i < f->waiting; i++)
+    f->flux += f->weight[i] * ff[i];
+  f->waiting = 0;
+}
 
 static void add_polygon_flux(const zr__surface_point *pt, double weight,
                              void *user) {
   polygon_flux *f = user;
   f->area += weight;
-  f->flux += weight * point_polygon(pt->p, pt->n, &f->plane);
+  f->p[f->waiting] = pt->p;
+  f->n[f->waiting] = zr_v3_scale(pt->n, f->side);
+  f->weight[f->waiting] = weight;
+  if (++f->waiting == ZR__FF_LANES)
+    flux_flush(f);
+}
+
+/* The mean factor from the receiver cell to the polygon (its plane
+   made), its normals turned to side and the sum taken with sign. */
+static double polygon_flux_mean(polygon_flux *f, const zr__surface *recv,
+                                double u0, double u1, double v0, double v1,
+                                int cells, const zr__gauss_rule *rule) {
+  f->flux = f->area = 0.0;
+  f->waiting = 0;
+  zr__surface_quadrature(recv, u0, u1, v0, v1, cells, rule,
+                         add_polygon_flux, f);
+  flux_flush(f);
+  return f->area > 0.0 ? f->flux / f->area : 0.0;
 }
 
 double zr__ff_patch_polygon(const zr__surface *recv, double u0, double u1,
                             double v0, double v1, const zr_vec3 *verts,
                             size_t nv, int cells,
                             const zr__gauss_rule *rule) {
-  polygon_flux f = {{0}, 0.0, 0.0};
-  polygon_plane_init(&f.plane, verts, nv);
-  zr__surface_quadrature(recv, u0, u1, v0, v1, cells, rule,
-                         add_polygon_flux, &f);
-  return f.area > 0.0 ? f.flux / f.area : 0.0;
-}
-
-/* Like polygon_flux, with the receiver's normals turned to one side
-   and, when sign is not 0, only one side of the source counted. */
-typedef struct sided_flux {
   polygon_flux f;
-  double side, sign;
-} sided_flux;
-
-static void add_sided_flux(const zr__surface_point *pt, double weight,
-                           void *user) {
-  sided_flux *sf = user;
-  zr_vec3 n = zr_v3_scale(pt->n, sf->side);
-  sf->f.area += weight;
-  sf->f.flux += weight * point_polygon_signed(pt->p, n, &sf->f.plane,
-                                              sf->sign);
+  polygon_plane_init(&f.plane, verts, nv);
+  f.side = 1.0;
+  f.sign = 0.0;
+  return polygon_flux_mean(&f, recv, u0, u1, v0, v1, cells, rule);
 }
 
 /* The factor of zr__ff_patch_patch, the source counted from both sides
@@ -321,11 +597,12 @@ static double patch_patch(const zr__surface *recv, const double rcell[4],
   size_t nv = zr__surface_patch_polygon(src, scell[0], scell[1], scell[2],
                                         scell[3], segs, poly,
                                         4 * ZR__FF_MAX_SEGS);
-  sided_flux sf = {{{0}, 0.0, 0.0}, side < 0.0 ? -1.0 : 1.0, sign};
-  polygon_plane_init(&sf.f.plane, poly, nv);
-  zr__surface_quadrature(recv, rcell[0], rcell[1], rcell[2], rcell[3], cells,
-                         rule, add_sided_flux, &sf);
-  return sf.f.area > 0.0 ? sf.f.flux / sf.f.area : 0.0;
+  polygon_flux f;
+  polygon_plane_init(&f.plane, poly, nv);
+  f.side = side < 0.0 ? -1.0 : 1.0;
+  f.sign = sign;
+  return polygon_flux_mean(&f, recv, rcell[0], rcell[1], rcell[2], rcell[3],
+                           cells, rule);
 }
 
 double zr__ff_patch_patch(const zr__surface *recv, const double rcell[4],

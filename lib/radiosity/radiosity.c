@@ -588,17 +588,11 @@ static double point_visibility(const zr_radiosity *rad, int32_t qi,
   return cast > 0 ? (double)open / cast : 0.0;
 }
 
-/* Adds source node q's (side sside) light at point to h: the exact
-   factor from the point times the node's mean radiosity, or, when the
-   point is closer to q than twice q's size and q has children, the sum
-   over the children, whose values say how the light varies inside q (a
-   wall's radiosity falls towards the corner where it meets the wall
-   holding the point).  vis: the link's visible fraction; below 1, or
-   with per_point set, the point's own visibility replaces it. */
 /* Source node qi's boundary polygon and its plane: from the cache
    (made on first use; a thread that loses the race to publish frees its
-   copy, which is the same) or, when it cannot be kept, a planar cell's
-   corners or a curved cell's chords into buf and the plane into *tmp. */
+   copy, which is the same, and takes the winner's) or, when it cannot
+   be kept, a planar cell's corners or a curved cell's chords into buf
+   and the plane into *tmp. */
 static const zr__ff_polygon *source_polygon(const zr_radiosity *rad,
                                             int32_t qi, zr_vec3 *buf,
                                             zr__ff_polygon *tmp) {
@@ -625,42 +619,144 @@ static const zr__ff_polygon *source_polygon(const zr_radiosity *rad,
   made->plane = *tmp;
   made->plane.verts = made->p;
   zr__rad_poly *expected = NULL;
-  if (!atomic_compare_exchange_strong_explicit(
+  if (atomic_compare_exchange_strong_explicit(
           &rad->poly_cache[qi], &expected, made, memory_order_acq_rel,
           memory_order_acquire))
-    free(made);
-  return tmp;
+    return &made->plane;
+  free(made);
+  return &expected->plane; /* another thread's copy, the same values */
 }
 
-static void gather_source(const zr_radiosity *rad, int32_t qi, int sside,
-                          zr_vec3 point, zr_vec3 n, double vis,
-                          bool per_point, double h[3]) {
+/*
+ * The gather's terms wait in a queue, in the order they add to h, so
+ * the exact factors of up to four sources are found at once
+ * (zr__ff_point_polygons: lanes hide the latency of each contour sum)
+ * and h is still summed term by term in that order: the same bits as
+ * one source at a time.
+ */
+enum { GATHER_QUEUE = 32 };
+
+typedef struct gather_term {
+  const double *b;            /* the source's radiosity, the side's */
+  const zr__ff_polygon *poly; /* NULL: f is the link's mean factor */
+  double f, vis;
+  int32_t qi;
+  int sside;
+  bool per_point;
+} gather_term;
+
+typedef struct gather {
+  const zr_radiosity *rad;
+  zr_vec3 point, n;
+  double *h;
+  int n_terms;
+  gather_term terms[GATHER_QUEUE];
+} gather;
+
+/* The queue's factors found and its terms added to h in order. */
+static void gather_flush(gather *g) {
+  zr_vec3 ps[ZR__FF_LANES], ns[ZR__FF_LANES];
+  const zr__ff_polygon *polys[ZR__FF_LANES];
+  double ff[ZR__FF_LANES];
+  gather_term *lane_of[ZR__FF_LANES];
+  int lanes = 0;
+  for (int i = 0; i < g->n_terms; i++) {
+    gather_term *t = &g->terms[i];
+    if (t->poly == NULL)
+      continue;
+    ps[lanes] = g->point;
+    ns[lanes] = g->n;
+    polys[lanes] = t->poly;
+    lane_of[lanes++] = t;
+    if (lanes == ZR__FF_LANES) {
+      zr__ff_point_polygons((size_t)lanes, ps, ns, polys, 0.0, ff);
+      for (int l = 0; l < lanes; l++)
+        lane_of[l]->f = ff[l];
+      lanes = 0;
+    }
+  }
+  if (lanes > 0) {
+    zr__ff_point_polygons((size_t)lanes, ps, ns, polys, 0.0, ff);
+    for (int l = 0; l < lanes; l++)
+      lane_of[l]->f = ff[l];
+  }
+  for (int i = 0; i < g->n_terms; i++) {
+    const gather_term *t = &g->terms[i];
+    double f = t->f;
+    if (t->poly != NULL) {
+      /* Only the part of the source that CSG keeps shines (trim.c). */
+      f = g->rad->nodes[t->qi].kept * f;
+      if (!(f > 0.0))
+        continue;
+      f *= t->per_point || t->vis < 1.0
+               ? point_visibility(g->rad, t->qi, t->sside, g->point, g->n)
+               : t->vis;
+    }
+    for (int c = 0; c < 3; c++)
+      g->h[c] += f * t->b[c];
+  }
+  g->n_terms = 0;
+}
+
+static gather_term *gather_push(gather *g) {
+  if (g->n_terms == GATHER_QUEUE)
+    gather_flush(g);
+  return &g->terms[g->n_terms++];
+}
+
+/* Adds source node q's (side sside) light at the point: the exact
+   factor from the point times the node's mean radiosity, or, when the
+   point is closer to q than twice q's size and q has children, the sum
+   over the children, whose values say how the light varies inside q (a
+   wall's radiosity falls towards the corner where it meets the wall
+   holding the point).  vis: the link's visible fraction; below 1, or
+   with per_point set, the point's own visibility replaces it. */
+static void gather_source(gather *g, int32_t qi, int sside, double vis,
+                          bool per_point) {
+  const zr_radiosity *rad = g->rad;
   const zr__rad_node *q = &rad->nodes[qi];
   if (q->child >= 0) {
-    zr_vec3 d = zr_v3_sub(q->centre, point);
+    zr_vec3 d = zr_v3_sub(q->centre, g->point);
     if (zr_v3_dot(d, d) < 4.0 * q->area) {
       for (int k = 0; k < 4; k++)
-        gather_source(rad, q->child + k, sside, point, n, vis, per_point,
-                      h);
+        gather_source(g, q->child + k, sside, vis, per_point);
       return;
     }
   }
   zr_vec3 buf[4 * ZR__FF_MAX_SEGS];
   zr__ff_polygon tmp;
   const zr__ff_polygon *poly = source_polygon(rad, qi, buf, &tmp);
-  /* Only the part of the source that CSG keeps shines (trim.c). */
-  double f = q->kept * zr__ff_point_polygon_pre(point, n, poly);
-  if (!(f > 0.0))
-    return;
-  f *= per_point || vis < 1.0 ? point_visibility(rad, qi, sside, point, n)
-                              : vis;
-  for (int c = 0; c < 3; c++)
-    h[c] += f * q->b[sside][c];
+  gather_term *t = gather_push(g);
+  t->b = q->b[sside];
+  t->poly = poly;
+  t->vis = vis;
+  t->qi = qi;
+  t->sside = sside;
+  t->per_point = per_point;
+  if (poly == &tmp) {
+    /* Not kept past this call (no memory for the cache): now. */
+    t->f = zr__ff_point_polygon_pre(g->point, g->n, poly);
+    t->poly = NULL;
+    t->f = q->kept * t->f;
+    if (!(t->f > 0.0)) {
+      g->n_terms--;
+      return;
+    }
+    t->f *= per_point || vis < 1.0
+                ? point_visibility(rad, qi, sside, g->point, g->n)
+                : vis;
+  }
 }
 
 static void final_gather(const zr_radiosity *rad, int32_t leaf, int side,
                          zr_vec3 point, zr_vec3 n, double h[3]) {
   h[0] = h[1] = h[2] = 0.0;
+  gather g;
+  g.rad = rad;
+  g.point = point;
+  g.n = n;
+  g.h = h;
+  g.n_terms = 0;
   for (int32_t a = leaf; a >= 0; a = rad->nodes[a].parent)
     for (uint32_t k = rad->recv_start[a]; k < rad->recv_start[a + 1]; k++) {
       const zr__rad_link *l = &rad->links[rad->recv_links[k]];
@@ -671,16 +767,19 @@ static void final_gather(const zr_radiosity *rad, int32_t leaf, int side,
          links are the faint ones, and its exact factor is a sum over
          every face (cluster.c). */
       if (l->src == l->recv || zr__rad_cluster(rad, q, NULL, NULL)) {
-        for (int c = 0; c < 3; c++)
-          h[c] += l->ff * q->b[l->sside][c];
+        gather_term *t = gather_push(&g);
+        t->b = q->b[l->sside];
+        t->poly = NULL;
+        t->f = l->ff;
         continue;
       }
       /* Light straight from an emitter is where shadows are sharpest:
          every point tests its own visibility. */
       bool emitter = zr__rad_max3(rad->surfs[q->surf].emission[l->sside]) >
                      0.0;
-      gather_source(rad, l->src, l->sside, point, n, l->vis, emitter, h);
+      gather_source(&g, l->src, l->sside, l->vis, emitter);
     }
+  gather_flush(&g);
   /* Cluster links keep their mean irradiance over the element. */
   if (rad->clustered)
     zr__rad_vol_incident(rad, leaf, side, h);

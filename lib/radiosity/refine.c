@@ -157,6 +157,21 @@ static loosen loosen_by(double spread) {
   return l;
 }
 
+/* fmax and fmin, bit for bit (the sign libm gives a max of two zeros
+   included), without the call where the answer is plain: the oracle
+   takes 18 of each a call, and -O2 calls libm for them. */
+static inline double max_of(double a, double b) {
+  if (a > b || (a == b && a != 0.0))
+    return a;
+  return b > a ? b : fmax(a, b);
+}
+
+static inline double min_of(double a, double b) {
+  if (a < b || (a == b && a != 0.0))
+    return a;
+  return b < a ? b : fmin(a, b);
+}
+
 /* The cosine between the sided normal n (loosened by the cone lo) and
    the direction from c to t, clamped to [0, 1]: cos(max(0, acos(x) -
    spread)) for the plain cosine x, without the acos and cos (x cos
@@ -166,12 +181,16 @@ static double loose_cos(zr_vec3 n, const loosen *lo, zr_vec3 c, zr_vec3 t) {
   double len = zr_v3_len(d);
   if (!(len > 0.0))
     return 0.0;
-  double x = fmax(-1.0, fmin(1.0, zr_v3_dot(n, d) / len));
+  double x = max_of(-1.0, min_of(1.0, zr_v3_dot(n, d) / len));
   if (x >= lo->c)
     return 1.0;
   if (x <= lo->zero)
     return 0.0;
-  return fmin(1.0, fmax(0.0, x * lo->c + sqrt(1.0 - x * x) * lo->s));
+  /* A flat cell (no spread): x * 1 + sqrt(1 - x^2) * 0 is x, in (0, 1)
+     here, which both clamps keep. */
+  if (lo->s == 0.0 && lo->c == 1.0)
+    return x;
+  return min_of(1.0, max_of(0.0, x * lo->c + sqrt(1.0 - x * x) * lo->s));
 }
 
 /*
@@ -179,14 +198,23 @@ static double loose_cos(zr_vec3 n, const loosen *lo, zr_vec3 c, zr_vec3 t) {
  * A cos cos / (pi r^2 + A) between the centres, where each cosine is the
  * largest towards the other cell's 3 x 3 sample points, so a large cell
  * whose centre lies behind the other (a floor under a box's face) is
- * not judged invisible.
+ * not judged invisible.  Its parts (the two cosines and r^2) serve both
+ * directions: from b to a the cosines swap ends and r^2 is the same
+ * bits (a difference negated exactly), so larger_end finds the factor
+ * back from the parts its caller found, not from 18 more samples.
  */
-static double oracle(const zr_radiosity *rad, const zr__rad_node *a, int sx,
-                     const zr__rad_node *b, int sy) {
+typedef struct oracle_parts {
+  double r2, ca, cb; /* ca at a towards b's samples, cb at b */
+} oracle_parts;
+
+static void oracle_parts_of(const zr_radiosity *rad, const zr__rad_node *a,
+                            int sx, const zr__rad_node *b, int sy,
+                            oracle_parts *o) {
   zr_vec3 d = zr_v3_sub(b->centre, a->centre);
-  double r2 = zr_v3_dot(d, d);
-  if (!(r2 > 0.0))
-    return b->area > 0.0 ? 1.0 : 0.0;
+  o->r2 = zr_v3_dot(d, d);
+  o->ca = o->cb = 0.0;
+  if (!(o->r2 > 0.0))
+    return;
   zr_vec3 na = zr_v3_scale(a->normal, sx ? -1.0 : 1.0);
   zr_vec3 nb = zr_v3_scale(b->normal, sy ? -1.0 : 1.0);
   cell_samples sa, sb;
@@ -195,10 +223,24 @@ static double oracle(const zr_radiosity *rad, const zr__rad_node *a, int sx,
   double ca = 0.0, cb = 0.0;
   loosen la = loosen_by(a->spread), lb = loosen_by(b->spread);
   for (int i = 0; i < 9; i++) {
-    ca = fmax(ca, loose_cos(na, &la, a->centre, sb.p[i]));
-    cb = fmax(cb, loose_cos(nb, &lb, b->centre, sa.p[i]));
+    ca = max_of(ca, loose_cos(na, &la, a->centre, sb.p[i]));
+    cb = max_of(cb, loose_cos(nb, &lb, b->centre, sa.p[i]));
   }
-  return b->area * ca * cb / (M_PI * r2 + b->area);
+  o->ca = ca;
+  o->cb = cb;
+}
+
+/* The factor from a to b (the parts' order), and from b back to a. */
+static double oracle_ab(const oracle_parts *o, const zr__rad_node *b) {
+  if (!(o->r2 > 0.0))
+    return b->area > 0.0 ? 1.0 : 0.0;
+  return b->area * o->ca * o->cb / (M_PI * o->r2 + b->area);
+}
+
+static double oracle_ba(const oracle_parts *o, const zr__rad_node *a) {
+  if (!(o->r2 > 0.0))
+    return a->area > 0.0 ? 1.0 : 0.0;
+  return a->area * o->cb * o->ca / (M_PI * o->r2 + a->area);
 }
 
 static bool can_split(const zr_radiosity *rad, const zr__rad_node *node) {
@@ -279,10 +321,10 @@ static double radiosity_spread(const zr_radiosity *rad,
 }
 
 /* Hanrahan's choice: split the node that looks larger from the other. */
-static int larger_end(const zr_radiosity *rad, const link_view *l, bool sp,
-                      bool sq) {
-  double f_pq = oracle(rad, l->p, l->rside, l->q, l->sside);
-  double f_qp = oracle(rad, l->q, l->sside, l->p, l->rside);
+static int larger_end(const link_view *l, bool sp, bool sq,
+                      const oracle_parts *o) {
+  double f_pq = oracle_ab(o, l->q);
+  double f_qp = oracle_ba(o, l->p);
   /* Equal up to rounding (equal cells, common in symmetric scenes) is a
      tie, settled for the receiver: rounding must not pick, or a scaled
      scene would refine differently. */
@@ -306,9 +348,11 @@ static int error_choice(const zr_radiosity *rad, const link_view *l, bool sp,
     return 0; /* no factor can make this link matter */
   if (sp && bq * p->area * factor_spread(rad, l) > thr)
     return 1;
-  double f_pq = oracle(rad, p, l->rside, q, l->sside);
+  oracle_parts o;
+  oracle_parts_of(rad, p, l->rside, q, l->sside, &o);
+  double f_pq = oracle_ab(&o, q);
   if (l->partial && bq * p->area * f_pq > thr)
-    return larger_end(rad, l, sp, sq);
+    return larger_end(l, sp, sq, &o);
   /* An uneven source errs by the same sign at every small receiver near
      it, so this test is per unit area of the receiver: the irradiance
      error against the threshold spread over the scene's area. */
@@ -363,12 +407,14 @@ static int refine_choice(const zr_radiosity *rad, const link_view *l) {
      times tighter for a partially visible link (a shadow boundary runs
      through it), which is what keeps light from leaking under objects
      standing on a floor. */
-  double f_pq = oracle(rad, l->p, l->rside, l->q, l->sside);
+  oracle_parts o;
+  oracle_parts_of(rad, l->p, l->rside, l->q, l->sside, &o);
+  double f_pq = oracle_ab(&o, l->q);
   if (l->partial)
     thr *= 0.1;
   if (!(zr__rad_max3(l->q->b[l->sside]) * f_pq * l->p->area > thr))
     return 0;
-  return larger_end(rad, l, sp, sq);
+  return larger_end(l, sp, sq, &o);
 }
 
 /* ---- refinement as a plan, then its replay ----
