@@ -1004,6 +1004,88 @@ static inline bool triangle_blocks(const zr_object *o, zr_vec3 org,
   return !(v < 0.0 || u + v > 1.0);
 }
 
+#ifdef __SSE2__
+/* Two triangles' vectors, lane 0 the first's, lane 1 the second's. */
+typedef struct pair3 {
+  __m128d x, y, z;
+} pair3;
+
+static inline pair3 pair_of(zr_vec3 a, zr_vec3 b) {
+  return (pair3){_mm_set_pd(b.x, a.x), _mm_set_pd(b.y, a.y),
+                 _mm_set_pd(b.z, a.z)};
+}
+
+static inline pair3 pair_splat(zr_vec3 a) {
+  return (pair3){_mm_set1_pd(a.x), _mm_set1_pd(a.y), _mm_set1_pd(a.z)};
+}
+
+static inline pair3 pair_sub(pair3 a, pair3 b) {
+  return (pair3){_mm_sub_pd(a.x, b.x), _mm_sub_pd(a.y, b.y),
+                 _mm_sub_pd(a.z, b.z)};
+}
+
+/* zr_v3_dot's operations in its order: (x x + y y) + z z. */
+static inline __m128d pair_dot(pair3 a, pair3 b) {
+  return _mm_add_pd(_mm_add_pd(_mm_mul_pd(a.x, b.x), _mm_mul_pd(a.y, b.y)),
+                    _mm_mul_pd(a.z, b.z));
+}
+
+/* zr_v3_cross's. */
+static inline pair3 pair_cross(pair3 a, pair3 b) {
+  return (pair3){_mm_sub_pd(_mm_mul_pd(a.y, b.z), _mm_mul_pd(a.z, b.y)),
+                 _mm_sub_pd(_mm_mul_pd(a.z, b.x), _mm_mul_pd(a.x, b.z)),
+                 _mm_sub_pd(_mm_mul_pd(a.x, b.y), _mm_mul_pd(a.y, b.x))};
+}
+
+/* Lanes whose |x| is finite (a NaN's comparison is false). */
+static inline __m128d pair_finite(__m128d x) {
+  __m128d abs = _mm_andnot_pd(_mm_set1_pd(-0.0), x);
+  return _mm_cmple_pd(abs, _mm_set1_pd(DBL_MAX));
+}
+
+/*
+ * triangle_blocks for two triangles a and b at once, SSE2's two double
+ * lanes doing each operation of the scalar test for both (the same
+ * IEEE operations, so the same values bit for bit); true when either
+ * blocks.  The scalar test's conditions become lane masks, with their
+ * NaN cases kept: !(u < 0) is "not less than", which a NaN passes as it
+ * passes the scalar test.  The second half is skipped when neither
+ * lane passed the first, as the scalar test returns early.
+ */
+static inline bool triangle_pair_blocks(const zr_object *a,
+                                        const zr_object *b, zr_vec3 org,
+                                        zr_vec3 dir, double tmin,
+                                        double tmax) {
+  const zr_vec3 *pa = a->u.triangle.p, *pb = b->u.triangle.p;
+  pair3 p0 = pair_of(pa[0], pb[0]);
+  pair3 e1 = pair_sub(pair_of(pa[1], pb[1]), p0);
+  pair3 e2 = pair_sub(pair_of(pa[2], pb[2]), p0);
+  pair3 d = pair_splat(dir);
+  pair3 pv = pair_cross(d, e2);
+  __m128d det = pair_dot(e1, pv);
+  __m128d zero = _mm_setzero_pd(), one = _mm_set1_pd(1.0);
+  __m128d ok = _mm_and_pd(_mm_cmpneq_pd(det, zero), pair_finite(det));
+  __m128d inv = _mm_div_pd(one, det);
+  pair3 tv = pair_sub(pair_splat(org), p0);
+  __m128d u = _mm_mul_pd(pair_dot(tv, pv), inv);
+  ok = _mm_and_pd(ok, _mm_and_pd(_mm_cmpnlt_pd(u, zero),
+                                 _mm_cmpngt_pd(u, one)));
+  if (_mm_movemask_pd(ok) == 0)
+    return false;
+  pair3 qv = pair_cross(tv, e1);
+  __m128d t = _mm_mul_pd(pair_dot(e2, qv), inv);
+  __m128d inside = _mm_and_pd(_mm_cmpgt_pd(t, _mm_set1_pd(tmin)),
+                              _mm_cmplt_pd(t, _mm_set1_pd(tmax)));
+  ok = _mm_and_pd(ok, _mm_and_pd(pair_finite(t), inside));
+  if (_mm_movemask_pd(ok) == 0)
+    return false;
+  __m128d v = _mm_mul_pd(pair_dot(d, qv), inv);
+  ok = _mm_and_pd(ok, _mm_and_pd(_mm_cmpnlt_pd(v, zero),
+                                 _mm_cmpngt_pd(_mm_add_pd(u, v), one)));
+  return _mm_movemask_pd(ok) != 0;
+}
+#endif
+
 /* The slab test as obj_box.c makes it; either face may be the one. */
 static bool box_blocks(const zr_object *o, zr_vec3 org, zr_vec3 dir,
                        double tmin, double tmax) {
@@ -1084,20 +1166,36 @@ static bool prim_blocks(const zr_object *o, const zr_ray *ray, double tmin,
   }
 }
 
+static inline bool plain_triangle(const zr_object *o) {
+  return o->kind == ZR_OBJ_TRIANGLE && !o->transform && !o->clip;
+}
+
 /* Whether a primitive of the leaf run [first, first + count) blocks. */
 static inline bool leaf_blocks(const struct zr_bvh *bvh, uint32_t first,
                                uint32_t count, const zr_ray *ray,
                                const sphere_ray *sph, double tmin,
                                double tmax) {
   zr_hit h[ZR_MAX_CROSSINGS];
-  for (uint32_t i = first; i < first + count; i++) {
+  const uint32_t end = first + count;
+  for (uint32_t i = first; i < end; i++) {
     const zr_object *o = bvh->prims[i];
     const leaf_sphere *s = &bvh->spheres[i];
     bool blocks;
     /* A triangle without transform or clip, what meshes of separate
-       triangles (the Cornell box) are made of, without the call. */
-    if (o->kind == ZR_OBJ_TRIANGLE && !o->transform && !o->clip)
+       triangles (the Cornell box) are made of, without the call; two
+       of them side by side at once. */
+    if (plain_triangle(o)) {
+#ifdef __SSE2__
+      if (i + 1 < end && plain_triangle(bvh->prims[i + 1])) {
+        if (triangle_pair_blocks(o, bvh->prims[i + 1], ray->origin,
+                                 ray->dir, tmin, tmax))
+          return true;
+        i++;
+        continue;
+      }
+#endif
       blocks = triangle_blocks(o, ray->origin, ray->dir, tmin, tmax);
+    }
     else if (s->radius == s->radius)
       blocks = sphere_t(o, s->centre, s->radius, sph, tmin, tmax, h) > 0;
     else
