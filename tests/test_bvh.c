@@ -11,6 +11,8 @@
 #include <cmocka.h>
 
 #include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "core/arena.h"
@@ -580,6 +582,210 @@ static void test_bvh_next_child_keeps_order(void **state) {
     }
 }
 
+/* Stops a crossing walk at its first crossing, noting that there was one
+   (zr__rad_occluded's question before zr__bvh_occluded). */
+static bool note_first(const zr_hit *hit, void *user) {
+  (void)hit;
+  *(bool *)user = true;
+  return false;
+}
+
+static bool walk_occluded(const struct zr_bvh *bvh, const zr_ray *r,
+                          double tmin, double tmax) {
+  bool blocked = false;
+  zr__bvh_all(bvh, r, tmin, tmax, note_first, &blocked);
+  return blocked;
+}
+
+/* A scene of every kind zr__bvh_occluded tests by itself (triangles,
+   polygons, boxes, planes, spheres; plain and transformed) and of kinds
+   it leaves to the crossing walk (clipped, CSG, cylinder, disc, mesh),
+   in SDL so the parser builds them as a scene would. */
+static char *mixed_scene_text(uint64_t seed) {
+  size_t cap = 1 << 16, n = 0;
+  char *t = malloc(cap);
+  assert_non_null(t);
+#define PUT(...) \
+  n += (size_t)snprintf(t + n, cap - n, __VA_ARGS__); \
+  assert_true(n < cap)
+  PUT("#version 3.7;\n");
+  /* A closed room of triangles, as the Cornell box is made. */
+  PUT("union { triangle { <0,0,0>, <10,0,0>, <10,0,10> }\n"
+      " triangle { <0,0,0>, <10,0,10>, <0,0,10> }\n"
+      " triangle { <0,10,0>, <10,10,10>, <10,10,0> }\n"
+      " triangle { <0,10,0>, <0,10,10>, <10,10,10> }\n"
+      " triangle { <0,0,10>, <10,0,10>, <10,10,10> }\n"
+      " triangle { <0,0,10>, <10,10,10>, <0,10,10> } }\n");
+  for (int i = 0; i < 40; i++) {
+    zr_vec3 c = zr_v3(range(&seed, 1, 9), range(&seed, 1, 9),
+                      range(&seed, 1, 9));
+    zr_vec3 a = zr_v3_add(c, random_point(&seed, 1.5));
+    zr_vec3 b = zr_v3_add(c, random_point(&seed, 1.5));
+    zr_vec3 d = zr_v3_add(c, random_point(&seed, 1.5));
+    double r = range(&seed, 0.2, 0.8);
+    switch (i % 10) {
+    case 0:
+    case 1:
+    case 2:
+      PUT("triangle { <%.17g,%.17g,%.17g>, <%.17g,%.17g,%.17g>, "
+          "<%.17g,%.17g,%.17g>%s }\n",
+          a.x, a.y, a.z, b.x, b.y, b.z, d.x, d.y, d.z,
+          i % 10 == 2 ? " rotate <10,20,30> translate <0.5,0,0>" : "");
+      break;
+    case 3:
+      PUT("box { <%.17g,%.17g,%.17g>, <%.17g,%.17g,%.17g>%s }\n", a.x, a.y,
+          a.z, b.x, b.y, b.z, i % 20 == 3 ? "" : " rotate <30,40,50>");
+      break;
+    case 4:
+      PUT("polygon { 5, <0,0>, <%.17g,0>, <%.17g,%.17g>, <0,%.17g>, "
+          "<0,0> rotate <%.17g,%.17g,0> translate <%.17g,%.17g,%.17g> }\n",
+          r * 2, r * 2, r * 3, r, range(&seed, 0, 90), range(&seed, 0, 90),
+          c.x, c.y, c.z);
+      break;
+    case 5:
+      PUT("sphere { <%.17g,%.17g,%.17g>, %.17g%s }\n", c.x, c.y, c.z, r,
+          i % 20 == 5 ? "" : " scale <1,1.5,0.7> translate <0.1,0,0>");
+      break;
+    case 6:
+      PUT("sphere { <%.17g,%.17g,%.17g>, %.17g clipped_by { box { "
+          "<%.17g,%.17g,%.17g>, <%.17g,%.17g,%.17g> } } }\n",
+          c.x, c.y, c.z, r, c.x - 1, c.y - 1, c.z, c.x + 1, c.y + 1,
+          c.z + 1);
+      break;
+    case 7:
+      PUT("intersection { sphere { <%.17g,%.17g,%.17g>, %.17g } box { "
+          "<%.17g,%.17g,%.17g>, <%.17g,%.17g,%.17g> } }\n",
+          c.x, c.y, c.z, r, c.x - r, c.y - r, c.z - r / 2, c.x + r,
+          c.y + r / 2, c.z + r);
+      break;
+    case 8:
+      PUT("cylinder { <%.17g,%.17g,%.17g>, <%.17g,%.17g,%.17g>, %.17g }\n"
+          "disc { <%.17g,%.17g,%.17g>, <%.17g,%.17g,%.17g>, %.17g }\n",
+          a.x, a.y, a.z, b.x, b.y, b.z, r / 3, d.x, d.y, d.z, c.x - d.x,
+          c.y - d.y, c.z - d.z, r);
+      break;
+    default:
+      PUT("mesh { triangle { <%.17g,%.17g,%.17g>, <%.17g,%.17g,%.17g>, "
+          "<%.17g,%.17g,%.17g> } triangle { <%.17g,%.17g,%.17g>, "
+          "<%.17g,%.17g,%.17g>, <%.17g,%.17g,%.17g> } }\n",
+          a.x, a.y, a.z, b.x, b.y, b.z, d.x, d.y, d.z, a.x, a.y, a.z, d.x,
+          d.y, d.z, c.x, c.y, c.z);
+      break;
+    }
+  }
+  /* Unbounded ones: a tilted plane through the room and one below it. */
+  PUT("plane { <1,1,0.5>, 9 }\nplane { y, -0.5 }\n");
+#undef PUT
+  return t;
+}
+
+/* A point on some surface: where a random ray from inside the room
+   first meets one (the ends of radiosity's visibility rays lie on
+   surfaces, moved off them by a tiny eps or not at all). */
+static zr_vec3 surface_point(const zr_scene *s, uint64_t *seed) {
+  for (;;) {
+    zr_ray r = {zr_v3(range(seed, 0.5, 9.5), range(seed, 0.5, 9.5),
+                      range(seed, 0.5, 9.5)),
+                random_point(seed, 1)};
+    zr_hit h;
+    if (zr__bvh_nearest(s->bvh, &r, 0.0, INFINITY, &h))
+      return zr_v3_madd(r.origin, r.dir, h.t);
+  }
+}
+
+/*
+ * zr__bvh_occluded must answer exactly what the crossing walk answers
+ * (zr__bvh_all stopped at the first crossing), for every segment: between
+ * surface points (exactly on the surfaces, or 1e-9 and 1e-6 off them:
+ * the interval's ends then decide), in the plane of a triangle (grazing,
+ * det 0 or a rounding), along the axes and at random, with and without
+ * a hint carried from segment to segment.  Both answers must occur
+ * often, so a predicate that always says yes or no fails.
+ */
+static void test_bvh_occluded_matches_walk(void **state) {
+  (void)state;
+  zr_context *ctx = NULL;
+  assert_int_equal(zr_context_new(&ctx), ZR_OK);
+  char *text = mixed_scene_text(17);
+  zr_scene *s = NULL;
+  assert_int_equal(
+      zr_scene_parse_string(ctx, "<mixed>", text, strlen(text), &s), ZR_OK);
+  free(text);
+  zr_bvh_info info;
+  zr__bvh_get_info(s->bvh, &info);
+  assert_true(info.bounded > 40);
+  assert_int_equal(info.unbounded, 2);
+  uint64_t seed = 5;
+  zr_bvh_hint hint = {0};
+  size_t blocked = 0, open = 0;
+  for (int i = 0; i < 60000; i++) {
+    zr_vec3 a, b;
+    int kind = i % 6;
+    if (kind <= 2) {
+      /* Surface to surface, offset along the segment by 0, 1e-9 or
+         1e-6 of its length. */
+      a = surface_point(s, &seed);
+      b = surface_point(s, &seed);
+      double off = kind == 0 ? 0.0 : kind == 1 ? 1e-9 : 1e-6;
+      zr_vec3 d = zr_v3_sub(b, a);
+      a = zr_v3_madd(a, d, off);
+      b = zr_v3_madd(b, d, -off);
+    } else if (kind == 3) {
+      /* In the plane of a primitive triangle (grazing). */
+      const zr_object *o =
+          s->primitives[(size_t)(next_uniform(&seed) *
+                                 (double)s->n_primitives) %
+                        s->n_primitives];
+      if (o->kind != ZR_OBJ_TRIANGLE)
+        continue;
+      const zr_vec3 *p = o->u.triangle.p;
+      double u0 = range(&seed, -0.5, 1.5), v0 = range(&seed, -0.5, 1.5);
+      double u1 = range(&seed, -0.5, 1.5), v1 = range(&seed, -0.5, 1.5);
+      a = zr_v3_madd(zr_v3_madd(p[0], zr_v3_sub(p[1], p[0]), u0),
+                     zr_v3_sub(p[2], p[0]), v0);
+      b = zr_v3_madd(zr_v3_madd(p[0], zr_v3_sub(p[1], p[0]), u1),
+                     zr_v3_sub(p[2], p[0]), v1);
+    } else if (kind == 4) {
+      /* Along an axis from a surface point. */
+      a = surface_point(s, &seed);
+      b = a;
+      int axis = i % 3;
+      double len = range(&seed, -6, 6);
+      if (axis == 0)
+        b.x += len;
+      else if (axis == 1)
+        b.y += len;
+      else
+        b.z += len;
+    } else {
+      a = zr_v3_add(zr_v3(5, 5, 5), random_point(&seed, 7));
+      b = zr_v3_add(zr_v3(5, 5, 5), random_point(&seed, 7));
+    }
+    zr_ray r = {a, zr_v3_sub(b, a)};
+    const double ends[3][2] = {{1e-9, 1.0 - 1e-9}, {0.0, 1.0},
+                               {0.25, 0.5}};
+    for (int e = 0; e < 3; e++) {
+      bool want = walk_occluded(s->bvh, &r, ends[e][0], ends[e][1]);
+      assert_int_equal(
+          zr__bvh_occluded(s->bvh, &r, ends[e][0], ends[e][1], NULL), want);
+      assert_int_equal(
+          zr__bvh_occluded(s->bvh, &r, ends[e][0], ends[e][1], &hint),
+          want);
+      if (e == 0) {
+        blocked += want;
+        open += !want;
+      }
+    }
+  }
+  assert_true(blocked > 10000);
+  assert_true(open > 10000);
+  /* No scene, no hierarchy: nothing is in the way. */
+  zr_ray r = {zr_v3(0, 0, 0), zr_v3(1, 1, 1)};
+  assert_false(zr__bvh_occluded(NULL, &r, 0.0, 1.0, &hint));
+  zr_scene_free(s);
+  zr_context_free(ctx);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_bvh_nearest_matches_brute_force),
@@ -592,6 +798,7 @@ int main(void) {
       cmocka_unit_test(test_bvh_crossings_match_intersect),
       cmocka_unit_test(test_bvh_next_child_keeps_order),
       cmocka_unit_test(test_bvh_grazing_spheres),
+      cmocka_unit_test(test_bvh_occluded_matches_walk),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

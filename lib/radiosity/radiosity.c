@@ -559,6 +559,9 @@ static double point_visibility(const zr_radiosity *rad, int32_t qi,
   bool small = k >= 1 && k <= 16;
   const zr_vec3 *grid = small ? visibility_grid(rad, qi, k, buf) : NULL;
   zr_vec3 from = zr_v3_madd(point, n, eps);
+  /* The rays of one point to one cell are mostly blocked, if at all, by
+     the same surface: each asks first where the last was blocked. */
+  zr_bvh_hint hint = {0};
   for (int i = 0; i < k * k; i++) {
     zr_vec3 gp, gn;
     if (small) {
@@ -582,7 +585,7 @@ static double point_visibility(const zr_radiosity *rad, int32_t qi,
     if (!(zr_v3_dot(d, n) > 0.0 && zr_v3_dot(d, qn) < 0.0))
       continue;
     cast++;
-    if (!zr__rad_occluded(rad, from, to))
+    if (!zr__rad_occluded_hint(rad, from, to, &hint))
       open++;
   }
   return cast > 0 ? (double)open / cast : 0.0;

@@ -41,6 +41,7 @@
 #include "radiosity/quadrature.h"
 #include "radiosity/surface.h"
 #include "scene/scene.h"
+#include "trace/bvh.h"
 #include "trace/shade.h"
 #include "zrcube.h"
 
@@ -267,6 +268,10 @@ zr_status zr__rad_refine_links(zr_radiosity *rad, size_t *changed);
 zr_status zr__rad_finish_links(zr_radiosity *rad);
 /* Whether the segment from..to crosses any surface of the scene. */
 bool zr__rad_occluded(const zr_radiosity *rad, zr_vec3 from, zr_vec3 to);
+/* The same with a hint of where the last blocker was (zr__bvh_occluded):
+   the rays of one point to one source are mostly blocked by one leaf. */
+bool zr__rad_occluded_hint(const zr_radiosity *rad, zr_vec3 from,
+                           zr_vec3 to, zr_bvh_hint *hint);
 /* Drops dead links from the array. */
 void zr__rad_compact_links(zr_radiosity *rad);
 /* Splits every leaf until it is at depth n_levels (uniform mode). */

@@ -1249,21 +1249,16 @@ static void grid_points(const zr_radiosity *rad, const zr__rad_node *node,
   }
 }
 
-/* Stops a crossing walk at the first crossing. */
-static bool stop_at_first(const zr_hit *hit, void *user) {
-  (void)hit;
-  *(bool *)user = true;
-  return false;
+bool zr__rad_occluded(const zr_radiosity *rad, zr_vec3 from, zr_vec3 to) {
+  return zr__rad_occluded_hint(rad, from, to, NULL);
 }
 
-bool zr__rad_occluded(const zr_radiosity *rad, zr_vec3 from, zr_vec3 to) {
-  /* Any crossing will do, so the walk stops at the first one instead of
-     searching for the nearest: a shadow ray's question. */
+bool zr__rad_occluded_hint(const zr_radiosity *rad, zr_vec3 from,
+                           zr_vec3 to, zr_bvh_hint *hint) {
+  /* Any crossing will do: the walk asks each primitive only whether it
+     crosses the segment, a shadow ray's question (zr__bvh_occluded). */
   zr_ray ray = {from, zr_v3_sub(to, from)};
-  bool blocked = false;
-  zr__bvh_all(rad->scene->bvh, &ray, 1e-9, 1.0 - 1e-9, stop_at_first,
-              &blocked);
-  return blocked;
+  return zr__bvh_occluded(rad->scene->bvh, &ray, 1e-9, 1.0 - 1e-9, hint);
 }
 
 /* Whether x (normal nx) and y (normal ny) face each other. */
@@ -1289,6 +1284,7 @@ static double link_visibility(const zr_radiosity *rad,
   grid_points(rad, &rad->nodes[l->src], k, l->sside, eps, yp, yn);
   /* Points that a CSG removes (trim.c) cast no ray. */
   bool xk[256], yk[256];
+  zr_bvh_hint hint = {0}; /* the link's rays share their blockers */
   const zr__rad_surface *xs = &rad->surfs[rad->nodes[l->recv].surf];
   const zr__rad_surface *ys = &rad->surfs[rad->nodes[l->src].surf];
   for (int i = 0; i < kk; i++) {
@@ -1307,7 +1303,7 @@ static double link_visibility(const zr_radiosity *rad,
     if (tries == kk)
       continue;
     cast++;
-    if (!zr__rad_occluded(rad, xp[i], yp[j]))
+    if (!zr__rad_occluded_hint(rad, xp[i], yp[j], &hint))
       open++;
   }
   *rays += (uint64_t)cast;

@@ -31,6 +31,7 @@
 #include "core/arena.h"
 #include "core/context.h"
 #include "trace/obj_mesh.h"
+#include "trace/obj_shapes.h"
 #include "trace/shape.h"
 
 enum {
@@ -962,4 +963,310 @@ bool zr__bvh_region_clear(const struct zr_bvh *bvh, zr_region_box_fn meets,
     }
   }
   return true;
+}
+
+/* ---- occlusion: whether anything crosses a segment ----
+ *
+ * zr__bvh_occluded answers what a zr__bvh_all walk with a visit that
+ * stops at the first crossing answers (zr__rad_occluded's question),
+ * by the same walk over the same boxes, but asks each primitive only
+ * whether one of its crossings lies in the interval: no crossing list,
+ * no sort, no table call, no normal.  For each kind handled here the
+ * test is the shape's own arithmetic, operation for operation (the
+ * same roots, bit for bit, so the same answer at the interval's ends
+ * and for grazing rays), followed by the filter intersect.c applies
+ * (a finite t with tmin < t < tmax); a clipped primitive, a CSG and
+ * every other kind are asked through crossings_t, as the walk asks
+ * them.  tests/test_bvh_occluded.c compares the two on random segments
+ * over a scene of mixed kinds. */
+
+/* Moller and Trumbore's test as obj_triangle.c makes it. */
+static inline bool triangle_blocks(const zr_object *o, zr_vec3 org,
+                                   zr_vec3 dir, double tmin, double tmax) {
+  const zr_vec3 *p = o->u.triangle.p;
+  zr_vec3 e1 = zr_v3_sub(p[1], p[0]), e2 = zr_v3_sub(p[2], p[0]);
+  zr_vec3 pv = zr_v3_cross(dir, e2);
+  double det = zr_v3_dot(e1, pv);
+  if (det == 0.0 || !isfinite(det))
+    return false;
+  double inv = 1.0 / det;
+  zr_vec3 tv = zr_v3_sub(org, p[0]);
+  double u = zr_v3_dot(tv, pv) * inv;
+  if (u < 0.0 || u > 1.0)
+    return false;
+  zr_vec3 qv = zr_v3_cross(tv, e1);
+  /* The interval first: most triangles a segment's boxes lead to lie
+     beyond its ends; the conditions are all needed, in any order. */
+  double t = zr_v3_dot(e2, qv) * inv;
+  if (!(isfinite(t) && t > tmin && t < tmax))
+    return false;
+  double v = zr_v3_dot(dir, qv) * inv;
+  return !(v < 0.0 || u + v > 1.0);
+}
+
+#ifdef __SSE2__
+/* Two triangles' vectors, lane 0 the first's, lane 1 the second's. */
+typedef struct pair3 {
+  __m128d x, y, z;
+} pair3;
+
+static inline pair3 pair_of(zr_vec3 a, zr_vec3 b) {
+  return (pair3){_mm_set_pd(b.x, a.x), _mm_set_pd(b.y, a.y),
+                 _mm_set_pd(b.z, a.z)};
+}
+
+static inline pair3 pair_splat(zr_vec3 a) {
+  return (pair3){_mm_set1_pd(a.x), _mm_set1_pd(a.y), _mm_set1_pd(a.z)};
+}
+
+static inline pair3 pair_sub(pair3 a, pair3 b) {
+  return (pair3){_mm_sub_pd(a.x, b.x), _mm_sub_pd(a.y, b.y),
+                 _mm_sub_pd(a.z, b.z)};
+}
+
+/* zr_v3_dot's operations in its order: (x x + y y) + z z. */
+static inline __m128d pair_dot(pair3 a, pair3 b) {
+  return _mm_add_pd(_mm_add_pd(_mm_mul_pd(a.x, b.x), _mm_mul_pd(a.y, b.y)),
+                    _mm_mul_pd(a.z, b.z));
+}
+
+/* zr_v3_cross's. */
+static inline pair3 pair_cross(pair3 a, pair3 b) {
+  return (pair3){_mm_sub_pd(_mm_mul_pd(a.y, b.z), _mm_mul_pd(a.z, b.y)),
+                 _mm_sub_pd(_mm_mul_pd(a.z, b.x), _mm_mul_pd(a.x, b.z)),
+                 _mm_sub_pd(_mm_mul_pd(a.x, b.y), _mm_mul_pd(a.y, b.x))};
+}
+
+/* Lanes whose |x| is finite (a NaN's comparison is false). */
+static inline __m128d pair_finite(__m128d x) {
+  __m128d abs = _mm_andnot_pd(_mm_set1_pd(-0.0), x);
+  return _mm_cmple_pd(abs, _mm_set1_pd(DBL_MAX));
+}
+
+/*
+ * triangle_blocks for two triangles a and b at once, SSE2's two double
+ * lanes doing each operation of the scalar test for both (the same
+ * IEEE operations, so the same values bit for bit); true when either
+ * blocks.  The scalar test's conditions become lane masks, with their
+ * NaN cases kept: !(u < 0) is "not less than", which a NaN passes as it
+ * passes the scalar test.  The second half is skipped when neither
+ * lane passed the first, as the scalar test returns early.
+ */
+static inline bool triangle_pair_blocks(const zr_object *a,
+                                        const zr_object *b, zr_vec3 org,
+                                        zr_vec3 dir, double tmin,
+                                        double tmax) {
+  const zr_vec3 *pa = a->u.triangle.p, *pb = b->u.triangle.p;
+  pair3 p0 = pair_of(pa[0], pb[0]);
+  pair3 e1 = pair_sub(pair_of(pa[1], pb[1]), p0);
+  pair3 e2 = pair_sub(pair_of(pa[2], pb[2]), p0);
+  pair3 d = pair_splat(dir);
+  pair3 pv = pair_cross(d, e2);
+  __m128d det = pair_dot(e1, pv);
+  __m128d zero = _mm_setzero_pd(), one = _mm_set1_pd(1.0);
+  __m128d ok = _mm_and_pd(_mm_cmpneq_pd(det, zero), pair_finite(det));
+  __m128d inv = _mm_div_pd(one, det);
+  pair3 tv = pair_sub(pair_splat(org), p0);
+  __m128d u = _mm_mul_pd(pair_dot(tv, pv), inv);
+  ok = _mm_and_pd(ok, _mm_and_pd(_mm_cmpnlt_pd(u, zero),
+                                 _mm_cmpngt_pd(u, one)));
+  if (_mm_movemask_pd(ok) == 0)
+    return false;
+  pair3 qv = pair_cross(tv, e1);
+  __m128d t = _mm_mul_pd(pair_dot(e2, qv), inv);
+  __m128d inside = _mm_and_pd(_mm_cmpgt_pd(t, _mm_set1_pd(tmin)),
+                              _mm_cmplt_pd(t, _mm_set1_pd(tmax)));
+  ok = _mm_and_pd(ok, _mm_and_pd(pair_finite(t), inside));
+  if (_mm_movemask_pd(ok) == 0)
+    return false;
+  __m128d v = _mm_mul_pd(pair_dot(d, qv), inv);
+  ok = _mm_and_pd(ok, _mm_and_pd(_mm_cmpnlt_pd(v, zero),
+                                 _mm_cmpngt_pd(_mm_add_pd(u, v), one)));
+  return _mm_movemask_pd(ok) != 0;
+}
+#endif
+
+/* The slab test as obj_box.c makes it; either face may be the one. */
+static bool box_blocks(const zr_object *o, zr_vec3 org, zr_vec3 dir,
+                       double tmin, double tmax) {
+  zr_vec3 lo = zr_v3_min(o->u.box.corner1, o->u.box.corner2);
+  zr_vec3 hi = zr_v3_max(o->u.box.corner1, o->u.box.corner2);
+  double tnear = -INFINITY, tfar = INFINITY;
+  bool near_set = false, far_set = false;
+  for (int axis = 0; axis < 3; axis++) {
+    double oa = zr_v3_get(org, axis), da = zr_v3_get(dir, axis);
+    double la = zr_v3_get(lo, axis), ha = zr_v3_get(hi, axis);
+    if (da == 0.0) {
+      if (oa < la || oa > ha)
+        return false;
+      continue;
+    }
+    double t0 = (la - oa) / da, t1 = (ha - oa) / da;
+    if (t0 > t1) {
+      double tt = t0;
+      t0 = t1;
+      t1 = tt;
+    }
+    if (t0 > tnear) {
+      tnear = t0;
+      near_set = true;
+    }
+    if (t1 < tfar) {
+      tfar = t1;
+      far_set = true;
+    }
+  }
+  if (!(tnear <= tfar) || !near_set || !far_set)
+    return false;
+  return (isfinite(tnear) && tnear > tmin && tnear < tmax) ||
+         (isfinite(tfar) && tfar > tmin && tfar < tmax);
+}
+
+/* Whether primitive o crosses the ray in (tmin, tmax), as crossings_t
+   finds. */
+static bool prim_blocks(const zr_object *o, const zr_ray *ray, double tmin,
+                        double tmax) {
+  zr_object_kind kind = o->kind;
+  bool own = !o->clip && (kind == ZR_OBJ_TRIANGLE || kind == ZR_OBJ_BOX ||
+                          kind == ZR_OBJ_PLANE || kind == ZR_OBJ_SPHERE ||
+                          kind == ZR_OBJ_POLYGON);
+  if (!own) {
+    zr_hit h[ZR_MAX_CROSSINGS];
+    return crossings_t(o, ray, tmin, tmax, h) > 0;
+  }
+  /* In the object's own coordinates, as intersect.c maps the ray. */
+  zr_ray r = *ray;
+  if (o->transform) {
+    r.origin = zr__xform_point(o->transform->inv, ray->origin);
+    r.dir = zr__xform_dir(o->transform->inv, ray->dir);
+  }
+  switch (kind) {
+  case ZR_OBJ_TRIANGLE:
+    return triangle_blocks(o, r.origin, r.dir, tmin, tmax);
+  case ZR_OBJ_BOX:
+    return box_blocks(o, r.origin, r.dir, tmin, tmax);
+  case ZR_OBJ_POLYGON: {
+    double t[4];
+    zr_vec3 n[4];
+    return zr__polygon_crossings(o, r.origin, r.dir, tmin, tmax, t, n) >
+               0 &&
+           isfinite(t[0]);
+  }
+  default: {
+    /* A plane or a sphere: the walk's own tests (plane_t, sphere_t)
+       are the shapes' arithmetic. */
+    zr_hit h[ZR_MAX_CROSSINGS];
+    if (kind == ZR_OBJ_PLANE)
+      return plane_t(o, &r, tmin, tmax, h) > 0;
+    sphere_ray sr;
+    make_sphere_ray(&r, &sr);
+    return sphere_t(o, o->u.sphere.centre, o->u.sphere.radius, &sr, tmin,
+                    tmax, h) > 0;
+  }
+  }
+}
+
+static inline bool plain_triangle(const zr_object *o) {
+  return o->kind == ZR_OBJ_TRIANGLE && !o->transform && !o->clip;
+}
+
+/* Whether a primitive of the leaf run [first, first + count) blocks. */
+static inline bool leaf_blocks(const struct zr_bvh *bvh, uint32_t first,
+                               uint32_t count, const zr_ray *ray,
+                               const sphere_ray *sph, double tmin,
+                               double tmax) {
+  zr_hit h[ZR_MAX_CROSSINGS];
+  const uint32_t end = first + count;
+  for (uint32_t i = first; i < end; i++) {
+    const zr_object *o = bvh->prims[i];
+    const leaf_sphere *s = &bvh->spheres[i];
+    bool blocks;
+    /* A triangle without transform or clip, what meshes of separate
+       triangles (the Cornell box) are made of, without the call; two
+       of them side by side at once. */
+    if (plain_triangle(o)) {
+#ifdef __SSE2__
+      if (i + 1 < end && plain_triangle(bvh->prims[i + 1])) {
+        if (triangle_pair_blocks(o, bvh->prims[i + 1], ray->origin,
+                                 ray->dir, tmin, tmax))
+          return true;
+        i++;
+        continue;
+      }
+#endif
+      blocks = triangle_blocks(o, ray->origin, ray->dir, tmin, tmax);
+    }
+    else if (s->radius == s->radius)
+      blocks = sphere_t(o, s->centre, s->radius, sph, tmin, tmax, h) > 0;
+    else
+      blocks = prim_blocks(o, ray, tmin, tmax);
+    if (blocks)
+      return true;
+  }
+  return false;
+}
+
+/* A leaf's code in a hint: the wide node holding it and its lane. */
+static inline uint64_t leaf_code(uint32_t node, int lane) {
+  return 1 + (uint64_t)node * WIDTH + (uint64_t)lane;
+}
+
+bool zr__bvh_occluded(const struct zr_bvh *bvh, const zr_ray *ray,
+                      double tmin, double tmax, zr_bvh_hint *hint) {
+  if (!bvh)
+    return false;
+  for (size_t i = 0; i < bvh->n_unbounded; i++)
+    if (prim_blocks(bvh->unbounded[i], ray, tmin, tmax))
+      return true;
+  if (bvh->n_wide == 0)
+    return false;
+  zr_slab_ray sr;
+  zr__make_slab_ray(ray, &sr);
+  const float tmin_f = zr__float_down(tmin), tmax_f = zr__float_up(tmax);
+  sphere_ray sph;
+  make_sphere_ray(ray, &sph);
+  float t[WIDTH];
+  uint64_t tested = 0; /* the hinted leaf, once searched in vain */
+  /* The hinted leaf first, if the walk would open it: a child's box
+     lies in its parent's, and the parent's extent (hence its margin) is
+     at least the child's, so the slab test that meets a leaf's box
+     meets every box above it. */
+  if (hint && hint->where > 0 && hint->where <= (uint64_t)bvh->n_wide * WIDTH) {
+    uint32_t node = (uint32_t)((hint->where - 1) / WIDTH);
+    int lane = (int)((hint->where - 1) % WIDTH);
+    const zr_wide_node *w = &bvh->wide[node];
+    if (w->count[lane] > 0 && w->count[lane] != ZR_WIDE_NO_CHILD &&
+        (zr__slab_entries(w, &sr, tmin_f, tmax_f, t) >> lane & 1)) {
+      if (leaf_blocks(bvh, w->child[lane], w->count[lane], ray, &sph, tmin,
+                      tmax))
+        return true;
+      tested = hint->where;
+    }
+  }
+  /* The leaves in any order (the tree's, which costs no sort); a
+     stack entry is (node, lane), the leaf's place for the hint. */
+  uint32_t stack[WIDE_STACK_MAX];
+  int sp = 0;
+  stack[sp++] = 0;
+  while (sp > 0) {
+    uint32_t node = stack[--sp];
+    const zr_wide_node *w = &bvh->wide[node];
+    unsigned mask = zr__slab_entries(w, &sr, tmin_f, tmax_f, t);
+    for (; mask; mask &= mask - 1) {
+      int c = __builtin_ctz(mask);
+      if (w->count[c] == 0) {
+        if (sp < WIDE_STACK_MAX)
+          stack[sp++] = w->child[c];
+        continue;
+      }
+      if (leaf_code(node, c) != tested &&
+          leaf_blocks(bvh, w->child[c], w->count[c], ray, &sph, tmin,
+                      tmax)) {
+        if (hint)
+          hint->where = leaf_code(node, c);
+        return true;
+      }
+    }
+  }
+  return false;
 }

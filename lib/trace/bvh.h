@@ -114,4 +114,28 @@ typedef struct zr_bvh_info {
 } zr_bvh_info;
 void zr__bvh_get_info(const struct zr_bvh *bvh, zr_bvh_info *info);
 
+/*
+ * Whether any primitive crosses the segment ray->origin + t ray->dir,
+ * tmin < t < tmax: the answer of a zr__bvh_all walk whose visit stops
+ * at the first crossing (the same boxes opened, the same crossings
+ * found, bit for bit), without making the crossings.  Triangles,
+ * polygons, boxes, planes and spheres without clipped_by are asked
+ * whether a crossing lies in the interval by their own arithmetic
+ * (transformed or not); every other primitive through zr__intersect_t.
+ * Radiosity's visibility rays ask it (lib/radiosity).
+ *
+ * hint (NULL: none) remembers where the last blocker was found: its
+ * leaf is searched first, so a run of rays that one surface blocks
+ * (the rays of one point to one source) finds it at once.  A leaf is
+ * searched only when the walk would open it too (its box and hence
+ * every box above it met), so the answer does not depend on the hint.
+ * Start a hint zeroed (zr_bvh_hint h = {0}); one hint serves one
+ * thread, and any number of walks of the same hierarchy.
+ */
+typedef struct zr_bvh_hint {
+  uint64_t where; /* 0: none; else 1 + the leaf's code (bvh.c) */
+} zr_bvh_hint;
+bool zr__bvh_occluded(const struct zr_bvh *bvh, const zr_ray *ray,
+                      double tmin, double tmax, zr_bvh_hint *hint);
+
 #endif /* ZR_TRACE_BVH_H */
