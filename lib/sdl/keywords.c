@@ -570,7 +570,8 @@ static const zr_sdl_keyword directives[] = {
 static int compare(const char *s, size_t n, const char *name) {
   /* Most steps of the bisection differ at the first character: decided
      here without the call (strncmp compares as unsigned char too).
-     bench/peers.sh's sphereflake looks up 22,000 names. */
+     Only the directives are searched so; keywords go through the hash
+     below. */
   if (n > 0 && s[0] != name[0])
     return (unsigned char)s[0] < (unsigned char)name[0] ? -1 : 1;
   int c = strncmp(s, name, n);
