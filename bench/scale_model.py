@@ -42,6 +42,7 @@ this machine's exchanges (the 4-rank run's median rank's CPU per allgather times
 """
 import math
 import os
+import shutil
 import subprocess
 import sys
 from collections import defaultdict
@@ -273,6 +274,12 @@ def main():
                 f.write(f'{ph} {a:.3f} {b:.3f}\n')
             f.write('\n\n')
     gp = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'scale.gp')
+    # The tables above are the results; the charts need gnuplot (Debian's
+    # gnuplot-nox), which a machine without it goes on without, as
+    # bench/radiosity.sh and bench/gi_error.sh do.
+    if shutil.which('gnuplot') is None:
+        print('scale_model.py: gnuplot not found, no charts', file=sys.stderr)
+        return
     subprocess.run(['gnuplot', '-e', f"dir='{outdir}'", gp], check=False)
 
 
