@@ -364,3 +364,8 @@ TESTS += tests/test_shadow_fade.sh
 EXTRA_DIST += tests/test_shadow_fade.sh tests/shadow_fade.pov \
 	bench/conform/shadow_fade_probe.sh bench/conform/shadow_fade_probe.pov
 EXTRA_DIST += bench/conform/fade_power_probe.sh bench/conform/probe_value.sh
+# A light's negative fade_distance, as povray takes it (the manual's
+# formula as it is: bench/conform/light_fade_negative.sh).
+TESTS += tests/test_light_fade.sh
+EXTRA_DIST += tests/test_light_fade.sh tests/light_fade.pov \
+	bench/conform/light_fade_negative.sh

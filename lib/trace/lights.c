@@ -120,11 +120,19 @@ double zr__light_cone(const zr_light *light, zr_vec3 p) {
   return 1.0;
 }
 
+/* A negative fade_distance is not refused: povray 3.7 puts it into the
+   formula as it is (bench/conform/light_fade_negative.sh): with an even
+   power it fades as the positive distance does, with an odd one the
+   ratio's power is negative, so the light grows towards infinity as d
+   nears -fade_distance and beyond it turns negative and takes light away
+   from the other lights; a power that is no integer gives no real power
+   of a negative ratio, and such a light adds nothing. */
 double zr__light_fade(const zr_light *light, double distance) {
-  if (!(light->fade_distance > 0.0) || light->fade_power == 0.0)
+  if (light->fade_distance == 0.0 || light->fade_power == 0.0)
     return 1.0;
-  return 2.0 /
-         (1.0 + pow(distance / light->fade_distance, light->fade_power));
+  double f = 2.0 / (1.0 + pow(distance / light->fade_distance,
+                              light->fade_power));
+  return isnan(f) ? 0.0 : f;
 }
 
 /* Lights whose rays all run along one direction. */
