@@ -369,3 +369,8 @@ EXTRA_DIST += bench/conform/fade_power_probe.sh bench/conform/probe_value.sh
 TESTS += tests/test_light_fade.sh
 EXTRA_DIST += tests/test_light_fade.sh tests/light_fade.pov \
 	bench/conform/light_fade_negative.sh
+# An interior's negative fade_distance, likewise
+# (bench/conform/interior_fade_negative.sh).
+TESTS += tests/test_interior_fade.sh
+EXTRA_DIST += tests/test_interior_fade.sh tests/interior_fade.pov \
+	bench/conform/interior_fade_negative.sh

@@ -15,7 +15,8 @@
 #   P=-1 TH=0.1 shadow 1.0000 view 0.0909, TH=3 shadow 1.0000 view 0.7500
 #   FA=0 P=1 and P=0: 1.0000 both; FA=2 P=0: shadow 1.0000, view 0.5000
 # (A negative fade_distance, -1 with power 1, gives 1.1111 at 0.1 and 0
-# at 3 in both, the formula again: zrcube leaves it unfaded.)
+# at 3 in both, the formula again: interior_fade_negative.sh measures it
+# further, and zrcube follows it since session 13.)
 # Usage: bench/conform/fade_power_probe.sh [build/bin/zrcube] (needs
 # povray and /usr/bin/python3 with numpy).
 set -eu

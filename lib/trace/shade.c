@@ -130,7 +130,7 @@ typedef struct shadow_walk {
    0: bench/conform/fade_power_probe.sh); powers above 0 fade both
    alike (0.25 and 0.5 measured too). */
 static bool shadow_fades(const zr_interior *in) {
-  return in && in->fade_distance > 0.0 && in->fade_power > 0.0;
+  return in && in->fade_distance != 0.0 && in->fade_power > 0.0;
 }
 
 /*
@@ -157,8 +157,16 @@ static zr_rgb fade_factor(const zr_interior *in, double d) {
                    exp(k * (1.0 - f.b)));
   }
   /* An endless stretch (d infinite) leaves 0 for powers above 0, half
-     for 0, all for negative ones, as the formula does. */
+     for 0, all for negative ones, as the formula does.  A negative
+     fade_distance goes in as it is, as povray 3.7 takes it
+     (bench/conform/interior_fade_negative.sh): the ratio's odd powers
+     make a above 1 for short stretches and below 0 for long ones, which
+     takes light away from what else the ray sums (a shadow ray's light
+     from the lit point's ambient), and a power that is no integer has
+     no real value there: that light is lost. */
   double a = 1.0 / (1.0 + pow(d / in->fade_distance, in->fade_power));
+  if (isnan(a))
+    return zr_rgb3(0.0, 0.0, 0.0);
   return zr_rgb3(f.r + (1.0 - f.r) * a, f.g + (1.0 - f.g) * a,
                  f.b + (1.0 - f.b) * a);
 }
@@ -662,7 +670,11 @@ static zr_rgb direct_light(const zr_tracer *tr, const surface *s,
        plane by "light_source { ... color rgb -0.5 }": crater_dat.pov,
        abyss.pov, scenes/negative_light.pov). */
     zr_rgb vis = zr__light_visibility(shadows, light, s->p, from);
-    if (rgb_max(vis) <= 0.0)
+    /* Nothing arrives only when every channel is 0: an interior of
+       negative fade_distance can leave a shadow ray less than nothing,
+       which povray 3.7 takes from the lit point's other light
+       (bench/conform/interior_fade_negative.sh). */
+    if (vis.r == 0.0 && vis.g == 0.0 && vis.b == 0.0)
       continue;
     lc = zr_rgb_mul(lc, vis);
     if (back) {
@@ -751,9 +763,10 @@ static zr_rgb reflection_amount(const surface *s, double n1, double n2) {
    povray 3.7 halves the light through a clear block of fade_distance 1
    and fade_power 0 whatever its thickness, (d / fade_distance)^0 = 1 in
    the formula (bench/conform/fade_power_probe.sh); fade_distance 0 is
-   no fading.  Shadow rays differ (shadow_fades). */
+   no fading, a negative one fades by the formula too (fade_factor).
+   Shadow rays differ (shadow_fades). */
 static zr_rgb fade_by(const zr_interior *in, double d, zr_rgb c) {
-  if (!in || !(in->fade_distance > 0.0))
+  if (!in || in->fade_distance == 0.0)
     return c;
   return zr_rgb_mul(c, fade_factor(in, d));
 }
