@@ -180,6 +180,34 @@ zr_status zr__team_agree(const zr_team *t, zr_status local) {
   return s;
 }
 
+zr_status zr__team_same_key(const zr_team *t, zr_status local,
+                            uint64_t key) {
+  int n = zr__team_size(t);
+  if (n == 1)
+    return local;
+  /* One allgather of the headers, the key where the size goes. */
+  header *heads = malloc((size_t)n * sizeof *heads);
+  size_t *counts = malloc((size_t)n * sizeof *counts);
+  zr_status s = ZR_ENOMEM;
+  if (heads && counts) {
+    header me = {local, key};
+    for (int r = 0; r < n; r++)
+      counts[r] = sizeof(header);
+    s = t->allgather(t->user, &me, heads, counts);
+    bool same = true;
+    for (int r = 0; s == ZR_OK && r < n; r++) {
+      if (heads[r].status < s)
+        s = (zr_status)heads[r].status;
+      same = same && heads[r].bytes == key;
+    }
+    if (s == ZR_OK && !same)
+      s = ZR_EINVAL;
+  }
+  free(heads);
+  free(counts);
+  return s;
+}
+
 void zr__pack_put(zr__pack *p, const void *bytes, size_t n) {
   if (p->nomem)
     return;
