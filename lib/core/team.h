@@ -80,6 +80,9 @@ typedef struct zr__pack {
 } zr__pack;
 
 void zr__pack_put(zr__pack *p, const void *bytes, size_t n);
+/* Room for n more bytes at once, where the caller knows the size: the
+   pack is then made once instead of grown by doubling. */
+void zr__pack_reserve(zr__pack *p, size_t n);
 void zr__pack_free(zr__pack *p);
 
 /* Reads n bytes at *at from a part ending at end; 0 when it runs out. */

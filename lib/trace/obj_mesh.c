@@ -490,13 +490,22 @@ static bool subtree_ok(const subtree *k, const zr_bvh_bin_node *nodes,
 }
 
 /*
- * Another member's built tasks (part, as pack_tasks wrote it: for each
- * task its index, its node count, the nodes and the face of each of its
- * rows in leaf order) taken into t: a task is taken when it is one dealt
- * to that member, its tree passes subtree_ok and its faces are those of
- * the task's rows here (mark: a byte per face, all 0 on entry and on
- * return).  Tasks not taken stay unbuilt (built[i] 0): the caller builds
- * them itself.
+ * A node as it travels: its box in single precision, which holds it
+ * exactly (split_node sets a node's box from the faces' float boxes
+ * alone), and its first and count; 32 bytes against the 56 of a
+ * zr_bvh_bin_node.
+ */
+typedef struct wire_node {
+  float lo[3], hi[3];
+  uint32_t first, count;
+} wire_node;
+
+/*
+ * Another member's built tasks (part, as pack_tasks wrote it) taken
+ * into t: a task is taken when it is one dealt to that member, its tree
+ * passes subtree_ok and its faces are those of the task's rows here
+ * (mark: a byte per face, all 0 on entry and on return).  Tasks not
+ * taken stay unbuilt (built[i] 0): the caller builds them itself.
  */
 static void take_part(top_build *t, const char *at, const char *end,
                       int member, const int *owner, unsigned char *built,
@@ -509,14 +518,24 @@ static void take_part(top_build *t, const char *at, const char *end,
         index >= t->n_tasks || owner[index] != member || built[index])
       return;
     subtree *k = &t->tasks[index];
-    size_t node_bytes = (size_t)n_nodes * sizeof(zr_bvh_bin_node);
+    size_t node_bytes = (size_t)n_nodes * sizeof(wire_node);
     if ((size_t)(end - at) < node_bytes ||
         (size_t)(end - at) - node_bytes < k->n * sizeof(uint32_t))
       return;
-    zr_bvh_bin_node *nodes = malloc(node_bytes ? node_bytes : 1);
+    zr_bvh_bin_node *nodes =
+        malloc(n_nodes ? n_nodes * sizeof *nodes : 1);
     if (!nodes)
       return;
-    memcpy(nodes, at, node_bytes);
+    for (size_t j = 0; j < n_nodes; j++) {
+      wire_node w;
+      memcpy(&w, at + j * sizeof w, sizeof w);
+      for (int a = 0; a < 3; a++) {
+        nodes[j].lo[a] = w.lo[a];
+        nodes[j].hi[a] = w.hi[a];
+      }
+      nodes[j].first = w.first;
+      nodes[j].count = w.count;
+    }
     at += node_bytes;
     const char *faces = at;
     at += k->n * sizeof(uint32_t);
@@ -547,15 +566,35 @@ static void take_part(top_build *t, const char *at, const char *end,
   }
 }
 
-/* This member's built tasks, for take_part. */
+/* This member's built tasks, for take_part: for each its index, its
+   node count, the nodes (wire_node) and the face of each of its rows
+   in leaf order.  The size is known first, so the pack is made once
+   (a pack grown by doubling touched fresh pages for every step). */
 static void pack_tasks(const top_build *t, const size_t *which, size_t count,
                        zr__pack *pack) {
+  size_t bytes = 0;
+  for (size_t i = 0; i < count; i++) {
+    const subtree *k = &t->tasks[which[i]];
+    bytes += 2 * sizeof(uint32_t) + k->b.n_nodes * sizeof(wire_node) +
+             k->n * sizeof(uint32_t);
+  }
+  zr__pack_reserve(pack, bytes);
   for (size_t i = 0; i < count; i++) {
     const subtree *k = &t->tasks[which[i]];
     uint32_t index = (uint32_t)which[i], n_nodes = (uint32_t)k->b.n_nodes;
     zr__pack_put(pack, &index, sizeof index);
     zr__pack_put(pack, &n_nodes, sizeof n_nodes);
-    zr__pack_put(pack, k->b.nodes, k->b.n_nodes * sizeof *k->b.nodes);
+    for (size_t j = 0; j < k->b.n_nodes; j++) {
+      const zr_bvh_bin_node *node = &k->b.nodes[j];
+      wire_node w;
+      for (int a = 0; a < 3; a++) {
+        w.lo[a] = (float)node->lo[a];
+        w.hi[a] = (float)node->hi[a];
+      }
+      w.first = node->first;
+      w.count = node->count;
+      zr__pack_put(pack, &w, sizeof w);
+    }
     for (size_t f = 0; f < k->n; f++)
       zr__pack_put(pack, &t->top.boxes[k->first + f].face,
                    sizeof(uint32_t));
