@@ -47,10 +47,12 @@ void zr__bundle_free(zr_bundle *bundle) {
  * is sent only when another rank could not read the same bytes), so
  * the copy is on the path of every multi-rank run: on this project's
  * virtual machine first touching a 4 KiB page costs about 14 us, and
- * bench/peers.sh's 15 MB terrain took 3,700 such faults on rank 0
- * alone.  From one huge page on the room is whole 2 MiB pages advised
- * to huge pages (core/hugepage.h), a fault each; malloc(0) may return
- * NULL, so an empty file still gets one byte.
+ * bench/peers.sh's 15 MB terrain is 3,700 such pages.  From one huge
+ * page on the room is whole 2 MiB pages advised to huge pages
+ * (core/hugepage.h), a fault each.  (Its share of session 13's parse
+ * gain, bench/results/split-2026-12-03-s13.md, was not measured apart
+ * from the mesh's shared build.)  malloc(0) may return NULL, so an
+ * empty file still gets one byte.
  */
 static char *file_room(size_t size) {
   if (size < ZR__HUGE_PAGE || size > SIZE_MAX - ZR__HUGE_PAGE)
