@@ -712,6 +712,13 @@ static int read_scene(run *r) {
   r->bundle.max_file_size = r->opts.file_limit;
   r->files_hash = ZR_STATE_HASH_START;
   double start = zr__par_now(), cpu = zr__par_cpu();
+  /* The ranks build a large mesh's hierarchy together, each its share
+     (zr_context_set_team), when every rank has its context: each
+     parse is then collective, and a rank that could not parse would
+     leave the others waiting.  Ranks that read other bytes part in the
+     parse itself and each builds alone. */
+  if (several && zr__par_agree(r->par, local) == ZR_OK)
+    zr_context_set_team(r->ctx, &r->team);
   if (have_context) {
     /* The library's own reader applies the I/O restrictions. */
     zr_context_set_read_observer(r->ctx,
@@ -754,6 +761,8 @@ static int read_scene(run *r) {
         r->scene = NULL;
         zr_context_set_read_observer(r->ctx, NULL, NULL);
         zr_context_set_reader(r->ctx, zr__bundle_serve_reader, &r->bundle);
+        /* This parse is this rank's alone: the others are done. */
+        zr_context_set_team(r->ctx, NULL);
         local = zr_scene_parse_file(r->ctx, r->opts.input, &r->scene);
         from_bundle = 1;
         if (local != ZR_OK && r->diag.errors_printed == 0)

@@ -465,6 +465,21 @@ typedef struct zr_team {
   void *user;
 } zr_team;
 
+/*
+ * The processes that parse the scenes of ctx together (NULL, the
+ * default: this one alone): each member builds its share of the
+ * hierarchy of every large mesh (mesh, mesh2) and the members exchange
+ * the parts, so the scene is the same bytes as one process alone builds.
+ * Every member calls zr_scene_parse_file or zr_scene_parse_string with
+ * the same text at the same time, each call being collective; members
+ * that read other bytes (a file that differs between hosts) notice it
+ * at their next exchange (every exchange first compares the data it
+ * stands for) and each builds alone from then on, and a member whose
+ * parse fails still takes part until the call returns.  team must
+ * outlive the parses.
+ */
+ZR_API void zr_context_set_team(zr_context *ctx, const zr_team *team);
+
 /* ------------------------------------------------------------------ */
 /* Radiosity                                                          */
 /* ------------------------------------------------------------------ */

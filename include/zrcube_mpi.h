@@ -42,8 +42,8 @@ ZR_MPI_API void zr_mpi_free(zr_mpi *mpi);
 ZR_MPI_API int zr_mpi_rank(const zr_mpi *mpi);
 ZR_MPI_API int zr_mpi_size(const zr_mpi *mpi);
 
-/* The team of the communicator's ranks, for zr_radiosity_params.team
-   and zr_gi_params.team; valid until zr_mpi_free. */
+/* The team of the communicator's ranks, for zr_radiosity_params.team,
+   zr_gi_params.team and zr_context_set_team; valid until zr_mpi_free. */
 ZR_MPI_API const zr_team *zr_mpi_team(const zr_mpi *mpi);
 
 /*

@@ -235,6 +235,56 @@ echo '#declare C = rgb <1, 0, 0>;' >gen.inc
 mpi gen_mpi 0 2 gen.pov $SIZE +Ogen_mpi.png
 same gen.png gen_mpi.png
 
+# The same with a mesh large enough for the ranks to share its build
+# (zr_context_set_team; 16,562 triangles, above obj_mesh.c's 16,384):
+# a rank that finds the old gen_mesh.inc has another mesh, the ranks'
+# keys differ at its build and each builds alone (none may wait for
+# the other), then that rank parses again from rank 0's files.  With
+# the file unchanged the ranks share the build; the picture is one
+# process's in both cases.  -v's "exchanges" counts the team's calls.
+cat >gen_mesh.pov <<'POV'
+#fopen Out "gen_mesh.inc" write
+#write (Out, "#declare A = 3;\n")
+#fclose Out
+#include "gen_mesh.inc"
+#declare N = 92;
+camera { location <46, 60, -40> look_at <46, 0, 46> }
+light_source { <0, 100, -50>, color rgb 1 }
+mesh {
+#declare J = 0;
+#while (J < N - 1)
+  #declare I = 0;
+  #while (I < N - 1)
+    #declare Y00 = A * sin(I * 0.37) * cos(J * 0.21);
+    #declare Y10 = A * sin((I + 1) * 0.37) * cos(J * 0.21);
+    #declare Y01 = A * sin(I * 0.37) * cos((J + 1) * 0.21);
+    #declare Y11 = A * sin((I + 1) * 0.37) * cos((J + 1) * 0.21);
+    triangle { <I, Y00, J>, <I + 1, Y10, J>, <I, Y01, J + 1> }
+    triangle { <I + 1, Y10, J>, <I + 1, Y11, J + 1>, <I, Y01, J + 1> }
+    #declare I = I + 1;
+  #end
+  #declare J = J + 1;
+#end
+  pigment { rgb <0.8, 0.7, 0.5> }
+}
+POV
+echo '#declare A = 1;' >gen_mesh.inc
+serial gen_mesh 0 "$ZRCUBE" gen_mesh.pov $SIZE +Ogen_mesh.png
+echo '#declare A = 1;' >gen_mesh.inc
+mpi gen_mesh_mpi 0 2 gen_mesh.pov $SIZE -v +Ogen_mesh_mpi.png
+same gen_mesh.png gen_mesh_mpi.png
+mpi gen_mesh_mpi3 0 3 gen_mesh.pov $SIZE +WT2 +Ogen_mesh_mpi3.png
+same gen_mesh.png gen_mesh_mpi3.png
+# The mesh without the file: every rank reads the same mesh and the
+# ranks share its build (a key, an exchange of 3 calls, the end).
+sed -e '1,3d' -e 's/^#include "gen_mesh.inc"/#declare A = 3;/' \
+  gen_mesh.pov >mesh_shared.pov
+mpi mesh_shared 0 2 mesh_shared.pov $SIZE -v +Omesh_shared.png
+same gen_mesh.png mesh_shared.png
+calls=$(sed -n 's/.*rank 0: .*exchanges \([0-9]*\);.*/\1/p' mesh_shared.err)
+[ "$calls" = 5 ] ||
+  fail "mesh_shared: rank 0 made '$calls' team calls, expected 5"
+
 # ---- help and version -----------------------------------------------
 
 serial help 0 "$ZRCUBE" --help

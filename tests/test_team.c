@@ -9,6 +9,7 @@
  * radiosity solve and an irradiance cache pretrace shared by 3 members
  * giving the same bytes as one process alone.
  */
+#include <math.h>
 #include <pthread.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -23,6 +24,9 @@
 
 #include "core/hugepage.h"
 #include "core/team.h"
+#include "scene/scene.h"
+#include "scene/shapes.h"
+#include "trace/bvh_wide.h"
 #include "zrcube.h"
 
 #define MEMBERS 3
@@ -400,6 +404,160 @@ static void test_team_cache(void **state) {
   zr_context_free(ctx);
 }
 
+/* ---- a parse shared by the members (zr_context_set_team) ---- */
+
+/* A mesh2 of an n x n grid of vertices rippled by amp, two triangles a
+   cell (n = 100: 19,602 faces, above the size a team shares), after
+   head (text that comes first). */
+static char *grid_text(const char *head, int n, double amp, int meshes) {
+  size_t cap = strlen(head) + (size_t)meshes * (size_t)n * (size_t)n * 80 +
+               100;
+  char *b = malloc(cap);
+  size_t at = (size_t)snprintf(b, cap, "%s", head);
+  for (int m = 0; m < meshes; m++) {
+    at += (size_t)snprintf(b + at, cap - at,
+                           "mesh2 { vertex_vectors { %d", n * n);
+    for (int j = 0; j < n; j++)
+      for (int i = 0; i < n; i++)
+        at += (size_t)snprintf(b + at, cap - at, ", <%d, %.6f, %d>", i,
+                               amp * (m + 1) * sin(i * 0.37) *
+                                   cos(j * 0.21),
+                               j);
+    at += (size_t)snprintf(b + at, cap - at, " } face_indices { %d",
+                           2 * (n - 1) * (n - 1));
+    for (int j = 0; j < n - 1; j++)
+      for (int i = 0; i < n - 1; i++) {
+        int a = j * n + i;
+        at += (size_t)snprintf(b + at, cap - at,
+                               ", <%d,%d,%d>, <%d,%d,%d>", a, a + 1, a + n,
+                               a + 1, a + n + 1, a + n);
+      }
+    at += (size_t)snprintf(b + at, cap - at, " } }\n");
+  }
+  return b;
+}
+
+/* What each member parses, what it got and the scene it parsed. */
+static char *parse_texts[MEMBERS];
+static zr_status parsed[MEMBERS];
+static zr_scene *parsed_scene[MEMBERS];
+
+static zr_status parse_text(const zr_team *team, int threads,
+                            const char *text, zr_scene **out) {
+  zr_context *ctx = NULL;
+  zr_status s = zr_context_new(&ctx);
+  if (s != ZR_OK)
+    return s;
+  zr_context_set_diag(ctx, NULL, NULL);
+  zr_context_set_threads(ctx, threads);
+  zr_context_set_team(ctx, team);
+  s = zr_scene_parse_string(ctx, "<grid>", text, strlen(text), out);
+  zr_context_free(ctx);
+  return s;
+}
+
+static void *parse_member(void *p) {
+  member *m = p;
+  /* Member 1 builds its share with two threads. */
+  parsed[m->rank] = parse_text(&m->team, m->rank == 1 ? 2 : 1,
+                               parse_texts[m->rank],
+                               &parsed_scene[m->rank]);
+  return NULL;
+}
+
+/* Every mesh of a's the same bytes as b's (the same tree, the faces in
+   the same order). */
+static void assert_same_meshes(const zr_scene *a, const zr_scene *b) {
+  assert_int_equal(a->n_primitives, b->n_primitives);
+  for (size_t i = 0; i < a->n_primitives; i++) {
+    assert_int_equal(a->primitives[i]->kind, ZR_OBJ_MESH);
+    const struct zr_mesh *x = a->primitives[i]->u.mesh.data;
+    const struct zr_mesh *y = b->primitives[i]->u.mesh.data;
+    assert_int_equal(x->n_faces, y->n_faces);
+    assert_int_equal(x->n_nodes, y->n_nodes);
+    assert_memory_equal(x->nodes, y->nodes,
+                        x->n_nodes * sizeof(zr_wide_node));
+    assert_memory_equal(x->faces, y->faces, x->n_faces * sizeof *x->faces);
+    assert_memory_equal(x->face_row, y->face_row,
+                        x->n_faces * sizeof *x->face_row);
+  }
+}
+
+/* The members parse texts[r]; each must end as a parse alone of its
+   text ends (failed: that status), and each member must have made
+   calls allgathers. */
+static void run_parse(const char *const texts[MEMBERS], int calls) {
+  hall h;
+  member ms[MEMBERS];
+  hall_init(&h, ms);
+  for (int r = 0; r < MEMBERS; r++)
+    parse_texts[r] = (char *)texts[r];
+  run_members(ms, parse_member);
+  for (int r = 0; r < MEMBERS; r++) {
+    zr_scene *alone = NULL;
+    zr_status s = parse_text(NULL, 1, texts[r], &alone);
+    assert_int_equal(parsed[r], s);
+    if (s == ZR_OK)
+      assert_same_meshes(parsed_scene[r], alone);
+    zr_scene_free(alone);
+    zr_scene_free(parsed_scene[r]);
+    parsed_scene[r] = NULL;
+    assert_int_equal(h.calls[r], calls);
+  }
+  hall_free(&h);
+}
+
+/* Three members parse two large meshes together: each mesh costs a
+   comparison of keys and an exchange of large parts (3 allgathers), the
+   parse's end one more, and every member holds the meshes one process
+   builds alone. */
+static void test_team_parse_meshes(void **state) {
+  (void)state;
+  char *text = grid_text("", 100, 0.8, 2);
+  const char *const texts[MEMBERS] = {text, text, text};
+  run_parse(texts, 2 * (1 + 3) + 1);
+  free(text);
+}
+
+/* A member that read other bytes (its first mesh differs) parts from
+   the others at that mesh's comparison: one call each, then every
+   member builds alone and none waits. */
+static void test_team_parse_other_bytes(void **state) {
+  (void)state;
+  char *same = grid_text("", 100, 0.8, 2);
+  char *other = grid_text("", 100, 0.5, 2);
+  const char *const texts[MEMBERS] = {same, same, other};
+  run_parse(texts, 1);
+  free(same);
+  free(other);
+}
+
+/* A member whose parse fails before the mesh (a syntax error) still
+   makes the parse's last call, which meets the others' comparison for
+   their first mesh: they part there and go on alone. */
+static void test_team_parse_failed_member(void **state) {
+  (void)state;
+  char *good = grid_text("", 100, 0.8, 2);
+  char *bad = grid_text("sphere { <0, 0, 0> 1 \n", 100, 0.8, 2);
+  const char *const texts[MEMBERS] = {good, bad, good};
+  run_parse(texts, 1);
+  free(good);
+  free(bad);
+}
+
+/* A member with a mesh fewer: the first mesh is shared (4 calls), then
+   its end meets the others' second mesh (1 call) and they finish
+   alone. */
+static void test_team_parse_fewer_meshes(void **state) {
+  (void)state;
+  char *two = grid_text("", 100, 0.8, 2);
+  char *one = grid_text("", 100, 0.8, 1);
+  const char *const texts[MEMBERS] = {two, two, one};
+  run_parse(texts, 1 + 3 + 1);
+  free(two);
+  free(one);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_team_exchange),
@@ -407,6 +565,10 @@ int main(void) {
       cmocka_unit_test(test_team_pack_grows_into_huge_pages),
       cmocka_unit_test(test_team_radiosity),
       cmocka_unit_test(test_team_cache),
+      cmocka_unit_test(test_team_parse_meshes),
+      cmocka_unit_test(test_team_parse_other_bytes),
+      cmocka_unit_test(test_team_parse_failed_member),
+      cmocka_unit_test(test_team_parse_fewer_meshes),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

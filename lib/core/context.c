@@ -89,6 +89,10 @@ ZR_API void zr_context_set_threads(zr_context *ctx, int threads) {
   ctx->threads = threads < 1 ? 1 : threads;
 }
 
+ZR_API void zr_context_set_team(zr_context *ctx, const zr_team *team) {
+  ctx->team = team;
+}
+
 ZR_API void zr_context_set_work_limit(zr_context *ctx,
                                       unsigned long long steps) {
   ctx->work_limit = steps;

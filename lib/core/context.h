@@ -41,6 +41,11 @@ struct zr_context {
   int no_scene_writes;             /* zr_context_set_scene_writes(0) */
   int png_level;                   /* zlib level of PNG output, 0 to 9 */
   int threads;                     /* a parse's threads, at least 1 */
+  /* zr_context_set_team: the members that parse together, NULL alone;
+     team_parse is 1 while a parse goes on with them in step (lib/sdl's
+     zr__sdl_team_*), 0 once they have parted or before a parse. */
+  const zr_team *team;
+  int team_parse;
   zr_accel accel;                  /* meshes' backend, never DEFAULT */
   struct zr_budget *budget;        /* the run's memory (core/budget.h) */
   char last_error[1024];

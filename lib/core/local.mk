@@ -18,8 +18,9 @@ tests_test_core_CPPFLAGS = $(TEST_CPPFLAGS)
 tests_test_core_LDADD = $(TEST_LDADD)
 tests_test_core_LDFLAGS = -static
 
-# Teams: the exchange protocol, and a radiosity solve and a cache
-# pretrace shared by members (threads here) against one alone.
+# Teams: the exchange protocol, and a radiosity solve, a cache pretrace
+# and a parse (its meshes' hierarchies) shared by members (threads here)
+# against one alone, with members that part (other bytes, a failure).
 check_PROGRAMS += tests/test_team
 TESTS += tests/test_team
 tests_test_team_SOURCES = tests/test_team.c

@@ -180,27 +180,69 @@ zr_status zr__team_agree(const zr_team *t, zr_status local) {
   return s;
 }
 
+zr_status zr__team_same_key(const zr_team *t, zr_status local,
+                            uint64_t key) {
+  int n = zr__team_size(t);
+  if (n == 1)
+    return local;
+  /* One allgather of the headers, the key where the size goes. */
+  header *heads = malloc((size_t)n * sizeof *heads);
+  size_t *counts = malloc((size_t)n * sizeof *counts);
+  zr_status s = ZR_ENOMEM;
+  if (heads && counts) {
+    header me = {local, key};
+    for (int r = 0; r < n; r++)
+      counts[r] = sizeof(header);
+    s = t->allgather(t->user, &me, heads, counts);
+    bool same = true;
+    for (int r = 0; s == ZR_OK && r < n; r++) {
+      if (heads[r].status < s)
+        s = (zr_status)heads[r].status;
+      same = same && heads[r].bytes == key;
+    }
+    if (s == ZR_OK && !same)
+      s = ZR_EINVAL;
+  }
+  free(heads);
+  free(counts);
+  return s;
+}
+
+/* Room for n more bytes: the capacity doubled from 256 until it holds
+   them (exact, with exact set, from 256 bytes on). */
+static void pack_room(zr__pack *p, size_t n, bool exact) {
+  if (p->nomem || p->cap - p->n >= n)
+    return;
+  if (n > SIZE_MAX / 2 - p->n) {
+    p->nomem = 1;
+    return;
+  }
+  size_t cap = p->cap ? p->cap : 256;
+  if (exact && p->n + n > cap)
+    cap = p->n + n;
+  while (cap - p->n < n)
+    cap *= 2;
+  /* Big packs move into huge pages (room_alloc); below, realloc. */
+  char *b = cap < ROOM_HUGE ? realloc(p->bytes, cap) : room_alloc(&cap);
+  if (b == NULL) {
+    p->nomem = 1;
+    return;
+  }
+  if (cap >= ROOM_HUGE) {
+    if (p->n > 0)
+      memcpy(b, p->bytes, p->n);
+    free(p->bytes);
+  }
+  p->bytes = b;
+  p->cap = cap;
+}
+
+void zr__pack_reserve(zr__pack *p, size_t n) { pack_room(p, n, true); }
+
 void zr__pack_put(zr__pack *p, const void *bytes, size_t n) {
+  pack_room(p, n, false);
   if (p->nomem)
     return;
-  if (p->cap - p->n < n) {
-    size_t cap = p->cap ? p->cap : 256;
-    while (cap - p->n < n)
-      cap *= 2;
-    /* Big packs move into huge pages (room_alloc); below, realloc. */
-    char *b = cap < ROOM_HUGE ? realloc(p->bytes, cap) : room_alloc(&cap);
-    if (b == NULL) {
-      p->nomem = 1;
-      return;
-    }
-    if (cap >= ROOM_HUGE) {
-      if (p->n > 0)
-        memcpy(b, p->bytes, p->n);
-      free(p->bytes);
-    }
-    p->bytes = b;
-    p->cap = cap;
-  }
   memcpy(p->bytes + p->n, bytes, n);
   p->n += n;
 }

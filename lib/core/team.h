@@ -54,6 +54,24 @@ void zr__team_parts_free(zr__team_parts *parts);
 /* The status all members agree on (a status-only exchange). */
 zr_status zr__team_agree(const zr_team *t, zr_status local);
 
+/*
+ * Collective: the status all members agree on, as zr__team_agree, and
+ * whether they all passed the same key (ZR_EINVAL when every member
+ * succeeded but the keys differ).  A computation whose members may have
+ * taken different paths (each member parses the scene files it read
+ * itself: another host's copy may differ) calls it before every
+ * exchange with a key naming the step and its input, and goes on
+ * together only on ZR_OK: every call is an allgather of the same size,
+ * so members that reached different steps still meet in it, learn it
+ * and stop together instead of waiting in exchanges the others never
+ * enter (lib/sdl's parse with a team, zr_context_set_team).
+ */
+zr_status zr__team_same_key(const zr_team *t, zr_status local,
+                            uint64_t key);
+/* The key of a parse's last call (lib/sdl/directive.c); the keys of
+   the steps before it are never 0. */
+#define ZR__TEAM_KEY_DONE ((uint64_t)0)
+
 /* A growable byte buffer for packing a part. */
 typedef struct zr__pack {
   char *bytes;
@@ -62,6 +80,9 @@ typedef struct zr__pack {
 } zr__pack;
 
 void zr__pack_put(zr__pack *p, const void *bytes, size_t n);
+/* Room for n more bytes at once, where the caller knows the size: the
+   pack is then made once instead of grown by doubling. */
+void zr__pack_reserve(zr__pack *p, size_t n);
 void zr__pack_free(zr__pack *p);
 
 /* Reads n bytes at *at from a part ending at end; 0 when it runs out. */

@@ -15,6 +15,8 @@
  */
 #include "par/bundle.h"
 
+#include "core/hugepage.h"
+
 #include <errno.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -39,6 +41,30 @@ void zr__bundle_free(zr_bundle *bundle) {
   zr__bundle_init(bundle);
 }
 
+/*
+ * Room for a file's bytes, freed with free.  Rank 0 of several ranks
+ * copies every file it reads into the bundle while it parses (the copy
+ * is sent only when another rank could not read the same bytes), so
+ * the copy is on the path of every multi-rank run: on this project's
+ * virtual machine first touching a 4 KiB page costs about 14 us, and
+ * bench/peers.sh's 15 MB terrain is 3,700 such pages.  From one huge
+ * page on the room is whole 2 MiB pages advised to huge pages
+ * (core/hugepage.h), a fault each.  (Its share of session 13's parse
+ * gain, bench/results/split-2026-12-03-s13.md, was not measured apart
+ * from the mesh's shared build.)  malloc(0) may return NULL, so an
+ * empty file still gets one byte.
+ */
+static char *file_room(size_t size) {
+  if (size < ZR__HUGE_PAGE || size > SIZE_MAX - ZR__HUGE_PAGE)
+    return malloc(size ? size : 1);
+  size_t room = (size + ZR__HUGE_PAGE - 1) & ~(ZR__HUGE_PAGE - 1);
+  void *p = NULL;
+  if (posix_memalign(&p, ZR__HUGE_PAGE, room) != 0)
+    return NULL;
+  zr__mem_advise_huge(p, room);
+  return p;
+}
+
 zr_status zr__bundle_add(zr_bundle *bundle, const char *path,
                          const char *bytes, size_t size) {
   if (bundle->count == bundle->cap) {
@@ -51,8 +77,7 @@ zr_status zr__bundle_add(zr_bundle *bundle, const char *path,
   }
   zr_bundle_file *f = &bundle->files[bundle->count];
   f->path = strdup(path);
-  /* malloc(0) may return NULL, so an empty file still gets one byte. */
-  f->bytes = malloc(size ? size : 1);
+  f->bytes = file_room(size);
   if (!f->path || !f->bytes) {
     free(f->path);
     free(f->bytes);

@@ -393,8 +393,16 @@ bool zr__sdl_mesh_done(zr_sdl_parser *p, zr_object *o,
     memcpy(m->face_uvs, m->faces, m->n_faces * sizeof *m->faces);
   }
   size_t bad = 0;
-  zr_status s = zr__mesh_build(m, &p->scene->arena,
-                               p->ctx ? p->ctx->threads : 1, &bad);
+  /* With a team (zr_context_set_team) the members in step share the
+     build; once they part, each builds alone for the rest of the
+     parse. */
+  bool team_on = p->ctx && p->ctx->team_parse;
+  zr_status s = zr__mesh_build_team(m, &p->scene->arena,
+                                    p->ctx ? p->ctx->threads : 1,
+                                    p->ctx ? p->ctx->team : NULL, &team_on,
+                                    &bad);
+  if (p->ctx)
+    p->ctx->team_parse = team_on;
   if (s == ZR_ESCENE) {
     zr__sdl_error(p, s, loc, "%s face %zu refers to a vertex, normal, uv "
                   "or texture that is not in its lists", what, bad);

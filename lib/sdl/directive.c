@@ -45,6 +45,7 @@
 #include "core/iopolicy.h"
 #include "core/budget.h"
 #include "core/strbuf.h"
+#include "core/team.h"
 #include "pov-parse.h"
 #include "sdl/sdl.h"
 #include "trace/prepare.h"
@@ -1318,8 +1319,8 @@ static zr_status parse(zr_context *ctx, char *path, char *bytes, size_t size,
   return ZR_OK;
 }
 
-ZR_API zr_status zr_scene_parse_file(zr_context *ctx, const char *path,
-                                     zr_scene **out) {
+static zr_status parse_file(zr_context *ctx, const char *path,
+                            zr_scene **out) {
   if (!out)
     return ZR_EINVAL;
   *out = NULL;
@@ -1344,9 +1345,9 @@ ZR_API zr_status zr_scene_parse_file(zr_context *ctx, const char *path,
   return parse(ctx, copy, bytes, size, true, out);
 }
 
-ZR_API zr_status zr_scene_parse_string(zr_context *ctx, const char *name,
-                                       const char *text, size_t size,
-                                       zr_scene **out) {
+static zr_status parse_string(zr_context *ctx, const char *name,
+                              const char *text, size_t size,
+                              zr_scene **out) {
   if (!out)
     return ZR_EINVAL;
   *out = NULL;
@@ -1363,4 +1364,43 @@ ZR_API zr_status zr_scene_parse_string(zr_context *ctx, const char *name,
     memcpy(bytes, text, size);
   bytes[size] = '\0';
   return parse(ctx, copy, bytes, size, false, out);
+}
+
+/*
+ * A parse with a team (zr_context_set_team) keeps its members in step:
+ * every exchange of the parse (a large mesh's hierarchy, obj_mesh.c) is
+ * preceded by zr__team_same_key with a key naming its data, and the
+ * parse ends with one more call of key ZR__TEAM_KEY_DONE, on every path
+ * out, failures included.  Members that parse the same bytes make the
+ * same calls; a member that read other bytes, or stopped early, meets
+ * the others in a call whose keys differ, and from there each goes on
+ * alone without another call, so none is left waiting.
+ */
+static void team_begin(zr_context *ctx) {
+  if (ctx)
+    ctx->team_parse = zr__team_size(ctx->team) > 1;
+}
+
+static void team_end(zr_context *ctx) {
+  if (ctx && ctx->team_parse)
+    (void)zr__team_same_key(ctx->team, ZR_OK, ZR__TEAM_KEY_DONE);
+  if (ctx)
+    ctx->team_parse = 0;
+}
+
+ZR_API zr_status zr_scene_parse_file(zr_context *ctx, const char *path,
+                                     zr_scene **out) {
+  team_begin(ctx);
+  zr_status s = parse_file(ctx, path, out);
+  team_end(ctx);
+  return s;
+}
+
+ZR_API zr_status zr_scene_parse_string(zr_context *ctx, const char *name,
+                                       const char *text, size_t size,
+                                       zr_scene **out) {
+  team_begin(ctx);
+  zr_status s = parse_string(ctx, name, text, size, out);
+  team_end(ctx);
+  return s;
 }

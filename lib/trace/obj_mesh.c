@@ -35,6 +35,7 @@
 #include "trace/obj_mesh.h"
 
 #include "core/parallel.h"
+#include "core/team.h"
 #include "trace/bvh.h"
 #include "trace/bvh_wide.h"
 #include "trace/embree.h"
@@ -232,30 +233,45 @@ static zr_status new_node(builder *b, size_t *index) {
   return ZR_OK;
 }
 
-/* The node of faces [first, first + n), whose box and centres' box the
-   caller knows (the parent's split found them). */
+/*
+ * The step build_node and build_top share: node index gets the box of
+ * faces [first, first + n), whose box and centres' box the caller knows
+ * (the parent's split found them), and the faces are split; a node that
+ * stays a leaf (left 0 or n) gets its faces here.  The number going
+ * left is returned, with both sides' boxes in out.
+ */
+static size_t split_node(builder *b, size_t index, size_t first, size_t n,
+                         int depth, const fbox *bounds, const fbox *centres,
+                         sides *out) {
+  for (int a = 0; a < 3; a++) {
+    b->nodes[index].lo[a] = bounds->lo[a];
+    b->nodes[index].hi[a] = bounds->hi[a];
+  }
+  size_t left = 0;
+  if (n > LEAF_MAX)
+    left = depth < DEPTH_MAX
+               ? split(b->boxes + first, n, bounds, centres, out)
+               : halve(b->boxes + first, n, LEAF_MAX, out);
+  if (left == 0 || left == n) {
+    b->nodes[index].first = (uint32_t)first;
+    b->nodes[index].count = (uint32_t)n;
+    return left;
+  }
+  b->nodes[index].count = 0;
+  return left;
+}
+
+/* The node of faces [first, first + n) and its subtree, depth first. */
 static zr_status build_node(builder *b, size_t first, size_t n, int depth,
                             const fbox *bounds, const fbox *centres) {
   size_t index;
   zr_status s = new_node(b, &index);
   if (s != ZR_OK)
     return s;
-  for (int a = 0; a < 3; a++) {
-    b->nodes[index].lo[a] = bounds->lo[a];
-    b->nodes[index].hi[a] = bounds->hi[a];
-  }
-  size_t left = 0;
   sides out;
-  if (n > LEAF_MAX)
-    left = depth < DEPTH_MAX
-               ? split(b->boxes + first, n, bounds, centres, &out)
-               : halve(b->boxes + first, n, LEAF_MAX, &out);
-  if (left == 0 || left == n) {
-    b->nodes[index].first = (uint32_t)first;
-    b->nodes[index].count = (uint32_t)n;
+  size_t left = split_node(b, index, first, n, depth, bounds, centres, &out);
+  if (left == 0 || left == n)
     return ZR_OK;
-  }
-  b->nodes[index].count = 0;
   s = build_node(b, first, left, depth + 1, &out.bounds[0],
                  &out.centres[0]);
   if (s != ZR_OK)
@@ -325,36 +341,16 @@ static zr_status build_top(top_build *t, size_t first, size_t n, int depth,
     return s;
   if (n <= t->cutoff)
     return add_task(t, first, n, depth, bounds, centres, index);
-  for (int a = 0; a < 3; a++) {
-    b->nodes[index].lo[a] = bounds->lo[a];
-    b->nodes[index].hi[a] = bounds->hi[a];
-  }
   sides out;
-  size_t left = depth < DEPTH_MAX
-                    ? split(b->boxes + first, n, bounds, centres, &out)
-                    : halve(b->boxes + first, n, LEAF_MAX, &out);
-  if (left == 0 || left == n) {
-    b->nodes[index].first = (uint32_t)first;
-    b->nodes[index].count = (uint32_t)n;
+  size_t left = split_node(b, index, first, n, depth, bounds, centres, &out);
+  if (left == 0 || left == n)
     return ZR_OK;
-  }
-  b->nodes[index].count = 0;
   s = build_top(t, first, left, depth + 1, &out.bounds[0], &out.centres[0]);
   if (s != ZR_OK)
     return s;
   b->nodes[index].first = (uint32_t)b->n_nodes;
   return build_top(t, first + left, n - left, depth + 1, &out.bounds[1],
                    &out.centres[1]);
-}
-
-static void build_tasks(void *user, size_t begin, size_t end, int worker) {
-  (void)worker;
-  top_build *t = user;
-  for (size_t i = begin; i < end; i++) {
-    subtree *k = &t->tasks[i];
-    k->status = build_node(&k->b, k->first, k->n, k->depth, &k->bounds,
-                           &k->centres);
-  }
 }
 
 /* The top array's node i and what it stands for, appended to out in
@@ -386,19 +382,314 @@ static void splice(const top_build *t, const size_t *task_of, size_t i,
 /* Fewer faces than this a thread: the tasks' start-up is not worth it. */
 #define PARALLEL_FACES_MIN 16384
 
+/* The tasks of this member, built by its threads. */
+typedef struct task_list {
+  top_build *t;
+  const size_t *which;
+} task_list;
+
+static void build_listed(void *user, size_t begin, size_t end, int worker) {
+  (void)worker;
+  task_list *l = user;
+  for (size_t i = begin; i < end; i++) {
+    subtree *k = &l->t->tasks[l->which[i]];
+    k->status = build_node(&k->b, k->first, k->n, k->depth, &k->bounds,
+                           &k->centres);
+  }
+}
+
+/* Builds the tasks which[0 .. count) with threads threads. */
+static void build_some(top_build *t, const size_t *which, size_t count,
+                       int threads) {
+  task_list l = {t, which};
+  if (count > 0)
+    zr__parallel_for(threads, count, 1, build_listed, &l, NULL);
+}
+
+/* A task's size and index while they are dealt. */
+typedef struct task_size {
+  size_t n, index;
+} task_size;
+
+/* Largest first; equal sizes by index (a total order: every member
+   sorts alike). */
+static int larger_task(const void *a, const void *b) {
+  const task_size *x = a, *y = b;
+  if (x->n != y->n)
+    return x->n > y->n ? -1 : 1;
+  return x->index < y->index ? -1 : x->index > y->index;
+}
+
+/*
+ * Deals the tasks to the members, owner[i] the member of task i: the
+ * largest first, each to the member with the fewest faces so far (the
+ * lowest rank among equals), so that the members' shares even out
+ * although the tasks' sizes differ (the top splits where the heuristic
+ * says, not in halves).  Every member deals alike from the same tasks.
+ * false when there is no memory for it.
+ */
+static bool deal_tasks(const top_build *t, int members, int *owner) {
+  task_size *order = malloc((t->n_tasks ? t->n_tasks : 1) * sizeof *order);
+  size_t *load = calloc((size_t)members, sizeof *load);
+  bool ok = order && load;
+  if (ok) {
+    for (size_t i = 0; i < t->n_tasks; i++)
+      order[i] = (task_size){t->tasks[i].n, i};
+    qsort(order, t->n_tasks, sizeof *order, larger_task);
+    for (size_t i = 0; i < t->n_tasks; i++) {
+      int m = 0;
+      for (int r = 1; r < members; r++)
+        if (load[r] < load[m])
+          m = r;
+      owner[order[i].index] = m;
+      load[m] += order[i].n;
+    }
+  }
+  free(order);
+  free(load);
+  return ok;
+}
+
+/*
+ * Whether nodes[0 .. n_nodes) is the tree build_node makes of the task
+ * k's faces: depth first, an inner node's left child right after it and
+ * its right child (first) after the left subtree, every leaf's faces
+ * the next run of the task's faces, the runs covering them all, and no
+ * node deeper than the tracer's stacks allow (STACK_MAX).  A part
+ * another member sent is taken only so, so that whatever arrives the
+ * tree cannot send the tracer or the collapse outside its arrays.
+ */
+static bool check_node(const zr_bvh_bin_node *nodes, size_t n_nodes,
+                       size_t j, int depth, size_t *next_node,
+                       size_t *next_face, size_t end_face) {
+  if (j != *next_node || j >= n_nodes || depth > STACK_MAX)
+    return false;
+  (*next_node)++;
+  const zr_bvh_bin_node *node = &nodes[j];
+  if (node->count > 0) {
+    if (node->first != *next_face || node->count > end_face - *next_face)
+      return false;
+    *next_face += node->count;
+    return true;
+  }
+  if (!check_node(nodes, n_nodes, j + 1, depth + 1, next_node, next_face,
+                  end_face) ||
+      node->first != *next_node)
+    return false;
+  return check_node(nodes, n_nodes, node->first, depth + 1, next_node,
+                    next_face, end_face);
+}
+
+static bool subtree_ok(const subtree *k, const zr_bvh_bin_node *nodes,
+                       size_t n_nodes) {
+  size_t next_node = 0, next_face = k->first;
+  return n_nodes > 0 &&
+         check_node(nodes, n_nodes, 0, k->depth, &next_node, &next_face,
+                    k->first + k->n) &&
+         next_node == n_nodes && next_face == k->first + k->n;
+}
+
+/*
+ * A node as it travels: its box in single precision, which holds it
+ * exactly (split_node sets a node's box from the faces' float boxes
+ * alone), and its first and count; 32 bytes against the 56 of a
+ * zr_bvh_bin_node.
+ */
+typedef struct wire_node {
+  float lo[3], hi[3];
+  uint32_t first, count;
+} wire_node;
+
+/*
+ * Another member's built tasks (part, as pack_tasks wrote it) taken
+ * into t: a task is taken when it is one dealt to that member, its tree
+ * passes subtree_ok and its faces are those of the task's rows here
+ * (mark: a byte per face, all 0 on entry and on return).  Tasks not
+ * taken stay unbuilt (built[i] 0): the caller builds them itself.
+ */
+static void take_part(top_build *t, const char *at, const char *end,
+                      int member, const int *owner, unsigned char *built,
+                      unsigned char *mark, size_t n_faces) {
+  face_box *boxes = t->top.boxes;
+  for (;;) {
+    uint32_t index, n_nodes;
+    if (!zr__unpack(&at, end, &index, sizeof index) ||
+        !zr__unpack(&at, end, &n_nodes, sizeof n_nodes) ||
+        index >= t->n_tasks || owner[index] != member || built[index])
+      return;
+    subtree *k = &t->tasks[index];
+    size_t node_bytes = (size_t)n_nodes * sizeof(wire_node);
+    if ((size_t)(end - at) < node_bytes ||
+        (size_t)(end - at) - node_bytes < k->n * sizeof(uint32_t))
+      return;
+    zr_bvh_bin_node *nodes =
+        malloc(n_nodes ? n_nodes * sizeof *nodes : 1);
+    if (!nodes)
+      return;
+    for (size_t j = 0; j < n_nodes; j++) {
+      wire_node w;
+      memcpy(&w, at + j * sizeof w, sizeof w);
+      for (int a = 0; a < 3; a++) {
+        nodes[j].lo[a] = w.lo[a];
+        nodes[j].hi[a] = w.hi[a];
+      }
+      nodes[j].first = w.first;
+      nodes[j].count = w.count;
+    }
+    at += node_bytes;
+    const char *faces = at;
+    at += k->n * sizeof(uint32_t);
+    bool ok = subtree_ok(k, nodes, n_nodes);
+    for (size_t i = 0; i < k->n; i++)
+      mark[boxes[k->first + i].face] = 1;
+    for (size_t i = 0; ok && i < k->n; i++) {
+      uint32_t f;
+      memcpy(&f, faces + i * sizeof f, sizeof f);
+      ok = f < n_faces && mark[f];
+      if (ok)
+        mark[f] = 0;
+    }
+    /* The marks left (of a part refused half way) are cleared. */
+    for (size_t i = 0; i < k->n; i++)
+      mark[boxes[k->first + i].face] = 0;
+    if (!ok) {
+      free(nodes);
+      continue;
+    }
+    for (size_t i = 0; i < k->n; i++)
+      memcpy(&boxes[k->first + i].face, faces + i * sizeof(uint32_t),
+             sizeof(uint32_t));
+    k->b.nodes = nodes;
+    k->b.n_nodes = k->b.cap_nodes = n_nodes;
+    k->status = ZR_OK;
+    built[index] = 1;
+  }
+}
+
+/* This member's built tasks, for take_part: for each its index, its
+   node count, the nodes (wire_node) and the face of each of its rows
+   in leaf order.  The size is known first, so the pack is made once
+   (a pack grown by doubling touched fresh pages for every step). */
+static void pack_tasks(const top_build *t, const size_t *which, size_t count,
+                       zr__pack *pack) {
+  size_t bytes = 0;
+  for (size_t i = 0; i < count; i++) {
+    const subtree *k = &t->tasks[which[i]];
+    bytes += 2 * sizeof(uint32_t) + k->b.n_nodes * sizeof(wire_node) +
+             k->n * sizeof(uint32_t);
+  }
+  zr__pack_reserve(pack, bytes);
+  for (size_t i = 0; i < count; i++) {
+    const subtree *k = &t->tasks[which[i]];
+    uint32_t index = (uint32_t)which[i], n_nodes = (uint32_t)k->b.n_nodes;
+    zr__pack_put(pack, &index, sizeof index);
+    zr__pack_put(pack, &n_nodes, sizeof n_nodes);
+    for (size_t j = 0; j < k->b.n_nodes; j++) {
+      const zr_bvh_bin_node *node = &k->b.nodes[j];
+      wire_node w;
+      for (int a = 0; a < 3; a++) {
+        w.lo[a] = (float)node->lo[a];
+        w.hi[a] = (float)node->hi[a];
+      }
+      w.first = node->first;
+      w.count = node->count;
+      zr__pack_put(pack, &w, sizeof w);
+    }
+    for (size_t f = 0; f < k->n; f++)
+      zr__pack_put(pack, &t->top.boxes[k->first + f].face,
+                   sizeof(uint32_t));
+  }
+}
+
+/*
+ * build_top's tasks, built by this process's threads or shared with a
+ * team's members.  With a team (several members, in step) the tasks are
+ * dealt by deal_tasks, each member builds its own with its threads, and
+ * one zr__team_exchange gives every member the others' (their nodes and
+ * the order of their faces), which take_part checks before it takes
+ * them; any task not received that way (an exchange that failed, a part
+ * refused) is built here, so the tree is build_node's in every case.
+ * *team_on becomes false when the exchange failed: the members all see
+ * it fail alike.
+ */
+static zr_status build_tasks_shared(top_build *t, zr_status top,
+                                    size_t n_faces, int threads,
+                                    const zr_team *team, bool *team_on) {
+  int members = zr__team_size(team), me = zr__team_rank(team);
+  int *owner = calloc(t->n_tasks ? t->n_tasks : 1, sizeof *owner);
+  unsigned char *built = calloc(t->n_tasks ? t->n_tasks : 1, 1);
+  size_t *which = malloc((t->n_tasks ? t->n_tasks : 1) * sizeof *which);
+  zr_status s = top != ZR_OK              ? top
+                : owner && built && which ? ZR_OK
+                                          : ZR_ENOMEM;
+  if (s == ZR_OK && members > 1 && !deal_tasks(t, members, owner))
+    s = ZR_ENOMEM;
+  size_t count = 0;
+  for (size_t i = 0; s == ZR_OK && i < t->n_tasks; i++)
+    if (owner[i] == me)
+      which[count++] = i;
+  if (s == ZR_OK)
+    build_some(t, which, count, threads);
+  for (size_t i = 0; s == ZR_OK && i < count; i++) {
+    s = t->tasks[which[i]].status;
+    built[which[i]] = 1;
+  }
+  if (members > 1) {
+    /* Every member in step comes here once a mesh, failed or not. */
+    zr__pack pack = {0};
+    if (s == ZR_OK)
+      pack_tasks(t, which, count, &pack);
+    zr_status local = s == ZR_OK && pack.nomem ? ZR_ENOMEM : s;
+    zr__team_parts parts;
+    zr_status e = zr__team_exchange(team, local, pack.bytes, pack.n, &parts);
+    zr__pack_free(&pack);
+    unsigned char *mark = e == ZR_OK ? calloc(n_faces ? n_faces : 1, 1)
+                                     : NULL;
+    for (int r = 0; mark && r < members; r++)
+      if (r != me)
+        take_part(t, parts.bytes + parts.offset[r],
+                  parts.bytes + parts.offset[r + 1], r, owner, built, mark,
+                  n_faces);
+    free(mark);
+    zr__team_parts_free(&parts);
+    if (e != ZR_OK)
+      *team_on = false;
+  }
+  /* What no member delivered is built here. */
+  count = 0;
+  for (size_t i = 0; s == ZR_OK && i < t->n_tasks; i++)
+    if (!built[i])
+      which[count++] = i;
+  if (s == ZR_OK)
+    build_some(t, which, count, threads);
+  for (size_t i = 0; s == ZR_OK && i < count; i++)
+    s = t->tasks[which[i]].status;
+  free(owner);
+  free(built);
+  free(which);
+  return s;
+}
+
 static zr_status build_parallel(builder *b, size_t n, int threads,
+                                const zr_team *team, bool *team_on,
                                 const fbox *bounds, const fbox *centres) {
   top_build t;
   memset(&t, 0, sizeof t);
   t.top.boxes = b->boxes;
-  /* Some 8 tasks a thread, so that unequal halves even out. */
-  t.cutoff = n / (8 * (size_t)threads);
+  /* Some 8 tasks a thread, so that unequal halves even out; with a
+     team some 8 a member, whatever its threads, so that every member
+     makes the same tasks (a rank's default threads depend on its
+     host). */
+  int members = zr__team_size(team);
+  t.cutoff = n / (8 * (size_t)(members > 1 ? members : threads));
   if (t.cutoff < LEAF_SAH_MAX)
     t.cutoff = LEAF_SAH_MAX;
   zr_status s = build_top(&t, 0, n, 0, bounds, centres);
   size_t *task_of = NULL;
+  /* With a team the exchange is reached whatever build_top did. */
+  if (s == ZR_OK || members > 1)
+    s = build_tasks_shared(&t, s, n, threads, team, team_on);
   if (s == ZR_OK) {
-    zr__parallel_for(threads, t.n_tasks, 1, build_tasks, &t, NULL);
     size_t total = t.top.n_nodes;
     for (size_t i = 0; i < t.n_tasks && s == ZR_OK; i++) {
       s = t.tasks[i].status;
@@ -424,6 +715,40 @@ static zr_status build_parallel(builder *b, size_t n, int threads,
   free(t.top.nodes);
   free(task_of);
   return s;
+}
+
+/*
+ * The key of a mesh's build in a team's step (zr__team_same_key): a
+ * hash of the faces' boxes in their order and their number, which is
+ * all the tree depends on, so members whose keys agree build parts of
+ * one tree.  Four independent lanes of multiply and xor over the boxes'
+ * 64-bit words, so the products do not wait on each other.  Never
+ * ZR__TEAM_KEY_DONE (the lowest bit is set).
+ */
+static uint64_t boxes_key(const face_box *boxes, size_t n) {
+  const uint64_t k = 0x9e3779b97f4a7c15u;
+  uint64_t lane[4] = {n, k, ~(uint64_t)n, 0x5bd1e9955bd1e995u};
+  const unsigned char *bytes = (const unsigned char *)boxes;
+  size_t words = n * sizeof *boxes / 8, i = 0;
+  for (; i + 4 <= words; i += 4)
+    for (int j = 0; j < 4; j++) {
+      uint64_t w;
+      memcpy(&w, bytes + (i + (size_t)j) * 8, 8);
+      lane[j] = (lane[j] ^ w) * k;
+      lane[j] ^= lane[j] >> 29;
+    }
+  for (; i < words; i++) {
+    uint64_t w;
+    memcpy(&w, bytes + i * 8, 8);
+    lane[0] = (lane[0] ^ w) * k;
+    lane[0] ^= lane[0] >> 29;
+  }
+  uint64_t tail = 0;
+  memcpy(&tail, bytes + words * 8, n * sizeof *boxes - words * 8);
+  uint64_t h = (lane[0] ^ tail) * k;
+  for (int j = 1; j < 4; j++)
+    h = ((h ^ (h >> 31)) + lane[j]) * k;
+  return (h ^ (h >> 32)) | 1;
 }
 
 /* The faces' boxes, computed in BOX_PARTS parts of the faces (a part
@@ -502,6 +827,14 @@ static bool check_indices(const uint32_t (*rows)[3], size_t n, size_t limit,
 
 zr_status zr__mesh_build(struct zr_mesh *mesh, zr_arena *arena,
                          int threads, size_t *bad_face) {
+  bool team_on = false;
+  return zr__mesh_build_team(mesh, arena, threads, NULL, &team_on,
+                             bad_face);
+}
+
+zr_status zr__mesh_build_team(struct zr_mesh *mesh, zr_arena *arena,
+                              int threads, const zr_team *team,
+                              bool *team_on, size_t *bad_face) {
   size_t n = mesh->n_faces;
   *bad_face = 0;
   if (!check_indices((const uint32_t(*)[3])mesh->faces, n,
@@ -548,10 +881,20 @@ zr_status zr__mesh_build(struct zr_mesh *mesh, zr_arena *arena,
   }
   fbox bounds, centres;
   bounds_of(boxes, n, &bounds, &centres);
-  if (threads > 1 && n >= PARALLEL_FACES_MIN) {
+  /* A team shares the build of a mesh as large as threads would, once
+     its members agree that they hold the same faces; else each builds
+     alone from here on (zr__team_same_key). */
+  const zr_team *shared = NULL;
+  if (*team_on && zr__team_size(team) > 1 && n >= PARALLEL_FACES_MIN) {
+    if (zr__team_same_key(team, ZR_OK, boxes_key(boxes, n)) == ZR_OK)
+      shared = team;
+    else
+      *team_on = false;
+  }
+  if (shared || (threads > 1 && n >= PARALLEL_FACES_MIN)) {
     if ((size_t)threads > n / PARALLEL_FACES_MIN)
       threads = (int)(n / PARALLEL_FACES_MIN);
-    s = build_parallel(&b, n, threads, &bounds, &centres);
+    s = build_parallel(&b, n, threads, shared, team_on, &bounds, &centres);
   } else {
     s = build_node(&b, 0, n, 0, &bounds, &centres);
   }

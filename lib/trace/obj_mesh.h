@@ -45,6 +45,16 @@ bool zr__mesh_face_plane(const struct zr_mesh *mesh, size_t f, zr_vec3 org,
    threads threads build it; the tree is the same for any number. */
 zr_status zr__mesh_build(struct zr_mesh *mesh, zr_arena *arena,
                          int threads, size_t *bad_face);
+/* The same with the members of a team (zr_context_set_team) while
+   *team_on: each builds its share of a large mesh's subtrees and they
+   exchange them, every member ending with the tree one process builds
+   alone.  *team_on becomes false when the members parted (their meshes
+   differ, or one failed): every member learns it in the same call, and
+   none calls the team again in that parse (lib/sdl/directive.c). */
+struct zr_team;
+zr_status zr__mesh_build_team(struct zr_mesh *mesh, zr_arena *arena,
+                              int threads, const struct zr_team *team,
+                              bool *team_on, size_t *bad_face);
 
 /* The nearest two crossings with tmin < t < tmax, nearest first. */
 int zr__mesh_crossings(const struct zr_mesh *mesh, zr_vec3 org, zr_vec3 dir,
