@@ -88,16 +88,16 @@ static void vreport(zr_sdl_parser *p, zr_diag_level level, zr_status status,
   memset(&place, 0, sizeof place);
   bool placed = loc && loc->file >= 0 && (size_t)loc->file < p->n_files;
   if (placed) {
-    const zr_sdl_file *f = &p->files[loc->file];
+    zr_sdl_file *f = &p->files[loc->file];
     place.file = f->path;
     place.line = loc->line;
     place.column = loc->column;
     place.source_line = zr__sdl_file_line(f, loc->line,
                                           &place.source_line_len);
     place.caret_len = loc->length > 0 ? loc->length : 1;
-    if (loc->line >= 1 && (size_t)loc->line <= f->n_lines &&
-        loc->column >= 1) {
-      place.offset = f->line_starts[loc->line - 1] + (size_t)loc->column - 1;
+    size_t start;
+    if (loc->column >= 1 && zr__sdl_file_line_start(f, loc->line, &start)) {
+      place.offset = start + (size_t)loc->column - 1;
       place.length = loc->length > 0 ? (size_t)loc->length : 0;
     }
     chain_notes(p, loc->file, &notes);
@@ -1129,6 +1129,9 @@ int zr__sdl_next(zr_sdl_lexval *val, zr_sdl_loc *loc, zr_sdl_parser *p) {
     }
     case T_NUMBER:
       v.num = t->v.num;
+      return deliver(p, t->kind, &v, &tl, NULL, val, loc);
+    case T_SPHERE_RUN:
+      v.sphere = t->v.sphere;
       return deliver(p, t->kind, &v, &tl, NULL, val, loc);
     case T_IDENTIFIER:
       break;
