@@ -735,6 +735,9 @@ static zr_status lex(zr_sdl_file *f, int file_index, char *path,
   f->size = size;
   zr__arena_init(&f->strings);
   f->strings.budget = budget;
+  /* A big file's strings arena holds its spheres' numbers (sphere_run),
+     32 bytes each: its blocks are filled in at once (core/arena.h). */
+  f->strings.populate = size >= 256 * 1024;
   f->budget = budget;
   if (!zr__budget_charge(budget, size)) {
     snprintf(err, err_size, "the file's %zu bytes do not fit in the "
