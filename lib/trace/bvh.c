@@ -179,23 +179,29 @@ int zr__sah_sweep(const zr_sah_bin bins[ZR_SAH_BINS], size_t n,
                   double *cost) {
   /* Sweep from the right to know the right side's cost of every split,
      then from the left to find the cheapest. */
-  double right_cost[ZR_SAH_BINS];
+  double right_cost[ZR_SAH_BINS] = {0};
   box3 acc;
   box_empty(&acc);
   size_t acc_n = 0;
+  /* A split k after an empty bin k - 1 has the sides, so the cost, of
+     split k - 1, which the strict < below keeps: only the splits after
+     a bin that holds something are costed (the same best k and cost;
+     a node of a few primitives has most of its bins empty). */
   for (int k = ZR_SAH_BINS - 1; k > 0; k--) {
     if (bins[k].count)
       sweep_grow(&acc, bins[k].lo, bins[k].hi);
     acc_n += bins[k].count;
-    right_cost[k] = acc_n ? box_area(&acc) * (double)acc_n : 0.0;
+    if (bins[k - 1].count)
+      right_cost[k] = acc_n ? box_area(&acc) * (double)acc_n : 0.0;
   }
   double best = INFINITY;
   int best_k = -1;
   box_empty(&acc);
   acc_n = 0;
   for (int k = 1; k < ZR_SAH_BINS; k++) {
-    if (bins[k - 1].count)
-      sweep_grow(&acc, bins[k - 1].lo, bins[k - 1].hi);
+    if (!bins[k - 1].count)
+      continue;
+    sweep_grow(&acc, bins[k - 1].lo, bins[k - 1].hi);
     acc_n += bins[k - 1].count;
     if (acc_n == 0 || acc_n == n)
       continue;
@@ -467,9 +473,14 @@ zr_status zr__bvh_build(zr_scene *scene, zr_context *ctx) {
   size_t nodes_at = (items_size + n_room + 63) & ~(size_t)63;
   if (n_room <= (SIZE_MAX / 4 - nodes_at) / sizeof *b.nodes) {
     b.cap_nodes = 2 * n_room - 1;
-    b.scratch = malloc(nodes_at + b.cap_nodes * sizeof *b.nodes);
-    /* The items and bins are all written: filled in at once. */
-    zr__mem_populate(b.scratch, nodes_at);
+    /* From a megabyte of items on, huge pages as before (a huge page
+       costs about what 15 small first touches do); below, the items and
+       bins, all written, are filled in at once. */
+    size_t room = nodes_at + b.cap_nodes * sizeof *b.nodes;
+    b.scratch = nodes_at >= ZR__HUGE_FROM ? zr__huge_alloc(room)
+                                          : malloc(room);
+    if (b.scratch && nodes_at < ZR__HUGE_FROM)
+      zr__mem_populate(b.scratch, nodes_at);
   }
   if (b.scratch) {
     b.items = b.scratch;
