@@ -185,6 +185,7 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %union {
   double num;
   const char *str;
+  const double *sphere;
   zr_sdl_decl_name decl;
   zr_sdl_value value;
   zr_sdl_expr expr;
@@ -238,7 +239,7 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
    file's bytes as one token each (lib/sdl/tokens.c); the value points
    at the vectors in the file. */
 %token <str> T_TRIANGLE_RUN "triangle with its corners"
-%token <str> T_SPHERE_RUN "sphere with its centre and radius"
+%token <sphere> T_SPHERE_RUN "sphere with its centre and radius"
 %token <str> T_SMOOTH_TRIANGLE_RUN "smooth_triangle with its corners"
 %token <decl> T_DECL_NAME "identifier"
 %token <value> T_FLOAT_ID "float identifier"
@@ -1566,7 +1567,7 @@ object_head:
 | T_SPHERE_RUN
     {
       TRY($$ = zr__sdl_object_new(p, ZR_OBJ_SPHERE, &@1));
-      TRY(zr__sdl_sphere_run(p, $1, &@1, $$));
+      zr__sdl_sphere_run($1, $$);
       zr__sdl_sphere_radius(p, $$, &@1);
     }
 | T_BOX '{' expr comma expr
@@ -4104,8 +4105,10 @@ int zr__pov_lex(ZR__POV_STYPE *lval, zr_sdl_loc *lloc, zr_sdl_parser *p) {
   case T_UNSUPPORTED:
   case T_TRIANGLE_RUN:
   case T_SMOOTH_TRIANGLE_RUN:
-  case T_SPHERE_RUN:
     lval->str = v.str;
+    break;
+  case T_SPHERE_RUN:
+    lval->sphere = v.sphere;
     break;
   case T_DECL_NAME:
     lval->decl = v.decl;

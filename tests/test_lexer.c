@@ -8,6 +8,8 @@
 #include <stdint.h>
 #include <cmocka.h>
 
+#include <dirent.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -286,6 +288,161 @@ static void test_lexer_token_array_estimate(void **state) {
   zr__sdl_file_free(&free_run.file);
 }
 
+/* Whether two token arrays are the same tokens: kind, place, length
+   and value (numbers bit for bit, names and strings by their text, a
+   mesh2 run by its bytes and count). */
+static void assert_same_tokens(const zr_sdl_file *a, const zr_sdl_file *b,
+                               const char *what) {
+  if (a->n_tokens != b->n_tokens)
+    fail_msg("%s: %zu tokens against %zu", what, a->n_tokens, b->n_tokens);
+  for (size_t i = 0; i < a->n_tokens; i++) {
+    const zr_sdl_token *s = &a->tokens[i], *t = &b->tokens[i];
+    if (s->kind != t->kind || s->line != t->line ||
+        s->column != t->column || s->length != t->length)
+      fail_msg("%s: token %zu: kind %d at %d:%d (%d) against kind %d at "
+               "%d:%d (%d)", what, i, s->kind, s->line, s->column,
+               s->length, t->kind, t->line, t->column, t->length);
+    if (s->kind == T_NUMBER) {
+      assert_memory_equal(&s->v.num, &t->v.num, sizeof s->v.num);
+    } else if (s->kind == ZR_SDL_NUMBER_LIST) {
+      assert_int_equal(s->v.list->begin, t->v.list->begin);
+      assert_int_equal(s->v.list->end, t->v.list->end);
+      assert_int_equal(s->v.list->n_items, t->v.list->n_items);
+    } else if (s->kind == T_SPHERE_RUN) {
+      assert_memory_equal(s->v.sphere, t->v.sphere, 4 * sizeof(double));
+    } else if (s->kind == T_TRIANGLE_RUN ||
+               s->kind == T_SMOOTH_TRIANGLE_RUN) {
+      /* They point into each file's own copy of the bytes. */
+      assert_int_equal(s->v.str - a->bytes, t->v.str - b->bytes);
+    } else if (!s->v.str || !t->v.str) {
+      if (s->v.str != t->v.str)
+        fail_msg("%s: token %zu: one value is missing", what, i);
+    } else if (strcmp(s->v.str, t->v.str) != 0) {
+      fail_msg("%s: token %zu: '%s' against '%s'", what, i, s->v.str,
+               t->v.str);
+    }
+  }
+}
+
+/* Lexes size bytes both ways (the lexer's own words and braces after
+   a run, and the scanner alone) and asserts the same tokens, or the
+   same error at the same place. */
+static void assert_lexed_alike(const char *bytes, size_t size,
+                               const char *what) {
+  zr_sdl_file quick, plain;
+  zr_sdl_loc quick_at, plain_at;
+  char quick_err[200] = "", plain_err[200] = "";
+  char *b1 = malloc(size + 1), *b2 = malloc(size + 1);
+  char *p1 = strdup(what), *p2 = strdup(what);
+  assert_true(b1 && b2 && p1 && p2);
+  memcpy(b1, bytes, size);
+  memcpy(b2, bytes, size);
+  b1[size] = b2[size] = '\0';
+  zr_status s1 = zr__sdl_file_lex(&quick, 0, p1, b1, size, &quick_at,
+                                  quick_err, sizeof quick_err);
+  zr_status s2 = zr__sdl_file_lex_scanner_only(
+      &plain, 0, p2, b2, size, &plain_at, plain_err, sizeof plain_err);
+  if (s1 != s2)
+    fail_msg("%s: status %d against %d (%s / %s)", what, s1, s2, quick_err,
+             plain_err);
+  if (s1 == ZR_OK) {
+    assert_same_tokens(&quick, &plain, what);
+  } else {
+    assert_string_equal(quick_err, plain_err);
+    assert_int_equal(quick_at.line, plain_at.line);
+    assert_int_equal(quick_at.column, plain_at.column);
+  }
+  zr__sdl_file_free(&quick);
+  zr__sdl_file_free(&plain);
+}
+
+/* Every .pov and .inc file of dir and the folders below it, lexed both
+   ways; returns how many. */
+static int lex_tree_alike(const char *dir) {
+  DIR *d = opendir(dir);
+  if (!d)
+    return 0;
+  int n = 0;
+  struct dirent *e;
+  while ((e = readdir(d)) != NULL) {
+    if (e->d_name[0] == '.')
+      continue;
+    char path[4096];
+    snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+    size_t len = strlen(e->d_name);
+    bool scene = len > 4 && (strcmp(e->d_name + len - 4, ".pov") == 0 ||
+                             strcmp(e->d_name + len - 4, ".inc") == 0);
+    FILE *f = scene ? fopen(path, "rb") : NULL;
+    if (!f) {
+      n += lex_tree_alike(path); /* a folder, or nothing */
+      continue;
+    }
+    char *bytes = NULL;
+    size_t size = 0, room = 0, got;
+    do {
+      if (size == room) {
+        room = room ? 2 * room : 65536;
+        bytes = realloc(bytes, room);
+        assert_non_null(bytes);
+      }
+      got = fread(bytes + size, 1, room - size, f);
+      size += got;
+    } while (got > 0);
+    fclose(f);
+    assert_lexed_alike(bytes, size, path);
+    free(bytes);
+    n++;
+  }
+  closedir(d);
+  return n;
+}
+
+/* After a run (a sphere's, a triangle's, a mesh2 list's) the lexer
+   takes plain words and braces itself while the scanner holds nothing
+   read ahead: the tokens must be the scanner's, whatever follows
+   (tokens.c, quick_token).  Made cases for each way out of that path,
+   then every scene and include file at hand: POV-Ray's includes
+   (povray-includes), this tree's scenes and, when present, the stock
+   scenes. */
+static void test_lexer_quick_words_same_as_scanner(void **state) {
+  (void)state;
+  static const char *const cases[] = {
+      "sphere { <1, 2, 3>, 0.5 texture { Ball } }\n"
+      "sphere { <4, 5, 6>, 1 texture { Ball } }\n",
+      "sphere { <1, 2, 3>, 0.5 }sphere{<1,2,3>,1}",
+      /* a comment, a directive, a string, a number, an operator */
+      "sphere { <1,2,3>, 1 } // done\nsphere { <1,2,3>, 1 }/* c */ }",
+      "sphere { <1,2,3>, 1 }\n#declare A = 1;\nsphere { <1,2,3>, 1 } #end",
+      "sphere { <1,2,3>, 1 texture { T } } \"s\" 1.5e3 x.y <1> 2*3",
+      "sphere { <1,2,3>, 1 pigment { rgb 1 } scale 2 translate -x }",
+      "sphere { <1,2,3>, 1 }\r\n\tName_2 _x y9 {}}{ ",
+      "sphere { <1,2,3>, 1 } word# #declare",
+      "sphere { <1,2,3>, 1 } /* unterminated",
+      "sphere { <1,2,3>, 1 } \"unterminated",
+      "sphere { <1,2,3>, 1 } sphere { <1,2,3>, 1 } @",
+      "mesh { triangle { <0,0,0>, <1,0,0>, <0,1,0> } triangle { <0,0,0>, "
+      "<1,0,0>, <0,1,0> } texture { T } inside_vector y }",
+      "mesh2 { vertex_vectors { 2, <0,0,0>, <1,1,1> } face_indices { 1, "
+      "<0,1,1> } Name }",
+      "",
+      "  \n ",
+      "word",
+      "sphere { <1,2,3>, 1 } \xc3\xa9",
+  };
+  for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
+    char what[32];
+    snprintf(what, sizeof what, "case %zu", i);
+    assert_lexed_alike(cases[i], strlen(cases[i]), what);
+  }
+  int files = lex_tree_alike("/usr/share/povray-3.7/include");
+  const char *srcdir = getenv("srcdir");
+  char scenes[4096];
+  snprintf(scenes, sizeof scenes, "%s/scenes", srcdir ? srcdir : ".");
+  files += lex_tree_alike(scenes);
+  files += lex_tree_alike("/usr/share/povray-3.7/scenes");
+  print_message("%d files lexed both ways\n", files);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_lexer_tokens_and_places),
@@ -298,6 +455,7 @@ int main(void) {
       cmocka_unit_test(test_lexer_bad_characters),
       cmocka_unit_test(test_lexer_keyword_table),
       cmocka_unit_test(test_lexer_token_array_estimate),
+      cmocka_unit_test(test_lexer_quick_words_same_as_scanner),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

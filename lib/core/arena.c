@@ -10,6 +10,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/mman.h>
 
 struct zr_arena_block {
   zr_arena_block *next;
@@ -31,8 +32,10 @@ void zr__arena_free(zr_arena *a) {
   }
   zr__budget_release(a->budget, a->charged);
   struct zr_budget *budget = a->budget;
+  bool populate = a->populate;
   zr__arena_init(a);
   a->budget = budget;
+  a->populate = populate;
 }
 
 /* size rounded up to the arena's alignment (at least one unit). */
@@ -67,6 +70,8 @@ void *zr__arena_alloc_raw(zr_arena *a, size_t size) {
     if (a->budget)
       a->charged += sizeof *b + cap;
     zr__mem_huge_pages(b->data, cap);
+    if (a->populate && !huge)
+      zr__mem_populate(b->data, cap);
     b->size = cap;
     b->used = 0;
     /* A large one-off block goes behind the head so the head keeps its
@@ -83,6 +88,19 @@ void *zr__arena_alloc_raw(zr_arena *a, size_t size) {
   b->used += size;
   a->used += size;
   return p;
+}
+
+void zr__mem_populate(void *p, size_t size) {
+#ifdef MADV_POPULATE_WRITE
+  const uintptr_t mask = 4095;
+  uintptr_t lo = ((uintptr_t)p + mask) & ~mask;
+  uintptr_t hi = ((uintptr_t)p + size) & ~mask;
+  if (p && hi > lo)
+    (void)madvise((void *)lo, hi - lo, MADV_POPULATE_WRITE); /* a hint */
+#else
+  (void)p;
+  (void)size;
+#endif
 }
 
 void zr__mem_huge_pages(void *p, size_t size) {

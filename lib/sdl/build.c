@@ -71,22 +71,9 @@ void zr__sdl_sphere_radius(zr_sdl_parser *p, const zr_object *sphere,
                     "inside out)", r, -r);
 }
 
-bool zr__sdl_sphere_run(zr_sdl_parser *p, const char *run,
-                        const zr_sdl_loc *loc, zr_object *sphere) {
-  /* The lexer read this "<x, y, z>, r" once; the same reader takes it
-     again (numlist.c). */
-  const zr_sdl_file *f = &p->files[loc->file];
-  zr_sdl_numreader r = {f->bytes, (size_t)(run - f->bytes), f->size,
-                        loc->line, loc->column, false, false};
-  double v[4];
-  if (!zr__sdl_numlist_sphere(&r, v)) {
-    zr__sdl_error(p, ZR_ESYNTAX, loc, "the lexer's sphere does not read "
-                  "again");
-    return false;
-  }
-  sphere->u.sphere.centre = zr_v3(v[0], v[1], v[2]);
-  sphere->u.sphere.radius = v[3];
-  return true;
+void zr__sdl_sphere_run(const double *run, zr_object *sphere) {
+  sphere->u.sphere.centre = zr_v3(run[0], run[1], run[2]);
+  sphere->u.sphere.radius = run[3];
 }
 
 bool zr__sdl_axis_given(zr_sdl_parser *p, zr_vec3 base, zr_vec3 cap,

@@ -273,6 +273,7 @@ typedef struct zr_sdl_clist {
 typedef union zr_sdl_lexval {
   double num;
   const char *str;
+  const double *sphere; /* T_SPHERE_RUN's centre and radius */
   zr_sdl_decl_name decl;
   zr_sdl_value value;
 } zr_sdl_lexval;
@@ -303,6 +304,7 @@ typedef struct zr_sdl_token {
     double num;
     const char *str; /* interned in the file's arena */
     const zr_sdl_numlist *list; /* ZR_SDL_NUMBER_LIST */
+    const double *sphere; /* T_SPHERE_RUN: x, y, z and r (tokens.c) */
   } v;
 } zr_sdl_token;
 
@@ -332,7 +334,8 @@ typedef struct zr_sdl_file {
   const char *scene_path; /* the same, in the scene's arena */
   char *bytes;
   size_t size;
-  size_t *line_starts; /* byte offset of each line, index line - 1 */
+  size_t *line_starts; /* byte offset of each line, index line - 1,
+                          made when a message needs it (NULL before) */
   size_t n_lines;
   zr_sdl_token *tokens;
   size_t n_tokens;
@@ -368,6 +371,13 @@ zr_status zr__sdl_file_lex_budget(zr_sdl_file *f, int file_index,
                                   struct zr_budget *budget,
                                   zr_sdl_loc *err_loc, char *err,
                                   size_t err_size);
+/* The same with every token from the flex scanner, none from the
+   lexer's own reader of plain words and braces (tokens.c): the tokens
+   must be the same either way (tests/test_lexer.c). */
+zr_status zr__sdl_file_lex_scanner_only(zr_sdl_file *f, int file_index,
+                                        char *path, char *bytes,
+                                        size_t size, zr_sdl_loc *err_loc,
+                                        char *err, size_t err_size);
 void zr__sdl_file_free(zr_sdl_file *f);
 /* The next directive of the block of the directive at token i (see
    links above), (size_t)-1 when there is none. */
@@ -382,6 +392,13 @@ typedef struct zr_sdl_lexer {
   size_t read_size;       /* how much its next read copies (at most) */
   int comment_depth;      /* nesting of block comments */
   zr_sdl_loc comment_at;  /* where the outermost open comment began */
+  /* The scanner holds no bytes read ahead: it was just started (or
+     started again after a run), so the lexer may take plain words and
+     braces itself before it (tokens.c, quick_token). */
+  bool fresh;
+  bool scanner_only; /* never take them (tests compare the two) */
+  const char *last_name; /* the identifier interned last, and its */
+  size_t last_name_length; /* length (zr__sdl_lex_intern) */
   bool failed;
   bool out_of_memory;
   zr_sdl_loc error_at;
@@ -403,8 +420,12 @@ const char *zr__sdl_lex_string(zr_sdl_lexer *lx, const char *s, size_t n);
 void zr__sdl_lex_fail(zr_sdl_lexer *lx, const zr_sdl_loc *at,
                       const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
-/* The text of a line (without its newline) and its length. */
-const char *zr__sdl_file_line(const zr_sdl_file *f, int line, size_t *len);
+/* The text of a line (without its newline) and its length ("" and 0
+   for a line the file does not have, or when out of memory: the lines'
+   offsets are found at the first call). */
+const char *zr__sdl_file_line(zr_sdl_file *f, int line, size_t *len);
+/* The offset of a line's first byte in the file; false as above. */
+bool zr__sdl_file_line_start(zr_sdl_file *f, int line, size_t *start);
 
 /* ---- keywords ---- */
 
@@ -898,10 +919,9 @@ void zr__sdl_degenerate_triangle(zr_sdl_parser *p, const zr_vec3 *corners,
 /* Warns about a negative radius (at: where the radius is). */
 void zr__sdl_sphere_radius(zr_sdl_parser *p, const zr_object *sphere,
                            const zr_sdl_loc *at);
-/* The centre and radius of a T_SPHERE_RUN token (run points at its
-   bytes, loc is the token's); false after an error. */
-bool zr__sdl_sphere_run(zr_sdl_parser *p, const char *run,
-                        const zr_sdl_loc *loc, zr_object *sphere);
+/* The centre and radius of a T_SPHERE_RUN token, the four numbers the
+   lexer read (run, in its file's arena), into sphere. */
+void zr__sdl_sphere_run(const double *run, zr_object *sphere);
 /* A cylinder's or cone's axis must have a length: POV-Ray 3.7 stops on
    base point = apex point (measured); false after the error at at. */
 bool zr__sdl_axis_given(zr_sdl_parser *p, zr_vec3 base, zr_vec3 cap,

@@ -18,6 +18,7 @@
 #include "config.h"
 
 #include <ctype.h>
+#include <limits.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -30,14 +31,23 @@
 #define YYLTYPE zr_sdl_loc
 #include "pov-scan.h"
 
+/* A name spelled like the last one interned is that one: the names
+   are never changed, and a sphere-heavy file names its texture on every
+   line ("texture { Ball }": 7,381 copies of 16 bytes in bench/peers.sh's
+   sphereflake, 29 fresh pages). */
 const char *zr__sdl_lex_intern(zr_sdl_lexer *lx, const char *s, size_t n) {
-  char *copy = zr__arena_alloc(&lx->file->strings, n + 1);
+  if (lx->last_name && lx->last_name_length == n &&
+      memcmp(lx->last_name, s, n) == 0)
+    return lx->last_name;
+  char *copy = zr__arena_alloc_raw(&lx->file->strings, n + 1);
   if (!copy) {
     lx->failed = lx->out_of_memory = true;
     return NULL;
   }
   memcpy(copy, s, n);
   copy[n] = '\0';
+  lx->last_name = copy;
+  lx->last_name_length = n;
   return copy;
 }
 
@@ -84,26 +94,46 @@ static const char *next_newline(const zr_sdl_file *f, const char *from) {
   return memchr(from, '\n', (size_t)(f->bytes + f->size - from));
 }
 
+/* Counts the file's lines; the offsets of their starts wait for a
+   message that quotes one (line_index): a file of 7,381 spheres' lines
+   took 58 KB of fresh memory for them, which no clean parse reads. */
 static zr_status index_lines(zr_sdl_file *f) {
   size_t n = 1;
   for (const char *c = f->bytes; c && (c = next_newline(f, c)); c++)
     n++;
-  f->line_starts = malloc(n * sizeof *f->line_starts);
-  if (!f->line_starts)
-    return ZR_ENOMEM;
-  f->line_starts[0] = 0;
-  f->n_lines = 1;
-  for (const char *c = f->bytes; c && (c = next_newline(f, c)); c++)
-    f->line_starts[f->n_lines++] = (size_t)(c + 1 - f->bytes);
+  f->n_lines = n;
   return ZR_OK;
 }
 
-const char *zr__sdl_file_line(const zr_sdl_file *f, int line, size_t *len) {
-  if (line < 1 || (size_t)line > f->n_lines) {
+static bool line_index(zr_sdl_file *f) {
+  if (f->line_starts)
+    return true;
+  size_t *starts = malloc(f->n_lines * sizeof *starts);
+  if (!starts)
+    return false;
+  size_t n = 0;
+  starts[n++] = 0;
+  for (const char *c = f->bytes; c && n < f->n_lines &&
+                                 (c = next_newline(f, c));
+       c++)
+    starts[n++] = (size_t)(c + 1 - f->bytes);
+  f->line_starts = starts;
+  return true;
+}
+
+bool zr__sdl_file_line_start(zr_sdl_file *f, int line, size_t *start) {
+  if (line < 1 || (size_t)line > f->n_lines || !line_index(f))
+    return false;
+  *start = f->line_starts[line - 1];
+  return true;
+}
+
+const char *zr__sdl_file_line(zr_sdl_file *f, int line, size_t *len) {
+  size_t start;
+  if (!zr__sdl_file_line_start(f, line, &start)) {
     *len = 0;
     return "";
   }
-  size_t start = f->line_starts[line - 1];
   size_t end = start;
   while (end < f->size && f->bytes[end] != '\n')
     end++;
@@ -216,6 +246,7 @@ static bool restart_guarded(zr_sdl_lexer *lx, yyscan_t scanner) {
   if (setjmp(lx->fatal) != 0)
     return false;
   zr__scan_restart(NULL, scanner);
+  lx->fresh = true;
   return true;
 }
 
@@ -514,10 +545,92 @@ static zr_status sphere_run(zr_sdl_file *f, size_t *cap, zr_sdl_lexer *lx,
         !ends_sphere(k->token))
       return ZR_OK;
   }
-  zr_sdl_token t = run_token(f, T_SPHERE_RUN, f->bytes + lx->offset);
+  /* The numbers go with the token (32 bytes a sphere in the file's
+     arena): the grammar's action read them again from the bytes, 9% of
+     bench/peers.sh's sphereflake's parse (8.8 M of 97 M instructions,
+     callgrind). */
+  double *values = zr__arena_alloc_raw(&f->strings, sizeof v);
+  if (!values)
+    return f->strings.over_budget ? ZR_ELIMIT : ZR_ENOMEM;
+  memcpy(values, v, sizeof v);
+  zr_sdl_token t = run_token(f, T_SPHERE_RUN, NULL);
+  t.v.sphere = values;
   zr_status status = push_token(f, cap, &t);
   zr_status resumed = resume_at(lx, scanner, end, &r);
   return status != ZR_OK ? status : resumed;
+}
+
+/*
+ * The scanner's work for the plain words and braces that follow a run,
+ * done here.  After each run (a sphere's above) the scanner was started
+ * again: it made a call to its restart function, read 256 bytes into
+ * its buffer and matched "texture { T } }" and the next "sphere {" byte
+ * by byte through its tables, counting lines and columns a byte at a
+ * time, for every sphere of a sphere-heavy file.  While the scanner
+ * holds nothing read ahead (lx->fresh: it was just started), a word or
+ * a brace at the lexer's place is taken here instead, with the
+ * scanner's rules for them (grammar/pov.l): blanks [ \t\r\n\f\v]
+ * skipped, one column a byte and a line a newline; a word
+ * [a-zA-Z_][a-zA-Z0-9_]* as long as it goes, a keyword when the table
+ * has it, else an identifier interned in the file's arena; '{' and '}'
+ * alone.  Anything else (a digit, '#', a quote, an operator, '/' that
+ * may start a comment, the end of the file) is left to the scanner,
+ * which starts reading at the lexer's place: the same tokens either way
+ * (tests/test_lexer.c compares them on every scene and include file).
+ * Returns 1 with *t filled, 0 when the scanner should take what
+ * follows, -1 when interning failed (lx->failed).
+ */
+static int quick_token(zr_sdl_lexer *lx, zr_sdl_token *t) {
+  const zr_sdl_file *f = lx->file;
+  const char *b = f->bytes;
+  size_t pos = lx->offset, end = f->size;
+  int line = lx->line, column = lx->column;
+  while (pos < end && is_blank_byte(b[pos])) {
+    if (b[pos] == '\n') {
+      line++;
+      column = 1;
+    } else {
+      column++;
+    }
+    pos++;
+  }
+  /* The blanks are passed whatever comes next: the scanner would skip
+     them the same way. */
+  lx->offset = lx->read_pos = pos;
+  lx->line = line;
+  lx->column = column;
+  if (pos == end)
+    return 0;
+  char c = b[pos];
+  memset(t, 0, sizeof *t);
+  t->line = line;
+  t->column = column;
+  if (c == '{' || c == '}') {
+    t->kind = c;
+    t->length = 1;
+  } else if ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_') {
+    size_t w = pos + 1;
+    while (w < end && is_word_byte(b[w]))
+      w++;
+    size_t n = w - pos;
+    if (n > INT_MAX / 2)
+      return 0;
+    const zr_sdl_keyword *k = zr__sdl_keyword_find(b + pos, n);
+    if (k) {
+      t->kind = k->token;
+      t->v.str = k->name;
+    } else {
+      t->kind = T_IDENTIFIER;
+      if (!(t->v.str = zr__sdl_lex_intern(lx, b + pos, n)))
+        return -1;
+    }
+    t->length = (int)n;
+  } else {
+    return 0;
+  }
+  lx->offset = lx->read_pos = pos + (size_t)t->length;
+  lx->column = column + t->length;
+  return 1;
 }
 
 static bool opens_block(int kind) {
@@ -590,17 +703,41 @@ zr_status zr__sdl_file_lex(zr_sdl_file *f, int file_index, char *path,
                                  err_loc, err, err_size);
 }
 
+static zr_status lex(zr_sdl_file *f, int file_index, char *path,
+                     char *bytes, size_t size, struct zr_budget *budget,
+                     bool scanner_only, zr_sdl_loc *err_loc, char *err,
+                     size_t err_size);
+
 zr_status zr__sdl_file_lex_budget(zr_sdl_file *f, int file_index,
                                   char *path, char *bytes, size_t size,
                                   struct zr_budget *budget,
                                   zr_sdl_loc *err_loc, char *err,
                                   size_t err_size) {
+  return lex(f, file_index, path, bytes, size, budget, false, err_loc, err,
+             err_size);
+}
+
+zr_status zr__sdl_file_lex_scanner_only(zr_sdl_file *f, int file_index,
+                                        char *path, char *bytes,
+                                        size_t size, zr_sdl_loc *err_loc,
+                                        char *err, size_t err_size) {
+  return lex(f, file_index, path, bytes, size, NULL, true, err_loc, err,
+             err_size);
+}
+
+static zr_status lex(zr_sdl_file *f, int file_index, char *path,
+                     char *bytes, size_t size, struct zr_budget *budget,
+                     bool scanner_only, zr_sdl_loc *err_loc, char *err,
+                     size_t err_size) {
   memset(f, 0, sizeof *f);
   f->path = path;
   f->bytes = bytes;
   f->size = size;
   zr__arena_init(&f->strings);
   f->strings.budget = budget;
+  /* A big file's strings arena holds its spheres' numbers (sphere_run),
+     32 bytes each: its blocks are filled in at once (core/arena.h). */
+  f->strings.populate = size >= 256 * 1024;
   f->budget = budget;
   if (!zr__budget_charge(budget, size)) {
     snprintf(err, err_size, "the file's %zu bytes do not fit in the "
@@ -626,27 +763,34 @@ zr_status zr__sdl_file_lex_budget(zr_sdl_file *f, int file_index,
   lx.offset = lx.read_pos = skip;
   zr_status status = ZR_OK;
   size_t cap = 0;
+  lx.fresh = true; /* the scanner has read nothing yet */
+  lx.scanner_only = scanner_only;
   while (status == ZR_OK) {
-    ZR__POV_STYPE value;
-    zr_sdl_loc loc;
-    memset(&value, 0, sizeof value);
-    int kind = scan_guarded(&lx, scanner, &value, &loc);
+    zr_sdl_token t;
+    int quick = lx.fresh && !lx.scanner_only ? quick_token(&lx, &t) : 0;
+    if (quick == 0) {
+      ZR__POV_STYPE value;
+      zr_sdl_loc loc;
+      memset(&value, 0, sizeof value);
+      lx.fresh = false;
+      int kind = scan_guarded(&lx, scanner, &value, &loc);
+      memset(&t, 0, sizeof t);
+      t.kind = kind;
+      t.line = loc.line;
+      t.column = loc.column;
+      t.length = loc.length;
+      if (kind == T_NUMBER)
+        t.v.num = value.num;
+      else
+        t.v.str = value.str;
+    }
     if (lx.failed) {
       status = !lx.out_of_memory         ? ZR_ESYNTAX
                : f->strings.over_budget ? ZR_ELIMIT
                                         : ZR_ENOMEM;
       break;
     }
-    zr_sdl_token t;
-    memset(&t, 0, sizeof t);
-    t.kind = kind;
-    t.line = loc.line;
-    t.column = loc.column;
-    t.length = loc.length;
-    if (kind == T_NUMBER)
-      t.v.num = value.num;
-    else
-      t.v.str = value.str;
+    int kind = t.kind;
     if (kind == 0) {
       /* The end of the file is a token too: it carries the place where
          "unexpected end of file" points. */

@@ -111,6 +111,9 @@ typedef struct zr_bvh_info {
   size_t bounded;
   size_t unbounded;
   int depth;
+  /* A digest of the primitives' order in the leaves, the node and leaf
+     counts and the depth: the same tree, the same digest (tests). */
+  uint64_t order_digest;
 } zr_bvh_info;
 void zr__bvh_get_info(const struct zr_bvh *bvh, zr_bvh_info *info);
 
