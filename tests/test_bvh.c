@@ -583,6 +583,194 @@ static void test_bvh_grazing_spheres(void **state) {
   zr_scene_free(s);
 }
 
+/* A random double for the slab ray's tests: ordinary magnitudes, tiny
+   and huge ones, zeros of both signs, infinities and NaNs. */
+static double slab_component(uint64_t *seed) {
+  double u = next_uniform(seed), m = range(seed, -1, 1);
+  if (u < 0.05)
+    return next_uniform(seed) < 0.5 ? 0.0 : -0.0;
+  if (u < 0.10)
+    return m * 1e-31; /* below the reciprocal's 1e-30 cut */
+  if (u < 0.15)
+    return m * 1e-30 * range(seed, 0.5, 2); /* about the cut */
+  if (u < 0.20)
+    return m * 1e39; /* beyond float: an infinity when rounded */
+  if (u < 0.23)
+    return next_uniform(seed) < 0.5 ? INFINITY : -INFINITY;
+  if (u < 0.25)
+    return NAN;
+  if (u < 0.35)
+    return m * 0x1p-149 * range(seed, 1, 8); /* float's subnormals */
+  return m * pow(10.0, range(seed, -8, 8));
+}
+
+/* Whether two floats have the same bits (a NaN equals its own bits). */
+static bool same_float_bits(float a, float b) {
+  uint32_t x, y;
+  memcpy(&x, &a, sizeof x);
+  memcpy(&y, &b, sizeof y);
+  return x == y;
+}
+
+/*
+ * The SSE slab ray (zr__make_slab_ray, three axes at once) against its
+ * plain C definition, field by field and bit for bit, on rays whose
+ * components cover every case the definition tells apart: a direction
+ * of 0, below and about the 1e-30 cut, beyond float's range, infinite,
+ * NaN, subnormal in float, and ordinary ones.  Any difference in a
+ * rounding, a sign copy or a lane would move the boxes the walks open.
+ */
+static void test_bvh_slab_ray_matches_scalar(void **state) {
+  (void)state;
+  uint64_t seed = 31337;
+  for (int i = 0; i < 200000; i++) {
+    zr_ray ray = {zr_v3(slab_component(&seed), slab_component(&seed),
+                        slab_component(&seed)),
+                  zr_v3(slab_component(&seed), slab_component(&seed),
+                        slab_component(&seed))};
+    zr_slab_ray fast, plain;
+    memset(&fast, 0, sizeof fast);
+    memset(&plain, 0, sizeof plain);
+    zr__make_slab_ray(&ray, &fast);
+    zr__make_slab_ray_scalar(&ray, &plain);
+    for (int a = 0; a < 3; a++) {
+      assert_true(same_float_bits(fast.org[a], plain.org[a]));
+      assert_true(same_float_bits(fast.inv[a], plain.inv[a]));
+      assert_true(same_float_bits(fast.org_pad[a], plain.org_pad[a]));
+      assert_true(same_float_bits(fast.ext_pad[a], plain.ext_pad[a]));
+#ifdef __SSE2__
+      float f[4], g[4];
+      const __m128 *rows[4][2] = {{&fast.org4[a], &plain.org4[a]},
+                                  {&fast.inv4[a], &plain.inv4[a]},
+                                  {&fast.org_pad4[a], &plain.org_pad4[a]},
+                                  {&fast.ext_pad4[a], &plain.ext_pad4[a]}};
+      for (int r = 0; r < 4; r++) {
+        _mm_storeu_ps(f, *rows[r][0]);
+        _mm_storeu_ps(g, *rows[r][1]);
+        for (int l = 0; l < 4; l++)
+          assert_true(same_float_bits(f[l], g[l]));
+      }
+#endif
+    }
+  }
+}
+
+/*
+ * bvh.c's plain plane (plane_t, the walks' own test of an unbounded
+ * plane) skips the division when the ray leaves the plane behind (the
+ * quotient's signs differ and tmin >= 0).  Its crossings must stay
+ * zr__intersect_t's, t for t, for rays from both sides, toward and away
+ * from the plane, nearly parallel, from on the plane, and for tmin of
+ * 0, -0, negative and positive.
+ */
+static void test_bvh_plane_crossings_match_intersect(void **state) {
+  (void)state;
+  uint64_t seed = 5150;
+  zr_scene *s = zr__scene_new();
+  assert_non_null(s);
+  zr_object *p = zr__arena_alloc(&s->arena, sizeof *p);
+  p->kind = ZR_OBJ_PLANE;
+  p->u.plane.normal = zr_v3_norm(zr_v3(0.3, 1, -0.2));
+  p->u.plane.distance = 0.75;
+  assert_int_equal(zr__scene_add_object(s, p), ZR_OK);
+  assert_int_equal(zr__scene_finish(s, NULL), ZR_OK);
+  const double tmins[] = {0.0, -0.0, -1.0, 1e-9, 0.5, 3.0};
+  size_t found = 0, behind = 0;
+  for (int i = 0; i < 60000; i++) {
+    zr_vec3 o = random_point(&seed, 5);
+    if (i % 7 == 0) /* on the plane, give or take rounding */
+      o = zr_v3_madd(o, p->u.plane.normal,
+                     p->u.plane.distance - zr_v3_dot(o, p->u.plane.normal));
+    zr_vec3 d = random_point(&seed, 1);
+    if (i % 5 == 0) /* nearly parallel */
+      d = zr_v3_madd(d, p->u.plane.normal,
+                     -zr_v3_dot(d, p->u.plane.normal) *
+                         (1.0 - range(&seed, -1e-9, 1e-9)));
+    zr_ray ray = {o, d};
+    double tmin = tmins[i % 6];
+    double tmax = i % 3 ? INFINITY : range(&seed, 0, 10);
+    zr_hit a[ZR_MAX_CROSSINGS], b[ZR_MAX_CROSSINGS];
+    int na = zr__bvh_crossings_t(p, &ray, tmin, tmax, a);
+    int nb = zr__intersect_t(p, &ray, tmin, tmax, b);
+    assert_int_equal(na, nb);
+    for (int k = 0; k < na; k++)
+      assert_true(a[k].t == b[k].t);
+    found += (size_t)na;
+    double num = p->u.plane.distance - zr_v3_dot(p->u.plane.normal, o);
+    behind += num * zr_v3_dot(p->u.plane.normal, d) < 0.0;
+    /* The walk of the whole hierarchy sees the same. */
+    size_t walked = 0;
+    assert_true(zr__bvh_all(s->bvh, &ray, tmin, tmax, count_visit, &walked));
+    assert_int_equal(walked, (size_t)nb);
+  }
+  /* Both answers, and the skipped division, occur often. */
+  assert_true(found > 10000 && behind > 10000);
+  zr_scene_free(s);
+}
+
+/*
+ * The walks' sphere test (bvh.c sphere_t) returns nothing at once for a
+ * ray going away from a sphere it starts outside of when tmin >= 0.
+ * Rays leaving a sphere's surface, as secondary rays do (from just
+ * outside, just inside and on it, outward, inward and along it), and
+ * rays from far away toward and away from it, with tmin 0, -0,
+ * negative and positive, must find zr__intersect_t's crossings, t for
+ * t, through zr__bvh_crossings_t and through a walk of a hierarchy.
+ */
+static void test_bvh_sphere_leaving_rays(void **state) {
+  (void)state;
+  uint64_t seed = 8086;
+  zr_scene *s = zr__scene_new();
+  assert_non_null(s);
+  enum { N = 64 };
+  for (int i = 0; i < N; i++) {
+    zr_object *o = zr__arena_alloc(&s->arena, sizeof *o);
+    o->kind = ZR_OBJ_SPHERE;
+    o->u.sphere.centre = random_point(&seed, 30);
+    o->u.sphere.radius = range(&seed, 0.01, 3);
+    assert_int_equal(zr__scene_add_object(s, o), ZR_OK);
+  }
+  assert_int_equal(zr__scene_finish(s, NULL), ZR_OK);
+  const double tmins[] = {0.0, -0.0, -2.0, 1e-12, 0.3};
+  size_t found = 0, away = 0;
+  for (int i = 0; i < 60000; i++) {
+    const zr_object *o = s->primitives[i % N];
+    zr_vec3 c = o->u.sphere.centre;
+    double r = o->u.sphere.radius;
+    zr_vec3 n = zr_v3_norm(random_point(&seed, 1));
+    double at = r;
+    switch (i % 4) {
+    case 0: at = r * (1.0 + 1e-9); break;  /* just outside */
+    case 1: at = r * (1.0 - 1e-9); break;  /* just inside */
+    case 2: at = r; break;                 /* on it, as rounded */
+    default: at = r * range(&seed, 1.5, 20); break; /* far */
+    }
+    zr_vec3 from = zr_v3_madd(c, n, at);
+    zr_vec3 d = random_point(&seed, 1);
+    if (i % 3 == 0) /* along the surface */
+      d = zr_v3_madd(d, n, -zr_v3_dot(d, n));
+    zr_ray ray = {from, zr_v3_scale(d, range(&seed, 0.1, 10))};
+    double tmin = tmins[i % 5];
+    zr_hit a[ZR_MAX_CROSSINGS], b[ZR_MAX_CROSSINGS];
+    int na = zr__bvh_crossings_t(o, &ray, tmin, INFINITY, a);
+    int nb = zr__intersect_t(o, &ray, tmin, INFINITY, b);
+    assert_int_equal(na, nb);
+    for (int k = 0; k < na; k++)
+      assert_true(a[k].t == b[k].t);
+    found += (size_t)na;
+    away += zr_v3_dot(ray.dir, zr_v3_sub(from, c)) > 0.0;
+    size_t walked = 0, brute = 0;
+    assert_true(zr__bvh_all(s->bvh, &ray, tmin, INFINITY, count_visit,
+                            &walked));
+    for (size_t k = 0; k < s->n_primitives; k++)
+      brute += (size_t)zr__intersect_t(s->primitives[k], &ray, tmin,
+                                       INFINITY, b);
+    assert_int_equal(walked, brute);
+  }
+  assert_true(found > 10000 && away > 20000);
+  zr_scene_free(s);
+}
+
 /* The order a walk takes entries in: pops the stack until empty, with
    first (when given) searched before anything on the stack. */
 static int walk_order(const zr_wide_entry *first, const zr_wide_entry *stack,
@@ -856,6 +1044,9 @@ int main(void) {
       cmocka_unit_test(test_bvh_grazing_spheres),
       cmocka_unit_test(test_bvh_occluded_matches_walk),
       cmocka_unit_test(test_bvh_build_same_tree),
+      cmocka_unit_test(test_bvh_slab_ray_matches_scalar),
+      cmocka_unit_test(test_bvh_plane_crossings_match_intersect),
+      cmocka_unit_test(test_bvh_sphere_leaving_rays),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -140,18 +140,24 @@ static bool is_directional(const zr_light *light) {
   return light->parallel || light->kind == ZR_LIGHT_CYLINDER;
 }
 
-bool zr__light_arrive(const zr_light *light, zr_vec3 p, zr_vec3 *l,
-                      zr_rgb *colour) {
-  zr_vec3 to_light = zr_v3_sub(light->location, p);
-  double distance = zr_v3_len(to_light);
+bool zr__light_arrive_way(const zr_light *light, zr_vec3 p,
+                          const zr_light_way *way, zr_vec3 *l,
+                          zr_rgb *colour) {
   *l = is_directional(light) ? light_axis(light)
-                             : zr_v3_scale(to_light, 1.0 / distance);
+                             : zr_v3_scale(way->to_light, way->inv_distance);
   double k = zr__light_cone(light, p);
   if (!(k > 0.0))
     return false;
-  k *= zr__light_fade(light, distance);
+  k *= zr__light_fade(light, way->distance);
   *colour = zr_rgb_scale(light->colour, k);
   return true;
+}
+
+bool zr__light_arrive(const zr_light *light, zr_vec3 p, zr_vec3 *l,
+                      zr_rgb *colour) {
+  zr_light_way way;
+  zr__light_way(light, p, &way);
+  return zr__light_arrive_way(light, p, &way, l, colour);
 }
 
 /* A deterministic number in [0, 1) from the bits of a point and a

@@ -637,13 +637,19 @@ static zr_rgb direct_light(const zr_tracer *tr, const surface *s,
     lit.shadow_path = media;
     shadows = &lit;
   }
+  /* The ways to the next WAYS lights, asked together (zr_light_way). */
+  enum { WAYS = 8 };
+  zr_light_way ways[WAYS];
   for (size_t i = 0; takes && i < scene->n_lights; i++) {
     const zr_light *light = &scene->lights[i];
+    if (i % WAYS == 0)
+      for (size_t k = i; k < scene->n_lights && k < i + WAYS; k++)
+        zr__light_way(&scene->lights[k], s->p, &ways[k - i]);
     zr_vec3 l;
     zr_rgb lc;
     if (!zr__light_lights(scene, light, s->object))
       continue; /* a light_group's light, or this object's group's */
-    if (!zr__light_arrive(light, s->p, &l, &lc))
+    if (!zr__light_arrive_way(light, s->p, &ways[i % WAYS], &l, &lc))
       continue; /* outside a spotlight's cone (lib/trace/lights.c) */
     zr_vec3 n = s->n;
     double n_dot_l = zr_v3_dot(n, l);
