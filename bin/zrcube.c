@@ -372,6 +372,10 @@ typedef struct run {
   int row0, row1, col0, col1; /* the window of a partial render */
   uint64_t fingerprint;       /* of the scene's files and the options */
   double last_state_write;
+  /* Rank 0: where the radiosity solution goes beside the state file,
+     written just before the state file first is (band_done); NULL when
+     it is written, not wanted or resumed from. */
+  char *state_rad;
   double state_write_seconds; /* how long the last one took */
   int state_failed;           /* a state write failed (warned once) */
   FILE *stream_files[ZR_CLI_STREAMS];
@@ -910,11 +914,19 @@ static int solve_radiosity(run *r) {
     s = zr_radiosity_load(r->ctx, r->scene, load, &r->rad);
   else
     s = zr_radiosity_solve(r->ctx, r->scene, &params, &r->rad);
-  if (r->rank == 0 && state_rad && !resumed && s == ZR_OK &&
-      zr_radiosity_save(r->ctx, r->rad, state_rad) != ZR_OK)
-    say(&r->diag, ZR_CLI_STREAM_WARNING, "zrcube: warning: cannot save "
-        "the radiosity solution beside the state file ('%s'); +C would "
-        "solve it again\n", state_rad);
+  /* The solution is wanted beside the state file only once there is a
+     state file to continue from: band_done writes it then.  A render
+     done sooner (every render shorter than --state-interval) writes
+     neither: saving cornell.pov's 64x64 solution (3.5 MB) took rank 0
+     15 ms of CPU (best of 7, load 19) in a render of 0.8 s a rank on
+     2 ranks, while the other rank waited for it
+     (bench/results/rad-2026-12-03-s13.md). */
+  free(r->state_rad);
+  r->state_rad = NULL;
+  if (r->rank == 0 && state_rad && !resumed && s == ZR_OK) {
+    r->state_rad = state_rad;
+    state_rad = NULL;
+  }
   free(state_rad);
   r->radiosity_seconds = zr__par_now() - start;
   r->radiosity_cpu = zr__par_cpu() - cpu;
@@ -1167,6 +1179,14 @@ static void band_done(const zr_par_progress *pr, void *user) {
     gap = 20 * r->state_write_seconds;
   if (now - r->last_state_write < gap)
     return;
+  if (r->state_rad) {
+    if (zr_radiosity_save(r->ctx, r->rad, r->state_rad) != ZR_OK)
+      say(&r->diag, ZR_CLI_STREAM_WARNING, "zrcube: warning: cannot save "
+          "the radiosity solution beside the state file ('%s'); +C would "
+          "solve it again\n", r->state_rad);
+    free(r->state_rad);
+    r->state_rad = NULL;
+  }
   int rc = zr__state_write(r->state_path, r->fingerprint,
                            r->opts.params.width, r->opts.params.height, pr);
   r->last_state_write = zr__par_now();
@@ -1538,6 +1558,8 @@ static void print_scene_info(const run *r) {
 static void end_frame(run *r) {
   signal_ctx = NULL; /* the context goes: no signal may cancel it now */
   zr_image_free(r->image);
+  free(r->state_rad);
+  r->state_rad = NULL;
   zr_radiosity_free(r->rad);
   zr_gi_cache_free(r->gi);
   zr_path_free(r->path);

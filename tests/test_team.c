@@ -201,6 +201,54 @@ static void test_team_exchange(void **state) {
   hall_free(&h);
 }
 
+/* Two exchanges into one kept room (zr__team_exchange_in): the same
+   parts as without it, both in the room's bytes (freeing the first
+   parts left the room to its owner, and the second needed no more),
+   which the room still holds after the parts are freed. */
+typedef struct room_result {
+  int first_ok, second_ok, reused, kept;
+} room_result;
+
+static room_result room_results[MEMBERS];
+
+static void *room_member(void *p) {
+  member *m = p;
+  room_result *res = &room_results[m->rank];
+  zr__team_room room = {NULL, 0};
+  zr__team_parts parts;
+  char *mine = part(m->rank, large_size(m->rank));
+  zr_status s = zr__team_exchange_in(&m->team, ZR_OK, mine,
+                                     large_size(m->rank), &room, &parts);
+  res->first_ok = s == ZR_OK && parts_ok(&parts, large_size) &&
+                  parts.room == &room && parts.bytes == room.bytes;
+  char *first = room.bytes;
+  zr__team_parts_free(&parts);
+  s = zr__team_exchange_in(&m->team, ZR_OK, mine, large_size(m->rank),
+                           &room, &parts);
+  res->second_ok = s == ZR_OK && parts_ok(&parts, large_size);
+  res->reused = parts.bytes == first && room.bytes == first;
+  zr__team_parts_free(&parts);
+  res->kept = room.bytes == first && room.cap >= 100000 + 2 * 50;
+  free(mine);
+  zr__team_room_free(&room);
+  return NULL;
+}
+
+static void test_team_exchange_in_room(void **state) {
+  (void)state;
+  hall h;
+  member ms[MEMBERS];
+  hall_init(&h, ms);
+  run_members(ms, room_member);
+  for (int r = 0; r < MEMBERS; r++) {
+    assert_true(room_results[r].first_ok);
+    assert_true(room_results[r].second_ok);
+    assert_true(room_results[r].reused);
+    assert_true(room_results[r].kept);
+  }
+  hall_free(&h);
+}
+
 /* A team of one (or none) copies its part. */
 static void test_team_of_one(void **state) {
   (void)state;
@@ -561,6 +609,7 @@ static void test_team_parse_fewer_meshes(void **state) {
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_team_exchange),
+      cmocka_unit_test(test_team_exchange_in_room),
       cmocka_unit_test(test_team_of_one),
       cmocka_unit_test(test_team_pack_grows_into_huge_pages),
       cmocka_unit_test(test_team_radiosity),

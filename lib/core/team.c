@@ -18,10 +18,12 @@
 void zr__team_parts_free(zr__team_parts *parts) {
   if (parts == NULL)
     return;
-  free(parts->bytes);
+  if (parts->room == NULL)
+    free(parts->bytes);
   free(parts->offset);
   parts->bytes = NULL;
   parts->offset = NULL;
+  parts->room = NULL;
 }
 
 /*
@@ -51,6 +53,27 @@ static char *room_alloc(size_t *size) {
   return p;
 }
 
+char *zr__team_room_get(zr__team_room *room, size_t size) {
+  if (room->bytes != NULL && room->cap >= size)
+    return room->bytes;
+  /* Half as much again as asked, so that parts growing a little from
+     one exchange to the next (a solve's later rounds) fit. */
+  size_t want = size > SIZE_MAX / 3 ? size : size + size / 2;
+  char *b = room_alloc(&want);
+  if (b == NULL)
+    return NULL;
+  free(room->bytes);
+  room->bytes = b;
+  room->cap = want;
+  return b;
+}
+
+void zr__team_room_free(zr__team_room *room) {
+  free(room->bytes);
+  room->bytes = NULL;
+  room->cap = 0;
+}
+
 /* The header each member sends first. */
 typedef struct header {
   int64_t status;
@@ -68,8 +91,15 @@ typedef struct header {
 zr_status zr__team_exchange(const zr_team *t, zr_status local,
                             const void *mine, size_t bytes,
                             zr__team_parts *out) {
+  return zr__team_exchange_in(t, local, mine, bytes, NULL, out);
+}
+
+zr_status zr__team_exchange_in(const zr_team *t, zr_status local,
+                               const void *mine, size_t bytes,
+                               zr__team_room *room, zr__team_parts *out) {
   out->bytes = NULL;
   out->offset = NULL;
+  out->room = NULL;
   int n = zr__team_size(t);
   size_t inline_cap = n <= INLINE_MEMBERS ? SLOT - sizeof(header) : 0;
   size_t slot = sizeof(header) + inline_cap;
@@ -143,8 +173,13 @@ zr_status zr__team_exchange(const zr_team *t, zr_status local,
     } else {
       /* Larger parts: room for all of them, agreed, then the parts. */
       free(out->bytes);
-      size_t room = total;
-      out->bytes = room_alloc(&room);
+      if (room != NULL) {
+        out->bytes = zr__team_room_get(room, total);
+        out->room = out->bytes ? room : NULL;
+      } else {
+        size_t made = total;
+        out->bytes = room_alloc(&made);
+      }
       s = zr__team_agree(t, out->bytes ? ZR_OK : ZR_ENOMEM);
       if (s == ZR_OK)
         s = t->allgather(t->user, mine, out->bytes, counts);

@@ -17,11 +17,28 @@
 
 #include "zrcube.h"
 
+/*
+ * Room kept from one exchange to the next by a caller that exchanges
+ * many times (a radiosity solve: a dozen exchanges of up to megabytes,
+ * and a hundred sweeps).  Fresh room each time costs a page fault for
+ * every page first touched (14 us a 4 KiB page, or a 2 MiB page zeroed,
+ * on this project's virtual machine), and a member sending a large part
+ * waits, spinning in MPI, while the other copies it into fresh pages:
+ * see zr__team_exchange_in.  It only grows; zr__team_room_free.
+ */
+typedef struct zr__team_room {
+  char *bytes;
+  size_t cap;
+} zr__team_room;
+
 /* The members' parts after an exchange: member r's part is
    bytes[offset[r] .. offset[r + 1]). */
 typedef struct zr__team_parts {
   char *bytes;
   size_t *offset; /* size + 1 entries */
+  /* Non-NULL: bytes are this room's, which zr__team_parts_free leaves
+     to its owner. */
+  zr__team_room *room;
 } zr__team_parts;
 
 /* Members and this member's rank; NULL is a team of one. */
@@ -50,6 +67,19 @@ zr_status zr__team_exchange(const zr_team *t, zr_status local,
                             const void *mine, size_t bytes,
                             zr__team_parts *out);
 void zr__team_parts_free(zr__team_parts *parts);
+
+/* zr__team_exchange with the parts, when they do not travel with the
+   headers, in room (grown when too small) instead of fresh memory;
+   room NULL is zr__team_exchange.  The parts hold the room until
+   zr__team_parts_free. */
+zr_status zr__team_exchange_in(const zr_team *t, zr_status local,
+                               const void *mine, size_t bytes,
+                               zr__team_room *room, zr__team_parts *out);
+
+/* room's bytes, at least size of them (grown, the contents lost, when
+   it holds fewer); NULL when out of memory, the room then unchanged. */
+char *zr__team_room_get(zr__team_room *room, size_t size);
+void zr__team_room_free(zr__team_room *room);
 
 /* The status all members agree on (a status-only exchange). */
 zr_status zr__team_agree(const zr_team *t, zr_status local);
@@ -84,6 +114,11 @@ void zr__pack_put(zr__pack *p, const void *bytes, size_t n);
    pack is then made once instead of grown by doubling. */
 void zr__pack_reserve(zr__pack *p, size_t n);
 void zr__pack_free(zr__pack *p);
+/* Empties p for the next part, keeping its room (see zr__team_room). */
+static inline void zr__pack_reset(zr__pack *p) {
+  p->n = 0;
+  p->nomem = 0;
+}
 
 /* Reads n bytes at *at from a part ending at end; 0 when it runs out. */
 static inline int zr__unpack(const char **at, const char *end, void *dst,

@@ -304,6 +304,7 @@ ZR_API zr_status zr_radiosity_solve(zr_context *ctx, const zr_scene *scene,
                  : "radiosity: no surface emits light (finish { emission "
                    "}), so the solution is black");
   st = solve_rounds(rad, ctx);
+  zr__rad_team_buffers_free(rad); /* the exchanges are over */
   if (st != ZR_OK) {
     zr_radiosity_free(rad);
     return st;
@@ -385,10 +386,17 @@ zr_status zr__rad_index_links(zr_radiosity *rad) {
 ZR_API void zr_radiosity_free(zr_radiosity *rad) {
   if (rad == NULL)
     return;
+  zr__rad_team_buffers_free(rad);
   zr__rad_free_arrays(rad);
   zr__budget_release(rad->budget, rad->charged);
   zr__budget_unref(rad->budget);
   free(rad);
+}
+
+void zr__rad_team_buffers_free(zr_radiosity *rad) {
+  zr__team_room_free(&rad->team_room);
+  zr__team_room_free(&rad->team_send);
+  zr__pack_free(&rad->team_pack);
 }
 
 bool zr__rad_charge(zr_radiosity *rad, size_t bytes) {

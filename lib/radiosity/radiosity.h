@@ -38,6 +38,7 @@
 
 #include "core/arena.h"
 #include "core/context.h"
+#include "core/team.h"
 #include "radiosity/quadrature.h"
 #include "radiosity/surface.h"
 #include "scene/scene.h"
@@ -218,12 +219,23 @@ struct zr_radiosity {
   size_t n_vlinks, cap_vlinks;
   uint64_t vol_rays; /* visibility rays of cluster links */
 
+  /* A team's exchange buffers while it solves (refine.c, solve.c): the
+     room the members' parts arrive in, this member's packed part and
+     a sweep's send buffer, kept from one exchange to the next (see
+     zr__team_room) and freed when the solve ends
+     (zr__rad_team_buffers_free). */
+  zr__team_room team_room, team_send;
+  zr__pack team_pack;
+
   double light_power;  /* light sources' power onto the surfaces (est.) */
   double total_area;   /* of every surface */
   double power_ref;    /* emitted power (largest channel), BF_eps unit */
   double area_eps_abs; /* params.area_eps * total_area */
   zr__gauss_rule rule_recv, rule_src;
 };
+
+/* Frees the team's exchange buffers (team_room, team_send, team_pack). */
+void zr__rad_team_buffers_free(zr_radiosity *rad);
 
 /* ---- mesh.c ---- */
 zr_status zr__rad_mesh_build(zr_radiosity *rad, zr_context *ctx);

@@ -756,8 +756,11 @@ typedef struct planner {
   const uint32_t *pairs;
   /* A team's exchange of the batch's plans, which the plans made by
      other members borrow their steps from until the batch is replayed
-     (planner_done). */
+     (planner_done); it arrives in room, packed from pack (the solve's
+     kept buffers, radiosity.h). */
   zr__team_parts parts;
+  zr__team_room *room;
+  zr__pack *pack;
 } planner;
 
 /* The member that plans chunk c of a batch. */
@@ -891,7 +894,8 @@ static zr_status make_plans_team(planner *w) {
   const zr_team *team = w->rad->params.team;
   size_t n_chunks = (w->count + w->chunk - 1) / w->chunk;
   uint32_t *chunks = malloc((n_chunks + 1) * sizeof *chunks);
-  zr__pack pack = {0};
+  zr__pack *pack = w->pack;
+  zr__pack_reset(pack);
   zr_status st = chunks ? ZR_OK : ZR_ENOMEM;
   if (st == ZR_OK) {
     size_t n_mine = 0;
@@ -900,7 +904,7 @@ static zr_status make_plans_team(planner *w) {
         chunks[n_mine++] = (uint32_t)c;
     w->chunks = chunks;
     zr__rad_parallel(threads_of(w->rad), n_mine, 1, plan_chunks, w);
-    for (size_t k = 0; k < n_mine && !pack.nomem; k++) {
+    for (size_t k = 0; k < n_mine && !pack->nomem; k++) {
       size_t t0 = (size_t)chunks[k] * w->chunk;
       for (size_t t = t0; t < t0 + w->chunk && t < w->count; t++) {
         const plan *pl = &w->plans[t];
@@ -915,17 +919,17 @@ static zr_status make_plans_team(planner *w) {
           break;
         }
         plan_head h = {(uint32_t)t, pl->choice, (uint32_t)pl->n};
-        zr__pack_put(&pack, &h, sizeof h);
+        zr__pack_put(pack, &h, sizeof h);
         if (pl->n > 0)
-          zr__pack_put(&pack, pl->ops, pl->n * sizeof *pl->ops);
+          zr__pack_put(pack, pl->ops, pl->n * sizeof *pl->ops);
       }
     }
-    if (pack.nomem)
+    if (pack->nomem)
       st = ZR_ENOMEM;
   }
   zr__team_parts parts;
-  st = zr__team_exchange(team, st, pack.bytes, pack.n, &parts);
-  zr__pack_free(&pack);
+  st = zr__team_exchange_in(team, st, pack->bytes, pack->n, w->room,
+                            &parts);
   for (int r = 0; st == ZR_OK && r < team->size; r++) {
     if (r == team->rank) /* its plans are in place */
       continue;
@@ -989,8 +993,14 @@ static zr_status link_tasks(zr_radiosity *rad, size_t n_pairs,
      row of pairs (member (i + j) % n plans pair i, j): a pair's cost
      follows its surfaces' sizes, and chunks of 8 pairs in a row gave
      one of 2 ranks 3 times the other's planning (cornell.pov). */
-  planner w = {rad,          plans, 0, plan_pairs, NULL, 0, 1,
-               rad->n_surfs, pairs, {NULL, NULL}};
+  planner w = {.rad = rad,
+               .plans = plans,
+               .make = plan_pairs,
+               .chunk = 1,
+               .stagger = rad->n_surfs,
+               .pairs = pairs,
+               .room = &rad->team_room,
+               .pack = &rad->team_pack};
   zr_status st = ZR_OK;
   for (size_t at = 0; st == ZR_OK && at < n_pairs; at += batch) {
     w.count = n_pairs - at < batch ? n_pairs - at : batch;
@@ -1057,8 +1067,12 @@ zr_status zr__rad_refine_links(zr_radiosity *rad, size_t *changed) {
   plan *plans = new_plans(room);
   if (plans == NULL)
     return ZR_ENOMEM;
-  planner w = {rad,  plans, 0, plan_refinements, NULL, 0, PLAN_CHUNK, 0,
-               NULL, {NULL, NULL}};
+  planner w = {.rad = rad,
+               .plans = plans,
+               .make = plan_refinements,
+               .chunk = PLAN_CHUNK,
+               .room = &rad->team_room,
+               .pack = &rad->team_pack};
   zr_status st = ZR_OK;
   for (size_t at = 0; st == ZR_OK && at < n; at += batch) {
     w.count = n - at < batch ? n - at : batch;
@@ -1387,7 +1401,8 @@ static zr_status finish_team(zr_radiosity *rad, const zr_team *team) {
     n_todo += !rad->links[i].dead && !rad->links[i].final;
   uint32_t *todo = malloc((n_todo + 1) * sizeof *todo);
   uint32_t *mine = malloc((n_todo + 1) * sizeof *mine);
-  zr__pack pack = {0};
+  zr__pack *pack = &rad->team_pack;
+  zr__pack_reset(pack);
   zr_status st = todo && mine ? ZR_OK : ZR_ENOMEM;
   size_t n_mine = 0;
   if (st == ZR_OK) {
@@ -1404,18 +1419,18 @@ static zr_status finish_team(zr_radiosity *rad, const zr_team *team) {
     atomic_init(&w.rays, 0);
     zr__rad_parallel(threads_of(rad), n_mine, 16, finish_list, &w);
     uint64_t rays = (uint64_t)atomic_load(&w.rays);
-    zr__pack_put(&pack, &rays, sizeof rays);
+    zr__pack_put(pack, &rays, sizeof rays);
     for (size_t k = 0; k < n_mine; k++) {
       const zr__rad_link *l = &rad->links[mine[k]];
       double v[2] = {l->ff, l->vis};
-      zr__pack_put(&pack, v, sizeof v);
+      zr__pack_put(pack, v, sizeof v);
     }
-    if (pack.nomem)
+    if (pack->nomem)
       st = ZR_ENOMEM;
   }
   zr__team_parts parts;
-  st = zr__team_exchange(team, st, pack.bytes, pack.n, &parts);
-  zr__pack_free(&pack);
+  st = zr__team_exchange_in(team, st, pack->bytes, pack->n, &rad->team_room,
+                            &parts);
   for (int r = 0; st == ZR_OK && r < team->size; r++) {
     const char *at = parts.bytes + parts.offset[r];
     const char *end = parts.bytes + parts.offset[r + 1];

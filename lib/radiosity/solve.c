@@ -258,7 +258,9 @@ typedef struct team_gather {
      parts).  The b no other member reads in a sweep goes once, at the
      end (rest, without changes). */
   team_sends sweep, rest;
-  char *send, *recv;  /* this member's part; every part, rank after rank */
+  /* This member's part; every part, rank after rank: the solve's kept
+     buffers (rad->team_send, rad->team_room), not the gather's. */
+  char *send, *recv;
 } team_gather;
 
 static void team_sends_free(team_sends *ts) {
@@ -274,8 +276,6 @@ static void team_gather_free(team_gather *tg) {
   free(tg->mine);
   team_sends_free(&tg->sweep);
   team_sends_free(&tg->rest);
-  free(tg->send);
-  free(tg->recv);
 }
 
 /* The entries of sends: those whose side is in need (wanted 1) or not
@@ -317,8 +317,8 @@ static size_t team_sends_make(const zr_radiosity *rad, const team_gather *tg,
   return total;
 }
 
-static zr_status team_gather_init(const zr_radiosity *rad,
-                                  const recv_index *ix, team_gather *tg) {
+static zr_status team_gather_init(zr_radiosity *rad, const recv_index *ix,
+                                  team_gather *tg) {
   const zr_team *team = rad->params.team;
   int n = zr__team_size(team), me = zr__team_rank(team);
   size_t ns = rad->n_surfs;
@@ -383,8 +383,8 @@ static zr_status team_gather_init(const zr_radiosity *rad,
                         : tg->rest.part_bytes[me];
       if (rest > total)
         total = rest;
-      tg->send = malloc(mine ? mine : 1);
-      tg->recv = malloc(total ? total : 1);
+      tg->send = zr__team_room_get(&rad->team_send, mine ? mine : 1);
+      tg->recv = zr__team_room_get(&rad->team_room, total ? total : 1);
       if (tg->send == NULL || tg->recv == NULL)
         st = ZR_ENOMEM;
     }
