@@ -14,33 +14,18 @@
 # Usage: bench/conform/interior_fade_negative.sh [build/bin/zrcube]
 # (needs povray and /usr/bin/python3 with numpy).
 set -eu
-here=$(cd "$(dirname "$0")" && pwd)
-scene=$here/../../tests/interior_fade.pov
-zr=${1:-}
-[ -n "$zr" ] && zr=$(cd "$(dirname "$zr")" && pwd)/$(basename "$zr")
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
-value() { # RENDERER DECLARES... -> the linear light at the centre
-  r=$1
-  shift
-  decl=""
-  for d in "$@"; do decl="$decl Declare=$d"; done
-  # shellcheck disable=SC2086
-  "$r" +I"$scene" +Oout.png +W8 +H8 -D -A +WT1 -GA +FN16 File_Gamma=1.0 \
-    $decl >/dev/null 2>&1
-  /usr/bin/python3 -c "import sys; sys.path.insert(0, '$here'); import png16; a = png16.read('out.png'); print(' '.join('%.4f' % a[4, 4, c] for c in range(3)))"
-}
+scene=$(cd "$(dirname "$0")/../../tests" && pwd)/interior_fade.pov
+. "$(cd "$(dirname "$0")" && pwd)/probe_value.sh"
 differ=0
 for fc in 0 1; do
   for v in 1 0; do
     for pa in 1 2 3 0.5 0 -1 1000; do
       for th in 0.1 0.5 3; do
         set -- FA=-1 PA=$pa TH=$th View=$v FC=$fc
-        p=$(value povray "$@")
+        p=$(centre povray "$@")
         line="$* povray $p"
         if [ -n "$zr" ]; then
-          z=$(value "$zr" "$@")
+          z=$(centre "$zr" "$@")
           line="$line zrcube $z"
           [ "$p" = "$z" ] || differ=$((differ + 1))
         fi
