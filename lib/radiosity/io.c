@@ -140,22 +140,47 @@ uint64_t zr__rad_fingerprint(const zr_scene *scene) {
 
 /* ---- little-endian helpers ---- */
 
-static void put_u64(FILE *f, uint64_t v) {
+/* The writer: a save is a few million small fields (a large solution's
+   3.5 MB were ~1e6 fwrite calls, 0.015 s, on the +C state path), so
+   they are gathered here and reach the FILE a block at a time. */
+typedef struct {
+  FILE *f;
+  size_t n;
+  unsigned char b[1 << 16];
+} writer;
+
+static void put_bytes(writer *w, const void *p, size_t n) {
+  if (w->n + n > sizeof w->b) {
+    fwrite(w->b, 1, w->n, w->f);
+    w->n = 0;
+  }
+  memcpy(w->b + w->n, p, n);
+  w->n += n;
+}
+static void put_u8(writer *w, unsigned v) {
+  unsigned char b = (unsigned char)v;
+  put_bytes(w, &b, 1);
+}
+static void put_u64(writer *w, uint64_t v) {
   unsigned char b[8];
   for (int i = 0; i < 8; i++)
     b[i] = (unsigned char)(v >> (8 * i));
-  fwrite(b, 1, 8, f);
+  put_bytes(w, b, 8);
 }
-static void put_u32(FILE *f, uint32_t v) {
+static void put_u32(writer *w, uint32_t v) {
   unsigned char b[4];
   for (int i = 0; i < 4; i++)
     b[i] = (unsigned char)(v >> (8 * i));
-  fwrite(b, 1, 4, f);
+  put_bytes(w, b, 4);
 }
-static void put_f64(FILE *f, double d) {
+static void put_f64(writer *w, double d) {
   uint64_t v;
   memcpy(&v, &d, sizeof v);
-  put_u64(f, v);
+  put_u64(w, v);
+}
+static void put_flush(writer *w) {
+  fwrite(w->b, 1, w->n, w->f);
+  w->n = 0;
 }
 
 static bool get_u64(FILE *f, uint64_t *v) {
@@ -187,47 +212,51 @@ static bool get_f64(FILE *f, double *d) {
 
 /* Writes node n's subtree in preorder; order[node] gets its preorder
    number, counted by *next. */
-static void save_tree(FILE *f, const zr_radiosity *rad, int32_t n,
+static void save_tree(writer *w, const zr_radiosity *rad, int32_t n,
                       uint32_t *order, uint32_t *next) {
   const zr__rad_node *node = &rad->nodes[n];
   order[n] = (*next)++;
-  fputc(node->child >= 0, f);
+  put_u8(w, node->child >= 0);
   for (int side = 0; side < 2; side++)
     for (int c = 0; c < 3; c++)
-      put_f64(f, node->b[side][c]);
+      put_f64(w, node->b[side][c]);
   for (int side = 0; side < 2; side++)
     for (int c = 0; c < 3; c++)
-      put_f64(f, node->hd[side][c]);
+      put_f64(w, node->hd[side][c]);
   if (node->child >= 0)
     for (int k = 0; k < 4; k++)
-      save_tree(f, rad, node->child + k, order, next);
+      save_tree(w, rad, node->child + k, order, next);
 }
 
-static void save_links(FILE *f, const zr_radiosity *rad,
+static void save_links(writer *w, const zr_radiosity *rad,
                        const uint32_t *order) {
   size_t n = 0;
   for (size_t i = 0; i < rad->n_links; i++)
     n += !rad->links[i].dead;
-  put_u64(f, n);
+  put_u64(w, n);
   for (size_t i = 0; i < rad->n_links; i++) {
     const zr__rad_link *l = &rad->links[i];
     if (l->dead)
       continue;
-    put_u32(f, order[l->recv]);
-    put_u32(f, order[l->src]);
-    fputc(l->rside, f);
-    fputc(l->sside, f);
-    put_f64(f, l->ff);
-    put_f64(f, l->vis);
+    put_u32(w, order[l->recv]);
+    put_u32(w, order[l->src]);
+    put_u8(w, l->rside);
+    put_u8(w, l->sside);
+    put_f64(w, l->ff);
+    put_f64(w, l->vis);
   }
 }
 
 ZR_API zr_status zr_radiosity_save(zr_context *ctx, const zr_radiosity *rad,
                                    const char *path) {
   uint32_t *order = malloc((rad->n_nodes + 1) * sizeof *order);
-  if (order == NULL)
+  writer *w = malloc(sizeof *w);
+  if (order == NULL || w == NULL) {
+    free(order);
+    free(w);
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL,
                     "radiosity: out of memory saving '%s'", path);
+  }
   /* Written beside the target and renamed over it when complete, so a
      failure leaves an older save whole; a device or directory is
      refused by name. */
@@ -236,6 +265,7 @@ ZR_API zr_status zr_radiosity_save(zr_context *ctx, const zr_radiosity *rad,
   zr_status ts = zr__io_output_target(path, &target, why, sizeof why);
   if (ts != ZR_OK) {
     free(order);
+    free(w);
     return zr__diag(ctx, ZR_DIAG_ERROR, ts, NULL,
                     "radiosity: cannot write '%s': %s", path,
                     ts == ZR_ENOMEM ? zr_status_str(ts) : why);
@@ -248,30 +278,34 @@ ZR_API zr_status zr_radiosity_save(zr_context *ctx, const zr_radiosity *rad,
                            "radiosity: cannot write '%s': %s", path,
                            strerror(errno));
     free(order);
+    free(w);
     free(target);
     return s;
   }
-  FILE *f = tmp.f;
-  fwrite(MAGIC, 1, 8, f);
-  put_u32(f, VERSION);
-  put_u64(f, rad->fingerprint);
-  put_u32(f, (uint32_t)rad->n_surfs);
-  put_f64(f, rad->params.bf_eps);
-  put_f64(f, rad->params.area_eps);
-  put_u32(f, (uint32_t)rad->params.visibility_rays);
-  put_u32(f, (uint32_t)rad->params.uniform);
-  put_u32(f, (uint32_t)rad->params.shooting);
-  put_u64(f, rad->stats.links);
-  put_u32(f, (uint32_t)rad->stats.refine_rounds);
-  put_u32(f, (uint32_t)rad->stats.iterations);
-  put_f64(f, rad->stats.residual);
-  put_u32(f, (uint32_t)rad->params.lookup);
+  w->f = tmp.f;
+  w->n = 0;
+  put_bytes(w, MAGIC, 8);
+  put_u32(w, VERSION);
+  put_u64(w, rad->fingerprint);
+  put_u32(w, (uint32_t)rad->n_surfs);
+  put_f64(w, rad->params.bf_eps);
+  put_f64(w, rad->params.area_eps);
+  put_u32(w, (uint32_t)rad->params.visibility_rays);
+  put_u32(w, (uint32_t)rad->params.uniform);
+  put_u32(w, (uint32_t)rad->params.shooting);
+  put_u64(w, rad->stats.links);
+  put_u32(w, (uint32_t)rad->stats.refine_rounds);
+  put_u32(w, (uint32_t)rad->stats.iterations);
+  put_f64(w, rad->stats.residual);
+  put_u32(w, (uint32_t)rad->params.lookup);
   uint32_t next = 0;
   for (size_t s = 0; s < rad->n_surfs; s++)
-    save_tree(f, rad, rad->surfs[s].root, order, &next);
-  save_links(f, rad, order);
+    save_tree(w, rad, rad->surfs[s].root, order, &next);
+  save_links(w, rad, order);
+  put_flush(w);
+  free(w);
   free(order);
-  bool bad = ferror(f) != 0;
+  bool bad = ferror(tmp.f) != 0;
   zr_status st = ZR_OK;
   if (zr__io_temp_close(&tmp, !bad) != 0 || bad)
     st = zr__diag(ctx, ZR_DIAG_ERROR, ZR_EIO, NULL,
