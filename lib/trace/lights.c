@@ -382,6 +382,11 @@ static zr_rgb area_all_lit(const zr_light *light) {
 
 zr_rgb zr__light_visibility(const zr_tracer *tracer, const zr_light *light,
                             zr_vec3 p, zr_vec3 lit_from) {
+  /* What the steps below come to for such a light (point_visibility,
+     sample_visibility, shadow_target give the same ray). */
+  if (zr__light_one_ray(tracer, light))
+    return zr__shadow_transmission(tracer, light, light->location,
+                                   lit_from);
   if ((light->shadowless || tracer->no_shadows) &&
       !light->projected_through)
     return zr_rgb3(1, 1, 1);
