@@ -605,6 +605,56 @@ static void test_shade_cached_blocker_stops_only_when_opaque(void **state) {
   }
 }
 
+/*
+ * shade() asks the path beyond a surface (zr__media_cross) and the
+ * reflection's variation only where they matter: an opaque surface
+ * with a constant reflection takes its reflection as it is.  A mirror
+ * floor without diffuse, seen at 45 degrees under a white background,
+ * shows its reflection amount: constant, varying toward grazing,
+ * metallic, and by Fresnel's law for an interior of ior 1.5 (the path
+ * beyond is needed there though the floor is opaque), each against
+ * zr__reflection_amount at the hit, and the last three differ from
+ * the constant they would show if the shortcut took them.
+ */
+static void test_shade_opaque_reflection_amounts(void **state) {
+  (void)state;
+  static const struct {
+    const char *reflection;
+    double n2;
+    bool varies;
+  } cases[] = {
+      {"reflection 0.3", 1.0, false},
+      {"reflection { 0.1, 0.9 }", 1.0, true},
+      {"reflection { 0.5 metallic 1 }", 1.0, true},
+      {"reflection { 0, 1 fresnel }", 1.5, true},
+  };
+  for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+    char text[512];
+    snprintf(text, sizeof text,
+             "background { rgb 1 }\n"
+             "plane { y, 0 pigment { rgb <1, 0.5, 0.25> }\n"
+             "  finish { ambient 0 diffuse 0 %s } interior { ior 1.5 } }\n",
+             cases[i].reflection);
+    zr_context *ctx = NULL;
+    assert_int_equal(zr_context_new(&ctx), ZR_OK);
+    zr_scene *scene = NULL;
+    assert_int_equal(zr_scene_parse_string(ctx, "t.pov", text, strlen(text),
+                                           &scene),
+                     ZR_OK);
+    const zr_object *floor = scene->primitives[0];
+    const zr_finish *f = floor->texture->finish;
+    zr_vec3 d = zr_v3_norm(zr_v3(0, -1, 1));
+    zr_rgb want = zr__reflection_amount(f, floor->texture->pigment->colour, d,
+                                        zr_v3(0, 1, 0), 1.0, cases[i].n2);
+    if (cases[i].varies)
+      assert_true(fabs(want.g - f->reflection.g) > 0.01);
+    zr_rgb c = trace(scene, zr_v3(0, 1, -1), zr_v3(0, -1, 1));
+    assert_rgb(c, want.r, want.g, want.b, EPS);
+    zr_scene_free(scene);
+    zr_context_free(ctx);
+  }
+}
+
 static void test_shade_refraction_and_fresnel_formulas(void **state) {
   (void)state;
   zr_vec3 n = zr_v3(0, 1, 0);
@@ -996,6 +1046,7 @@ int main(void) {
       cmocka_unit_test(test_shade_reflection_of_background),
       cmocka_unit_test(test_shade_shadows_through_filter_and_transmit),
       cmocka_unit_test(test_shade_one_shadow_ray_lights),
+      cmocka_unit_test(test_shade_opaque_reflection_amounts),
       cmocka_unit_test(test_shade_cached_blocker_stops_only_when_opaque),
       cmocka_unit_test(test_shade_refraction_and_fresnel_formulas),
       cmocka_unit_test(test_shade_max_trace_level_and_adc_bailout),
