@@ -26,7 +26,8 @@ examples=/usr/share/doc/povray/examples
 include=/usr/share/povray-3.7/include
 size=${SIZE:-+W160 +H120}
 work=$(mktemp -d "${TMPDIR:-/tmp}/zr-same.XXXXXX")
-trap 'rm -rf "$work"' EXIT INT TERM
+trap 'rm -rf "$work"' EXIT
+trap 'exit 130' INT TERM
 
 # The program and library folder of a build folder or of a copy.
 program() {
