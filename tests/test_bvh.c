@@ -702,6 +702,12 @@ static void test_bvh_plane_crossings_match_intersect(void **state) {
     size_t walked = 0;
     assert_true(zr__bvh_all(s->bvh, &ray, tmin, tmax, count_visit, &walked));
     assert_int_equal(walked, (size_t)nb);
+    /* So does the nearest search, which tests the plane in place. */
+    zr_hit near;
+    bool hit = zr__bvh_nearest(s->bvh, &ray, tmin, tmax, &near);
+    assert_int_equal(hit, nb > 0);
+    if (hit)
+      assert_true(near.t == b[0].t && near.object == p);
   }
   /* Both answers, and the skipped division, occur often. */
   assert_true(found > 10000 && behind > 10000);

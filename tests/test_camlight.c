@@ -240,6 +240,15 @@ static void test_camlight_spot_cylinder_fade_factors(void **state) {
   zr_rgb c;
   assert_true(zr__light_arrive(&s->lights[2], zr_v3(1, 0, 0), &l, &c));
   assert_near(l.y, 1.0, 1e-12);
+  /* The light that arrives carries both factors (zr__light_arrive_way
+     asks for each only where the light has a cone or fades). */
+  assert_near(c.r, zr__light_cone(&s->lights[2], zr_v3(1, 0, 0)), 1e-15);
+  assert_near(c.r, pow(1.0 - 1.0 / 6.0, 3.0), 1e-12);
+  assert_true(zr__light_arrive(&s->lights[0], zr_v3(3.1840, 0, 0), &l, &c));
+  assert_near(c.g, 0.82193, POV_TOL);
+  assert_true(zr__light_arrive(&s->lights[3], zr_v3(0, 0, 0), &l, &c));
+  assert_near(c.b, 0.4, 1e-12);
+  assert_false(zr__light_arrive(&s->lights[0], zr_v3(7, 0, 0), &l, &c));
 }
 
 /* Renders the scene text at w x h and returns the floats (caller

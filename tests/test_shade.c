@@ -19,6 +19,7 @@
 #include "radiosity/radiosity.h"
 #include "scene/scene.h"
 #include "trace/prepare.h"
+#include "trace/lights.h"
 #include "trace/render.h"
 #include "trace/shade.h"
 #include "zrcube.h"
@@ -469,6 +470,191 @@ static void test_shade_shadows_through_filter_and_transmit(void **state) {
   zr_scene_free(s);
 }
 
+/*
+ * Shading calls zr__shadow_transmission itself for the lights for which
+ * zr__light_one_ray says zr__light_visibility is one ray to the light's
+ * location, and zr__light_visibility answers them so too.  Each light
+ * here is one the rule must leave out, set where that ray is blocked
+ * (a sphere halfway from the floor point (5, 0, 0) to the location
+ * (0, 10, 0)) or clear, and the true answer is the other: a parallel
+ * or cylinder light's ray goes straight up, an area light's two points
+ * pass the sphere, a shadowless light and +Q3 cast no shadow, and a
+ * light projected_through an object the ray misses brings none.  A
+ * point light and a spotlight are one ray, blocked.  Each is asked of
+ * zr__light_visibility and seen in a traced pixel of the floor.
+ */
+static void test_shade_one_shadow_ray_lights(void **state) {
+  (void)state;
+  static const struct {
+    const char *light;
+    bool one_ray, no_shadows, lit;
+  } cases[] = {
+      {"<0, 10, 0> rgb 1", true, false, false},
+      {"<0, 10, 0> rgb 1 spotlight point_at <5, 0, 0> radius 30 "
+       "falloff 45",
+       true, false, false},
+      {"<0, 10, 0> rgb 1 parallel point_at <0, 0, 0>", false, false, true},
+      {"<0, 10, 0> rgb 1 cylinder point_at <0, 0, 0> radius 20 falloff 30",
+       false, false, true},
+      {"<0, 10, 0> rgb 1 area_light <6, 0, 0>, <0, 0, 0.1>, 2, 2",
+       false, false, true},
+      {"<0, 10, 0> rgb 1 shadowless", false, false, true},
+      {"<0, 10, 0> rgb 1", false, true, true},
+  };
+  for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+    char text[512];
+    snprintf(text, sizeof text,
+             "plane { y, 0 pigment { rgb 1 } finish { ambient 0 } }\n"
+             "sphere { <2.5, 5, 0>, 0.5 pigment { rgb 1 } }\n"
+             "light_source { %s }\n",
+             cases[i].light);
+    zr_context *ctx = NULL;
+    assert_int_equal(zr_context_new(&ctx), ZR_OK);
+    zr_scene *scene = NULL;
+    assert_int_equal(zr_scene_parse_string(ctx, "t.pov", text, strlen(text),
+                                           &scene),
+                     ZR_OK);
+    zr_render_stats stats = {0};
+    zr_tracer tr = {.scene = scene, .stats = &stats};
+    tr.no_shadows = cases[i].no_shadows;
+    const zr_light *light = &scene->lights[0];
+    assert_int_equal(zr__light_one_ray(&tr, light), cases[i].one_ray);
+    zr_vec3 p = zr_v3(5, 1e-6, 0);
+    zr_rgb v = zr__light_visibility(&tr, light, p, p);
+    double want = cases[i].lit ? 1.0 : 0.0;
+    assert_rgb(v, want, want, want, 0);
+    /* The floor's pixel at (5, 0, 0): lit (diffuse 0.6 N.L) or black. */
+    zr_ray ray = {zr_v3(5, 1, -1), zr_v3(0, -1, 1)};
+    zr_rgb c = zr__trace_ray(&tr, &ray, 1, 1.0, NULL);
+    if (cases[i].lit)
+      assert_true(c.r > 0.05);
+    else
+      assert_true(c.r == 0.0);
+    zr_scene_free(scene);
+    zr_context_free(ctx);
+  }
+  /* projected_through an object the ray to the light misses: no light,
+     though nothing blocks that ray (the floor point (-5, 0, 0)). */
+  const char *text = "plane { y, 0 pigment { rgb 1 } }\n"
+                     "light_source { <0, 10, 0> rgb 1 projected_through "
+                     "{ sphere { <10, 5, 0>, 1 } } }\n";
+  zr_context *ctx = NULL;
+  assert_int_equal(zr_context_new(&ctx), ZR_OK);
+  zr_scene *scene = NULL;
+  assert_int_equal(
+      zr_scene_parse_string(ctx, "t.pov", text, strlen(text), &scene), ZR_OK);
+  zr_render_stats stats = {0};
+  zr_tracer tr = {.scene = scene, .stats = &stats};
+  assert_false(zr__light_one_ray(&tr, &scene->lights[0]));
+  zr_vec3 p = zr_v3(-5, 1e-6, 0);
+  assert_rgb(zr__light_visibility(&tr, &scene->lights[0], p, p), 0, 0, 0, 0);
+  zr_scene_free(scene);
+  zr_context_free(ctx);
+}
+
+/*
+ * The shadow cache's blocker found again answers at once when it stops
+ * any ray it crosses (zr_shadow_cache.stops), and is shaded as the walk
+ * would otherwise: a sphere whose checker pigment is opaque on one side
+ * and clear on the other blocks the first ray (and is kept), then must
+ * let the second through where it is clear; an opaque sphere kept
+ * blocks a later ray through it and not one beside it.
+ */
+static void test_shade_cached_blocker_stops_only_when_opaque(void **state) {
+  (void)state;
+  const char *texts[] = {
+      "sphere { <0, 5, 0>, 1 pigment { checker rgb 0, rgbt <1, 1, 1, 1> "
+      "scale <10, 10, 10> translate <0.001, 0, 0> } }\n"
+      "light_source { <0, 10, 0> rgb 1 }\n",
+      "sphere { <0, 5, 0>, 1 pigment { rgb 0.5 } }\n"
+      "light_source { <0, 10, 0> rgb 1 }\n"};
+  for (int k = 0; k < 2; k++) {
+    zr_context *ctx = NULL;
+    assert_int_equal(zr_context_new(&ctx), ZR_OK);
+    zr_scene *scene = NULL;
+    assert_int_equal(zr_scene_parse_string(ctx, "t.pov", texts[k],
+                                           strlen(texts[k]), &scene),
+                     ZR_OK);
+    zr_render_stats stats = {0};
+    zr_shadow_cache cache;
+    memset(&cache, 0, sizeof cache);
+    zr_tracer tr = {.scene = scene, .stats = &stats, .shadow_cache = &cache};
+    const zr_light *light = &scene->lights[0];
+    zr_vec3 to = light->location;
+    /* Through the sphere's opaque side (x > 0.001 in the checker's
+       cell of colour 0): blocked, and the sphere is kept. */
+    zr_rgb a = zr__shadow_transmission(&tr, light, to, zr_v3(0.5, 0, 0));
+    assert_rgb(a, 0, 0, 0, 0);
+    bool kept = false;
+    for (int j = 0; j < ZR_SHADOW_CACHE_SLOTS; j++)
+      if (cache.light[j] == light && cache.blocker[j]) {
+        kept = true;
+        assert_int_equal(cache.stops[j], k == 1);
+      }
+    assert_true(kept);
+    /* Through its other side: clear for the checker, blocked by the
+       opaque sphere. */
+    zr_rgb b = zr__shadow_transmission(&tr, light, to, zr_v3(-0.5, 0, 0));
+    double want = k == 0 ? 1.0 : 0.0;
+    assert_rgb(b, want, want, want, 0);
+    /* Beside the sphere: clear either way. */
+    zr_rgb c = zr__shadow_transmission(&tr, light, to, zr_v3(3, 0, 0));
+    assert_rgb(c, 1, 1, 1, 0);
+    zr_scene_free(scene);
+    zr_context_free(ctx);
+  }
+}
+
+/*
+ * shade() asks the path beyond a surface (zr__media_cross) and the
+ * reflection's variation only where they matter: an opaque surface
+ * with a constant reflection takes its reflection as it is.  A mirror
+ * floor without diffuse, seen at 45 degrees under a white background,
+ * shows its reflection amount: constant, varying toward grazing,
+ * metallic, and by Fresnel's law for an interior of ior 1.5 (the path
+ * beyond is needed there though the floor is opaque), each against
+ * zr__reflection_amount at the hit, and the last three differ from
+ * the constant they would show if the shortcut took them.
+ */
+static void test_shade_opaque_reflection_amounts(void **state) {
+  (void)state;
+  static const struct {
+    const char *reflection;
+    double n2;
+    bool varies;
+  } cases[] = {
+      {"reflection 0.3", 1.0, false},
+      {"reflection { 0.1, 0.9 }", 1.0, true},
+      {"reflection { 0.5 metallic 1 }", 1.0, true},
+      {"reflection { 0, 1 fresnel }", 1.5, true},
+  };
+  for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+    char text[512];
+    snprintf(text, sizeof text,
+             "background { rgb 1 }\n"
+             "plane { y, 0 pigment { rgb <1, 0.5, 0.25> }\n"
+             "  finish { ambient 0 diffuse 0 %s } interior { ior 1.5 } }\n",
+             cases[i].reflection);
+    zr_context *ctx = NULL;
+    assert_int_equal(zr_context_new(&ctx), ZR_OK);
+    zr_scene *scene = NULL;
+    assert_int_equal(zr_scene_parse_string(ctx, "t.pov", text, strlen(text),
+                                           &scene),
+                     ZR_OK);
+    const zr_object *floor = scene->primitives[0];
+    const zr_finish *f = floor->texture->finish;
+    zr_vec3 d = zr_v3_norm(zr_v3(0, -1, 1));
+    zr_rgb want = zr__reflection_amount(f, floor->texture->pigment->colour, d,
+                                        zr_v3(0, 1, 0), 1.0, cases[i].n2);
+    if (cases[i].varies)
+      assert_true(fabs(want.g - f->reflection.g) > 0.01);
+    zr_rgb c = trace(scene, zr_v3(0, 1, -1), zr_v3(0, -1, 1));
+    assert_rgb(c, want.r, want.g, want.b, EPS);
+    zr_scene_free(scene);
+    zr_context_free(ctx);
+  }
+}
+
 static void test_shade_refraction_and_fresnel_formulas(void **state) {
   (void)state;
   zr_vec3 n = zr_v3(0, 1, 0);
@@ -859,6 +1045,9 @@ int main(void) {
       cmocka_unit_test(test_shade_metallic_curve_matches_povray),
       cmocka_unit_test(test_shade_reflection_of_background),
       cmocka_unit_test(test_shade_shadows_through_filter_and_transmit),
+      cmocka_unit_test(test_shade_one_shadow_ray_lights),
+      cmocka_unit_test(test_shade_opaque_reflection_amounts),
+      cmocka_unit_test(test_shade_cached_blocker_stops_only_when_opaque),
       cmocka_unit_test(test_shade_refraction_and_fresnel_formulas),
       cmocka_unit_test(test_shade_max_trace_level_and_adc_bailout),
       cmocka_unit_test(test_shade_transparency_matches_povray),

@@ -63,6 +63,23 @@ zr_rgb zr__light_visibility(const zr_tracer *tracer, const zr_light *light,
                             zr_vec3 p, zr_vec3 lit_from);
 
 /*
+ * Whether zr__light_visibility is, for this light, one shadow ray from
+ * lit_from to the light's location, zr__shadow_transmission(tracer,
+ * light, light->location, lit_from): a point light (no area, no
+ * projected_through, neither parallel nor cylindrical) that casts
+ * shadows.  Shading then calls it directly: the steps of
+ * zr__light_visibility, each passing the points down to the next, cost
+ * ~150 instructions a shadow ray, 7% of the sphereflake's (callgrind,
+ * 512^2).
+ */
+static inline bool zr__light_one_ray(const zr_tracer *tracer,
+                                     const zr_light *light) {
+  return !light->area && !light->projected_through && !light->shadowless &&
+         !tracer->no_shadows && !light->parallel &&
+         light->kind != ZR_LIGHT_CYLINDER;
+}
+
+/*
  * Whether light lights object, as light groups decide ("Light Group"):
  * a light of no group lights the objects of no group, and those of a
  * group with global_lights on; a light of a group lights the objects of

@@ -364,6 +364,12 @@ static bool cached_blocker_blocks(const zr_shadow_cache *cache,
     return false;
   zr_hit h[ZR_MAX_CROSSINGS];
   int n = zr__bvh_crossings_t(o, w->ray, 0.0, tmax, h);
+  /* shadow_visit below would stop at the first crossing of such a
+     blocker (see stops_light): the crossings need no shading.  A
+     quarter of the sphereflake's tries find their blocker again, and
+     shading each crossing cost ~160 instructions (callgrind, 512^2). */
+  if (cache->stops[slot])
+    return n > 0;
   for (int k = 0; k < n; k++) {
     shadow_walk probe;
     probe.ray = w->ray;
@@ -420,6 +426,8 @@ zr_rgb zr__shadow_transmission(const zr_tracer *tracer,
         (cheap_blocker(whole) || zr__is_csg(whole->kind))) {
       cache->light[cache_slot(light)] = light;
       cache->blocker[cache_slot(light)] = whole;
+      cache->stops[cache_slot(light)] =
+          cheap_blocker(whole) && stops_light(whole);
     }
     return zr_rgb3(0, 0, 0);
   }
@@ -675,7 +683,10 @@ static zr_rgb direct_light(const zr_tracer *tr, const surface *s,
        negative colour takes light away (POV-Ray 3.7 darkens a lit
        plane by "light_source { ... color rgb -0.5 }": crater_dat.pov,
        abyss.pov, scenes/negative_light.pov). */
-    zr_rgb vis = zr__light_visibility(shadows, light, s->p, from);
+    zr_rgb vis = zr__light_one_ray(shadows, light)
+                     ? zr__shadow_transmission(shadows, light,
+                                               light->location, from)
+                     : zr__light_visibility(shadows, light, s->p, from);
     /* Nothing arrives only when every channel is 0: an interior of
        negative fade_distance can leave a shadow ray less than nothing,
        which povray 3.7 takes from the lit point's other light
@@ -761,6 +772,15 @@ zr_rgb zr__reflection_amount(const zr_finish *f, zr_colour colour,
 }
 
 static zr_rgb reflection_amount(const surface *s, double n1, double n2) {
+  /* A constant reflection is what zr__reflection_amount returns
+     unchanged (not variable, no metallic), without passing it the
+     colour and vectors (~100 instructions a hit). */
+  const zr_finish *f = s->finish;
+  if (!f->reflection_fresnel && f->reflection.r == f->reflection_max.r &&
+      f->reflection.g == f->reflection_max.g &&
+      f->reflection.b == f->reflection_max.b &&
+      f->reflection_metallic == 0.0)
+    return f->reflection;
   return zr__reflection_amount(s->finish, s->colour, s->d, s->n, n1, n2);
 }
 
@@ -1035,9 +1055,25 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
   }
 
   /* The indices of refraction on this side (n1) and beyond (n2). */
+  zr_rgb trans = s->layer ? zr_rgb3(0, 0, 0) : see_through(col);
+  /* The path beyond the surface and the two iors serve Fresnel's law
+     and the rays through the surface: an opaque surface with a plain
+     reflection (most, the sphereflake's all) needs neither, and
+     zr__media_cross, asked for every hit, cost ~110 instructions there
+     (callgrind, sphereflake 512^2).  A surface that lets nothing
+     through (every channel exactly 0, and no conserve_energy to scale
+     it) spawns no transmitted ray below, whatever the path. */
+  bool opaque = trans.r == 0.0 && trans.g == 0.0 && trans.b == 0.0 &&
+                !f->conserve_energy;
   zr_media next;
-  media_beyond(tr, s, media, &next);
-  double n1 = zr__media_ior(media), n2 = zr__media_ior(&next);
+  double n1 = 1.0, n2 = 1.0;
+  if (opaque && !f->reflection_fresnel) {
+    next.n = next.passes = 0;
+  } else {
+    media_beyond(tr, s, media, &next);
+    n1 = zr__media_ior(media);
+    n2 = zr__media_ior(&next);
+  }
   /* Where a ray goes out of an interior and its path still holds
      another (a glass inside a hollow sky sphere, a solid plane or any
      object the camera is in), povray 3.7 reflects no Fresnel share:
@@ -1050,7 +1086,6 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
      is inside two sky spheres). */
   bool out_within = media && next.n > 0 && next.n < media->n;
   zr_rgb refl = reflection_amount(s, n1, out_within ? n1 : n2);
-  zr_rgb trans = s->layer ? zr_rgb3(0, 0, 0) : see_through(col);
   if (f->conserve_energy)
     trans = zr_rgb3(trans.r * (1.0 - refl.r), trans.g * (1.0 - refl.g),
                     trans.b * (1.0 - refl.b));
@@ -1404,10 +1439,22 @@ static void clear_through_way(const zr_tracer *tracer, double before,
    (tests/test_fog_povray.sh). */
 static zr_rgb fogged(const zr_scene *scene, const zr_media *media,
                      zr_vec3 origin, zr_vec3 dir, double t, zr_rgb c) {
+  /* zr__atmosphere_apply's own first test, without the call (passing
+     the vectors cost ~50 instructions a ray where nothing was done). */
+  if (!scene->settings.fogs && !scene->settings.rainbows)
+    return c;
   for (int i = 0; media && i < media->n; i++)
     if (!media->objects[i]->hollow)
       return c;
   return zr__atmosphere_apply(scene, origin, dir, t, c);
+}
+
+/* Whether zr__media_along returns the colour it is given at once: no
+   media on the ray's path nor in the atmosphere, or none wanted. */
+static inline bool no_media_along(const zr_tracer *tracer,
+                                  const zr_media *inside) {
+  return tracer->no_media || ((!inside || inside->n == 0) &&
+                              tracer->scene->settings.n_media == 0);
 }
 
 static zr_rgb trace_upto(const zr_tracer *tracer, const zr_ray *ray,
@@ -1501,10 +1548,18 @@ static zr_rgb trace_upto(const zr_tracer *tracer, const zr_ray *ray,
   const zr_interior *fade = stretch_interior(scene, media, hit.object);
   if (tracer->clear)
     clear_through_way(tracer, before, media, ray, hit.t, fade);
-  zr_rgb c = zr__media_along(tracer, media, ray->origin, ray->dir, hit.t,
-                             lit);
-  return fade_by(fade, hit.t * zr_v3_len(ray->dir),
-                 fogged(scene, media, ray->origin, ray->dir, hit.t, c));
+  /* zr__media_along's and fade_by's first tests written here: most
+     rays of most scenes cross no media and leave no fading interior,
+     and the calls cost as much as the rest of this function's own
+     work (~60 instructions a ray; callgrind, sphereflake 512^2). */
+  zr_rgb c = no_media_along(tracer, media)
+                 ? lit
+                 : zr__media_along(tracer, media, ray->origin, ray->dir,
+                                   hit.t, lit);
+  c = fogged(scene, media, ray->origin, ray->dir, hit.t, c);
+  if (!fade || fade->fade_distance == 0.0)
+    return c;
+  return fade_by(fade, hit.t * zr_v3_len(ray->dir), c);
 }
 
 zr_rgb zr__trace_ray(const zr_tracer *tracer, const zr_ray *ray, int level,

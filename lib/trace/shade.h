@@ -118,6 +118,10 @@ typedef struct zr_shaft_plan {
 typedef struct zr_shadow_cache {
   const zr_light *light[ZR_SHADOW_CACHE_SLOTS];
   const zr_object *blocker[ZR_SHADOW_CACHE_SLOTS];
+  /* The blocker is a shape of one closed form that stops any ray it
+     crosses (shade.c, stops_light): one crossing in the ray's interval
+     answers, without shading the crossing as the walk does. */
+  bool stops[ZR_SHADOW_CACHE_SLOTS];
   /* The last shafts tested (lib/trace/shaft.c): hull + 1 (0: an empty
      slot), the point the shadow rays leave from, and the plan, which
      the next light of the same group from the same point reuses. */
