@@ -135,8 +135,9 @@ static const char *const one_host_env[][2] = {
        of mpirun: 34 ms between a rank's first request and the reply,
        spent touching the segments' pages), where "hash" sends the few
        keys of a one-host job over the socket the rank has anyway.
-       MPI_Init of a rank, wall (bench/launch.sh's probe): 0.065 ->
-       0.030 s. */
+       MPI_Init of a rank, wall (a probe of MPI_Init_thread and
+       MPI_Finalize alone under mpirun -n 1 and -n 2, 3 runs each):
+       0.065 -> 0.030 s. */
     {"PMIX_MCA_gds", "hash"},
     {"HWLOC_COMPONENTS", "-pci,-linuxio,-opencl,-gl"},
     {"HWLOC_PLUGINS_BLACKLIST",
