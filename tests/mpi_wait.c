@@ -8,7 +8,10 @@
  *   mpi_wait [NAME=VALUE]...
  *
  * Each NAME=VALUE: what environment variable NAME must be after
- * zr__par_init ("-": unset); a lone VALUE is OMPI_MCA_pml's.  The
+ * zr__par_init ("-": unset); a lone VALUE is OMPI_MCA_pml's; the word
+ * "nodelay": the rank must have a TCP connection to a loopback address
+ * (Open MPI 4's to its launcher) and every such connection must have
+ * Nagle's algorithm off (par.c, launcher_without_delay).  The
  * last rank sleeps 2 s (no CPU) before it joins zr__par_agree with a
  * failure; every other rank is in the agreement meanwhile and must spend
  * under 0.2 s of CPU there (a spinning wait takes the whole 2 s of a
@@ -19,7 +22,54 @@
 #include <string.h>
 #include <time.h>
 
+#include <arpa/inet.h>
+#include <dirent.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <sys/socket.h>
+#include <sys/stat.h>
+
 #include "par/par.h"
+
+/* This process's TCP connections to loopback addresses: how many, and
+   how many of them still delay small writes (TCP_NODELAY unset). */
+static void loopback_sockets(int *count, int *delaying) {
+  *count = *delaying = 0;
+  DIR *fds = opendir("/proc/self/fd");
+  if (!fds)
+    return;
+  struct dirent *e;
+  while ((e = readdir(fds)) != NULL) {
+    int fd = atoi(e->d_name);
+    struct stat st;
+    int type = 0, nodelay = 0;
+    socklen_t len = sizeof type;
+    if (e->d_name[0] == '.' || fd == dirfd(fds) || fstat(fd, &st) != 0 ||
+        !S_ISSOCK(st.st_mode) ||
+        getsockopt(fd, SOL_SOCKET, SO_TYPE, &type, &len) != 0 ||
+        type != SOCK_STREAM)
+      continue;
+    struct sockaddr_storage peer;
+    len = sizeof peer;
+    if (getpeername(fd, (struct sockaddr *)&peer, &len) != 0)
+      continue;
+    int loopback =
+        peer.ss_family == AF_INET
+            ? (ntohl(((struct sockaddr_in *)&peer)->sin_addr.s_addr) >>
+               24) == 127
+            : peer.ss_family == AF_INET6 &&
+                  IN6_IS_ADDR_LOOPBACK(
+                      &((struct sockaddr_in6 *)&peer)->sin6_addr);
+    if (!loopback)
+      continue;
+    len = sizeof nodelay;
+    ++*count;
+    if (getsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &nodelay, &len) != 0 ||
+        !nodelay)
+      ++*delaying;
+  }
+  closedir(fds);
+}
 
 int main(int argc, char **argv) {
   zr_par *par = NULL;
@@ -30,6 +80,17 @@ int main(int argc, char **argv) {
   int failed = 0;
   int rank = zr__par_rank(par), size = zr__par_size(par);
   for (int i = 1; i < argc; i++) {
+    if (strcmp(argv[i], "nodelay") == 0) {
+      int count, delaying;
+      loopback_sockets(&count, &delaying);
+      if (count == 0 || delaying > 0) {
+        fprintf(stderr, "mpi_wait: rank %d: %d of %d loopback TCP "
+                        "connections delay small writes\n", rank,
+                delaying, count);
+        failed = 1;
+      }
+      continue;
+    }
     const char *eq = strchr(argv[i], '=');
     char name[64] = "OMPI_MCA_pml";
     const char *want = argv[i];

@@ -193,28 +193,6 @@ zr_status zr__team_exchange_in(const zr_team *t, zr_status local,
   return s;
 }
 
-zr_status zr__team_agree(const zr_team *t, zr_status local) {
-  int n = zr__team_size(t);
-  if (n == 1)
-    return local;
-  /* One allgather of the headers alone. */
-  header *heads = malloc((size_t)n * sizeof *heads);
-  size_t *counts = malloc((size_t)n * sizeof *counts);
-  zr_status s = ZR_ENOMEM;
-  if (heads && counts) {
-    header me = {local, 0};
-    for (int r = 0; r < n; r++)
-      counts[r] = sizeof(header);
-    s = t->allgather(t->user, &me, heads, counts);
-    for (int r = 0; s == ZR_OK && r < n; r++)
-      if (heads[r].status < s)
-        s = (zr_status)heads[r].status;
-  }
-  free(heads);
-  free(counts);
-  return s;
-}
-
 zr_status zr__team_same_key(const zr_team *t, zr_status local,
                             uint64_t key) {
   int n = zr__team_size(t);
@@ -241,6 +219,14 @@ zr_status zr__team_same_key(const zr_team *t, zr_status local,
   free(heads);
   free(counts);
   return s;
+}
+
+/* A status-only exchange is zr__team_same_key's allgather with the key
+   every member passes alike: the same one call, the same bits.  A
+   member in zr__team_agree that meets another's keyed step (a bug) now
+   fails with it, ZR_EINVAL on both, instead of one side going on. */
+zr_status zr__team_agree(const zr_team *t, zr_status local) {
+  return zr__team_same_key(t, local, 0);
 }
 
 /* Room for n more bytes: the capacity doubled from 256 until it holds

@@ -81,7 +81,8 @@ zr_status zr__team_exchange_in(const zr_team *t, zr_status local,
 char *zr__team_room_get(zr__team_room *room, size_t size);
 void zr__team_room_free(zr__team_room *room);
 
-/* The status all members agree on (a status-only exchange). */
+/* The status all members agree on (a status-only exchange:
+   zr__team_same_key with key 0). */
 zr_status zr__team_agree(const zr_team *t, zr_status local);
 
 /*
