@@ -396,6 +396,7 @@ typedef struct zr_sdl_lexer {
      started again after a run), so the lexer may take plain words and
      braces itself before it (tokens.c, quick_token). */
   bool fresh;
+  bool restart; /* the scanner is to be restarted before it reads */
   bool scanner_only; /* never take them (tests compare the two) */
   const char *last_name; /* the identifier interned last, and its */
   size_t last_name_length; /* length (zr__sdl_lex_intern) */
