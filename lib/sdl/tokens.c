@@ -559,6 +559,11 @@ static zr_status sphere_run(zr_sdl_file *f, size_t *cap,
     if (w == end || !isalpha((unsigned char)f->bytes[end]) || !k ||
         !ends_sphere(k->token))
       return ZR_OK;
+    /* The next token, which quick_token takes (a word of the file at
+       an offset is always the same word). */
+    lx->known_keyword = k;
+    lx->known_at = end;
+    lx->known_length = w - end;
   }
   /* The numbers go with the token (32 bytes a sphere in the file's
      arena): the grammar's action read them again from the bytes, 9% of
@@ -623,6 +628,10 @@ static int quick_token(zr_sdl_lexer *lx, zr_sdl_token *t) {
   if (c == '{' || c == '}') {
     t->kind = c;
     t->length = 1;
+  } else if (lx->known_keyword && pos == lx->known_at) {
+    t->kind = lx->known_keyword->token;
+    t->v.str = lx->known_keyword->name;
+    t->length = (int)lx->known_length;
   } else if ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_') {
     size_t w = pos + 1;
     while (w < end && is_word_byte(b[w]))
