@@ -70,6 +70,92 @@ static void test_numlist_numbers_like_strtod(void **state) {
   }
 }
 
+/* x read as a sphere's radius at the end of the bytes, where fewer than
+   16 bytes follow it (numlist.c's byte loops), and as the first number
+   of the centre with many bytes after it (its eight-byte reads): both
+   give strtod's bits, and the reader ends where the text does. */
+static void check_both_paths(const char *x, char after) {
+  double want = strtod(x, NULL);
+  char text[256];
+  snprintf(text, sizeof text, "<0, 0, 0>, %s%c", x, after == '>' ? '}' : after);
+  zr_sdl_numreader r = reader(text, false);
+  double v[4];
+  if (!zr__sdl_numlist_sphere(&r, v))
+    fail_msg("'%s' (at the end) not read", text);
+  if (memcmp(&v[3], &want, sizeof want) != 0)
+    fail_msg("'%s' read at the end as %.17g; strtod gives %.17g", x, v[3],
+             want);
+  assert_int_equal(r.pos, strlen(text) - 1);
+  /* x before a blank or a comma: the centre's x; before '>': its z. */
+  bool first = after == ' ' || after == ',';
+  snprintf(text, sizeof text,
+           first ? "<%s%s 0, 0>, 1                        }"
+                 : "<0, 0, %s%s, 1                        }",
+           x, after == ' ' ? " ," : first ? "," : ">");
+  r = reader(text, false);
+  if (!zr__sdl_numlist_sphere(&r, v))
+    fail_msg("'%s' (followed by more) not read", text);
+  if (memcmp(&v[first ? 0 : 2], &want, sizeof want) != 0)
+    fail_msg("'%s' read with more after it as %.17g; strtod gives %.17g", x,
+             v[first ? 0 : 2], want);
+}
+
+/* Every shape of number the eight-byte reads take or pass on: 0 to 9
+   digits before the point, none or 0 to 9 after it, leading and
+   trailing zeros, with and without an exponent, after each byte that
+   may end a number; then bytes that a number may not end on ("1.5:",
+   "12a"), which must leave the reader where it was. */
+static void test_numlist_eight_byte_reads(void **state) {
+  (void)state;
+  static const char ends[] = {' ', ',', '>', '}'};
+  unsigned long long seed = 7;
+  for (int whole = 0; whole <= 9; whole++)
+    for (int part = -1; part <= 9; part++)
+      for (int round = 0; round < 60; round++) {
+        char x[64];
+        size_t n = 0;
+        for (int i = 0; i < whole; i++) {
+          seed = seed * 6364136223846793005ULL + 1442695040888963407ULL;
+          /* round 0: all zeros; 1: all nines; then random digits */
+          x[n++] = (char)('0' + (round == 0   ? 0
+                                 : round == 1 ? 9
+                                              : (int)((seed >> 33) % 10)));
+        }
+        if (part >= 0) {
+          x[n++] = '.';
+          for (int i = 0; i < part; i++) {
+            seed = seed * 6364136223846793005ULL + 1442695040888963407ULL;
+            x[n++] = (char)('0' + (round == 0   ? 0
+                                   : round == 1 ? 9
+                                                : (int)((seed >> 33) % 10)));
+          }
+        }
+        if (whole == 0 && part <= 0)
+          continue; /* "" and ".": no number */
+        if (round % 3 == 2) {
+          seed = seed * 6364136223846793005ULL + 1442695040888963407ULL;
+          n += (size_t)snprintf(x + n, sizeof x - n, "e%s%d",
+                                seed >> 63 ? "-" : "", (int)((seed >> 40) % 30));
+        }
+        x[n] = '\0';
+        check_both_paths(x, ends[round % 4]);
+      }
+  static const char *const not_numbers[] = {
+      "<1.5:, 0, 0>, 1                       }",
+      "<12a, 0, 0>, 1                        }",
+      "<1234567/, 0, 0>, 1                   }",
+      "<0.1234567., 0, 0>, 1                 }",
+      "<., 0, 0>, 1                          }",
+      "<1.2.3, 0, 0>, 1                      }"};
+  for (size_t i = 0; i < sizeof not_numbers / sizeof *not_numbers; i++) {
+    zr_sdl_numreader r = reader(not_numbers[i], false);
+    double v[4];
+    if (zr__sdl_numlist_sphere(&r, v))
+      fail_msg("'%s' was read", not_numbers[i]);
+    assert_int_equal(r.pos, 0);
+  }
+}
+
 /* Not a plain item: the reader takes nothing and stays where it was. */
 static void check_not_item(const char *text, bool uv) {
   zr_sdl_numreader r = reader(text, uv);
@@ -662,6 +748,7 @@ static void test_numlist_smooth_triangle_run_same_as_grammar(void **state) {
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_numlist_numbers_like_strtod),
+      cmocka_unit_test(test_numlist_eight_byte_reads),
       cmocka_unit_test(test_numlist_stops_where_the_grammar_starts),
       cmocka_unit_test(test_numlist_lexer_keeps_one_token),
       cmocka_unit_test(test_numlist_triangle_run_token),

@@ -169,6 +169,15 @@ void *zr__sdl_alloc(zr_sdl_parser *p, size_t size) {
   return m;
 }
 
+void *zr__sdl_alloc_raw(zr_sdl_parser *p, size_t size) {
+  zr_arena *a = &p->scene->arena;
+  a->over_budget = 0;
+  void *m = zr__arena_alloc_raw(a, size);
+  if (!m)
+    zr__sdl_alloc_failed(p, size);
+  return m;
+}
+
 void zr__sdl_alloc_failed(zr_sdl_parser *p, size_t size) {
   zr_arena *a = &p->scene->arena;
   /* Point at the token the grammar read last: the item being built. */

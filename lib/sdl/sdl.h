@@ -396,7 +396,12 @@ typedef struct zr_sdl_lexer {
      started again after a run), so the lexer may take plain words and
      braces itself before it (tokens.c, quick_token). */
   bool fresh;
+  bool restart; /* the scanner is to be restarted before it reads */
   bool scanner_only; /* never take them (tests compare the two) */
+  /* The keyword sphere_run found after a sphere's radius, its offset
+     and length: quick_token takes it there without a second search. */
+  const struct zr_sdl_keyword *known_keyword;
+  size_t known_at, known_length;
   const char *last_name; /* the identifier interned last, and its */
   size_t last_name_length; /* length (zr__sdl_lex_intern) */
   bool failed;
@@ -677,6 +682,8 @@ bool zr__sdl_spend(zr_sdl_parser *p, const zr_sdl_loc *at,
 const char *zr__sdl_kind_name(int kind);
 /* Arena memory, reporting ZR_ENOMEM when there is none. */
 void *zr__sdl_alloc(zr_sdl_parser *p, size_t size);
+/* The same, not zeroed: for what is about to be written whole. */
+void *zr__sdl_alloc_raw(zr_sdl_parser *p, size_t size);
 /* Reports that an allocation of size bytes from the scene's arena failed
    (over the memory budget, or out of memory), as zr__sdl_alloc does;
    a->over_budget tells which. */

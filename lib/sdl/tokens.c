@@ -241,12 +241,28 @@ static int scan_guarded(zr_sdl_lexer *lx, yyscan_t scanner,
   return zr__scan_lex(value, loc, scanner);
 }
 
-static bool restart_guarded(zr_sdl_lexer *lx, yyscan_t scanner) {
+/*
+ * After a run the scanner must forget what it read ahead before it
+ * reads again; the restart itself waits for the scanner's next call
+ * (lex below, lx->restart).  Between the spheres of a sphere-heavy file
+ * the lexer takes every word and brace itself (quick_token), so the
+ * scanner was restarted once a sphere and never called before the next
+ * restart: 1.4 M of bench/peers.sh's sphereflake's 75 M instructions
+ * (callgrind), for nothing.  The restart reads nothing of the lexer's
+ * state, so doing it later, just before the scanner reads, is the
+ * same.
+ */
+static void restart_later(zr_sdl_lexer *lx) {
   lx->read_size = READ_FIRST;
+  lx->fresh = true;
+  lx->restart = true;
+}
+
+static bool restart_guarded(zr_sdl_lexer *lx, yyscan_t scanner) {
+  lx->restart = false;
   if (setjmp(lx->fatal) != 0)
     return false;
   zr__scan_restart(NULL, scanner);
-  lx->fresh = true;
   return true;
 }
 
@@ -261,8 +277,8 @@ _Noreturn void zr__sdl_lex_fatal(void *scanner, const char *msg) {
   longjmp(lx->fatal, 1);
 }
 
-static zr_status number_list(zr_sdl_file *f, size_t *cap, zr_sdl_lexer *lx,
-                             yyscan_t scanner) {
+static zr_status number_list(zr_sdl_file *f, size_t *cap,
+                             zr_sdl_lexer *lx) {
   size_t n = f->n_tokens;
   if (n < 3 || f->tokens[n - 1].kind != T_NUMBER ||
       f->tokens[n - 2].kind != '{' ||
@@ -299,8 +315,7 @@ static zr_status number_list(zr_sdl_file *f, size_t *cap, zr_sdl_lexer *lx,
   lx->offset = lx->read_pos = r.pos;
   lx->line = r.line;
   lx->column = r.column;
-  if (!restart_guarded(lx, scanner) && status == ZR_OK)
-    status = ZR_ENOMEM;
+  restart_later(lx);
   return status;
 }
 
@@ -311,9 +326,9 @@ static bool is_blank_byte(char c) {
 
 /* Moves the lexer past bytes [lx->offset, to) - blanks that the reader
    stopped before, and a closing '}' - counting lines and columns as the
-   scanner does, and starts the scanner again there. */
-static zr_status resume_at(zr_sdl_lexer *lx, yyscan_t scanner, size_t to,
-                           const zr_sdl_numreader *r) {
+   scanner does, and has the scanner start again there. */
+static void resume_at(zr_sdl_lexer *lx, size_t to,
+                      const zr_sdl_numreader *r) {
   lx->offset = r->pos;
   lx->line = r->line;
   lx->column = r->column;
@@ -326,7 +341,7 @@ static zr_status resume_at(zr_sdl_lexer *lx, yyscan_t scanner, size_t to,
     }
   }
   lx->read_pos = lx->offset;
-  return restart_guarded(lx, scanner) ? ZR_OK : ZR_ENOMEM;
+  restart_later(lx);
 }
 
 /* The token that stands for "KEYWORD { ..." in place of the keyword and
@@ -459,8 +474,8 @@ static zr_status next_run(zr_sdl_file *f, size_t *cap, zr_sdl_numreader *r,
   return ZR_OK;
 }
 
-static zr_status triangle_run(zr_sdl_file *f, size_t *cap, zr_sdl_lexer *lx,
-                              yyscan_t scanner) {
+static zr_status triangle_run(zr_sdl_file *f, size_t *cap,
+                              zr_sdl_lexer *lx) {
   size_t n = f->n_tokens;
   if (n < 2 || f->tokens[n - 1].kind != '{' ||
       (f->tokens[n - 2].kind != T_TRIANGLE &&
@@ -482,8 +497,8 @@ static zr_status triangle_run(zr_sdl_file *f, size_t *cap, zr_sdl_lexer *lx,
                f->bytes + lx->offset);
   for (bool more = true; status == ZR_OK && more;)
     status = next_run(f, cap, &r, &close, &more);
-  zr_status resumed = resume_at(lx, scanner, close + 1, &r);
-  return status != ZR_OK ? status : resumed;
+  resume_at(lx, close + 1, &r);
+  return status;
 }
 
 /* Whether a keyword after a sphere's radius surely starts something
@@ -516,8 +531,8 @@ static bool ends_sphere(int token) {
  * a comment leave the sphere to the scanner.  A value that is not
  * finite does too, so that the grammar reports it.
  */
-static zr_status sphere_run(zr_sdl_file *f, size_t *cap, zr_sdl_lexer *lx,
-                            yyscan_t scanner) {
+static zr_status sphere_run(zr_sdl_file *f, size_t *cap,
+                            zr_sdl_lexer *lx) {
   size_t n = f->n_tokens;
   if (n < 2 || f->tokens[n - 1].kind != '{' ||
       f->tokens[n - 2].kind != T_SPHERE)
@@ -544,6 +559,11 @@ static zr_status sphere_run(zr_sdl_file *f, size_t *cap, zr_sdl_lexer *lx,
     if (w == end || !isalpha((unsigned char)f->bytes[end]) || !k ||
         !ends_sphere(k->token))
       return ZR_OK;
+    /* The next token, which quick_token takes (a word of the file at
+       an offset is always the same word). */
+    lx->known_keyword = k;
+    lx->known_at = end;
+    lx->known_length = w - end;
   }
   /* The numbers go with the token (32 bytes a sphere in the file's
      arena): the grammar's action read them again from the bytes, 9% of
@@ -556,8 +576,8 @@ static zr_status sphere_run(zr_sdl_file *f, size_t *cap, zr_sdl_lexer *lx,
   zr_sdl_token t = run_token(f, T_SPHERE_RUN, NULL);
   t.v.sphere = values;
   zr_status status = push_token(f, cap, &t);
-  zr_status resumed = resume_at(lx, scanner, end, &r);
-  return status != ZR_OK ? status : resumed;
+  resume_at(lx, end, &r);
+  return status;
 }
 
 /*
@@ -608,6 +628,10 @@ static int quick_token(zr_sdl_lexer *lx, zr_sdl_token *t) {
   if (c == '{' || c == '}') {
     t->kind = c;
     t->length = 1;
+  } else if (lx->known_keyword && pos == lx->known_at) {
+    t->kind = lx->known_keyword->token;
+    t->v.str = lx->known_keyword->name;
+    t->length = (int)lx->known_length;
   } else if ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_') {
     size_t w = pos + 1;
     while (w < end && is_word_byte(b[w]))
@@ -768,6 +792,10 @@ static zr_status lex(zr_sdl_file *f, int file_index, char *path,
   while (status == ZR_OK) {
     zr_sdl_token t;
     int quick = lx.fresh && !lx.scanner_only ? quick_token(&lx, &t) : 0;
+    if (quick == 0 && lx.restart && !restart_guarded(&lx, scanner)) {
+      status = ZR_ENOMEM;
+      break;
+    }
     if (quick == 0) {
       ZR__POV_STYPE value;
       zr_sdl_loc loc;
@@ -802,11 +830,11 @@ static zr_status lex(zr_sdl_file *f, int file_index, char *path,
     if (kind == 0)
       break;
     if (status == ZR_OK && kind == T_NUMBER)
-      status = number_list(f, &cap, &lx, scanner);
+      status = number_list(f, &cap, &lx);
     else if (status == ZR_OK && kind == '{') {
-      status = triangle_run(f, &cap, &lx, scanner);
+      status = triangle_run(f, &cap, &lx);
       if (status == ZR_OK)
-        status = sphere_run(f, &cap, &lx, scanner);
+        status = sphere_run(f, &cap, &lx);
     }
   }
   zr__scan_lex_destroy(scanner);
