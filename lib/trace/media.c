@@ -242,8 +242,15 @@ static zr_rgb density_at(const zr_medium *medium, zr_vec3 p) {
 /* Whether light may light the media of this ray at distance s. */
 static bool lights_media(const zr_light *light, double s) {
   /* A light_group's lights light no media: zRcube does not yet tell a
-     group's media from the others. */
-  if (!light->media_interaction || light->light_group != 0)
+     group's media from the others.  A shadowless light lights none
+     either: povray 3.7 renders a box of scattering media, and
+     atmospheric scattering media, lit by a shadowless light byte for
+     byte as with media_interaction off or a black light
+     (tests/test_media_shell.sh); advanced/benchmark/benchmark.pov's
+     shadowless fill light (rgb 0.35) lit its clouds through 30000
+     units of them here, where povray's stay dark. */
+  if (!light->media_interaction || light->light_group != 0 ||
+      light->shadowless)
     return false;
   return light->kind == ZR_LIGHT_POINT || s <= BEAM_REACH;
 }
