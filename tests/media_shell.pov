@@ -10,12 +10,36 @@
 //     leave the shell into the open, where there is no medium either;
 //   4 a box of scattering media lit by a shadowless light;
 //   5 atmospheric scattering media lit by a shadowless light;
-//   6 case 4's box with a light that casts shadows.
+//   6 case 4's box with a light that casts shadows;
+//   7 the camera in the hole of a shell scaled <1, 1, 0.4> of absorbing
+//     and scattering media: the first sample of a ray, on the inner
+//     surface, whose shadow ray goes back into the hole (the picture's
+//     left side), counts the hole as medium and the shell behind as
+//     clear.
 #version 3.7;
 #ifndef (Case) #declare Case = 1; #end
 global_settings { assumed_gamma 1 }
 background { rgb <0.2, 0.3, 0.6> }
-#if (Case <= 3)
+#if (Case = 7)
+  camera { location 0 look_at <-1, 1, 0> angle 90 }
+  light_source { <-10, 12, 3> color rgb 1 }
+  background { rgb 0.1 }
+  difference {
+    sphere { 0, 5 }
+    sphere { 0, 3.5 }
+    pigment { rgbf 1 }
+    finish { ambient 0 diffuse 0 }
+    interior {
+      media {
+        scattering { 1, 1 extinction 0 }
+        absorption 1
+        method 3 samples 7, 7 intervals 1 aa_level 1
+      }
+    }
+    hollow
+    scale <1, 1, 0.4>
+  }
+#elseif (Case <= 3)
   #if (Case = 3)
     camera { location <0, 0, 0.5> look_at <0, 1, 0.9> angle 60 }
     sphere { 0, 10 pigment { rgb <0.2, 0.3, 0.6> }
