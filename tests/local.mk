@@ -364,6 +364,10 @@ TESTS += tests/test_shadow_fade.sh
 EXTRA_DIST += tests/test_shadow_fade.sh tests/shadow_fade.pov \
 	bench/conform/shadow_fade_probe.sh bench/conform/shadow_fade_probe.pov
 EXTRA_DIST += bench/conform/fade_power_probe.sh bench/conform/probe_value.sh
+# Media in a CSG shell moved after its interior was given, and media lit
+# by a shadowless light (benchmark.pov's clouds).
+TESTS += tests/test_media_shell.sh
+EXTRA_DIST += tests/test_media_shell.sh tests/media_shell.pov
 # A light's negative fade_distance, as povray takes it (the manual's
 # formula as it is: bench/conform/light_fade_negative.sh).
 TESTS += tests/test_light_fade.sh

@@ -1373,8 +1373,50 @@ static bool compose_object(zr_sdl_parser *p, zr_object *o,
   return true;
 }
 
+/*
+ * The interior of o carried through t, the same copy for every object of
+ * the tree that shared it before (map: the interiors moved so far and
+ * their moved copies).  A CSG's interior is handed down to its parts
+ * (set_interior), and a ray's path of media tells interiors apart by
+ * pointer (lib/trace/shade.c zr__media_cross): were each part's interior
+ * moved to a copy of its own, a ray would go into a second interior where
+ * it leaves a difference's shell through the inner surface.  povray 3.7
+ * sees one interior there: tests/test_media_shell.sh, a shell of media
+ * (difference of two spheres, density { rgb 1 }, translated after its
+ * interior) whose hole is clear, and advanced/benchmark/benchmark.pov's
+ * clouds, whose sky was white (SSIM 0.76) when the rays from the hole
+ * carried the inner sphere's media out to the sky sphere.  A tree with
+ * more distinct interiors than the map holds moves the rest one by one.
+ */
+static bool transform_interior(zr_sdl_parser *p, zr_object *o,
+                               const zr_transform *t, interior_map *map) {
+  const zr_interior *in = o->interior;
+  for (int i = 0; i < map->n; i++)
+    if (map->from[i] == in) {
+      o->interior = map->to[i];
+      return true;
+    }
+  if (!(o->interior = zr__sdl_interior_transform(p, in, t)))
+    return false;
+  if (o->interior != in && map->n < COPY_INTERIORS) {
+    map->from[map->n] = in;
+    map->to[map->n++] = o->interior;
+  }
+  return true;
+}
+
+static bool transform_tree(zr_sdl_parser *p, zr_object *o,
+                           const zr_transform *t, interior_map *map);
+
 static bool transform_object(zr_sdl_parser *p, zr_object *o,
                              const zr_transform *t) {
+  interior_map map;
+  map.n = 0;
+  return transform_tree(p, o, t, &map);
+}
+
+static bool transform_tree(zr_sdl_parser *p, zr_object *o,
+                           const zr_transform *t, interior_map *map) {
   if (!compose_object(p, o, t))
     return false;
   if (o->kind == ZR_OBJ_BLOB && o->u.blob.textured &&
@@ -1390,12 +1432,11 @@ static bool transform_object(zr_sdl_parser *p, zr_object *o,
   p->moving_object = was_moving;
   if (!ok)
     return false;
-  if (o->interior &&
-      !(o->interior = zr__sdl_interior_transform(p, o->interior, t)))
+  if (o->interior && !transform_interior(p, o, t, map))
     return false;
   if (zr__is_csg(o->kind)) {
     for (size_t i = 0; i < o->u.csg.n_children; i++)
-      if (!transform_object(p, o->u.csg.children[i], t))
+      if (!transform_tree(p, o->u.csg.children[i], t, map))
         return false;
     /* The lights are the object's own copies too. */
     for (size_t i = 0; i < o->u.csg.n_lights; i++)

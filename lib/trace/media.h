@@ -64,4 +64,12 @@ zr_rgb zr__media_shadow(const zr_tracer *tracer, zr_vec3 origin,
                         zr_vec3 dir, zr_media_crossing *crossings,
                         size_t n);
 
+/* The light a media sample's shadow ray keeps: as zr__media_shadow, the
+   ray starting inside the containers of start (the interiors of the ray
+   whose media were sampled) and going in or out of a container at each
+   crossing by turns (lib/trace/media.c says why). */
+zr_rgb zr__media_sample_shadow(const zr_tracer *tracer, zr_vec3 origin,
+                               zr_vec3 dir, zr_media_crossing *crossings,
+                               size_t n, const zr_media *start);
+
 #endif /* ZR_TRACE_MEDIA_H */

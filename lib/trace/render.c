@@ -540,6 +540,7 @@ static zr_status render_pixels(const zr_scene *scene,
   memset(&shadow_cache, 0, sizeof shadow_cache);
   job.tracer.shadow_cache = &shadow_cache;
   job.tracer.shadow_path = NULL;
+  job.tracer.media_start = NULL;
   if (camera_media)
     job.camera_media = *camera_media;
   else

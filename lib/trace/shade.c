@@ -434,9 +434,13 @@ zr_rgb zr__shadow_transmission(const zr_tracer *tracer,
   if (w.fades && rgb_max(w.light) > 0.0)
     w.light = zr_rgb_mul(w.light, shadow_fade(&w, tracer->shadow_path));
   if (w.n_crossings > 0 && rgb_max(w.light) > 0.0)
-    w.light = zr_rgb_mul(w.light, zr__media_shadow(tracer, ray.origin,
-                                                   ray.dir, w.crossings,
-                                                   w.n_crossings));
+    w.light = zr_rgb_mul(
+        w.light, tracer->media_start
+                     ? zr__media_sample_shadow(tracer, ray.origin, ray.dir,
+                                               w.crossings, w.n_crossings,
+                                               tracer->media_start)
+                     : zr__media_shadow(tracer, ray.origin, ray.dir,
+                                        w.crossings, w.n_crossings));
   return w.light;
 }
 

@@ -186,6 +186,10 @@ typedef struct zr_tracer {
      is being lit, where its shadow rays start (NULL: none, as for
      every ray but those of direct_light in shade.c). */
   const zr_media *shadow_path;
+  /* The interiors of the ray whose media are being sampled, where the
+     shadow rays of its samples start (NULL: where their crossings say;
+     lib/trace/media.c zr__media_shadow). */
+  const zr_media *media_start;
 } zr_tracer;
 
 /* Sets the tracer's quality flags and no_media for POV-Ray's +Q: 0 to 11
