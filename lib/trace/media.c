@@ -935,6 +935,29 @@ static int by_crossing(const void *a, const void *b) {
   return (ta > tb) - (ta < tb);
 }
 
+/* A shadow ray's stretch from a to b (fractions of dir, whose length is
+   len and direction unit): the media of every container k with in[k]
+   add up there, as on a camera ray; kept is the light that reached a. */
+static zr_rgb shadow_stretch(const zr_tracer *tracer,
+                             const zr_object *const *box, const bool *in,
+                             int nb, zr_vec3 origin, zr_vec3 dir,
+                             zr_vec3 unit, double a, double b, double len,
+                             zr_rgb kept) {
+  const zr_medium *list[ZR_MEDIA_LIST_MAX];
+  size_t nl = 0;
+  for (int k = 0; k < nb; k++) {
+    const zr_interior *it = box[k]->interior;
+    for (size_t q = 0; in[k] && it && q < it->n_media &&
+                       nl < ZR_MEDIA_LIST_MAX;
+         q++)
+      list[nl++] = it->media[q];
+  }
+  if (nl == 0)
+    return kept;
+  return zr__media_integrate(tracer, list, nl, zr_v3_madd(origin, dir, a),
+                             unit, (b - a) * len, true, kept);
+}
+
 /* The most containers one shadow ray follows at once. */
 #define SHADOW_CONTAINERS 32
 
@@ -967,19 +990,8 @@ zr_rgb zr__media_shadow(const zr_tracer *tracer, zr_vec3 origin,
   for (size_t i = 0; i <= n; i++) {
     double to = i < n ? fmin(fmax(crossings[i].t, 0.0), 1.0) : 1.0;
     if (to > from) {
-      const zr_medium *list[ZR_MEDIA_LIST_MAX];
-      size_t nl = 0;
-      for (int k = 0; k < nb; k++) {
-        const zr_interior *it = box[k]->interior;
-        for (size_t q = 0; in[k] && it && q < it->n_media &&
-                           nl < ZR_MEDIA_LIST_MAX;
-             q++)
-          list[nl++] = it->media[q];
-      }
-      if (nl > 0)
-        kept = zr__media_integrate(tracer, list, nl,
-                                   zr_v3_madd(origin, dir, from), unit,
-                                   (to - from) * len, true, kept);
+      kept = shadow_stretch(tracer, box, in, nb, origin, dir, unit, from,
+                            to, len, kept);
       from = to;
     }
     if (i < n)
@@ -1045,19 +1057,8 @@ zr_rgb zr__media_sample_shadow(const zr_tracer *tracer, zr_vec3 origin,
       continue;
     double to = i < n ? fmin(fmax(crossings[i].t, 0.0), 1.0) : 1.0;
     if (to > from) {
-      const zr_medium *list[ZR_MEDIA_LIST_MAX];
-      size_t nl = 0;
-      for (int k = 0; k < nb; k++) {
-        const zr_interior *it = box[k]->interior;
-        for (size_t q = 0; in[k] && it && q < it->n_media &&
-                           nl < ZR_MEDIA_LIST_MAX;
-             q++)
-          list[nl++] = it->media[q];
-      }
-      if (nl > 0)
-        kept = zr__media_integrate(tracer, list, nl,
-                                   zr_v3_madd(origin, dir, from), unit,
-                                   (to - from) * len, true, kept);
+      kept = shadow_stretch(tracer, box, in, nb, origin, dir, unit, from,
+                            to, len, kept);
       from = to;
     }
     if (i < n)
