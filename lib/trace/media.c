@@ -961,17 +961,31 @@ static zr_rgb shadow_stretch(const zr_tracer *tracer,
 /* The most containers one shadow ray follows at once. */
 #define SHADOW_CONTAINERS 32
 
-zr_rgb zr__media_shadow(const zr_tracer *tracer, zr_vec3 origin,
-                        zr_vec3 dir, zr_media_crossing *crossings,
-                        size_t n) {
+/*
+ * The walk shared by both kinds of shadow ray (below): the containers
+ * the crossings meet, whether the ray is in each at its start, then
+ * from crossing to crossing the media of every container it is in add
+ * up there (as on a camera ray).  A plain shadow ray (sample false) is
+ * in from the start those containers whose first crossing leaves them,
+ * and each crossing puts it where the crossing says; a media sample's
+ * (sample true) starts in the containers of start and follows the rule
+ * described at zr__media_sample_shadow.
+ */
+static zr_rgb shadow_walk(const zr_tracer *tracer, zr_vec3 origin,
+                          zr_vec3 dir, zr_media_crossing *crossings,
+                          size_t n, bool sample, const zr_media *start) {
   zr_rgb kept = zr_rgb3(1, 1, 1);
   double len = zr_v3_len(dir);
   if (n == 0 || !(len > 0.0))
     return kept;
   zr_vec3 unit = zr_v3_scale(dir, 1.0 / len);
   qsort(crossings, n, sizeof *crossings, by_crossing);
-  /* The containers met, and whether the ray is inside each: inside from
-     the start those whose first crossing leaves them. */
+  /* The surface a sample lies on: crossings nearer than the margin
+     shadow_visit (lib/trace/shade.c) looks past a hit by.  The walk
+     finds that surface again 1e-7 to 2e-6 units away in the shell
+     described at zr__media_sample_shadow (0.3 to 4 of
+     zr__surface_offset). */
+  double near = sample ? 1e3 * zr__surface_offset(origin) / len : 0.0;
   const zr_object *box[SHADOW_CONTAINERS];
   bool in[SHADOW_CONTAINERS];
   int nb = 0;
@@ -981,13 +995,17 @@ zr_rgb zr__media_shadow(const zr_tracer *tracer, zr_vec3 origin,
       k++;
     if (k == nb && nb < SHADOW_CONTAINERS) {
       box[nb] = crossings[i].solid;
-      in[nb++] = !crossings[i].entering;
+      in[nb] = !sample && !crossings[i].entering;
+      for (int q = 0; sample && start && q < start->n; q++)
+        if (start->objects[q] == box[nb])
+          in[nb] = true;
+      nb++;
     }
   }
-  /* Walk from crossing to crossing: between two, the media of every
-     container the ray is in add up (as on a camera ray). */
   double from = 0.0;
   for (size_t i = 0; i <= n; i++) {
+    if (sample && i < n && crossings[i].t <= near)
+      continue;
     double to = i < n ? fmin(fmax(crossings[i].t, 0.0), 1.0) : 1.0;
     if (to > from) {
       kept = shadow_stretch(tracer, box, in, nb, origin, dir, unit, from,
@@ -997,9 +1015,16 @@ zr_rgb zr__media_shadow(const zr_tracer *tracer, zr_vec3 origin,
     if (i < n)
       for (int k = 0; k < nb; k++)
         if (box[k] == crossings[i].solid)
-          in[k] = crossings[i].entering;
+          in[k] = sample ? !in[k] && crossings[i].entering
+                         : crossings[i].entering;
   }
   return kept;
+}
+
+zr_rgb zr__media_shadow(const zr_tracer *tracer, zr_vec3 origin,
+                        zr_vec3 dir, zr_media_crossing *crossings,
+                        size_t n) {
+  return shadow_walk(tracer, origin, dir, crossings, n, false, NULL);
 }
 
 /*
@@ -1024,47 +1049,5 @@ zr_rgb zr__media_shadow(const zr_tracer *tracer, zr_vec3 origin,
 zr_rgb zr__media_sample_shadow(const zr_tracer *tracer, zr_vec3 origin,
                                zr_vec3 dir, zr_media_crossing *crossings,
                                size_t n, const zr_media *start) {
-  zr_rgb kept = zr_rgb3(1, 1, 1);
-  double len = zr_v3_len(dir);
-  if (n == 0 || !(len > 0.0))
-    return kept;
-  zr_vec3 unit = zr_v3_scale(dir, 1.0 / len);
-  qsort(crossings, n, sizeof *crossings, by_crossing);
-  /* The surface the sample lies on: crossings nearer than the margin
-     shadow_visit (lib/trace/shade.c) looks past a hit by.  The walk
-     finds that surface again 1e-7 to 2e-6 units away in the shell
-     above (0.3 to 4 of zr__surface_offset). */
-  double near = 1e3 * zr__surface_offset(origin) / len;
-  const zr_object *box[SHADOW_CONTAINERS];
-  bool in[SHADOW_CONTAINERS];
-  int nb = 0;
-  for (size_t i = 0; i < n; i++) {
-    int k = 0;
-    while (k < nb && box[k] != crossings[i].solid)
-      k++;
-    if (k == nb && nb < SHADOW_CONTAINERS) {
-      box[nb] = crossings[i].solid;
-      in[nb] = false;
-      for (int q = 0; start && q < start->n; q++)
-        if (start->objects[q] == box[nb])
-          in[nb] = true;
-      nb++;
-    }
-  }
-  double from = 0.0;
-  for (size_t i = 0; i <= n; i++) {
-    if (i < n && crossings[i].t <= near)
-      continue;
-    double to = i < n ? fmin(fmax(crossings[i].t, 0.0), 1.0) : 1.0;
-    if (to > from) {
-      kept = shadow_stretch(tracer, box, in, nb, origin, dir, unit, from,
-                            to, len, kept);
-      from = to;
-    }
-    if (i < n)
-      for (int k = 0; k < nb; k++)
-        if (box[k] == crossings[i].solid)
-          in[k] = !in[k] && crossings[i].entering;
-  }
-  return kept;
+  return shadow_walk(tracer, origin, dir, crossings, n, true, start);
 }
