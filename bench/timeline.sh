@@ -8,8 +8,10 @@
 # (default "1 2"), REPEAT times each (default 3), with ZRCUBE_TIMELINE
 # set: every rank then prints a line at each step (lib/par/par.c's
 # zr__par_mark: main() entered, MPI joined, parse, image and writer
-# ready, each chunk of the render rendered and gathered, the image
-# written, MPI_Finalize, leaving main()).  Of each N the run with the
+# ready, for each chunk of the render this rank's rows done, all ranks
+# met and the rows gathered, the image written, MPI_Finalize, leaving
+# main()).  A rank whose "chunk rendered" step is long waited for
+# another's rows (its thread CPU stays put meanwhile).  Of each N the run with the
 # best wall time is printed: per rank and step, the wall time since
 # mpirun started ("at"), since the rank's previous step ("step"), and
 # the CPU the rank's process and its main thread took in that step

@@ -49,7 +49,7 @@ leaving main()'
 for rank in 0 1; do
   grep "^zrcube: timeline: rank $rank wall " with.log >"r$rank.txt"
   sed 's/^zrcube: timeline: rank [0-9]* wall [0-9.]* cpu [0-9.]* thread [0-9.]* //' \
-    "r$rank.txt" | grep -v '^render: \(tail \)\{0,1\}chunk \(rendered\|gathered\)$' \
+    "r$rank.txt" | grep -v '^render: \(tail \)\{0,1\}\(chunk rendered\|chunk gathered\|rows of this rank done\)$' \
     >"steps$rank.txt"
   printf '%s\n' "$steps" >want.txt
   if ! cmp -s want.txt "steps$rank.txt"; then

@@ -957,7 +957,10 @@ static zr_status render_band(zr_par *par, zr_par_render *job,
       .rows_final = writer ? rows_final : NULL,
       .rows_final_user = &f,
   };
-  return zr__par_agree(par, zr__pool_render(&pool));
+  zr_status s = zr__pool_render(&pool);
+  zr__par_mark(first ? "render: tail rows of this rank done"
+                     : "render: rows of this rank done");
+  return zr__par_agree(par, s);
 }
 
 /* Rank 0's v[0 .. count - 1] on every rank. */
