@@ -715,6 +715,7 @@ static int read_scene(run *r) {
   zr__bundle_init(&r->bundle);
   r->bundle.max_file_size = r->opts.file_limit;
   r->files_hash = ZR_STATE_HASH_START;
+  zr__par_mark("parse start");
   double start = zr__par_now(), cpu = zr__par_cpu();
   /* The ranks build a large mesh's hierarchy together, each its share
      (zr_context_set_team), when every rank has its context: each
@@ -779,6 +780,7 @@ static int read_scene(run *r) {
   }
   r->parse_seconds = zr__par_now() - start;
   r->parse_cpu = zr__par_cpu() - cpu;
+  zr__par_mark("parse end");
   if (zr__par_agree(r->par, local) != ZR_OK) {
     if (r->rank == 0)
       fprintf(stderr, "zrcube: the scene parsed here failed on another "
@@ -1333,6 +1335,7 @@ static int start_writer(run *r, thread_write *t, zr_par_writer **w) {
 static int render_and_write(run *r) {
   const zr_render_params *params = &r->opts.params;
   zr_status s = ZR_OK;
+  zr__par_mark("image: allocating");
   if (r->rank == 0) {
     s = zr_image_new(params->width, params->height, &r->image);
     if (s != ZR_OK)
@@ -1372,11 +1375,13 @@ static int render_and_write(run *r) {
   r->render.writer = NULL;
   r->render.write_row_seconds = 0;
   int threaded = start_writer(r, &tw, &writer);
+  zr__par_mark("render start (image and writer ready)");
   double cpu = zr__par_cpu();
   s = r->path ? render_path(r) : zr__par_render(r->par, &r->render);
   r->render_cpu = zr__par_cpu() - cpu;
   zr__state_free(&resume);
   zr_status written = ZR_OK;
+  zr__par_mark("render end");
   double write_start = zr__par_now();
   if (threaded) {
     /* The rest of the write, or its end after a failed render. */
@@ -1431,6 +1436,7 @@ static int render_and_write(run *r) {
       zr__state_remove(r->state_path);
     r->write_seconds = zr__par_now() - start;
   }
+  zr__par_mark("image written");
   if (threaded)
     zr_context_free(tw.ctx);
   return zr__par_agree(r->par, s) == ZR_OK ? -1 : EXIT_SCENE;
@@ -1690,7 +1696,9 @@ static int frames_per_rank(const run *r) {
 int main(int argc, char **argv) {
   run r;
   memset(&r, 0, sizeof r);
+  zr__par_mark("main() entered");
   zr_status s = zr__par_init(&argc, &argv, &r.world);
+  zr__par_mark("MPI joined (zr__par_init)");
   if (s != ZR_OK) {
     fprintf(stderr, "zrcube: cannot start MPI: %s\n", zr_status_str(s));
     return EXIT_SCENE;
@@ -1750,7 +1758,9 @@ int main(int argc, char **argv) {
   zr__cli_free(&r.opts);
   clear_progress_line(&r.progress);
   zr__par_finalize(r.solo);
+  zr__par_mark("MPI_Finalize");
   zr__par_finalize(r.world);
+  zr__par_mark("leaving main()");
   if (signal_caught) {
     /* Cancelled by a signal: end as the signal would have. */
     int sig = signal_caught;

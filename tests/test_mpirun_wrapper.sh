@@ -3,7 +3,8 @@
 # build/bin/zrcube-mpirun runs 3 ranks (more than this machine's cores
 # when it has fewer) with none of OpenMPI's switches in the environment
 # (as root too, when the test runs as root), and the picture is the same
-# bytes as one process renders.
+# bytes as one process renders; and mpirun's own topology discovery is
+# cut to the processors on a job of this host alone (see the wrapper).
 #
 # Environment: ZR_SRCDIR, ZR_BUILDDIR (set by `make check`).
 set -u
@@ -46,5 +47,34 @@ if "$wrapper" -n x s.pov 2>err.log; then
 else
   grep -q "'x' is not a number of ranks" err.log || { echo "message: $(cat err.log)"; failed=1; }
 fi
+# What mpirun is given to find the topology with (MPIRUN names a stand-in
+# that writes hwloc's two variables down): on this host alone the I/O
+# discovery is off, a user's value is kept, and a batch system's job
+# (which may span hosts) is left as it is.
+cat >fake-mpirun <<'SH'
+#!/bin/sh
+echo "${HWLOC_COMPONENTS-unset} ${HWLOC_PLUGINS_BLACKLIST-unset}" >hwloc.txt
+SH
+chmod +x fake-mpirun
+hwloc_of() { # hwloc_of [VAR=VALUE...]: what the wrapper gives mpirun
+  rm -f hwloc.txt
+  env -u HWLOC_COMPONENTS -u HWLOC_PLUGINS_BLACKLIST -u SLURM_JOB_ID \
+    -u PBS_JOBID -u LSB_JOBID -u PE_HOSTFILE \
+    -u OMPI_MCA_orte_default_hostfile "$@" MPIRUN=./fake-mpirun \
+    "$wrapper" -n 2 s.pov >/dev/null 2>&1
+  cat hwloc.txt 2>/dev/null || echo "not run"
+}
+one_host="-pci,-linuxio,-opencl,-gl hwloc_opencl,hwloc_gl,hwloc_pci,hwloc_xml_libxml"
+if grep -q '^[[:space:]]*[^#[:space:]]' /etc/openmpi/openmpi-default-hostfile \
+     2>/dev/null; then
+  echo "hwloc: not checked on one host: the default host file names hosts"
+else
+  got=$(hwloc_of)
+  [ "$got" = "$one_host" ] || { echo "hwloc on one host: '$got'"; failed=1; }
+fi
+got=$(hwloc_of HWLOC_COMPONENTS=-gl)
+case $got in "-gl "*) ;; *) echo "a user's HWLOC_COMPONENTS: '$got'"; failed=1 ;; esac
+got=$(hwloc_of SLURM_JOB_ID=7)
+[ "$got" = "unset unset" ] || { echo "hwloc in a Slurm job: '$got'"; failed=1; }
 [ "$failed" = 0 ] && echo "1 passed, 0 failed" || echo "0 passed, 1 failed"
 exit "$failed"

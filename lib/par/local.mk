@@ -50,4 +50,7 @@ tests_mpi_wait_LDADD = lib/par/libzrpar.la lib/libzrcube.la $(MPI_LIBS) \
 	$(PTHREAD_LIBS)
 TESTS += tests/test_mpi_wait.sh
 EXTRA_DIST += tests/test_mpi_wait.sh
+# ZRCUBE_TIMELINE's steps (zr__par_mark), which bench/timeline.sh reads.
+TESTS += tests/test_timeline.sh
+EXTRA_DIST += tests/test_timeline.sh
 endif

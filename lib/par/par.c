@@ -80,6 +80,11 @@ static const char *const launcher_vars[] = {
     "OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE",
 };
 
+/* The variables that hold this process's rank (for zr__par_mark). */
+static const char *const rank_vars[] = {
+    "OMPI_COMM_WORLD_RANK", "PMIX_RANK", "PMI_RANK",
+};
+
 static int launched_by_mpi(void) {
   for (size_t i = 0; i < sizeof launcher_vars / sizeof *launcher_vars; i++)
     if (getenv(launcher_vars[i]))
@@ -404,6 +409,33 @@ double zr__par_cpu(void) {
   struct timespec ts;
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
   return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/*
+ * ZRCUBE_TIMELINE set (to anything): a line on stderr at each step of a
+ * run, for bench/timeline.sh, which lays the ranks' lines side by side
+ * from the moment mpirun started.  The wall clock is CLOCK_REALTIME
+ * (the only clock a script and every rank share), CPU the process's
+ * and the calling thread's, so a step whose process CPU grows more
+ * than its thread's had other threads working (the image's writer).
+ * The rank is the launcher's (the first mark comes before MPI_Init).
+ */
+void zr__par_mark(const char *what) {
+  static int on = -1;
+  if (on < 0)
+    on = getenv("ZRCUBE_TIMELINE") != NULL;
+  if (!on)
+    return;
+  struct timespec wall, thread;
+  clock_gettime(CLOCK_REALTIME, &wall);
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &thread);
+  const char *rank = NULL;
+  for (size_t i = 0; !rank && i < sizeof rank_vars / sizeof *rank_vars; i++)
+    rank = getenv(rank_vars[i]);
+  fprintf(stderr, "zrcube: timeline: rank %s wall %.6f cpu %.4f thread %.4f"
+          " %s\n", rank ? rank : "0",
+          (double)wall.tv_sec + 1e-9 * (double)wall.tv_nsec, zr__par_cpu(),
+          (double)thread.tv_sec + 1e-9 * (double)thread.tv_nsec, what);
 }
 
 double zr__par_now(void) {
@@ -925,7 +957,10 @@ static zr_status render_band(zr_par *par, zr_par_render *job,
       .rows_final = writer ? rows_final : NULL,
       .rows_final_user = &f,
   };
-  return zr__par_agree(par, zr__pool_render(&pool));
+  zr_status s = zr__pool_render(&pool);
+  zr__par_mark(first ? "render: tail rows of this rank done"
+                     : "render: rows of this rank done");
+  return zr__par_agree(par, s);
 }
 
 /* Rank 0's v[0 .. count - 1] on every rank. */
@@ -1063,7 +1098,9 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
       memset(pr.image, 0, image_floats * sizeof(float));
     }
   }
+  zr__par_mark("render: buffers ready");
   s = zr__par_agree(par, s);
+  zr__par_mark("render: all ranks ready");
   if (s == ZR_OK)
     s = zr__par_agree(par, share_resume(par, job, &pr, image_floats));
   /* This rank's rows still to render, for the progress line. */
@@ -1184,6 +1221,8 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
                         follow_writer);
         done_rows +=
             (size_t)group_count(y1 - y0, par->rank, first, par->size);
+        zr__par_mark(first ? "render: tail chunk rendered"
+                           : "render: chunk rendered");
         double gather_start = zr__par_now();
         float *into = dest ? dest : band;
         if (s == ZR_OK && changes)
@@ -1200,6 +1239,7 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
                                               x1 - x0, y1 - y0, channels,
                                               everyone));
         job->gather_seconds += zr__par_now() - gather_start;
+        zr__par_mark("render: chunk gathered");
         if (s == ZR_OK && target && !dest)
           place_band(band, target, width, y0, y1, x0, x1, channels);
       }
@@ -1237,6 +1277,7 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
   if (channels == 4)
     free(pr.image);
   job->render_seconds = zr__par_now() - start;
+  zr__par_mark("render: last chunk done");
   if (s == ZR_OK)
     s = zr__par_agree(par, reduce_stats(par, &job->stats,
                                         &job->render_seconds));

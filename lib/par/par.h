@@ -58,6 +58,13 @@ int zr__par_cpus_allowed(void);
  */
 int zr__par_threads(const zr_par *par, int wanted);
 
+/*
+ * With ZRCUBE_TIMELINE in the environment, a line "zrcube: timeline:
+ * rank R wall W cpu C thread T WHAT" on stderr (W: seconds since the
+ * epoch, C and T: CPU seconds of the process and of this thread), for
+ * bench/timeline.sh; nothing without it.  Callable before zr__par_init.
+ */
+void zr__par_mark(const char *what);
 /* Seconds on a monotonic clock. */
 double zr__par_now(void);
 /* CPU seconds of this process, all its threads. */
