@@ -328,6 +328,10 @@ void *zr__arena_grow(zr_arena *a, void *p, size_t old_size,
     grown->mapped = zr__map_room(bytes);
   if (!grown->mapped)
     zr__mem_huge_pages(grown->data, size);
+  /* An arena of a big scene file fills what it grows (zr_arena's
+     populate): the room added is faulted in at once. */
+  if (!grown->mapped && a->populate)
+    zr__mem_populate(grown->data + old, size - old);
   *link = grown;
   grown->size = grown->used = size;
   a->used += size - old;

@@ -957,12 +957,12 @@ zr_status zr__mesh_build_team(struct zr_mesh *mesh, zr_arena *arena,
      terrain, the order, the permutations' copies, the wide nodes) are
      filled once: in 4 KiB pages they took 2,100 of its parse's 6,900
      page faults (perf record -e page-faults, --parse-only), about 14 us
-     each on this project's VM, so they come in huge pages
-     (core/arena.h).  bench/parse_mem.sh, main and this, best of 3: the
-     terrain at 1x1 0.24 -> 0.19 CPU s, its peak 317 -> 339 bytes a
-     triangle (the 2 MiB rounding).  The growing node array stays with
-     realloc, which moves it without a copy: in huge pages (copied at
-     each doubling) it saved 900 more faults for 2-3 MB more peak. */
+     each on this project's VM, so they come in huge pages, in mappings
+     of their own that are unmapped when freed (zr__map_alloc,
+     core/arena.h), and the nodes are never grown by copying (a lone
+     build's room is the most nodes there can be, a parallel build's
+     tasks share a run per worker).  bench/results/
+     arena-2026-12-03-s15.md has the faults and peaks. */
   face_box *boxes = zr__map_alloc(n * sizeof *boxes);
   uint32_t *order = NULL;
   builder b = {boxes, NULL, 0, 0, false};
