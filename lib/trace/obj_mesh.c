@@ -758,9 +758,23 @@ static zr_status build_tasks_shared(top_build *t, zr_status top,
   return s;
 }
 
+/*
+ * The faces' order, the boxes' last use: order gets each box's face and
+ * the boxes (b's, n of them) are unmapped, before the final node array
+ * is made, so the two are never held at once (6 MiB of boxes in huge
+ * pages, the terrain's nodes 4 MiB).
+ */
+static void take_order(builder *b, size_t n, uint32_t *order) {
+  for (size_t i = 0; i < n; i++)
+    order[i] = b->boxes[i].face;
+  zr__map_free(b->boxes, n * sizeof *b->boxes);
+  b->boxes = NULL;
+}
+
 static zr_status build_parallel(builder *b, size_t n, int threads,
                                 const zr_team *team, bool *team_on,
-                                const fbox *bounds, const fbox *centres) {
+                                const fbox *bounds, const fbox *centres,
+                                uint32_t *order) {
   top_build t;
   memset(&t, 0, sizeof t);
   t.top.boxes = b->boxes;
@@ -783,6 +797,8 @@ static zr_status build_parallel(builder *b, size_t n, int threads,
       s = t.tasks[i].status;
       total += t.tasks[i].b.n_nodes;
     }
+    if (s == ZR_OK)
+      take_order(b, n, order);
     task_of = malloc(t.top.n_nodes * sizeof *task_of);
     b->nodes = zr__map_alloc(total * sizeof *b->nodes);
     if (b->nodes)
@@ -963,12 +979,14 @@ zr_status zr__mesh_build_team(struct zr_mesh *mesh, zr_arena *arena,
      build's room is the most nodes there can be, a parallel build's
      tasks share a run per worker).  bench/results/
      arena-2026-12-03-s15.md has the faults and peaks. */
+  /* The order is written all through: faulted in at once. */
   face_box *boxes = zr__map_alloc(n * sizeof *boxes);
-  uint32_t *order = NULL;
+  uint32_t *order = zr__map_alloc(n * sizeof *order);
+  zr__mem_populate(order, n * sizeof *order);
   builder b = {boxes, NULL, 0, 0, false};
   zr_wide_node *wide = NULL;
   zr_status s = ZR_ENOMEM;
-  if (!boxes)
+  if (!boxes || !order)
     goto done;
   face_boxes fbs;
   memset(&fbs, 0, sizeof fbs);
@@ -1000,7 +1018,8 @@ zr_status zr__mesh_build_team(struct zr_mesh *mesh, zr_arena *arena,
   if (shared || (threads > 1 && n >= PARALLEL_FACES_MIN)) {
     if ((size_t)threads > n / PARALLEL_FACES_MIN)
       threads = (int)(n / PARALLEL_FACES_MIN);
-    s = build_parallel(&b, n, threads, shared, team_on, &bounds, &centres);
+    s = build_parallel(&b, n, threads, shared, team_on, &bounds, &centres,
+                       order);
   } else {
     /* Room for the most nodes n faces can have, of which a prefix is
        used (0.54 a face on the terrain): no doubling and copying, and
@@ -1009,28 +1028,10 @@ zr_status zr__mesh_build_team(struct zr_mesh *mesh, zr_arena *arena,
     b.cap_nodes = b.nodes ? 2 * n - 1 : 0;
     b.fixed = true;
     s = b.nodes ? build_node(&b, 0, n, 0, &bounds, &centres) : ZR_ENOMEM;
+    if (s == ZR_OK)
+      take_order(&b, n, order);
   }
   if (s != ZR_OK)
-    goto done;
-  /* The boxes are done with: their memory, whose pages are already
-     there, holds the faces' order (written over the boxes already read:
-     order[i] ends at byte 4 i + 4, box i + 1 starts at 40 i + 40) and
-     behind it each permutation's copy (12 bytes a face), where blocks of
-     their own cost 127 page faults for the order and a mapping each. */
-  order = (uint32_t *)(void *)boxes;
-  for (size_t i = 0; i < n; i++)
-    order[i] = boxes[i].face;
-  b.boxes = NULL;
-  void *spare = order + n;
-  size_t spare_size = n * (sizeof *boxes - sizeof *order);
-  if ((s = permute(mesh->faces, sizeof *mesh->faces, order, n, spare,
-                   spare_size)) != ZR_OK ||
-      (s = permute(mesh->face_normals, sizeof *mesh->face_normals, order, n,
-                   spare, spare_size)) != ZR_OK ||
-      (s = permute(mesh->face_uvs, sizeof *mesh->face_uvs, order, n, spare,
-                   spare_size)) != ZR_OK ||
-      (s = permute(mesh->face_textures, sizeof *mesh->face_textures, order,
-                   n, spare, spare_size)) != ZR_OK)
     goto done;
   /* The binary tree collapsed four wide: each wide node stands for one
      to three of its inner nodes, so b.n_nodes of them are room enough. */
@@ -1041,18 +1042,36 @@ zr_status zr__mesh_build_team(struct zr_mesh *mesh, zr_arena *arena,
   }
   size_t n_wide = zr__bvh_collapse(b.nodes, wide);
   mesh->nodes = zr__arena_memdup(arena, wide, n_wide * sizeof *wide);
+  zr__map_free(wide, b.n_nodes * sizeof *wide);
+  wide = NULL;
   mesh->face_row = zr__arena_alloc(arena, n * sizeof *mesh->face_row);
   if (!mesh->nodes || !mesh->face_row) {
     s = ZR_ENOMEM;
     goto done;
   }
+  /* The binary nodes, collapsed, are done with: their pages (the
+     terrain's 3.9 MB, 56 bytes a node and 0.54 nodes a face) hold each
+     permutation's copy (12 bytes a face), where a block of its own cost
+     a mapping and its faults each. */
+  void *spare = b.nodes;
+  size_t spare_size = b.n_nodes * sizeof *b.nodes;
+  if ((s = permute(mesh->faces, sizeof *mesh->faces, order, n, spare,
+                   spare_size)) != ZR_OK ||
+      (s = permute(mesh->face_normals, sizeof *mesh->face_normals, order, n,
+                   spare, spare_size)) != ZR_OK ||
+      (s = permute(mesh->face_uvs, sizeof *mesh->face_uvs, order, n, spare,
+                   spare_size)) != ZR_OK ||
+      (s = permute(mesh->face_textures, sizeof *mesh->face_textures, order,
+                   n, spare, spare_size)) != ZR_OK)
+    goto done;
   for (size_t i = 0; i < n; i++)
     mesh->face_row[order[i]] = (uint32_t)i;
   mesh->n_nodes = n_wide;
 done:
   zr__map_free(wide, b.n_nodes * sizeof *wide);
   zr__map_free(b.nodes, b.cap_nodes * sizeof *b.nodes);
-  zr__map_free(boxes, n * sizeof *boxes);
+  zr__map_free(order, n * sizeof *order);
+  zr__map_free(b.boxes, n * sizeof *b.boxes);
   return s;
 }
 
