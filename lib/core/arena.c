@@ -189,8 +189,7 @@ static void *map_aligned(size_t room, int prot) {
   if (p == MAP_FAILED)
     return NULL;
   const uintptr_t mask = (uintptr_t)(ZR__HUGE_PAGE - 1);
-  unsigned char *q =
-      (unsigned char *)(((uintptr_t)p + mask) & ~mask);
+  unsigned char *q = (unsigned char *)(((uintptr_t)p + mask) & ~mask);
   if (q > p)
     (void)munmap(p, (size_t)(q - p));
   if (p + span > q + room)
