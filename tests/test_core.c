@@ -11,6 +11,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/mman.h>
 
 #include "core/arena.h"
 #include "core/context.h"
@@ -249,6 +250,96 @@ static void test_core_huge_alloc(void **state) {
   zr__arena_free(&a);
 }
 
+/* Whether the 4 KiB page holding p is mapped (mincore fails with ENOMEM
+   on an address no mapping covers). */
+static bool page_mapped(const void *p) {
+  unsigned char in_core;
+  void *page = (void *)((uintptr_t)p & ~(uintptr_t)4095);
+  return mincore(page, 4096, &in_core) == 0;
+}
+
+/* Blocks in mappings of their own (core/arena.h, zr__map_*): an array
+   that doubles from 256 bytes to 16 MiB keeps its rows at every step,
+   lies on a huge page from ZR__MAP_FROM on, and leaves no mapping
+   behind where it moved; a block freed or shrunk below ZR__MAP_FROM is
+   unmapped; an arena's array grown past ZR__MAP_FROM keeps its rows in
+   a mapping that zr__arena_free unmaps. */
+static void test_core_map_alloc(void **state) {
+  (void)state;
+  const uintptr_t huge = (uintptr_t)2 << 20;
+  char *small = zr__map_alloc(100);
+  assert_non_null(small);
+  memset(small, 1, 100);
+  zr__map_free(small, 100);
+  size_t cap = 64;
+  unsigned *v = zr__map_grow(NULL, 0, cap * sizeof *v);
+  assert_non_null(v);
+  for (unsigned n = 0; n < (16u << 20) / sizeof *v; n++) {
+    if (n == cap) {
+      unsigned *old = v;
+      size_t old_size = cap * sizeof *v;
+      v = zr__map_grow(v, old_size, 2 * old_size);
+      assert_non_null(v);
+      cap *= 2;
+      for (unsigned i = 0; i < n; i += 977)
+        assert_int_equal(v[i], i * 3u);
+      assert_int_equal(v[n - 1], (n - 1) * 3u);
+      if (cap * sizeof *v >= ZR__MAP_FROM) {
+        assert_int_equal((uintptr_t)v & (huge - 1), 0);
+        assert_true(page_mapped(v) && page_mapped(v + cap - 1));
+      }
+      /* A mapping that moved is gone from where it was. */
+      if (old_size >= ZR__MAP_FROM && v != old) {
+        assert_false(page_mapped(old));
+      }
+    }
+    v[n] = n * 3u;
+  }
+  assert_int_equal(cap * sizeof *v, 16u << 20);
+  /* Shrinking below ZR__MAP_FROM keeps the start and unmaps the rest. */
+  unsigned *less = zr__map_grow(v, cap * sizeof *v, 100 * sizeof *v);
+  assert_non_null(less);
+  assert_int_equal(less[99], 99u * 3u);
+  assert_false(page_mapped(v) || page_mapped(v + cap - 1));
+  zr__map_free(less, 100 * sizeof *less);
+  char *whole = zr__map_alloc(ZR__MAP_FROM);
+  assert_non_null(whole);
+  assert_int_equal((uintptr_t)whole & (huge - 1), 0);
+  assert_int_equal(zr__map_room(ZR__MAP_FROM), huge);
+  memset(whole, 2, huge); /* rounded up to a whole huge page */
+  zr__map_free(whole, ZR__MAP_FROM);
+  assert_false(page_mapped(whole) || page_mapped(whole + huge - 1));
+
+  zr_arena a;
+  zr__arena_init(&a);
+  for (int i = 0; i < 100; i++)
+    assert_non_null(zr__arena_alloc(&a, 48));
+  size_t rows_cap = 16;
+  double *rows = zr__arena_grow(&a, NULL, 0, rows_cap * sizeof *rows);
+  assert_non_null(rows);
+  for (size_t n = 0; n < (6u << 20) / sizeof *rows; n++) {
+    if (n == rows_cap) {
+      rows = zr__arena_grow(&a, rows, rows_cap * sizeof *rows,
+                            2 * rows_cap * sizeof *rows);
+      assert_non_null(rows);
+      rows_cap *= 2;
+      for (size_t i = 0; i < n; i += 499)
+        assert_true(rows[i] == (double)i);
+      assert_true(rows[n - 1] == (double)(n - 1));
+    }
+    rows[n] = (double)n;
+  }
+  /* The block is a mapping: its rows start a huge page, behind the
+     block's header. */
+  assert_true((uintptr_t)rows % huge < 64);
+  assert_true(page_mapped(rows) && page_mapped(rows + rows_cap - 1));
+  /* Its last rows stay in place when it grows a little (room in the
+     rounding), and small allocations still work beside it. */
+  assert_non_null(zr__arena_alloc(&a, 5000));
+  zr__arena_free(&a);
+  assert_false(page_mapped(rows) || page_mapped(rows + rows_cap - 1));
+}
+
 typedef struct captured {
   char text[512];
   int count;
@@ -291,6 +382,7 @@ int main(void) {
       cmocka_unit_test(test_core_strbuf_and_arena),
       cmocka_unit_test(test_core_arena_grow),
       cmocka_unit_test(test_core_huge_alloc),
+      cmocka_unit_test(test_core_map_alloc),
       cmocka_unit_test(test_core_diag_format),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);

@@ -1,6 +1,8 @@
 /*
- * arena.c - region allocation in chained blocks.
+ * arena.c - region allocation in chained blocks, and big blocks in
+ * mappings of their own.
  */
+#define _GNU_SOURCE /* mremap */
 #include "core/arena.h"
 
 #include "core/budget.h"
@@ -16,6 +18,9 @@ struct zr_arena_block {
   zr_arena_block *next;
   size_t size;
   size_t used;
+  /* The bytes of the block's own mapping (zr__map_alloc), this header
+     included; 0 for a block of malloc's. */
+  size_t mapped;
   alignas(max_align_t) unsigned char data[];
 };
 
@@ -27,7 +32,10 @@ void zr__arena_free(zr_arena *a) {
   zr_arena_block *b = a->head;
   while (b) {
     zr_arena_block *next = b->next;
-    free(b);
+    if (b->mapped)
+      zr__map_free(b, b->mapped);
+    else
+      free(b);
     b = next;
   }
   zr__budget_release(a->budget, a->charged);
@@ -45,6 +53,34 @@ static size_t rounded(size_t size) {
   return size ? size : align;
 }
 
+/*
+ * A new block of cap bytes of room, charged to the arena's budget.  From
+ * ZR__MAP_FROM bytes on (header included) it is a mapping of its own
+ * (zr__map_alloc: huge pages, and its memory goes back to the system
+ * when the arena is freed); below, malloc's.
+ */
+static zr_arena_block *new_block(zr_arena *a, size_t cap) {
+  size_t bytes = sizeof(zr_arena_block) + cap;
+  if (!zr__budget_charge(a->budget, bytes)) {
+    a->over_budget = 1;
+    return NULL;
+  }
+  bool mapped = bytes >= ZR__MAP_FROM;
+  zr_arena_block *b = mapped ? zr__map_alloc(bytes) : malloc(bytes);
+  if (!b) {
+    zr__budget_release(a->budget, bytes);
+    return NULL;
+  }
+  if (a->budget)
+    a->charged += bytes;
+  b->mapped = mapped ? zr__map_room(bytes) : 0;
+  if (!mapped)
+    zr__mem_huge_pages(b->data, cap);
+  b->size = cap;
+  b->used = 0;
+  return b;
+}
+
 void *zr__arena_alloc_raw(zr_arena *a, size_t size) {
   if (size > SIZE_MAX / 2)
     return NULL;
@@ -53,27 +89,17 @@ void *zr__arena_alloc_raw(zr_arena *a, size_t size) {
   if (!b || b->size - b->used < size) {
     size_t cap = size > BLOCK_SIZE / 4 ? size : BLOCK_SIZE;
     /* An arena that has grown big takes its next blocks of small
-       allocations a huge page at a time (zr__huge_alloc): a scene of
-       7,381 spheres' textures took about 250 page faults of 4 KiB. */
+       allocations a huge page at a time (a mapping of one huge page): a
+       scene of 7,381 spheres' textures took about 250 page faults of
+       4 KiB. */
     bool huge = cap == BLOCK_SIZE && a->used >= ZR__HUGE_FROM;
     if (huge)
       cap = ZR__HUGE_PAGE - sizeof *b;
-    if (!zr__budget_charge(a->budget, sizeof *b + cap)) {
-      a->over_budget = 1;
+    b = new_block(a, cap);
+    if (!b)
       return NULL;
-    }
-    b = huge ? zr__huge_alloc(sizeof *b + cap) : malloc(sizeof *b + cap);
-    if (!b) {
-      zr__budget_release(a->budget, sizeof *b + cap);
-      return NULL;
-    }
-    if (a->budget)
-      a->charged += sizeof *b + cap;
-    zr__mem_huge_pages(b->data, cap);
     if (a->populate && !huge)
       zr__mem_populate(b->data, cap);
-    b->size = cap;
-    b->used = 0;
     /* A large one-off block goes behind the head so the head keeps its
        free space for the small allocations that follow. */
     if (cap != BLOCK_SIZE && !huge && a->head) {
@@ -143,6 +169,109 @@ void *zr__huge_grow(void *p, size_t old_size, size_t new_size) {
   return q;
 }
 
+size_t zr__map_room(size_t size) {
+  return size < ZR__MAP_FROM ? size : huge_rounded(size);
+}
+
+#if defined(MAP_ANONYMOUS) && defined(MREMAP_FIXED)
+/*
+ * room bytes (whole huge pages) of fresh address space that starts on a
+ * huge page: a reservation one huge page longer, its ends cut off.
+ * Nothing is touched, so nothing is resident yet.  prot is the access
+ * the pages get: none for a place mremap is to move a block to.
+ */
+static void *map_aligned(size_t room, int prot) {
+  if (room > SIZE_MAX - ZR__HUGE_PAGE)
+    return NULL;
+  size_t span = room + ZR__HUGE_PAGE;
+  int flags = MAP_PRIVATE | MAP_ANONYMOUS | (prot ? 0 : MAP_NORESERVE);
+  unsigned char *p = mmap(NULL, span, prot, flags, -1, 0);
+  if (p == MAP_FAILED)
+    return NULL;
+  const uintptr_t mask = (uintptr_t)(ZR__HUGE_PAGE - 1);
+  unsigned char *q = (unsigned char *)(((uintptr_t)p + mask) & ~mask);
+  if (q > p)
+    (void)munmap(p, (size_t)(q - p));
+  if (p + span > q + room)
+    (void)munmap(q + room, (size_t)(p + span - (q + room)));
+  return q;
+}
+
+void *zr__map_alloc(size_t size) {
+  if (size < ZR__MAP_FROM)
+    return malloc(size ? size : 1);
+  size_t room = huge_rounded(size);
+  void *p = room ? map_aligned(room, PROT_READ | PROT_WRITE) : NULL;
+  zr__mem_advise_huge(p, room);
+  return p;
+}
+
+void zr__map_free(void *p, size_t size) {
+  if (size < ZR__MAP_FROM)
+    free(p);
+  else if (p)
+    (void)munmap(p, huge_rounded(size));
+}
+
+void *zr__map_grow(void *p, size_t old_size, size_t new_size) {
+  if (!p)
+    return zr__map_alloc(new_size);
+  if (new_size < ZR__MAP_FROM) {
+    if (old_size < ZR__MAP_FROM)
+      return realloc(p, new_size ? new_size : 1);
+    void *q = malloc(new_size ? new_size : 1);
+    if (q) {
+      memcpy(q, p, new_size);
+      zr__map_free(p, old_size);
+    }
+    return q;
+  }
+  size_t room = huge_rounded(new_size);
+  if (!room)
+    return NULL;
+  if (old_size < ZR__MAP_FROM) {
+    /* From malloc's to a mapping: the one copy. */
+    void *q = zr__map_alloc(new_size);
+    if (q) {
+      memcpy(q, p, old_size);
+      free(p);
+    }
+    return q;
+  }
+  size_t old_room = huge_rounded(old_size);
+  if (room <= old_room)
+    return p; /* a shrink keeps its room: the pages past it are untouched */
+  /* The pages already there move with their page tables (no copy, no
+     fault), to a place on a huge page so that the room added gets huge
+     pages too; in place when the address space after the block is free. */
+  void *q = mremap(p, old_room, room, 0);
+  if (q == MAP_FAILED) {
+    void *to = map_aligned(room, PROT_NONE);
+    if (!to)
+      return NULL;
+    q = mremap(p, old_room, room, MREMAP_MAYMOVE | MREMAP_FIXED, to);
+    if (q == MAP_FAILED) {
+      (void)munmap(to, room);
+      return NULL;
+    }
+  }
+  zr__mem_advise_huge(q, room);
+  return q;
+}
+#else
+/* Without anonymous mappings or mremap: zr__huge_alloc's blocks. */
+void *zr__map_alloc(size_t size) { return zr__huge_alloc(size); }
+
+void zr__map_free(void *p, size_t size) {
+  (void)size;
+  free(p);
+}
+
+void *zr__map_grow(void *p, size_t old_size, size_t new_size) {
+  return zr__huge_grow(p, old_size, new_size);
+}
+#endif
+
 void *zr__arena_alloc(zr_arena *a, size_t size) {
   void *p = zr__arena_alloc_raw(a, size);
   if (p)
@@ -177,14 +306,31 @@ void *zr__arena_grow(zr_arena *a, void *p, size_t old_size,
     a->over_budget = 1;
     return NULL;
   }
-  zr_arena_block *grown = realloc(b, sizeof *b + size);
+  /* A block of its own: moved whole by the kernel when it is a mapping
+     (zr__map_grow: no copy, and its pages stay where they were), moved
+     once into a mapping when it grows past ZR__MAP_FROM, resized by
+     realloc below that. */
+  size_t bytes = sizeof *b + size;
+  zr_arena_block *grown = b->mapped || bytes >= ZR__MAP_FROM
+                              ? zr__map_grow(b, b->mapped ? b->mapped
+                                                          : sizeof *b + old,
+                                             bytes)
+                              : realloc(b, bytes);
   if (!grown) {
     zr__budget_release(a->budget, size - old);
     return NULL;
   }
   if (a->budget)
     a->charged += size - old;
-  zr__mem_huge_pages(grown->data, size);
+  /* A mapping keeps the room it had when that was enough. */
+  if (bytes >= ZR__MAP_FROM && grown->mapped < zr__map_room(bytes))
+    grown->mapped = zr__map_room(bytes);
+  if (!grown->mapped)
+    zr__mem_huge_pages(grown->data, size);
+  /* An arena of a big scene file fills what it grows (zr_arena's
+     populate): the room added is faulted in at once. */
+  if (!grown->mapped && a->populate)
+    zr__mem_populate(grown->data + old, size - old);
   *link = grown;
   grown->size = grown->used = size;
   a->used += size - old;

@@ -110,4 +110,35 @@ void zr__mem_populate(void *p, size_t size);
 void *zr__huge_alloc(size_t size);
 void *zr__huge_grow(void *p, size_t old_size, size_t new_size);
 
+/*
+ * Big blocks in mappings of their own (mmap), for buffers whose owner
+ * knows their size when it frees them: an arena's big blocks, a mesh's
+ * and a hierarchy's build arrays.  From ZR__MAP_FROM bytes on a block
+ * is a fresh mapping aligned on a huge page, its size rounded up to
+ * whole huge pages (zr__map_room) and advised to huge pages, so each
+ * 2 MiB costs one page fault where the kernel obliges (not 512 of
+ * 14 us: bench/results/arena-2026-12-03-s15.md); below, malloc's.
+ *
+ * Against zr__huge_alloc (posix_memalign, freed with free): a freed
+ * block is unmapped, so its memory goes back to the system at once.
+ * glibc keeps freed memory in its heap once its mmap threshold has
+ * risen (it does when a big block is freed), and the next big blocks
+ * then come out of pages touched before, in 4 KiB pages, which is
+ * where the terrain's arena in huge pages (session 14) lost its 14 MB.
+ * And a growing block moves by mremap: its pages, huge or not, are
+ * handed over with their page tables, never copied (a realloc in
+ * glibc's heap copies, and the copy touches as many fresh pages again).
+ *
+ * zr__map_free and zr__map_grow take the size last asked of these
+ * three (or of malloc and realloc, below ZR__MAP_FROM), which says
+ * where the block came from.  zr__map_grow keeps the bytes up to the
+ * lesser size; NULL when out of memory, p then unchanged.  Without
+ * anonymous mappings and mremap they are zr__huge_alloc's.
+ */
+enum { ZR__MAP_FROM = ZR__HUGE_FROM };
+size_t zr__map_room(size_t size);
+void *zr__map_alloc(size_t size);
+void *zr__map_grow(void *p, size_t old_size, size_t new_size);
+void zr__map_free(void *p, size_t size);
+
 #endif /* ZR_CORE_ARENA_H */

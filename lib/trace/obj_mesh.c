@@ -74,6 +74,11 @@ typedef struct builder {
   face_box *boxes;
   zr_bvh_bin_node *nodes;
   size_t n_nodes, cap_nodes;
+  /* The nodes have room for the most a tree of their faces can have
+     (2 n - 1 for n faces: every leaf holds a face) in memory the
+     builder does not own (a worker's run, or zr__map_alloc's block):
+     new_node never moves them. */
+  bool fixed;
 } builder;
 
 /* Single precision bounds that still contain the double value. */
@@ -223,6 +228,8 @@ static size_t split(face_box *boxes, size_t n, const fbox *bounds,
 
 static zr_status new_node(builder *b, size_t *index) {
   if (b->n_nodes == b->cap_nodes) {
+    if (b->fixed)
+      return ZR_ENOMEM; /* never: the room is the most there can be */
     size_t cap = b->cap_nodes ? b->cap_nodes * 2 : 64;
     zr_bvh_bin_node *p = realloc(b->nodes, cap * sizeof *p);
     if (!p)
@@ -299,13 +306,36 @@ typedef struct subtree {
   fbox bounds, centres;
   builder b;
   zr_status status;
+  /* Where its nodes are: at run's node at (run_of_nodes), or, run -1, in
+     an array of their own (another member's, take_part). */
+  int run;
+  size_t at;
 } subtree;
+
+/*
+ * A worker's nodes: the tasks it builds, one after another, each built
+ * in the room the most nodes of its faces need (2 n - 1) at the end of
+ * the run, which then keeps only the nodes it used.  Every task's nodes
+ * in an array of its own that doubled by realloc took 950 of the
+ * terrain's 1,850 page faults (bench/results/arena-2026-12-03-s15.md):
+ * the copies, and 4 KiB pages; a run is one mapping in huge pages
+ * (zr__map_alloc), grown by mremap, never copied, its pages touched in
+ * order.  Its address changes as it grows, so a task keeps its place
+ * (at) and build_some points its nodes there once all are built.
+ */
+typedef struct node_run {
+  zr_bvh_bin_node *nodes;
+  size_t used, cap;
+} node_run;
 
 typedef struct top_build {
   builder top;
   subtree *tasks;
   size_t n_tasks, cap_tasks;
   size_t cutoff;
+  node_run *runs; /* one a worker */
+  int n_runs;
+  size_t run_start; /* a run's first room, in nodes */
 } top_build;
 
 static zr_status add_task(top_build *t, size_t first, size_t n, int depth,
@@ -321,6 +351,7 @@ static zr_status add_task(top_build *t, size_t first, size_t n, int depth,
   }
   subtree *k = &t->tasks[t->n_tasks++];
   memset(k, 0, sizeof *k);
+  k->run = -1;
   k->first = first;
   k->n = n;
   k->top = top;
@@ -389,13 +420,43 @@ typedef struct task_list {
   const size_t *which;
 } task_list;
 
+/* Room for need more nodes at the end of run r (first start nodes). */
+static bool run_room(node_run *r, size_t need, size_t start) {
+  if (r->cap - r->used >= need)
+    return true;
+  size_t cap = r->cap ? 2 * r->cap : start;
+  if (cap < r->used + need)
+    cap = r->used + need;
+  const size_t node = sizeof *r->nodes;
+  if (cap > SIZE_MAX / node)
+    return false;
+  zr_bvh_bin_node *p = zr__map_grow(r->nodes, r->cap * node, cap * node);
+  if (!p)
+    return false;
+  r->nodes = p;
+  r->cap = cap;
+  return true;
+}
+
 static void build_listed(void *user, size_t begin, size_t end, int worker) {
-  (void)worker;
   task_list *l = user;
+  node_run *r = &l->t->runs[worker];
   for (size_t i = begin; i < end; i++) {
     subtree *k = &l->t->tasks[l->which[i]];
+    size_t need = 2 * k->n - 1;
+    if (!run_room(r, need, l->t->run_start)) {
+      k->status = ZR_ENOMEM;
+      continue;
+    }
+    k->b.nodes = r->nodes + r->used;
+    k->b.n_nodes = 0;
+    k->b.cap_nodes = need;
+    k->b.fixed = true;
     k->status = build_node(&k->b, k->first, k->n, k->depth, &k->bounds,
                            &k->centres);
+    k->run = worker;
+    k->at = r->used;
+    r->used += k->b.n_nodes;
   }
 }
 
@@ -403,8 +464,34 @@ static void build_listed(void *user, size_t begin, size_t end, int worker) {
 static void build_some(top_build *t, const size_t *which, size_t count,
                        int threads) {
   task_list l = {t, which};
-  if (count > 0)
-    zr__parallel_for(threads, count, 1, build_listed, &l, NULL);
+  if (count == 0)
+    return;
+  int workers = threads < 1                  ? 1
+                : threads > ZR__MAX_THREADS ? ZR__MAX_THREADS
+                                            : threads;
+  if (!t->runs) {
+    t->runs = calloc((size_t)workers, sizeof *t->runs);
+    if (!t->runs) {
+      for (size_t i = 0; i < count; i++)
+        t->tasks[which[i]].status = ZR_ENOMEM;
+      return;
+    }
+    t->n_runs = workers;
+  }
+  if (workers > t->n_runs)
+    workers = t->n_runs;
+  /* A run starts with room for its share of the faces' most nodes (the
+     terrain's tasks used 0.54 nodes a face): one mapping, rarely grown. */
+  size_t faces = 0;
+  for (size_t i = 0; i < count; i++)
+    faces += t->tasks[which[i]].n;
+  t->run_start = 2 * faces / (size_t)workers;
+  zr__parallel_for(workers, count, 1, build_listed, &l, NULL);
+  for (size_t i = 0; i < count; i++) {
+    subtree *k = &t->tasks[which[i]];
+    if (k->run >= 0)
+      k->b.nodes = t->runs[k->run].nodes + k->at;
+  }
 }
 
 /* A task's size and index while they are dealt. */
@@ -671,9 +758,23 @@ static zr_status build_tasks_shared(top_build *t, zr_status top,
   return s;
 }
 
+/*
+ * The faces' order, the boxes' last use: order gets each box's face and
+ * the boxes (b's, n of them) are unmapped, before the final node array
+ * is made, so the two are never held at once (6 MiB of boxes in huge
+ * pages, the terrain's nodes 4 MiB).
+ */
+static void take_order(builder *b, size_t n, uint32_t *order) {
+  for (size_t i = 0; i < n; i++)
+    order[i] = b->boxes[i].face;
+  zr__map_free(b->boxes, n * sizeof *b->boxes);
+  b->boxes = NULL;
+}
+
 static zr_status build_parallel(builder *b, size_t n, int threads,
                                 const zr_team *team, bool *team_on,
-                                const fbox *bounds, const fbox *centres) {
+                                const fbox *bounds, const fbox *centres,
+                                uint32_t *order) {
   top_build t;
   memset(&t, 0, sizeof t);
   t.top.boxes = b->boxes;
@@ -696,8 +797,12 @@ static zr_status build_parallel(builder *b, size_t n, int threads,
       s = t.tasks[i].status;
       total += t.tasks[i].b.n_nodes;
     }
+    if (s == ZR_OK)
+      take_order(b, n, order);
     task_of = malloc(t.top.n_nodes * sizeof *task_of);
-    b->nodes = zr__huge_alloc(total * sizeof *b->nodes);
+    b->nodes = zr__map_alloc(total * sizeof *b->nodes);
+    if (b->nodes)
+      b->cap_nodes = total;
     if (s == ZR_OK && (!task_of || !b->nodes))
       s = ZR_ENOMEM;
     if (s == ZR_OK) {
@@ -706,12 +811,15 @@ static zr_status build_parallel(builder *b, size_t n, int threads,
       for (size_t i = 0; i < t.n_tasks; i++)
         task_of[t.tasks[i].top] = i;
       b->n_nodes = 0;
-      b->cap_nodes = total;
       splice(&t, task_of, 0, b->nodes, &b->n_nodes);
     }
   }
   for (size_t i = 0; i < t.n_tasks; i++)
-    free(t.tasks[i].b.nodes);
+    if (t.tasks[i].run < 0)
+      free(t.tasks[i].b.nodes);
+  for (int i = 0; i < t.n_runs; i++)
+    zr__map_free(t.runs[i].nodes, t.runs[i].cap * sizeof *t.runs[i].nodes);
+  free(t.runs);
   free(t.tasks);
   free(t.top.nodes);
   free(task_of);
@@ -797,19 +905,22 @@ static void box_faces(void *user, size_t begin, size_t end, int worker) {
 }
 
 /* Puts the rows of an n-row table of row-size bytes in the given order,
-   through one scratch copy. */
+   through one scratch copy: in spare (spare_size bytes) when it has
+   room, else in a block of its own. */
 static zr_status permute(void *rows, size_t row, const uint32_t *order,
-                         size_t n) {
+                         size_t n, void *spare, size_t spare_size) {
   if (!rows)
     return ZR_OK;
-  unsigned char *tmp = zr__huge_alloc(n * row);
+  bool own = spare_size < n * row;
+  unsigned char *tmp = own ? zr__map_alloc(n * row) : spare;
   if (!tmp)
     return ZR_ENOMEM;
   const unsigned char *src = rows;
   for (size_t i = 0; i < n; i++)
     memcpy(tmp + i * row, src + (size_t)order[i] * row, row);
   memcpy(rows, tmp, n * row);
-  free(tmp);
+  if (own)
+    zr__map_free(tmp, n * row);
   return ZR_OK;
 }
 
@@ -862,15 +973,17 @@ zr_status zr__mesh_build_team(struct zr_mesh *mesh, zr_arena *arena,
      terrain, the order, the permutations' copies, the wide nodes) are
      filled once: in 4 KiB pages they took 2,100 of its parse's 6,900
      page faults (perf record -e page-faults, --parse-only), about 14 us
-     each on this project's VM, so they come in huge pages
-     (core/arena.h).  bench/parse_mem.sh, main and this, best of 3: the
-     terrain at 1x1 0.24 -> 0.19 CPU s, its peak 317 -> 339 bytes a
-     triangle (the 2 MiB rounding).  The growing node array stays with
-     realloc, which moves it without a copy: in huge pages (copied at
-     each doubling) it saved 900 more faults for 2-3 MB more peak. */
-  face_box *boxes = zr__huge_alloc(n * sizeof *boxes);
-  uint32_t *order = zr__huge_alloc(n * sizeof *order);
-  builder b = {boxes, NULL, 0, 0};
+     each on this project's VM, so they come in huge pages, in mappings
+     of their own that are unmapped when freed (zr__map_alloc,
+     core/arena.h), and the nodes are never grown by copying (a lone
+     build's room is the most nodes there can be, a parallel build's
+     tasks share a run per worker).  bench/results/
+     arena-2026-12-03-s15.md has the faults and peaks. */
+  /* The order is written all through: faulted in at once. */
+  face_box *boxes = zr__map_alloc(n * sizeof *boxes);
+  uint32_t *order = zr__map_alloc(n * sizeof *order);
+  zr__mem_populate(order, n * sizeof *order);
+  builder b = {boxes, NULL, 0, 0, false};
   zr_wide_node *wide = NULL;
   zr_status s = ZR_ENOMEM;
   if (!boxes || !order)
@@ -905,49 +1018,60 @@ zr_status zr__mesh_build_team(struct zr_mesh *mesh, zr_arena *arena,
   if (shared || (threads > 1 && n >= PARALLEL_FACES_MIN)) {
     if ((size_t)threads > n / PARALLEL_FACES_MIN)
       threads = (int)(n / PARALLEL_FACES_MIN);
-    s = build_parallel(&b, n, threads, shared, team_on, &bounds, &centres);
+    s = build_parallel(&b, n, threads, shared, team_on, &bounds, &centres,
+                       order);
   } else {
-    s = build_node(&b, 0, n, 0, &bounds, &centres);
+    /* Room for the most nodes n faces can have, of which a prefix is
+       used (0.54 a face on the terrain): no doubling and copying, and
+       the pages past the nodes made are never touched. */
+    b.nodes = zr__map_alloc((2 * n - 1) * sizeof *b.nodes);
+    b.cap_nodes = b.nodes ? 2 * n - 1 : 0;
+    b.fixed = true;
+    s = b.nodes ? build_node(&b, 0, n, 0, &bounds, &centres) : ZR_ENOMEM;
+    if (s == ZR_OK)
+      take_order(&b, n, order);
   }
   if (s != ZR_OK)
     goto done;
-  for (size_t i = 0; i < n; i++)
-    order[i] = boxes[i].face;
-  /* The boxes are done with: give their memory back before the
-     permutation's scratch copies are made. */
-  free(boxes);
-  boxes = NULL;
-  b.boxes = NULL;
-  if ((s = permute(mesh->faces, sizeof *mesh->faces, order, n)) != ZR_OK ||
-      (s = permute(mesh->face_normals, sizeof *mesh->face_normals, order,
-                   n)) != ZR_OK ||
-      (s = permute(mesh->face_uvs, sizeof *mesh->face_uvs, order, n)) !=
-          ZR_OK ||
-      (s = permute(mesh->face_textures, sizeof *mesh->face_textures, order,
-                   n)) != ZR_OK)
-    goto done;
   /* The binary tree collapsed four wide: each wide node stands for one
      to three of its inner nodes, so b.n_nodes of them are room enough. */
-  wide = zr__huge_alloc(b.n_nodes * sizeof *wide);
+  wide = zr__map_alloc(b.n_nodes * sizeof *wide);
   if (!wide) {
     s = ZR_ENOMEM;
     goto done;
   }
   size_t n_wide = zr__bvh_collapse(b.nodes, wide);
   mesh->nodes = zr__arena_memdup(arena, wide, n_wide * sizeof *wide);
+  zr__map_free(wide, b.n_nodes * sizeof *wide);
+  wide = NULL;
   mesh->face_row = zr__arena_alloc(arena, n * sizeof *mesh->face_row);
   if (!mesh->nodes || !mesh->face_row) {
     s = ZR_ENOMEM;
     goto done;
   }
+  /* The binary nodes, collapsed, are done with: their pages (the
+     terrain's 3.9 MB, 56 bytes a node and 0.54 nodes a face) hold each
+     permutation's copy (12 bytes a face), where a block of its own cost
+     a mapping and its faults each. */
+  void *spare = b.nodes;
+  size_t spare_size = b.n_nodes * sizeof *b.nodes;
+  if ((s = permute(mesh->faces, sizeof *mesh->faces, order, n, spare,
+                   spare_size)) != ZR_OK ||
+      (s = permute(mesh->face_normals, sizeof *mesh->face_normals, order, n,
+                   spare, spare_size)) != ZR_OK ||
+      (s = permute(mesh->face_uvs, sizeof *mesh->face_uvs, order, n, spare,
+                   spare_size)) != ZR_OK ||
+      (s = permute(mesh->face_textures, sizeof *mesh->face_textures, order,
+                   n, spare, spare_size)) != ZR_OK)
+    goto done;
   for (size_t i = 0; i < n; i++)
     mesh->face_row[order[i]] = (uint32_t)i;
   mesh->n_nodes = n_wide;
 done:
-  free(wide);
-  free(b.nodes);
-  free(order);
-  free(boxes);
+  zr__map_free(wide, b.n_nodes * sizeof *wide);
+  zr__map_free(b.nodes, b.cap_nodes * sizeof *b.nodes);
+  zr__map_free(order, n * sizeof *order);
+  zr__map_free(b.boxes, n * sizeof *b.boxes);
   return s;
 }
 
