@@ -269,11 +269,26 @@ typedef struct zr_sdl_clist {
   zr_sdl_loc loc; /* of the last colour, for "too many colours" */
 } zr_sdl_clist;
 
+/*
+ * T_SPHERE_TEXTURED: a T_SPHERE_RUN that the tokens "texture { T } }"
+ * follow on the sphere's line, T a texture identifier, handed to the
+ * grammar as one token (directive.c, sphere_textured).  The columns
+ * are those of the slow path's locations: the texture block's, from
+ * 'texture' to its '}', and the whole object's, to the sphere's '}'.
+ */
+typedef struct zr_sdl_sphere_tex {
+  const double *sphere;      /* T_SPHERE_RUN's centre and radius */
+  const zr_texture *texture; /* T's value */
+  int texture_column, texture_length;
+  int length; /* of "sphere { ... }" from the keyword */
+} zr_sdl_sphere_tex;
+
 /* The semantic value of a token as the engine hands it to bison. */
 typedef union zr_sdl_lexval {
   double num;
   const char *str;
   const double *sphere; /* T_SPHERE_RUN's centre and radius */
+  zr_sdl_sphere_tex sphere_tex; /* T_SPHERE_TEXTURED */
   zr_sdl_decl_name decl;
   zr_sdl_value value;
 } zr_sdl_lexval;
@@ -929,6 +944,12 @@ void zr__sdl_sphere_radius(zr_sdl_parser *p, const zr_object *sphere,
 /* The centre and radius of a T_SPHERE_RUN token, the four numbers the
    lexer read (run, in its file's arena), into sphere. */
 void zr__sdl_sphere_run(const double *run, zr_object *sphere);
+/* The object of a T_SPHERE_TEXTURED token (at: its place, the sphere
+   keyword's): the calls the grammar's actions make, in their order, for
+   the tokens it stands for; NULL after an error. */
+zr_object *zr__sdl_sphere_textured(zr_sdl_parser *p,
+                                   const zr_sdl_sphere_tex *s,
+                                   const zr_sdl_loc *at);
 /* A cylinder's or cone's axis must have a length: POV-Ray 3.7 stops on
    base point = apex point (measured); false after the error at at. */
 bool zr__sdl_axis_given(zr_sdl_parser *p, zr_vec3 base, zr_vec3 cap,
