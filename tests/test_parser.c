@@ -926,11 +926,11 @@ static void test_parser_include_recursion_limit(void **state) {
  * whose action makes the calls the slow path's actions make.  Random
  * scenes mixing that line with its near misses (a newline inside, a
  * modifier after the texture, a pigment, float, macro, deprecated or
- * undefined identifier, a sphere where none may stand (in a camera), #declare and
- * #version waiting for their end, unions, CSG) are parsed with the
- * fused token and without it (ctx->sdl_tokens_apart); both must give
- * the same status, messages (text, place and caret), primitives
- * (centres, radii, which share a texture) and the same image bytes.
+ * undefined identifier, a sphere where none may stand (in a camera),
+ * #declare and #version waiting for their end, unions, CSG) are parsed
+ * with the fused token and without it (ctx->sdl_tokens_apart); both
+ * must give the same status, messages (text, place and caret),
+ * primitives (centres, radii, which share a texture) and image bytes.
  */
 typedef struct parsed_view {
   zr_status status;
@@ -987,7 +987,10 @@ static void fused_line(char *out, size_t size, int kind, unsigned *seed) {
   double y = (int)(fused_rand(seed) % 200) / 80.0;
   double z = (int)(fused_rand(seed) % 200) / 50.0 + 1.0;
   double r = (int)(fused_rand(seed) % 50 + 1) / 100.0;
-  const char *tex = fused_rand(seed) % 2 ? "T1" : "T2";
+  /* T2 has no finish (the block's copy takes the default's, so it is
+     kept), T3 a pattern (the copy takes its first entry's parts). */
+  static const char *const textures[] = {"T1", "T2", "T3"};
+  const char *tex = textures[fused_rand(seed) % 3];
   switch (kind) {
   case 0: case 1: case 2: case 3:
     snprintf(out, size, "sphere { <%g, %g, %g>, %g texture { %s } }\n", x,
@@ -1112,6 +1115,8 @@ static void test_parser_textured_spheres_same(void **state) {
       "#declare T1 = texture { pigment { rgb <0.9, 0.8, 0.6> } finish { "
       "ambient 0.1 diffuse 0.7 reflection 0.3 } }\n"
       "#declare T2 = texture { pigment { rgb <0.2, 0.4, 0.9> } }\n"
+      "#declare T3 = texture { checker texture { T1 } texture { T2 } "
+      "scale 0.3 }\n"
       "#declare P1 = pigment { rgb <1, 0, 0> }\n"
       "#declare F = 3;\n"
       "#declare deprecated D = texture { T1 }\n"

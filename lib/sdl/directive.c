@@ -1065,9 +1065,9 @@ static const zr_sdl_value *array_element(zr_sdl_parser *p, const char *name,
  * (zr__sdl_sphere_textured).  On bench/peers.sh's sphereflake this
  * took 11.7 M of the parse's 64.5 M instructions away (callgrind,
  * --parse-only): bison's ten reductions and six shifts a sphere, and
- * five tokens through the engine.  Returns 1 with v filled in and the frame moved
- * past the tokens, 0 when the tokens are not that (nothing changed),
- * -1 after an error (a cancel seen by the progress report).
+ * five tokens through the engine.  Returns 1 with v filled in and the
+ * frame moved past the tokens, 0 when the tokens are not that (nothing
+ * changed), -1 after an error (a cancel seen by the progress report).
  */
 static int sphere_textured(zr_sdl_parser *p, zr_sdl_frame *fr,
                            const zr_sdl_token *t, zr_sdl_lexval *v) {

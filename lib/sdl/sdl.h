@@ -30,6 +30,7 @@
 #include <setjmp.h>
 #include <stdbool.h>
 #include <stddef.h>
+#include <stdint.h>
 
 #include "core/context.h"
 #include "core/arena.h"
@@ -338,6 +339,36 @@ typedef struct zr_sdl_numreader {
    when what follows is not a plain item. */
 bool zr__sdl_numlist_item(zr_sdl_numreader *r, double v[3], int *dim,
                           int *line, int *column);
+/* ' ', '\t', '\n', '\v', '\f' and '\r', the scanner's blanks
+   (grammar/pov.l): one test of a bit mask. */
+static inline bool zr__sdl_is_blank(char c) {
+  unsigned char u = (unsigned char)c;
+  return u <= ' ' && ((UINT64_C(1) << u) & UINT64_C(0x100003E00)) != 0;
+}
+
+/* The first byte from pos on, before end, that is not a blank, with
+   *line and *column moved past the blanks as the scanner counts them
+   (one column a byte, a newline starts the next line).  The lexer's
+   quick tokens (tokens.c) and the number reader (numlist.c) both skip
+   blanks so; the place lives in locals, which stay in registers. */
+static inline size_t zr__sdl_skip_blanks(const char *b, size_t pos,
+                                         size_t end, int *line,
+                                         int *column) {
+  int l = *line, c = *column;
+  while (pos < end && zr__sdl_is_blank(b[pos])) {
+    if (b[pos] == '\n') {
+      l++;
+      c = 1;
+    } else {
+      c++;
+    }
+    pos++;
+  }
+  *line = l;
+  *column = c;
+  return pos;
+}
+
 /* A sphere's "<x, y, z>, r" (T_SPHERE_RUN, tokens.c): the centre in
    v[0..2] and the radius in v[3].  False, with the reader left where it
    was, when what follows is not that. */
