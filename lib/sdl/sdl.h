@@ -400,6 +400,7 @@ typedef struct zr_sdl_file {
   struct zr_budget *budget;
   size_t charged;
   size_t tokens_charged; /* token slots the budget has been charged for */
+  size_t block_tokens; /* directives that open or continue a block */
 } zr_sdl_file;
 
 /*
