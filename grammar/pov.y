@@ -186,6 +186,7 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
   double num;
   const char *str;
   const double *sphere;
+  zr_sdl_sphere_tex sphere_tex;
   zr_sdl_decl_name decl;
   zr_sdl_value value;
   zr_sdl_expr expr;
@@ -241,6 +242,10 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %token <str> T_TRIANGLE_RUN "triangle with its corners"
 %token <sphere> T_SPHERE_RUN "sphere with its centre and radius"
 %token <str> T_SMOOTH_TRIANGLE_RUN "smooth_triangle with its corners"
+/* T_SPHERE_RUN and "texture { T } }" after it (directive.c,
+   sphere_textured): a whole object.  Messages call it T_SPHERE_RUN's
+   name and never list it (yyreport_syntax_error). */
+%token <sphere_tex> T_SPHERE_TEXTURED "textured sphere"
 %token <decl> T_DECL_NAME "identifier"
 %token <value> T_FLOAT_ID "float identifier"
 %token <value> T_VECTOR_ID "vector identifier"
@@ -1505,6 +1510,12 @@ object:
     }
 | T_SMOOTH_TRIANGLE_RUN
     { TRY($$ = zr__sdl_smooth_triangle_run(p, $1, &@1)); }
+| T_SPHERE_TEXTURED
+    {
+      TRY($$ = zr__sdl_sphere_textured(p, &$1, &@1));
+      /* The place object_body '}' has: to the sphere's '}'. */
+      @$.length = $1.length;
+    }
 | union_body '}'
 | light_group_body '}'
     { TRY(zr__sdl_light_group_done(p, $1.object, $1.global, &@1)); $$ = $1.object; }
@@ -4062,9 +4073,21 @@ const char *zr__sdl_kind_name(int kind) {
 
 static int yyreport_syntax_error(const yypcontext_t *yyctx,
                                  zr_sdl_parser *p) {
-  yysymbol_kind_t expected[MAX_EXPECTED + 1];
-  int n = yypcontext_expected_tokens(yyctx, expected, MAX_EXPECTED + 1);
+  /* T_SPHERE_TEXTURED stands for tokens that are expected or not as
+     T_SPHERE_RUN is: it is called by that name and never listed, so
+     that messages are the same with or without it. */
+  yysymbol_kind_t expected[MAX_EXPECTED + 2];
+  int n = yypcontext_expected_tokens(yyctx, expected, MAX_EXPECTED + 2);
+  for (int i = 0; i < n; i++)
+    if (expected[i] == YYSYMBOL_T_SPHERE_TEXTURED) {
+      memmove(&expected[i], &expected[i + 1],
+              (size_t)(n - i - 1) * sizeof *expected);
+      n--;
+      break;
+    }
   yysymbol_kind_t got = yypcontext_token(yyctx);
+  if (got == YYSYMBOL_T_SPHERE_TEXTURED)
+    got = YYSYMBOL_T_SPHERE_RUN;
   zr_strbuf sb;
   zr__strbuf_init(&sb);
   char buf[128];
@@ -4109,6 +4132,9 @@ int zr__pov_lex(ZR__POV_STYPE *lval, zr_sdl_loc *lloc, zr_sdl_parser *p) {
     break;
   case T_SPHERE_RUN:
     lval->sphere = v.sphere;
+    break;
+  case T_SPHERE_TEXTURED:
+    lval->sphere_tex = v.sphere_tex;
     break;
   case T_DECL_NAME:
     lval->decl = v.decl;

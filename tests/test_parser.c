@@ -920,6 +920,251 @@ static void test_parser_include_recursion_limit(void **state) {
                          "calls)\n"));
 }
 
+/*
+ * "sphere { <x, y, z>, r texture { T } }" on one line is one token for
+ * the grammar, T_SPHERE_TEXTURED (lib/sdl/directive.c, sphere_textured),
+ * whose action makes the calls the slow path's actions make.  Random
+ * scenes mixing that line with its near misses (a newline inside, a
+ * modifier after the texture, a pigment, float, macro, deprecated or
+ * undefined identifier, a sphere where none may stand (in a camera),
+ * #declare and #version waiting for their end, unions, CSG) are parsed
+ * with the fused token and without it (ctx->sdl_tokens_apart); both
+ * must give the same status, messages (text, place and caret),
+ * primitives (centres, radii, which share a texture) and image bytes.
+ */
+typedef struct parsed_view {
+  zr_status status;
+  captured diag;
+  size_t n;
+  double sphere[600][4];
+  int kind[600];
+  int shares[600]; /* the first primitive with the same texture */
+  float rgb[16 * 16 * 3];
+} parsed_view;
+
+static void view_of(fixture *f, const char *text, int apart,
+                    parsed_view *v) {
+  memset(v, 0, sizeof *v);
+  f->ctx->sdl_tokens_apart = apart;
+  v->status = parse(f, text);
+  f->ctx->sdl_tokens_apart = 0;
+  v->diag = f->diag;
+  if (v->status != ZR_OK)
+    return;
+  const zr_scene *sc = f->scene;
+  v->n = sc->n_primitives < 600 ? sc->n_primitives : 600;
+  for (size_t i = 0; i < v->n; i++) {
+    const zr_object *o = sc->primitives[i];
+    v->kind[i] = (int)o->kind;
+    if (o->kind == ZR_OBJ_SPHERE) {
+      v->sphere[i][0] = o->u.sphere.centre.x;
+      v->sphere[i][1] = o->u.sphere.centre.y;
+      v->sphere[i][2] = o->u.sphere.centre.z;
+      v->sphere[i][3] = o->u.sphere.radius;
+    }
+    v->shares[i] = (int)i;
+    for (size_t j = 0; j < i; j++)
+      if (sc->primitives[j]->texture == o->texture) {
+        v->shares[i] = (int)j;
+        break;
+      }
+  }
+  zr_render_params rp;
+  zr_render_params_init(&rp);
+  rp.width = 16;
+  rp.height = 16;
+  assert_int_equal(zr_render_image(sc, &rp, v->rgb, NULL), ZR_OK);
+}
+
+static unsigned fused_rand(unsigned *seed) {
+  *seed = *seed * 1103515245u + 12345u;
+  return (*seed >> 16) & 0x7fff;
+}
+
+/* One line of a random scene (kinds 0-19; the errors are 20-24). */
+static void fused_line(char *out, size_t size, int kind, unsigned *seed) {
+  double x = (int)(fused_rand(seed) % 200) / 50.0 - 2.0;
+  double y = (int)(fused_rand(seed) % 200) / 80.0;
+  double z = (int)(fused_rand(seed) % 200) / 50.0 + 1.0;
+  double r = (int)(fused_rand(seed) % 50 + 1) / 100.0;
+  /* T2 has no finish (the block's copy takes the default's, so it is
+     kept), T3 a pattern (the copy takes its first entry's parts). */
+  static const char *const textures[] = {"T1", "T2", "T3"};
+  const char *tex = textures[fused_rand(seed) % 3];
+  switch (kind) {
+  case 0: case 1: case 2: case 3:
+    snprintf(out, size, "sphere { <%g, %g, %g>, %g texture { %s } }\n", x,
+             y, z, r, tex);
+    break;
+  case 4:
+    snprintf(out, size, "  sphere{<%g,%g,%g>,%g texture{%s}}  sphere { "
+             "<%g, %g, %g>, %g texture { %s } }\n", x, y, z, r, tex, z, x,
+             y, r, tex);
+    break;
+  case 5:
+    snprintf(out, size, "sphere { <%g, %g, %g>, %g texture { %s }\n}\n",
+             x, y, z, r, tex);
+    break;
+  case 6:
+    snprintf(out, size, "sphere { <%g, %g, %g>, %g texture {\n %s } }\n",
+             x, y, z, r, tex);
+    break;
+  case 7:
+    snprintf(out, size, "sphere { <%g, %g, %g>, %g texture { %s } scale "
+             "1.5 }\n", x, y, z, r, tex);
+    break;
+  case 8:
+    snprintf(out, size, "sphere { <%g, %g, %g>, %g texture { P1 } }\n", x,
+             y, z, r);
+    break;
+  case 9:
+    snprintf(out, size, "sphere { <%g, %g, %g>, %g texture { M() } }\n", x,
+             y, z, r);
+    break;
+  case 10:
+    snprintf(out, size, "sphere { <%g, %g, %g>, -%g texture { %s } }\n", x,
+             y, z, r, tex);
+    break;
+  case 11:
+    snprintf(out, size, "union { sphere { <%g, %g, %g>, %g texture { %s } "
+             "} sphere { <%g, %g, %g>, %g texture { T2 } } }\n", x, y, z, r,
+             tex, y, z, x, r);
+    break;
+  case 12:
+    snprintf(out, size, "#declare S = sphere { <%g, %g, %g>, %g texture { "
+             "%s } }\nobject { S translate x }\n", x, y, z, r, tex);
+    break;
+  case 13:
+    snprintf(out, size, "sphere { <%g, %g, %g>, %g texture { D } }\n", x, y,
+             z, r);
+    break;
+  case 14:
+    snprintf(out, size, "sphere { <%g, %g, %g>, %g texture { %s } } // "
+             "sphere\n", x, y, z, r, tex);
+    break;
+  case 15:
+    snprintf(out, size, "#local L = texture { %s finish { phong 1 } }\n"
+             "sphere { <%g, %g, %g>, %g texture { L } }\n", tex, x, y, z, r);
+    break;
+  case 16:
+    snprintf(out, size, "#version 3.7\nsphere { <%g, %g, %g>, %g texture { "
+             "%s } }\n", x, y, z, r, tex);
+    break;
+  case 17:
+    snprintf(out, size, "object { sphere { <%g, %g, %g>, %g texture { %s } "
+             "} rotate 10*y }\n", x, y, z, r, tex);
+    break;
+  case 18:
+    snprintf(out, size, "difference { sphere { <%g, %g, %g>, %g texture { "
+             "%s } } box { <%g, %g, %g>, <%g, %g, %g> } }\n", x, y, z, r,
+             tex, x, y, z, x + 1, y + 1, z + 1);
+    break;
+  case 19:
+    snprintf(out, size, "light_group { sphere { <%g, %g, %g>, %g texture { "
+             "%s } } light_source { <1, 5, -2>, 1 } }\n", x, y, z, r, tex);
+    break;
+  case 20:
+    snprintf(out, size, "camera { sphere { <%g, %g, %g>, %g texture { %s "
+             "} } }\n", x, y, z, r, tex);
+    break;
+  case 21:
+    snprintf(out, size, "sphere { <%g, %g, %g>, %g texture { U } }\n", x, y,
+             z, r);
+    break;
+  case 22:
+    snprintf(out, size, "sphere { <%g, %g, %g>, %g texture { F } }\n", x, y,
+             z, r);
+    break;
+  case 23:
+    snprintf(out, size, "union { sphere { <%g, %g, %g>, %g texture { %s } "
+             "} 5 }\n", x, y, z, r, tex);
+    break;
+  default:
+    snprintf(out, size, "#declare %s = sphere { <%g, %g, %g>, %g texture { "
+             "%s } }\n", tex, x, y, z, r, tex);
+    break;
+  }
+}
+
+static void assert_views_same(const parsed_view *a, const parsed_view *b,
+                              const char *text) {
+  if (a->status != b->status || a->diag.errors != b->diag.errors ||
+      a->diag.warnings != b->diag.warnings ||
+      strcmp(a->diag.text, b->diag.text) != 0 ||
+      strcmp(a->diag.warning, b->diag.warning) != 0)
+    fail_msg("messages differ:\n%s\n--- fused: %d, %d errors, %d "
+             "warnings\n%s\n%s\n--- apart: %d, %d errors, %d warnings\n"
+             "%s\n%s", text, a->status, a->diag.errors, a->diag.warnings,
+             a->diag.text, a->diag.warning, b->status, b->diag.errors,
+             b->diag.warnings, b->diag.text, b->diag.warning);
+  assert_int_equal(a->n, b->n);
+  for (size_t i = 0; i < a->n; i++) {
+    assert_int_equal(a->kind[i], b->kind[i]);
+    assert_int_equal(a->shares[i], b->shares[i]);
+    assert_memory_equal(a->sphere[i], b->sphere[i], sizeof a->sphere[i]);
+  }
+  if (memcmp(a->rgb, b->rgb, sizeof a->rgb) != 0)
+    fail_msg("images differ:\n%s", text);
+}
+
+static void test_parser_textured_spheres_same(void **state) {
+  fixture *f = *state;
+  static const char header[] =
+      "camera { location <0, 1, -4> look_at <0, 1, 2> }\n"
+      "light_source { <-5, 8, -6>, 1 }\n"
+      "#declare T1 = texture { pigment { rgb <0.9, 0.8, 0.6> } finish { "
+      "ambient 0.1 diffuse 0.7 reflection 0.3 } }\n"
+      "#declare T2 = texture { pigment { rgb <0.2, 0.4, 0.9> } }\n"
+      "#declare T3 = texture { checker texture { T1 } texture { T2 } "
+      "scale 0.3 }\n"
+      "#declare P1 = pigment { rgb <1, 0, 0> }\n"
+      "#declare F = 3;\n"
+      "#declare deprecated D = texture { T1 }\n"
+      "#macro M() T1 #end\n";
+  parsed_view *fused = malloc(sizeof *fused);
+  parsed_view *apart = malloc(sizeof *apart);
+  char *text = malloc(64 * 1024);
+  assert_non_null(fused);
+  assert_non_null(apart);
+  assert_non_null(text);
+  unsigned seed = 13;
+  int made = 0, errors = 0;
+  for (int scene = 0; scene < 300; scene++) {
+    size_t len = (size_t)snprintf(text, 64 * 1024, "%s", header);
+    int lines = 1 + (int)(fused_rand(&seed) % 12);
+    for (int l = 0; l < lines; l++) {
+      /* Mostly lines that fuse; an error line now and then, last. */
+      int kind = (int)(fused_rand(&seed) % 20);
+      if (l == lines - 1 && fused_rand(&seed) % 4 == 0)
+        kind = 20 + (int)(fused_rand(&seed) % 5);
+      fused_line(text + len, 64 * 1024 - len, kind, &seed);
+      len += strlen(text + len);
+    }
+    view_of(f, text, 0, fused);
+    view_of(f, text, 1, apart);
+    assert_views_same(fused, apart, text);
+    made += fused->status == ZR_OK;
+    errors += fused->status != ZR_OK;
+  }
+  /* Both kinds of outcome were compared. */
+  assert_true(made > 150);
+  assert_true(errors > 20);
+  /* A file longer than the progress report's period (4096 tokens), with
+     every sphere fused. */
+  size_t len = (size_t)snprintf(text, 64 * 1024, "%s", header);
+  for (int i = 0; i < 1000 && len < 60 * 1024; i++) {
+    fused_line(text + len, 64 * 1024 - len, 0, &seed);
+    len += strlen(text + len);
+  }
+  view_of(f, text, 0, fused);
+  view_of(f, text, 1, apart);
+  assert_int_equal(fused->status, ZR_OK);
+  assert_views_same(fused, apart, text);
+  free(text);
+  free(fused);
+  free(apart);
+}
+
 static void test_parser_string_name_in_messages(void **state) {
   fixture *f = *state;
   zr_scene *scene = NULL;
@@ -1045,6 +1290,8 @@ int main(void) {
       cmocka_unit_test_setup_teardown(test_parser_include_recursion_limit,
                                       setup, teardown),
       cmocka_unit_test_setup_teardown(test_parser_string_name_in_messages,
+                                      setup, teardown),
+      cmocka_unit_test_setup_teardown(test_parser_textured_spheres_same,
                                       setup, teardown),
   };
   return cmocka_run_group_tests(tests, make_tmpdir, remove_tmpdir);

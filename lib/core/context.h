@@ -41,6 +41,9 @@ struct zr_context {
   int no_scene_writes;             /* zr_context_set_scene_writes(0) */
   int png_level;                   /* zlib level of PNG output, 0 to 9 */
   int threads;                     /* a parse's threads, at least 1 */
+  /* Tests only: the engine hands the grammar every token as it is, no
+     T_SPHERE_TEXTURED (lib/sdl/directive.c), to compare the paths. */
+  int sdl_tokens_apart;
   /* zr_context_set_team: the members that parse together, NULL alone;
      team_parse is 1 while a parse goes on with them in step (lib/sdl's
      zr__sdl_team_*), 0 once they have parted or before a parse. */

@@ -38,11 +38,6 @@ static const double powers_of_ten[23] = {
     1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
     1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
 
-/* ' ', '\t', '\n', '\v', '\f' and '\r': one test of a bit mask. */
-static inline bool is_blank(char c) {
-  unsigned char u = (unsigned char)c;
-  return u <= ' ' && ((UINT64_C(1) << u) & UINT64_C(0x100003E00)) != 0;
-}
 
 static inline bool is_digit(char c) { return c >= '0' && c <= '9'; }
 
@@ -64,24 +59,10 @@ static inline void step(zr_sdl_numreader *r) {
  * of a terrain's parse; bench/parse.sh).
  */
 
-/* Blanks, counting lines and columns as the scanner does: one column a
-   byte. */
+/* Blanks, counting lines and columns as the scanner does. */
 static inline void skip_blanks(zr_sdl_numreader *r) {
-  const char *b = r->bytes;
-  size_t pos = r->pos, end = r->end;
-  int line = r->line, column = r->column;
-  while (pos < end && is_blank(b[pos])) {
-    if (b[pos] == '\n') {
-      line++;
-      column = 1;
-    } else {
-      column++;
-    }
-    pos++;
-  }
-  r->pos = pos;
-  r->line = line;
-  r->column = column;
+  r->pos = zr__sdl_skip_blanks(r->bytes, r->pos, r->end, &r->line,
+                               &r->column);
 }
 
 /* The digits at p, before e, added to the mantissa (leading zeros are
@@ -263,7 +244,8 @@ static inline bool number(zr_sdl_numreader *r, double *out) {
   /* The scanner would read what follows as another token (a '}' ends
      a sphere's radius; in an item only '>' and ',' go on). */
   char next = p < e ? *p : '\0';
-  if (!(is_blank(next) || next == ',' || next == '>' || next == '}'))
+  if (!(zr__sdl_is_blank(next) || next == ',' || next == '>' ||
+        next == '}'))
     return false;
   int power = exponent - fraction;
   if (mantissa == 0 && digits == 0) {

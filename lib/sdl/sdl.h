@@ -30,6 +30,7 @@
 #include <setjmp.h>
 #include <stdbool.h>
 #include <stddef.h>
+#include <stdint.h>
 
 #include "core/context.h"
 #include "core/arena.h"
@@ -269,11 +270,26 @@ typedef struct zr_sdl_clist {
   zr_sdl_loc loc; /* of the last colour, for "too many colours" */
 } zr_sdl_clist;
 
+/*
+ * T_SPHERE_TEXTURED: a T_SPHERE_RUN that the tokens "texture { T } }"
+ * follow on the sphere's line, T a texture identifier, handed to the
+ * grammar as one token (directive.c, sphere_textured).  The columns
+ * are those of the slow path's locations: the texture block's, from
+ * 'texture' to its '}', and the whole object's, to the sphere's '}'.
+ */
+typedef struct zr_sdl_sphere_tex {
+  const double *sphere;      /* T_SPHERE_RUN's centre and radius */
+  const zr_texture *texture; /* T's value */
+  int texture_column, texture_length;
+  int length; /* of "sphere { ... }" from the keyword */
+} zr_sdl_sphere_tex;
+
 /* The semantic value of a token as the engine hands it to bison. */
 typedef union zr_sdl_lexval {
   double num;
   const char *str;
   const double *sphere; /* T_SPHERE_RUN's centre and radius */
+  zr_sdl_sphere_tex sphere_tex; /* T_SPHERE_TEXTURED */
   zr_sdl_decl_name decl;
   zr_sdl_value value;
 } zr_sdl_lexval;
@@ -323,6 +339,36 @@ typedef struct zr_sdl_numreader {
    when what follows is not a plain item. */
 bool zr__sdl_numlist_item(zr_sdl_numreader *r, double v[3], int *dim,
                           int *line, int *column);
+/* ' ', '\t', '\n', '\v', '\f' and '\r', the scanner's blanks
+   (grammar/pov.l): one test of a bit mask. */
+static inline bool zr__sdl_is_blank(char c) {
+  unsigned char u = (unsigned char)c;
+  return u <= ' ' && ((UINT64_C(1) << u) & UINT64_C(0x100003E00)) != 0;
+}
+
+/* The first byte from pos on, before end, that is not a blank, with
+   *line and *column moved past the blanks as the scanner counts them
+   (one column a byte, a newline starts the next line).  The lexer's
+   quick tokens (tokens.c) and the number reader (numlist.c) both skip
+   blanks so; the place lives in locals, which stay in registers. */
+static inline size_t zr__sdl_skip_blanks(const char *b, size_t pos,
+                                         size_t end, int *line,
+                                         int *column) {
+  int l = *line, c = *column;
+  while (pos < end && zr__sdl_is_blank(b[pos])) {
+    if (b[pos] == '\n') {
+      l++;
+      c = 1;
+    } else {
+      c++;
+    }
+    pos++;
+  }
+  *line = l;
+  *column = c;
+  return pos;
+}
+
 /* A sphere's "<x, y, z>, r" (T_SPHERE_RUN, tokens.c): the centre in
    v[0..2] and the radius in v[3].  False, with the reader left where it
    was, when what follows is not that. */
@@ -354,6 +400,7 @@ typedef struct zr_sdl_file {
   struct zr_budget *budget;
   size_t charged;
   size_t tokens_charged; /* token slots the budget has been charged for */
+  size_t block_tokens; /* directives that open or continue a block */
 } zr_sdl_file;
 
 /*
@@ -929,6 +976,12 @@ void zr__sdl_sphere_radius(zr_sdl_parser *p, const zr_object *sphere,
 /* The centre and radius of a T_SPHERE_RUN token, the four numbers the
    lexer read (run, in its file's arena), into sphere. */
 void zr__sdl_sphere_run(const double *run, zr_object *sphere);
+/* The object of a T_SPHERE_TEXTURED token (at: its place, the sphere
+   keyword's): the calls the grammar's actions make, in their order, for
+   the tokens it stands for; NULL after an error. */
+zr_object *zr__sdl_sphere_textured(zr_sdl_parser *p,
+                                   const zr_sdl_sphere_tex *s,
+                                   const zr_sdl_loc *at);
 /* A cylinder's or cone's axis must have a length: POV-Ray 3.7 stops on
    base point = apex point (measured); false after the error at at. */
 bool zr__sdl_axis_given(zr_sdl_parser *p, zr_vec3 base, zr_vec3 cap,

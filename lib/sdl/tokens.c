@@ -141,8 +141,14 @@ const char *zr__sdl_file_line(zr_sdl_file *f, int line, size_t *len) {
   return f->bytes + start;
 }
 
+static bool opens_block(int kind);
+static bool continues_block(int kind);
+
 static zr_status push_token(zr_sdl_file *f, size_t *cap,
                             const zr_sdl_token *t) {
+  /* Counted here, where the kind is at hand, so that link_blocks need
+     not read the whole array again when it has none. */
+  f->block_tokens += opens_block(t->kind) || continues_block(t->kind);
   /* The budget is charged for the token array as it doubles from 256
      slots, each with a word for the block links made after it (far
      fewer in practice), whatever room the array has been given. */
@@ -319,11 +325,6 @@ static zr_status number_list(zr_sdl_file *f, size_t *cap,
   return status;
 }
 
-static bool is_blank_byte(char c) {
-  return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' ||
-         c == '\v';
-}
-
 /* Moves the lexer past bytes [lx->offset, to) - blanks that the reader
    stopped before, and a closing '}' - counting lines and columns as the
    scanner does, and has the scanner start again there. */
@@ -383,7 +384,7 @@ static bool run_body(const zr_sdl_file *f, zr_sdl_numreader *r, int n,
     if (!zr__sdl_numlist_item(r, v[k], &dim, &line, &column))
       return false;
   size_t end = r->pos;
-  while (end < f->size && is_blank_byte(f->bytes[end]))
+  while (end < f->size && zr__sdl_is_blank(f->bytes[end]))
     end++;
   if (end >= f->size || f->bytes[end] != '}')
     return false;
@@ -441,7 +442,7 @@ static zr_status next_run(zr_sdl_file *f, size_t *cap, zr_sdl_numreader *r,
   zr_sdl_numreader q = *r;
   move_to(&q, *close + 1);
   size_t at = q.pos;
-  while (at < f->size && is_blank_byte(f->bytes[at]))
+  while (at < f->size && zr__sdl_is_blank(f->bytes[at]))
     at++;
   move_to(&q, at);
   for (size_t i = 0; i < sizeof runs / sizeof *runs; i++) {
@@ -453,7 +454,7 @@ static zr_status next_run(zr_sdl_file *f, size_t *cap, zr_sdl_numreader *r,
     int line = q.line, column = q.column;
     move_to(&q, at + len);
     size_t brace = q.pos;
-    while (brace < f->size && is_blank_byte(f->bytes[brace]))
+    while (brace < f->size && zr__sdl_is_blank(f->bytes[brace]))
       brace++;
     if (brace >= f->size || f->bytes[brace] != '{')
       return ZR_OK;
@@ -546,7 +547,7 @@ static zr_status sphere_run(zr_sdl_file *f, size_t *cap,
     if (!isfinite(v[k]))
       return ZR_OK;
   size_t end = r.pos;
-  while (end < f->size && is_blank_byte(f->bytes[end]))
+  while (end < f->size && zr__sdl_is_blank(f->bytes[end]))
     end++;
   if (end >= f->size)
     return ZR_OK;
@@ -603,17 +604,9 @@ static zr_status sphere_run(zr_sdl_file *f, size_t *cap,
 static int quick_token(zr_sdl_lexer *lx, zr_sdl_token *t) {
   const zr_sdl_file *f = lx->file;
   const char *b = f->bytes;
-  size_t pos = lx->offset, end = f->size;
+  size_t end = f->size;
   int line = lx->line, column = lx->column;
-  while (pos < end && is_blank_byte(b[pos])) {
-    if (b[pos] == '\n') {
-      line++;
-      column = 1;
-    } else {
-      column++;
-    }
-    pos++;
-  }
+  size_t pos = zr__sdl_skip_blanks(b, lx->offset, end, &line, &column);
   /* The blanks are passed whatever comes next: the scanner would skip
      them the same way. */
   lx->offset = lx->read_pos = pos;
@@ -675,6 +668,16 @@ static bool continues_block(int kind) {
  * (size_t)-1; the engine reports them when it runs them.
  */
 static zr_status link_blocks(zr_sdl_file *f) {
+  /* Every token went through push_token, which counted the block
+     directives: with none (a file of spheres or triangles) there is
+     nothing to link.  Reading the 1.2 MB token array of bench/peers.sh's
+     sphereflake once more for that took 8% of the samples of a
+     --parse-only run (perf, cpu-clock: its first read after the array
+     was cut to size). */
+  if (f->block_tokens == 0) {
+    f->links = malloc(sizeof *f->links);
+    return f->links ? ZR_OK : ZR_ENOMEM;
+  }
   /* Every directive that opens or continues a block may get a link. */
   size_t n = 0;
   for (size_t i = 0; i < f->n_tokens; i++)

@@ -354,9 +354,19 @@ static size_t sah_split(build_item *items, uint8_t *bin_ids, size_t n,
     box_empty(&sides[side].bounds);
     box_empty(&sides[side].centres);
   }
+  /* grow3's plain comparisons where no box holds a NaN, as in the
+     binning: box_grow's NaN tests here were 2.1 M of the 17.8 M
+     instructions bench/peers.sh's sphereflake's build took
+     (callgrind). */
   for (int k = 0; k < ZR_SAH_BINS; k++) {
     node_boxes *side = &sides[k >= best_k];
-    if (bins[k].count) {
+    if (!bins[k].count)
+      continue;
+    if (nan_free) {
+      grow3(side->bounds.lo, side->bounds.hi, bins[k].lo, bins[k].hi, true);
+      grow3(side->centres.lo, side->centres.hi, bin_centres[k].lo,
+            bin_centres[k].hi, true);
+    } else {
       box_grow(&side->bounds, bins[k].lo, bins[k].hi);
       box_grow(&side->centres, bin_centres[k].lo, bin_centres[k].hi);
     }
