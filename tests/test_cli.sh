@@ -100,14 +100,6 @@ is_png ref_aa.png
 serial ref 0 "$ZRCUBE" scene.pov +Linc $SIZE -A +WT1 +Oref.png
 is_png ref.png
 cmp -s ref.png ref_aa.png && fail "antialiasing changed nothing"
-for n in 1 2 3; do
-  mpi "aa_n$n" 0 "$n" scene.pov +Linc $SIZE +A0.1 +WT2 "+Oaa_n$n.png"
-  same ref_aa.png "aa_n$n.png"
-  mpi "plain_n$n" 0 "$n" scene.pov +Linc $SIZE +WT2 "+Oplain_n$n.png"
-  same ref.png "plain_n$n.png"
-done
-mpi aa_wt1 0 2 scene.pov +Linc $SIZE +A0.1 +WT1 +Oaa_wt1.png
-same ref_aa.png aa_wt1.png
 serial aa_wt3 0 "$ZRCUBE" scene.pov +Linc $SIZE +A0.1 +WT3 +Oaa_wt3.png
 same ref_aa.png aa_wt3.png
 # One process of several threads encodes the PNG on a thread of its
@@ -118,31 +110,39 @@ for t in 2 3 4; do
     "+Oplain_wt$t.png"
   same ref.png "plain_wt$t.png"
 done
+# On one host the ranks take rows from a shared counter (lib/par/par.c
+# shared_rows); ZRCUBE_ROWS=static keeps the static deal.  Both must
+# make the same bytes as one process.
+for rows in shared static; do
+if [ "$rows" = static ]; then
+  ZRCUBE_ROWS=static
+  export ZRCUBE_ROWS
+fi
+for n in 1 2 3; do
+  mpi "aa_n${n}_$rows" 0 "$n" scene.pov +Linc $SIZE +A0.1 +WT2 "+Oaa_n${n}_$rows.png"
+  same ref_aa.png "aa_n${n}_$rows.png"
+  mpi "plain_n${n}_$rows" 0 "$n" scene.pov +Linc $SIZE +WT2 "+Oplain_n${n}_$rows.png"
+  same ref.png "plain_n${n}_$rows.png"
+done
+mpi "aa_wt1_$rows" 0 2 scene.pov +Linc $SIZE +A0.1 +WT1 "+Oaa_wt1_$rows.png"
+same ref_aa.png "aa_wt1_$rows.png"
 # Pass 2 sends rank 0 only the pixels that differ from their centre
 # (issue 15): the same bytes with alpha, a window and +AM2, and far
 # fewer pixel bytes than pass 1's (every pixel of the rank's rows).
 for extra in "+UA" "+SR0.3 +ER0.7 +SC0.25 +EC0.6" "+AM2 +R2"; do
   tag=$(echo "$extra" | tr -dc 'A-Za-z0-9')
-  # shellcheck disable=SC2086
-  serial "sparse_ref_$tag" 0 "$ZRCUBE" scene.pov +Linc $SIZE +A0.1 $extra \
-    +WT1 "+Osparse_ref_$tag.png"
+  if [ "$rows" = shared ]; then
+    # shellcheck disable=SC2086
+    serial "sparse_ref_$tag" 0 "$ZRCUBE" scene.pov +Linc $SIZE +A0.1 $extra \
+      +WT1 "+Osparse_ref_$tag.png"
+  fi
   for n in 2 3; do
     # shellcheck disable=SC2086
-    mpi "sparse_${tag}_n$n" 0 "$n" scene.pov +Linc $SIZE +A0.1 $extra \
-      +WT1 "+Osparse_${tag}_n$n.png"
-    same "sparse_ref_$tag.png" "sparse_${tag}_n$n.png"
+    mpi "sparse_${tag}_n${n}_$rows" 0 "$n" scene.pov +Linc $SIZE +A0.1 $extra \
+      +WT1 "+Osparse_${tag}_n${n}_$rows.png"
+    same "sparse_ref_$tag.png" "sparse_${tag}_n${n}_$rows.png"
   done
 done
-mpi sparse_bytes 0 2 scene.pov +Linc $SIZE +A0.1 +WT1 -v +Osparse_bytes.png
-same ref_aa.png sparse_bytes.png
-# rank 1 renders 23 or 24 of the 48 rows (the chunks follow the clock)
-# in each pass, 768 bytes of floats a row: pass 1 sends them all
-# (>= 17664 bytes), pass 2 a bit a pixel and the changed pixels, so the
-# total stays under the 35328 bytes whole rows in both passes would be.
-sent=$(sed -n 's/.*rank 1: .*pixels \([0-9]*\);.*/\1/p' sparse_bytes.err)
-if [ -z "$sent" ] || [ "$sent" -lt 17664 ] || [ "$sent" -ge 35328 ]; then
-  fail "sparse_bytes: rank 1 sent '$sent' pixel bytes, expected 17664 to 35327"
-fi
 # Rank 0 encodes the PNG while the other ranks render the last bands
 # alone (lib/par/writer.h): ZRCUBE_WRITE_PIXEL_SECONDS makes the
 # encoder look slow, so that most bands go to them; the same bytes with
@@ -150,18 +150,33 @@ fi
 ZRCUBE_WRITE_PIXEL_SECONDS=1e-3
 export ZRCUBE_WRITE_PIXEL_SECONDS
 for n in 2 3; do
-  mpi "tail_n$n" 0 "$n" scene.pov +Linc $SIZE -v +WT1 "+Otail_n$n.png"
-  same ref.png "tail_n$n.png"
-  mpi "tail_aa_n$n" 0 "$n" scene.pov +Linc $SIZE +A0.1 -v +WT1 \
-    "+Otail_aa_n$n.png"
-  same ref_aa.png "tail_aa_n$n.png"
-  for t in "tail_n$n" "tail_aa_n$n"; do
+  mpi "tail_n${n}_$rows" 0 "$n" scene.pov +Linc $SIZE -v +WT1 "+Otail_n${n}_$rows.png"
+  same ref.png "tail_n${n}_$rows.png"
+  mpi "tail_aa_n${n}_$rows" 0 "$n" scene.pov +Linc $SIZE +A0.1 -v +WT1 \
+    "+Otail_aa_n${n}_$rows.png"
+  same ref_aa.png "tail_aa_n${n}_$rows.png"
+  for t in "tail_n${n}_$rows" "tail_aa_n${n}_$rows"; do
     bands=$(sed -n 's/.*rank 0: .*; tail bands \([0-9]*\)$/\1/p' "$t.err")
     [ -n "$bands" ] && [ "$bands" -gt 0 ] ||
       fail "$t: rank 0 rendered every band ('$bands' bands of tail)"
   done
 done
 unset ZRCUBE_WRITE_PIXEL_SECONDS
+done
+unset ZRCUBE_ROWS
+# With the static deal rank 1 renders 23 or 24 of the 48 rows (the
+# chunks follow the clock) in each pass, 768 bytes of floats a row: pass 1 sends them all
+# (>= 17664 bytes), pass 2 a bit a pixel and the changed pixels, so the
+# total stays under the 35328 bytes whole rows in both passes would be.
+ZRCUBE_ROWS=static
+export ZRCUBE_ROWS
+mpi sparse_bytes 0 2 scene.pov +Linc $SIZE +A0.1 +WT1 -v +Osparse_bytes.png
+unset ZRCUBE_ROWS
+same ref_aa.png sparse_bytes.png
+sent=$(sed -n 's/.*rank 1: .*pixels \([0-9]*\);.*/\1/p' sparse_bytes.err)
+if [ -z "$sent" ] || [ "$sent" -lt 17664 ] || [ "$sent" -ge 35328 ]; then
+  fail "sparse_bytes: rank 1 sent '$sent' pixel bytes, expected 17664 to 35327"
+fi
 # GNU spellings make the same picture.
 serial long 0 "$ZRCUBE" --input=scene.pov --include-path inc --width=64 \
   --height=48 --antialias=0.1 --threads=2 --output=long.png

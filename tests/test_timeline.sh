@@ -32,7 +32,8 @@ if grep -q 'zrcube: timeline:' without.log; then
 fi
 cmp -s with.png without.png || fail "the image differs with the timeline"
 # The steps every rank passes, in order (the render's chunks between
-# "all ranks ready" and "last chunk done" vary with the machine).
+# "all ranks ready" and "last chunk done" vary with the machine); on
+# one host the ranks take rows from a shared counter ("rows shared").
 steps='main() entered
 MPI joined (zr__par_init)
 parse start
@@ -41,6 +42,7 @@ image: allocating
 render start (image and writer ready)
 render: buffers ready
 render: all ranks ready
+render: rows shared
 render: last chunk done
 render end
 image written

@@ -22,6 +22,7 @@ typedef int MPI_Errhandler;
 typedef int MPI_Request;
 typedef int MPI_Status;
 typedef long MPI_Aint;
+typedef int MPI_Win;
 #define MPI_STATUS_IGNORE ((MPI_Status *)0)
 #define MPI_STATUSES_IGNORE ((MPI_Status *)0)
 
@@ -45,7 +46,9 @@ enum {
   MPI_MIN = 1,
   MPI_MAX = 2,
   MPI_SUM = 3,
-  MPI_MAX_LIBRARY_VERSION_STRING = 64
+  MPI_MAX_LIBRARY_VERSION_STRING = 64,
+  MPI_WIN_NULL = 0,
+  MPI_MODE_NOCHECK = 1
 };
 
 static inline int MPI_Init_thread(int *argc, char ***argv, int required,
@@ -170,6 +173,46 @@ static inline int MPI_Type_commit(MPI_Datatype *t) {
 }
 static inline int MPI_Type_free(MPI_Datatype *t) {
   *t = MPI_DATATYPE_NULL;
+  return MPI_SUCCESS;
+}
+static inline int MPI_Type_create_indexed_block(int n, int length,
+                                                const int *displs,
+                                                MPI_Datatype t,
+                                                MPI_Datatype *out) {
+  (void)n, (void)length, (void)displs, (void)t;
+  *out = MPI_DATATYPE_NULL;
+  return MPI_ERR_OTHER;
+}
+static inline int MPI_Win_allocate_shared(MPI_Aint size, int disp_unit,
+                                          MPI_Info info, MPI_Comm c,
+                                          void *base, MPI_Win *win) {
+  (void)size, (void)disp_unit, (void)info, (void)c, (void)base;
+  *win = MPI_WIN_NULL;
+  return MPI_ERR_OTHER;
+}
+static inline int MPI_Win_shared_query(MPI_Win win, int rank, MPI_Aint *size,
+                                       int *disp_unit, void *base) {
+  (void)win, (void)rank, (void)size, (void)disp_unit, (void)base;
+  return MPI_ERR_OTHER;
+}
+static inline int MPI_Win_set_errhandler(MPI_Win win, MPI_Errhandler e) {
+  (void)win, (void)e;
+  return MPI_ERR_OTHER;
+}
+static inline int MPI_Win_lock_all(int assert, MPI_Win win) {
+  (void)assert, (void)win;
+  return MPI_ERR_OTHER;
+}
+static inline int MPI_Win_unlock_all(MPI_Win win) {
+  (void)win;
+  return MPI_ERR_OTHER;
+}
+static inline int MPI_Win_sync(MPI_Win win) {
+  (void)win;
+  return MPI_ERR_OTHER;
+}
+static inline int MPI_Win_free(MPI_Win *win) {
+  *win = MPI_WIN_NULL;
   return MPI_SUCCESS;
 }
 

@@ -51,6 +51,7 @@
 #include <sys/socket.h>
 #include <sys/stat.h>
 #endif
+#include <stdatomic.h>
 #include <stdio.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -602,38 +603,82 @@ static zr_status collect_rows(zr_par *par, const float *mine, float *image,
 }
 
 /*
- * A band's rows among the ranks first .. n - 1 (first is 0, or 1 for
- * the last bands, which rank 0 leaves to the others while it writes
- * the image, zr__par_render): how many rank r takes, and its i-th.
+ * Each rank's rows of a chunk, as offsets from the chunk's first row in
+ * increasing order, rank after rank: rank r's are at[start[r]] ..
+ * at[start[r + 1] - 1].  Every rank holds the same lists (they say who
+ * sends which rows where), made either from the static deal or from the
+ * owners the ranks wrote while they took rows (shared_rows).
  */
-static int group_count(int height, int r, int first, int n) {
-  return r < first ? 0 : zr__rows_count(height, r - first, n - first);
-}
+typedef struct rank_rows {
+  int *start; /* size + 1 */
+  int *at;    /* one a row of the largest chunk (the image's height) */
+} rank_rows;
 
-static int group_row(int i, int r, int first, int n) {
-  return zr__rows_row(i, r - first, n - first);
+static int rank_count(const rank_rows *rr, int r) {
+  return rr->start[r + 1] - rr->start[r];
 }
 
 /*
- * Pass 2's rows (mine, this rank's rows of the chunk's rows y0 .. y1 - 1
- * and columns x0 .. x1 - 1, interleaved as render_band made them) into
- * band on rank 0, sending only the pixels that differ from their pass-1
- * centre (bit for bit): a pixel pass 2 did not supersample is its
- * centre, which every rank holds already, so rank 0 starts from the
- * centres and applies the others (about 1% of the pixels of
- * default.pov at +A0.3, against every pixel as floats before).  A rank
- * sends a mask of its rows' pixels, a bit each (1: changed), then the
- * changed pixels' floats in row order: never more than 1/96 above the
- * rows themselves.  With root_in_place, rank 0 rendered its own rows
- * into their places in band already: it sends nothing and they are
- * left alone (it spared rank 0, the busiest rank, a half image of
- * fresh pages, a compare and a copy of its rows).
+ * The static deal of a chunk of rows rows among the ranks first .. n - 1
+ * (first is 0, or 1 for the last bands, which rank 0 leaves to the
+ * others while it writes the image, zr__par_render): rank r's i-th row
+ * is r - first + i (n - first), zr__rows_row.
  */
-static zr_status collect_changes(zr_par *par, const float *mine, float *band,
-                                 const float *centres, int image_width,
-                                 int y0, int y1, int x0, int x1,
+static void rank_rows_dealt(rank_rows *rr, int rows, int first, int n) {
+  int k = 0;
+  for (int r = 0; r < n; r++) {
+    rr->start[r] = k;
+    int count = r < first ? 0 : zr__rows_count(rows, r - first, n - first);
+    for (int i = 0; i < count; i++)
+      rr->at[k++] = zr__rows_row(i, r - first, n - first);
+  }
+  rr->start[n] = k;
+}
+
+/* The rows as taken: owner[i] is the rank that rendered the chunk's row
+   i.  ZR_EMPI for an owner that is no rank (a row nobody took). */
+static zr_status rank_rows_taken(rank_rows *rr, const int *owner, int rows,
+                                 int n) {
+  for (int r = 0; r <= n; r++)
+    rr->start[r] = 0;
+  for (int i = 0; i < rows; i++) {
+    if (owner[i] < 0 || owner[i] >= n)
+      return ZR_EMPI;
+    rr->start[owner[i] + 1]++;
+  }
+  for (int r = 0; r < n; r++)
+    rr->start[r + 1] += rr->start[r];
+  /* Counting sort, stable: each rank's rows stay in increasing order.
+     start[r] runs up to start[r + 1] and is put back after. */
+  for (int i = 0; i < rows; i++)
+    rr->at[rr->start[owner[i]]++] = i;
+  for (int r = n; r > 0; r--)
+    rr->start[r] = rr->start[r - 1];
+  rr->start[0] = 0;
+  return ZR_OK;
+}
+
+/*
+ * Pass 2's rows (this rank's rows of the chunk's rows y0 .. y1 - 1 and
+ * columns x0 .. x1 - 1, in mine: packed in order when packed, else each
+ * at its offset in the chunk) into band on rank 0, sending only the
+ * pixels that differ from their pass-1 centre (bit for bit): a pixel
+ * pass 2 did not supersample is its centre, which every rank holds
+ * already, so rank 0 starts from the centres and applies the others
+ * (about 1% of the pixels of default.pov at +A0.3, against every pixel
+ * as floats before).  A rank sends a mask of its rows' pixels, a bit
+ * each (1: changed), then the changed pixels' floats in row order: never
+ * more than 1/96 above the rows themselves.  With root_in_place, rank 0
+ * rendered its own rows into their places in band already: it sends
+ * nothing and they are left alone (it spared rank 0, the busiest rank, a
+ * half image of fresh pages, a compare and a copy of its rows).  rr says
+ * whose rows are which.
+ */
+static zr_status collect_changes(zr_par *par, const float *mine, int packed,
+                                 float *band, const float *centres,
+                                 int image_width, int y0, int x0, int x1,
                                  int channels, int root_in_place,
-                                 int first) {
+                                 const rank_rows *rr) {
   int n = par->size, width = x1 - x0;
   size_t px_bytes = (size_t)channels * sizeof(float);
   size_t row_floats = (size_t)width * (size_t)channels;
@@ -641,16 +686,18 @@ static zr_status collect_changes(zr_par *par, const float *mine, float *band,
 #define CENTRE(y, x)                                                     \
   (centres + ((size_t)(y) * (size_t)image_width + (size_t)x0 +           \
               (size_t)(x)) * (size_t)channels)
-  int rows = root_in_place && par->rank == 0
-                 ? 0
-                 : group_count(y1 - y0, par->rank, first, n);
+  const int *my_rows = rr->at + rr->start[par->rank];
+  /* This rank's i-th row in mine. */
+#define MINE(i)                                                          \
+  (mine + (size_t)(packed ? (i) : my_rows[i]) * row_floats)
+  int rows = root_in_place && par->rank == 0 ? 0 : rank_count(rr, par->rank);
   size_t mask_bytes = ((size_t)rows * (size_t)width + 7) / 8;
   size_t changed = 0;
   for (int i = 0; i < rows; i++) {
-    int y = y0 + group_row(i, par->rank, first, n);
+    int y = y0 + my_rows[i];
     for (int x = 0; x < width; x++)
-      changed += memcmp(mine + (size_t)i * row_floats + (size_t)x * channels,
-                        CENTRE(y, x), px_bytes) != 0;
+      changed += memcmp(MINE(i) + (size_t)x * channels, CENTRE(y, x),
+                        px_bytes) != 0;
   }
   zr_status s = ZR_OK;
   size_t bytes = mask_bytes + changed * px_bytes;
@@ -661,9 +708,9 @@ static zr_status collect_changes(zr_par *par, const float *mine, float *band,
     s = ZR_ENOMEM;
   unsigned char *at = pack + mask_bytes;
   for (int i = 0; s == ZR_OK && i < rows; i++) {
-    int y = y0 + group_row(i, par->rank, first, n);
+    int y = y0 + my_rows[i];
     for (int x = 0; x < width; x++) {
-      const float *mp = mine + (size_t)i * row_floats + (size_t)x * channels;
+      const float *mp = MINE(i) + (size_t)x * channels;
       if (memcmp(mp, CENTRE(y, x), px_bytes) == 0)
         continue;
       size_t bit = (size_t)i * (size_t)width + (size_t)x;
@@ -672,6 +719,7 @@ static zr_status collect_changes(zr_par *par, const float *mine, float *band,
       at += px_bytes;
     }
   }
+#undef MINE
   int *counts = NULL, *displs = NULL;
   unsigned char *all = NULL;
   if (par->rank == 0) {
@@ -708,7 +756,8 @@ static zr_status collect_changes(zr_par *par, const float *mine, float *band,
     par->traffic.pixel_bytes_sent += (uint64_t)mine_bytes;
   for (int r = root_in_place; s == ZR_OK && par->rank == 0 && r < n; r++) {
     /* Rank r's rows: the centres, then its changed pixels. */
-    int r_rows = group_count(y1 - y0, r, first, n);
+    int r_rows = rank_count(rr, r);
+    const int *r_at = rr->at + rr->start[r];
     size_t r_mask = ((size_t)r_rows * (size_t)width + 7) / 8;
     const unsigned char *mask = all + displs[r], *end = mask + counts[r];
     const unsigned char *from = mask + r_mask;
@@ -717,7 +766,7 @@ static zr_status collect_changes(zr_par *par, const float *mine, float *band,
       break;
     }
     for (int i = 0; s == ZR_OK && i < r_rows; i++) {
-      int y = y0 + group_row(i, r, first, n);
+      int y = y0 + r_at[i];
       float *dst = band + (size_t)(y - y0) * row_floats;
       memcpy(dst, CENTRE(y, 0), row_floats * sizeof(float));
       for (int x = 0; x < width; x++) {
@@ -743,61 +792,69 @@ static zr_status collect_changes(zr_par *par, const float *mine, float *band,
 
 /*
  * The rows of a band as wide as the image, straight into place: band
- * holds rows y0 .. y0 + height - 1 of the image (row_floats floats each)
- * and rank r's rows of it are r, r + n, ... (zr__rows_row).  Where band
- * is given (rank 0, or every rank with everyone) the pool rendered this
- * rank's rows into it already; the others' arrive as point-to-point
- * messages whose receive type is a row followed by n - 1 rows' gap, so
- * they land in their rows with no copy.  A rank without band (not
- * everyone, rank != 0) sends mine, its rows packed, to rank 0.  This
- * replaced an MPI_Gatherv into a rank-major buffer, its reordering
- * into the band and a copy of the band into the image: on this machine,
- * a virtual one where first touching a page costs about 14 us, rank 0's
- * two extra copies of the image and their fresh pages were 12 to 27% of
- * its CPU in a 2-rank 2048x2048 render of bench/peers.sh's terrain
- * (perf; -v's gather 0.44 s wall).  With first 1 (not with everyone)
- * the band was rendered by ranks 1 .. n - 1 alone, rank r's rows being
- * r - 1, r - 1 + (n - 1), ... (group_row), and rank 0 only receives.
+ * holds the chunk's rows (row_floats floats each) and rank r's rows of
+ * it are rr's.  Where band is given (rank 0, or every rank with
+ * everyone) the pool rendered this rank's rows into it already; the
+ * others' arrive as point-to-point messages whose receive type is the
+ * rank's rows at their offsets (an indexed type of rows), so they land
+ * in their rows with no copy.  A rank without band (not everyone, rank
+ * != 0) sends its rows to rank 0 from mine: packed in order when packed
+ * (the static deal), else each at its offset in the chunk (rows taken
+ * from the shared counter).  This replaced an MPI_Gatherv into a
+ * rank-major buffer, its reordering into the band and a copy of the
+ * band into the image: on this machine, a virtual one where first
+ * touching a page costs about 14 us, rank 0's two extra copies of the
+ * image and their fresh pages were 12 to 27% of its CPU in a 2-rank
+ * 2048x2048 render of bench/peers.sh's terrain (perf; -v's gather 0.44
+ * s wall).  A rank with no rows in the chunk sends nothing and nothing
+ * is awaited from it (every rank knows every count from rr).
  */
 #define ROWS_TAG 15
 
-static zr_status exchange_rows(zr_par *par, const float *mine, float *band,
-                               int height, size_t row_floats, int everyone,
-                               int first) {
-  int n = par->size, me = par->rank, m = n - first;
-  MPI_Datatype row = MPI_DATATYPE_NULL, spaced = MPI_DATATYPE_NULL;
+static zr_status exchange_rows(zr_par *par, const float *mine, int packed,
+                               float *band, size_t row_floats, int everyone,
+                               const rank_rows *rr) {
+  int n = par->size, me = par->rank;
+  MPI_Datatype row = MPI_DATATYPE_NULL;
   MPI_Request *req = malloc(2 * (size_t)n * sizeof *req);
+  MPI_Datatype *placed = malloc((size_t)n * sizeof *placed);
   zr_status s = row_floats > (size_t)INT_MAX ? ZR_ELIMIT
-                : req                        ? ZR_OK
+                : req && placed              ? ZR_OK
                                              : ZR_ENOMEM;
+  for (int r = 0; placed && r < n; r++)
+    placed[r] = MPI_DATATYPE_NULL;
   s = zr__par_agree(par, s);
   if (s == ZR_OK)
     s = mpi_status(MPI_Type_contiguous((int)row_floats, MPI_FLOAT, &row));
   if (s == ZR_OK)
-    s = mpi_status(MPI_Type_create_resized(
-        row, 0, (MPI_Aint)((size_t)m * row_floats * sizeof(float)),
-        &spaced));
-  if (s == ZR_OK)
     s = mpi_status(MPI_Type_commit(&row));
-  if (s == ZR_OK)
-    s = mpi_status(MPI_Type_commit(&spaced));
-  int posted = 0, mine_rows = group_count(height, me, first, n);
+  /* Rank r's rows at their places in band (or in mine, for this rank's
+     own rows when they are not packed). */
+  for (int r = 0; s == ZR_OK && r < n; r++) {
+    if (rank_count(rr, r) == 0)
+      continue;
+    s = mpi_status(MPI_Type_create_indexed_block(
+        rank_count(rr, r), 1, rr->at + rr->start[r], row, &placed[r]));
+    if (s == ZR_OK)
+      s = mpi_status(MPI_Type_commit(&placed[r]));
+  }
+  int posted = 0, mine_rows = s == ZR_OK ? rank_count(rr, me) : 0;
   uint64_t sent = 0;
   for (int r = 0; s == ZR_OK && r < n; r++) {
     if (r == me)
       continue;
     int rc = MPI_SUCCESS;
-    if ((everyone || me == 0) && r >= first)
-      rc = MPI_Irecv(band + (size_t)(r - first) * row_floats,
-                     group_count(height, r, first, n), spaced, r, ROWS_TAG,
-                     par->comm, &req[posted++]);
-    if (rc == MPI_SUCCESS && everyone) {
-      rc = MPI_Isend(band + (size_t)me * row_floats, mine_rows, spaced, r,
-                     ROWS_TAG, par->comm, &req[posted++]);
+    if ((everyone || me == 0) && rank_count(rr, r) > 0)
+      rc = MPI_Irecv(band, 1, placed[r], r, ROWS_TAG, par->comm,
+                     &req[posted++]);
+    if (rc == MPI_SUCCESS && mine_rows > 0 && everyone) {
+      rc = MPI_Isend(band, 1, placed[me], r, ROWS_TAG, par->comm,
+                     &req[posted++]);
       sent += (uint64_t)mine_rows * row_floats * sizeof(float);
-    } else if (rc == MPI_SUCCESS && me != 0 && r == 0) {
+    } else if (rc == MPI_SUCCESS && mine_rows > 0 && me != 0 && r == 0) {
       /* MPI's send buffers are const only from MPI 3 on. */
-      rc = MPI_Isend((float *)mine, mine_rows, row, 0, ROWS_TAG, par->comm,
+      rc = MPI_Isend((float *)mine, packed ? mine_rows : 1,
+                     packed ? row : placed[me], 0, ROWS_TAG, par->comm,
                      &req[posted++]);
       sent += (uint64_t)mine_rows * row_floats * sizeof(float);
     }
@@ -810,12 +867,92 @@ static zr_status exchange_rows(zr_par *par, const float *mine, float *band,
     s = ZR_EMPI;
   if (s == ZR_OK)
     par->traffic.pixel_bytes_sent += sent;
-  if (spaced != MPI_DATATYPE_NULL)
-    MPI_Type_free(&spaced);
+  for (int r = 0; placed && r < n; r++)
+    if (placed[r] != MPI_DATATYPE_NULL)
+      MPI_Type_free(&placed[r]);
   if (row != MPI_DATATYPE_NULL)
     MPI_Type_free(&row);
+  free(placed);
   free(req);
   return s;
+}
+
+/*
+ * Rows handed out as the ranks ask for them, on one host.  The static
+ * deal gives each rank the same number of rows of a chunk, and a rank
+ * that runs slower for a while (on this virtual machine a virtual CPU
+ * ran 20-45% slower for 0.3-1 s spells under load, counted as the
+ * task's own CPU since the guest reports no steal time:
+ * bench/results/mpi-2026-12-03-s15.md) makes the others wait for it at
+ * the chunk's end, while the threads of one process, which take rows
+ * from one counter, do not wait.  So when every rank shares this host
+ * the ranks take rows from one counter too: rank 0's shared-memory
+ * window (MPI-3, MPI_Win_allocate_shared, osc sm) holds a counter a
+ * pass (zr__rows_claim, on cache lines of their own) and, a row each,
+ * the rank that took it, which is all the exchange after the chunk
+ * needs to know where each rank's rows go.  The pixels themselves still
+ * travel as messages into rank 0's image: a shared image would sit in
+ * shared memory, which this kernel gives no huge pages
+ * (transparent_hugepage/shmem_enabled "never"), and at about 14 us a
+ * fresh 4 KiB page on this machine a 2048x2048 image touched by both
+ * ranks would cost them ~0.25 s of page faults.  Which rank renders a
+ * row does not change its pixels (pool.h), so the image is the same
+ * bytes as with the static deal.  ZRCUBE_ROWS=static keeps the static
+ * deal (the tests compare the two; a job that spans hosts always has
+ * it).
+ */
+#define SHARED_LINE 64
+
+typedef struct shared_rows {
+  MPI_Win win;
+  atomic_int *next[2]; /* a pass's next row */
+  int *owner;          /* a row of the image each */
+} shared_rows;
+
+/* 1 when the ranks should take rows from a shared counter. */
+static int rows_shared_wanted(const zr_par *par) {
+  const char *how = getenv("ZRCUBE_ROWS");
+  return par->uses_mpi && par->size > 1 && par->local_size == par->size &&
+         !(how && strcmp(how, "static") == 0);
+}
+
+/* Collective: the window, its counters at 0 (rank 0 sets them before the
+   others may read them: the agreement after this is the barrier). */
+static zr_status shared_rows_new(zr_par *par, int height, shared_rows *sh) {
+  sh->win = MPI_WIN_NULL;
+  size_t bytes = 2 * SHARED_LINE + (size_t)height * sizeof(int);
+  char *base = NULL;
+  MPI_Aint size = 0;
+  int unit = 1;
+  if (MPI_Win_allocate_shared(par->rank == 0 ? (MPI_Aint)bytes : 0, 1,
+                              MPI_INFO_NULL, par->comm, &base,
+                              &sh->win) != MPI_SUCCESS)
+    return ZR_EMPI;
+  MPI_Win_set_errhandler(sh->win, MPI_ERRORS_RETURN);
+  if (MPI_Win_shared_query(sh->win, 0, &size, &unit, &base) != MPI_SUCCESS ||
+      (size_t)size < bytes || !base ||
+      (uintptr_t)base % _Alignof(atomic_int) != 0)
+    return ZR_EMPI;
+  if (MPI_Win_lock_all(MPI_MODE_NOCHECK, sh->win) != MPI_SUCCESS)
+    return ZR_EMPI;
+  sh->next[0] = (atomic_int *)(void *)base;
+  sh->next[1] = (atomic_int *)(void *)(base + SHARED_LINE);
+  sh->owner = (int *)(void *)(base + 2 * SHARED_LINE);
+  if (par->rank == 0) {
+    atomic_init(sh->next[0], 0);
+    atomic_init(sh->next[1], 0);
+    for (int y = 0; y < height; y++)
+      sh->owner[y] = -1;
+  }
+  return mpi_status(MPI_Win_sync(sh->win));
+}
+
+/* Collective (MPI_Win_free); nothing without a window. */
+static void shared_rows_free(shared_rows *sh) {
+  if (sh->win == MPI_WIN_NULL)
+    return;
+  MPI_Win_unlock_all(sh->win);
+  MPI_Win_free(&sh->win);
 }
 
 /* Sums the statistics of all ranks into *stats on rank 0. */
@@ -932,35 +1069,47 @@ static zr_status render_band(zr_par *par, zr_par_render *job,
                              size_t row_stride, int y0, int y1, int x0,
                              int x1, size_t progress_base,
                              size_t progress_total, int first,
-                             zr_par_writer *writer) {
-  if (par->rank < first)
-    return zr__par_agree(par, ZR_OK);
-  follow f = {writer, y0};
-  zr_pool_job pool = {
-      .scene = job->scene,
-      .params = job->params,
-      .rank = par->rank - first,
-      .nranks = par->size - first,
-      .centres = centres,
-      .rows_rgb = rows_rgb,
-      .row_stride = row_stride,
-      .threads = job->threads,
-      .stats = &job->stats,
-      .progress = job->progress,
-      .progress_user = job->progress_user,
-      .progress_base = progress_base,
-      .progress_total = progress_total,
-      .first_row = y0,
-      .end_row = y1,
-      .first_col = x0,
-      .end_col = x1,
-      .rows_final = writer ? rows_final : NULL,
-      .rows_final_user = &f,
-  };
-  zr_status s = zr__pool_render(&pool);
-  zr__par_mark(first ? "render: tail rows of this rank done"
-                     : "render: rows of this rank done");
-  return zr__par_agree(par, s);
+                             zr_par_writer *writer, shared_rows *sh,
+                             int pass) {
+  zr_status s = ZR_OK;
+  if (par->rank >= first) {
+    follow f = {writer, y0};
+    zr_pool_job pool = {
+        .scene = job->scene,
+        .params = job->params,
+        .rank = par->rank - first,
+        .nranks = par->size - first,
+        .centres = centres,
+        .rows_rgb = rows_rgb,
+        .row_stride = row_stride,
+        .threads = job->threads,
+        .stats = &job->stats,
+        .progress = job->progress,
+        .progress_user = job->progress_user,
+        .progress_base = progress_base,
+        .progress_total = progress_total,
+        .first_row = y0,
+        .end_row = y1,
+        .first_col = x0,
+        .end_col = x1,
+        .rows_final = writer ? rows_final : NULL,
+        .rows_final_user = &f,
+        .claim = sh ? sh->next[pass] : NULL,
+        .owner = sh ? sh->owner : NULL,
+        .owner_rank = par->rank,
+    };
+    s = zr__pool_render(&pool);
+    zr__par_mark(first ? "render: tail rows of this rank done"
+                       : "render: rows of this rank done");
+  }
+  /* The owners this rank wrote, seen by the others after the meeting
+     (MPI's rule for a shared window: a sync on both sides of it). */
+  if (sh && s == ZR_OK)
+    s = mpi_status(MPI_Win_sync(sh->win));
+  s = zr__par_agree(par, s);
+  if (sh && s == ZR_OK)
+    s = mpi_status(MPI_Win_sync(sh->win));
+  return s;
 }
 
 /* Rank 0's v[0 .. count - 1] on every rank. */
@@ -1098,11 +1247,32 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
       memset(pr.image, 0, image_floats * sizeof(float));
     }
   }
+  int multi = par->uses_mpi && par->size > 1;
+  /* Each rank's rows of a chunk (exchange_rows, collect_changes). */
+  rank_rows rr = {NULL, NULL};
+  if (s == ZR_OK && multi) {
+    rr.start = malloc(((size_t)par->size + 1) * sizeof *rr.start);
+    rr.at = malloc((size_t)height * sizeof *rr.at);
+    if (!rr.start || !rr.at)
+      s = ZR_ENOMEM;
+  }
   zr__par_mark("render: buffers ready");
   s = zr__par_agree(par, s);
   zr__par_mark("render: all ranks ready");
   if (s == ZR_OK)
     s = zr__par_agree(par, share_resume(par, job, &pr, image_floats));
+  /* One host: rows taken from a shared counter (shared_rows); where the
+     window cannot be made, the static deal, which needs none. */
+  shared_rows shared_window = {MPI_WIN_NULL, {NULL, NULL}, NULL};
+  shared_rows *sh = NULL;
+  if (s == ZR_OK && rows_shared_wanted(par)) {
+    zr_status made = shared_rows_new(par, height, &shared_window);
+    if (zr__par_agree(par, made) == ZR_OK)
+      sh = &shared_window;
+    else
+      shared_rows_free(&shared_window);
+    zr__par_mark(sh ? "render: rows shared" : "render: rows dealt");
+  }
   /* This rank's rows still to render, for the progress line. */
   /* This rank's share of the rows still to render, for the progress
      line (the chunks' interleaving may make it a row or two off). */
@@ -1120,7 +1290,6 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
   job->gather_seconds = 0;
   int chunk = 1;          /* bands in the next chunk (rank 0 decides) */
   double band_time = 0;   /* seconds a band took, last chunk */
-  int multi = par->uses_mpi && par->size > 1;
   /* Rank 0 with a writer, on a whole image of colours alone: the rows
      of job->image are told to the writer as they become final from the
      tail on (at the end without one), and the
@@ -1205,11 +1374,24 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
         /* Pass 2 of several ranks: rank 0 renders its own rows into
            their places too, and collects only the others' changes. */
         int root_in_place = changes && dest && par->rank == 0;
+        /* The chunk's rows taken from the shared counter when they are
+           as wide as the image (a window of columns keeps the deal:
+           collect_rows). */
+        shared_rows *take = sh && x0 == 0 && x1 == width ? sh : NULL;
         float *rows = mine;
         size_t stride = 0;
-        if ((in_place || root_in_place) && dest && par->rank >= first) {
+        int packed = 1;
+        if (take) {
+          /* Each row at its offset in the chunk, in place or in mine. */
+          if ((in_place || root_in_place) && dest)
+            rows = dest;
+          stride = row_floats;
+          packed = 0;
+        } else if ((in_place || root_in_place) && dest &&
+                   par->rank >= first) {
           rows = dest + (size_t)(par->rank - first) * row_floats;
           stride = (size_t)(par->size - first) * row_floats;
+          packed = 0;
         }
         /* One rank alone follows its rows to the writer (the last
            pass's rows are final as they are written in place). */
@@ -1218,22 +1400,29 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
                                                        : NULL;
         s = render_band(par, job, p == 1 ? pr.centres : NULL, rows, stride,
                         y0, y1, x0, x1, done_rows, total, first,
-                        follow_writer);
-        done_rows +=
-            (size_t)group_count(y1 - y0, par->rank, first, par->size);
+                        follow_writer, take, p);
+        if (s == ZR_OK && multi)
+          s = zr__par_agree(par, take ? rank_rows_taken(&rr,
+                                                        take->owner + y0,
+                                                        y1 - y0, par->size)
+                                      : (rank_rows_dealt(&rr, y1 - y0,
+                                                         first, par->size),
+                                         ZR_OK));
+        done_rows += multi && s == ZR_OK ? (size_t)rank_count(&rr, par->rank)
+                     : multi             ? 0
+                                         : (size_t)(y1 - y0);
         zr__par_mark(first ? "render: tail chunk rendered"
                            : "render: chunk rendered");
         double gather_start = zr__par_now();
         float *into = dest ? dest : band;
         if (s == ZR_OK && changes)
-          s = zr__par_agree(par, collect_changes(par, mine, into,
-                                                 pr.centres, width, y0, y1,
-                                                 x0, x1, channels,
-                                                 root_in_place, first));
+          s = zr__par_agree(par, collect_changes(par, mine, packed, into,
+                                                 pr.centres, width, y0, x0,
+                                                 x1, channels,
+                                                 root_in_place, &rr));
         else if (s == ZR_OK && in_place && multi)
-          s = zr__par_agree(par, exchange_rows(par, mine, dest, y1 - y0,
-                                               row_floats, everyone,
-                                               first));
+          s = zr__par_agree(par, exchange_rows(par, mine, packed, dest,
+                                               row_floats, everyone, &rr));
         else if (s == ZR_OK && !in_place)
           s = zr__par_agree(par, collect_rows(par, mine, band, rank_major,
                                               x1 - x0, y1 - y0, channels,
@@ -1281,6 +1470,9 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
   if (s == ZR_OK)
     s = zr__par_agree(par, reduce_stats(par, &job->stats,
                                         &job->render_seconds));
+  shared_rows_free(&shared_window);
+  free(rr.start);
+  free(rr.at);
   free(pr.done[0]);
   free(pr.done[1]);
   free(pr.centres);

@@ -80,11 +80,21 @@ static void work(worker *w) {
   for (;;) {
     if (atomic_load(&sh->failure) != ZR_OK)
       break;
-    int index = atomic_fetch_add(&sh->next_row, 1);
-    if (index >= sh->row_count)
-      break;
-    uint32_t y = (uint32_t)(first_row +
-                            zr__rows_row(index, job->rank, job->nranks));
+    int index;
+    uint32_t y;
+    if (job->claim) {
+      int row = zr__rows_claim(job->claim, first_row, job->end_row);
+      if (row < 0)
+        break;
+      job->owner[row] = job->owner_rank;
+      index = row - first_row;
+      y = (uint32_t)row;
+    } else {
+      index = atomic_fetch_add(&sh->next_row, 1);
+      if (index >= sh->row_count)
+        break;
+      y = (uint32_t)(first_row + zr__rows_row(index, job->rank, job->nranks));
+    }
     for (int x = 0; x < cols; x++)
       pixels[x] = y * (uint32_t)width + (uint32_t)(first_col + x);
     zr_status s = zr_render_pixels(job->scene, job->params, pixels,
@@ -115,9 +125,15 @@ zr_status zr__pool_render(const zr_pool_job *job) {
   if (pthread_mutex_init(&sh.progress_lock, NULL) != 0)
     return ZR_ETHREAD;
   sh.job = job;
-  sh.row_count = zr__rows_count(job->end_row ? job->end_row - job->first_row
-                                             : job->params->height,
-                                job->rank, job->nranks);
+  if (job->claim && (!job->end_row || !job->owner || job->rows_final))
+    return ZR_EINVAL;
+  /* With claims, the band's rows are an upper bound of the rank's. */
+  sh.row_count = job->claim ? job->end_row - job->first_row
+                            : zr__rows_count(job->end_row
+                                                 ? job->end_row -
+                                                       job->first_row
+                                                 : job->params->height,
+                                             job->rank, job->nranks);
   /* No more threads than rows: an idle thread only costs its start-up. */
   if (threads > sh.row_count)
     threads = sh.row_count > 0 ? sh.row_count : 1;

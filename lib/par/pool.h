@@ -9,6 +9,7 @@
 #ifndef ZR_PAR_POOL_H
 #define ZR_PAR_POOL_H
 
+#include <stdatomic.h>
 #include <stddef.h>
 
 #include "zrcube.h"
@@ -50,8 +51,16 @@ typedef struct zr_pool_job {
      end_row == 0: every row and column. */
   int first_row, end_row;
   int first_col, end_col;
-  zr__rows_final_fn rows_final; /* may be NULL */
+  zr__rows_final_fn rows_final; /* may be NULL; NULL with claim */
   void *rows_final_user;
+  /* Rows shared with other ranks (zr__rows_claim): when claim is given
+     the threads take the band's rows first_row .. end_row - 1 (end_row
+     must be given) from it instead of the rank's interleaved set (rank
+     and nranks are then unused), row y goes to rows_rgb + (y -
+     first_row) * row_stride, and owner[y] is set to owner_rank. */
+  atomic_int *claim;
+  int *owner;
+  int owner_rank;
 } zr_pool_job;
 
 /*

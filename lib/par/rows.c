@@ -26,3 +26,15 @@ void zr__rows_uninterleave(const float *rank_major, float *image, int height,
     }
   }
 }
+
+int zr__rows_claim(atomic_int *next, int y0, int y1) {
+  int seen = atomic_load(next);
+  for (;;) {
+    int row = seen < y0 ? y0 : seen;
+    if (row >= y1)
+      return -1;
+    /* On failure seen is reloaded with the counter's current value. */
+    if (atomic_compare_exchange_weak(next, &seen, row + 1))
+      return row;
+  }
+}

@@ -8,6 +8,7 @@
 #ifndef ZR_PAR_ROWS_H
 #define ZR_PAR_ROWS_H
 
+#include <stdatomic.h>
 #include <stddef.h>
 
 /* How many of height rows rank takes out of nranks. */
@@ -26,5 +27,17 @@ static inline int zr__rows_row(int index, int rank, int nranks) {
  */
 void zr__rows_uninterleave(const float *rank_major, float *image, int height,
                            int nranks, size_t row_floats);
+
+/*
+ * Rows handed out as they are asked for, for ranks that share memory
+ * (one host): next holds the next row of the pass not yet taken, and
+ * every rank's threads take rows of the band y0 .. y1 - 1 from it, so a
+ * rank that runs slower for a while simply takes fewer.  The bands of
+ * a pass come in increasing order, so the counter only grows: a band
+ * starting past it moves it up to its first row.  Returns the row
+ * taken, or -1 when the band has none left.  next may be shared
+ * between processes (lock-free atomics work on shared memory).
+ */
+int zr__rows_claim(atomic_int *next, int y0, int y1);
 
 #endif /* ZR_PAR_ROWS_H */
