@@ -11,6 +11,9 @@
 #include <stdint.h>
 #include <cmocka.h>
 
+#include <pthread.h>
+#include <sched.h>
+#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -48,6 +51,67 @@ static void test_par_rows_cover_each_row_once(void **state) {
   /* More ranks than rows: the extra ranks get nothing. */
   assert_int_equal(zr__rows_count(2, 5, 8), 0);
   assert_int_equal(zr__rows_count(10, 0, 0), 0);
+}
+
+/* Threads taking rows of bands from one counter (zr__rows_claim): the
+   bands of a pass in increasing order, one of them empty and a gap
+   between two (bands done already, as when a render continues). */
+enum { CLAIM_THREADS = 4, CLAIM_HEIGHT = 400 };
+static const int claim_bands[][2] = {{0, 150}, {150, 150}, {150, 230},
+                                     {260, 400}};
+
+typedef struct claim_run {
+  atomic_int next;
+  atomic_int band;       /* the band every thread is on */
+  atomic_int arrived;    /* threads done with the band */
+  atomic_int taken[CLAIM_HEIGHT];
+  atomic_int misplaced;  /* a row outside its band */
+} claim_run;
+
+static void *claim_thread(void *arg) {
+  claim_run *c = arg;
+  int nbands = (int)(sizeof claim_bands / sizeof *claim_bands);
+  for (int b = 0; b < nbands; b++) {
+    /* Every thread starts band b only when all have finished b - 1, as
+       the ranks meet between chunks. */
+    while (atomic_load(&c->band) < b)
+      sched_yield();
+    int y0 = claim_bands[b][0], y1 = claim_bands[b][1], y;
+    while ((y = zr__rows_claim(&c->next, y0, y1)) >= 0) {
+      if (y < y0 || y >= y1)
+        atomic_store(&c->misplaced, 1);
+      else
+        atomic_fetch_add(&c->taken[y], 1);
+    }
+    if (atomic_fetch_add(&c->arrived, 1) == CLAIM_THREADS * (b + 1) - 1)
+      atomic_store(&c->band, b + 1);
+  }
+  return NULL;
+}
+
+static void test_par_rows_claim_each_row_once(void **state) {
+  (void)state;
+  for (int round = 0; round < 20; round++) {
+    claim_run *c = calloc(1, sizeof *c);
+    assert_non_null(c);
+    pthread_t t[CLAIM_THREADS];
+    for (int i = 0; i < CLAIM_THREADS; i++)
+      assert_int_equal(pthread_create(&t[i], NULL, claim_thread, c), 0);
+    for (int i = 0; i < CLAIM_THREADS; i++)
+      pthread_join(t[i], NULL);
+    assert_int_equal(atomic_load(&c->misplaced), 0);
+    for (int y = 0; y < CLAIM_HEIGHT; y++)
+      assert_int_equal(atomic_load(&c->taken[y]),
+                       (y >= 230 && y < 260) ? 0 : 1);
+    free(c);
+  }
+  /* A band behind the counter has nothing left. */
+  atomic_int next;
+  atomic_init(&next, 50);
+  assert_int_equal(zr__rows_claim(&next, 10, 40), -1);
+  assert_int_equal(zr__rows_claim(&next, 10, 60), 50);
+  assert_int_equal(zr__rows_claim(&next, 70, 80), 70);
+  assert_int_equal(atomic_load(&next), 71);
 }
 
 static void test_par_rows_uninterleave_restores_order(void **state) {
@@ -308,6 +372,85 @@ static void test_par_pool_matches_serial_render_antialiased(void **state) {
   f->params.aa_threshold = 0.1;
   check_pool_matches_reference(f);
   f->params.antialias = 0;
+}
+
+/* Two "ranks" (pools run at once on threads of this process) taking
+   the rows of bands from one counter, each into its own buffer at the
+   rows' places, as ranks on one host do (lib/par/par.c shared_rows):
+   put together by owner, the same bytes as one render. */
+typedef struct claim_rank {
+  zr_pool_job job;
+  zr_status status;
+} claim_rank;
+
+static void *claim_rank_main(void *arg) {
+  claim_rank *r = arg;
+  r->status = zr__pool_render(&r->job);
+  return NULL;
+}
+
+static void test_par_pool_claims_shared_rows(void **state) {
+  render_fixture *f = *state;
+  int w = f->params.width, h = f->params.height;
+  size_t row = (size_t)w * 3;
+  float *want = reference(f);
+  float *got = malloc((size_t)h * row * sizeof(float));
+  float *buf[2] = {malloc((size_t)h * row * sizeof(float)),
+                   malloc((size_t)h * row * sizeof(float))};
+  int *owner = malloc((size_t)h * sizeof *owner);
+  zr_render_stats stats[2] = {{0}, {0}};
+  atomic_int next;
+  atomic_init(&next, 0);
+  for (int y = 0; y < h; y++)
+    owner[y] = -1;
+  /* Two bands, as two chunks: rows 0 .. 9 and 10 .. h - 1. */
+  int bands[2][2] = {{0, 10}, {10, h}};
+  for (int b = 0; b < 2; b++) {
+    claim_rank ranks[2];
+    pthread_t t[2];
+    for (int r = 0; r < 2; r++) {
+      memset(&ranks[r], 0, sizeof ranks[r]);
+      ranks[r].job = (zr_pool_job){
+          .scene = f->scene,
+          .params = &f->params,
+          .rows_rgb = buf[r] + (size_t)bands[b][0] * row,
+          .row_stride = row,
+          .threads = 2,
+          .stats = &stats[r],
+          .first_row = bands[b][0],
+          .end_row = bands[b][1],
+          .first_col = 0,
+          .end_col = w,
+          .claim = &next,
+          .owner = owner,
+          .owner_rank = r};
+      assert_int_equal(
+          pthread_create(&t[r], NULL, claim_rank_main, &ranks[r]), 0);
+    }
+    for (int r = 0; r < 2; r++) {
+      pthread_join(t[r], NULL);
+      assert_int_equal(ranks[r].status, ZR_OK);
+    }
+  }
+  for (int y = 0; y < h; y++) {
+    assert_in_range(owner[y], 0, 1);
+    memcpy(got + (size_t)y * row, buf[owner[y]] + (size_t)y * row,
+           row * sizeof(float));
+  }
+  assert_memory_equal(got, want, (size_t)h * row * sizeof(float));
+  assert_int_equal(stats[0].camera_rays + stats[1].camera_rays,
+                   (uint64_t)w * h);
+  /* A claim needs the band's end and the owners, and follows no
+     writer. */
+  zr_pool_job bad = {.scene = f->scene, .params = &f->params,
+                     .rows_rgb = got, .threads = 1, .claim = &next,
+                     .owner = owner};
+  assert_int_equal(zr__pool_render(&bad), ZR_EINVAL);
+  free(want);
+  free(got);
+  free(buf[0]);
+  free(buf[1]);
+  free(owner);
 }
 
 typedef struct progress_log {
@@ -624,6 +767,7 @@ int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_par_rows_cover_each_row_once),
       cmocka_unit_test(test_par_rows_uninterleave_restores_order),
+      cmocka_unit_test(test_par_rows_claim_each_row_once),
       cmocka_unit_test(test_par_bundle_roundtrip),
       cmocka_unit_test(test_par_bundle_rejects_malformed),
       cmocka_unit_test(test_par_bundle_records_and_serves),
@@ -632,6 +776,8 @@ int main(void) {
       cmocka_unit_test_setup_teardown(
           test_par_pool_matches_serial_render_antialiased, setup_render,
           teardown_render),
+      cmocka_unit_test_setup_teardown(test_par_pool_claims_shared_rows,
+                                      setup_render, teardown_render),
       cmocka_unit_test_setup_teardown(test_par_pool_reports_progress,
                                       setup_render, teardown_render),
       cmocka_unit_test_setup_teardown(test_par_pool_returns_failure,

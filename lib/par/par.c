@@ -7,7 +7,10 @@
  * design follows ARCHITECTURE.md ("Parallelism"):
  *   - rank 0 reads the scene files, every rank parses the same bytes
  *     (zr__par_share_bundle);
- *   - rank r renders rows r, r + n, ... with a pool of threads (pool.c);
+ *   - the ranks render rows with a pool of threads each (pool.c): on
+ *     one host they take rows from a counter in shared memory as they
+ *     finish others (shared_rows), across hosts rank r renders rows r,
+ *     r + n, ... of each chunk (the static deal of rows.h);
  *   - antialiasing needs each pixel's neighbours, so the centres of pass 1
  *     are assembled on every rank before pass 2;
  *   - rank 0 gathers the rows and the statistics; after antialiasing's
@@ -1271,8 +1274,9 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
       sh = &shared_window;
     else
       shared_rows_free(&shared_window);
-    zr__par_mark(sh ? "render: rows shared" : "render: rows dealt");
   }
+  if (s == ZR_OK && multi)
+    zr__par_mark(sh ? "render: rows shared" : "render: rows dealt");
   /* This rank's rows still to render, for the progress line. */
   /* This rank's share of the rows still to render, for the progress
      line (the chunks' interleaving may make it a row or two off). */
