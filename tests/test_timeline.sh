@@ -4,7 +4,8 @@
 # step of a run once, in the order of the run, with wall times that do
 # not go back and CPU times that do not shrink; rank 0's lines name it
 # and rank 1's name it; without the variable no such line is printed;
-# and the image is the same bytes either way.
+# and the image is the same bytes either way, with rows taken from the
+# shared counter or dealt.
 #
 # Environment: ZR_SRCDIR, ZR_BUILDDIR (set by `make check`).
 TEST_NAME=timeline
@@ -65,6 +66,17 @@ for rank in 0 1; do
          w = $6; c = $8; t = $10 }
        END { exit bad ? 1 : 0 }' "r$rank.txt" ||
     fail "rank $rank: a time goes back: $(head -3 "r$rank.txt")"
+done
+# Where the shared window cannot be made (Open MPI without its
+# shared-memory one-sided component) and with ZRCUBE_ROWS=static, the
+# ranks deal rows out statically: the same bytes.
+run pt2pt.png pt2pt.log ZRCUBE_TIMELINE=1 OMPI_MCA_osc=pt2pt
+run static.png static.log ZRCUBE_TIMELINE=1 ZRCUBE_ROWS=static
+for t in pt2pt static; do
+  cmp -s with.png "$t.png" || fail "$t: the image differs"
+  n=$(grep -c 'render: rows dealt$' "$t.log")
+  [ "$n" = 2 ] || fail "$t: $n ranks dealt rows, expected 2"
+  grep -q 'render: rows shared$' "$t.log" && fail "$t: rows shared"
 done
 [ "$failed" = 0 ] && echo "1 passed, 0 failed" || echo "0 passed, 1 failed"
 exit "$failed"
