@@ -1687,7 +1687,7 @@ object_head:
 | blob_head
 | iso_head %prec OPTIONAL_COMMA
 | hf_head              { TRY(zr__sdl_height_field_done(p, $1, &@1)); $$ = $1; }
-| par_head
+| par_head           { TRY(zr__sdl_parametric_done(p, $1, &@1)); $$ = $1; }
 | T_OVUS '{' expr comma expr
     { TRY($$ = zr__sdl_ovus(p, &@1, &$3, &@3, &$5, &@5)); }
 | sor_head             { TRY(zr__sdl_sor_done(p, $1, &@1)); $$ = $1; }

@@ -372,6 +372,10 @@ EXTRA_DIST += tests/test_media_shell.sh tests/media_shell.pov
 # texture's (grammar/pov.y object_body; the corpus' glasstestreal.pov).
 TESTS += tests/test_object_mods.sh
 EXTRA_DIST += tests/test_object_mods.sh tests/object_mods.pov
+# A parametric whose max_gradient understates its slopes (the corpus'
+# GSprites_Terrain_demo.pov's water): drawn whole, as povray draws it.
+TESTS += tests/test_parametric_gradient.sh
+EXTRA_DIST += tests/test_parametric_gradient.sh tests/parametric_gradient.pov
 # A light's negative fade_distance, as povray takes it (the manual's
 # formula as it is: bench/conform/light_fade_negative.sh).
 TESTS += tests/test_light_fade.sh
