@@ -13,7 +13,11 @@
 //   6 a bumps normal scaled 0.3 in the texture, then normal { scale 3 };
 //   7 the same, then normal { bumps 1 scale 0.9 };
 //   8 a sphere without a texture, pigment and finish given: the built-in
-//     defaults as before (control).
+//     defaults as before (control);
+//   9 an object moved after its pigment, then given pigment { checker }:
+//     the checker starts from the moved pigment, so it is moved too (the
+//     corpus' church-window.pov: object { RedWindow pigment { crackle
+//     ... } } after RedWindow's translate and scale).
 #version 3.7;
 #ifndef (Case) #declare Case = 1; #end
 global_settings { assumed_gamma 1 }
@@ -40,6 +44,13 @@ background { rgb 0 }
 #case (7) sphere { 0, 1.5 texture { B } normal { bumps 1 scale 0.9 } } #break
 #case (8)
   sphere { 0, 1.5 pigment { rgb <1, 0.5, 0.25> } finish { ambient 0.4 } }
+  #break
+#case (9)
+  #declare R = object { box { <-2, -2, 0>, <2, 2, 0.1> pigment { gradient x } }
+                        pigment { rgb <1, 0, 0> }
+                        translate <-0.7, 0.3, 0> scale 1.2 }
+  object { R pigment { checker rgb 1 rgb 0.2 scale 0.8 }
+           finish { ambient 1 diffuse 0 } }
   #break
 #end
 light_source { <-10, 10, -10> rgb 1 }

@@ -21,6 +21,9 @@
 #   7 the same, then normal { bumps 1 scale 0.9 }: 198 139 0 193
 #     (before 78 226 0 204)
 #   8 no texture, pigment and finish: the defaults (unchanged)
+#   9 an object moved after its pigment, then pigment { checker ... }: the
+#     checker moves with it; at 6,0 6,2 6,4 6,8: 255 124 255 124 (before
+#     124 255 124 124: the checker where it was declared)
 #
 # Environment: ZR_SRCDIR, ZR_BUILDDIR (set by `make check`).
 set -u
@@ -34,5 +37,10 @@ recorded_5="255,188,137 255,188,137 255,188,137 188,188,188"
 recorded_6="78,78,78 226,226,226 0,0,0 204,204,204"
 recorded_7="198,198,198 139,139,139 0,0,0 193,193,193"
 recorded_8="208,152,111 245,180,131 170,124,89 219,161,117"
+recorded_9="255,255,255 124,124,124 255,255,255 124,124,124"
+fail=0
 pixel_cases "$srcdir/tests/object_mods.pov" Case "1 2 3 4 5 6 7 8" \
-  "6,8 4,6 8,10 3,9"
+  "6,8 4,6 8,10 3,9" || fail=1
+pixel_cases "$srcdir/tests/object_mods.pov" Case "9" "6,0 6,2 6,4 6,8" ||
+  fail=1
+exit $fail
