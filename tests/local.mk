@@ -376,6 +376,10 @@ EXTRA_DIST += tests/test_object_mods.sh tests/object_mods.pov
 # GSprites_Terrain_demo.pov's water): drawn whole, as povray draws it.
 TESTS += tests/test_parametric_gradient.sh
 EXTRA_DIST += tests/test_parametric_gradient.sh tests/parametric_gradient.pov
+# Radiosity with normal off under a normal { } that tilts past 90 degrees
+# (the corpus' pneumaticBoat.pov sand): the surface's own hemisphere.
+TESTS += tests/test_gi_normal_off.sh
+EXTRA_DIST += tests/test_gi_normal_off.sh tests/gi_normal_off.pov
 # A light's negative fade_distance, as povray takes it (the manual's
 # formula as it is: bench/conform/light_fade_negative.sh).
 TESTS += tests/test_light_fade.sh
