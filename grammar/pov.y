@@ -125,6 +125,15 @@ static zr_sdl_mod make_mod(zr_sdl_mod_kind kind, const void *ptr) {
   return m;
 }
 
+/* An object's pigment, normal or finish block, made from its texture's
+   (object_body). */
+static bool object_mod_block(zr_sdl_parser *p, zr_object *o,
+                             zr_sdl_mod_kind kind, const void *ptr,
+                             const zr_sdl_loc *loc) {
+  zr_sdl_mod m = make_mod(kind, ptr);
+  return zr__sdl_object_mod(p, o, &m, loc);
+}
+
 /* no_bump_scale ("Scaling normals") on a normal, or on the normal a
    texture has so far (a copy, so a declared normal keeps its depth
    elsewhere; a texture without a normal has no depth to keep). */
@@ -798,7 +807,7 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %type <fn> par_fn
 %type <expr> blob_strength
 %type <token> prism_option
-%type <mod> object_mod
+%type <mod> object_mod object_mod_other
 %type <token> rad_kw
 %type <transform> transform transform_value
 %type <tblock> transform_block
@@ -1562,8 +1571,19 @@ light_group_body:
 
 object_body:
   object_head
-| object_body object_mod
+| object_body object_mod_other
     { TRY(zr__sdl_object_mod(p, $1, &$2, &@2)); $$ = $1; }
+/* An object's pigment { }, normal { } and finish { } modify those of
+   the texture it has (its top layer's), as inside a texture block:
+   POV-Ray 3.7's renders (tests/test_object_mods.sh: sphere { texture {
+   ... finish { diffuse 0 } } finish { ambient 0.4 } } keeps diffuse 0,
+   pigment { scale 5 } keeps the texture's checker). */
+| object_body { zr__sdl_texture_base(p, $1->texture, 'p'); } pigment
+    { TRY(object_mod_block(p, $1, ZR_SDL_MOD_PIGMENT, $3, &@3)); $$ = $1; }
+| object_body { zr__sdl_texture_base(p, $1->texture, 'f'); } finish
+    { TRY(object_mod_block(p, $1, ZR_SDL_MOD_FINISH, $3, &@3)); $$ = $1; }
+| object_body { zr__sdl_texture_base(p, $1->texture, 'n'); } normal
+    { TRY(object_mod_block(p, $1, ZR_SDL_MOD_NORMAL, $3, &@3)); $$ = $1; }
 | object_body T_STURM  { TRY(zr__sdl_sturm(p, $1, &@2)); $$ = $1; }
 ;
 
@@ -1667,7 +1687,7 @@ object_head:
 | blob_head
 | iso_head %prec OPTIONAL_COMMA
 | hf_head              { TRY(zr__sdl_height_field_done(p, $1, &@1)); $$ = $1; }
-| par_head
+| par_head           { TRY(zr__sdl_parametric_done(p, $1, &@1)); $$ = $1; }
 | T_OVUS '{' expr comma expr
     { TRY($$ = zr__sdl_ovus(p, &@1, &$3, &@3, &$5, &@5)); }
 | sor_head             { TRY(zr__sdl_sor_done(p, $1, &@1)); $$ = $1; }
@@ -2250,17 +2270,31 @@ union_body:
       TRY(zr__sdl_difference_add(p, $1, copy));
       $$ = $1;
     }
-| union_body object_mod
+| union_body object_mod_other
     { TRY(zr__sdl_object_mod(p, $1, &$2, &@2)); $$ = $1; }
+/* The same for a CSG: its own texture's, else the default texture's
+   (a child's texture is not the CSG's). */
+| union_body { zr__sdl_texture_base(p, $1->texture, 'p'); } pigment
+    { TRY(object_mod_block(p, $1, ZR_SDL_MOD_PIGMENT, $3, &@3)); $$ = $1; }
+| union_body { zr__sdl_texture_base(p, $1->texture, 'f'); } finish
+    { TRY(object_mod_block(p, $1, ZR_SDL_MOD_FINISH, $3, &@3)); $$ = $1; }
+| union_body { zr__sdl_texture_base(p, $1->texture, 'n'); } normal
+    { TRY(object_mod_block(p, $1, ZR_SDL_MOD_NORMAL, $3, &@3)); $$ = $1; }
 ;
 
+/* A blob component's modifiers; an object's pigment, normal and finish
+   start from its texture's (object_body above). */
 object_mod:
-  transform            { $$ = make_mod(ZR_SDL_MOD_TRANSFORM, $1); }
+  object_mod_other
 | pigment              { $$ = make_mod(ZR_SDL_MOD_PIGMENT, $1); }
 | finish               { $$ = make_mod(ZR_SDL_MOD_FINISH, $1); }
+| normal               { $$ = make_mod(ZR_SDL_MOD_NORMAL, $1); }
+;
+
+object_mod_other:
+  transform            { $$ = make_mod(ZR_SDL_MOD_TRANSFORM, $1); }
 | texture              { $$ = make_mod(ZR_SDL_MOD_TEXTURE, $1); }
 | interior             { $$ = make_mod(ZR_SDL_MOD_INTERIOR, $1); }
-| normal               { $$ = make_mod(ZR_SDL_MOD_NORMAL, $1); }
 | material             { $$ = make_mod(ZR_SDL_MOD_MATERIAL, $1); }
 | T_NO_SHADOW          { $$ = make_mod(ZR_SDL_MOD_NO_SHADOW, NULL); }
 | T_NO_IMAGE           { $$ = make_mod(ZR_SDL_MOD_NO_IMAGE, NULL); }

@@ -368,6 +368,18 @@ EXTRA_DIST += bench/conform/fade_power_probe.sh bench/conform/probe_value.sh
 # by a shadowless light (benchmark.pov's clouds).
 TESTS += tests/test_media_shell.sh
 EXTRA_DIST += tests/test_media_shell.sh tests/media_shell.pov
+# An object's pigment, normal and finish after its texture modify the
+# texture's (grammar/pov.y object_body; the corpus' glasstestreal.pov).
+TESTS += tests/test_object_mods.sh
+EXTRA_DIST += tests/test_object_mods.sh tests/object_mods.pov
+# A parametric whose max_gradient understates its slopes (the corpus'
+# GSprites_Terrain_demo.pov's water): drawn whole, as povray draws it.
+TESTS += tests/test_parametric_gradient.sh
+EXTRA_DIST += tests/test_parametric_gradient.sh tests/parametric_gradient.pov
+# Radiosity with normal off under a normal { } that tilts past 90 degrees
+# (the corpus' pneumaticBoat.pov sand): the surface's own hemisphere.
+TESTS += tests/test_gi_normal_off.sh
+EXTRA_DIST += tests/test_gi_normal_off.sh tests/gi_normal_off.pov
 # A light's negative fade_distance, as povray takes it (the manual's
 # formula as it is: bench/conform/light_fade_negative.sh).
 TESTS += tests/test_light_fade.sh

@@ -257,6 +257,74 @@ zr_object *zr__sdl_parametric_new(zr_sdl_parser *p, const zr_sdl_loc *loc,
   return o;
 }
 
+/*
+ * POV-Ray 3.7 draws a parametric whose max_gradient (default 1) is far
+ * below its real partial derivatives whole: the corpus' GSprites_Terrain_
+ * demo.pov's water, a sheet <64 u - 32, 0.25 (sin 8 pi u + sin 8 pi v),
+ * 64 v - 32> with no max_gradient, is there in povray's picture (with
+ * max_gradient 0.1 too, bar 2% of its pixels; tests/test_parametric_
+ * gradient.sh).  zRcube's search (lib/trace/obj_parametric.c) trusts G
+ * to bound its boxes, and with G 64 times too small found only the
+ * crossings Newton's method happened to reach from neighbouring boxes:
+ * the sheet was gone, or holed where a second search starts near the
+ * first crossing.  So the functions' difference quotients over a grid of
+ * PARAM_GRID x PARAM_GRID cells of the (u, v) rectangle are measured
+ * here; each is a partial derivative somewhere in its cell (mean value
+ * theorem), so their largest is a lower bound of the true maximum, and
+ * when it exceeds G the search uses it times PARAM_SLACK instead, with a
+ * warning.  A sine sampled n times a period reaches sin(pi/n)/(pi/n) of
+ * its largest slope: 0.90 at n = 4, and 1.25 covers that with room.  A
+ * G that is large enough is kept as given: such scenes trace as before.
+ */
+enum { PARAM_GRID = 64 };
+#define PARAM_SLACK 1.25
+
+static void parametric_point(const zr_object *o, double u, double v,
+                             double out[3]) {
+  double args[3] = {u, v, 0.0};
+  for (int k = 0; k < 3; k++)
+    out[k] = zr__fn_eval(o->u.parametric.fn[k], args);
+}
+
+bool zr__sdl_parametric_done(zr_sdl_parser *p, zr_object *o,
+                             const zr_sdl_loc *loc) {
+  double u0 = o->u.parametric.u0, u1 = o->u.parametric.u1;
+  double v0 = o->u.parametric.v0, v1 = o->u.parametric.v1;
+  if (!(u0 < u1) || !(v0 < v1))
+    return true; /* an empty range: nothing is drawn */
+  double du = (u1 - u0) / PARAM_GRID, dv = (v1 - v0) / PARAM_GRID;
+  double row[PARAM_GRID + 1][3], found = 0.0;
+  for (int j = 0; j <= PARAM_GRID; j++) {
+    double v = j < PARAM_GRID ? v0 + j * dv : v1;
+    double prev[3];
+    for (int i = 0; i <= PARAM_GRID; i++) {
+      double u = i < PARAM_GRID ? u0 + i * du : u1, q[3];
+      parametric_point(o, u, v, q);
+      for (int k = 0; k < 3; k++) {
+        double a = i > 0 ? fabs(q[k] - prev[k]) / du : 0.0;
+        double b = j > 0 ? fabs(q[k] - row[i][k]) / dv : 0.0;
+        /* A pole or a gap in the functions (NaN, inf) says nothing
+           about the slope elsewhere. */
+        if (isfinite(a) && a > found)
+          found = a;
+        if (isfinite(b) && b > found)
+          found = b;
+        prev[k] = q[k];
+        row[i][k] = q[k];
+      }
+    }
+  }
+  double g = o->u.parametric.max_gradient;
+  if (found > g) {
+    o->u.parametric.max_gradient = found * PARAM_SLACK;
+    zr__sdl_warning(p, loc, "the parametric's partial derivatives reach "
+                    "%g, above its max_gradient %g: traced with "
+                    "max_gradient %g", found, g,
+                    o->u.parametric.max_gradient);
+  }
+  return true;
+}
+
 bool zr__sdl_parametric_container(zr_sdl_parser *p, zr_object *o,
                                   const zr_object *c,
                                   const zr_sdl_loc *loc) {

@@ -33,6 +33,10 @@ zr_object *zr__sdl_parametric_new(zr_sdl_parser *p, const zr_sdl_loc *loc,
 bool zr__sdl_parametric_container(zr_sdl_parser *p, zr_object *o,
                                   const zr_object *container,
                                   const zr_sdl_loc *loc);
+/* At the parametric's end: a max_gradient below the functions' slopes
+   measured on a grid is raised to them (build_iso.c). */
+bool zr__sdl_parametric_done(zr_sdl_parser *p, zr_object *o,
+                             const zr_sdl_loc *loc);
 bool zr__sdl_parametric_item(zr_sdl_parser *p, zr_object *o, int token,
                              const zr_sdl_expr *e, const zr_sdl_loc *at);
 
