@@ -1405,16 +1405,16 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
         s = render_band(par, job, p == 1 ? pr.centres : NULL, rows, stride,
                         y0, y1, x0, x1, done_rows, total, first,
                         follow_writer, take, p);
-        if (s == ZR_OK && multi)
-          s = zr__par_agree(par, take ? rank_rows_taken(&rr,
-                                                        take->owner + y0,
-                                                        y1 - y0, par->size)
-                                      : (rank_rows_dealt(&rr, y1 - y0,
-                                                         first, par->size),
-                                         ZR_OK));
-        done_rows += multi && s == ZR_OK ? (size_t)rank_count(&rr, par->rank)
-                     : multi             ? 0
-                                         : (size_t)(y1 - y0);
+        /* Every rank reads the same owners (render_band's syncs), so
+           every rank makes the same lists and the same status: no
+           agreement is needed. */
+        if (s == ZR_OK && take)
+          s = rank_rows_taken(&rr, take->owner + y0, y1 - y0, par->size);
+        else if (s == ZR_OK && multi)
+          rank_rows_dealt(&rr, y1 - y0, first, par->size);
+        if (s == ZR_OK)
+          done_rows += multi ? (size_t)rank_count(&rr, par->rank)
+                             : (size_t)(y1 - y0);
         zr__par_mark(first ? "render: tail chunk rendered"
                            : "render: chunk rendered");
         double gather_start = zr__par_now();
