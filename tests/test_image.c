@@ -253,6 +253,34 @@ static void test_image_new_checks_size(void **state) {
   zr_image_free(NULL);
 }
 
+/* A new image is black, whatever its size: big ones are fresh mappings
+   (zr__map_zeroed) that nothing writes before the render, small ones
+   calloc's.  A first image filled and freed leaves memory that a
+   malloc'ed second one could reuse; the second must still be zero. */
+static void test_image_new_is_zero(void **state) {
+  (void)state;
+  static const int sides[][2] = {{3, 2}, {1024, 768}, {2048, 1}};
+  for (size_t i = 0; i < sizeof sides / sizeof *sides; i++) {
+    int w = sides[i][0], h = sides[i][1];
+    size_t n = (size_t)w * (size_t)h * 3;
+    zr_image *a = NULL, *b = NULL;
+    assert_int_equal(zr_image_new(w, h, &a), ZR_OK);
+    float *pa = zr_image_pixels(a);
+    for (size_t k = 0; k < n; k++)
+      assert_true(pa[k] == 0.0f);
+    for (size_t k = 0; k < n; k++)
+      pa[k] = 1.0f;
+    zr_image_free(a);
+    assert_int_equal(zr_image_new(w, h, &b), ZR_OK);
+    const float *pb = zr_image_pixels(b);
+    size_t nonzero = 0;
+    for (size_t k = 0; k < n; k++)
+      nonzero += pb[k] != 0.0f;
+    assert_int_equal(nonzero, 0);
+    zr_image_free(b);
+  }
+}
+
 static void test_image_format_from_name(void **state) {
   (void)state;
   assert_int_equal(zr_image_format_from_name("a/b.png"), ZR_FORMAT_PNG8);
@@ -976,6 +1004,7 @@ static void test_image_null_context_is_silent(void **state) {
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_image_new_checks_size),
+      cmocka_unit_test(test_image_new_is_zero),
       cmocka_unit_test(test_image_format_from_name),
       cmocka_unit_test(test_image_srgb_known_values),
       cmocka_unit_test(test_image_encoder8_same_codes),

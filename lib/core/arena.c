@@ -213,6 +213,12 @@ void zr__map_free(void *p, size_t size) {
     (void)munmap(p, huge_rounded(size));
 }
 
+void *zr__map_zeroed(size_t size) {
+  if (size < ZR__MAP_FROM)
+    return calloc(size ? size : 1, 1);
+  return zr__map_alloc(size);
+}
+
 void *zr__map_grow(void *p, size_t old_size, size_t new_size) {
   if (!p)
     return zr__map_alloc(new_size);
@@ -261,6 +267,13 @@ void *zr__map_grow(void *p, size_t old_size, size_t new_size) {
 #else
 /* Without anonymous mappings or mremap: zr__huge_alloc's blocks. */
 void *zr__map_alloc(size_t size) { return zr__huge_alloc(size); }
+
+void *zr__map_zeroed(size_t size) {
+  void *p = zr__huge_alloc(size);
+  if (p)
+    memset(p, 0, size ? size : 1);
+  return p;
+}
 
 void zr__map_free(void *p, size_t size) {
   (void)size;

@@ -140,5 +140,11 @@ size_t zr__map_room(size_t size);
 void *zr__map_alloc(size_t size);
 void *zr__map_grow(void *p, size_t old_size, size_t new_size);
 void zr__map_free(void *p, size_t size);
+/* zr__map_alloc's block with every byte 0, freed with zr__map_free: a
+   fresh mapping is zero as the kernel gives it, so its pages are first
+   touched when they are first written (a render's image: by the rows
+   as they come, not all at once before the render); below ZR__MAP_FROM
+   calloc's, and without mappings zeroed here. */
+void *zr__map_zeroed(size_t size);
 
 #endif /* ZR_CORE_ARENA_H */

@@ -41,7 +41,7 @@
 
 #include "core/budget.h"
 #include "core/context.h"
-#include "core/hugepage.h"
+#include "core/arena.h"
 #include "core/iopolicy.h"
 
 static zr_status check_size(int width, int height) {
@@ -64,29 +64,26 @@ static zr_image *image_alloc(int width, int height) {
 }
 
 /*
- * Zeroed memory for the pixels of a new image, freed with free.  From
- * 2 MiB on, aligned on and advised to huge pages (core/hugepage.h) with
- * its size rounded up to them: a render writes into this image, and on
- * this project's virtual machine first touching each of its 4 KiB
- * pages costs about 14 us.  A calloc'ed block (glibc mmaps one this
- * big at a 4 KiB boundary) holds whole aligned huge pages only by
- * chance: a 512x512 render's 3 MiB of floats, zeroed by lib/par before
- * the render, took 768 page faults, about 0.011 s of CPU (measured, perf
- * record -e page-faults, peers flake 512^2), 2 faults in huge pages.
+ * Zeroed memory for the pixels of a new image, bytes long, freed by
+ * zr_image_free (pixels_bytes says how).  From ZR__MAP_FROM on, a fresh
+ * mapping in huge pages (core/arena.h): a render writes into this image,
+ * and on this project's virtual machine first touching each of its 4 KiB
+ * pages costs about 14 us (a 512x512 render's 3 MiB of floats in a
+ * calloc'ed block, which glibc maps at a 4 KiB boundary: 768 page
+ * faults, about 0.011 s of CPU, perf record -e page-faults, peers flake
+ * 512^2).  The mapping is zero as the kernel gives it, so nothing writes
+ * it here: its pages are touched as the render's rows first reach them,
+ * by the thread that writes them.  Zeroed here, a 2048^2 image's 48 MiB
+ * took rank 0 of `mpirun -n 2` 0.012 s alone before the render while the
+ * other rank waited for it (bench/timeline.sh, terrain 2048^2); during
+ * the render the ranks take rows from a shared counter, so the pages'
+ * cost is shared too.
  */
-static float *pixels_alloc(size_t n) {
-  if (n > (SIZE_MAX - ZR__HUGE_PAGE) / sizeof(float))
+static float *pixels_alloc(size_t n, size_t *bytes) {
+  if (n > SIZE_MAX / sizeof(float))
     return NULL;
-  size_t bytes = n * sizeof(float);
-  if (bytes < ZR__HUGE_PAGE)
-    return calloc(n, sizeof(float));
-  bytes = (bytes + ZR__HUGE_PAGE - 1) & ~(ZR__HUGE_PAGE - 1);
-  void *p = NULL;
-  if (posix_memalign(&p, ZR__HUGE_PAGE, bytes) != 0)
-    return NULL;
-  zr__mem_advise_huge(p, bytes);
-  memset(p, 0, bytes);
-  return p;
+  *bytes = n * sizeof(float);
+  return zr__map_zeroed(*bytes);
 }
 
 ZR_API zr_status zr_image_new(int width, int height, zr_image **out) {
@@ -96,7 +93,8 @@ ZR_API zr_status zr_image_new(int width, int height, zr_image **out) {
   zr_image *image = image_alloc(width, height);
   if (!image)
     return ZR_ENOMEM;
-  image->pixels = pixels_alloc((size_t)width * (size_t)height * 3);
+  image->pixels = pixels_alloc((size_t)width * (size_t)height * 3,
+                               &image->pixels_bytes);
   if (!image->pixels) {
     free(image);
     return ZR_ENOMEM;
@@ -261,7 +259,10 @@ zr_status zr__image_add_floats(zr_context *ctx, const char *name,
 ZR_API void zr_image_free(zr_image *image) {
   if (!image)
     return;
-  free(image->pixels);
+  if (image->pixels_bytes)
+    zr__map_free(image->pixels, image->pixels_bytes);
+  else
+    free(image->pixels);
   free(image->alpha);
   free(image->codes);
   free(image->table);

@@ -39,6 +39,9 @@ struct zr_image {
   /* width * height * 3 linear floats: images made by zr_image_new, float
      files (PFM) and images zr_image_read returns; else NULL. */
   float *pixels;
+  /* zr_image_new's pixels: their size, which zr_image_free gives
+     zr__map_free; 0 when pixels is malloc's. */
+  size_t pixels_bytes;
   /* NULL, or width * height alpha values in [0, 1] (1 opaque), made by
      zr_image_add_alpha for the writers that store it. */
   float *alpha;
