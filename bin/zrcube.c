@@ -1350,6 +1350,8 @@ static int render_and_write(run *r) {
   r->render.progress = r->progress.mode ? on_rows : NULL;
   r->render.progress_user = &r->progress;
   r->render.image = r->image;
+  /* zr_image_new's pixels are zero (a fresh mapping for big images). */
+  r->render.image_zero = r->image != NULL;
   r->render.row0 = r->row0;
   r->render.row1 = r->row1;
   r->render.col0 = r->col0;

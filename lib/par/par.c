@@ -1243,9 +1243,12 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
         (par->rank == 0 && channels == 4 &&
          zr_image_add_alpha(job->image) != ZR_OK))
       s = ZR_ENOMEM;
-    if (pr.image) {
+    if (pr.image && !(channels == 3 && job->image_zero)) {
       /* The picture (lib/image's) is still untouched here when it is
-         fresh: its pages can still be huge ones. */
+         fresh: its pages can still be huge ones.  One known to be zero
+         is left untouched (job->image_zero): bench/timeline.sh, terrain
+         2048^2, mpirun -n 2, this memset of its 48 MiB took rank 0
+         0.005-0.006 s while rank 1 waited in the next meeting. */
       zr__mem_advise_huge(pr.image, image_floats * sizeof(float));
       memset(pr.image, 0, image_floats * sizeof(float));
     }

@@ -119,6 +119,12 @@ typedef struct zr_par_render {
   zr__rows_progress_fn progress; /* may be NULL; give it on rank 0 only */
   void *progress_user;
   zr_image *image;         /* rank 0: receives the picture; others NULL */
+  /* Rank 0: nonzero when image's pixels are all 0 already (a fresh
+     zr_image_new: a mapping the kernel gives zeroed), so the render
+     need not zero them first; its rows then touch the pages as they
+     arrive, during a render the ranks share, instead of rank 0 alone
+     before it while the others wait. */
+  int image_zero;
   zr_render_stats stats;   /* out: summed over all ranks, on rank 0 */
   double render_seconds;   /* out: the slowest rank's, on rank 0 */
   /* A partial render (+SR +ER +SC +EC): rows row0 .. row1 - 1 and
