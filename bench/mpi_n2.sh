@@ -51,7 +51,7 @@ done
 echo "load after: $(cat /proc/loadavg)"
 echo "best of $REPEAT, ${rt:-no real-time policy}; seconds (wall / CPU)"
 awk '{ c = $3 + $4
-       if (!($1 in w) || $2 < w[$1]) w[$1] = $2
+       if (!($1 in w) || $2 < w[$1]) { w[$1] = $2; o[$1] = $5 }
        if (!($1 in u) || c < u[$1]) u[$1] = c }
      END {
        printf "%-14s %13s %13s %13s %7s %8s %6s %13s %6s\n", "scene",
@@ -67,4 +67,11 @@ awk '{ c = $3 + $4
            u[k "-n1"], w[k "-n2"], u[k "-n2"], w[k "-n2"] / w[k "-n1"],
            w[k "-n2"] / w[k "-plain"], 100 * w[k "-n1"] / (2 * w[k "-n2"]),
            w[k "-t2"], u[k "-t2"], 100 * w[k "-plain"] / (2 * w[k "-t2"])
-       } }' sizes="$SIZES" "$tmp/t"
+       }
+       printf "other processes'"'"' CPU s during the best runs (timing.sh), n1 / n2:"
+       for (i = 1; i <= n; i++) for (j = 1; j <= m; j++) {
+         k = sc[i] "-" sz[j]
+         if ((k "-n2") in w)
+           printf "  %s %s %.2f / %.2f", sc[i], sz[j], o[k "-n1"], o[k "-n2"]
+       }
+       printf "\n" }' sizes="$SIZES" "$tmp/t"
