@@ -189,12 +189,19 @@ static bool add_mesh_surface(zr_preview *pv, const zr_object *o,
                              const zr__surface *s) {
   if (!reserve_tris(pv, s->n_faces))
     return false;
+  /* A face with a texture from the mesh's texture_list is coloured by
+     it: the copy of the object that carries it (obj_mesh.h), chosen by
+     the face's first corner as a flat triangle can show one. */
+  const struct zr_mesh *mesh = s->mesh;
   for (size_t f = 0; f < s->n_faces; f++) {
     zr__mesh_face face;
     if (!zr__surface_mesh_tri(s, f, &face))
       continue;
     zr_vec3 n[3] = {face.n, face.n, face.n};
-    add_tri(pv, o, face.p, n);
+    const zr_object *textured = o;
+    if (o->kind == ZR_OBJ_MESH && mesh->face_textures != NULL)
+      textured = zr__mesh_hit_object(o, mesh->face_textures[f][0]);
+    add_tri(pv, textured, face.p, n);
   }
   return true;
 }
@@ -256,10 +263,15 @@ static bool add_primitive(zr_preview *pv, const zr_object *o,
         o->kind == ZR_OBJ_MESH ? o->u.mesh.data : NULL;
     n = zr__rad_primitive_surfaces(o, mesh, lo, hi, geo);
   }
-  /* A polygon's rectangle is cut to the polygon by trim.c, as for
-     radiosity; trim (the CSG) then cuts what it does not keep, which
-     the test does for a polygon part too (the polygon is the part). */
-  const zr_object *cut = trim ? trim : o->kind == ZR_OBJ_POLYGON ? o : NULL;
+  /* A polygon's rectangle is cut to the polygon by trim.c's test, as
+     for radiosity, and so is a clipped_by object to its clip (the test
+     checks both when the object is its own trim); in a CSG solid, trim
+     cuts what the solid does not keep, the part's own polygon and clip
+     included. */
+  const zr_object *cut =
+      trim                                               ? trim
+      : o->kind == ZR_OBJ_POLYGON || o->clip != NULL ? o
+                                                         : NULL;
   if (n > 0) {
     for (int i = 0; i < n; i++) {
       bool ok;
