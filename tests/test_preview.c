@@ -2,7 +2,8 @@
  * test_preview.c - zr_scene_preview through the public API: a sphere's
  * corners lie on it and its normals point out of it, a box is its 12
  * triangles on its 8 corners, a mesh its own faces, a plane its patch
- * at its height, a CSG intersection loses what the solid does not keep,
+ * at its height, a CSG intersection and a clipped_by lose what they do
+ * not keep, a mesh face with its own texture takes its colour,
  * an object without surfaces its bounding box's 12 edges, and the
  * camera is the scene's.  Positions are floats: their tolerance, 1e-5
  * of the values here, is float rounding (2^-24 relative) with room.
@@ -212,6 +213,39 @@ static void test_preview_csg(void **state) {
   zr_preview_free(pv);
 }
 
+static void test_preview_clip_and_face_textures(void **state) {
+  (void)state;
+  /* clipped_by { plane { y, 0 } } keeps the lower half, as the CSG
+     intersection above does. */
+  zr_preview *pv = preview_of(
+      "sphere { 0, 1 clipped_by { plane { y, 0 } } }\n", 24);
+  const float *xyz, *rgb;
+  size_t n = zr_preview_triangles(pv, &xyz, NULL, NULL);
+  assert_true(n > 0 && n <= 24 * 24 + 24);
+  double ymax = -INFINITY;
+  for (size_t v = 0; v < 3 * n; v++)
+    ymax = fmax(ymax, xyz[3 * v + 1]);
+  assert_true(ymax < M_PI / 24 + TOL);
+  zr_preview_free(pv);
+
+  /* A mesh's faces with textures of their own are coloured by them:
+     the face at z = 0 red, the one at z = 5 green. */
+  pv = preview_of(
+      "mesh { triangle { <0, 0, 0>, <1, 0, 0>, <0, 1, 0> "
+      "texture { pigment { rgb <1, 0, 0> } } }\n"
+      "       triangle { <0, 0, 5>, <0, 2, 5>, <3, 0, 5> "
+      "texture { pigment { rgb <0, 1, 0> } } } }\n",
+      0);
+  n = zr_preview_triangles(pv, &xyz, NULL, &rgb);
+  assert_int_equal(n, 2);
+  for (size_t t = 0; t < n; t++) {
+    bool near = fabs(xyz[9 * t + 2]) < TOL;
+    assert_true(fabs(rgb[3 * t] - (near ? 1.0 : 0.0)) < TOL);
+    assert_true(fabs(rgb[3 * t + 1] - (near ? 0.0 : 1.0)) < TOL);
+  }
+  zr_preview_free(pv);
+}
+
 static void test_preview_boxes_for_the_rest(void **state) {
   (void)state;
   /* A blob has no surface yet: its bounding box's 12 edges. */
@@ -315,6 +349,7 @@ int main(void) {
       cmocka_unit_test(test_preview_box),
       cmocka_unit_test(test_preview_mesh_and_plane),
       cmocka_unit_test(test_preview_csg),
+      cmocka_unit_test(test_preview_clip_and_face_textures),
       cmocka_unit_test(test_preview_boxes_for_the_rest),
       cmocka_unit_test(test_preview_camera),
       cmocka_unit_test(test_preview_bad_detail),
