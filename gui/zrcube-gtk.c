@@ -26,7 +26,9 @@
  * --screenshot FILE draws the preview once, reads the picture back from
  * GtkGLArea's framebuffer and writes it as PNG, then quits: the test
  * (tests/test_gtk.sh) runs that under xvfb-run and checks where the
- * objects land.
+ * objects land.  --render FILE presses Render, and when the worker is
+ * done writes what Save would, then quits: the test compares it with
+ * zrcube's picture of the scene, byte for byte.
  */
 #include <epoxy/gl.h>
 #include <gtk/gtk.h>
@@ -54,6 +56,7 @@ typedef struct app {
   /* Command-line settings. */
   char *scene_path;
   char *screenshot_path;
+  char *render_path; /* --render: render, save here, quit */
   int width, height;
   int exit_status;
   /* The scene and what it draws. */
@@ -636,6 +639,22 @@ static gboolean render_done(gpointer data) {
   zr_image_free(a->image);
   a->image = NULL;
   update_buttons(a);
+  if (a->render_path != NULL) {
+    /* --render: what Save would write, then quit. */
+    GError *err = NULL;
+    if (a->png == NULL) {
+      fprintf(stderr, "zrcube-gtk: %s", a->diagnostics->str);
+      a->exit_status = 1;
+    } else if (!g_file_set_contents(a->render_path, (const char *)a->png,
+                                    (gssize)a->png_size, &err)) {
+      fprintf(stderr, "zrcube-gtk: %s\n", err->message);
+      g_error_free(err);
+      a->exit_status = 1;
+    } else {
+      a->exit_status = 0;
+    }
+    g_application_quit(G_APPLICATION(a->gtk));
+  }
   return G_SOURCE_REMOVE;
 }
 
@@ -858,6 +877,12 @@ static void on_activate(GtkApplication *gtk, app *a) {
     load_scene(a, a->scene_path);
   if (a->screenshot_path != NULL)
     g_timeout_add_seconds(60, screenshot_timeout, a);
+  if (a->render_path != NULL) {
+    if (a->scene != NULL)
+      on_render_clicked(NULL, a);
+    else
+      g_idle_add(quit_idle, a);
+  }
   gtk_window_present(GTK_WINDOW(a->window));
 }
 
@@ -871,11 +896,13 @@ static void on_shutdown(GApplication *gapp, app *a) {
 
 static void usage(FILE *to) {
   fprintf(to,
-          "Usage: zrcube-gtk [--width N] [--height N] [--screenshot FILE] "
-          "[SCENE.pov]\n"
+          "Usage: zrcube-gtk [--width N] [--height N] [--screenshot FILE | "
+          "--render FILE]\n                  [SCENE.pov]\n"
           "Previews a POV-Ray scene with OpenGL from its camera, renders it "
           "with libzrcube\nand saves the picture.  --screenshot draws the "
-          "preview once into FILE (PNG)\nand exits.  See zrcube-gtk(1).\n");
+          "preview once into FILE (PNG)\nand exits; --render renders as the "
+          "Render button does, saves as Save does,\nand exits.  See "
+          "zrcube-gtk(1).\n");
 }
 
 static bool parse_size(const char *s, int *out) {
@@ -904,7 +931,7 @@ int main(int argc, char **argv) {
       return 0;
     }
     if (strcmp(arg, "--width") == 0 || strcmp(arg, "--height") == 0 ||
-        strcmp(arg, "--screenshot") == 0) {
+        strcmp(arg, "--screenshot") == 0 || strcmp(arg, "--render") == 0) {
       if (i + 1 >= argc) {
         fprintf(stderr, "zrcube-gtk: %s needs a value\n", arg);
         return 2;
@@ -913,6 +940,9 @@ int main(int argc, char **argv) {
       if (strcmp(arg, "--screenshot") == 0) {
         g_free(a.screenshot_path);
         a.screenshot_path = g_strdup(val);
+      } else if (strcmp(arg, "--render") == 0) {
+        g_free(a.render_path);
+        a.render_path = g_strdup(val);
       } else if (!parse_size(val, strcmp(arg, "--width") == 0 ? &a.width
                                                               : &a.height)) {
         fprintf(stderr, "zrcube-gtk: %s takes a whole number from 1 to "
@@ -931,11 +961,16 @@ int main(int argc, char **argv) {
       a.scene_path = g_strdup(arg);
     }
   }
-  if (a.screenshot_path != NULL && a.scene_path == NULL) {
-    fprintf(stderr, "zrcube-gtk: --screenshot needs a scene\n");
+  if ((a.screenshot_path != NULL || a.render_path != NULL) &&
+      a.scene_path == NULL) {
+    fprintf(stderr, "zrcube-gtk: --screenshot and --render need a scene\n");
     return 2;
   }
-  a.exit_status = a.screenshot_path != NULL ? 1 : 0;
+  if (a.screenshot_path != NULL && a.render_path != NULL) {
+    fprintf(stderr, "zrcube-gtk: --screenshot or --render, not both\n");
+    return 2;
+  }
+  a.exit_status = a.screenshot_path != NULL || a.render_path != NULL;
   a.diagnostics = g_string_new(NULL);
   a.gtk = gtk_application_new(NULL, G_APPLICATION_NON_UNIQUE);
   g_signal_connect(a.gtk, "activate", G_CALLBACK(on_activate), &a);
@@ -950,6 +985,7 @@ int main(int argc, char **argv) {
   free(a.png);
   g_free(a.scene_path);
   g_free(a.screenshot_path);
+  g_free(a.render_path);
   g_string_free(a.diagnostics, TRUE);
   return status != 0 ? status : a.exit_status;
 }

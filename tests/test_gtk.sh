@@ -19,7 +19,9 @@
 #     -0.242: (0.5, 0.70) is floor, (0.5, 0.63) and (0.5, 0.77) are
 #     the picture's grey background, as is the corner (0.02, 0.02).
 # A mirrored or shifted projection, a wrong aspect ratio, a missing
-# plane patch or a missing object fails one of these.  A scene with an
+# plane patch or a missing object fails one of these.  --render (the
+# Render button's worker thread and Save) writes the same bytes as
+# zrcube at the same size.  A scene with an
 # error exits 1 and prints the error with its file, line and column; a
 # bad option exits 2.
 #
@@ -115,6 +117,18 @@ for fx, fy, want in checks:
 sys.exit(1 if bad else 0)
 PY
 fi
+
+# Render, as the button does on its worker thread, and Save: the same
+# bytes as zrcube's picture of the scene at the same size.
+run_gui --render "$work/gui.png" "$ZR_SRCDIR/tests/gtk_scene.pov" \
+  >"$work/out" 2>"$work/err"
+status=$?
+[ $status -eq 0 ] || fail "zrcube-gtk --render exited $status: $(cat "$work/err")"
+"$ZR_BUILDDIR/bin/zrcube" "$ZR_SRCDIR/tests/gtk_scene.pov" +W320 +H240 \
+  +O"$work/cli.png" >"$work/out" 2>&1 ||
+  fail "zrcube on the scene: $(cat "$work/out")"
+cmp -s "$work/gui.png" "$work/cli.png" ||
+  fail "zrcube-gtk's render differs from zrcube's"
 
 # A scene with an error: the message names its place, the exit is 1.
 printf '#version 3.7;\nsphere { <0, 0, 0>, 1\n  pigment { rgb <1, 0, 0> } }\nbox { 1 }\n' \
