@@ -34,6 +34,7 @@
 #include <gtk/gtk.h>
 #include <math.h>
 #include <stdatomic.h>
+#include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -59,6 +60,10 @@ typedef struct app {
   char *render_path; /* --render: render, save here, quit */
   int width, height;
   int exit_status;
+  /* --orbit: the view a drag and scroll would give, applied after the
+     scene loads (yaw and pitch in degrees, zoom a factor). */
+  double orbit[3];
+  bool have_orbit;
   /* The scene and what it draws. */
   zr_context *ctx;
   zr_scene *scene;
@@ -571,6 +576,11 @@ static void load_scene(app *a, const char *path) {
   g_free(title);
   a->gl_dirty = TRUE;
   reset_view(a);
+  if (a->have_orbit) {
+    a->yaw = a->orbit[0] * M_PI / 180.0;
+    a->pitch = a->orbit[1] * M_PI / 180.0;
+    a->zoom = a->orbit[2];
+  }
   update_buttons(a);
 }
 
@@ -896,8 +906,9 @@ static void on_shutdown(GApplication *gapp, app *a) {
 
 static void usage(FILE *to) {
   fprintf(to,
-          "Usage: zrcube-gtk [--width N] [--height N] [--screenshot FILE | "
-          "--render FILE]\n                  [SCENE.pov]\n"
+          "Usage: zrcube-gtk [--width N] [--height N] [--orbit YAW,PITCH,ZOOM]\n"
+          "                  [--screenshot FILE | --render FILE] "
+          "[SCENE.pov]\n"
           "Previews a POV-Ray scene with OpenGL from its camera, renders it "
           "with libzrcube\nand saves the picture.  --screenshot draws the "
           "preview once into FILE (PNG)\nand exits; --render renders as the "
@@ -929,6 +940,25 @@ int main(int argc, char **argv) {
     if (strcmp(arg, "--version") == 0) {
       printf("zrcube-gtk (libzrcube %s)\n", zr_version());
       return 0;
+    }
+    if (strcmp(arg, "--orbit") == 0) {
+      char *end = NULL;
+      const char *val = i + 1 < argc ? argv[++i] : "";
+      int k = 0;
+      for (const char *q = val; k < 3; k++, q = end + 1) {
+        a.orbit[k] = strtod(q, &end);
+        if (end == q || !isfinite(a.orbit[k]) || (k < 2 && *end != ',') ||
+            (k == 2 && *end != '\0'))
+          break;
+      }
+      if (k < 3 || !(a.orbit[2] >= 1e-3 && a.orbit[2] <= 1e3)) {
+        fprintf(stderr, "zrcube-gtk: --orbit takes YAW,PITCH,ZOOM (degrees, "
+                        "degrees, a factor from 0.001 to 1000), not \"%s\"\n",
+                val);
+        return 2;
+      }
+      a.have_orbit = true;
+      continue;
     }
     if (strcmp(arg, "--width") == 0 || strcmp(arg, "--height") == 0 ||
         strcmp(arg, "--screenshot") == 0 || strcmp(arg, "--render") == 0) {

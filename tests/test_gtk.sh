@@ -19,7 +19,9 @@
 #     -0.242: (0.5, 0.70) is floor, (0.5, 0.63) and (0.5, 0.77) are
 #     the picture's grey background, as is the corner (0.02, 0.02).
 # A mirrored or shifted projection, a wrong aspect ratio, a missing
-# plane patch or a missing object fails one of these.  --render (the
+# plane patch or a missing object fails one of these; the orbit's half
+# turn and zoom (--orbit, what a drag and the wheel do) move them where
+# the turned camera puts them.  --render (the
 # Render button's worker thread and Save) writes the same bytes as
 # zrcube at the same size.  A scene with an
 # error exits 1 and prints the error with its file, line and column; a
@@ -61,27 +63,18 @@ run_gui() {
   timeout 180 xvfb-run -a -s "-screen 0 1024x768x24" "$gui" "$@"
 }
 
-run_gui --screenshot "$work/shot.png" "$ZR_SRCDIR/tests/gtk_scene.pov" \
-  >"$work/out" 2>"$work/err"
-status=$?
-if [ $status -eq 3 ]; then
-  echo "test_gtk.sh: the X server gives no OpenGL here; skipped:"
-  cat "$work/err"
-  exit 77
-fi
-if [ $status -ne 0 ] || [ ! -s "$work/shot.png" ]; then
-  fail "zrcube-gtk --screenshot exited $status"
-  cat "$work/err" >&2
-else
-  /usr/bin/python3 - "$work/shot.png" <<'PY' || fail "pixel checks"
+# check.py IMAGE FX,FY=KIND ...: the picture is 4:3 (the render's
+# 320 x 240, whatever size the window gave it) and the pixel at each
+# fraction (FX, FY) of its width and height is of that kind.
+cat >"$work/check.py" <<'PY'
 import sys
 from skimage import io
 
 img = io.imread(sys.argv[1])[..., :3].astype(int)
 h, w = img.shape[:2]
-# The render's aspect ratio, 320 x 240, whatever size the window gave.
 ok = abs(w / h - 4 / 3) < 0.02
-print('picture %d x %d: %s' % (w, h, 'ok' if ok else 'FAIL (not 4:3)'))
+print('%s: %d x %d %s' % (sys.argv[1].split('/')[-1], w, h,
+                          'ok' if ok else 'FAIL (not 4:3)'))
 bad = 0 if ok else 1
 
 
@@ -99,23 +92,61 @@ def kind(p):
     return 'other %s' % (list(p),)
 
 
-checks = [
-    (0.650, 0.50, 'red'), (0.590, 0.50, 'red'), (0.710, 0.50, 'red'),
-    (0.550, 0.50, 'background'), (0.750, 0.50, 'background'),
-    (0.350, 0.50, 'green'), (0.270, 0.50, 'green'),
-    (0.220, 0.50, 'background'),
-    (0.500, 0.70, 'blue'), (0.500, 0.63, 'background'),
-    (0.500, 0.77, 'background'), (0.020, 0.02, 'background'),
-]
-for fx, fy, want in checks:
+for arg in sys.argv[2:]:
+    where, want = arg.split('=')
+    fx, fy = (float(v) for v in where.split(','))
     x, y = int(fx * w), int(fy * h)
     got = kind(tuple(int(c) for c in img[y, x]))
     good = got == want
     bad += not good
-    print('(%.3f, %.3f) pixel %d,%d: %s, want %s %s'
+    print('  (%.3f, %.3f) pixel %d,%d: %s, want %s %s'
           % (fx, fy, x, y, got, want, 'ok' if good else 'FAIL'))
 sys.exit(1 if bad else 0)
 PY
+
+# shot NAME [OPTION ...]: a screenshot of the scene into $work/NAME.png;
+# exits the test with 77 when there is no OpenGL.
+shot() {
+  name=$1
+  shift
+  run_gui "$@" --screenshot "$work/$name.png" \
+    "$ZR_SRCDIR/tests/gtk_scene.pov" >"$work/out" 2>"$work/err"
+  status=$?
+  if [ $status -eq 3 ]; then
+    echo "test_gtk.sh: the X server gives no OpenGL here; skipped:"
+    cat "$work/err"
+    exit 77
+  fi
+  if [ $status -ne 0 ] || [ ! -s "$work/$name.png" ]; then
+    fail "zrcube-gtk $* --screenshot exited $status"
+    cat "$work/err" >&2
+    return 1
+  fi
+}
+
+if shot scene; then
+  /usr/bin/python3 "$work/check.py" "$work/scene.png" \
+    0.650,0.50=red 0.590,0.50=red 0.710,0.50=red \
+    0.550,0.50=background 0.750,0.50=background \
+    0.350,0.50=green 0.270,0.50=green 0.220,0.50=background \
+    0.500,0.70=blue 0.500,0.63=background 0.500,0.77=background \
+    0.020,0.02=background || fail "pixel checks of the scene's view"
+fi
+# The orbit (what a drag and the wheel do), about the middle of the
+# finite objects' box, the origin here.  Half a turn about the sky puts
+# the camera at <0, 0, 10> with right along -x: the sphere lands at
+# u = -0.15, the box at 0.15.  Zoom 2 puts it at <0, 0, -20>: the
+# sphere's centre at u = 2 / (4/3 * 20) = 0.075, its outline 0.037 W
+# from there.
+if shot half_turn --orbit 180,0,1; then
+  /usr/bin/python3 "$work/check.py" "$work/half_turn.png" \
+    0.350,0.50=red 0.650,0.50=green 0.500,0.50=background ||
+    fail "pixel checks after half a turn"
+fi
+if shot zoom --orbit 0,0,2; then
+  /usr/bin/python3 "$work/check.py" "$work/zoom.png" \
+    0.575,0.50=red 0.425,0.50=green 0.650,0.50=background \
+    0.350,0.50=background || fail "pixel checks zoomed out"
 fi
 
 # Render, as the button does on its worker thread, and Save: the same
