@@ -906,7 +906,8 @@ static void on_shutdown(GApplication *gapp, app *a) {
 
 static void usage(FILE *to) {
   fprintf(to,
-          "Usage: zrcube-gtk [--width N] [--height N] [--orbit YAW,PITCH,ZOOM]\n"
+          "Usage: zrcube-gtk [--width N] [--height N] "
+          "[--orbit YAW,PITCH,ZOOM]\n"
           "                  [--screenshot FILE | --render FILE] "
           "[SCENE.pov]\n"
           "Previews a POV-Ray scene with OpenGL from its camera, renders it "

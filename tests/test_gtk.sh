@@ -154,7 +154,8 @@ fi
 run_gui --render "$work/gui.png" "$ZR_SRCDIR/tests/gtk_scene.pov" \
   >"$work/out" 2>"$work/err"
 status=$?
-[ $status -eq 0 ] || fail "zrcube-gtk --render exited $status: $(cat "$work/err")"
+[ $status -eq 0 ] ||
+  fail "zrcube-gtk --render exited $status: $(cat "$work/err")"
 "$ZR_BUILDDIR/bin/zrcube" "$ZR_SRCDIR/tests/gtk_scene.pov" +W320 +H240 \
   +O"$work/cli.png" >"$work/out" 2>&1 ||
   fail "zrcube on the scene: $(cat "$work/out")"
@@ -162,8 +163,8 @@ cmp -s "$work/gui.png" "$work/cli.png" ||
   fail "zrcube-gtk's render differs from zrcube's"
 
 # A scene with an error: the message names its place, the exit is 1.
-printf '#version 3.7;\nsphere { <0, 0, 0>, 1\n  pigment { rgb <1, 0, 0> } }\nbox { 1 }\n' \
-  >"$work/bad.pov"
+printf '%s\n' '#version 3.7;' 'sphere { <0, 0, 0>, 1' \
+  '  pigment { rgb <1, 0, 0> } }' 'box { 1 }' >"$work/bad.pov"
 run_gui --screenshot "$work/bad_shot.png" "$work/bad.pov" \
   >"$work/out" 2>"$work/err"
 status=$?
