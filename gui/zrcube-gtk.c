@@ -58,6 +58,13 @@ typedef struct app {
   char *scene_path;
   char *screenshot_path;
   char *render_path; /* --render: render, save here, quit */
+  char *load_path;   /* the scene being or last loaded */
+  zr_status load_status;
+  /* What the load's worker made, taken over by load_done: the main
+     loop draws scene and preview meanwhile, so the worker never
+     writes those. */
+  zr_scene *loaded_scene;
+  zr_preview *loaded_preview;
   int width, height;
   int exit_status;
   /* --orbit: the view a drag and scroll would give, applied after the
@@ -509,9 +516,30 @@ static void reset_view(app *a) {
   gtk_gl_area_queue_render(GTK_GL_AREA(a->gl_area));
 }
 
-/* Parses path into a new scene and preview, replacing the old ones;
-   on failure shows the messages (file:line:column) and keeps nothing. */
+static void on_render_clicked(GtkButton *button, app *a);
+static gboolean load_done(gpointer data);
+
+/* The worker's half of a load: parse and preview, nothing of GTK. */
+static gpointer load_thread(gpointer data) {
+  app *a = data;
+  zr_status st = zr_scene_parse_file(a->ctx, a->load_path, &a->loaded_scene);
+  if (st == ZR_OK)
+    st = zr_scene_preview(a->ctx, a->loaded_scene, 0, &a->loaded_preview);
+  a->load_status = st;
+  g_idle_add(load_done, a);
+  return NULL;
+}
+
+/*
+ * Parses path into a new scene and preview, replacing the old ones, on
+ * the worker thread (a large scene takes seconds to parse and preview:
+ * 9 s for the corpus' spacecraft cell_comparison.pov, and the window
+ * must keep drawing); load_done shows the result.  Cancel stops the
+ * parse.
+ */
 static void load_scene(app *a, const char *path) {
+  if (a->worker != NULL)
+    return;
   zr_preview_free(a->preview);
   a->preview = NULL;
   zr_scene_free(a->scene);
@@ -522,25 +550,60 @@ static void load_scene(app *a, const char *path) {
   a->png = NULL;
   a->png_size = 0;
   g_string_truncate(a->diagnostics, 0);
+  g_free(a->load_path);
+  a->load_path = g_strdup(path);
+  a->gl_dirty = TRUE;
+  gtk_gl_area_queue_render(GTK_GL_AREA(a->gl_area));
   zr_status st = zr_context_new(&a->ctx);
   if (st == ZR_OK) {
     zr_context_set_diag(a->ctx, on_diag, a);
     st = zr_context_set_render_size(a->ctx, a->width, a->height);
   }
-  if (st == ZR_OK)
-    st = zr_scene_parse_file(a->ctx, path, &a->scene);
-  if (st == ZR_OK)
-    st = zr_scene_preview(a->ctx, a->scene, 0, &a->preview);
+  if (st != ZR_OK) {
+    a->load_status = st;
+    load_done(a);
+    return;
+  }
+  char *title = g_path_get_basename(path);
+  char *s = g_strdup_printf("%s: parsing ...", title);
+  gtk_label_set_text(GTK_LABEL(a->status), s);
+  g_free(s);
+  g_free(title);
+  show_message(a, "", FALSE);
+  a->worker = g_thread_new("load", load_thread, a);
+  update_buttons(a);
+}
+
+/* The main loop's half: on failure shows the messages (file:line:column)
+   and keeps nothing; on success the preview and its status line. */
+static gboolean load_done(gpointer data) {
+  app *a = data;
+  if (a->worker != NULL) {
+    g_thread_join(a->worker);
+    a->worker = NULL;
+  }
+  if (a->ctx != NULL)
+    zr_context_cancel(a->ctx, 0);
+  a->scene = a->loaded_scene;
+  a->preview = a->loaded_preview;
+  a->loaded_scene = NULL;
+  a->loaded_preview = NULL;
+  zr_status st = a->load_status;
+  const char *path = a->load_path;
   char *title = g_path_get_basename(path);
   gtk_window_set_title(GTK_WINDOW(a->window), title);
   if (st != ZR_OK) {
     if (a->diagnostics->len == 0)
       g_string_printf(a->diagnostics, "%s: %s\n", path, zr_status_str(st));
-    show_message(a, a->diagnostics->str, TRUE);
+    show_message(a, a->diagnostics->str, st != ZR_ECANCELLED);
     gtk_label_set_text(GTK_LABEL(a->status), "no scene");
+    zr_preview_free(a->preview);
+    a->preview = NULL;
     zr_scene_free(a->scene);
     a->scene = NULL;
-    if (a->screenshot_path != NULL) {
+    if (a->screenshot_path != NULL || a->render_path != NULL) {
+      if (a->render_path != NULL)
+        fprintf(stderr, "zrcube-gtk: %s", a->diagnostics->str);
       a->exit_status = 1;
       g_idle_add(quit_idle, a);
     }
@@ -582,6 +645,9 @@ static void load_scene(app *a, const char *path) {
     a->zoom = a->orbit[2];
   }
   update_buttons(a);
+  if (a->render_path != NULL && a->scene != NULL)
+    on_render_clicked(NULL, a);
+  return G_SOURCE_REMOVE;
 }
 
 /* ---- rendering on a worker thread ---- */
@@ -887,12 +953,7 @@ static void on_activate(GtkApplication *gtk, app *a) {
     load_scene(a, a->scene_path);
   if (a->screenshot_path != NULL)
     g_timeout_add_seconds(60, screenshot_timeout, a);
-  if (a->render_path != NULL) {
-    if (a->scene != NULL)
-      on_render_clicked(NULL, a);
-    else
-      g_idle_add(quit_idle, a);
-  }
+
   gtk_window_present(GTK_WINDOW(a->window));
 }
 
@@ -1011,12 +1072,15 @@ int main(int argc, char **argv) {
   g_object_unref(a.gtk);
   zr_preview_free(a.preview);
   zr_scene_free(a.scene);
+  zr_preview_free(a.loaded_preview);
+  zr_scene_free(a.loaded_scene);
   zr_context_free(a.ctx);
   zr_image_free(a.image);
   free(a.png);
   g_free(a.scene_path);
   g_free(a.screenshot_path);
   g_free(a.render_path);
+  g_free(a.load_path);
   g_string_free(a.diagnostics, TRUE);
   return status != 0 ? status : a.exit_status;
 }
