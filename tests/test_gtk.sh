@@ -172,6 +172,13 @@ status=$?
 grep -q "bad.pov:4:[0-9]*: error" "$work/err" ||
   fail "the error was not located: $(cat "$work/err")"
 [ ! -e "$work/bad_shot.png" ] || fail "a scene with an error was drawn"
+run_gui --render "$work/bad_render.png" "$work/bad.pov" \
+  >"$work/out" 2>"$work/err"
+status=$?
+[ $status -eq 1 ] || fail "--render of a scene with an error exited $status"
+grep -q "bad.pov:4:[0-9]*: error" "$work/err" ||
+  fail "--render: the error was not located: $(cat "$work/err")"
+[ ! -e "$work/bad_render.png" ] || fail "a scene with an error was rendered"
 
 # Bad command lines, before any display is needed.
 "$gui" --width 0 x.pov >/dev/null 2>"$work/err"
