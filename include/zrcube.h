@@ -918,6 +918,93 @@ ZR_API zr_status zr_radiosity_mesh_image(const zr_radiosity *rad,
                                          float *rgb);
 
 /* ------------------------------------------------------------------ */
+/* Preview: the scene as triangles, for an OpenGL previewer           */
+/* ------------------------------------------------------------------ */
+
+/*
+ * A scene drawn without tracing it (zrcube-gtk's previewer): triangles
+ * in world space, each with the object's pigment at its centre as
+ * colour and its corners' normals, and line segments for what has no
+ * triangles yet.  What each kind of object becomes:
+ *   - triangles, meshes (mesh, mesh2, smooth_triangle): their faces as
+ *     they are (flat normals);
+ *   - spheres, boxes, cylinders and cones (with their caps unless
+ *     open), tori, discs and polygons (the rectangle around the
+ *     polygon, cut to it cell by cell): the exact surfaces of the
+ *     hierarchical radiosity solver, sampled on a grid of detail x
+ *     detail cells (a flat face detail / 4, at least 1, so its
+ *     pigment's pattern shows), two triangles a cell with the
+ *     surface's normals at the corners;
+ *   - the parts of an intersection, difference or merge: their surfaces
+ *     as above, without the cells whose centre the solid does not keep
+ *     (so a cut edge is as ragged as a cell);
+ *   - infinite planes: their section of the radiosity solver's plane
+ *     bounds (the box around every finite object, widened by 10% of its
+ *     diagonal) on a grid of 2 detail x 2 detail cells; left out when
+ *     the scene has no finite object;
+ *   - every other finite object (blob, isosurface, text, prism, lathe,
+ *     sor, superellipsoid, height_field, julia_fractal, parametric,
+ *     sphere_sweep, ovus, quadric and poly with bounds): the 12 edges of
+ *     its world bounding box, as line segments in its pigment's colour;
+ *   - unbounded objects other than planes: left out (counted).
+ * The camera is the scene's after all its modifiers (POV-Ray's camera
+ * vectors): a ray through the image point (u, v) in [-0.5, 0.5]^2 has
+ * the direction direction + u right + v up from location.  Projections
+ * other than perspective are reported by kind for the caller to say it
+ * draws them as perspective.
+ */
+typedef struct zr_preview zr_preview;
+
+typedef struct zr_preview_camera {
+  double location[3];
+  double direction[3];
+  double up[3];
+  double right[3];
+  double sky[3];
+  /* 1 perspective (what a previewer draws exactly), 0 any other
+     projection (orthographic, fisheye, panoramic ...). */
+  int perspective;
+  /* 1 when the scene has a camera block, 0 for POV-Ray's default. */
+  int given;
+} zr_preview_camera;
+
+typedef struct zr_preview_info {
+  size_t triangles;
+  size_t lines;
+  size_t objects_as_triangles; /* primitives with triangles */
+  size_t objects_as_boxes;     /* primitives drawn as bounding boxes */
+  size_t objects_left_out;     /* unbounded, or no area */
+  /* The box around every finite primitive (lo > hi when none). */
+  double lo[3], hi[3];
+} zr_preview_info;
+
+/*
+ * Makes the preview of scene with detail cells a side on curved
+ * surfaces (0: the default, 24; at most 256; ZR_EINVAL outside).
+ * ZR_ENOMEM (with a message through ctx, which may be NULL) when the
+ * triangles do not fit.
+ */
+ZR_API zr_status zr_scene_preview(zr_context *ctx, const zr_scene *scene,
+                                  int detail, zr_preview **out);
+ZR_API void zr_preview_free(zr_preview *preview);
+ZR_API void zr_preview_get_info(const zr_preview *preview,
+                                zr_preview_info *info);
+ZR_API void zr_preview_get_camera(const zr_preview *preview,
+                                  zr_preview_camera *camera);
+/*
+ * The triangles: *xyz receives 9 floats a triangle (its corners, world
+ * space), *normal 9 (a unit normal a corner), *rgb 3 (linear colour in
+ * the scene's working space, filter and transmit left out).  Any of the
+ * pointers may be NULL.  Owned by the preview.  Returns the count.
+ */
+ZR_API size_t zr_preview_triangles(const zr_preview *preview,
+                                   const float **xyz, const float **normal,
+                                   const float **rgb);
+/* The line segments: 6 floats a segment in *xyz, 3 in *rgb. */
+ZR_API size_t zr_preview_lines(const zr_preview *preview, const float **xyz,
+                               const float **rgb);
+
+/* ------------------------------------------------------------------ */
 /* Images                                                             */
 /* ------------------------------------------------------------------ */
 

@@ -200,6 +200,12 @@ TESTS += tests/test_api
 tests_test_api_SOURCES = tests/test_api.c
 tests_test_api_CPPFLAGS = $(TEST_CPPFLAGS)
 tests_test_api_LDADD = $(TEST_LDADD)
+# zr_scene_preview (lib/radiosity/preview.c), through the public API.
+check_PROGRAMS += tests/test_preview
+TESTS += tests/test_preview
+tests_test_preview_SOURCES = tests/test_preview.c
+tests_test_preview_CPPFLAGS = $(TEST_CPPFLAGS)
+tests_test_preview_LDADD = $(TEST_LDADD)
 # The exported symbols are lib/libzrcube.sym's list and zrcube.h's, and
 # every public function is named in a section-3 page (issue 14).
 TESTS += tests/test_symbols.sh tests/test_manpages.sh

@@ -10,7 +10,8 @@ lib_libzrcube_la_SOURCES += \
 	lib/radiosity/refine.c lib/radiosity/solve.c lib/radiosity/io.c \
 	lib/radiosity/workers.c lib/radiosity/workers.h lib/radiosity/trim.c \
 	lib/radiosity/direct.c lib/radiosity/meshimage.c \
-	lib/radiosity/cluster.c lib/radiosity/volume.c
+	lib/radiosity/cluster.c lib/radiosity/volume.c \
+	lib/radiosity/preview.c
 
 check_PROGRAMS += tests/test_formfactor tests/test_nurbs \
 	tests/test_quadtree tests/test_radiosity tests/test_rad_mesh \

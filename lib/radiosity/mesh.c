@@ -110,7 +110,7 @@ bool zr__rad_models(const zr_object *o, size_t *faces) {
 }
 
 /* The bounds that clip infinite planes; false when nothing bounds them. */
-static bool plane_bounds(const zr_scene *scene, zr_vec3 *lo, zr_vec3 *hi) {
+bool zr__rad_plane_bounds(const zr_scene *scene, zr_vec3 *lo, zr_vec3 *hi) {
   bool any = false;
   zr_vec3 l = zr_v3(INFINITY, INFINITY, INFINITY), h = zr_v3_neg(l);
   for (size_t i = 0; i < scene->n_primitives; i++) {
@@ -148,10 +148,11 @@ static bool plane_bounds(const zr_scene *scene, zr_vec3 *lo, zr_vec3 *hi) {
 }
 
 /* The surfaces of one primitive into out[] (room for 6); the count, or
-   -1 when the object has no area. */
-static int primitive_surfaces(const zr_object *o,
-                              const struct zr_mesh *mesh, const zr_vec3 *lo,
-                              const zr_vec3 *hi, zr__surface out[6]) {
+   -1 when the object has no area.  The previewer (preview.c) draws the
+   same surfaces. */
+int zr__rad_primitive_surfaces(const zr_object *o,
+                               const struct zr_mesh *mesh, const zr_vec3 *lo,
+                               const zr_vec3 *hi, zr__surface out[6]) {
   const zr_transform *xf = o->transform;
   zr_status st = ZR_OK;
   int n = 0;
@@ -348,7 +349,7 @@ static zr_status add_primitive(zr_radiosity *rad, zr_context *ctx,
                       "radiosity: cannot make the height_field's faces: %s",
                       zr_status_str(st));
   }
-  int n = primitive_surfaces(o, mesh, lo, hi, geo);
+  int n = zr__rad_primitive_surfaces(o, mesh, lo, hi, geo);
   if (n < 0) {
     zr__diag(ctx, ZR_DIAG_WARNING, ZR_OK, &where,
              "radiosity: this %s has no area (or no bounds); it takes no "
@@ -452,7 +453,7 @@ zr_status zr__rad_mesh_build(zr_radiosity *rad, zr_context *ctx) {
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL,
                     "radiosity: out of memory for %zu surfaces", 6 * np);
   zr_vec3 lo, hi;
-  bool bounded = plane_bounds(scene, &lo, &hi);
+  bool bounded = zr__rad_plane_bounds(scene, &lo, &hi);
   skip_tally tally;
   memset(&tally, 0, sizeof tally);
   for (size_t i = 0; i < scene->n_primitives; i++) {

@@ -239,6 +239,18 @@ void zr__rad_team_buffers_free(zr_radiosity *rad);
 
 /* ---- mesh.c ---- */
 zr_status zr__rad_mesh_build(zr_radiosity *rad, zr_context *ctx);
+/* The bounds that clip infinite planes: the box around every finite
+   primitive, stretched to the axis-aligned planes and widened by 10% of
+   its diagonal; false when nothing bounds them.  The scene previewer
+   (preview.c) clips planes to the same box. */
+bool zr__rad_plane_bounds(const zr_scene *scene, zr_vec3 *lo, zr_vec3 *hi);
+/* The exact surfaces of one primitive (not a CSG node) into out[] (room
+   for 6): mesh is its faces for a mesh or height_field, lo and hi the
+   plane bounds (NULL: planes have none).  The count, or -1 when the
+   object has no area or is of a kind without surfaces. */
+int zr__rad_primitive_surfaces(const zr_object *o, const struct zr_mesh *mesh,
+                               const zr_vec3 *lo, const zr_vec3 *hi,
+                               zr__surface out[6]);
 /* Charges bytes of growth to rad's budget; false (over_budget set) when
    they do not fit. */
 bool zr__rad_charge(zr_radiosity *rad, size_t bytes);
