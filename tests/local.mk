@@ -384,6 +384,10 @@ EXTRA_DIST += tests/test_gi_normal_off.sh tests/gi_normal_off.pov
 # object itself skip the shape (objects/quartic/hyptorus.pov's corners).
 TESTS += tests/test_bounded_poly.sh
 EXTRA_DIST += tests/test_bounded_poly.sh tests/bounded_poly.pov
+# CSG with a disc or a height field, whose inside reaches beyond its box
+# (stock advanced/desk/desk.pov's paperweight).
+TESTS += tests/test_csg_inside.sh
+EXTRA_DIST += tests/test_csg_inside.sh tests/csg_inside.pov
 # A light's negative fade_distance, as povray takes it (the manual's
 # formula as it is: bench/conform/light_fade_negative.sh).
 TESTS += tests/test_light_fade.sh

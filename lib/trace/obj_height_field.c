@@ -485,8 +485,14 @@ double zr__height_field_height(const zr_object *o, double x, double z) {
   return h11 + (1.0 - u) * (h01 - h11) + (1.0 - v) * (h10 - h11);
 }
 
+/* Inside: over the unit square and below the surface, however far below:
+   POV-Ray 3.7 draws the face z = 0.1 of intersection { height_field {
+   function 8, 8 { 0.5 + 0.1*x } } box { <-0.5, -1.4, 0.1>, <1.5, 1.4,
+   0.9> } } for 0 <= x <= 1 from the field down to the box's bottom at
+   y = -1.4, with water_level 0.2 too (tests/csg_inside.pov); the manual
+   does not say. */
 bool zr__height_field_inside(const zr_object *o, zr_vec3 p) {
-  if (!(p.x >= 0.0 && p.x <= 1.0 && p.z >= 0.0 && p.z <= 1.0 && p.y >= 0.0))
+  if (!(p.x >= 0.0 && p.x <= 1.0 && p.z >= 0.0 && p.z <= 1.0))
     return false;
   return p.y < zr__height_field_height(o, p.x, p.z);
 }

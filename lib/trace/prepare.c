@@ -125,7 +125,12 @@ static zr_object *resolve_part(zr_scene *scene, const zr_object *object,
     return NULL;
   for (size_t i = 0; i < n; i++) {
     struct zr_csg_box *b = &copy->u.csg.boxes[i];
-    b->bounded = zr__object_bounds(copy->u.csg.children[i], &b->lo, &b->hi);
+    /* csg.c takes a point outside a child's box to be outside the
+       child, so a child whose inside reaches beyond its box (a disc, a
+       height field: zr__box_holds_inside) gets none. */
+    b->bounded =
+        zr__box_holds_inside(copy->u.csg.children[i]) &&
+        zr__object_bounds(copy->u.csg.children[i], &b->lo, &b->hi);
     b->holds_outside = false;
     if (!b->bounded)
       b->bounded = b->holds_outside = zr__complement_bounds(
