@@ -388,6 +388,10 @@ EXTRA_DIST += tests/test_bounded_poly.sh tests/bounded_poly.pov
 # (stock advanced/desk/desk.pov's paperweight).
 TESTS += tests/test_csg_inside.sh
 EXTRA_DIST += tests/test_csg_inside.sh tests/csg_inside.pov
+# Smooth height field normals as POV-Ray makes them (stock
+# advanced/glasschess.pov's board).
+TESTS += tests/test_hf_smooth.sh
+EXTRA_DIST += tests/test_hf_smooth.sh tests/hf_smooth.pov
 # A light's negative fade_distance, as povray takes it (the manual's
 # formula as it is: bench/conform/light_fade_negative.sh).
 TESTS += tests/test_light_fade.sh
