@@ -140,7 +140,7 @@ zr_status zr__csg_keep_whole_box(zr_arena *arena, zr_object *part) {
 /* The shapes whose inside lies within their box (bounds.c's box holds
    every point their inside test takes): the solids bounded by their
    own surface.  Not a disc (its inside is its plane's half-space), a
-   height field (its inside starts at y = 0, below its lowest sample),
+   height field (its inside reaches down without end below it),
    a mesh (inside_vector's parity of an open mesh), a blob (a threshold
    at or below zero holds all space), nor the unbounded shapes. */
 static bool inside_within_box(zr_object_kind kind) {
