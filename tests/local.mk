@@ -386,6 +386,18 @@ EXTRA_DIST += tests/test_parametric_gradient.sh tests/parametric_gradient.pov
 # (the corpus' pneumaticBoat.pov sand): the surface's own hemisphere.
 TESTS += tests/test_gi_normal_off.sh
 EXTRA_DIST += tests/test_gi_normal_off.sh tests/gi_normal_off.pov
+# bounded_by on a poly, cubic or quartic: rays that miss the bounding
+# object itself skip the shape (objects/quartic/hyptorus.pov's corners).
+TESTS += tests/test_bounded_poly.sh
+EXTRA_DIST += tests/test_bounded_poly.sh tests/bounded_poly.pov
+# CSG with a disc or a height field, whose inside reaches beyond its box
+# (stock advanced/desk/desk.pov's paperweight).
+TESTS += tests/test_csg_inside.sh
+EXTRA_DIST += tests/test_csg_inside.sh tests/csg_inside.pov
+# Smooth height field normals as POV-Ray makes them (stock
+# advanced/glasschess.pov's board).
+TESTS += tests/test_hf_smooth.sh
+EXTRA_DIST += tests/test_hf_smooth.sh tests/hf_smooth.pov
 # A light's negative fade_distance, as povray takes it (the manual's
 # formula as it is: bench/conform/light_fade_negative.sh).
 TESTS += tests/test_light_fade.sh

@@ -173,8 +173,12 @@ zr_object *zr__sdl_height_field_function(zr_sdl_parser *p,
                   "parameters", zr__fn_params(fn));
     return NULL;
   }
-  /* The function's sample (i, j) is image pixel (i, j), row j. */
-  float *g = zr__sdl_alloc(p, (size_t)w * (size_t)h * sizeof *g);
+  /* The function's sample (i, j) is image pixel (i, j), row j, kept as
+     a 16-bit code, the value times 65535 rounded down, as POV-Ray 3.7
+     keeps it: its height_field of function 5, 5 { 100.3/65535 } and of
+     { 100.7/65535 } both stand at 100/65535 (trace() through #debug),
+     and the smooth normals (obj_height_field.c) are made from the codes. */
+  uint16_t *g = zr__sdl_alloc(p, (size_t)w * (size_t)h * sizeof *g);
   if (!g)
     return NULL;
   for (int j = 0; j < h; j++)
@@ -182,9 +186,9 @@ zr_object *zr__sdl_height_field_function(zr_sdl_parser *p,
       double args[3] = {(double)i / (w - 1), (double)j / (h - 1), 0.0};
       double v = zr__fn_eval(fn, args);
       v = isfinite(v) ? fmin(fmax(v, 0.0), 1.0) : 0.0;
-      g[(size_t)j * w + i] = (float)v;
+      g[(size_t)j * w + i] = (uint16_t)floor(v * 65535.0);
     }
-  return hf_new(p, loc, g, 32, w, h);
+  return hf_new(p, loc, g, 16, w, h);
 }
 
 bool zr__sdl_height_field_item(zr_sdl_parser *p, zr_object *o, int token,

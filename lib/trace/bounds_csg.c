@@ -308,8 +308,16 @@ static void narrow_leaf(const zr_object *o, const zr_transform *frame,
       box->empty = !narrow_axis(&q, box, i);
     return;
   }
+  /* A height field holds points below its box (zr__box_holds_inside),
+     where the other parts' surfaces then count: no limit from it.  A
+     disc's box does limit the intersection's box although the disc
+     holds a half-space: POV-Ray 3.7 skips such an intersection for the
+     rays that miss the disc's flat box (tests/csg_inside.pov: it draws
+     intersection { sphere { -0.5*y, 1 } disc { 0, -y, 1.5 } }, seen from
+     above, as the cap cut off where the rays pass the disc's plane
+     outside its radius, and zRcube's picture is now the same pixels). */
   zr_vec3 lo, hi;
-  if (!zr__object_bounds(o, &lo, &hi))
+  if (o->kind == ZR_OBJ_HEIGHT_FIELD || !zr__object_bounds(o, &lo, &hi))
     return;
   if (frame)
     zr__box_through(frame->inv, &lo, &hi);

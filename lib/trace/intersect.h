@@ -91,6 +91,14 @@ bool zr__primitive_bounds(const zr_object *object, zr_vec3 *lo,
    (prepare.c, read from u.csg.boxes) do not give one. */
 bool zr__complement_bounds(const zr_object *object, zr_vec3 *lo,
                            zr_vec3 *hi);
+/* Whether every point the object's inside test takes lies in its box
+   (zr__object_bounds; true when it has none), so that a CSG object may
+   answer "not inside this part" outside the part's box and keep only
+   the other parts' crossings that lie in it.  False for a disc (its
+   inside is its plane's half-space) and a height field (its inside
+   reaches below its lowest sample), and for a union or merge, or a clip,
+   with such a part. */
+bool zr__box_holds_inside(const zr_object *object);
 /* The CSG part's box before its own clip, kept in its u.csg.whole
    (NULL before) when the scene is prepared: zr__object_bounds() then
    reads it instead of narrowing it from the children again. */

@@ -125,7 +125,12 @@ static zr_object *resolve_part(zr_scene *scene, const zr_object *object,
     return NULL;
   for (size_t i = 0; i < n; i++) {
     struct zr_csg_box *b = &copy->u.csg.boxes[i];
-    b->bounded = zr__object_bounds(copy->u.csg.children[i], &b->lo, &b->hi);
+    /* csg.c takes a point outside a child's box to be outside the
+       child, so a child whose inside reaches beyond its box (a disc, a
+       height field: zr__box_holds_inside) gets none. */
+    b->bounded =
+        zr__box_holds_inside(copy->u.csg.children[i]) &&
+        zr__object_bounds(copy->u.csg.children[i], &b->lo, &b->hi);
     b->holds_outside = false;
     if (!b->bounded)
       b->bounded = b->holds_outside = zr__complement_bounds(
@@ -169,7 +174,11 @@ static zr_status flatten(zr_scene *scene, zr_object *object,
      object) is handed down too: a part the tracer cannot box itself (a
      quartic torus, a poly) takes the bound's box (bounds.c), as POV-Ray
      tests such a part only for rays that meet the bound. */
-  if (object->bound)
+  /* A plane's own bound is ignored, as POV-Ray 3.7 ignores it: plane { y,
+     0 bounded_by { box { -1, 1 } } } is the whole plane in its picture
+     (tests/bounded_poly.pov case 4; a union's bound still limits a plane
+     in it, case 5), where the bound's box cut a square out of it. */
+  if (object->bound && object->kind != ZR_OBJ_PLANE)
     bound = object->bound;
   if (object->kind == ZR_OBJ_UNION) {
     const zr_object *inner = clip_both(scene, clip, object->clip);
