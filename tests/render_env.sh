@@ -23,18 +23,20 @@ trap 'rm -rf "$work"' EXIT INT TERM
 cd "$work" || exit 99
 
 # pixel_case SCENE TAG DECLARE ROW,COL=R,G,B...: renders SCENE at 16x12
-# with Declare=DECLARE into zTAG.png and checks the given pixels (povray's
-# recorded values) with tests/pixel_check.py, each channel within 2
-# levels; with povray installed its own render is compared too.
+# (pixel_w x pixel_h when the test sets them) with Declare=DECLARE into
+# zTAG.png and checks the given pixels (povray's recorded values) with
+# tests/pixel_check.py, each channel within 2 levels; with povray
+# installed its own render is compared too.
 pixel_case() {
   pc_scene=$1 pc_tag=$2 pc_declare=$3
   shift 3
-  timeout 60 "$zrcube" +I"$pc_scene" +Oz$pc_tag.png +W16 +H12 -D +WT1 \
+  pc_size="+W${pixel_w:-16} +H${pixel_h:-12}"
+  timeout 60 "$zrcube" +I"$pc_scene" +Oz$pc_tag.png $pc_size -D +WT1 \
     Declare=$pc_declare </dev/null >z$pc_tag.log 2>&1 ||
     { cat z$pc_tag.log >&2; return 1; }
   pc_ref=""
   if command -v povray >/dev/null 2>&1 &&
-     timeout 60 povray +I"$pc_scene" +Op$pc_tag.png +W16 +H12 -D -A +WT1 \
+     timeout 60 povray +I"$pc_scene" +Op$pc_tag.png $pc_size -D -A +WT1 \
        -GA Declare=$pc_declare </dev/null >p$pc_tag.log 2>&1; then
     pc_ref="--ref p$pc_tag.png"
   fi

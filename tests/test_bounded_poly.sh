@@ -31,19 +31,5 @@ recorded_2="12,22=209,209,209 4,13=0,0,0 5,16=0,0,0 15,27=0,0,0"
 recorded_3=$recorded_2
 recorded_4="20,2=168,168,168 20,29=118,118,118 14,16=117,117,117"
 recorded_5="20,2=0,0,0 20,29=0,0,0 14,16=117,117,117 5,16=143,143,143"
-fail=0
-for k in 1 2 3 4 5; do
-  echo "case $k:"
-  timeout 60 "$zrcube" +I"$scene" +Oz$k.png +W32 +H24 -D +WT1 Declare=K=$k \
-    </dev/null >z$k.log 2>&1 || { cat z$k.log >&2; fail=1; continue; }
-  ref=""
-  if command -v povray >/dev/null 2>&1 &&
-     timeout 60 povray +I"$scene" +Op$k.png +W32 +H24 -D -A +WT1 -GA \
-       Declare=K=$k </dev/null >p$k.log 2>&1; then
-    ref="--ref p$k.png"
-  fi
-  eval "values=\$recorded_$k"
-  /usr/bin/python3 "$srcdir/tests/pixel_check.py" z$k.png $values $ref ||
-    fail=1
-done
-exit $fail
+pixel_w=32 pixel_h=24
+pixel_cases "$scene" K "1 2 3 4 5"

@@ -36,19 +36,5 @@ recorded_2="11,14=206,206,206 12,15=207,207,207 12,18=190,190,190"
 recorded_3="8,11=203,203,203 12,14=202,202,202 20,20=199,199,199"
 recorded_4="4,12=203,203,203 14,11=0,0,0 16,14=0,0,0 20,20=0,0,0"
 recorded_5="8,12=203,203,203 12,19=200,200,200 22,19=197,197,197 12,8=0,0,0"
-fail=0
-for k in 1 2 3 4 5; do
-  echo "case $k:"
-  timeout 60 "$zrcube" +I"$scene" +Oz$k.png +W32 +H24 -D +WT1 Declare=K=$k \
-    </dev/null >z$k.log 2>&1 || { cat z$k.log >&2; fail=1; continue; }
-  ref=""
-  if command -v povray >/dev/null 2>&1 &&
-     timeout 60 povray +I"$scene" +Op$k.png +W32 +H24 -D -A +WT1 -GA \
-       Declare=K=$k </dev/null >p$k.log 2>&1; then
-    ref="--ref p$k.png"
-  fi
-  eval "values=\$recorded_$k"
-  /usr/bin/python3 "$srcdir/tests/pixel_check.py" z$k.png $values $ref ||
-    fail=1
-done
-exit $fail
+pixel_w=32 pixel_h=24
+pixel_cases "$scene" K "1 2 3 4 5"
