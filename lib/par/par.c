@@ -46,6 +46,7 @@
 #include "par/nompi.h" /* configure --without-mpi: one process */
 #endif
 #include <sched.h>
+#include <sys/mman.h>
 #ifdef __linux__
 #include <arpa/inet.h>
 #include <dirent.h>
@@ -1018,6 +1019,48 @@ static float *float_alloc(size_t n, int zero) {
   return p;
 }
 
+/*
+ * n floats, all 0, for a buffer the render may not have written
+ * everywhere before it reads it (the centres of pass 1, the picture with
+ * alpha): from 2 MiB on a fresh anonymous mapping, zero as the kernel
+ * gives it, so its pages are first touched by the rows that write them,
+ * during the render the ranks share, instead of by a memset on every
+ * rank before it (float_alloc's zero: 48 MiB of centres at 2048^2 with
+ * +A, bench/results/session18-2026-12-04.md).  Below 2 MiB, or where
+ * mappings fail, float_alloc's.  Freed with float_unmap(p, n).
+ */
+static float *float_zeroed(size_t n) {
+  if (n > (SIZE_MAX - ZR__HUGE_PAGE) / sizeof(float))
+    return NULL;
+  size_t bytes = (n ? n : 1) * sizeof(float);
+  if (bytes < ZR__HUGE_PAGE)
+    return calloc(bytes, 1);
+  bytes = (bytes + ZR__HUGE_PAGE - 1) & ~(ZR__HUGE_PAGE - 1);
+#ifdef MAP_ANONYMOUS
+  void *p = mmap(NULL, bytes, PROT_READ | PROT_WRITE,
+                 MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  if (p == MAP_FAILED)
+    return NULL;
+  zr__mem_advise_huge(p, bytes);
+  return p;
+#else
+  return float_alloc(n, 1);
+#endif
+}
+
+static void float_unmap(float *p, size_t n) {
+  if (!p)
+    return;
+  size_t bytes = (n ? n : 1) * sizeof(float);
+#ifdef MAP_ANONYMOUS
+  if (bytes >= ZR__HUGE_PAGE) {
+    munmap(p, (bytes + ZR__HUGE_PAGE - 1) & ~(ZR__HUGE_PAGE - 1));
+    return;
+  }
+#endif
+  free(p);
+}
+
 zr_status zr__par_solo(const zr_par *par, zr_par **out) {
   zr_par *solo = calloc(1, sizeof *solo);
   if (!solo)
@@ -1230,11 +1273,11 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
     pr.done[0] = calloc((size_t)pr.bands, 1);
     pr.done[1] = calloc((size_t)pr.bands, 1);
     if (par->rank == 0 && channels == 4)
-      pr.image = float_alloc(image_floats, 1);
+      pr.image = float_zeroed(image_floats);
     else
       pr.image = par->rank == 0 ? zr_image_pixels(job->image) : NULL;
     if (aa)
-      pr.centres = float_alloc(image_floats, 1);
+      pr.centres = float_zeroed(image_floats);
     mine = float_alloc(band_floats, 0);
     band = float_alloc(band_floats, 0);
     rank_major = float_alloc(band_floats, 0);
@@ -1243,7 +1286,7 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
         (par->rank == 0 && channels == 4 &&
          zr_image_add_alpha(job->image) != ZR_OK))
       s = ZR_ENOMEM;
-    if (pr.image && !(channels == 3 && job->image_zero)) {
+    if (pr.image && channels == 3 && !job->image_zero) {
       /* The picture (lib/image's) is still untouched here when it is
          fresh: its pages can still be huge ones.  One known to be zero
          is left untouched (job->image_zero): bench/timeline.sh, terrain
@@ -1471,7 +1514,7 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
   if (s == ZR_OK && par->rank == 0 && job->writer)
     zr__par_writer_rows(job->writer, height);
   if (channels == 4)
-    free(pr.image);
+    float_unmap(pr.image, image_floats);
   job->render_seconds = zr__par_now() - start;
   zr__par_mark("render: last chunk done");
   if (s == ZR_OK)
@@ -1482,7 +1525,7 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
   free(rr.at);
   free(pr.done[0]);
   free(pr.done[1]);
-  free(pr.centres);
+  float_unmap(pr.centres, image_floats);
   free(mine);
   free(band);
   free(rank_major);
