@@ -657,12 +657,51 @@ static zr_status digest_observer(const char *path, const char *bytes,
 }
 
 /* Rank 0 of several also keeps what it read, for ranks that could not
-   read the same files themselves. */
+   read the same files themselves: small files as a copy, files of
+   BUNDLE_DEFER_FROM bytes or more as their digest only (r->bundle's
+   defer_from), to be read again if another rank needs them
+   (fill_bundle).  Such ranks are rare (another host, a file rank 0
+   wrote meanwhile), and the copy was every run's: 15 MB of fresh pages
+   and a memcpy on rank 0 for bench/peers.sh's terrain, in the parse
+   the other ranks then waited for at the mesh's shared build
+   (bench/results/session18-2026-12-04.md). */
+#define BUNDLE_DEFER_FROM ((size_t)1 << 20)
+
 static zr_status root_observer(const char *path, const char *bytes,
                                size_t size, void *user) {
   run *r = user;
   zr_status s = zr__bundle_record_observer(path, bytes, size, &r->bundle);
   return s == ZR_OK ? digest_observer(path, bytes, size, user) : s;
+}
+
+/* zr__bundle_fill's check: the bytes read again are those parsed, by
+   the size and digest digest_observer recorded. */
+static zr_status same_as_parsed(const char *path, const char *bytes,
+                                size_t size, void *user) {
+  const run *r = user;
+  for (size_t i = 0; i < r->n_digests; i++)
+    if (strcmp(r->digests[i].path, path) == 0)
+      return r->digests[i].size == size &&
+                     r->digests[i].hash == zr__state_digest(bytes, size)
+                 ? ZR_OK
+                 : ZR_EIO;
+  return ZR_EIO;
+}
+
+/* Rank 0, before it sends its files: the deferred ones read again.  A
+   file that changed on disk since rank 0 parsed it cannot be sent as
+   parsed; the run stops with a message rather than let the ranks
+   render two scenes. */
+static zr_status fill_bundle(run *r) {
+  const char *failed = NULL;
+  zr_status s = zr__bundle_fill(&r->bundle, same_as_parsed, r, &failed);
+  if (s != ZR_OK)
+    fprintf(stderr, "zrcube: cannot send '%s' to the other ranks: %s\n",
+            failed ? failed : "?",
+            s == ZR_EIO ? "it changed on disk after rank 0 read it; "
+                          "render again"
+                        : zr_status_str(s));
+  return s;
 }
 
 static void free_digests(run *r) {
@@ -714,6 +753,7 @@ static int read_scene(run *r) {
   int several = zr__par_size(r->par) > 1;
   zr__bundle_init(&r->bundle);
   r->bundle.max_file_size = r->opts.file_limit;
+  r->bundle.defer_from = BUNDLE_DEFER_FROM;
   r->files_hash = ZR_STATE_HASH_START;
   zr__par_mark("parse start");
   double start = zr__par_now(), cpu = zr__par_cpu();
@@ -752,6 +792,11 @@ static int read_scene(run *r) {
     if (agreed != ZR_OK && agreed != ZR_EIO)
       return EXIT_SCENE;
     if (agreed == ZR_EIO) {
+      if (r->rank == 0 && root == ZR_OK) {
+        zr_status filled = fill_bundle(r);
+        if (filled != ZR_OK)
+          root = filled; /* every rank learns it with the bundle */
+      }
       zr_status s = zr__par_share_bundle(r->par, &r->bundle, &root);
       if (s != ZR_OK) {
         if (r->rank == 0)

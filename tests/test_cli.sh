@@ -250,6 +250,32 @@ echo '#declare C = rgb <1, 0, 0>;' >gen.inc
 mpi gen_mpi 0 2 gen.pov $SIZE +Ogen_mpi.png
 same gen.png gen_mpi.png
 
+# The same with an include of more than a mebibyte, which rank 0 keeps
+# as its digest only and reads again when another rank needs it
+# (bin/zrcube.c, BUNDLE_DEFER_FROM): rank 1, which writes nothing, is
+# at its #include before rank 0 has written 1.2 MB, so it finds the red
+# one left there or a part of the blue one, and must get rank 0's.
+cat >gen_big.pov <<'POV'
+#fopen Out "gen_big.inc" write
+#declare I = 0;
+#while (I < 20000)
+#write (Out, "// a line of padding, so this file is more than a MiB.\n")
+#declare I = I + 1;
+#end
+#write (Out, "#declare C = rgb <0, 0, 1>;\n")
+#fclose Out
+#include "gen_big.inc"
+camera { location <0, 1, -4> look_at 0 }
+light_source { <4, 6, -5>, color rgb 1 }
+sphere { <0, 1, 0>, 1 pigment { C } }
+POV
+echo '#declare C = rgb <1, 0, 0>;' >gen_big.inc
+serial gen_big 0 "$ZRCUBE" gen_big.pov $SIZE +Ogen_big.png
+[ "$(wc -c <gen_big.inc)" -gt 1048576 ] || fail "gen_big.inc: not > 1 MiB"
+echo '#declare C = rgb <1, 0, 0>;' >gen_big.inc
+mpi gen_big_mpi 0 2 gen_big.pov $SIZE +Ogen_big_mpi.png
+same gen_big.png gen_big_mpi.png
+
 # The same with a mesh large enough for the ranks to share its build
 # (zr_context_set_team; 16,562 triangles, above obj_mesh.c's 16,384):
 # a rank that finds the old gen_mesh.inc has another mesh, the ranks'

@@ -265,6 +265,80 @@ static void test_par_bundle_records_and_serves(void **state) {
   zr__bundle_free(&received);
 }
 
+/* fill's check in the test: accepts bytes that begin with "big". */
+static zr_status starts_big(const char *path, const char *bytes, size_t size,
+                            void *user) {
+  (void)path;
+  ++*(int *)user;
+  return size >= 3 && memcmp(bytes, "big", 3) == 0 ? ZR_OK : ZR_EIO;
+}
+
+/* A file of defer_from bytes or more is recorded as its path and size
+   only; it cannot travel (serialise, serve) until zr__bundle_fill has
+   read it again, and fill keeps it only if the check accepts it. */
+static void test_par_bundle_defers_big_files(void **state) {
+  (void)state;
+  char dir[] = "/tmp/zr_test_par_XXXXXX";
+  assert_non_null(mkdtemp(dir));
+  char big[64], small[64];
+  snprintf(big, sizeof big, "%s/big.inc", dir);
+  snprintf(small, sizeof small, "%s/small.inc", dir);
+  zr_bundle b;
+  zr__bundle_init(&b);
+  b.defer_from = 8;
+  assert_int_equal(zr__bundle_record_observer(small, "tiny", 4, &b), ZR_OK);
+  assert_int_equal(zr__bundle_record_observer(big, "big bytes", 9, &b),
+                   ZR_OK);
+  assert_int_equal(b.count, 2);
+  assert_non_null(b.files[0].bytes);
+  assert_null(b.files[1].bytes);
+  assert_int_equal(b.files[1].size, 9);
+  /* A second read must have the same size (its bytes are the caller's
+     to compare). */
+  assert_int_equal(zr__bundle_record_observer(big, "big other", 9, &b),
+                   ZR_OK);
+  assert_int_equal(zr__bundle_record_observer(big, "big longer", 10, &b),
+                   ZR_EIO);
+  char *blob = NULL, *bytes = NULL;
+  size_t size = 0;
+  assert_int_equal(zr__bundle_serialise(&b, &blob, &size), ZR_EINVAL);
+  assert_int_equal(zr__bundle_serve_reader(big, &bytes, &size, &b), ZR_EIO);
+
+  /* Gone from disk, changed, another size: refused, still deferred. */
+  int checks = 0;
+  const char *failed = NULL;
+  assert_int_equal(zr__bundle_fill(&b, starts_big, &checks, &failed),
+                   ZR_ENOTFOUND);
+  assert_string_equal(failed, big);
+  write_file(big, "BIG BYTES");
+  assert_int_equal(zr__bundle_fill(&b, starts_big, &checks, &failed), ZR_EIO);
+  assert_int_equal(checks, 1);
+  write_file(big, "big bytes!");
+  assert_int_equal(zr__bundle_fill(&b, starts_big, &checks, &failed), ZR_EIO);
+  assert_int_equal(checks, 1); /* refused by its size, before the check */
+  assert_null(b.files[1].bytes);
+
+  /* The same bytes: kept, and the bundle travels whole. */
+  write_file(big, "big bytes");
+  assert_int_equal(zr__bundle_fill(&b, starts_big, &checks, &failed), ZR_OK);
+  assert_null(failed);
+  assert_int_equal(checks, 2);
+  assert_int_equal(zr__bundle_serialise(&b, &blob, &size), ZR_OK);
+  zr_bundle received;
+  zr__bundle_init(&received);
+  assert_int_equal(zr__bundle_deserialise(&received, blob, size), ZR_OK);
+  assert_int_equal(zr__bundle_serve_reader(big, &bytes, &size, &received),
+                   ZR_OK);
+  assert_int_equal(size, 9);
+  assert_memory_equal(bytes, "big bytes", 10);
+  free(bytes);
+  free(blob);
+  unlink(big);
+  rmdir(dir);
+  zr__bundle_free(&b);
+  zr__bundle_free(&received);
+}
+
 /* ---- rendering ----------------------------------------------------- */
 
 /* Small, but with an edge for antialiasing, a reflection and a shadow. */
@@ -771,6 +845,7 @@ int main(void) {
       cmocka_unit_test(test_par_bundle_roundtrip),
       cmocka_unit_test(test_par_bundle_rejects_malformed),
       cmocka_unit_test(test_par_bundle_records_and_serves),
+      cmocka_unit_test(test_par_bundle_defers_big_files),
       cmocka_unit_test_setup_teardown(test_par_pool_matches_serial_render,
                                       setup_render, teardown_render),
       cmocka_unit_test_setup_teardown(

@@ -90,6 +90,47 @@ zr_status zr__bundle_add(zr_bundle *bundle, const char *path,
   return ZR_OK;
 }
 
+zr_status zr__bundle_add_deferred(zr_bundle *bundle, const char *path,
+                                  size_t size) {
+  zr_status s = zr__bundle_add(bundle, path, NULL, 0);
+  if (s == ZR_OK) {
+    zr_bundle_file *f = &bundle->files[bundle->count - 1];
+    free(f->bytes);
+    f->bytes = NULL;
+    f->size = size;
+  }
+  return s;
+}
+
+static int deferred(const zr_bundle_file *f) { return !f->bytes && f->size; }
+
+static zr_status read_disk(const char *path, unsigned long long limit,
+                           char **bytes, size_t *size);
+
+zr_status zr__bundle_fill(zr_bundle *bundle, zr_read_observer_fn check,
+                          void *user, const char **failed) {
+  *failed = NULL;
+  for (size_t i = 0; i < bundle->count; i++) {
+    zr_bundle_file *f = &bundle->files[i];
+    if (!deferred(f))
+      continue;
+    char *bytes = NULL;
+    size_t size = 0;
+    zr_status s = read_disk(f->path, bundle->max_file_size, &bytes, &size);
+    if (s == ZR_OK && size != f->size)
+      s = ZR_EIO;
+    if (s == ZR_OK)
+      s = check(f->path, bytes, size, user);
+    if (s != ZR_OK) {
+      free(bytes);
+      *failed = f->path;
+      return s;
+    }
+    f->bytes = bytes;
+  }
+  return ZR_OK;
+}
+
 const zr_bundle_file *zr__bundle_find(const zr_bundle *bundle,
                                       const char *path) {
   for (size_t i = 0; i < bundle->count; i++)
@@ -114,6 +155,8 @@ zr_status zr__bundle_serialise(const zr_bundle *bundle, char **out,
                                size_t *size) {
   size_t total = sizeof magic + 8;
   for (size_t i = 0; i < bundle->count; i++) {
+    if (deferred(&bundle->files[i]))
+      return ZR_EINVAL; /* zr__bundle_fill first */
     size_t len = strlen(bundle->files[i].path);
     size_t add = 16 + len + bundle->files[i].size;
     if (add < len || total + add < total)
@@ -220,6 +263,8 @@ zr_status zr__bundle_deserialise(zr_bundle *bundle, const char *bytes,
  * not count, so a scanner may treat the text as a C string.
  */
 static zr_status serve(const zr_bundle_file *f, char **bytes, size_t *size) {
+  if (deferred(f))
+    return ZR_EIO; /* not read again (zr__bundle_fill) */
   if (f->size == SIZE_MAX)
     return ZR_ENOMEM;
   char *copy = malloc(f->size + 1);
@@ -312,9 +357,12 @@ zr_status zr__bundle_record_observer(const char *path, const char *bytes,
   zr_bundle *bundle = user;
   const zr_bundle_file *seen = zr__bundle_find(bundle, path);
   if (seen)
-    return seen->size == size && (size == 0 ||
-                                  memcmp(seen->bytes, bytes, size) == 0)
+    return seen->size == size &&
+                   (size == 0 || deferred(seen) ||
+                    memcmp(seen->bytes, bytes, size) == 0)
                ? ZR_OK
                : ZR_EIO;
+  if (bundle->defer_from && size >= bundle->defer_from)
+    return zr__bundle_add_deferred(bundle, path, size);
   return zr__bundle_add(bundle, path, bytes, size);
 }

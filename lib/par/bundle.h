@@ -16,7 +16,7 @@
 
 typedef struct zr_bundle_file {
   char *path;  /* exactly as the parser asked for it */
-  char *bytes; /* contents, not NUL-terminated */
+  char *bytes; /* contents, not NUL-terminated; NULL while deferred */
   size_t size;
 } zr_bundle_file;
 
@@ -27,6 +27,10 @@ typedef struct zr_bundle {
   /* The record reader refuses a file larger than this (0: no limit),
      before reading it all: the context's file limit. */
   unsigned long long max_file_size;
+  /* zr__bundle_record_observer keeps only the path and size of a file
+     of this many bytes or more (0: keeps every file's bytes); the
+     bytes are read again by zr__bundle_fill if they must travel. */
+  size_t defer_from;
 } zr_bundle;
 
 void zr__bundle_init(zr_bundle *bundle);
@@ -36,6 +40,22 @@ void zr__bundle_free(zr_bundle *bundle);
 zr_status zr__bundle_add(zr_bundle *bundle, const char *path,
                          const char *bytes, size_t size);
 
+/* Appends a copy of path, and size bytes to be read again from disk by
+   zr__bundle_fill (bytes NULL until then). */
+zr_status zr__bundle_add_deferred(zr_bundle *bundle, const char *path,
+                                  size_t size);
+
+/*
+ * Reads every deferred file again from disk (at most max_file_size
+ * bytes) and keeps it when check (path, bytes, size, user) accepts it:
+ * the caller tells the bytes it parsed from other ones.  Stops at the
+ * first file that cannot be read or is refused, with that status (the
+ * check's own, ZR_EIO when the size differs) and *failed naming it;
+ * that file stays deferred.
+ */
+zr_status zr__bundle_fill(zr_bundle *bundle, zr_read_observer_fn check,
+                          void *user, const char **failed);
+
 /* The file recorded under exactly this path, or NULL. */
 const zr_bundle_file *zr__bundle_find(const zr_bundle *bundle,
                                       const char *path);
@@ -43,7 +63,7 @@ const zr_bundle_file *zr__bundle_find(const zr_bundle *bundle,
 /*
  * The wire format: "ZRB1", a 64-bit little-endian file count, then per
  * file a 64-bit path length, the path, a 64-bit size and the bytes.
- * *out is malloc'ed.
+ * *out is malloc'ed.  ZR_EINVAL while a file is deferred.
  */
 zr_status zr__bundle_serialise(const zr_bundle *bundle, char **out,
                                size_t *size);
@@ -64,7 +84,9 @@ zr_status zr__bundle_record_reader(const char *path, char **bytes,
  * A zr_read_observer_fn (user: the zr_bundle) that records what the
  * library's own reader read, which applies the I/O restrictions (rank 0
  * parses with it).  A path read again must give the same bytes, else
- * ZR_EIO: the other ranks would see one version of it.
+ * ZR_EIO: the other ranks would see one version of it (of a deferred
+ * file only the size is compared here; its bytes are the caller's to
+ * check, as zr__bundle_fill's check does).
  */
 zr_status zr__bundle_record_observer(const char *path, const char *bytes,
                                      size_t size, void *user);
