@@ -110,7 +110,8 @@ bool zr__rad_models(const zr_object *o, size_t *faces) {
 }
 
 /* The bounds that clip infinite planes; false when nothing bounds them. */
-bool zr__rad_plane_bounds(const zr_scene *scene, zr_vec3 *lo, zr_vec3 *hi) {
+bool zr__rad_finite_bounds(const zr_scene *scene, zr_vec3 *lo,
+                           zr_vec3 *hi) {
   bool any = false;
   zr_vec3 l = zr_v3(INFINITY, INFINITY, INFINITY), h = zr_v3_neg(l);
   for (size_t i = 0; i < scene->n_primitives; i++) {
@@ -121,7 +122,14 @@ bool zr__rad_plane_bounds(const zr_scene *scene, zr_vec3 *lo, zr_vec3 *hi) {
       any = true;
     }
   }
-  if (!any)
+  *lo = l;
+  *hi = h;
+  return any;
+}
+
+bool zr__rad_plane_bounds(const zr_scene *scene, zr_vec3 *lo, zr_vec3 *hi) {
+  zr_vec3 l, h;
+  if (!zr__rad_finite_bounds(scene, &l, &h))
     return false;
   /* Axis-aligned planes without a transform stretch the box to reach
      them, so the walls of a room of planes meet. */

@@ -339,14 +339,8 @@ zr_status zr_scene_preview(zr_context *ctx, const zr_scene *scene,
   get3(pv->camera.sky, cam->sky);
   pv->camera.perspective = cam->kind == ZR_CAMERA_PERSPECTIVE;
   pv->camera.given = cam->given;
-  zr_vec3 blo = zr_v3(INFINITY, INFINITY, INFINITY), bhi = zr_v3_neg(blo);
-  for (size_t i = 0; i < scene->n_primitives; i++) {
-    zr_vec3 a, b;
-    if (zr__object_bounds(scene->primitives[i], &a, &b)) {
-      blo = zr_v3_min(blo, a);
-      bhi = zr_v3_max(bhi, b);
-    }
-  }
+  zr_vec3 blo, bhi;
+  (void)zr__rad_finite_bounds(scene, &blo, &bhi); /* empty: +inf, -inf */
   get3(pv->info.lo, blo);
   get3(pv->info.hi, bhi);
   zr_vec3 lo, hi;

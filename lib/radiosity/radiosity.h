@@ -239,6 +239,10 @@ void zr__rad_team_buffers_free(zr_radiosity *rad);
 
 /* ---- mesh.c ---- */
 zr_status zr__rad_mesh_build(zr_radiosity *rad, zr_context *ctx);
+/* The box around every finite primitive (the scene previewer's extent,
+   preview.c); false, lo +inf and hi -inf, when there is none. */
+bool zr__rad_finite_bounds(const zr_scene *scene, zr_vec3 *lo,
+                           zr_vec3 *hi);
 /* The bounds that clip infinite planes: the box around every finite
    primitive, stretched to the axis-aligned planes and widened by 10% of
    its diagonal; false when nothing bounds them.  The scene previewer
