@@ -235,6 +235,15 @@ serial warn_quiet 0 "$ZRCUBE" warn.pov $SIZE -q
 # includes it: rank 1, reading its disk, finds the red one or the blue
 # one; with the red it must parse again from the files rank 0 read
 # (bin/zrcube.c, read_scene).  Either way the picture is rank 0's.
+# written NAME: NAME.pov, which writes NAME.inc, alone and under 2
+# ranks with NAME.inc red before each run: the same picture.
+written() {
+  echo '#declare C = rgb <1, 0, 0>;' >"$1.inc"
+  serial "$1" 0 "$ZRCUBE" "$1.pov" $SIZE "+O$1.png"
+  echo '#declare C = rgb <1, 0, 0>;' >"$1.inc"
+  mpi "$1_mpi" 0 2 "$1.pov" $SIZE "+O$1_mpi.png"
+  same "$1.png" "$1_mpi.png"
+}
 cat >gen.pov <<'POV'
 #fopen Out "gen.inc" write
 #write (Out, "#declare C = rgb <0, 0, 1>;\n")
@@ -244,11 +253,7 @@ camera { location <0, 1, -4> look_at 0 }
 light_source { <4, 6, -5>, color rgb 1 }
 sphere { <0, 1, 0>, 1 pigment { C } }
 POV
-echo '#declare C = rgb <1, 0, 0>;' >gen.inc
-serial gen 0 "$ZRCUBE" gen.pov $SIZE +Ogen.png
-echo '#declare C = rgb <1, 0, 0>;' >gen.inc
-mpi gen_mpi 0 2 gen.pov $SIZE +Ogen_mpi.png
-same gen.png gen_mpi.png
+written gen
 
 # The same with an include of more than a mebibyte, which rank 0 keeps
 # as its digest only and reads again when another rank needs it
@@ -269,12 +274,8 @@ camera { location <0, 1, -4> look_at 0 }
 light_source { <4, 6, -5>, color rgb 1 }
 sphere { <0, 1, 0>, 1 pigment { C } }
 POV
-echo '#declare C = rgb <1, 0, 0>;' >gen_big.inc
-serial gen_big 0 "$ZRCUBE" gen_big.pov $SIZE +Ogen_big.png
+written gen_big
 [ "$(wc -c <gen_big.inc)" -gt 1048576 ] || fail "gen_big.inc: not > 1 MiB"
-echo '#declare C = rgb <1, 0, 0>;' >gen_big.inc
-mpi gen_big_mpi 0 2 gen_big.pov $SIZE +Ogen_big_mpi.png
-same gen_big.png gen_big_mpi.png
 
 # The same with a mesh large enough for the ranks to share its build
 # (zr_context_set_team; 16,562 triangles, above obj_mesh.c's 16,384):
