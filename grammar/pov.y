@@ -195,6 +195,7 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
   double num;
   const char *str;
   const double *sphere;
+  const double *corners;
   zr_sdl_sphere_tex sphere_tex;
   zr_sdl_decl_name decl;
   zr_sdl_value value;
@@ -248,7 +249,7 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
    sphere's "sphere { <x, y, z>, r" of plain numbers, read from the
    file's bytes as one token each (lib/sdl/tokens.c); the value points
    at the vectors in the file. */
-%token <str> T_TRIANGLE_RUN "triangle with its corners"
+%token <corners> T_TRIANGLE_RUN "triangle with its corners"
 %token <sphere> T_SPHERE_RUN "sphere with its centre and radius"
 %token <str> T_SMOOTH_TRIANGLE_RUN "smooth_triangle with its corners"
 /* T_SPHERE_RUN and "texture { T } }" after it (directive.c,
@@ -1514,7 +1515,7 @@ object:
 | T_TRIANGLE_RUN
     {
       TRY($$ = zr__sdl_object_new(p, ZR_OBJ_TRIANGLE, &@1));
-      TRY(zr__sdl_triangle_run(p, $1, &@1, $$->u.triangle.p));
+      zr__sdl_triangle_run($1, $$->u.triangle.p);
       zr__sdl_degenerate_triangle(p, $$->u.triangle.p, &@1);
     }
 | T_SMOOTH_TRIANGLE_RUN
@@ -4160,9 +4161,11 @@ int zr__pov_lex(ZR__POV_STYPE *lval, zr_sdl_loc *lloc, zr_sdl_parser *p) {
   case T_STRING:
   case T_IDENTIFIER:
   case T_UNSUPPORTED:
-  case T_TRIANGLE_RUN:
   case T_SMOOTH_TRIANGLE_RUN:
     lval->str = v.str;
+    break;
+  case T_TRIANGLE_RUN:
+    lval->corners = v.corners;
     break;
   case T_SPHERE_RUN:
     lval->sphere = v.sphere;

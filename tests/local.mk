@@ -398,6 +398,8 @@ EXTRA_DIST += tests/test_csg_inside.sh tests/csg_inside.pov
 # advanced/glasschess.pov's board).
 TESTS += tests/test_hf_smooth.sh
 EXTRA_DIST += tests/test_hf_smooth.sh tests/hf_smooth.pov
+TESTS += tests/test_mesh_runs.sh
+EXTRA_DIST += tests/test_mesh_runs.sh tests/mesh_runs.pov tests/mesh_runs.inc
 # A light's negative fade_distance, as povray takes it (the manual's
 # formula as it is: bench/conform/light_fade_negative.sh).
 TESTS += tests/test_light_fade.sh

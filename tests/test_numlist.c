@@ -479,10 +479,17 @@ static void test_numlist_runs_after_runs(void **state) {
                "(%d)", i, t->kind, t->line, t->column, t->length,
                want[i].kind, want[i].line, want[i].column, want[i].length);
   }
-  /* Each points at its vectors, after its '{'. */
-  assert_int_equal(strncmp(file.tokens[3].v.str, "<0,0,0>,<1", 10), 0);
+  /* A triangle's run holds its corners, one after another in the
+     file's corner array; a smooth_triangle's points at its vectors,
+     after its '{'. */
+  static const double first[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  static const double third[9] = {1, 1, 1, 2, 2, 2, 3, 3, 3};
+  assert_memory_equal(file.tokens[2].v.corners, first, sizeof first);
+  assert_memory_equal(file.tokens[3].v.corners, first, sizeof first);
+  assert_ptr_equal(file.tokens[3].v.corners, file.tokens[2].v.corners + 9);
+  assert_memory_equal(file.tokens[6].v.corners, third, sizeof third);
+  assert_ptr_equal(file.tokens[6].v.corners, file.tokens[3].v.corners + 9);
   assert_int_equal(strncmp(file.tokens[4].v.str, " <0,0,0>, <0,0,1>", 17), 0);
-  assert_int_equal(strncmp(file.tokens[6].v.str, " <1,1,1>, <2", 12), 0);
   zr__sdl_file_free(&file);
 }
 

@@ -46,7 +46,12 @@
 /* A mesh while it is read: the mesh first, so the object's pointer to
    it leads back here. */
 typedef struct mesh_build {
-  struct zr_mesh mesh;
+  struct zr_mesh mesh; /* first: add_vertex finds the build from it */
+  /* mesh.vertices are the corners of the file's triangle runs as they
+     lie in the scene's arena (tokens.c, zr__sdl_mesh_triangle_run), not
+     an array of the mesh's own: the first vertex added otherwise copies
+     them (own_vertices). */
+  bool borrowed;
   bool mesh2;
   bool open;          /* a mesh2 list is being read */
   zr_sdl_mesh2_list list;
@@ -101,9 +106,32 @@ static bool grow(zr_sdl_parser *p, void **rows, size_t *cap, size_t n,
   return true;
 }
 
+/* A mesh whose vertices are borrowed corners gets an array of its own,
+   with room for one more (grow's doubling from there). */
+static bool own_vertices(zr_sdl_parser *p, struct zr_mesh *m) {
+  mesh_build *b = (mesh_build *)(void *)m;
+  if (!b->borrowed)
+    return true;
+  size_t n = m->n_vertices, cap = 16;
+  while (cap <= n)
+    cap *= 2;
+  zr_vec3 *own = zr__arena_grow(&p->scene->arena, NULL, 0,
+                                cap * sizeof *own);
+  if (!own) {
+    zr__sdl_alloc_failed(p, cap * sizeof *own);
+    return false;
+  }
+  memcpy(own, m->vertices, n * sizeof *own);
+  m->vertices = own;
+  m->cap_vertices = cap;
+  b->borrowed = false;
+  return true;
+}
+
 static bool add_vertex(zr_sdl_parser *p, struct zr_mesh *m, zr_vec3 v,
                        uint32_t *index) {
-  if (!grow(p, (void **)&m->vertices, &m->cap_vertices, m->n_vertices,
+  if (!own_vertices(p, m) ||
+      !grow(p, (void **)&m->vertices, &m->cap_vertices, m->n_vertices,
             sizeof *m->vertices))
     return false;
   *index = (uint32_t)m->n_vertices;
@@ -226,8 +254,8 @@ bool zr__sdl_mesh_triangle(zr_sdl_parser *p, zr_object *o,
                       uvs ? uv : NULL, texture, &vertex_locs[0]);
 }
 
-/* The n vectors of a run token: the lexer found exactly n items
-   there; the same reader takes them again (numlist.c). */
+/* The n vectors of a smooth_triangle's run token: the lexer found
+   exactly n items there; the same reader takes them again (numlist.c). */
 static bool run_vectors(zr_sdl_parser *p, const char *run,
                         const zr_sdl_loc *loc, int n, zr_vec3 *out) {
   const zr_sdl_file *f = &p->files[loc->file];
@@ -246,16 +274,59 @@ static bool run_vectors(zr_sdl_parser *p, const char *run,
   return true;
 }
 
-bool zr__sdl_triangle_run(zr_sdl_parser *p, const char *run,
-                          const zr_sdl_loc *loc, zr_vec3 out[3]) {
-  return run_vectors(p, run, loc, 3, out);
+void zr__sdl_triangle_run(const double *corners, zr_vec3 out[3]) {
+  for (int k = 0; k < 3; k++)
+    out[k] = zr_v3(corners[3 * k], corners[3 * k + 1], corners[3 * k + 2]);
 }
 
+/* The corners as vertices where they lie: three doubles each, as a
+   zr_vec3 is. */
+_Static_assert(sizeof(zr_vec3) == 3 * sizeof(double),
+               "a zr_vec3 is three doubles");
+
+/*
+ * A face of plain corners.  A mesh whose triangles are all runs of one
+ * file, one after another, takes the lexer's corner array as its vertex
+ * array (mesh_build.borrowed): run after run, the next face's corners
+ * are where the last face's end, so the mesh only counts them and adds
+ * the face.  Anything else - a face with normals, uv or a texture
+ * before it, corners elsewhere (another file, a run read again by a
+ * loop or macro) - goes through add_triangle, whose first vertex then
+ * copies the borrowed ones (own_vertices).  The vertices are the same
+ * values in the same order either way.
+ */
 bool zr__sdl_mesh_triangle_run(zr_sdl_parser *p, zr_object *o,
-                               const char *run, const zr_sdl_loc *loc) {
+                               const double *corners,
+                               const zr_sdl_loc *loc) {
+  mesh_build *b = build_of(o);
+  struct zr_mesh *m = &b->mesh;
+  const zr_vec3 *c = (const zr_vec3 *)(const void *)corners;
+  bool next = m->n_vertices == 0 ? m->n_faces == 0
+                                 : b->borrowed &&
+                                       c == m->vertices + m->n_vertices;
+  if (next && !m->face_normals && !m->face_uvs && !m->face_textures &&
+      m->n_faces <= UINT32_MAX / 4) {
+    size_t f = m->n_faces;
+    if (!grow(p, (void **)&m->faces, &m->cap_faces, f, sizeof *m->faces))
+      return false;
+    if (m->n_vertices == 0) {
+      /* The tracer reads the vertices only (zr_mesh's vertices are not
+         const for the parser's sake). */
+      m->vertices = (zr_vec3 *)(void *)corners;
+      m->cap_vertices = 0;
+      b->borrowed = true;
+    }
+    uint32_t n = (uint32_t)m->n_vertices;
+    m->faces[f][0] = n;
+    m->faces[f][1] = n + 1;
+    m->faces[f][2] = n + 2;
+    m->n_vertices += 3;
+    m->n_faces++;
+    return true;
+  }
   zr_vec3 v[3];
-  return zr__sdl_triangle_run(p, run, loc, v) &&
-         add_triangle(p, &build_of(o)->mesh, v, NULL, NULL, NULL, loc);
+  zr__sdl_triangle_run(corners, v);
+  return add_triangle(p, m, v, NULL, NULL, NULL, loc);
 }
 
 /* A smooth_triangle's run: corners and normals alternate. */

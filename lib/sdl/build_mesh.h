@@ -35,13 +35,13 @@ bool zr__sdl_mesh_triangle(zr_sdl_parser *p, zr_object *o,
                            const zr_sdl_loc *normal_locs,
                            const zr_sdl_expr *uvs, const zr_sdl_loc *uv_locs,
                            const zr_texture *texture);
-/* The corners of a T_TRIANGLE_RUN token (run points at its bytes, loc
-   is the token's), for a triangle object or, with the _mesh_ form, as a
-   face of mesh o with no texture of its own. */
-bool zr__sdl_triangle_run(zr_sdl_parser *p, const char *run,
-                          const zr_sdl_loc *loc, zr_vec3 out[3]);
+/* The corners of a T_TRIANGLE_RUN token (corners: its nine values,
+   tokens.c; loc is the token's), for a triangle object or, with the
+   _mesh_ form, as a face of mesh o with no texture of its own. */
+void zr__sdl_triangle_run(const double *corners, zr_vec3 out[3]);
 bool zr__sdl_mesh_triangle_run(zr_sdl_parser *p, zr_object *o,
-                               const char *run, const zr_sdl_loc *loc);
+                               const double *corners,
+                               const zr_sdl_loc *loc);
 /* The same for a T_SMOOTH_TRIANGLE_RUN token: its six vectors, corner
    and normal in turn, as a smooth_triangle object (a mesh of one face)
    or a face of mesh o. */

@@ -249,9 +249,10 @@ static zr_status add_file(zr_sdl_parser *p, char *path, char *bytes,
   }
   *index = (int)p->n_files;
   zr_sdl_file *f = &p->files[p->n_files++];
-  zr_status s = zr__sdl_file_lex_budget(f, *index, path, bytes, size,
-                                        p->ctx ? p->ctx->budget : NULL,
-                                        err_loc, err, err_size);
+  zr_status s = zr__sdl_file_lex_scene(f, *index, path, bytes, size,
+                                       p->ctx ? p->ctx->budget : NULL,
+                                       &p->scene->arena, err_loc, err,
+                                       err_size);
   if (s == ZR_OK || s == ZR_ESYNTAX) {
     f->scene_path = zr__arena_strdup(&p->scene->arena, f->path);
     if (!f->scene_path) {
@@ -1201,6 +1202,9 @@ int zr__sdl_next(zr_sdl_lexval *val, zr_sdl_loc *loc, zr_sdl_parser *p) {
       p->last_loc = token_loc(fr->file, t + 5);
       return kind;
     }
+    case T_TRIANGLE_RUN:
+      v.corners = t->v.corners;
+      return deliver(p, t->kind, &v, &tl, NULL, val, loc);
     case T_IDENTIFIER:
       break;
     default:

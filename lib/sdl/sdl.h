@@ -289,6 +289,7 @@ typedef union zr_sdl_lexval {
   double num;
   const char *str;
   const double *sphere; /* T_SPHERE_RUN's centre and radius */
+  const double *corners; /* T_TRIANGLE_RUN's three corners */
   zr_sdl_sphere_tex sphere_tex; /* T_SPHERE_TEXTURED */
   zr_sdl_decl_name decl;
   zr_sdl_value value;
@@ -321,6 +322,10 @@ typedef struct zr_sdl_token {
     const char *str; /* interned in the file's arena */
     const zr_sdl_numlist *list; /* ZR_SDL_NUMBER_LIST */
     const double *sphere; /* T_SPHERE_RUN: x, y, z and r (tokens.c) */
+    /* T_TRIANGLE_RUN: its corners, nine values in the file's corner
+       array (tokens.c; their index there while the file is lexed) */
+    const double *corners;
+    size_t corner;
   } v;
 } zr_sdl_token;
 
@@ -401,6 +406,13 @@ typedef struct zr_sdl_file {
   size_t charged;
   size_t tokens_charged; /* token slots the budget has been charged for */
   size_t block_tokens; /* directives that open or continue a block */
+  /* The corners of the file's T_TRIANGLE_RUN tokens, nine values each in
+     the order of the tokens, in corner_arena: the scene's arena when
+     the parser lexes (zr__sdl_file_lex_scene), so that a mesh made of
+     runs keeps them as its vertices (build_mesh.c); else strings. */
+  double *corners;
+  size_t n_corners, cap_corners; /* values */
+  zr_arena *corner_arena;
 } zr_sdl_file;
 
 /*
@@ -418,6 +430,13 @@ zr_status zr__sdl_file_lex_budget(zr_sdl_file *f, int file_index,
                                   struct zr_budget *budget,
                                   zr_sdl_loc *err_loc, char *err,
                                   size_t err_size);
+/* The same with the corners of triangle runs in corner_arena, which
+   outlives the file (the scene's): a mesh may keep them. */
+zr_status zr__sdl_file_lex_scene(zr_sdl_file *f, int file_index, char *path,
+                                 char *bytes, size_t size,
+                                 struct zr_budget *budget,
+                                 zr_arena *corner_arena, zr_sdl_loc *err_loc,
+                                 char *err, size_t err_size);
 /* The same with every token from the flex scanner, none from the
    lexer's own reader of plain words and braces (tokens.c): the tokens
    must be the same either way (tests/test_lexer.c). */

@@ -393,11 +393,8 @@ static bool run_body(const zr_sdl_file *f, zr_sdl_numreader *r, int n,
 }
 
 /* The run token of kind at (line, column), the place of its keyword of
-   length bytes, whose vectors start at run.  The grammar's action reads
-   them again from there (build_mesh.c): keeping the values instead (72
-   bytes a triangle) saved that reading but cost as much in first
-   touches of fresh pages (14 us each on this machine) and 10 MB more
-   for a terrain (bench/results/mpi-n2-2026-12-03-s11.txt). */
+   length bytes, whose vectors start at run: a smooth_triangle's, whose
+   grammar action reads them again from there (build_mesh.c). */
 static zr_status push_run(zr_sdl_file *f, size_t *cap, int kind, int line,
                           int column, int length, const char *run) {
   zr_sdl_token t;
@@ -408,6 +405,54 @@ static zr_status push_run(zr_sdl_file *f, size_t *cap, int kind, int line,
   t.length = length;
   t.v.str = run;
   return push_token(f, cap, &t);
+}
+
+/*
+ * A plain triangle's run keeps its corners: nine values appended to the
+ * file's corner array, the token holding their index until the file is
+ * lexed (the array grows) and a pointer to them after (fix_corners).
+ * The parser's files keep them in the scene's arena, where a mesh made
+ * of such runs takes them as its vertex array as they lie
+ * (build_mesh.c): the grammar no longer reads the numbers a second time
+ * (13% of the terrain's parse, perf) nor copies them (add_triangle).
+ * (Session 11 kept the values beside the vertex array instead: that
+ * saved the reading and cost as much in first touches of 10 MB more,
+ * bench/results/mpi-n2-2026-12-03-s11.txt.)
+ */
+static zr_status push_corner_run(zr_sdl_file *f, size_t *cap, int line,
+                                 int column, int length,
+                                 double v[6][3]) {
+  if (f->n_corners + 9 > f->cap_corners) {
+    size_t c = f->cap_corners ? 2 * f->cap_corners : 9 * 1024;
+    if (c > SIZE_MAX / sizeof(double))
+      return ZR_ENOMEM;
+    double *grown = zr__arena_grow(f->corner_arena, f->corners,
+                                   f->cap_corners * sizeof(double),
+                                   c * sizeof(double));
+    if (!grown)
+      return f->corner_arena->over_budget ? ZR_ELIMIT : ZR_ENOMEM;
+    f->corners = grown;
+    f->cap_corners = c;
+  }
+  size_t at = f->n_corners;
+  for (int k = 0; k < 3; k++)
+    memcpy(f->corners + at + 3 * k, v[k], 3 * sizeof(double));
+  f->n_corners += 9;
+  zr_sdl_token t;
+  memset(&t, 0, sizeof t);
+  t.kind = T_TRIANGLE_RUN;
+  t.line = line;
+  t.column = column;
+  t.length = length;
+  t.v.corner = at;
+  return push_token(f, cap, &t);
+}
+
+/* Once the corner array no longer moves: each run's index -> pointer. */
+static void fix_corners(zr_sdl_file *f) {
+  for (size_t i = 0; f->n_corners && i < f->n_tokens; i++)
+    if (f->tokens[i].kind == T_TRIANGLE_RUN)
+      f->tokens[i].v.corners = f->corners + f->tokens[i].v.corner;
 }
 
 static bool is_word_byte(char c) {
@@ -463,8 +508,11 @@ static zr_status next_run(zr_sdl_file *f, size_t *cap, zr_sdl_numreader *r,
     size_t end;
     if (!run_body(f, &q, runs[i].vectors, v, &end))
       return ZR_OK;
-    zr_status status = push_run(f, cap, runs[i].kind, line, column,
-                                runs[i].length, f->bytes + brace + 1);
+    zr_status status =
+        runs[i].kind == T_TRIANGLE_RUN
+            ? push_corner_run(f, cap, line, column, runs[i].length, v)
+            : push_run(f, cap, runs[i].kind, line, column, runs[i].length,
+                       f->bytes + brace + 1);
     if (status != ZR_OK)
       return status;
     *r = q;
@@ -493,9 +541,11 @@ static zr_status triangle_run(zr_sdl_file *f, size_t *cap,
   zr_sdl_token keyword = f->tokens[n - 2];
   f->n_tokens -= 2;
   zr_status status =
-      push_run(f, cap, smooth ? T_SMOOTH_TRIANGLE_RUN : T_TRIANGLE_RUN,
-               keyword.line, keyword.column, keyword.length,
-               f->bytes + lx->offset);
+      smooth ? push_run(f, cap, T_SMOOTH_TRIANGLE_RUN, keyword.line,
+                        keyword.column, keyword.length,
+                        f->bytes + lx->offset)
+             : push_corner_run(f, cap, keyword.line, keyword.column,
+                               keyword.length, v);
   for (bool more = true; status == ZR_OK && more;)
     status = next_run(f, cap, &r, &close, &more);
   resume_at(lx, close + 1, &r);
@@ -732,35 +782,45 @@ zr_status zr__sdl_file_lex(zr_sdl_file *f, int file_index, char *path,
 
 static zr_status lex(zr_sdl_file *f, int file_index, char *path,
                      char *bytes, size_t size, struct zr_budget *budget,
-                     bool scanner_only, zr_sdl_loc *err_loc, char *err,
-                     size_t err_size);
+                     zr_arena *corner_arena, bool scanner_only,
+                     zr_sdl_loc *err_loc, char *err, size_t err_size);
 
 zr_status zr__sdl_file_lex_budget(zr_sdl_file *f, int file_index,
                                   char *path, char *bytes, size_t size,
                                   struct zr_budget *budget,
                                   zr_sdl_loc *err_loc, char *err,
                                   size_t err_size) {
-  return lex(f, file_index, path, bytes, size, budget, false, err_loc, err,
-             err_size);
+  return lex(f, file_index, path, bytes, size, budget, NULL, false, err_loc,
+             err, err_size);
+}
+
+zr_status zr__sdl_file_lex_scene(zr_sdl_file *f, int file_index, char *path,
+                                 char *bytes, size_t size,
+                                 struct zr_budget *budget,
+                                 zr_arena *corner_arena, zr_sdl_loc *err_loc,
+                                 char *err, size_t err_size) {
+  return lex(f, file_index, path, bytes, size, budget, corner_arena, false,
+             err_loc, err, err_size);
 }
 
 zr_status zr__sdl_file_lex_scanner_only(zr_sdl_file *f, int file_index,
                                         char *path, char *bytes,
                                         size_t size, zr_sdl_loc *err_loc,
                                         char *err, size_t err_size) {
-  return lex(f, file_index, path, bytes, size, NULL, true, err_loc, err,
-             err_size);
+  return lex(f, file_index, path, bytes, size, NULL, NULL, true, err_loc,
+             err, err_size);
 }
 
 static zr_status lex(zr_sdl_file *f, int file_index, char *path,
                      char *bytes, size_t size, struct zr_budget *budget,
-                     bool scanner_only, zr_sdl_loc *err_loc, char *err,
-                     size_t err_size) {
+                     zr_arena *corner_arena, bool scanner_only,
+                     zr_sdl_loc *err_loc, char *err, size_t err_size) {
   memset(f, 0, sizeof *f);
   f->path = path;
   f->bytes = bytes;
   f->size = size;
   zr__arena_init(&f->strings);
+  f->corner_arena = corner_arena ? corner_arena : &f->strings;
   f->strings.budget = budget;
   /* A big file's strings arena holds its spheres' numbers (sphere_run),
      32 bytes each: its blocks are filled in at once (core/arena.h). */
@@ -851,6 +911,8 @@ static zr_status lex(zr_sdl_file *f, int file_index, char *path,
   }
   if (status == ZR_OK)
     status = link_blocks(f);
+  if (status == ZR_OK)
+    fix_corners(f);
   if (status == ZR_ESYNTAX) {
     *err_loc = lx.error_at;
     err_loc->file = file_index;
