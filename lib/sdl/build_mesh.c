@@ -52,6 +52,7 @@ typedef struct mesh_build {
      an array of the mesh's own: the first vertex added otherwise copies
      them (own_vertices). */
   bool borrowed;
+  int borrowed_file; /* whose corners (the parser's file index) */
   bool mesh2;
   bool open;          /* a mesh2 list is being read */
   zr_sdl_mesh2_list list;
@@ -300,10 +301,13 @@ bool zr__sdl_mesh_triangle_run(zr_sdl_parser *p, zr_object *o,
                                const zr_sdl_loc *loc) {
   mesh_build *b = build_of(o);
   struct zr_mesh *m = &b->mesh;
+  /* The next face's corners follow the last's in the same file's array
+     (another file's array could lie just after, in memory). */
   const zr_vec3 *c = (const zr_vec3 *)(const void *)corners;
-  bool next = m->n_vertices == 0 ? m->n_faces == 0
-                                 : b->borrowed &&
-                                       c == m->vertices + m->n_vertices;
+  bool next = m->n_vertices == 0
+                  ? m->n_faces == 0
+                  : b->borrowed && b->borrowed_file == loc->file &&
+                        c == m->vertices + m->n_vertices;
   if (next && !m->face_normals && !m->face_uvs && !m->face_textures &&
       m->n_faces <= UINT32_MAX / 4) {
     size_t f = m->n_faces;
@@ -315,6 +319,7 @@ bool zr__sdl_mesh_triangle_run(zr_sdl_parser *p, zr_object *o,
       m->vertices = (zr_vec3 *)(void *)corners;
       m->cap_vertices = 0;
       b->borrowed = true;
+      b->borrowed_file = loc->file;
     }
     uint32_t n = (uint32_t)m->n_vertices;
     m->faces[f][0] = n;
