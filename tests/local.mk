@@ -390,6 +390,10 @@ EXTRA_DIST += tests/test_gi_normal_off.sh tests/gi_normal_off.pov
 # object itself skip the shape (objects/quartic/hyptorus.pov's corners).
 TESTS += tests/test_bounded_poly.sh
 EXTRA_DIST += tests/test_bounded_poly.sh tests/bounded_poly.pov
+# An object's own bounded_by whose box is smaller than the object's: rays
+# that miss that box skip the object.
+TESTS += tests/test_bounded_box.sh
+EXTRA_DIST += tests/test_bounded_box.sh tests/bounded_box.pov
 # CSG with a disc or a height field, whose inside reaches beyond its box
 # (stock advanced/desk/desk.pov's paperweight).
 TESTS += tests/test_csg_inside.sh
