@@ -394,6 +394,9 @@ EXTRA_DIST += tests/test_bounded_poly.sh tests/bounded_poly.pov
 # that miss that box skip the object.
 TESTS += tests/test_bounded_box.sh
 EXTRA_DIST += tests/test_bounded_box.sh tests/bounded_box.pov
+# A clip whose inside reaches beyond its box bounds the object by that box.
+TESTS += tests/test_clip_box.sh
+EXTRA_DIST += tests/test_clip_box.sh tests/clip_box.pov
 # CSG with a disc or a height field, whose inside reaches beyond its box
 # (stock advanced/desk/desk.pov's paperweight).
 TESTS += tests/test_csg_inside.sh
