@@ -401,6 +401,9 @@ EXTRA_DIST += tests/test_clip_box.sh tests/clip_box.pov
 # (stock advanced/desk/desk.pov's paperweight).
 TESTS += tests/test_csg_inside.sh
 EXTRA_DIST += tests/test_csg_inside.sh tests/csg_inside.pov
+# Rays leaving an upside-down smooth glass height field (glasschess's board).
+TESTS += tests/test_hf_glass.sh
+EXTRA_DIST += tests/test_hf_glass.sh tests/hf_glass.pov
 # Smooth height field normals as POV-Ray makes them (stock
 # advanced/glasschess.pov's board).
 TESTS += tests/test_hf_smooth.sh
