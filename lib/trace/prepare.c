@@ -178,9 +178,10 @@ static double box_volume(zr_vec3 lo, zr_vec3 hi) {
    cone, a lathe, a sor, a superellipsoid, a prism, an ovus, a height
    field, a mesh, a blob, a sphere, a box, a sphere_sweep and a quadric
    (and an isosurface and a julia_fractal, whose surfaces differ from
-   povray's anyway, by the same rule) under a bounding sphere or box that covers part of them are cut along the straight faces of
-   the bound's box, surface drawn beyond the bound itself and all (a
-   sphere bound drew no round edge); a bound whose box is larger than
+   povray's anyway, by the same rule) under a bounding sphere or box that
+   covers part of them are cut along the straight faces of the bound's
+   box, surface drawn beyond the bound itself and all (a sphere bound
+   drew no round edge); a bound whose box is larger than
    the object's changes nothing, even where it leaves part of the object
    out.  The volumes decide, not the sides: a cylinder of length 2.5
    along x under a sphere of radius 0.8 (a box of side 1.6, 4.096) is
