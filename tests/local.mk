@@ -390,10 +390,20 @@ EXTRA_DIST += tests/test_gi_normal_off.sh tests/gi_normal_off.pov
 # object itself skip the shape (objects/quartic/hyptorus.pov's corners).
 TESTS += tests/test_bounded_poly.sh
 EXTRA_DIST += tests/test_bounded_poly.sh tests/bounded_poly.pov
+# An object's own bounded_by whose box is smaller than the object's: rays
+# that miss that box skip the object.
+TESTS += tests/test_bounded_box.sh
+EXTRA_DIST += tests/test_bounded_box.sh tests/bounded_box.pov
+# A clip whose inside reaches beyond its box bounds the object by that box.
+TESTS += tests/test_clip_box.sh
+EXTRA_DIST += tests/test_clip_box.sh tests/clip_box.pov
 # CSG with a disc or a height field, whose inside reaches beyond its box
 # (stock advanced/desk/desk.pov's paperweight).
 TESTS += tests/test_csg_inside.sh
 EXTRA_DIST += tests/test_csg_inside.sh tests/csg_inside.pov
+# Rays leaving an upside-down smooth glass height field (glasschess's board).
+TESTS += tests/test_hf_glass.sh
+EXTRA_DIST += tests/test_hf_glass.sh tests/hf_glass.pov
 # Smooth height field normals as POV-Ray makes them (stock
 # advanced/glasschess.pov's board).
 TESTS += tests/test_hf_smooth.sh

@@ -574,13 +574,18 @@ struct zr_object {
      of the object shares it), so the next transformation may change it
      in place (lib/sdl/build.c, transform_object).  Unused after. */
   bool own_transform;
+  /* bound is the box of the object's own bounded_by, and rays that miss
+     it skip the object (lib/trace/prepare.c bound_by_box, intersect.c);
+     false: bound is a union's, or a poly's own, or unused. */
+  bool bound_cuts;
   /* clipped_by: only the surface inside this object remains (an
      intersection of the clipping objects); NULL when not clipped. */
   const zr_object *clip;
   /* bounded_by: for clipped_by { bounded_by }, and as the box of a
      primitive the tracer cannot box itself (a quartic, a poly), its own
-     or its union's (lib/trace/prepare.c, bounds.c); objects it can box
-     keep their own box, which POV-Ray allows since a correct bound never
+     or its union's (lib/trace/prepare.c, bounds.c).  An object's own
+     bound whose box is smaller than the object's is replaced by that box
+     when the scene is finished (bound_cuts); a correct bound never
      changes the picture. */
   const zr_object *bound;
   /* photons { } ("Photons"): NULL for the defaults (collects photons,

@@ -93,7 +93,8 @@ typedef struct box3 {
 /* A sphere the tracer may test without its table of operations (see
    sphere_t below). */
 static inline bool plain_sphere(const zr_object *o) {
-  return o->kind == ZR_OBJ_SPHERE && !o->transform && !o->clip;
+  return o->kind == ZR_OBJ_SPHERE && !o->transform && !o->clip &&
+         !o->bound_cuts;
 }
 
 static void box_empty(box3 *b) {
@@ -851,7 +852,7 @@ static inline int first_crossing_t(const zr_object *o, const zr_ray *ray,
                                    double tmin, double tmax,
                                    zr_hit hits[ZR_MAX_CROSSINGS],
                                    zr_vec3 *mesh_normal, bool *from_mesh) {
-  *from_mesh = o->kind == ZR_OBJ_MESH && !o->clip;
+  *from_mesh = o->kind == ZR_OBJ_MESH && !o->clip && !o->bound_cuts;
   if (*from_mesh)
     return zr__mesh_nearest_t(o, ray, tmin, tmax, hits, mesh_normal);
   if (plain_sphere(o) || plain_plane(o))
@@ -1007,7 +1008,8 @@ static inline int walk_crossings_t(const zr_object *o, const zr_ray *ray,
                                    double tmin, double tmax,
                                    zr_blocks_fn blocks, void *user,
                                    zr_hit hits[ZR_MAX_CROSSINGS]) {
-  if (blocks && o->kind == ZR_OBJ_MESH && !o->clip && blocks(o, user))
+  if (blocks && o->kind == ZR_OBJ_MESH && !o->clip && !o->bound_cuts &&
+      blocks(o, user))
     return zr__mesh_any_t(o, ray, tmin, tmax, hits);
   return crossings_t(o, ray, tmin, tmax, hits);
 }

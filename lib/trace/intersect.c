@@ -51,11 +51,10 @@ static void clip_crossings(const zr_object *clip, const zr_ray *ray,
    The test is along the whole ray from its origin, not only (tmin, tmax):
    the tracer asks a hit again from just before it for its normal
    (bvh.c), and that second question must get the same answer.  Other
-   shapes keep their bound as a box only: POV-Ray ignores it on spheres,
-   boxes, blobs and planes, clips tori, cylinders, lathes and
-   superellipsoids to its box, and a quadric either way depending on its
-   coefficients - which zRcube does not follow (it can only matter when
-   the bound is too small, and is left to a later round). */
+   shapes test their own bound's box here, and only when that box is
+   smaller than theirs (object->bound_cuts, lib/trace/prepare.c
+   bound_by_box); a union's bound handed down to them is their box in
+   the hierarchy only. */
 static bool meets_bound(const zr_object *bound, const zr_ray *ray) {
   if (zr__inside(bound, ray->origin))
     return true;
@@ -76,7 +75,8 @@ static int crossings(const zr_object *object, const zr_ray *ray,
   if (zr__is_csg(object->kind)) /* children carry their transforms */
     return zr__csg_crossings(object, ray, tmin, tmax, want_normals, wanted,
                              hits);
-  if (object->bound && object->kind == ZR_OBJ_POLY &&
+  if (object->bound &&
+      (object->kind == ZR_OBJ_POLY || object->bound_cuts) &&
       !meets_bound(object->bound, ray))
     return 0;
   zr_vec3 org = ray->origin, dir = ray->dir;

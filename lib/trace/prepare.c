@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "core/context.h"
+#include "trace/bounds_csg.h"
 #include "trace/bvh.h"
 #include "trace/embree.h"
 #include "trace/intersect.h"
@@ -162,6 +163,141 @@ static const zr_object *clip_both(zr_scene *scene, const zr_object *a,
   return both;
 }
 
+static double box_volume(zr_vec3 lo, zr_vec3 hi) {
+  zr_vec3 d = zr_v3_sub(hi, lo);
+  return d.x * d.y * d.z;
+}
+
+/* An object's own bounded_by, in POV-Ray 3.7, takes the place of the
+   object's bounding box when the bound's box is the smaller of the two
+   by volume, and rays that miss that box skip the object whatever the
+   shape (the manual, "Bounded_By": a bound too small "may clip the
+   object in undefined ways"; these are the ways).  Measured with povray
+   (tests/bounded_box.pov, probes under /tmp at the time, a second small
+   object in each scene so that its bounding slabs are on): a torus, a
+   cone, a lathe, a sor, a superellipsoid, a prism, an ovus, a height
+   field, a mesh, a blob, a sphere, a box, a sphere_sweep and a quadric
+   (and an isosurface and a julia_fractal, whose surfaces differ from
+   povray's anyway, by the same rule) under a bounding sphere or box that
+   covers part of them are cut along the straight faces of the bound's
+   box, surface drawn beyond the bound itself and all (a sphere bound
+   drew no round edge); a bound whose box is larger than
+   the object's changes nothing, even where it leaves part of the object
+   out.  The volumes decide, not the sides: a cylinder of length 2.5
+   along x under a sphere of radius 0.8 (a box of side 1.6, 4.096) is
+   whole up to radius 0.63 (its box 3.97) and cut from 0.65 (4.23); a
+   sphere of radius 1.1 (10.65) under a box 0.9 x 3 x 3 (8.1) is cut,
+   under 0.9 x 6 x 6 it is whole.  A disc or a polygon (a flat box, no
+   volume) keeps its bound unused.  A poly, cubic or quartic keeps its
+   bound as it is (intersect.c meets_bound: the bound itself), and a
+   plane its bound ignored (flatten).  Left as they were: a text's bound
+   (unused; povray cuts an "O" under a small bounding sphere along a
+   curve that neither the sphere nor its box gives: 20-100 pixels off
+   either way at 80x60, and a bound of box 4.10 leaves it whole), and
+   the sphere that is the only object of its scene, whose bound povray
+   ignores (no bounding slabs then) and zRcube takes as any other. */
+static zr_status bound_by_box(zr_scene *scene, zr_object *own) {
+  zr_vec3 lo, hi, blo, bhi;
+  if (!zr__object_bounds(own->bound, &blo, &bhi))
+    return ZR_OK; /* an unbounded bound cuts nothing */
+  if (zr__object_bounds(own, &lo, &hi) &&
+      !(box_volume(blo, bhi) < box_volume(lo, hi)))
+    return ZR_OK;
+  zr_object *box = zr__arena_alloc(&scene->arena, sizeof *box);
+  if (!box)
+    return ZR_ENOMEM;
+  box->kind = ZR_OBJ_BOX;
+  box->u.box.corner1 = blo;
+  box->u.box.corner2 = bhi;
+  box->where = own->bound->where;
+  own->bound = box;
+  own->bound_cuts = true;
+  return ZR_OK;
+}
+
+/* A clip whose inside reaches beyond its box (a height field, a disc:
+   zr__box_holds_inside) is a bound too, by the same rule as
+   bound_by_box: its box takes the place of the object's when it is the
+   smaller by volume (always, for an object the tracer cannot box, such
+   as an infinite quadric), and rays that miss it skip the object.
+   Measured with povray 3.7 (tests/clip_box.pov): an infinite quadric
+   cylinder clipped by a height field ends at a straight edge where the
+   rays leave the field's box (stock objects/csg/hfclip.pov), and a
+   sphere clipped by a disc is seen only through the disc's flat box,
+   where zRcube drew the whole clipped surface, the field's and the
+   disc's insides reaching down without end; a finite cylinder (box
+   2 x 6 x 2) clipped by a height field of box 6 x 0.8 x 6 is drawn
+   whole in both.  A clip whose inside its box holds cuts nothing this
+   way, so it is left alone. */
+static bool clip_box(const zr_object *clip, zr_vec3 *lo, zr_vec3 *hi,
+                     bool *beyond) {
+  if (clip->inverse)
+    return false;
+  if (clip->kind != ZR_OBJ_INTERSECTION) {
+    *beyond = *beyond || !zr__box_holds_inside(clip);
+    return zr__object_bounds(clip, lo, hi);
+  }
+  /* clipped_by { A B } is the intersection of A and B, whose box
+     (bounds_csg.c) leaves out the parts whose inside reaches beyond
+     their box; here the box of every part's surface counts. */
+  bool any = false;
+  for (size_t i = 0; i < clip->u.csg.n_children; i++) {
+    zr_vec3 l, h;
+    if (!clip_box(clip->u.csg.children[i], &l, &h, beyond))
+      continue;
+    *lo = any ? zr_v3_max(*lo, l) : l;
+    *hi = any ? zr_v3_max(*lo, zr_v3_min(*hi, h)) : h;
+    any = true;
+  }
+  return any;
+}
+
+static zr_status clip_by_box(zr_scene *scene, zr_object *own) {
+  zr_vec3 lo, hi, clo, chi;
+  bool beyond = false;
+  if (own->bound_cuts || !clip_box(own->clip, &clo, &chi, &beyond) ||
+      !beyond)
+    return ZR_OK;
+  const zr_object *clip = own->clip;
+  own->clip = NULL; /* the object's own box */
+  bool bounded = zr__object_bounds(own, &lo, &hi);
+  if (bounded && !(box_volume(clo, chi) < box_volume(lo, hi))) {
+    own->clip = clip;
+    return ZR_OK;
+  }
+  zr_object *box = zr__arena_alloc(&scene->arena, sizeof *box);
+  zr_object *both = zr__arena_alloc(&scene->arena, sizeof *both);
+  zr_object **children =
+      zr__arena_alloc(&scene->arena, 2 * sizeof *children);
+  if (!box || !both || !children) {
+    own->clip = clip;
+    return ZR_ENOMEM;
+  }
+  box->kind = ZR_OBJ_BOX;
+  box->u.box.corner1 = clo;
+  box->u.box.corner2 = chi;
+  box->where = clip->where;
+  /* The box is the clip's narrowed by the object's own form: povray
+     ends hfclip.pov's infinite cylinder x^2 + z^2 = 1 where the rays
+     leave the box of |x|, |z| <= 1 within the field's box (the field's
+     box alone, 6 wide, let the rays that enter its front face reach
+     the cylinder far below it: 280 pixels off at 80x60). */
+  children[0] = own;
+  children[1] = box;
+  both->kind = ZR_OBJ_INTERSECTION;
+  both->u.csg.children = children;
+  both->u.csg.n_children = 2;
+  zr_vec3 nlo, nhi;
+  if (zr__intersection_bounds(both, &nlo, &nhi)) {
+    box->u.box.corner1 = nlo;
+    box->u.box.corner2 = nhi;
+  }
+  own->clip = clip;
+  own->bound = box;
+  own->bound_cuts = true;
+  return ZR_OK;
+}
+
 /* A union's clipped_by ("Clipped_By": only the part inside the clipping
    object is seen) is handed down to every primitive under it, joined to
    the clip each may have of its own, since the union itself is gone once
@@ -170,6 +306,13 @@ static zr_status flatten(zr_scene *scene, zr_object *object,
                          const zr_texture *inherited, const zr_object *clip,
                          const zr_object *bound, flat_list *out) {
   const zr_texture *texture = object->texture ? object->texture : inherited;
+  /* An object's own bound (not a union's handed down) may become its
+     box (bound_by_box); a poly keeps its bound, a plane ignores it, and a
+     text keeps it unused (see bound_by_box). */
+  bool own_bound = object->bound && !zr__is_csg(object->kind) &&
+                   object->kind != ZR_OBJ_PLANE &&
+                   object->kind != ZR_OBJ_POLY &&
+                   object->kind != ZR_OBJ_TEXT;
   /* A union's bounded_by ("Bounded_By": rays that miss the bound skip the
      object) is handed down too: a part the tracer cannot box itself (a
      quartic torus, a poly) takes the bound's box (bounds.c), as POV-Ray
@@ -215,6 +358,11 @@ static zr_status flatten(zr_scene *scene, zr_object *object,
   if (clip && !(own->clip = clip_both(scene, own->clip, clip)))
     return ZR_ENOMEM;
   own->bound = bound;
+  if (own_bound && (s = bound_by_box(scene, own)) != ZR_OK)
+    return s;
+  if (own->clip && !zr__is_csg(own->kind) && own->kind != ZR_OBJ_PLANE &&
+      (s = clip_by_box(scene, own)) != ZR_OK)
+    return s;
   /* A mesh with a texture list gets one copy per texture, each placed
      and textured like this one (lib/trace/obj_mesh.c). */
   const zr_shape_ops *ops = zr__shape(prim->kind);

@@ -936,6 +936,34 @@ static const zr_tracer *clear_scaled(const zr_tracer *tr, double k,
   return buf;
 }
 
+/*
+ * Where a reflected or refracted ray going dir from s starts: side, s->p
+ * moved off the surface along the normal to the side the ray goes, or on
+ * a smooth height field s->p moved along dir itself.  A smooth field's
+ * normal is blended from its vertices' and stands far from its
+ * triangles' across a step: on advanced/glasschess.pov's upside-down
+ * glass board (a 256 x 256 checker, steps one sample wide) it is
+ * (0, -1, 0) on walls that are nearly vertical, and the point moved
+ * along it stayed on the side of the wall the ray came from, so the ray
+ * met the same wall again at once and crossed the glass's surface twice
+ * (black or bright lines along every step).  POV-Ray 3.7 draws those
+ * walls as a ray that leaves the surface where it met it: measured
+ * (/tmp probes at 160x120 of a flipped smooth 256 x 256 checker field of
+ * ior 1.2 over a chequered box, as in glasschess): filter 1 alone 271
+ * pixels off -> 1, reflection { 0, 1 fresnel } alone 687 -> 0,
+ * reflection 1 alone 706 -> 0; the whole scene's SSIM 0.908 -> 0.972.
+ * The distance is the usual one (zr__surface_offset); 1000 times it
+ * drew the same probes (1 pixel fewer off in the filter case).  Other
+ * shapes keep the normal's side, with which every other stock scene was
+ * measured.
+ */
+static zr_vec3 ray_start(const surface *s, zr_vec3 side, zr_vec3 dir) {
+  const zr_object *o = s->object;
+  if (o->kind != ZR_OBJ_HEIGHT_FIELD || !o->u.height_field.smooth)
+    return side;
+  return zr_v3_madd(s->p, zr_v3_norm(dir), s->offset);
+}
+
 static zr_rgb trace_secondary(const zr_tracer *tr, zr_vec3 origin,
                               zr_vec3 dir, int level, double weight,
                               const zr_media *media) {
@@ -1124,7 +1152,8 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
       return sum;
     tr->stats->reflected_rays++;
     zr_tracer rt = reflecting(tr);
-    zr_rgb r = trace_secondary(&rt, above, mirror, level, tw, media);
+    zr_rgb r = trace_secondary(&rt, ray_start(s, above, mirror), mirror,
+                               level, tw, media);
     return zr_rgb_add(sum, r);
   }
 
@@ -1133,7 +1162,8 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
       !(s->layer && s->tir_below)) {
     tr->stats->reflected_rays++;
     zr_tracer rt = reflecting(tr);
-    zr_rgb r = trace_secondary(&rt, above, mirror, level, rw, media);
+    zr_rgb r = trace_secondary(&rt, ray_start(s, above, mirror), mirror,
+                               level, rw, media);
     if (f->reflection_exponent != 1.0) {
       double k = 1.0 / f->reflection_exponent;
       r = zr_rgb3(pow(fmax(r.r, 0.0), k), pow(fmax(r.g, 0.0), k),
@@ -1160,8 +1190,8 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
       /* +UA: the background beyond is clear by grey(f C + t) of it. */
       zr_tracer buf;
       const zr_tracer *ttr = clear_scaled(tr, zr__grey(trans), &buf);
-      zr_rgb t = trace_secondary(ttr, below, refr_dir, next_level, tw,
-                                 &next);
+      zr_rgb t = trace_secondary(ttr, ray_start(s, below, refr_dir),
+                                 refr_dir, next_level, tw, &next);
       sum = zr_rgb_add(sum, zr_rgb_mul(trans, t));
     }
   }
