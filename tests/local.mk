@@ -324,6 +324,8 @@ EXTRA_DIST += tests/test_hf_inside.sh tests/hf_inside.pov
 TESTS += tests/test_flat_interior.sh
 EXTRA_DIST += tests/test_flat_interior.sh tests/flat_interior.pov
 TESTS += tests/test_dispersion.sh
+TESTS += tests/test_exit_fade.sh
+EXTRA_DIST += tests/test_exit_fade.sh tests/exit_fade.pov
 EXTRA_DIST += tests/test_dispersion.sh tests/dispersion.pov \
 	bench/conform/dispersion_probe.pov bench/conform/dispersion_probe.py
 

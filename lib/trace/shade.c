@@ -499,6 +499,11 @@ typedef struct surface {
   bool uv_all, uv_known;
   double hu, hv;
   zr_vec3 uvp;
+  /* The interior the ray leaves here and fades (stretch_interior; NULL:
+     none), and the length of the stretch it fades: only the light
+     transmitted out through the surface is faded (shade()). */
+  const zr_interior *leaving;
+  double stretch;
 } surface;
 
 /* The point a pattern is evaluated at: the hit, or its (u, v, 0). */
@@ -1171,6 +1176,8 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
     tr->stats->reflected_rays++;
     zr_tracer rt = reflecting(tr);
     zr_rgb r = trace_secondary(&rt, above, mirror, level, tw, media);
+    if (s->leaving)
+      r = fade_by(s->leaving, s->stretch, r);
     return zr_rgb_add(sum, r);
   }
 
@@ -1211,6 +1218,17 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
                                  next_level, tw, media, &next)
                      : trace_secondary(ttr, below, refr_dir, next_level,
                                        tw, &next);
+      /* Leaving a fading interior, only the light that comes through is
+         faded, by the stretch the ray travelled inside: povray 3.7.0.10
+         fades neither the surface's own light nor its reflection there
+         (a clear slab of fade_distance 1 and fade_power 1001, reflection
+         0.5, max_trace_level 4, reflects the background into the camera
+         faded once, by e^-1 for the 2 units of its way inside, and in a
+         wedge by the stretch after the reflection; transmit 0.5 with
+         emission 1 shows the back face's own light unfaded: tests/
+         test_exit_fade.sh). */
+      if (s->leaving)
+        t = fade_by(s->leaving, s->stretch, t);
       sum = zr_rgb_add(sum, zr_rgb_mul(trans, t));
     }
   }
@@ -1548,6 +1566,8 @@ static zr_rgb trace_upto(const zr_tracer *tracer, const zr_ray *ray,
   s.path = tracer->path + hit.t * zr_v3_len(ray->dir);
   s.uv_all = hit.object->uv_mapping;
   s.uv_known = false;
+  s.leaving = NULL;
+  s.stretch = 0.0;
   s.hu = hit.u;
   s.hv = hit.v;
   zr_vec3 n = hit.normal;
@@ -1594,11 +1614,16 @@ static zr_rgb trace_upto(const zr_tracer *tracer, const zr_ray *ray,
       l = zr_rgb3(0, 0, 0); /* no surface in the solution: black */
     return l;
   }
-  /* Media, fog and rainbows between the ray's origin and the hit, and
-     the fading of the interior the ray leaves here. */
+  /* The fading of the interior the ray leaves here, which shade()
+     applies to the light transmitted out only, and media, fog and
+     rainbows between the ray's origin and the hit. */
+  const zr_interior *fade = stretch_interior(scene, media, hit.object);
+  if (fade && fade->fade_distance != 0.0) {
+    s.leaving = fade;
+    s.stretch = hit.t * zr_v3_len(ray->dir);
+  }
   double before = tracer->clear ? *tracer->clear : 0.0;
   zr_rgb lit = shade(tracer, &s, level, weight, media);
-  const zr_interior *fade = stretch_interior(scene, media, hit.object);
   if (tracer->clear)
     clear_through_way(tracer, before, media, ray, hit.t, fade);
   /* zr__media_along's and fade_by's first tests written here: most
@@ -1609,10 +1634,7 @@ static zr_rgb trace_upto(const zr_tracer *tracer, const zr_ray *ray,
                  ? lit
                  : zr__media_along(tracer, media, ray->origin, ray->dir,
                                    hit.t, lit);
-  c = fogged(scene, media, ray->origin, ray->dir, hit.t, c);
-  if (!fade || fade->fade_distance == 0.0)
-    return c;
-  return fade_by(fade, hit.t * zr_v3_len(ray->dir), c);
+  return fogged(scene, media, ray->origin, ray->dir, hit.t, c);
 }
 
 zr_rgb zr__trace_ray(const zr_tracer *tracer, const zr_ray *ray, int level,
