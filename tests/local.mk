@@ -326,6 +326,8 @@ EXTRA_DIST += tests/test_flat_interior.sh tests/flat_interior.pov
 TESTS += tests/test_dispersion.sh
 TESTS += tests/test_exit_fade.sh
 EXTRA_DIST += tests/test_exit_fade.sh tests/exit_fade.pov
+TESTS += tests/test_mandel_map.sh
+EXTRA_DIST += tests/test_mandel_map.sh tests/mandel_map.pov
 EXTRA_DIST += tests/test_dispersion.sh tests/dispersion.pov \
 	bench/conform/dispersion_probe.pov bench/conform/dispersion_probe.py
 
