@@ -3512,20 +3512,33 @@ interior_head:
 interior_body:
   interior_head
 | interior_body T_IOR expr
-    { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->ior)); $$ = $1; }
-| interior_body T_FADE_DISTANCE expr
-    { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->fade_distance)); $$ = $1; }
-/* Dispersion splits refracted light into a spectrum; zRcube refracts
-   with the mean ior and says so where an object of the scene has it
-   (glass.inc declares such interiors even in scenes that never use
-   them; lib/sdl/build_object.c). */
-| interior_body T_DISPERSION expr
     {
-      TRY(zr__sdl_want_float(p, &$3, &@3, &$1->dispersion));
-      zr__sdl_note_dispersion(p, $1, &@2);
+      TRY(zr__sdl_want_float(p, &$3, &@3, &$1->ior));
+      $1->ior_given = true;
       $$ = $1;
     }
-| interior_body T_DISPERSION_SAMPLES expr  { $$ = $1; }
+| interior_body T_FADE_DISTANCE expr
+    { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->fade_distance)); $$ = $1; }
+/* Dispersion splits refracted light into a spectrum
+   (lib/trace/dispersion.c).  POV-Ray 3.7 truncates dispersion_samples
+   to a whole number (2.7 renders as 2) and refuses 0 and 1 (measured
+   with bench/conform/dispersion_probe.pov); the manual's minimum is 2. */
+| interior_body T_DISPERSION expr
+    { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->dispersion)); $$ = $1; }
+| interior_body T_DISPERSION_SAMPLES expr
+    {
+      double n;
+      TRY(zr__sdl_want_float(p, &$3, &@3, &n));
+      /* The upper bound only keeps a typo from tracing for days: every
+         refracted ray becomes this many. */
+      if (!(n >= 2.0) || n > 1e6) {
+        zr__sdl_error(p, ZR_ESCENE, &@3,
+                      "dispersion_samples must be between 2 and 1000000");
+        YYABORT;
+      }
+      $1->dispersion_samples = (int)n;
+      $$ = $1;
+    }
 | interior_body T_CAUSTICS expr
     { TRY(zr__sdl_want_float(p, &$3, &@3, &$1->caustics)); $$ = $1; }
 | interior_body T_FADE_POWER expr

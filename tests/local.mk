@@ -323,6 +323,13 @@ EXTRA_DIST += tests/test_hf_inside.sh tests/hf_inside.pov
 # pixels.
 TESTS += tests/test_flat_interior.sh
 EXTRA_DIST += tests/test_flat_interior.sh tests/flat_interior.pov
+TESTS += tests/test_dispersion.sh
+TESTS += tests/test_exit_fade.sh
+EXTRA_DIST += tests/test_exit_fade.sh tests/exit_fade.pov
+TESTS += tests/test_mandel_map.sh
+EXTRA_DIST += tests/test_mandel_map.sh tests/mandel_map.pov
+EXTRA_DIST += tests/test_dispersion.sh tests/dispersion.pov \
+	bench/conform/dispersion_probe.pov bench/conform/dispersion_probe.py
 
 # corpus (session 7): shared CSG faces, polygons off their plane, the
 # noise far out.

@@ -4,7 +4,8 @@
 # black-to-white map) and its colour (pigment with no map), printed by
 # #debug through function { pigment { } }.  The knots in
 # lib/scene/texture.c (default_map_of) fit these lines; patterns whose
-# colour equals their value use the grey ramp.  Needs povray.
+# colour equals their value use the grey ramp.  mandel 30 steps by 1/30
+# and hides its knots: texture.c says how they were found.  Needs povray.
 set -u
 command -v povray >/dev/null || { echo "defmap_probe: no povray" >&2; exit 77; }
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/zr_defmap.XXXXXX") || exit 1

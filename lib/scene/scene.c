@@ -36,6 +36,7 @@ void zr__interior_init(zr_interior *i) {
   memset(i, 0, sizeof *i);
   i->ior = 1.0;
   i->dispersion = 1.0;
+  i->dispersion_samples = 7;
 }
 
 void zr__camera_init(zr_camera *c) {

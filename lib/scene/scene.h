@@ -403,11 +403,15 @@ typedef struct zr_interior {
   /* media { } inside (lib/trace/media.c); they add where they overlap. */
   const struct zr_medium *const *media;
   size_t n_media;
-  /* dispersion ("Dispersion"; default 1: none), not rendered: the
-     parser warns where an object in the scene has it, naming where it
-     was written (glass.inc declares such interiors for every scene). */
+  /* dispersion ("Dispersion"; default 1: none): the ratio of the violet
+     to the red ior, and the number of steps of the spectrum a refracted
+     ray is split into (default 7, at least 2).  As in POV-Ray 3.7 it
+     acts only where the interior's ior was given (ior_given; measured:
+     interior { dispersion 1.2 } alone bends and tints nothing,
+     interior { ior 1 dispersion 1.2 } tints; lib/trace/dispersion.c). */
   double dispersion;
-  zr_source_loc dispersion_where;
+  int dispersion_samples;
+  bool ior_given;
 } zr_interior;
 
 /*

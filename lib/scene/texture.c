@@ -104,8 +104,15 @@ const zr_colour_map *zr__default_colour_map(void) { return &default_map; }
  * (pigments/pigment.pov); read from its #debug output by
  * bench/conform/defmap_probe.sh, which prints each pattern's value and
  * colour at scattered points (every knot below fits them to 1e-5).
- * Other patterns use the grey ramp.  mandel's map is left out: its
- * knots were not pinned down.
+ * Other patterns use the grey ramp.  mandel's knots come from its values
+ * at 1000 and 5000 iterations, k / 1000 and k / 5000 (the same probe with
+ * "mandel 1000" and "mandel 5000", 6000-20000 points): black up to 0.001
+ * inclusive, cyan just above, then linear to the knots below; every value
+ * of 0.1 and more, the set itself (1) too, is cyan (tests/
+ * test_mandel_map.sh).  As a value of exactly 1/1000 (one iteration of
+ * 1000) is black, the step stands just above 0.001: at 0.001 in single
+ * precision, 0.001 + 4.7e-11, which no value k / n of n < 10^7
+ * iterations falls between.
  */
 static const zr_colour_map_entry agate_map[] = {
     {0.0, {1, 1, 1, 0, 0}},         {0.5, {0.95, 0.75, 0.5, 0, 0}},
@@ -124,6 +131,13 @@ static const zr_colour_map_entry radial_map[] = {
     {0.0, {0, 1, 1, 0, 0}},       {1.0 / 3, {1, 1, 0, 0, 0}},
     {2.0 / 3, {1, 0, 1, 0, 0}},   {1.0, {0, 1, 1, 0, 0}},
 };
+static const zr_colour_map_entry mandel_map[] = {
+    {0.0, {0, 0, 0, 0, 0}},
+    {0.0010000000474974513, {0, 0, 0, 0, 0}},
+    {0.0010000000474974513, {0, 1, 1, 0, 0}},
+    {0.012, {1, 1, 0, 0, 0}},
+    {0.015, {1, 0, 1, 0, 0}}, {0.1, {0, 1, 1, 0, 0}},
+};
 static const zr_colour_map_entry wood_map[] = {
     {0.6, {0.666, 0.312, 0.2, 0, 0}},
     {0.6, {0.4, 0.1333, 0.066, 0, 0}},
@@ -132,6 +146,7 @@ static const zr_colour_map_entry wood_map[] = {
 static const zr_colour_map agate_default = MAP_OF(agate_map);
 static const zr_colour_map bozo_default = MAP_OF(bozo_map);
 static const zr_colour_map marble_default = MAP_OF(marble_map);
+static const zr_colour_map mandel_default = MAP_OF(mandel_map);
 static const zr_colour_map radial_default = MAP_OF(radial_map);
 static const zr_colour_map wood_default = MAP_OF(wood_map);
 
@@ -143,6 +158,8 @@ static const zr_colour_map *default_map_of(zr_pattern_kind kind) {
     return &bozo_default;
   case ZR_PAT_MARBLE:
     return &marble_default;
+  case ZR_PAT_MANDEL:
+    return &mandel_default;
   case ZR_PAT_RADIAL:
     return &radial_default;
   case ZR_PAT_WOOD:

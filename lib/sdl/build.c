@@ -1533,6 +1533,7 @@ static bool legacy_ior(zr_sdl_parser *p, zr_object *o,
   if (!in)
     return false;
   in->ior = f->legacy_ior;
+  in->ior_given = true;
   set_interior(o, in, true);
   return true;
 }

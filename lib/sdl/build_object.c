@@ -273,53 +273,11 @@ static bool add_lights(zr_sdl_parser *p, const zr_object *o,
   return true;
 }
 
-void zr__sdl_note_dispersion(zr_sdl_parser *p, zr_interior *in,
-                             const zr_sdl_loc *loc) {
-  in->dispersion_where.file = p->files[loc->file].scene_path;
-  in->dispersion_where.line = loc->line;
-  in->dispersion_where.column = loc->column;
-}
-
-/* The interior with dispersion that o or one of its CSG parts has, or
-   NULL. */
-static const zr_interior *dispersing(const zr_object *o) {
-  if (o->interior && o->interior->dispersion != 1.0)
-    return o->interior;
-  if (zr__is_csg(o->kind))
-    for (size_t i = 0; i < o->u.csg.n_children; i++) {
-      const zr_interior *in = dispersing(o->u.csg.children[i]);
-      if (in)
-        return in;
-    }
-  return NULL;
-}
-
-/* Dispersion is not rendered: the first object of the scene that has
-   it is told of, at the place the interior's dispersion was written
-   (declared interiors that no object in the scene uses, as glass.inc's,
-   say nothing). */
-static void warn_dispersion(zr_sdl_parser *p, const zr_object *o) {
-  if (p->dispersion_warned)
-    return;
-  const zr_interior *in = dispersing(o);
-  if (!in)
-    return;
-  p->dispersion_warned = true;
-  zr_sdl_loc at = {-1, in->dispersion_where.line,
-                   in->dispersion_where.column, 10};
-  for (size_t i = 0; i < p->n_files; i++)
-    if (p->files[i].scene_path == in->dispersion_where.file)
-      at.file = (int)i;
-  zr__sdl_warning(p, &at, "'dispersion' is not rendered yet: refraction "
-                          "uses the mean ior");
-}
-
 bool zr__sdl_add_object(zr_sdl_parser *p, zr_object *o,
                         const zr_sdl_loc *loc) {
   if (zr__scene_add_object(p->scene, o) != ZR_OK) {
     zr__sdl_error(p, ZR_ENOMEM, loc, "out of memory");
     return false;
   }
-  warn_dispersion(p, o);
   return add_lights(p, o, loc);
 }

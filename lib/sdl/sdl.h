@@ -621,9 +621,6 @@ typedef struct zr_sdl_parser {
   zr_sdl_symtab globals;
   double version;
   bool version_given; /* a #version was read */
-  /* An object with dispersion in its interior was added to the scene
-     and said so (zr__sdl_add_object): one warning a parse. */
-  bool dispersion_warned;
   /* The pixels of every image_map read, taken to the working gamma
      space once assumed_gamma is known (the end of the parse). */
   float **image_pixels;
@@ -1031,13 +1028,8 @@ bool zr__sdl_csg_copy_lights(zr_sdl_parser *p, zr_object *copy);
    global: global_lights on. */
 bool zr__sdl_light_group_done(zr_sdl_parser *p, zr_object *group,
                               bool global, const zr_sdl_loc *loc);
-/* interior { dispersion }: records where, for the warning that
-   zr__sdl_add_object gives when an object of the scene has it. */
-void zr__sdl_note_dispersion(zr_sdl_parser *p, zr_interior *in,
-                             const zr_sdl_loc *loc);
 /* Adds a finished top-level object to the scene, and the lights that
-   its CSG carries to the scene's lights; warns of what it has that is
-   not rendered (dispersion). */
+   its CSG carries to the scene's lights. */
 bool zr__sdl_add_object(zr_sdl_parser *p, zr_object *o,
                         const zr_sdl_loc *loc);
 zr_object *zr__sdl_quadric(zr_sdl_parser *p, const zr_sdl_expr e[4],

@@ -14,6 +14,7 @@ lib_libzrcube_la_SOURCES += \
 	lib/trace/obj_triangle.c lib/trace/obj_cone.c lib/trace/obj_disc.c \
 	lib/trace/render.c lib/trace/render.h \
 	lib/trace/shade.c lib/trace/shade.h \
+	lib/trace/dispersion.c lib/trace/dispersion.h \
 	lib/trace/photons.c lib/trace/photons.h \
 	lib/trace/subsurface.c
 

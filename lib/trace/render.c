@@ -541,6 +541,8 @@ static zr_status render_pixels(const zr_scene *scene,
   job.tracer.shadow_cache = &shadow_cache;
   job.tracer.shadow_path = NULL;
   job.tracer.media_start = NULL;
+  job.tracer.dispersed = false;
+  job.tracer.dispersion_u = 0.0;
   if (camera_media)
     job.camera_media = *camera_media;
   else

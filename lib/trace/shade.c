@@ -70,6 +70,7 @@
 #include "scene/texture.h"
 #include "trace/atmosphere.h"
 #include "trace/bvh.h"
+#include "trace/dispersion.h"
 #include "trace/photons.h"
 #include "trace/lights.h"
 #include "trace/media.h"
@@ -498,6 +499,11 @@ typedef struct surface {
   bool uv_all, uv_known;
   double hu, hv;
   zr_vec3 uvp;
+  /* The interior the ray leaves here and fades (stretch_interior; NULL:
+     none), and the length of the stretch it fades: only the light
+     transmitted out through the surface is faded (shade()). */
+  const zr_interior *leaving;
+  double stretch;
 } surface;
 
 /* The point a pattern is evaluated at: the hit, or its (u, v, 0). */
@@ -896,15 +902,13 @@ bool zr__media_cross(const zr_scene *scene, const zr_media *media,
 static const zr_interior *stretch_interior(const zr_scene *scene,
                                            const zr_media *media,
                                            const zr_object *part) {
+  /* A union of flat parts (no inside) is faded from the part a ray went
+     in by to the part it leaves by, as a solid: povray 3.7.0.10 fades a
+     cube of twelve clear triangles as a box (tests/test_flat_interior.sh
+     case 2; the corpus' diamond.pov, fade_distance 1 and fade_power 1001,
+     went from SSIM 0.898 to 0.979 with it). */
   int i = held_at(media, part, scene->default_interior);
   if (i < 0)
-    return NULL;
-  /* A union of flat parts (no inside) left by another part than the one
-     it was entered by is not faded: fading there took the corpus'
-     diamond.pov (fade_distance 1, fade_power 1001) from SSIM 0.827 to
-     0.795; how povray fades such a union is not measured further. */
-  const zr_object *solid = part->solid ? part->solid : part;
-  if (!zr__has_inside(solid) && media->objects[i] != solid)
     return NULL;
   return media->interiors[i];
 }
@@ -982,6 +986,43 @@ static zr_rgb trace_secondary(const zr_tracer *tr, zr_vec3 origin,
 static void media_beyond(const zr_tracer *tr, const surface *s,
                          const zr_media *media, zr_media *next) {
   zr__media_cross(tr->scene, media, s->object, next);
+}
+
+/*
+ * The light a ray refracted at s into or out of a dispersing interior
+ * (in1 on this side, in2 beyond) brings: POV-Ray 3.7 splits it into the
+ * interior's dispersion_samples colours of the spectrum, each refracted
+ * with its own ior and weighted by its colour (lib/trace/dispersion.c,
+ * measured).  Where both sides disperse the one beyond gives the count.
+ * A colour for which the surface reflects totally goes on as the mirrored
+ * ray (then in the media on this side); each colour's ray keeps the
+ * whole weight for adc_bailout, a choice no measurement made.
+ */
+static zr_rgb dispersed(const zr_tracer *tr, const surface *s,
+                        const zr_interior *in1, const zr_interior *in2,
+                        zr_vec3 above, zr_vec3 below, zr_vec3 mirror,
+                        int level, double weight, const zr_media *media,
+                        const zr_media *next) {
+  int n = zr__disperses(in2) ? in2->dispersion_samples
+                             : in1->dispersion_samples;
+  zr_tracer one = *tr;
+  one.dispersed = true;
+  zr_rgb sum = zr_rgb3(0, 0, 0);
+  for (int i = 0; i < n; i++) {
+    one.dispersion_u = zr__dispersion_u(i, n);
+    double n1 = zr__dispersed_ior(in1, one.dispersion_u);
+    double n2 = zr__dispersed_ior(in2, one.dispersion_u);
+    zr_vec3 dir = s->d;
+    zr_rgb c;
+    if (n1 != n2 && !zr__refract(s->d, s->n, n1 / n2, &dir))
+      c = trace_secondary(&one, ray_start(s, above, mirror), mirror, level,
+                          weight, media);
+    else
+      c = trace_secondary(&one, ray_start(s, below, dir), dir, level,
+                          weight, next);
+    sum = zr_rgb_add(sum, zr_rgb_mul(zr__dispersion_colour(i, n), c));
+  }
+  return sum;
 }
 
 /*
@@ -1099,12 +1140,24 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
                 !f->conserve_energy;
   zr_media next;
   double n1 = 1.0, n2 = 1.0;
+  /* The interiors on this side and beyond, when either disperses. */
+  const zr_interior *in1 = NULL, *in2 = NULL;
+  bool dispersing = false;
   if (opaque && !f->reflection_fresnel) {
     next.n = next.passes = 0;
   } else {
     media_beyond(tr, s, media, &next);
     n1 = zr__media_ior(media);
     n2 = zr__media_ior(&next);
+    in1 = media && media->n > 0 ? media->interiors[media->n - 1] : NULL;
+    in2 = next.n > 0 ? next.interiors[next.n - 1] : NULL;
+    dispersing = zr__disperses(in1) || zr__disperses(in2);
+    /* A ray of one colour of a spectrum sees that colour's iors, for
+       Fresnel's law too. */
+    if (dispersing && tr->dispersed) {
+      n1 = zr__dispersed_ior(in1, tr->dispersion_u);
+      n2 = zr__dispersed_ior(in2, tr->dispersion_u);
+    }
   }
   /* Where a ray goes out of an interior and its path still holds
      another (a glass inside a hollow sky sphere, a solid plane or any
@@ -1154,6 +1207,8 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
     zr_tracer rt = reflecting(tr);
     zr_rgb r = trace_secondary(&rt, ray_start(s, above, mirror), mirror,
                                level, tw, media);
+    if (s->leaving)
+      r = fade_by(s->leaving, s->stretch, r);
     return zr_rgb_add(sum, r);
   }
 
@@ -1190,8 +1245,22 @@ static zr_rgb shade(const zr_tracer *tr, const surface *s, int level,
       /* +UA: the background beyond is clear by grey(f C + t) of it. */
       zr_tracer buf;
       const zr_tracer *ttr = clear_scaled(tr, zr__grey(trans), &buf);
-      zr_rgb t = trace_secondary(ttr, ray_start(s, below, refr_dir),
-                                 refr_dir, next_level, tw, &next);
+      zr_rgb t = dispersing && !tr->dispersed
+                     ? dispersed(ttr, s, in1, in2, above, below, mirror,
+                                 next_level, tw, media, &next)
+                     : trace_secondary(ttr, ray_start(s, below, refr_dir),
+                                       refr_dir, next_level, tw, &next);
+      /* Leaving a fading interior, only the light that comes through is
+         faded, by the stretch the ray travelled inside: povray 3.7.0.10
+         fades neither the surface's own light nor its reflection there
+         (a clear slab of fade_distance 1 and fade_power 1001, reflection
+         0.5, max_trace_level 4, reflects the background into the camera
+         faded once, by e^-1 for the 2 units of its way inside, and in a
+         wedge by the stretch after the reflection; transmit 0.5 with
+         emission 1 shows the back face's own light unfaded: tests/
+         test_exit_fade.sh). */
+      if (s->leaving)
+        t = fade_by(s->leaving, s->stretch, t);
       sum = zr_rgb_add(sum, zr_rgb_mul(trans, t));
     }
   }
@@ -1529,6 +1598,8 @@ static zr_rgb trace_upto(const zr_tracer *tracer, const zr_ray *ray,
   s.path = tracer->path + hit.t * zr_v3_len(ray->dir);
   s.uv_all = hit.object->uv_mapping;
   s.uv_known = false;
+  s.leaving = NULL;
+  s.stretch = 0.0;
   s.hu = hit.u;
   s.hv = hit.v;
   zr_vec3 n = hit.normal;
@@ -1575,11 +1646,16 @@ static zr_rgb trace_upto(const zr_tracer *tracer, const zr_ray *ray,
       l = zr_rgb3(0, 0, 0); /* no surface in the solution: black */
     return l;
   }
-  /* Media, fog and rainbows between the ray's origin and the hit, and
-     the fading of the interior the ray leaves here. */
+  /* The fading of the interior the ray leaves here, which shade()
+     applies to the light transmitted out only, and media, fog and
+     rainbows between the ray's origin and the hit. */
+  const zr_interior *fade = stretch_interior(scene, media, hit.object);
+  if (fade && fade->fade_distance != 0.0) {
+    s.leaving = fade;
+    s.stretch = hit.t * zr_v3_len(ray->dir);
+  }
   double before = tracer->clear ? *tracer->clear : 0.0;
   zr_rgb lit = shade(tracer, &s, level, weight, media);
-  const zr_interior *fade = stretch_interior(scene, media, hit.object);
   if (tracer->clear)
     clear_through_way(tracer, before, media, ray, hit.t, fade);
   /* zr__media_along's and fade_by's first tests written here: most
@@ -1590,10 +1666,7 @@ static zr_rgb trace_upto(const zr_tracer *tracer, const zr_ray *ray,
                  ? lit
                  : zr__media_along(tracer, media, ray->origin, ray->dir,
                                    hit.t, lit);
-  c = fogged(scene, media, ray->origin, ray->dir, hit.t, c);
-  if (!fade || fade->fade_distance == 0.0)
-    return c;
-  return fade_by(fade, hit.t * zr_v3_len(ray->dir), c);
+  return fogged(scene, media, ray->origin, ray->dir, hit.t, c);
 }
 
 zr_rgb zr__trace_ray(const zr_tracer *tracer, const zr_ray *ray, int level,

@@ -190,6 +190,12 @@ typedef struct zr_tracer {
      shadow rays of its samples start (NULL: where their crossings say;
      lib/trace/media.c zr__media_shadow). */
   const zr_media *media_start;
+  /* A ray that a dispersing interior split (lib/trace/dispersion.c)
+     carries one colour of the spectrum, at dispersion_u in -0.5 (red)
+     .. 0.5 (violet): it and the rays it spawns refract with that
+     colour's ior in every dispersing interior and are split no more. */
+  bool dispersed;
+  double dispersion_u;
 } zr_tracer;
 
 /* Sets the tracer's quality flags and no_media for POV-Ray's +Q: 0 to 11
