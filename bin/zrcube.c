@@ -757,13 +757,17 @@ static int read_scene(run *r) {
   r->files_hash = ZR_STATE_HASH_START;
   zr__par_mark("parse start");
   double start = zr__par_now(), cpu = zr__par_cpu();
-  /* The ranks build a large mesh's hierarchy together, each its share
-     (zr_context_set_team), when every rank has its context: each
-     parse is then collective, and a rank that could not parse would
-     leave the others waiting.  Ranks that read other bytes part in the
-     parse itself and each builds alone. */
-  if (several && zr__par_agree(r->par, local) == ZR_OK)
-    zr_context_set_team(r->ctx, &r->team);
+  /* Each rank builds a large mesh's hierarchy alone.  Sharing the
+     build (zr_context_set_team, the ranks meeting at the mesh and
+     trading their halves) paid when the parse was slower; now it costs
+     more in meetings and copies than it saves: rank 0's parse of
+     bench/peers.sh's terrain (130,050 triangles) under mpirun -n 2, 10
+     interleaved pairs on the quiet machine, alone 0.0885-0.1071 s
+     (median 0.100) against shared 0.0911-0.1281 s (0.108), and of a
+     terrain of 522,242 triangles 0.306-0.460 s (0.335) against
+     0.319-0.759 s (0.377) (bench/results/session18-2026-12-04.md).
+     With no meeting in it, each rank's parse is its own: a rank that
+     could not parse cannot leave the others waiting there. */
   if (have_context) {
     /* The library's own reader applies the I/O restrictions. */
     zr_context_set_read_observer(r->ctx,
@@ -811,8 +815,6 @@ static int read_scene(run *r) {
         r->scene = NULL;
         zr_context_set_read_observer(r->ctx, NULL, NULL);
         zr_context_set_reader(r->ctx, zr__bundle_serve_reader, &r->bundle);
-        /* This parse is this rank's alone: the others are done. */
-        zr_context_set_team(r->ctx, NULL);
         local = zr_scene_parse_file(r->ctx, r->opts.input, &r->scene);
         from_bundle = 1;
         if (local != ZR_OK && r->diag.errors_printed == 0)
