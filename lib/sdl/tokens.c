@@ -392,17 +392,24 @@ static bool run_body(const zr_sdl_file *f, zr_sdl_numreader *r, int n,
   return true;
 }
 
-/* The run token of kind at (line, column), the place of its keyword of
-   length bytes, whose vectors start at run: a smooth_triangle's, whose
-   grammar action reads them again from there (build_mesh.c). */
-static zr_status push_run(zr_sdl_file *f, size_t *cap, int kind, int line,
-                          int column, int length, const char *run) {
+/* A run token of kind at (line, column), the place of its keyword of
+   length bytes, without its value. */
+static zr_sdl_token run_at(int kind, int line, int column, int length) {
   zr_sdl_token t;
   memset(&t, 0, sizeof t);
   t.kind = kind;
   t.line = line;
   t.column = column;
   t.length = length;
+  return t;
+}
+
+/* The run token of kind, whose vectors start at run: a
+   smooth_triangle's, whose grammar action reads them again from there
+   (build_mesh.c). */
+static zr_status push_run(zr_sdl_file *f, size_t *cap, int kind, int line,
+                          int column, int length, const char *run) {
+  zr_sdl_token t = run_at(kind, line, column, length);
   t.v.str = run;
   return push_token(f, cap, &t);
 }
@@ -438,12 +445,7 @@ static zr_status push_corner_run(zr_sdl_file *f, size_t *cap, int line,
   for (int k = 0; k < 3; k++)
     memcpy(f->corners + at + 3 * k, v[k], 3 * sizeof(double));
   f->n_corners += 9;
-  zr_sdl_token t;
-  memset(&t, 0, sizeof t);
-  t.kind = T_TRIANGLE_RUN;
-  t.line = line;
-  t.column = column;
-  t.length = length;
+  zr_sdl_token t = run_at(T_TRIANGLE_RUN, line, column, length);
   t.v.corner = at;
   return push_token(f, cap, &t);
 }
