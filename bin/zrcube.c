@@ -631,6 +631,14 @@ static uint64_t fold_file(uint64_t h, const char *path, size_t size,
   return zr__state_hash(h, &hash, sizeof hash);
 }
 
+/* What digest_observer recorded of the file at path, or NULL. */
+static const struct file_digest *find_digest(const run *r, const char *path) {
+  for (size_t i = 0; i < r->n_digests; i++)
+    if (strcmp(r->digests[i].path, path) == 0)
+      return &r->digests[i];
+  return NULL;
+}
+
 /* The read observer of every rank that reads the disk: files_hash
    takes each file as it comes; a file read again must be the same
    bytes, as the bundle's recorder checks. */
@@ -638,11 +646,9 @@ static zr_status digest_observer(const char *path, const char *bytes,
                                  size_t size, void *user) {
   run *r = user;
   uint64_t hash = zr__state_digest(bytes, size);
-  for (size_t i = 0; i < r->n_digests; i++)
-    if (strcmp(r->digests[i].path, path) == 0)
-      return r->digests[i].size == size && r->digests[i].hash == hash
-                 ? ZR_OK
-                 : ZR_EIO;
+  const struct file_digest *seen = find_digest(r, path);
+  if (seen)
+    return seen->size == size && seen->hash == hash ? ZR_OK : ZR_EIO;
   struct file_digest *d =
       realloc(r->digests, (r->n_digests + 1) * sizeof *d);
   if (!d)
@@ -678,14 +684,11 @@ static zr_status root_observer(const char *path, const char *bytes,
    the size and digest digest_observer recorded. */
 static zr_status same_as_parsed(const char *path, const char *bytes,
                                 size_t size, void *user) {
-  const run *r = user;
-  for (size_t i = 0; i < r->n_digests; i++)
-    if (strcmp(r->digests[i].path, path) == 0)
-      return r->digests[i].size == size &&
-                     r->digests[i].hash == zr__state_digest(bytes, size)
-                 ? ZR_OK
-                 : ZR_EIO;
-  return ZR_EIO;
+  const struct file_digest *seen = find_digest(user, path);
+  return seen && seen->size == size &&
+                 seen->hash == zr__state_digest(bytes, size)
+             ? ZR_OK
+             : ZR_EIO;
 }
 
 /* Rank 0, before it sends its files: the deferred ones read again.  A

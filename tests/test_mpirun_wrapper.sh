@@ -4,7 +4,8 @@
 # when it has fewer) with none of OpenMPI's switches in the environment
 # (as root too, when the test runs as root), and the picture is the same
 # bytes as one process renders; and mpirun's own topology discovery is
-# cut to the processors on a job of this host alone (see the wrapper).
+# cut to the processors on a job of this host alone, and Open MPI 4's
+# components no such job uses are excluded (see the wrapper).
 #
 # Environment: ZR_SRCDIR, ZR_BUILDDIR (set by `make check`).
 set -u
@@ -54,6 +55,7 @@ fi
 cat >fake-mpirun <<'SH'
 #!/bin/sh
 echo "${HWLOC_COMPONENTS-unset} ${HWLOC_PLUGINS_BLACKLIST-unset}" >hwloc.txt
+echo "${OMPI_MCA_errmgr-unset} ${OMPI_MCA_shmem-unset} ${OMPI_MCA_reachable-unset} ${PMIX_MCA_prm-unset}" >mca.txt
 SH
 chmod +x fake-mpirun
 hwloc_of() { # hwloc_of [VAR=VALUE...]: what the wrapper gives mpirun
@@ -76,5 +78,34 @@ got=$(hwloc_of HWLOC_COMPONENTS=-gl)
 case $got in "-gl "*) ;; *) echo "a user's HWLOC_COMPONENTS: '$got'"; failed=1 ;; esac
 got=$(hwloc_of SLURM_JOB_ID=7)
 [ "$got" = "unset unset" ] || { echo "hwloc in a Slurm job: '$got'"; failed=1; }
+# Open MPI 4's launcher on one host: the components no job of this host
+# uses are excluded (a few frameworks shown), a user's list is kept,
+# and neither a batch job nor an mpirun not said to be Open MPI 4's
+# gets them.
+mca_of() { # mca_of [VAR=VALUE...]: the MCA lists the wrapper gives mpirun
+  rm -f mca.txt
+  env -u OMPI_MCA_errmgr -u OMPI_MCA_shmem -u OMPI_MCA_reachable \
+    -u PMIX_MCA_prm -u SLURM_JOB_ID -u PBS_JOBID -u LSB_JOBID -u PE_HOSTFILE \
+    -u OMPI_MCA_orte_default_hostfile -u MPIRUN_OMPI4 "$@" \
+    MPIRUN=./fake-mpirun "$wrapper" -n 2 s.pov >/dev/null 2>&1
+  cat mca.txt 2>/dev/null || echo "not run"
+}
+narrow="^default_orted,default_tool ^posix,sysv ^netlink ^slurm"
+if grep -q '^[[:space:]]*[^#[:space:]]' /etc/openmpi/openmpi-default-hostfile \
+     2>/dev/null; then
+  echo "MCA lists: not checked on one host: the default host file names hosts"
+else
+  got=$(mca_of MPIRUN_OMPI4=yes)
+  [ "$got" = "$narrow" ] || { echo "Open MPI 4 on one host: '$got'"; failed=1; }
+  got=$(mca_of MPIRUN_OMPI4=yes OMPI_MCA_shmem=sysv)
+  [ "$got" = "^default_orted,default_tool sysv ^netlink ^slurm" ] ||
+    { echo "a user's OMPI_MCA_shmem: '$got'"; failed=1; }
+fi
+got=$(mca_of)
+[ "$got" = "unset unset unset unset" ] ||
+  { echo "an mpirun not said to be Open MPI 4's: '$got'"; failed=1; }
+got=$(mca_of MPIRUN_OMPI4=yes SLURM_JOB_ID=7)
+[ "$got" = "unset unset unset unset" ] ||
+  { echo "MCA lists in a Slurm job: '$got'"; failed=1; }
 [ "$failed" = 0 ] && echo "1 passed, 0 failed" || echo "0 passed, 1 failed"
 exit "$failed"

@@ -65,41 +65,48 @@ static char *file_room(size_t size) {
   return p;
 }
 
-zr_status zr__bundle_add(zr_bundle *bundle, const char *path,
-                         const char *bytes, size_t size) {
+/* A new entry at the end of the bundle for path, its bytes still
+   NULL and its size 0; NULL when memory runs out. */
+static zr_bundle_file *append_file(zr_bundle *bundle, const char *path) {
   if (bundle->count == bundle->cap) {
     size_t cap = bundle->cap ? 2 * bundle->cap : 8;
     zr_bundle_file *files = realloc(bundle->files, cap * sizeof *files);
     if (!files)
-      return ZR_ENOMEM;
+      return NULL;
     bundle->files = files;
     bundle->cap = cap;
   }
   zr_bundle_file *f = &bundle->files[bundle->count];
-  f->path = strdup(path);
-  f->bytes = file_room(size);
-  if (!f->path || !f->bytes) {
-    free(f->path);
-    free(f->bytes);
+  if (!(f->path = strdup(path)))
+    return NULL;
+  f->bytes = NULL;
+  f->size = 0;
+  bundle->count++;
+  return f;
+}
+
+zr_status zr__bundle_add(zr_bundle *bundle, const char *path,
+                         const char *bytes, size_t size) {
+  char *room = file_room(size);
+  zr_bundle_file *f = room ? append_file(bundle, path) : NULL;
+  if (!f) {
+    free(room);
     return ZR_ENOMEM;
   }
   if (size)
-    memcpy(f->bytes, bytes, size);
+    memcpy(room, bytes, size);
+  f->bytes = room;
   f->size = size;
-  bundle->count++;
   return ZR_OK;
 }
 
 zr_status zr__bundle_add_deferred(zr_bundle *bundle, const char *path,
                                   size_t size) {
-  zr_status s = zr__bundle_add(bundle, path, NULL, 0);
-  if (s == ZR_OK) {
-    zr_bundle_file *f = &bundle->files[bundle->count - 1];
-    free(f->bytes);
-    f->bytes = NULL;
-    f->size = size;
-  }
-  return s;
+  zr_bundle_file *f = append_file(bundle, path);
+  if (!f)
+    return ZR_ENOMEM;
+  f->size = size;
+  return ZR_OK;
 }
 
 static int deferred(const zr_bundle_file *f) { return !f->bytes && f->size; }
