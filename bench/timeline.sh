@@ -19,6 +19,8 @@
 # give mpirun's whole wall and CPU time (/usr/bin/time: the launcher
 # and every rank) and what mpirun took beyond the ranks' processes.
 # RT=1 (as root) runs under chrt -r 20, as bench/mpi_n2.sh does.
+# LAUNCHER=zrcube-mpirun runs the README's launcher as installed (the
+# build's bin/zrcube-mpirun beside the real binary) instead of mpirun.
 #   bench/timeline.sh [build-dir]
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
@@ -32,6 +34,16 @@ export OMPI_MCA_rmaps_base_oversubscribe=1 ZRCUBE_TIMELINE=1
 . "$here/zrexe.sh"
 . "$here/timing.sh"
 /usr/bin/python3 "$here/peers_gen.py" "$tmp" >/dev/null
+LAUNCHER=${LAUNCHER:-mpirun}
+case $LAUNCHER in
+  mpirun) ;;
+  zrcube-mpirun)
+    mkdir "$tmp/bin"
+    cp "$build/bin/zrcube-mpirun" "$tmp/bin/"
+    ln -s "$zrcube" "$tmp/bin/zrcube"
+    unset MPIRUN ;;
+  *) echo "timeline.sh: LAUNCHER is mpirun or zrcube-mpirun" >&2; exit 2 ;;
+esac
 cd "$tmp"
 echo "load before: $(cat /proc/loadavg)"
 for n in $NP; do
@@ -39,9 +51,14 @@ for n in $NP; do
   for _ in $(seq 1 "$REPEAT"); do
     start=$(date +%s.%N)
     # shellcheck disable=SC2086
-    /usr/bin/time -f "time %e %U %S" -o time.txt $rt mpirun --bind-to none \
-      -n "$n" $zrcube "+I$SCENE.pov" "+W$SIZE" "+H$SIZE" -A +WT1 -D \
-      +Oout.png >/dev/null 2>err.txt || { cat err.txt >&2; exit 1; }
+    if [ "$LAUNCHER" = mpirun ]; then
+      set -- mpirun --bind-to none -n "$n" "$zrcube"
+    else
+      set -- bin/zrcube-mpirun -n "$n"
+    fi
+    /usr/bin/time -f "time %e %U %S" -o time.txt $rt "$@" "+I$SCENE.pov" \
+      "+W$SIZE" "+H$SIZE" -A +WT1 -D +Oout.png >/dev/null 2>err.txt ||
+      { cat err.txt >&2; exit 1; }
     wall=$(awk '{ print $2 }' time.txt)
     if [ -z "$best" ] || awk -v a="$wall" -v b="$best" 'BEGIN { exit !(a < b) }'
     then
@@ -51,7 +68,7 @@ for n in $NP; do
     fi
   done
   echo
-  echo "$SCENE ${SIZE}^2, mpirun -n $n, best of $REPEAT (${rt:-no real-time policy})"
+  echo "$SCENE ${SIZE}^2, $LAUNCHER -n $n, best of $REPEAT (${rt:-no real-time policy})"
   awk '
     $1 == "start" { t0 = $2; next }
     $1 == "time" { wall = $2; cpu = $3 + $4; next }
