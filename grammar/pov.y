@@ -196,6 +196,7 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
   const char *str;
   const double *sphere;
   const double *corners;
+  zr_sdl_smooth_run smooth;
   zr_sdl_sphere_tex sphere_tex;
   zr_sdl_decl_name decl;
   zr_sdl_value value;
@@ -251,7 +252,7 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
    at the vectors in the file. */
 %token <corners> T_TRIANGLE_RUN "triangle with its corners"
 %token <sphere> T_SPHERE_RUN "sphere with its centre and radius"
-%token <str> T_SMOOTH_TRIANGLE_RUN "smooth_triangle with its corners"
+%token <smooth> T_SMOOTH_TRIANGLE_RUN "smooth_triangle with its corners"
 /* T_SPHERE_RUN and "texture { T } }" after it (directive.c,
    sphere_textured): a whole object.  Messages call it T_SPHERE_RUN's
    name and never list it (yyreport_syntax_error). */
@@ -1519,7 +1520,7 @@ object:
       zr__sdl_degenerate_triangle(p, $$->u.triangle.p, &@1);
     }
 | T_SMOOTH_TRIANGLE_RUN
-    { TRY($$ = zr__sdl_smooth_triangle_run(p, $1, &@1)); }
+    { TRY($$ = zr__sdl_smooth_triangle_run(p, &$1, &@1)); }
 | T_SPHERE_TEXTURED
     {
       TRY($$ = zr__sdl_sphere_textured(p, &$1, &@1));
@@ -2105,7 +2106,7 @@ mesh_head:
 | mesh_head T_TRIANGLE_RUN
     { TRY(zr__sdl_mesh_triangle_run(p, $1, $2, &@2)); $$ = $1; }
 | mesh_head T_SMOOTH_TRIANGLE_RUN
-    { TRY(zr__sdl_mesh_smooth_triangle_run(p, $1, $2, &@2)); $$ = $1; }
+    { TRY(zr__sdl_mesh_smooth_triangle_run(p, $1, &$2, &@2)); $$ = $1; }
 | mesh_head T_TRIANGLE '{' expr comma expr comma expr mesh_texture '}'
     {
       zr_sdl_expr v[3] = {$4, $6, $8};
@@ -4174,11 +4175,13 @@ int zr__pov_lex(ZR__POV_STYPE *lval, zr_sdl_loc *lloc, zr_sdl_parser *p) {
   case T_STRING:
   case T_IDENTIFIER:
   case T_UNSUPPORTED:
-  case T_SMOOTH_TRIANGLE_RUN:
     lval->str = v.str;
     break;
   case T_TRIANGLE_RUN:
     lval->corners = v.corners;
+    break;
+  case T_SMOOTH_TRIANGLE_RUN:
+    lval->smooth = v.smooth;
     break;
   case T_SPHERE_RUN:
     lval->sphere = v.sphere;

@@ -37,3 +37,33 @@ object { M pigment { Magenta } translate <4,0,7> }
 mesh { triangle { <0,0,0>, <1,0,0>, <0,0,1> }
 #include "mesh_runs.inc"
        triangle { <0,0,1>, <1,0,1>, <0,1,2> } pigment { Orange } translate <0,0,-3> }
+// Smooth triangle runs (tokens.c keeps their corners and normals;
+// build_mesh.c lets a mesh of them take both arrays as they lie).
+// 8. smooth runs only
+mesh { smooth_triangle { <0,0,0>, <0.6,1,0>, <1,0,0>, <-0.4,1,0.2>, <0,0,1>, <0,1,-0.7> }
+       smooth_triangle { <1,0,0>, <-0.4,1,0.2>, <1,0,1>, <0.3,1,0.9>, <0,0,1>, <0,1,-0.7> }
+       smooth_triangle { <0,0,1>, <0,1,-0.7>, <1,0,1>, <0.3,1,0.9>, <0,1,2>, <-1,0.2,0> }
+       pigment { Green } scale 1.8 translate <-7,0,10> }
+// 9. smooth runs, a plain run, smooth runs
+mesh { smooth_triangle { <0,0,0>, <0.6,1,0>, <1,0,0>, <-0.4,1,0.2>, <0,0,1>, <0,1,-0.7> }
+       triangle { <1,0,0>, <1,0,1>, <0,0,1> }
+       smooth_triangle { <0,0,1>, <0,1,-0.7>, <1,0,1>, <0.3,1,0.9>, <0,1,2>, <-1,0.2,0> }
+       smooth_triangle { <1,0,1>, <0.3,1,0.9>, <1,1,2>, <0.8,0.5,0>, <0,1,2>, <-1,0.2,0> }
+       pigment { Blue } scale 1.8 translate <-3,0,10> }
+// 10. plain runs, then smooth runs
+mesh { triangle { <0,0,0>, <1,0,0>, <0,0,1> } triangle { <1,0,0>, <1,0,1>, <0,0,1> }
+       smooth_triangle { <0,0,1>, <0,1,-0.7>, <1,0,1>, <0.3,1,0.9>, <0,1,2>, <-1,0.2,0> }
+       smooth_triangle { <1,0,1>, <0.3,1,0.9>, <1,1,2>, <0.8,0.5,0>, <0,1,2>, <-1,0.2,0> }
+       pigment { Yellow } scale 1.8 translate <1,0,10> }
+// 11. smooth runs read again by a loop
+#declare I = 0;
+#while (I < 2)
+  mesh { smooth_triangle { <0,0,0>, <0.6,1,0>, <1,0,0>, <-0.4,1,0.2>, <0,1,0>, <0,1,-0.7> }
+         smooth_triangle { <1,0,0>, <-0.4,1,0.2>, <1,1,0>, <0.3,1,0.9>, <0,1,0>, <0,1,-0.7> }
+         pigment { rgb <1, 0.3 + 0.4 * I, 0.2> } scale 1.8 translate <5 + 3 * I, 0, 10> }
+  #declare I = I + 1;
+#end
+// 12. smooth runs, then a smooth_triangle with a texture of its own
+mesh { smooth_triangle { <0,0,0>, <0.6,1,0>, <1,0,0>, <-0.4,1,0.2>, <0,0,1>, <0,1,-0.7> }
+       smooth_triangle { <1,0,0>, <-0.4,1,0.2>, <1,0,1>, <0.3,1,0.9>, <0,0,1>, <0,1,-0.7> texture { T } }
+       pigment { White } scale 1.8 translate <-6,3,10> }

@@ -480,16 +480,21 @@ static void test_numlist_runs_after_runs(void **state) {
                want[i].kind, want[i].line, want[i].column, want[i].length);
   }
   /* A triangle's run holds its corners, one after another in the
-     file's corner array; a smooth_triangle's points at its vectors,
-     after its '{'. */
+     file's corner array; a smooth_triangle's holds its corners and
+     normals in turn. */
   static const double first[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
   static const double third[9] = {1, 1, 1, 2, 2, 2, 3, 3, 3};
   assert_memory_equal(file.tokens[2].v.corners, first, sizeof first);
   assert_memory_equal(file.tokens[3].v.corners, first, sizeof first);
   assert_ptr_equal(file.tokens[3].v.corners, file.tokens[2].v.corners + 9);
   assert_memory_equal(file.tokens[6].v.corners, third, sizeof third);
-  assert_ptr_equal(file.tokens[6].v.corners, file.tokens[3].v.corners + 9);
-  assert_int_equal(strncmp(file.tokens[4].v.str, " <0,0,0>, <0,0,1>", 17), 0);
+  /* The smooth run's corners lie between them. */
+  assert_ptr_equal(file.tokens[6].v.corners, file.tokens[3].v.corners + 18);
+  static const double normals[9] = {0, 0, 1, 0, 0, 1, 0, 0, 1};
+  assert_int_equal(file.tokens[4].v.smooth.corner, 18);
+  assert_memory_equal(file.corners + 18, first, sizeof first);
+  assert_int_equal(file.tokens[4].v.smooth.normal, 0);
+  assert_memory_equal(file.normals, normals, sizeof normals);
   zr__sdl_file_free(&file);
 }
 
@@ -518,6 +523,14 @@ static void test_numlist_smooth_triangle_run_token(void **state) {
   assert_int_equal(t[2].line, 1);
   assert_int_equal(t[2].column, 8);
   assert_int_equal(t[2].length, 15);
+  /* Its corners in the file's corner array, its normals in its normal
+     array. */
+  static const double corners[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  static const double normals[9] = {0, 0, 1, 0, 0, 1, 0, 0, 1};
+  assert_memory_equal(file.corners + t[2].v.smooth.corner, corners,
+                      sizeof corners);
+  assert_memory_equal(file.normals + t[2].v.smooth.normal, normals,
+                      sizeof normals);
   /* The scanner goes on after the '}', in its place. */
   assert_int_equal(t[3].kind, T_SMOOTH_TRIANGLE);
   assert_int_equal(t[3].line, 3);

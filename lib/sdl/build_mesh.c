@@ -53,6 +53,9 @@ typedef struct mesh_build {
      them (own_vertices). */
   bool borrowed;
   int borrowed_file; /* whose corners (the parser's file index) */
+  /* mesh.normals are the normals of the same file's smooth runs
+     (tokens.c), likewise (own_normals). */
+  bool borrowed_normals;
   bool mesh2;
   bool open;          /* a mesh2 list is being read */
   zr_sdl_mesh2_list list;
@@ -129,6 +132,27 @@ static bool own_vertices(zr_sdl_parser *p, struct zr_mesh *m) {
   return true;
 }
 
+/* The same for borrowed normals. */
+static bool own_normals(zr_sdl_parser *p, struct zr_mesh *m) {
+  mesh_build *b = (mesh_build *)(void *)m;
+  if (!b->borrowed_normals)
+    return true;
+  size_t n = m->n_normals, cap = 16;
+  while (cap <= n)
+    cap *= 2;
+  zr_vec3 *own = zr__arena_grow(&p->scene->arena, NULL, 0,
+                                cap * sizeof *own);
+  if (!own) {
+    zr__sdl_alloc_failed(p, cap * sizeof *own);
+    return false;
+  }
+  memcpy(own, m->normals, n * sizeof *own);
+  m->normals = own;
+  m->cap_normals = cap;
+  b->borrowed_normals = false;
+  return true;
+}
+
 static bool add_vertex(zr_sdl_parser *p, struct zr_mesh *m, zr_vec3 v,
                        uint32_t *index) {
   if (!own_vertices(p, m) ||
@@ -142,7 +166,8 @@ static bool add_vertex(zr_sdl_parser *p, struct zr_mesh *m, zr_vec3 v,
 
 static bool add_normal(zr_sdl_parser *p, struct zr_mesh *m, zr_vec3 v,
                        uint32_t *index) {
-  if (!grow(p, (void **)&m->normals, &m->cap_normals, m->n_normals,
+  if (!own_normals(p, m) ||
+      !grow(p, (void **)&m->normals, &m->cap_normals, m->n_normals,
             sizeof *m->normals))
     return false;
   *index = (uint32_t)m->n_normals;
@@ -255,26 +280,6 @@ bool zr__sdl_mesh_triangle(zr_sdl_parser *p, zr_object *o,
                       uvs ? uv : NULL, texture, &vertex_locs[0]);
 }
 
-/* The n vectors of a smooth_triangle's run token: the lexer found
-   exactly n items there; the same reader takes them again (numlist.c). */
-static bool run_vectors(zr_sdl_parser *p, const char *run,
-                        const zr_sdl_loc *loc, int n, zr_vec3 *out) {
-  const zr_sdl_file *f = &p->files[loc->file];
-  zr_sdl_numreader r = {f->bytes, (size_t)(run - f->bytes), f->size,
-                        loc->line, loc->column, false, false};
-  for (int k = 0; k < n; k++) {
-    double v[3];
-    int dim, line, column;
-    if (!zr__sdl_numlist_item(&r, v, &dim, &line, &column)) {
-      zr__sdl_error(p, ZR_ESYNTAX, loc, "the lexer's triangle vertices "
-                    "do not read again");
-      return false;
-    }
-    out[k] = zr_v3(v[0], v[1], v[2]);
-  }
-  return true;
-}
-
 void zr__sdl_triangle_run(const double *corners, zr_vec3 out[3]) {
   for (int k = 0; k < 3; k++)
     out[k] = zr_v3(corners[3 * k], corners[3 * k + 1], corners[3 * k + 2]);
@@ -334,26 +339,63 @@ bool zr__sdl_mesh_triangle_run(zr_sdl_parser *p, zr_object *o,
   return add_triangle(p, m, v, NULL, NULL, NULL, loc);
 }
 
-/* A smooth_triangle's run: corners and normals alternate. */
-static bool add_smooth_run(zr_sdl_parser *p, zr_object *o, const char *run,
-                           const zr_sdl_loc *loc) {
-  zr_vec3 e[6];
-  if (!run_vectors(p, run, loc, 6, e))
-    return false;
-  zr_vec3 v[3] = {e[0], e[2], e[4]}, n[3] = {e[1], e[3], e[5]};
-  return add_triangle(p, &build_of(o)->mesh, v, n, NULL, NULL, loc);
-}
-
+/*
+ * A face of a smooth_triangle's run, the same way: a mesh whose faces
+ * are all smooth runs of one file, one after another, takes the file's
+ * corner and normal arrays as its vertices and normals where they lie,
+ * each face's normals being its corners' (indices 3f, 3f + 1, 3f + 2
+ * in both).  A plain face among them (no normals of its own), a uv, a
+ * texture, or corners elsewhere copy them (own_vertices, own_normals
+ * through add_triangle), with the same values in the same order.
+ */
 bool zr__sdl_mesh_smooth_triangle_run(zr_sdl_parser *p, zr_object *o,
-                                      const char *run,
+                                      const zr_sdl_smooth_run *run,
                                       const zr_sdl_loc *loc) {
-  return add_smooth_run(p, o, run, loc);
+  mesh_build *b = build_of(o);
+  struct zr_mesh *m = &b->mesh;
+  const zr_vec3 *c = (const zr_vec3 *)(const void *)run->corners;
+  const zr_vec3 *n = (const zr_vec3 *)(const void *)run->normals;
+  bool next = m->n_vertices == 0
+                  ? m->n_faces == 0 && m->n_normals == 0
+                  : b->borrowed && b->borrowed_normals &&
+                        b->borrowed_file == loc->file &&
+                        c == m->vertices + m->n_vertices &&
+                        n == m->normals + m->n_normals;
+  if (next && !m->face_uvs && !m->face_textures &&
+      m->n_faces <= UINT32_MAX / 4) {
+    size_t f = m->n_faces, old_cap = m->cap_faces;
+    if (!grow(p, (void **)&m->faces, &m->cap_faces, f, sizeof *m->faces) ||
+        !face_extra(p, &m->face_normals, old_cap, m->cap_faces, f, 0))
+      return false;
+    if (m->n_vertices == 0) {
+      m->vertices = (zr_vec3 *)(void *)run->corners;
+      m->cap_vertices = 0;
+      m->normals = (zr_vec3 *)(void *)run->normals;
+      m->cap_normals = 0;
+      b->borrowed = b->borrowed_normals = true;
+      b->borrowed_file = loc->file;
+    }
+    uint32_t v = (uint32_t)m->n_vertices;
+    for (int k = 0; k < 3; k++)
+      m->faces[f][k] = m->face_normals[f][k] = v + (uint32_t)k;
+    m->n_vertices += 3;
+    m->n_normals += 3;
+    m->n_faces++;
+    return true;
+  }
+  zr_vec3 v[3], nv[3];
+  for (int k = 0; k < 3; k++) {
+    v[k] = c[k];
+    nv[k] = n[k];
+  }
+  return add_triangle(p, m, v, nv, NULL, NULL, loc);
 }
 
-zr_object *zr__sdl_smooth_triangle_run(zr_sdl_parser *p, const char *run,
+zr_object *zr__sdl_smooth_triangle_run(zr_sdl_parser *p,
+                                       const zr_sdl_smooth_run *run,
                                        const zr_sdl_loc *loc) {
   zr_object *o = zr__sdl_mesh_new(p, false, loc);
-  if (!o || !add_smooth_run(p, o, run, loc) ||
+  if (!o || !zr__sdl_mesh_smooth_triangle_run(p, o, run, loc) ||
       !zr__sdl_mesh_done(p, o, loc))
     return NULL;
   return o;

@@ -42,13 +42,14 @@ void zr__sdl_triangle_run(const double *corners, zr_vec3 out[3]);
 bool zr__sdl_mesh_triangle_run(zr_sdl_parser *p, zr_object *o,
                                const double *corners,
                                const zr_sdl_loc *loc);
-/* The same for a T_SMOOTH_TRIANGLE_RUN token: its six vectors, corner
-   and normal in turn, as a smooth_triangle object (a mesh of one face)
+/* The same for a T_SMOOTH_TRIANGLE_RUN token (run: its corners and
+   normals, tokens.c), as a smooth_triangle object (a mesh of one face)
    or a face of mesh o. */
-zr_object *zr__sdl_smooth_triangle_run(zr_sdl_parser *p, const char *run,
+zr_object *zr__sdl_smooth_triangle_run(zr_sdl_parser *p,
+                                       const zr_sdl_smooth_run *run,
                                        const zr_sdl_loc *loc);
 bool zr__sdl_mesh_smooth_triangle_run(zr_sdl_parser *p, zr_object *o,
-                                      const char *run,
+                                      const zr_sdl_smooth_run *run,
                                       const zr_sdl_loc *loc);
 bool zr__sdl_mesh_inside_vector(zr_sdl_parser *p, zr_object *o,
                                 const zr_sdl_expr *e, const zr_sdl_loc *loc);

@@ -1205,6 +1205,12 @@ int zr__sdl_next(zr_sdl_lexval *val, zr_sdl_loc *loc, zr_sdl_parser *p) {
     case T_TRIANGLE_RUN:
       v.corners = t->v.corners;
       return deliver(p, t->kind, &v, &tl, NULL, val, loc);
+    case T_SMOOTH_TRIANGLE_RUN: {
+      const zr_sdl_file *f = &p->files[fr->file];
+      v.smooth.corners = f->corners + t->v.smooth.corner;
+      v.smooth.normals = f->normals + t->v.smooth.normal;
+      return deliver(p, t->kind, &v, &tl, NULL, val, loc);
+    }
     case T_IDENTIFIER:
       break;
     default:

@@ -284,12 +284,19 @@ typedef struct zr_sdl_sphere_tex {
   int length; /* of "sphere { ... }" from the keyword */
 } zr_sdl_sphere_tex;
 
+/* T_SMOOTH_TRIANGLE_RUN's value: its three corners and its three
+   normals, nine values each, in the file's run arrays (tokens.c). */
+typedef struct zr_sdl_smooth_run {
+  const double *corners, *normals;
+} zr_sdl_smooth_run;
+
 /* The semantic value of a token as the engine hands it to bison. */
 typedef union zr_sdl_lexval {
   double num;
   const char *str;
   const double *sphere; /* T_SPHERE_RUN's centre and radius */
   const double *corners; /* T_TRIANGLE_RUN's three corners */
+  zr_sdl_smooth_run smooth; /* T_SMOOTH_TRIANGLE_RUN */
   zr_sdl_sphere_tex sphere_tex; /* T_SPHERE_TEXTURED */
   zr_sdl_decl_name decl;
   zr_sdl_value value;
@@ -326,6 +333,11 @@ typedef struct zr_sdl_token {
        array (tokens.c; their index there while the file is lexed) */
     const double *corners;
     size_t corner;
+    /* T_SMOOTH_TRIANGLE_RUN: the index of its corners in the file's
+       corner array and of its normals in its normal array */
+    struct {
+      uint32_t corner, normal;
+    } smooth;
   } v;
 } zr_sdl_token;
 
@@ -412,6 +424,10 @@ typedef struct zr_sdl_file {
      runs keeps them as its vertices (build_mesh.c); else strings. */
   double *corners;
   size_t n_corners, cap_corners; /* values */
+  /* The normals of its T_SMOOTH_TRIANGLE_RUN tokens (whose corners are
+     in corners too), nine values each, in corner_arena as well. */
+  double *normals;
+  size_t n_normals, cap_normals;
   zr_arena *corner_arena;
 } zr_sdl_file;
 

@@ -359,8 +359,8 @@ static zr_sdl_token run_token(zr_sdl_file *f, int kind, const char *run) {
  * "triangle { <a>, <b>, <c> }" with three plain vectors (the body of
  * most triangles in a big mesh) is kept as one token, T_TRIANGLE_RUN,
  * in place of the keyword, the braces and the 19 tokens of the vectors;
- * it points at the vectors' bytes, which the grammar's action reads
- * again with the same reader.  A terrain of 130,050 triangles then costs
+ * it holds the vectors' values (push_corner_run), which the grammar's
+ * action takes as they are.  A terrain of 130,050 triangles then costs
  * one 24-byte token a triangle (issue 13: parse time and memory).
  * Any other body (a texture, a fourth vector, an expression, a comment)
  * stays as it was.  "smooth_triangle { <a>, <na>, <b>, <nb>, <c>, <nc> }"
@@ -404,14 +404,28 @@ static zr_sdl_token run_at(int kind, int line, int column, int length) {
   return t;
 }
 
-/* The run token of kind, whose vectors start at run: a
-   smooth_triangle's, whose grammar action reads them again from there
-   (build_mesh.c). */
-static zr_status push_run(zr_sdl_file *f, size_t *cap, int kind, int line,
-                          int column, int length, const char *run) {
-  zr_sdl_token t = run_at(kind, line, column, length);
-  t.v.str = run;
-  return push_token(f, cap, &t);
+/* Appends three vectors (nine values) to one of the file's run arrays,
+   which grows by doubling in corner_arena. */
+static zr_status append_vectors(zr_sdl_file *f, double **array, size_t *n,
+                                size_t *cap, const double *a,
+                                const double *b, const double *c) {
+  if (*n + 9 > *cap) {
+    size_t grow = *cap ? 2 * *cap : 9 * 1024;
+    if (grow > SIZE_MAX / sizeof(double))
+      return ZR_ENOMEM;
+    double *grown = zr__arena_grow(f->corner_arena, *array,
+                                   *cap * sizeof(double),
+                                   grow * sizeof(double));
+    if (!grown)
+      return f->corner_arena->over_budget ? ZR_ELIMIT : ZR_ENOMEM;
+    *array = grown;
+    *cap = grow;
+  }
+  memcpy(*array + *n, a, 3 * sizeof(double));
+  memcpy(*array + *n + 3, b, 3 * sizeof(double));
+  memcpy(*array + *n + 6, c, 3 * sizeof(double));
+  *n += 9;
+  return ZR_OK;
 }
 
 /*
@@ -429,24 +443,43 @@ static zr_status push_run(zr_sdl_file *f, size_t *cap, int kind, int line,
 static zr_status push_corner_run(zr_sdl_file *f, size_t *cap, int line,
                                  int column, int length,
                                  double v[6][3]) {
-  if (f->n_corners + 9 > f->cap_corners) {
-    size_t c = f->cap_corners ? 2 * f->cap_corners : 9 * 1024;
-    if (c > SIZE_MAX / sizeof(double))
-      return ZR_ENOMEM;
-    double *grown = zr__arena_grow(f->corner_arena, f->corners,
-                                   f->cap_corners * sizeof(double),
-                                   c * sizeof(double));
-    if (!grown)
-      return f->corner_arena->over_budget ? ZR_ELIMIT : ZR_ENOMEM;
-    f->corners = grown;
-    f->cap_corners = c;
-  }
   size_t at = f->n_corners;
-  for (int k = 0; k < 3; k++)
-    memcpy(f->corners + at + 3 * k, v[k], 3 * sizeof(double));
-  f->n_corners += 9;
+  zr_status s = append_vectors(f, &f->corners, &f->n_corners,
+                               &f->cap_corners, v[0], v[1], v[2]);
+  if (s != ZR_OK)
+    return s;
   zr_sdl_token t = run_at(T_TRIANGLE_RUN, line, column, length);
   t.v.corner = at;
+  return push_token(f, cap, &t);
+}
+
+/*
+ * A smooth_triangle's run (corner, normal, corner, normal, corner,
+ * normal) keeps its corners in the same corner array, where plain runs'
+ * and its own follow one another, and its normals in the file's normal
+ * array; its token holds both indices.  A mesh of such runs takes the
+ * two arrays as its vertices and normals where they lie (build_mesh.c),
+ * as one of plain runs does: the grammar's action read the numbers a
+ * second time (27% of the parse of a mesh of 130,050 smooth triangles,
+ * perf) and add_triangle copied them.  Indices of 32 bits: a mesh holds
+ * at most 2^30 faces (build_mesh.c), a file 477 million runs.
+ */
+static zr_status push_smooth_run(zr_sdl_file *f, size_t *cap, int line,
+                                 int column, int length,
+                                 double v[6][3]) {
+  size_t corner = f->n_corners, normal = f->n_normals;
+  if (corner > UINT32_MAX - 9 || normal > UINT32_MAX - 9)
+    return ZR_ELIMIT;
+  zr_status s = append_vectors(f, &f->corners, &f->n_corners,
+                               &f->cap_corners, v[0], v[2], v[4]);
+  if (s == ZR_OK)
+    s = append_vectors(f, &f->normals, &f->n_normals, &f->cap_normals,
+                       v[1], v[3], v[5]);
+  if (s != ZR_OK)
+    return s;
+  zr_sdl_token t = run_at(T_SMOOTH_TRIANGLE_RUN, line, column, length);
+  t.v.smooth.corner = (uint32_t)corner;
+  t.v.smooth.normal = (uint32_t)normal;
   return push_token(f, cap, &t);
 }
 
@@ -513,8 +546,7 @@ static zr_status next_run(zr_sdl_file *f, size_t *cap, zr_sdl_numreader *r,
     zr_status status =
         runs[i].kind == T_TRIANGLE_RUN
             ? push_corner_run(f, cap, line, column, runs[i].length, v)
-            : push_run(f, cap, runs[i].kind, line, column, runs[i].length,
-                       f->bytes + brace + 1);
+            : push_smooth_run(f, cap, line, column, runs[i].length, v);
     if (status != ZR_OK)
       return status;
     *r = q;
@@ -543,9 +575,8 @@ static zr_status triangle_run(zr_sdl_file *f, size_t *cap,
   zr_sdl_token keyword = f->tokens[n - 2];
   f->n_tokens -= 2;
   zr_status status =
-      smooth ? push_run(f, cap, T_SMOOTH_TRIANGLE_RUN, keyword.line,
-                        keyword.column, keyword.length,
-                        f->bytes + lx->offset)
+      smooth ? push_smooth_run(f, cap, keyword.line, keyword.column,
+                               keyword.length, v)
              : push_corner_run(f, cap, keyword.line, keyword.column,
                                keyword.length, v);
   for (bool more = true; status == ZR_OK && more;)
