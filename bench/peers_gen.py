@@ -3,6 +3,7 @@
 formats (issue 13).
 
     bench/peers_gen.py OUT_DIR
+    bench/peers_gen.py --smooth OUT_DIR
 
 writes OUT_DIR/flake.pov and flake.dat (the sphereflake: 7,381 spheres,
 four levels of nine children below one root, on a plane, three lights,
@@ -11,7 +12,10 @@ of 256 x 256 vertices as 130,050 flat triangles: a POV `mesh` of
 `triangle`s, Tachyon `TRI`s), OUT_DIR/csg.pov (CSG-heavy, POV-Ray and
 zRcube only: Tachyon has no CSG), and OUT_DIR/empty.pov and empty.dat (a
 camera and a light, for the start-up memory).  The resolution is given on each
-renderer's command line, not in the files.
+renderer's command line, not in the files.  With --smooth it writes only
+OUT_DIR/sterrain.pov and sterrain.dat: the terrain's grid as smooth
+triangles with the surface's normals (`smooth_triangle`s, Tachyon `STRI`s),
+for bench/mesh_parse.sh.
 
 The two formats describe the same geometry seen by the same camera.  The
 cameras match by measurement, not by a constant from either program:
@@ -201,6 +205,67 @@ def write_terrain(dirname):
         f.write("END_SCENE\n")
 
 
+def height_normal(x, z):
+    """The unit normal of the height field at (x, z), from height()'s
+    derivatives."""
+    dx = (0.6 * 0.9 * math.cos(0.9 * x) * math.cos(0.7 * z)
+          + 0.25 * 2.3 * math.cos(2.3 * x + 1.1 * z)
+          + 0.1 * 3.7 * math.sin(5.1 * z - 3.7 * x))
+    dz = (-0.6 * 0.7 * math.sin(0.9 * x) * math.sin(0.7 * z)
+          + 0.25 * 1.1 * math.cos(2.3 * x + 1.1 * z)
+          - 0.1 * 5.1 * math.sin(5.1 * z - 3.7 * x))
+    return unit((-dx, 1.0, -dz))
+
+
+def write_smooth_terrain(dirname):
+    """The terrain's grid as 130,050 smooth triangles (POV
+    `smooth_triangle`s with the surface's normal at each corner, Tachyon
+    `STRI`s): sterrain.pov and sterrain.dat, for bench/mesh_parse.sh."""
+    n = 256
+    size = 10.0
+    def at(i, j):
+        x = -size / 2 + size * i / (n - 1)
+        z = -size / 2 + size * j / (n - 1)
+        return (x, height(x, z), z), height_normal(x, z)
+    pts = [[at(i, j) for i in range(n)] for j in range(n)]
+    tris = []
+    for j in range(n - 1):
+        for i in range(n - 1):
+            a, b = pts[j][i], pts[j][i + 1]
+            c, d = pts[j + 1][i], pts[j + 1][i + 1]
+            tris.append((a, b, c))
+            tris.append((b, d, c))
+    lights = LIGHTS[:2]
+    with open(dirname + "/sterrain.pov", "w") as f:
+        f.write("// smooth terrain: %d smooth triangles in one mesh "
+                "(bench/peers_gen.py)\n" % len(tris))
+        f.write("#version 3.7;\nglobal_settings { assumed_gamma 1 }\n")
+        f.write("background { rgb <0.5, 0.6, 0.8> }\n")
+        f.write(camera_pov(TERRAIN_EYE, TERRAIN_AT))
+        for pos, c in lights:
+            f.write("light_source { %s, rgb %.3f }\n" % (vec(pos), c))
+        f.write("mesh {\n")
+        for t in tris:
+            f.write("  smooth_triangle { %s, %s, %s, %s, %s, %s }\n"
+                    % tuple(vec(v) for p in t for v in p))
+        f.write("  texture { pigment { rgb <0.6, 0.55, 0.4> }"
+                " finish { ambient 0.1 diffuse 0.8 } }\n}\n")
+    with open(dirname + "/sterrain.dat", "w") as f:
+        f.write("BEGIN_SCENE\n  RESOLUTION 512 512\n")
+        f.write(camera_dat(TERRAIN_EYE, TERRAIN_AT))
+        f.write("BACKGROUND 0.5 0.6 0.8\n")
+        for pos, c in lights:
+            f.write("LIGHT CENTER %s RAD 0.01 COLOR %.3f %.3f %.3f\n"
+                    % (tvec(pos), c, c, c))
+        f.write("TEXDEF land AMBIENT 0.1 DIFFUSE 0.8 SPECULAR 0.0 "
+                "OPACITY 1.0 COLOR 0.6 0.55 0.4 TEXFUNC 0\n")
+        for t in tris:
+            f.write("STRI V0 %s V1 %s V2 %s N0 %s N1 %s N2 %s land\n"
+                    % (tvec(t[0][0]), tvec(t[1][0]), tvec(t[2][0]),
+                       tvec(t[0][1]), tvec(t[1][1]), tvec(t[2][1])))
+        f.write("END_SCENE\n")
+
+
 def write_csg(dirname):
     """A 20 x 20 grid of CSG pieces: boxes with holes (difference),
     rounded dice (intersection), unions of cylinders, and a merge."""
@@ -250,8 +315,11 @@ def write_empty(dirname):
 
 
 def main():
+    if len(sys.argv) == 3 and sys.argv[1] == "--smooth":
+        write_smooth_terrain(sys.argv[2])
+        return 0
     if len(sys.argv) != 2:
-        sys.stderr.write("usage: peers_gen.py OUT_DIR\n")
+        sys.stderr.write("usage: peers_gen.py [--smooth] OUT_DIR\n")
         return 2
     write_flake(sys.argv[1])
     write_terrain(sys.argv[1])
