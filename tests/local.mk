@@ -393,8 +393,6 @@ EXTRA_DIST += tests/test_parametric_gradient.sh tests/parametric_gradient.pov
 # (the corpus' pneumaticBoat.pov sand): the surface's own hemisphere.
 TESTS += tests/test_gi_normal_off.sh
 EXTRA_DIST += tests/test_gi_normal_off.sh tests/gi_normal_off.pov
-TESTS += tests/test_gi_pattern.sh
-EXTRA_DIST += tests/test_gi_pattern.sh tests/gi_pattern.pov
 # bounded_by on a poly, cubic or quartic: rays that miss the bounding
 # object itself skip the shape (objects/quartic/hyptorus.pov's corners).
 TESTS += tests/test_bounded_poly.sh
