@@ -840,6 +840,8 @@ static void gather(const zr_gi_cache *c, const zr_tracer *tracer,
   sub.path = q->path;
   sub.hide = 0;
   sub.no_media = tracer->no_media || !gp->media;
+  /* povray fogs no sample ray (measured: tests/test_gi_fog.sh). */
+  sub.no_fog = true;
   /* The block's adc_bailout (0: no bailout at all). */
   sub.bailout = gp->adc_bailout > 0.0 ? gp->adc_bailout : DBL_MIN;
   zr_vec3 origin = zr_v3_madd(q->p, q->n_geo, zr__surface_offset(q->p));
