@@ -531,10 +531,15 @@ static void test_gi_adc_bailout(void **state) {
 
 /*
  * count's second value.  Under a sky of fine checks, a floor with one
- * value shows one level all over (every record shoots the same
- * directions, POV-Ray's manual, "count"); with a pool of 100 times the
- * rays, records draw different directions and the floor varies, and its
- * mean comes nearer the sky's true mean (0.5: half the checks white).
+ * value varies (the manual's "count" says every record shoots the same
+ * set of directions, but povray 3.7.0.10's floor in this scene, -A
+ * +WT1 -GA at 32x24, goes from 175 to 203 of 255, mean 187.5: its sets
+ * are not the same directions in the world; ours are turned per
+ * record, lib/gi/cache.c gather, and gave 167 to 205, mean 187.2, where
+ * the tree before showed 175 all over, about 0.44 in linear light); with
+ * a pool of 100 times the rays, records draw from more directions.  Both
+ * floors' means lie within 0.03 of the sky's true mean (0.5: half the
+ * checks white; povray's floor above is about 0.51 in linear light).
  */
 #define CHECKED_SKY(count)                                              \
   "#version 3.7; global_settings { radiosity { count " count " } }"    \
@@ -558,7 +563,9 @@ static void test_gi_count_pool(void **state) {
   double lo, hi, one, pooled;
   zr_gi_cache_free(render_cached(good(f, CHECKED_SKY("20")), 1, rgb));
   floor_levels(rgb, &lo, &hi, &one);
-  assert_true(hi - lo < 1e-6);
+  print_message("count 20: %g to %g, mean %g\n", lo, hi, one);
+  assert_true(hi - lo > 0.01);
+  assert_true(fabs(one - 0.5) < 0.03);
   const zr_scene *s = good(f, CHECKED_SKY("20, 2000"));
   zr_gi_params gp;
   zr_gi_params_init(&gp, s);
@@ -566,8 +573,9 @@ static void test_gi_count_pool(void **state) {
   assert_int_equal(gp.count_pool, 2000);
   zr_gi_cache_free(render_cached(s, 1, rgb));
   floor_levels(rgb, &lo, &hi, &pooled);
+  print_message("count 20, 2000: %g to %g, mean %g\n", lo, hi, pooled);
   assert_true(hi - lo > 0.01);
-  assert_true(fabs(pooled - 0.5) < fabs(one - 0.5));
+  assert_true(fabs(pooled - 0.5) < 0.03);
 }
 
 /*

@@ -48,8 +48,8 @@
  * batches of BATCH pixels; every pixel of a batch sees the cache as the
  * batches before left it plus its own new records, and at the end of
  * the batch the new records join in pixel order.  Sample directions are
- * the same for every record or, with count's second value, a shift of
- * them that a hash of the record's point picks.  So the cache, and the
+ * a pattern turned, or with count's second value shifted, by an amount
+ * a hash of the record's point picks.  So the cache, and the
  * picture, are the same bytes for any number of threads, and every rank
  * builds the same cache.  In the final pass a point no record serves
  * gets a record of its own that is used and dropped (as are the deeper
@@ -97,6 +97,10 @@
    cache_irradiance; measured by bench/gi_record_probe.py). */
 #define REFLECTANCE_FULL 0.3
 #define REFLECTANCE_GROWTH 4.0
+/* A record's weight in a blend is at most the one it has at this
+   fraction of the error bound (see blend_near; measured by
+   bench/gi_radset.py, bench/results/gi-2026-12-04-s19.md). */
+#define OWN_EPS 0.1
 /* The most patterns count's second value makes. */
 #define MAX_PATTERNS 4096
 
@@ -364,7 +368,17 @@ static void blend_near(blend *b, const zr__gi_record *r, zr_vec3 d,
   double eps;
   if (!serves(b, r, d, dd, &eps))
     return;
-  double w = 1.0 / (eps > 1e-9 ? eps : 1e-9) - 1.0 / b->a;
+  /* Ward's weight 1 / eps grows without bound at the record's own
+     point, and the pixel a record was gathered at (every record is,
+     pretrace and final pass alike) showed that record alone, its
+     sampling noise undamped by its neighbours': single dark and light
+     dots on the walls of radiosity_36.pov, where povray's are smooth.
+     So the weight stops growing at OWN_EPS times the bound: SSIM
+     against povray over the 17 radiosity scenes was best overall at
+     0.1 (0.05 to 0.5 tried); 0.2 and above lowered
+     rad_def_test.pov's. */
+  double floor_eps = OWN_EPS * b->a;
+  double w = 1.0 / (eps > floor_eps ? eps : floor_eps) - 1.0 / b->a;
   zr_vec3 axis = zr_v3_cross(r->n, b->n);
   for (int c = 0; c < 3; c++) {
     double v = r->e[c] + zr_v3_dot(r->grad_r[c], axis) +
@@ -781,21 +795,41 @@ static void gather(const zr_gi_cache *c, const zr_tracer *tracer,
   zr_vec3 t1, t2;
   frame(n, &t1, &t2);
   /* The pattern of directions.  POV-Ray's manual ("count"): one
-     value, every record shoots the same set of directions; a second
-     value, the total number of directions they are drawn from.  Here
+     value, every record shoots the same set of directions (here, in
+     its frame, up to a turn: see below); a second value, the total
+     number of directions they are drawn from.  Here
      the pool is K = pool / count shifts (u0, v0) of the stratified
      pattern, a rank-1 lattice in the cell, so the K patterns together
      cover every cell evenly; a record takes the shift its position
      hashes to (POV-Ray takes them in turn, which would make the cache
      depend on the order threads add records). */
-  double u0 = 0.5, v0 = 0.5;
+  double u0, v0;
+  uint64_t rng = point_seed(q->p, d);
   if (gp->count_pool > gp->count) {
     long kk = lround((double)gp->count_pool / gp->count);
     kk = kk < 1 ? 1 : kk > MAX_PATTERNS ? MAX_PATTERNS : kk;
-    uint64_t rng = point_seed(q->p, d);
     long k = (long)(mix64(rng) % (uint64_t)kk);
     u0 = (k + 0.5) / (double)kk;
     v0 = fmod(0.5 + k * 0.6180339887498949, 1.0);
+  } else {
+    /* One value: the sectors turned by an angle the record's point
+       hashes to (the bands stay at their centres).  With every record
+       on the sectors' centres, a whole surface's records shoot the
+       same directions, and the roofs, walls and openings parallel to
+       the frame's axes are hit or missed by all of them together:
+       radiosity_36.pov's shadowed pillars came out at a third of
+       povray's indirect light at count 50 (8-bit 9.6 -> 5.7 in the
+       middle pillar, no fog), while povray's count 50 is within 10% of
+       its count 600 and ours at count 600 agrees with it
+       (tests/test_gi_pattern.sh measures a hall built the same way).
+       A turn per record makes that error noise that the blend of
+       several records averages.  Turning the bands too (a shift of
+       sin^2 theta as well) made the noise show as speckles on sky-lit
+       floors where povray is smooth: radiosity2.pov 0.9892 -> 0.9806
+       and radiosity3.pov 0.9457 -> 0.9315 against povray, where the
+       turn alone gains (bench/results/gi-2026-12-04-s19.md). */
+    u0 = 0.5;
+    v0 = (double)(mix64(rng ^ 0x9e3779b97f4a7c15u) >> 11) * 0x1.0p-53;
   }
 
   zr_indirect deeper = {cache_irradiance, c, sc, NULL, NULL};
@@ -806,6 +840,8 @@ static void gather(const zr_gi_cache *c, const zr_tracer *tracer,
   sub.path = q->path;
   sub.hide = 0;
   sub.no_media = tracer->no_media || !gp->media;
+  /* povray fogs no sample ray (measured: tests/test_gi_fog.sh). */
+  sub.no_fog = true;
   /* The block's adc_bailout (0: no bailout at all). */
   sub.bailout = gp->adc_bailout > 0.0 ? gp->adc_bailout : DBL_MIN;
   zr_vec3 origin = zr_v3_madd(q->p, q->n_geo, zr__surface_offset(q->p));

@@ -24,6 +24,15 @@ EXTRA_DIST += bench/gi_error.sh bench/gi_error.awk bench/gi_error.gp \
 EXTRA_DIST += tests/test_gi_cli.sh bench/gi.sh scenes/sky_outdoor.pov \
 	tests/ref/sky_outdoor.png
 
+# The cache's sample directions and its blend at a record's own point,
+# against povray's measured pillars and walls (a hall probe).
+TESTS += tests/test_gi_pattern.sh
+EXTRA_DIST += tests/test_gi_pattern.sh tests/gi_pattern.pov bench/gi_radset.py \
+	bench/gi_pattern_probe.sh bench/gi_cpu_ab.sh
+# Sample rays and fog, against povray's recorded pixels.
+TESTS += tests/test_gi_fog.sh
+EXTRA_DIST += tests/test_gi_fog.sh tests/gi_fog.pov
+
 # The path-traced reference: exact furnaces, samples in pieces, and the
 # Cornell box against ../shared/reference's ground truth.
 check_PROGRAMS += tests/test_path

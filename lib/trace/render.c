@@ -527,6 +527,7 @@ static zr_status render_pixels(const zr_scene *scene,
   job.tracer.gi_depth = 0;
   job.tracer.path = 0.0;
   job.tracer.no_media = false;
+  job.tracer.no_fog = false;
   job.tracer.skip_direct = false;
   zr__tracer_quality(&job.tracer, params->quality);
   job.tracer.skip_sampled_emission = false;

@@ -1540,11 +1540,13 @@ static void clear_through_way(const zr_tracer *tracer, double before,
    povray renders a plane seen from inside a solid plane unfogged and
    from inside the same plane made hollow fogged
    (tests/test_fog_povray.sh). */
-static zr_rgb fogged(const zr_scene *scene, const zr_media *media,
+static zr_rgb fogged(const zr_tracer *tracer, const zr_media *media,
                      zr_vec3 origin, zr_vec3 dir, double t, zr_rgb c) {
+  const zr_scene *scene = tracer->scene;
   /* zr__atmosphere_apply's own first test, without the call (passing
      the vectors cost ~50 instructions a ray where nothing was done). */
-  if (!scene->settings.fogs && !scene->settings.rainbows)
+  if ((!scene->settings.fogs && !scene->settings.rainbows) ||
+      tracer->no_fog)
     return c;
   for (int i = 0; media && i < media->n; i++)
     if (!media->objects[i]->hollow)
@@ -1587,7 +1589,7 @@ static zr_rgb trace_upto(const zr_tracer *tracer, const zr_ray *ray,
     sky = zr__media_along(tracer, media, ray->origin, ray->dir, INFINITY,
                           sky);
     return zr__interior_fade(media, INFINITY,
-                         fogged(scene, media, ray->origin, ray->dir,
+                         fogged(tracer, media, ray->origin, ray->dir,
                                               INFINITY, sky));
   }
   surface s;
@@ -1622,7 +1624,7 @@ static zr_rgb trace_upto(const zr_tracer *tracer, const zr_ray *ray,
     if (tracer->clear)
       clear_through_way(tracer, before, media, ray, hit.t, NULL);
     c = zr__media_along(tracer, media, ray->origin, ray->dir, hit.t, c);
-    return fogged(scene, media, ray->origin, ray->dir, hit.t, c);
+    return fogged(tracer, media, ray->origin, ray->dir, hit.t, c);
   }
   s.object = hit.object;
   bool uv = tx->uv_mapping;
@@ -1666,7 +1668,7 @@ static zr_rgb trace_upto(const zr_tracer *tracer, const zr_ray *ray,
                  ? lit
                  : zr__media_along(tracer, media, ray->origin, ray->dir,
                                    hit.t, lit);
-  return fogged(scene, media, ray->origin, ray->dir, hit.t, c);
+  return fogged(tracer, media, ray->origin, ray->dir, hit.t, c);
 }
 
 zr_rgb zr__trace_ray(const zr_tracer *tracer, const zr_ray *ray, int level,

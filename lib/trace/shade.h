@@ -152,6 +152,11 @@ typedef struct zr_tracer {
   int gi_depth;
   double path;
   bool no_media;
+  /* Rays that pass through fog and rainbows unchanged: the irradiance
+     cache's sample rays (povray 3.7 lights a floor through a fog of
+     distance 1 with the full light of a wall 3 units away;
+     tests/test_gi_fog.sh). */
+  bool no_fog;
   /* A pretrace: camera-visible points (gi_depth 0) skip direct light. */
   bool skip_direct;
   /* What a low quality leaves out (zr_render_params.quality, set by
