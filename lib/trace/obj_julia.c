@@ -577,6 +577,127 @@ static bool point_inside(const struct zr_julia *j, zr_vec3 p) {
   return orbit_escape(j, s.h, 1.0, NULL) == j->max_iteration;
 }
 
+/*
+ * point_inside for three points at once, in[k] for p[k], where the
+ * iteration is a polynomial (quaternions, hypercomplex sqr and cube;
+ * elsewhere it returns false and leaves in[] alone):
+ * the three orbits advance together, each with orbit_escape's
+ * operations in its order (so each lane's iterates are its own orbit's
+ * bits), and a lane is inside when none of its first max_iteration
+ * iterates lies beyond the radius.  An orbit is a chain of dependent
+ * multiplications, each waiting for the one before; three independent
+ * chains fill the time one leaves idle, so the bisection below tests
+ * two levels (the middle and both quarter points) for little more than
+ * the time of one.  A lane that has escaped runs on (its values are
+ * never read) until every lane has.
+ */
+#define LANES 3
+
+static bool lockstep_inside(const struct zr_julia *j) {
+  return j->algebra == ZR_JULIA_QUATERNION || has_estimate(j);
+}
+
+/* One lane's step: quaternion_orbit's, or orbit_escape's with
+   bicomplex_power's arithmetic, on the locals of lane L (h0L ... h3L),
+   clearing inL once an iterate lies beyond the radius. */
+#define QUATERNION_LANE(L)                                                   \
+  do {                                                                       \
+    double n2 = h0##L * h0##L + h1##L * h1##L + h2##L * h2##L +             \
+                h3##L * h3##L;                                               \
+    in##L = in##L && !(n2 > limit2);                                         \
+    double vv = n2 - h0##L * h0##L, n0, sc;                                  \
+    if (power == 2) {                                                        \
+      n0 = h0##L * h0##L - vv;                                               \
+      sc = 2.0 * h0##L;                                                      \
+    } else {                                                                 \
+      n0 = h0##L * (h0##L * h0##L - 3.0 * vv);                               \
+      sc = 3.0 * h0##L * h0##L - vv;                                         \
+    }                                                                        \
+    h0##L = n0 + c0;                                                         \
+    h1##L = sc * h1##L + c1;                                                 \
+    h2##L = sc * h2##L + c2;                                                 \
+    h3##L = sc * h3##L + c3;                                                 \
+  } while (0)
+
+#define BICOMPLEX_LANE(L)                                                    \
+  do {                                                                       \
+    double n2 = h0##L * h0##L + h1##L * h1##L + h2##L * h2##L +             \
+                h3##L * h3##L;                                               \
+    in##L = in##L && !(n2 > limit2);                                         \
+    double pr = h0##L + h3##L, pi = h1##L - h2##L;                           \
+    double mr = h0##L - h3##L, mi = h1##L + h2##L;                           \
+    double fpr, fpi, fmr, fmi;                                               \
+    if (power == 2) {                                                        \
+      fpr = pr * pr - pi * pi;                                               \
+      fpi = 2.0 * pr * pi;                                                   \
+      fmr = mr * mr - mi * mi;                                               \
+      fmi = 2.0 * mr * mi;                                                   \
+    } else {                                                                 \
+      fpr = pr * (pr * pr - 3.0 * pi * pi);                                  \
+      fpi = pi * (3.0 * pr * pr - pi * pi);                                  \
+      fmr = mr * (mr * mr - 3.0 * mi * mi);                                  \
+      fmi = mi * (3.0 * mr * mr - mi * mi);                                  \
+    }                                                                        \
+    h0##L = 0.5 * (fpr + fmr) + c0;                                          \
+    h1##L = 0.5 * (fpi + fmi) + c1;                                          \
+    h2##L = -0.5 * (fpi - fmi) + c2;                                         \
+    h3##L = 0.5 * (fpr - fmr) + c3;                                          \
+  } while (0)
+
+/* The three lanes' iteration for one algebra and power, with the
+   iterates in locals: in arrays, with bicomplex_power called a lane,
+   the compiler kept them in memory and objects/fractal2.pov took as
+   long as with one orbit at a time (1.13 against 1.12 CPU s); so
+   written, 0.92 against 1.07 (best of five, interleaved). */
+static inline __attribute__((always_inline)) void
+lanes_inside(const struct zr_julia *j, const double (*h)[4], bool quaternion,
+             int power, bool in[LANES]) {
+  double h0a = h[0][0], h1a = h[0][1], h2a = h[0][2], h3a = h[0][3];
+  double h0b = h[1][0], h1b = h[1][1], h2b = h[1][2], h3b = h[1][3];
+  double h0c = h[2][0], h1c = h[2][1], h2c = h[2][2], h3c = h[2][3];
+  const double c0 = j->c[0], c1 = j->c[1], c2 = j->c[2], c3 = j->c[3];
+  double limit2 = j->escape * j->escape * 1.0; /* orbit_escape's, slack 1 */
+  bool ina = true, inb = true, inc = true;
+  for (int i = 0; i < j->max_iteration && (ina || inb || inc); i++) {
+    if (quaternion) {
+      QUATERNION_LANE(a);
+      QUATERNION_LANE(b);
+      QUATERNION_LANE(c);
+    } else {
+      BICOMPLEX_LANE(a);
+      BICOMPLEX_LANE(b);
+      BICOMPLEX_LANE(c);
+    }
+  }
+  in[0] = ina;
+  in[1] = inb;
+  in[2] = inc;
+}
+
+bool zr__julia_points_inside(const struct zr_julia *j, const zr_vec3 p[3],
+                             bool in[3]) {
+  if (!lockstep_inside(j))
+    return false;
+  double h[LANES][4];
+  for (int k = 0; k < LANES; k++) {
+    julia_state s;
+    lift(j, p[k], &s, false);
+    memcpy(h[k], s.h, sizeof h[k]);
+  }
+  bool cube = j->function == ZR_JULIA_CUBE;
+  if (j->algebra == ZR_JULIA_QUATERNION) {
+    if (cube)
+      lanes_inside(j, h, true, 3, in);
+    else
+      lanes_inside(j, h, true, 2, in);
+  } else if (cube) {
+    lanes_inside(j, h, false, 3, in);
+  } else {
+    lanes_inside(j, h, false, 2, in);
+  }
+  return true;
+}
+
 /* The largest perturbation e of an iterate of growth radius a whose
    image, at most (a + e)^n - a^n (see orbit), stays within y. */
 static double allowed_before(int power, double a, double y) {
@@ -738,14 +859,37 @@ static int julia_march(const zr_object *o, zr_vec3 org, zr_vec3 dir,
                                 &dist_next,
                                 s_next == s_far ? ENTRY_SLACK : 1.0);
     if (in_next != in) {
-      /* Bisect [s, s_next] down to the tolerance. */
+      /* Bisect [s, s_next] down to the tolerance: two levels at a
+         time where points_inside applies, the same midpoints and
+         answers as one at a time. */
       double a = s, e = s_next;
+      bool lockstep = lockstep_inside(j);
       while (e - a > tol) {
         double m = 0.5 * (a + e);
-        if (point_inside(j, zr_v3_madd(org, d, m)) == in)
+        if (!lockstep) {
+          if (point_inside(j, zr_v3_madd(org, d, m)) == in)
+            a = m;
+          else
+            e = m;
+          continue;
+        }
+        double below = 0.5 * (a + m), above = 0.5 * (m + e);
+        zr_vec3 p[LANES] = {zr_v3_madd(org, d, m), zr_v3_madd(org, d, below),
+                            zr_v3_madd(org, d, above)};
+        bool pin[LANES];
+        zr__julia_points_inside(j, p, pin);
+        bool upper = pin[0] == in;
+        if (upper)
           a = m;
         else
           e = m;
+        if (!(e - a > tol))
+          break;
+        /* The next midpoint, 0.5 * (a + e), is above or below. */
+        if (pin[upper ? 2 : 1] == in)
+          a = upper ? above : below;
+        else
+          e = upper ? above : below;
       }
       /* The crossing is the bracket's inside end: its normal then
          comes from all max_iteration steps. */
