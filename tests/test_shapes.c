@@ -836,6 +836,57 @@ static void test_shapes_julia_points_inside(void **state) {
   assert_false(zr__julia_points_inside(o->u.julia.data, p, in));
 }
 
+/* The march with its orbits iterated two and three together (the next
+   sample with the one a step ahead, the bisection's middle and quarter
+   points) finds the crossings and normals of the march that takes
+   them one at a time, bit for bit: rays from all sides through each
+   algebra with sqr and cube, and a function without lanes. */
+static void test_shapes_julia_march_lanes(void **state) {
+  fixture *f = *state;
+  static const char *const texts[] = {
+      "julia_fractal { <0.02, -0.02, 0.8, 0> quaternion sqr\n"
+      "  max_iteration 10 precision 20 }\n",
+      "julia_fractal { <-0.2, 0.4, 0.1, 0.3> quaternion cube\n"
+      "  max_iteration 12 precision 30 }\n",
+      "julia_fractal { <0.2, 0.1, 0.59, -0.2> hypercomplex sqr\n"
+      "  max_iteration 7 precision 20 }\n",
+      "julia_fractal { <-0.54, 0.57, 0.0, -0.37> hypercomplex cube\n"
+      "  max_iteration 8 precision 20 }\n",
+      "julia_fractal { <0.2, 0.1, 0, 0> hypercomplex exp\n"
+      "  max_iteration 6 precision 10 }\n",
+  };
+  uint64_t seed = 77;
+  for (int c = 0; c < 5; c++) {
+    const zr_object *o = only(f, texts[c]);
+    int crossings = 0, several = 0;
+    for (int k = 0; k < 400; k++) {
+      zr_vec3 from = zr_v3(2.0 * lcg_uniform(&seed) - 1.0,
+                           2.0 * lcg_uniform(&seed) - 1.0,
+                           2.0 * lcg_uniform(&seed) - 1.0);
+      from = zr_v3_scale(zr_v3_norm(from), 5.0);
+      zr_vec3 to = zr_v3(0.8 * (2.0 * lcg_uniform(&seed) - 1.0),
+                         0.8 * (2.0 * lcg_uniform(&seed) - 1.0),
+                         0.8 * (2.0 * lcg_uniform(&seed) - 1.0));
+      zr_vec3 dir = zr_v3_scale(zr_v3_sub(to, from), 0.5);
+      double ta[4], tb[4];
+      zr_vec3 na[4], nb[4];
+      int a = zr__julia_crossings(o, from, dir, 0.0, INFINITY, ta, na);
+      int b = zr__julia_crossings_plain(o, from, dir, 0.0, INFINITY, tb, nb);
+      assert_int_equal(a, b);
+      for (int i = 0; i < a; i++) {
+        assert_true(ta[i] == tb[i]);
+        assert_true(na[i].x == nb[i].x && na[i].y == nb[i].y &&
+                    na[i].z == nb[i].z);
+      }
+      crossings += a;
+      several += a > 2;
+    }
+    assert_true(crossings > 100);
+    if (c < 4)
+      assert_true(several > 5);
+  }
+}
+
 static void test_shapes_prism_bad_input(void **state) {
   fixture *f = *state;
   bad(f, "prism { 0, 1, 2, <0, 0>, <1, 0> }\n", ZR_ESCENE,
@@ -1043,6 +1094,7 @@ int main(void) {
       TEST(test_shapes_prism_along_sweep),
       TEST(test_shapes_julia_quaternion_orbit),
       TEST(test_shapes_julia_points_inside),
+      TEST(test_shapes_julia_march_lanes),
       TEST(test_shapes_prism_bad_input),
       TEST(test_shapes_lathe_tube),
       TEST(test_shapes_lathe_bad_input),
