@@ -22,6 +22,7 @@
 #include "trace/bvh.h"
 #include "trace/bvh_wide.h"
 #include "trace/intersect.h"
+#include "trace/obj_sweep.h"
 
 static double next_uniform(uint64_t *seed) {
   *seed = *seed * 6364136223846793005ULL + 1442695040888963407ULL;
@@ -1069,6 +1070,168 @@ static void test_bvh_occluded_matches_walk(void **state) {
   zr_context_free(ctx);
 }
 
+
+/* julia_fractals, whose march the search for the nearest surface asks
+   for its normal at once and shadow walks ask for four crossings at a
+   time (lib/trace/bvh.c, normal_at_once and visit_march): glass-like
+   quaternions (rays cross them several times), a hypercomplex cube,
+   transformed, one inverse (unbounded). */
+static zr_object *julia_object(zr_scene *s, const double c[4],
+                               zr_julia_algebra algebra,
+                               zr_julia_function function, int iterations,
+                               zr_vec3 at, double turn, bool inverse) {
+  zr_object *o = zr__arena_alloc(&s->arena, sizeof *o);
+  struct zr_julia *j = zr__arena_alloc(&s->arena, sizeof *j);
+  memcpy(j->c, c, sizeof j->c);
+  j->algebra = algebra;
+  j->function = function;
+  j->max_iteration = iterations;
+  j->precision = 20.0;
+  j->slice[3] = 1.0;
+  assert_true(zr__julia_prepare(j));
+  o->kind = ZR_OBJ_JULIA;
+  o->u.julia.data = j;
+  o->inverse = inverse;
+  zr_transform *t = zr__arena_alloc(&s->arena, sizeof *t);
+  zr__transform_identity(t);
+  zr__transform_rotate(t, zr_v3(turn, 2 * turn, -turn));
+  zr__transform_translate(t, at);
+  o->transform = t;
+  return o;
+}
+
+/* The crossings visit_leaf found before visit_march: rounds of the
+   nearest two, each asked beyond the last (the march from the
+   bounding sphere's entry every time). */
+static size_t julia_rounds(const zr_object *o, const zr_ray *r, double tmin,
+                           double *t, size_t room) {
+  size_t n = 0;
+  for (int round = 0; round < 256; round++) {
+    zr_hit h[ZR_MAX_CROSSINGS];
+    int k = zr__intersect_t(o, r, tmin, INFINITY, h);
+    for (int i = 0; i < k; i++) {
+      assert_true(n < room);
+      t[n++] = h[i].t;
+    }
+    if (k < ZR_MAX_CROSSINGS)
+      break;
+    tmin = h[k - 1].t + 1e-7 * (1.0 + fabs(h[k - 1].t));
+  }
+  return n;
+}
+
+typedef struct t_list {
+  size_t n;
+  double t[512];
+  const zr_object *object[512];
+} t_list;
+
+static bool list_visit(const zr_hit *hit, void *user) {
+  t_list *l = user;
+  assert_true(l->n < 512);
+  assert_true(hit->normal.x == 0 && hit->normal.y == 0 &&
+              hit->normal.z == 0);
+  l->t[l->n] = hit->t;
+  l->object[l->n++] = hit->object;
+  return true;
+}
+
+static void test_bvh_julia_same_as_asking_again(void **state) {
+  (void)state;
+  zr_scene *s = zr__scene_new();
+  const double glass[4] = {0.02, -0.02, 0.8, 0}, cube[4] = {-0.54, 0.57,
+                                                            0.0, -0.37};
+  const double swirl[4] = {-0.083, 0.0, -0.83, -0.025};
+  zr_object *objects[4] = {
+      julia_object(s, glass, ZR_JULIA_QUATERNION, ZR_JULIA_SQR, 10,
+                   zr_v3(0, 0, 0), 40, false),
+      julia_object(s, cube, ZR_JULIA_HYPERCOMPLEX, ZR_JULIA_CUBE, 8,
+                   zr_v3(3.5, 0.5, 0), 25, false),
+      julia_object(s, swirl, ZR_JULIA_QUATERNION, ZR_JULIA_SQR, 6,
+                   zr_v3(-3, 1, 1), 70, false),
+      julia_object(s, glass, ZR_JULIA_QUATERNION, ZR_JULIA_SQR, 10,
+                   zr_v3(0, 0, 0), 10, true)};
+  /* The inverse one as its own scene: it is met by every ray. */
+  for (int i = 0; i < 3; i++)
+    assert_int_equal(zr__scene_add_object(s, objects[i]), ZR_OK);
+  assert_int_equal(zr__scene_finish(s, NULL), ZR_OK);
+  zr_scene *inv = zr__scene_new();
+  assert_int_equal(zr__scene_add_object(inv, objects[3]), ZR_OK);
+  assert_int_equal(zr__scene_finish(inv, NULL), ZR_OK);
+  uint64_t seed = 1989;
+  size_t hits = 0, long_walks = 0;
+  for (int i = 0; i < 600; i++) {
+    const zr_scene *sc = i % 6 == 5 ? inv : s;
+    int aim = i % 3;
+    zr_vec3 centre = aim == 0 ? zr_v3(0, 0, 0)
+                     : aim == 1 ? zr_v3(3.5, 0.5, 0)
+                                : zr_v3(-3, 1, 1);
+    zr_vec3 from = zr_v3_add(centre, zr_v3_scale(zr_v3_norm(
+                                         random_point(&seed, 1)), 6.0));
+    zr_vec3 to = zr_v3_add(centre, random_point(&seed, 0.8));
+    zr_ray r = {from, zr_v3_sub(to, from)};
+    /* The nearest crossing and its normal, as the search asked for it
+       before: the winner intersected again from just before its t. */
+    zr_hit a;
+    bool fa = zr__bvh_nearest(sc->bvh, &r, 0.0, INFINITY, &a);
+    zr_hit b = {0};
+    bool fb = false;
+    double best = INFINITY;
+    for (size_t k = 0; k < sc->n_primitives; k++) {
+      zr_hit h[ZR_MAX_CROSSINGS];
+      if (zr__intersect_t(sc->primitives[k], &r, 0.0, best, h) > 0) {
+        b = h[0];
+        best = h[0].t;
+        fb = true;
+      }
+    }
+    assert_int_equal(fa, fb);
+    if (fa) {
+      hits++;
+      assert_ptr_equal(a.object, b.object);
+      assert_true(a.t == b.t);
+      zr_hit h[ZR_MAX_CROSSINGS];
+      double from_t = b.t - 1e-9 * fmax(1.0, fabs(b.t));
+      assert_int_equal(
+          zr__intersect_first(b.object, &r, from_t, INFINITY, true, h), 1);
+      assert_true(h[0].t == a.t);
+      assert_true(a.normal.x == h[0].normal.x &&
+                  a.normal.y == h[0].normal.y &&
+                  a.normal.z == h[0].normal.z);
+    }
+    /* Every crossing a shadow walk visits, in the walk's order, from a
+       start that is sometimes on the way (tmin > 0). */
+    double tmin = i % 4 == 3 ? range(&seed, 0.0, 1.0) : 0.0;
+    t_list walk = {0};
+    assert_true(zr__bvh_all(sc->bvh, &r, tmin, INFINITY, list_visit, &walk));
+    size_t at = 0;
+    for (size_t k = 0; k < sc->n_primitives; k++) {
+      double t[512];
+      size_t n = julia_rounds(sc->primitives[k], &r, tmin, t, 512);
+      /* The walk visits a leaf's crossings together, the leaves in
+         the tree's order: find this object's run. */
+      size_t first = 0;
+      while (first < walk.n && walk.object[first] != sc->primitives[k])
+        first++;
+      for (size_t m = 0; m < n; m++) {
+        assert_true(first + m < walk.n);
+        assert_ptr_equal(walk.object[first + m], sc->primitives[k]);
+        assert_true(walk.t[first + m] == t[m]);
+      }
+      at += n;
+      if (n > 4)
+        long_walks++;
+    }
+    assert_int_equal(at, walk.n);
+  }
+  /* The rays meet the fractals often, and cross some more than four
+     times (so that visit_march marches again). */
+  assert_true(hits > 300);
+  assert_true(long_walks > 10);
+  zr_scene_free(s);
+  zr_scene_free(inv);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_bvh_nearest_matches_brute_force),
@@ -1087,6 +1250,7 @@ int main(void) {
       cmocka_unit_test(test_bvh_slab_ray_matches_scalar),
       cmocka_unit_test(test_bvh_plane_crossings_match_intersect),
       cmocka_unit_test(test_bvh_sphere_leaving_rays),
+      cmocka_unit_test(test_bvh_julia_same_as_asking_again),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

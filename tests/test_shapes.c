@@ -20,6 +20,7 @@
 #include "scene/shapes.h"
 #include "trace/intersect.h"
 #include "trace/obj_shapes.h"
+#include "trace/obj_sweep.h"
 #include "trace/roots.h"
 #include "zrcube.h"
 #include "parse_fixture.h"
@@ -785,6 +786,107 @@ static void test_shapes_julia_quaternion_orbit(void **state) {
   }
 }
 
+/* The bisection's three orbits at once (obj_julia.c,
+   zr__julia_points_inside) say inside where zr__julia_inside does, for
+   each algebra with sqr and cube, three points whose orbits escape at
+   different steps (or never), on a skewed slice too; the other
+   functions are left to one orbit at a time. */
+static void test_shapes_julia_points_inside(void **state) {
+  fixture *f = *state;
+  static const char *const texts[] = {
+      "julia_fractal { <-0.083, 0, -0.83, -0.025> quaternion sqr\n"
+      "  max_iteration 8 }\n",
+      "julia_fractal { <-0.2, 0.4, 0.1, 0.3> quaternion cube\n"
+      "  max_iteration 12 }\n",
+      "julia_fractal { <0.2, 0.1, 0.59, -0.2> hypercomplex sqr\n"
+      "  max_iteration 7 slice <0.1, 0.2, 0.3, 1>, 0.2 }\n",
+      "julia_fractal { <0.1, 0.2, 0.0, -0.1> hypercomplex cube\n"
+      "  max_iteration 8 }\n",
+  };
+  /* Each a box about its object (the hypercomplex ones are small). */
+  static const double scale[4] = {0.5, 0.5, 0.3, 0.3};
+  uint64_t seed = 4242;
+  for (int c = 0; c < 4; c++) {
+    const zr_object *o = only(f, texts[c]);
+    const struct zr_julia *j = o->u.julia.data;
+    int in_count = 0, mixed = 0;
+    for (int k = 0; k < 6000; k++) {
+      zr_vec3 p[3];
+      for (int l = 0; l < 3; l++)
+        p[l] = zr_v3(4.4 * (2.0 * lcg_uniform(&seed) - 1.0),
+                     4.4 * (2.0 * lcg_uniform(&seed) - 1.0),
+                     4.4 * (2.0 * lcg_uniform(&seed) - 1.0));
+      for (int l = 0; l < 3; l++)
+        p[l] = zr_v3_scale(p[l], scale[c]);
+      bool in[3];
+      assert_true(zr__julia_points_inside(j, p, in));
+      for (int l = 0; l < 3; l++) {
+        assert_int_equal(in[l], zr__julia_inside(o, p[l]));
+        in_count += in[l];
+      }
+      mixed += in[0] != in[1] || in[1] != in[2];
+    }
+    assert_true(in_count > 100 && in_count < 17900);
+    assert_true(mixed > 100);
+  }
+  const zr_object *o = only(f, "julia_fractal { <0.2, 0, 0, 0> hypercomplex "
+                               "sin max_iteration 6 }\n");
+  zr_vec3 p[3] = {zr_v3(0, 0, 0), zr_v3(1, 0, 0), zr_v3(0, 1, 0)};
+  bool in[3] = {false, false, false};
+  assert_false(zr__julia_points_inside(o->u.julia.data, p, in));
+}
+
+/* The march with its orbits iterated two and three together (the next
+   sample with the one a step ahead, the bisection's middle and quarter
+   points) finds the crossings and normals of the march that takes
+   them one at a time, bit for bit: rays from all sides through each
+   algebra with sqr and cube, and a function without lanes. */
+static void test_shapes_julia_march_lanes(void **state) {
+  fixture *f = *state;
+  static const char *const texts[] = {
+      "julia_fractal { <0.02, -0.02, 0.8, 0> quaternion sqr\n"
+      "  max_iteration 10 precision 20 }\n",
+      "julia_fractal { <-0.2, 0.4, 0.1, 0.3> quaternion cube\n"
+      "  max_iteration 12 precision 30 }\n",
+      "julia_fractal { <0.2, 0.1, 0.59, -0.2> hypercomplex sqr\n"
+      "  max_iteration 7 precision 20 }\n",
+      "julia_fractal { <-0.54, 0.57, 0.0, -0.37> hypercomplex cube\n"
+      "  max_iteration 8 precision 20 }\n",
+      "julia_fractal { <0.2, 0.1, 0, 0> hypercomplex exp\n"
+      "  max_iteration 6 precision 10 }\n",
+  };
+  uint64_t seed = 77;
+  for (int c = 0; c < 5; c++) {
+    const zr_object *o = only(f, texts[c]);
+    int crossings = 0, several = 0;
+    for (int k = 0; k < 400; k++) {
+      zr_vec3 from = zr_v3(2.0 * lcg_uniform(&seed) - 1.0,
+                           2.0 * lcg_uniform(&seed) - 1.0,
+                           2.0 * lcg_uniform(&seed) - 1.0);
+      from = zr_v3_scale(zr_v3_norm(from), 5.0);
+      zr_vec3 to = zr_v3(0.8 * (2.0 * lcg_uniform(&seed) - 1.0),
+                         0.8 * (2.0 * lcg_uniform(&seed) - 1.0),
+                         0.8 * (2.0 * lcg_uniform(&seed) - 1.0));
+      zr_vec3 dir = zr_v3_scale(zr_v3_sub(to, from), 0.5);
+      double ta[4], tb[4];
+      zr_vec3 na[4], nb[4];
+      int a = zr__julia_crossings(o, from, dir, 0.0, INFINITY, ta, na);
+      int b = zr__julia_crossings_plain(o, from, dir, 0.0, INFINITY, tb, nb);
+      assert_int_equal(a, b);
+      for (int i = 0; i < a; i++) {
+        assert_true(ta[i] == tb[i]);
+        assert_true(na[i].x == nb[i].x && na[i].y == nb[i].y &&
+                    na[i].z == nb[i].z);
+      }
+      crossings += a;
+      several += a > 2;
+    }
+    assert_true(crossings > 100);
+    if (c < 4)
+      assert_true(several > 5);
+  }
+}
+
 static void test_shapes_prism_bad_input(void **state) {
   fixture *f = *state;
   bad(f, "prism { 0, 1, 2, <0, 0>, <1, 0> }\n", ZR_ESCENE,
@@ -991,6 +1093,8 @@ int main(void) {
       TEST(test_shapes_prism_wall_sides),
       TEST(test_shapes_prism_along_sweep),
       TEST(test_shapes_julia_quaternion_orbit),
+      TEST(test_shapes_julia_points_inside),
+      TEST(test_shapes_julia_march_lanes),
       TEST(test_shapes_prism_bad_input),
       TEST(test_shapes_lathe_tube),
       TEST(test_shapes_lathe_bad_input),

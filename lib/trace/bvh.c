@@ -843,11 +843,25 @@ int zr__bvh_crossings_t(const zr_object *o, const zr_ray *ray, double tmin,
   return crossings_t(o, ray, tmin, tmax, hits);
 }
 
+/* Whether the search for the nearest surface takes o's crossing with
+   its world normal at once: a julia_fractal's march, from the bounding
+   sphere's entry to the crossing, is the cost, and asking for the
+   winner's normal afterwards (zr__bvh_nearest) marched the whole way
+   again (objects/fractal2.pov: 15% of the profile in that second march,
+   against about a millionth of it for one julia_normal per candidate).
+   The march's points do not depend on the interval (obj_julia.c), so
+   the crossing asked for again from just before it would be this one,
+   with the same normal: the image is the same bytes. */
+static inline bool normal_at_once(const zr_object *o) {
+  return o->kind == ZR_OBJ_JULIA && !o->clip;
+}
+
 /* The first of crossings_t's crossings, all the search for the nearest
    surface keeps: a mesh then prunes at its best crossing so far, and a
    julia_fractal's march stops at its first (zr__intersect_first).  A
    mesh's crossing comes with its normal in the mesh's space in
-   *mesh_normal, and *from_mesh says so (otherwise false). */
+   *mesh_normal, and *from_mesh says so (otherwise false); a
+   normal_at_once object's comes with its world normal in hits[]. */
 static inline int first_crossing_t(const zr_object *o, const zr_ray *ray,
                                    double tmin, double tmax,
                                    zr_hit hits[ZR_MAX_CROSSINGS],
@@ -857,7 +871,7 @@ static inline int first_crossing_t(const zr_object *o, const zr_ray *ray,
     return zr__mesh_nearest_t(o, ray, tmin, tmax, hits, mesh_normal);
   if (plain_sphere(o) || plain_plane(o))
     return crossings_t(o, ray, tmin, tmax, hits);
-  return zr__intersect_first(o, ray, tmin, tmax, false, hits);
+  return zr__intersect_first(o, ray, tmin, tmax, normal_at_once(o), hits);
 }
 
 /* The nearest crossing without its normal; when a mesh's own search
@@ -865,12 +879,14 @@ static inline int first_crossing_t(const zr_object *o, const zr_ray *ray,
    normal in the mesh's space. */
 static bool nearest_t(const struct zr_bvh *bvh, const zr_ray *ray,
                       double tmin, double tmax, zr_hit *hit,
-                      bool *mesh_won, zr_vec3 *mesh_normal) {
+                      bool *mesh_won, zr_vec3 *mesh_normal,
+                      bool *normal_won) {
   bool found = false;
   zr_hit h[ZR_MAX_CROSSINGS];
   zr_vec3 n_mesh = zr_v3(0, 0, 0);
   bool is_mesh;
   *mesh_won = false;
+  *normal_won = false;
   for (size_t i = 0; i < bvh->n_unbounded; i++)
     /* A plain plane's test written in (see zr__bvh_all_blocked). */
     if ((plain_plane(bvh->unbounded[i])
@@ -883,6 +899,7 @@ static bool nearest_t(const struct zr_bvh *bvh, const zr_ray *ray,
       found = true;
       *mesh_won = is_mesh;
       *mesh_normal = n_mesh;
+      *normal_won = normal_at_once(bvh->unbounded[i]);
     }
   if (bvh->n_wide == 0)
     return found;
@@ -917,6 +934,7 @@ static bool nearest_t(const struct zr_bvh *bvh, const zr_ray *ray,
             found = true;
             *mesh_won = is_mesh;
             *mesh_normal = n_mesh;
+            *normal_won = normal_at_once(bvh->prims[i]);
           }
         }
       } else {
@@ -944,9 +962,10 @@ bool zr__bvh_nearest(const struct zr_bvh *bvh, const zr_ray *ray,
   if (!bvh)
     return false;
   double t0 = tmin;
-  bool mesh_won;
+  bool mesh_won, normal_won;
   zr_vec3 mesh_normal;
-  bool found = nearest_t(bvh, ray, tmin, tmax, hit, &mesh_won, &mesh_normal);
+  bool found = nearest_t(bvh, ray, tmin, tmax, hit, &mesh_won, &mesh_normal,
+                         &normal_won);
   if (!found)
     return false;
   /* A mesh's own search kept the winning face's normal: searching the
@@ -958,6 +977,9 @@ bool zr__bvh_nearest(const struct zr_bvh *bvh, const zr_ray *ray,
     hit->normal = zr__mesh_world_normal(hit->object, mesh_normal);
     return true;
   }
+  /* The winner's normal came with its crossing (normal_at_once). */
+  if (normal_won)
+    return true;
   /* A plain sphere or plane gives its normal as intersect.c would from
      the crossing at hit->t (found again there by the same arithmetic):
      the shape's normal at the point, normalized, turned for inverse. */
@@ -1027,10 +1049,48 @@ static bool crosses_more(const zr_object *o) {
    surfaces, and povray 3.7 filters the light at every one: two boxes
    of filter 0.5 apart in a merge pass 0.0625, not the 0.25 of the
    first two surfaces; bench/conform/shadow_fade_probe.sh). */
+/* visit_leaf's rounds for a julia_fractal (normal_at_once), from one
+   march of up to four crossings (zr__intersect_march_t) instead of one
+   march a round: each round asked again from the sphere's entry, and a
+   shadow ray through a glass fractal takes two rounds or more
+   (objects/fractal2.pov: 46% of the profile in shadow rays' marches).
+   A round gets what visit_leaf's would: the first two of the march's
+   crossings beyond its tmin, marched again only when the four known do
+   not hold them. */
+static bool visit_march(const zr_object *o, const zr_ray *ray, double tmin,
+                        double tmax, zr_crossing_fn visit, void *user,
+                        zr_hit h[ZR_MAX_CROSSINGS]) {
+  double t[4];
+  bool complete;
+  int known = zr__intersect_march_t(o, ray, tmin, tmax, t, &complete);
+  int next = 0;
+  for (int round = 0; round < 256; round++) {
+    while (next < known && !(t[next] > tmin))
+      next++;
+    if (!complete && known - next < ZR_MAX_CROSSINGS) {
+      known = zr__intersect_march_t(o, ray, tmin, tmax, t, &complete);
+      next = 0;
+    }
+    int n = known - next < ZR_MAX_CROSSINGS ? known - next : ZR_MAX_CROSSINGS;
+    for (int k = 0; k < n; k++) {
+      h[k] = (zr_hit){.t = t[next + k], .object = o};
+      if (!visit(&h[k], user))
+        return false;
+    }
+    next += n;
+    if (n < ZR_MAX_CROSSINGS)
+      return true;
+    tmin = h[n - 1].t + 1e-7 * (1.0 + fabs(h[n - 1].t));
+  }
+  return true;
+}
+
 static inline bool visit_leaf(const zr_object *o, const zr_ray *ray,
                               double tmin, double tmax, zr_blocks_fn blocks,
                               zr_crossing_fn visit, void *user,
                               zr_hit h[ZR_MAX_CROSSINGS]) {
+  if (normal_at_once(o))
+    return visit_march(o, ray, tmin, tmax, visit, user, h);
   for (int round = 0; round < 256; round++) {
     int n = walk_crossings_t(o, ray, tmin, tmax, blocks, user, h);
     for (int k = 0; k < n; k++)

@@ -143,6 +143,33 @@ static int crossings(const zr_object *object, const zr_ray *ray,
   return n;
 }
 
+int zr__intersect_march_t(const zr_object *object, const zr_ray *ray,
+                          double tmin, double tmax, double t[4],
+                          bool *complete) {
+  *complete = true;
+  if (object->bound &&
+      (object->kind == ZR_OBJ_POLY || object->bound_cuts) &&
+      !meets_bound(object->bound, ray))
+    return 0;
+  zr_vec3 org = ray->origin, dir = ray->dir;
+  if (object->transform) {
+    org = zr__xform_point(object->transform->inv, org);
+    dir = zr__xform_dir(object->transform->inv, dir);
+  }
+  double found[ZR_SHAPE_MAX_CROSSINGS];
+  int k = zr__shape(object->kind)->search_upto(
+      object, org, dir, tmin, tmax, ZR_SHAPE_MAX_CROSSINGS, found, NULL);
+  /* Fewer than asked for: the march reached the interval's end. */
+  *complete = k < ZR_SHAPE_MAX_CROSSINGS;
+  /* What crossings() keeps of them: finite (zr__crossings_add) and in
+     the interval, in the march's order, which is t's. */
+  int n = 0;
+  for (int i = 0; i < k; i++)
+    if (isfinite(found[i]) && found[i] > tmin && found[i] < tmax)
+      t[n++] = found[i];
+  return n;
+}
+
 int zr__intersect(const zr_object *object, const zr_ray *ray, double tmin,
                   double tmax, zr_hit hits[ZR_MAX_CROSSINGS]) {
   bool all;

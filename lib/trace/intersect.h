@@ -60,6 +60,17 @@ int zr__intersect_first(const zr_object *object, const zr_ray *ray,
                         double tmin, double tmax, bool want_normals,
                         zr_hit hits[ZR_MAX_CROSSINGS]);
 
+/* For an unclipped object whose shape marches (shape.h's search_upto):
+   the first crossings in (tmin, tmax), up to four, in t[] in order, t
+   only, as zr__intersect_t gives the first two; *complete tells whether
+   they are all of the interval's.  The march's points do not depend on
+   tmin, so the crossings beyond some t' > tmin are those of t[] beyond
+   t' (and, unless *complete, more): a shadow ray that asks again beyond
+   each pair (lib/trace/bvh.c, visit_leaf) need not march again. */
+int zr__intersect_march_t(const zr_object *object, const zr_ray *ray,
+                          double tmin, double tmax, double t[4],
+                          bool *complete);
+
 /* The crossings as zr__intersect (want_normals) or zr__intersect_t
    give them; *all tells whether they are every crossing in (tmin,
    tmax), so that asking again beyond the last would find none (a shape
