@@ -161,6 +161,45 @@ def height(x, z):
             + 0.1 * math.cos(5.1 * z - 3.7 * x))
 
 
+def grid_triangles(pts):
+    """Two triangles for each cell of a grid of points (rows of rows)."""
+    tris = []
+    for j in range(len(pts) - 1):
+        for i in range(len(pts[j]) - 1):
+            a, b = pts[j][i], pts[j][i + 1]
+            c, d = pts[j + 1][i], pts[j + 1][i + 1]
+            tris.append((a, b, c))
+            tris.append((b, d, c))
+    return tris
+
+
+def terrain_pov_head(f, what):
+    """The POV terrain's header, up to its open mesh."""
+    f.write("// %s (bench/peers_gen.py)\n" % what)
+    f.write("#version 3.7;\nglobal_settings { assumed_gamma 1 }\n")
+    f.write("background { rgb <0.5, 0.6, 0.8> }\n")
+    f.write(camera_pov(TERRAIN_EYE, TERRAIN_AT))
+    for pos, c in LIGHTS[:2]:
+        f.write("light_source { %s, rgb %.3f }\n" % (vec(pos), c))
+    f.write("mesh {\n")
+
+
+TERRAIN_POV_TAIL = ("  texture { pigment { rgb <0.6, 0.55, 0.4> }"
+                    " finish { ambient 0.1 diffuse 0.8 } }\n}\n")
+
+
+def terrain_dat_head(f):
+    """The Tachyon terrain's header, up to its triangles."""
+    f.write("BEGIN_SCENE\n  RESOLUTION 512 512\n")
+    f.write(camera_dat(TERRAIN_EYE, TERRAIN_AT))
+    f.write("BACKGROUND 0.5 0.6 0.8\n")
+    for pos, c in LIGHTS[:2]:
+        f.write("LIGHT CENTER %s RAD 0.01 COLOR %.3f %.3f %.3f\n"
+                % (tvec(pos), c, c, c))
+    f.write("TEXDEF land AMBIENT 0.1 DIFFUSE 0.8 SPECULAR 0.0 "
+            "OPACITY 1.0 COLOR 0.6 0.55 0.4 TEXFUNC 0\n")
+
+
 def write_terrain(dirname):
     n = 256
     size = 10.0
@@ -169,37 +208,16 @@ def write_terrain(dirname):
                     -size / 2 + size * j / (n - 1)),
              -size / 2 + size * j / (n - 1)) for i in range(n)]
            for j in range(n)]
-    tris = []
-    for j in range(n - 1):
-        for i in range(n - 1):
-            a, b = pts[j][i], pts[j][i + 1]
-            c, d = pts[j + 1][i], pts[j + 1][i + 1]
-            tris.append((a, b, c))
-            tris.append((b, d, c))
+    tris = grid_triangles(pts)
     assert len(tris) == 130050
-    lights = LIGHTS[:2]
     with open(dirname + "/terrain.pov", "w") as f:
-        f.write("// terrain: %d triangles in one mesh, 2 lights "
-                "(bench/peers_gen.py)\n" % len(tris))
-        f.write("#version 3.7;\nglobal_settings { assumed_gamma 1 }\n")
-        f.write("background { rgb <0.5, 0.6, 0.8> }\n")
-        f.write(camera_pov(TERRAIN_EYE, TERRAIN_AT))
-        for pos, c in lights:
-            f.write("light_source { %s, rgb %.3f }\n" % (vec(pos), c))
-        f.write("mesh {\n")
+        terrain_pov_head(f, "terrain: %d triangles in one mesh, 2 lights"
+                         % len(tris))
         for t in tris:
             f.write("  triangle { %s, %s, %s }\n" % tuple(vec(p) for p in t))
-        f.write("  texture { pigment { rgb <0.6, 0.55, 0.4> }"
-                " finish { ambient 0.1 diffuse 0.8 } }\n}\n")
+        f.write(TERRAIN_POV_TAIL)
     with open(dirname + "/terrain.dat", "w") as f:
-        f.write("BEGIN_SCENE\n  RESOLUTION 512 512\n")
-        f.write(camera_dat(TERRAIN_EYE, TERRAIN_AT))
-        f.write("BACKGROUND 0.5 0.6 0.8\n")
-        for pos, c in lights:
-            f.write("LIGHT CENTER %s RAD 0.01 COLOR %.3f %.3f %.3f\n"
-                    % (tvec(pos), c, c, c))
-        f.write("TEXDEF land AMBIENT 0.1 DIFFUSE 0.8 SPECULAR 0.0 "
-                "OPACITY 1.0 COLOR 0.6 0.55 0.4 TEXFUNC 0\n")
+        terrain_dat_head(f)
         for t in tris:
             f.write("TRI V0 %s V1 %s V2 %s land\n" % tuple(tvec(p) for p in t))
         f.write("END_SCENE\n")
@@ -228,37 +246,16 @@ def write_smooth_terrain(dirname):
         z = -size / 2 + size * j / (n - 1)
         return (x, height(x, z), z), height_normal(x, z)
     pts = [[at(i, j) for i in range(n)] for j in range(n)]
-    tris = []
-    for j in range(n - 1):
-        for i in range(n - 1):
-            a, b = pts[j][i], pts[j][i + 1]
-            c, d = pts[j + 1][i], pts[j + 1][i + 1]
-            tris.append((a, b, c))
-            tris.append((b, d, c))
-    lights = LIGHTS[:2]
+    tris = grid_triangles(pts)
     with open(dirname + "/sterrain.pov", "w") as f:
-        f.write("// smooth terrain: %d smooth triangles in one mesh "
-                "(bench/peers_gen.py)\n" % len(tris))
-        f.write("#version 3.7;\nglobal_settings { assumed_gamma 1 }\n")
-        f.write("background { rgb <0.5, 0.6, 0.8> }\n")
-        f.write(camera_pov(TERRAIN_EYE, TERRAIN_AT))
-        for pos, c in lights:
-            f.write("light_source { %s, rgb %.3f }\n" % (vec(pos), c))
-        f.write("mesh {\n")
+        terrain_pov_head(f, "smooth terrain: %d smooth triangles in one mesh"
+                         % len(tris))
         for t in tris:
             f.write("  smooth_triangle { %s, %s, %s, %s, %s, %s }\n"
                     % tuple(vec(v) for p in t for v in p))
-        f.write("  texture { pigment { rgb <0.6, 0.55, 0.4> }"
-                " finish { ambient 0.1 diffuse 0.8 } }\n}\n")
+        f.write(TERRAIN_POV_TAIL)
     with open(dirname + "/sterrain.dat", "w") as f:
-        f.write("BEGIN_SCENE\n  RESOLUTION 512 512\n")
-        f.write(camera_dat(TERRAIN_EYE, TERRAIN_AT))
-        f.write("BACKGROUND 0.5 0.6 0.8\n")
-        for pos, c in lights:
-            f.write("LIGHT CENTER %s RAD 0.01 COLOR %.3f %.3f %.3f\n"
-                    % (tvec(pos), c, c, c))
-        f.write("TEXDEF land AMBIENT 0.1 DIFFUSE 0.8 SPECULAR 0.0 "
-                "OPACITY 1.0 COLOR 0.6 0.55 0.4 TEXFUNC 0\n")
+        terrain_dat_head(f)
         for t in tris:
             f.write("STRI V0 %s V1 %s V2 %s N0 %s N1 %s N2 %s land\n"
                     % (tvec(t[0][0]), tvec(t[1][0]), tvec(t[2][0]),

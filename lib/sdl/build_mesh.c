@@ -110,47 +110,40 @@ static bool grow(zr_sdl_parser *p, void **rows, size_t *cap, size_t n,
   return true;
 }
 
-/* A mesh whose vertices are borrowed corners gets an array of its own,
-   with room for one more (grow's doubling from there). */
-static bool own_vertices(zr_sdl_parser *p, struct zr_mesh *m) {
-  mesh_build *b = (mesh_build *)(void *)m;
-  if (!b->borrowed)
+/* A borrowed array of n vectors (*rows, the file's corners or normals)
+   becomes one of the mesh's own, with room for one more (grow's
+   doubling from there). */
+static bool own_array(zr_sdl_parser *p, zr_vec3 **rows, size_t n,
+                      size_t *cap, bool *borrowed) {
+  if (!*borrowed)
     return true;
-  size_t n = m->n_vertices, cap = 16;
-  while (cap <= n)
-    cap *= 2;
-  zr_vec3 *own = zr__arena_grow(&p->scene->arena, NULL, 0,
-                                cap * sizeof *own);
+  size_t c = 16;
+  while (c <= n)
+    c *= 2;
+  zr_vec3 *own = zr__arena_grow(&p->scene->arena, NULL, 0, c * sizeof *own);
   if (!own) {
-    zr__sdl_alloc_failed(p, cap * sizeof *own);
+    zr__sdl_alloc_failed(p, c * sizeof *own);
     return false;
   }
-  memcpy(own, m->vertices, n * sizeof *own);
-  m->vertices = own;
-  m->cap_vertices = cap;
-  b->borrowed = false;
+  memcpy(own, *rows, n * sizeof *own);
+  *rows = own;
+  *cap = c;
+  *borrowed = false;
   return true;
+}
+
+/* A mesh whose vertices are borrowed corners gets an array of its own. */
+static bool own_vertices(zr_sdl_parser *p, struct zr_mesh *m) {
+  mesh_build *b = (mesh_build *)(void *)m;
+  return own_array(p, &m->vertices, m->n_vertices, &m->cap_vertices,
+                   &b->borrowed);
 }
 
 /* The same for borrowed normals. */
 static bool own_normals(zr_sdl_parser *p, struct zr_mesh *m) {
   mesh_build *b = (mesh_build *)(void *)m;
-  if (!b->borrowed_normals)
-    return true;
-  size_t n = m->n_normals, cap = 16;
-  while (cap <= n)
-    cap *= 2;
-  zr_vec3 *own = zr__arena_grow(&p->scene->arena, NULL, 0,
-                                cap * sizeof *own);
-  if (!own) {
-    zr__sdl_alloc_failed(p, cap * sizeof *own);
-    return false;
-  }
-  memcpy(own, m->normals, n * sizeof *own);
-  m->normals = own;
-  m->cap_normals = cap;
-  b->borrowed_normals = false;
-  return true;
+  return own_array(p, &m->normals, m->n_normals, &m->cap_normals,
+                   &b->borrowed_normals);
 }
 
 static bool add_vertex(zr_sdl_parser *p, struct zr_mesh *m, zr_vec3 v,

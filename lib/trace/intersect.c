@@ -62,6 +62,23 @@ static bool meets_bound(const zr_object *bound, const zr_ray *ray) {
   return zr__intersect_first(bound, ray, 0.0, INFINITY, false, h) > 0;
 }
 
+/* The ray in the object's own space, in org and dir; false when the
+   object's bound cuts it and the ray misses the bound. */
+static bool local_ray(const zr_object *object, const zr_ray *ray,
+                      zr_vec3 *org, zr_vec3 *dir) {
+  if (object->bound &&
+      (object->kind == ZR_OBJ_POLY || object->bound_cuts) &&
+      !meets_bound(object->bound, ray))
+    return false;
+  *org = ray->origin;
+  *dir = ray->dir;
+  if (object->transform) {
+    *org = zr__xform_point(object->transform->inv, *org);
+    *dir = zr__xform_dir(object->transform->inv, *dir);
+  }
+  return true;
+}
+
 /* The crossings in (tmin, tmax), sorted, with world normals only when
    asked for: traversal needs t alone, and normals cost a matrix product
    and a square root each.  A shape that marches (search_upto) is asked
@@ -75,15 +92,9 @@ static int crossings(const zr_object *object, const zr_ray *ray,
   if (zr__is_csg(object->kind)) /* children carry their transforms */
     return zr__csg_crossings(object, ray, tmin, tmax, want_normals, wanted,
                              hits);
-  if (object->bound &&
-      (object->kind == ZR_OBJ_POLY || object->bound_cuts) &&
-      !meets_bound(object->bound, ray))
+  zr_vec3 org, dir;
+  if (!local_ray(object, ray, &org, &dir))
     return 0;
-  zr_vec3 org = ray->origin, dir = ray->dir;
-  if (object->transform) {
-    org = zr__xform_point(object->transform->inv, org);
-    dir = zr__xform_dir(object->transform->inv, dir);
-  }
   const zr_shape_ops *ops = zr__shape(object->kind);
   zr_crossings l;
   l.n = 0;
@@ -147,15 +158,9 @@ int zr__intersect_march_t(const zr_object *object, const zr_ray *ray,
                           double tmin, double tmax, double t[4],
                           bool *complete) {
   *complete = true;
-  if (object->bound &&
-      (object->kind == ZR_OBJ_POLY || object->bound_cuts) &&
-      !meets_bound(object->bound, ray))
+  zr_vec3 org, dir;
+  if (!local_ray(object, ray, &org, &dir))
     return 0;
-  zr_vec3 org = ray->origin, dir = ray->dir;
-  if (object->transform) {
-    org = zr__xform_point(object->transform->inv, org);
-    dir = zr__xform_dir(object->transform->inv, dir);
-  }
   double found[ZR_SHAPE_MAX_CROSSINGS];
   int k = zr__shape(object->kind)->search_upto(
       object, org, dir, tmin, tmax, ZR_SHAPE_MAX_CROSSINGS, found, NULL);
