@@ -284,104 +284,93 @@ _Static_assert(sizeof(zr_vec3) == 3 * sizeof(double),
                "a zr_vec3 is three doubles");
 
 /*
- * A face of plain corners.  A mesh whose triangles are all runs of one
- * file, one after another, takes the lexer's corner array as its vertex
- * array (mesh_build.borrowed): run after run, the next face's corners
- * are where the last face's end, so the mesh only counts them and adds
- * the face.  Anything else - a face with normals, uv or a texture
- * before it, corners elsewhere (another file, a run read again by a
- * loop or macro) - goes through add_triangle, whose first vertex then
- * copies the borrowed ones (own_vertices).  The vertices are the same
- * values in the same order either way.
+ * A face of run corners (and normals, or NULL for a plain face) added
+ * by index where the corners lie.  A mesh whose faces are all runs of
+ * one file, one after another, takes the lexer's corner array as its
+ * vertex array (mesh_build.borrowed), and for smooth runs the normal
+ * array as its normals: run after run, the next face's corners (and
+ * normals) are where the last face's end, so the mesh only counts them
+ * and adds the face, whose normals are its corners' indices.  Returns
+ * 1 when it did, 0 when the face must go through add_triangle - a plain
+ * face among smooth ones, a uv or a texture before it, corners elsewhere
+ * (another file, a run read again by a loop or macro) - whose first
+ * vertex then copies the borrowed arrays (own_vertices, own_normals)
+ * with the same values in the same order; -1 when out of memory.
  */
+static int add_run_face(zr_sdl_parser *p, mesh_build *b,
+                        const double *corners, const double *normals,
+                        const zr_sdl_loc *loc) {
+  struct zr_mesh *m = &b->mesh;
+  const zr_vec3 *c = (const zr_vec3 *)(const void *)corners;
+  const zr_vec3 *n = (const zr_vec3 *)(const void *)normals;
+  /* The next face's corners follow the last's in the same file's array
+     (another file's array could lie just after, in memory). */
+  bool next = m->n_vertices == 0
+                  ? m->n_faces == 0 && (!n || m->n_normals == 0)
+                  : b->borrowed && b->borrowed_file == loc->file &&
+                        c == m->vertices + m->n_vertices &&
+                        (!n || (b->borrowed_normals &&
+                                n == m->normals + m->n_normals));
+  if (!next || m->face_uvs || m->face_textures || (!n && m->face_normals) ||
+      m->n_faces > UINT32_MAX / 4)
+    return 0;
+  size_t f = m->n_faces, old_cap = m->cap_faces;
+  if (!grow(p, (void **)&m->faces, &m->cap_faces, f, sizeof *m->faces) ||
+      (n && !face_extra(p, &m->face_normals, old_cap, m->cap_faces, f, 0)))
+    return -1;
+  if (m->n_vertices == 0) {
+    /* The tracer reads the vertices and normals only (zr_mesh's arrays
+       are not const for the parser's sake). */
+    m->vertices = (zr_vec3 *)(void *)corners;
+    m->cap_vertices = 0;
+    b->borrowed = true;
+    b->borrowed_file = loc->file;
+    if (n) {
+      m->normals = (zr_vec3 *)(void *)normals;
+      m->cap_normals = 0;
+      b->borrowed_normals = true;
+    }
+  }
+  uint32_t v = (uint32_t)m->n_vertices;
+  for (int k = 0; k < 3; k++) {
+    m->faces[f][k] = v + (uint32_t)k;
+    if (n)
+      m->face_normals[f][k] = v + (uint32_t)k;
+  }
+  m->n_vertices += 3;
+  if (n)
+    m->n_normals += 3;
+  m->n_faces++;
+  return 1;
+}
+
+/* A face of plain corners (add_run_face, else add_triangle). */
 bool zr__sdl_mesh_triangle_run(zr_sdl_parser *p, zr_object *o,
                                const double *corners,
                                const zr_sdl_loc *loc) {
-  mesh_build *b = build_of(o);
-  struct zr_mesh *m = &b->mesh;
-  /* The next face's corners follow the last's in the same file's array
-     (another file's array could lie just after, in memory). */
-  const zr_vec3 *c = (const zr_vec3 *)(const void *)corners;
-  bool next = m->n_vertices == 0
-                  ? m->n_faces == 0
-                  : b->borrowed && b->borrowed_file == loc->file &&
-                        c == m->vertices + m->n_vertices;
-  if (next && !m->face_normals && !m->face_uvs && !m->face_textures &&
-      m->n_faces <= UINT32_MAX / 4) {
-    size_t f = m->n_faces;
-    if (!grow(p, (void **)&m->faces, &m->cap_faces, f, sizeof *m->faces))
-      return false;
-    if (m->n_vertices == 0) {
-      /* The tracer reads the vertices only (zr_mesh's vertices are not
-         const for the parser's sake). */
-      m->vertices = (zr_vec3 *)(void *)corners;
-      m->cap_vertices = 0;
-      b->borrowed = true;
-      b->borrowed_file = loc->file;
-    }
-    uint32_t n = (uint32_t)m->n_vertices;
-    m->faces[f][0] = n;
-    m->faces[f][1] = n + 1;
-    m->faces[f][2] = n + 2;
-    m->n_vertices += 3;
-    m->n_faces++;
-    return true;
-  }
+  int r = add_run_face(p, build_of(o), corners, NULL, loc);
+  if (r)
+    return r > 0;
   zr_vec3 v[3];
   zr__sdl_triangle_run(corners, v);
-  return add_triangle(p, m, v, NULL, NULL, NULL, loc);
+  return add_triangle(p, &build_of(o)->mesh, v, NULL, NULL, NULL, loc);
 }
 
-/*
- * A face of a smooth_triangle's run, the same way: a mesh whose faces
- * are all smooth runs of one file, one after another, takes the file's
- * corner and normal arrays as its vertices and normals where they lie,
- * each face's normals being its corners' (indices 3f, 3f + 1, 3f + 2
- * in both).  A plain face among them (no normals of its own), a uv, a
- * texture, or corners elsewhere copy them (own_vertices, own_normals
- * through add_triangle), with the same values in the same order.
- */
+/* A face of a smooth_triangle's run, the same way. */
 bool zr__sdl_mesh_smooth_triangle_run(zr_sdl_parser *p, zr_object *o,
                                       const zr_sdl_smooth_run *run,
                                       const zr_sdl_loc *loc) {
-  mesh_build *b = build_of(o);
-  struct zr_mesh *m = &b->mesh;
+  int r = add_run_face(p, build_of(o), run->corners, run->normals, loc);
+  if (r)
+    return r > 0;
   const zr_vec3 *c = (const zr_vec3 *)(const void *)run->corners;
   const zr_vec3 *n = (const zr_vec3 *)(const void *)run->normals;
-  bool next = m->n_vertices == 0
-                  ? m->n_faces == 0 && m->n_normals == 0
-                  : b->borrowed && b->borrowed_normals &&
-                        b->borrowed_file == loc->file &&
-                        c == m->vertices + m->n_vertices &&
-                        n == m->normals + m->n_normals;
-  if (next && !m->face_uvs && !m->face_textures &&
-      m->n_faces <= UINT32_MAX / 4) {
-    size_t f = m->n_faces, old_cap = m->cap_faces;
-    if (!grow(p, (void **)&m->faces, &m->cap_faces, f, sizeof *m->faces) ||
-        !face_extra(p, &m->face_normals, old_cap, m->cap_faces, f, 0))
-      return false;
-    if (m->n_vertices == 0) {
-      m->vertices = (zr_vec3 *)(void *)run->corners;
-      m->cap_vertices = 0;
-      m->normals = (zr_vec3 *)(void *)run->normals;
-      m->cap_normals = 0;
-      b->borrowed = b->borrowed_normals = true;
-      b->borrowed_file = loc->file;
-    }
-    uint32_t v = (uint32_t)m->n_vertices;
-    for (int k = 0; k < 3; k++)
-      m->faces[f][k] = m->face_normals[f][k] = v + (uint32_t)k;
-    m->n_vertices += 3;
-    m->n_normals += 3;
-    m->n_faces++;
-    return true;
-  }
   zr_vec3 v[3], nv[3];
   for (int k = 0; k < 3; k++) {
     v[k] = c[k];
     nv[k] = n[k];
   }
-  return add_triangle(p, m, v, nv, NULL, NULL, loc);
+  return add_triangle(p, &build_of(o)->mesh, v, nv, NULL, NULL, loc);
 }
 
 zr_object *zr__sdl_smooth_triangle_run(zr_sdl_parser *p,

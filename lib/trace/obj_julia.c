@@ -808,39 +808,7 @@ static bool march_sample(const march_frame *f, zr_vec3 p, double *dist,
  * it goes next whenever the first sample's distance is no more than a
  * step (near the surface and in thin parts of the inside).
  */
-#define QUATERNION_REC_LANE(L)                                               \
-  do {                                                                       \
-    if (!live##L)                                                            \
-      break;                                                                 \
-    double n2 = h##L[0] * h##L[0] + h##L[1] * h##L[1] +                     \
-                h##L[2] * h##L[2] + h##L[3] * h##L[3];                       \
-    if (n2 > limit2##L) {                                                    \
-      live##L = false;                                                       \
-      break;                                                                 \
-    }                                                                        \
-    double vv = n2 - h##L[0] * h##L[0], n0, sc;                              \
-    if (power == 2) {                                                        \
-      n0 = h##L[0] * h##L[0] - vv;                                           \
-      sc = 2.0 * h##L[0];                                                    \
-    } else {                                                                 \
-      n0 = h##L[0] * (h##L[0] * h##L[0] - 3.0 * vv);                         \
-      sc = 3.0 * h##L[0] * h##L[0] - vv;                                     \
-    }                                                                        \
-    double r = sqrt(n2);                                                     \
-    if (i < ORBIT_MAX) {                                                     \
-      o##L->radius[i] = r;                                                   \
-      o##L->growth[i] = r;                                                   \
-      o##L->n = i + 1;                                                       \
-    }                                                                        \
-    o##L->growth2_product *= n2;                                             \
-    h##L[0] = n0 + c0;                                                       \
-    h##L[1] = sc * h##L[1] + c1;                                             \
-    h##L[2] = sc * h##L[2] + c2;                                             \
-    h##L[3] = sc * h##L[3] + c3;                                             \
-    k##L = i + 1;                                                            \
-  } while (0)
-
-#define BICOMPLEX_REC_LANE(L)                                                \
+#define REC_LANE(L, STEP)                                                    \
   do {                                                                       \
     if (!live##L)                                                            \
       break;                                                                 \
@@ -851,7 +819,7 @@ static bool march_sample(const march_frame *f, zr_vec3 p, double *dist,
       break;                                                                 \
     }                                                                        \
     double next[4], growth2 = n2;                                            \
-    bicomplex_power(h##L, power, next, &growth2);                            \
+    STEP(h##L, next, growth2);                                               \
     if (i < ORBIT_MAX) {                                                     \
       o##L->radius[i] = sqrt(n2);                                            \
       o##L->growth[i] = sqrt(growth2);                                       \
@@ -863,6 +831,26 @@ static bool march_sample(const march_frame *f, zr_vec3 p, double *dist,
     k##L = i + 1;                                                            \
   } while (0)
 
+/* The power steps: next = h^power, growth2 (n2 on entry) the squared
+   growth of the derivative (quaternion_orbit's and bicomplex_power's
+   arithmetic; for a quaternion it stays n2). */
+#define QUATERNION_STEP(h, next, growth2)                                    \
+  do {                                                                       \
+    double vv = (growth2) - (h)[0] * (h)[0], sc;                             \
+    if (power == 2) {                                                        \
+      (next)[0] = (h)[0] * (h)[0] - vv;                                      \
+      sc = 2.0 * (h)[0];                                                     \
+    } else {                                                                 \
+      (next)[0] = (h)[0] * ((h)[0] * (h)[0] - 3.0 * vv);                     \
+      sc = 3.0 * (h)[0] * (h)[0] - vv;                                       \
+    }                                                                        \
+    for (int m = 1; m < 4; m++)                                              \
+      (next)[m] = sc * (h)[m];                                               \
+  } while (0)
+
+#define BICOMPLEX_STEP(h, next, growth2)                                     \
+  bicomplex_power((h), power, (next), &(growth2))
+
 static inline __attribute__((always_inline)) void
 orbits_recorded(const struct zr_julia *j, bool quaternion, int power,
                 double *ha, double slacka, orbit *oa, int *ka_out,
@@ -870,19 +858,17 @@ orbits_recorded(const struct zr_julia *j, bool quaternion, int power,
   double limit2a = j->escape * j->escape * slacka;
   double limit2b = j->escape * j->escape * slackb;
   const double *c = j->c;
-  const double c0 = c[0], c1 = c[1], c2 = c[2], c3 = c[3];
   oa->n = ob->n = 0;
   oa->growth2_product = ob->growth2_product = 1.0;
   bool livea = true, liveb = true;
   int ka = 0, kb = 0;
-  (void)c0, (void)c1, (void)c2, (void)c3;
   for (int i = 0; i < j->max_iteration && (livea || liveb); i++) {
     if (quaternion) {
-      QUATERNION_REC_LANE(a);
-      QUATERNION_REC_LANE(b);
+      REC_LANE(a, QUATERNION_STEP);
+      REC_LANE(b, QUATERNION_STEP);
     } else {
-      BICOMPLEX_REC_LANE(a);
-      BICOMPLEX_REC_LANE(b);
+      REC_LANE(a, BICOMPLEX_STEP);
+      REC_LANE(b, BICOMPLEX_STEP);
     }
   }
   *ka_out = ka;
