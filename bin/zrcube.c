@@ -1498,7 +1498,9 @@ static int render_and_write(run *r) {
    line a rank on stderr, for bench/scale.sh's model; "process" is the
    CPU the whole process has taken so far (its start-up, MPI's included,
    the phases and the image written), the whole-process figure; "tail
-   bands" are those the ranks but 0 rendered while rank 0 wrote. */
+   bands" are those the ranks but 0 rendered while rank 0 wrote, "tail
+   rows joined" the rows of them rank 0 took once its encoder was done
+   (0 on the other ranks). */
 static void print_rank_times(const run *r) {
   zr_par_traffic t;
   zr__par_get_traffic(r->par, &t);
@@ -1507,7 +1509,7 @@ static void print_rank_times(const run *r) {
           "render %.4f gather %.4f exchange %.4f; cpu s: parse %.4f "
           "gi %.4f radiosity %.4f render %.4f exchange %.4f process %.4f; "
           "sent B: scene %llu solution %llu pixels %llu; exchanges %llu; "
-          "tail bands %d\n",
+          "tail rows joined %d; tail bands %d\n",
           r->rank, r->parse_seconds, r->gi_seconds, r->radiosity_seconds,
           r->render.render_seconds, r->render.gather_seconds,
           t.team_seconds, r->parse_cpu, r->gi_cpu, r->radiosity_cpu,
@@ -1515,7 +1517,8 @@ static void print_rank_times(const run *r) {
           (unsigned long long)t.bcast_bytes_sent,
           (unsigned long long)t.team_bytes_sent,
           (unsigned long long)t.pixel_bytes_sent,
-          (unsigned long long)t.team_calls, r->render.tail_bands);
+          (unsigned long long)t.team_calls, r->render.tail_root_rows,
+          r->render.tail_bands);
 }
 
 /* A time as POV-Ray's statistics give it. */

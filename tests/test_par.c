@@ -799,6 +799,49 @@ static void test_par_writer_waits_for_rows(void **state) {
   zr_image_free(image);
 }
 
+/* zr__par_writer_wait_idle: 0 while the encoder works, 1 once it waits
+   for rows not yet told, 1 once the write has returned. */
+typedef struct held_encode {
+  atomic_int go;
+  encoded out;
+} held_encode;
+
+static zr_status encode_when_told(zr_image *image, void *user) {
+  held_encode *held = user;
+  while (!atomic_load(&held->go))
+    usleep(500);
+  return encode_png(image, &held->out);
+}
+
+static void test_par_writer_idle(void **state) {
+  (void)state;
+  int w = 37, h = 29;
+  zr_image *image;
+  assert_int_equal(zr_image_new(w, h, &image), ZR_OK);
+  held_encode held = {.out = {NULL, 0}};
+  atomic_init(&held.go, 0);
+  zr_par_writer *writer;
+  assert_int_equal(
+      zr__par_writer_start(image, encode_when_told, &held, &writer), ZR_OK);
+  assert_int_equal(zr__par_writer_wait_idle(writer, 0.02), 0); /* busy */
+  for (int y = 0; y < h / 2; y++)
+    fill_row(image, y);
+  zr__par_writer_rows(writer, h / 2);
+  atomic_store(&held.go, 1);
+  /* It encodes the rows told, then waits for row h / 2. */
+  assert_int_equal(zr__par_writer_wait_idle(writer, 10.0), 1);
+  for (int y = h / 2; y < h; y++)
+    fill_row(image, y);
+  zr__par_writer_rows(writer, h - 1);
+  /* Told more: idle again once it has encoded them. */
+  assert_int_equal(zr__par_writer_wait_idle(writer, 10.0), 1);
+  zr__par_writer_rows(writer, h);
+  assert_int_equal(zr__par_writer_wait_idle(writer, 10.0), 1); /* done */
+  assert_int_equal(zr__par_writer_finish(writer, 0), ZR_OK);
+  assert_encodes_as(image, &held.out);
+  zr_image_free(image);
+}
+
 /* A render with a writer in a world of one: the writer is told the rows
    as they are final and writes the render's picture. */
 static void test_par_world_of_one_feeds_writer(void **state) {
@@ -865,6 +908,7 @@ int main(void) {
           test_par_world_of_one_renders_large_image, setup_render,
           teardown_render),
       cmocka_unit_test(test_par_writer_waits_for_rows),
+      cmocka_unit_test(test_par_writer_idle),
       cmocka_unit_test_setup_teardown(test_par_world_of_one_feeds_writer,
                                       setup_render, teardown_render),
   };

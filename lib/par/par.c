@@ -1136,15 +1136,28 @@ static zr_status render_band(zr_par *par, zr_par_render *job,
                              int x1, size_t progress_base,
                              size_t progress_total, int first,
                              zr_par_writer *writer, shared_rows *sh,
-                             int pass) {
+                             int pass, zr_par_writer *join) {
   zr_status s = ZR_OK;
-  if (par->rank >= first) {
+  int joined = 0;
+  if (par->rank < first && join && sh) {
+    /* Rank 0 in the tail: its encoder has rank 0's processor until it
+       has encoded every row told so far; then rank 0 takes rows from
+       the counter beside the others while any are left.  The tail's
+       length is an estimate; this makes a long one cost rank 0 nothing
+       and the ranks end the band together. */
+    while (atomic_load(sh->next[pass]) < y1)
+      if (zr__par_writer_wait_idle(join, 0.001)) {
+        joined = 1;
+        break;
+      }
+  }
+  if (par->rank >= first || joined) {
     follow f = {writer, y0};
     zr_pool_job pool = {
         .scene = job->scene,
         .params = job->params,
-        .rank = par->rank - first,
-        .nranks = par->size - first,
+        .rank = joined ? par->rank : par->rank - first,
+        .nranks = joined ? par->size : par->size - first,
         .centres = centres,
         .rows_rgb = rows_rgb,
         .row_stride = row_stride,
@@ -1165,8 +1178,9 @@ static zr_status render_band(zr_par *par, zr_par_render *job,
         .owner_rank = par->rank,
     };
     s = zr__pool_render(&pool);
-    zr__par_mark(first ? "render: tail rows of this rank done"
-                       : "render: rows of this rank done");
+    zr__par_mark(joined  ? "render: tail rows of rank 0 done (encoder idle)"
+                 : first ? "render: tail rows of this rank done"
+                         : "render: rows of this rank done");
   }
   /* The owners this rank wrote, seen by the others after the meeting
      (MPI's rule for a shared window: a sync on both sides of it). */
@@ -1252,6 +1266,7 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
   memset(&job->stats, 0, sizeof job->stats);
   job->render_seconds = 0;
   job->gather_seconds = 0;
+  job->tail_root_rows = 0;
   int width = job->params->width, height = job->params->height;
   zr_status s = ZR_OK;
   if (width < 1 || height < 1)
@@ -1406,7 +1421,12 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
             double enc = job->write_row_seconds * pr.band_rows;
             double alone = pass_seconds / pass_bands * par->size /
                            (par->size - 1);
-            int k = (int)floor((double)left * enc / (alone + enc) + 0.5);
+            /* The encoder has the rows above the tail to encode, the
+               pass's bands but k: k alone = (bands - k) enc.  Rounded
+               up, since rank 0 joins the tail once its encoder is done
+               (render_band): a tail too long costs little, one too
+               short leaves the others idle while rank 0 encodes. */
+            int k = (int)ceil((double)pr.bands * enc / (alone + enc));
             if (k > left - 1)
               k = left - 1; /* a chunk of every rank first */
             if (k >= 1)
@@ -1414,6 +1434,10 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
           }
         }
       }
+      /* The tail a band at a time: its rows go to the encoder band by
+         band, and rank 0 joins each band once the encoder is done. */
+      if (par->rank == 0 && feed && multi && last && b >= tail_from)
+        chunk = 1;
       int plan[2] = {chunk, tail_from};
       s = zr__par_agree(par, share_ints(par, plan, 2));
       if (s != ZR_OK)
@@ -1470,7 +1494,8 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
                                                        : NULL;
         s = render_band(par, job, p == 1 ? pr.centres : NULL, rows, stride,
                         y0, y1, x0, x1, done_rows, total, first,
-                        follow_writer, take, p);
+                        follow_writer, take, p,
+                        first && feed ? job->writer : NULL);
         /* Every rank reads the same owners (render_band's syncs), so
            every rank makes the same lists and the same status: no
            agreement is needed. */
@@ -1481,6 +1506,8 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
         if (s == ZR_OK)
           done_rows += multi ? (size_t)rank_count(&rr, par->rank)
                              : (size_t)(y1 - y0);
+        if (s == ZR_OK && first && par->rank == 0)
+          job->tail_root_rows += rank_count(&rr, 0);
         zr__par_mark(first ? "render: tail chunk rendered"
                            : "render: chunk rendered");
         double gather_start = zr__par_now();

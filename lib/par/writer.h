@@ -8,7 +8,9 @@
  * own, started before the render, and reads each row as soon as it is
  * final (zr_image_set_rows_wait); zr__par_render lets the other ranks
  * render the last bands without rank 0 (job->writer), so that the
- * encoder has rank 0's processor while they do.  The bytes written are
+ * encoder has rank 0's processor while they do, and rank 0 takes rows
+ * of each of those bands beside them as soon as the encoder has nothing
+ * to do (zr__par_writer_wait_idle).  The bytes written are
  * those of the same write after the render: the encoder is the same
  * code reading the same rows, only sooner.  One process of several
  * threads uses it too: its pool tells the rows as they are finished.
@@ -37,6 +39,13 @@ void zr__par_writer_rows(zr_par_writer *w, int rows);
 
 /* The rows said final so far. */
 int zr__par_writer_rows_done(const zr_par_writer *w);
+
+/*
+ * 1 as soon as the encoder has nothing to do - it waits for rows not yet
+ * said final, or the write has returned - and 0 when seconds pass
+ * first (rank 0 then looks again at what the other ranks left it).
+ */
+int zr__par_writer_wait_idle(zr_par_writer *w, double seconds);
 
 /*
  * Ends the write: with abandon, the encoder's wait fails (the render
