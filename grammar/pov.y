@@ -2425,10 +2425,16 @@ pigment:
    entries of a pigment_map. */
 pigment_start:
   pigment_start_bare
+/* A colour first makes the pigment that colour, yet what it modifies
+   (an object's pigment, a texture identifier's) keeps its transform,
+   colour_map and warps for a pattern named later: POV-Ray 3.7 draws
+   object { object { B pigment { rgb C } } pigment { gradient x } }
+   with B's gradient scale and colour_map (tests/test_pigment_keep.sh;
+   corpus church-window.pov). */
 | colour_value
     {
-      zr__sdl_take_pigment_base(p);
-      TRY($$ = zr__sdl_pigment_new(p, NULL));
+      TRY($$ = zr__sdl_pigment_new(p, zr__sdl_take_pigment_base(p)));
+      $$->kind = ZR_PIGMENT_SOLID;
       TRY(zr__sdl_want_colour(p, &$1, &@1, &$$->colour));
     }
 ;

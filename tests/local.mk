@@ -401,6 +401,8 @@ EXTRA_DIST += tests/test_bounded_poly.sh tests/bounded_poly.pov
 # that miss that box skip the object.
 TESTS += tests/test_bounded_box.sh
 EXTRA_DIST += tests/test_bounded_box.sh tests/bounded_box.pov
+TESTS += tests/test_pigment_keep.sh
+EXTRA_DIST += tests/test_pigment_keep.sh tests/pigment_keep.pov
 # A clip whose inside reaches beyond its box bounds the object by that box.
 TESTS += tests/test_clip_box.sh
 EXTRA_DIST += tests/test_clip_box.sh tests/clip_box.pov

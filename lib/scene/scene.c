@@ -6,6 +6,7 @@
  * flattened, textures resolved, its bounding volume hierarchy built.
  */
 #include "scene/scene.h"
+#include "scene/pattern.h"
 
 #include "core/budget.h"
 
@@ -30,6 +31,10 @@ void zr__pigment_init(zr_pigment *p) {
   memset(p, 0, sizeof *p);
   p->kind = ZR_PIGMENT_SOLID;
   p->colour = zr_colour5(0, 0, 0, 0, 0);
+  /* The pattern's defaults too: a pigment block that modifies this one
+     (the default texture's, after #default) keeps its pattern
+     modifiers for the pattern it names (lib/sdl/build.c). */
+  zr__pattern_init(&p->pattern, ZR_PAT_NONE);
 }
 
 void zr__interior_init(zr_interior *i) {

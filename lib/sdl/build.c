@@ -615,9 +615,30 @@ zr_interior *zr__sdl_interior_new(zr_sdl_parser *p, const zr_interior *from) {
 
 /* ---- patterns, colour maps, normals, image maps ---- */
 
+/*
+ * A pattern named in a pigment block replaces the pattern's kind and its
+ * own parameters, but the pattern modifiers of the pigment the block
+ * modifies stay: POV-Ray 3.7 draws object { B pigment { gradient x } },
+ * B's pigment having turbulence (with octaves), a warp, frequency,
+ * phase or a wave type, with that modifier (tests/test_pigment_keep.sh
+ * cases 6-10).  A fresh pigment holds the defaults, so for it nothing
+ * changes.
+ */
 bool zr__sdl_pigment_pattern(zr_sdl_parser *p, zr_pigment *pg, int kind,
                              const zr_sdl_clist *list) {
+  const zr_pattern old = pg->pattern;
   zr__pigment_set_pattern(pg, (zr_pattern_kind)kind);
+  zr_pattern *pt = &pg->pattern;
+  pt->turbulence = old.turbulence;
+  pt->octaves = old.octaves;
+  pt->omega = old.omega;
+  pt->lambda = old.lambda;
+  pt->frequency = old.frequency;
+  pt->phase = old.phase;
+  pt->wave = old.wave;
+  pt->wave_exponent = old.wave_exponent;
+  pt->warps = old.warps;
+  pt->n_warps = old.n_warps;
   /* global_settings { number_of_waves } sets the default. */
   pg->pattern.waves = p->scene->settings.number_of_waves;
   pg->pattern.noise_generator = p->scene->settings.noise_generator;
