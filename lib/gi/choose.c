@@ -134,6 +134,27 @@ static zr_gi_method say(char *why, size_t size, zr_gi_method m,
   return m;
 }
 
+/* Whether rays between surfaces would cross media that POV-Ray's
+   radiosity takes into account: only with the block's "media on" (the
+   manual, "Media and Radiosity": the default is off, and a medium's
+   emission lights other objects only with it), and then atmospheric
+   media or any object's interior media. */
+bool zr__gi_media_counts(const zr_scene *scene) {
+  const zr_settings *s = &scene->settings;
+  if (!s->radiosity.on || s->radiosity.media != 1)
+    return false;
+  if (s->n_media > 0)
+    return true;
+  if (scene->default_interior && scene->default_interior->n_media > 0)
+    return true;
+  for (size_t i = 0; i < scene->n_primitives; i++) {
+    const zr_interior *in = scene->primitives[i]->interior;
+    if (in && in->n_media > 0)
+      return true;
+  }
+  return false;
+}
+
 ZR_API int zr_gi_has_sky(const zr_scene *scene) {
   return scene && zr__gi_has_sky(scene);
 }
@@ -149,6 +170,22 @@ ZR_API zr_gi_method zr_gi_choose(const zr_scene *scene, zr_gi_method asked,
     return say(why, size, ZR_GI_CACHE,
                "the sky (sky_sphere or background) lights the scene",
                NULL);
+  /* The hierarchical solver's transfer between two patches is a form
+     factor times a visibility, with nothing in between, as povray's
+     radiosity rays see it by default: fog never dims them, media only
+     under "media on" (measured, tests/test_gi_room.sh: in a closed
+     room lit by an emitting panel a black fog of distance 3 leaves
+     0.488 of the floor's linear light in povray's picture, the camera
+     ray's fog alone, and 0.488 in the solver's; fogging the light
+     between surfaces too, as the path tracer did, left 0.123).  With
+     media on the room's floor is 0.0292 in povray's picture and was
+     0.1059 in the solver's, so such a scene goes to the cache, whose
+     sample rays cross the media (0.0290). */
+  if (zr__gi_media_counts(scene))
+    return say(why, size, ZR_GI_CACHE,
+               "its radiosity block has media on and the scene has "
+               "media, which the hierarchical solver carries no light "
+               "through%s", NULL);
   /* Meshes of any size: the solver clusters their faces (and takes no
      face limit unless a library caller sets one in the solver's own
      parameters, which this choice does not see). */
