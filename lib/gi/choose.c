@@ -18,6 +18,7 @@
 #include <string.h>
 
 #include "radiosity/radiosity.h"
+#include "trace/intersect.h"
 
 /* POV-Ray 3.7's defaults (manual, "Adjusting Radiosity"). */
 ZR_API void zr_gi_params_init(zr_gi_params *p, const zr_scene *scene) {
@@ -197,6 +198,19 @@ ZR_API zr_gi_method zr_gi_choose(const zr_scene *scene, zr_gi_method asked,
       return say(why, size, ZR_GI_CACHE,
                  "it has an object the hierarchical solver does not "
                  "model (%s)", zr__rad_kind_name(o->kind));
+    /* The solver's emitters shine from their front only (one-sided
+       emission, its default and the command line's: zrcube(1)), the
+       outside of a closed object; povray's emission shines both ways.
+       An emitting sky dome or room around the camera then lights
+       nothing (measured: a box on a floor under an emitting sphere of
+       radius 50, povray's and the cache's pixels 160,170,198, the
+       solver's 1,0,0), so such a scene goes to the cache. */
+    if (emits(o) && zr__has_inside(o) &&
+        zr__inside(o, scene->camera.location))
+      return say(why, size, ZR_GI_CACHE,
+                 "the camera is inside an emitting %s, which the "
+                 "hierarchical solver lights from its outside only",
+                 zr__rad_kind_name(o->kind));
     emitter = emitter || emits(o);
   }
   if (!emitter)
