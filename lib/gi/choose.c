@@ -135,27 +135,6 @@ static zr_gi_method say(char *why, size_t size, zr_gi_method m,
   return m;
 }
 
-/* Whether rays between surfaces would cross media that POV-Ray's
-   radiosity takes into account: only with the block's "media on" (the
-   manual, "Media and Radiosity": the default is off, and a medium's
-   emission lights other objects only with it), and then atmospheric
-   media or any object's interior media. */
-bool zr__gi_media_counts(const zr_scene *scene) {
-  const zr_settings *s = &scene->settings;
-  if (!s->radiosity.on || s->radiosity.media != 1)
-    return false;
-  if (s->n_media > 0)
-    return true;
-  if (scene->default_interior && scene->default_interior->n_media > 0)
-    return true;
-  for (size_t i = 0; i < scene->n_primitives; i++) {
-    const zr_interior *in = scene->primitives[i]->interior;
-    if (in && in->n_media > 0)
-      return true;
-  }
-  return false;
-}
-
 ZR_API int zr_gi_has_sky(const zr_scene *scene) {
   return scene && zr__gi_has_sky(scene);
 }
@@ -182,7 +161,7 @@ ZR_API zr_gi_method zr_gi_choose(const zr_scene *scene, zr_gi_method asked,
      media on the room's floor is 0.0292 in povray's picture and was
      0.1059 in the solver's, so such a scene goes to the cache, whose
      sample rays cross the media (0.0290). */
-  if (zr__gi_media_counts(scene))
+  if (zr__rad_media_counts(scene))
     return say(why, size, ZR_GI_CACHE,
                "its radiosity block has media on and the scene has "
                "media, which the hierarchical solver carries no light "

@@ -118,11 +118,6 @@ struct zr_gi_cache {
    scene (lib/gi/choose.c). */
 bool zr__gi_has_sky(const zr_scene *scene);
 
-/* Whether POV-Ray's radiosity would take media into account in the
-   scene: its radiosity block says "media on" and it has atmospheric or
-   interior media (lib/gi/choose.c). */
-bool zr__gi_media_counts(const zr_scene *scene);
-
 /* Adds the record to the cache and its depth's octree. */
 bool zr__gi_cache_add(zr_gi_cache *cache, const zr__gi_record *r);
 /* Builds the final pass's grid of the first bounce's records (see

@@ -81,6 +81,7 @@
 
 #include "core/context.h"
 #include "gi/gi.h"
+#include "radiosity/radiosity.h"
 #include "scene/texture.h"
 #include "trace/bvh.h"
 #include "trace/render.h"
@@ -284,7 +285,7 @@ ZR_API void zr_path_params_init(zr_path_params *p) {
    skip: media, when the radiosity block has media on (fog and rainbows
    never act on gathering rays). */
 static bool has_atmosphere(const zr_scene *scene) {
-  return zr__gi_media_counts(scene);
+  return zr__rad_media_counts(scene);
 }
 
 static zr_status collect_emitters(zr_path *pt) {

@@ -38,7 +38,6 @@
 
 #include "core/budget.h"
 #include "core/team.h"
-#include "gi/gi.h"
 #include "radiosity/formfactor.h"
 #include "trace/obj_mesh.h"
 
@@ -299,7 +298,7 @@ ZR_API zr_status zr_radiosity_solve(zr_context *ctx, const zr_scene *scene,
   /* The solver's transfer crosses no media; povray's radiosity rays
      cross them under "media on" (zr_gi_choose then picks the cache, so
      only an explicit choice of this solver gets here). */
-  if (zr__gi_media_counts(scene))
+  if (zr__rad_media_counts(scene))
     zr__diag(ctx, ZR_DIAG_WARNING, ZR_OK, NULL,
              "radiosity: the hierarchical solver carries no light "
              "through media, which the radiosity block's media on asks "
