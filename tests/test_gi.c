@@ -406,6 +406,47 @@ static void test_gi_choose(void **state) {
                           "contained_by { box { -1, 1 } } }",
                           "the sky"),
                    ZR_GI_CACHE);
+  /* Media count only under the block's media on (the solver carries
+     no light through them; povray's radiosity rays see them only
+     then), atmospheric or inside an object; fog never does (povray's
+     radiosity rays are not fogged; tests/test_gi_room.sh). */
+  assert_int_equal(choose(f, "global_settings { radiosity { media on } }"
+                          CLOSED "media { absorption 0.3 }",
+                          "media on and the scene has media"),
+                   ZR_GI_CACHE);
+  assert_int_equal(choose(f, "global_settings { radiosity { media on } }"
+                          CLOSED "sphere { 0, 0.5 pigment { rgbt 1 } "
+                          "hollow interior { media { absorption 1 } } }",
+                          "media on and the scene has media"),
+                   ZR_GI_CACHE);
+  assert_int_equal(choose(f, "global_settings { radiosity { } }" CLOSED
+                          "media { absorption 0.3 }",
+                          "lit by emitting surfaces under a black sky"),
+                   ZR_GI_HIERARCHICAL);
+  assert_int_equal(choose(f, "global_settings { radiosity { media on } }"
+                          CLOSED,
+                          "lit by emitting surfaces under a black sky"),
+                   ZR_GI_HIERARCHICAL);
+  assert_int_equal(choose(f, "global_settings { radiosity { } }" CLOSED
+                          "fog { distance 1 color rgb 0.5 }",
+                          "lit by emitting surfaces under a black sky"),
+                   ZR_GI_HIERARCHICAL);
+  /* An emitter around the camera: the solver would light nothing from
+     its inside (one-sided emission); an emitter the camera is outside
+     of, the CLOSED lamp, stays hierarchical (above). */
+  assert_int_equal(choose(f, "global_settings { radiosity { } }"
+                          "camera { location <0, 1, -5> look_at 0 }"
+                          "sphere { 0, 50 pigment { rgb 1 } "
+                          "finish { emission 1 } }"
+                          "plane { y, 0 pigment { rgb 0.5 } }",
+                          "the camera is inside an emitting sphere"),
+                   ZR_GI_CACHE);
+  assert_int_equal(choose(f, "global_settings { radiosity { } }"
+                          "camera { location <0, 1, -5> look_at 0 }"
+                          "box { -9, 9 pigment { rgb 1 } "
+                          "finish { emission 1 } }",
+                          "the camera is inside an emitting box"),
+                   ZR_GI_CACHE);
   /* A mesh of 2048 faces (over the 1024 the solver once took) is
      hierarchical: no face limit by default. */
   {

@@ -18,6 +18,7 @@
 #include <string.h>
 
 #include "radiosity/radiosity.h"
+#include "trace/intersect.h"
 
 /* POV-Ray 3.7's defaults (manual, "Adjusting Radiosity"). */
 ZR_API void zr_gi_params_init(zr_gi_params *p, const zr_scene *scene) {
@@ -149,6 +150,22 @@ ZR_API zr_gi_method zr_gi_choose(const zr_scene *scene, zr_gi_method asked,
     return say(why, size, ZR_GI_CACHE,
                "the sky (sky_sphere or background) lights the scene",
                NULL);
+  /* The hierarchical solver's transfer between two patches is a form
+     factor times a visibility, with nothing in between, as povray's
+     radiosity rays see it by default: fog never dims them, media only
+     under "media on" (measured, tests/test_gi_room.sh: in a closed
+     room lit by an emitting panel a black fog of distance 3 leaves
+     0.488 of the floor's linear light in povray's picture, the camera
+     ray's fog alone, and 0.488 in the solver's; fogging the light
+     between surfaces too, as the path tracer did, left 0.123).  With
+     media on the room's floor is 0.0292 in povray's picture and was
+     0.1059 in the solver's, so such a scene goes to the cache, whose
+     sample rays cross the media (0.0290). */
+  if (zr__rad_media_counts(scene))
+    return say(why, size, ZR_GI_CACHE,
+               "its radiosity block has media on and the scene has "
+               "media, which the hierarchical solver carries no light "
+               "through%s", NULL);
   /* Meshes of any size: the solver clusters their faces (and takes no
      face limit unless a library caller sets one in the solver's own
      parameters, which this choice does not see). */
@@ -160,6 +177,19 @@ ZR_API zr_gi_method zr_gi_choose(const zr_scene *scene, zr_gi_method asked,
       return say(why, size, ZR_GI_CACHE,
                  "it has an object the hierarchical solver does not "
                  "model (%s)", zr__rad_kind_name(o->kind));
+    /* The solver's emitters shine from their front only (one-sided
+       emission, its default and the command line's: zrcube(1)), the
+       outside of a closed object; povray's emission shines both ways.
+       An emitting sky dome or room around the camera then lights
+       nothing (measured: a box on a floor under an emitting sphere of
+       radius 50, povray's and the cache's pixels 160,170,198, the
+       solver's 1,0,0), so such a scene goes to the cache. */
+    if (emits(o) && zr__has_inside(o) &&
+        zr__inside(o, scene->camera.location))
+      return say(why, size, ZR_GI_CACHE,
+                 "the camera is inside an emitting %s, which the "
+                 "hierarchical solver lights from its outside only",
+                 zr__rad_kind_name(o->kind));
     emitter = emitter || emits(o);
   }
   if (!emitter)

@@ -32,6 +32,11 @@ EXTRA_DIST += tests/test_gi_pattern.sh tests/gi_pattern.pov bench/gi_radset.py \
 # Sample rays and fog, against povray's recorded pixels.
 TESTS += tests/test_gi_fog.sh
 EXTRA_DIST += tests/test_gi_fog.sh tests/gi_fog.pov
+# Fog and media between the surfaces of a closed room, and an emitting
+# dome around the camera (the automatic choice and the path-traced
+# reference), against povray's measured means.
+TESTS += tests/test_gi_room.sh
+EXTRA_DIST += tests/test_gi_room.sh tests/gi_room.pov tests/gi_dome.pov
 
 # The path-traced reference: exact furnaces, samples in pieces, and the
 # Cornell box against ../shared/reference's ground truth.

@@ -109,6 +109,27 @@ bool zr__rad_models(const zr_object *o, size_t *faces) {
   return modelled(o);
 }
 
+/* Whether rays between surfaces would cross media that POV-Ray's
+   radiosity takes into account: only with the block's "media on" (the
+   manual, "Media and Radiosity": the default is off, and a medium's
+   emission lights other objects only with it), and then atmospheric
+   media or any object's interior media. */
+bool zr__rad_media_counts(const zr_scene *scene) {
+  const zr_settings *s = &scene->settings;
+  if (!s->radiosity.on || s->radiosity.media != 1)
+    return false;
+  if (s->n_media > 0)
+    return true;
+  if (scene->default_interior && scene->default_interior->n_media > 0)
+    return true;
+  for (size_t i = 0; i < scene->n_primitives; i++) {
+    const zr_interior *in = scene->primitives[i]->interior;
+    if (in && in->n_media > 0)
+      return true;
+  }
+  return false;
+}
+
 /* The bounds that clip infinite planes; false when nothing bounds them. */
 bool zr__rad_finite_bounds(const zr_scene *scene, zr_vec3 *lo,
                            zr_vec3 *hi) {

@@ -295,6 +295,14 @@ ZR_API zr_status zr_radiosity_solve(zr_context *ctx, const zr_scene *scene,
   if (st != ZR_OK)
     return st;
   zr__rad_direct_power(rad);
+  /* The solver's transfer crosses no media; povray's radiosity rays
+     cross them under "media on" (zr_gi_choose then picks the cache, so
+     only an explicit choice of this solver gets here). */
+  if (zr__rad_media_counts(scene))
+    zr__diag(ctx, ZR_DIAG_WARNING, ZR_OK, NULL,
+             "radiosity: the hierarchical solver carries no light "
+             "through media, which the radiosity block's media on asks "
+             "for (--gi=cache does)");
   if (!(rad->power_ref > 0.0))
     zr__diag(ctx, ZR_DIAG_WARNING, ZR_OK, NULL,
              scene->n_lights > 0

@@ -431,6 +431,11 @@ zr_status zr__rad_index_links(zr_radiosity *rad);
 /* Whether the solver models objects of o's kind; *faces is the number
    of mesh faces o brings (0 for other kinds).  lib/gi/choose.c asks. */
 bool zr__rad_models(const zr_object *o, size_t *faces);
+/* Whether POV-Ray's radiosity would take media into account in the
+   scene: its radiosity block says "media on" and it has atmospheric or
+   interior media (mesh.c).  The solver carries no light through media:
+   zr_gi_choose then takes the cache, and the solver warns. */
+bool zr__rad_media_counts(const zr_scene *scene);
 /* POV-Ray's keyword for an object kind ("sphere", "isosurface"). */
 const char *zr__rad_kind_name(zr_object_kind kind);
 bool zr__radiosity_radiance(const zr_radiosity *rad, const zr_object *object,
