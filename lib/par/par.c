@@ -1434,10 +1434,14 @@ zr_status zr__par_render(zr_par *par, zr_par_render *job) {
           }
         }
       }
-      /* The tail a band at a time: its rows go to the encoder band by
-         band, and rank 0 joins each band once the encoder is done. */
+      /* The tail in one chunk, which rank 0 joins once its encoder is
+         done: a meeting while the encoder runs puts three threads on
+         two processors, and a rank that spins in the exchange takes the
+         processor the other rank needs (a band at a time, flake's first
+         two tail bands met 0.034 and 0.040 s late, bench/timeline.sh
+         under chrt). */
       if (par->rank == 0 && feed && multi && last && b >= tail_from)
-        chunk = 1;
+        chunk = pr.bands;
       int plan[2] = {chunk, tail_from};
       s = zr__par_agree(par, share_ints(par, plan, 2));
       if (s != ZR_OK)

@@ -149,9 +149,9 @@ typedef struct zr_par_render {
      the last bands of the last pass without rank 0, as many as they
      take about as long as the encoder takes for the rows before them,
      at write_row_seconds a row (an estimate: bin/zrcube.c's is
-     measured by bench/write_rows.sh), one band at a time; on one host
-     rank 0 takes rows of a band too once the encoder has nothing to
-     do, so an estimate too high costs little. */
+     measured by bench/write_rows.sh), in one chunk; on one host rank 0
+     takes rows of it too once the encoder has nothing to do, so an
+     estimate too high costs little. */
   struct zr_par_writer *writer;
   double write_row_seconds;
   int tail_bands;          /* out: the bands rendered without rank 0 */

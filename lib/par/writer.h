@@ -9,8 +9,8 @@
  * final (zr_image_set_rows_wait); zr__par_render lets the other ranks
  * render the last bands without rank 0 (job->writer), so that the
  * encoder has rank 0's processor while they do, and rank 0 takes rows
- * of each of those bands beside them as soon as the encoder has nothing
- * to do (zr__par_writer_wait_idle).  The bytes written are
+ * of those bands beside them as soon as the encoder has nothing to do
+ * (zr__par_writer_wait_idle).  The bytes written are
  * those of the same write after the render: the encoder is the same
  * code reading the same rows, only sooner.  One process of several
  * threads uses it too: its pool tells the rows as they are finished.
