@@ -1143,8 +1143,8 @@ static zr_status render_band(zr_par *par, zr_par_render *job,
     /* Rank 0 in the tail: its encoder has rank 0's processor until it
        has encoded every row told so far; then rank 0 takes rows from
        the counter beside the others while any are left.  The tail's
-       length is an estimate; this makes a long one cost rank 0 nothing
-       and the ranks end the band together. */
+       length is an estimate; this makes a long one cost rank 0 little
+       and the ranks end the tail together. */
     while (atomic_load(sh->next[pass]) < y1)
       if (zr__par_writer_wait_idle(join, 0.001)) {
         joined = 1;
@@ -1178,9 +1178,9 @@ static zr_status render_band(zr_par *par, zr_par_render *job,
         .owner_rank = par->rank,
     };
     s = zr__pool_render(&pool);
-    zr__par_mark(joined  ? "render: tail rows of rank 0 done (encoder idle)"
-                 : first ? "render: tail rows of this rank done"
-                         : "render: rows of this rank done");
+    /* Rank 0 marks its tail rows (joined) as the others mark theirs. */
+    zr__par_mark(first ? "render: tail rows of this rank done"
+                       : "render: rows of this rank done");
   }
   /* The owners this rank wrote, seen by the others after the meeting
      (MPI's rule for a shared window: a sync on both sides of it). */
