@@ -940,6 +940,14 @@ item:
     }
 | camera
 | light
+/* A light_source identifier alone, likewise: POV-Ray 3.7 adds the light
+   (measured: tests/legacy/bare_light.pov). */
+| T_LIGHT_ID
+    {
+      zr_light *copy = zr__sdl_light_copy(p, $1.ptr);
+      TRY(copy);
+      TRY(zr__sdl_light_add(p, copy, &@1));
+    }
 | background
 | fog_body '}'         { zr__sdl_fog_end(p, $1); }
 | sky_body '}'         { TRY(zr__sdl_sky_end(p, $1, &@1)); }

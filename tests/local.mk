@@ -102,7 +102,8 @@ EXTRA_DIST += tests/test_legacy_povray.sh tests/legacy/camera_angle0.pov \
 	tests/legacy/finish_ior.pov tests/legacy/no_bump_scale.pov \
 	tests/legacy/blocks.pov tests/legacy/clip_id.pov \
 	tests/legacy/include_semicolon.inc \
-	tests/legacy/hash_keyword.pov tests/legacy/bare_object_csg.pov
+	tests/legacy/hash_keyword.pov tests/legacy/bare_object_csg.pov \
+	tests/legacy/bare_light.pov
 
 # Media against POV-Ray's pictures (skipped without povray).
 TESTS += tests/test_media_povray.sh

@@ -90,19 +90,11 @@
 /* How far block patterns nudge the point off cell boundaries. */
 #define BLOCK_EPS 1e-9
 
-void zr__pattern_init(zr_pattern *pt, zr_pattern_kind kind) {
+void zr__pattern_set_kind(zr_pattern *pt, zr_pattern_kind kind) {
   pt->kind = kind;
   pt->vector = kind == ZR_PAT_BRICK ? zr_v3(8, 3, 4.5) : zr_v3(1, 0, 0);
   pt->mortar = 0.5;
   pt->agate_turb = 1.0;
-  pt->turbulence = zr_v3(0, 0, 0);
-  pt->octaves = 6;
-  pt->omega = 0.5;
-  pt->lambda = 2.0;
-  pt->frequency = 1.0;
-  pt->phase = 0.0;
-  pt->wave = ZR_WAVE_DEFAULT;
-  pt->wave_exponent = 1.0;
   pt->arms = 0;
   pt->waves = 10;
   pt->control0 = 1.0;
@@ -125,6 +117,18 @@ void zr__pattern_init(zr_pattern *pt, zr_pattern_kind kind) {
   pt->slope.direction = pt->slope.altitude = zr_v3(0, 0, 0);
   pt->slope.lo = pt->slope.alt_lo = 0.0;
   pt->slope.hi = pt->slope.alt_hi = 1.0;
+}
+
+void zr__pattern_init(zr_pattern *pt, zr_pattern_kind kind) {
+  zr__pattern_set_kind(pt, kind);
+  pt->turbulence = zr_v3(0, 0, 0);
+  pt->octaves = 6;
+  pt->omega = 0.5;
+  pt->lambda = 2.0;
+  pt->frequency = 1.0;
+  pt->phase = 0.0;
+  pt->wave = ZR_WAVE_DEFAULT;
+  pt->wave_exponent = 1.0;
   pt->warps = NULL;
   pt->n_warps = 0;
 }

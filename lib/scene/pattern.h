@@ -12,6 +12,13 @@
    omega 0.5, lambda 2, brick_size <8,3,4.5>, mortar 0.5, agate_turb 1,
    gradient along x. */
 void zr__pattern_init(zr_pattern *pt, zr_pattern_kind kind);
+/* A new kind named in a pattern that may have modifiers already (a
+   pigment or normal block modifying another): the kind's own parameters
+   take their defaults, the pattern modifiers (turbulence, octaves,
+   omega, lambda, frequency, phase, the wave type, warps) stay, as
+   POV-Ray 3.7 draws it (tests/test_pigment_keep.sh).  On a pattern that
+   zr__pattern_init made, the same as zr__pattern_init. */
+void zr__pattern_set_kind(zr_pattern *pt, zr_pattern_kind kind);
 
 /* POV-Ray's noise (noise_generator 2, lib/core/noise.c), about
    [0.1, 0.9] with mean 0.5. */

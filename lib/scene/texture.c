@@ -212,7 +212,7 @@ zr_colour zr__colour_map_eval(const zr_colour_map *map, double v) {
 
 void zr__pigment_set_pattern(zr_pigment *pg, zr_pattern_kind kind) {
   pg->kind = ZR_PIGMENT_PATTERN;
-  zr__pattern_init(&pg->pattern, kind);
+  zr__pattern_set_kind(&pg->pattern, kind);
   const zr_colour blue = zr_colour5(0, 0, 1, 0, 0);
   const zr_colour green = zr_colour5(0, 1, 0, 0, 0);
   const zr_colour red = zr_colour5(1, 0, 0, 0, 0);

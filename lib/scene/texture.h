@@ -15,8 +15,9 @@ zr_colour zr__colour_map_eval(const zr_colour_map *map, double v);
    which is what POV-Ray renders for gradient (measured). */
 const zr_colour_map *zr__default_colour_map(void);
 
-/* Makes pg a pattern pigment of kind with POV-Ray's defaults, including
-   the default colours of checker, hexagon and brick. */
+/* Makes pg a pattern pigment of kind with POV-Ray's defaults for the
+   kind's parameters, including the default colours of checker, hexagon
+   and brick; pg's pattern modifiers stay (zr__pattern_set_kind). */
 void zr__pigment_set_pattern(zr_pigment *pg, zr_pattern_kind kind);
 
 /* The colour of an image map at p in its own (pattern) space. */
