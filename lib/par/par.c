@@ -166,7 +166,8 @@ static const char *const one_host_env[][2] = {
        host) and comes back at once when nothing else wants it.  Open
        MPI sets it itself only when it knows the host oversubscribed.
        A busy machine (two other sessions' renders, load 6-8) was the
-       case: flake 2048^2 under zrcube-mpirun -n 2, 3 runs alternated,
+       case (bench/mpi_yield.sh): flake 2048^2 under zrcube-mpirun -n 2,
+       3 runs alternated,
        -v's gather (the exchange's wall time) 0.16, 0.04, 2.97 s
        without, 0.010, 0.021, 0.057 s with, the two ranks' CPU 5.10,
        4.31, 7.44 s without, 4.74, 4.43, 4.46 s with. */
