@@ -371,6 +371,7 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %token T_NUMBER_OF_WAVES "number_of_waves"
 %token T_PIGMENT_MAP "pigment_map"
 %token T_PIGMENT_PATTERN "pigment_pattern"
+%token T_IMAGE_PATTERN "image_pattern"
 %token T_QUILTED "quilted"
 %token T_SLOPE_MAP "slope_map"
 %token T_SPIRAL1 "spiral1"
@@ -824,6 +825,7 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %type <cmap> colour_map colour_map_head colour_map_body
 %type <normal> normal normal_start normal_body bump_map_body
 %type <imap> image_map_head image_map_body material_map_head
+%type <imap> image_pattern image_pattern_body
 %type <finish> finish finish_head finish_body irid_body
 %type <refl> reflection
 %type <texture> texture texture_start texture_body layered_texture
@@ -2531,6 +2533,11 @@ pigment_item:
       TRY(zr__sdl_pigment_pattern(p, pg, ZR_PAT_PIGMENT_PATTERN, NULL));
       zr__sdl_pigment_pattern_of(&pg->pattern, $3);
     }
+| image_pattern
+    {
+      TRY(zr__sdl_pigment_pattern(p, $<pigment>0, ZR_PAT_IMAGE, NULL));
+      $<pigment>0->pattern.image = $1;
+    }
 | pigment_map
     { TRY(zr__sdl_pigment_map_set(p, $<pigment>0, $1, &@1)); }
 /* A density's own items (build_media.c): its body is a pigment's. */
@@ -2995,6 +3002,18 @@ normal_body:
       zr__sdl_pigment_pattern_of(&$1->pattern, $4);
       $$ = $1;
     }
+| normal_body image_pattern
+    {
+      TRY(zr__sdl_normal_pattern(p, $1, ZR_PAT_IMAGE, NULL, &@2));
+      $1->pattern.image = $2;
+      $$ = $1;
+    }
+| normal_body image_pattern comma expr
+    {
+      TRY(zr__sdl_normal_pattern(p, $1, ZR_PAT_IMAGE, &$4, &@4));
+      $1->pattern.image = $2;
+      $$ = $1;
+    }
 | normal_body normal_map
     { TRY(zr__sdl_normal_map_set(p, $1, $2, &@2)); $$ = $1; }
 | normal_body slope_map  { $1->slope_map = $2; $$ = $1; }
@@ -3089,6 +3108,26 @@ image_map_body:
       TRY(zr__sdl_image_map_index(p, $1, T_TRANSMIT, &$3, &@3, &$5, &@5));
       $$ = $1;
     }
+;
+
+/* image_pattern { FILE [gamma G] ITEMS } ("Image Pattern"): the
+   picture's grey, read as a bump_map reads it, is the pattern's value;
+   use_alpha (the alpha channel instead) is not supported. */
+image_pattern:
+  T_IMAGE_PATTERN '{' image_pattern_body '}' { $$ = $3; }
+;
+
+image_pattern_body:
+  image_map_file
+    { TRY($$ = zr__sdl_bitmap_new(p, "image_pattern", $1, &@1, NULL, NULL)); }
+| image_map_file T_GAMMA expr
+    { TRY($$ = zr__sdl_bitmap_new(p, "image_pattern", $1, &@1, &$3, &@3)); }
+| image_pattern_body T_MAP_TYPE expr
+    { TRY(zr__sdl_image_map_mod(p, $1, T_MAP_TYPE, &$3, &@3)); $$ = $1; }
+| image_pattern_body T_ONCE
+    { TRY(zr__sdl_image_map_mod(p, $1, T_ONCE, NULL, &@2)); $$ = $1; }
+| image_pattern_body T_INTERPOLATE expr
+    { TRY(zr__sdl_image_map_mod(p, $1, T_INTERPOLATE, &$3, &@3)); $$ = $1; }
 ;
 
 /* bump_map { FILE [gamma G] ITEMS } ("Bump Map"), build_texture.c. */
@@ -3447,6 +3486,12 @@ texture_body:
     {
       zr__sdl_texture_pattern($1, ZR_PAT_PIGMENT_PATTERN);
       zr__sdl_pigment_pattern_of(&$1->pattern, $4);
+      $$ = $1;
+    }
+| texture_body image_pattern
+    {
+      zr__sdl_texture_pattern($1, ZR_PAT_IMAGE);
+      $1->pattern.image = $2;
       $$ = $1;
     }
 | texture_body pattern_mod

@@ -430,3 +430,7 @@ EXTRA_DIST += tests/test_light_fade.sh tests/light_fade.pov \
 TESTS += tests/test_interior_fade.sh
 EXTRA_DIST += tests/test_interior_fade.sh tests/interior_fade.pov \
 	bench/conform/interior_fade_negative.sh
+
+# image_pattern { } against povray's pixels (lib/scene/bitmap.c).
+TESTS += tests/test_image_pattern.sh
+EXTRA_DIST += tests/test_image_pattern.sh tests/image_pattern.pov

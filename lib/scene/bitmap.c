@@ -221,3 +221,12 @@ size_t zr__material_map_entry(const zr_image_map *im, zr_vec3 p, size_t n) {
     return 0;
   return (size_t)fmod(k, (double)n);
 }
+
+double zr__bitmap_pattern(const zr_image_map *im, zr_vec3 p) {
+  double px, py;
+  bool rx, ry;
+  if (!zr__bitmap_where(im, p, &px, &py, &rx, &ry))
+    return 0.0;
+  double v = zr__bitmap_value(im, px, py, rx, ry);
+  return v < 0.0 ? 0.0 : v > 1.0 ? 1.0 : v;
+}

@@ -66,6 +66,11 @@ double zr__bitmap_value(const zr_image_map *im, double px, double py,
    whose unit normal is n (nm->bump_map not NULL). */
 zr_vec3 zr__bump_map_perturb(const zr_normal *nm, zr_vec3 world, zr_vec3 n);
 
+/* image_pattern's value at p, the map's own space: the picture's grey
+   there as a bump_map reads it (the file's numbers, decoded only when a
+   gamma is given), 0 off a "once" picture. */
+double zr__bitmap_pattern(const zr_image_map *im, zr_vec3 p);
+
 /* The entry of a material_map's texture list (n entries, n >= 1) that
    the picture picks at p, the map's own space: its index modulo n, the
    first entry off a "once" picture. */

@@ -77,6 +77,7 @@
 #include <math.h>
 #include <stdint.h>
 
+#include "scene/bitmap.h"
 #include "scene/df3.h"
 #include "core/noise.h"
 
@@ -110,6 +111,7 @@ void zr__pattern_set_kind(zr_pattern *pt, zr_pattern_kind kind) {
   pt->fractal.interior_factor = pt->fractal.exterior_factor = 1;
   pt->fn = NULL;
   pt->object = NULL;
+  pt->image = NULL;
   pt->crackle_form = zr_v3(-1, 1, 0);
   pt->crackle_metric = 2;
   pt->crackle_offset = 0;
@@ -671,6 +673,8 @@ static double raw_value(const zr_pattern *pt, zr_vec3 p) {
   case ZR_PAT_PIGMENT_PATTERN:
     return pt->pigment ? clamp01(grey(zr__pigment_eval(pt->pigment, p)))
                        : 0;
+  case ZR_PAT_IMAGE:
+    return pt->image ? zr__bitmap_pattern(pt->image, p) : 0;
   case ZR_PAT_QUILTED:
     return quilted(pt, p);
   case ZR_PAT_SPIRAL1:

@@ -78,7 +78,10 @@ typedef enum zr_pattern_kind {
      (zr__pattern_eval_n; elsewhere the normal counts as zero). */
   ZR_PAT_SLOPE,
   /* tiling N (lib/scene/pattern_tiling.c), N in pattern.tiling. */
-  ZR_PAT_TILING
+  ZR_PAT_TILING,
+  /* image_pattern { }: the grey of a picture (pattern.image), or its
+     alpha with use_alpha, mapped as an image_map (lib/scene/bitmap.c). */
+  ZR_PAT_IMAGE
 } zr_pattern_kind;
 
 /* A df3 voxel grid ("Density File Pattern"), mapped onto the unit cube:
@@ -195,6 +198,7 @@ typedef struct zr_pattern {
   double crackle_metric, crackle_offset;
   bool crackle_solid;
   const zr_density_file *density_file; /* density_file df3 */
+  const struct zr_image_map *image;    /* image_pattern */
   zr_slope slope;                      /* slope { } */
   const zr_warp *warps; /* in the order written, in the arena */
   int n_warps;

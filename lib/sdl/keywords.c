@@ -228,7 +228,7 @@ static const zr_sdl_keyword keywords[] = {
     {"ifndef", T_UNSUPPORTED},
     {"image_height", T_CONSTANT},
     {"image_map", T_IMAGE_MAP},
-    {"image_pattern", T_UNSUPPORTED},
+    {"image_pattern", T_IMAGE_PATTERN},
     {"image_width", T_CONSTANT},
     {"importance", T_IMPORTANCE},
     {"include", T_UNSUPPORTED},
