@@ -434,3 +434,7 @@ EXTRA_DIST += tests/test_interior_fade.sh tests/interior_fade.pov \
 # image_pattern { } against povray's pixels (lib/scene/bitmap.c).
 TESTS += tests/test_image_pattern.sh
 EXTRA_DIST += tests/test_image_pattern.sh tests/image_pattern.pov
+
+# An image_map's alpha channel and tRNS as transmit (lib/image/png.c).
+TESTS += tests/test_image_alpha.sh
+EXTRA_DIST += tests/test_image_alpha.sh tests/image_alpha.pov

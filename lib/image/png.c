@@ -6,11 +6,13 @@
  * one sample a pixel, colour three, a palette image one index a pixel
  * (also for image_map's per-index filter and transmit) beside its
  * palette; libpng decodes the rows straight into that store.  1/2/4-bit
- * samples are widened to 8, 16-bit samples kept at full precision.  Alpha,
- * including a palette's tRNS transparency, is dropped, not composited:
- * a zr_image has no alpha and the colour of a transparent pixel is still
- * the colour its author stored; compositing over an arbitrary background
- * would invent data.  Samples are decoded to linear light by the sRGB
+ * samples are widened to 8, 16-bit samples kept at full precision.  Alpha
+ * (an alpha channel, or tRNS transparency: a palette's per entry, a
+ * grey or RGB image's one transparent colour) goes to the image's alpha,
+ * straight (unassociated) as the PNG specification stores it, beside
+ * colour codes left as their author stored them: image_map takes it as
+ * transmittance (the manual's "Using the Alpha Channel").  Samples are
+ * decoded to linear light by the sRGB
  * chunk if present, else the gAMA chunk, else the sRGB curve (section
  * 10.5; iCCP and cHRM are ignored: everything is taken as sRGB
  * primaries).
@@ -47,6 +49,7 @@ typedef struct png_job {
   png_infop info;
   unsigned char *rows; /* writing: one row of samples */
   png_bytep *row_ptrs;
+  unsigned char *with_alpha; /* reading: rows holding alpha, split after */
   zr_image *image;
 } png_job;
 
@@ -73,8 +76,10 @@ static void read_memory(png_structp png, png_bytep data, size_t length) {
 }
 
 /* Sets libpng's transformations so that every row is grey or RGB, 8 or
-   16 bit, the way the file stores them (without alpha), or for a palette
-   image one 8-bit index a pixel: the rows are the image's codes. */
+   16 bit, the way the file stores them, followed in each pixel by its
+   alpha when the file has any (a tRNS colour becomes an alpha channel),
+   or for a palette image one 8-bit index a pixel (its tRNS is read
+   apart): the rows are the image's codes, with alpha to be split off. */
 static void request_codes(png_structp png, png_infop info) {
   int color_type = png_get_color_type(png, info);
   int depth = png_get_bit_depth(png, info);
@@ -87,11 +92,9 @@ static void request_codes(png_structp png, png_infop info) {
   }
   if (color_type == PNG_COLOR_TYPE_GRAY && depth < 8)
     png_set_expand_gray_1_2_4_to_8(png);
-  /* Alpha is dropped: stripped where libpng can (a palette's tRNS chunk
-     becomes alpha after the stripping: POV-Ray's bumpmap_.png). */
-  if ((color_type & PNG_COLOR_MASK_ALPHA) ||
+  if (!(color_type & PNG_COLOR_MASK_ALPHA) &&
       png_get_valid(png, info, PNG_INFO_tRNS))
-    png_set_strip_alpha(png);
+    png_set_tRNS_to_alpha(png);
   /* 16-bit samples are big-endian in the file; the codes array holds
      them as native unsigned shorts. */
   const unsigned short one = 1;
@@ -137,6 +140,57 @@ static void keep_palette(png_job *job, png_const_colorp palette,
              palette_size);
 }
 
+/* Whether a palette image's tRNS chunk makes any entry transparent. */
+static bool palette_alpha(png_structp png, png_infop info) {
+  png_bytep trans = NULL;
+  int n = 0;
+  if (png_get_color_type(png, info) != PNG_COLOR_TYPE_PALETTE ||
+      !png_get_valid(png, info, PNG_INFO_tRNS) ||
+      !png_get_tRNS(png, info, &trans, &n, NULL) || !trans)
+    return false;
+  for (int k = 0; k < n; k++)
+    if (trans[k] != 255)
+      return true;
+  return false;
+}
+
+/* Each pixel's alpha from its palette entry's tRNS value (entries past
+   the chunk's are opaque). */
+static void index_alpha(png_structp png, png_infop info, zr_image *image) {
+  png_bytep trans = NULL;
+  int n = 0;
+  png_get_tRNS(png, info, &trans, &n, NULL);
+  size_t count = (size_t)image->width * (size_t)image->height;
+  for (size_t i = 0; i < count; i++) {
+    int k = image->indices[i];
+    image->alpha[i] = k < n ? (float)(trans[k] / 255.0) : 1.0f;
+  }
+}
+
+/* Splits rows of colours + 1 samples a pixel (8 or 16 bit) into the
+   image's codes and its alpha (straight, in [0, 1]). */
+static void split_alpha(zr_image *image, const unsigned char *rows,
+                        size_t colours, bool wide) {
+  size_t n = (size_t)image->width * (size_t)image->height;
+  size_t step = colours + 1;
+  if (wide) {
+    const unsigned short *s = (const unsigned short *)(const void *)rows;
+    unsigned short *c = image->codes;
+    for (size_t i = 0; i < n; i++) {
+      for (size_t k = 0; k < colours; k++)
+        c[colours * i + k] = s[step * i + k];
+      image->alpha[i] = (float)(s[step * i + colours] / 65535.0);
+    }
+    return;
+  }
+  unsigned char *c = image->codes;
+  for (size_t i = 0; i < n; i++) {
+    for (size_t k = 0; k < colours; k++)
+      c[colours * i + k] = rows[step * i + k];
+    image->alpha[i] = (float)(rows[step * i + colours] / 255.0);
+  }
+}
+
 /* Runs libpng; returns ZR_OK or leaves a message in job and says so. */
 static zr_status decode_rows(png_job *job) {
   if (setjmp(png_jmpbuf(job->png)))
@@ -159,8 +213,12 @@ static zr_status decode_rows(png_job *job) {
              "a PLTE chunk");
     return ZR_EFORMAT;
   }
+  /* Grey or RGB, each with or without alpha after it. */
+  size_t colours = palette ? 1 : channels == 2 || channels == 4
+                                     ? channels - 1
+                                     : channels;
   if ((palette ? channels != 1 || depth != 8
-               : channels != 1 && channels != 3) ||
+               : colours != 1 && colours != 3) ||
       (depth != 8 && depth != 16) ||
       rowbytes != (size_t)width * channels * (depth == 16 ? 2 : 1)) {
     snprintf(job->message, sizeof job->message,
@@ -169,9 +227,9 @@ static zr_status decode_rows(png_job *job) {
   }
   double exponent;
   zr_transfer transfer = file_transfer(job->png, job->info, &exponent);
-  zr_image_layout layout = palette         ? ZR_LAYOUT_INDEX
-                           : channels == 1 ? ZR_LAYOUT_GREY
-                                           : ZR_LAYOUT_RGB;
+  zr_image_layout layout = palette        ? ZR_LAYOUT_INDEX
+                           : colours == 1 ? ZR_LAYOUT_GREY
+                                          : ZR_LAYOUT_RGB;
   /* The rows are decoded straight into the image's codes; the row
      pointers are charged while the decoder runs. */
   size_t extra = (size_t)height * sizeof *job->row_ptrs;
@@ -186,8 +244,16 @@ static zr_status decode_rows(png_job *job) {
       png_get_valid(job->png, job->info, PNG_INFO_gAMA);
   unsigned char *rows = palette ? job->image->indices
                                 : (unsigned char *)job->image->codes;
+  bool alpha = colours != channels;
+  if (alpha) {
+    /* Rows with alpha are read whole, then split into codes and alpha. */
+    job->with_alpha = malloc((size_t)height * rowbytes);
+    rows = job->with_alpha;
+  }
   job->row_ptrs = malloc((size_t)height * sizeof *job->row_ptrs);
-  if (!job->row_ptrs)
+  if (!job->row_ptrs || (alpha && !job->with_alpha) ||
+      ((alpha || palette_alpha(job->png, job->info)) &&
+       zr_image_add_alpha(job->image) != ZR_OK))
     return zr__diag(job->ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s",
                     job->name, zr_status_str(ZR_ENOMEM));
   for (int y = 0; y < height; y++)
@@ -195,8 +261,12 @@ static zr_status decode_rows(png_job *job) {
   png_read_image(job->png, job->row_ptrs);
   png_read_end(job->png, NULL);
   zr__image_release_extra(job->image, extra);
+  if (alpha)
+    split_alpha(job->image, job->with_alpha, colours, depth == 16);
   if (palette)
     keep_palette(job, palette, palette_size);
+  if (palette && job->image->alpha)
+    index_alpha(job->png, job->info, job->image);
   return ZR_OK;
 }
 
@@ -229,6 +299,7 @@ zr_status zr__png_decode(zr_context *ctx, const char *name,
   png_destroy_read_struct(job.png ? &job.png : NULL,
                           job.info ? &job.info : NULL, NULL);
   free(job.row_ptrs);
+  free(job.with_alpha);
   if (s == ZR_OK)
     *out = job.image;
   else

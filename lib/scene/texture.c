@@ -236,6 +236,11 @@ static zr_colour pixel(const zr_image_map *im, int x, int y) {
   size_t i = (size_t)y * (size_t)im->width + (size_t)x;
   float px[3];
   zr__bitmap_rgb(im, i, px);
+  /* An alpha channel adds 1 - alpha to "transmit all" (POV-Ray 3.7's
+     sum, not clamped: tests/test_image_alpha.sh). */
+  if (im->alpha)
+    return zr_colour5(px[0], px[1], px[2], im->filter_all,
+                      im->transmit_all + 1.0f - im->alpha[i]);
   if (im->indices) {
     const float *ft = im->palette_ft + 2 * (size_t)im->indices[i];
     return zr_colour5(px[0], px[1], px[2], ft[0], ft[1]);

@@ -970,6 +970,11 @@ static bool keep_palette(zr_sdl_parser *p, zr_image_map *im,
   if (!indices || !ft)
     return false;
   memcpy(indices, image->indices, n);
+  /* A tRNS chunk's transparency: each entry's transmit 1 - alpha, which
+     "transmit INDEX, AMOUNT" then overrides, as POV-Ray 3.7 does
+     (tests/test_image_alpha.sh). */
+  for (size_t i = 0; image->alpha && i < n; i++)
+    ft[2 * (size_t)indices[i] + 1] = 1.0f - image->alpha[i];
   im->indices = indices;
   im->palette_size = image->palette_size;
   im->palette_ft = ft;
@@ -1202,6 +1207,26 @@ static bool picture_codes(zr_sdl_parser *p, zr_image_map *im,
   return true;
 }
 
+/* Whether every pixel of the image is opaque (or it has no alpha). */
+static bool opaque(const zr_image *image) {
+  size_t n = (size_t)image->width * (size_t)image->height;
+  for (size_t i = 0; image->alpha && i < n; i++)
+    if (image->alpha[i] < 1.0f)
+      return false;
+  return true;
+}
+
+static bool keep_alpha(zr_sdl_parser *p, zr_image_map *im,
+                       const zr_image *image) {
+  size_t n = (size_t)image->width * (size_t)image->height;
+  float *a = zr__sdl_alloc(p, n * sizeof *a);
+  if (!a)
+    return false;
+  memcpy(a, image->alpha, n * sizeof *a);
+  im->alpha = a;
+  return true;
+}
+
 zr_image_map *zr__sdl_bitmap_new(zr_sdl_parser *p, const char *what,
                                  const char *name, const zr_sdl_loc *loc,
                                  const zr_sdl_expr *gamma,
@@ -1245,6 +1270,9 @@ zr_image_map *zr__sdl_bitmap_new(zr_sdl_parser *p, const char *what,
                   : bitmap_values(p, im, image,
                                   strcmp(what, "material_map") == 0,
                                   gamma != NULL);
+  /* An image map's alpha, if the file has any that is not all opaque. */
+  if (ok && is_image && !image->indices && image->alpha && !opaque(image))
+    ok = keep_alpha(p, im, image);
   if (ok) {
     im->path = zr__sdl_strdup(p, name, strlen(name));
     im->width = image->width;

@@ -1,0 +1,27 @@
+// image_alpha.pov - an image_map's alpha ("Using the Alpha Channel"):
+// tests/test_image_alpha.sh writes alpha.png (4 x 2 RGBA, 8 bit),
+// palette.png (4 x 2, a palette whose tRNS makes entry 1 100/255 and
+// entry 2 0 opaque) and grey16.png (4 x 2 grey + alpha, 16 bit).  The
+// picture lies on the unit square of z = 0 in front of a green plane;
+// each of its pixels is a 4 x 4 block of a 16 x 8 render.
+// Declare=K=1..8.
+#version 3.7;
+#ifndef (K) #declare K = 1; #end
+global_settings { assumed_gamma 1.0 }
+camera { orthographic location <0.5, 0.5, -5> look_at <0.5, 0.5, 0>
+         right x up y }
+plane { z, 1 pigment { rgb <0.2, 0.4, 0.2> } finish { ambient 1 diffuse 0 } }
+#declare F = finish { ambient 1 diffuse 0 }
+#switch (K)
+#case (1) plane { z, 0 pigment { image_map { png "alpha.png" } } finish { F } } #break
+#case (2) plane { z, 0 pigment { image_map { png "palette.png" } } finish { F } } #break
+#case (3) plane { z, 0 pigment { image_map { png "grey16.png" } } finish { F } } #break
+// "transmit all" adds to 1 - alpha, unclamped
+#case (4) plane { z, 0 pigment { image_map { png "alpha.png" transmit all 0.3 } } finish { F } } #break
+#case (5) plane { z, 0 pigment { image_map { png "alpha.png" transmit all 0.8 } } finish { F } } #break
+#case (6) plane { z, 0 pigment { image_map { png "alpha.png" filter all 0.3 } } finish { F } } #break
+#case (7) plane { z, 0 pigment { image_map { png "alpha.png" interpolate 2 transmit all 0.2 } } finish { F } } #break
+// an entry's own transmit overrides its tRNS, "transmit all" every one
+#case (8) plane { z, 0 pigment { image_map { png "palette.png" transmit 1, 0.5 } } finish { F } } #break
+#case (9) plane { z, 0 pigment { image_map { png "palette.png" transmit all 0.3 } } finish { F } } #break
+#end
