@@ -78,6 +78,8 @@ void zr__settings_init(zr_settings *s) {
   s->photons.radius_multiplier = 1.0;
   s->photons.expand_increase = 0.2;
   s->photons.expand_min = 40;
+  s->photons.media_factor = 1.0;
+  s->photons.media_radius_multiplier = 1.0;
 }
 
 size_t zr__object_size(zr_object_kind kind) {

@@ -442,6 +442,9 @@ typedef struct zr_medium {
   zr_scattering_kind scattering_type;      /* default isotropic */
   double eccentricity;        /* Henyey-Greenstein g; default 0 */
   double extinction;          /* scattering's share of extinction: 1 */
+  /* collect off: media photons are neither stored nor gathered in it
+     ("Photons and Media"); default on. */
+  bool photons_ignored;
   /* density { }: pigments whose colours multiply (none: density 1). */
   const zr_pigment *const *density;
   size_t n_density;
@@ -1061,6 +1064,14 @@ typedef struct zr_photon_settings {
   double autostop;   /* read; every target is covered whole */
   double expand_increase;     /* 0.2 */
   int expand_min;             /* 40 */
+  /* media MAX_STEPS, FACTOR ("Photons and Media"): photons stored in
+     scattering media, at most media_steps along each stretch of a
+     photon's path through media, media_factor times the surface
+     spacing apart; 0 steps: none.  radius's third and fourth values:
+     the media photons' gather radius (0: found) and its multiplier. */
+  int media_steps;            /* 0 */
+  double media_factor;        /* 1 */
+  double media_radius, media_radius_multiplier; /* 0, 1 */
 } zr_photon_settings;
 
 typedef struct zr_settings {

@@ -82,6 +82,7 @@
 #include "scene/texture.h"
 #include "trace/bvh.h"
 #include "trace/lights.h"
+#include "trace/media.h"
 #include "trace/render.h"
 #include "trace/shade.h"
 
@@ -100,6 +101,9 @@ struct zr_photon_map {
   double radius; /* gather radius R */
   int gather_min, gather_max, expand_min;
   double expand_increase;
+  /* The surface map's media photons (global photons { media N }), NULL
+     when none were stored; a media map holds none of its own. */
+  struct zr_photon_map *media;
 };
 
 /* The most photons one map holds (44 bytes each: 1.4 GB); beyond it the
@@ -132,6 +136,15 @@ typedef struct shooter {
   int max_level;
   double bailout;
   zr_rgb start; /* the power of the photon being followed at the light */
+  /* Media photons: their map (NULL: media N was not given), the most
+     stored along one stretch of a path through media, and the distance
+     between them (the lattice's spacing times the media factor). */
+  zr_photon_map *media_map;
+  int media_steps;
+  double media_step;
+  uint32_t li, ti; /* the light and target being shot (hash keys) */
+  size_t k;        /* the photon of the lattice being followed */
+  uint32_t stretches; /* its stretches through media so far */
   double refind; /* 1 + the target box's diagonal (refind_hit) */
   unsigned long long shot; /* photons that left a light */
   bool full; /* PHOTONS_MAX reached */
@@ -151,8 +164,8 @@ static void frame(zr_vec3 w, zr_vec3 *u, zr_vec3 *v) {
   *v = zr_v3_cross(w, *u);
 }
 
-static void store(shooter *sh, zr_vec3 p, zr_vec3 d, zr_rgb power) {
-  zr_photon_map *m = sh->map;
+static void store_in(shooter *sh, zr_photon_map *m, zr_vec3 p, zr_vec3 d,
+                     zr_rgb power) {
   if (m->n == m->cap) {
     if (m->cap >= PHOTONS_MAX) {
       sh->full = true;
@@ -173,6 +186,10 @@ static void store(shooter *sh, zr_vec3 p, zr_vec3 d, zr_rgb power) {
   ph->power[2] = (float)power.b;
   ph->dir[0] = (float)d.x, ph->dir[1] = (float)d.y, ph->dir[2] = (float)d.z;
   ph->axis = 0;
+}
+
+static void store(shooter *sh, zr_vec3 p, zr_vec3 d, zr_rgb power) {
+  store_in(sh, sh->map, p, d, power);
 }
 
 static double rgb_max3(zr_rgb c) { return fmax(c.r, fmax(c.g, c.b)); }
@@ -253,6 +270,98 @@ static void refind_hit(const shooter *sh, const zr_ray *ray, zr_hit *hit,
   *hit = again;
 }
 
+/* ---- media photons ---- */
+
+/*
+ * The media a stretch of a photon's path crosses, as a camera ray sees
+ * them (lib/trace/media.c zr__media_along): the interiors' media when
+ * every object the photon is in is hollow, and the atmosphere's, which
+ * a light with media_attenuation off crosses unchanged ("Atmospheric
+ * Attenuation") and so stores nothing in.  Only media that scatter and
+ * collect photons store any ("Photons and Media"); the others still
+ * dim the photon.  Returns how many, with *collects whether one of
+ * them stores photons.
+ */
+static size_t stretch_media(const shooter *sh, const zr_media *inside,
+                            const zr_medium **list, bool *collects) {
+  const zr_settings *st = &sh->scene->settings;
+  size_t n = 0;
+  *collects = false;
+  for (int i = 0; inside && i < inside->n; i++)
+    if (!inside->objects[i]->hollow)
+      return 0;
+  for (int i = 0; inside && i < inside->n; i++) {
+    const zr_interior *in = inside->interiors[i];
+    for (size_t k = 0; in && k < in->n_media && n < ZR_MEDIA_LIST_MAX; k++)
+      list[n++] = in->media[k];
+  }
+  if (sh->light->media_attenuation)
+    for (size_t k = 0; k < st->n_media && n < ZR_MEDIA_LIST_MAX; k++)
+      list[n++] = st->media[k];
+  for (size_t k = 0; k < n; k++)
+    if (!list[k]->photons_ignored && rgb_max3(list[k]->scattering) > 0.0)
+      *collects = true;
+  return n;
+}
+
+/*
+ * Stores media photons along the stretch of length len from origin
+ * along unit dir ("Photons and Media": "as a light ray passes through a
+ * section of media, the photons are deposited, separated by
+ * approximately the same distance that separates surface photons", at
+ * most MAX_STEPS of them per section).  Steps of sh->media_step (fewer
+ * and longer when more than media_steps would be needed; at least one)
+ * each hold a photon at a hashed place inside the step.  A photon
+ * stands for the light crossing its step: flux times the step's length
+ * (area times length: a density over volume then gives the light that
+ * arrives at a point, as zr__photons_media_light says), dimmed by the
+ * media's extinction up to it; *power leaves dimmed by all of the
+ * stretch.  path is the distance the photon had travelled at origin.
+ */
+static void store_media(shooter *sh, zr_vec3 origin, zr_vec3 dir,
+                        double len, zr_rgb *power, double flux,
+                        bool parallel, double path, const zr_media *inside) {
+  const zr_medium *list[ZR_MEDIA_LIST_MAX];
+  bool collects;
+  size_t nm = stretch_media(sh, inside, list, &collects);
+  if (nm == 0 || !(len > 0.0) || !isfinite(len))
+    return;
+  double want = ceil(len / sh->media_step);
+  int steps = want < 1.0 ? 1
+              : want > sh->media_steps ? sh->media_steps : (int)want;
+  double h = len / steps;
+  double u = hash01(sh->li, sh->ti, sh->k, 2 + sh->stretches++);
+  zr_rgb t = zr_rgb3(1, 1, 1); /* the extinction of the steps before */
+  for (int i = 0; i < steps && !sh->full && !sh->oom; i++) {
+    double s = (i + u) * h;
+    zr_vec3 p = zr_v3_madd(origin, dir, s);
+    zr_rgb k = zr_rgb3(0, 0, 0);
+    bool scatters = false;
+    for (size_t q = 0; q < nm; q++) {
+      zr_rgb d = zr__media_density(list[q], p);
+      k = zr_rgb_add(k, zr_rgb_mul(d, zr_rgb_madd(list[q]->absorption,
+                                                 list[q]->scattering,
+                                                 list[q]->extinction)));
+      if (!list[q]->photons_ignored &&
+          rgb_max3(zr_rgb_mul(d, list[q]->scattering)) > 0.0)
+        scatters = true;
+    }
+    /* A step's extinction is taken where its photon lies. */
+    if (collects && scatters) {
+      double d = path + s;
+      double area = parallel ? flux : flux * d * d;
+      double w = area * h * zr__light_fade(sh->light, d);
+      zr_rgb here = zr_rgb3(t.r * exp(-k.r * u * h), t.g * exp(-k.g * u * h),
+                            t.b * exp(-k.b * u * h));
+      store_in(sh, sh->media_map, p, dir,
+               zr_rgb_scale(zr_rgb_mul(*power, here), w));
+    }
+    t = zr_rgb3(t.r * exp(-k.r * h), t.g * exp(-k.g * h),
+                t.b * exp(-k.b * h));
+  }
+  *power = zr_rgb_mul(*power, t);
+}
+
 /*
  * Follows one photon from origin along unit dir.  power is what it
  * carries per unit of flux (the light's colour times the filters met so
@@ -274,6 +383,9 @@ static void follow(shooter *sh, zr_vec3 origin, zr_vec3 dir, zr_rgb power,
     const zr_photon_object *po = o->photons;
     zr_vec3 p = zr_v3_madd(origin, dir, hit.t);
     double d_total = path + hit.t;
+    if (sh->media_map && bounced)
+      store_media(sh, origin, dir, hit.t, &power, flux, parallel, path,
+                  media);
     if (media && media->n > 0)
       power = zr__exit_fade(sh->scene, media, o, hit.t, power);
     bool pass = po ? po->pass_through : o->no_shadow;
@@ -309,7 +421,13 @@ static void follow(shooter *sh, zr_vec3 origin, zr_vec3 dir, zr_rgb power,
       return;
     bool refracts = po->refraction && light->photon_refraction;
     bool reflects = po->reflection && light->photon_reflection;
-    if (!refracts && !reflects)
+    /* A target that neither refracts nor reflects photons lets them
+       through its clear part unbent (its filter and transmit), into
+       its interior: povray 3.7 stores photons on a floor under a clear
+       box that is a target, and under a lens inside it, where without
+       the box's target none reach the lens (bench/photon_media.sh). */
+    bool clear_pass = !refracts && !reflects && !bounced;
+    if (!refracts && !reflects && !clear_pass)
       return;
     /* The surface as the shader sees it: normal facing the photon,
        perturbed by normal { }, the pigment and finish there. */
@@ -339,7 +457,7 @@ static void follow(shooter *sh, zr_vec3 origin, zr_vec3 dir, zr_rgb power,
     zr_rgb refl = reflects ? zr__reflection_amount(f, col, dir, n, n1, n2)
                            : zr_rgb3(0, 0, 0);
     zr_rgb trans = zr_rgb3(0, 0, 0);
-    if (refracts)
+    if (refracts || clear_pass)
       trans = zr_rgb3(col.f * col.r + col.t, col.f * col.g + col.t,
                       col.f * col.b + col.t);
     if (f->conserve_energy)
@@ -348,6 +466,13 @@ static void follow(shooter *sh, zr_vec3 origin, zr_vec3 dir, zr_rgb power,
     double off = zr__surface_offset(p);
     zr_vec3 mirror = zr__reflect(dir, n);
     zr_vec3 above = zr_v3_madd(p, ng, off), below = zr_v3_madd(p, ng, -off);
+    if (clear_pass) {
+      zr_rgb w = zr_rgb_mul(power, trans);
+      if (rgb_max3(trans) > 0.0 && branch_kept(sh, w, s))
+        follow(sh, below, dir, w, flux, parallel, d_total, true, level + 1,
+               &next, s);
+      return;
+    }
     if (rgb_max3(trans) > 0.0) {
       zr_vec3 refr = dir;
       if (n1 != n2 && !zr__refract(dir, n, n1 / n2, &refr)) {
@@ -479,6 +604,7 @@ static void shoot_pair(shooter *sh, uint32_t li, uint32_t ti, zr_vec3 c,
         continue;
       sh->shot++;
       sh->start = zr_rgb_scale(colour, cone);
+      sh->k = k, sh->stretches = 0;
       if (meets_target_box(sh, origin, w))
         follow(sh, origin, w, sh->start, cell, true, 0.0, false, 0, NULL,
                1.0);
@@ -515,6 +641,7 @@ static void shoot_pair(shooter *sh, uint32_t li, uint32_t ti, zr_vec3 c,
       continue;
     sh->shot++;
     sh->start = zr_rgb_scale(colour, cone);
+    sh->k = k, sh->stretches = 0;
     if (meets_target_box(sh, l->location, dir))
       follow(sh, l->location, dir, sh->start, omega, false, 0.0, false, 0,
              NULL, 1.0);
@@ -694,6 +821,29 @@ static double found_radius(const zr_photon_map *m) {
 
 /* ---- the map ---- */
 
+/* The media map's kd-tree and gather radius: radius's third value, or
+   found as for the surface map, times its fourth; NULL (and freed) when
+   it holds no photon. */
+static zr_photon_map *finish_media(zr_photon_map *mm,
+                                   const zr_photon_settings *ps) {
+  if (!mm)
+    return NULL;
+  if (mm->n > 0) {
+    build_tree(mm->v, 0, mm->n);
+    mm->radius = ps->media_radius > 0.0 ? ps->media_radius
+                                        : found_radius(mm);
+    mm->radius *= ps->media_radius_multiplier > 0.0
+                      ? ps->media_radius_multiplier
+                      : 1.0;
+  }
+  if (!(mm->radius > 0.0)) {
+    free(mm->v);
+    free(mm);
+    return NULL;
+  }
+  return mm;
+}
+
 zr_status zr__photons_build(zr_scene *scene, zr_context *ctx) {
   const zr_photon_settings *ps = &scene->settings.photons;
   if (!ps->on || scene->photons)
@@ -711,6 +861,17 @@ zr_status zr__photons_build(zr_scene *scene, zr_context *ctx) {
   memset(&sh, 0, sizeof sh);
   sh.scene = scene;
   sh.map = m;
+  if (ps->media_steps > 0) {
+    sh.media_map = calloc(1, sizeof *sh.media_map);
+    if (!sh.media_map) {
+      free(m);
+      return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL,
+                      "out of memory for the photon map");
+    }
+    sh.media_map->gather_min = m->gather_min;
+    sh.media_map->gather_max = m->gather_max;
+    sh.media_steps = ps->media_steps;
+  }
   sh.tracer.scene = scene;
   sh.tracer.stats = &sh.stats;
   sh.max_level = ps->max_trace_level > 0 ? ps->max_trace_level
@@ -735,6 +896,7 @@ zr_status zr__photons_build(zr_scene *scene, zr_context *ctx) {
       }
     }
     if (!(total > 0.0) || !(ps->count > 0.0)) {
+      free(sh.media_map);
       free(m);
       return ZR_OK;
     }
@@ -754,6 +916,8 @@ zr_status zr__photons_build(zr_scene *scene, zr_context *ctx) {
           !zr__object_bounds(o, &sh.target_lo, &sh.target_hi))
         continue;
       sh.target = o;
+      sh.li = (uint32_t)li, sh.ti = (uint32_t)ti;
+      sh.media_step = spacing * o->photons->spacing * ps->media_factor;
       sh.refind = 1.0 + zr_v3_len(zr_v3_sub(sh.target_hi, sh.target_lo));
       shoot_pair(&sh, (uint32_t)li, (uint32_t)ti, c, r,
                  spacing * o->photons->spacing);
@@ -761,9 +925,9 @@ zr_status zr__photons_build(zr_scene *scene, zr_context *ctx) {
   }
   scene->photons_shot = sh.shot;
   scene->photons_stored = m->n;
+  m->media = finish_media(sh.media_map, ps);
   if (sh.oom) {
-    free(m->v);
-    free(m);
+    zr__photons_free(m);
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL,
                     "out of memory for the photon map");
   }
@@ -772,18 +936,21 @@ zr_status zr__photons_build(zr_scene *scene, zr_context *ctx) {
              "photons: the map is full at %zu photons; the rest were not "
              "shot (raise spacing or lower count)",
              m->n);
-  if (m->n == 0) {
-    free(m->v);
-    free(m);
-    return ZR_OK;
+  if (m->n > 0) {
+    build_tree(m->v, 0, m->n);
+    m->radius = ps->radius > 0.0 ? ps->radius : found_radius(m);
+    m->radius *= ps->radius_multiplier > 0.0 ? ps->radius_multiplier : 1.0;
   }
-  build_tree(m->v, 0, m->n);
-  m->radius = ps->radius > 0.0 ? ps->radius : found_radius(m);
-  m->radius *= ps->radius_multiplier > 0.0 ? ps->radius_multiplier : 1.0;
   if (!(m->radius > 0.0)) {
+    /* No surface photons to gather: the map stays only for its media
+       photons (a scene without them keeps no map, as before). */
     free(m->v);
-    free(m);
-    return ZR_OK;
+    m->v = NULL;
+    m->n = 0;
+    if (!m->media) {
+      free(m);
+      return ZR_OK;
+    }
   }
   scene->photons = m;
   return ZR_OK;
@@ -792,6 +959,7 @@ zr_status zr__photons_build(zr_scene *scene, zr_context *ctx) {
 void zr__photons_free(zr_photon_map *map) {
   if (!map)
     return;
+  zr__photons_free(map->media);
   free(map->v);
   free(map);
 }
@@ -870,4 +1038,78 @@ zr_rgb zr__photons_gather(const zr_photon_map *m, zr_vec3 p, zr_vec3 n,
     free(d2);
   }
   return e;
+}
+
+/* ---- gathering in media ---- */
+
+bool zr__photons_in_media(const zr_photon_map *map) {
+  return map && map->media;
+}
+
+/*
+ * A media photon of power P stands for the light P / (area of its
+ * lattice cell) crossing a step of length h (store_media): over a
+ * volume V the photons' sum of P is the light arriving at a point
+ * (what zr__light_arrive gives a media sample for a light) times V,
+ * so sum / V replaces the light's colour in the scattering term, each
+ * photon with the phase for its own direction (toward the light is
+ * against its travel).
+ */
+zr_rgb zr__photons_media_light(const zr_photon_map *map, zr_vec3 p,
+                               zr_vec3 dir, const zr_medium *const *list,
+                               size_t n, const zr_rgb *density) {
+  zr_rgb out = zr_rgb3(0, 0, 0);
+  const zr_photon_map *m = map ? map->media : NULL;
+  if (!m || m->n == 0)
+    return out;
+  bool collects = false;
+  for (size_t i = 0; i < n; i++)
+    if (!list[i]->photons_ignored &&
+        rgb_max3(zr_rgb_mul(density[i], list[i]->scattering)) > 0.0)
+      collects = true;
+  if (!collects)
+    return out;
+  enum { STACK = 256 };
+  const photon *ph_stack[STACK];
+  float d2_stack[STACK];
+  const photon **ph = ph_stack;
+  float *d2 = d2_stack;
+  int cap = m->gather_max;
+  if (cap > STACK) {
+    ph = malloc((size_t)cap * sizeof *ph);
+    d2 = malloc((size_t)cap * sizeof *d2);
+    if (!ph || !d2) {
+      free(ph == ph_stack ? NULL : ph);
+      free(d2 == d2_stack ? NULL : d2);
+      return out;
+    }
+  }
+  float q[3] = {(float)p.x, (float)p.y, (float)p.z};
+  heap h;
+  int found = gather(m, q, NULL, m->radius, cap, ph, d2, &h);
+  if (found > 0) {
+    double r = found == cap ? sqrt(h.max_d2) : m->radius;
+    double volume = 4.0 / 3.0 * M_PI * r * r * r;
+    for (size_t i = 0; i < n; i++) {
+      zr_rgb sc = zr_rgb_mul(density[i], list[i]->scattering);
+      if (!(rgb_max3(sc) > 0.0))
+        continue;
+      zr_rgb sum = zr_rgb3(0, 0, 0);
+      for (int k = 0; k < found; k++) {
+        const photon *f = h.ph[k];
+        double c = -(f->dir[0] * dir.x + f->dir[1] * dir.y +
+                     f->dir[2] * dir.z);
+        double w = zr__media_phase(list[i], c);
+        sum.r += w * f->power[0];
+        sum.g += w * f->power[1];
+        sum.b += w * f->power[2];
+      }
+      out = zr_rgb_add(out, zr_rgb_scale(zr_rgb_mul(sc, sum), 1.0 / volume));
+    }
+  }
+  if (ph != ph_stack) {
+    free(ph);
+    free(d2);
+  }
+  return out;
 }

@@ -27,6 +27,21 @@ void zr__photons_free(struct zr_photon_map *map);
 zr_rgb zr__photons_gather(const struct zr_photon_map *map, zr_vec3 p,
                           zr_vec3 n, double brilliance);
 
+/*
+ * The light media photons scatter toward a media sample at p on a ray
+ * going along unit dir, for the n media of list whose densities at p
+ * are density[]: for each medium that scatters, its scattering times
+ * its density times the sum over the media photons gathered about p of
+ * their power times the medium's phase for their direction, divided by
+ * the gathered sphere's volume.  Black unless one of the media collects
+ * photons ("Photons and Media"), or when the scene stored none.
+ */
+zr_rgb zr__photons_media_light(const struct zr_photon_map *map, zr_vec3 p,
+                               zr_vec3 dir, const zr_medium *const *list,
+                               size_t n, const zr_rgb *density);
+/* Whether the scene's map holds media photons. */
+bool zr__photons_in_media(const struct zr_photon_map *map);
+
 /* Whether a shadow ray stops at object o: with photons in the scene,
    the light through an object that refracts photons arrives as photons
    (povray 3.7 draws a target lens's shadow black where its photons do
@@ -36,6 +51,23 @@ static inline bool zr__photons_block_shadow(const zr_scene *scene,
                                             const zr_object *o) {
   return scene->photons && o->photons && o->photons->refraction &&
          !o->no_image && (!light || light->photon_refraction);
+}
+
+/* Whether a media sample's shadow ray stops at object o in a scene with
+   media photons: a target that neither refracts nor reflects photons
+   lets them through clear (lib/trace/photons.c), and the light that
+   reaches the media behind it is theirs.  povray 3.7 leaves the media
+   in a clear box that is a target dark without media photons, and lit
+   as by the light with them (bench/photon_media.sh). */
+static inline bool zr__photons_block_media_shadow(const zr_scene *scene,
+                                                  const zr_light *light,
+                                                  const zr_object *o) {
+  const zr_object *t = o->solid ? o->solid : o;
+  return scene->photons && zr__photons_in_media(scene->photons) &&
+         t->photons && t->photons->target && !t->photons->refraction &&
+         !t->photons->reflection && !t->no_image && light &&
+         (light->photon_refraction || light->photon_reflection) &&
+         !light->shadowless;
 }
 
 /* Statistics: photons stored, and the gather radius found or given. */
