@@ -546,6 +546,7 @@ typedef struct zr_photon_object {
   bool target;       /* light sources shoot photons at it */
   double spacing;    /* target's spacing multiplier; default 1 */
   bool refraction, reflection; /* it bends / mirrors photons; off */
+  bool refraction_set, reflection_set; /* the block gave them */
   bool collect;      /* photons are stored and gathered on it; on */
   bool pass_through; /* photons cross it unchanged; default no_shadow */
 } zr_photon_object;

@@ -678,9 +678,9 @@ static bool photons_apply(zr_sdl_parser *p, zr_object *o,
   if (ph->has_target)
     po->target = true, po->spacing = ph->obj.spacing;
   if (ph->has_refraction)
-    po->refraction = ph->refraction;
+    po->refraction = ph->refraction, po->refraction_set = true;
   if (ph->has_reflection)
-    po->reflection = ph->reflection;
+    po->reflection = ph->reflection, po->reflection_set = true;
   if (ph->has_collect)
     po->collect = ph->collect;
   if (ph->has_pass_through)

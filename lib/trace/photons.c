@@ -363,17 +363,36 @@ static void store_media(shooter *sh, zr_vec3 origin, zr_vec3 dir,
 }
 
 /*
+ * Where a photon stands.  FROM_LIGHT: on its way from the light to the
+ * target it was shot at.  PLAIN: it went through a target that neither
+ * refracts nor reflects photons (photons { target } alone, as the
+ * foggy box of advanced/optics.pov), and has met since only surfaces
+ * without a photons { refraction } or { reflection } of their own:
+ * such a photon is reflected by every surface's finish and goes
+ * through every clear one (bent by its ior), unless the object's block
+ * turns the one or the other off.  CAUSTIC: reflected or refracted by
+ * an object whose block turns it on; only such objects pass it on.
+ * povray 3.7 shows both (bench/photon_media.sh): a mirror without a
+ * photons block in a clear target box reflects a beam of media
+ * photons, as with reflection on and unlike with reflection off, where
+ * under a target lens the same mirror stores no more photons than
+ * with nothing behind it.
+ */
+enum { FROM_LIGHT, PLAIN, CAUSTIC };
+
+/*
  * Follows one photon from origin along unit dir.  power is what it
  * carries per unit of flux (the light's colour times the filters met so
  * far), flux the solid angle (point light: times D^2 when stored) or the
  * area (parallel light) it stands for, path the distance it travelled,
- * bounced whether it was reflected or refracted, level its depth, s the
- * product of its reflections' weights (branch_kept).
+ * state where it stands (see above), level its depth, s the product of
+ * its reflections' weights (branch_kept).
  */
 static void follow(shooter *sh, zr_vec3 origin, zr_vec3 dir, zr_rgb power,
-                   double flux, bool parallel, double path, bool bounced,
+                   double flux, bool parallel, double path, int state,
                    int level, const zr_media *media, double s) {
   const zr_light *light = sh->light;
+  bool bounced = state != FROM_LIGHT;
   for (int passes = 0; passes < ZR_PASS_MAX; passes++) {
     zr_ray ray = {origin, dir};
     zr_hit hit;
@@ -417,18 +436,23 @@ static void follow(shooter *sh, zr_vec3 origin, zr_vec3 dir, zr_rgb power,
        povray 3.7 stores as many photons behind a glass ball at
        max_trace_level n + 1 as a count from this hit as level 0 gives
        at n (bench/photon_targets.sh). */
-    if (!po || level + 1 >= sh->max_level)
+    if (level + 1 >= sh->max_level)
       return;
-    bool refracts = po->refraction && light->photon_refraction;
-    bool reflects = po->reflection && light->photon_reflection;
+    bool refr_on = po && po->refraction, refl_on = po && po->reflection;
     /* A target that neither refracts nor reflects photons lets them
-       through its clear part unbent (its filter and transmit), into
-       its interior: povray 3.7 stores photons on a floor under a clear
-       box that is a target, and under a lens inside it, where without
-       the box's target none reach the lens (bench/photon_media.sh). */
-    bool clear_pass = !refracts && !reflects && !bounced;
-    if (!refracts && !reflects && !clear_pass)
+       on as PLAIN ones: povray 3.7 stores photons on a floor under a
+       clear box that is a target, and under a lens inside it, where
+       without the box's target none reach the lens
+       (bench/photon_media.sh). */
+    bool plain = state == PLAIN || (state == FROM_LIGHT && !refr_on &&
+                                    !refl_on);
+    bool refracts = light->photon_refraction &&
+                    (refr_on || (plain && !(po && po->refraction_set)));
+    bool reflects = light->photon_reflection &&
+                    (refl_on || (plain && !(po && po->reflection_set)));
+    if (!refracts && !reflects)
       return;
+    int next_state = refr_on || refl_on ? CAUSTIC : plain ? PLAIN : CAUSTIC;
     /* The surface as the shader sees it: normal facing the photon,
        perturbed by normal { }, the pigment and finish there. */
     bool entering = zr_v3_dot(hit.normal, dir) < 0.0;
@@ -457,7 +481,7 @@ static void follow(shooter *sh, zr_vec3 origin, zr_vec3 dir, zr_rgb power,
     zr_rgb refl = reflects ? zr__reflection_amount(f, col, dir, n, n1, n2)
                            : zr_rgb3(0, 0, 0);
     zr_rgb trans = zr_rgb3(0, 0, 0);
-    if (refracts || clear_pass)
+    if (refracts)
       trans = zr_rgb3(col.f * col.r + col.t, col.f * col.g + col.t,
                       col.f * col.b + col.t);
     if (f->conserve_energy)
@@ -466,25 +490,18 @@ static void follow(shooter *sh, zr_vec3 origin, zr_vec3 dir, zr_rgb power,
     double off = zr__surface_offset(p);
     zr_vec3 mirror = zr__reflect(dir, n);
     zr_vec3 above = zr_v3_madd(p, ng, off), below = zr_v3_madd(p, ng, -off);
-    if (clear_pass) {
-      zr_rgb w = zr_rgb_mul(power, trans);
-      if (rgb_max3(trans) > 0.0 && branch_kept(sh, w, s))
-        follow(sh, below, dir, w, flux, parallel, d_total, true, level + 1,
-               &next, s);
-      return;
-    }
     if (rgb_max3(trans) > 0.0) {
       zr_vec3 refr = dir;
       if (n1 != n2 && !zr__refract(dir, n, n1 / n2, &refr)) {
         /* Total internal reflection: the light stays inside. */
         zr_rgb w = zr_rgb_mul(power, trans);
         if (branch_kept(sh, w, s))
-          follow(sh, above, mirror, w, flux, parallel, d_total, true,
+          follow(sh, above, mirror, w, flux, parallel, d_total, next_state,
                  level + 1, media, s);
       } else {
         zr_rgb w = zr_rgb_mul(power, trans);
         if (branch_kept(sh, w, s))
-          follow(sh, below, refr, w, flux, parallel, d_total, true,
+          follow(sh, below, refr, w, flux, parallel, d_total, next_state,
                  level + 1, &next, s);
       }
     }
@@ -492,7 +509,7 @@ static void follow(shooter *sh, zr_vec3 origin, zr_vec3 dir, zr_rgb power,
       zr_rgb w = zr_rgb_mul(power, refl);
       double s_refl = s * reflection_weight(f, dir, n, n1, n2);
       if (branch_kept(sh, w, s_refl))
-        follow(sh, above, mirror, w, flux, parallel, d_total, true,
+        follow(sh, above, mirror, w, flux, parallel, d_total, next_state,
                level + 1, media, s_refl);
     }
     return;
@@ -606,8 +623,8 @@ static void shoot_pair(shooter *sh, uint32_t li, uint32_t ti, zr_vec3 c,
       sh->start = zr_rgb_scale(colour, cone);
       sh->k = k, sh->stretches = 0;
       if (meets_target_box(sh, origin, w))
-        follow(sh, origin, w, sh->start, cell, true, 0.0, false, 0, NULL,
-               1.0);
+        follow(sh, origin, w, sh->start, cell, true, 0.0, FROM_LIGHT, 0,
+               NULL, 1.0);
     }
     return;
   }
@@ -643,8 +660,8 @@ static void shoot_pair(shooter *sh, uint32_t li, uint32_t ti, zr_vec3 c,
     sh->start = zr_rgb_scale(colour, cone);
     sh->k = k, sh->stretches = 0;
     if (meets_target_box(sh, l->location, dir))
-      follow(sh, l->location, dir, sh->start, omega, false, 0.0, false, 0,
-             NULL, 1.0);
+      follow(sh, l->location, dir, sh->start, omega, false, 0.0, FROM_LIGHT,
+             0, NULL, 1.0);
   }
 }
 
