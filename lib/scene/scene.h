@@ -1163,6 +1163,8 @@ struct zr_scene {
   /* What the photon pass did (zr_scene_info): photons shot from the
      lights and photons stored (lib/trace/photons.c). */
   unsigned long long photons_shot, photons_stored;
+  unsigned long long media_photons_stored;
+  double media_photons_radius;
   /* The meshes' Embree scenes when the tracer uses that backend (NULL:
      none), and the routine that frees them (lib/trace/embree.c). */
   struct zr_embree *embree;

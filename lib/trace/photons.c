@@ -942,7 +942,9 @@ zr_status zr__photons_build(zr_scene *scene, zr_context *ctx) {
   }
   scene->photons_shot = sh.shot;
   scene->photons_stored = m->n;
+  scene->media_photons_stored = sh.media_map ? sh.media_map->n : 0;
   m->media = finish_media(sh.media_map, ps);
+  scene->media_photons_radius = m->media ? m->media->radius : 0.0;
   if (sh.oom) {
     zr__photons_free(m);
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL,
