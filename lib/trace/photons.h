@@ -45,27 +45,22 @@ bool zr__photons_in_media(const struct zr_photon_map *map);
 /* Whether a shadow ray stops at object o: with photons in the scene,
    the light through an object that refracts photons arrives as photons
    (povray 3.7 draws a target lens's shadow black where its photons do
-   not land), unless the light's own photons are not refracted. */
+   not land), unless the light's own photons are not refracted; and so
+   does the light through a target that neither refracts nor reflects
+   photons, which lets them through as they are (lib/trace/photons.c):
+   povray 3.7 leaves the media and the floor in such a clear box dark
+   without media photons (tests/test_media_photons.sh case 4), and a
+   floor under it gets the light of the photons only (those stored on
+   the box's bottom face 0.01 above it too: twice the light's). */
 static inline bool zr__photons_block_shadow(const zr_scene *scene,
                                             const zr_light *light,
                                             const zr_object *o) {
-  return scene->photons && o->photons && o->photons->refraction &&
-         !o->no_image && (!light || light->photon_refraction);
-}
-
-/* Whether a media sample's shadow ray stops at object o in a scene with
-   media photons: a target that neither refracts nor reflects photons
-   lets them through clear (lib/trace/photons.c), and the light that
-   reaches the media behind it is theirs.  povray 3.7 leaves the media
-   in a clear box that is a target dark without media photons, and lit
-   as by the light with them (bench/photon_media.sh). */
-static inline bool zr__photons_block_media_shadow(const zr_scene *scene,
-                                                  const zr_light *light,
-                                                  const zr_object *o) {
-  const zr_object *t = o->solid ? o->solid : o;
-  return scene->photons && zr__photons_in_media(scene->photons) &&
-         t->photons && t->photons->target && !t->photons->refraction &&
-         !t->photons->reflection && !t->no_image && light &&
+  if (!scene->photons || !o->photons || o->no_image)
+    return false;
+  const zr_photon_object *po = o->photons;
+  if (po->refraction)
+    return !light || light->photon_refraction;
+  return po->target && !po->reflection && light &&
          (light->photon_refraction || light->photon_reflection) &&
          !light->shadowless;
 }

@@ -123,9 +123,6 @@ typedef struct shadow_walk {
   size_t n_surfaces;
   bool fades;
   const zr_object *blocker; /* the surface that stopped the light */
-  /* The ray is a media sample's (lib/trace/media.c): a clear photon
-     target stops it when the scene stores media photons. */
-  bool media_sample;
 } shadow_walk;
 
 /* Whether in fades the light of a shadow ray: povray 3.7 lets it
@@ -290,9 +287,7 @@ static bool shadow_visit(const zr_hit *hit, void *user) {
     w->surfaces[w->n_surfaces++].part = o;
   }
   w->fades = w->fades || shadow_fades(o->interior);
-  if (zr__photons_block_shadow(w->scene, w->source, o) ||
-      (w->media_sample &&
-       zr__photons_block_media_shadow(w->scene, w->source, o))) {
+  if (zr__photons_block_shadow(w->scene, w->source, o)) {
     w->light = zr_rgb3(0, 0, 0);
     w->blocker = o;
     return false; /* the photons bring this light (lib/trace/photons.c) */
@@ -381,7 +376,6 @@ static bool cached_blocker_blocks(const zr_shadow_cache *cache,
     probe.ray = w->ray;
     probe.scene = w->scene;
     probe.source = w->source;
-    probe.media_sample = w->media_sample;
     probe.light = zr_rgb3(1, 1, 1);
     probe.n_crossings = 0;
     probe.n_surfaces = 0;
@@ -401,7 +395,6 @@ zr_rgb zr__shadow_transmission(const zr_tracer *tracer,
   w.ray = &ray;
   w.scene = tracer->scene;
   w.source = light;
-  w.media_sample = tracer->media_start != NULL;
   w.light = zr_rgb3(1, 1, 1);
   w.n_crossings = 0;
   w.n_surfaces = 0;
