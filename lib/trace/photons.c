@@ -104,6 +104,10 @@ struct zr_photon_map {
   /* The surface map's media photons (global photons { media N }), NULL
      when none were stored; a media map holds none of its own. */
   struct zr_photon_map *media;
+  /* Whether the search radius is fixed: "Unless photons are interacting
+     with media, POV-Ray uses an adaptive search radius" ("Adaptive
+     Search Radius"), so with media N it is not expanded. */
+  bool fixed_radius;
 };
 
 /* The most photons one map holds (44 bytes each: 1.4 GB); beyond it the
@@ -275,12 +279,11 @@ static void refind_hit(const shooter *sh, const zr_ray *ray, zr_hit *hit,
 /*
  * The media a stretch of a photon's path crosses, as a camera ray sees
  * them (lib/trace/media.c zr__media_along): the interiors' media when
- * every object the photon is in is hollow, and the atmosphere's, which
- * a light with media_attenuation off crosses unchanged ("Atmospheric
- * Attenuation") and so stores nothing in.  Only media that scatter and
- * collect photons store any ("Photons and Media"); the others still
- * dim the photon.  Returns how many, with *collects whether one of
- * them stores photons.
+ * every object the photon is in is hollow, and the atmosphere's ("photons
+ * also interact fully with media"; not measured against povray: no
+ * stock scene has both).  Only media that scatter and collect photons
+ * store any ("Photons and Media"); the others still dim the photon.
+ * Returns how many, with *collects whether one of them stores photons.
  */
 static size_t stretch_media(const shooter *sh, const zr_media *inside,
                             const zr_medium **list, bool *collects) {
@@ -295,9 +298,8 @@ static size_t stretch_media(const shooter *sh, const zr_media *inside,
     for (size_t k = 0; in && k < in->n_media && n < ZR_MEDIA_LIST_MAX; k++)
       list[n++] = in->media[k];
   }
-  if (sh->light->media_attenuation)
-    for (size_t k = 0; k < st->n_media && n < ZR_MEDIA_LIST_MAX; k++)
-      list[n++] = st->media[k];
+  for (size_t k = 0; k < st->n_media && n < ZR_MEDIA_LIST_MAX; k++)
+    list[n++] = st->media[k];
   for (size_t k = 0; k < n; k++)
     if (!list[k]->photons_ignored && rgb_max3(list[k]->scattering) > 0.0)
       *collects = true;
@@ -874,6 +876,7 @@ zr_status zr__photons_build(zr_scene *scene, zr_context *ctx) {
                                                   : m->gather_min;
   m->expand_min = ps->expand_min;
   m->expand_increase = ps->expand_increase;
+  m->fixed_radius = ps->media_steps > 0;
   shooter sh;
   memset(&sh, 0, sizeof sh);
   sh.scene = scene;
@@ -1038,7 +1041,8 @@ zr_rgb zr__photons_gather(const zr_photon_map *m, zr_vec3 p, zr_vec3 n,
                        : zr_rgb3(0, 0, 0);
   /* Too few: search again at EXPAND_FACTOR times the radius, up to
      EXPANSIONS times, while the new search is not rejected. */
-  for (int x = 0; x < EXPANSIONS && found < m->gather_min; x++) {
+  int expansions = m->fixed_radius ? 0 : EXPANSIONS;
+  for (int x = 0; x < expansions && found < m->gather_min; x++) {
     r *= EXPAND_FACTOR;
     heap h2;
     int found2 = gather(m, q, nf, r, cap, ph, d2, &h2);
