@@ -33,8 +33,9 @@ build=${1:-$root/build}
 work=$(mktemp -d "${TMPDIR:-/tmp}/photon_media.XXXXXX") || exit 1
 trap 'rm -rf "$work"' EXIT INT TERM
 counts() { # log
-  sed -n 's/^\(Number of photons shot\|Surface photons stored\|Media photons stored\): *\([0-9]*\).*/\2/p' \
-    "$1" | tr '\n' ' '
+  tr '\r' '\n' <"$1" |
+    sed -n 's/^\(Number of photons shot\|Surface photons stored\|Media photons stored\): *\([0-9]*\).*/\2/p' |
+    tr '\n' ' '
 }
 mean() { # png region
   /usr/bin/python3 "$root/tests/region_mean.py" "$1" "$2=0,0,0" --tol 1e9 |
@@ -47,7 +48,7 @@ run_both() { # name file regions declares...
   for d in "$@"; do decl="$decl Declare=$d"; done
   dir=$(dirname "$file")
   (cd "$dir" && nice -n 10 povray +I"$file" +O"$work/p.png" +W160 +H120 -D \
-    -A +WT1 +V -GA $decl </dev/null >"$work/p.log" 2>&1)
+    -A +WT1 +V $decl </dev/null >"$work/p.log" 2>&1)
   (cd "$dir" && nice -n 10 "$zrcube" +I"$file" +O"$work/z.png" +W160 \
     +H120 -D +WT1 +V $decl </dev/null >"$work/z.log" 2>&1)
   echo "== $name: povray $(counts "$work/p.log")| zrcube $(counts "$work/z.log")"
