@@ -10,7 +10,8 @@
 #      (the box's media left dark behind its target: povray 24);
 #   2. the same bytes with 1 and 2 threads and under mpirun -n 2;
 #   3. bad 'media' values stop with a located error.
-# With povray installed its own renders are compared too (SSIM 0.9).
+# With povray installed its own renders are compared too (SSIM 0.95;
+# main: 0.73, 0.86, 0.85 for cases 1 to 3).
 #
 # Environment: ZR_SRCDIR, ZR_BUILDDIR (set by `make check`).
 set -u
@@ -42,7 +43,7 @@ for c in 1 2 3 4; do
      timeout 120 povray +Imedia_photons.pov +Op$c.png +W160 +H120 -D -A \
        +WT1 -GA Declare=Case=$c </dev/null >p$c.log 2>&1; then
     # Case 4's dark box is mostly noise to SSIM: 0.46 (main: 0.32).
-    min=0.9
+    min=0.95
     [ $c = 4 ] && min=0.4
     if out=$("$imgcmp" z$c.png p$c.png --ssim-min $min); then
       echo "ok: case $c against povray: $out"
