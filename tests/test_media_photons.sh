@@ -7,7 +7,7 @@
 #      a mirror without a photons block reflects (media photons, which
 #      main did not store: 16 there against povray's 193), a red-
 #      reflecting cyan filter, reflection off (no beam), and media 0
-#      (the box's media left dark behind its target: povray 24);
+#      (the box's media left dark behind its target: povray 8.7, main 189);
 #   2. the same bytes with 1 and 2 threads and under mpirun -n 2;
 #   3. bad 'media' values stop with a located error.
 # With povray installed its own renders are compared too (SSIM 0.95;
