@@ -69,7 +69,21 @@
  * ("Adaptive Search Radius").  R is given by radius, or found: the
  * median, over up to 1000 stored photons spread through the map, of
  * the distance to the gather_max-th nearest photon, times the radius
- * multiplier.
+ * multiplier.  With media photons the radius is not expanded ("Unless
+ * photons are interacting with media, POV-Ray uses an adaptive search
+ * radius").
+ *
+ * Media ("Photons and Media", global photons { media MAX_STEPS, FACTOR
+ * }).  Along each stretch of a photon's path through scattering media
+ * (once it has met its target) photons are stored every spacing *
+ * FACTOR, at most MAX_STEPS a stretch, each standing for the light
+ * crossing its step (store_media); media sampling gathers the
+ * gather_max nearest and divides by the volume of their sphere
+ * (zr__photons_media_light).  A target without photon refraction or
+ * reflection (a clear box of fog) lets photons through as PLAIN ones,
+ * which every surface reflects and lets through by its finish until a
+ * flagged object refracts or reflects them (follow()); what povray 3.7
+ * showed of all this is in bench/photon_media.sh.
  */
 #include "trace/photons.h"
 
