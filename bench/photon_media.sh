@@ -33,8 +33,8 @@ build=${1:-$root/build}
 work=$(mktemp -d "${TMPDIR:-/tmp}/photon_media.XXXXXX") || exit 1
 trap 'rm -rf "$work"' EXIT INT TERM
 counts() { # log
-  tr '\r' '\n' <"$1" |
-    sed -n 's/^\(Number of photons shot\|Surface photons stored\|Media photons stored\): *\([0-9]*\).*/\2/p' |
+  what='Number of photons shot\|Surface photons stored\|Media photons stored'
+  tr '\r' '\n' <"$1" | sed -n "s/^\($what\): *\([0-9]*\).*/\2/p" |
     tr '\n' ' '
 }
 mean() { # png region
@@ -51,9 +51,11 @@ run_both() { # name file regions declares...
     -A +WT1 +V $decl </dev/null >"$work/p.log" 2>&1)
   (cd "$dir" && nice -n 10 "$zrcube" +I"$file" +O"$work/z.png" +W160 \
     +H120 -D +WT1 +V $decl </dev/null >"$work/z.log" 2>&1)
-  echo "== $name: povray $(counts "$work/p.log")| zrcube $(counts "$work/z.log")"
+  echo "== $name: povray $(counts "$work/p.log")|" \
+    "zrcube $(counts "$work/z.log")"
   for r in $regions; do
-    echo "   $r  povray $(mean "$work/p.png" "$r")  zrcube $(mean "$work/z.png" "$r")"
+    echo "   $r  povray $(mean "$work/p.png" "$r")" \
+      " zrcube $(mean "$work/z.png" "$r")"
   done
 }
 b=$root/bench/photon_media
