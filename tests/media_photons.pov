@@ -8,6 +8,8 @@
 //   Case 3: the white mirror with photons { reflection off }: no beam.
 //   Case 4: case 1 with media photons off (media 0): the box's target
 //           then only lets surface photons through.
+//   Case 5: case 1 with Mie murky scattering: the photons' phase is the
+//           medium's, for their own direction.
 #version 3.7;
 #ifndef (Case) #declare Case = 1; #end
 global_settings { assumed_gamma 1 max_trace_level 5
@@ -20,7 +22,8 @@ box { <-100, -1, -100>, <100, 0, 100>
   pigment { rgb 0.2 } finish { ambient 0 diffuse 1 } }
 box { <-3, 0.01, -2>, <3, 1, 2> hollow
   pigment { rgbf 1 } finish { ambient 0 diffuse 0 }
-  interior { media { scattering { 1, rgb 0.5 extinction 0 }
+  interior { media { scattering { #if (Case = 5) 3 #else 1 #end, rgb 0.5
+                                  extinction 0 }
                      method 3 intervals 1 samples 4 } }
   photons { target } }
 box { <-0.05, 0.05, -0.8>, <0.05, 0.95, 0.8>

@@ -7,7 +7,8 @@
 #      a mirror without a photons block reflects (media photons, which
 #      main did not store: 16 there against povray's 193), a red-
 #      reflecting cyan filter, reflection off (no beam), and media 0
-#      (the box's media left dark behind its target: povray 8.7, main 189);
+#      (the box's media left dark behind its target: povray 8.7, main 189),
+#      Mie murky scattering (the phase for each photon's direction);
 #   2. the same bytes with 1 and 2 threads and under mpirun -n 2;
 #   3. bad 'media' values stop with a located error.
 # With povray installed its own renders are compared too (SSIM 0.95;
@@ -31,7 +32,8 @@ recorded_3="15:35,75:85=24.3,24.3,24.3 55:65,20:60=192.8,192.8,192.8"
 # Case 4 within 20 levels: zRcube's beam region is 26 (main: 189), the
 # floor's grazing photons spread over it, where povray's floor stays dark.
 recorded_4="55:65,20:60=8.7,8.7,8.7"
-for c in 1 2 3 4; do
+recorded_5="15:35,75:85=140.2,140.2,140.2 55:65,20:60=140.5,140.5,140.5"
+for c in 1 2 3 4 5; do
   render $c z$c.png 1
   eval "want=\$recorded_$c"
   echo "case $c:"
