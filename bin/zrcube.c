@@ -1574,6 +1574,10 @@ static void print_statistics(run *r) {
     fprintf(out, "%-26s%12llu\n%-26s%12llu\n%s\n",
             "Number of photons shot:", info.photons_shot,
             "Surface photons stored:", info.photons_stored, rule);
+  if (info.media_photons_stored > 0)
+    fprintf(out, "%-26s%12llu\n%-26s%12.6g\n%s\n",
+            "Media photons stored:", info.media_photons_stored,
+            "Media photons radius:", info.media_photons_radius, rule);
   fprintf(out, "Render Time:\n");
   if (r->gi_method == ZR_GI_HIERARCHICAL || r->gi_method == ZR_GI_CACHE)
     print_time(out, "Radiosity Time:", r->radiosity_seconds + r->gi_seconds);

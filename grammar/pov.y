@@ -3643,9 +3643,16 @@ media_body:
     { TRY(zr__sdl_media_item(p, $1, T_ABSORPTION, &$3, &@3)); $$ = $1; }
 | media_body T_EMISSION colour_value
     { TRY(zr__sdl_media_item(p, $1, T_EMISSION, &$3, &@3)); $$ = $1; }
-/* collect: whether photons gather in the media; there are no photons. */
-| media_body T_COLLECT          { $$ = $1; }
-| media_body T_COLLECT expr     { $$ = $1; }
+/* collect: whether media photons are stored and gathered in it
+   ("Photons and Media"; lib/trace/photons.c). */
+| media_body T_COLLECT          { $1->photons_ignored = false; $$ = $1; }
+| media_body T_COLLECT expr
+    {
+      bool on;
+      TRY(zr__sdl_light_bool(p, &$3, &@3, &on));
+      $1->photons_ignored = !on;
+      $$ = $1;
+    }
 | scattering_body '}'
 | media_body density
     { TRY(zr__sdl_media_density(p, $1, $2)); $$ = $1; }

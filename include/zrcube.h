@@ -432,6 +432,10 @@ typedef struct zr_scene_info {
      landed, as povray +V counts them ("Number of photons shot",
      "Surface photons stored"); 0 without photons. */
   unsigned long long photons_shot, photons_stored;
+  /* photons { media N }: the photons stored in media ("Media photons
+     stored") and their gather radius (0 without media photons). */
+  unsigned long long media_photons_stored;
+  double media_photons_radius;
 } zr_scene_info;
 
 ZR_API void zr_scene_get_info(const zr_scene *scene, zr_scene_info *info);

@@ -185,6 +185,12 @@ EXTRA_DIST += tests/test_caustics.sh tests/caustics_check.pov \
 TESTS += tests/test_photons.sh
 EXTRA_DIST += tests/test_photons.sh tests/photons_check.pov
 
+# Photons in media: beams of media photons against povray's region
+# means, thread and rank byte-identity, bad 'media' values.
+TESTS += tests/test_media_photons.sh
+EXTRA_DIST += tests/test_media_photons.sh tests/media_photons.pov \
+	tests/region_mean.py
+
 # +AM2, the recursive antialiasing method, against povray's.
 TESTS += tests/test_aa_method.sh
 EXTRA_DIST += tests/test_aa_method.sh tests/am2_check.pov

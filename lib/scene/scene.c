@@ -78,6 +78,8 @@ void zr__settings_init(zr_settings *s) {
   s->photons.radius_multiplier = 1.0;
   s->photons.expand_increase = 0.2;
   s->photons.expand_min = 40;
+  s->photons.media_factor = 1.0;
+  s->photons.media_radius_multiplier = 1.0;
 }
 
 size_t zr__object_size(zr_object_kind kind) {
@@ -197,6 +199,8 @@ ZR_API void zr_scene_get_info(const zr_scene *scene, zr_scene_info *info) {
   info->has_radiosity = scene->settings.radiosity.on;
   info->photons_shot = scene->photons_shot;
   info->photons_stored = scene->photons_stored;
+  info->media_photons_stored = scene->media_photons_stored;
+  info->media_photons_radius = scene->media_photons_radius;
   info->finite_primitives = scene->n_finite_primitives;
   info->infinite_primitives = scene->n_primitives - scene->n_finite_primitives;
 }

@@ -451,6 +451,9 @@ typedef struct zr_medium {
   zr_scattering_kind scattering_type;      /* default isotropic */
   double eccentricity;        /* Henyey-Greenstein g; default 0 */
   double extinction;          /* scattering's share of extinction: 1 */
+  /* collect off: media photons are neither stored nor gathered in it
+     ("Photons and Media"); default on. */
+  bool photons_ignored;
   /* density { }: pigments whose colours multiply (none: density 1). */
   const zr_pigment *const *density;
   size_t n_density;
@@ -552,6 +555,7 @@ typedef struct zr_photon_object {
   bool target;       /* light sources shoot photons at it */
   double spacing;    /* target's spacing multiplier; default 1 */
   bool refraction, reflection; /* it bends / mirrors photons; off */
+  bool refraction_set, reflection_set; /* the block gave them */
   bool collect;      /* photons are stored and gathered on it; on */
   bool pass_through; /* photons cross it unchanged; default no_shadow */
 } zr_photon_object;
@@ -1070,6 +1074,14 @@ typedef struct zr_photon_settings {
   double autostop;   /* read; every target is covered whole */
   double expand_increase;     /* 0.2 */
   int expand_min;             /* 40 */
+  /* media MAX_STEPS, FACTOR ("Photons and Media"): photons stored in
+     scattering media, at most media_steps along each stretch of a
+     photon's path through media, media_factor times the surface
+     spacing apart; 0 steps: none.  radius's third and fourth values:
+     the media photons' gather radius (0: found) and its multiplier. */
+  int media_steps;            /* 0 */
+  double media_factor;        /* 1 */
+  double media_radius, media_radius_multiplier; /* 0, 1 */
 } zr_photon_settings;
 
 typedef struct zr_settings {
@@ -1160,6 +1172,8 @@ struct zr_scene {
   /* What the photon pass did (zr_scene_info): photons shot from the
      lights and photons stored (lib/trace/photons.c). */
   unsigned long long photons_shot, photons_stored;
+  unsigned long long media_photons_stored;
+  double media_photons_radius;
   /* The meshes' Embree scenes when the tracer uses that backend (NULL:
      none), and the routine that frees them (lib/trace/embree.c). */
   struct zr_embree *embree;

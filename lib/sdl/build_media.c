@@ -491,8 +491,26 @@ bool zr__sdl_photons_item(zr_sdl_parser *p, zr_sdl_photons *ph, int kw,
     g->gather_max = (int)v[1];
     break;
   case T_MEDIA:
+    /* media MAX_STEPS [, FACTOR]: a whole number of steps (0 turns
+       media photons off, the default) and a spacing factor above 0. */
     if (!photon_count(p, kw, a, 1, 2, loc))
       return false;
+    if (!isfinite(v[0]) || v[0] < 0.0 || v[0] != floor(v[0]) ||
+        v[0] > 1e6) {
+      zr__sdl_error(p, ZR_EINVAL, loc,
+                    "'media' in photons { } takes a whole number of steps "
+                    "from 0 to 1e6, not %g",
+                    v[0]);
+      return false;
+    }
+    if (a->n > 1 && !(isfinite(v[1]) && v[1] > 0.0)) {
+      zr__sdl_error(p, ZR_EINVAL, loc,
+                    "'media %g, %g': the spacing factor must be above 0",
+                    v[0], v[1]);
+      return false;
+    }
+    g->media_steps = (int)v[0];
+    g->media_factor = a->n > 1 ? v[1] : 1.0;
     ph->has_media = v[0] > 0.0;
     ph->media_loc = *loc;
     break;
@@ -515,6 +533,10 @@ bool zr__sdl_photons_item(zr_sdl_parser *p, zr_sdl_photons *ph, int kw,
         g->radius = v[i];
       else if (slot == 1)
         g->radius_multiplier = v[i] > 0.0 ? v[i] : 1.0;
+      else if (slot == 2)
+        g->media_radius = v[i];
+      else
+        g->media_radius_multiplier = v[i] > 0.0 ? v[i] : 1.0;
     }
     (void)n;
     break;
@@ -608,10 +630,6 @@ bool zr__sdl_photons_global(zr_sdl_parser *p, const zr_sdl_photons *ph,
   if (!ph->has_count || ph->has_spacing)
     g->count = 0.0;
   g->on = true;
-  if (ph->has_media)
-    zr__sdl_warning(p, &ph->media_loc,
-                    "photons in media are not simulated: media are lit "
-                    "by the lights directly");
   if (ph->has_load || ph->has_save)
     zr__sdl_warning(p, &ph->file_loc,
                     "photon maps are not saved or loaded: the photons are "
@@ -660,9 +678,9 @@ static bool photons_apply(zr_sdl_parser *p, zr_object *o,
   if (ph->has_target)
     po->target = true, po->spacing = ph->obj.spacing;
   if (ph->has_refraction)
-    po->refraction = ph->refraction;
+    po->refraction = ph->refraction, po->refraction_set = true;
   if (ph->has_reflection)
-    po->reflection = ph->reflection;
+    po->reflection = ph->reflection, po->reflection_set = true;
   if (ph->has_collect)
     po->collect = ph->collect;
   if (ph->has_pass_through)

@@ -111,6 +111,7 @@
 #include "scene/texture.h"
 #include "trace/atmosphere.h"
 #include "trace/lights.h"
+#include "trace/photons.h"
 
 /* Measured by bench/media_sky.sh (see above). */
 #define SKY_DEPTH 2e10
@@ -239,6 +240,10 @@ static zr_rgb density_at(const zr_medium *medium, zr_vec3 p) {
   return d;
 }
 
+zr_rgb zr__media_density(const zr_medium *medium, zr_vec3 p) {
+  return density_at(medium, p);
+}
+
 /* Whether light may light the media of this ray at distance s. */
 static bool lights_media(const zr_light *light, double s) {
   /* A light_group's lights light no media: zRcube does not yet tell a
@@ -297,9 +302,14 @@ static sample sample_at(const march *m, double s) {
       scatters = scatters || !rgb_zero(md->scattering);
     }
   }
+  const zr_scene *scene = m->tr->scene;
+  /* The light media photons bring (lib/trace/photons.c). */
+  if (scatters && zr__photons_in_media(scene->photons))
+    out.j = zr_rgb_add(out.j, zr__photons_media_light(scene->photons, p,
+                                                      m->dir, m->list, m->n,
+                                                      density));
   if (!scatters || !m->lights)
     return out;
-  const zr_scene *scene = m->tr->scene;
   if (m->beams_known) {
     /* A beam lights all of a piece or none of it (the pieces are cut
        where the ray crosses its boundary): the piece's beams and the

@@ -21,6 +21,9 @@
  */
 double zr__media_phase(const zr_medium *medium, double cos_angle);
 
+/* The product of medium's density { } colours at p (1 without any). */
+zr_rgb zr__media_density(const zr_medium *medium, zr_vec3 p);
+
 /*
  * colour arriving at origin from distance depth along unit direction
  * dir, seen through the media in list: colour * exp(-optical depth) plus

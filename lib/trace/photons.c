@@ -69,7 +69,21 @@
  * ("Adaptive Search Radius").  R is given by radius, or found: the
  * median, over up to 1000 stored photons spread through the map, of
  * the distance to the gather_max-th nearest photon, times the radius
- * multiplier.
+ * multiplier.  With media photons the radius is not expanded ("Unless
+ * photons are interacting with media, POV-Ray uses an adaptive search
+ * radius").
+ *
+ * Media ("Photons and Media", global photons { media MAX_STEPS, FACTOR
+ * }).  Along each stretch of a photon's path through scattering media
+ * (once it has met its target) photons are stored every spacing *
+ * FACTOR, at most MAX_STEPS a stretch, each standing for the light
+ * crossing its step (store_media); media sampling gathers the
+ * gather_max nearest and divides by the volume of their sphere
+ * (zr__photons_media_light).  A target without photon refraction or
+ * reflection (a clear box of fog) lets photons through as PLAIN ones,
+ * which every surface reflects and lets through by its finish until a
+ * flagged object refracts or reflects them (follow()); what povray 3.7
+ * showed of all this is in bench/photon_media.sh.
  */
 #include "trace/photons.h"
 
@@ -82,6 +96,7 @@
 #include "scene/texture.h"
 #include "trace/bvh.h"
 #include "trace/lights.h"
+#include "trace/media.h"
 #include "trace/render.h"
 #include "trace/shade.h"
 
@@ -100,6 +115,13 @@ struct zr_photon_map {
   double radius; /* gather radius R */
   int gather_min, gather_max, expand_min;
   double expand_increase;
+  /* The surface map's media photons (global photons { media N }), NULL
+     when none were stored; a media map holds none of its own. */
+  struct zr_photon_map *media;
+  /* Whether the search radius is fixed: "Unless photons are interacting
+     with media, POV-Ray uses an adaptive search radius" ("Adaptive
+     Search Radius"), so with media N it is not expanded. */
+  bool fixed_radius;
 };
 
 /* The most photons one map holds (44 bytes each: 1.4 GB); beyond it the
@@ -132,6 +154,15 @@ typedef struct shooter {
   int max_level;
   double bailout;
   zr_rgb start; /* the power of the photon being followed at the light */
+  /* Media photons: their map (NULL: media N was not given), the most
+     stored along one stretch of a path through media, and the distance
+     between them (the lattice's spacing times the media factor). */
+  zr_photon_map *media_map;
+  int media_steps;
+  double media_step;
+  uint32_t li, ti; /* the light and target being shot (hash keys) */
+  size_t k;        /* the photon of the lattice being followed */
+  uint32_t stretches; /* its stretches through media so far */
   double refind; /* 1 + the target box's diagonal (refind_hit) */
   unsigned long long shot; /* photons that left a light */
   bool full; /* PHOTONS_MAX reached */
@@ -151,8 +182,8 @@ static void frame(zr_vec3 w, zr_vec3 *u, zr_vec3 *v) {
   *v = zr_v3_cross(w, *u);
 }
 
-static void store(shooter *sh, zr_vec3 p, zr_vec3 d, zr_rgb power) {
-  zr_photon_map *m = sh->map;
+static void store_in(shooter *sh, zr_photon_map *m, zr_vec3 p, zr_vec3 d,
+                     zr_rgb power) {
   if (m->n == m->cap) {
     if (m->cap >= PHOTONS_MAX) {
       sh->full = true;
@@ -173,6 +204,10 @@ static void store(shooter *sh, zr_vec3 p, zr_vec3 d, zr_rgb power) {
   ph->power[2] = (float)power.b;
   ph->dir[0] = (float)d.x, ph->dir[1] = (float)d.y, ph->dir[2] = (float)d.z;
   ph->axis = 0;
+}
+
+static void store(shooter *sh, zr_vec3 p, zr_vec3 d, zr_rgb power) {
+  store_in(sh, sh->map, p, d, power);
 }
 
 static double rgb_max3(zr_rgb c) { return fmax(c.r, fmax(c.g, c.b)); }
@@ -253,18 +288,127 @@ static void refind_hit(const shooter *sh, const zr_ray *ray, zr_hit *hit,
   *hit = again;
 }
 
+/* ---- media photons ---- */
+
+/*
+ * The media a stretch of a photon's path crosses, as a camera ray sees
+ * them (lib/trace/media.c zr__media_along): the interiors' media when
+ * every object the photon is in is hollow, and the atmosphere's ("photons
+ * also interact fully with media"; not measured against povray: no
+ * stock scene has both).  Only media that scatter and collect photons
+ * store any ("Photons and Media"); the others still dim the photon.
+ * Returns how many, with *collects whether one of them stores photons.
+ */
+static size_t stretch_media(const shooter *sh, const zr_media *inside,
+                            const zr_medium **list, bool *collects) {
+  const zr_settings *st = &sh->scene->settings;
+  size_t n = 0;
+  *collects = false;
+  for (int i = 0; inside && i < inside->n; i++)
+    if (!inside->objects[i]->hollow)
+      return 0;
+  for (int i = 0; inside && i < inside->n; i++) {
+    const zr_interior *in = inside->interiors[i];
+    for (size_t k = 0; in && k < in->n_media && n < ZR_MEDIA_LIST_MAX; k++)
+      list[n++] = in->media[k];
+  }
+  for (size_t k = 0; k < st->n_media && n < ZR_MEDIA_LIST_MAX; k++)
+    list[n++] = st->media[k];
+  for (size_t k = 0; k < n; k++)
+    if (!list[k]->photons_ignored && rgb_max3(list[k]->scattering) > 0.0)
+      *collects = true;
+  return n;
+}
+
+/*
+ * Stores media photons along the stretch of length len from origin
+ * along unit dir ("Photons and Media": "as a light ray passes through a
+ * section of media, the photons are deposited, separated by
+ * approximately the same distance that separates surface photons", at
+ * most MAX_STEPS of them per section).  Steps of sh->media_step (fewer
+ * and longer when more than media_steps would be needed; at least one)
+ * each hold a photon at a hashed place inside the step.  A photon
+ * stands for the light crossing its step: flux times the step's length
+ * (area times length: a density over volume then gives the light that
+ * arrives at a point, as zr__photons_media_light says), dimmed by the
+ * media's extinction up to it; *power leaves dimmed by all of the
+ * stretch.  path is the distance the photon had travelled at origin.
+ */
+static void store_media(shooter *sh, zr_vec3 origin, zr_vec3 dir,
+                        double len, zr_rgb *power, double flux,
+                        bool parallel, double path, const zr_media *inside) {
+  const zr_medium *list[ZR_MEDIA_LIST_MAX];
+  bool collects;
+  size_t nm = stretch_media(sh, inside, list, &collects);
+  if (nm == 0 || !(len > 0.0) || !isfinite(len))
+    return;
+  double want = ceil(len / sh->media_step);
+  int steps = want < 1.0 ? 1
+              : want > sh->media_steps ? sh->media_steps : (int)want;
+  double h = len / steps;
+  double u = hash01(sh->li, sh->ti, sh->k, 2 + sh->stretches++);
+  zr_rgb t = zr_rgb3(1, 1, 1); /* the extinction of the steps before */
+  for (int i = 0; i < steps && !sh->full && !sh->oom; i++) {
+    double s = (i + u) * h;
+    zr_vec3 p = zr_v3_madd(origin, dir, s);
+    zr_rgb k = zr_rgb3(0, 0, 0);
+    bool scatters = false;
+    for (size_t q = 0; q < nm; q++) {
+      zr_rgb d = zr__media_density(list[q], p);
+      k = zr_rgb_add(k, zr_rgb_mul(d, zr_rgb_madd(list[q]->absorption,
+                                                 list[q]->scattering,
+                                                 list[q]->extinction)));
+      if (!list[q]->photons_ignored &&
+          rgb_max3(zr_rgb_mul(d, list[q]->scattering)) > 0.0)
+        scatters = true;
+    }
+    /* A step's extinction is taken where its photon lies. */
+    if (collects && scatters) {
+      double d = path + s;
+      double area = parallel ? flux : flux * d * d;
+      double w = area * h * zr__light_fade(sh->light, d);
+      zr_rgb here = zr_rgb3(t.r * exp(-k.r * u * h), t.g * exp(-k.g * u * h),
+                            t.b * exp(-k.b * u * h));
+      store_in(sh, sh->media_map, p, dir,
+               zr_rgb_scale(zr_rgb_mul(*power, here), w));
+    }
+    t = zr_rgb3(t.r * exp(-k.r * h), t.g * exp(-k.g * h),
+                t.b * exp(-k.b * h));
+  }
+  *power = zr_rgb_mul(*power, t);
+}
+
+/*
+ * Where a photon stands.  FROM_LIGHT: on its way from the light to the
+ * target it was shot at.  PLAIN: it went through a target that neither
+ * refracts nor reflects photons (photons { target } alone, as the
+ * foggy box of advanced/optics.pov), and has met since only surfaces
+ * without a photons { refraction } or { reflection } of their own:
+ * such a photon is reflected by every surface's finish and goes
+ * through every clear one (bent by its ior), unless the object's block
+ * turns the one or the other off.  CAUSTIC: reflected or refracted by
+ * an object whose block turns it on; only such objects pass it on.
+ * povray 3.7 shows both (bench/photon_media.sh): a mirror without a
+ * photons block in a clear target box reflects a beam of media
+ * photons, as with reflection on and unlike with reflection off, where
+ * under a target lens the same mirror stores no more photons than
+ * with nothing behind it.
+ */
+enum { FROM_LIGHT, PLAIN, CAUSTIC };
+
 /*
  * Follows one photon from origin along unit dir.  power is what it
  * carries per unit of flux (the light's colour times the filters met so
  * far), flux the solid angle (point light: times D^2 when stored) or the
  * area (parallel light) it stands for, path the distance it travelled,
- * bounced whether it was reflected or refracted, level its depth, s the
- * product of its reflections' weights (branch_kept).
+ * state where it stands (see above), level its depth, s the product of
+ * its reflections' weights (branch_kept).
  */
 static void follow(shooter *sh, zr_vec3 origin, zr_vec3 dir, zr_rgb power,
-                   double flux, bool parallel, double path, bool bounced,
+                   double flux, bool parallel, double path, int state,
                    int level, const zr_media *media, double s) {
   const zr_light *light = sh->light;
+  bool bounced = state != FROM_LIGHT;
   for (int passes = 0; passes < ZR_PASS_MAX; passes++) {
     zr_ray ray = {origin, dir};
     zr_hit hit;
@@ -274,6 +418,9 @@ static void follow(shooter *sh, zr_vec3 origin, zr_vec3 dir, zr_rgb power,
     const zr_photon_object *po = o->photons;
     zr_vec3 p = zr_v3_madd(origin, dir, hit.t);
     double d_total = path + hit.t;
+    if (sh->media_map && bounced)
+      store_media(sh, origin, dir, hit.t, &power, flux, parallel, path,
+                  media);
     if (media && media->n > 0)
       power = zr__exit_fade(sh->scene, media, o, hit.t, power);
     bool pass = po ? po->pass_through : o->no_shadow;
@@ -305,12 +452,23 @@ static void follow(shooter *sh, zr_vec3 origin, zr_vec3 dir, zr_rgb power,
        povray 3.7 stores as many photons behind a glass ball at
        max_trace_level n + 1 as a count from this hit as level 0 gives
        at n (bench/photon_targets.sh). */
-    if (!po || level + 1 >= sh->max_level)
+    if (level + 1 >= sh->max_level)
       return;
-    bool refracts = po->refraction && light->photon_refraction;
-    bool reflects = po->reflection && light->photon_reflection;
+    bool refr_on = po && po->refraction, refl_on = po && po->reflection;
+    /* A target that neither refracts nor reflects photons lets them
+       on as PLAIN ones: povray 3.7 stores photons on a floor under a
+       clear box that is a target, and under a lens inside it, where
+       without the box's target none reach the lens
+       (bench/photon_media.sh). */
+    bool plain = state == PLAIN || (state == FROM_LIGHT && !refr_on &&
+                                    !refl_on);
+    bool refracts = light->photon_refraction &&
+                    (refr_on || (plain && !(po && po->refraction_set)));
+    bool reflects = light->photon_reflection &&
+                    (refl_on || (plain && !(po && po->reflection_set)));
     if (!refracts && !reflects)
       return;
+    int next_state = refr_on || refl_on ? CAUSTIC : plain ? PLAIN : CAUSTIC;
     /* The surface as the shader sees it: normal facing the photon,
        perturbed by normal { }, the pigment and finish there. */
     bool entering = zr_v3_dot(hit.normal, dir) < 0.0;
@@ -354,12 +512,12 @@ static void follow(shooter *sh, zr_vec3 origin, zr_vec3 dir, zr_rgb power,
         /* Total internal reflection: the light stays inside. */
         zr_rgb w = zr_rgb_mul(power, trans);
         if (branch_kept(sh, w, s))
-          follow(sh, above, mirror, w, flux, parallel, d_total, true,
+          follow(sh, above, mirror, w, flux, parallel, d_total, next_state,
                  level + 1, media, s);
       } else {
         zr_rgb w = zr_rgb_mul(power, trans);
         if (branch_kept(sh, w, s))
-          follow(sh, below, refr, w, flux, parallel, d_total, true,
+          follow(sh, below, refr, w, flux, parallel, d_total, next_state,
                  level + 1, &next, s);
       }
     }
@@ -367,7 +525,7 @@ static void follow(shooter *sh, zr_vec3 origin, zr_vec3 dir, zr_rgb power,
       zr_rgb w = zr_rgb_mul(power, refl);
       double s_refl = s * reflection_weight(f, dir, n, n1, n2);
       if (branch_kept(sh, w, s_refl))
-        follow(sh, above, mirror, w, flux, parallel, d_total, true,
+        follow(sh, above, mirror, w, flux, parallel, d_total, next_state,
                level + 1, media, s_refl);
     }
     return;
@@ -479,9 +637,10 @@ static void shoot_pair(shooter *sh, uint32_t li, uint32_t ti, zr_vec3 c,
         continue;
       sh->shot++;
       sh->start = zr_rgb_scale(colour, cone);
+      sh->k = k, sh->stretches = 0;
       if (meets_target_box(sh, origin, w))
-        follow(sh, origin, w, sh->start, cell, true, 0.0, false, 0, NULL,
-               1.0);
+        follow(sh, origin, w, sh->start, cell, true, 0.0, FROM_LIGHT, 0,
+               NULL, 1.0);
     }
     return;
   }
@@ -515,9 +674,10 @@ static void shoot_pair(shooter *sh, uint32_t li, uint32_t ti, zr_vec3 c,
       continue;
     sh->shot++;
     sh->start = zr_rgb_scale(colour, cone);
+    sh->k = k, sh->stretches = 0;
     if (meets_target_box(sh, l->location, dir))
-      follow(sh, l->location, dir, sh->start, omega, false, 0.0, false, 0,
-             NULL, 1.0);
+      follow(sh, l->location, dir, sh->start, omega, false, 0.0, FROM_LIGHT,
+             0, NULL, 1.0);
   }
 }
 
@@ -694,6 +854,45 @@ static double found_radius(const zr_photon_map *m) {
 
 /* ---- the map ---- */
 
+/*
+ * The media radius found when radius's third value is not given: this
+ * many times the surface map's rule (the median distance to the
+ * gather_max-th nearest photon).  Measured black-box: povray 3.7 draws
+ * tests/media_photons.pov's beams the same for every media radius from
+ * 0.45 up (radius 0, 1, R, 1; identical pictures at 0.45 and 0.6, and
+ * its own choice is that picture), its gather_max bounding the count
+ * (gather 20, 400 blurs the beams, 10, 25 sharpens them); the rule's
+ * median there is 0.077.  So the radius only needs to be large enough
+ * for gather_max to decide: 8 times (0.61 there) gives its pictures
+ * (SSIM 0.988 and 0.987 against 0.871 and 0.896 at 1 time), and
+ * optics.pov's is the same from 6 times up.
+ */
+#define MEDIA_RADIUS_FACTOR 8.0
+
+/* The media map's kd-tree and gather radius: radius's third value, or
+   found (MEDIA_RADIUS_FACTOR), times its fourth; NULL (and freed) when
+   it holds no photon. */
+static zr_photon_map *finish_media(zr_photon_map *mm,
+                                   const zr_photon_settings *ps) {
+  if (!mm)
+    return NULL;
+  if (mm->n > 0) {
+    build_tree(mm->v, 0, mm->n);
+    mm->radius = ps->media_radius > 0.0
+                     ? ps->media_radius
+                     : MEDIA_RADIUS_FACTOR * found_radius(mm);
+    mm->radius *= ps->media_radius_multiplier > 0.0
+                      ? ps->media_radius_multiplier
+                      : 1.0;
+  }
+  if (!(mm->radius > 0.0)) {
+    free(mm->v);
+    free(mm);
+    return NULL;
+  }
+  return mm;
+}
+
 zr_status zr__photons_build(zr_scene *scene, zr_context *ctx) {
   const zr_photon_settings *ps = &scene->settings.photons;
   if (!ps->on || scene->photons)
@@ -707,10 +906,22 @@ zr_status zr__photons_build(zr_scene *scene, zr_context *ctx) {
                                                   : m->gather_min;
   m->expand_min = ps->expand_min;
   m->expand_increase = ps->expand_increase;
+  m->fixed_radius = ps->media_steps > 0;
   shooter sh;
   memset(&sh, 0, sizeof sh);
   sh.scene = scene;
   sh.map = m;
+  if (ps->media_steps > 0) {
+    sh.media_map = calloc(1, sizeof *sh.media_map);
+    if (!sh.media_map) {
+      free(m);
+      return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL,
+                      "out of memory for the photon map");
+    }
+    sh.media_map->gather_min = m->gather_min;
+    sh.media_map->gather_max = m->gather_max;
+    sh.media_steps = ps->media_steps;
+  }
   sh.tracer.scene = scene;
   sh.tracer.stats = &sh.stats;
   sh.max_level = ps->max_trace_level > 0 ? ps->max_trace_level
@@ -735,6 +946,7 @@ zr_status zr__photons_build(zr_scene *scene, zr_context *ctx) {
       }
     }
     if (!(total > 0.0) || !(ps->count > 0.0)) {
+      free(sh.media_map);
       free(m);
       return ZR_OK;
     }
@@ -754,6 +966,8 @@ zr_status zr__photons_build(zr_scene *scene, zr_context *ctx) {
           !zr__object_bounds(o, &sh.target_lo, &sh.target_hi))
         continue;
       sh.target = o;
+      sh.li = (uint32_t)li, sh.ti = (uint32_t)ti;
+      sh.media_step = spacing * o->photons->spacing * ps->media_factor;
       sh.refind = 1.0 + zr_v3_len(zr_v3_sub(sh.target_hi, sh.target_lo));
       shoot_pair(&sh, (uint32_t)li, (uint32_t)ti, c, r,
                  spacing * o->photons->spacing);
@@ -761,9 +975,11 @@ zr_status zr__photons_build(zr_scene *scene, zr_context *ctx) {
   }
   scene->photons_shot = sh.shot;
   scene->photons_stored = m->n;
+  scene->media_photons_stored = sh.media_map ? sh.media_map->n : 0;
+  m->media = finish_media(sh.media_map, ps);
+  scene->media_photons_radius = m->media ? m->media->radius : 0.0;
   if (sh.oom) {
-    free(m->v);
-    free(m);
+    zr__photons_free(m);
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL,
                     "out of memory for the photon map");
   }
@@ -772,18 +988,21 @@ zr_status zr__photons_build(zr_scene *scene, zr_context *ctx) {
              "photons: the map is full at %zu photons; the rest were not "
              "shot (raise spacing or lower count)",
              m->n);
-  if (m->n == 0) {
-    free(m->v);
-    free(m);
-    return ZR_OK;
+  if (m->n > 0) {
+    build_tree(m->v, 0, m->n);
+    m->radius = ps->radius > 0.0 ? ps->radius : found_radius(m);
+    m->radius *= ps->radius_multiplier > 0.0 ? ps->radius_multiplier : 1.0;
   }
-  build_tree(m->v, 0, m->n);
-  m->radius = ps->radius > 0.0 ? ps->radius : found_radius(m);
-  m->radius *= ps->radius_multiplier > 0.0 ? ps->radius_multiplier : 1.0;
   if (!(m->radius > 0.0)) {
+    /* No surface photons to gather: the map stays only for its media
+       photons (a scene without them keeps no map, as before). */
     free(m->v);
-    free(m);
-    return ZR_OK;
+    m->v = NULL;
+    m->n = 0;
+    if (!m->media) {
+      free(m);
+      return ZR_OK;
+    }
   }
   scene->photons = m;
   return ZR_OK;
@@ -792,6 +1011,7 @@ zr_status zr__photons_build(zr_scene *scene, zr_context *ctx) {
 void zr__photons_free(zr_photon_map *map) {
   if (!map)
     return;
+  zr__photons_free(map->media);
   free(map->v);
   free(map);
 }
@@ -851,7 +1071,8 @@ zr_rgb zr__photons_gather(const zr_photon_map *m, zr_vec3 p, zr_vec3 n,
                        : zr_rgb3(0, 0, 0);
   /* Too few: search again at EXPAND_FACTOR times the radius, up to
      EXPANSIONS times, while the new search is not rejected. */
-  for (int x = 0; x < EXPANSIONS && found < m->gather_min; x++) {
+  int expansions = m->fixed_radius ? 0 : EXPANSIONS;
+  for (int x = 0; x < expansions && found < m->gather_min; x++) {
     r *= EXPAND_FACTOR;
     heap h2;
     int found2 = gather(m, q, nf, r, cap, ph, d2, &h2);
@@ -870,4 +1091,78 @@ zr_rgb zr__photons_gather(const zr_photon_map *m, zr_vec3 p, zr_vec3 n,
     free(d2);
   }
   return e;
+}
+
+/* ---- gathering in media ---- */
+
+bool zr__photons_in_media(const zr_photon_map *map) {
+  return map && map->media;
+}
+
+/*
+ * A media photon of power P stands for the light P / (area of its
+ * lattice cell) crossing a step of length h (store_media): over a
+ * volume V the photons' sum of P is the light arriving at a point
+ * (what zr__light_arrive gives a media sample for a light) times V,
+ * so sum / V replaces the light's colour in the scattering term, each
+ * photon with the phase for its own direction (toward the light is
+ * against its travel).
+ */
+zr_rgb zr__photons_media_light(const zr_photon_map *map, zr_vec3 p,
+                               zr_vec3 dir, const zr_medium *const *list,
+                               size_t n, const zr_rgb *density) {
+  zr_rgb out = zr_rgb3(0, 0, 0);
+  const zr_photon_map *m = map ? map->media : NULL;
+  if (!m || m->n == 0)
+    return out;
+  bool collects = false;
+  for (size_t i = 0; i < n; i++)
+    if (!list[i]->photons_ignored &&
+        rgb_max3(zr_rgb_mul(density[i], list[i]->scattering)) > 0.0)
+      collects = true;
+  if (!collects)
+    return out;
+  enum { STACK = 256 };
+  const photon *ph_stack[STACK];
+  float d2_stack[STACK];
+  const photon **ph = ph_stack;
+  float *d2 = d2_stack;
+  int cap = m->gather_max;
+  if (cap > STACK) {
+    ph = malloc((size_t)cap * sizeof *ph);
+    d2 = malloc((size_t)cap * sizeof *d2);
+    if (!ph || !d2) {
+      free(ph == ph_stack ? NULL : ph);
+      free(d2 == d2_stack ? NULL : d2);
+      return out;
+    }
+  }
+  float q[3] = {(float)p.x, (float)p.y, (float)p.z};
+  heap h;
+  int found = gather(m, q, NULL, m->radius, cap, ph, d2, &h);
+  if (found > 0) {
+    double r = found == cap ? sqrt(h.max_d2) : m->radius;
+    double volume = 4.0 / 3.0 * M_PI * r * r * r;
+    for (size_t i = 0; i < n; i++) {
+      zr_rgb sc = zr_rgb_mul(density[i], list[i]->scattering);
+      if (!(rgb_max3(sc) > 0.0))
+        continue;
+      zr_rgb sum = zr_rgb3(0, 0, 0);
+      for (int k = 0; k < found; k++) {
+        const photon *f = h.ph[k];
+        double c = -(f->dir[0] * dir.x + f->dir[1] * dir.y +
+                     f->dir[2] * dir.z);
+        double w = zr__media_phase(list[i], c);
+        sum.r += w * f->power[0];
+        sum.g += w * f->power[1];
+        sum.b += w * f->power[2];
+      }
+      out = zr_rgb_add(out, zr_rgb_scale(zr_rgb_mul(sc, sum), 1.0 / volume));
+    }
+  }
+  if (ph != ph_stack) {
+    free(ph);
+    free(d2);
+  }
+  return out;
 }
