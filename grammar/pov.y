@@ -372,6 +372,7 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %token T_PIGMENT_MAP "pigment_map"
 %token T_PIGMENT_PATTERN "pigment_pattern"
 %token T_IMAGE_PATTERN "image_pattern"
+%token T_USE_ALPHA "use_alpha"
 %token T_QUILTED "quilted"
 %token T_SLOPE_MAP "slope_map"
 %token T_SPIRAL1 "spiral1"
@@ -3111,8 +3112,8 @@ image_map_body:
 ;
 
 /* image_pattern { FILE [gamma G] ITEMS } ("Image Pattern"): the
-   picture's grey, read as a bump_map reads it, is the pattern's value;
-   use_alpha (the alpha channel instead) is not supported. */
+   picture's grey, read as a bump_map reads it, is the pattern's value,
+   or with use_alpha its transparency. */
 image_pattern:
   T_IMAGE_PATTERN '{' image_pattern_body '}' { $$ = $3; }
 ;
@@ -3128,6 +3129,10 @@ image_pattern_body:
     { TRY(zr__sdl_image_map_mod(p, $1, T_ONCE, NULL, &@2)); $$ = $1; }
 | image_pattern_body T_INTERPOLATE expr
     { TRY(zr__sdl_image_map_mod(p, $1, T_INTERPOLATE, &$3, &@3)); $$ = $1; }
+/* use_alpha: the value is 1 - alpha, 0 where the file has no alpha
+   (measured: tests/test_image_pattern.sh). */
+| image_pattern_body T_USE_ALPHA
+    { TRY(zr__sdl_image_map_mod(p, $1, T_USE_ALPHA, NULL, &@2)); $$ = $1; }
 ;
 
 /* bump_map { FILE [gamma G] ITEMS } ("Bump Map"), build_texture.c. */

@@ -4,7 +4,7 @@
 // entry 2 0 opaque) and grey16.png (4 x 2 grey + alpha, 16 bit).  The
 // picture lies on the unit square of z = 0 in front of a green plane;
 // each of its pixels is a 4 x 4 block of a 16 x 8 render.
-// Declare=K=1..8.
+// Declare=K=1..12 (10-12: image_pattern's use_alpha).
 #version 3.7;
 #ifndef (K) #declare K = 1; #end
 global_settings { assumed_gamma 1.0 }
@@ -12,6 +12,7 @@ camera { orthographic location <0.5, 0.5, -5> look_at <0.5, 0.5, 0>
          right x up y }
 plane { z, 1 pigment { rgb <0.2, 0.4, 0.2> } finish { ambient 1 diffuse 0 } }
 #declare F = finish { ambient 1 diffuse 0 }
+#declare Grey = color_map { [0 rgb 0] [1 rgb 1] }
 #switch (K)
 #case (1) plane { z, 0 pigment { image_map { png "alpha.png" } } finish { F } } #break
 #case (2) plane { z, 0 pigment { image_map { png "palette.png" } } finish { F } } #break
@@ -24,4 +25,8 @@ plane { z, 1 pigment { rgb <0.2, 0.4, 0.2> } finish { ambient 1 diffuse 0 } }
 // an entry's own transmit overrides its tRNS, "transmit all" every one
 #case (8) plane { z, 0 pigment { image_map { png "palette.png" transmit 1, 0.5 } } finish { F } } #break
 #case (9) plane { z, 0 pigment { image_map { png "palette.png" transmit all 0.3 } } finish { F } } #break
+// image_pattern's use_alpha: the value is 1 - alpha
+#case (10) plane { z, 0 pigment { image_pattern { png "alpha.png" use_alpha } color_map { Grey } } finish { F } } #break
+#case (11) plane { z, 0 pigment { image_pattern { png "palette.png" use_alpha } color_map { Grey } } finish { F } } #break
+#case (12) plane { z, 0 pigment { image_pattern { png "grey16.png" use_alpha } color_map { Grey } } finish { F } } #break
 #end

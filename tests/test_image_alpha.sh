@@ -8,6 +8,8 @@
 # columns 1, 5, 9, 13: the middle of each of the picture's 4 x 2
 # pixels, in front of a green plane).  The tree before this test dropped
 # alpha when it read a PNG: cases 1-8 failed (the picture opaque).
+# Cases 10-12: image_pattern's use_alpha, whose value is 1 - alpha
+# (povray's grey 0 where opaque, 255 where clear).
 #
 # Environment: ZR_SRCDIR, ZR_BUILDDIR (set by `make check`).
 set -u
@@ -50,5 +52,8 @@ recorded_6="226,0,0 89,191,89 124,170,0 112,164,112 202,217,59 117,147,66 226,0,
 recorded_7="223,143,104 116,197,115 124,171,117 134,174,135 203,206,88 123,175,131 193,134,212 128,153,130"
 recorded_8="255,0,0 89,218,89 124,170,124 255,255,255 255,255,255 124,170,124 89,218,89 255,0,0"
 recorded_9="226,97,69 69,234,69 69,97,226 226,234,226 226,234,226 69,97,226 69,234,69 226,97,69"
-pixel_cases image_alpha.pov K "1 2 3 4 5 6 7 8 9" \
+recorded_10="0,0,0 187,187,187 255,255,255 224,224,224 128,128,128 241,241,241 0,0,0 187,187,187"
+recorded_11="0,0,0 205,205,205 255,255,255 0,0,0 0,0,0 255,255,255 205,205,205 0,0,0"
+recorded_12="0,0,0 168,168,168 255,255,255 0,0,0 217,217,217 0,0,0 255,255,255 194,194,194"
+pixel_cases image_alpha.pov K "1 2 3 4 5 6 7 8 9 10 11 12" \
   "1,1 1,5 1,9 1,13 5,1 5,5 5,9 5,13"

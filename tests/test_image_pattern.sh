@@ -6,7 +6,7 @@
 # povray 3.7.0.10's pixels (16x12, -A +WT1 -GA; rows 1, 5, 9 and columns
 # 1, 5, 9, 13: the middle of each of the picture's 4 x 3 pixels).  The
 # tree before this test stopped at 'image_pattern is not supported yet'.
-# Bad input: use_alpha (not supported) and a missing file get a message
+# Bad input: a gamma of 0 and a missing file get a message
 # with file, line and column and a non-zero exit.
 #
 # Environment: ZR_SRCDIR, ZR_BUILDDIR (set by `make check`).
@@ -50,7 +50,7 @@ bad_case() {
     echo "$1: $(grep error bad.log | head -n 1) ok"
   fi
 }
-bad_case use_alpha 'png "image_pattern.png" use_alpha' "use_alpha"
+bad_case gamma_zero 'png "image_pattern.png" gamma 0' "gamma"
 bad_case missing 'png "no_such.png"' "not found"
 [ -e bad.png ] && { echo "a failed render wrote bad.png FAIL"; fail=1; }
 exit $fail

@@ -139,6 +139,8 @@ static double value(const zr_image_map *im, int x, int y) {
   case ZR_BITMAP_VALUE_RED:
     return (float)floor(im->code_value[zr__bitmap_code(im, i, 0)] * 255 +
                         0.5);
+  case ZR_BITMAP_VALUE_CLEAR:
+    return im->alpha ? 1.0 - im->alpha[i] : 0.0;
   default:
     return im->values[i];
   }

@@ -18,7 +18,8 @@ enum {
   ZR_BITMAP_VALUE_ARRAY = 0, /* values[] (float pictures) */
   ZR_BITMAP_VALUE_INDEX,     /* the palette index */
   ZR_BITMAP_VALUE_GREY,      /* 0.297 r + 0.589 g + 0.114 b, by code_value */
-  ZR_BITMAP_VALUE_RED        /* the red sample on a 0 .. 255 scale */
+  ZR_BITMAP_VALUE_RED,       /* the red sample on a 0 .. 255 scale */
+  ZR_BITMAP_VALUE_CLEAR      /* 1 - alpha (image_pattern's use_alpha) */
 };
 
 /* The code of channel c (0 red, 1 green, 2 blue) of pixel i of a map

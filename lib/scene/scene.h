@@ -271,10 +271,11 @@ typedef struct zr_image_map {
   const unsigned char *indices;
   int palette_size;
   float *palette_ft;
-  /* image_map only: NULL, or each pixel's straight alpha in [0, 1] from
-     the file (a PNG's alpha channel or a grey or RGB image's tRNS
-     colour), whose 1 - alpha is added to the pixel's transmit ("Using
-     the Alpha Channel"); a palette's tRNS is in palette_ft instead. */
+  /* image_map and image_pattern only: NULL, or each pixel's straight
+     alpha in [0, 1] from the file (a PNG's alpha channel or tRNS).  An
+     image_map adds 1 - alpha to the pixel's transmit ("Using the Alpha
+     Channel"; a palette's tRNS is in palette_ft instead), an
+     image_pattern with use_alpha takes it as its value. */
   const float *alpha;
   /* bump_map and material_map only: one number a pixel, the bump map's
      height (lib/scene/bitmap.c) or the material map's texture index,

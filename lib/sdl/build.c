@@ -1271,7 +1271,8 @@ zr_image_map *zr__sdl_bitmap_new(zr_sdl_parser *p, const char *what,
                                   strcmp(what, "material_map") == 0,
                                   gamma != NULL);
   /* An image map's alpha, if the file has any that is not all opaque. */
-  if (ok && is_image && !image->indices && image->alpha && !opaque(image))
+  if (ok && image->alpha && !opaque(image) &&
+      ((is_image && !image->indices) || strcmp(what, "image_pattern") == 0))
     ok = keep_alpha(p, im, image);
   if (ok) {
     im->path = zr__sdl_strdup(p, name, strlen(name));
@@ -1313,6 +1314,9 @@ bool zr__sdl_image_map_mod(zr_sdl_parser *p, zr_image_map *im, int token,
     return true;
   case T_ONCE:
     im->once = true;
+    return true;
+  case T_USE_ALPHA: /* image_pattern's */
+    im->value_kind = ZR_BITMAP_VALUE_CLEAR;
     return true;
   case T_INTERPOLATE:
     im->interpolate = (int)v;

@@ -503,7 +503,7 @@ static const zr_sdl_keyword keywords[] = {
     {"undef", T_UNSUPPORTED},
     {"union", T_UNION},
     {"up", T_UP},
-    {"use_alpha", T_UNSUPPORTED},
+    {"use_alpha", T_USE_ALPHA},
     {"use_color", T_USE_COLOR},
     {"use_colour", T_USE_COLOR},
     {"use_index", T_USE_INDEX},
