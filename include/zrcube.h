@@ -1041,7 +1041,9 @@ ZR_API const float *zr_image_pixels_const(const zr_image *image);
  * Reads a PNG, JPEG, GIF, TGA, BMP, TIFF, PPM/PGM (P3/P5/P6), PFM,
  * Radiance HDR or OpenEXR file; 8 and 16 bit files
  * are decoded from their gamma (sRGB unless the file says otherwise) into
- * linear floats.  Errors are reported through ctx (which may be NULL).
+ * linear floats.  A PNG's alpha (an alpha channel or tRNS transparency)
+ * comes with it, straight, as zr_image_alpha's; other files' alpha is
+ * not read.  Errors are reported through ctx (which may be NULL).
  */
 ZR_API zr_status zr_image_read(zr_context *ctx, const char *path,
                                zr_image **out);
