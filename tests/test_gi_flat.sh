@@ -12,8 +12,9 @@
 # black (floor 0.004 to 0.096 where the lamp facing down gives 0.289)
 # and showed its own back black to the camera.
 # Checks, per kind (two triangles, a polygon, a disc) and height:
-#  1. the lamp seen from below (rows 0-1, columns 15-24) shows its
-#     emission, 1.0, with either winding;
+#  1. rows 0-1, columns 15-24, show 1.0 (clipped) with either winding:
+#     at 2.99 the lamp seen from below (its emission), at 2 the ceiling
+#     above the lamp, lit by its upper side (povray 0.986);
 #  2. wall (rows 7-14, columns 15-24), shelf (rows 17-18, columns 9-14;
 #     its normal points down, so its top is its back side) and floor
 #     (rows 25-28, columns 15-29) with the lamp's normal up are within
@@ -92,7 +93,7 @@ for y in ('2.99', '2'):
                 p = linear('p%s.png' % c)
                 line += ' (povray %.3f, %.4f %.4f %.4f)' % (
                     mean(p, LAMP), *[mean(p, r) for r in REG.values()])
-            print(line + (' FAIL (the lamp is not lit)' if bad else ''))
+            print(line + (' FAIL (lamp or ceiling above it not lit)' if bad else ''))
         for i, name in enumerate(REG):
             if abs(got[1][i] / got[0][i] - 1) > 0.01:
                 fail += 1

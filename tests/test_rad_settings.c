@@ -76,7 +76,7 @@ static void test_rad_settings_command_line_overrides(void **state) {
   assert_int_equal(p.visibility_rays, 3); /* the scene's */
   assert_true(p.brightness == 2.0);
   assert_true(p.area_eps == 1e-4);    /* neither: the default */
-  assert_int_equal(p.one_sided_emission, 1); /* the one default */
+  assert_int_equal(p.one_sided_emission, 2); /* the one default */
   zr__cli_free(&o);
 }
 
