@@ -1,7 +1,8 @@
 // tests/gi_flat.pov - a flat emitter in a closed room (tests/test_gi_flat.sh):
 // povray's emitting surfaces shine from both sides, so neither the
 // winding of the lamp nor which way its normal points may change the
-// picture.  Kind: 0 two triangles, 1 a polygon, 2 a disc; Up 1: the
+// picture.  Kind: 0 two triangles, 1 a polygon, 2 a disc, 3 two
+// triangles as wide as the ceiling; Up 1: the
 // lamp's normal points up, away from the room; Y: the lamp's height (2.99,
 // a hair below the ceiling at 3, or 2, hanging in the room).  The shelf
 // is a flat receiver whose normal points down, lit on its top (its back).
@@ -30,6 +31,16 @@ box { <-2, 0, -2>, <2, 3, 2> hollow pigment { rgb 1 } finish { W } }
 #break
 #case (2)
   disc { <0, Y, 0>, <0, (Up ? 1 : -1), 0>, 0.5642 texture { L } }
+#break
+#case (3)
+  // a panel as wide as the ceiling, emission 1: its front faces the
+  // floor 2.99 away, so none of its light is trapped
+  #declare A = <-1.99, Y, -1.99>; #declare B = <1.99, Y, -1.99>;
+  #declare C = <1.99, Y, 1.99>;   #declare D = <-1.99, Y, 1.99>;
+  #declare L = texture { pigment { rgb 1 }
+                         finish { diffuse 0 ambient 0 emission 1 } }
+  #if (Up) union { triangle { A, C, B } triangle { A, D, C } texture { L } }
+  #else    union { triangle { A, B, C } triangle { A, C, D } texture { L } } #end
 #break
 #end
 // a shelf whose normal points down, lit on its top (its back)

@@ -334,22 +334,24 @@ static double radical_inverse(unsigned k, unsigned b) {
 
 /*
  * The openness of one side of an emitting surface: the share of the
- * light it emits that gets away from it, estimated as the mean over
- * cosine-distributed rays from an 8 x 8 grid of its points (area
- * weighted, CSG-trimmed points left out) of min(1, t / L), t the
- * distance to the first surface the ray meets and L = sqrt(area) the
- * side's size.  A side facing open space has 1; a lamp's back hung a
- * gap g below a ceiling about 2 g / L (the mean of min(1, g / (L cos))
- * over cosine-distributed rays), which for the Cornell box's lamp (g
- * 0.01, L 11.7) is 0.002.  povray's emitting surfaces shine from both
- * sides, and light sent into such a gap comes out only at its rim;
- * the solver, whose cells are wider than the gap, would instead pour
- * it into the room through the ceiling cells above the lamp (the
- * Cornell box with both sides emitting at full: relative RMSE 1.34
- * against the path-traced truth, 0.041 with the front alone).
+ * light it emits that gets away from it.  povray's emitting surfaces
+ * shine from both sides, and light sent into a gap narrower than the
+ * solver's cells (a lamp's back hung a hair below a ceiling) comes out
+ * only at the gap's rim; the solver, whose cells at the lamp's edge are
+ * wider than the gap, would instead pour it into the room (the Cornell
+ * box with both sides emitting at full: relative RMSE 1.34 against the
+ * path-traced truth, 0.041 with the front alone).  So rays leave from an
+ * 8 x 8 grid of the side's points (area weighted, CSG-trimmed points
+ * left out) in cosine-distributed directions; one that meets a surface
+ * at a distance t below res (twice the side of the finest cell,
+ * sqrt(area_eps * total area)) counts min(1, t / L), L = sqrt(area) the
+ * side's size, any other 1.  A side facing open space, or a room's far
+ * wall, has 1; a side facing a parallel surface at a gap g below res
+ * about 2 g / L (the mean of min(1, g / (L cos)) over cosine rays): the
+ * Cornell lamp's back 0.0017.  Wider gaps the solver resolves itself.
  */
 static double side_openness(const zr_radiosity *rad, const zr__rad_surface *s,
-                            int side) {
+                            int side, double res) {
   const int n = 8;
   double L = sqrt(s->area);
   if (!(L > 0.0) || !isfinite(L) || rad->scene->bvh == NULL)
@@ -376,12 +378,20 @@ static double side_openness(const zr_radiosity *rad, const zr__rad_surface *s,
       zr_ray ray = {zr_v3_madd(pt.p, nn, 1e-6 * L), d};
       zr_hit hit;
       double f = 1.0;
-      if (zr__bvh_nearest(rad->scene->bvh, &ray, 0.0, L, &hit))
+      if (zr__bvh_nearest(rad->scene->bvh, &ray, 0.0, fmin(L, res), &hit))
         f = hit.t / L;
       sum += pt.da * f;
       weight += pt.da;
     }
   return weight > 0.0 ? sum / weight : 1.0;
+}
+
+/* Whether o's finish emits (emission or energy). */
+static bool finish_emits(const zr_object *o) {
+  const zr_finish *fin = o->texture->finish;
+  return fin->emission.r > 0.0 || fin->emission.g > 0.0 ||
+         fin->emission.b > 0.0 || fin->energy.r > 0.0 ||
+         fin->energy.g > 0.0 || fin->energy.b > 0.0;
 }
 
 /* finish { energy P } (lib/sdl/build_radiosity.c): the object emits P
@@ -497,12 +507,6 @@ static zr_status add_primitive(zr_radiosity *rad, zr_context *ctx,
   }
   bool clamped = false;
   int sides = emitting_sides(rad, o);
-  const zr_finish *fin = o->texture->finish;
-  bool emits = zr__rad_max3((const double[3]){fin->emission.r,
-                                              fin->emission.g,
-                                              fin->emission.b}) > 0.0 ||
-               zr__rad_max3((const double[3]){fin->energy.r, fin->energy.g,
-                                              fin->energy.b}) > 0.0;
   for (int i = 0; i < n; i++) {
     zr__rad_surface *s = &rad->surfs[rad->n_surfs];
     memset(s, 0, sizeof *s);
@@ -526,26 +530,12 @@ static zr_status add_primitive(zr_radiosity *rad, zr_context *ctx,
       const double whole[4] = {0.0, 1.0, 0.0, 1.0};
       s->area *= zr__rad_trim_fraction(rad, s, whole, 64);
     }
-    /* Each emitting side shoots the share of its light that gets
-       away from it (side_openness). */
-    if (rad->params.one_sided_emission == 2 && emits)
-      for (int side = 0; side < 2; side++)
-        if (sides >> side & 1) {
-          s->open[side] = side_openness(rad, s, side);
-          for (int c = 0; c < 3; c++)
-            s->emission[side][c] *= s->open[side];
-        }
     zr_status st = zr__rad_add_root(rad, (int32_t)rad->n_surfs);
     if (st != ZR_OK)
       return st;
     rad->total_area += s->area;
-    double p[3];
-    for (int c = 0; c < 3; c++)
-      p[c] = s->area * (s->emission[0][c] + s->emission[1][c]);
-    rad->power_ref += zr__rad_max3(p);
     rad->n_surfs++;
   }
-  add_energy(rad, e, sides);
   if (clamped)
     zr__diag(ctx, ZR_DIAG_WARNING, ZR_OK, &where,
              "radiosity: diffuse times pigment exceeds 1 and would create "
@@ -628,6 +618,36 @@ zr_status zr__rad_mesh_build(zr_radiosity *rad, zr_context *ctx) {
     return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ESCENE, NULL,
                     "radiosity: the scene has no finite surface to solve "
                     "on (an infinite plane alone has no bounds)");
+  /* With every surface made (res needs the total area): each emitting
+     side shoots the share of its light that gets away from it
+     (side_openness), energy is shared, and the power the thresholds
+     scale by is summed, object by object in the order they came. */
+  double res = 2.0 * sqrt(rad->params.area_eps * rad->total_area);
+  for (size_t k = 0; k < rad->n_objects; k++) {
+    const zr__rad_object_entry *e = &rad->objects[k];
+    /* A textured mesh's copies share the mesh's surfaces. */
+    if (e->count == 0 || rad->surfs[e->first].object != e->object)
+      continue;
+    int sides = emitting_sides(rad, e->object);
+    bool open = rad->params.one_sided_emission == 2 &&
+                finish_emits(e->object);
+    for (uint32_t i = 0; i < e->count; i++) {
+      zr__rad_surface *s = &rad->surfs[e->first + i];
+      for (int side = 0; open && side < 2; side++)
+        if (sides >> side & 1) {
+          s->open[side] = side_openness(rad, s, side, res);
+          for (int c = 0; c < 3; c++) {
+            s->emission[side][c] *= s->open[side];
+            rad->nodes[s->root].b[side][c] = s->emission[side][c];
+          }
+        }
+      double p[3];
+      for (int c = 0; c < 3; c++)
+        p[c] = s->area * (s->emission[0][c] + s->emission[1][c]);
+      rad->power_ref += zr__rad_max3(p);
+    }
+    add_energy(rad, e, sides);
+  }
   qsort(rad->objects, rad->n_objects, sizeof *rad->objects, entry_cmp);
   return ZR_OK;
 }
