@@ -552,8 +552,9 @@ typedef struct zr_radiosity_params {
   /* 2 (default, library and command line alike): a flat object
      (triangle, polygon, disc, mesh ...) emits from both sides and a
      closed one from its outside, each side by the share of its light
-     that gets away from it (the mean of min(1, t / sqrt(area)) over
-     cosine-distributed rays, t the distance to the first surface), so
+     that gets away from it (the mean over cosine-distributed rays of
+     min(1, t / sqrt(area)) for a ray meeting a surface at a distance t
+     below twice the finest cell, else 1), so
      POV-Ray's two-sided emitters light the room whichever way they
      are wound and a lamp hung just under a ceiling does not pour
      light into the gap; 1: only the front side, along the outward
