@@ -556,9 +556,13 @@ static int apply_radiosity(const arg_ctx *c, opt_key key,
       rp->one_sided_emission = 1;
       return 0;
     }
+    if (strcmp(value, "open") == 0) {
+      rp->one_sided_emission = 2;
+      return 0;
+    }
     if (!parse_bool(value, &rp->one_sided_emission))
       return fail(c, "'%s': --one-sided-emission takes 0 or 1 (or on, "
-                     "off)", c->what);
+                     "off), or open", c->what);
     return 0;
   case K_RAD_ONLY:
     o->params.radiosity_only = 1;
@@ -2050,8 +2054,9 @@ const char *zr__cli_usage(void) {
       "  --max-iterations=N           sweeps or shots at most (1000)\n"
       "  --residual=X                 stop below this change (1e-6)\n"
       "  --shooting                   progressive shooting, not gathering\n"
-      "  --one-sided-emission[=0|1]   emit from the front side only\n"
-      "                               (default 1; 0 as POV-Ray shows it)\n"
+      "  --one-sided-emission[=0|1|open]  1: emit from the front only;\n"
+      "                               0: both sides; open (default): the\n"
+      "                               sides light gets away from\n"
       "  --radiosity-only             show the solution alone\n"
       "  --radiosity-stats            key=value statistics on stderr\n"
       "  --radiosity-save=FILE        save the solution\n"

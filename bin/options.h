@@ -160,8 +160,8 @@ int zr__cli_read_povray_ini(zr_cli_options *o, char *err, size_t err_size);
 
 /*
  * Prepares o: zeroes it and copies the render defaults in, with the
- * radiosity defaults of zr_radiosity_params_init() except that emission
- * is one-sided (see zrcube(1), --one-sided-emission).  Parsing may
+ * radiosity defaults of zr_radiosity_params_init() (emission from the
+ * sides it gets away from: zrcube(1), --one-sided-emission).  Parsing may
  * then run over several sources (command line, INI files) in order.
  */
 void zr__cli_init(zr_cli_options *o, const zr_render_params *defaults);

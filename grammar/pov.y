@@ -3067,10 +3067,13 @@ normal_body:
 
 image_map_head:
   image_map_file
-    { TRY($$ = zr__sdl_image_map_new(p, $1, &@1, NULL, NULL)); }
-/* "Image File Gamma": gamma must follow the file name. */
+    { TRY($$ = zr__sdl_image_map_new(p, $1, &@1, NULL, NULL, false)); }
+/* "The Gamma Option": gamma G, or gamma srgb for the sRGB transfer
+   function, must follow the file name. */
 | image_map_file T_GAMMA expr
-    { TRY($$ = zr__sdl_image_map_new(p, $1, &@1, &$3, &@3)); }
+    { TRY($$ = zr__sdl_image_map_new(p, $1, &@1, &$3, &@3, false)); }
+| image_map_file T_GAMMA T_SRGB
+    { TRY($$ = zr__sdl_image_map_new(p, $1, &@1, NULL, &@3, true)); }
 ;
 
 image_map_file:
@@ -3120,9 +3123,20 @@ image_pattern:
 
 image_pattern_body:
   image_map_file
-    { TRY($$ = zr__sdl_bitmap_new(p, "image_pattern", $1, &@1, NULL, NULL)); }
+    {
+      TRY($$ = zr__sdl_bitmap_new(p, "image_pattern", $1, &@1, NULL, NULL,
+                                  false));
+    }
 | image_map_file T_GAMMA expr
-    { TRY($$ = zr__sdl_bitmap_new(p, "image_pattern", $1, &@1, &$3, &@3)); }
+    {
+      TRY($$ = zr__sdl_bitmap_new(p, "image_pattern", $1, &@1, &$3, &@3,
+                                  false));
+    }
+| image_map_file T_GAMMA T_SRGB
+    {
+      TRY($$ = zr__sdl_bitmap_new(p, "image_pattern", $1, &@1, NULL, &@3,
+                                  true));
+    }
 | image_pattern_body T_MAP_TYPE expr
     { TRY(zr__sdl_image_map_mod(p, $1, T_MAP_TYPE, &$3, &@3)); $$ = $1; }
 | image_pattern_body T_ONCE
@@ -3140,12 +3154,20 @@ bump_map_body:
   image_map_file
     {
       TRY($$ = zr__sdl_bump_map_new(
-              p, zr__sdl_bitmap_new(p, "bump_map", $1, &@1, NULL, NULL)));
+              p, zr__sdl_bitmap_new(p, "bump_map", $1, &@1, NULL, NULL,
+                                    false)));
     }
 | image_map_file T_GAMMA expr
     {
       TRY($$ = zr__sdl_bump_map_new(
-              p, zr__sdl_bitmap_new(p, "bump_map", $1, &@1, &$3, &@3)));
+              p, zr__sdl_bitmap_new(p, "bump_map", $1, &@1, &$3, &@3,
+                                    false)));
+    }
+| image_map_file T_GAMMA T_SRGB
+    {
+      TRY($$ = zr__sdl_bump_map_new(
+              p, zr__sdl_bitmap_new(p, "bump_map", $1, &@1, NULL, &@3,
+                                    true)));
     }
 | bump_map_body T_MAP_TYPE expr
     { TRY(zr__sdl_bump_map_mod(p, $1, T_MAP_TYPE, &$3, &@3)); $$ = $1; }
@@ -3166,7 +3188,7 @@ material_map_head:
   image_map_file
     {
       TRY($$ = zr__sdl_bitmap_new(p, "material_map", $1, &@1, NULL,
-                                  NULL));
+                                  NULL, false));
     }
 | material_map_head T_MAP_TYPE expr
     { TRY(zr__sdl_image_map_mod(p, $1, T_MAP_TYPE, &$3, &@3)); $$ = $1; }

@@ -553,11 +553,18 @@ typedef struct zr_radiosity_params {
      visibility is partial, or its source is uneven (per unit area);
      tighter per element, but many more links. */
   zr_rad_criterion criterion;
-  /* 1 (default, library and command line alike): emission leaves
-     only the front side, along the outward normal (for a triangle
-     (p1 - p0) x (p2 - p0)), so a lamp hung just under a ceiling does
-     not pour light into the gap; 0: both sides, as POV-Ray shows an
-     emitting surface from both. */
+  /* 2 (default, library and command line alike): a flat object
+     (triangle, polygon, disc, mesh ...) emits from both sides and a
+     closed one from its outside, each side by the share of its light
+     that gets away from it (the mean over cosine-distributed rays of
+     min(1, t / sqrt(area)) for a ray meeting a surface at a distance t
+     below twice the finest cell, else 1), so
+     POV-Ray's two-sided emitters light the room whichever way they
+     are wound and a lamp hung just under a ceiling does not pour
+     light into the gap; 1: only the front side, along the outward
+     normal (for a triangle (p1 - p0) x (p2 - p0)); 0: both sides at
+     full.  Rays that meet an emitting side see its emission whatever
+     share it shoots. */
   int one_sided_emission;
   /* How a ray hit reads the solution.  ZR_RAD_LOOKUP_GATHER (default):
      a final gather at

@@ -4,7 +4,8 @@
 # codes_as_working): a 4x4 PNG of code 85 without any chunk, as a
 # palette and as RGB, with a gAMA chunk (1/2.2) and with an sRGB chunk,
 # seen with ambient 1 under #version 3.6 and 3.7, assumed_gamma 1 and
-# 2.2.  Each linear value (16-bit PNG output; POV-Ray's with
+# 2.2, as the file says and with "gamma srgb" after the file name ("The
+# Gamma Option": the file is sRGB-encoded, whatever it says).  Each linear value (16-bit PNG output; POV-Ray's with
 # File_Gamma=1, zRcube's sRGB decoded) must be within 0.002 of
 # POV-Ray's.  Skips (77) when povray is not installed.
 #
@@ -51,14 +52,15 @@ def dec(v):
 good = bad = 0
 for version in ('3.6', '3.7'):
     for gamma in ('1', '2.2'):
-        for f in ('pal', 'rgb', 'gama', 'srgb'):
+        for f, mod in [(f, mod) for mod in ('', ' gamma srgb')
+                       for f in ('pal', 'rgb', 'gama', 'srgb')]:
             with open('t.pov', 'w') as out:
                 out.write('#version %s;\nglobal_settings { assumed_gamma %s }\n'
                           'camera { orthographic location <0.5, 0.5, -1> '
                           'look_at <0.5, 0.5, 0> right x up y }\n'
-                          'plane { z, 0 pigment { image_map { png "%s.png" } }'
-                          ' finish { ambient 1 diffuse 0 } }\n'
-                          % (version, gamma, f))
+                          'plane { z, 0 pigment { image_map { png "%s.png"%s '
+                          'once } } finish { ambient 1 diffuse 0 } }\n'
+                          % (version, gamma, f, mod))
             for o in ('p.png', 'z.png'):
                 if os.path.exists(o):
                     os.remove(o)
@@ -68,7 +70,8 @@ for version in ('3.6', '3.7'):
             subprocess.run([zrcube, '+It.pov', '+Oz.png', '+FN16', '+W4',
                             '+H4', '-D', '+WT1'], capture_output=True,
                            timeout=60)
-            label = '#version %s, assumed_gamma %s, %s.png' % (version, gamma, f)
+            label = '#version %s, assumed_gamma %s, %s.png%s' % (
+                version, gamma, f, mod)
             try:
                 pv = ms.read_png16('p.png')[2][2]
                 zv = dec(ms.read_png16('z.png')[2][2])

@@ -9,9 +9,10 @@
 #   - --radiosity-only gives the same bytes as the full render, because
 #     the scene has no light source, highlight or mirror: anything the
 #     shading added (ambient, emission counted twice) would show;
-#   - one-sided emission leaves the front side only: the lamp wound the
-#     other way lights the room less than half as much, unless emission
-#     is two-sided;
+#   - emission leaves the sides it gets away from (the default): the
+#     lamp wound the other way shows its radiance from below and lights
+#     the room as much (within 2%); with --one-sided-emission=1 only the
+#     front emits, and the lamp wound the other way is black from below;
 #   - --radiosity-stats prints the key=value words bench/radiosity.sh
 #     reads;
 #   - a 256x256 +A0.05 +R3 render is within a relative RMSE of 0.2 of
@@ -173,11 +174,14 @@ same rad1.pfm solmpi3.pfm
 run only 0 "$ZRCUBE" cornell.pov $SIZE --radiosity-only +Oonly.pfm
 same rad1.pfm only.pfm
 
-# One-sided emission leaves along the front normal, (p1 - p0) x (p2 - p0)
-# for a triangle: the lamp's triangles face down, and from below it shows
-# its radiance, 30 * <1, 0.67, 0.21>.  Wound the other way it is black
-# from below (the brightest pixel is then the lit room, below 2), unless
-# emission is two-sided.
+# Emission leaves both sides of a flat emitter by default, each by the
+# share of its light that gets away from it: the lamp's back, 0.01 below
+# the ceiling, sends almost nothing.  So the lamp wound the other way
+# (its front normal, (p1 - p0) x (p2 - p0), then facing the ceiling)
+# shows its radiance, 30 * <1, 0.67, 0.21>, from below and lights the
+# room as much as before.  With --one-sided-emission=1 only the front
+# emits: wound the other way it is black from below (the brightest pixel
+# is then the lit room, below 2).
 sed -e 's/<21.3, 54.87, 22.7>, <34.3, 54.87, 22.7>, <34.3, 54.87, 33.2>/<34.3, 54.87, 22.7>, <21.3, 54.87, 22.7>, <34.3, 54.87, 33.2>/' \
     -e 's/<21.3, 54.87, 22.7>, <34.3, 54.87, 33.2>, <21.3, 54.87, 33.2>/<34.3, 54.87, 33.2>, <21.3, 54.87, 22.7>, <21.3, 54.87, 33.2>/' \
     cornell.pov >flipped.pov
@@ -188,8 +192,15 @@ awk -v m="$3" 'BEGIN { exit !(m > 25) }' ||
   fail "lamp facing down: brightest value $3, expected 30"
 run flipped 0 "$ZRCUBE" flipped.pov $SIZE --radiosity-only +Oflipped.pfm
 set -- $(pfm_stats flipped.pfm 64 64)
+awk -v m="$3" 'BEGIN { exit !(m > 25) }' ||
+  fail "lamp facing up: brightest value $3, expected 30"
+awk -v a="$one" -v b="$2" 'BEGIN { exit !(b > 0.98 * a && b < 1.02 * a) }' ||
+  fail "lamp facing up: mean $2, facing down $one (want within 2%)"
+run flipped1 0 "$ZRCUBE" flipped.pov $SIZE --radiosity-only \
+  --one-sided-emission=1 +Oflipped1.pfm
+set -- $(pfm_stats flipped1.pfm 64 64)
 awk -v m="$3" 'BEGIN { exit !(m < 2) }' ||
-  fail "lamp facing up: brightest value $3, expected the lamp black"
+  fail "front only, lamp facing up: brightest value $3, expected black"
 run flipped2 0 "$ZRCUBE" flipped.pov $SIZE --radiosity-only \
   --one-sided-emission=0 +Oflipped2.pfm
 set -- $(pfm_stats flipped2.pfm 64 64)
@@ -310,7 +321,7 @@ bad res "zrcube: '--residual=0': --residual must be a number > 0" \
 bad res2 "zrcube: '--residual=nan': --residual must be a number > 0" \
   --residual=nan
 bad side "zrcube: '--one-sided-emission=2': --one-sided-emission takes 0 \
-or 1 (or on, off)" --one-sided-emission=2
+or 1 (or on, off), or open" --one-sided-emission=2
 bad shoot "zrcube: '--shooting=1': --shooting takes no value" --shooting=1
 bad save "zrcube: '--radiosity-save' needs a value" --radiosity-save
 

@@ -76,7 +76,7 @@ static void test_rad_settings_command_line_overrides(void **state) {
   assert_int_equal(p.visibility_rays, 3); /* the scene's */
   assert_true(p.brightness == 2.0);
   assert_true(p.area_eps == 1e-4);    /* neither: the default */
-  assert_int_equal(p.one_sided_emission, 1); /* the one default */
+  assert_int_equal(p.one_sided_emission, 2); /* the one default */
   zr__cli_free(&o);
 }
 
@@ -160,8 +160,10 @@ static void test_rad_settings_object_keywords_warn_once(void **state) {
 
 /* finish { energy P }: the object emits P in all, whatever its size
    (the closed box's inner and outer sides with two-sided emission),
-   per channel.  Emitted power is summed in doubles over six faces:
-   1e-12 relative. */
+   per channel, and whichever sides it leaves (one_sided_emission 2, the
+   default: shared by openness; a triangle 0.01 under a plate sends
+   almost all of it from its open side).  Emitted power is summed in
+   doubles over six faces: 1e-12 relative. */
 static void test_rad_settings_energy_is_total_power(void **state) {
   fixture *f = *state;
   static const char *const scenes[] = {
@@ -169,9 +171,12 @@ static void test_rad_settings_energy_is_total_power(void **state) {
       "energy <12, 6, 3> } }",
       "box { 0, <10, 20, 30> pigment { rgb 1 } finish { diffuse 0.5 "
       "energy <12, 6, 3> } }",
+      "triangle { <0, 0, 0>, <1, 0, 0>, <0, 0, 1> pigment { rgb 1 } "
+      "finish { diffuse 0 energy <12, 6, 3> } }\n"
+      "box { <-1, 0.01, -1>, <2, 0.02, 2> pigment { rgb 1 } }",
   };
-  for (int one_sided = 0; one_sided < 2; one_sided++)
-    for (int i = 0; i < 2; i++) {
+  for (int one_sided = 0; one_sided < 3; one_sided++)
+    for (int i = 0; i < 3; i++) {
       good(f, scenes[i]);
       zr_radiosity_params p;
       zr_radiosity_params_init(&p, f->scene);
@@ -184,6 +189,19 @@ static void test_rad_settings_energy_is_total_power(void **state) {
       zr_radiosity_get_stats(rad, &st);
       /* The mean of the channels, (12 + 6 + 3) / 3. */
       assert_true(fabs(st.emitted_power - 7.0) <= 7.0 * 1e-12);
+      /* The triangle's front faces down (+y x ... = -y), its back the
+         plate 0.01 above: open sides give the front 7 / 0.5 = 14 per
+         unit area (mean of channels) within 5%, two sides at full half
+         that. */
+      if (i == 2) {
+        zr_rgb below;
+        assert_true(zr__radiosity_radiance(rad, f->scene->primitives[0],
+                                           zr_v3(0.2, 0, 0.2),
+                                           zr_v3(0, 1, 0), &below));
+        double m = M_PI * (below.r + below.g + below.b) / 3.0;
+        double want = one_sided == 0 ? 7.0 : 14.0;
+        assert_true(fabs(m / want - 1.0) < 0.05);
+      }
       zr_radiosity_free(rad);
     }
 }

@@ -488,6 +488,18 @@ static const unsigned char rgb_png[] = {
     0x00, 0x02, 0xcc, 0x01, 0x89, 0x1b, 0x22, 0x39, 0x9f, 0x00, 0x00, 0x00,
     0x00, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82};
 
+/* The same pixel with a gAMA chunk of 1.0: the file says its codes are
+   linear. */
+static const unsigned char linear_png[] = {
+    0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d,
+    0x49, 0x48, 0x44, 0x52, 0x00, 0x00, 0x00, 0x01, 0x00, 0x00, 0x00, 0x01,
+    0x08, 0x02, 0x00, 0x00, 0x00, 0x90, 0x77, 0x53, 0xde, 0x00, 0x00, 0x00,
+    0x04, 0x67, 0x41, 0x4d, 0x41, 0x00, 0x01, 0x86, 0xa0, 0x31, 0xe8, 0x96,
+    0x5f, 0x00, 0x00, 0x00, 0x0c, 0x49, 0x44, 0x41, 0x54, 0x78, 0xda, 0x63,
+    0x68, 0x70, 0x38, 0x01, 0x00, 0x02, 0xcc, 0x01, 0x89, 0x1b, 0x22, 0x39,
+    0x9f, 0x00, 0x00, 0x00, 0x00, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60,
+    0x82};
+
 /* Writes bytes to a fresh file under /tmp and returns its path in buf. */
 static const char *write_file(char *buf, size_t size, const char *name,
                               const unsigned char *bytes, size_t n) {
@@ -631,6 +643,32 @@ static void test_texture_image_map_gamma(void **state) {
   pg = image_pigment(f, rgb, "");
   c = zr__pigment_eval(pg, zr_v3(0.5, 0.5, 0));
   assert_true(fabs(c.r - 0.2158605) < 1e-6);
+  /* "gamma srgb" ("The Gamma Option"): the sRGB transfer function,
+     whatever the file says.  This file says linear (gAMA 1.0), which
+     povray 3.7 and zRcube both show as code 128 = 0.50196 without the
+     keyword and 0.21585 with it (16-bit renders, File_Gamma=1;
+     tests/test_image_gamma_povray.sh compares live).  Items may
+     follow, as in jarOfBonus.inc's "png F gamma srgb map_type 2 once
+     interpolate 2". */
+  char lin[256];
+  write_file(lin, sizeof lin, "lin.png", linear_png, sizeof linear_png);
+  pg = image_pigment(f, lin, "");
+  c = zr__pigment_eval(pg, zr_v3(0.5, 0.5, 0));
+  assert_true(fabs(c.r - 128 / 255.0) < 1e-6);
+  pg = image_pigment(f, lin, "gamma srgb map_type 0 once interpolate 2");
+  c = zr__pigment_eval(pg, zr_v3(0.5, 0.5, 0));
+  assert_true(fabs(c.r - 0.2158605) < 1e-6);
+  assert_true(fabs(c.g - 0.0512695) < 1e-6);
+  assert_true(fabs(c.b - 0.5775804) < 1e-6);
+  /* bump_map takes it too. */
+  snprintf(text, sizeof text, "#version 3.7;\nsphere { 0, 1 normal { "
+           "bump_map { png \"%s\" gamma srgb bump_size 2 } } }", lin);
+  assert_int_equal(parse(f, text), ZR_OK);
+  /* srgb is a keyword there, not a colour: "gamma srgb 0.5" is not. */
+  snprintf(text, sizeof text, "sphere { 0, 1 pigment { image_map { png "
+           "\"%s\" gamma srgb 0.5 } } }", lin);
+  assert_int_not_equal(parse(f, text), ZR_OK);
+  unlink(lin);
   /* A palette image keeps its indices under a gamma. */
   pg = image_pigment(f, pal, "gamma 2 transmit 3, 0.5");
   assert_colour(palette_pixel(pg, 3), 1, 1, 1, 0, 0.5);

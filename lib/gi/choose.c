@@ -177,9 +177,9 @@ ZR_API zr_gi_method zr_gi_choose(const zr_scene *scene, zr_gi_method asked,
       return say(why, size, ZR_GI_CACHE,
                  "it has an object the hierarchical solver does not "
                  "model (%s)", zr__rad_kind_name(o->kind));
-    /* The solver's emitters shine from their front only (one-sided
-       emission, its default and the command line's: zrcube(1)), the
-       outside of a closed object; povray's emission shines both ways.
+    /* The solver's closed emitters shine from their outside only
+       (flat ones from both sides: zrcube(1), --one-sided-emission);
+       povray's emission shines both ways.
        An emitting sky dome or room around the camera then lights
        nothing (measured: a box on a floor under an emitting sphere of
        radius 50, povray's and the cache's pixels 160,170,198, the

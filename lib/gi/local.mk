@@ -37,6 +37,11 @@ EXTRA_DIST += tests/test_gi_fog.sh tests/gi_fog.pov
 # reference), against povray's measured means.
 TESTS += tests/test_gi_room.sh
 EXTRA_DIST += tests/test_gi_room.sh tests/gi_room.pov tests/gi_dome.pov
+# A flat emitter lights the room whichever way its normal points, as
+# povray's do (the hierarchical solver, against the path-traced
+# reference's recorded means).
+TESTS += tests/test_gi_flat.sh
+EXTRA_DIST += tests/test_gi_flat.sh tests/gi_flat.pov
 
 # The path-traced reference: exact furnaces, samples in pieces, and the
 # Cornell box against ../shared/reference's ground truth.

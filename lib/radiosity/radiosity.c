@@ -56,11 +56,13 @@ ZR_API void zr_radiosity_params_init(zr_radiosity_params *p,
   p->brightness = 1.0;
   p->max_mesh_faces = 0;
   p->cluster_surfaces = 64;
-  /* A lamp emits from its front only: with two-sided emission the
-     Cornell box's lamp, hung 0.01 below the ceiling, pours half its
-     power into the gap above it (zrcube(1) explains the choice).  The
-     command line takes this default too (issue 11). */
-  p->one_sided_emission = 1;
+  /* A flat emitter shines from both sides and a closed one from its
+     outside, each side by the share of its light that gets away from
+     it (mesh.c): povray shows emission on both sides, and a lamp hung
+     0.01 below the ceiling (the Cornell box's) sends its back's light
+     into a gap it does not leave (zrcube(1) explains the choice).  The
+     command line takes this default too. */
+  p->one_sided_emission = 2;
   if (scene == NULL)
     return;
   /* The scene's radiosity block (lib/sdl/build_radiosity.c): zRcube's
@@ -103,6 +105,9 @@ static zr_status check_params(zr_context *ctx, const zr_radiosity_params *p) {
     what = "brightness must be a finite number >= 0";
   else if (p->threads < 0)
     what = "threads must be >= 0";
+  else if (p->one_sided_emission < 0 || p->one_sided_emission > 2)
+    what = "one_sided_emission must be 0 (both sides), 1 (front) or 2 "
+           "(open sides)";
   if (what == NULL)
     return ZR_OK;
   return zr__diag(ctx, ZR_DIAG_ERROR, ZR_EINVAL, NULL, "radiosity: %s",
@@ -821,15 +826,16 @@ bool zr__radiosity_radiance(const zr_radiosity *rad, const zr_object *object,
     double h[3];
     final_gather(rad, leaf, side, point, side ? zr_v3_neg(n) : n, h);
     for (int c = 0; c < 3; c++)
-      b[c] = surf->emission[side][c] +
+      b[c] = surf->shown[side][c] +
              rad->params.brightness * surf->rho[c] * h[c];
   } else {
     zr__rad_interpolate(rad, leaf, side, u, v, b);
     /* brightness scales the reflected part only, as in POV-Ray: the
        surface's own emission is constant over it. */
     const double *e = rad->surfs[s].emission[side];
+    const double *shown = rad->surfs[s].shown[side];
     for (int c = 0; c < 3; c++)
-      b[c] = e[c] + rad->params.brightness * (b[c] - e[c]);
+      b[c] = shown[c] + rad->params.brightness * (b[c] - e[c]);
   }
   *out = zr_rgb3(fmax(0.0, b[0]) / M_PI, fmax(0.0, b[1]) / M_PI,
                  fmax(0.0, b[2]) / M_PI);

@@ -109,8 +109,15 @@ typedef struct zr__rad_surface {
      part of, whose other parts trim it; NULL for none (trim.c). */
   const zr_object *trim;
   /* Emitted exitance pi * emission * pigment of the front and back
-     sides (the back is dark with params.one_sided_emission). */
+     sides as the solver shoots it: with params.one_sided_emission 1
+     the back is dark, with 2 (the default) each side's is scaled by the
+     share of its light that leaves it (mesh.c, side_openness). */
   double emission[2][3];
+  /* The exitance a ray that meets the side sees: the finish's emission
+     on every side that emits, unscaled (POV-Ray shows it so). */
+  double shown[2][3];
+  /* The openness of each side (mesh.c), 1 where none was measured. */
+  double open[2];
   double rho[3];      /* reflectance diffuse * pigment */
   int32_t root;
   double area;

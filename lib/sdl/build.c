@@ -931,13 +931,16 @@ zr_status zr__sdl_read_image(zr_sdl_parser *p, const char *name,
 /*
  * "gamma G" after an image_map's file name ("Image File Gamma"): the
  * stored codes are decoded again with linear = code ^ G instead of the
- * transfer the file asks for.  Only PNG, GIF and TGA files keep the
+ * transfer the file asks for; "gamma srgb" (srgb true) decodes them
+ * with the sRGB transfer function ("The Gamma Option": "srgb may be
+ * specified to denote that the file is encoded or pre-corrected using
+ * the sRGB transfer function").  Only PNG, GIF and TGA files keep the
  * codes they store (JPEG and Netpbm codes are re-quantised).
  */
 static bool image_gamma(zr_sdl_parser *p, zr_image *image,
                         const char *what, const char *name, double g,
-                        const zr_sdl_loc *loc) {
-  if (!(g > 0) || !isfinite(g)) {
+                        bool srgb, const zr_sdl_loc *loc) {
+  if (!srgb && (!(g > 0) || !isfinite(g))) {
     zr__sdl_error(p, ZR_ESCENE, loc, "%s gamma %g must be positive", what,
                   g);
     return false;
@@ -948,7 +951,8 @@ static bool image_gamma(zr_sdl_parser *p, zr_image *image,
                   what, name);
     return false;
   }
-  float *table = zr__decode_table(image->maxval, ZR_TRANSFER_POWER, g);
+  float *table = zr__decode_table(
+      image->maxval, srgb ? ZR_TRANSFER_SRGB : ZR_TRANSFER_POWER, g);
   if (!table) {
     zr__sdl_error(p, ZR_ENOMEM, loc, "out of memory");
     return false;
@@ -1032,8 +1036,9 @@ static bool bitmap_values(zr_sdl_parser *p, zr_image_map *im,
 zr_image_map *zr__sdl_image_map_new(zr_sdl_parser *p, const char *name,
                                     const zr_sdl_loc *loc,
                                     const zr_sdl_expr *gamma,
-                                    const zr_sdl_loc *gamma_loc) {
-  return zr__sdl_bitmap_new(p, "image_map", name, loc, gamma, gamma_loc);
+                                    const zr_sdl_loc *gamma_loc, bool srgb) {
+  return zr__sdl_bitmap_new(p, "image_map", name, loc, gamma, gamma_loc,
+                            srgb);
 }
 
 /*
@@ -1230,8 +1235,9 @@ static bool keep_alpha(zr_sdl_parser *p, zr_image_map *im,
 zr_image_map *zr__sdl_bitmap_new(zr_sdl_parser *p, const char *what,
                                  const char *name, const zr_sdl_loc *loc,
                                  const zr_sdl_expr *gamma,
-                                 const zr_sdl_loc *gamma_loc) {
+                                 const zr_sdl_loc *gamma_loc, bool srgb) {
   double g = 0;
+  bool gamma_given = gamma != NULL || srgb;
   if (gamma && !zr__sdl_want_float(p, gamma, gamma_loc, &g))
     return NULL;
   char *path = NULL, *bytes = NULL;
@@ -1252,7 +1258,8 @@ zr_image_map *zr__sdl_bitmap_new(zr_sdl_parser *p, const char *what,
                   what[0] == 'i' ? "an" : "a", what);
     return NULL;
   }
-  if (gamma && !image_gamma(p, image, what, name, g, gamma_loc)) {
+  if (gamma_given &&
+      !image_gamma(p, image, what, name, g, srgb, gamma_loc)) {
     zr_image_free(image);
     return NULL;
   }
@@ -1266,10 +1273,10 @@ zr_image_map *zr__sdl_bitmap_new(zr_sdl_parser *p, const char *what,
   if (ok && (is_image || image->layout != ZR_LAYOUT_FLOAT))
     ok = picture_codes(p, im, image);
   if (ok)
-    ok = is_image ? image_samples(p, im, image, gamma != NULL)
+    ok = is_image ? image_samples(p, im, image, gamma_given)
                   : bitmap_values(p, im, image,
                                   strcmp(what, "material_map") == 0,
-                                  gamma != NULL);
+                                  gamma_given);
   /* An image map's alpha, if the file has any that is not all opaque. */
   if (ok && image->alpha && !opaque(image) &&
       ((is_image && !image->indices) || strcmp(what, "image_pattern") == 0))

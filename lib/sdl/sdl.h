@@ -1211,17 +1211,18 @@ zr_status zr__sdl_read_image(zr_sdl_parser *p, const char *name,
                              const zr_sdl_loc *at, const char *what,
                              char **path, char **bytes, size_t *size);
 /* Reads the picture of an image_map, searched like #include; gamma
-   (NULL: none) is the "gamma G" written after the file name. */
+   (NULL: none) is the "gamma G" written after the file name, srgb true
+   for "gamma srgb" (gamma NULL, gamma_loc the keyword srgb's place). */
 zr_image_map *zr__sdl_image_map_new(zr_sdl_parser *p, const char *name,
                                     const zr_sdl_loc *loc,
                                     const zr_sdl_expr *gamma,
-                                    const zr_sdl_loc *gamma_loc);
+                                    const zr_sdl_loc *gamma_loc, bool srgb);
 /* The same for what ("image_map", "bump_map" or "material_map"), which
    messages name; the last two also get the picture's values. */
 zr_image_map *zr__sdl_bitmap_new(zr_sdl_parser *p, const char *what,
                                  const char *name, const zr_sdl_loc *loc,
                                  const zr_sdl_expr *gamma,
-                                 const zr_sdl_loc *gamma_loc);
+                                 const zr_sdl_loc *gamma_loc, bool srgb);
 bool zr__sdl_image_map_mod(zr_sdl_parser *p, zr_image_map *im, int token,
                            const zr_sdl_expr *e, const zr_sdl_loc *loc);
 /* bump_map { } (build_texture.c): a fresh normal holding the picture,
