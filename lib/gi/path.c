@@ -280,20 +280,16 @@ ZR_API void zr_path_params_init(zr_path_params *p) {
   p->light_sampling = 1;
 }
 
-/* Whether the scene has something that acts along a gathering ray
-   between two surfaces, which a sampled segment to an emitter would
-   skip: media, when the radiosity block has media on (fog and rainbows
-   never act on gathering rays). */
-static bool has_atmosphere(const zr_scene *scene) {
-  return zr__rad_media_counts(scene);
-}
-
 static zr_status collect_emitters(zr_path *pt) {
   const zr_scene *scene = pt->scene;
   size_t n = 0;
   for (size_t i = 0; i < scene->n_primitives; i++)
     n += samplable(scene->primitives[i]);
-  if (n == 0 || !pt->params.light_sampling || has_atmosphere(scene))
+  /* No sampled segments to emitters where something acts along a
+     gathering ray between two surfaces, which such a segment would
+     skip: media, when the radiosity block has media on (fog and
+     rainbows never act on gathering rays). */
+  if (n == 0 || !pt->params.light_sampling || zr__rad_media_counts(scene))
     return ZR_OK;
   pt->emitters = calloc(n, sizeof *pt->emitters);
   if (!pt->emitters)
