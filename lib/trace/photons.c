@@ -1042,25 +1042,50 @@ static zr_rgb estimate(const heap *h, zr_vec3 n, double brilliance,
   return zr_rgb_scale(sum, 1.0 / (M_PI * r * r));
 }
 
+/* The room a gather of up to cap photons works in: on the stack up to
+   NEAREST_STACK photons, else on the heap. */
+enum { NEAREST_STACK = 256 };
+typedef struct nearest {
+  const photon *ph_stack[NEAREST_STACK];
+  float d2_stack[NEAREST_STACK];
+  const photon **ph;
+  float *d2;
+  int cap;
+} nearest;
+
+/* False when out of memory (nothing to free then). */
+static bool nearest_init(nearest *b, int cap) {
+  b->cap = cap;
+  b->ph = b->ph_stack;
+  b->d2 = b->d2_stack;
+  if (cap <= NEAREST_STACK)
+    return true;
+  b->ph = malloc((size_t)cap * sizeof *b->ph);
+  b->d2 = malloc((size_t)cap * sizeof *b->d2);
+  if (b->ph && b->d2)
+    return true;
+  free(b->ph);
+  free(b->d2);
+  return false;
+}
+
+static void nearest_free(nearest *b) {
+  if (b->ph != b->ph_stack) {
+    free(b->ph);
+    free(b->d2);
+  }
+}
+
 zr_rgb zr__photons_gather(const zr_photon_map *m, zr_vec3 p, zr_vec3 n,
                           double brilliance) {
   if (!m || m->n == 0)
     return zr_rgb3(0, 0, 0);
-  enum { STACK = 256 };
-  const photon *ph_stack[STACK];
-  float d2_stack[STACK];
-  const photon **ph = ph_stack;
-  float *d2 = d2_stack;
-  int cap = m->gather_max;
-  if (cap > STACK) {
-    ph = malloc((size_t)cap * sizeof *ph);
-    d2 = malloc((size_t)cap * sizeof *d2);
-    if (!ph || !d2) {
-      free(ph == ph_stack ? NULL : ph);
-      free(d2 == d2_stack ? NULL : d2);
-      return zr_rgb3(0, 0, 0);
-    }
-  }
+  nearest b;
+  if (!nearest_init(&b, m->gather_max))
+    return zr_rgb3(0, 0, 0);
+  int cap = b.cap;
+  const photon **ph = b.ph;
+  float *d2 = b.d2;
   float q[3] = {(float)p.x, (float)p.y, (float)p.z};
   float nf[3] = {(float)n.x, (float)n.y, (float)n.z};
   heap h;
@@ -1086,10 +1111,7 @@ zr_rgb zr__photons_gather(const zr_photon_map *m, zr_vec3 p, zr_vec3 n,
     e = e2;
     found = found2;
   }
-  if (ph != ph_stack) {
-    free(ph);
-    free(d2);
-  }
+  nearest_free(&b);
   return e;
 }
 
@@ -1122,21 +1144,12 @@ zr_rgb zr__photons_media_light(const zr_photon_map *map, zr_vec3 p,
       collects = true;
   if (!collects)
     return out;
-  enum { STACK = 256 };
-  const photon *ph_stack[STACK];
-  float d2_stack[STACK];
-  const photon **ph = ph_stack;
-  float *d2 = d2_stack;
-  int cap = m->gather_max;
-  if (cap > STACK) {
-    ph = malloc((size_t)cap * sizeof *ph);
-    d2 = malloc((size_t)cap * sizeof *d2);
-    if (!ph || !d2) {
-      free(ph == ph_stack ? NULL : ph);
-      free(d2 == d2_stack ? NULL : d2);
-      return out;
-    }
-  }
+  nearest b;
+  if (!nearest_init(&b, m->gather_max))
+    return out;
+  int cap = b.cap;
+  const photon **ph = b.ph;
+  float *d2 = b.d2;
   float q[3] = {(float)p.x, (float)p.y, (float)p.z};
   heap h;
   int found = gather(m, q, NULL, m->radius, cap, ph, d2, &h);
@@ -1160,9 +1173,6 @@ zr_rgb zr__photons_media_light(const zr_photon_map *map, zr_vec3 p,
       out = zr_rgb_add(out, zr_rgb_scale(zr_rgb_mul(sc, sum), 1.0 / volume));
     }
   }
-  if (ph != ph_stack) {
-    free(ph);
-    free(d2);
-  }
+  nearest_free(&b);
   return out;
 }
