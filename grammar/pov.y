@@ -209,6 +209,8 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
   zr_transform *transform;
   zr_sdl_tblock *tblock;
   zr_sdl_fractal_head fractal;
+  zr_sdl_bitmap_file bitmap;
+  zr_sdl_bitmap_mod bmod;
   const zr_fn *fn;
   zr_pigment *pigment;
   zr_sdl_pmod pmod;
@@ -825,8 +827,10 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %type <pmod> pattern_mod warp_body warp_item
 %type <cmap> colour_map colour_map_head colour_map_body
 %type <normal> normal normal_start normal_body bump_map_body
-%type <imap> image_map_head image_map_body material_map_head
+%type <imap> image_map_body material_map_head
 %type <imap> image_pattern image_pattern_body
+%type <bitmap> bitmap_file
+%type <bmod> bitmap_mod
 %type <finish> finish finish_head finish_body irid_body
 %type <refl> reflection
 %type <texture> texture texture_start texture_body layered_texture
@@ -3065,15 +3069,38 @@ normal_body:
 
 /* ---- image maps (reference manual, "Image Map") ---- */
 
-image_map_head:
+/* FILE, then "gamma G" or "gamma srgb" if any ("The Gamma Option": it
+   must follow the file name): the head of image_map, bump_map and
+   image_pattern. */
+bitmap_file:
   image_map_file
-    { TRY($$ = zr__sdl_image_map_new(p, $1, &@1, NULL, NULL, false)); }
-/* "The Gamma Option": gamma G, or gamma srgb for the sRGB transfer
-   function, must follow the file name. */
+    { $$ = (zr_sdl_bitmap_file){.name = $1, .loc = @1}; }
 | image_map_file T_GAMMA expr
-    { TRY($$ = zr__sdl_image_map_new(p, $1, &@1, &$3, &@3, false)); }
+    {
+      $$ = (zr_sdl_bitmap_file){.name = $1, .loc = @1, .gamma = $3,
+                                .has_gamma = true, .gamma_loc = @3};
+    }
 | image_map_file T_GAMMA T_SRGB
-    { TRY($$ = zr__sdl_image_map_new(p, $1, &@1, NULL, &@3, true)); }
+    {
+      $$ = (zr_sdl_bitmap_file){.name = $1, .loc = @1, .srgb = true,
+                                .gamma_loc = @3};
+    }
+;
+
+/* The items every bitmap takes ("Specifying an Image Map"): map_type N,
+   once, interpolate N. */
+bitmap_mod:
+  T_MAP_TYPE expr
+    {
+      $$ = (zr_sdl_bitmap_mod){.token = T_MAP_TYPE, .value = $2,
+                               .has_value = true, .loc = @2};
+    }
+| T_ONCE { $$ = (zr_sdl_bitmap_mod){.token = T_ONCE, .loc = @1}; }
+| T_INTERPOLATE expr
+    {
+      $$ = (zr_sdl_bitmap_mod){.token = T_INTERPOLATE, .value = $2,
+                               .has_value = true, .loc = @2};
+    }
 ;
 
 image_map_file:
@@ -3091,13 +3118,13 @@ image_map_file:
 ;
 
 image_map_body:
-  image_map_head
-| image_map_body T_MAP_TYPE expr
-    { TRY(zr__sdl_image_map_mod(p, $1, T_MAP_TYPE, &$3, &@3)); $$ = $1; }
-| image_map_body T_ONCE
-    { TRY(zr__sdl_image_map_mod(p, $1, T_ONCE, NULL, &@2)); $$ = $1; }
-| image_map_body T_INTERPOLATE expr
-    { TRY(zr__sdl_image_map_mod(p, $1, T_INTERPOLATE, &$3, &@3)); $$ = $1; }
+  bitmap_file { TRY($$ = zr__sdl_bitmap_new(p, "image_map", &$1)); }
+| image_map_body bitmap_mod
+    {
+      const zr_sdl_expr *v = $2.has_value ? &$2.value : NULL;
+      TRY(zr__sdl_image_map_mod(p, $1, $2.token, v, &$2.loc));
+      $$ = $1;
+    }
 | image_map_body T_FILTER T_ALL expr
     { TRY(zr__sdl_image_map_mod(p, $1, T_FILTER, &$4, &@4)); $$ = $1; }
 | image_map_body T_TRANSMIT T_ALL expr
@@ -3122,27 +3149,13 @@ image_pattern:
 ;
 
 image_pattern_body:
-  image_map_file
+  bitmap_file { TRY($$ = zr__sdl_bitmap_new(p, "image_pattern", &$1)); }
+| image_pattern_body bitmap_mod
     {
-      TRY($$ = zr__sdl_bitmap_new(p, "image_pattern", $1, &@1, NULL, NULL,
-                                  false));
+      const zr_sdl_expr *v = $2.has_value ? &$2.value : NULL;
+      TRY(zr__sdl_image_map_mod(p, $1, $2.token, v, &$2.loc));
+      $$ = $1;
     }
-| image_map_file T_GAMMA expr
-    {
-      TRY($$ = zr__sdl_bitmap_new(p, "image_pattern", $1, &@1, &$3, &@3,
-                                  false));
-    }
-| image_map_file T_GAMMA T_SRGB
-    {
-      TRY($$ = zr__sdl_bitmap_new(p, "image_pattern", $1, &@1, NULL, &@3,
-                                  true));
-    }
-| image_pattern_body T_MAP_TYPE expr
-    { TRY(zr__sdl_image_map_mod(p, $1, T_MAP_TYPE, &$3, &@3)); $$ = $1; }
-| image_pattern_body T_ONCE
-    { TRY(zr__sdl_image_map_mod(p, $1, T_ONCE, NULL, &@2)); $$ = $1; }
-| image_pattern_body T_INTERPOLATE expr
-    { TRY(zr__sdl_image_map_mod(p, $1, T_INTERPOLATE, &$3, &@3)); $$ = $1; }
 /* use_alpha: the value is 1 - alpha, 0 where the file has no alpha
    (measured: tests/test_image_pattern.sh). */
 | image_pattern_body T_USE_ALPHA
@@ -3151,30 +3164,17 @@ image_pattern_body:
 
 /* bump_map { FILE [gamma G] ITEMS } ("Bump Map"), build_texture.c. */
 bump_map_body:
-  image_map_file
+  bitmap_file
     {
-      TRY($$ = zr__sdl_bump_map_new(
-              p, zr__sdl_bitmap_new(p, "bump_map", $1, &@1, NULL, NULL,
-                                    false)));
+      TRY($$ = zr__sdl_bump_map_new(p,
+                                    zr__sdl_bitmap_new(p, "bump_map", &$1)));
     }
-| image_map_file T_GAMMA expr
+| bump_map_body bitmap_mod
     {
-      TRY($$ = zr__sdl_bump_map_new(
-              p, zr__sdl_bitmap_new(p, "bump_map", $1, &@1, &$3, &@3,
-                                    false)));
+      const zr_sdl_expr *v = $2.has_value ? &$2.value : NULL;
+      TRY(zr__sdl_bump_map_mod(p, $1, $2.token, v, &$2.loc));
+      $$ = $1;
     }
-| image_map_file T_GAMMA T_SRGB
-    {
-      TRY($$ = zr__sdl_bump_map_new(
-              p, zr__sdl_bitmap_new(p, "bump_map", $1, &@1, NULL, &@3,
-                                    true)));
-    }
-| bump_map_body T_MAP_TYPE expr
-    { TRY(zr__sdl_bump_map_mod(p, $1, T_MAP_TYPE, &$3, &@3)); $$ = $1; }
-| bump_map_body T_ONCE
-    { TRY(zr__sdl_bump_map_mod(p, $1, T_ONCE, NULL, &@2)); $$ = $1; }
-| bump_map_body T_INTERPOLATE expr
-    { TRY(zr__sdl_bump_map_mod(p, $1, T_INTERPOLATE, &$3, &@3)); $$ = $1; }
 | bump_map_body T_USE_INDEX
     { TRY(zr__sdl_bump_map_mod(p, $1, T_USE_INDEX, NULL, &@2)); $$ = $1; }
 | bump_map_body T_USE_COLOR
@@ -3187,15 +3187,15 @@ bump_map_body:
 material_map_head:
   image_map_file
     {
-      TRY($$ = zr__sdl_bitmap_new(p, "material_map", $1, &@1, NULL,
-                                  NULL, false));
+      zr_sdl_bitmap_file f = {.name = $1, .loc = @1};
+      TRY($$ = zr__sdl_bitmap_new(p, "material_map", &f));
     }
-| material_map_head T_MAP_TYPE expr
-    { TRY(zr__sdl_image_map_mod(p, $1, T_MAP_TYPE, &$3, &@3)); $$ = $1; }
-| material_map_head T_ONCE
-    { TRY(zr__sdl_image_map_mod(p, $1, T_ONCE, NULL, &@2)); $$ = $1; }
-| material_map_head T_INTERPOLATE expr
-    { TRY(zr__sdl_image_map_mod(p, $1, T_INTERPOLATE, &$3, &@3)); $$ = $1; }
+| material_map_head bitmap_mod
+    {
+      const zr_sdl_expr *v = $2.has_value ? &$2.value : NULL;
+      TRY(zr__sdl_image_map_mod(p, $1, $2.token, v, &$2.loc));
+      $$ = $1;
+    }
 ;
 
 /* Any number of textures, indexed from 0. */

@@ -1033,14 +1033,6 @@ static bool bitmap_values(zr_sdl_parser *p, zr_image_map *im,
   return true;
 }
 
-zr_image_map *zr__sdl_image_map_new(zr_sdl_parser *p, const char *name,
-                                    const zr_sdl_loc *loc,
-                                    const zr_sdl_expr *gamma,
-                                    const zr_sdl_loc *gamma_loc, bool srgb) {
-  return zr__sdl_bitmap_new(p, "image_map", name, loc, gamma, gamma_loc,
-                            srgb);
-}
-
 /*
  * An image_map's colours are light as its file says ("Image File
  * Gamma"), while scene colours live in the assumed_gamma space, so under
@@ -1233,12 +1225,13 @@ static bool keep_alpha(zr_sdl_parser *p, zr_image_map *im,
 }
 
 zr_image_map *zr__sdl_bitmap_new(zr_sdl_parser *p, const char *what,
-                                 const char *name, const zr_sdl_loc *loc,
-                                 const zr_sdl_expr *gamma,
-                                 const zr_sdl_loc *gamma_loc, bool srgb) {
+                                 const zr_sdl_bitmap_file *file) {
+  const char *name = file->name;
+  const zr_sdl_loc *loc = &file->loc, *gamma_loc = &file->gamma_loc;
+  bool srgb = file->srgb, gamma_given = file->has_gamma || srgb;
   double g = 0;
-  bool gamma_given = gamma != NULL || srgb;
-  if (gamma && !zr__sdl_want_float(p, gamma, gamma_loc, &g))
+  if (file->has_gamma &&
+      !zr__sdl_want_float(p, &file->gamma, gamma_loc, &g))
     return NULL;
   char *path = NULL, *bytes = NULL;
   size_t size = 0;

@@ -1210,19 +1210,29 @@ bool zr__sdl_material_transform(zr_sdl_parser *p, zr_sdl_material *m,
 zr_status zr__sdl_read_image(zr_sdl_parser *p, const char *name,
                              const zr_sdl_loc *at, const char *what,
                              char **path, char **bytes, size_t *size);
-/* Reads the picture of an image_map, searched like #include; gamma
-   (NULL: none) is the "gamma G" written after the file name, srgb true
-   for "gamma srgb" (gamma NULL, gamma_loc the keyword srgb's place). */
-zr_image_map *zr__sdl_image_map_new(zr_sdl_parser *p, const char *name,
-                                    const zr_sdl_loc *loc,
-                                    const zr_sdl_expr *gamma,
-                                    const zr_sdl_loc *gamma_loc, bool srgb);
-/* The same for what ("image_map", "bump_map" or "material_map"), which
-   messages name; the last two also get the picture's values. */
+/* A bitmap's file as written (grammar/pov.y bitmap_file): its name, and
+   "gamma G" (has_gamma, gamma) or "gamma srgb" (srgb) after it, gamma_loc
+   the value's or the keyword srgb's place. */
+typedef struct zr_sdl_bitmap_file {
+  const char *name;
+  zr_sdl_loc loc;
+  zr_sdl_expr gamma;
+  bool has_gamma, srgb;
+  zr_sdl_loc gamma_loc;
+} zr_sdl_bitmap_file;
+/* An item every bitmap takes: token T_MAP_TYPE or T_INTERPOLATE with its
+   value, or T_ONCE (has_value false); loc the value's or once's place. */
+typedef struct zr_sdl_bitmap_mod {
+  int token;
+  zr_sdl_expr value;
+  bool has_value;
+  zr_sdl_loc loc;
+} zr_sdl_bitmap_mod;
+/* Reads the picture of what ("image_map", "bump_map", "image_pattern" or
+   "material_map", which messages name), searched like #include; all but
+   an image_map also get the picture's values. */
 zr_image_map *zr__sdl_bitmap_new(zr_sdl_parser *p, const char *what,
-                                 const char *name, const zr_sdl_loc *loc,
-                                 const zr_sdl_expr *gamma,
-                                 const zr_sdl_loc *gamma_loc, bool srgb);
+                                 const zr_sdl_bitmap_file *file);
 bool zr__sdl_image_map_mod(zr_sdl_parser *p, zr_image_map *im, int token,
                            const zr_sdl_expr *e, const zr_sdl_loc *loc);
 /* bump_map { } (build_texture.c): a fresh normal holding the picture,
