@@ -111,6 +111,11 @@ typedef struct diag_state {
   FILE **files;        /* ZR_CLI_STREAMS files, NULL: none */
   int last_stream;     /* where a note goes: with its message */
   progress_state *progress; /* a message first clears its line */
+  /* The first error the console did not show (-GF or -GA): a failed
+     run still tells why (main), as povray -GA still prints its fatal
+     error. */
+  char hidden_error[2048];
+  int capturing; /* the first error's text is still coming */
 } diag_state;
 
 /* Clears the terminal's progress line so a message starts clean. */
@@ -132,6 +137,10 @@ static void emit(diag_state *st, int stream, const char *text) {
   if (console) {
     clear_progress_line(st->progress);
     fputs(text, stderr);
+  } else if (stream == ZR_CLI_STREAM_FATAL && st->capturing) {
+    size_t used = strlen(st->hidden_error);
+    snprintf(st->hidden_error + used, sizeof st->hidden_error - used, "%s",
+             text);
   }
   if (st->files && st->files[stream]) {
     fputs(text, st->files[stream]);
@@ -168,6 +177,8 @@ static void print_diag(const zr_diag *d, void *user) {
     }
     return;
   }
+  if (d->level == ZR_DIAG_ERROR)
+    st->capturing = st->errors_printed == 0;
   int stream = d->level == ZR_DIAG_ERROR     ? ZR_CLI_STREAM_FATAL
                : d->level == ZR_DIAG_WARNING ? ZR_CLI_STREAM_WARNING
                : d->level == ZR_DIAG_DEBUG   ? ZR_CLI_STREAM_DEBUG
@@ -1793,6 +1804,8 @@ int main(int argc, char **argv) {
         break;
       }
       local = run_frame(&r, &r.frames[i]);
+      if (local >= 0 && r.diag.hidden_error[0])
+        fputs(r.diag.hidden_error, stderr);
       end_frame(&r);
     }
     r.par = r.world;

@@ -257,6 +257,19 @@ expect_once warn "warn.pov:3:29: warning:"
 serial warn_quiet 0 "$ZRCUBE" warn.pov $SIZE -q
 [ -s warn_quiet.err ] && fail "warn_quiet: --quiet still printed"
 
+# ---- with the fatal stream off (-GF, -GA) a failed run still says why --
+
+# povray -GA still prints its fatal error; zrcube printed nothing and
+# left with status 1 (session 22).
+printf 'camera { location <0, 1, -4> look_at 0 }\n  foo\n' >ga.pov
+serial ga fail "$ZRCUBE" ga.pov $SIZE -GA
+expect ga "ga.pov:2:3: error: undefined identifier 'foo'"
+serial gf fail "$ZRCUBE" ga.pov $SIZE -GF +GFga.log
+expect gf "ga.pov:2:3: error: undefined identifier 'foo'"
+grep -q -F "ga.pov:2:3: error" ga.log || fail "gf: +GFga.log lacks the error"
+serial ga_ok 0 "$ZRCUBE" warn.pov $SIZE -GA
+[ -s ga_ok.err ] && fail "ga_ok: -GA printed on a run that succeeded"
+
 # ---- ranks parse at once; one that read other bytes gets rank 0's -----
 
 # Rank 0 alone writes gen.inc, blue over the red left there, then
