@@ -9,7 +9,8 @@
 # pixels, in front of a green plane).  The tree before this test dropped
 # alpha when it read a PNG: cases 1-8 failed (the picture opaque).
 # Cases 10-12: image_pattern's use_alpha, whose value is 1 - alpha
-# (povray's grey 0 where opaque, 255 where clear).
+# (povray's grey 0 where opaque, 255 where clear).  Cases 13-17: 32-bit
+# TGA and BMP files, whose fourth byte povray reads as straight alpha.
 #
 # Environment: ZR_SRCDIR, ZR_BUILDDIR (set by `make check`).
 set -u
@@ -40,6 +41,28 @@ ga = [[(0, 65535), (30000, 40000), (65535, 0), (50000, 65535)],
       [(10000, 20000), (65535, 65535), (0, 0), (40000, 30000)]]
 png("grey16.png", 4, 2, 4, 16,
     b"".join(b"\0" + b"".join(struct.pack(">HH", *px) for px in r) for r in ga))
+# The same RGBA pixels as 32-bit TGA and BMP files (rows bottom up,
+# blue, green, red, alpha); the TGA's descriptor says 8 alpha bits, the
+# second one's says none (povray reads the byte as alpha all the same).
+# Then all-clear ones: every alpha byte 0.
+def tga(name, desc, px):
+    hdr = struct.pack("<BBBHHBHHHHBB", 0, 0, 2, 0, 0, 0, 0, 0, 4, 2, 32, desc)
+    open(name, "wb").write(hdr + bytes(v for r in px[::-1]
+                                       for (R, G, B, A) in r
+                                       for v in (B, G, R, A)))
+def bmp(name, px):
+    pix = bytes(v for r in px[::-1] for (R, G, B, A) in r for v in (B, G, R, A))
+    dib = struct.pack("<IiiHHIIiiII", 40, 4, 2, 1, 32, 0, len(pix), 2835,
+                      2835, 0, 0)
+    off = 14 + len(dib)
+    open(name, "wb").write(b"BM" + struct.pack("<IHHI", off + len(pix), 0, 0,
+                                               off) + dib + pix)
+tga("alpha.tga", 8, rgba)
+tga("noattr.tga", 0, rgba)
+bmp("alpha.bmp", rgba)
+clear = [[(R, G, B, 0) for (R, G, B, A) in r] for r in rgba]
+tga("clear.tga", 0, clear)
+bmp("clear.bmp", clear)
 PY
 pixel_w=16
 pixel_h=8
@@ -55,5 +78,19 @@ recorded_9="226,97,69 69,234,69 69,97,226 226,234,226 226,234,226 69,97,226 69,2
 recorded_10="0,0,0 187,187,187 255,255,255 224,224,224 128,128,128 241,241,241 0,0,0 187,187,187"
 recorded_11="0,0,0 205,205,205 255,255,255 0,0,0 0,0,0 255,255,255 205,205,205 0,0,0"
 recorded_12="0,0,0 168,168,168 255,255,255 0,0,0 217,217,217 0,0,0 255,255,255 194,194,194"
-pixel_cases image_alpha.pov K "1 2 3 4 5 6 7 8 9 10 11 12" \
+# 13-17: 32-bit TGA and BMP (the tree before session 22 read them
+# opaque), all-clear ones too (povray's picture is the green plane).
+recorded_13=$recorded_1
+recorded_14=$recorded_1
+recorded_15=$recorded_1
+recorded_16="124,170,124 124,170,124 124,170,124 124,170,124 124,170,124 124,170,124 124,170,124 124,170,124"
+recorded_17=$recorded_16
+pixel_cases image_alpha.pov K "1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17" \
   "1,1 1,5 1,9 1,13 5,1 5,5 5,9 5,13"
+status=$?
+# An all-clear picture is warned about where it is named.
+"$zrcube" +Iimage_alpha.pov +W16 +H8 -A +WT1 -D Declare=K=17 \
+  +Oclear.png 2>clear.err
+grep -q 'image_alpha.pov:[0-9]*:[0-9]*: warning: every pixel of .clear.bmp. has alpha 0' clear.err ||
+  { echo "FAIL: no located warning for clear.bmp"; cat clear.err; status=1; }
+exit $status

@@ -21,9 +21,14 @@
  * (for RLE4 two alternating indices), or 0 then 0 end of line, 1 end of
  * bitmap, 2 dx dy a jump, n >= 3 literal indices padded to a word.
  * Pixels a jump skips or a short stream leaves are index 0, as Windows
- * draws them.  Colours are sRGB, like every 8-bit format here.  Alpha
- * and colour profiles are not read.  A colour-mapped image keeps its
- * indices for image_map's per-index filter and transmit.
+ * draws them.  Colours are sRGB, like every 8-bit format here.  A
+ * 32-bit pixel's fourth byte (or, with bit fields in a header of 56
+ * bytes or more, its alpha mask) is its straight alpha, as POV-Ray 3.7
+ * reads it ("Using the Alpha Channel": "TGA and BMP 32-bit RGBA will use
+ * straight alpha"; its renders take the byte as alpha even where every
+ * one is 0, tests/test_image_alpha.sh).  Colour profiles are not read.
+ * A colour-mapped image keeps its indices for image_map's per-index
+ * filter and transmit.
  */
 #include <stdbool.h>
 #include <stdint.h>
@@ -85,7 +90,7 @@ typedef struct bmp_info {
   unsigned bits, compression;
   const unsigned char *palette;
   size_t palette_entries, entry_size;
-  channel_mask masks[3];
+  channel_mask masks[4]; /* red, green, blue, alpha (none: 16 bits) */
   size_t data;
 } bmp_info;
 
@@ -134,6 +139,9 @@ static zr_status read_header(zr_context *ctx, const char *name,
       return bad(ctx, name, "truncated BMP file (bit fields)");
     for (int c = 0; c < 3; c++)
       bi->masks[c] = mask_of(le32(b + at + 4 * (size_t)c));
+    /* V3 and later headers hold an alpha mask after the three. */
+    if (bits == 32 && size >= 56)
+      bi->masks[3] = mask_of(le32(b + at + 12));
     if (size == 40)
       after += 12;
   } else if (bits == 16) {
@@ -144,6 +152,7 @@ static zr_status read_header(zr_context *ctx, const char *name,
     bi->masks[0] = mask_of(0x00ff0000);
     bi->masks[1] = mask_of(0x0000ff00);
     bi->masks[2] = mask_of(0x000000ff);
+    bi->masks[3] = mask_of(0xff000000);
   }
   if (bits <= 8) {
     size_t used = size >= 40 ? le32(b + 46) : 0;
@@ -210,19 +219,23 @@ static bool decode_rle(const unsigned char *p, size_t n, const bmp_info *bi,
   return true; /* a stream without its end code: the rest is index 0 */
 }
 
-/* The colour (0 .. 255 codes) of stored pixel x of a direct row. */
+/* The colour and alpha (0 .. 255 codes; alpha 255 without a mask) of
+   stored pixel x of a direct row. */
 static void direct_colour(const unsigned char *row, size_t x,
-                          const bmp_info *bi, unsigned rgb[3]) {
+                          const bmp_info *bi, unsigned rgba[4]) {
+  rgba[3] = 255;
   if (bi->bits == 24) {
     const unsigned char *p = row + 3 * x;
-    rgb[0] = p[2];
-    rgb[1] = p[1];
-    rgb[2] = p[0];
+    rgba[0] = p[2];
+    rgba[1] = p[1];
+    rgba[2] = p[0];
     return;
   }
   uint32_t px = bi->bits == 16 ? le16(row + 2 * x) : le32(row + 4 * x);
   for (int c = 0; c < 3; c++)
-    rgb[c] = channel_value(px, bi->masks[c]);
+    rgba[c] = channel_value(px, bi->masks[c]);
+  if (bi->masks[3].bits)
+    rgba[3] = channel_value(px, bi->masks[3]);
 }
 
 static unsigned packed_index(const unsigned char *row, size_t x,
@@ -260,8 +273,10 @@ zr_status zr__bmp_decode(zr_context *ctx, const char *name,
     image->indices = malloc(w * h);
     image->palette_size = (int)bi.palette_entries;
   }
+  bool alpha = !mapped && bi.masks[3].bits;
   if (!table || !image->codes || (mapped && !image->indices) ||
-      (rle && !rle_indices)) {
+      (rle && !rle_indices) ||
+      (alpha && zr_image_add_alpha(image) != ZR_OK)) {
     free(table);
     free(rle_indices);
     zr_image_free(image);
@@ -279,7 +294,7 @@ zr_status zr__bmp_decode(zr_context *ctx, const char *name,
     size_t y = bi.top_down ? r : h - 1 - r;
     const unsigned char *row = rle ? NULL : b + bi.data + r * stride;
     for (size_t x = 0; x < w; x++) {
-      unsigned rgb[3];
+      unsigned rgb[4];
       size_t at = y * w + x;
       if (mapped) {
         unsigned k = rle ? rle_indices[r * w + x]
@@ -296,6 +311,8 @@ zr_status zr__bmp_decode(zr_context *ctx, const char *name,
         }
       } else {
         direct_colour(row, x, &bi, rgb);
+        if (alpha)
+          image->alpha[at] = (float)(rgb[3] / 255.0);
       }
       for (int c = 0; c < 3; c++) {
         ((unsigned char *)image->codes)[3 * at + c] = (unsigned char)rgb[c];

@@ -14,8 +14,12 @@
  *     header byte's top bit says run (one pixel, repeated) or raw, and
  *     whose low 7 bits + 1 count the pixels; packets may cross rows.
  * Colours are sRGB like every 8-bit format here; five-bit samples are
- * widened to eight (v * 255 / 31).  Alpha is not read: image_map takes
- * transparency from filter and transmit.  A colour-mapped image keeps
+ * widened to eight (v * 255 / 31).  A 32-bit true colour pixel's
+ * fourth byte is its straight alpha, whatever the descriptor's
+ * attribute bits say, as POV-Ray 3.7 reads it ("Using the Alpha
+ * Channel"; its renders take the byte as alpha even where the
+ * descriptor says none or every byte is 0: tests/test_image_alpha.sh).
+ * A colour-mapped image keeps
  * its indices (for image_map's per-index filter and transmit and for
  * height fields) when its map has at most 256 entries.  The footer and
  * extension area of version 2 files are ignored.
@@ -114,6 +118,12 @@ zr_status zr__tga_decode(zr_context *ctx, const char *name,
   if (s != ZR_OK)
     return s;
   image->stored_codes = true;
+  bool alpha = base == 2 && depth == 32;
+  if (alpha && zr_image_add_alpha(image) != ZR_OK) {
+    zr_image_free(image);
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s", name,
+                    zr_status_str(ZR_ENOMEM));
+  }
   if (keep_indices) {
     image->palette_size = (int)(cmap_first + cmap_len);
     for (unsigned k = cmap_first; k < cmap_first + cmap_len; k++) {
@@ -186,6 +196,8 @@ zr_status zr__tga_decode(zr_context *ctx, const char *name,
     else
       for (int ch = 0; ch < 3; ch++)
         zr__image_set_code(image, 3 * at + ch, rgb[ch]);
+    if (alpha)
+      image->alpha[at] = (float)(px[3] / 255.0);
     done++;
   }
   if (done < count) {

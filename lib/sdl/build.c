@@ -1213,6 +1213,16 @@ static bool opaque(const zr_image *image) {
   return true;
 }
 
+/* Every pixel clear (alpha 0): a 32-bit BMP or TGA whose writer left
+   the fourth byte 0 is read so, as POV-Ray 3.7 reads it. */
+static bool clear(const zr_image *image) {
+  size_t n = (size_t)image->width * (size_t)image->height;
+  for (size_t i = 0; i < n; i++)
+    if (image->alpha[i] > 0.0f)
+      return false;
+  return true;
+}
+
 static bool keep_alpha(zr_sdl_parser *p, zr_image_map *im,
                        const zr_image *image) {
   size_t n = (size_t)image->width * (size_t)image->height;
@@ -1274,6 +1284,11 @@ zr_image_map *zr__sdl_bitmap_new(zr_sdl_parser *p, const char *what,
   if (ok && image->alpha && !opaque(image) &&
       ((is_image && !image->indices) || strcmp(what, "image_pattern") == 0))
     ok = keep_alpha(p, im, image);
+  if (ok && is_image && image->alpha && clear(image))
+    zr__sdl_warning(p, loc,
+                    "every pixel of '%s' has alpha 0, so the image_map is "
+                    "fully transparent (as in POV-Ray 3.7, which reads a "
+                    "32-bit BMP's or TGA's fourth byte as alpha)", name);
   if (ok) {
     im->path = zr__sdl_strdup(p, name, strlen(name));
     im->width = image->width;
