@@ -444,3 +444,8 @@ EXTRA_DIST += tests/test_image_pattern.sh tests/image_pattern.pov
 # An image_map's alpha channel and tRNS as transmit (lib/image/png.c).
 TESTS += tests/test_image_alpha.sh
 EXTRA_DIST += tests/test_image_alpha.sh tests/image_alpha.pov
+# gamma G / gamma srgb on JPEG, BMP, PPM and TIFF image maps; TIFF
+# samples in the working space (session 22).
+TESTS += tests/test_image_gamma_formats.sh
+EXTRA_DIST += tests/test_image_gamma_formats.sh \
+	tests/image_gamma_formats.pov tests/image_gamma.jpg

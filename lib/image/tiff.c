@@ -7,8 +7,17 @@
  * palette, RGB, YCbCr, CMYK, 1 to 16 bits, strips or tiles, any
  * compression it was built with) into 8-bit red, green, blue and alpha,
  * which is the precision the other 8-bit formats have here; the first
- * image of the file is read.  Samples are taken as sRGB.  Alpha is not
- * kept (image_map takes transparency from filter and transmit).
+ * image of the file is read.  An image_map takes the samples as they
+ * are, in the scene's working space (code / 255 under any
+ * assumed_gamma), as PPM's (codes_working), which is what POV-Ray
+ * 3.7.0.10 does, though its manual's "Gamma in Input Images" presumes
+ * sRGB for "any other file formats": under assumed_gamma 1 its image_map
+ * of a TIFF shows code 60 as 0.235, where the same picture as PNG, JPEG
+ * or BMP shows 0.045, and under assumed_gamma 2.2 as 0.235 ^ 2.2
+ * (tests/test_image_gamma_formats.sh).  "gamma G" or "gamma srgb" after
+ * the file name decodes them as it does a PNG's.
+ * Alpha is not kept (image_map takes transparency from filter and
+ * transmit).
  *
  * libtiff's default handlers print errors and warnings on stderr; they
  * are replaced per file (TIFFOpenOptions, libtiff 4.5) so that the first
@@ -237,6 +246,7 @@ zr_status zr__tiff_decode(zr_context *ctx, const char *name,
   uint32_t *raster = malloc(count * sizeof *raster);
   float *table = zr__decode_table(255, ZR_TRANSFER_SRGB, 0.0);
   image->codes = malloc(count * 3); /* 8-bit codes (image.h) */
+  image->codes_working = true;
   image->maxval = 255;
   if (!raster || !table || !image->codes) {
     free(raster);

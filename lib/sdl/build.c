@@ -934,8 +934,13 @@ zr_status zr__sdl_read_image(zr_sdl_parser *p, const char *name,
  * transfer the file asks for; "gamma srgb" (srgb true) decodes them
  * with the sRGB transfer function ("The Gamma Option": "srgb may be
  * specified to denote that the file is encoded or pre-corrected using
- * the sRGB transfer function").  Only PNG, GIF and TGA files keep the
- * codes they store (JPEG and Netpbm codes are re-quantised).
+ * the sRGB transfer function").  "This applies in all contexts and to
+ * all file formats" ("Gamma in Input Images"): POV-Ray 3.7 decodes a
+ * JPEG's, BMP's, PPM's or TIFF's codes so as a PNG's (the manual's own
+ * example is a JPEG's "gamma 1.8"; tests/test_image_gamma_formats.sh).
+ * The float pictures (OpenEXR, Radiance HDR, PFM) have no codes to
+ * decode: refused.  A picture of floats beside 8-bit codes (BMP, TIFF)
+ * gets its floats again from the codes.
  */
 static bool image_gamma(zr_sdl_parser *p, zr_image *image,
                         const char *what, const char *name, double g,
@@ -945,10 +950,12 @@ static bool image_gamma(zr_sdl_parser *p, zr_image *image,
                   g);
     return false;
   }
-  if (!image->stored_codes) {
+  bool floats = image->layout == ZR_LAYOUT_FLOAT;
+  if (floats && !(image->codes && image->maxval == 255)) {
     zr__sdl_error(p, ZR_EUNSUPPORTED, loc,
-                  "%s gamma is supported for PNG files only, not '%s'",
-                  what, name);
+                  "%s gamma is for files of stored samples (PNG, JPEG, "
+                  "GIF, TGA, BMP, PPM, PGM, TIFF), not '%s', whose floats "
+                  "are light already", what, name);
     return false;
   }
   float *table = zr__decode_table(
@@ -956,6 +963,14 @@ static bool image_gamma(zr_sdl_parser *p, zr_image *image,
   if (!table) {
     zr__sdl_error(p, ZR_ENOMEM, loc, "out of memory");
     return false;
+  }
+  if (floats) {
+    size_t n = 3 * (size_t)image->width * (size_t)image->height;
+    const unsigned char *c = image->codes;
+    for (size_t k = 0; k < n; k++)
+      image->pixels[k] = table[c[k]];
+    free(table);
+    return true;
   }
   free(image->table);
   image->table = table;
