@@ -4,8 +4,9 @@
 // entry 2 0 opaque) and grey16.png (4 x 2 grey + alpha, 16 bit).  The
 // picture lies on the unit square of z = 0 in front of a green plane;
 // each of its pixels is a 4 x 4 block of a 16 x 8 render.
-// Declare=K=1..17 (10-12: image_pattern's use_alpha; 13-17: 32-bit TGA
-// and BMP files, alpha.tga, noattr.tga, alpha.bmp, clear.tga, clear.bmp).
+// Declare=K=1..19 (10-12: image_pattern's use_alpha; 13-17: 32-bit TGA
+// and BMP files, alpha.tga, noattr.tga, alpha.bmp, clear.tga, clear.bmp;
+// 18-19: TIFF RGBA, alpha.tiff and assoc.tiff).
 #version 3.7;
 #ifndef (K) #declare K = 1; #end
 global_settings { assumed_gamma 1.0 }
@@ -36,4 +37,7 @@ plane { z, 1 pigment { rgb <0.2, 0.4, 0.2> } finish { ambient 1 diffuse 0 } }
 #case (15) plane { z, 0 pigment { image_map { bmp "alpha.bmp" } } finish { F } } #break
 #case (16) plane { z, 0 pigment { image_map { tga "clear.tga" } } finish { F } } #break
 #case (17) plane { z, 0 pigment { image_map { bmp "clear.bmp" } } finish { F } } #break
+// TIFF RGBA, unassociated and associated alpha
+#case (18) plane { z, 0 pigment { image_map { tiff "alpha.tiff" } } finish { F } } #break
+#case (19) plane { z, 0 pigment { image_map { tiff "assoc.tiff" } } finish { F } } #break
 #end

@@ -10,7 +10,8 @@
 # alpha when it read a PNG: cases 1-8 failed (the picture opaque).
 # Cases 10-12: image_pattern's use_alpha, whose value is 1 - alpha
 # (povray's grey 0 where opaque, 255 where clear).  Cases 13-17: 32-bit
-# TGA and BMP files, whose fourth byte povray reads as straight alpha.
+# TGA and BMP files, whose fourth byte povray reads as straight alpha;
+# 18-19 TIFF RGBA.
 #
 # Environment: ZR_SRCDIR, ZR_BUILDDIR (set by `make check`).
 set -u
@@ -63,6 +64,27 @@ bmp("alpha.bmp", rgba)
 clear = [[(R, G, B, 0) for (R, G, B, A) in r] for r in rgba]
 tga("clear.tga", 0, clear)
 bmp("clear.bmp", clear)
+# TIFF RGBA, baseline and uncompressed: ExtraSamples 2 (unassociated
+# alpha) with the straight colours, ExtraSamples 1 (associated) with
+# the colours multiplied by alpha.
+def tiff(name, extra, px):
+    data = bytes(v for r in px for c in r for v in c)
+    ifd_at = 8 + len(data)
+    n = 11
+    bps_at = ifd_at + 2 + 12 * n + 4
+    def e(tag, typ, count, value):
+        return struct.pack("<HHII", tag, typ, count, value)
+    ifd = b"".join([
+        e(256, 4, 1, 4), e(257, 4, 1, 2), e(258, 3, 4, bps_at),
+        e(259, 3, 1, 1), e(262, 3, 1, 2), e(273, 4, 1, 8), e(277, 3, 1, 4),
+        e(278, 4, 1, 2), e(279, 4, 1, len(data)), e(284, 3, 1, 1),
+        e(338, 3, 1, extra)])
+    open(name, "wb").write(b"II*\0" + struct.pack("<I", ifd_at) + data +
+                           struct.pack("<H", n) + ifd + b"\0\0\0\0" +
+                           struct.pack("<HHHH", 8, 8, 8, 8))
+tiff("alpha.tiff", 2, rgba)
+tiff("assoc.tiff", 1, [[(R * A // 255, G * A // 255, B * A // 255, A)
+                        for (R, G, B, A) in r] for r in rgba])
 PY
 pixel_w=16
 pixel_h=8
@@ -85,7 +107,12 @@ recorded_14=$recorded_1
 recorded_15=$recorded_1
 recorded_16="124,170,124 124,170,124 124,170,124 124,170,124 124,170,124 124,170,124 124,170,124 124,170,124"
 recorded_17=$recorded_16
-pixel_cases image_alpha.pov K "1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17" \
+# 18-19: TIFF RGBA, whose alpha povray takes as associated: the same
+# picture from straight and from premultiplied colours (the tree before
+# session 22 read both opaque).
+recorded_18="255,0,0 89,218,89 124,170,124 170,196,170 235,240,59 117,182,148 255,0,255 128,153,128"
+recorded_19=$recorded_18
+pixel_cases image_alpha.pov K "1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19" \
   "1,1 1,5 1,9 1,13 5,1 5,5 5,9 5,13"
 status=$?
 # An all-clear picture is warned about where it is named.

@@ -16,8 +16,12 @@
  * or BMP shows 0.045, and under assumed_gamma 2.2 as 0.235 ^ 2.2
  * (tests/test_image_gamma_formats.sh).  "gamma G" or "gamma srgb" after
  * the file name decodes them as it does a PNG's.
- * Alpha is not kept (image_map takes transparency from filter and
- * transmit).
+ * Alpha is kept: libtiff's RGBA interface hands colours over
+ * associated with (multiplied by) alpha, whichever kind the file
+ * stores, and POV-Ray 3.7 takes a TIFF's alpha as associated ("Using
+ * the Alpha Channel"), so each code is divided by its alpha again
+ * (rounded, at most 255): straight colour and alpha, as for PNG
+ * (tests/test_image_alpha.sh).
  *
  * libtiff's default handlers print errors and warnings on stderr; they
  * are replaced per file (TIFFOpenOptions, libtiff 4.5) so that the first
@@ -260,10 +264,28 @@ zr_status zr__tiff_decode(zr_context *ctx, const char *name,
   int ok = t->ReadRGBAImageOriented(tif, w, h, raster, ORIENTATION_TOPLEFT,
                                      1);
   t->Close(tif);
+  bool alpha = false;
+  for (size_t i = 0; ok && i < count && !alpha; i++)
+    alpha = TIFFGetA(raster[i]) < 255;
+  if (alpha && zr_image_add_alpha(image) != ZR_OK) {
+    free(raster);
+    free(table);
+    zr_image_free(image);
+    return zr__diag(ctx, ZR_DIAG_ERROR, ZR_ENOMEM, NULL, "%s: %s", name,
+                    zr_status_str(ZR_ENOMEM));
+  }
   if (ok) {
     for (size_t i = 0; i < count; i++) {
       unsigned rgb[3] = {TIFFGetR(raster[i]), TIFFGetG(raster[i]),
                          TIFFGetB(raster[i])};
+      unsigned a = TIFFGetA(raster[i]);
+      if (alpha) {
+        image->alpha[i] = (float)(a / 255.0);
+        for (int c = 0; c < 3 && a > 0; c++) {
+          unsigned v = (rgb[c] * 255 + a / 2) / a;
+          rgb[c] = v > 255 ? 255 : v;
+        }
+      }
       for (int c = 0; c < 3; c++) {
         ((unsigned char *)image->codes)[3 * i + c] = (unsigned char)rgb[c];
         image->pixels[3 * i + c] = table[rgb[c]];
