@@ -336,6 +336,7 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %token T_PNG "png"
 %token T_POLY_WAVE "poly_wave"
 %token T_PPM "ppm"
+%token T_PREMULTIPLIED "premultiplied"
 %token T_QUICK_COLOUR "quick_color"
 %token T_RADIAL "radial"
 %token T_RAMP_WAVE "ramp_wave"
@@ -3069,21 +3070,34 @@ normal_body:
 
 /* ---- image maps (reference manual, "Image Map") ---- */
 
-/* FILE, then "gamma G" or "gamma srgb" if any ("The Gamma Option": it
+/* FILE, then "gamma G" or "gamma srgb" and "premultiplied B" if any, in
+   either order ("The Gamma Option", "Using the Alpha Channel": they
    must follow the file name): the head of image_map, bump_map and
    image_pattern. */
 bitmap_file:
   image_map_file
     { $$ = (zr_sdl_bitmap_file){.name = $1, .loc = @1}; }
-| image_map_file T_GAMMA expr
+| bitmap_file T_GAMMA expr
     {
-      $$ = (zr_sdl_bitmap_file){.name = $1, .loc = @1, .gamma = $3,
-                                .has_gamma = true, .gamma_loc = @3};
+      $$ = $1;
+      $$.gamma = $3;
+      $$.has_gamma = true;
+      $$.srgb = false;
+      $$.gamma_loc = @3;
     }
-| image_map_file T_GAMMA T_SRGB
+| bitmap_file T_GAMMA T_SRGB
     {
-      $$ = (zr_sdl_bitmap_file){.name = $1, .loc = @1, .srgb = true,
-                                .gamma_loc = @3};
+      $$ = $1;
+      $$.has_gamma = false;
+      $$.srgb = true;
+      $$.gamma_loc = @3;
+    }
+| bitmap_file T_PREMULTIPLIED expr
+    {
+      $$ = $1;
+      $$.premultiplied = $3;
+      $$.has_premultiplied = true;
+      $$.premultiplied_loc = @3;
     }
 ;
 

@@ -6,7 +6,7 @@
 // each of its pixels is a 4 x 4 block of a 16 x 8 render.
 // Declare=K=1..19 (10-12: image_pattern's use_alpha; 13-17: 32-bit TGA
 // and BMP files, alpha.tga, noattr.tga, alpha.bmp, clear.tga, clear.bmp;
-// 18-19: TIFF RGBA, alpha.tiff and assoc.tiff).
+// 18-19: TIFF RGBA, alpha.tiff and assoc.tiff; 20-24: premultiplied).
 #version 3.7;
 #ifndef (K) #declare K = 1; #end
 global_settings { assumed_gamma 1.0 }
@@ -40,4 +40,10 @@ plane { z, 1 pigment { rgb <0.2, 0.4, 0.2> } finish { ambient 1 diffuse 0 } }
 // TIFF RGBA, unassociated and associated alpha
 #case (18) plane { z, 0 pigment { image_map { tiff "alpha.tiff" } } finish { F } } #break
 #case (19) plane { z, 0 pigment { image_map { tiff "assoc.tiff" } } finish { F } } #break
+// premultiplied B after the file name, before or after its gamma
+#case (20) plane { z, 0 pigment { image_map { png "alpha.png" premultiplied on } } finish { F } } #break
+#case (21) plane { z, 0 pigment { image_map { tga "alpha.tga" premultiplied on gamma srgb } } finish { F } } #break
+#case (22) plane { z, 0 pigment { image_map { tiff "alpha.tiff" gamma srgb premultiplied off } } finish { F } } #break
+#case (23) plane { z, 0 pigment { image_map { png "alpha.png" premultiplied off } } finish { F } } #break
+#case (24) plane { z, 0 pigment { image_map { tiff "alpha.tiff" premultiplied off } } finish { F } } #break
 #end

@@ -112,7 +112,17 @@ recorded_17=$recorded_16
 # session 22 read both opaque).
 recorded_18="255,0,0 89,218,89 124,170,124 170,196,170 235,240,59 117,182,148 255,0,255 128,153,128"
 recorded_19=$recorded_18
-pixel_cases image_alpha.pov K "1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19" \
+# 20-24: "premultiplied B" after the file name ("Using the Alpha
+# Channel"), refused as unsupported before session 22: on divides a
+# PNG's or TGA's linear colour by alpha; off multiplies a TIFF's codes
+# by it, before a gamma decodes them (22).
+recorded_20="255,0,0 89,255,89 124,170,124 255,255,255 255,255,59 117,255,255 255,0,255 106,136,106"
+recorded_21=$recorded_20
+recorded_22="255,0,0 89,151,89 124,170,124 112,152,112 187,194,59 117,161,117 255,0,255 92,125,92"
+recorded_23=$recorded_1
+recorded_24="255,0,0 89,179,89 124,170,124 127,162,127 212,218,59 117,163,121 255,0,255 111,139,111"
+pixel_cases image_alpha.pov K \
+  "1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20 21 22 23 24" \
   "1,1 1,5 1,9 1,13 5,1 5,5 5,9 5,13"
 status=$?
 # An all-clear picture is warned about where it is named.

@@ -193,13 +193,16 @@ static void test_lexer_keyword_table(void **state) {
   /* srgb, srgbf, srgbt, srgbft, declare and no_bump_scale: issue 16;
      bmp, exr, hdr and tiff: issue 12; mm_per_unit and translucency:
      subsurface light transport; facets, coords and size: read and warned
-     about (issue 16); image_pattern and use_alpha (session 21) */
-  assert_int_equal(supported, 454);
+     about (issue 16); image_pattern and use_alpha (session 21);
+     premultiplied (session 22) */
+  assert_int_equal(supported, 455);
   assert_int_equal(zr__sdl_keyword_find("color", 5)->token, T_COLOUR);
   assert_int_equal(zr__sdl_keyword_find("colour", 6)->token, T_COLOUR);
   assert_int_equal(zr__sdl_keyword_find("use_alpha", 9)->token,
                    T_USE_ALPHA);
   assert_int_equal(zr__sdl_keyword_find("premultiplied", 13)->token,
+                   T_PREMULTIPLIED);
+  assert_int_equal(zr__sdl_keyword_find("reflection_exponent", 19)->token,
                    T_UNSUPPORTED);
   assert_null(zr__sdl_keyword_find("Sphere", 6));
   assert_null(zr__sdl_keyword_find("sph", 3));

@@ -63,6 +63,10 @@ struct zr_image {
      working space ("Gamma in Input Images"), not sRGB as zr_image_read
      decodes them. */
   bool codes_working;
+  /* The file's alpha is associated (TIFF, "Using the Alpha Channel"):
+     the decoder divided its colours by alpha, which an image_map's
+     "premultiplied off" undoes. */
+  bool alpha_associated;
   /* Palette files (PNG colour type 3, GIF, colour-mapped TGA) only, else
      NULL and 0: the palette entry of each pixel, which image_map's
      "filter INDEX, AMOUNT" and "transmit INDEX, AMOUNT" refer to, and

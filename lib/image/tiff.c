@@ -267,6 +267,7 @@ zr_status zr__tiff_decode(zr_context *ctx, const char *name,
   bool alpha = false;
   for (size_t i = 0; ok && i < count && !alpha; i++)
     alpha = TIFFGetA(raster[i]) < 255;
+  image->alpha_associated = alpha;
   if (alpha && zr_image_add_alpha(image) != ZR_OK) {
     free(raster);
     free(table);

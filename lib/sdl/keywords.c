@@ -362,7 +362,7 @@ static const zr_sdl_keyword keywords[] = {
     {"ppm", T_PPM},
     {"precision", T_PRECISION},
     {"precompute", T_PRECOMPUTE},
-    {"premultiplied", T_UNSUPPORTED},
+    {"premultiplied", T_PREMULTIPLIED},
     {"pretrace_end", T_PRETRACE_END},
     {"pretrace_start", T_PRETRACE_START},
     {"prism", T_PRISM},

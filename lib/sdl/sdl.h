@@ -1212,13 +1212,17 @@ zr_status zr__sdl_read_image(zr_sdl_parser *p, const char *name,
                              char **path, char **bytes, size_t *size);
 /* A bitmap's file as written (grammar/pov.y bitmap_file): its name, and
    "gamma G" (has_gamma, gamma) or "gamma srgb" (srgb) after it, gamma_loc
-   the value's or the keyword srgb's place. */
+   the value's or the keyword srgb's place; "premultiplied B"
+   (has_premultiplied, premultiplied at premultiplied_loc). */
 typedef struct zr_sdl_bitmap_file {
   const char *name;
   zr_sdl_loc loc;
   zr_sdl_expr gamma;
   bool has_gamma, srgb;
   zr_sdl_loc gamma_loc;
+  zr_sdl_expr premultiplied;
+  bool has_premultiplied;
+  zr_sdl_loc premultiplied_loc;
 } zr_sdl_bitmap_file;
 /* An item every bitmap takes: token T_MAP_TYPE or T_INTERPOLATE with its
    value, or T_ONCE (has_value false); loc the value's or once's place. */
