@@ -876,10 +876,22 @@ start:
 | T_START_VERSION expr ';'   { p->nested_value = $2; YYACCEPT; }
 | T_START_DECL decl_target '=' rvalue decl_end
     {
-      if (!$5 && $4.kind <= ZR_SDL_COLOUR)
+      /* POV-Ray 3.7 refuses a float, vector or colour declared without
+         its ';' when the language version is 3.5 or later (the default
+         without #version) and only warns below ("Possible Parse Error"),
+         measured: tests/test_refused.sh. */
+      if (!$5 && $4.kind <= ZR_SDL_COLOUR) {
+        const char *d = $2.local ? "#local" : "#declare";
+        if (p->version >= 3.5 - 1e-9) {
+          zr__sdl_error(p, ZR_ESYNTAX, &@4, "'%s' of a float, vector or "
+                        "colour needs ';' at its end when the language "
+                        "version is 3.5 or later (it is %g here): add the "
+                        "';', or set '#version 3.1;'", d, p->version);
+          YYABORT;
+        }
         zr__sdl_warning(p, &@4, "'%s' of a float, vector or colour "
-                                "should end with ';'",
-                        $2.local ? "#local" : "#declare");
+                                "should end with ';'", d);
+      }
       TRY(zr__sdl_define(p, &$2, $2.local, &$4, &@2));
       YYACCEPT;
     }

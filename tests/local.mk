@@ -444,3 +444,9 @@ EXTRA_DIST += tests/test_image_pattern.sh tests/image_pattern.pov
 # An image_map's alpha channel and tRNS as transmit (lib/image/png.c).
 TESTS += tests/test_image_alpha.sh
 EXTRA_DIST += tests/test_image_alpha.sh tests/image_alpha.pov
+
+# Scenes POV-Ray 3.7 refuses, reduced from the corpus (bench/refused.py):
+# zrcube refuses them too, with the place and the problem.
+TESTS += tests/test_refused.sh
+EXTRA_DIST += tests/test_refused.sh tests/refused/semicolon.pov \
+	tests/refused/semicolon_local.pov tests/refused/semicolon_v31.pov
