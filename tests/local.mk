@@ -449,4 +449,6 @@ EXTRA_DIST += tests/test_image_alpha.sh tests/image_alpha.pov
 # zrcube refuses them too, with the place and the problem.
 TESTS += tests/test_refused.sh
 EXTRA_DIST += tests/test_refused.sh tests/refused/semicolon.pov \
-	tests/refused/semicolon_local.pov tests/refused/semicolon_v31.pov
+	tests/refused/semicolon_local.pov tests/refused/semicolon_v31.pov \
+	tests/refused/version_38.pov tests/refused/version_3705.pov \
+	tests/refused/version_37049.pov
