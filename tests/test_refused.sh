@@ -5,9 +5,10 @@
 # zRcube's error output must contain (file:line:col and the problem), and
 # zrcube must exit 1 without writing a picture.  A scene with no
 # expect-error line is one POV-Ray 3.7 renders (perhaps with a warning,
-# "// expect: TEXT" lines): zrcube must render it too.  With povray
-# installed, povray must agree (refuse or render) on every scene, so the
-# snippets stay true to the yardstick.
+# "// expect: TEXT" lines): zrcube must render it too, and print each
+# "// expect-debug: TEXT" (#debug output).  With povray installed, povray
+# must agree (refuse or render, and the #debug lines) on every scene, so
+# the snippets stay true to the yardstick.
 #
 # Environment: ZR_SRCDIR, ZR_BUILDDIR (set by `make check`).
 set -u
@@ -28,6 +29,10 @@ for scene in *.pov; do
        { [ $refuse = no ] && [ $prc -ne 0 ]; }; then
       ok=no why="$why; povray exit $prc (the snippet is wrong)"
     fi
+    missing=$(sed -n 's|^// expect-debug: ||p' "$scene" |
+      while IFS= read -r w; do grep -qF -- "$w" "$name.pov.log" || echo "$w"
+      done)
+    [ -n "$missing" ] && ok=no why="$why; povray did not print: $missing"
   fi
   rm -f "$name.zr.png"
   zrc=0
@@ -39,7 +44,7 @@ for scene in *.pov; do
     expects=$(sed -n 's|^// expect-error: ||p' "$scene")
   else
     [ $zrc -eq 0 ] || { ok=no why="$why; zrcube exit $zrc"; }
-    expects=$(sed -n 's|^// expect: ||p' "$scene")
+    expects=$(sed -n 's|^// expect\(-debug\)\{0,1\}: ||p' "$scene")
   fi
   missing=$(printf '%s\n' "$expects" | while IFS= read -r w; do
     [ -z "$w" ] || grep -qF -- "$w" "$name.zr.log" || echo "$w"

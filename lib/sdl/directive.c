@@ -1264,9 +1264,12 @@ int zr__sdl_next(zr_sdl_lexval *val, zr_sdl_loc *loc, zr_sdl_parser *p) {
       continue;
     }
     v.value = s->value;
-    if (s->value.kind == ZR_SDL_ARRAY && zr__sdl_peek(p, 0)->kind == '[') {
+    /* An element may be an array itself ("array[2]{array[3]{...}, ...}"),
+       indexed in turn: "C[i][j]", as POV-Ray 3.7 reads it (watchduck's
+       permutohedron scenes; tests/refused/array_of_arrays.pov). */
+    while (v.value.kind == ZR_SDL_ARRAY && zr__sdl_peek(p, 0)->kind == '[') {
       const zr_sdl_value *e = array_element(
-          p, t->v.str, (zr_sdl_array *)s->value.ptr, &tl);
+          p, t->v.str, (zr_sdl_array *)v.value.ptr, &tl);
       if (!e)
         return ZR__POV_error;
       v.value = *e;
