@@ -3889,8 +3889,8 @@ light:
 ;
 
 /* A finished light: a scene item, a #declare's value or a part of a
-   union, which it then follows.  object { LIGHT_IDENTIFIER ... } is a
-   light too, as in POV-Ray. */
+   union, which it then follows.  object { LIGHT_IDENTIFIER ... } and
+   object { light_source { ... } ... } are lights too, as in POV-Ray. */
 light_done:
   light_body '}'       { TRY(zr__sdl_light_end(p, $1, &@1)); $$ = $1; }
 | light_object '}'     { $$ = $1; }
@@ -3898,6 +3898,9 @@ light_done:
 
 light_object:
   T_OBJECT '{' T_LIGHT_ID { TRY($$ = zr__sdl_light_copy(p, $3.ptr)); }
+  /* "object { light_source { ... } }" (gnu0000's POV1/OLD/TSTS-A.POV):
+     POV-Ray 3.7 lights the scene with it (tests/refused/object_light). */
+| T_OBJECT '{' light_done { $$ = $3; }
 | light_object transform
     { zr__sdl_light_transform(p, $1, $2); $$ = $1; }
 ;

@@ -8,7 +8,8 @@
 # "// expect: TEXT" lines): zrcube must render it too, and print each
 # "// expect-debug: TEXT" (#debug output).  With povray installed, povray
 # must agree (refuse or render, and the #debug lines) on every scene, so
-# the snippets stay true to the yardstick.
+# the snippets stay true to the yardstick, and a scene both render must
+# score SSIM >= 0.95 (tests/imgcmp, 2x2 box filter, 64x48 pixels).
 #
 # Environment: ZR_SRCDIR, ZR_BUILDDIR (set by `make check`).
 set -u
@@ -22,7 +23,7 @@ for scene in *.pov; do
   ok=yes why=""
   if command -v povray >/dev/null 2>&1; then
     prc=0
-    timeout 60 povray +I"$scene" +O"$name.pov.png" +W32 +H24 -D -A +WT1 \
+    timeout 60 povray +I"$scene" +O"$name.pov.png" +W64 +H48 -D -A +WT1 \
       +L/usr/share/povray-3.7/include </dev/null >"$name.pov.log" 2>&1 ||
       prc=$?
     if { [ $refuse = yes ] && [ $prc -eq 0 ]; } ||
@@ -36,7 +37,7 @@ for scene in *.pov; do
   fi
   rm -f "$name.zr.png"
   zrc=0
-  timeout 60 "$zrcube" +I"$scene" +O"$name.zr.png" +W32 +H24 -D +WT1 \
+  timeout 60 "$zrcube" +I"$scene" +O"$name.zr.png" +W64 +H48 -D +WT1 \
     </dev/null >"$name.zr.log" 2>&1 || zrc=$?
   if [ $refuse = yes ]; then
     [ $zrc -eq 1 ] || { ok=no why="$why; zrcube exit $zrc, not 1"; }
@@ -44,6 +45,10 @@ for scene in *.pov; do
     expects=$(sed -n 's|^// expect-error: ||p' "$scene")
   else
     [ $zrc -eq 0 ] || { ok=no why="$why; zrcube exit $zrc"; }
+    if [ $zrc -eq 0 ] && [ -e "$name.pov.png" ]; then
+      "$imgcmp" "$name.zr.png" "$name.pov.png" --ssim-min 0.95 \
+        >"$name.cmp" 2>&1 || { ok=no why="$why; $(cat "$name.cmp")"; }
+    fi
     expects=$(sed -n 's|^// expect\(-debug\)\{0,1\}: ||p' "$scene")
   fi
   missing=$(printf '%s\n' "$expects" | while IFS= read -r w; do
