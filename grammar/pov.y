@@ -246,6 +246,7 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %token <str> T_STRING "string"
 %token <str> T_IDENTIFIER "undeclared identifier"
 %token <str> T_UNSUPPORTED "unsupported keyword"
+%token <str> T_BAD_CHAR "unexpected character"
 /* A whole "triangle { <a>, <b>, <c> }" of plain vectors, and a
    sphere's "sphere { <x, y, z>, r" of plain numbers, read from the
    file's bytes as one token each (lib/sdl/tokens.c); the value points

@@ -452,4 +452,6 @@ EXTRA_DIST += tests/test_refused.sh tests/refused/semicolon.pov \
 	tests/refused/semicolon_local.pov tests/refused/semicolon_v31.pov \
 	tests/refused/version_38.pov tests/refused/version_3705.pov \
 	tests/refused/version_37049.pov tests/refused/array_of_arrays.pov \
-	tests/refused/colour_short_vector.pov tests/refused/object_light.pov
+	tests/refused/colour_short_vector.pov tests/refused/object_light.pov \
+	tests/refused/bad_char_later.pov tests/refused/bad_char_reached.pov \
+	tests/refused/bad_char_skipped.pov

@@ -889,6 +889,18 @@ static void test_parser_unterminated(void **state) {
       "t.pov:1:10: error: unterminated string\n"
       "    1 | #include \"x.inc\n"
       "      |          ^\n");
+  /* A stray character is an error where the scene reaches it, after
+     the errors before it, and none in a skipped #if branch or an unused
+     macro (POV-Ray 3.7, measured: tests/refused/bad_char_*.pov). */
+  bad(f, "sphere { 0, 1 }\nsphere { 0, 1 } @ box { 0, 1 }\n", ZR_ESYNTAX,
+      "unexpected character '@'",
+      "t.pov:2:17: error: unexpected character '@'\n"
+      "    2 | sphere { 0, 1 } @ box { 0, 1 }\n"
+      "      |                 ^\n");
+  bad(f, "sphere { 0, Nope }\n@\n", ZR_EUNDEFINED,
+      "undefined identifier 'Nope'", NULL);
+  good(f, "#if (0) #declare A = 5 % 2; #end\n"
+          "#macro M() #declare B = 5 % 2; #end\nsphere { 0, 1 }\n");
   /* A lexical error in an included file shows the chain. */
   assert_int_equal(parse_file(f, "lexerror.pov"), ZR_ESYNTAX);
   char expected[512];

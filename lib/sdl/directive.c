@@ -1183,6 +1183,16 @@ int zr__sdl_next(zr_sdl_lexval *val, zr_sdl_loc *loc, zr_sdl_parser *p) {
       zr__sdl_error(p, ZR_EUNSUPPORTED, &tl, "'%s' is not supported yet",
                     t->v.str);
       return ZR__POV_error;
+    case T_BAD_CHAR: {
+      /* The scanner's token for a character no token begins with
+         (grammar/pov.l): the error waits until the scene reaches it. */
+      int c = (unsigned char)t->v.str[0];
+      if (c >= 32 && c < 127)
+        zr__sdl_error(p, ZR_ESYNTAX, &tl, "unexpected character '%c'", c);
+      else
+        zr__sdl_error(p, ZR_ESYNTAX, &tl, "unexpected byte 0x%02x", c);
+      return ZR__POV_error;
+    }
     case ZR_SDL_NUMBER_LIST:
       /* mesh2's fast reader takes these runs after the list's count
          (build_mesh.c); nothing else should meet one. */
