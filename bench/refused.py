@@ -2,7 +2,8 @@
 
     /usr/bin/python3 bench/refused.py [--build build] [--out bench/out/refused]
         [--jobs 1] [--only SUBSTRING] [--notes bench/refused-notes.tsv]
-        [--povray-cache DIR] > bench/results/refused-DATE.tsv
+        [--povray-cache DIR] [--before OLD.tsv]
+        > bench/results/refused-DATE.tsv
 
 For every scene with exit code 1 in the corpus's povray37-160x120.tsv
 (POV-Ray refused it), from the scene's own directory as the corpus
@@ -27,7 +28,11 @@ when only the file agrees, else 'other'.  class is worked out here:
   crash     zrcube died of a signal or a sanitizer spoke
   hang      zrcube ran out of its 60 s
   renders   zrcube exited 0 (what povray refuses)
-  refuses   zrcube refused as well
+  same      zrcube refused as well, for the same kind of problem
+            (semicolon, include, image, font, version, undeclared,
+            syntax) in the same file
+  other:P/Z zrcube refused for another kind (P povray's, Z zrcube's) or
+            in another file
 
 and NOTES (scene, class, note; a hand-made verdict after reading both
 messages and the scene) replaces class and gives the note.  The last
@@ -131,6 +136,34 @@ def zrcube_message(text):
     return ('-', last[-1].strip() if last else '-')
 
 
+POV_CAUSES = [
+    ('semicolon', r'require semi-colon'),
+    ('include', r'Cannot open include file'),
+    ('image', r'Cannot find image file|Cannot open image'),
+    ('font', r'Cannot open font file'),
+    ('version', r'requires POV-Ray version'),
+    ('undeclared', r'undeclared identifier|uninitialized identifier'),
+]
+ZR_CAUSES = [
+    ('semicolon', r"needs ';' at its end"),
+    ('include', r'cannot find include file'),
+    ('image', r'^(image_map|height_field|bump_map|image_pattern|[a-z_]+) '
+              r'file .* not found'),
+    ('font', r'cannot find font'),
+    ('version', r'needs POV-Ray version'),
+    ('undeclared', r'undefined identifier'),
+]
+
+
+def cause(message, table):
+    """The kind of problem a message names (the same words for both
+    renderers), 'syntax' for the rest."""
+    for name, pattern in table:
+        if re.search(pattern, message):
+            return name
+    return 'syntax'
+
+
 def place(pov_where, zr_where):
     if pov_where == '-' or zr_where == '-':
         return '-'
@@ -178,6 +211,13 @@ def one(scene, args, zr):
         cls = 'renders'
     else:
         cls = 'refuses'
+    if cls == 'refuses':
+        pc, zc = cause(pm, POV_CAUSES), cause(zm, ZR_CAUSES)
+        pl = place(pw, zw)
+        # The same problem in the same file: POV-Ray names the line where
+        # it noticed (often the next token's), zrcube the token's own.
+        cls = 'same' if pc == zc and pl in ('same', 'file') else \
+            'other:%s/%s' % (pc, zc)
     return [scene, str(prc), pw, pm, str(zrc), '%.2f' % zsecs, zw, zm,
             place(pw, zw), cls, '']
 
@@ -191,6 +231,9 @@ def main():
     ap.add_argument('--notes', default=os.path.join(HERE,
                                                     'refused-notes.tsv'))
     ap.add_argument('--povray-cache', default='')
+    ap.add_argument('--before', default='',
+                    help='an earlier table (of main): where zrcube said '
+                    'something else then, the note says what')
     args = ap.parse_args()
     args.out = os.path.abspath(args.out)
     for sub in ('povray', 'zrcube'):
@@ -213,6 +256,13 @@ def main():
                 notes[p[0]] = (p[1], p[2] if len(p) > 2 else '')
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as ex:
         rows = list(ex.map(lambda s: one(s, args, zr), scenes))
+    before = {}
+    if args.before:
+        with open(args.before) as f:
+            for line in f:
+                p = line.rstrip('\n').split('\t')
+                if len(p) >= 8 and not line.startswith(('#', 'scene\t')):
+                    before[p[0]] = p
     counts = {}
     print('\t'.join(['scene', 'pov_rc', 'pov_where', 'pov_message',
                      'zr_rc', 'zr_seconds', 'zr_where', 'zr_message',
@@ -224,6 +274,11 @@ def main():
             # A verdict made for a refusal does not hide a new crash.
             if auto in ('crash', 'hang') and r[9] != auto:
                 r[9] = auto
+        b = before.get(r[0])
+        if b and (b[4] != r[4] or b[6] != r[6]):
+            was = 'rendered it (exit 0)' if b[4] == '0' else \
+                'exit %s, %s %s' % (b[4], b[6], b[7])
+            r[10] = ('main: %s; %s' % (was, r[10])).rstrip('; ')
         counts[r[9]] = counts.get(r[9], 0) + 1
         print('\t'.join(x.replace('\t', ' ') for x in r))
     print('# summary\tscenes=%d\t%s' % (len(rows), '\t'.join(
