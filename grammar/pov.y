@@ -422,7 +422,6 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %token T_ARG_SEP "end of macro argument"
 %token <value> T_STRING_ID "string identifier"
 %token <value> T_ARRAY_ID "array identifier"
-%token <value> T_SEED_ID "random stream identifier"
 %token T_CONSTANT "built-in constant"
 %token T_LE "<="
 %token T_GE ">="
@@ -1067,15 +1066,6 @@ other_value:
 | interior      { $$ = pointer_value(ZR_SDL_INTERIOR, $1); }
 | object        { $$ = pointer_value(ZR_SDL_OBJECT, $1); }
 | str_expr      { $$ = pointer_value(ZR_SDL_STRING, $1); }
-| T_SEED_ID     { $$ = $1; }
-| T_SEED '(' cexpr ')'
-    {
-      double n;
-      const zr_sdl_rand *r;
-      TRY(zr__sdl_want_float(p, &$3, &@3, &n));
-      TRY(r = zr__sdl_seed(p, n));
-      $$ = pointer_value(ZR_SDL_SEED, r);
-    }
 | T_ARRAY_ID
     {
       zr_sdl_array *a;
@@ -1359,7 +1349,18 @@ primary:
       TRY(zr__sdl_want_float(p, &$5, &@5, &d));
       TRY(zr__sdl_dimension_size(p, $3.ptr, d, &@5, &$$));
     }
-| T_RAND '(' T_SEED_ID ')' { $$ = zr__sdl_float(zr__sdl_rand($3.ptr)); }
+  /* seed(n) is a number in POV-Ray 3.7, the new stream's place among
+     all made so far (0, 1, ...): it needs a #declare's ';', and can be
+     computed with ("(Rotate_Y + clock) * City_Seed", mjhorvath's
+     GSprites_Scenery_prototypes.inc); rand(n) takes stream n (measured:
+     tests/refused/seed_number.pov). */
+| T_SEED '(' cexpr ')'
+    {
+      double n;
+      TRY(zr__sdl_want_float(p, &$3, &@3, &n));
+      TRY(zr__sdl_seed(p, n));
+      $$ = zr__sdl_float((double)(p->n_seeds - 1));
+    }
 | T_RAND '(' cexpr ')'
     {
       double n;
@@ -4321,7 +4322,6 @@ int zr__pov_lex(ZR__POV_STYPE *lval, zr_sdl_loc *lloc, zr_sdl_parser *p) {
   case T_LIGHT_ID:
   case T_STRING_ID:
   case T_ARRAY_ID:
-  case T_SEED_ID:
   case T_SPLINE_ID:
     lval->value = v.value;
     break;

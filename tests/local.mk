@@ -454,4 +454,5 @@ EXTRA_DIST += tests/test_refused.sh tests/refused/semicolon.pov \
 	tests/refused/version_37049.pov tests/refused/array_of_arrays.pov \
 	tests/refused/colour_short_vector.pov tests/refused/object_light.pov \
 	tests/refused/bad_char_later.pov tests/refused/bad_char_reached.pov \
-	tests/refused/bad_char_skipped.pov
+	tests/refused/bad_char_skipped.pov tests/refused/seed_number.pov \
+	tests/refused/seed_semicolon.pov

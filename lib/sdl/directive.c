@@ -716,7 +716,7 @@ static bool ends_operand(int kind) {
   case T_NUMBER: case T_FLOAT_ID: case T_VECTOR_ID: case T_COLOUR_ID:
   case T_PIGMENT_ID: case T_FINISH_ID: case T_TEXTURE_ID:
   case T_INTERIOR_ID: case T_OBJECT_ID: case T_STRING_ID: case T_ARRAY_ID:
-  case T_SEED_ID: case T_FUNCTION_ID: case T_STRING:
+  case T_FUNCTION_ID: case T_STRING:
   case T_NORMAL_ID: case T_COLOUR_MAP_ID: case T_MATERIAL_ID:
   case T_MEDIA_ID: case T_TRANSFORM_ID: case T_DENSITY_ID:
   /* function.c reads a function's body straight from the token array:
@@ -973,7 +973,6 @@ static int identifier_token(zr_sdl_kind kind) {
   case ZR_SDL_TRANSFORM: return T_TRANSFORM_ID;
   case ZR_SDL_STRING: return T_STRING_ID;
   case ZR_SDL_ARRAY: return T_ARRAY_ID;
-  case ZR_SDL_SEED: return T_SEED_ID;
   case ZR_SDL_SPLINE: return T_SPLINE_ID;
   default: return T_OBJECT_ID;
   }
