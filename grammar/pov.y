@@ -248,6 +248,7 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %token <str> T_STRING "string"
 %token <str> T_IDENTIFIER "undeclared identifier"
 %token <str> T_UNSUPPORTED "unsupported keyword"
+%token <str> T_BAD_CHAR "unexpected character"
 /* A whole "triangle { <a>, <b>, <c> }" of plain vectors, and a
    sphere's "sphere { <x, y, z>, r" of plain numbers, read from the
    file's bytes as one token each (lib/sdl/tokens.c); the value points
@@ -424,7 +425,6 @@ static zr_sdl_pmod make_pmod(int token, const zr_sdl_expr *e,
 %token T_ARG_SEP "end of macro argument"
 %token <value> T_STRING_ID "string identifier"
 %token <value> T_ARRAY_ID "array identifier"
-%token <value> T_SEED_ID "random stream identifier"
 %token T_CONSTANT "built-in constant"
 %token T_LE "<="
 %token T_GE ">="
@@ -881,10 +881,22 @@ start:
 | T_START_VERSION expr ';'   { p->nested_value = $2; YYACCEPT; }
 | T_START_DECL decl_target '=' rvalue decl_end
     {
-      if (!$5 && $4.kind <= ZR_SDL_COLOUR)
+      /* POV-Ray 3.7 refuses a float, vector or colour declared without
+         its ';' when the language version is 3.5 or later (the default
+         without #version) and only warns below ("Possible Parse Error"),
+         measured: tests/test_refused.sh. */
+      if (!$5 && $4.kind <= ZR_SDL_COLOUR) {
+        const char *d = $2.local ? "#local" : "#declare";
+        if (p->version >= 3.5 - 1e-9) {
+          zr__sdl_error(p, ZR_ESYNTAX, &@4, "'%s' of a float, vector or "
+                        "colour needs ';' at its end when the language "
+                        "version is 3.5 or later (it is %g here): add the "
+                        "';', or set '#version 3.1;'", d, p->version);
+          YYABORT;
+        }
         zr__sdl_warning(p, &@4, "'%s' of a float, vector or colour "
-                                "should end with ';'",
-                        $2.local ? "#local" : "#declare");
+                                "should end with ';'", d);
+      }
       TRY(zr__sdl_define(p, &$2, $2.local, &$4, &@2));
       YYACCEPT;
     }
@@ -1059,15 +1071,6 @@ other_value:
 | interior      { $$ = pointer_value(ZR_SDL_INTERIOR, $1); }
 | object        { $$ = pointer_value(ZR_SDL_OBJECT, $1); }
 | str_expr      { $$ = pointer_value(ZR_SDL_STRING, $1); }
-| T_SEED_ID     { $$ = $1; }
-| T_SEED '(' cexpr ')'
-    {
-      double n;
-      const zr_sdl_rand *r;
-      TRY(zr__sdl_want_float(p, &$3, &@3, &n));
-      TRY(r = zr__sdl_seed(p, n));
-      $$ = pointer_value(ZR_SDL_SEED, r);
-    }
 | T_ARRAY_ID
     {
       zr_sdl_array *a;
@@ -1351,7 +1354,18 @@ primary:
       TRY(zr__sdl_want_float(p, &$5, &@5, &d));
       TRY(zr__sdl_dimension_size(p, $3.ptr, d, &@5, &$$));
     }
-| T_RAND '(' T_SEED_ID ')' { $$ = zr__sdl_float(zr__sdl_rand($3.ptr)); }
+  /* seed(n) is a number in POV-Ray 3.7, the new stream's place among
+     all made so far (0, 1, ...): it needs a #declare's ';', and can be
+     computed with ("(Rotate_Y + clock) * City_Seed", mjhorvath's
+     GSprites_Scenery_prototypes.inc); rand(n) takes stream n (measured:
+     tests/refused/seed_number.pov). */
+| T_SEED '(' cexpr ')'
+    {
+      double n;
+      TRY(zr__sdl_want_float(p, &$3, &@3, &n));
+      TRY(zr__sdl_seed(p, n));
+      $$ = zr__sdl_float((double)(p->n_seeds - 1));
+    }
 | T_RAND '(' cexpr ')'
     {
       double n;
@@ -3891,8 +3905,8 @@ light:
 ;
 
 /* A finished light: a scene item, a #declare's value or a part of a
-   union, which it then follows.  object { LIGHT_IDENTIFIER ... } is a
-   light too, as in POV-Ray. */
+   union, which it then follows.  object { LIGHT_IDENTIFIER ... } and
+   object { light_source { ... } ... } are lights too, as in POV-Ray. */
 light_done:
   light_body '}'       { TRY(zr__sdl_light_end(p, $1, &@1)); $$ = $1; }
 | light_object '}'     { $$ = $1; }
@@ -3900,6 +3914,9 @@ light_done:
 
 light_object:
   T_OBJECT '{' T_LIGHT_ID { TRY($$ = zr__sdl_light_copy(p, $3.ptr)); }
+  /* "object { light_source { ... } }" (gnu0000's POV1/OLD/TSTS-A.POV):
+     POV-Ray 3.7 lights the scene with it (tests/refused/object_light). */
+| T_OBJECT '{' light_done { $$ = $3; }
 | light_object transform
     { zr__sdl_light_transform(p, $1, $2); $$ = $1; }
 ;
@@ -4319,7 +4336,6 @@ int zr__pov_lex(ZR__POV_STYPE *lval, zr_sdl_loc *lloc, zr_sdl_parser *p) {
   case T_LIGHT_ID:
   case T_STRING_ID:
   case T_ARRAY_ID:
-  case T_SEED_ID:
   case T_SPLINE_ID:
     lval->value = v.value;
     break;

@@ -449,3 +449,15 @@ EXTRA_DIST += tests/test_image_alpha.sh tests/image_alpha.pov
 TESTS += tests/test_image_gamma_formats.sh
 EXTRA_DIST += tests/test_image_gamma_formats.sh \
 	tests/image_gamma_formats.pov tests/image_gamma.jpg
+
+# Scenes POV-Ray 3.7 refuses, reduced from the corpus (bench/refused.py):
+# zrcube refuses them too, with the place and the problem.
+TESTS += tests/test_refused.sh
+EXTRA_DIST += tests/test_refused.sh tests/refused/semicolon.pov \
+	tests/refused/semicolon_local.pov tests/refused/semicolon_v31.pov \
+	tests/refused/version_38.pov tests/refused/version_3705.pov \
+	tests/refused/version_37049.pov tests/refused/array_of_arrays.pov \
+	tests/refused/colour_short_vector.pov tests/refused/object_light.pov \
+	tests/refused/bad_char_later.pov tests/refused/bad_char_reached.pov \
+	tests/refused/bad_char_skipped.pov tests/refused/seed_number.pov \
+	tests/refused/seed_semicolon.pov

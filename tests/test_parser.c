@@ -501,9 +501,10 @@ static void test_parser_lights_background_settings(void **state) {
   assert_num(enc.assumed_gamma, 2.2);
   assert_num(enc.file_gamma, 2.2);
   /* POV-Ray takes a #version without ';' and warns ("Possible Parse
-     Error"); the same for a float #declare. */
-  good(f, "#version max(3.1, 3.6)\n#declare A = 2 sphere { 0, A }\n");
-  assert_num(f->scene->settings.version, 3.6);
+     Error"); the same for a float #declare below version 3.5, and from
+     3.5 on it refuses the #declare (tests/test_refused.sh). */
+  good(f, "#version max(3.1, 3.4)\n#declare A = 2 sphere { 0, A }\n");
+  assert_num(f->scene->settings.version, 3.4);
   assert_num(f->scene->objects[0]->u.sphere.radius, 2);
   assert_int_equal(f->diag.warnings, 2);
   assert_string_equal(f->diag.warning,
@@ -511,6 +512,15 @@ static void test_parser_lights_background_settings(void **state) {
                       "or colour should end with ';'\n"
                       "    2 | #declare A = 2 sphere { 0, A }\n"
                       "      |              ^\n");
+  bad(f, "#version max(3.1, 3.6);\n#declare A = 2 sphere { 0, A }\n",
+      ZR_ESYNTAX, "'#declare' of a float, vector or colour needs ';' at "
+      "its end when the language version is 3.5 or later (it is 3.6 "
+      "here): add the ';', or set '#version 3.1;'",
+      "t.pov:2:14: error: '#declare' of a float, vector or colour needs "
+      "';' at its end when the language version is 3.5 or later (it is "
+      "3.6 here): add the ';', or set '#version 3.1;'\n"
+      "    2 | #declare A = 2 sphere { 0, A }\n"
+      "      |              ^\n");
   good(f, "#version 3.5");
   assert_num(f->scene->settings.version, 3.5);
   assert_int_equal(f->diag.warnings, 1);
@@ -879,6 +889,18 @@ static void test_parser_unterminated(void **state) {
       "t.pov:1:10: error: unterminated string\n"
       "    1 | #include \"x.inc\n"
       "      |          ^\n");
+  /* A stray character is an error where the scene reaches it, after
+     the errors before it, and none in a skipped #if branch or an unused
+     macro (POV-Ray 3.7, measured: tests/refused/bad_char_*.pov). */
+  bad(f, "sphere { 0, 1 }\nsphere { 0, 1 } @ box { 0, 1 }\n", ZR_ESYNTAX,
+      "unexpected character '@'",
+      "t.pov:2:17: error: unexpected character '@'\n"
+      "    2 | sphere { 0, 1 } @ box { 0, 1 }\n"
+      "      |                 ^\n");
+  bad(f, "sphere { 0, Nope }\n@\n", ZR_EUNDEFINED,
+      "undefined identifier 'Nope'", NULL);
+  good(f, "#if (0) #declare A = 5 % 2; #end\n"
+          "#macro M() #declare B = 5 % 2; #end\nsphere { 0, 1 }\n");
   /* A lexical error in an included file shows the chain. */
   assert_int_equal(parse_file(f, "lexerror.pov"), ZR_ESYNTAX);
   char expected[512];

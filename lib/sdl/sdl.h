@@ -96,7 +96,6 @@ typedef enum zr_sdl_kind {
   ZR_SDL_STRING, /* ptr: the NUL-terminated text */
   ZR_SDL_ARRAY,  /* ptr: a zr_sdl_array (element assignment changes it) */
   ZR_SDL_MACRO,  /* ptr: a zr_sdl_macro */
-  ZR_SDL_SEED,   /* ptr: a zr_sdl_rand stream that rand() advances */
   ZR_SDL_ALIAS,  /* ptr: a zr_sdl_alias, a parameter passed by name */
   ZR_SDL_FILE,   /* ptr: a zr_sdl_fhandle made by #fopen */
   ZR_SDL_FUNCTION, /* ptr: a compiled zr_fn (function.h) */
