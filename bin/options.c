@@ -503,14 +503,16 @@ static int set_uniform(const arg_ctx *c, const char *value) {
   return 0;
 }
 
-/* The radiosity options; any of them turns radiosity on. */
+/* The radiosity options; any of them but --bounces turns radiosity on. */
 static int apply_radiosity(const arg_ctx *c, opt_key key,
                            const char *value) {
   zr_cli_options *o = c->o;
   zr_radiosity_params *rp = &o->rad;
   double x;
   long v;
-  o->radiosity = 1;
+  /* --bounces applies where the solver is used and chooses nothing. */
+  if (key != K_BOUNCES)
+    o->radiosity = 1;
   /* Set before the value is checked: a bad value ends the run anyway. */
   o->rad_given |= key == K_BF_EPS           ? ZR_CLI_RAD_BF_EPS
                   : key == K_AREA_EPS       ? ZR_CLI_RAD_AREA_EPS

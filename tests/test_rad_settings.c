@@ -100,6 +100,7 @@ static void test_rad_settings_command_line_overrides(void **state) {
     assert_int_equal(zr__cli_parse(&o, 3, av, err, sizeof err), 0);
     zr__cli_radiosity_params(&o, f->scene, &p);
     assert_int_equal(p.bounces, k == 0 ? 0 : 7);
+    assert_int_equal(o.radiosity, 0); /* it chooses no model */
     zr__cli_free(&o);
   }
   zr__cli_init(&o, &rp);
