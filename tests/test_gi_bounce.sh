@@ -12,15 +12,16 @@
 #   recursion_limit 1: 0.0511 0.1443 0.0342 0.0780
 #                   2: 0.1188 0.1948 0.0718 0.1458
 #                   3: 0.1511 0.2286 0.0902 0.1799
-#                   5: 0.1779 0.2547 0.1047 0.2056 (count 200: Hi=0)
+#                   5: 0.1913 0.2685 0.1137 0.2227
 # and without recursion_limit the same as 2 (0.1207 0.1962 0.0719
 # 0.1455 at count 200, against 0.1209 0.1962 0.0722 0.1458 with 2).
 # The solver solved every bounce whatever the limit (main before this
 # test: 0.2175 0.2943 0.1327 0.2505, 4.3 times povray's back wall at
 # limit 1, 1.8 times at the default 2).  Checks:
-#  1. per limit, each region within 4% of povray's (measured within
-#     1.8% for 1 to 3), at 5 within 7% (measured 2.9 to 5.6% above:
-#     povray's deeper bounces take fewer rays, zrcube(1) "cache");
+#  1. per limit, each region within 4% of povray's (measured: 2.5% to
+#     0.0% below for 1 to 3, 3.3% to 2.4% below at 5; povray at count
+#     200 gives 0.1779 0.2547 0.1047 0.2056 at 5, 4-8% below its count
+#     1600, so a deep limit needs many rays in povray);
 #  2. a block without recursion_limit gives the bytes of limit 2;
 #  3. --bounces=all gives every bounce: within 3% of the path-traced
 #     reference (--gi=path --spp=2048 --path-seed=3, recorded: 0.2191
@@ -56,9 +57,9 @@ REG = {'back': (15, 30, 28, 40), 'floor': (50, 58, 25, 42),
 POVRAY = {'1': (0.0511, 0.1443, 0.0342, 0.0780),
           '2': (0.1188, 0.1948, 0.0718, 0.1458),
           '3': (0.1511, 0.2286, 0.0902, 0.1799),
-          '5': (0.1779, 0.2547, 0.1047, 0.2056),
+          '5': (0.1913, 0.2685, 0.1137, 0.2227),
           'all': (0.2191, 0.2942, 0.1325, 0.2534)}
-TOL = {'1': 0.04, '2': 0.04, '3': 0.04, '5': 0.07, 'all': 0.03}
+TOL = {'1': 0.04, '2': 0.04, '3': 0.04, '5': 0.04, 'all': 0.03}
 
 
 def linear(fn):
