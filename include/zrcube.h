@@ -617,7 +617,8 @@ typedef struct zr_radiosity_params {
 /* Fills p with the defaults above, then takes the settings of the
    scene's global_settings { radiosity { } } block (scene may be NULL):
    brightness, bf_bound, minimum_area, visibility_count, max_iterations
-   and residual_bound (zrcube(1), "Radiosity settings"). */
+   and residual_bound (zrcube(1), "Radiosity settings"), and bounces
+   from recursion_limit (2 when the block is there without it). */
 ZR_API void zr_radiosity_params_init(zr_radiosity_params *p,
                                      const zr_scene *scene);
 
