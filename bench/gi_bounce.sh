@@ -16,7 +16,7 @@
 # the block's front 37-46 x 45-53, right wall 20-39 x 66-75.  povray
 # at Hi=1 costs about 80 CPU seconds at recursion_limit 2, more above.
 set -u
-build=${1:?usage: bench/gi_bounce.sh BUILD_DIR [OUT_DIR]}
+build=$(cd "${1:?usage: bench/gi_bounce.sh BUILD_DIR [OUT_DIR]}" && pwd) || exit 1
 here=$(cd "$(dirname "$0")" && pwd)
 scene=$here/../tests/gi_bounce.pov
 out=${2:-$here/out/gi_bounce}
