@@ -199,8 +199,12 @@ done
 zr_render() { # name, options...
   name=$1
   shift
+  # --bounces=all: the ground truth carries every bounce, and the
+  # scene's recursion_limit 8 would stop the solve at 8 (as povray's
+  # picture stops; relative RMSE 0.0421 where every bounce gives 0.0405).
   t=$(seconds "$zrcube" "$scene" +W$size +H$size +A0.05 +R3 +WT1 \
-      --radiosity --radiosity-stats "$@" +O"$out/radiosity/$name.pfm")
+      --radiosity --radiosity-stats --bounces=all "$@" \
+      +O"$out/radiosity/$name.pfm")
   if [ "$t" = fail ]; then
     sed 's/^/    /' "$work/log" | tail -n 5 >&2
     echo "fail fail - - - -"

@@ -72,6 +72,7 @@ typedef enum opt_key {
   K_UNIFORM,
   K_MAX_ITERATIONS,
   K_RESIDUAL,
+  K_BOUNCES,
   K_SHOOTING,
   K_ONE_SIDED,    /* optional on/off */
   K_RAD_ONLY,
@@ -502,20 +503,23 @@ static int set_uniform(const arg_ctx *c, const char *value) {
   return 0;
 }
 
-/* The radiosity options; any of them turns radiosity on. */
+/* The radiosity options; any of them but --bounces turns radiosity on. */
 static int apply_radiosity(const arg_ctx *c, opt_key key,
                            const char *value) {
   zr_cli_options *o = c->o;
   zr_radiosity_params *rp = &o->rad;
   double x;
   long v;
-  o->radiosity = 1;
+  /* --bounces applies where the solver is used and chooses nothing. */
+  if (key != K_BOUNCES)
+    o->radiosity = 1;
   /* Set before the value is checked: a bad value ends the run anyway. */
   o->rad_given |= key == K_BF_EPS           ? ZR_CLI_RAD_BF_EPS
                   : key == K_AREA_EPS       ? ZR_CLI_RAD_AREA_EPS
                   : key == K_VIS_RAYS       ? ZR_CLI_RAD_VIS_RAYS
                   : key == K_MAX_ITERATIONS ? ZR_CLI_RAD_MAX_ITERATIONS
                   : key == K_RESIDUAL       ? ZR_CLI_RAD_RESIDUAL
+                  : key == K_BOUNCES        ? ZR_CLI_RAD_BOUNCES
                                             : 0u;
   switch (key) {
   case K_BF_EPS:
@@ -547,6 +551,16 @@ static int apply_radiosity(const arg_ctx *c, opt_key key,
     if (!parse_real(value, &x) || !(x > 0.0))
       return fail(c, "'%s': --residual must be a number > 0", c->what);
     rp->residual = x;
+    return 0;
+  case K_BOUNCES:
+    if (value && strcmp(value, "all") == 0) {
+      rp->bounces = 0;
+      return 0;
+    }
+    if (!parse_int(value, 1, 1000000, &v))
+      return fail(c, "'%s': --bounces takes all or a whole number from 1 "
+                     "to 1000000", c->what);
+    rp->bounces = (int)v;
     return 0;
   case K_SHOOTING:
     rp->shooting = 1;
@@ -597,6 +611,8 @@ void zr__cli_radiosity_params(const zr_cli_options *o, const zr_scene *scene,
     out->max_iterations = sp.max_iterations;
   if (!(g & ZR_CLI_RAD_RESIDUAL))
     out->residual = sp.residual;
+  if (!(g & ZR_CLI_RAD_BOUNCES))
+    out->bounces = sp.bounces;
   out->brightness = sp.brightness;
 }
 
@@ -999,6 +1015,7 @@ static int apply(const arg_ctx *c, opt_key key, const char *value) {
   case K_UNIFORM:
   case K_MAX_ITERATIONS:
   case K_RESIDUAL:
+  case K_BOUNCES:
   case K_SHOOTING:
   case K_ONE_SIDED:
   case K_RAD_ONLY:
@@ -1260,6 +1277,7 @@ static const long_option long_options[] = {
     {"uniform", K_UNIFORM, L_REQUIRED},
     {"max-iterations", K_MAX_ITERATIONS, L_REQUIRED},
     {"residual", K_RESIDUAL, L_REQUIRED},
+    {"bounces", K_BOUNCES, L_REQUIRED},
     {"shooting", K_SHOOTING, L_NONE},
     {"one-sided-emission", K_ONE_SIDED, L_OPTIONAL},
     {"radiosity-only", K_RAD_ONLY, L_NONE},
@@ -2053,6 +2071,9 @@ const char *zr__cli_usage(void) {
       "                               refinement (N a power of two)\n"
       "  --max-iterations=N           sweeps or shots at most (1000)\n"
       "  --residual=X                 stop below this change (1e-6)\n"
+      "  --bounces=N|all              bounces of light shown (default:\n"
+      "                               the radiosity block's\n"
+      "                               recursion_limit; all without one)\n"
       "  --shooting                   progressive shooting, not gathering\n"
       "  --one-sided-emission[=0|1|open]  1: emit from the front only;\n"
       "                               0: both sides; open (default): the\n"

@@ -57,8 +57,8 @@ typedef struct zr_cli_options {
   /* Radiosity (issue 4): any radiosity option turns it on. */
   int radiosity;          /* solve (or load) a solution, render with it */
   zr_radiosity_params rad; /* the solver's settings */
-  /* Which of bf_eps, area_eps, visibility_rays, max_iterations and
-     residual the command line set (ZR_CLI_RAD_* bits): those override
+  /* Which of bf_eps, area_eps, visibility_rays, max_iterations,
+     residual and bounces the command line set (ZR_CLI_RAD_* bits): those override
      the scene's radiosity block, the others come from it. */
   unsigned rad_given;
   int rad_stats;          /* --radiosity-stats: key=value lines */
@@ -171,7 +171,8 @@ enum {
   ZR_CLI_RAD_AREA_EPS = 1u << 1,
   ZR_CLI_RAD_VIS_RAYS = 1u << 2,
   ZR_CLI_RAD_MAX_ITERATIONS = 1u << 3,
-  ZR_CLI_RAD_RESIDUAL = 1u << 4
+  ZR_CLI_RAD_RESIDUAL = 1u << 4,
+  ZR_CLI_RAD_BOUNCES = 1u << 5
 };
 
 /*

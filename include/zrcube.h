@@ -601,12 +601,24 @@ typedef struct zr_radiosity_params {
      clusters (tests/test_radiosity.c).  Gathering alone only (not with
      shooting, uniform or a team of more than one member). */
   int cluster_surfaces;
+  /* The bounces of light a picture shows: 0, every bounce (the solve
+     iterates to convergence); N > 0, at most N, as POV-Ray's radiosity
+     recursion_limit N gives them: the gathering solve starts from the
+     emission, B_0 = E, and takes B_k = E + rho F B_(k-1) for
+     k < N, so a ray hit, which gathers once more, carries light that
+     left an emitter (or a light source's lit surface) and bounced at
+     most N times; no shooting then (it carries every bounce).  Default 0;
+     zr_radiosity_params_init with a scene whose radiosity block is on
+     takes its recursion_limit (2 when not written).  Measured against
+     povray: tests/test_gi_bounce.sh, bench/gi_bounce.sh. */
+  int bounces;
 } zr_radiosity_params;
 
 /* Fills p with the defaults above, then takes the settings of the
    scene's global_settings { radiosity { } } block (scene may be NULL):
    brightness, bf_bound, minimum_area, visibility_count, max_iterations
-   and residual_bound (zrcube(1), "Radiosity settings"). */
+   and residual_bound (zrcube(1), "Radiosity settings"), and bounces
+   from recursion_limit (2 when the block is there without it). */
 ZR_API void zr_radiosity_params_init(zr_radiosity_params *p,
                                      const zr_scene *scene);
 

@@ -42,6 +42,11 @@ EXTRA_DIST += tests/test_gi_room.sh tests/gi_room.pov tests/gi_dome.pov
 # reference's recorded means).
 TESTS += tests/test_gi_flat.sh
 EXTRA_DIST += tests/test_gi_flat.sh tests/gi_flat.pov
+# The solver's picture follows the radiosity block's recursion_limit
+# (1, 2, 3, 5 and none) against povray's measured means, and every
+# bounce with --bounces=all against the path-traced reference's.
+TESTS += tests/test_gi_bounce.sh
+EXTRA_DIST += tests/test_gi_bounce.sh tests/gi_bounce.pov
 
 # The path-traced reference: exact furnaces, samples in pieces, and the
 # Cornell box against ../shared/reference's ground truth.

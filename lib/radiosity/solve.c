@@ -486,14 +486,36 @@ static zr_status team_sweep(zr_radiosity *rad, const recv_index *ix,
   return st;
 }
 
+/*
+ * Bounded bounces (params.bounces N > 0, POV-Ray's recursion_limit): the
+ * sweeps start from B = 0, so the first leaves B_0 = E (emission and
+ * the light sources' direct light, direct.c) and sweep k + 1 leaves
+ * B_k = E + rho F B_(k-1), the light of at most k bounces.  A ray hit
+ * gathers once more from B (the final gather, radiosity.c), so N sweeps
+ * show N bounces; the smoothed lookup reads B itself, so it takes one
+ * sweep more.  Returns the sweeps a solve may take: max_iterations when
+ * the bounces are not bounded.  Jacobi sweeps from zero are exactly
+ * the bounce orders; every solve (refinement round) starts again.
+ */
+static int sweeps_allowed(zr_radiosity *rad) {
+  int n = rad->params.max_iterations;
+  if (rad->params.bounces <= 0)
+    return n;
+  for (size_t v = 0; v < rad->n_nodes; v++)
+    memset(rad->nodes[v].b, 0, sizeof rad->nodes[v].b);
+  int sweeps = rad->params.bounces +
+               (rad->params.lookup == ZR_RAD_LOOKUP_SMOOTH ? 1 : 0);
+  return sweeps < n ? sweeps : n;
+}
+
 static zr_status solve_gather_team(zr_radiosity *rad, recv_index *ix,
                                    double *change) {
   team_gather tg;
   zr_status made = team_gather_init(rad, ix, &tg);
   zr_status st = zr__team_agree(rad->params.team, made);
-  int it = 0;
+  int it = 0, sweeps = sweeps_allowed(rad);
   double residual = 0.0;
-  while (st == ZR_OK && it < rad->params.max_iterations) {
+  while (st == ZR_OK && it < sweeps) {
     double power = 0.0;
     st = team_sweep(rad, ix, &tg, change, &power);
     residual = power / rad->power_ref;
@@ -527,11 +549,10 @@ static zr_status solve_gather(zr_radiosity *rad) {
     free(change);
     return st;
   }
-  int it = 0;
+  int it = 0, sweeps = sweeps_allowed(rad);
   double residual = 0.0;
   zr_status st = ZR_OK;
-  while (it < rad->params.max_iterations &&
-         (st = zr__rad_progress(rad)) == ZR_OK) {
+  while (it < sweeps && (st = zr__rad_progress(rad)) == ZR_OK) {
     gather(rad, &ix);
     if (rad->clustered)
       zr__rad_vol_gather(rad);
@@ -540,6 +561,12 @@ static zr_status solve_gather(zr_radiosity *rad) {
     if (!(residual > rad->params.residual))
       break;
   }
+  /* A cluster link's incident light (what a ray hit reads, volume.c)
+     is from the sweep before the last; with the bounces bounded that
+     is one bounce short, so it is gathered once more from the final B
+     (the nodes' gathered sums are cleared by the next gather). */
+  if (st == ZR_OK && rad->clustered && rad->params.bounces > 0)
+    zr__rad_vol_gather(rad);
   rad->stats.iterations = it;
   rad->stats.residual = residual;
   free_index(&ix);
@@ -695,8 +722,10 @@ zr_status zr__rad_solve(zr_radiosity *rad, zr_context *ctx) {
     rad->stats.residual = 0.0;
     return ZR_OK;
   }
-  zr_status st =
-      rad->params.shooting ? solve_shooting(rad) : solve_gather(rad);
+  /* Shooting carries every bounce: bounded bounces gather (sweeps). */
+  zr_status st = rad->params.shooting && rad->params.bounces <= 0
+                     ? solve_shooting(rad)
+                     : solve_gather(rad);
   if (st == ZR_ECANCELLED)
     return st; /* solve_rounds says so */
   if (st == ZR_EMPI)
