@@ -42,12 +42,13 @@ struct zr_image {
   /* zr_image_new's pixels: their size, which zr_image_free gives
      zr__map_free; 0 when pixels is malloc's. */
   size_t pixels_bytes;
-  /* NULL, or width * height alpha values in [0, 1] (1 opaque), made by
-     zr_image_add_alpha for the writers that store it. */
+  /* NULL, or width * height straight alpha values in [0, 1] (1
+     opaque), made by zr_image_add_alpha: for the writers that store it,
+     and by the PNG, TGA, BMP and TIFF readers for a file that has it. */
   float *alpha;
   zr_image_layout layout;
   /* GREY and RGB: the stored samples, rows top to bottom, unsigned char
-     when maxval <= 255, else unsigned short; alpha is not kept. */
+     when maxval <= 255, else unsigned short; alpha is in alpha. */
   void *codes;
   unsigned maxval;
   /* maxval + 1 floats: the linear value of each code (non-FLOAT). */
